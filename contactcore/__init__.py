@@ -1,0 +1,21 @@
+"""The shared core: scene model, geometry, interface laws, result type.
+
+Every method package (``xdolfinx``, ``efgm``) and the drivers in
+``verification`` import this package; it imports none of them, and needs
+neither dolfinx nor gmsh (numpy only).
+"""
+from .errors import ContactError, DiscretisationError, SceneError, SolverError
+from .laws import LAWS, LinearLaw, make_law
+from .profiles import ProfileData, evaluate_quantities, sample_profile, sample_profiles
+from .result import Result, SolverReport, Timings
+from .scene import (BODIES, BodyForce, InterfaceProfile, LineProfile, Material, Pin, Pressure, Scene, Support,
+                    Torque, Traction, builtin_scenes, load_scene, scene_from_dict, scene_text)
+from .geometry import CircleInterface, Disc, LineInterface, Rectangle
+
+__all__ = [
+    "BODIES", "BodyForce", "CircleInterface", "ContactError", "Disc", "DiscretisationError", "InterfaceProfile",
+    "LAWS", "LineInterface", "LineProfile", "LinearLaw", "Material", "Pin", "Pressure", "ProfileData", "Rectangle",
+    "Result", "Scene", "SceneError", "SolverError", "SolverReport", "Support", "Timings", "Torque", "Traction",
+    "builtin_scenes", "evaluate_quantities", "load_scene", "make_law", "sample_profile", "sample_profiles",
+    "scene_from_dict", "scene_text",
+]

@@ -1,0 +1,30 @@
+"""Errors shared by every method: each names the problem in its message.
+
+The drivers in :mod:`verification` turn them into a one-line message and a
+non-zero exit status; nothing else should be needed to explain the failure.
+"""
+
+
+class ContactError(Exception):
+    """Base class of every error this project raises on purpose."""
+
+
+class SceneError(ContactError, ValueError):
+    """A scene description that is malformed or physically invalid.
+
+    The message starts with the dotted path of the offending field
+    (e.g. ``materials.minus.E``) so the user can find it in the TOML file.
+    """
+
+    def __init__(self, field: str, problem: str):
+        self.field = field
+        self.problem = problem
+        super().__init__(f"{field}: {problem}")
+
+
+class SolverError(ContactError, RuntimeError):
+    """A linear or nonlinear solve that failed (singular matrix, divergence)."""
+
+
+class DiscretisationError(ContactError, ValueError):
+    """Discretisation parameters that cannot work (e.g. h <= 0, bad degree)."""

@@ -1,0 +1,215 @@
+"""Exact geometry of a scene: the outer domain and the interface Γ.
+
+Γ is the zero level of a signed function φ, positive on the ``+`` body:
+
+* straight line through ``p`` with unit normal ``n``: ``φ(x) = n·(x − p)``;
+* circle of centre ``c`` and radius ``R`` (the disc inside is the ``−`` body):
+  ``φ(x) = |x − c| − R``.
+
+The unit normal ``n = ∇φ/|∇φ|`` points from − into +; the tangent is
+``t = (n_y, −n_x)`` (SCENES.md, "Conventions").
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+Point = tuple[float, float]
+
+
+def _as_points(x) -> np.ndarray:
+    pts = np.asarray(x, dtype=float)
+    return pts.reshape(-1, pts.shape[-1])[:, :2]
+
+
+def tangent_of(normal: np.ndarray) -> np.ndarray:
+    """``t = (n_y, −n_x)`` for each row of ``normal``."""
+    return np.column_stack([normal[:, 1], -normal[:, 0]])
+
+
+@dataclass(frozen=True)
+class Rectangle:
+    """Axis-aligned rectangle ``[x0, x0+a] × [y0, y0+b]``.
+
+    Its boundaries are named ``left``, ``right``, ``bottom`` and ``top``.
+    """
+
+    corner: Point
+    size: Point
+
+    boundary_names = ("left", "right", "bottom", "top")
+
+    @property
+    def length_scale(self) -> float:
+        """The diameter, used to scale geometric tolerances."""
+        return float(np.hypot(*self.size))
+
+    @property
+    def area(self) -> float:
+        return float(self.size[0] * self.size[1])
+
+    @property
+    def corners(self) -> np.ndarray:
+        (x0, y0), (a, b) = self.corner, self.size
+        return np.array([[x0, y0], [x0 + a, y0], [x0 + a, y0 + b], [x0, y0 + b]])
+
+    def contains(self, x, tol: float = 0.0) -> np.ndarray:
+        """True where ``x`` lies in the closed rectangle grown by ``tol``."""
+        p = _as_points(x)
+        (x0, y0), (a, b) = self.corner, self.size
+        return ((p[:, 0] >= x0 - tol) & (p[:, 0] <= x0 + a + tol)
+                & (p[:, 1] >= y0 - tol) & (p[:, 1] <= y0 + b + tol))
+
+    def distance_to_boundary(self, x) -> np.ndarray:
+        """Distance of interior points to the nearest edge (negative outside)."""
+        p = _as_points(x)
+        (x0, y0), (a, b) = self.corner, self.size
+        return np.min([p[:, 0] - x0, x0 + a - p[:, 0], p[:, 1] - y0, y0 + b - p[:, 1]], axis=0)
+
+    def boundary_of(self, x, tol: float) -> list[str]:
+        """Names of the edges that the point ``x`` lies on (within ``tol``)."""
+        (x0, y0), (a, b) = self.corner, self.size
+        px, py = float(x[0]), float(x[1])
+        names = []
+        for name, d in (("left", px - x0), ("right", x0 + a - px), ("bottom", py - y0), ("top", y0 + b - py)):
+            if abs(d) <= tol:
+                names.append(name)
+        return names
+
+    def outward_normal(self, name: str) -> np.ndarray:
+        return {"left": np.array([-1.0, 0.0]), "right": np.array([1.0, 0.0]),
+                "bottom": np.array([0.0, -1.0]), "top": np.array([0.0, 1.0])}[name]
+
+
+@dataclass(frozen=True)
+class Disc:
+    """Disc of centre ``c`` and radius ``R``; its boundary is named ``outer``."""
+
+    centre: Point
+    radius: float
+
+    boundary_names = ("outer",)
+
+    @property
+    def length_scale(self) -> float:
+        return 2.0 * float(self.radius)
+
+    @property
+    def area(self) -> float:
+        return float(np.pi * self.radius ** 2)
+
+    def contains(self, x, tol: float = 0.0) -> np.ndarray:
+        p = _as_points(x)
+        return np.hypot(p[:, 0] - self.centre[0], p[:, 1] - self.centre[1]) <= self.radius + tol
+
+    def distance_to_boundary(self, x) -> np.ndarray:
+        p = _as_points(x)
+        return self.radius - np.hypot(p[:, 0] - self.centre[0], p[:, 1] - self.centre[1])
+
+    def boundary_of(self, x, tol: float) -> list[str]:
+        return ["outer"] if abs(self.distance_to_boundary([x])[0]) <= tol else []
+
+
+Domain = Rectangle | Disc
+
+
+@dataclass(frozen=True)
+class LineInterface:
+    """Straight Γ through ``point`` with unit ``normal`` (from − into +)."""
+
+    point: Point
+    normal: Point
+
+    def phi(self, x) -> np.ndarray:
+        p = _as_points(x)
+        return (p[:, 0] - self.point[0]) * self.normal[0] + (p[:, 1] - self.point[1]) * self.normal[1]
+
+    def normals(self, x) -> np.ndarray:
+        return np.tile(np.asarray(self.normal, dtype=float), (len(_as_points(x)), 1))
+
+    def chord(self, domain: Domain) -> np.ndarray | None:
+        """The two end points of Γ ∩ domain, ordered along ``t``; None if it
+        misses (equal points if it only touches a corner or a tangent).
+
+        The parameter along the line is ``x = p + s t``.
+        """
+        p = np.asarray(self.point, dtype=float)
+        t = tangent_of(np.asarray([self.normal], dtype=float))[0]
+        if isinstance(domain, Rectangle):
+            lo, hi = -np.inf, np.inf
+            (x0, y0), (a, b) = domain.corner, domain.size
+            for k, (mn, mx) in enumerate(((x0, x0 + a), (y0, y0 + b))):
+                if abs(t[k]) < 1e-300:
+                    if not mn <= p[k] <= mx:
+                        return None
+                    continue
+                s1, s2 = sorted(((mn - p[k]) / t[k], (mx - p[k]) / t[k]))
+                lo, hi = max(lo, s1), min(hi, s2)
+            if lo > hi:
+                return None
+        else:
+            c = np.asarray(domain.centre, dtype=float)
+            s0 = float(np.dot(c - p, t))
+            d2 = domain.radius ** 2 - float(np.dot(c - p, self.normal)) ** 2
+            if d2 < 0.0:
+                return None
+            lo, hi = s0 - np.sqrt(d2), s0 + np.sqrt(d2)
+        return np.array([p + lo * t, p + hi * t])
+
+    def minus_area(self, domain: Domain) -> float:
+        """Area of the − side of the domain (exact for both domain types)."""
+        if isinstance(domain, Rectangle):
+            return _polygon_area(_clip_halfplane(domain.corners, self))
+        R = domain.radius
+        d = float(self.phi([domain.centre])[0])  # signed distance of the centre
+        d = np.clip(d, -R, R)
+        segment = R * R * np.arccos(d / R) - d * np.sqrt(R * R - d * d)
+        return float(segment)
+
+
+@dataclass(frozen=True)
+class CircleInterface:
+    """Circular Γ; the disc inside is the − body, ``n`` points outwards."""
+
+    centre: Point
+    radius: float
+
+    def phi(self, x) -> np.ndarray:
+        p = _as_points(x)
+        return np.hypot(p[:, 0] - self.centre[0], p[:, 1] - self.centre[1]) - self.radius
+
+    def normals(self, x) -> np.ndarray:
+        p = _as_points(x)
+        d = p - np.asarray(self.centre, dtype=float)
+        return d / np.linalg.norm(d, axis=1)[:, None]
+
+    def points_at_angles(self, theta: np.ndarray) -> np.ndarray:
+        return np.column_stack([self.centre[0] + self.radius * np.cos(theta),
+                                self.centre[1] + self.radius * np.sin(theta)])
+
+    def minus_area(self, domain: Domain) -> float:
+        return float(np.pi * self.radius ** 2)
+
+
+Interface = LineInterface | CircleInterface
+
+
+def _clip_halfplane(poly: np.ndarray, line: LineInterface) -> np.ndarray:
+    """Sutherland–Hodgman clip of a convex polygon to the side ``φ <= 0``."""
+    phi = line.phi(poly)
+    out = []
+    for i in range(len(poly)):
+        a, b, fa, fb = poly[i], poly[(i + 1) % len(poly)], phi[i], phi[(i + 1) % len(poly)]
+        if fa <= 0:
+            out.append(a)
+        if (fa < 0 < fb) or (fb < 0 < fa):
+            out.append(a + fa / (fa - fb) * (b - a))
+    return np.array(out) if out else np.zeros((0, 2))
+
+
+def _polygon_area(poly: np.ndarray) -> float:
+    if len(poly) < 3:
+        return 0.0
+    x, y = poly[:, 0], poly[:, 1]
+    return 0.5 * abs(float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1))))

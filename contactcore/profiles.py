@@ -1,0 +1,99 @@
+"""Profiles: quantities sampled on segments or along Γ (SCENES.md).
+
+Sample points: 101 evenly spaced points on a segment, end points moved inside
+by 1e-9 of its length; on a circular Γ, 101 polar angles from 0 to 2π, the
+last moved back by 1e-9 of 2π.  Each point takes the body that contains it
+(exact geometry, the sign of φ); on Γ the profile's ``side`` (+ by default).
+
+Interface quantities come from the computed jump and the law, never from the
+bulk stress: ``[[u]] = u⁺ − u⁻``, ``g_N = [[u]]·n``, ``g_T = [[u]]·t``, and
+``(t_N, t_T)`` is the law's response to ``(g_N, g_T)``.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import tolerances as tol
+from .geometry import CircleInterface, tangent_of
+from .result import Fields
+from .scene import (DISPLACEMENT_QUANTITIES, INTERFACE_QUANTITIES, STRESS_QUANTITIES, InterfaceProfile,
+                    LineProfile, Profile, Scene)
+
+
+@dataclass(frozen=True)
+class ProfileData:
+    """The columns of one profile: ``s, x, y`` then its quantities.
+
+    ``s`` is the arc length from the start, or the polar angle θ (rad) when
+    ``parameter`` is ``"angle"``.
+    """
+
+    id: str
+    parameter: str
+    columns: dict[str, np.ndarray]
+
+    @property
+    def names(self) -> list[str]:
+        return list(self.columns)
+
+
+def _interior_fractions(n: int) -> np.ndarray:
+    f = np.linspace(0.0, 1.0, n)
+    f[0], f[-1] = tol.PROFILE_END_SHIFT, 1.0 - tol.PROFILE_END_SHIFT
+    return f
+
+
+def sample_points(scene: Scene, profile: Profile, n: int = tol.PROFILE_POINTS) -> tuple[np.ndarray, np.ndarray, str]:
+    """``(s, points, parameter)`` of a profile; parameter is "arclength" or "angle"."""
+    if isinstance(profile, LineProfile):
+        a, b = np.asarray(profile.start, float), np.asarray(profile.end, float)
+        f = _interior_fractions(n)
+        return f * np.linalg.norm(b - a), a + f[:, None] * (b - a), "arclength"
+    itf = scene.interface
+    if isinstance(itf, CircleInterface):
+        theta = np.linspace(0.0, 2.0 * np.pi, n)
+        theta[-1] = 2.0 * np.pi * (1.0 - tol.PROFILE_END_SHIFT)
+        s = theta if profile.parameter == "angle" else itf.radius * theta
+        return s, itf.points_at_angles(theta), profile.parameter
+    a, b = itf.chord(scene.domain)
+    f = _interior_fractions(n)
+    return f * np.linalg.norm(b - a), a + f[:, None] * (b - a), "arclength"
+
+
+def interface_response(scene: Scene, fields: Fields, points: np.ndarray) -> dict[str, np.ndarray]:
+    """``gN, gT, tN, tT`` at points of Γ from the jump of the computed field."""
+    m = len(points)
+    jump = fields.displacement(points, np.ones(m, int)) - fields.displacement(points, np.zeros(m, int))
+    n = scene.interface.normals(points)
+    g = np.column_stack([np.sum(jump * n, axis=1), np.sum(jump * tangent_of(n), axis=1)])
+    t = scene.law.evaluate(g).traction
+    return {"gN": g[:, 0], "gT": g[:, 1], "tN": t[:, 0], "tT": t[:, 1]}
+
+
+def evaluate_quantities(scene: Scene, fields: Fields, points: np.ndarray, quantities, side: str = "plus") -> dict:
+    """Every quantity in ``quantities`` at ``points`` (see module doc)."""
+    bodies = scene.body_of(points, side)
+    out = {}
+    if set(quantities) & set(STRESS_QUANTITIES):
+        sig = fields.stress(points, bodies)
+        out.update(zip(STRESS_QUANTITIES, sig.T))
+    if set(quantities) & set(DISPLACEMENT_QUANTITIES):
+        out.update(zip(DISPLACEMENT_QUANTITIES, fields.displacement(points, bodies).T))
+    if set(quantities) & set(INTERFACE_QUANTITIES):
+        out.update(interface_response(scene, fields, points))
+    return {q: out[q] for q in quantities}
+
+
+def sample_profile(scene: Scene, fields: Fields, profile: Profile) -> ProfileData:
+    """One profile of ``scene`` evaluated on ``fields``."""
+    s, pts, param = sample_points(scene, profile)
+    columns = {"s": s, "x": pts[:, 0], "y": pts[:, 1]}
+    columns.update(evaluate_quantities(scene, fields, pts, profile.quantities, profile.side))
+    return ProfileData(profile.id, param, columns)
+
+
+def sample_profiles(scene: Scene, fields: Fields) -> list[ProfileData]:
+    """Exactly the profiles the scene asks for, nothing more."""
+    return [sample_profile(scene, fields, p) for p in scene.profiles]

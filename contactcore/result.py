@@ -1,0 +1,91 @@
+"""The result type every method returns, so comparisons compare like with like.
+
+A method's ``solve(scene, h=None, *, degree=1, paper=False, ...)`` returns a
+:class:`Result`.  Its ``fields`` answer two questions at arbitrary points for
+a given body (0 = −, 1 = +): the displacement and the stress.  Everything
+else (gaps, slips, interface tractions, profiles) is derived from those by
+:mod:`contactcore.profiles`, once for all methods.
+"""
+from __future__ import annotations
+
+import time
+from contextlib import contextmanager
+from dataclasses import asdict, dataclass, field
+from typing import Protocol
+
+import numpy as np
+
+
+class Fields(Protocol):
+    """Point evaluation of a solution, body by body."""
+
+    def displacement(self, points: np.ndarray, bodies: np.ndarray) -> np.ndarray:
+        """``u`` (m, 2) of body ``bodies[i]`` at ``points[i]`` (m, 2)."""
+
+    def stress(self, points: np.ndarray, bodies: np.ndarray) -> np.ndarray:
+        """``(σxx, σyy, σxy)`` (m, 3) of body ``bodies[i]`` at ``points[i]``."""
+
+
+@dataclass
+class Timings:
+    """Wall times in seconds of the stages of one run."""
+
+    mesh: float = 0.0
+    assembly: float = 0.0
+    solve: float = 0.0
+    total: float = 0.0
+
+    @contextmanager
+    def measure(self, stage: str):
+        """Add the wall time of the ``with`` block to ``stage``."""
+        start = time.perf_counter()
+        try:
+            yield
+        finally:
+            setattr(self, stage, getattr(self, stage) + time.perf_counter() - start)
+
+
+@dataclass
+class SolverReport:
+    """Health of the solve: what ran, how well, and what to distrust.
+
+    ``residual`` is ``‖b − A x‖/‖b‖`` of the last solve; ``backward_error``
+    is ``‖b − A x‖/(‖A‖‖x‖ + ‖b‖)``, the criterion of success; ``condition``
+    the solver's condition estimate where it gives one.
+    """
+
+    solver: str
+    residual: float = float("nan")
+    backward_error: float = float("nan")
+    iterations: list[int] = field(default_factory=list)
+    increments: int = 1
+    solves: int = 1
+    condition: float | None = None
+    warnings: list[str] = field(default_factory=list)
+    options: dict = field(default_factory=dict)
+
+
+@dataclass
+class Result:
+    """One method's solution of one scene at the full load."""
+
+    method: str
+    scene: object
+    degree: int
+    dofs: int
+    timings: Timings
+    solver: SolverReport
+    fields: Fields
+    discretisation: dict = field(default_factory=dict)
+
+    def summary(self) -> dict:
+        """A JSON-ready record of the run (no field values)."""
+        return {
+            "method": self.method,
+            "scene": self.scene.name,
+            "degree": self.degree,
+            "dofs": int(self.dofs),
+            "discretisation": self.discretisation,
+            "timings": asdict(self.timings),
+            "solver": asdict(self.solver),
+        }

@@ -1,0 +1,509 @@
+"""The scene model: one description of a problem that feeds every method.
+
+A scene is built in code from the dataclasses below or read from a TOML file
+(:func:`load_scene`, schema in the README).  Reading validates every field;
+an error is a :class:`SceneError` whose message starts with the field's
+dotted path.  Conventions (signs, normals, profiles) are those of
+``shared/SCENES.md``.
+"""
+from __future__ import annotations
+
+import math
+import tomllib
+from dataclasses import dataclass, field, replace
+from importlib import resources
+from pathlib import Path
+
+import numpy as np
+
+from . import tolerances as tol
+from .errors import SceneError
+from .geometry import CircleInterface, Disc, Domain, Interface, LineInterface, Rectangle
+from .laws import InterfaceLaw, make_law
+
+BODIES = ("minus", "plus")
+COMPONENTS = ("xy", "x", "y")
+STRESS_QUANTITIES = ("sxx", "syy", "sxy")
+DISPLACEMENT_QUANTITIES = ("ux", "uy")
+INTERFACE_QUANTITIES = ("tN", "tT", "gN", "gT")
+QUANTITIES = STRESS_QUANTITIES + DISPLACEMENT_QUANTITIES + INTERFACE_QUANTITIES
+
+
+@dataclass(frozen=True)
+class Material:
+    """Isotropic linear elastic material (E in Pa)."""
+
+    E: float
+    nu: float
+
+
+@dataclass(frozen=True)
+class Support:
+    """Prescribed displacement of the components ``fix`` on a named boundary.
+
+    ``value`` (m) is reached at the full load, scaled like the loads.
+    """
+
+    boundary: str
+    fix: str = "xy"
+    value: tuple[float, float] = (0.0, 0.0)
+
+
+@dataclass(frozen=True)
+class Pin:
+    """A point whose components ``fix`` are held at zero (rigid-body modes)."""
+
+    point: tuple[float, float]
+    fix: str = "xy"
+
+
+@dataclass(frozen=True)
+class Traction:
+    """Constant traction vector (Pa) on a named boundary."""
+
+    boundary: str
+    value: tuple[float, float]
+
+
+@dataclass(frozen=True)
+class Pressure:
+    """Normal pressure (Pa, positive pushes inwards): traction ``−p n_out``."""
+
+    boundary: str
+    value: float
+
+
+@dataclass(frozen=True)
+class BodyForce:
+    """Constant body force (N/m³) in one body."""
+
+    body: str
+    value: tuple[float, float]
+
+
+@dataclass(frozen=True)
+class Torque:
+    """A torque (N·m, counter-clockwise positive) spread over the disc of Γ.
+
+    Scene B's body force ``b = (T/J)(−(y−y_c), x−x_c)`` with ``J = πR⁴/2``:
+    its moment about the centre is T and its resultant is zero.
+    """
+
+    body: str
+    torque: float
+
+
+Load = Traction | Pressure | BodyForce | Torque
+
+
+@dataclass(frozen=True)
+class LineProfile:
+    """Quantities sampled on a segment from ``start`` to ``end``.
+
+    On Γ the stress is taken from ``side`` (default +, SCENES.md).
+    """
+
+    id: str
+    start: tuple[float, float]
+    end: tuple[float, float]
+    quantities: tuple[str, ...]
+    side: str = "plus"
+    title: str = ""
+
+
+@dataclass(frozen=True)
+class InterfaceProfile:
+    """Quantities sampled along Γ against the polar angle or the arc length."""
+
+    id: str
+    quantities: tuple[str, ...]
+    parameter: str = "angle"
+    side: str = "plus"
+    title: str = ""
+
+
+Profile = LineProfile | InterfaceProfile
+
+
+@dataclass(frozen=True)
+class Scene:
+    """Everything a method needs to solve one interface problem."""
+
+    name: str
+    domain: Domain
+    interface: Interface
+    materials: dict[str, Material]
+    law: InterfaceLaw
+    supports: tuple[Support, ...] = ()
+    pins: tuple[Pin, ...] = ()
+    loads: tuple[Load, ...] = ()
+    profiles: tuple[Profile, ...] = ()
+    increments: int = 1
+    plane: str = "stress"
+    h: float | None = None
+    paper: dict[str, tuple[int, int]] = field(default_factory=dict)
+    title: str = ""
+
+    @property
+    def length_scale(self) -> float:
+        return self.domain.length_scale
+
+    def validated(self) -> "Scene":
+        """Check every physical and geometric rule; returns ``self``."""
+        validate(self)
+        return self
+
+    def with_changes(self, **changes) -> "Scene":
+        """A validated copy with some fields replaced (parameter studies)."""
+        return replace(self, **changes).validated()
+
+    def body_of(self, points, side: str = "plus") -> np.ndarray:
+        """0 (−) or 1 (+) for each point: by the sign of φ, ``side`` on Γ."""
+        phi = self.interface.phi(points)
+        on = np.abs(phi) <= tol.ON_INTERFACE * self.length_scale
+        return np.where(on, BODIES.index(side), (phi > 0).astype(int))
+
+
+# --------------------------------------------------------------------------
+# validation of a Scene (built in code or read from a file)
+# --------------------------------------------------------------------------
+
+def _finite(value, path: str) -> float:
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
+        raise SceneError(path, f"must be a finite number (got {value!r})")
+    return float(value)
+
+
+def _check_material(mat: Material, plane: str, path: str) -> None:
+    if _finite(mat.E, f"{path}.E") <= 0:
+        raise SceneError(f"{path}.E", f"Young's modulus must be > 0 (got {mat.E!r})")
+    nu = _finite(mat.nu, f"{path}.nu")
+    if not -1.0 < nu < 0.5:
+        raise SceneError(f"{path}.nu", f"Poisson's ratio must lie in (-1, 0.5) for plane {plane} (got {nu!r})")
+
+
+def _check_domain(domain: Domain) -> None:
+    if isinstance(domain, Rectangle):
+        for k, v in zip("xy", domain.size):
+            if _finite(v, f"domain.size.{k}") <= 0:
+                raise SceneError("domain.size", f"the rectangle's sides must be > 0 (got {list(domain.size)})")
+        for k, v in zip("xy", domain.corner):
+            _finite(v, f"domain.corner.{k}")
+    else:
+        if _finite(domain.radius, "domain.radius") <= 0:
+            raise SceneError("domain.radius", f"must be > 0 (got {domain.radius!r})")
+
+
+def _check_interface(scene: Scene) -> None:
+    itf, dom, L = scene.interface, scene.domain, scene.length_scale
+    if isinstance(itf, LineInterface):
+        if abs(math.hypot(*itf.normal) - 1.0) > 1e-12:
+            raise SceneError("interface.normal", "must be a unit vector (give any non-zero vector in a file)")
+        if itf.chord(dom) is None:
+            raise SceneError("interface", "the line misses the domain")
+        a_minus = itf.minus_area(dom)
+        if min(a_minus, dom.area - a_minus) <= tol.MIN_BODY_AREA_FRACTION * dom.area:
+            raise SceneError("interface", "the line only touches the domain: one body would be empty")
+    else:
+        if _finite(itf.radius, "interface.radius") <= 0:
+            raise SceneError("interface.radius", f"must be > 0 (got {itf.radius!r})")
+        clearance = float(dom.distance_to_boundary([itf.centre])[0]) - itf.radius
+        if clearance <= tol.GEOMETRY * L:
+            where = "misses the domain" if not dom.contains([itf.centre])[0] and clearance < -2 * itf.radius \
+                else "is not strictly inside the domain (it must not touch or cross the outer boundary)"
+            raise SceneError("interface", f"the circle {where}")
+
+
+def _check_point_inside(scene: Scene, point, path: str) -> None:
+    for k, v in zip("xy", point):
+        _finite(v, f"{path}.{k}")
+    if not scene.domain.contains([point], tol.GEOMETRY * scene.length_scale)[0]:
+        raise SceneError(path, f"the point {list(point)} lies outside the domain")
+
+
+def _check_boundary(scene: Scene, name: str, path: str) -> None:
+    if name not in scene.domain.boundary_names:
+        raise SceneError(path, f"no boundary named {name!r} on this domain "
+                         f"(it has: {', '.join(scene.domain.boundary_names)})")
+
+
+def _check_body(name: str, path: str) -> None:
+    if name not in BODIES:
+        raise SceneError(path, f"unknown body {name!r} (bodies are 'minus' and 'plus')")
+
+
+def _check_fix(fix: str, path: str) -> None:
+    if fix not in COMPONENTS:
+        raise SceneError(path, f"must be one of {', '.join(COMPONENTS)} (got {fix!r})")
+
+
+def _check_loads(scene: Scene) -> None:
+    for i, load in enumerate(scene.loads):
+        path = f"loads[{i}]"
+        if isinstance(load, (Traction, Pressure)):
+            _check_boundary(scene, load.boundary, f"{path}.boundary")
+        else:
+            _check_body(load.body, f"{path}.body")
+        if isinstance(load, Pressure):
+            _finite(load.value, f"{path}.value")
+        elif isinstance(load, Torque):
+            _finite(load.torque, f"{path}.torque")
+            if not isinstance(scene.interface, CircleInterface) or load.body != "minus":
+                raise SceneError(f"{path}.body", "a torque acts on the disc inside a circular interface: "
+                                 "it needs a circle interface and body = 'minus'")
+        else:
+            for k, v in zip("xy", load.value):
+                _finite(v, f"{path}.value.{k}")
+
+
+def _check_profiles(scene: Scene) -> None:
+    seen = set()
+    L = scene.length_scale
+    for i, prof in enumerate(scene.profiles):
+        path = f"profiles[{i}]"
+        if not prof.id or prof.id in seen:
+            raise SceneError(f"{path}.id", f"must be a unique, non-empty name (got {prof.id!r})")
+        seen.add(prof.id)
+        if not prof.quantities:
+            raise SceneError(f"{path}.quantities", "must name at least one quantity")
+        for q in prof.quantities:
+            if q not in QUANTITIES:
+                raise SceneError(f"{path}.quantities", f"unknown quantity {q!r} (known: {', '.join(QUANTITIES)})")
+        _check_body(prof.side, f"{path}.side")
+        if isinstance(prof, LineProfile):
+            _check_point_inside(scene, prof.start, f"{path}.start")
+            _check_point_inside(scene, prof.end, f"{path}.end")
+            if math.dist(prof.start, prof.end) <= tol.GEOMETRY * L:
+                raise SceneError(f"{path}.end", "the segment has zero length")
+            if set(prof.quantities) & set(INTERFACE_QUANTITIES):
+                ends = np.array([prof.start, prof.end, np.add(prof.start, prof.end) / 2])
+                if np.max(np.abs(scene.interface.phi(ends))) > tol.GEOMETRY * L:
+                    raise SceneError(f"{path}.quantities", "interface quantities (tN, tT, gN, gT) need a "
+                                     "segment that lies on the interface")
+        else:
+            if prof.parameter not in ("angle", "arclength"):
+                raise SceneError(f"{path}.parameter", f"must be 'angle' or 'arclength' (got {prof.parameter!r})")
+            if prof.parameter == "angle" and not isinstance(scene.interface, CircleInterface):
+                raise SceneError(f"{path}.parameter", "a polar angle needs a circular interface; use 'arclength'")
+
+
+def validate(scene: Scene) -> None:
+    """Raise :class:`SceneError` at the first invalid field of ``scene``."""
+    if not isinstance(scene.name, str) or not scene.name:
+        raise SceneError("name", "must be a non-empty string")
+    if scene.plane not in ("stress", "strain"):
+        raise SceneError("plane", f"must be 'stress' or 'strain' (got {scene.plane!r})")
+    _check_domain(scene.domain)
+    _check_interface(scene)
+    for body in BODIES:
+        if body not in scene.materials:
+            raise SceneError(f"materials.{body}", "missing")
+        _check_material(scene.materials[body], scene.plane, f"materials.{body}")
+    if isinstance(scene.increments, bool) or not isinstance(scene.increments, int) or scene.increments < 1:
+        raise SceneError("increments", f"must be an integer >= 1 (got {scene.increments!r})")
+    if scene.h is not None and _finite(scene.h, "h") <= 0:
+        raise SceneError("h", f"the default resolution must be > 0 (got {scene.h!r})")
+    for i, sup in enumerate(scene.supports):
+        _check_boundary(scene, sup.boundary, f"supports[{i}].boundary")
+        _check_fix(sup.fix, f"supports[{i}].fix")
+        for k, v in zip("xy", sup.value):
+            _finite(v, f"supports[{i}].value.{k}")
+    for i, pin in enumerate(scene.pins):
+        _check_point_inside(scene, pin.point, f"pins[{i}].point")
+        _check_fix(pin.fix, f"pins[{i}].fix")
+    _check_loads(scene)
+    _check_profiles(scene)
+
+
+# --------------------------------------------------------------------------
+# reading a TOML file
+# --------------------------------------------------------------------------
+
+class _Table:
+    """A TOML table being read: typed access by key, unknown keys rejected."""
+
+    def __init__(self, data, path: str):
+        if not isinstance(data, dict):
+            raise SceneError(path or "scene", "must be a table")
+        self.data, self.path, self.used = data, path, set()
+
+    def _key(self, key: str) -> str:
+        return f"{self.path}.{key}" if self.path else key
+
+    def get(self, key: str, kind: str, default=..., choices=None):
+        """The value of ``key`` checked against ``kind``: number, int, str,
+        vector (two numbers), numbers, strings, table, tables."""
+        self.used.add(key)
+        path = self._key(key)
+        if key not in self.data:
+            if default is ...:
+                raise SceneError(path, "missing")
+            return default
+        value = self.data[key]
+        if kind == "number":
+            value = _finite(value, path)
+        elif kind == "int":
+            if isinstance(value, bool) or not isinstance(value, int):
+                raise SceneError(path, f"must be an integer (got {value!r})")
+        elif kind == "str":
+            if not isinstance(value, str):
+                raise SceneError(path, f"must be a string (got {value!r})")
+        elif kind == "vector":
+            if not isinstance(value, list) or len(value) != 2:
+                raise SceneError(path, f"must be a list of two numbers (got {value!r})")
+            value = tuple(_finite(v, f"{path}[{i}]") for i, v in enumerate(value))
+        elif kind == "ints":
+            if not isinstance(value, list) or len(value) != 2 or not all(
+                    isinstance(v, int) and not isinstance(v, bool) and v > 0 for v in value):
+                raise SceneError(path, f"must be a list of two positive integers (got {value!r})")
+            value = tuple(value)
+        elif kind == "strings":
+            if not isinstance(value, list) or not all(isinstance(v, str) for v in value):
+                raise SceneError(path, f"must be a list of strings (got {value!r})")
+            value = tuple(value)
+        elif kind == "table":
+            value = _Table(value, path)
+        elif kind == "tables":
+            if not isinstance(value, list):
+                raise SceneError(path, "must be an array of tables ([[...]] in TOML)")
+            value = [_Table(v, f"{path}[{i}]") for i, v in enumerate(value)]
+        if choices is not None and value not in choices:
+            raise SceneError(path, f"must be one of {', '.join(map(str, choices))} (got {value!r})")
+        return value
+
+    def done(self) -> None:
+        """Reject any key that was not read: a typo must not pass silently."""
+        unknown = sorted(set(self.data) - self.used)
+        if unknown:
+            raise SceneError(self._key(unknown[0]), "unknown key")
+
+
+def _read_domain(t: _Table) -> Domain:
+    kind = t.get("type", "str", choices=("rectangle", "disc"))
+    if kind == "rectangle":
+        domain = Rectangle(t.get("corner", "vector", (0.0, 0.0)), t.get("size", "vector"))
+    else:
+        domain = Disc(t.get("centre", "vector"), t.get("radius", "number"))
+    t.done()
+    return domain
+
+
+def _read_interface(t: _Table) -> tuple[Interface, InterfaceLaw]:
+    kind = t.get("type", "str", choices=("line", "circle"))
+    if kind == "line":
+        normal = t.get("normal", "vector")
+        length = math.hypot(*normal)
+        if length == 0.0:
+            raise SceneError(f"{t.path}.normal", "must be a non-zero vector")
+        itf = LineInterface(t.get("point", "vector"), (normal[0] / length, normal[1] / length))
+    else:
+        itf = CircleInterface(t.get("centre", "vector"), t.get("radius", "number"))
+    law_table = t.get("law", "table")
+    law_table.used = set(law_table.data)  # the law checks its own keys
+    law = make_law(law_table.data, law_table.path)
+    t.done()
+    return itf, law
+
+
+def _read_materials(t: _Table) -> dict[str, Material]:
+    mats = {}
+    for body in BODIES:
+        m = t.get(body, "table")
+        mats[body] = Material(m.get("E", "number"), m.get("nu", "number"))
+        m.done()
+    t.done()
+    return mats
+
+
+def _read_support(t: _Table) -> Support:
+    s = Support(t.get("boundary", "str"), t.get("fix", "str", "xy"), t.get("value", "vector", (0.0, 0.0)))
+    t.done()
+    return s
+
+
+def _read_pin(t: _Table) -> Pin:
+    p = Pin(t.get("point", "vector"), t.get("fix", "str", "xy"))
+    t.done()
+    return p
+
+
+def _read_load(t: _Table) -> Load:
+    kind = t.get("type", "str", choices=("traction", "pressure", "body_force", "torque"))
+    if kind == "traction":
+        load = Traction(t.get("boundary", "str"), t.get("value", "vector"))
+    elif kind == "pressure":
+        load = Pressure(t.get("boundary", "str"), t.get("value", "number"))
+    elif kind == "body_force":
+        load = BodyForce(t.get("body", "str"), t.get("value", "vector"))
+    else:
+        load = Torque(t.get("body", "str", "minus"), t.get("torque", "number"))
+    t.done()
+    return load
+
+
+def _read_profile(t: _Table) -> Profile:
+    kind = t.get("type", "str", choices=("line", "interface"))
+    common = dict(id=t.get("id", "str"), quantities=t.get("quantities", "strings"),
+                  side=t.get("side", "str", "plus"), title=t.get("title", "str", ""))
+    if kind == "line":
+        prof = LineProfile(start=t.get("start", "vector"), end=t.get("end", "vector"), **common)
+    else:
+        prof = InterfaceProfile(parameter=t.get("parameter", "str", "angle"), **common)
+    t.done()
+    return prof
+
+
+def scene_from_dict(data: dict) -> Scene:
+    """Build and validate a scene from the parsed contents of a TOML file."""
+    t = _Table(data, "")
+    interface, law = _read_interface(t.get("interface", "table"))
+    paper = {}
+    paper_t = t.get("paper", "table", None)
+    if paper_t is not None:
+        paper = {k: paper_t.get(k, "ints", None) for k in ("xfem_cells", "efgm_nodes")}
+        paper = {k: v for k, v in paper.items() if v is not None}
+        paper_t.done()
+    scene = Scene(
+        name=t.get("name", "str"),
+        title=t.get("title", "str", ""),
+        plane=t.get("plane", "str", "stress"),
+        h=t.get("h", "number", None),
+        increments=t.get("increments", "int", 1),
+        domain=_read_domain(t.get("domain", "table")),
+        interface=interface,
+        law=law,
+        materials=_read_materials(t.get("materials", "table")),
+        supports=tuple(_read_support(s) for s in t.get("supports", "tables", [])),
+        pins=tuple(_read_pin(p) for p in t.get("pins", "tables", [])),
+        loads=tuple(_read_load(x) for x in t.get("loads", "tables", [])),
+        profiles=tuple(_read_profile(p) for p in t.get("profiles", "tables", [])),
+        paper=paper,
+    )
+    t.done()
+    return scene.validated()
+
+
+def builtin_scenes() -> list[str]:
+    """Names of the scenes shipped with the package (the paper's A, B, C)."""
+    return sorted(p.name[:-5] for p in resources.files("contactcore.scenes").iterdir() if p.name.endswith(".toml"))
+
+
+def scene_text(name_or_path: str | Path) -> str:
+    """The TOML text of a built-in scene name or of a file path."""
+    if str(name_or_path) in builtin_scenes():
+        return resources.files("contactcore.scenes").joinpath(f"{name_or_path}.toml").read_text()
+    path = Path(name_or_path)
+    if not path.is_file():
+        raise SceneError("scene", f"{str(name_or_path)!r} is neither a built-in scene "
+                         f"({', '.join(builtin_scenes())}) nor a readable file")
+    return path.read_text()
+
+
+def load_scene(name_or_path: str | Path) -> Scene:
+    """Read and validate a scene: a built-in name (``A``) or a TOML path."""
+    text = scene_text(name_or_path)
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise SceneError("scene", f"not valid TOML: {exc}") from None
+    return scene_from_dict(data)

@@ -1,0 +1,187 @@
+"""gmsh models of a scene's fitted (conforming) mesh.
+
+The outer domain is split along Γ by OpenCASCADE's boolean fragment, so Γ is
+a curve of the mesh; pinned points are embedded as mesh vertices.  Physical
+groups follow :mod:`meshes.tags`.  Size control: a uniform ``h``, optionally
+graded down to ``h·factor`` on Γ and at the domain's corners, growing back to
+``h`` over ``distance``.  ``order=2`` gives curved (second-order) geometry
+that follows the circle.
+"""
+from __future__ import annotations
+
+import os
+import tempfile
+from contextlib import contextmanager
+from dataclasses import dataclass
+from pathlib import Path
+
+import gmsh
+import numpy as np
+
+from contactcore import DiscretisationError, Scene
+from contactcore import tolerances as tol
+from contactcore.geometry import CircleInterface, Rectangle
+
+from .tags import BODY, BOUNDARY, INTERFACE, NAMES
+
+
+@dataclass(frozen=True)
+class Grading:
+    """Refine to ``h·factor`` on Γ (and corners) and back to ``h`` over ``distance``."""
+
+    factor: float
+    distance: float
+    corners: bool = True
+
+    def __post_init__(self):
+        if not 0.0 < self.factor <= 1.0:
+            raise DiscretisationError(f"grading factor must lie in (0, 1] (got {self.factor})")
+        if not self.distance > 0.0:
+            raise DiscretisationError(f"grading distance must be > 0 (got {self.distance})")
+
+
+_session_depth = 0
+
+
+@contextmanager
+def gmsh_session():
+    """An initialised, silent gmsh for the ``with`` block (re-entrant)."""
+    global _session_depth
+    if _session_depth == 0:
+        gmsh.initialize(["-noenv"], readConfigFiles=False)
+        gmsh.option.setNumber("General.Terminal", 0)
+    _session_depth += 1
+    try:
+        yield gmsh.model
+    finally:
+        _session_depth -= 1
+        if _session_depth == 0:
+            gmsh.finalize()
+
+
+def _add_outer(scene: Scene) -> int:
+    occ, dom = gmsh.model.occ, scene.domain
+    if isinstance(dom, Rectangle):
+        return occ.addRectangle(dom.corner[0], dom.corner[1], 0.0, dom.size[0], dom.size[1])
+    return occ.addDisk(dom.centre[0], dom.centre[1], 0.0, dom.radius, dom.radius)
+
+
+def _add_interface(scene: Scene) -> tuple[int, int]:
+    """The OCC entity that splits the domain: a disc, or the chord of the line."""
+    occ, itf = gmsh.model.occ, scene.interface
+    if isinstance(itf, CircleInterface):
+        return 2, occ.addDisk(itf.centre[0], itf.centre[1], 0.0, itf.radius, itf.radius)
+    a, b = itf.chord(scene.domain)
+    return 1, occ.addLine(occ.addPoint(a[0], a[1], 0.0), occ.addPoint(b[0], b[1], 0.0))
+
+
+def _point_on(dim: int, tag: int) -> np.ndarray:
+    """A point inside a curve (its parametric middle) or a surface (its centre
+    of mass for a convex piece, else a point of the parametric middle)."""
+    lo, hi = gmsh.model.getParametrizationBounds(dim, tag)
+    return np.asarray(gmsh.model.getValue(dim, tag, list((np.asarray(lo) + np.asarray(hi)) / 2)))[:2]
+
+
+def _classify(scene: Scene, surfaces: list[int], rod: list[int]) -> dict[str, list[int]]:
+    """Surfaces of each body: the rod's pieces for a circle, else by the sign
+    of φ at each (convex) piece's centre of mass."""
+    if isinstance(scene.interface, CircleInterface):
+        return {"minus": rod, "plus": [s for s in surfaces if s not in rod]}
+    bodies = {"minus": [], "plus": []}
+    for s in surfaces:
+        com = np.asarray(gmsh.model.occ.getCenterOfMass(2, s))[:2]
+        bodies["plus" if scene.interface.phi([com])[0] > 0 else "minus"].append(s)
+    return bodies
+
+
+def _tag_curves(scene: Scene) -> tuple[dict[str, list[int]], list[int]]:
+    """Outer-boundary curves by boundary name, and the interface curves."""
+    L = scene.length_scale
+    named, interface = {name: [] for name in scene.domain.boundary_names}, []
+    for _, c in gmsh.model.getEntities(1):
+        up, _ = gmsh.model.getAdjacencies(1, c)
+        if len(up) >= 2:
+            interface.append(c)
+            continue
+        names = scene.domain.boundary_of(_point_on(1, c), tol.GEOMETRY * L * 1e3)
+        if len(names) != 1:
+            raise DiscretisationError(f"gmsh curve {c} could not be assigned to one outer boundary ({names})")
+        named[names[0]].append(c)
+    return named, interface
+
+
+def _size_field(scene: Scene, h: float, grading: Grading | None, interface: list[int]) -> None:
+    gmsh.option.setNumber("Mesh.MeshSizeMax", h)
+    gmsh.option.setNumber("Mesh.MeshSizeMin", h if grading is None else h * grading.factor)
+    if grading is None:
+        return
+    fld = gmsh.model.mesh.field
+    dist = fld.add("Distance")
+    fld.setNumbers(dist, "CurvesList", interface)
+    fld.setNumber(dist, "Sampling", 200)
+    if grading.corners and isinstance(scene.domain, Rectangle):
+        corners = [t for _, t in gmsh.model.getEntities(0)
+                   if np.min(np.linalg.norm(scene.domain.corners - np.asarray(gmsh.model.getValue(0, t, []))[:2],
+                                            axis=1)) <= tol.GEOMETRY * scene.length_scale]
+        fld.setNumbers(dist, "PointsList", corners)
+    thr = fld.add("Threshold")
+    fld.setNumber(thr, "InField", dist)
+    fld.setNumber(thr, "SizeMin", h * grading.factor)
+    fld.setNumber(thr, "SizeMax", h)
+    fld.setNumber(thr, "DistMin", 0.0)
+    fld.setNumber(thr, "DistMax", grading.distance)
+    fld.setAsBackgroundMesh(thr)
+    for opt in ("Mesh.MeshSizeExtendFromBoundary", "Mesh.MeshSizeFromPoints", "Mesh.MeshSizeFromCurvature"):
+        gmsh.option.setNumber(opt, 0)
+
+
+def build_model(scene: Scene, h: float, *, order: int = 1, grading: Grading | None = None) -> None:
+    """Mesh ``scene`` in the current gmsh model (inside :func:`gmsh_session`).
+
+    Triangles of size ``h`` (optionally graded), Γ embedded, pinned points as
+    vertices, geometry of ``order`` 1 (straight) or 2 (curved).
+    """
+    if not h > 0:
+        raise DiscretisationError(f"mesh size h must be > 0 (got {h})")
+    if order not in (1, 2):
+        raise DiscretisationError(f"geometry order must be 1 or 2 (got {order})")
+    gmsh.model.add(f"scene_{scene.name}")
+    occ = gmsh.model.occ
+    outer = _add_outer(scene)
+    tool = _add_interface(scene)
+    pins = [(0, occ.addPoint(p.point[0], p.point[1], 0.0)) for p in scene.pins]
+    _, pieces = occ.fragment([(2, outer)], [tool] + pins)
+    occ.synchronize()
+    surfaces = [t for _, t in gmsh.model.getEntities(2)]
+    rod = [t for d, t in pieces[1] if d == 2] if tool[0] == 2 else []
+    bodies = _classify(scene, surfaces, rod)
+    named, interface = _tag_curves(scene)
+    for body, tag in BODY.items():
+        gmsh.model.addPhysicalGroup(2, bodies[body], tag)
+    gmsh.model.addPhysicalGroup(1, interface, INTERFACE)
+    for name, curves in named.items():
+        gmsh.model.addPhysicalGroup(1, curves, BOUNDARY[name])
+    for dim, tag in [(2, t) for t in BODY.values()] + [(1, INTERFACE)] + [(1, BOUNDARY[n]) for n in named]:
+        gmsh.model.setPhysicalName(dim, tag, NAMES[tag])
+    _size_field(scene, h, grading, interface)
+    gmsh.model.mesh.generate(2)
+    if order == 2:
+        gmsh.model.mesh.setOrder(2)
+
+
+def write_mesh(scene: Scene, h: float, out: str | Path, *, order: int = 1, grading: Grading | None = None) -> Path:
+    """Build the fitted mesh and write it to ``out`` (atomically: a temporary
+    file in the same folder, renamed when complete)."""
+    out = Path(out)
+    out.parent.mkdir(parents=True, exist_ok=True)
+    with gmsh_session():
+        build_model(scene, h, order=order, grading=grading)
+        fd, tmp = tempfile.mkstemp(suffix=out.suffix or ".msh", dir=out.parent)
+        os.close(fd)
+        try:
+            gmsh.write(tmp)
+            os.replace(tmp, out)
+        finally:
+            if os.path.exists(tmp):
+                os.unlink(tmp)
+    return out

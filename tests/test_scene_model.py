@@ -1,0 +1,183 @@
+"""The scene model: the shipped scenes match SCENES.md, and every validation
+rule rejects its bad input with a message naming the field."""
+import math
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from contactcore import (CircleInterface, LineInterface, Rectangle, SceneError, builtin_scenes, load_scene,
+                         scene_from_dict, scene_text)
+from contactcore.profiles import sample_points
+from contactcore.scene import Torque, Traction
+
+
+def test_builtin_scenes_are_the_papers_three():
+    assert builtin_scenes() == ["A", "B", "C"]
+
+
+def test_scene_a_values():
+    s = load_scene("A")
+    assert s.domain == Rectangle((0.0, 0.0), (1.0, 1.0))
+    assert s.interface == LineInterface((0.0, 0.5), (0.0, 1.0))
+    assert (s.materials["minus"].E, s.materials["plus"].nu) == (2e11, 0.3)
+    assert (s.law.kN, s.law.kT) == (1e10, 1e8)
+    assert s.increments == 20 and s.plane == "stress"
+    assert s.loads == (Traction("top", (2.5e4, -1.0e5)),)
+    assert [p.id for p in s.profiles] == ["A1", "A2", "A3", "A4", "A5"]
+    assert s.paper == {"xfem_cells": (19, 19), "efgm_nodes": (20, 20)}
+
+
+def test_scene_b_values():
+    s = load_scene("B")
+    assert s.interface == CircleInterface((0.0, 0.0), 0.25)
+    assert (s.materials["minus"].E, s.materials["plus"].E, s.materials["plus"].nu) == (2e11, 2e10, 0.2)
+    assert (s.law.kN, s.law.kT, s.increments) == (1e12, 1e10, 50)
+    assert sorted(sup.boundary for sup in s.supports) == ["bottom", "left", "right", "top"]
+    (torque,) = s.loads
+    assert isinstance(torque, Torque) and math.isclose(torque.torque, -0.96e3 * 9.81)
+
+
+def test_scene_c_values():
+    s = load_scene("C")
+    assert s.domain == Rectangle((0.0, 0.0), (2.0, 3.0))
+    assert s.interface == CircleInterface((1.0, 1.5), 0.45)
+    assert s.loads == (Traction("top", (5e4, -2e5)),)
+    assert s.paper == {"xfem_cells": (20, 30), "efgm_nodes": (21, 31)}
+
+
+def test_profile_sampling_follows_scenes_md():
+    s = load_scene("B")
+    seg, pts, param = sample_points(s, s.profiles[0])
+    assert len(pts) == 101 and param == "arclength"
+    assert np.isclose(pts[0, 0], -1.0 + 2e-9) and np.isclose(pts[-1, 0], 1.0 - 2e-9, rtol=0, atol=1e-15)
+    theta, pts, param = sample_points(s, s.profiles[4])
+    assert param == "angle" and theta[0] == 0.0 and np.isclose(theta[-1], 2 * np.pi * (1 - 1e-9))
+    assert np.allclose(np.hypot(pts[:, 0], pts[:, 1]), 0.25)
+
+
+def _set(d, path, value):
+    keys = path.split(".")
+    for k in keys[:-1]:
+        d = d[int(k)] if isinstance(d, list) else d[k]
+    if value is _DELETE:
+        del d[keys[-1]]
+    elif isinstance(d, list):
+        d[int(keys[-1])] = value
+    else:
+        d[keys[-1]] = value
+
+
+_DELETE = object()
+
+# (scene, dotted path to change, new value, field named in the error, words in the message)
+BAD_INPUTS = [
+    ("A", "materials.minus.E", _DELETE, "materials.minus.E", "missing"),
+    ("A", "colour", "red", "colour", "unknown key"),
+    ("A", "materials.plus.G", 1.0, "materials.plus.G", "unknown key"),
+    ("A", "interface.law.kX", 1.0, "interface.law.kX", "unknown parameter"),
+    ("A", "materials.minus.E", 0.0, "materials.minus.E", "must be > 0"),
+    ("A", "materials.plus.E", -2e11, "materials.plus.E", "must be > 0"),
+    ("A", "materials.minus.E", "stiff", "materials.minus.E", "finite number"),
+    ("A", "materials.minus.nu", 0.5, "materials.minus.nu", "(-1, 0.5)"),
+    ("A", "materials.plus.nu", -1.0, "materials.plus.nu", "(-1, 0.5)"),
+    ("A", "materials.plus.nu", 0.7, "materials.plus.nu", "(-1, 0.5)"),
+    ("A", "interface.law.kN", 0.0, "interface.law.kN", "penalty > 0"),
+    ("A", "interface.law.kT", -1e8, "interface.law.kT", "penalty > 0"),
+    ("A", "interface.law.kN", float("inf"), "interface.law.kN", "penalty > 0"),
+    ("A", "interface.law.type", "glue", "interface.law.type", "unknown interface law"),
+    ("A", "interface.point", [0.0, 2.0], "interface", "misses the domain"),
+    ("A", "interface.point", [0.0, 1.0], "interface", "only touches"),
+    ("A", "interface.normal", [0.0, 0.0], "interface.normal", "non-zero"),
+    ("B", "interface.radius", 1.0, "interface", "not strictly inside"),
+    ("B", "interface.radius", 1.5, "interface", "not strictly inside"),
+    ("B", "interface.centre", [5.0, 5.0], "interface", "misses the domain"),
+    ("B", "interface.radius", 0.0, "interface.radius", "must be > 0"),
+    ("A", "profiles.0.end", [1.5, 0.5], "profiles[0].end", "outside the domain"),
+    ("A", "profiles.3.quantities", ["gN"], "profiles[3].quantities", "on the interface"),
+    ("A", "profiles.0.quantities", ["vonmises"], "profiles[0].quantities", "unknown quantity"),
+    ("A", "profiles.1.id", "A1", "profiles[1].id", "unique"),
+    ("A", "profiles.0.side", "middle", "profiles[0].side", "unknown body"),
+    ("A", "loads.0.boundary", "outer", "loads[0].boundary", "no boundary named 'outer'"),
+    ("A", "loads.0.type", "wind", "loads[0].type", "must be one of"),
+    ("A", "supports.0.boundary", "roof", "supports[0].boundary", "no boundary named 'roof'"),
+    ("A", "supports.0.fix", "z", "supports[0].fix", "must be one of"),
+    ("A", "increments", 0, "increments", ">= 1"),
+    ("A", "increments", 2.5, "increments", "integer"),
+    ("A", "plane", "3d", "plane", "'stress' or 'strain'"),
+    ("A", "domain.size", [1.0, 0.0], "domain.size", "> 0"),
+    ("A", "domain.type", "triangle", "domain.type", "must be one of"),
+    ("A", "h", -0.1, "h", "> 0"),
+]
+
+
+@pytest.mark.parametrize("name,path,value,field,words", BAD_INPUTS, ids=[f"{b[0]}:{b[1]}={b[2]!r}"[:60]
+                                                                         for b in BAD_INPUTS])
+def test_every_bad_input_is_named(scene_dict, name, path, value, field, words):
+    data = scene_dict(name)
+    _set(data, path, value)
+    with pytest.raises(SceneError) as err:
+        scene_from_dict(data)
+    assert err.value.field == field
+    assert words in str(err.value)
+
+
+def test_torque_needs_the_disc_of_a_circle(scene_dict):
+    data = scene_dict("A")
+    data["loads"].append({"type": "torque", "body": "minus", "torque": 1.0})
+    with pytest.raises(SceneError, match=r"loads\[1\].body: a torque acts on the disc"):
+        scene_from_dict(data)
+
+
+def test_pin_outside_domain(scene_dict):
+    data = scene_dict("A")
+    data["pins"] = [{"point": [2.0, 0.0]}]
+    with pytest.raises(SceneError, match=r"pins\[0\].point: the point \[2.0, 0.0\] lies outside"):
+        scene_from_dict(data)
+
+
+def test_a_line_at_a_corner_only_touches(scene_dict):
+    data = scene_dict("A")
+    data["interface"].update(point=[0.0, 0.0], normal=[1.0, 1.0])
+    with pytest.raises(SceneError, match="only touches"):
+        scene_from_dict(data)
+
+
+def test_inclined_line_is_accepted_and_normalised(scene_dict):
+    data = scene_dict("A")
+    data["interface"].update(point=[0.5, 0.5], normal=[-1.0, 3.0])
+    data["profiles"] = [p for p in data["profiles"] if p["id"] != "A5"]  # A5 lies on the old Γ
+    s = scene_from_dict(data)
+    assert math.isclose(math.hypot(*s.interface.normal), 1.0)
+    a, b = s.interface.chord(s.domain)
+    assert np.allclose(s.interface.phi([a, b]), 0.0, atol=1e-15)
+    assert np.allclose(s.domain.distance_to_boundary([a, b]), 0.0, atol=1e-15)
+
+
+def test_invalid_toml_is_named(tmp_path):
+    bad = tmp_path / "bad.toml"
+    bad.write_text("name = 'x'\n[domain\n")
+    with pytest.raises(SceneError, match="scene: not valid TOML"):
+        load_scene(bad)
+
+
+def test_missing_file_is_named():
+    with pytest.raises(SceneError, match="neither a built-in scene"):
+        load_scene("no-such-scene.toml")
+
+
+def _cli(*args):
+    return subprocess.run([sys.executable, *args], capture_output=True, text=True, timeout=300)
+
+
+def test_cli_rejects_bad_scene_without_traceback(tmp_path):
+    bad = tmp_path / "bad.toml"
+    bad.write_text(scene_text("A").replace("E = 2e11", "E = -5", 1))
+    runs = {"verification": ["-m", "verification", "run", str(bad), "--out", str(tmp_path / "out")],
+            "meshes": ["-m", "meshes", str(bad), "--out", str(tmp_path / "m.msh")]}
+    for args in runs.values():
+        proc = _cli(*args)
+        assert proc.returncode == 2, proc.stderr
+        assert proc.stderr.strip() == "error: materials.minus.E: Young's modulus must be > 0 (got -5.0)"
+    assert not (tmp_path / "out").exists() and not (tmp_path / "m.msh").exists()

@@ -1,0 +1,77 @@
+"""Command line of the verification drivers.
+
+    python -m verification run SCENE_OR_TOML --method fe|all [--degree 1|2]
+        [--h H] [--paper] [--xdmf] [--petsc-option KEY=VALUE ...] --out DIR
+
+Bad input ends with one line ``error: <field>: <problem>`` and exit status 2.
+"""
+from __future__ import annotations
+
+import argparse
+import logging
+import sys
+from pathlib import Path
+
+from contactcore import ContactError
+
+from . import methods
+
+
+def _petsc_option(text: str) -> tuple[str, str]:
+    key, sep, value = text.partition("=")
+    if not sep or not key:
+        raise argparse.ArgumentTypeError(f"expected KEY=VALUE, got {text!r}")
+    return key.lstrip("-"), value
+
+
+def _parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(prog="python -m verification")
+    sub = parser.add_subparsers(dest="command", required=True)
+    run = sub.add_parser("run", help="solve one scene with one or more methods")
+    run.add_argument("scene", help="built-in scene name (A, B, C) or a scene TOML file")
+    run.add_argument("--method", nargs="+", default=["all"], choices=[*methods.METHODS, "all"])
+    run.add_argument("--degree", type=int, default=1, choices=(1, 2))
+    run.add_argument("--h", type=float, help="resolution for every method (default: the scene's h)")
+    run.add_argument("--paper", action="store_true", help="use the paper's discretisations")
+    run.add_argument("--xdmf", action="store_true", help="also write XDMF per body for ParaView")
+    run.add_argument("--petsc-option", type=_petsc_option, action="append", default=[], metavar="KEY=VALUE",
+                     help="override a PETSc option of the fe solve (e.g. pc_factor_mat_solver_type=superlu)")
+    run.add_argument("--out", type=Path, required=True, help="result folder")
+    return parser
+
+
+def _configure_logging() -> None:
+    """Our progress at INFO; everything else (ffcx's JIT goes through
+    setuptools, which lowers the root logger's level) only from WARNING on,
+    enforced on the handler, which setuptools does not touch."""
+    fmt = logging.Formatter("%(levelname)s %(name)s: %(message)s")
+    root = logging.StreamHandler()
+    root.setLevel(logging.WARNING)
+    root.setFormatter(fmt)
+    logging.basicConfig(handlers=[root], force=True)
+    ours = logging.getLogger("verification")
+    ours.handlers[:] = [logging.StreamHandler()]
+    ours.handlers[0].setFormatter(fmt)
+    ours.setLevel(logging.INFO)
+    ours.propagate = False
+
+
+def main(argv=None) -> int:
+    argv = sys.argv[1:] if argv is None else argv
+    args = _parser().parse_args(argv)
+    _configure_logging()
+    from .run import run
+
+    try:
+        if args.h is not None and not args.h > 0:
+            raise ContactError(f"--h: must be > 0 (got {args.h})")
+        run(args.scene, args.method, args.out, h=args.h, degree=args.degree, paper=args.paper,
+            xdmf=args.xdmf, petsc_options=dict(args.petsc_option), argv=argv)
+    except ContactError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

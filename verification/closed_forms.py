@@ -1,0 +1,156 @@
+"""Closed-form solutions of interface problems, usable by every method.
+
+Each case builds its :class:`~contactcore.Scene` in code and offers the exact
+solution as :class:`~contactcore.result.Fields` (displacement and stress per
+body at arbitrary points), so the profiles of the exact solution are sampled
+by the same code as every method's.  numpy only.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from contactcore import (CircleInterface, Disc, LineInterface, LinearLaw, LineProfile, Material, Pin, Pressure,
+                         Rectangle, Scene, Traction)
+from contactcore.elasticity import compliance, lame
+
+_ROT = np.array([[0.0, -1.0], [1.0, 0.0]])  # infinitesimal rotation generator
+
+
+def _tensor(voigt_strain: np.ndarray) -> np.ndarray:
+    exx, eyy, gxy = voigt_strain
+    return np.array([[exx, gxy / 2], [gxy / 2, eyy]])
+
+
+@dataclass
+class InterfacePatch:
+    """Uniform stress across an inclined straight Γ with two materials.
+
+    Both bodies carry the same uniform stress σ (so tractions balance on Γ).
+    The strains ``ε± = C± σ`` differ; a piecewise-affine field with a
+    constant jump exists only if the tangential strains agree (Hadamard):
+    ``t·ε⁺t = t·ε⁻t``, which fixes ``σ_tt`` from ``σ_nn`` when the
+    materials differ.  The jump is ``g = (σ_nn/k_N) n + (σ_nt/k_T) t``
+    (traction on + is ``−σn = −(t_N n + t_T t)``), plus the rotation
+    ``Δω = −n·Δε t`` that makes ``(Δε + Δω J) t = 0``.  Held by the tractions
+    ``σ n_out`` on the four edges and two pins in the − body (``p`` fixed,
+    and one component of ``u(q)``).  Any P1 (or higher) method must reproduce it
+    to round-off.
+    """
+
+    scene: Scene
+    sigma: np.ndarray
+    strains: tuple[np.ndarray, np.ndarray]
+    rotations: tuple[float, float]
+    jump: np.ndarray
+    origin: np.ndarray
+
+    def displacement(self, points, bodies) -> np.ndarray:
+        x = np.asarray(points, float)[:, :2]
+        p = np.asarray(self.scene.pins[0].point)
+        um = (x - p) @ (self.strains[0] + self.rotations[0] * _ROT).T
+        up = um + (x - self.origin) @ (self.strains[1] - self.strains[0]
+                                       + (self.rotations[1] - self.rotations[0]) * _ROT).T + self.jump
+        return np.where(np.asarray(bodies)[:, None] == 1, up, um)
+
+    def stress(self, points, bodies) -> np.ndarray:
+        s = self.sigma
+        return np.tile([s[0, 0], s[1, 1], s[0, 1]], (len(points), 1))
+
+
+def interface_patch(angle_deg: float = 30.0, *, minus=Material(2e11, 0.3), plus=Material(7e10, 0.2),
+                    kN: float = 1e12, kT: float = 5e10, sigma_nn: float = -3e6, sigma_nt: float = 1e6,
+                    sigma_tt: float = 2e6, plane: str = "stress") -> InterfacePatch:
+    """The patch test on ``[0,1]²`` with Γ through the centre at ``angle_deg``
+    to the x axis (``σ_tt`` is used only when the materials are equal)."""
+    a = np.radians(angle_deg)
+    n = np.array([-np.sin(a), np.cos(a)])
+    t = np.array([n[1], -n[0]])
+    C = [compliance(m.E, m.nu, plane) for m in (minus, plus)]
+    dc11, dc12 = C[0][0, 0] - C[1][0, 0], C[1][0, 1] - C[0][0, 1]
+    if abs(dc11) > 1e-12 * C[0][0, 0]:
+        sigma_tt = sigma_nn * dc12 / dc11
+    Q = np.column_stack([n, t])
+    sigma = Q @ np.array([[sigma_nn, sigma_nt], [sigma_nt, sigma_tt]]) @ Q.T
+    voigt = np.array([sigma[0, 0], sigma[1, 1], sigma[0, 1]])
+    eps = tuple(_tensor(c @ voigt) for c in C)
+    d_eps = eps[1] - eps[0]
+    origin = np.array([0.5, 0.5])
+    # both pins in the − body, on a parallel to Γ; q fixes the component
+    # along which q − p is the longer, which determines the rotation
+    p, q = origin - 0.3 * n - 0.2 * t, origin - 0.3 * n + 0.2 * t
+    d, ed = q - p, eps[0] @ (q - p)
+    q_fix = "y" if abs(d[0]) >= abs(d[1]) else "x"
+    w_minus = -ed[1] / d[0] if q_fix == "y" else ed[0] / d[1]
+    w_plus = w_minus - n @ d_eps @ t
+    edges = {"left": (-1, 0), "right": (1, 0), "bottom": (0, -1), "top": (0, 1)}
+    scene = Scene(
+        name=f"patch{angle_deg:g}", title="interface patch test", plane=plane,
+        domain=Rectangle((0.0, 0.0), (1.0, 1.0)), interface=LineInterface(tuple(origin), tuple(n)),
+        materials={"minus": minus, "plus": plus}, law=LinearLaw(kN, kT),
+        loads=tuple(Traction(e, tuple(sigma @ np.array(v, float))) for e, v in edges.items()),
+        pins=(Pin(tuple(p), "xy"), Pin(tuple(q), q_fix)),
+    ).validated()
+    return InterfacePatch(scene, sigma, eps, (w_minus, w_plus), (sigma_nn / kN) * n + (sigma_nt / kT) * t, origin)
+
+
+@dataclass
+class PressurisedRod:
+    """A disc of radius ``b`` under outer pressure ``p``, with a rod of radius
+    ``a`` bonded by normal springs ``k_N`` (a normal jump on a curved Γ).
+
+    Lamé: ``u_r = A r`` in the rod, ``u_r = B r + C/r`` around it, with
+    ``σ_rr = 2(λ+μ)A`` (rod) and ``σ_rr = 2(λ+μ)B − 2μC/r²``,
+    ``σ_θθ = 2(λ+μ)B + 2μC/r²`` (annulus).  The three conditions are the
+    radial traction balance on Γ, the spring ``σ_rr(a) = k_N (u_r⁺ − u_r⁻)``
+    (the traction on + is ``−σ_rr n = −t_N n``) and ``σ_rr(b) = −p``.  No
+    tangential jump: ``k_T`` plays no role.  Pins at the centre (x, y) and at
+    ``(a/2, 0)`` (y) remove rigid modes without disturbing the solution.
+    """
+
+    scene: Scene
+    coeffs: np.ndarray  # A, B, C
+    lames: tuple[tuple[float, float], tuple[float, float]]
+
+    def _radial(self, r, bodies):
+        A, B, C = self.coeffs
+        (lm, mm), (lp, mp) = self.lames
+        rod = np.asarray(bodies) == 0
+        ur = np.where(rod, A * r, B * r + C / r)
+        srr = np.where(rod, 2 * (lm + mm) * A, 2 * (lp + mp) * B - 2 * mp * C / r ** 2)
+        stt = np.where(rod, 2 * (lm + mm) * A, 2 * (lp + mp) * B + 2 * mp * C / r ** 2)
+        return ur, srr, stt
+
+    def displacement(self, points, bodies) -> np.ndarray:
+        x = np.asarray(points, float)[:, :2]
+        r = np.maximum(np.hypot(x[:, 0], x[:, 1]), 1e-300)
+        ur, _, _ = self._radial(r, bodies)
+        return x * (ur / r)[:, None]
+
+    def stress(self, points, bodies) -> np.ndarray:
+        x = np.asarray(points, float)[:, :2]
+        r = np.maximum(np.hypot(x[:, 0], x[:, 1]), 1e-300)
+        c, s = x[:, 0] / r, x[:, 1] / r
+        _, srr, stt = self._radial(r, bodies)
+        return np.column_stack([srr * c * c + stt * s * s, srr * s * s + stt * c * c, (srr - stt) * c * s])
+
+
+def pressurised_rod(*, a: float = 0.4, b: float = 1.0, p: float = 1e6, kN: float = 1e11, kT: float = 1e10,
+                    rod=Material(2e11, 0.3), matrix=Material(7e10, 0.25), plane: str = "stress") -> PressurisedRod:
+    """The closed form of :class:`PressurisedRod` and its scene."""
+    (lm, mm), (lp, mp) = lame(rod.E, rod.nu, plane), lame(matrix.E, matrix.nu, plane)
+    M = np.array([
+        [2 * (lm + mm), -2 * (lp + mp), 2 * mp / a ** 2],                 # σ_rr continuous on Γ
+        [kN * a, 2 * (lp + mp) - kN * a, -2 * mp / a ** 2 - kN / a],       # σ_rr(a) = k_N [[u_r]]
+        [0.0, 2 * (lp + mp), -2 * mp / b ** 2],                           # σ_rr(b) = −p
+    ])
+    coeffs = np.linalg.solve(M, np.array([0.0, 0.0, -p]))
+    scene = Scene(
+        name="pressurised_rod", title="rod in a pressurised disc (normal jump on a circle)", plane=plane,
+        domain=Disc((0.0, 0.0), b), interface=CircleInterface((0.0, 0.0), a),
+        materials={"minus": rod, "plus": matrix}, law=LinearLaw(kN, kT),
+        loads=(Pressure("outer", p),), pins=(Pin((0.0, 0.0), "xy"), Pin((a / 2, 0.0), "y")),
+        profiles=(LineProfile("radial", (0.0, 0.0), (b, 0.0), ("sxx", "syy", "ux")),),
+    ).validated()
+    return PressurisedRod(scene, coeffs, ((lm, mm), (lp, mp)))

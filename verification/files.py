@@ -1,0 +1,101 @@
+"""Result files, written atomically, with the provenance of every run.
+
+Every file is written to a temporary name in its final folder and renamed
+when complete, so an interrupted run never leaves a half-written file under
+a good name.
+"""
+from __future__ import annotations
+
+import csv
+import io
+import json
+import os
+import platform
+import shutil
+import sys
+import tempfile
+from contextlib import contextmanager
+from pathlib import Path
+
+from contactcore import ProfileData
+
+
+@contextmanager
+def atomic_path(path: Path, suffix: str = ""):
+    """A temporary path beside ``path``, renamed onto it if the block succeeds."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=suffix or path.suffix, dir=path.parent)
+    os.close(fd)
+    try:
+        yield Path(tmp)
+        os.replace(tmp, path)
+    finally:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+
+
+@contextmanager
+def atomic_folder(path: Path):
+    """A temporary folder beside ``path`` that replaces it if the block succeeds."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    tmp = Path(tempfile.mkdtemp(prefix=f".{path.name}.", dir=path.parent))
+    try:
+        yield tmp
+        if path.exists():
+            shutil.rmtree(path)
+        os.replace(tmp, path)
+    finally:
+        if tmp.exists():
+            shutil.rmtree(tmp)
+
+
+def write_text(path: Path, text: str) -> Path:
+    with atomic_path(path) as tmp:
+        tmp.write_text(text)
+    return Path(path)
+
+
+def write_json(path: Path, data) -> Path:
+    return write_text(path, json.dumps(data, indent=2, default=_jsonable) + "\n")
+
+
+def _jsonable(value):
+    if hasattr(value, "tolist"):
+        return value.tolist()
+    return str(value)
+
+
+def write_profile_csv(path: Path, profile: ProfileData) -> Path:
+    """Columns ``s, x, y`` then the quantities (SCENES.md), full precision."""
+    buf = io.StringIO()
+    writer = csv.writer(buf, lineterminator="\n")
+    writer.writerow(profile.names)
+    cols = [profile.columns[n] for n in profile.names]
+    for row in zip(*cols):
+        writer.writerow([repr(float(v)) for v in row])
+    return write_text(path, buf.getvalue())
+
+
+def read_profile_csv(path: Path) -> dict:
+    """The columns of a profile CSV as lists of floats."""
+    with open(path, newline="") as fh:
+        rows = list(csv.reader(fh))
+    return {name: [float(r[i]) for r in rows[1:]] for i, name in enumerate(rows[0])}
+
+
+def versions() -> dict:
+    """Versions of Python and of the numerical packages this run imported."""
+    out = {"python": platform.python_version()}
+    for name in ("numpy", "scipy", "dolfinx", "petsc4py", "gmsh", "ufl", "basix", "ffcx", "matplotlib"):
+        mod = sys.modules.get(name)
+        if mod is not None:
+            out[name] = getattr(mod, "__version__", "unknown")
+    return out
+
+
+def provenance(argv: list[str]) -> dict:
+    """What produced a result folder: the command, the machine, the versions."""
+    return {"command": " ".join(["python -m verification", *argv]), "cwd": os.getcwd(),
+            "host": platform.node(), "versions": versions()}

@@ -1,0 +1,81 @@
+"""``python -m verification run``: solve one scene with one or more methods.
+
+Writes, under ``--out DIR``::
+
+    DIR/run.json                  command, versions, options
+    DIR/scene.toml                the scene as read
+    DIR/<method>/summary.json     DOFs, timings, solver health
+    DIR/<method>/profiles/<ID>.csv
+    DIR/<method>/xdmf/            (with --xdmf) one XDMF file per body
+    DIR/plots/<ID>.png            each profile, methods overlaid
+    DIR/summary.md                a table of the runs
+"""
+from __future__ import annotations
+
+import logging
+from pathlib import Path
+
+from contactcore import BODIES, load_scene, sample_profiles, scene_text
+
+from . import files, methods, plots
+
+log = logging.getLogger("verification")
+
+
+def _write_xdmf(folder: Path, result) -> None:
+    from dolfinx.io import XDMFFile
+    from xdolfinx.output import body_functions
+
+    with files.atomic_folder(folder) as tmp:
+        for b, name in enumerate(BODIES):
+            msh, u, sigma = body_functions(result.fields, b)
+            with XDMFFile(msh.comm, str(tmp / f"{name}.xdmf"), "w") as xdmf:
+                xdmf.write_mesh(msh)
+                xdmf.write_function(u)
+                xdmf.write_function(sigma)
+
+
+def _summary_table(summaries: list[dict]) -> str:
+    lines = ["| method | degree | DOFs | mesh (s) | assembly (s) | solve (s) | total (s) | residual | condition |",
+             "|---|---|---|---|---|---|---|---|---|"]
+    for s in summaries:
+        t, sv = s["timings"], s["solver"]
+        cond = "—" if sv["condition"] is None else f"{sv['condition']:.2e}"
+        lines.append(f"| {s['method']} | {s['degree']} | {s['dofs']} | {t['mesh']:.3f} | {t['assembly']:.3f} | "
+                     f"{t['solve']:.3f} | {t['total']:.3f} | {sv['residual']:.1e} | {cond} |")
+    warnings = [f"- {s['method']}: {w}" for s in summaries for w in s["solver"]["warnings"]]
+    return "\n".join(lines + ([""] + ["Warnings:"] + warnings if warnings else [])) + "\n"
+
+
+def run(scene_name: str, method_names: list[str], out: Path, *, h=None, degree=1, paper=False,
+        xdmf=False, petsc_options=None, argv=()) -> list[dict]:
+    """Solve, sample the scene's profiles, write everything; return the summaries."""
+    scene = load_scene(scene_name)
+    out = Path(out)
+    files.write_text(out / "scene.toml", scene_text(scene_name))
+    profiles, summaries = {}, []
+    for name in methods.expand(method_names):
+        log.info("scene %s: solving with %s (degree %d)", scene.name, name, degree)
+        options = {"petsc_options": petsc_options} if petsc_options and name == "fe" else {}
+        result = methods.solver(name)(scene, h, degree=degree, paper=paper, **options)
+        summary = result.summary()
+        summaries.append(summary)
+        for w in result.solver.warnings:
+            log.warning("%s: %s", name, w)
+        log.info("%s: %d DOFs, total %.2f s, residual %.1e", name, result.dofs, result.timings.total,
+                 result.solver.residual)
+        for prof in sample_profiles(scene, result.fields):
+            files.write_profile_csv(out / name / "profiles" / f"{prof.id}.csv", prof)
+            profiles.setdefault(prof.id, {})[f"{name} (p{degree})"] = prof
+        if xdmf:
+            _write_xdmf(out / name / "xdmf", result)
+        files.write_json(out / name / "summary.json", summary)
+    titles = {p.id: p.title for p in scene.profiles}
+    for pid, runs in profiles.items():
+        plots.plot_profile(out / "plots" / f"{pid}.png", titles[pid], runs)
+    files.write_text(out / "summary.md", f"# Scene {scene.name}: {scene.title}\n\n" + _summary_table(summaries))
+    files.write_json(out / "run.json", {**files.provenance(list(argv)), "scene": scene_name,
+                                        "methods": methods.expand(method_names), "h": h, "degree": degree,
+                                        "paper": paper, "petsc_options": petsc_options or {}})
+    log.info("wrote %s", out)
+    return summaries

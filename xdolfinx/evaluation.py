@@ -1,0 +1,91 @@
+"""Point evaluation of per-body dolfinx functions.
+
+Each body's displacement and stress live on the whole mesh but mean
+something only on that body's cells.  A point is evaluated in a cell of the
+requested body that contains it; if none does (a point of the exact curved
+Γ that falls just outside the polygonal body), in the nearest cell of that
+body, whose polynomial is then extended a distance O(h²) — the same
+convention as the + side limit on Γ (SCENES.md).
+"""
+from __future__ import annotations
+
+import numpy as np
+from dolfinx import geometry
+from dolfinx.mesh import compute_midpoints
+from scipy.spatial import cKDTree
+
+#: Nearest cell midpoints examined before the exact distance decides.
+_NEAREST_CANDIDATES = 8
+
+
+class BodyCellLocator:
+    """Finds, for each point, a cell of a given body to evaluate in."""
+
+    def __init__(self, msh, body_cells: list[np.ndarray]):
+        self.msh = msh
+        tdim = msh.topology.dim
+        ncells = msh.topology.index_map(tdim).size_local
+        self.body_of_cell = np.full(ncells, -1, dtype=np.int8)
+        for b, cells in enumerate(body_cells):
+            self.body_of_cell[cells[cells < ncells]] = b
+        self.tree = geometry.BoundingBoxTree(msh, tdim)
+        self.body_cells = [c[c < ncells] for c in body_cells]
+        self.midpoints = [compute_midpoints(msh, tdim, c)[:, :2] for c in self.body_cells]
+        self.kdtrees = [cKDTree(m) for m in self.midpoints]
+
+    def cells(self, points: np.ndarray, bodies: np.ndarray) -> np.ndarray:
+        """A cell of body ``bodies[i]`` holding (or nearest to) ``points[i]``."""
+        p3 = np.zeros((len(points), 3))
+        p3[:, :2] = points
+        colliding = geometry.compute_colliding_cells(self.msh, geometry.compute_collisions(self.tree, p3), p3)
+        out = np.full(len(points), -1, dtype=np.int32)
+        owner = np.repeat(np.arange(len(points)), np.diff(colliding.offsets))
+        hit = colliding.array
+        ok = (hit < len(self.body_of_cell))
+        ok[ok] = self.body_of_cell[hit[ok]] == bodies[owner[ok]]
+        first_point, first = np.unique(owner[ok], return_index=True)
+        out[first_point] = hit[ok][first]
+        for b in np.unique(bodies[out < 0]):
+            missing = np.flatnonzero((out < 0) & (bodies == b))
+            k = min(_NEAREST_CANDIDATES, len(self.body_cells[b]))
+            _, idx = self.kdtrees[b].query(points[missing], k=k)
+            idx = idx.reshape(len(missing), k)
+            for j, i in enumerate(missing):
+                cand = self.body_cells[b][idx[j]]
+                d2 = geometry.squared_distance(self.msh, 2, cand, np.tile(p3[i], (len(cand), 1)))
+                out[i] = cand[int(np.argmin(d2))]
+        return out
+
+
+class BodyFields:
+    """The :class:`contactcore.result.Fields` of per-body dolfinx functions.
+
+    ``displacements[b]`` and ``stresses[b]`` (Voigt ``xx, yy, xy``) are
+    dolfinx Functions of body ``b`` (0 = −, 1 = +) on the whole mesh.
+    """
+
+    def __init__(self, locator: BodyCellLocator, displacements, stresses):
+        self.locator, self.displacements, self.stresses = locator, displacements, stresses
+
+    def _eval(self, functions, points, bodies) -> np.ndarray:
+        points = np.asarray(points, float)[:, :2]
+        bodies = np.asarray(bodies, int)
+        cells = self.locator.cells(points, bodies)
+        p3 = np.zeros((len(points), 3))
+        p3[:, :2] = points
+        out = None
+        for b, fn in enumerate(functions):
+            sel = np.flatnonzero(bodies == b)
+            if len(sel) == 0:
+                continue
+            vals = fn.eval(p3[sel], cells[sel])
+            if out is None:
+                out = np.zeros((len(points), vals.shape[1]))
+            out[sel] = vals
+        return out if out is not None else np.zeros((0, 0))
+
+    def displacement(self, points, bodies) -> np.ndarray:
+        return self._eval(self.displacements, points, bodies)
+
+    def stress(self, points, bodies) -> np.ndarray:
+        return self._eval(self.stresses, points, bodies)

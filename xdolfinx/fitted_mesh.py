@@ -1,0 +1,46 @@
+"""A scene's fitted mesh in dolfinx, built by :mod:`meshes` through gmsh."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from dolfinx.io import gmshio
+from mpi4py import MPI
+
+import meshes
+from contactcore import Scene
+
+
+@dataclass
+class FittedMesh:
+    """A dolfinx mesh whose cells carry body tags and facets the Γ/boundary tags."""
+
+    mesh: object
+    cell_tags: object
+    facet_tags: object
+
+    def cells_of(self, body: str) -> np.ndarray:
+        t = self.cell_tags
+        return t.indices[t.values == meshes.BODY[body]].astype(np.int32)
+
+    def facets_tagged(self, tag: int) -> np.ndarray:
+        t = self.facet_tags
+        return t.indices[t.values == tag].astype(np.int32)
+
+    @property
+    def num_cells(self) -> int:
+        return self.mesh.topology.index_map(2).size_local
+
+
+def fitted_mesh(scene: Scene, h: float, *, order: int = 1, grading: meshes.Grading | None = None,
+                comm=MPI.COMM_WORLD) -> FittedMesh:
+    """Mesh ``scene`` with gmsh (Γ embedded, geometry of ``order``) and load it.
+
+    ``gdim=2`` is required in dolfinx 0.5.2, whose default gives 3D vectors.
+    """
+    with meshes.gmsh_session() as model:
+        if comm.rank == 0:
+            meshes.build_model(scene, h, order=order, grading=grading)
+        msh, cell_tags, facet_tags = gmshio.model_to_mesh(model, comm, 0, gdim=2)
+    msh.topology.create_connectivity(1, 2)
+    return FittedMesh(msh, cell_tags, facet_tags)

@@ -1,0 +1,105 @@
+"""Direct solves with PETSc/MUMPS and an honest report of their health.
+
+Defaults: ``preonly`` + LU with MUMPS.  Any PETSc option may be overridden
+(``{"pc_factor_mat_solver_type": "superlu"}``, ``{"ksp_type": "gmres", ...}``).
+With MUMPS, two of its features are switched on: null-pivot detection
+(ICNTL(24), threshold CNTL(3)), which turns a singular system into a clear
+error instead of garbage, and — below a size limit — its error analysis
+(ICNTL(11)=1), whose condition estimate (RINFOG(10), Arioli–Demmel–Duff)
+is reported and warned about above :data:`~contactcore.tolerances.CONDITION_WARN`.
+"""
+from __future__ import annotations
+
+import itertools
+
+from petsc4py import PETSc
+
+from contactcore import SolverError, SolverReport
+from contactcore import tolerances as tol
+
+DEFAULT_OPTIONS = {"ksp_type": "preonly", "pc_type": "lu", "pc_factor_mat_solver_type": "mumps"}
+
+_prefixes = itertools.count()
+
+
+def _options(user: dict | None, estimate_condition: bool) -> dict:
+    opts = {**DEFAULT_OPTIONS, **(user or {})}
+    if opts.get("pc_factor_mat_solver_type") == "mumps" and opts.get("pc_type") == "lu":
+        opts.setdefault("mat_mumps_icntl_24", 1)
+        opts.setdefault("mat_mumps_cntl_3", tol.NULL_PIVOT)
+        if estimate_condition:
+            opts.setdefault("mat_mumps_icntl_11", 1)
+    return opts
+
+
+def _mumps_factor(ksp):
+    pc = ksp.getPC()
+    if pc.getType() != "lu" or pc.getFactorSolverType() != "mumps":
+        return None
+    return pc.getFactorMatrix()
+
+
+def _measure_residual(A, b, x, report: SolverReport) -> None:
+    """Relative residual and normwise backward error (infinity norms)."""
+    r = b.duplicate()
+    A.mult(x, r)
+    r.aypx(-1.0, b)
+    inf = PETSc.NormType.INFINITY
+    rnorm, bnorm = r.norm(inf), b.norm(inf)
+    report.residual = rnorm / bnorm if bnorm > 0 else rnorm
+    scale = A.norm(inf) * x.norm(inf) + bnorm
+    report.backward_error = rnorm / scale if scale > 0 else rnorm
+    r.destroy()
+
+
+def solve(A, b, x, *, petsc_options: dict | None = None, estimate_condition: bool = True,
+          what: str = "linear system") -> SolverReport:
+    """Solve ``A x = b`` in place; raise :class:`SolverError` if it fails.
+
+    The report carries the relative residual and the backward error (which
+    decides success), the Krylov iterations, the condition estimate where
+    available and every warning.
+    """
+    opts = _options(petsc_options, estimate_condition)
+    prefix = f"xdolfinx_{next(_prefixes)}_"
+    db = PETSc.Options()
+    for key, value in opts.items():
+        db[prefix + key] = value
+    ksp = PETSc.KSP().create(A.getComm())
+    try:
+        ksp.setOptionsPrefix(prefix)
+        ksp.setOperators(A)
+        ksp.setFromOptions()
+        try:
+            ksp.solve(b, x)
+        except PETSc.Error as exc:
+            raise SolverError(f"{what}: PETSc failed (error {exc.ierr}); the matrix may be singular — "
+                              "check that the supports remove every rigid-body mode") from None
+        report = SolverReport(solver=f"{ksp.getType()}+{ksp.getPC().getType()}"
+                              + (f" ({ksp.getPC().getFactorSolverType()})" if ksp.getPC().getType() == "lu" else ""),
+                              iterations=[ksp.getIterationNumber()], options=opts)
+        factor = _mumps_factor(ksp)
+        if factor is not None:
+            nulls = factor.getMumpsInfog(28)
+            if nulls > 0:
+                raise SolverError(f"{what} is singular to working precision: MUMPS found {nulls} null pivot(s) — "
+                                  "a rigid-body mode is not removed by the supports and pins, or a penalty is "
+                                  "so stiff that the bulk stiffness is lost in round-off")
+            if opts.get("mat_mumps_icntl_11") == 1:
+                report.condition = float(factor.getMumpsRinfog(10))
+        reason = ksp.getConvergedReason()
+        _measure_residual(A, b, x, report)
+        if reason < 0:
+            raise SolverError(f"{what}: the solver diverged (PETSc reason {reason}, "
+                              f"relative residual {report.residual:.3e})")
+        if not report.backward_error <= tol.BACKWARD_ERROR_FAIL:
+            raise SolverError(f"{what}: backward error {report.backward_error:.3e} exceeds "
+                              f"{tol.BACKWARD_ERROR_FAIL:g} — the solve failed and its answer cannot be trusted")
+        if report.condition is not None and report.condition > tol.CONDITION_WARN:
+            report.warnings.append(f"condition estimate {report.condition:.2e} exceeds {tol.CONDITION_WARN:.0e}: "
+                                   "digits may be lost (penalty too stiff for the mesh?)")
+        return report
+    finally:
+        ksp.destroy()
+        for key in opts:
+            db.delValue(prefix + key)
