@@ -118,7 +118,7 @@ def _size_field(scene: Scene, h: float, grading: Grading | None, interface: list
     fld = gmsh.model.mesh.field
     dist = fld.add("Distance")
     fld.setNumbers(dist, "CurvesList", interface)
-    fld.setNumber(dist, "Sampling", 200)
+    fld.setNumber(dist, "NumPointsPerCurve", 200)  # gmsh 4.8 name (later: "Sampling")
     if grading.corners and isinstance(scene.domain, Rectangle):
         corners = [t for _, t in gmsh.model.getEntities(0)
                    if np.min(np.linalg.norm(scene.domain.corners - np.asarray(gmsh.model.getValue(0, t, []))[:2],

@@ -2,6 +2,7 @@
 
     python -m verification run SCENE_OR_TOML --method fe|all [--degree 1|2]
         [--h H] [--paper] [--xdmf] [--petsc-option KEY=VALUE ...] --out DIR
+    python -m verification timing SCENE --method fe --degree 1 2 --h H1 H2 ... --out DIR
 
 Bad input ends with one line ``error: <field>: <problem>`` and exit status 2.
 """
@@ -37,6 +38,12 @@ def _parser() -> argparse.ArgumentParser:
     run.add_argument("--petsc-option", type=_petsc_option, action="append", default=[], metavar="KEY=VALUE",
                      help="override a PETSc option of the fe solve (e.g. pc_factor_mat_solver_type=superlu)")
     run.add_argument("--out", type=Path, required=True, help="result folder")
+    tim = sub.add_parser("timing", help="wall time against DOFs on a ladder of resolutions")
+    tim.add_argument("scene")
+    tim.add_argument("--method", nargs="+", default=["all"], choices=[*methods.METHODS, "all"])
+    tim.add_argument("--degree", nargs="+", type=int, default=[1], choices=(1, 2))
+    tim.add_argument("--h", nargs="+", type=float, required=True)
+    tim.add_argument("--out", type=Path, required=True)
     return parser
 
 
@@ -61,12 +68,17 @@ def main(argv=None) -> int:
     args = _parser().parse_args(argv)
     _configure_logging()
     from .run import run
+    from .timing import timing
 
     try:
-        if args.h is not None and not args.h > 0:
-            raise ContactError(f"--h: must be > 0 (got {args.h})")
-        run(args.scene, args.method, args.out, h=args.h, degree=args.degree, paper=args.paper,
-            xdmf=args.xdmf, petsc_options=dict(args.petsc_option), argv=argv)
+        for h in args.h if isinstance(args.h, list) else [args.h]:
+            if h is not None and not h > 0:
+                raise ContactError(f"--h: must be > 0 (got {h})")
+        if args.command == "run":
+            run(args.scene, args.method, args.out, h=args.h, degree=args.degree, paper=args.paper,
+                xdmf=args.xdmf, petsc_options=dict(args.petsc_option), argv=argv)
+        else:
+            timing(args.scene, args.method, args.degree, args.h, args.out, argv=argv)
     except ContactError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2

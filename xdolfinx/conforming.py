@@ -26,6 +26,7 @@ A linear law is one linear solve (load increments only scale it).
 """
 from __future__ import annotations
 
+import functools
 import time
 
 import numpy as np
@@ -163,8 +164,13 @@ class _Constraints:
                 if found == 0:
                     raise DiscretisationError(f"pins[{i}]: no mesh node at {list(pin.point)}")
 
+    @functools.cache
+    def _component_space(self, b: int, j: int):
+        """Component ``j`` of body ``b``'s field, collapsed once."""
+        return self.V.sub(b).sub(j).collapse()[0]
+
     def _fix(self, b: int, j: int, locate, args, value: float) -> int:
-        Vbj, _ = self.V.sub(b).sub(j).collapse()
+        Vbj = self._component_space(b, j)
         dofs = locate((self.V.sub(b).sub(j), Vbj), *args)
         keep = np.isin(dofs[0], self.active[b])
         if keep.any():
@@ -176,6 +182,14 @@ class _Constraints:
     @property
     def num_active(self) -> int:
         return sum(len(a) for a in self.active)
+
+    def owned_active_rows(self) -> np.ndarray:
+        """Global indices of the owned unknowns that are not held at zero."""
+        imap = self.V.dofmap.index_map
+        bs = self.V.dofmap.index_map_bs
+        local = np.unique(np.concatenate(self.active))
+        local = local[local < imap.size_local * bs]
+        return local + imap.local_range[0] * bs
 
 
 def _components(fix: str) -> list[int]:
@@ -222,8 +236,9 @@ def solve(scene: Scene, h: float | None = None, *, degree: int = 1, paper: bool 
         cons = _Constraints(scene, fm, V)
         a = fem.form(bilinear_form(scene, fm, V), jit_params=jit_params or {})
         L = fem.form(linear_form(scene, fm, V), jit_params=jit_params or {})
-        # Held rows get a diagonal of the order of the stiffness, not 1, so that
-        # they do not spoil the condition estimate.
+        # Support rows get a diagonal of the order of the stiffness, not 1, so
+        # that they do not spoil the condition estimate; rows held at zero off
+        # their body are left out of the solve altogether.
         diag = max(m.E for m in scene.materials.values())
         A = fem_petsc.assemble_matrix(a, bcs=cons.bcs, diagonal=diag)
         A.assemble()
@@ -235,7 +250,7 @@ def solve(scene: Scene, h: float | None = None, *, degree: int = 1, paper: bool 
     if estimate_condition is None:
         estimate_condition = cons.num_active <= tol.CONDITION_ESTIMATE_MAX_DOFS
     with timings.measure("solve"):
-        report = linear_solver.solve(A, rhs, uh.vector, petsc_options=petsc_options,
+        report = linear_solver.solve(A, rhs, uh.vector, rows=cons.owned_active_rows(), petsc_options=petsc_options,
                                      estimate_condition=estimate_condition, what=f"scene {scene.name} (fe)")
     uh.x.scatter_forward()
     report.increments = scene.increments

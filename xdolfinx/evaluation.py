@@ -78,7 +78,7 @@ class BodyFields:
             sel = np.flatnonzero(bodies == b)
             if len(sel) == 0:
                 continue
-            vals = fn.eval(p3[sel], cells[sel])
+            vals = fn.eval(p3[sel], cells[sel]).reshape(len(sel), -1)
             if out is None:
                 out = np.zeros((len(points), vals.shape[1]))
             out[sel] = vals

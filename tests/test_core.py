@@ -1,0 +1,48 @@
+"""The shared core needs numpy only; laws and geometry do what they say."""
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from contactcore import CircleInterface, Disc, LAWS, LineInterface, Rectangle, load_scene, make_law
+
+
+def test_core_imports_no_dolfinx_nor_gmsh():
+    code = ("import sys, contactcore, contactcore.profiles; "
+            "bad = [m for m in ('dolfinx', 'petsc4py', 'gmsh', 'ufl', 'basix', 'mpi4py') if m in sys.modules]; "
+            "print(bad); sys.exit(1 if bad else 0)")
+    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+
+
+def test_linear_law_traction_and_tangent():
+    law = make_law({"type": "linear", "kN": 2.0, "kT": 3.0})
+    assert set(LAWS) >= {"linear"} and law.is_linear and law.initial_state(4) is None
+    resp = law.evaluate(np.array([[1.0, -1.0], [-0.5, 2.0]]))
+    assert np.allclose(resp.traction, [[2.0, -3.0], [-1.0, 6.0]])
+    assert resp.tangent.shape == (2, 2, 2) and np.allclose(resp.tangent[1], np.diag([2.0, 3.0]))
+
+
+def test_normals_and_tangents():
+    line = LineInterface((0.0, 0.5), (0.0, 1.0))
+    assert np.allclose(line.phi([[0.3, 0.7]]), 0.2)
+    circle = CircleInterface((1.0, 1.0), 0.5)
+    n = circle.normals([[1.0, 2.0]])
+    assert np.allclose(n, [[0.0, 1.0]])
+
+
+@pytest.mark.parametrize("domain,line,expected", [
+    (Rectangle((0.0, 0.0), (1.0, 1.0)), LineInterface((0.0, 0.25), (0.0, 1.0)), 0.25),
+    (Rectangle((0.0, 0.0), (1.0, 1.0)), LineInterface((0.5, 0.5), (np.sqrt(0.5), np.sqrt(0.5))), 0.5),
+    (Disc((0.0, 0.0), 1.0), LineInterface((0.0, 0.0), (1.0, 0.0)), np.pi / 2),
+])
+def test_minus_area(domain, line, expected):
+    assert line.minus_area(domain) == pytest.approx(expected, rel=1e-12)
+
+
+def test_points_on_gamma_take_the_requested_side():
+    scene = load_scene("A")
+    pts = np.array([[0.2, 0.5], [0.2, 0.5 + 1e-6], [0.2, 0.5 - 1e-6]])
+    assert scene.body_of(pts).tolist() == [1, 1, 0]
+    assert scene.body_of(pts, side="minus").tolist() == [0, 1, 0]

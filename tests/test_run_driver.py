@@ -1,0 +1,74 @@
+"""``python -m verification run``: the files, and only what the scene needs."""
+import csv
+import json
+import xml.etree.ElementTree as ET
+
+import pytest
+
+from contactcore import load_scene
+from verification import files
+from verification.__main__ import main
+
+
+@pytest.fixture(scope="module")
+def run_a(tmp_path_factory):
+    out = tmp_path_factory.mktemp("runA")
+    assert main(["run", "A", "--method", "all", "--h", "0.1", "--out", str(out)]) == 0
+    return out
+
+
+def test_profiles_follow_scenes_md(run_a):
+    scene = load_scene("A")
+    written = sorted(p.stem for p in (run_a / "fe" / "profiles").iterdir())
+    assert written == sorted(p.id for p in scene.profiles)  # exactly the scene's profiles
+    for prof in scene.profiles:
+        with open(run_a / "fe" / "profiles" / f"{prof.id}.csv") as fh:
+            rows = list(csv.reader(fh))
+        assert rows[0] == ["s", "x", "y", *prof.quantities]
+        assert len(rows) == 102
+        assert float(rows[1][0]) == pytest.approx(1e-9) and float(rows[-1][0]) == pytest.approx(1.0 - 1e-9)
+
+
+def test_summary_and_provenance(run_a):
+    summary = json.loads((run_a / "fe" / "summary.json").read_text())
+    assert summary["dofs"] > 0 and summary["degree"] == 1
+    assert set(summary["timings"]) == {"mesh", "assembly", "solve", "total"}
+    assert summary["timings"]["total"] >= summary["timings"]["solve"] > 0
+    solver = summary["solver"]
+    assert solver["increments"] == 20 and solver["iterations"] == [1] and solver["residual"] < 1e-6
+    run = json.loads((run_a / "run.json").read_text())
+    assert run["command"] == "python -m verification run A --method all --h 0.1 --out " + str(run_a)
+    assert {"python", "numpy", "dolfinx", "petsc4py", "gmsh"} <= set(run["versions"])
+    assert (run_a / "scene.toml").read_text().startswith("# Scene A")
+    assert "| fe | 1 |" in (run_a / "summary.md").read_text()
+
+
+def test_plots_and_no_xdmf_unless_asked(run_a):
+    assert sorted(p.stem for p in (run_a / "plots").iterdir()) == ["A1", "A2", "A3", "A4", "A5"]
+    assert (run_a / "plots" / "A1.png").read_bytes()[:4] == b"\x89PNG"
+    assert not (run_a / "fe" / "xdmf").exists()
+    assert not [p for p in run_a.rglob(".*")]  # no temporary file left behind
+
+
+def test_xdmf_per_body(tmp_path):
+    assert main(["run", "B", "--h", "0.2", "--degree", "2", "--xdmf", "--out", str(tmp_path)]) == 0
+    for body in ("minus", "plus"):
+        root = ET.parse(tmp_path / "fe" / "xdmf" / f"{body}.xdmf").getroot()
+        names = {a.get("Name") for a in root.iter("Attribute")}
+        assert names == {"u", "sigma_xx_yy_xy"}
+        assert (tmp_path / "fe" / "xdmf" / f"{body}.h5").stat().st_size > 0
+
+
+def test_interrupted_write_leaves_nothing_under_the_final_name(tmp_path):
+    target = tmp_path / "result.csv"
+    with pytest.raises(RuntimeError):
+        with files.atomic_path(target) as tmp:
+            tmp.write_text("half")
+            raise RuntimeError("interrupted")
+    assert list(tmp_path.iterdir()) == []
+    files.write_text(target, "whole")
+    with pytest.raises(RuntimeError):
+        with files.atomic_path(target) as tmp:
+            tmp.write_text("half")
+            raise RuntimeError("interrupted")
+    assert target.read_text() == "whole" and list(tmp_path.iterdir()) == [target]
