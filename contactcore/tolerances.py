@@ -23,6 +23,12 @@ PROFILE_POINTS = 101
 #: round-off of the inputs (1e-15) but far below any mesh size in use (1e-3 L).
 GEOMETRY = 1e-9
 
+#: A mesh node (or a point gmsh computes on a curve) matches a point of the
+#: scene within this distance, relative to L.  gmsh places embedded points and
+#: boundary curves to ~1e-15 L; the finest mesh in use has h ~ 1e-3 L, so
+#: 1e-6 L cannot match a neighbouring node.
+NODE_MATCH = 1e-6
+
 #: The smaller of the two bodies must cover at least this fraction of the
 #: domain's area, otherwise the interface "only touches" the domain.
 MIN_BODY_AREA_FRACTION = 1e-8

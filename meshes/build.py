@@ -76,8 +76,7 @@ def _add_interface(scene: Scene) -> tuple[int, int]:
 
 
 def _point_on(dim: int, tag: int) -> np.ndarray:
-    """A point inside a curve (its parametric middle) or a surface (its centre
-    of mass for a convex piece, else a point of the parametric middle)."""
+    """The point at the middle of an entity's parameter range (on the curve)."""
     lo, hi = gmsh.model.getParametrizationBounds(dim, tag)
     return np.asarray(gmsh.model.getValue(dim, tag, list((np.asarray(lo) + np.asarray(hi)) / 2)))[:2]
 
@@ -103,7 +102,7 @@ def _tag_curves(scene: Scene) -> tuple[dict[str, list[int]], list[int]]:
         if len(up) >= 2:
             interface.append(c)
             continue
-        names = scene.domain.boundary_of(_point_on(1, c), tol.GEOMETRY * L * 1e3)
+        names = scene.domain.boundary_of(_point_on(1, c), tol.NODE_MATCH * L)
         if len(names) != 1:
             raise DiscretisationError(f"gmsh curve {c} could not be assigned to one outer boundary ({names})")
         named[names[0]].append(c)

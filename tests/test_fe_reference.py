@@ -3,7 +3,7 @@ import numpy as np
 import pytest
 
 import tolerances as tol
-from contactcore import BODIES, LinearLaw
+from contactcore import LinearLaw
 from contactcore.profiles import interface_response
 from verification.closed_forms import interface_patch, pressurised_rod
 from xdolfinx import conforming
@@ -11,7 +11,7 @@ from xdolfinx.norms import l2_error
 
 
 def _sample(scene, n=23, seed=0):
-    """Points in the domain, away from nothing in particular, with their body."""
+    """Seeded random points in the domain, with the body that holds each."""
     rng = np.random.default_rng(seed)
     pts = rng.uniform(0.02, 0.98, size=(n * n, 2))
     return pts, scene.body_of(pts)

@@ -157,7 +157,7 @@ class _Constraints:
         for i, pin in enumerate(scene.pins):
             b = int(scene.body_of([pin.point])[0])
             p = np.asarray(pin.point)
-            near = tol.GEOMETRY * scene.length_scale * 1e3
+            near = tol.NODE_MATCH * scene.length_scale
             for j in _components(pin.fix):
                 found = self._fix(b, j, fem.locate_dofs_geometrical,
                                   (lambda x, p=p: np.hypot(x[0] - p[0], x[1] - p[1]) <= near,), 0.0)
