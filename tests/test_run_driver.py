@@ -17,12 +17,13 @@ def run_a(tmp_path_factory):
     return out
 
 
-def test_profiles_follow_scenes_md(run_a):
+@pytest.mark.parametrize("method", ["fe", "efgm"])
+def test_profiles_follow_scenes_md(run_a, method):
     scene = load_scene("A")
-    written = sorted(p.stem for p in (run_a / "fe" / "profiles").iterdir())
+    written = sorted(p.stem for p in (run_a / method / "profiles").iterdir())
     assert written == sorted(p.id for p in scene.profiles)  # exactly the scene's profiles
     for prof in scene.profiles:
-        with open(run_a / "fe" / "profiles" / f"{prof.id}.csv") as fh:
+        with open(run_a / method / "profiles" / f"{prof.id}.csv") as fh:
             rows = list(csv.reader(fh))
         assert rows[0] == ["s", "x", "y", *prof.quantities]
         assert len(rows) == 102
@@ -40,7 +41,10 @@ def test_summary_and_provenance(run_a):
     assert run["command"] == "python -m verification run A --method all --h 0.1 --out " + str(run_a)
     assert {"python", "numpy", "dolfinx", "petsc4py", "gmsh"} <= set(run["versions"])
     assert (run_a / "scene.toml").read_text().startswith("# Scene A")
-    assert "| fe | 1 |" in (run_a / "summary.md").read_text()
+    table = (run_a / "summary.md").read_text()
+    assert "| fe | 1 |" in table and "| efgm | 1 |" in table
+    efgm = json.loads((run_a / "efgm" / "summary.json").read_text())
+    assert efgm["discretisation"]["nodes"] == 121 and efgm["discretisation"]["enriched_nodes"] > 0
 
 
 def test_plots_and_no_xdmf_unless_asked(run_a):

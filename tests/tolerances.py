@@ -39,3 +39,35 @@ TORQUE_BALANCE = {1: 1e-2, 2: 1e-4}
 #: 0.1); with chord normals it would be (k_N/k_T)(h/2R) = 10 and 20 there
 #: (SCENES.md), so these bounds tell the two apart by three orders.
 FALSE_TN = {1: 3e-2, 2: 2e-2}
+
+#: Shape functions: partition of unity and linear reproduction, values and
+#: gradients, hold to round-off: measured ≤ 8e-14 on grids and perturbed sets.
+SHAPE_ROUNDOFF = 1e-12
+
+#: EFGM interface patch test.  MLS functions are rational, so Gauss
+#: quadrature leaves an error: measured with 6×6 points (the default) on
+#: 11×11 nodes, 3.3e-5 in displacement and 2.2e-2 in stress (relative to the
+#: largest value).  The bounds are 3x and 2x that; and the error must fall
+#: by at least 10x with 12×12 points (measured 15x and 32x), which shows it
+#: is the quadrature's and not the method's.
+EFGM_PATCH_U = 1e-4
+EFGM_PATCH_SIGMA = 5e-2
+EFGM_PATCH_QUADRATURE_GAIN = 10.0
+
+#: EFGM over dmax 1.1–4: small supports give steeper shape functions and a
+#: larger quadrature error (measured at most 5.6e-4 in u and 6.3e-2 in σ, at
+#: dmax 1.1 with rectangular supports).  Quadrature error converges
+#: algebraically and unevenly: from 6×6 to 16×16 points the displacement
+#: error fell 12.6x to 40x over every dmax and support shape (so ≥ 10x).
+EFGM_DILATION_U = 1e-3
+EFGM_DILATION_SIGMA = 1e-1
+
+#: Cross-method agreement on the paper's scenes, RMS of the difference over a
+#: profile relative to the RMS of the reference profile: EFGM at the scene's
+#: default h against P2 FE at h/2 (see test_efgm.py for what each covers).
+#: Interface quantities (gaps, tractions: measured ≤ 3e-4), stresses on lines
+#: through the interior (≤ 1.1e-2), stresses on a loaded or clamped edge
+#: where collocated supports and corners dominate (≤ 4.3e-2).
+AGREE_INTERFACE = 1e-3
+AGREE_INTERIOR_STRESS = 3e-2
+AGREE_EDGE_STRESS = 1e-1

@@ -11,12 +11,27 @@ import importlib
 #: Method name -> module implementing it, in the order plots list them.
 METHODS = {
     "fe": "xdolfinx.conforming",
+    "efgm": "efgm.method",
 }
+
+#: Options of the command line that only some methods take.
+OPTIONS = {
+    "fe": ("petsc_options",),
+    "efgm": ("dmax",),
+}
+
+#: Methods whose fields live on a dolfinx mesh, so XDMF output exists.
+WITH_XDMF = ("fe",)
 
 
 def solver(name: str):
     """The ``solve`` function of method ``name``."""
     return importlib.import_module(METHODS[name]).solve
+
+
+def options_for(name: str, **given) -> dict:
+    """The given options that method ``name`` takes (None means not given)."""
+    return {k: v for k, v in given.items() if k in OPTIONS[name] and v is not None}
 
 
 def expand(names: list[str]) -> list[str]:

@@ -48,7 +48,7 @@ def _summary_table(summaries: list[dict]) -> str:
 
 
 def run(scene_name: str, method_names: list[str], out: Path, *, h=None, degree=1, paper=False,
-        xdmf=False, petsc_options=None, argv=()) -> list[dict]:
+        xdmf=False, petsc_options=None, dmax=None, argv=()) -> list[dict]:
     """Solve, sample the scene's profiles, write everything; return the summaries."""
     scene = load_scene(scene_name)
     out = Path(out)
@@ -56,7 +56,7 @@ def run(scene_name: str, method_names: list[str], out: Path, *, h=None, degree=1
     profiles, summaries = {}, []
     for name in methods.expand(method_names):
         log.info("scene %s: solving with %s (degree %d)", scene.name, name, degree)
-        options = {"petsc_options": petsc_options} if petsc_options and name == "fe" else {}
+        options = methods.options_for(name, petsc_options=petsc_options or None, dmax=dmax)
         result = methods.solver(name)(scene, h, degree=degree, paper=paper, **options)
         summary = result.summary()
         summaries.append(summary)
@@ -67,8 +67,10 @@ def run(scene_name: str, method_names: list[str], out: Path, *, h=None, degree=1
         for prof in sample_profiles(scene, result.fields):
             files.write_profile_csv(out / name / "profiles" / f"{prof.id}.csv", prof)
             profiles.setdefault(prof.id, {})[f"{name} (p{degree})"] = prof
-        if xdmf:
+        if xdmf and name in methods.WITH_XDMF:
             _write_xdmf(out / name / "xdmf", result)
+        elif xdmf:
+            log.info("%s: no mesh, so no XDMF", name)
         files.write_json(out / name / "summary.json", summary)
     titles = {p.id: p.title for p in scene.profiles}
     for pid, runs in profiles.items():
@@ -76,6 +78,6 @@ def run(scene_name: str, method_names: list[str], out: Path, *, h=None, degree=1
     files.write_text(out / "summary.md", f"# Scene {scene.name}: {scene.title}\n\n" + _summary_table(summaries))
     files.write_json(out / "run.json", {**files.provenance(list(argv)), "scene": scene_name,
                                         "methods": methods.expand(method_names), "h": h, "degree": degree,
-                                        "paper": paper, "petsc_options": petsc_options or {}})
+                                        "paper": paper, "petsc_options": petsc_options or {}, "dmax": dmax})
     log.info("wrote %s", out)
     return summaries

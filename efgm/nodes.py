@@ -1,0 +1,98 @@
+"""Nodes, support sizes and background integration cells of an EFGM model."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.spatial import cKDTree
+
+from contactcore import DiscretisationError, Scene
+from contactcore import tolerances as tol
+from contactcore.geometry import Disc, Rectangle
+
+#: A node's spacing ``c_I`` is its distance to its SPACING_NEIGHBOUR-th
+#: nearest other node: on a regular grid the 4th nearest is one grid step
+#: away, so ``c_I = h`` and ``r_I = dmax·h``; on an irregular set it adapts.
+SPACING_NEIGHBOUR = 4
+
+
+@dataclass
+class NodeSet:
+    """Node coordinates (N, 2) and the nominal spacing h of the set."""
+
+    x: np.ndarray
+    h: float
+
+
+def grid_nodes(scene: Scene, h: float | None = None, counts: tuple[int, int] | None = None) -> NodeSet:
+    """A regular grid: ``counts`` nodes per direction, or spacing ≈ h."""
+    dom = scene.domain
+    if isinstance(dom, Rectangle):
+        (x0, y0), (a, b) = dom.corner, dom.size
+        nx, ny = counts if counts else (max(2, round(a / h) + 1), max(2, round(b / h) + 1))
+        X, Y = np.meshgrid(np.linspace(x0, x0 + a, nx), np.linspace(y0, y0 + b, ny))
+        return NodeSet(np.column_stack([X.ravel(), Y.ravel()]), max(a / (nx - 1), b / (ny - 1)))
+    if counts is not None:
+        raise DiscretisationError("efgm: node counts apply to rectangles; give h for a disc")
+    return _disc_nodes(dom, h)
+
+
+def _disc_nodes(dom: Disc, h: float) -> NodeSet:
+    """Grid points inside the disc (half a step clear of the rim) and a ring
+    of nodes on the rim, spaced h."""
+    c, R = np.asarray(dom.centre, float), dom.radius
+    n = int(np.ceil(R / h))
+    g = np.arange(-n, n + 1) * h
+    X, Y = np.meshgrid(c[0] + g, c[1] + g)
+    pts = np.column_stack([X.ravel(), Y.ravel()])
+    pts = pts[np.hypot(*(pts - c).T) < R - 0.5 * h]
+    m = int(np.ceil(2 * np.pi * R / h))
+    t = 2 * np.pi * np.arange(m) / m
+    ring = c + R * np.column_stack([np.cos(t), np.sin(t)])
+    return NodeSet(np.vstack([pts, ring]), h)
+
+
+def check_nodes(scene: Scene, nodes: np.ndarray) -> NodeSet:
+    """A user's point set: inside the domain, distinct; spacing from the set."""
+    x = np.asarray(nodes, float)
+    if x.ndim != 2 or x.shape[1] != 2 or len(x) < 4:
+        raise DiscretisationError("efgm: nodes must be an (N, 2) array with N >= 4")
+    L = scene.length_scale
+    outside = ~scene.domain.contains(x, tol.GEOMETRY * L)
+    if outside.any():
+        i = int(np.flatnonzero(outside)[0])
+        raise DiscretisationError(f"efgm: node {i} at ({x[i, 0]:.6g}, {x[i, 1]:.6g}) lies outside the domain")
+    d, _ = cKDTree(x).query(x, k=2)
+    if np.min(d[:, 1]) <= tol.NODE_MATCH * L:
+        raise DiscretisationError("efgm: two nodes coincide")
+    return NodeSet(x, float(np.median(d[:, 1])))
+
+
+def support_radii(nodes: NodeSet, dmax: float, rectangular: bool) -> np.ndarray:
+    """``r_I = dmax · c_I`` (see :data:`SPACING_NEIGHBOUR`); (N,) or (N, 2)."""
+    if not dmax > 0:
+        raise DiscretisationError(f"efgm: dmax must be > 0 (got {dmax})")
+    k = min(SPACING_NEIGHBOUR + 1, len(nodes.x))
+    d, _ = cKDTree(nodes.x).query(nodes.x, k=k)
+    r = dmax * d[:, -1]
+    return np.column_stack([r, r]) if rectangular else r
+
+
+def background_cells(scene: Scene, h: float) -> tuple[np.ndarray, np.ndarray]:
+    """Lower and upper corners (C, 2) of square-ish cells of size ≈ h covering
+    the domain (for a disc: those that meet it)."""
+    dom = scene.domain
+    if isinstance(dom, Rectangle):
+        lo0, size = np.asarray(dom.corner, float), np.asarray(dom.size, float)
+    else:
+        lo0, size = np.asarray(dom.centre, float) - dom.radius, np.full(2, 2 * dom.radius)
+    n = np.maximum(1, np.round(size / h)).astype(int)
+    step = size / n
+    I, J = np.meshgrid(np.arange(n[0]), np.arange(n[1]), indexing="ij")
+    lo = lo0 + np.column_stack([I.ravel(), J.ravel()]) * step
+    hi = lo + step
+    if isinstance(dom, Disc):
+        centre_dist = np.hypot(*((lo + hi) / 2 - np.asarray(dom.centre)).T)
+        keep = centre_dist < dom.radius + np.linalg.norm(step) / 2
+        lo, hi = lo[keep], hi[keep]
+    return lo, hi

@@ -1,0 +1,217 @@
+"""Integration on background cells cut by Γ, on Γ, and on the outer boundary.
+
+Every region is integrated as a set of *fans*: from a vertex ``V`` over a
+boundary curve ``C(τ)``, ``τ ∈ [0, 1]``, the map ``P(s, τ) = V + s (C(τ) − V)``
+covers the region between them, with ``det J = s (C − V) × C′``.  A straight
+side gives a triangle (Duffy's collapsed square); an arc of the circle gives
+the curved sector between ``V`` and the arc, exactly.  Gauss–Legendre rules
+of ``n`` points in ``s`` and ``τ``.  A cell that Γ cuts into more than two
+pieces, or whose pieces are not star-shaped from a corner, is split in four
+(up to :data:`MAX_DEPTH` times) — this only happens when Γ bends sharply
+inside one cell.
+"""
+from __future__ import annotations
+
+import functools
+from dataclasses import dataclass
+
+import numpy as np
+
+from contactcore import DiscretisationError
+from contactcore import tolerances as tol
+from contactcore.geometry import CircleInterface, LineInterface
+
+#: Quad-tree splits of a cell before giving up on a cut that stays complicated.
+MAX_DEPTH = 6
+
+#: A fan whose Jacobian falls below −FAN_FOLD·(region size)² at a Gauss point
+#: folds over itself: that vertex does not see the whole region.
+FAN_FOLD = 1e-12
+
+
+@dataclass
+class Rule:
+    """Quadrature points (Q, 2), weights (Q,) and the body (0 −, 1 +) of each."""
+
+    points: np.ndarray
+    weights: np.ndarray
+    bodies: np.ndarray
+
+    @staticmethod
+    def concatenate(rules: list["Rule"]) -> "Rule":
+        rules = [r for r in rules if len(r.weights)]
+        if not rules:
+            return Rule(np.zeros((0, 2)), np.zeros(0), np.zeros(0, int))
+        return Rule(np.concatenate([r.points for r in rules]), np.concatenate([r.weights for r in rules]),
+                    np.concatenate([r.bodies for r in rules]))
+
+
+@functools.cache
+def gauss01(n: int) -> tuple[np.ndarray, np.ndarray]:
+    """Gauss–Legendre points and weights on [0, 1] (cached: read-only)."""
+    x, w = np.polynomial.legendre.leggauss(n)
+    return (x + 1) / 2, w / 2
+
+
+# ----- the level set seen from a cell ---------------------------------------
+
+def _side(phi: np.ndarray) -> np.ndarray:
+    """+1 on the + side including φ = 0 (SCENES.md), −1 on the − side."""
+    return np.where(phi >= 0, 1, -1)
+
+
+def edge_crossings(itf, a: np.ndarray, b: np.ndarray) -> list[float]:
+    """Parameters t ∈ [0, 1) of the segment a→b where the side changes."""
+    sa, sb = _side(itf.phi([a, b]))
+    if isinstance(itf, LineInterface):
+        if sa == sb:
+            return []
+        fa, fb = itf.phi([a, b])
+        return [float(fa / (fa - fb))]
+    c, R = np.asarray(itf.centre, float), itf.radius
+    d, f = b - a, a - c
+    qa, qb, qc = d @ d, 2 * f @ d, f @ f - R * R
+    sq = np.sqrt(max(qb * qb - 4 * qa * qc, 0.0))
+    lo_root, hi_root = (-qb - sq) / (2 * qa), (-qb + sq) / (2 * qa)
+    if sa != sb:  # exactly one crossing: the root between the end points
+        t = lo_root if sa > 0 else hi_root
+        return [float(np.clip(t, 0.0, np.nextafter(1.0, 0.0)))]
+    # same side: two crossings only if the segment dips into the disc by more
+    # than the geometric tolerance (a touch is no crossing)
+    t_near = np.clip(-qb / (2 * qa), 0.0, 1.0)
+    depth = R - np.linalg.norm(f + t_near * d)
+    if sa < 0 or depth <= tol.GEOMETRY * R or not (0.0 <= lo_root and hi_root < 1.0):
+        return []
+    return [float(lo_root), float(hi_root)]
+
+
+def _gamma_curve(itf, p: np.ndarray, q: np.ndarray):
+    """Γ from p to q as ``(C(τ), C′(τ))`` (the short arc for a circle)."""
+    if isinstance(itf, LineInterface):
+        return lambda t: p + t[:, None] * (q - p), lambda t: np.broadcast_to(q - p, (len(t), 2))
+    c, R = np.asarray(itf.centre, float), itf.radius
+    a0, a1 = np.arctan2(*(p - c)[::-1]), np.arctan2(*(q - c)[::-1])
+    da = (a1 - a0 + np.pi) % (2 * np.pi) - np.pi
+    ang = lambda t: a0 + t * da  # noqa: E731
+    return (lambda t: c + R * np.column_stack([np.cos(ang(t)), np.sin(ang(t))]),
+            lambda t: R * da * np.column_stack([-np.sin(ang(t)), np.cos(ang(t))]))
+
+
+def _segment(p, q):
+    return lambda t: p + t[:, None] * (q - p), lambda t: np.broadcast_to(q - p, (len(t), 2))
+
+
+def _fan(vertex, curve, n) -> tuple[np.ndarray, np.ndarray]:
+    """Points and signed weights of the fan from ``vertex`` over ``curve``."""
+    g, gw = gauss01(n)
+    C, dC = curve[0](g), curve[1](g)
+    s = g[:, None, None]
+    pts = vertex + s * (C[None] - vertex)                         # (n_s, n_τ, 2)
+    r = C - vertex
+    det = r[:, 0] * dC[:, 1] - r[:, 1] * dC[:, 0]                 # (n_τ,)
+    w = (gw[:, None] * g[:, None]) * (gw[None, :] * det[None, :])
+    return pts.reshape(-1, 2), w.ravel()
+
+
+def _region_rule(corners_and_curves, n, size2):
+    """Fan a region from the first of its corners that sees all of it."""
+    pieces = corners_and_curves
+    for vertex in [p for p, is_corner in pieces[0] if is_corner] or [pieces[0][0][0]]:
+        pts, wts = [], []
+        for curve in pieces[1]:
+            p, w = _fan(vertex, curve, n)
+            pts.append(p)
+            wts.append(w)
+        w = np.concatenate(wts)
+        if w.min(initial=0.0) >= -FAN_FOLD * size2:
+            return np.concatenate(pts), np.maximum(w, 0.0)
+    return None
+
+
+def cut_cell(itf, lo: np.ndarray, hi: np.ndarray, n: int, depth: int = 0) -> list[tuple[int, np.ndarray, np.ndarray]]:
+    """``[(side, points, weights)]`` for the rectangle [lo, hi] and level set ``itf``."""
+    corners = np.array([lo, [hi[0], lo[1]], hi, [lo[0], hi[1]]], float)
+    sides = _side(itf.phi(corners))
+    walk = []  # the boundary, counter-clockwise: (point, is_corner, side_after)
+    for i in range(4):
+        a, b = corners[i], corners[(i + 1) % 4]
+        walk.append((a, True, sides[i]))
+        for t in edge_crossings(itf, a, b):
+            walk.append((a + t * (b - a), False, None))
+    crossings = [i for i, w in enumerate(walk) if not w[1]]
+    size2 = float(np.prod(hi - lo))
+    # a circle smaller than the cell may lie inside it, or cut it along an arc
+    # longer than π (the short-arc construction would then be wrong): split
+    small_circle = (isinstance(itf, CircleInterface) and np.all((lo <= itf.centre) & (itf.centre <= hi))
+                    and itf.radius < np.linalg.norm(hi - lo))
+    if not crossings and not small_circle:
+        return [(int(sides[0]), *_tensor_rule(lo, hi, n))]
+    if len(crossings) == 2 and not small_circle:
+        result = _two_regions(itf, walk, crossings, n, size2)
+        if result is not None:
+            return result
+    if depth >= MAX_DEPTH:
+        raise DiscretisationError(f"efgm: the cell [{lo[0]:.4g}, {hi[0]:.4g}] × [{lo[1]:.4g}, {hi[1]:.4g}] is cut by "
+                                  f"Γ in a way that {MAX_DEPTH} subdivisions do not simplify; refine")
+    mid = (lo + hi) / 2
+    out = []
+    for qlo, qhi in (((lo[0], lo[1]), (mid[0], mid[1])), ((mid[0], lo[1]), (hi[0], mid[1])),
+                     ((mid[0], mid[1]), (hi[0], hi[1])), ((lo[0], mid[1]), (mid[0], hi[1]))):
+        out += cut_cell(itf, np.array(qlo), np.array(qhi), n, depth + 1)
+    return out
+
+
+def _two_regions(itf, walk, crossings, n, size2):
+    """The two regions of a cell that Γ crosses twice, each fanned from a corner."""
+    i, j = crossings
+    chains = [walk[i:j + 1], walk[j:] + walk[:i + 1]]
+    out = []
+    for chain in chains:
+        corner_sides = [w[2] for w in chain if w[1]]
+        if not corner_sides:
+            return None
+        start, end = chain[0][0], chain[-1][0]
+        curves = [_segment(chain[k][0], chain[k + 1][0]) for k in range(len(chain) - 1)]
+        curves.append(_gamma_curve(itf, end, start))
+        rule = _region_rule(([(w[0], w[1]) for w in chain], curves), n, size2)
+        if rule is None:
+            return None
+        out.append((int(corner_sides[0]), *rule))
+    return out
+
+
+def _tensor_rule(lo, hi, n):
+    g, gw = gauss01(n)
+    X, Y = np.meshgrid(lo[0] + g * (hi[0] - lo[0]), lo[1] + g * (hi[1] - lo[1]), indexing="ij")
+    W = np.outer(gw, gw) * np.prod(hi - lo)
+    return np.column_stack([X.ravel(), Y.ravel()]), W.ravel()
+
+
+def tensor_cells(lo: np.ndarray, hi: np.ndarray, n: int) -> tuple[np.ndarray, np.ndarray]:
+    """n×n Gauss points of many cells at once: (C·n², 2) points and weights."""
+    g, gw = gauss01(n)
+    size = hi - lo
+    gx, gy = np.meshgrid(g, g, indexing="ij")
+    pts = lo[:, None, :] + np.stack([gx.ravel(), gy.ravel()], axis=-1)[None] * size[:, None, :]
+    w = np.outer(gw, gw).ravel()[None] * np.prod(size, axis=1)[:, None]
+    return pts.reshape(-1, 2), w.ravel()
+
+
+# ----- lines: Γ and the outer boundary --------------------------------------
+
+def curve_rule(points_of, tangent_of, length: float, h: float, n: int, breaks=()) -> tuple[np.ndarray, ...]:
+    """Gauss points on a curve ``x(τ)``, τ ∈ [0, 1], of total ``length``, in
+    pieces no longer than h and broken at the parameters ``breaks``.
+    Returns points, weights (arc length) and unit tangents."""
+    knots = sorted(set([0.0, 1.0] + [b for b in breaks if 0.0 < b < 1.0]))
+    taus, wts = [], []
+    g, gw = gauss01(n)
+    for a, b in zip(knots[:-1], knots[1:]):
+        m = max(1, int(np.ceil((b - a) * length / h)))
+        edges = np.linspace(a, b, m + 1)
+        taus.append((edges[:-1, None] + g[None] * np.diff(edges)[:, None]).ravel())
+        wts.append((np.diff(edges)[:, None] * gw[None]).ravel())
+    tau, w = np.concatenate(taus), np.concatenate(wts)
+    tang = tangent_of(tau)
+    speed = np.linalg.norm(tang, axis=1)
+    return points_of(tau), w * speed, tang / speed[:, None]

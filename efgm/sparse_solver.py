@@ -1,0 +1,100 @@
+"""Sparse direct solves (SuperLU) with the same health report as the others.
+
+The system is equilibrated first (symmetric scaling by the inverse square
+root of each row's largest entry), which removes the scale gap between the
+stiffness (~E) and the constraint rows, then factorised by SuperLU.  The
+report: relative residual, normwise backward error (which decides success,
+as for the dolfinx methods) and, below a size limit, Higham's 1-norm
+estimate of the condition number of the equilibrated matrix.
+"""
+from __future__ import annotations
+
+import numpy as np
+import scipy.sparse as sp
+import scipy.sparse.linalg as spla
+
+from contactcore import SolverError, SolverReport
+from contactcore import tolerances as tol
+
+
+#: Nested-dissection leaves below this many unknowns are kept in their order.
+ND_LEAF = 64
+
+
+def nested_dissection(coords: np.ndarray, reach: float) -> np.ndarray:
+    """A fill-reducing order of unknowns located at ``coords`` whose
+    couplings do not reach further than ``reach``: bisect at the median of
+    the longer side, number both halves first (recursively) and the band of
+    width ``reach`` around the cut last.  On 2D node sets this gives the
+    O(N^1.5) factorisation of nested dissection (George 1973), where
+    SuperLU's own orderings varied 5-8x from one EFGM system to another.
+    """
+    order = []
+    stack = [(np.arange(len(coords)), False)]
+    while stack:
+        idx, emit = stack.pop()
+        if emit or len(idx) <= ND_LEAF:
+            order.append(idx)
+            continue
+        pts = coords[idx]
+        axis = int(np.argmax(np.ptp(pts, axis=0)))
+        cut = np.median(pts[:, axis])
+        offset = pts[:, axis] - cut
+        band = np.abs(offset) < reach / 2
+        left, right = idx[(offset < 0) & ~band], idx[(offset >= 0) & ~band]
+        if len(left) == 0 or len(right) == 0:
+            order.append(idx)
+            continue
+        # last pushed is processed first: left, right, then the separator
+        stack += [(idx[band], True), (right, False), (left, False)]
+    return np.concatenate(order)
+
+
+#: Partial pivoting threshold in symmetric mode: a diagonal pivot is kept
+#: unless smaller than this fraction of its column's largest entry, which
+#: still pivots away from the zero diagonal of the constraint rows.
+PIVOT_THRESHOLD = 0.1
+
+
+def _equilibrate(A: sp.csr_matrix) -> np.ndarray:
+    row_max = abs(A).max(axis=1).toarray().ravel()
+    if np.any(row_max == 0):
+        i = int(np.flatnonzero(row_max == 0)[0])
+        raise SolverError(f"the system is singular: unknown {i} appears in no equation")
+    return 1.0 / np.sqrt(row_max)
+
+
+def solve(A: sp.csr_matrix, b: np.ndarray, *, coords: np.ndarray, reach: float, estimate_condition: bool = True,
+          what: str = "linear system") -> tuple[np.ndarray, SolverReport]:
+    """Solve ``A x = b``, unknown i located at ``coords[i]`` and coupled to
+    unknowns within ``reach`` (for the ordering); raise :class:`SolverError`
+    if it fails."""
+    s = _equilibrate(A)
+    perm = nested_dissection(coords, reach)
+    As = (sp.diags(s) @ A @ sp.diags(s))[perm][:, perm]
+    try:
+        lu = spla.splu(As.tocsc(), permc_spec="NATURAL", diag_pivot_thresh=PIVOT_THRESHOLD,
+                       options={"SymmetricMode": True})
+    except RuntimeError as exc:
+        raise SolverError(f"{what} is singular ({exc}) — a rigid-body mode is not removed by the supports "
+                          "and pins, or a penalty is so stiff that the bulk stiffness is lost in round-off") from None
+    x = np.empty_like(b)
+    x[perm] = lu.solve((s * b)[perm])
+    x *= s
+    report = SolverReport(solver="superlu (scipy), equilibrated, nested dissection", iterations=[1])
+    r = b - A @ x
+    inf = lambda v: float(np.max(np.abs(v))) if len(v) else 0.0  # noqa: E731
+    bnorm = inf(b)
+    report.residual = inf(r) / bnorm if bnorm > 0 else inf(r)
+    scale = spla.norm(A, np.inf) * inf(x) + bnorm
+    report.backward_error = inf(r) / scale if scale > 0 else inf(r)
+    if not np.all(np.isfinite(x)) or not report.backward_error <= tol.BACKWARD_ERROR_FAIL:
+        raise SolverError(f"{what}: backward error {report.backward_error:.3e} exceeds "
+                          f"{tol.BACKWARD_ERROR_FAIL:g} — the matrix is singular to working precision")
+    if estimate_condition and A.shape[0] <= tol.CONDITION_ESTIMATE_MAX_DOFS:
+        inv = spla.LinearOperator(As.shape, matvec=lu.solve, rmatvec=lambda v: lu.solve(v, trans="T"))
+        report.condition = float(spla.onenormest(inv) * spla.norm(As, 1))
+        if report.condition > tol.CONDITION_WARN:
+            report.warnings.append(f"condition estimate {report.condition:.2e} exceeds {tol.CONDITION_WARN:.0e}: "
+                                   "digits may be lost (penalty too stiff, or supports too small?)")
+    return x, report

@@ -1,0 +1,175 @@
+"""EFGM: shape functions, enrichment, patch test, convergence, agreement
+with the conforming reference, node sets and dilations, import isolation."""
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import tolerances as tol
+from contactcore import DiscretisationError, load_scene, sample_profiles
+from efgm import method
+from efgm.nodes import grid_nodes, support_radii
+from efgm.operators import Approximation, find_enrichment
+from efgm.shape import MLS
+from verification.agreement import quantity_class, relative_rms
+from verification.closed_forms import interface_patch, pressurised_rod
+from verification.norms import l2_error
+
+
+def _grid(n=11, perturb=0.0, seed=0):
+    g = np.linspace(0.0, 1.0, n)
+    X, Y = np.meshgrid(g, g)
+    x = np.column_stack([X.ravel(), Y.ravel()])
+    inner = np.all((x > 1e-9) & (x < 1 - 1e-9), axis=1)
+    x[inner] += np.random.default_rng(seed).uniform(-perturb, perturb, (inner.sum(), 2)) / (n - 1)
+    return x
+
+
+@pytest.mark.parametrize("degree", [1, 2])
+@pytest.mark.parametrize("support", ["circular", "rectangular"])
+@pytest.mark.parametrize("weight", ["cubic", "quartic"])
+@pytest.mark.parametrize("perturb", [0.0, 0.4])
+def test_shape_functions_reproduce_polynomials(degree, support, weight, perturb):
+    from efgm.nodes import NodeSet
+
+    nodes = _grid(perturb=perturb)
+    radii = support_radii(NodeSet(nodes, 0.1), {1: 2.0, 2: 3.0}[degree], support == "rectangular")
+    sv = MLS(nodes, radii, degree=degree, weight=weight).evaluate(np.random.default_rng(1).uniform(0, 1, (2000, 2)))
+    x = nodes[np.maximum(sv.index, 0)]
+    pts = np.random.default_rng(1).uniform(0, 1, (2000, 2))
+    monomials = [(lambda p: p[..., 0], np.array([1.0, 0.0])), (lambda p: p[..., 1], np.array([0.0, 1.0]))]
+    assert np.max(np.abs(sv.phi.sum(axis=1) - 1)) <= tol.SHAPE_ROUNDOFF
+    assert np.max(np.abs(sv.grad.sum(axis=1))) <= tol.SHAPE_ROUNDOFF * 10  # gradients scale as 1/h = 10
+    for f, df in monomials:
+        assert np.max(np.abs((sv.phi * f(x)).sum(axis=1) - f(pts))) <= tol.SHAPE_ROUNDOFF
+        assert np.max(np.abs((sv.grad * f(x)[..., None]).sum(axis=1) - df)) <= tol.SHAPE_ROUNDOFF * 10
+    if degree == 2:
+        xy = (sv.phi * x[..., 0] * x[..., 1]).sum(axis=1)
+        assert np.max(np.abs(xy - pts[:, 0] * pts[:, 1])) <= tol.SHAPE_ROUNDOFF
+
+
+def test_enriched_sets_reproduce_a_discontinuous_linear_field():
+    """The enriched approximation holds u⁻ on the − side and u⁺ on the + side,
+    both linear: u_I = own-side value, a_J = (u⁺ − u⁻)(x_J)/2 (Eq. 19)."""
+    patch = interface_patch(30.0)
+    scene = patch.scene
+    nodes = grid_nodes(scene, 0.1)
+    mls = MLS(nodes.x, support_radii(nodes, 2.0, False))
+    vol = method.volume_rule(scene, nodes.h, 6)
+    approx = Approximation(mls, find_enrichment(scene, mls, mls.evaluate(vol.points), vol.weights, vol.bodies))
+    own = scene.body_of(nodes.x)
+    U = np.zeros(approx.ndofs)
+    U[:2 * len(nodes.x)] = patch.displacement(nodes.x, own).ravel()
+    enriched = np.flatnonzero(approx.enr.index >= 0)
+    jump = patch.displacement(nodes.x[enriched], np.ones(len(enriched), int)) - patch.displacement(
+        nodes.x[enriched], np.zeros(len(enriched), int))
+    for k, node in enumerate(enriched):
+        e = approx.enr.index[node]
+        U[2 * (len(nodes.x) + e):2 * (len(nodes.x) + e) + 2] = jump[k] / 2
+    pts = np.random.default_rng(2).uniform(0, 1, (3000, 2))
+    for body in (0, 1):
+        mine = pts[scene.body_of(pts) == body]  # each body's field holds in that body
+        got = (approx.displacement_operator(mls.evaluate(mine), np.full(len(mine), body)) @ U).reshape(-1, 2)
+        want = patch.displacement(mine, np.full(len(mine), body))
+        # exact but for the nodes left unenriched (ENRICH_MIN_FRACTION)
+        assert np.max(np.abs(got - want)) <= 1e-6 * np.max(np.abs(want))
+
+
+def _patch_errors(patch, **kw):
+    pts = np.random.default_rng(0).uniform(0.02, 0.98, (400, 2))
+    b = patch.scene.body_of(pts)
+    r = method.solve(patch.scene, 0.1, **kw)
+    u, s = patch.displacement(pts, b), patch.stress(pts, b)
+    return (np.max(np.abs(r.fields.displacement(pts, b) - u)) / np.max(np.abs(u)),
+            np.max(np.abs(r.fields.stress(pts, b) - s)) / np.max(np.abs(s)))
+
+
+@pytest.mark.parametrize("angle", [30.0, -65.0])
+def test_interface_patch_at_the_quadrature_level(angle):
+    patch = interface_patch(angle)
+    u6, s6 = _patch_errors(patch)
+    assert u6 <= tol.EFGM_PATCH_U and s6 <= tol.EFGM_PATCH_SIGMA, (u6, s6)
+    u12, s12 = _patch_errors(patch, gauss=12)
+    assert u12 * tol.EFGM_PATCH_QUADRATURE_GAIN <= u6 and s12 * tol.EFGM_PATCH_QUADRATURE_GAIN <= s6
+
+
+def test_curved_interface_converges(record_property):
+    """Pressurised rod, normal jump on a circle; nodes lie on Γ at h = 0.1."""
+    case = pressurised_rod()
+    hs = np.array([0.1, 0.05, 0.025])
+    assert np.min(np.abs(case.scene.interface.phi(grid_nodes(case.scene, 0.1).x))) < 1e-12
+    errs = []
+    for h in hs:
+        r = method.solve(case.scene, h, estimate_condition=False)
+        err, ref = l2_error(case.scene, r.fields, case, h=h / 2)
+        errs.append(err / ref)
+    rate = np.polyfit(np.log(hs), np.log(errs), 1)[0]
+    record_property("efgm_rod_errors", errs)
+    record_property("efgm_rod_rate", rate)
+    assert rate >= 2.0 - tol.RATE_MARGIN, (rate, errs)
+
+
+@pytest.mark.parametrize("name", ["A", "B", "C"])
+def test_agrees_with_the_reference(name):
+    from xdolfinx import conforming
+
+    scene = load_scene(name)
+    ours = {p.id: p for p in sample_profiles(scene, method.solve(scene, estimate_condition=False).fields)}
+    ref = {p.id: p for p in sample_profiles(scene, conforming.solve(scene, degree=2).fields)}
+    bounds = {"interface": tol.AGREE_INTERFACE, "interior": tol.AGREE_INTERIOR_STRESS, "edge": tol.AGREE_EDGE_STRESS}
+    profiles = {p.id: p for p in scene.profiles}
+    for pid, got in ours.items():
+        for q in got.names[3:]:
+            if name == "B" and q in ("tN", "gN"):  # exactly zero: measured against |t_T|, |g_T|
+                scale = ref["B5"].columns[{"tN": "tT", "gN": "gT"}[q]]
+                assert relative_rms(scene, got, ref[pid], q, 2 * scene.h, scale=scale) <= tol.FALSE_TN[1]
+                continue
+            kind = quantity_class(scene, profiles[pid], q)
+            assert relative_rms(scene, got, ref[pid], q, 2 * scene.h) <= bounds[kind], (pid, q, kind)
+
+
+@pytest.mark.parametrize("support", ["circular", "rectangular"])
+@pytest.mark.parametrize("dmax", [1.1, 1.5, 2.0, 3.0, 4.0])
+def test_every_dilation_answers_or_explains(dmax, support):
+    patch = interface_patch(30.0)
+    try:
+        u, s = _patch_errors(patch, dmax=dmax, support=support)
+    except DiscretisationError as exc:
+        assert "is too small here: about" in str(exc) and f"dmax = {dmax:g}" in str(exc)
+        return
+    assert u <= tol.EFGM_DILATION_U and s <= tol.EFGM_DILATION_SIGMA, (u, s)
+    u16, _ = _patch_errors(patch, dmax=dmax, support=support, gauss=16)
+    assert u16 * tol.EFGM_PATCH_QUADRATURE_GAIN <= u, (u, u16)  # the quadrature's error, not the method's
+
+
+@pytest.mark.parametrize("perturb", [0.1, 0.45])
+def test_perturbed_nodes(perturb):
+    patch = interface_patch(30.0)
+    nodes = _grid(perturb=perturb, seed=3)
+    pts = np.random.default_rng(0).uniform(0.02, 0.98, (400, 2))
+    b = patch.scene.body_of(pts)
+    r = method.solve(patch.scene, nodes=nodes)
+    u = patch.displacement(pts, b)
+    assert np.max(np.abs(r.fields.displacement(pts, b) - u)) <= 5 * tol.EFGM_PATCH_U * np.max(np.abs(u))
+
+
+def test_bad_node_sets_are_named():
+    scene = interface_patch(30.0).scene
+    with pytest.raises(DiscretisationError, match="lies outside the domain"):
+        method.solve(scene, nodes=np.vstack([_grid(), [[2.0, 2.0]]]))
+    with pytest.raises(DiscretisationError, match="two nodes coincide"):
+        method.solve(scene, nodes=np.vstack([_grid(), [[0.5, 0.5]]]))
+    lifted = _grid()
+    lifted[lifted[:, 1] == 0.0, 1] = 0.02  # the bottom row moved off the supported boundary
+    with pytest.raises(DiscretisationError, match="no node lies on boundary 'bottom'"):
+        method.solve(load_scene("A"), nodes=lifted)
+
+
+def test_efgm_imports_neither_dolfinx_nor_gmsh():
+    code = ("import sys, numpy as np; from efgm import method; from verification.closed_forms import "
+            "interface_patch; method.solve(interface_patch(30.0).scene, 0.25); "
+            "bad = [m for m in ('dolfinx', 'petsc4py', 'gmsh', 'ufl', 'basix', 'mpi4py') if m in sys.modules]; "
+            "print(bad); sys.exit(1 if bad else 0)")
+    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0, proc.stdout + proc.stderr

@@ -1,0 +1,58 @@
+"""How two methods' profiles are compared, in one place.
+
+The measure is the RMS of the difference over a profile relative to the RMS
+of the reference profile.  Samples closer than ``exclude`` to a *singular
+point* — a corner of the domain, or a point where Γ meets the outer boundary
+— are left out: there the stresses have boundary layers or singularities
+that no method resolves at these resolutions, so a pointwise difference
+there measures resolution, not agreement.  A quantity whose exact value is
+zero (scene B's t_N) has no relative measure; it is compared against the
+scale of another quantity instead (``scale``).
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from contactcore import ProfileData, Scene
+from contactcore.geometry import LineInterface, Rectangle
+
+
+def singular_points(scene: Scene) -> np.ndarray:
+    """Domain corners and the points where Γ meets the outer boundary."""
+    pts = [scene.domain.corners] if isinstance(scene.domain, Rectangle) else []
+    if isinstance(scene.interface, LineInterface):
+        pts.append(scene.interface.chord(scene.domain))
+    return np.vstack(pts) if pts else np.zeros((0, 2))
+
+
+def kept_samples(scene: Scene, profile: ProfileData, exclude: float) -> np.ndarray:
+    """Mask of the samples at least ``exclude`` from every singular point."""
+    xy = np.column_stack([profile.columns["x"], profile.columns["y"]])
+    sing = singular_points(scene)
+    if len(sing) == 0:
+        return np.ones(len(xy), bool)
+    return np.min(np.linalg.norm(xy[:, None, :] - sing[None], axis=-1), axis=1) >= exclude
+
+
+def quantity_class(scene: Scene, profile, quantity: str) -> str:
+    """``interface`` (gaps, tractions), ``edge`` (a stress on a segment of
+    the outer boundary) or ``interior`` (any other stress or displacement)."""
+    if quantity in ("tN", "tT", "gN", "gT"):
+        return "interface"
+    if hasattr(profile, "start"):
+        ends = np.array([profile.start, profile.end])
+        if np.all(np.abs(scene.domain.distance_to_boundary(ends)) <= 1e-12 * scene.length_scale):
+            mid = ends.mean(axis=0, keepdims=True)
+            if abs(scene.domain.distance_to_boundary(mid)[0]) <= 1e-12 * scene.length_scale:
+                return "edge"
+    return "interior"
+
+
+def relative_rms(scene: Scene, got: ProfileData, ref: ProfileData, quantity: str, exclude: float,
+                 scale: np.ndarray | None = None) -> float:
+    """RMS of ``got − ref`` over the kept samples, relative to the RMS of
+    ``scale`` (default: the reference quantity itself)."""
+    keep = kept_samples(scene, ref, exclude)
+    diff = got.columns[quantity][keep] - ref.columns[quantity][keep]
+    base = ref.columns[quantity][keep] if scale is None else np.asarray(scale)
+    return float(np.sqrt(np.mean(diff ** 2)) / np.sqrt(np.mean(base ** 2)))
