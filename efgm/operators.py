@@ -18,7 +18,7 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.sparse as sp
 
-from contactcore.assembly import Triplets
+from contactcore.assembly import Triplets, point_rows_to_csr
 
 from .shape import MLS, ShapeValues
 
@@ -78,42 +78,47 @@ class Approximation:
         enriched = np.flatnonzero(self.enr.index >= 0)[np.argsort(self.enr.index[self.enr.index >= 0])]
         return np.repeat(np.vstack([nodes, nodes[enriched]]), 2, axis=0)
 
-    def _functions(self, sv: ShapeValues, bodies: np.ndarray):
-        """First dof (x component) of each function, its value and gradient:
-        the standard functions, then the enriched ones (P, 2K)."""
-        idx = sv.index
-        valid = idx >= 0
-        safe = np.maximum(idx, 0)
+    def _enriched(self, sv: ShapeValues, bodies: np.ndarray):
+        """The enriched functions that are non-zero, at the points that have
+        any: (points (Q,), first dof (Q, K) or −1, coefficient ±2 (Q, K))."""
+        safe = np.maximum(sv.index, 0)
         e = self.enr.index[safe]
-        coeff = np.where(valid & (e >= 0), heaviside(bodies)[:, None] - self.enr.node_side[safe], 0)
-        base = np.concatenate([np.where(valid, 2 * safe, -1),
-                               np.where(coeff != 0, 2 * (self.n_nodes + e), -1)], axis=1)
-        val = np.concatenate([sv.phi, coeff * sv.phi], axis=1)
-        grad = np.concatenate([sv.grad, coeff[..., None] * sv.grad], axis=1)
-        return base, val, grad
+        coeff = np.where((sv.index >= 0) & (e >= 0), heaviside(bodies)[:, None] - self.enr.node_side[safe], 0)
+        rows = np.flatnonzero(np.any(coeff != 0, axis=1))
+        coeff = coeff[rows]
+        return rows, np.where(coeff != 0, 2 * (self.n_nodes + e[rows]), -1), coeff
 
     def displacement_operator(self, sv: ShapeValues, bodies) -> sp.csr_matrix:
         """``N`` with rows ``2p, 2p+1`` = ``u_x, u_y`` at point p."""
-        base, val, _ = self._functions(sv, bodies)
-        P = len(base)
-        trip = Triplets((2 * P, self.ndofs))
-        rows = 2 * np.arange(P)[:, None]
+        bodies = np.asarray(bodies)
+        node = 2 * np.maximum(sv.index, 0)  # padding: column 0 with a zero value
+        K = node.shape[1]
+        N = point_rows_to_csr(self.ndofs, (K, K), np.concatenate([node, node + 1], axis=1),
+                              np.concatenate([sv.phi, sv.phi], axis=1))
+        rows, base, coeff = self._enriched(sv, bodies)
+        trip = Triplets(N.shape)
         for c in range(2):
-            trip.add(rows + c, np.where(base >= 0, base + c, -1), val)
-        return trip.to_csr()
+            trip.add((2 * rows + c)[:, None], np.where(base >= 0, base + c, -1), coeff * sv.phi[rows])
+        return N + trip.to_csr()
 
     def strain_operator(self, sv: ShapeValues, bodies) -> sp.csr_matrix:
         """``B`` with rows ``3p, 3p+1, 3p+2`` = ``ε_xx, ε_yy, γ_xy`` at point p."""
-        base, _, grad = self._functions(sv, bodies)
-        P = len(base)
-        trip = Triplets((3 * P, self.ndofs))
-        rows = 3 * np.arange(P)[:, None]
-        bx, by = np.where(base >= 0, base, -1), np.where(base >= 0, base + 1, -1)
-        trip.add(rows, bx, grad[..., 0])
-        trip.add(rows + 1, by, grad[..., 1])
-        trip.add(rows + 2, bx, grad[..., 1])
-        trip.add(rows + 2, by, grad[..., 0])
-        return trip.to_csr()
+        bodies = np.asarray(bodies)
+        node = 2 * np.maximum(sv.index, 0)
+        K = node.shape[1]
+        gx, gy = sv.grad[..., 0], sv.grad[..., 1]
+        B = point_rows_to_csr(self.ndofs, (K, K, 2 * K), np.concatenate([node, node + 1, node, node + 1], axis=1),
+                              np.concatenate([gx, gy, gy, gx], axis=1))
+        rows, base, coeff = self._enriched(sv, bodies)
+        trip = Triplets(B.shape)
+        ex, ey = np.where(base >= 0, base, -1), np.where(base >= 0, base + 1, -1)
+        egx, egy = coeff * gx[rows], coeff * gy[rows]
+        r3 = 3 * rows[:, None]
+        trip.add(r3, ex, egx)
+        trip.add(r3 + 1, ey, egy)
+        trip.add(r3 + 2, ex, egy)
+        trip.add(r3 + 2, ey, egx)
+        return B + trip.to_csr()
 
 
 def block_diagonal(blocks: np.ndarray) -> sp.csr_matrix:

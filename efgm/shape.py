@@ -41,6 +41,9 @@ MOMENT_REGULARITY = 1e-10
 #: among 2048, 8192 and 32768).
 CHUNK = 32768
 
+#: Support radii within this ratio share one search tree (see ``neighbours``).
+RADIUS_CLASS_RATIO = 1.5
+
 #: Extra neighbours requested from the k-d tree beyond the expected count;
 #: the query is repeated with twice as many if it comes back full.
 _NEIGHBOUR_SLACK = 2
@@ -135,28 +138,47 @@ class MLS:
         self.m = basis_size(degree)
         self.tree = cKDTree(self.nodes)
         self.reach = float(np.max(self.radii))
-        area = np.prod(np.ptp(self.nodes, axis=0)) or 1.0
-        density = len(self.nodes) / area
-        span = 4 * self.reach ** 2 if self.rectangular else np.pi * self.reach ** 2
-        self._k = int(min(len(self.nodes), np.ceil(span * density * 1.5) + _NEIGHBOUR_SLACK))
+        size = self.radii.max(axis=1) if self.rectangular else self.radii
+        band = np.floor(np.log(size / size.min()) / np.log(RADIUS_CLASS_RATIO)).astype(int)
+        self._classes = []  # (global indices, tree, largest radius, k) per radius class
+        for b in np.unique(band):
+            members = np.flatnonzero(band == b)
+            self._classes.append([members, cKDTree(self.nodes[members]), float(size[members].max()),
+                                  min(len(members), 16)])
 
     def neighbours(self, points: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """Candidate neighbours (P, K) (−1 = none) and offsets ``x − x_I``
-        as two (P, K) arrays; K adapts to the largest count met so far."""
+        """Neighbours (P, K) — nodes whose own support holds the point, first
+        in each row, −1 after — and offsets ``x − x_I`` as two (P, K) arrays.
+
+        Nodes are grouped by support radius (classes a factor
+        :data:`RADIUS_CLASS_RATIO` apart), each class searched up to its own
+        largest radius: on a grid, the few large edge and corner supports
+        then do not make every point collect all nodes within the largest one.
+        """
         p_norm = np.inf if self.rectangular else 2
-        k = self._k
-        while True:
-            dist, idx = self.tree.query(points, k=k, p=p_norm, distance_upper_bound=self.reach)
-            dist, idx = dist.reshape(len(points), -1), idx.reshape(len(points), -1)
-            if k >= len(self.nodes) or not np.isfinite(dist[:, -1]).any():
-                break
-            k = min(2 * k, len(self.nodes))
-        found = np.isfinite(dist)
-        used = int(found.sum(axis=1).max(initial=1))
-        self._k = min(len(self.nodes), used + _NEIGHBOUR_SLACK)
-        idx, found = idx[:, :used], found[:, :used]  # the tree returns neighbours nearest first
-        idx[~found] = -1
-        safe = np.where(found, idx, 0)
+        found = []
+        for cls in self._classes:
+            members, tree, reach, k = cls
+            while True:
+                dist, idx = tree.query(points, k=k, p=p_norm, distance_upper_bound=reach)
+                dist, idx = dist.reshape(len(points), -1), idx.reshape(len(points), -1)
+                if k >= len(members) or not np.isfinite(dist[:, -1]).any():
+                    break
+                k = min(2 * k, len(members))
+            cls[3] = min(len(members), int(np.isfinite(dist).sum(axis=1).max(initial=1)) + _NEIGHBOUR_SLACK)
+            keep = np.isfinite(dist).any(axis=0)
+            found.append(np.where(np.isfinite(dist[:, keep]), members[np.minimum(idx[:, keep], len(members) - 1)], -1))
+        idx = np.concatenate(found, axis=1)
+        safe = np.maximum(idx, 0)
+        if self.rectangular:
+            inside = (idx >= 0) & np.all(np.abs(points[:, None, :] - self.nodes[safe]) < self.radii[safe], axis=-1)
+        else:
+            d = np.hypot(points[:, None, 0] - self.nodes[safe, 0], points[:, None, 1] - self.nodes[safe, 1])
+            inside = (idx >= 0) & (d < self.radii[safe])
+        order = np.argsort(~inside, axis=1, kind="stable")
+        used = int(inside.sum(axis=1).max(initial=1))
+        idx = np.take_along_axis(np.where(inside, idx, -1), order, axis=1)[:, :used]
+        safe = np.maximum(idx, 0)
         return idx, points[:, :1] - self.nodes[safe, 0], points[:, 1:] - self.nodes[safe, 1]
 
     def _weights(self, idx: np.ndarray, ox: np.ndarray, oy: np.ndarray):

@@ -76,3 +76,18 @@ def test_interrupted_write_leaves_nothing_under_the_final_name(tmp_path):
             tmp.write_text("half")
             raise RuntimeError("interrupted")
     assert target.read_text() == "whole" and list(tmp_path.iterdir()) == [target]
+
+
+def test_efficiency_table_and_plot(tmp_path):
+    """Error against run time: one row per run; the error of the reference's
+    own discretisation is round-off, a coarser one's is not."""
+    assert main(["efficiency", "A", "--method", "fe", "--h", "0.2", "0.1", "--ref-h", "0.1",
+                 "--out", str(tmp_path)]) == 0
+    with open(tmp_path / "efficiency.csv") as fh:
+        rows = list(csv.DictReader(fh))
+    assert [r["h"] for r in rows] == ["0.2", "0.1"] and all(float(r["total"]) > 0 for r in rows)
+    coarse, same = float(rows[0]["error"]), float(rows[1]["error"])
+    assert coarse > 1e-3 and same > 0  # P1 at h = 0.1 against P2 at h = 0.1: not zero, but smaller
+    assert same < coarse
+    assert (tmp_path / "efficiency.png").read_bytes()[:4] == b"\x89PNG"
+    assert "worst at" in (tmp_path / "efficiency.md").read_text()

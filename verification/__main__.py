@@ -3,6 +3,7 @@
     python -m verification run SCENE_OR_TOML --method fe|efgm|all [--degree 1|2]
         [--h H] [--paper] [--xdmf] [--petsc-option KEY=VALUE ...] [--dmax D] --out DIR
     python -m verification timing SCENE --method fe --degree 1 2 --h H1 H2 ... --out DIR
+    python -m verification efficiency SCENE --method fe efgm --degree 1 2 --h H1 H2 ... --ref-h H --out DIR
 
 Bad input ends with one line ``error: <field>: <problem>`` and exit status 2.
 """
@@ -13,7 +14,7 @@ import logging
 import sys
 from pathlib import Path
 
-from contactcore import ContactError
+from contactcore import ContactError, load_scene
 
 from . import methods
 
@@ -45,6 +46,14 @@ def _parser() -> argparse.ArgumentParser:
     tim.add_argument("--degree", nargs="+", type=int, default=[1], choices=(1, 2))
     tim.add_argument("--h", nargs="+", type=float, required=True)
     tim.add_argument("--out", type=Path, required=True)
+    eff = sub.add_parser("efficiency", help="error against run time, against a refined reference")
+    eff.add_argument("scene")
+    eff.add_argument("--method", nargs="+", default=["all"], choices=[*methods.METHODS, "all"])
+    eff.add_argument("--degree", nargs="+", type=int, default=[1], choices=(1, 2))
+    eff.add_argument("--h", nargs="+", type=float, required=True)
+    eff.add_argument("--ref-h", type=float, required=True, help="element size of the P2 reference")
+    eff.add_argument("--exclude", type=float, help="distance from corners and Γ's ends left out (default 0.1 L)")
+    eff.add_argument("--out", type=Path, required=True)
     return parser
 
 
@@ -68,18 +77,23 @@ def main(argv=None) -> int:
     argv = sys.argv[1:] if argv is None else argv
     args = _parser().parse_args(argv)
     _configure_logging()
+    from .efficiency import efficiency
     from .run import run
     from .timing import timing
 
     try:
-        for h in args.h if isinstance(args.h, list) else [args.h]:
+        for h in (args.h if isinstance(args.h, list) else [args.h]) + [getattr(args, "ref_h", None)]:
             if h is not None and not h > 0:
                 raise ContactError(f"--h: must be > 0 (got {h})")
         if args.command == "run":
             run(args.scene, args.method, args.out, h=args.h, degree=args.degree, paper=args.paper,
                 xdmf=args.xdmf, petsc_options=dict(args.petsc_option), dmax=args.dmax, argv=argv)
-        else:
+        elif args.command == "timing":
             timing(args.scene, args.method, args.degree, args.h, args.out, argv=argv)
+        else:
+            scene = load_scene(args.scene)
+            exclude = args.exclude if args.exclude is not None else 0.1 * scene.length_scale
+            efficiency(args.scene, args.method, args.degree, args.h, args.ref_h, exclude, args.out, argv=argv)
     except ContactError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
