@@ -91,3 +91,24 @@ def test_efficiency_table_and_plot(tmp_path):
     assert same < coarse
     assert (tmp_path / "efficiency.png").read_bytes()[:4] == b"\x89PNG"
     assert "worst at" in (tmp_path / "efficiency.md").read_text()
+
+
+def test_efgm_nodes_from_a_file(tmp_path, capsys):
+    """Any point set, read from a file: here the vertices of a perturbed grid."""
+    import numpy as np
+
+    g = np.linspace(0.0, 1.0, 11)
+    X, Y = np.meshgrid(g, g)
+    nodes = np.column_stack([X.ravel(), Y.ravel()])
+    inner = np.all((nodes > 0) & (nodes < 1), axis=1)
+    nodes[inner] += np.random.default_rng(5).uniform(-0.02, 0.02, (inner.sum(), 2))
+    path = tmp_path / "nodes.csv"
+    np.savetxt(path, nodes, delimiter=",")
+    assert main(["run", "A", "--method", "efgm", "--nodes", str(path), "--out", str(tmp_path / "out")]) == 0
+    summary = json.loads((tmp_path / "out" / "efgm" / "summary.json").read_text())
+    assert summary["discretisation"]["nodes"] == 121
+    path.write_text("0 0 0\n1 1 1\n")
+    capsys.readouterr()
+    assert main(["run", "A", "--method", "efgm", "--nodes", str(path), "--out", str(tmp_path / "bad")]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("error: --nodes:") and "must hold two columns (x y), it has 3" in err

@@ -1,7 +1,7 @@
 """Command line of the verification drivers.
 
     python -m verification run SCENE_OR_TOML --method fe|efgm|all [--degree 1|2]
-        [--h H] [--paper] [--xdmf] [--petsc-option KEY=VALUE ...] [--dmax D] --out DIR
+        [--h H] [--paper] [--xdmf] [--petsc-option KEY=VALUE ...] [--dmax D] [--nodes FILE] --out DIR
     python -m verification timing SCENE --method fe --degree 1 2 --h H1 H2 ... --out DIR
     python -m verification efficiency SCENE --method fe efgm --degree 1 2 --h H1 H2 ... --ref-h H --out DIR
 
@@ -39,6 +39,7 @@ def _parser() -> argparse.ArgumentParser:
     run.add_argument("--petsc-option", type=_petsc_option, action="append", default=[], metavar="KEY=VALUE",
                      help="override a PETSc option of the fe solve (e.g. pc_factor_mat_solver_type=superlu)")
     run.add_argument("--dmax", type=float, help="EFGM support dilation (default: by basis degree)")
+    run.add_argument("--nodes", type=Path, help="EFGM node set: a text file of x y rows (default: a grid)")
     run.add_argument("--out", type=Path, required=True, help="result folder")
     tim = sub.add_parser("timing", help="wall time against DOFs on a ladder of resolutions")
     tim.add_argument("scene")
@@ -87,7 +88,8 @@ def main(argv=None) -> int:
                 raise ContactError(f"--h: must be > 0 (got {h})")
         if args.command == "run":
             run(args.scene, args.method, args.out, h=args.h, degree=args.degree, paper=args.paper,
-                xdmf=args.xdmf, petsc_options=dict(args.petsc_option), dmax=args.dmax, argv=argv)
+                xdmf=args.xdmf, petsc_options=dict(args.petsc_option), dmax=args.dmax,
+                nodes_file=args.nodes, argv=argv)
         elif args.command == "timing":
             timing(args.scene, args.method, args.degree, args.h, args.out, argv=argv)
         else:

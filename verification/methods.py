@@ -17,7 +17,7 @@ METHODS = {
 #: Options of the command line that only some methods take.
 OPTIONS = {
     "fe": ("petsc_options",),
-    "efgm": ("dmax",),
+    "efgm": ("dmax", "nodes"),
 }
 
 #: Methods whose fields live on a dolfinx mesh, so XDMF output exists.

@@ -12,10 +12,13 @@ Writes, under ``--out DIR``::
 """
 from __future__ import annotations
 
+import io
 import logging
 from pathlib import Path
 
-from contactcore import BODIES, load_scene, sample_profiles, scene_text
+import numpy as np
+
+from contactcore import BODIES, ContactError, load_scene, sample_profiles, scene_text
 
 from . import files, methods, plots
 
@@ -35,6 +38,19 @@ def _write_xdmf(folder: Path, result) -> None:
                 xdmf.write_function(sigma)
 
 
+def read_nodes(path) -> np.ndarray:
+    """An EFGM node set: a text file of ``x y`` rows (spaces or commas)."""
+    try:
+        with open(path) as fh:
+            text = fh.read().replace(",", " ")
+        nodes = np.loadtxt(io.StringIO(text), ndmin=2)
+    except (OSError, ValueError) as exc:
+        raise ContactError(f"--nodes: cannot read {path}: {exc}") from None
+    if nodes.shape[1] != 2:
+        raise ContactError(f"--nodes: {path} must hold two columns (x y), it has {nodes.shape[1]}")
+    return nodes
+
+
 def _summary_table(summaries: list[dict]) -> str:
     lines = ["| method | degree | DOFs | mesh (s) | assembly (s) | solve (s) | total (s) | residual | condition |",
              "|---|---|---|---|---|---|---|---|---|"]
@@ -48,15 +64,16 @@ def _summary_table(summaries: list[dict]) -> str:
 
 
 def run(scene_name: str, method_names: list[str], out: Path, *, h=None, degree=1, paper=False,
-        xdmf=False, petsc_options=None, dmax=None, argv=()) -> list[dict]:
+        xdmf=False, petsc_options=None, dmax=None, nodes_file=None, argv=()) -> list[dict]:
     """Solve, sample the scene's profiles, write everything; return the summaries."""
     scene = load_scene(scene_name)
+    nodes = read_nodes(nodes_file) if nodes_file else None
     out = Path(out)
     files.write_text(out / "scene.toml", scene_text(scene_name))
     profiles, summaries = {}, []
     for name in methods.expand(method_names):
         log.info("scene %s: solving with %s (degree %d)", scene.name, name, degree)
-        options = methods.options_for(name, petsc_options=petsc_options or None, dmax=dmax)
+        options = methods.options_for(name, petsc_options=petsc_options or None, dmax=dmax, nodes=nodes)
         result = methods.solver(name)(scene, h, degree=degree, paper=paper, **options)
         summary = result.summary()
         summaries.append(summary)
@@ -78,6 +95,7 @@ def run(scene_name: str, method_names: list[str], out: Path, *, h=None, degree=1
     files.write_text(out / "summary.md", f"# Scene {scene.name}: {scene.title}\n\n" + _summary_table(summaries))
     files.write_json(out / "run.json", {**files.provenance(list(argv)), "scene": scene_name,
                                         "methods": methods.expand(method_names), "h": h, "degree": degree,
-                                        "paper": paper, "petsc_options": petsc_options or {}, "dmax": dmax})
+                                        "paper": paper, "petsc_options": petsc_options or {}, "dmax": dmax,
+                                        "nodes": str(nodes_file) if nodes_file else None})
     log.info("wrote %s", out)
     return summaries
