@@ -33,7 +33,7 @@ from contactcore.scene import BodyForce, Pressure, Torque, Traction
 from . import sparse_solver
 from .nodes import NodeSet, background_cells, check_nodes, grid_nodes, support_radii
 from .operators import Approximation, block_diagonal, find_enrichment
-from .quadrature import Rule, curve_rule, cut_cell, edge_crossings, tensor_cells
+from contactcore.cutcell import Rule, curve_rule, cut_cell, edge_crossings, tensor_cells
 from .shape import MLS
 
 METHOD = "efgm"

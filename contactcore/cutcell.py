@@ -1,14 +1,19 @@
-"""Integration on background cells cut by Γ, on Γ, and on the outer boundary.
+"""Integration on cells cut by Γ, on Γ, and on the outer boundary (exact geometry).
+
+Shared by the methods that integrate on cells that ignore Γ (EFGM's
+background cells, XFEM's mesh cells).  numpy only.
 
 Every region is integrated as a set of *fans*: from a vertex ``V`` over a
 boundary curve ``C(τ)``, ``τ ∈ [0, 1]``, the map ``P(s, τ) = V + s (C(τ) − V)``
 covers the region between them, with ``det J = s (C − V) × C′``.  A straight
 side gives a triangle (Duffy's collapsed square); an arc of the circle gives
 the curved sector between ``V`` and the arc, exactly.  Gauss–Legendre rules
-of ``n`` points in ``s`` and ``τ``.  A cell that Γ cuts into more than two
-pieces, or whose pieces are not star-shaped from a corner, is split in four
-(up to :data:`MAX_DEPTH` times) — this only happens when Γ bends sharply
-inside one cell.
+of ``n`` points in ``s`` and ``τ`` (numpy's, the same as basix's interval
+rules — a test checks it).  A cell that Γ cuts into more than two pieces,
+or whose pieces are not star-shaped from a corner, is split in four (up to
+:data:`MAX_DEPTH` times) — this only happens when Γ bends sharply inside one
+cell.  Cells are convex polygons given counter-clockwise: rectangles and
+triangles.
 """
 from __future__ import annotations
 
@@ -128,37 +133,64 @@ def _region_rule(corners_and_curves, n, size2):
     return None
 
 
-def cut_cell(itf, lo: np.ndarray, hi: np.ndarray, n: int, depth: int = 0) -> list[tuple[int, np.ndarray, np.ndarray]]:
-    """``[(side, points, weights)]`` for the rectangle [lo, hi] and level set ``itf``."""
-    corners = np.array([lo, [hi[0], lo[1]], hi, [lo[0], hi[1]]], float)
-    sides = _side(itf.phi(corners))
+def cut_cell(itf, lo: np.ndarray, hi: np.ndarray, n: int) -> list[tuple[int, np.ndarray, np.ndarray]]:
+    """``[(side, points, weights)]`` for the rectangle [lo, hi]."""
+    return cut_polygon(itf, np.array([lo, [hi[0], lo[1]], hi, [lo[0], hi[1]]], float), n)
+
+
+def _split(vertices: np.ndarray) -> list[np.ndarray]:
+    """Four smaller convex pieces: a triangle by its edge midpoints, a
+    quadrilateral by its edge midpoints and centre."""
+    mids = (vertices + np.roll(vertices, -1, axis=0)) / 2
+    if len(vertices) == 3:
+        return [np.array([vertices[0], mids[0], mids[2]]), np.array([mids[0], vertices[1], mids[1]]),
+                np.array([mids[2], mids[1], vertices[2]]), np.array([mids[0], mids[1], mids[2]])]
+    c = vertices.mean(axis=0)
+    return [np.array([vertices[i], mids[i], c, mids[i - 1]]) for i in range(4)]
+
+
+def _area(vertices: np.ndarray) -> float:
+    x, y = vertices[:, 0], vertices[:, 1]
+    return 0.5 * abs(float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1))))
+
+
+def _whole_rule(vertices: np.ndarray, n: int):
+    """Gauss points of an uncut convex polygon: tensor rule on an
+    axis-aligned rectangle, fans from the first vertex otherwise."""
+    if len(vertices) == 4 and np.allclose(vertices[[0, 1, 2, 3], [1, 1, 0, 0]], vertices[[1, 0, 3, 2], [1, 0, 0, 1]]):
+        return _tensor_rule(vertices[0], vertices[2], n)
+    pts, wts = zip(*[_fan(vertices[0], _segment(vertices[k], vertices[k + 1]), n)
+                     for k in range(1, len(vertices) - 1)])
+    return np.concatenate(pts), np.concatenate(wts)
+
+
+def cut_polygon(itf, vertices: np.ndarray, n: int, depth: int = 0) -> list[tuple[int, np.ndarray, np.ndarray]]:
+    """``[(side, points, weights)]`` for a convex polygon (counter-clockwise)
+    and level set ``itf``: one entry per region on one side of Γ."""
+    sides = _side(itf.phi(vertices))
     walk = []  # the boundary, counter-clockwise: (point, is_corner, side_after)
-    for i in range(4):
-        a, b = corners[i], corners[(i + 1) % 4]
+    for i in range(len(vertices)):
+        a, b = vertices[i], vertices[(i + 1) % len(vertices)]
         walk.append((a, True, sides[i]))
         for t in edge_crossings(itf, a, b):
             walk.append((a + t * (b - a), False, None))
     crossings = [i for i, w in enumerate(walk) if not w[1]]
-    size2 = float(np.prod(hi - lo))
+    size2 = _area(vertices)
+    lo, hi = vertices.min(axis=0), vertices.max(axis=0)
     # a circle smaller than the cell may lie inside it, or cut it along an arc
     # longer than π (the short-arc construction would then be wrong): split
     small_circle = (isinstance(itf, CircleInterface) and np.all((lo <= itf.centre) & (itf.centre <= hi))
                     and itf.radius < np.linalg.norm(hi - lo))
     if not crossings and not small_circle:
-        return [(int(sides[0]), *_tensor_rule(lo, hi, n))]
+        return [(int(sides[0]), *_whole_rule(vertices, n))]
     if len(crossings) == 2 and not small_circle:
         result = _two_regions(itf, walk, crossings, n, size2)
         if result is not None:
             return result
     if depth >= MAX_DEPTH:
-        raise DiscretisationError(f"efgm: the cell [{lo[0]:.4g}, {hi[0]:.4g}] × [{lo[1]:.4g}, {hi[1]:.4g}] is cut by "
-                                  f"Γ in a way that {MAX_DEPTH} subdivisions do not simplify; refine")
-    mid = (lo + hi) / 2
-    out = []
-    for qlo, qhi in (((lo[0], lo[1]), (mid[0], mid[1])), ((mid[0], lo[1]), (hi[0], mid[1])),
-                     ((mid[0], mid[1]), (hi[0], hi[1])), ((lo[0], mid[1]), (mid[0], hi[1]))):
-        out += cut_cell(itf, np.array(qlo), np.array(qhi), n, depth + 1)
-    return out
+        raise DiscretisationError(f"the cell with corners {np.round(vertices, 6).tolist()} is cut by Γ in a way "
+                                  f"that {MAX_DEPTH} subdivisions do not simplify; refine")
+    return [part for piece in _split(vertices) for part in cut_polygon(itf, piece, n, depth + 1)]
 
 
 def _two_regions(itf, walk, crossings, n, size2):
