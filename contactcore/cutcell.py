@@ -154,7 +154,7 @@ def _area(vertices: np.ndarray) -> float:
     return 0.5 * abs(float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1))))
 
 
-def _whole_rule(vertices: np.ndarray, n: int):
+def polygon_rule(vertices: np.ndarray, n: int):
     """Gauss points of an uncut convex polygon: tensor rule on an
     axis-aligned rectangle, fans from the first vertex otherwise."""
     if len(vertices) == 4 and np.allclose(vertices[[0, 1, 2, 3], [1, 1, 0, 0]], vertices[[1, 0, 3, 2], [1, 0, 0, 1]]):
@@ -182,7 +182,7 @@ def cut_polygon(itf, vertices: np.ndarray, n: int, depth: int = 0) -> list[tuple
     small_circle = (isinstance(itf, CircleInterface) and np.all((lo <= itf.centre) & (itf.centre <= hi))
                     and itf.radius < np.linalg.norm(hi - lo))
     if not crossings and not small_circle:
-        return [(int(sides[0]), *_whole_rule(vertices, n))]
+        return [(int(sides[0]), *polygon_rule(vertices, n))]
     if len(crossings) == 2 and not small_circle:
         result = _two_regions(itf, walk, crossings, n, size2)
         if result is not None:
@@ -247,3 +247,28 @@ def curve_rule(points_of, tangent_of, length: float, h: float, n: int, breaks=()
     tang = tangent_of(tau)
     speed = np.linalg.norm(tang, axis=1)
     return points_of(tau), w * speed, tang / speed[:, None]
+
+
+def interface_rule_in(itf, vertices: np.ndarray, n: int, depth: int = 0):
+    """Gauss points of Γ inside a convex polygon: points, weights (arc
+    length) and the level set's unit normals, following the same splits as
+    :func:`cut_polygon` so that cells and Γ are integrated alike."""
+    crossings = []
+    for i in range(len(vertices)):
+        a, b = vertices[i], vertices[(i + 1) % len(vertices)]
+        crossings += [a + t * (b - a) for t in edge_crossings(itf, a, b)]
+    lo, hi = vertices.min(axis=0), vertices.max(axis=0)
+    small_circle = (isinstance(itf, CircleInterface) and np.all((lo <= itf.centre) & (itf.centre <= hi))
+                    and itf.radius < np.linalg.norm(hi - lo))
+    if not crossings and not small_circle:
+        return np.zeros((0, 2)), np.zeros(0), np.zeros((0, 2))
+    if len(crossings) == 2 and not small_circle:
+        curve, tangent = _gamma_curve(itf, crossings[0], crossings[1])
+        g, gw = gauss01(n)
+        pts = curve(g)
+        return pts, gw * np.linalg.norm(tangent(g), axis=1), itf.normals(pts)
+    if depth >= MAX_DEPTH:
+        raise DiscretisationError(f"the cell with corners {np.round(vertices, 6).tolist()} is cut by Γ in a way "
+                                  f"that {MAX_DEPTH} subdivisions do not simplify; refine")
+    parts = [interface_rule_in(itf, piece, n, depth + 1) for piece in _split(vertices)]
+    return tuple(np.concatenate([p[k] for p in parts]) for k in range(3))

@@ -61,9 +61,11 @@ class InterfacePatch:
 
 def interface_patch(angle_deg: float = 30.0, *, minus=Material(2e11, 0.3), plus=Material(7e10, 0.2),
                     kN: float = 1e12, kT: float = 5e10, sigma_nn: float = -3e6, sigma_nt: float = 1e6,
-                    sigma_tt: float = 2e6, plane: str = "stress") -> InterfacePatch:
+                    sigma_tt: float = 2e6, plane: str = "stress", pins=None) -> InterfacePatch:
     """The patch test on ``[0,1]²`` with Γ through the centre at ``angle_deg``
-    to the x axis (``σ_tt`` is used only when the materials are equal)."""
+    to the x axis (``σ_tt`` is used only when the materials are equal).
+    ``pins``: two points of the − body to hold (default: on a parallel to Γ;
+    a method that needs pins at mesh nodes gives its own)."""
     a = np.radians(angle_deg)
     n = np.array([-np.sin(a), np.cos(a)])
     t = np.array([n[1], -n[0]])
@@ -79,7 +81,9 @@ def interface_patch(angle_deg: float = 30.0, *, minus=Material(2e11, 0.3), plus=
     origin = np.array([0.5, 0.5])
     # both pins in the − body, on a parallel to Γ; q fixes the component
     # along which q − p is the longer, which determines the rotation
-    p, q = origin - 0.3 * n - 0.2 * t, origin - 0.3 * n + 0.2 * t
+    p, q = (origin - 0.3 * n - 0.2 * t, origin - 0.3 * n + 0.2 * t) if pins is None else map(np.asarray, pins)
+    if max(n @ (p - origin), n @ (q - origin)) >= 0:
+        raise ValueError("interface_patch: both pins must lie in the − body")
     d, ed = q - p, eps[0] @ (q - p)
     q_fix = "y" if abs(d[0]) >= abs(d[1]) else "x"
     w_minus = -ed[1] / d[0] if q_fix == "y" else ed[0] / d[1]

@@ -11,12 +11,14 @@ import importlib
 #: Method name -> module implementing it, in the order plots list them.
 METHODS = {
     "fe": "xdolfinx.conforming",
+    "xfem": "xdolfinx.xfem",
     "efgm": "efgm.method",
 }
 
 #: Options of the command line that only some methods take.
 OPTIONS = {
     "fe": ("petsc_options",),
+    "xfem": ("petsc_options", "cell"),
     "efgm": ("dmax", "nodes"),
 }
 

@@ -1,0 +1,462 @@
+"""The extended finite element method ("xfem"), the paper's §VI (Eqs. 8–18).
+
+A mesh of the outer domain that ignores Γ (structured triangles or
+quadrilaterals); Γ is the scene's level set.  The displacement is
+
+    u(x) = Σ_I N_I(x) u_I + Σ_J N_J(x) (H(x) − H(x_J)) a_J,
+
+the shifted Heaviside enrichment of Eq. (8), ``H = +1`` on the + side
+(φ ≥ 0), −1 on the − side, on the nodes of the cells Γ cuts.  The jump
+across Γ is ``[[u]] = 2 Σ_J N_J a_J`` ("2N̄").
+
+Layout, after dolfinx_mpc's habit of extending dolfinx rather than
+replacing it: one dolfinx space of blocks ``[u_x, u_y, a_x, a_y]`` per node
+(a ``VectorFunctionSpace`` of dimension 4), so that dolfinx owns the
+numbering, ownership and ghosts.  :class:`EnrichedFunctionSpace` decorates
+it: it owns which nodes are enriched, the cut-cell quadrature and the cell
+kernels of the *band* (cells holding an enriched node).  Away from the band
+dolfinx assembles the standard elasticity from UFL; band cells are added by
+our kernels (``setValuesBlockedLocal``) into the same PETSc matrix, whose
+pattern covers every cell.  The unused enriched components are left out of
+the solve, as the conforming reference leaves out its held dofs.
+
+Cut cells are split along the exact Γ (:mod:`contactcore.cutcell`), each
+piece integrated with its body's material; the interface law is integrated
+on the exact Γ with the level set's own normal (no chord normals: on scene B
+these would create a false normal traction of (k_N/k_T)(h/2R)|t_T|).
+"""
+from __future__ import annotations
+
+import time
+
+import basix
+import numpy as np
+import ufl
+from dolfinx import fem, geometry, mesh
+from dolfinx.fem import petsc as fem_petsc
+from mpi4py import MPI
+from petsc4py import PETSc
+
+from contactcore import BODIES, DiscretisationError, Result, Scene, Timings
+from contactcore import tolerances as tol
+from contactcore.cutcell import cut_polygon, edge_crossings, gauss01, interface_rule_in, polygon_rule
+from contactcore.elasticity import voigt_matrix
+from contactcore.geometry import Rectangle, tangent_of
+from contactcore.scene import BodyForce, Pressure, Torque, Traction
+
+from . import linear_solver
+
+METHOD = "xfem"
+
+#: Gauss points per direction in each (sub-)cell and on each piece of Γ, by
+#: degree: a fan maps a square onto a triangle or curved sector, so n points
+#: integrate the polynomial part of degree 2n − 2 (stiffness of P_k: 2k − 2
+#: in 2D, plus the curved-map factor); n = k + 2 leaves a margin.
+GAUSS_POINTS = {1: 3, 2: 4}
+
+#: An enriched node is kept when the part of its shape function's integral
+#: lying across Γ exceeds this fraction of its integral over the cut cells.
+#: Below it the enriched function lives on a sliver (a cut fraction → 0):
+#: its stiffness vanishes like the sliver's area and the matrix becomes
+#: singular; left out, the jump loses that fraction of one function.
+MIN_CUT_FRACTION = 1e-9
+
+_TAG_UNCUT = {"minus": 1, "plus": 2}
+_TAG_BAND = 3
+
+
+def background_mesh(scene: Scene, h: float, cell: str, comm=MPI.COMM_WORLD):
+    """Structured mesh of the rectangle, cells of size ≈ h."""
+    if not isinstance(scene.domain, Rectangle):
+        raise DiscretisationError("xfem: the background mesh is built for rectangular domains")
+    if cell not in ("quad", "triangle"):
+        raise DiscretisationError(f"xfem: cell must be 'quad' or 'triangle' (got {cell!r})")
+    (x0, y0), (a, b) = scene.domain.corner, scene.domain.size
+    n = [max(1, round(a / h)), max(1, round(b / h))]
+    kind = mesh.CellType.quadrilateral if cell == "quad" else mesh.CellType.triangle
+    return mesh.create_rectangle(comm, [np.array([x0, y0]), np.array([x0 + a, y0 + b])], n, kind)
+
+
+def resolution(scene: Scene, h, paper: bool) -> tuple[float, tuple[int, int] | None]:
+    """The cell size: the paper's grid, h, or the scene's default."""
+    if paper:
+        cells = scene.paper.get("xfem_cells")
+        if cells is None:
+            raise DiscretisationError(f"scene {scene.name} gives no paper discretisation")
+        return min(s / c for s, c in zip(scene.domain.size, cells)), cells
+    h = scene.h if h is None else h
+    if h is None or not h > 0:
+        raise DiscretisationError(f"the resolution h must be > 0 (got {h}); the scene gives no default")
+    return float(h), None
+
+
+class EnrichedFunctionSpace:
+    """dolfinx's space of blocks [u_x, u_y, a_x, a_y], decorated with the
+    Heaviside enrichment of a level set: which nodes are enriched, the
+    quadrature of each band cell, and the shape functions there."""
+
+    def __init__(self, msh, degree: int, scene: Scene, gauss: int):
+        self.msh, self.scene, self.degree, self.gauss = msh, scene, degree, gauss
+        self.V = fem.VectorFunctionSpace(msh, ("Lagrange", degree), dim=4)
+        name = msh.topology.cell_name()
+        self.element = basix.create_element(basix.ElementFamily.P, basix.cell.string_to_type(name), degree,
+                                            basix.LagrangeVariant.gll_warped)
+        tdim = msh.topology.dim
+        self.num_cells = msh.topology.index_map(tdim).size_local + msh.topology.index_map(tdim).num_ghosts
+        geom = msh.geometry.dofmap.array.reshape(self.num_cells, -1)
+        x = msh.geometry.x[:, :2]
+        self.origin = x[geom[:, 0]]
+        self.jacobian = np.stack([x[geom[:, 1]] - self.origin, x[geom[:, 2]] - self.origin], axis=2)
+        self.inverse = np.linalg.inv(self.jacobian)
+        # corners counter-clockwise (dolfinx orders a quadrilateral's as 0, 1, 3, 2)
+        corners = x[geom[:, [0, 1, 3, 2]]] if name == "quadrilateral" else x[geom]
+        area2 = np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
+        self.corners = np.where((area2 < 0)[:, None, None], corners[:, ::-1], corners)
+        self.cell_dofs = self.V.dofmap.list.array.reshape(self.num_cells, -1)  # block (node) indices
+        coords = self.V.tabulate_dof_coordinates()[:, :2]
+        self.node_side = np.where(scene.interface.phi(coords) >= 0, 1, -1)
+        self._classify()
+
+    def _classify(self) -> None:
+        """Cut cells and their regions; enriched nodes; the band.
+
+        A node is enriched when part of its support lies on the other side
+        of Γ (see MIN_CUT_FRACTION): the nodes of cut cells, and also nodes
+        on Γ (H = +1) whose support reaches − cells when Γ runs along edges.
+        """
+        itf = self.scene.interface
+        centre = self.corners.mean(axis=1)
+        radius = np.max(np.linalg.norm(self.corners - centre[:, None], axis=2), axis=1)
+        self.cell_side = np.where(itf.phi(centre) >= 0, 1, -1)
+        self.regions = {}
+        near = np.flatnonzero(np.abs(itf.phi(centre)) <= radius)
+        across = np.zeros(len(self.node_side))
+        total = np.zeros(len(self.node_side))
+        for c in near:
+            parts = [(s, p, w) for s, p, w in cut_polygon(itf, self.corners[c], self.gauss) if np.sum(w) > 0]
+            if len({s for s, _, _ in parts}) > 1:
+                self.regions[c] = parts
+            elif parts:
+                self.cell_side[c] = parts[0][0]
+            dofs = self.cell_dofs[c]
+            for side, pts, w in parts:
+                mass = w @ np.abs(self.tabulate(c, pts)[0])
+                total[dofs] += mass
+                across[dofs] += mass * (self.node_side[dofs] != side)
+        self.enriched = across > MIN_CUT_FRACTION * np.where(total > 0, total, 1.0)
+        if not self.enriched.any():
+            raise DiscretisationError("xfem: Γ crosses no cell of the mesh")
+        self.band = np.flatnonzero(np.any(self.enriched[self.cell_dofs], axis=1))
+
+    @property
+    def num_enriched(self) -> int:
+        return int(self.enriched.sum())
+
+    def tabulate(self, cell: int, points: np.ndarray):
+        """Values (P, n) and physical gradients (P, n, 2) of the cell's
+        basis functions at physical points (affine cells)."""
+        X = (points - self.origin[cell]) @ self.inverse[cell].T
+        tab = self.element.tabulate(1, X)
+        return tab[0, :, :, 0], np.stack([tab[1, :, :, 0], tab[2, :, :, 0]], axis=-1) @ self.inverse[cell]
+
+    def cell_rules(self, cell: int):
+        """[(side, points, weights)] of a band cell: its regions if cut, else
+        the whole cell on its side."""
+        if cell in self.regions:
+            return self.regions[cell]
+        return [(self.cell_side[cell], *polygon_rule(self.corners[cell], self.gauss))]
+
+    def functions(self, cell: int, points: np.ndarray, side: int):
+        """Values (P, 4n) and gradients (P, 4n, 2) for the block layout: per
+        node u_x, u_y, a_x, a_y, with the shifted Heaviside (H − H_J) on a."""
+        N, dN = self.tabulate(cell, points)
+        dofs = self.cell_dofs[cell]
+        coeff = np.where(self.enriched[dofs], side - self.node_side[dofs], 0)
+        return N, dN, coeff
+
+
+def _strain_matrix(dN: np.ndarray, coeff: np.ndarray) -> np.ndarray:
+    """(P, 3, 4n): ε_xx, ε_yy, γ_xy of the block layout."""
+    P, n, _ = dN.shape
+    B = np.zeros((P, 3, 4 * n))
+    for comp, c in ((0, 1.0), (2, coeff)):
+        gx, gy = dN[..., 0] * c, dN[..., 1] * c
+        B[:, 0, comp::4] = gx
+        B[:, 1, comp + 1::4] = gy
+        B[:, 2, comp::4] = gy
+        B[:, 2, comp + 1::4] = gx
+    return B
+
+
+def band_kernels(space: EnrichedFunctionSpace, D: np.ndarray, D_law: np.ndarray):
+    """Element matrices (4n × 4n) of the band cells: bulk on each region with
+    its body's D, plus the springs on Γ ∩ cell: [[u]] = 2 Σ N_J a_J."""
+    scene = space.scene
+    for c in space.band:
+        dofs = space.cell_dofs[c]
+        n = len(dofs)
+        K = np.zeros((4 * n, 4 * n))
+        for side, pts, w in space.cell_rules(c):
+            _, dN, coeff = space.functions(c, pts, side)
+            B = _strain_matrix(dN, coeff)
+            K += np.einsum("p,pia,ij,pjb->ab", w, B, D[(side + 1) // 2], B)
+        pts, w, normals = interface_rule_in(scene.interface, space.corners[c], space.gauss)
+        if len(w):
+            N, _ = space.tabulate(c, pts)
+            N = N * space.enriched[dofs]
+            frame = np.stack([normals, tangent_of(normals)], axis=1)  # (P, 2, 2): rows n, t
+            G = np.zeros((len(w), 2, 4 * n))
+            G[:, :, 2::4] = 2 * N[:, None, :] * frame[:, :, 0:1]
+            G[:, :, 3::4] = 2 * N[:, None, :] * frame[:, :, 1:2]
+            K += np.einsum("p,pia,ij,pjb->ab", w, G, D_law, G)
+        yield dofs, K
+
+
+def _body_force(scene: Scene, load, pts: np.ndarray) -> np.ndarray:
+    if isinstance(load, BodyForce):
+        return np.tile(load.value, (len(pts), 1))
+    c, R = np.asarray(scene.interface.centre), scene.interface.radius
+    r = pts - c
+    return (load.torque / (np.pi * R ** 4 / 2)) * np.column_stack([-r[:, 1], r[:, 0]])
+
+
+def _edge_name(scene: Scene, a: np.ndarray, b: np.ndarray) -> str | None:
+    tol_L = tol.NODE_MATCH * scene.length_scale
+    common = set(scene.domain.boundary_of(a, tol_L)) & set(scene.domain.boundary_of(b, tol_L))
+    return common.pop() if common else None
+
+
+def band_loads(space: EnrichedFunctionSpace):
+    """Load vectors (4n) of the band cells: body forces on each region, and
+    tractions or pressures on the cell's boundary edges, split where Γ
+    crosses them (the enriched functions jump there)."""
+    scene = space.scene
+    g, gw = gauss01(space.gauss)
+    body_loads = [ld for ld in scene.loads if isinstance(ld, (BodyForce, Torque))]
+    edge_loads = [ld for ld in scene.loads if isinstance(ld, (Traction, Pressure))]
+    for c in space.band:
+        n = len(space.cell_dofs[c])
+        f = np.zeros(4 * n)
+        for load in body_loads:
+            for side, pts, w in space.cell_rules(c):
+                if BODIES[(side + 1) // 2] != load.body:
+                    continue
+                N, _, coeff = space.functions(c, pts, side)
+                f += _vector_load(N, coeff, w[:, None] * _body_force(scene, load, pts))
+        corners = space.corners[c]
+        for i in range(len(corners)):
+            a, b = corners[i], corners[(i + 1) % len(corners)]
+            name = _edge_name(scene, a, b)
+            for load in (ld for ld in edge_loads if ld.boundary == name):
+                knots = [0.0] + edge_crossings(scene.interface, a, b) + [1.0]
+                for t0, t1 in zip(knots[:-1], knots[1:]):
+                    pts = a + (t0 + g[:, None] * (t1 - t0)) * (b - a)
+                    w = gw * (t1 - t0) * np.linalg.norm(b - a)
+                    side = 1 if scene.interface.phi([(pts[0] + pts[-1]) / 2])[0] >= 0 else -1
+                    t = (np.tile(load.value, (len(w), 1)) if isinstance(load, Traction)
+                         else -load.value * np.tile(scene.domain.outward_normal(name), (len(w), 1)))
+                    N, _, coeff = space.functions(c, pts, side)
+                    f += _vector_load(N, coeff, w[:, None] * t)
+        yield space.cell_dofs[c], f
+
+
+def _vector_load(N: np.ndarray, coeff: np.ndarray, wt: np.ndarray) -> np.ndarray:
+    """Σ_p [N_j t, (coeff_j N_j) t] in the block layout, for weighted loads wt (P, 2)."""
+    n = N.shape[1]
+    f = np.zeros(4 * n)
+    f[0::4], f[1::4] = N.T @ wt[:, 0], N.T @ wt[:, 1]
+    f[2::4], f[3::4] = (N * coeff).T @ wt[:, 0], (N * coeff).T @ wt[:, 1]
+    return f
+
+
+def _sigma(w, E, nu, plane):
+    from contactcore.elasticity import lame
+
+    lam, mu = lame(E, nu, plane)
+    eps = ufl.sym(ufl.grad(w))
+    return 2 * mu * eps + lam * ufl.tr(eps) * ufl.Identity(2)
+
+
+def _tags(space: EnrichedFunctionSpace):
+    """Cell tags (uncut −, uncut +, band) and boundary-facet tags by name for
+    facets whose cell is outside the band (the band's are ours)."""
+    msh, scene = space.msh, space.scene
+    values = np.where(space.cell_side > 0, _TAG_UNCUT["plus"], _TAG_UNCUT["minus"]).astype(np.int32)
+    values[space.band] = _TAG_BAND
+    cells = np.arange(space.num_cells, dtype=np.int32)
+    cell_tags = mesh.meshtags(msh, 2, cells, values)
+    msh.topology.create_connectivity(1, 2)
+    f2c = msh.topology.connectivity(1, 2)
+    in_band = np.zeros(space.num_cells, bool)
+    in_band[space.band] = True
+    import meshes
+
+    facets, tags = [], []
+    tol_L = tol.NODE_MATCH * scene.length_scale
+    for name in scene.domain.boundary_names:
+        found = mesh.locate_entities_boundary(
+            msh, 1, lambda x, name=name: np.array([name in scene.domain.boundary_of(p, tol_L) for p in x[:2].T]))
+        keep = [f for f in found if not in_band[f2c.links(f)[0]]]
+        facets += keep
+        tags += [meshes.BOUNDARY[name]] * len(keep)
+    order = np.argsort(facets)
+    facet_tags = mesh.meshtags(msh, 1, np.asarray(facets, np.int32)[order], np.asarray(tags, np.int32)[order])
+    return cell_tags, facet_tags
+
+
+def _forms(space: EnrichedFunctionSpace, cell_tags, facet_tags):
+    """Bulk stiffness and loads of the cells outside the band (UFL), and the
+    pattern form that gives the matrix room for every cell's 4n × 4n block."""
+    import meshes
+
+    scene, msh, V = space.scene, space.msh, space.V
+    u, v = ufl.TrialFunction(V), ufl.TestFunction(V)
+    us, vs = ufl.as_vector([u[0], u[1]]), ufl.as_vector([v[0], v[1]])
+    dx = ufl.Measure("dx", domain=msh, subdomain_data=cell_tags)
+    ds = ufl.Measure("ds", domain=msh, subdomain_data=facet_tags)
+    a = sum(ufl.inner(_sigma(us, scene.materials[b].E, scene.materials[b].nu, scene.plane),
+                      ufl.sym(ufl.grad(vs))) * dx(_TAG_UNCUT[b]) for b in BODIES)
+    L = ufl.inner(ufl.as_vector([0.0, 0.0]), vs) * dx
+    x = ufl.SpatialCoordinate(msh)
+    for load in scene.loads:
+        if isinstance(load, Traction):
+            L += ufl.dot(ufl.as_vector(list(load.value)), vs) * ds(meshes.BOUNDARY[load.boundary])
+        elif isinstance(load, Pressure):
+            L += -load.value * ufl.dot(ufl.FacetNormal(msh), vs) * ds(meshes.BOUNDARY[load.boundary])
+        elif isinstance(load, BodyForce):
+            L += ufl.dot(ufl.as_vector(list(load.value)), vs) * dx(_TAG_UNCUT[load.body])
+        else:
+            c, R = scene.interface.centre, scene.interface.radius
+            b = (load.torque / (np.pi * R ** 4 / 2)) * ufl.as_vector([-(x[1] - c[1]), x[0] - c[0]])
+            L += ufl.dot(b, vs) * dx(_TAG_UNCUT[load.body])
+    pattern = ufl.inner(u, v) * dx
+    return fem.form(a), fem.form(L), fem.form(pattern)
+
+
+class XFEMFields:
+    """Displacement and stress of either body at arbitrary points."""
+
+    def __init__(self, space: EnrichedFunctionSpace, blocks: np.ndarray):
+        self.space, self.blocks = space, blocks
+        scene = space.scene
+        self.D = [voigt_matrix(scene.materials[b].E, scene.materials[b].nu, scene.plane) for b in BODIES]
+        self.tree = geometry.BoundingBoxTree(space.msh, 2)
+
+    def _cells(self, points):
+        p3 = np.column_stack([points, np.zeros(len(points))])
+        hits = geometry.compute_colliding_cells(self.space.msh, geometry.compute_collisions(self.tree, p3), p3)
+        cells = np.array([hits.links(i)[0] if len(hits.links(i)) else -1 for i in range(len(points))])
+        if np.any(cells < 0):
+            i = int(np.flatnonzero(cells < 0)[0])
+            raise DiscretisationError(f"xfem: point {points[i].tolist()} lies outside the mesh")
+        return cells
+
+    def _eval(self, points, bodies, gradient: bool) -> np.ndarray:
+        points = np.asarray(points, float)[:, :2]
+        bodies = np.asarray(bodies)
+        cells = self._cells(points)
+        out = np.zeros((len(points), 3 if gradient else 2))
+        for c in np.unique(cells):
+            for body in np.unique(bodies[cells == c]):
+                sel = np.flatnonzero((cells == c) & (bodies == body))
+                N, dN, coeff = self.space.functions(c, points[sel], 2 * body - 1)
+                U = self.blocks[self.space.cell_dofs[c]]
+                vec = U[:, :2] + coeff[:, None] * U[:, 2:]
+                if gradient:
+                    eps = np.einsum("pjd,jk->pkd", dN, vec)  # ∂u_k/∂x_d
+                    voigt = np.column_stack([eps[:, 0, 0], eps[:, 1, 1], eps[:, 0, 1] + eps[:, 1, 0]])
+                    out[sel] = voigt @ self.D[body].T
+                else:
+                    out[sel] = N @ vec
+        return out
+
+    def displacement(self, points, bodies) -> np.ndarray:
+        return self._eval(points, bodies, False)
+
+    def stress(self, points, bodies) -> np.ndarray:
+        return self._eval(points, bodies, True)
+
+
+def _support_rows(space: EnrichedFunctionSpace) -> tuple[np.ndarray, np.ndarray]:
+    """Rows (unrolled, local) and values of the supports and pins."""
+    scene, msh, V = space.scene, space.msh, space.V
+    rows, vals = [], []
+    tol_L = tol.NODE_MATCH * scene.length_scale
+    for sup in scene.supports:
+        facets = mesh.locate_entities_boundary(
+            msh, 1, lambda x, n=sup.boundary: np.array([n in scene.domain.boundary_of(p, tol_L) for p in x[:2].T]))
+        blocks = fem.locate_dofs_topological(V, 1, facets)
+        for comp in sup.fix:
+            j = "xy".index(comp)
+            rows.append(4 * blocks + j)
+            vals.append(np.full(len(blocks), sup.value[j]))
+    coords = V.tabulate_dof_coordinates()[:, :2]
+    for i, pin in enumerate(scene.pins):
+        d = np.linalg.norm(coords - np.asarray(pin.point), axis=1)
+        block = int(np.argmin(d))
+        if d[block] > tol_L:
+            raise DiscretisationError(f"pins[{i}]: xfem needs pins at mesh nodes; the nearest is {d[block]:.3g} away")
+        for comp in pin.fix:
+            rows.append(np.array([4 * block + "xy".index(comp)]))
+            vals.append(np.zeros(1))
+    if not rows:
+        return np.zeros(0, np.int32), np.zeros(0)
+    rows, idx = np.unique(np.concatenate(rows), return_index=True)
+    return rows.astype(np.int32), np.concatenate(vals)[idx]
+
+
+def solve(scene: Scene, h: float | None = None, *, degree: int = 1, paper: bool = False, cell: str = "quad",
+          gauss: int | None = None, petsc_options: dict | None = None, estimate_condition: bool | None = None,
+          comm=MPI.COMM_WORLD) -> Result:
+    """Solve ``scene`` with XFEM of ``degree`` 1 or 2 on a structured mesh
+    of ``cell`` = "quad" or "triangle" (the paper: quads)."""
+    if degree not in (1, 2):
+        raise DiscretisationError(f"xfem: degree must be 1 or 2 (got {degree})")
+    start, timings = time.perf_counter(), Timings()
+    h, cells = resolution(scene, h, paper)
+    with timings.measure("mesh"):
+        msh = background_mesh(scene, h, cell, comm) if cells is None else mesh.create_rectangle(
+            comm, [np.asarray(scene.domain.corner), np.add(scene.domain.corner, scene.domain.size)], list(cells),
+            mesh.CellType.quadrilateral if cell == "quad" else mesh.CellType.triangle)
+        space = EnrichedFunctionSpace(msh, degree, scene, GAUSS_POINTS[degree] if gauss is None else gauss)
+    with timings.measure("assembly"):
+        cell_tags, facet_tags = _tags(space)
+        a, L, pattern = _forms(space, cell_tags, facet_tags)
+        A = fem_petsc.create_matrix(pattern)
+        fem_petsc.assemble_matrix(A, a)
+        D = np.array([voigt_matrix(scene.materials[b].E, scene.materials[b].nu, scene.plane) for b in BODIES])
+        for dofs, K in band_kernels(space, D, scene.law.constant_tangent()):
+            A.setValuesBlockedLocal(dofs.astype(PETSc.IntType), dofs.astype(PETSc.IntType), np.ascontiguousarray(K),
+                                    addv=PETSc.InsertMode.ADD_VALUES)
+        A.assemble()
+        b = fem_petsc.create_vector(L)
+        fem_petsc.assemble_vector(b, L)
+        for dofs, f in band_loads(space):
+            b.setValuesBlockedLocal(dofs.astype(PETSc.IntType), f, addv=PETSc.InsertMode.ADD_VALUES)
+        b.assemble()
+        rows, values = _support_rows(space)
+        x = b.duplicate()
+        x.set(0.0)
+        x.setValues(rows, values)
+        x.assemble()
+        diag = max(m.E for m in scene.materials.values())
+        A.zeroRowsColumns(rows, diag, x, b)
+    nblocks = space.V.dofmap.index_map.size_local
+    active = np.concatenate([4 * np.arange(nblocks)[:, None] + np.arange(2)[None],
+                             4 * np.flatnonzero(space.enriched[:nblocks])[:, None] + np.arange(2, 4)[None]]).ravel()
+    active = np.sort(active) + space.V.dofmap.index_map.local_range[0] * 4
+    if estimate_condition is None:
+        estimate_condition = len(active) <= tol.CONDITION_ESTIMATE_MAX_DOFS
+    with timings.measure("solve"):
+        report = linear_solver.solve(A, b, x, rows=active, petsc_options=petsc_options,
+                                     estimate_condition=estimate_condition, what=f"scene {scene.name} (xfem)")
+    report.increments = scene.increments
+    blocks = x.getArray(readonly=True).reshape(-1, 4).copy()
+    A.destroy()
+    b.destroy()
+    timings.total = time.perf_counter() - start
+    return Result(method=METHOD, scene=scene, degree=degree, dofs=len(active), timings=timings, solver=report,
+                  fields=XFEMFields(space, blocks),
+                  discretisation={"h": h, "cell": cell, "degree": degree, "cells": int(space.num_cells),
+                                  "cut_cells": len(space.regions), "enriched_nodes": space.num_enriched,
+                                  "gauss": space.gauss})
