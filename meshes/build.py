@@ -22,7 +22,7 @@ from contactcore import DiscretisationError, Scene
 from contactcore import tolerances as tol
 from contactcore.geometry import CircleInterface, Rectangle
 
-from .tags import BODY, BOUNDARY, INTERFACE, NAMES
+from .tags import BODY, BOUNDARY, INTERFACE, NAMES, OUTER
 
 
 @dataclass(frozen=True)
@@ -134,11 +134,14 @@ def _size_field(scene: Scene, h: float, grading: Grading | None, interface: list
         gmsh.option.setNumber(opt, 0)
 
 
-def build_model(scene: Scene, h: float, *, order: int = 1, grading: Grading | None = None) -> None:
+def build_model(scene: Scene, h: float, *, order: int = 1, grading: Grading | None = None,
+                fitted: bool = True) -> None:
     """Mesh ``scene`` in the current gmsh model (inside :func:`gmsh_session`).
 
-    Triangles of size ``h`` (optionally graded), Γ embedded, pinned points as
-    vertices, geometry of ``order`` 1 (straight) or 2 (curved).
+    Triangles of size ``h`` (optionally graded), pinned points as vertices,
+    geometry of ``order`` 1 (straight) or 2 (curved).  ``fitted``: Γ embedded
+    and the bodies tagged apart; otherwise the outer domain alone, tagged
+    :data:`~meshes.tags.OUTER`, for methods whose mesh ignores Γ.
     """
     if not h > 0:
         raise DiscretisationError(f"mesh size h must be > 0 (got {h})")
@@ -147,6 +150,9 @@ def build_model(scene: Scene, h: float, *, order: int = 1, grading: Grading | No
     gmsh.model.add(f"scene_{scene.name}")
     occ = gmsh.model.occ
     outer = _add_outer(scene)
+    if not fitted:
+        _build_outer_only(scene, outer, h, order)
+        return
     tool = _add_interface(scene)
     pins = [(0, occ.addPoint(p.point[0], p.point[1], 0.0)) for p in scene.pins]
     _, pieces = occ.fragment([(2, outer)], [tool] + pins)
@@ -163,6 +169,21 @@ def build_model(scene: Scene, h: float, *, order: int = 1, grading: Grading | No
     for dim, tag in [(2, t) for t in BODY.values()] + [(1, INTERFACE)] + [(1, BOUNDARY[n]) for n in named]:
         gmsh.model.setPhysicalName(dim, tag, NAMES[tag])
     _size_field(scene, h, grading, interface)
+    gmsh.model.mesh.generate(2)
+    if order == 2:
+        gmsh.model.mesh.setOrder(2)
+
+
+def _build_outer_only(scene: Scene, outer: int, h: float, order: int) -> None:
+    occ = gmsh.model.occ
+    pins = [(0, occ.addPoint(p.point[0], p.point[1], 0.0)) for p in scene.pins]
+    if pins:
+        occ.fragment([(2, outer)], pins)
+    occ.synchronize()
+    gmsh.model.addPhysicalGroup(2, [t for _, t in gmsh.model.getEntities(2)], OUTER)
+    gmsh.model.setPhysicalName(2, OUTER, NAMES[OUTER])
+    gmsh.option.setNumber("Mesh.MeshSizeMax", h)
+    gmsh.option.setNumber("Mesh.MeshSizeMin", h)
     gmsh.model.mesh.generate(2)
     if order == 2:
         gmsh.model.mesh.setOrder(2)

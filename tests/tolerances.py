@@ -71,3 +71,17 @@ EFGM_DILATION_SIGMA = 1e-1
 AGREE_INTERFACE = 1e-3
 AGREE_INTERIOR_STRESS = 3e-2
 AGREE_EDGE_STRESS = 1e-1
+
+#: XFEM against P2 FE on the paper's scenes (relative RMS, samples within 2h
+#: of corners and Γ's ends left out), by degree and class of quantity.
+#: Measured at the scenes' default h on quads — P1: interface ≤ 8.8e-3 (C4,
+#: the soft interface), interior ≤ 1.5e-1 (B1, B4: σxy jumps across Γ
+#: inside a cell), edge ≤ 1.4e-1 (B2); P2: interface ≤ 1.1e-4, interior ≤
+#: 1.7e-2, edge ≤ 1.4e-2.  Bounds about 2x those: linear XFEM is coarse on
+#: these meshes (issue 7 measures it), but a sign or factor error is O(1).
+XFEM_AGREE = {1: {"interface": 2e-2, "interior": 3e-1, "edge": 3e-1},
+              2: {"interface": 3e-4, "interior": 3e-2, "edge": 3e-2}}
+
+#: XFEM's patch test is exact: the enriched space holds the solution and
+#: every integral is exact for it (affine cells, polynomial integrands).
+XFEM_PATCH = 1e-10

@@ -1,6 +1,6 @@
 """Command line of the verification drivers.
 
-    python -m verification run SCENE_OR_TOML --method fe|efgm|all [--degree 1|2]
+    python -m verification run SCENE_OR_TOML --method fe|xfem|efgm|all [--degree 1|2] [--cell quad|triangle|gmsh]
         [--h H] [--paper] [--xdmf] [--petsc-option KEY=VALUE ...] [--dmax D] [--nodes FILE] --out DIR
     python -m verification timing SCENE --method fe --degree 1 2 --h H1 H2 ... --out DIR
     python -m verification efficiency SCENE --method fe efgm --degree 1 2 --h H1 H2 ... --ref-h H --out DIR
@@ -38,6 +38,7 @@ def _parser() -> argparse.ArgumentParser:
     run.add_argument("--xdmf", action="store_true", help="also write XDMF per body for ParaView")
     run.add_argument("--petsc-option", type=_petsc_option, action="append", default=[], metavar="KEY=VALUE",
                      help="override a PETSc option of the fe solve (e.g. pc_factor_mat_solver_type=superlu)")
+    run.add_argument("--cell", choices=("quad", "triangle", "gmsh"), help="XFEM background cells (default quad)")
     run.add_argument("--dmax", type=float, help="EFGM support dilation (default: by basis degree)")
     run.add_argument("--nodes", type=Path, help="EFGM node set: a text file of x y rows (default: a grid)")
     run.add_argument("--out", type=Path, required=True, help="result folder")
@@ -89,7 +90,7 @@ def main(argv=None) -> int:
         if args.command == "run":
             run(args.scene, args.method, args.out, h=args.h, degree=args.degree, paper=args.paper,
                 xdmf=args.xdmf, petsc_options=dict(args.petsc_option), dmax=args.dmax,
-                nodes_file=args.nodes, argv=argv)
+                nodes_file=args.nodes, cell=args.cell, argv=argv)
         elif args.command == "timing":
             timing(args.scene, args.method, args.degree, args.h, args.out, argv=argv)
         else:

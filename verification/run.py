@@ -64,7 +64,7 @@ def _summary_table(summaries: list[dict]) -> str:
 
 
 def run(scene_name: str, method_names: list[str], out: Path, *, h=None, degree=1, paper=False,
-        xdmf=False, petsc_options=None, dmax=None, nodes_file=None, argv=()) -> list[dict]:
+        xdmf=False, petsc_options=None, dmax=None, nodes_file=None, cell=None, argv=()) -> list[dict]:
     """Solve, sample the scene's profiles, write everything; return the summaries."""
     scene = load_scene(scene_name)
     nodes = read_nodes(nodes_file) if nodes_file else None
@@ -73,7 +73,7 @@ def run(scene_name: str, method_names: list[str], out: Path, *, h=None, degree=1
     profiles, summaries = {}, []
     for name in methods.expand(method_names):
         log.info("scene %s: solving with %s (degree %d)", scene.name, name, degree)
-        options = methods.options_for(name, petsc_options=petsc_options or None, dmax=dmax, nodes=nodes)
+        options = methods.options_for(name, petsc_options=petsc_options or None, dmax=dmax, nodes=nodes, cell=cell)
         result = methods.solver(name)(scene, h, degree=degree, paper=paper, **options)
         summary = result.summary()
         summaries.append(summary)
@@ -96,6 +96,6 @@ def run(scene_name: str, method_names: list[str], out: Path, *, h=None, degree=1
     files.write_json(out / "run.json", {**files.provenance(list(argv)), "scene": scene_name,
                                         "methods": methods.expand(method_names), "h": h, "degree": degree,
                                         "paper": paper, "petsc_options": petsc_options or {}, "dmax": dmax,
-                                        "nodes": str(nodes_file) if nodes_file else None})
+                                        "nodes": str(nodes_file) if nodes_file else None, "cell": cell})
     log.info("wrote %s", out)
     return summaries

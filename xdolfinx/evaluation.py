@@ -19,15 +19,19 @@ _NEAREST_CANDIDATES = 8
 
 
 class BodyCellLocator:
-    """Finds, for each point, a cell of a given body to evaluate in."""
+    """Finds, for each point, a cell of a given body to evaluate in.
+
+    ``body_cells[b]`` lists the cells that hold body b; the lists may
+    overlap (an XFEM cell cut by Γ holds both bodies)."""
 
     def __init__(self, msh, body_cells: list[np.ndarray]):
         self.msh = msh
         tdim = msh.topology.dim
         ncells = msh.topology.index_map(tdim).size_local
-        self.body_of_cell = np.full(ncells, -1, dtype=np.int8)
+        body_cells = [np.asarray(c, dtype=np.int32) for c in body_cells]
+        self.holds = np.zeros((len(body_cells), ncells), bool)
         for b, cells in enumerate(body_cells):
-            self.body_of_cell[cells[cells < ncells]] = b
+            self.holds[b, cells[cells < ncells]] = True
         self.tree = geometry.BoundingBoxTree(msh, tdim)
         self.body_cells = [c[c < ncells] for c in body_cells]
         self.midpoints = [compute_midpoints(msh, tdim, c)[:, :2] for c in self.body_cells]
@@ -41,8 +45,8 @@ class BodyCellLocator:
         out = np.full(len(points), -1, dtype=np.int32)
         owner = np.repeat(np.arange(len(points)), np.diff(colliding.offsets))
         hit = colliding.array
-        ok = (hit < len(self.body_of_cell))
-        ok[ok] = self.body_of_cell[hit[ok]] == bodies[owner[ok]]
+        ok = hit < self.holds.shape[1]
+        ok[ok] = self.holds[bodies[owner[ok]], hit[ok]]
         first_point, first = np.unique(owner[ok], return_index=True)
         out[first_point] = hit[ok][first]
         for b in np.unique(bodies[out < 0]):

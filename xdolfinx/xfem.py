@@ -32,7 +32,7 @@ import time
 import basix
 import numpy as np
 import ufl
-from dolfinx import fem, geometry, mesh
+from dolfinx import fem, mesh
 from dolfinx.fem import petsc as fem_petsc
 from mpi4py import MPI
 from petsc4py import PETSc
@@ -45,6 +45,7 @@ from contactcore.geometry import Rectangle, tangent_of
 from contactcore.scene import BodyForce, Pressure, Torque, Traction
 
 from . import linear_solver
+from .evaluation import BodyCellLocator
 
 METHOD = "xfem"
 
@@ -65,14 +66,23 @@ _TAG_UNCUT = {"minus": 1, "plus": 2}
 _TAG_BAND = 3
 
 
-def background_mesh(scene: Scene, h: float, cell: str, comm=MPI.COMM_WORLD):
-    """Structured mesh of the rectangle, cells of size ≈ h."""
-    if not isinstance(scene.domain, Rectangle):
-        raise DiscretisationError("xfem: the background mesh is built for rectangular domains")
-    if cell not in ("quad", "triangle"):
-        raise DiscretisationError(f"xfem: cell must be 'quad' or 'triangle' (got {cell!r})")
+def background_mesh(scene: Scene, h: float, cell: str, counts=None, comm=MPI.COMM_WORLD):
+    """A mesh of the outer domain that ignores Γ, cells of size ≈ h (or
+    ``counts`` cells per side): structured quadrilaterals or triangles on a
+    rectangle, or ``cell="gmsh"`` triangles of the outer domain (the only
+    choice for a disc), pins embedded as nodes.  Affine cells only."""
+    if cell not in ("quad", "triangle", "gmsh"):
+        raise DiscretisationError(f"xfem: cell must be 'quad', 'triangle' or 'gmsh' (got {cell!r})")
+    if cell == "gmsh" or not isinstance(scene.domain, Rectangle):
+        import meshes
+        from dolfinx.io import gmshio
+
+        with meshes.gmsh_session() as model:
+            if comm.rank == 0:
+                meshes.build_model(scene, h, fitted=False)
+            return gmshio.model_to_mesh(model, comm, 0, gdim=2)[0]
     (x0, y0), (a, b) = scene.domain.corner, scene.domain.size
-    n = [max(1, round(a / h)), max(1, round(b / h))]
+    n = list(counts) if counts is not None else [max(1, round(a / h)), max(1, round(b / h))]
     kind = mesh.CellType.quadrilateral if cell == "quad" else mesh.CellType.triangle
     return mesh.create_rectangle(comm, [np.array([x0, y0]), np.array([x0 + a, y0 + b])], n, kind)
 
@@ -340,21 +350,17 @@ class XFEMFields:
         self.space, self.blocks = space, blocks
         scene = space.scene
         self.D = [voigt_matrix(scene.materials[b].E, scene.materials[b].nu, scene.plane) for b in BODIES]
-        self.tree = geometry.BoundingBoxTree(space.msh, 2)
-
-    def _cells(self, points):
-        p3 = np.column_stack([points, np.zeros(len(points))])
-        hits = geometry.compute_colliding_cells(self.space.msh, geometry.compute_collisions(self.tree, p3), p3)
-        cells = np.array([hits.links(i)[0] if len(hits.links(i)) else -1 for i in range(len(points))])
-        if np.any(cells < 0):
-            i = int(np.flatnonzero(cells < 0)[0])
-            raise DiscretisationError(f"xfem: point {points[i].tolist()} lies outside the mesh")
-        return cells
+        cut = np.zeros(space.num_cells, bool)
+        cut[list(space.regions)] = True
+        # a cell holds a body if Γ cuts it or it lies on that body's side: on Γ
+        # along an edge, the other side's cell would extrapolate the wrong field
+        self.locator = BodyCellLocator(space.msh, [np.flatnonzero(cut | (space.cell_side == side))
+                                                   for side in (-1, 1)])
 
     def _eval(self, points, bodies, gradient: bool) -> np.ndarray:
         points = np.asarray(points, float)[:, :2]
         bodies = np.asarray(bodies)
-        cells = self._cells(points)
+        cells = self.locator.cells(points, bodies)
         out = np.zeros((len(points), 3 if gradient else 2))
         for c in np.unique(cells):
             for body in np.unique(bodies[cells == c]):
@@ -408,16 +414,15 @@ def _support_rows(space: EnrichedFunctionSpace) -> tuple[np.ndarray, np.ndarray]
 def solve(scene: Scene, h: float | None = None, *, degree: int = 1, paper: bool = False, cell: str = "quad",
           gauss: int | None = None, petsc_options: dict | None = None, estimate_condition: bool | None = None,
           comm=MPI.COMM_WORLD) -> Result:
-    """Solve ``scene`` with XFEM of ``degree`` 1 or 2 on a structured mesh
-    of ``cell`` = "quad" or "triangle" (the paper: quads)."""
+    """Solve ``scene`` with XFEM of ``degree`` 1 or 2 on a mesh that ignores
+    Γ: structured ``cell`` = "quad" (the paper's) or "triangle", or "gmsh"
+    triangles (used for a disc)."""
     if degree not in (1, 2):
         raise DiscretisationError(f"xfem: degree must be 1 or 2 (got {degree})")
     start, timings = time.perf_counter(), Timings()
     h, cells = resolution(scene, h, paper)
     with timings.measure("mesh"):
-        msh = background_mesh(scene, h, cell, comm) if cells is None else mesh.create_rectangle(
-            comm, [np.asarray(scene.domain.corner), np.add(scene.domain.corner, scene.domain.size)], list(cells),
-            mesh.CellType.quadrilateral if cell == "quad" else mesh.CellType.triangle)
+        msh = background_mesh(scene, h, cell, cells, comm)
         space = EnrichedFunctionSpace(msh, degree, scene, GAUSS_POINTS[degree] if gauss is None else gauss)
     with timings.measure("assembly"):
         cell_tags, facet_tags = _tags(space)
