@@ -17,7 +17,7 @@ def run_a(tmp_path_factory):
     return out
 
 
-@pytest.mark.parametrize("method", ["fe", "efgm"])
+@pytest.mark.parametrize("method", ["fe", "xfem", "efgm"])
 def test_profiles_follow_scenes_md(run_a, method):
     scene = load_scene("A")
     written = sorted(p.stem for p in (run_a / method / "profiles").iterdir())
@@ -42,7 +42,7 @@ def test_summary_and_provenance(run_a):
     assert {"python", "numpy", "dolfinx", "petsc4py", "gmsh"} <= set(run["versions"])
     assert (run_a / "scene.toml").read_text().startswith("# Scene A")
     table = (run_a / "summary.md").read_text()
-    assert "| fe | 1 |" in table and "| efgm | 1 |" in table
+    assert "| fe | 1 |" in table and "| xfem | 1 |" in table and "| efgm | 1 |" in table
     efgm = json.loads((run_a / "efgm" / "summary.json").read_text())
     assert efgm["discretisation"]["nodes"] == 121 and efgm["discretisation"]["enriched_nodes"] > 0
 
@@ -54,13 +54,15 @@ def test_plots_and_no_xdmf_unless_asked(run_a):
     assert not [p for p in run_a.rglob(".*")]  # no temporary file left behind
 
 
-def test_xdmf_per_body(tmp_path):
-    assert main(["run", "B", "--h", "0.2", "--degree", "2", "--xdmf", "--out", str(tmp_path)]) == 0
+@pytest.mark.parametrize("method,cell", [("fe", None), ("xfem", "quad"), ("xfem", "triangle")])
+def test_xdmf_per_body(tmp_path, method, cell):
+    args = ["run", "B", "--method", method, "--h", "0.2", "--degree", "2", "--xdmf", "--out", str(tmp_path)]
+    assert main(args + (["--cell", cell] if cell else [])) == 0
     for body in ("minus", "plus"):
-        root = ET.parse(tmp_path / "fe" / "xdmf" / f"{body}.xdmf").getroot()
+        root = ET.parse(tmp_path / method / "xdmf" / f"{body}.xdmf").getroot()
         names = {a.get("Name") for a in root.iter("Attribute")}
         assert names == {"u", "sigma_xx_yy_xy"}
-        assert (tmp_path / "fe" / "xdmf" / f"{body}.h5").stat().st_size > 0
+        assert (tmp_path / method / "xdmf" / f"{body}.h5").stat().st_size > 0
 
 
 def test_interrupted_write_leaves_nothing_under_the_final_name(tmp_path):

@@ -23,7 +23,7 @@ OPTIONS = {
 }
 
 #: Methods whose fields live on a dolfinx mesh, so XDMF output exists.
-WITH_XDMF = ("fe",)
+WITH_XDMF = ("fe", "xfem")
 
 
 def solver(name: str):

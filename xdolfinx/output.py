@@ -1,9 +1,11 @@
 """Per-body dolfinx meshes and functions for visual output (ParaView).
 
-Each body gets its own P1 mesh (the vertices of its cells), its displacement
-at those vertices and its stress at cell midpoints (DG0), evaluated through
-the body-aware point evaluation.  The caller writes them (e.g. XDMFFile).
-Serial only.
+Each body gets its own first-order mesh (the vertices of the cells that hold
+it), its displacement at those vertices and its stress at cell midpoints
+(DG0), evaluated through the body-aware point evaluation of any method with
+a :class:`~xdolfinx.evaluation.BodyCellLocator` (fe, xfem).  For XFEM a cell
+cut by Γ belongs to both bodies' meshes, each showing its own field there.
+The caller writes them (e.g. XDMFFile).  Serial only.
 """
 from __future__ import annotations
 
@@ -13,19 +15,21 @@ from dolfinx import fem
 from dolfinx.mesh import compute_midpoints, create_mesh
 from mpi4py import MPI
 
-from .evaluation import BodyFields
 
 
-def body_functions(fields: BodyFields, body: int):
-    """``(mesh, u, sigma)`` of body ``body`` (0 = −, 1 = +) on its own P1 mesh."""
+def body_functions(fields, body: int):
+    """``(mesh, u, sigma)`` of body ``body`` (0 = −, 1 = +) on its own mesh."""
     msh = fields.locator.msh
     cells = fields.locator.body_cells[body]
+    cell_name = msh.topology.cell_name()
+    nverts = {"triangle": 3, "quadrilateral": 4}[cell_name]
     dofmap = msh.geometry.dofmap
     per_cell = np.diff(dofmap.offsets)[0]
-    conn = dofmap.array.reshape(-1, per_cell)[cells, :3]  # vertices come first
+    conn = dofmap.array.reshape(-1, per_cell)[cells, :nverts]  # vertices come first
     nodes, inverse = np.unique(conn, return_inverse=True)
-    domain = ufl.Mesh(ufl.VectorElement("Lagrange", "triangle", 1))
-    sub = create_mesh(MPI.COMM_SELF, inverse.reshape(-1, 3).astype(np.int64), msh.geometry.x[nodes, :2], domain)
+    domain = ufl.Mesh(ufl.VectorElement("Lagrange", cell_name, 1))
+    sub = create_mesh(MPI.COMM_SELF, inverse.reshape(-1, nverts).astype(np.int64), msh.geometry.x[nodes, :2],
+                      domain)
     V = fem.VectorFunctionSpace(sub, ("Lagrange", 1))
     pts = V.tabulate_dof_coordinates()[:, :2]
     u = fem.Function(V, name="u")
