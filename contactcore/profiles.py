@@ -18,8 +18,7 @@ import numpy as np
 from . import tolerances as tol
 from .geometry import CircleInterface, tangent_of
 from .result import Fields
-from .scene import (DISPLACEMENT_QUANTITIES, INTERFACE_QUANTITIES, STRESS_QUANTITIES, InterfaceProfile,
-                    LineProfile, Profile, Scene)
+from .scene import DISPLACEMENT_QUANTITIES, INTERFACE_QUANTITIES, STRESS_QUANTITIES, LineProfile, Profile, Scene
 
 
 @dataclass(frozen=True)

@@ -28,7 +28,7 @@ from contactcore import BODIES, DiscretisationError, Result, Scene, Timings
 from contactcore import tolerances as tol
 from contactcore.elasticity import voigt_matrix
 from contactcore.geometry import CircleInterface, Disc, Rectangle, tangent_of
-from contactcore.scene import BodyForce, Pressure, Torque, Traction
+from contactcore.scene import BodyForce, Pressure, Traction
 
 from . import sparse_solver
 from .nodes import NodeSet, background_cells, check_nodes, grid_nodes, support_radii
@@ -136,7 +136,7 @@ def interface_rule(scene: Scene, h: float, n: int):
     """Gauss points on Γ inside the domain: points, weights, normals."""
     itf = scene.interface
     if isinstance(itf, CircleInterface):
-        c, R = np.asarray(itf.centre, float), itf.radius
+        R = itf.radius
         pts, w, _ = curve_rule(lambda t: itf.points_at_angles(2 * np.pi * t),
                                lambda t: 2 * np.pi * R * np.column_stack([-np.sin(2 * np.pi * t),
                                                                         np.cos(2 * np.pi * t)]),

@@ -10,12 +10,12 @@ from dolfinx.fem import petsc as fem_petsc
 from petsc4py import PETSc
 
 import tolerances as tol
-from contactcore import (CircleInterface, DiscretisationError, LineInterface, LinearLaw, load_scene,
+from contactcore import (CircleInterface, DiscretisationError, LineInterface, load_scene,
                          sample_profiles)
 from contactcore.elasticity import voigt_matrix
-from verification.agreement import quantity_class, relative_rms
+from verification.agreement import agreements
 from verification.closed_forms import interface_patch, pressurised_rod
-from verification.norms import l2_error
+from verification.norms import max_errors, observed_rate
 from xdolfinx import xfem
 
 PINS = {30.0: ((0.1, 0.1), (0.5, 0.1)), -65.0: ((0.1, 0.1), (0.1, 0.5)), 0.0: ((0.1, 0.1), (0.5, 0.1))}
@@ -74,12 +74,8 @@ def test_gamma_missing_the_mesh_is_named():
 
 
 def _patch_error(patch, **kw):
-    pts = np.random.default_rng(0).uniform(0.02, 0.98, (300, 2))
-    b = patch.scene.body_of(pts)
     r = xfem.solve(patch.scene, 0.1, **kw)
-    u, s = patch.displacement(pts, b), patch.stress(pts, b)
-    return (np.max(np.abs(r.fields.displacement(pts, b) - u)) / np.max(np.abs(u)),
-            np.max(np.abs(r.fields.stress(pts, b) - s)) / np.max(np.abs(s)), r)
+    return (*max_errors(patch.scene, r.fields, patch), r)
 
 
 @pytest.mark.parametrize("cell", ["quad", "triangle"])
@@ -121,12 +117,7 @@ def test_slivers_keep_the_answer_and_the_conditioning(cell, record_property):
 def test_curved_interface_converges(record_property):
     case = pressurised_rod()
     hs = np.array([0.2, 0.1, 0.05])
-    errs = []
-    for h in hs:
-        r = xfem.solve(case.scene, h, estimate_condition=False)
-        err, ref = l2_error(case.scene, r.fields, case, h=h / 2)
-        errs.append(err / ref)
-    rate = np.polyfit(np.log(hs), np.log(errs), 1)[0]
+    errs, rate = observed_rate(case.scene, case, lambda h: xfem.solve(case.scene, h, estimate_condition=False), hs)
     record_property("xfem_rod_rate", rate)
     assert rate >= 2.0 - tol.RATE_MARGIN, (rate, errs)
 
@@ -139,15 +130,9 @@ def test_agrees_with_the_reference(name, degree):
     scene = load_scene(name)
     ours = {p.id: p for p in sample_profiles(scene, xfem.solve(scene, degree=degree).fields)}
     ref = {p.id: p for p in sample_profiles(scene, conforming.solve(scene, degree=2).fields)}
-    profiles = {p.id: p for p in scene.profiles}
-    for pid, got in ours.items():
-        for q in got.names[3:]:
-            if name == "B" and q in ("tN", "gN"):  # exactly zero: measured against |t_T|, |g_T|
-                scale = ref["B5"].columns[{"tN": "tT", "gN": "gT"}[q]]
-                assert relative_rms(scene, got, ref[pid], q, 2 * scene.h, scale=scale) <= tol.FALSE_TN[degree]
-                continue
-            kind = quantity_class(scene, profiles[pid], q)
-            assert relative_rms(scene, got, ref[pid], q, 2 * scene.h) <= tol.XFEM_AGREE[degree][kind], (pid, q)
+    bounds = {**tol.XFEM_AGREE[degree], "zero": tol.FALSE_TN[degree]}
+    for pid, q, kind, value in agreements(scene, ours, ref, 2 * scene.h):
+        assert value <= bounds[kind], (pid, q, kind, value)
 
 
 def test_gauss_rule_is_basix_gauss_legendre():

@@ -56,3 +56,26 @@ def relative_rms(scene: Scene, got: ProfileData, ref: ProfileData, quantity: str
     diff = got.columns[quantity][keep] - ref.columns[quantity][keep]
     base = ref.columns[quantity][keep] if scale is None else np.asarray(scale)
     return float(np.sqrt(np.mean(diff ** 2)) / np.sqrt(np.mean(base ** 2)))
+
+
+#: Quantities whose exact value is zero, measured against the scale of a
+#: companion: (profile id, quantity) -> (profile id, quantity).
+COMPANIONS = {("B6", "tN"): ("B5", "tT"), ("B6", "gN"): ("B5", "gT")}
+
+
+def agreements(scene: Scene, got: dict, ref: dict, exclude: float) -> list[tuple[str, str, str, float]]:
+    """``(profile id, quantity, class, relative RMS)`` for every quantity of
+    every profile; the class is ``zero`` for a quantity measured against its
+    companion (see COMPANIONS), else :func:`quantity_class`."""
+    profiles = {p.id: p for p in scene.profiles}
+    rows = []
+    for pid, prof in got.items():
+        for q in prof.names[3:]:
+            companion = COMPANIONS.get((pid, q))
+            if companion:
+                scale = ref[companion[0]].columns[companion[1]]
+                rows.append((pid, q, "zero", relative_rms(scene, prof, ref[pid], q, exclude, scale=scale)))
+            else:
+                rows.append((pid, q, quantity_class(scene, profiles[pid], q),
+                             relative_rms(scene, prof, ref[pid], q, exclude)))
+    return rows

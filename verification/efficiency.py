@@ -14,33 +14,20 @@ from __future__ import annotations
 import logging
 from pathlib import Path
 
-import numpy as np
-
 from contactcore import load_scene, sample_profiles
 
 from . import files, methods
-from .agreement import relative_rms
+from .agreement import agreements
 
 log = logging.getLogger("verification")
-
-#: Zero-valued quantities measured against the scale of a companion one:
-#: (profile id, quantity) -> (profile id, quantity).
-COMPANIONS = {("B6", "tN"): ("B5", "tT"), ("B6", "gN"): ("B5", "gT")}
 
 COLUMNS = ["method", "degree", "h", "dofs", "total", "error", "worst"]
 
 
 def worst_error(scene, got: dict, ref: dict, exclude: float) -> tuple[float, str]:
     """The largest relative RMS difference over every profile and quantity."""
-    worst, where = 0.0, ""
-    for pid, prof in got.items():
-        for q in prof.names[3:]:
-            companion = COMPANIONS.get((pid, q))
-            scale = ref[companion[0]].columns[companion[1]] if companion else None
-            e = relative_rms(scene, prof, ref[pid], q, exclude, scale=scale)
-            if e > worst:
-                worst, where = e, f"{pid}:{q}"
-    return worst, where
+    pid, q, _, err = max(agreements(scene, got, ref, exclude), key=lambda row: row[3])
+    return err, f"{pid}:{q}"
 
 
 def efficiency(scene_name: str, method_names: list[str], degrees: list[int], hs: list[float], ref_h: float,

@@ -22,3 +22,26 @@ def l2_error(scene, fields, exact, *, h: float, gauss: int = 4) -> tuple[float, 
     err = fields.displacement(rule.points, rule.bodies) - ue
     return float(np.sqrt(rule.weights @ np.sum(err ** 2, axis=1))), float(np.sqrt(rule.weights @ np.sum(ue ** 2,
                                                                                                       axis=1)))
+
+
+def observed_rate(scene, exact, solve, hs) -> tuple[list[float], float]:
+    """Relative L2 errors of ``solve(h)`` (a Result) on the resolutions
+    ``hs`` and the least-squares slope of log error against log h."""
+    errors = []
+    for h in hs:
+        err, ref = l2_error(scene, solve(h).fields, exact, h=h / 2)
+        errors.append(err / ref)
+    return errors, float(np.polyfit(np.log(hs), np.log(errors), 1)[0])
+
+
+def max_errors(scene, fields, exact, *, samples: int = 400, seed: int = 0) -> tuple[float, float]:
+    """Largest pointwise displacement and stress errors, each relative to the
+    largest exact value, at seeded random points of a rectangular domain
+    (kept 2 % of its size away from the boundary)."""
+    (x0, y0), (a, b) = scene.domain.corner, scene.domain.size
+    unit = np.random.default_rng(seed).uniform(0.02, 0.98, (samples, 2))
+    pts = np.array([x0, y0]) + unit * np.array([a, b])
+    bodies = scene.body_of(pts)
+    u, s = exact.displacement(pts, bodies), exact.stress(pts, bodies)
+    return (float(np.max(np.abs(fields.displacement(pts, bodies) - u)) / np.max(np.abs(u))),
+            float(np.max(np.abs(fields.stress(pts, bodies) - s)) / np.max(np.abs(s))))
