@@ -10,11 +10,11 @@ from .profiles import ProfileData, evaluate_quantities, sample_profile, sample_p
 from .result import Result, SolverReport, Timings
 from .scene import (BODIES, BodyForce, InterfaceProfile, LineProfile, Material, Pin, Pressure, Scene, Support,
                     Torque, Traction, builtin_scenes, load_scene, scene_from_dict, scene_text)
-from .geometry import CircleInterface, Disc, LineInterface, Rectangle
+from .geometry import CircleInterface, Disc, LevelSetInterface, LineInterface, Rectangle
 
 __all__ = [
     "BODIES", "BodyForce", "CircleInterface", "ContactError", "Disc", "DiscretisationError", "InterfaceProfile",
-    "LAWS", "LineInterface", "LineProfile", "LinearLaw", "Material", "Pin", "Pressure", "ProfileData", "Rectangle",
+    "LAWS", "LevelSetInterface", "LineInterface", "LineProfile", "LinearLaw", "Material", "Pin", "Pressure", "ProfileData", "Rectangle",
     "Result", "Scene", "SceneError", "SolverError", "SolverReport", "Support", "Timings", "Torque", "Traction",
     "builtin_scenes", "evaluate_quantities", "load_scene", "make_law", "sample_profile", "sample_profiles",
     "scene_from_dict", "scene_text",

@@ -18,7 +18,7 @@ import numpy as np
 
 from . import tolerances as tol
 from .errors import SceneError
-from .geometry import CircleInterface, Disc, Domain, Interface, LineInterface, Rectangle
+from .geometry import CircleInterface, Disc, Domain, Interface, LevelSetInterface, LineInterface, Rectangle
 from .laws import InterfaceLaw, make_law
 
 BODIES = ("minus", "plus")
@@ -204,6 +204,10 @@ def _check_interface(scene: Scene) -> None:
         a_minus = itf.minus_area(dom)
         if min(a_minus, dom.area - a_minus) <= tol.MIN_BODY_AREA_FRACTION * dom.area:
             raise SceneError("interface", "the line only touches the domain: one body would be empty")
+    elif isinstance(itf, LevelSetInterface):
+        a_minus = itf.minus_area(dom)
+        if min(a_minus, dom.area - a_minus) <= tol.MIN_BODY_AREA_FRACTION * dom.area:
+            raise SceneError("interface", "the level set does not change sign in the domain: Γ misses it")
     else:
         if _finite(itf.radius, "interface.radius") <= 0:
             raise SceneError("interface.radius", f"must be > 0 (got {itf.radius!r})")
@@ -285,6 +289,9 @@ def _check_profiles(scene: Scene) -> None:
                 raise SceneError(f"{path}.parameter", f"must be 'angle' or 'arclength' (got {prof.parameter!r})")
             if prof.parameter == "angle" and not isinstance(scene.interface, CircleInterface):
                 raise SceneError(f"{path}.parameter", "a polar angle needs a circular interface; use 'arclength'")
+            if isinstance(scene.interface, LevelSetInterface):
+                raise SceneError(f"{path}.type", "profiles along a general level set are not supported; "
+                                 "use line profiles")
 
 
 def validate(scene: Scene) -> None:

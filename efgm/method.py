@@ -27,7 +27,7 @@ import scipy.sparse as sp
 from contactcore import BODIES, DiscretisationError, Result, Scene, Timings
 from contactcore import tolerances as tol
 from contactcore.elasticity import voigt_matrix
-from contactcore.geometry import CircleInterface, Disc, Rectangle, tangent_of
+from contactcore.geometry import CircleInterface, Disc, LevelSetInterface, Rectangle, tangent_of
 from contactcore.scene import BodyForce, Pressure, Traction
 
 from . import sparse_solver
@@ -257,6 +257,8 @@ def solve(scene: Scene, h: float | None = None, *, degree: int = 1, paper: bool 
         raise DiscretisationError(f"efgm: support must be 'circular' or 'rectangular' (got {support!r})")
     if not scene.law.is_linear:
         raise DiscretisationError(f"efgm: the '{scene.law.name}' law is not supported yet")
+    if isinstance(scene.interface, LevelSetInterface):
+        raise DiscretisationError("efgm: a general level set Γ is supported by xfem only (its mesh ignores Γ)")
     start, timings = time.perf_counter(), Timings()
     n = GAUSS_POINTS[degree] if gauss is None else gauss
     dmax = DMAX[degree] if dmax is None else dmax

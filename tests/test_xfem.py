@@ -10,7 +10,7 @@ from dolfinx.fem import petsc as fem_petsc
 from petsc4py import PETSc
 
 import tolerances as tol
-from contactcore import (CircleInterface, DiscretisationError, LineInterface, load_scene,
+from contactcore import (CircleInterface, DiscretisationError, LevelSetInterface, LineInterface, load_scene,
                          sample_profiles)
 from contactcore.elasticity import voigt_matrix
 from verification.agreement import agreements
@@ -146,3 +146,65 @@ def test_gauss_rule_is_basix_gauss_legendre():
         pts, wts = basix.make_quadrature(basix.CellType.interval, 2 * n - 1)
         assert np.allclose(np.sort(pts.ravel()), gauss01(n)[0]) and np.allclose(wts[np.argsort(pts.ravel())],
                                                                                  gauss01(n)[1])
+
+
+def _callable_line(patch):
+    n, p0 = np.array(patch.scene.interface.normal), np.array(patch.scene.interface.point)
+    return LevelSetInterface(lambda x: (x - p0) @ n, lambda x: np.tile(n, (len(x), 1)))
+
+
+@pytest.mark.parametrize("cell", ["quad", "triangle"])
+@pytest.mark.parametrize("degree", [1, 2])
+def test_general_level_set_patch_is_exact(degree, cell):
+    patch = interface_patch(30.0, pins=PINS[30.0])
+    general = dataclasses.replace(patch, scene=dataclasses.replace(patch.scene,
+                                                                   interface=_callable_line(patch)).validated())
+    eu, es, _ = _patch_error(general, degree=degree, cell=cell)
+    assert eu <= tol.XFEM_PATCH and es <= tol.XFEM_PATCH * 10, (eu, es)
+
+
+def test_callable_circle_matches_the_builtin_one():
+    scene = load_scene("C")
+    c, R = np.array(scene.interface.centre), scene.interface.radius
+    general = dataclasses.replace(scene, interface=LevelSetInterface(
+        lambda x: np.hypot(*(x - c).T) - R, lambda x: (x - c) / np.hypot(*(x - c).T)[:, None]),
+        profiles=tuple(p for p in scene.profiles if p.id != "C4")).validated()
+    a, b = xfem.solve(scene, 0.1), xfem.solve(general, 0.1)
+    pts = np.random.default_rng(1).uniform([0, 0], [2, 3], (500, 2))
+    bodies = scene.body_of(pts)
+    ua, ub = a.fields.displacement(pts, bodies), b.fields.displacement(pts, bodies)
+    assert np.max(np.abs(ua - ub)) <= tol.GENERAL_VS_CIRCLE * np.max(np.abs(ua))
+
+
+def test_ellipse_geometry_is_integrated():
+    from contactcore.cutcell import cut_polygon, interface_rule_in
+
+    a, b = 0.35, 0.2
+    ellipse = LevelSetInterface(lambda x: (x[:, 0] / a) ** 2 + (x[:, 1] / b) ** 2 - 1,
+                                lambda x: np.column_stack([2 * x[:, 0] / a ** 2, 2 * x[:, 1] / b ** 2]))
+    area = length = 0.0
+    for i in range(10):
+        for j in range(10):
+            lo = np.array([-0.5 + 0.1 * i, -0.5 + 0.1 * j])
+            cell = np.array([lo, lo + [0.1, 0], lo + 0.1, lo + [0, 0.1]])
+            area += sum(w.sum() for side, _, w in cut_polygon(ellipse, cell, 4) if side < 0)
+            length += interface_rule_in(ellipse, cell, 4)[1].sum()
+    k = ((a - b) / (a + b)) ** 2  # Ramanujan's perimeter, exact to ~1e-10 at this aspect ratio
+    perimeter = np.pi * (a + b) * (1 + 3 * k / (10 + np.sqrt(4 - 3 * k)))
+    assert abs(area - np.pi * a * b) <= tol.GENERAL_AREA * np.pi * a * b
+    assert abs(length - perimeter) <= tol.GENERAL_LENGTH * perimeter
+
+
+def test_general_level_set_is_for_xfem_only():
+    from contactcore import SceneError
+    from efgm import method
+    from xdolfinx import conforming
+
+    patch = interface_patch(30.0, pins=PINS[30.0])
+    scene = dataclasses.replace(patch.scene, interface=_callable_line(patch)).validated()
+    for solve, name in ((conforming.solve, "fe"), (method.solve, "efgm")):
+        with pytest.raises(DiscretisationError, match=f"{name}: a general level set Γ is supported by xfem only"):
+            solve(scene, 0.2)
+    outside = LevelSetInterface(lambda x: x[:, 0] + 5.0, lambda x: np.tile([1.0, 0.0], (len(x), 1)))
+    with pytest.raises(SceneError, match="interface: the level set does not change sign in the domain"):
+        dataclasses.replace(patch.scene, interface=outside).validated()

@@ -40,7 +40,7 @@ import meshes
 from contactcore import BODIES, DiscretisationError, Result, Scene, Timings
 from contactcore import tolerances as tol
 from contactcore.elasticity import lame
-from contactcore.geometry import LineInterface, Rectangle
+from contactcore.geometry import LevelSetInterface, LineInterface, Rectangle
 from contactcore.scene import BodyForce, Pressure, Torque, Traction
 
 from . import linear_solver
@@ -225,6 +225,8 @@ def solve(scene: Scene, h: float | None = None, *, degree: int = 1, paper: bool 
     """
     if degree not in (1, 2):
         raise DiscretisationError(f"fe: degree must be 1 or 2 (got {degree})")
+    if isinstance(scene.interface, LevelSetInterface):
+        raise DiscretisationError("fe: a general level set Γ is supported by xfem only (its mesh ignores Γ)")
     start = time.perf_counter()
     timings = Timings()
     h = resolution(scene, h, paper)

@@ -41,7 +41,7 @@ from contactcore import BODIES, DiscretisationError, Result, Scene, Timings
 from contactcore import tolerances as tol
 from contactcore.cutcell import cut_polygon, edge_crossings, gauss01, interface_rule_in, polygon_rule
 from contactcore.elasticity import voigt_matrix
-from contactcore.geometry import Rectangle, tangent_of
+from contactcore.geometry import LevelSetInterface, Rectangle, tangent_of
 from contactcore.scene import BodyForce, Pressure, Torque, Traction
 
 from . import linear_solver
@@ -61,6 +61,11 @@ GAUSS_POINTS = {1: 3, 2: 4}
 #: its stiffness vanishes like the sliver's area and the matrix becomes
 #: singular; left out, the jump loses that fraction of one function.
 MIN_CUT_FRACTION = 1e-9
+
+#: Cells whose centre lies within NEAR_FACTOR·|∇φ|·(circumradius) of Γ are
+#: examined for cuts: 1 for lines and circles (φ is the distance), 2 leaves
+#: room for the curvature of a general φ.
+NEAR_FACTOR = 2.0
 
 _TAG_UNCUT = {"minus": 1, "plus": 2}
 _TAG_BAND = 3
@@ -137,9 +142,16 @@ class EnrichedFunctionSpace:
         itf = self.scene.interface
         centre = self.corners.mean(axis=1)
         radius = np.max(np.linalg.norm(self.corners - centre[:, None], axis=2), axis=1)
-        self.cell_side = np.where(itf.phi(centre) >= 0, 1, -1)
+        phi_c = itf.phi(centre)
+        self.cell_side = np.where(phi_c >= 0, 1, -1)
         self.regions = {}
-        near = np.flatnonzero(np.abs(itf.phi(centre)) <= radius)
+        # Γ may reach a cell whose centre is within |∇φ|·radius of it (φ/|∇φ|
+        # is the distance to first order; exactly so for lines and circles),
+        # or whose corners differ in sign
+        grad = np.linalg.norm(itf.grad_fn(centre), axis=1) if isinstance(itf, LevelSetInterface) else 1.0
+        corner_sides = np.where(itf.phi(self.corners.reshape(-1, 2)) >= 0, 1, -1).reshape(len(centre), -1)
+        near = np.flatnonzero((np.abs(phi_c) <= NEAR_FACTOR * grad * radius)
+                              | (corner_sides.min(axis=1) != corner_sides.max(axis=1)))
         across = np.zeros(len(self.node_side))
         total = np.zeros(len(self.node_side))
         for c in near:
