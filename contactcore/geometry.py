@@ -77,6 +77,13 @@ class Rectangle:
                 names.append(name)
         return names
 
+    def on_boundary(self, name: str, x, tol: float) -> np.ndarray:
+        """True where the points lie on the named edge (within ``tol``)."""
+        p = _as_points(x)
+        (x0, y0), (a, b) = self.corner, self.size
+        coord, value = {"left": (0, x0), "right": (0, x0 + a), "bottom": (1, y0), "top": (1, y0 + b)}[name]
+        return np.abs(p[:, coord] - value) <= tol
+
     def outward_normal(self, name: str) -> np.ndarray:
         return {"left": np.array([-1.0, 0.0]), "right": np.array([1.0, 0.0]),
                 "bottom": np.array([0.0, -1.0]), "top": np.array([0.0, 1.0])}[name]
@@ -109,6 +116,10 @@ class Disc:
 
     def boundary_of(self, x, tol: float) -> list[str]:
         return ["outer"] if abs(self.distance_to_boundary([x])[0]) <= tol else []
+
+    def on_boundary(self, name: str, x, tol: float) -> np.ndarray:
+        """True where the points lie on the rim (within ``tol``)."""
+        return np.abs(self.distance_to_boundary(x)) <= tol
 
 
 Domain = Rectangle | Disc

@@ -164,6 +164,20 @@ class Scene:
         return np.where(on, BODIES.index(side), (phi > 0).astype(int))
 
 
+def body_force(scene: "Scene", load: BodyForce | Torque, x, y):
+    """The components ``(b_x, b_y)`` of a body load at coordinates x, y.
+
+    Plain arithmetic, so x and y may be numpy arrays or UFL expressions: one
+    formula for every method.  A torque is spread over the disc of the
+    circular Γ as ``b = (T/J)(−(y−y_c), x−x_c)``, ``J = πR⁴/2`` (SCENES.md).
+    """
+    if isinstance(load, BodyForce):
+        return load.value[0] + 0 * x, load.value[1] + 0 * y
+    (xc, yc), R = scene.interface.centre, scene.interface.radius
+    k = load.torque / (math.pi * R ** 4 / 2)
+    return -k * (y - yc), k * (x - xc)
+
+
 # --------------------------------------------------------------------------
 # validation of a Scene (built in code or read from a file)
 # --------------------------------------------------------------------------

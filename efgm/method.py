@@ -28,7 +28,7 @@ from contactcore import BODIES, DiscretisationError, Result, Scene, Timings
 from contactcore import tolerances as tol
 from contactcore.elasticity import voigt_matrix
 from contactcore.geometry import CircleInterface, Disc, LevelSetInterface, Rectangle, tangent_of
-from contactcore.scene import BodyForce, Pressure, Traction
+from contactcore.scene import Pressure, Traction, body_force
 
 from . import sparse_solver
 from .nodes import NodeSet, background_cells, check_nodes, grid_nodes, support_radii
@@ -168,23 +168,13 @@ class EFGMFields:
         return np.where(bodies[:, None] == 1, eps @ self.D[1].T, eps @ self.D[0].T)
 
 
-def _on_boundary(scene: Scene, name: str, x: np.ndarray) -> np.ndarray:
-    tol_L = tol.NODE_MATCH * scene.length_scale
-    dom = scene.domain
-    if isinstance(dom, Disc):
-        return np.abs(dom.distance_to_boundary(x)) <= tol_L
-    (x0, y0), (a, b) = dom.corner, dom.size
-    coord, value = {"left": (0, x0), "right": (0, x0 + a), "bottom": (1, y0), "top": (1, y0 + b)}[name]
-    return np.abs(x[:, coord] - value) <= tol_L
-
-
 def _constraints(scene: Scene, approx: Approximation):
     """Collocation rows ``C u = g`` (supported boundary nodes, and pins) and
     the point of each row."""
     nodes = approx.mls.nodes
     points, comps, values = [], [], []
     for i, sup in enumerate(scene.supports):
-        on = np.flatnonzero(_on_boundary(scene, sup.boundary, nodes))
+        on = np.flatnonzero(scene.domain.on_boundary(sup.boundary, nodes, tol.NODE_MATCH * scene.length_scale))
         if len(on) == 0:
             raise DiscretisationError(f"efgm: supports[{i}]: no node lies on boundary '{sup.boundary}' — the node "
                                       "set must include the supported boundaries")
@@ -229,12 +219,7 @@ def _load_vector(scene: Scene, approx: Approximation, vol: Rule, vol_sv, h: floa
             volume_N = approx.displacement_operator(vol_sv, vol.bodies)
         body = BODIES.index(load.body)
         mask = (vol.bodies == body) * vol.weights
-        if isinstance(load, BodyForce):
-            b = np.tile(load.value, (len(mask), 1))
-        else:  # Torque: b = (T/J)(−(y−y_c), x−x_c), J = πR⁴/2
-            c, R = np.asarray(scene.interface.centre), scene.interface.radius
-            r = vol.points - c
-            b = (load.torque / (np.pi * R ** 4 / 2)) * np.column_stack([-r[:, 1], r[:, 0]])
+        b = np.column_stack(body_force(scene, load, vol.points[:, 0], vol.points[:, 1]))
         f += volume_N.T @ (mask[:, None] * b).ravel()
     return f
 

@@ -49,7 +49,7 @@ def _single_body_solution(scene, h):
     V = fem.VectorFunctionSpace(fm.mesh, ("Lagrange", 1))
     u, v = ufl.TrialFunction(V), ufl.TestFunction(V)
     mat = scene.materials["minus"]
-    a = ufl.inner(conforming._sigma(u, mat.E, mat.nu, scene.plane), ufl.sym(ufl.grad(v))) * ufl.dx
+    a = ufl.inner(conforming.sigma(u, mat.E, mat.nu, scene.plane), ufl.sym(ufl.grad(v))) * ufl.dx
     ds = ufl.Measure("ds", domain=fm.mesh, subdomain_data=fm.facet_tags)
     (load,) = scene.loads
     L = ufl.dot(ufl.as_vector(list(load.value)), v) * ds(meshes.BOUNDARY[load.boundary])

@@ -17,6 +17,7 @@ from verification.agreement import agreements
 from verification.closed_forms import interface_patch, pressurised_rod
 from verification.norms import max_errors, observed_rate
 from xdolfinx import xfem
+from xdolfinx.conforming import sigma
 
 PINS = {30.0: ((0.1, 0.1), (0.5, 0.1)), -65.0: ((0.1, 0.1), (0.1, 0.5)), 0.0: ((0.1, 0.1), (0.5, 0.1))}
 
@@ -45,7 +46,7 @@ def test_cell_kernels_equal_dolfinx_without_enrichment(cell, degree):
     u, v = ufl.TrialFunction(space.V), ufl.TestFunction(space.V)
     us, vs = ufl.as_vector([u[0], u[1]]), ufl.as_vector([v[0], v[1]])
     mat = scene.materials["minus"]
-    theirs = fem_petsc.assemble_matrix(fem.form(ufl.inner(xfem._sigma(us, mat.E, mat.nu, scene.plane),
+    theirs = fem_petsc.assemble_matrix(fem.form(ufl.inner(sigma(us, mat.E, mat.nu, scene.plane),
                                                           ufl.sym(ufl.grad(vs))) * ufl.dx))
     theirs.assemble()
     ours.axpy(-1.0, theirs, structure=PETSc.Mat.Structure.SUBSET_NONZERO_PATTERN)

@@ -41,7 +41,7 @@ from contactcore import BODIES, DiscretisationError, Result, Scene, Timings
 from contactcore import tolerances as tol
 from contactcore.elasticity import lame
 from contactcore.geometry import LevelSetInterface, LineInterface, Rectangle
-from contactcore.scene import BodyForce, Pressure, Torque, Traction
+from contactcore.scene import Pressure, Traction, body_force
 
 from . import linear_solver
 from .evaluation import BodyCellLocator, BodyFields
@@ -63,7 +63,7 @@ def resolution(scene: Scene, h: float | None, paper: bool) -> float:
     return float(h)
 
 
-def _sigma(w, E: float, nu: float, plane: str):
+def sigma(w, E: float, nu: float, plane: str):
     lam, mu = lame(E, nu, plane)
     eps = ufl.sym(ufl.grad(w))
     return 2.0 * mu * eps + lam * ufl.tr(eps) * ufl.Identity(2)
@@ -95,7 +95,7 @@ def bilinear_form(scene: Scene, fm: FittedMesh, V):
     us, vs = ufl.split(u), ufl.split(v)
     dx = ufl.Measure("dx", domain=fm.mesh, subdomain_data=fm.cell_tags)
     dS = ufl.Measure("dS", domain=fm.mesh, subdomain_data=fm.facet_tags)
-    a = sum(ufl.inner(_sigma(us[b], scene.materials[name].E, scene.materials[name].nu, scene.plane),
+    a = sum(ufl.inner(sigma(us[b], scene.materials[name].E, scene.materials[name].nu, scene.plane),
                       ufl.sym(ufl.grad(vs[b]))) * dx(meshes.BODY[name]) for b, name in enumerate(BODIES))
     n, t = _interface_frame(scene, ufl.SpatialCoordinate(fm.mesh)("+"))
 
@@ -122,13 +122,9 @@ def linear_form(scene: Scene, fm: FittedMesh, V):
             L += ufl.dot(ufl.as_vector(list(load.value)), v_owner) * ds(meshes.BOUNDARY[load.boundary])
         elif isinstance(load, Pressure):
             L += -load.value * ufl.dot(ufl.FacetNormal(fm.mesh), v_owner) * ds(meshes.BOUNDARY[load.boundary])
-        elif isinstance(load, BodyForce):
-            L += ufl.dot(ufl.as_vector(list(load.value)), vs[BODIES.index(load.body)]) * dx(meshes.BODY[load.body])
-        elif isinstance(load, Torque):
-            c, R = scene.interface.centre, scene.interface.radius
-            J = np.pi * R ** 4 / 2.0
-            b = (load.torque / J) * ufl.as_vector([-(x[1] - c[1]), x[0] - c[0]])
-            L += ufl.dot(b, vs[0]) * dx(meshes.BODY["minus"])
+        else:
+            b = ufl.as_vector(body_force(scene, load, x[0], x[1]))
+            L += ufl.dot(b, vs[BODIES.index(load.body)]) * dx(meshes.BODY[load.body])
     return L
 
 
@@ -204,7 +200,7 @@ def _stress_functions(scene: Scene, fm: FittedMesh, uh, degree: int):
     for b, name in enumerate(BODIES):
         ub = uh.sub(b).collapse()
         mat = scene.materials[name]
-        s = _sigma(ub, mat.E, mat.nu, scene.plane)
+        s = sigma(ub, mat.E, mat.nu, scene.plane)
         sf = fem.Function(S)
         sf.interpolate(fem.Expression(ufl.as_vector([s[0, 0], s[1, 1], s[0, 1]]), S.element.interpolation_points()))
         disps.append(ub)

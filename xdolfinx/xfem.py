@@ -42,9 +42,10 @@ from contactcore import tolerances as tol
 from contactcore.cutcell import cut_polygon, edge_crossings, gauss01, interface_rule_in, polygon_rule
 from contactcore.elasticity import voigt_matrix
 from contactcore.geometry import LevelSetInterface, Rectangle, tangent_of
-from contactcore.scene import BodyForce, Pressure, Torque, Traction
+from contactcore.scene import BodyForce, Pressure, Torque, Traction, body_force
 
 from . import linear_solver
+from .conforming import sigma
 from .evaluation import BodyCellLocator
 
 METHOD = "xfem"
@@ -234,14 +235,6 @@ def band_kernels(space: EnrichedFunctionSpace, D: np.ndarray, D_law: np.ndarray)
         yield dofs, K
 
 
-def _body_force(scene: Scene, load, pts: np.ndarray) -> np.ndarray:
-    if isinstance(load, BodyForce):
-        return np.tile(load.value, (len(pts), 1))
-    c, R = np.asarray(scene.interface.centre), scene.interface.radius
-    r = pts - c
-    return (load.torque / (np.pi * R ** 4 / 2)) * np.column_stack([-r[:, 1], r[:, 0]])
-
-
 def _edge_name(scene: Scene, a: np.ndarray, b: np.ndarray) -> str | None:
     tol_L = tol.NODE_MATCH * scene.length_scale
     common = set(scene.domain.boundary_of(a, tol_L)) & set(scene.domain.boundary_of(b, tol_L))
@@ -264,7 +257,7 @@ def band_loads(space: EnrichedFunctionSpace):
                 if BODIES[(side + 1) // 2] != load.body:
                     continue
                 N, _, coeff = space.functions(c, pts, side)
-                f += _vector_load(N, coeff, w[:, None] * _body_force(scene, load, pts))
+                f += _vector_load(N, coeff, w[:, None] * np.column_stack(body_force(scene, load, pts[:, 0], pts[:, 1])))
         corners = space.corners[c]
         for i in range(len(corners)):
             a, b = corners[i], corners[(i + 1) % len(corners)]
@@ -291,14 +284,6 @@ def _vector_load(N: np.ndarray, coeff: np.ndarray, wt: np.ndarray) -> np.ndarray
     return f
 
 
-def _sigma(w, E, nu, plane):
-    from contactcore.elasticity import lame
-
-    lam, mu = lame(E, nu, plane)
-    eps = ufl.sym(ufl.grad(w))
-    return 2 * mu * eps + lam * ufl.tr(eps) * ufl.Identity(2)
-
-
 def _tags(space: EnrichedFunctionSpace):
     """Cell tags (uncut −, uncut +, band) and boundary-facet tags by name for
     facets whose cell is outside the band (the band's are ours)."""
@@ -316,8 +301,7 @@ def _tags(space: EnrichedFunctionSpace):
     facets, tags = [], []
     tol_L = tol.NODE_MATCH * scene.length_scale
     for name in scene.domain.boundary_names:
-        found = mesh.locate_entities_boundary(
-            msh, 1, lambda x, name=name: np.array([name in scene.domain.boundary_of(p, tol_L) for p in x[:2].T]))
+        found = mesh.locate_entities_boundary(msh, 1, lambda x, name=name: scene.domain.on_boundary(name, x[:2].T, tol_L))
         keep = [f for f in found if not in_band[f2c.links(f)[0]]]
         facets += keep
         tags += [meshes.BOUNDARY[name]] * len(keep)
@@ -336,7 +320,7 @@ def _forms(space: EnrichedFunctionSpace, cell_tags, facet_tags):
     us, vs = ufl.as_vector([u[0], u[1]]), ufl.as_vector([v[0], v[1]])
     dx = ufl.Measure("dx", domain=msh, subdomain_data=cell_tags)
     ds = ufl.Measure("ds", domain=msh, subdomain_data=facet_tags)
-    a = sum(ufl.inner(_sigma(us, scene.materials[b].E, scene.materials[b].nu, scene.plane),
+    a = sum(ufl.inner(sigma(us, scene.materials[b].E, scene.materials[b].nu, scene.plane),
                       ufl.sym(ufl.grad(vs))) * dx(_TAG_UNCUT[b]) for b in BODIES)
     L = ufl.inner(ufl.as_vector([0.0, 0.0]), vs) * dx
     x = ufl.SpatialCoordinate(msh)
@@ -345,12 +329,8 @@ def _forms(space: EnrichedFunctionSpace, cell_tags, facet_tags):
             L += ufl.dot(ufl.as_vector(list(load.value)), vs) * ds(meshes.BOUNDARY[load.boundary])
         elif isinstance(load, Pressure):
             L += -load.value * ufl.dot(ufl.FacetNormal(msh), vs) * ds(meshes.BOUNDARY[load.boundary])
-        elif isinstance(load, BodyForce):
-            L += ufl.dot(ufl.as_vector(list(load.value)), vs) * dx(_TAG_UNCUT[load.body])
         else:
-            c, R = scene.interface.centre, scene.interface.radius
-            b = (load.torque / (np.pi * R ** 4 / 2)) * ufl.as_vector([-(x[1] - c[1]), x[0] - c[0]])
-            L += ufl.dot(b, vs) * dx(_TAG_UNCUT[load.body])
+            L += ufl.dot(ufl.as_vector(body_force(scene, load, x[0], x[1])), vs) * dx(_TAG_UNCUT[load.body])
     pattern = ufl.inner(u, v) * dx
     return fem.form(a), fem.form(L), fem.form(pattern)
 
@@ -401,8 +381,7 @@ def _support_rows(space: EnrichedFunctionSpace) -> tuple[np.ndarray, np.ndarray]
     rows, vals = [], []
     tol_L = tol.NODE_MATCH * scene.length_scale
     for sup in scene.supports:
-        facets = mesh.locate_entities_boundary(
-            msh, 1, lambda x, n=sup.boundary: np.array([n in scene.domain.boundary_of(p, tol_L) for p in x[:2].T]))
+        facets = mesh.locate_entities_boundary(msh, 1, lambda x, n=sup.boundary: scene.domain.on_boundary(n, x[:2].T, tol_L))
         blocks = fem.locate_dofs_topological(V, 1, facets)
         for comp in sup.fix:
             j = "xy".index(comp)
