@@ -100,3 +100,4 @@ def make_law(params: dict, path: str = "interface.law"):
     if kind not in LAWS:
         raise SceneError(f"{path}.type", f"unknown interface law {kind!r} (known: {', '.join(LAWS)})")
     return LAWS[kind].from_params(params, path)
+

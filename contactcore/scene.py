@@ -157,6 +157,34 @@ class Scene:
         """A validated copy with some fields replaced (parameter studies)."""
         return replace(self, **changes).validated()
 
+    def interface_warnings(self, h: float, fitted: bool = False) -> list[str]:
+        """What a method of cell or node spacing ``h`` should warn about
+        before anyone trusts its interface tractions (the thresholds and
+        their measurements are in contactcore.tolerances):
+
+        * springs stiff enough to lock the jump of an unfitted method on a
+          curved Γ (not ``fitted``): ``k h / E > LOCKING_WARN``, E the stiffer
+          modulus;
+        * a normal traction ``t_N = k_N g_N`` that amplifies the
+          discretisation error of ``g_N`` on a circle of radius R:
+          ``(k_N/k_T)(h/2R)² > FALSE_TN_WARN`` (SCENES.md, scene B).
+        """
+        warnings = []
+        law, itf = self.law, self.interface
+        alpha = law.stiffness_scale * h / max(m.E for m in self.materials.values())
+        if not fitted and not isinstance(itf, LineInterface) and alpha > tol.LOCKING_WARN:
+            warnings.append(f"interface springs of {alpha:.1e}·E/h (above {tol.LOCKING_WARN:.0e}·E/h) on a curved "
+                            "Γ that cuts the discretisation: penalty locking may raise the error tenfold and lower "
+                            "the convergence rate; soften the springs or refine")
+        if isinstance(itf, CircleInterface):
+            amplification = law.kN / law.kT * (h / (2 * itf.radius)) ** 2
+            if amplification > tol.FALSE_TN_WARN:
+                warnings.append(f"k_N/k_T = {law.kN / law.kT:.3g} on a circle at h/2R = {h / (2 * itf.radius):.3g}: "
+                                f"t_N = k_N g_N amplifies the discretisation error of g_N ((k_N/k_T)(h/2R)² = "
+                                f"{amplification:.3g} > {tol.FALSE_TN_WARN:g}); a false t_N of the order of t_T may "
+                                "appear: refine (it falls as h²) or lower k_N/k_T")
+        return warnings
+
     def body_of(self, points, side: str = "plus") -> np.ndarray:
         """0 (−) or 1 (+) for each point: by the sign of φ, ``side`` on Γ."""
         phi = self.interface.phi(points)

@@ -277,6 +277,7 @@ def solve(scene: Scene, h: float | None = None, *, degree: int = 1, paper: bool 
                                         reach=2 * mls.reach, estimate_condition=estimate_condition,
                                         what=f"scene {scene.name} (efgm)")
     report.increments = scene.increments
+    report.warnings += scene.interface_warnings(ns.h)
     timings.total = time.perf_counter() - start
     return Result(method=METHOD, scene=scene, degree=degree, dofs=approx.ndofs, timings=timings, solver=report,
                   fields=EFGMFields(scene, approx, x[:approx.ndofs]),

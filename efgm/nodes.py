@@ -37,6 +37,16 @@ def grid_nodes(scene: Scene, h: float | None = None, counts: tuple[int, int] | N
     return _disc_nodes(dom, h)
 
 
+def perturbed_nodes(scene: Scene, h: float, fraction: float, seed: int = 0) -> np.ndarray:
+    """The grid of spacing ``h`` with every node off the boundary moved by a
+    seeded uniform amount of up to ``fraction·h`` in x and in y (an irregular
+    node set that still has nodes on every supported boundary)."""
+    x = grid_nodes(scene, h).x.copy()
+    inner = np.abs(scene.domain.distance_to_boundary(x)) > tol.GEOMETRY * scene.length_scale
+    x[inner] += np.random.default_rng(seed).uniform(-fraction, fraction, (int(inner.sum()), 2)) * h
+    return x
+
+
 def _disc_nodes(dom: Disc, h: float) -> NodeSet:
     """Grid points inside the disc (half a step clear of the rim) and a ring
     of nodes on the rim, spaced h."""

@@ -2,8 +2,13 @@
 
     python -m verification run SCENE_OR_TOML --method fe|xfem|efgm|all [--degree 1|2] [--cell quad|triangle|gmsh]
         [--h H] [--paper] [--xdmf] [--petsc-option KEY=VALUE ...] [--dmax D] [--nodes FILE] --out DIR
-    python -m verification timing SCENE --method fe --degree 1 2 --h H1 H2 ... --out DIR
+    python -m verification paper [--scene A B C] [--ref-h H] --out DIR
+    python -m verification closed [--case patch pressurised_rod twisted_rod] [--method ...] [--degree 1 2] --out DIR
     python -m verification efficiency SCENE --method fe efgm --degree 1 2 --h H1 H2 ... --ref-h H --out DIR
+    python -m verification sweeps [--sweep NAME ...] [--method ...] [--degree 1] --out DIR
+    python -m verification study SCENE --param NAME --values V1 V2 ... [--method ...] [--degree 1] [--h H] --out DIR
+    python -m verification report DIR [--quick]
+    python -m verification timing SCENE --method fe --degree 1 2 --h H1 H2 ... --out DIR
 
 Bad input ends with one line ``error: <field>: <problem>`` and exit status 2.
 """
@@ -26,12 +31,20 @@ def _petsc_option(text: str) -> tuple[str, str]:
     return key.lstrip("-"), value
 
 
+def _methods(p, **kw) -> None:
+    p.add_argument("--method", nargs="+", default=["all"], choices=[*methods.METHODS, "all"], **kw)
+
+
 def _parser() -> argparse.ArgumentParser:
+    from .convergence import CASES
+    from .study import PARAMETERS
+    from .sweeps import sweeps
+
     parser = argparse.ArgumentParser(prog="python -m verification")
     sub = parser.add_subparsers(dest="command", required=True)
     run = sub.add_parser("run", help="solve one scene with one or more methods")
     run.add_argument("scene", help="built-in scene name (A, B, C) or a scene TOML file")
-    run.add_argument("--method", nargs="+", default=["all"], choices=[*methods.METHODS, "all"])
+    _methods(run)
     run.add_argument("--degree", type=int, default=1, choices=(1, 2))
     run.add_argument("--h", type=float, help="resolution for every method (default: the scene's h)")
     run.add_argument("--paper", action="store_true", help="use the paper's discretisations")
@@ -42,20 +55,46 @@ def _parser() -> argparse.ArgumentParser:
     run.add_argument("--dmax", type=float, help="EFGM support dilation (default: by basis degree)")
     run.add_argument("--nodes", type=Path, help="EFGM node set: a text file of x y rows (default: a grid)")
     run.add_argument("--out", type=Path, required=True, help="result folder")
-    tim = sub.add_parser("timing", help="wall time against DOFs on a ladder of resolutions")
-    tim.add_argument("scene")
-    tim.add_argument("--method", nargs="+", default=["all"], choices=[*methods.METHODS, "all"])
-    tim.add_argument("--degree", nargs="+", type=int, default=[1], choices=(1, 2))
-    tim.add_argument("--h", nargs="+", type=float, required=True)
-    tim.add_argument("--out", type=Path, required=True)
+    pap = sub.add_parser("paper", help="the paper's figures and an agreement table against a refined reference")
+    pap.add_argument("--scene", nargs="+", default=["A", "B", "C"], choices=["A", "B", "C"])
+    pap.add_argument("--ref-h", type=float, help="cell size of the P2 reference (default: a quarter of the scene's h)")
+    pap.add_argument("--out", type=Path, required=True)
+    clo = sub.add_parser("closed", help="closed-form cases on refinement ladders, with observed rates")
+    clo.add_argument("--case", nargs="+", default=list(CASES), choices=list(CASES))
+    _methods(clo)
+    clo.add_argument("--degree", nargs="+", type=int, default=[1, 2], choices=(1, 2))
+    clo.add_argument("--out", type=Path, required=True)
     eff = sub.add_parser("efficiency", help="error against run time, against a refined reference")
     eff.add_argument("scene")
-    eff.add_argument("--method", nargs="+", default=["all"], choices=[*methods.METHODS, "all"])
+    _methods(eff)
     eff.add_argument("--degree", nargs="+", type=int, default=[1], choices=(1, 2))
     eff.add_argument("--h", nargs="+", type=float, required=True)
     eff.add_argument("--ref-h", type=float, required=True, help="element size of the P2 reference")
     eff.add_argument("--exclude", type=float, help="distance from corners and Γ's ends left out (default 0.1 L)")
     eff.add_argument("--out", type=Path, required=True)
+    swp = sub.add_parser("sweeps", help="stiff and extreme cases: error, condition and outcome")
+    swp.add_argument("--sweep", nargs="+", choices=[s.name for s in sweeps()], help="default: all")
+    _methods(swp)
+    swp.add_argument("--degree", type=int, default=1, choices=(1, 2))
+    swp.add_argument("--out", type=Path, required=True)
+    stu = sub.add_parser("study", help="one input varied (geometry through gmsh, h, springs, materials)")
+    stu.add_argument("scene")
+    stu.add_argument("--param", required=True, choices=list(PARAMETERS))
+    stu.add_argument("--values", nargs="+", type=float, required=True)
+    _methods(stu)
+    stu.add_argument("--degree", type=int, default=1, choices=(1, 2))
+    stu.add_argument("--h", type=float, help="resolution (default: the scene's h)")
+    stu.add_argument("--cell", choices=("quad", "triangle", "gmsh"), help="XFEM background cells (default quad)")
+    stu.add_argument("--out", type=Path, required=True)
+    rep = sub.add_parser("report", help="every verification, gathered into DIR/report.md")
+    rep.add_argument("out", type=Path)
+    rep.add_argument("--quick", action="store_true", help="short ladders: a smoke test of the whole chain")
+    tim = sub.add_parser("timing", help="wall time against DOFs on a ladder of resolutions")
+    tim.add_argument("scene")
+    _methods(tim)
+    tim.add_argument("--degree", nargs="+", type=int, default=[1], choices=(1, 2))
+    tim.add_argument("--h", nargs="+", type=float, required=True)
+    tim.add_argument("--out", type=Path, required=True)
     return parser
 
 
@@ -75,28 +114,57 @@ def _configure_logging() -> None:
     ours.propagate = False
 
 
+def _check_sizes(args) -> None:
+    for name in ("h", "ref_h"):
+        value = getattr(args, name, None)
+        for h in value if isinstance(value, list) else [value]:
+            if h is not None and not h > 0:
+                raise ContactError(f"--{name.replace('_', '-')}: must be > 0 (got {h})")
+
+
+def _dispatch(args, argv) -> None:
+    from .agreement import default_exclusion
+
+    cmd = args.command
+    if cmd == "run":
+        from .run import run
+        run(args.scene, args.method, args.out, h=args.h, degree=args.degree, paper=args.paper, xdmf=args.xdmf,
+            petsc_options=dict(args.petsc_option), dmax=args.dmax, nodes_file=args.nodes, cell=args.cell, argv=argv)
+    elif cmd == "paper":
+        from .paper import paper
+        paper(args.out, tuple(args.scene), args.ref_h, argv=argv)
+    elif cmd == "closed":
+        from .convergence import closed
+        variants = [(m, d) for m in methods.expand(args.method) for d in args.degree]
+        closed(args.out, tuple(args.case), variants, argv=argv)
+    elif cmd == "efficiency":
+        from .efficiency import efficiency
+        scene = load_scene(args.scene)
+        exclude = args.exclude if args.exclude is not None else default_exclusion(scene)
+        variants = [(m, d) for m in methods.expand(args.method) for d in args.degree]
+        efficiency(args.scene, variants, args.h, args.ref_h, exclude, args.out, argv=argv)
+    elif cmd == "sweeps":
+        from .sweeps import run_sweeps
+        run_sweeps(args.out, args.sweep, methods.expand(args.method), args.degree, argv=argv)
+    elif cmd == "study":
+        from .study import study
+        study(args.scene, args.param, args.values, args.method, args.out, degree=args.degree, h=args.h,
+              cell=args.cell, argv=argv)
+    elif cmd == "report":
+        from .report import report
+        report(args.out, args.quick, argv=argv)
+    else:
+        from .timing import timing
+        timing(args.scene, args.method, args.degree, args.h, args.out, argv=argv)
+
+
 def main(argv=None) -> int:
     argv = sys.argv[1:] if argv is None else argv
     args = _parser().parse_args(argv)
     _configure_logging()
-    from .efficiency import efficiency
-    from .run import run
-    from .timing import timing
-
     try:
-        for h in (args.h if isinstance(args.h, list) else [args.h]) + [getattr(args, "ref_h", None)]:
-            if h is not None and not h > 0:
-                raise ContactError(f"--h: must be > 0 (got {h})")
-        if args.command == "run":
-            run(args.scene, args.method, args.out, h=args.h, degree=args.degree, paper=args.paper,
-                xdmf=args.xdmf, petsc_options=dict(args.petsc_option), dmax=args.dmax,
-                nodes_file=args.nodes, cell=args.cell, argv=argv)
-        elif args.command == "timing":
-            timing(args.scene, args.method, args.degree, args.h, args.out, argv=argv)
-        else:
-            scene = load_scene(args.scene)
-            exclude = args.exclude if args.exclude is not None else 0.1 * scene.length_scale
-            efficiency(args.scene, args.method, args.degree, args.h, args.ref_h, exclude, args.out, argv=argv)
+        _check_sizes(args)
+        _dispatch(args, argv)
     except ContactError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2

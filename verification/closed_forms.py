@@ -11,9 +11,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from contactcore import (CircleInterface, Disc, LineInterface, LinearLaw, LineProfile, Material, Pin, Pressure,
-                         Rectangle, Scene, Traction)
+from contactcore import (CircleInterface, Disc, InterfaceProfile, LineInterface, LinearLaw, LineProfile, Material,
+                         Pin, Pressure, Rectangle, Scene, Support, Torque, Traction)
 from contactcore.elasticity import compliance, lame
+from contactcore.tolerances import GEOMETRY
 
 _ROT = np.array([[0.0, -1.0], [1.0, 0.0]])  # infinitesimal rotation generator
 
@@ -82,8 +83,8 @@ def interface_patch(angle_deg: float = 30.0, *, minus=Material(2e11, 0.3), plus=
     # both pins in the − body, on a parallel to Γ; q fixes the component
     # along which q − p is the longer, which determines the rotation
     p, q = (origin - 0.3 * n - 0.2 * t, origin - 0.3 * n + 0.2 * t) if pins is None else map(np.asarray, pins)
-    if max(n @ (p - origin), n @ (q - origin)) >= 0:
-        raise ValueError("interface_patch: both pins must lie in the − body")
+    if max(n @ (p - origin), n @ (q - origin)) > -GEOMETRY:
+        raise ValueError("interface_patch: both pins must lie in the − body, off Γ")
     d, ed = q - p, eps[0] @ (q - p)
     q_fix = "y" if abs(d[0]) >= abs(d[1]) else "x"
     w_minus = -ed[1] / d[0] if q_fix == "y" else ed[0] / d[1]
@@ -158,3 +159,67 @@ def pressurised_rod(*, a: float = 0.4, b: float = 1.0, p: float = 1e6, kN: float
         profiles=(LineProfile("radial", (0.0, 0.0), (b, 0.0), ("sxx", "syy", "ux")),),
     ).validated()
     return PressurisedRod(scene, coeffs, ((lm, mm), (lp, mp)))
+
+
+@dataclass
+class TwistedRod:
+    """A rod of radius ``a`` twisted by a torque ``T`` inside a disc of radius
+    ``b`` clamped on its rim, bonded by tangential springs ``k_T`` (a
+    tangential jump on a curved Γ; scene B's load on a disc).
+
+    Only ``u_θ(r)`` is non-zero and ``σ_rθ = μ(u_θ' − u_θ/r)`` the only
+    stress (polar coordinates).  The rod carries scene B's body force
+    ``b_θ = (T/J) r``, ``J = πa⁴/2``, so ``dσ_rθ/dr + 2σ_rθ/r + b_θ = 0``
+    gives ``u_θ = A r + D r³`` with ``D = −T/(8 μ⁻ J)``; around it
+    ``u_θ = B r + C/r``, ``σ_rθ = −2μ⁺C/r²``.  Shear balance on Γ fixes C,
+    the clamp ``u_θ(b) = 0`` fixes B, and the spring fixes the rod's rigid
+    rotation A: with ``n = e_r``, ``t = −e_θ`` (SCENES.md) the traction on +
+    is ``−t_T t = t_T e_θ = −σ_rθ e_θ``, so ``σ_rθ(a) = k_T [[u_θ]]``.  The
+    exact t_N is zero and the mean of t_T is ``T/(2πa²)``.
+    """
+
+    scene: Scene
+    coeffs: np.ndarray  # A, D (rod), B, C (annulus)
+    shear: tuple[float, float]  # μ⁻, μ⁺
+
+    def _polar(self, x, bodies):
+        A, D, B, C = self.coeffs
+        r = np.maximum(np.hypot(x[:, 0], x[:, 1]), 1e-300)
+        rod = np.asarray(bodies) == 0
+        ut = np.where(rod, A * r + D * r ** 3, B * r + C / r)
+        srt = np.where(rod, 2 * self.shear[0] * D * r ** 2, -2 * self.shear[1] * C / r ** 2)
+        return r, ut, srt
+
+    def displacement(self, points, bodies) -> np.ndarray:
+        x = np.asarray(points, float)[:, :2]
+        r, ut, _ = self._polar(x, bodies)
+        return np.column_stack([-x[:, 1], x[:, 0]]) * (ut / r)[:, None]
+
+    def stress(self, points, bodies) -> np.ndarray:
+        x = np.asarray(points, float)[:, :2]
+        r, _, srt = self._polar(x, bodies)
+        c, s = x[:, 0] / r, x[:, 1] / r
+        return np.column_stack([-2 * s * c * srt, 2 * s * c * srt, (c * c - s * s) * srt])
+
+
+def twisted_rod(*, a: float = 0.4, b: float = 1.0, torque: float = 1e4, kN: float = 1e12, kT: float = 1e10,
+                rod=Material(2e11, 0.3), matrix=Material(2e10, 0.2), plane: str = "stress") -> TwistedRod:
+    """The closed form of :class:`TwistedRod` and its scene (scene B's
+    materials and springs, a clamped circular rim)."""
+    mm, mp = lame(rod.E, rod.nu, plane)[1], lame(matrix.E, matrix.nu, plane)[1]
+    D = -torque / (8 * mm * np.pi * a ** 4 / 2)
+    C = -mm * D * a ** 4 / mp
+    B = -C / b ** 2
+    A = (B * a + C / a - D * a ** 3 - 2 * mm * D * a ** 2 / kT) / a
+    scene = Scene(
+        name="twisted_rod", title="rod twisted in a clamped disc (tangential jump on a circle)", plane=plane,
+        domain=Disc((0.0, 0.0), b), interface=CircleInterface((0.0, 0.0), a),
+        materials={"minus": rod, "plus": matrix}, law=LinearLaw(kN, kT),
+        supports=(Support("outer", "xy"),), loads=(Torque("minus", torque),),
+        profiles=(InterfaceProfile("gamma", ("tN", "tT", "gT")),),
+    ).validated()
+    return TwistedRod(scene, np.array([A, D, B, C]), (mm, mp))
+
+
+#: The closed-form cases of the verification, by name.
+CLOSED_FORMS = {"patch": interface_patch, "pressurised_rod": pressurised_rod, "twisted_rod": twisted_rod}

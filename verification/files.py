@@ -11,6 +11,7 @@ import io
 import json
 import os
 import platform
+import re
 import shutil
 import sys
 import tempfile
@@ -99,3 +100,37 @@ def provenance(argv: list[str]) -> dict:
     """What produced a result folder: the command, the machine, the versions."""
     return {"command": " ".join(["python -m verification", *argv]), "cwd": os.getcwd(),
             "host": platform.node(), "versions": versions()}
+
+
+def cell(value) -> str:
+    """A table cell: floats to 3 significant digits (small or large ones in
+    exponent form), anything else as text."""
+    if isinstance(value, float):
+        if value != value:
+            return "nan"
+        return f"{value:.2e}" if value != 0 and not 1e-2 <= abs(value) < 1e4 else f"{value:.3g}"
+    return str(value)
+
+
+def markdown_table(rows: list[dict], columns: list[str], headers: list[str] | None = None) -> str:
+    """A Markdown table of ``rows`` (dicts) with ``columns`` in order."""
+    head = headers or columns
+    lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+    lines += ["| " + " | ".join(cell(r.get(c, "")) for c in columns) + " |" for r in rows]
+    return "\n".join(lines) + "\n"
+
+
+def write_csv(path: Path, rows: list[dict], columns: list[str]) -> Path:
+    """``rows`` (dicts) as CSV with ``columns`` in order, full precision."""
+    buf = io.StringIO()
+    writer = csv.writer(buf, lineterminator="\n")
+    writer.writerow(columns)
+    writer.writerows([[repr(r.get(c, "")) if isinstance(r.get(c), float) else r.get(c, "") for c in columns]
+                      for r in rows])
+    return write_text(path, buf.getvalue())
+
+
+def relink(markdown: str, folder: str) -> str:
+    """``markdown`` written in ``folder``, with its relative image and file
+    links made relative to the folder above (for a report that gathers it)."""
+    return re.sub(r"\]\((?!https?:|/)([^)]+)\)", lambda m: f"]({folder}/{m.group(1)})", markdown)

@@ -252,6 +252,7 @@ def solve(scene: Scene, h: float | None = None, *, degree: int = 1, paper: bool 
                                      estimate_condition=estimate_condition, what=f"scene {scene.name} (fe)")
     uh.x.scatter_forward()
     report.increments = scene.increments
+    report.warnings += scene.interface_warnings(h, fitted=True)
     disps, stresses = _stress_functions(scene, fm, uh, degree)
     locator = BodyCellLocator(fm.mesh, [fm.cells_of(b) for b in BODIES])
     A.destroy()

@@ -1,0 +1,89 @@
+"""``python -m verification report DIR [--quick]``: every verification, one file.
+
+Runs, each into its own folder under DIR, the paper's figures
+(:mod:`~verification.paper`), the closed forms (:mod:`~verification.convergence`),
+error against run time on scenes A, B and C (:mod:`~verification.efficiency`),
+the stiff and extreme sweeps (:mod:`~verification.sweeps`) and one parameter
+study per scene (:mod:`~verification.study`), then gathers their sections
+into ``DIR/report.md`` with the wall time of each part.  ``--quick`` runs
+every part on short ladders (a smoke test of the whole chain, minutes not
+tens of minutes); its figures are not the report's.
+"""
+from __future__ import annotations
+
+import logging
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+from contactcore import load_scene
+
+from . import files
+from .agreement import default_exclusion
+from .convergence import CASES, closed
+from .efficiency import LADDERS, REFERENCE_H, VARIANTS, efficiency
+from .paper import paper
+from .study import study
+from .sweeps import run_sweeps
+
+log = logging.getLogger("verification")
+
+
+@dataclass(frozen=True)
+class Plan:
+    """What the report runs: ladders, variants, sweeps and studies."""
+
+    ladders: dict
+    reference_h: dict
+    variants: tuple
+    closed_cases: tuple
+    closed_variants: tuple
+    sweeps: tuple | None  # None: all
+    paper_ref_h: float | None
+    studies: tuple  # (scene, param, values, degree)
+
+
+FULL = Plan(ladders=LADDERS, reference_h=REFERENCE_H, variants=VARIANTS, closed_cases=tuple(CASES),
+            closed_variants=VARIANTS, sweeps=None, paper_ref_h=None,
+            studies=(("A", "angle", (-30.0, -15.0, 0.0, 15.0, 30.0), 1),
+                     ("B", "radius", (0.15, 0.2, 0.25, 0.3, 0.35, 0.4), 1),
+                     ("C", "kN", (1e8, 1e9, 1e10, 1e11, 1e12), 1)))
+QUICK = Plan(ladders={"A": (0.2, 0.1), "B": (0.2, 0.1), "C": (0.2, 0.1)},
+             reference_h={"A": 0.05, "B": 0.1, "C": 0.1}, variants=(("fe", 1), ("xfem", 1), ("efgm", 1)),
+             closed_cases=("patch", "twisted_rod"), closed_variants=(("fe", 1), ("xfem", 1), ("efgm", 1)),
+             sweeps=("cut", "false_tN"), paper_ref_h=0.1,
+             studies=(("B", "radius", (0.2, 0.3), 1),))
+
+
+def report(out: Path, quick: bool = False, argv=()) -> Path:
+    """Run every part into ``out`` and write ``out/report.md``."""
+    plan = QUICK if quick else FULL
+    out = Path(out)
+    sections, times = [], {}
+
+    def part(name: str, folder: str, run) -> None:
+        log.info("report: %s", name)
+        start = time.perf_counter()
+        sections.append(files.relink(run(out / folder), folder))
+        times[name] = time.perf_counter() - start
+
+    part("paper", "paper", lambda d: paper(d, ref_h=plan.paper_ref_h))
+    part("closed forms", "closed", lambda d: closed(d, plan.closed_cases, plan.closed_variants))
+    for scene in plan.ladders:
+        part(f"efficiency {scene}", f"efficiency/{scene}",
+             lambda d, s=scene: efficiency(s, plan.variants, plan.ladders[s], plan.reference_h[s],
+                                           default_exclusion(load_scene(s)), d))
+    part("sweeps", "sweeps", lambda d: run_sweeps(d, plan.sweeps))
+    for scene, param, values, degree in plan.studies:
+        folder = f"study/{scene}-{param}"
+        part(f"study {scene} {param}", folder,
+             lambda d, s=scene, p=param, v=values, k=degree: study(s, p, list(v), ["all"], d, degree=k))
+    head = ["# Verification report", "", f"Command: `{files.provenance(list(argv))['command']}`"
+            + (" (quick: short ladders, not the report's figures)" if quick else ""), "",
+            "| part | wall time (s) |", "|---|---|"]
+    head += [f"| {name} | {t:.1f} |" for name, t in times.items()]
+    head += [f"| total | {sum(times.values()):.1f} |", ""]
+    path = files.write_text(out / "report.md", "\n".join(head) + "\n" + "\n\n".join(sections) + "\n")
+    files.write_json(out / "run.json", {**files.provenance(list(argv)), "quick": quick, "times": times})
+    return path
+
