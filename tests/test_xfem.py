@@ -1,5 +1,6 @@
 """XFEM: assembly against dolfinx, enrichment, patch tests (including Γ on
-nodes, along edges and leaving slivers), convergence, agreement."""
+nodes, along edges and leaving slivers), convergence (agreement:
+test_agreement.py)."""
 import dataclasses
 
 import numpy as np
@@ -10,12 +11,12 @@ from dolfinx.fem import petsc as fem_petsc
 from petsc4py import PETSc
 
 import tolerances as tol
-from contactcore import (CircleInterface, DiscretisationError, LevelSetInterface, LineInterface, load_scene,
-                         sample_profiles)
+from contactcore import CircleInterface, DiscretisationError, LevelSetInterface, LineInterface, load_scene
+from contactcore.tolerances import ACCURATE_FLOOR
 from contactcore.elasticity import voigt_matrix
-from verification.agreement import agreements
 from verification.closed_forms import interface_patch, pressurised_rod
 from verification.norms import max_errors, observed_rate
+from verification.sweeps import horizontal_patch
 from xdolfinx import xfem
 from xdolfinx.conforming import sigma
 
@@ -87,15 +88,9 @@ def test_interface_patch_is_exact(angle, degree, cell):
     assert eu <= tol.XFEM_PATCH and es <= tol.XFEM_PATCH * 10, (eu, es)
 
 
-def _horizontal_patch(y):
-    patch = interface_patch(0.0, pins=PINS[0.0])
-    scene = patch.scene.with_changes(interface=LineInterface((0.5, y), (0.0, 1.0)))
-    return dataclasses.replace(patch, scene=scene, origin=np.array([0.5, y]))
-
-
 @pytest.mark.parametrize("cell", ["quad", "triangle"])
 def test_gamma_through_nodes_and_along_edges(cell):
-    eu, _, r = _patch_error(_horizontal_patch(0.5), cell=cell)
+    eu, _, r = _patch_error(horizontal_patch(0.5), cell=cell)
     assert r.discretisation["cut_cells"] == 0 and r.discretisation["enriched_nodes"] == 11
     assert eu <= tol.XFEM_PATCH
 
@@ -104,12 +99,14 @@ def test_gamma_through_nodes_and_along_edges(cell):
 def test_slivers_keep_the_answer_and_the_conditioning(cell, record_property):
     """Cut fractions 1e-2 … 1e-10 of a cell: the answer stays at the patch
     level but for the sliver itself, and the condition estimate stays within
-    a factor 3 of the uncut mesh's, whatever the fraction."""
-    _, _, plain = _patch_error(_horizontal_patch(0.55), cell=cell)
+    a factor 3 of the uncut mesh's, whatever the fraction.  Where a node
+    is left unenriched and the error passes ACCURATE_FLOOR, the run says so."""
+    _, _, plain = _patch_error(horizontal_patch(0.55), cell=cell)
     conditions = []
     for fraction in (1e-2, 1e-4, 1e-6, 1e-8, 1e-10):
-        eu, _, r = _patch_error(_horizontal_patch(0.5 + fraction * 0.1), cell=cell)
+        eu, _, r = _patch_error(horizontal_patch(0.5 + fraction * 0.1), cell=cell)
         assert eu <= max(tol.XFEM_PATCH, 100 * fraction), (fraction, eu)
+        assert eu <= ACCURATE_FLOOR or any("slivers" in w for w in r.solver.warnings), (fraction, eu)
         conditions.append(r.solver.condition)
     record_property("sliver_conditions", conditions)
     assert max(conditions) <= 3 * plain.solver.condition, conditions
@@ -121,19 +118,6 @@ def test_curved_interface_converges(record_property):
     errs, rate = observed_rate(case.scene, case, lambda h: xfem.solve(case.scene, h, estimate_condition=False), hs)
     record_property("xfem_rod_rate", rate)
     assert rate >= 2.0 - tol.RATE_MARGIN, (rate, errs)
-
-
-@pytest.mark.parametrize("degree", [1, 2])
-@pytest.mark.parametrize("name", ["A", "B", "C"])
-def test_agrees_with_the_reference(name, degree):
-    from xdolfinx import conforming
-
-    scene = load_scene(name)
-    ours = {p.id: p for p in sample_profiles(scene, xfem.solve(scene, degree=degree).fields)}
-    ref = {p.id: p for p in sample_profiles(scene, conforming.solve(scene, degree=2).fields)}
-    bounds = {**tol.XFEM_AGREE[degree], "zero": tol.FALSE_TN[degree]}
-    for pid, q, kind, value in agreements(scene, ours, ref, 2 * scene.h):
-        assert value <= bounds[kind], (pid, q, kind, value)
 
 
 def test_gauss_rule_is_basix_gauss_legendre():

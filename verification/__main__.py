@@ -142,7 +142,7 @@ def _dispatch(args, argv) -> None:
         scene = load_scene(args.scene)
         exclude = args.exclude if args.exclude is not None else default_exclusion(scene)
         variants = [(m, d) for m in methods.expand(args.method) for d in args.degree]
-        efficiency(args.scene, variants, args.h, args.ref_h, exclude, args.out, argv=argv)
+        efficiency(args.scene, variants, {d: args.h for d in args.degree}, args.ref_h, exclude, args.out, argv=argv)
     elif cmd == "sweeps":
         from .sweeps import run_sweeps
         run_sweeps(args.out, args.sweep, methods.expand(args.method), args.degree, argv=argv)

@@ -1,0 +1,31 @@
+"""Cross-method agreement on the paper's scenes A, B and C, parametrised
+over the methods: each against the conforming P2 reference at the scene's
+default h, per quantity class, with the bounds of tolerances.AGREE."""
+import functools
+
+import pytest
+
+import tolerances as tol
+from contactcore import load_scene, sample_profiles
+from verification import methods
+from verification.agreement import agreements
+
+
+@functools.lru_cache(maxsize=None)
+def _reference(name):
+    scene = load_scene(name)
+    return {p.id: p for p in sample_profiles(scene, methods.solver("fe")(scene, degree=2).fields)}
+
+
+@pytest.mark.parametrize("method,degree", list(tol.AGREE))
+@pytest.mark.parametrize("name", ["A", "B", "C"])
+def test_agrees_with_the_reference(name, method, degree, record_property):
+    scene = load_scene(name)
+    result = methods.solver(method)(scene, degree=degree, estimate_condition=False)
+    ours = {p.id: p for p in sample_profiles(scene, result.fields)}
+    bounds = {**tol.AGREE[(method, degree)], "zero": tol.FALSE_TN[degree]}
+    rows = agreements(scene, ours, _reference(name), 2 * scene.h)
+    record_property("agreement", [(pid, q, kind, f"{v:.2e}") for pid, q, kind, v in rows])
+    assert {kind for *_, kind, _ in rows} >= {"interface", "interior"}
+    for pid, q, kind, value in rows:
+        assert value <= bounds[kind], (pid, q, kind, value)

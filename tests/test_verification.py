@@ -1,0 +1,145 @@
+"""The verification drivers: closed forms in every method, the outcomes of
+the stiff and extreme cases (no silently wrong answer), the warnings that
+make a stiff case 'warned', parameter studies that survive a failed point,
+and the whole report chain."""
+import csv
+
+import numpy as np
+import pytest
+
+import tolerances as tol
+from contactcore import LinearLaw, load_scene, sample_profile
+from contactcore.scene import InterfaceProfile
+from verification import methods
+from verification.__main__ import main
+from verification.closed_forms import pressurised_rod, twisted_rod
+from verification.norms import observed_rate
+from verification.outcomes import Attempt, accuracy_bound, classify
+from verification.sweeps import run_sweep, sweeps
+
+#: Ladders of the twisted rod, and the degree-1 rate each method must show.
+TWIST_H = {"fe": (0.2, 0.1, 0.05), "xfem": (0.2, 0.1, 0.05), "efgm": (0.1, 0.05, 0.025)}
+
+
+@pytest.mark.parametrize("method", list(methods.METHODS))
+def test_twisted_rod_closed_form(method, record_property):
+    """A tangential jump on a circle: rate 2 for every degree-1 method, the
+    torque balance ∫ t_T = T/(2πa²)·2πa and no normal traction."""
+    case = twisted_rod()
+    solve = methods.solver(method)
+    errs, rate = observed_rate(case.scene, case, lambda h: solve(case.scene, h, estimate_condition=False),
+                               np.array(TWIST_H[method]))
+    record_property("twisted_rod_errors", errs)
+    assert rate >= 2.0 - tol.RATE_MARGIN, (rate, errs)
+    a, torque = case.scene.interface.radius, case.scene.loads[0].torque
+    prof = sample_profile(case.scene, solve(case.scene, TWIST_H[method][-1]).fields,
+                          InterfaceProfile("g", ("tN", "tT"))).columns
+    mean_tt = torque / (2 * np.pi * a ** 2)
+    assert abs(np.mean(prof["tT"][:-1]) / mean_tt - 1) <= tol.TORQUE_BALANCE[1], np.mean(prof["tT"])
+    assert np.max(np.abs(prof["tN"])) <= tol.TWIST_FALSE_TN[method] * mean_tt
+
+
+def test_twisted_rod_is_the_exact_solution():
+    """The closed form itself: equilibrium in the rod (with the torque's body
+    force), the clamp, and the spring law on Γ, checked by finite differences."""
+    case = twisted_rod()
+    A, D, B, C = case.coeffs
+    mm, mp = case.shear
+    a, b = case.scene.interface.radius, case.scene.domain.radius
+    kT = case.scene.law.kT
+    torque = case.scene.loads[0].torque
+    r, d = 0.2, 1e-5
+    srt = lambda r, body: case.stress(np.array([[r, 0.0]]), np.array([body]))[0, 2]  # σ_rθ = σxy on the x axis
+    div = (srt(r + d, 0) - srt(r - d, 0)) / (2 * d) + 2 * srt(r, 0) / r
+    assert abs(div + torque / (np.pi * a ** 4 / 2) * r) <= 1e-6 * abs(div)
+    assert abs(case.displacement(np.array([[b, 0.0]]), np.array([1]))).max() <= 1e-15
+    jump = (case.displacement(np.array([[a, 0.0]]), np.array([1])) - case.displacement(np.array([[a, 0.0]]),
+                                                                                       np.array([0])))[0, 1]
+    assert abs(srt(a, 1) - kT * jump) <= 1e-9 * abs(srt(a, 1)) and abs(srt(a, 0) - srt(a, 1)) <= 1e-9 * abs(srt(a, 0))
+
+
+def test_outcomes():
+    """refused < warned < accurate < wrong, by the rules of outcomes.py."""
+    class R:  # the least of a Result that classify reads
+        def __init__(self, warnings):
+            self.solver = type("S", (), {"warnings": warnings})()
+    assert classify(Attempt(None, "singular"), float("nan"), 1.0) == "refused"
+    assert classify(Attempt(R(["ill-conditioned"])), 10.0, 1.0) == "warned"
+    assert classify(Attempt(R([])), 0.5, 1.0) == "accurate"
+    assert classify(Attempt(R([])), 2.0, 1.0) == "wrong"
+    assert classify(Attempt(R([])), float("nan"), 1.0) == "wrong"
+    assert accuracy_bound(1e-3) == 1e-2 and accuracy_bound(0.0) == 1e-6
+
+
+@pytest.mark.parametrize("name", ["cut", "kN_rod", "false_tN"])
+def test_no_silently_wrong_answer(name, record_property):
+    """Slivers down to 1e-10, penalty up to 1e8 E/h on a curved Γ, k_N/k_T
+    up to 1e4 on scene B: every answer is accurate, warned or refused."""
+    sweep = next(s for s in sweeps() if s.name == name)
+    rows = run_sweep(sweep)
+    record_property("outcomes", [(r["method"], r["value"], r["outcome"], f"{r['error']:.2e}") for r in rows])
+    assert not [r for r in rows if r["outcome"] == "wrong"]
+    assert any(r["outcome"] == "accurate" for r in rows)
+
+
+def test_stiff_springs_on_a_curved_gamma_warn_unfitted_methods_only():
+    soft, stiff = pressurised_rod(kN=2e12), pressurised_rod(kN=2e17)  # α = 1 and 1e5 at h = 0.1
+    for method in methods.METHODS:
+        solve = methods.solver(method)
+        assert not any("penalty locking" in w for w in solve(soft.scene, 0.1).solver.warnings)
+        warned = any("penalty locking" in w for w in solve(stiff.scene, 0.1).solver.warnings)
+        assert warned == (method != "fe"), method
+
+
+def test_scene_b_at_the_paper_resolution_warns_of_false_normal_traction():
+    """(k_N/k_T)(h/2R)² = 4 on the paper's grids; 1 at the default h."""
+    scene = load_scene("B")
+    for method in methods.METHODS:
+        solve = methods.solver(method)
+        assert any("false t_N" in w for w in solve(scene, paper=True).solver.warnings), method
+        assert not solve(scene.with_changes(law=LinearLaw(1e11, 1e10)), paper=True).solver.warnings, method
+
+
+def test_study_goes_on_after_a_failed_point(tmp_path):
+    """Γ's radius through gmsh: 0.2 and 0.3 solve, 1.5 misses the domain and
+    is reported; the study ends normally with a table and a plot."""
+    assert main(["study", "B", "--param", "radius", "--values", "0.2", "1.5", "0.3", "--method", "fe", "efgm",
+                 "--h", "0.05", "--out", str(tmp_path)]) == 0
+    with open(tmp_path / "study.csv") as fh:
+        rows = list(csv.DictReader(fh))
+    assert [(r["value"], r["status"]) for r in rows] == [
+        ("0.2", "ok"), ("0.2", "ok"), ("1.5", "failed"), ("1.5", "failed"), ("0.3", "ok"), ("0.3", "ok")]
+    assert "interface" in rows[2]["message"]
+    # a larger rod under the same torque: a smaller mean shear, T/(2πR²)
+    means = {(r["value"], r["method"]): float(r["mean_tT"]) for r in rows if r["status"] == "ok"}
+    for m in ("fe", "efgm"):
+        assert means[("0.3", m)] / means[("0.2", m)] == pytest.approx((0.2 / 0.3) ** 2, rel=tol.TORQUE_BALANCE[1])
+    assert (tmp_path / "study.png").read_bytes()[:4] == b"\x89PNG"
+
+
+def test_study_rejects_a_parameter_that_does_not_apply(tmp_path, capsys):
+    assert main(["study", "A", "--param", "radius", "--values", "0.2", "--out", str(tmp_path)]) == 2
+    assert "needs a circular interface" in capsys.readouterr().err
+    assert not (tmp_path / "study.csv").exists()
+
+
+def test_quick_report_runs_the_whole_chain(tmp_path):
+    """paper, closed forms, efficiency, sweeps and a study, into one file."""
+    assert main(["report", str(tmp_path), "--quick"]) == 0
+    text = (tmp_path / "report.md").read_text()
+    for heading in ("## The paper's figures", "## Closed forms", "## Error against run time, scene C",
+                    "## Stiff and extreme cases", "## Study: scene B, radius"):
+        assert heading in text
+    for fig in ("fig08_A1", "fig18_B4", "fig23_C2", "extra_C4"):
+        assert (tmp_path / "paper" / "figures" / f"{fig}.png").exists()
+    assert "gets there soonest" in text
+    with open(tmp_path / "paper" / "agreement.csv") as fh:
+        rows = list(csv.DictReader(fh))
+    assert len({(r["scene"], r["method"]) for r in rows}) == 9  # three methods on each of A, B and C
+    assert not list(tmp_path.rglob(".*"))  # no temporary file left behind
+
+
+@pytest.mark.slow
+def test_every_sweep_has_no_silently_wrong_answer():
+    for sweep in sweeps():
+        assert not [r for r in run_sweep(sweep) if r["outcome"] == "wrong"], sweep.name
