@@ -82,7 +82,7 @@ COLUMNS = ["case", "method", "degree", "h", "dofs", "total", "error", "rate", "m
 
 
 def _plot(path: Path, name: str, rows: list[dict]) -> None:
-    from .plots import plt
+    from .plots import plt, save
 
     fig, ax = plt.subplots(figsize=(6, 4.2))
     for key in dict.fromkeys((r["method"], r["degree"]) for r in rows):
@@ -94,10 +94,7 @@ def _plot(path: Path, name: str, rows: list[dict]) -> None:
     ax.set_title(f"{name}: error against h")
     ax.grid(which="both", alpha=0.3)
     ax.legend()
-    fig.tight_layout()
-    with files.atomic_path(path) as tmp:
-        fig.savefig(tmp, dpi=110, format="png")
-    plt.close(fig)
+    save(fig, path)
 
 
 def markdown(rows: list[dict]) -> str:

@@ -102,7 +102,7 @@ def _measure(scene, name: str, degree: int, h: float, ref: dict, exclude: float)
 
 
 def _plot(path: Path, scene_name: str, rows: list[dict]) -> None:
-    from .plots import plt
+    from .plots import plt, save
 
     fig, ax = plt.subplots(figsize=(6.5, 4.5))
     for key in dict.fromkeys((r["method"], r["degree"]) for r in rows):
@@ -113,7 +113,4 @@ def _plot(path: Path, scene_name: str, rows: list[dict]) -> None:
     ax.set_title(f"Scene {scene_name}: error against run time")
     ax.grid(which="both", alpha=0.3)
     ax.legend()
-    fig.tight_layout()
-    with files.atomic_path(path) as tmp:
-        fig.savefig(tmp, dpi=110, format="png")
-    plt.close(fig)
+    save(fig, path)

@@ -30,6 +30,11 @@ def plot_profile(path: Path, title: str, runs: dict[str, ProfileData]) -> Path:
         ax.legend()
     axes[-1, 0].set_xlabel(XLABEL.get(first.parameter, "s"))
     axes[0, 0].set_title(f"{first.id}: {title}")
+    return save(fig, path)
+
+
+def save(fig, path: Path) -> Path:
+    """Lay out, write atomically as PNG, and close a figure."""
     fig.tight_layout()
     with atomic_path(Path(path)) as tmp:
         fig.savefig(tmp, dpi=110, format="png")

@@ -156,7 +156,7 @@ def markdown(scene_name: str, param: str, rows: list[dict]) -> str:
 
 
 def _plot(path: Path, scene_name: str, param: str, rows: list[dict]) -> None:
-    from .plots import UNITS, plt
+    from .plots import UNITS, plt, save
 
     fig, axes = plt.subplots(2, 2, figsize=(9, 6.5), squeeze=False)
     values = [r["value"] for r in rows]
@@ -173,7 +173,4 @@ def _plot(path: Path, scene_name: str, param: str, rows: list[dict]) -> None:
         ax.grid(alpha=0.3)
         ax.legend(fontsize=8)
     fig.suptitle(f"Scene {scene_name}: interface response against {param}")
-    fig.tight_layout()
-    with files.atomic_path(path) as tmp:
-        fig.savefig(tmp, dpi=110, format="png")
-    plt.close(fig)
+    save(fig, path)

@@ -125,18 +125,12 @@ def _springs(build, which: str, h: float = H):
     return cases
 
 
-def _contrast_patch():
+def _contrasts(build, minus: str, plus: str, nu_plus: float):
+    """Cases of ``build`` with the + material's E⁺ = r E⁻ (``minus`` and
+    ``plus``: the keyword names of the two materials in ``build``)."""
     out = []
     for r in CONTRASTS:
-        c = _patch(minus=Material(2e11, 0.3), plus=Material(2e11 * r, 0.2))
-        out.append(Case(r, c.scene, c))
-    return out
-
-
-def _contrast_rod():
-    out = []
-    for r in CONTRASTS:
-        c = pressurised_rod(rod=Material(2e11, 0.3), matrix=Material(2e11 * r, 0.25))
+        c = build(**{minus: Material(2e11, 0.3), plus: Material(2e11 * r, nu_plus)})
         out.append(Case(r, c.scene, c))
     return out
 
@@ -183,9 +177,11 @@ def sweeps() -> list[Sweep]:
               lambda: _springs(pressurised_rod, "kN"), nominal=1.0),
         Sweep("kT_rod", "α (k_T = α E/h)", "tangential spring, twisted rod (curved Γ, closed form)",
               lambda: _springs(twisted_rod, "kT"), nominal=1.0),
-        Sweep("contrast_patch", "E⁺/E⁻", "material contrast, inclined patch (exact)", _contrast_patch,
+        Sweep("contrast_patch", "E⁺/E⁻", "material contrast, inclined patch (exact)",
+              lambda: _contrasts(_patch, "minus", "plus", 0.2),
               nominal=1.0),
-        Sweep("contrast_rod", "E⁺/E⁻", "material contrast, pressurised rod (closed form)", _contrast_rod,
+        Sweep("contrast_rod", "E⁺/E⁻", "material contrast, pressurised rod (closed form)",
+              lambda: _contrasts(pressurised_rod, "rod", "matrix", 0.25),
               nominal=1.0),
         Sweep("cut", "f (Γ at y = 0.5 + f h)", "slivers, Γ through nodes and along edges (patch, exact)",
               _cuts, nominal=0.1, logx=False),
@@ -244,7 +240,7 @@ COLUMNS = ["sweep", "method", "degree", "value", "error", "bound", "outcome", "c
 
 
 def _plot(path: Path, sweep: Sweep, rows: list[dict]) -> None:
-    from .plots import plt
+    from .plots import plt, save
 
     fig, ax = plt.subplots(figsize=(6.5, 4.2))
     values = [r["value"] for r in rows]
@@ -269,10 +265,7 @@ def _plot(path: Path, sweep: Sweep, rows: list[dict]) -> None:
     ax.set_title(f"{sweep.name}: {sweep.what}\n(o accurate, □ warned, x refused, * wrong)", fontsize=9)
     ax.grid(which="both", alpha=0.3)
     ax.legend()
-    fig.tight_layout()
-    with files.atomic_path(path) as tmp:
-        fig.savefig(tmp, dpi=110, format="png")
-    plt.close(fig)
+    save(fig, path)
 
 
 def markdown(rows: list[dict], selected: list[Sweep]) -> str:
