@@ -28,6 +28,7 @@ from . import files, methods
 from .closed_forms import interface_patch, pressurised_rod, twisted_rod
 from .norms import l2_error
 from .outcomes import attempt
+from .plots import loglog_by_variant
 from .sweeps import PATCH_PINS
 
 log = logging.getLogger("verification")
@@ -81,22 +82,6 @@ def run_case(name: str, variants=VARIANTS) -> list[dict]:
 COLUMNS = ["case", "method", "degree", "h", "dofs", "total", "error", "rate", "message"]
 
 
-def _plot(path: Path, name: str, rows: list[dict]) -> None:
-    from .plots import plt, save
-
-    fig, ax = plt.subplots(figsize=(6, 4.2))
-    for key in dict.fromkeys((r["method"], r["degree"]) for r in rows):
-        pts = [(r["h"], r["error"]) for r in rows if (r["method"], r["degree"]) == key and "error" in r]
-        if pts:
-            ax.loglog(*zip(*pts), "o-", label=f"{key[0]} p{key[1]}")
-    ax.set_xlabel("h (m)")
-    ax.set_ylabel("relative L2 error of u")
-    ax.set_title(f"{name}: error against h")
-    ax.grid(which="both", alpha=0.3)
-    ax.legend()
-    save(fig, path)
-
-
 def markdown(rows: list[dict]) -> str:
     """The closed forms' section: the rates, then every run."""
     md = ["## Closed forms", "", "Relative L2 displacement error on the exact geometry; rate = fitted slope of "
@@ -117,7 +102,8 @@ def closed(out: Path, cases=tuple(CASES), variants=VARIANTS, argv=()) -> str:
     rows = []
     for name in cases:
         mine = run_case(name, variants)
-        _plot(Path(out) / f"{name}.png", name, mine)
+        loglog_by_variant(Path(out) / f"{name}.png", mine, "h", "error", "h (m)", "relative L2 error of u",
+                          f"{name}: error against h")
         rows += mine
     files.write_csv(Path(out) / "closed.csv", rows, COLUMNS)
     text = markdown(rows)

@@ -21,6 +21,7 @@ from contactcore import load_scene, sample_profiles
 
 from . import files, methods
 from .agreement import agreements
+from .plots import loglog_by_variant
 
 log = logging.getLogger("verification")
 
@@ -77,7 +78,8 @@ def efficiency(scene_name: str, variants, ladders: dict, ref_h: float, exclude: 
             rows.append(_measure(scene, name, degree, h, ref, exclude))
     out = Path(out)
     files.write_csv(out / "efficiency.csv", rows, COLUMNS)
-    _plot(out / "efficiency.png", scene.name, rows)
+    loglog_by_variant(out / "efficiency.png", rows, "total", "error", "total wall time (s)",
+                      "worst profile error (relative RMS)", f"Scene {scene.name}: error against run time")
     text = (f"## Error against run time, scene {scene.name}\n\n"
             f"Reference: fe P2, h = {ref_h:g} ({ref_dofs} DOFs). Error: worst relative RMS difference over "
             f"the profiles, samples within {exclude:.3g} m of corners and of the ends of Γ left out. Times in s, "
@@ -99,18 +101,3 @@ def _measure(scene, name: str, degree: int, h: float, ref: dict, exclude: float)
     log.info("%s p%d h=%g: %d DOFs, %.2f s, worst error %.2e (%s)", name, degree, h, res.dofs, t.total, err, where)
     return {"method": name, "degree": degree, "h": h, "dofs": res.dofs, "mesh": t.mesh, "assembly": t.assembly,
             "solve": t.solve, "total": t.total, "error": err, "worst": where}
-
-
-def _plot(path: Path, scene_name: str, rows: list[dict]) -> None:
-    from .plots import plt, save
-
-    fig, ax = plt.subplots(figsize=(6.5, 4.5))
-    for key in dict.fromkeys((r["method"], r["degree"]) for r in rows):
-        pts = [(r["total"], r["error"]) for r in rows if (r["method"], r["degree"]) == key]
-        ax.loglog(*zip(*pts), "o-", label=f"{key[0]} (p{key[1]})")
-    ax.set_xlabel("total wall time (s)")
-    ax.set_ylabel("worst profile error (relative RMS)")
-    ax.set_title(f"Scene {scene_name}: error against run time")
-    ax.grid(which="both", alpha=0.3)
-    ax.legend()
-    save(fig, path)

@@ -40,3 +40,18 @@ def save(fig, path: Path) -> Path:
         fig.savefig(tmp, dpi=110, format="png")
     plt.close(fig)
     return Path(path)
+
+
+def loglog_by_variant(path: Path, rows: list[dict], x: str, y: str, xlabel: str, ylabel: str, title: str) -> Path:
+    """``rows[y]`` against ``rows[x]``, log-log, one line per (method, degree)."""
+    fig, ax = plt.subplots(figsize=(6.5, 4.5))
+    for key in dict.fromkeys((r["method"], r["degree"]) for r in rows):
+        pts = [(r[x], r[y]) for r in rows if (r["method"], r["degree"]) == key and y in r]
+        if pts:
+            ax.loglog(*zip(*pts), "o-", label=f"{key[0]} p{key[1]}")
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)
+    ax.grid(which="both", alpha=0.3)
+    ax.legend()
+    return save(fig, path)
