@@ -14,6 +14,7 @@ saying which method reaches a common error level soonest) and
 """
 from __future__ import annotations
 
+import gc
 import logging
 from pathlib import Path
 
@@ -68,7 +69,8 @@ def efficiency(scene_name: str, variants, ladders: dict, ref_h: float, exclude: 
     ref = {p.id: p for p in sample_profiles(scene, reference.fields)}
     ref_dofs = reference.dofs
     log.info("reference: fe P2 h=%g, %d DOFs, %.1f s", ref_h, ref_dofs, reference.timings.total)
-    del reference  # its mesh and fields: memory the ladder needs
+    del reference  # its mesh, fields and factorisation: memory the ladder needs
+    gc.collect()  # dolfinx and petsc4py objects sit in reference cycles
     rows = []
     for name, degree in variants:
         solve = methods.solver(name)
@@ -76,6 +78,7 @@ def efficiency(scene_name: str, variants, ladders: dict, ref_h: float, exclude: 
         solve(scene, max(hs), degree=degree, estimate_condition=False)  # warm-up (JIT)
         for h in sorted(hs, reverse=True):
             rows.append(_measure(scene, name, degree, h, ref, exclude))
+            gc.collect()
     out = Path(out)
     files.write_csv(out / "efficiency.csv", rows, COLUMNS)
     loglog_by_variant(out / "efficiency.png", rows, "total", "error", "total wall time (s)",
