@@ -22,11 +22,10 @@ from __future__ import annotations
 import logging
 from pathlib import Path
 
-import numpy as np
 
 from . import files, methods
 from .closed_forms import interface_patch, pressurised_rod, twisted_rod
-from .norms import l2_error
+from .norms import fitted_rate, l2_error
 from .outcomes import attempt
 from .plots import loglog_by_variant
 from .sweeps import PATCH_PINS
@@ -45,11 +44,12 @@ VARIANTS = (("fe", 1), ("fe", 2), ("xfem", 1), ("xfem", 2), ("efgm", 1))
 ROUNDOFF = 1e-8
 
 
-def observed_rate(hs, errors) -> float | None:
-    """Least-squares slope of log error against log h (None at round-off)."""
-    if max(errors) <= ROUNDOFF:
-        return None
-    return float(np.polyfit(np.log(hs), np.log(errors), 1)[0])
+def rate_of(hs, errors) -> float | str:
+    """The fitted rate of a complete ladder, "round-off" when every error is
+    at round-off, "" when a rung was refused."""
+    if len(errors) < len(hs):
+        return ""
+    return "round-off" if max(errors) <= ROUNDOFF else fitted_rate(hs, errors)
 
 
 def run_case(name: str, variants=VARIANTS) -> list[dict]:
@@ -72,9 +72,9 @@ def run_case(name: str, variants=VARIANTS) -> list[dict]:
                          "message": "; ".join(tried.result.solver.warnings)})
             log.info("%s %s p%d h=%g: %d DOFs, L2 error %.2e", name, method, degree, h, tried.result.dofs,
                      err / ref)
-        rate = observed_rate(hs, errors) if len(errors) == len(hs) else None
+        rate = rate_of(hs, errors)
         for row in mine:
-            row["rate"] = "round-off" if rate is None and len(errors) == len(hs) else rate
+            row["rate"] = rate
         rows += mine
     return rows
 

@@ -31,7 +31,12 @@ def observed_rate(scene, exact, solve, hs) -> tuple[list[float], float]:
     for h in hs:
         err, ref = l2_error(scene, solve(h).fields, exact, h=h / 2)
         errors.append(err / ref)
-    return errors, float(np.polyfit(np.log(hs), np.log(errors), 1)[0])
+    return errors, fitted_rate(hs, errors)
+
+
+def fitted_rate(hs, errors) -> float:
+    """The least-squares slope of log error against log h."""
+    return float(np.polyfit(np.log(hs), np.log(errors), 1)[0])
 
 
 def max_errors(scene, fields, exact, *, samples: int = 400, seed: int = 0) -> tuple[float, float]:

@@ -36,12 +36,8 @@ def timing(scene_name: str, method_names: list[str], degrees: list[int], hs: lis
                 log.info("%s p%d h=%g: %d DOFs, mesh %.2f s, assembly %.2f s, solve %.2f s, total %.2f s",
                          name, degree, h, res.dofs, t.mesh, t.assembly, t.solve, t.total)
     out = Path(out)
-    csv_text = ",".join(COLUMNS) + "\n" + "".join(",".join(str(r[c]) for c in COLUMNS) + "\n" for r in rows)
-    files.write_text(out / "timing.csv", csv_text)
-    md = [f"# Wall time against DOFs, scene {scene.name}", "",
-          "| method | degree | h | DOFs | mesh (s) | assembly (s) | solve (s) | total (s) |", "|---|---|---|---|---|---|---|---|"]
-    md += [f"| {r['method']} | {r['degree']} | {r['h']:g} | {r['dofs']} | {r['mesh']:.2f} | {r['assembly']:.2f} | "
-           f"{r['solve']:.2f} | {r['total']:.2f} |" for r in rows]
-    files.write_text(out / "timing.md", "\n".join(md) + "\n")
+    files.write_csv(out / "timing.csv", rows, COLUMNS)
+    files.write_text(out / "timing.md", f"# Wall time against DOFs, scene {scene.name}\n\n" + files.markdown_table(
+        rows, COLUMNS[:-1], ["method", "degree", "h", "DOFs", "mesh (s)", "assembly (s)", "solve (s)", "total (s)"]))
     files.write_json(out / "run.json", files.provenance(list(argv)))
     return rows
