@@ -18,16 +18,19 @@ from typing import ClassVar
 
 import numpy as np
 
+from . import tolerances as tol
 from .errors import SceneError
 
 
 @dataclass(frozen=True)
 class LawResponse:
-    """Tractions ``[t_N, t_T]`` (m, 2), tangent (m, 2, 2) and the new state."""
+    """Tractions ``[t_N, t_T]`` (m, 2), tangent (m, 2, 2), the new state and
+    the status of each point."""
 
     traction: np.ndarray
     tangent: np.ndarray
     state: np.ndarray | None
+    status: np.ndarray  # (m,) OPEN, STICK or SLIP
 
 
 def _positive(params: dict, key: str, path: str) -> float:
@@ -41,8 +44,56 @@ def _positive(params: dict, key: str, path: str) -> float:
     return float(value)
 
 
+#: Status of an interface point (``LawResponse.status``).
+OPEN, STICK, SLIP = 0, 1, 2
+STATUS_NAMES = ("open", "stick", "slip")
+
+
+class _Law:
+    """What every law shares: reading its parameters, its spring scale."""
+
+    parameters: ClassVar[tuple[str, ...]] = ("kN", "kT")
+    has_history: ClassVar[bool] = False
+
+    @classmethod
+    def from_params(cls, params: dict, path: str):
+        """Build from a TOML table, naming the field of any bad value."""
+        unknown = sorted(set(params) - set(cls.parameters) - {"type"})
+        if unknown:
+            raise SceneError(f"{path}.{unknown[0]}", f"unknown parameter of the '{cls.name}' law "
+                             f"(it takes {', '.join(cls.parameters)})")
+        values = {k: _positive(params, k, path) for k in ("kN", "kT")}
+        if "mu" in cls.parameters:
+            values["mu"] = _friction(params, f"{path}")
+        return cls(**values)
+
+    def initial_state(self, m: int):
+        """The history of ``m`` points before the first increment (none)."""
+        return None
+
+    @property
+    def stiffness_scale(self) -> float:
+        """The largest spring stiffness, used in conditioning diagnostics."""
+        return max(self.kN, self.kT)
+
+    def _springs(self, g: np.ndarray):
+        """``g`` as (m, 2), the closed points (``g_N <= 0``) and ``t_N``."""
+        g = np.asarray(g, dtype=float).reshape(-1, 2)
+        closed = g[:, 0] <= 0.0
+        return g, closed, np.where(closed, self.kN * g[:, 0], 0.0)
+
+
+def _friction(params: dict, path: str) -> float:
+    if "mu" not in params:
+        raise SceneError(f"{path}.mu", "missing (the friction coefficient, >= 0)")
+    value = params["mu"]
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) or value < 0:
+        raise SceneError(f"{path}.mu", f"must be a finite friction coefficient >= 0 (got {value!r})")
+    return float(value)
+
+
 @dataclass(frozen=True)
-class LinearLaw:
+class LinearLaw(_Law):
     """The paper's Eq. (6): bonded springs ``t_N = k_N g_N``, ``t_T = k_T g_T``.
 
     Tension is allowed; the tangent is constant, so a scene with this law is
@@ -53,21 +104,7 @@ class LinearLaw:
     kT: float
 
     name: ClassVar[str] = "linear"
-    parameters: ClassVar[tuple[str, ...]] = ("kN", "kT")
     is_linear: ClassVar[bool] = True
-
-    @classmethod
-    def from_params(cls, params: dict, path: str) -> "LinearLaw":
-        """Build from a TOML table, naming the field of any bad value."""
-        unknown = sorted(set(params) - set(cls.parameters) - {"type"})
-        if unknown:
-            raise SceneError(f"{path}.{unknown[0]}", f"unknown parameter of the '{cls.name}' law "
-                             f"(it takes {', '.join(cls.parameters)})")
-        return cls(**{k: _positive(params, k, path) for k in cls.parameters})
-
-    def initial_state(self, m: int) -> None:
-        """The linear law has no history."""
-        return None
 
     def constant_tangent(self) -> np.ndarray:
         """``∂t/∂g = diag(k_N, k_T)``: the same at every point."""
@@ -76,18 +113,84 @@ class LinearLaw:
     def evaluate(self, g: np.ndarray, state=None) -> LawResponse:
         g = np.asarray(g, dtype=float).reshape(-1, 2)
         D = self.constant_tangent()
-        return LawResponse(g @ D.T, np.broadcast_to(D, (len(g), 2, 2)).copy(), None)
+        return LawResponse(g @ D.T, np.broadcast_to(D, (len(g), 2, 2)).copy(), None,
+                           np.full(len(g), STICK, dtype=np.int8))
 
-    @property
-    def stiffness_scale(self) -> float:
-        """The largest spring stiffness, used in conditioning diagnostics."""
-        return max(self.kN, self.kT)
+
+@dataclass(frozen=True)
+class UnilateralLaw(_Law):
+    """Penalty contact without tension (SCENES.md): ``t_N = k_N min(g_N, 0)``;
+    where closed (``g_N <= 0``) ``t_T = k_T g_T``, where open ``t_T = 0``.
+
+    History-free but piecewise linear: the tangent is ``diag(k_N, k_T)`` on
+    closed points and zero on open ones (status STICK or OPEN).
+    """
+
+    kN: float
+    kT: float
+
+    name: ClassVar[str] = "unilateral"
+    is_linear: ClassVar[bool] = False
+
+    def evaluate(self, g: np.ndarray, state=None) -> LawResponse:
+        g, closed, tN = self._springs(g)
+        tT = np.where(closed, self.kT * g[:, 1], 0.0)
+        tangent = np.zeros((len(g), 2, 2))
+        tangent[closed] = np.diag([self.kN, self.kT])
+        return LawResponse(np.column_stack([tN, tT]), tangent, None,
+                           np.where(closed, STICK, OPEN).astype(np.int8))
+
+
+@dataclass(frozen=True)
+class CoulombLaw(_Law):
+    """Unilateral penalty contact with Coulomb friction (SCENES.md), the
+    elastic-predictor / return-map of Wriggers, *Computational Contact
+    Mechanics* (2006), §5.2, in one dimension of slip.
+
+    State: the accumulated slip ``s`` of each point.  With ``p = −t_N`` and
+    the trial ``t* = k_T (g_T − s)``:
+
+    * open (``g_N > 0``): ``t = 0``, ``s ← g_T`` (closes with no shear), tangent 0;
+    * stick (``|t*| <= μ p (1 + STICK_ROUNDOFF)``): ``t_T = t*``, tangent ``diag(k_N, k_T)``;
+    * slip: ``t_T = μ p sign(t*)``, ``s ← g_T − t_T / k_T``; tangent
+      ``∂t_T/∂g_N = −μ k_N sign(t*)``, ``∂t_T/∂g_T = 0`` — not symmetric.
+    """
+
+    kN: float
+    kT: float
+    mu: float
+
+    name: ClassVar[str] = "coulomb"
+    parameters: ClassVar[tuple[str, ...]] = ("kN", "kT", "mu")
+    is_linear: ClassVar[bool] = False
+    has_history: ClassVar[bool] = True
+
+    def initial_state(self, m: int) -> np.ndarray:
+        """No slip before the first increment."""
+        return np.zeros(m)
+
+    def evaluate(self, g: np.ndarray, state=None) -> LawResponse:
+        g, closed, tN = self._springs(g)
+        s = np.zeros(len(g)) if state is None else np.asarray(state, dtype=float)
+        limit = -self.mu * tN
+        trial = self.kT * (g[:, 1] - s)
+        stick = closed & (np.abs(trial) <= limit * (1.0 + tol.STICK_ROUNDOFF))
+        slip = closed & ~stick
+        direction = np.sign(trial)
+        tT = np.where(stick, trial, np.where(slip, limit * direction, 0.0))
+        tangent = np.zeros((len(g), 2, 2))
+        tangent[closed, 0, 0] = self.kN
+        tangent[stick, 1, 1] = self.kT
+        tangent[slip, 1, 0] = -self.mu * self.kN * direction[slip]
+        new_state = np.where(stick, s, g[:, 1] - tT / self.kT)
+        status = np.where(stick, STICK, np.where(slip, SLIP, OPEN)).astype(np.int8)
+        return LawResponse(np.column_stack([tN, tT]), tangent, new_state, status)
 
 
 #: Every interface law by the name a scene file gives it.
-LAWS = {law.name: law for law in (LinearLaw,)}
+LAWS = {law.name: law for law in (LinearLaw, UnilateralLaw, CoulombLaw)}
 
-InterfaceLaw = LinearLaw
+InterfaceLaw = LinearLaw | UnilateralLaw | CoulombLaw
 
 
 def make_law(params: dict, path: str = "interface.law"):

@@ -7,7 +7,12 @@ last moved back by 1e-9 of 2π.  Each point takes the body that contains it
 
 Interface quantities come from the computed jump and the law, never from the
 bulk stress: ``[[u]] = u⁺ − u⁻``, ``g_N = [[u]]·n``, ``g_T = [[u]]·t``, and
-``(t_N, t_T)`` is the law's response to ``(g_N, g_T)``.
+``(t_N, t_T)`` is the law's response to ``(g_N, g_T)`` — and, for a law with
+history (``coulomb``), to the history that the fields carry
+(:class:`contactcore.newton.FieldsWithHistory`).  That history lives at the
+method's quadrature points on Γ and is interpolated along Γ to the samples:
+exact where neighbouring points share a status, approximate where an open
+point meets a closed one.
 """
 from __future__ import annotations
 
@@ -67,7 +72,10 @@ def interface_response(scene: Scene, fields: Fields, points: np.ndarray) -> dict
     jump = fields.displacement(points, np.ones(m, int)) - fields.displacement(points, np.zeros(m, int))
     n = scene.interface.normals(points)
     g = np.column_stack([np.sum(jump * n, axis=1), np.sum(jump * tangent_of(n), axis=1)])
-    t = scene.law.evaluate(g).traction
+    state = getattr(fields, "interface_state", None)
+    if scene.law.has_history and state is None:
+        raise ValueError(f"the '{scene.law.name}' law needs the interface history: sample a Result's fields")
+    t = scene.law.evaluate(g, state(points) if state else None).traction
     return {"gN": g[:, 0], "gT": g[:, 1], "tN": t[:, 0], "tT": t[:, 1]}
 
 

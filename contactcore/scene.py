@@ -41,12 +41,13 @@ class Material:
 class Support:
     """Prescribed displacement of the components ``fix`` on a named boundary.
 
-    ``value`` (m) is reached at the full load, scaled like the loads.
+    ``value`` (m) is multiplied by the factor of ``path`` (see :class:`Scene`).
     """
 
     boundary: str
     fix: str = "xy"
     value: tuple[float, float] = (0.0, 0.0)
+    path: tuple[tuple[int, float], ...] = ()
 
 
 @dataclass(frozen=True)
@@ -63,6 +64,7 @@ class Traction:
 
     boundary: str
     value: tuple[float, float]
+    path: tuple[tuple[int, float], ...] = ()
 
 
 @dataclass(frozen=True)
@@ -71,6 +73,7 @@ class Pressure:
 
     boundary: str
     value: float
+    path: tuple[tuple[int, float], ...] = ()
 
 
 @dataclass(frozen=True)
@@ -79,6 +82,7 @@ class BodyForce:
 
     body: str
     value: tuple[float, float]
+    path: tuple[tuple[int, float], ...] = ()
 
 
 @dataclass(frozen=True)
@@ -91,6 +95,7 @@ class Torque:
 
     body: str
     torque: float
+    path: tuple[tuple[int, float], ...] = ()
 
 
 Load = Traction | Pressure | BodyForce | Torque
@@ -147,6 +152,27 @@ class Scene:
     @property
     def length_scale(self) -> float:
         return self.domain.length_scale
+
+    def factor(self, path, k: int | float) -> float:
+        """The factor of a load or support with keyframes ``path`` at
+        increment ``k`` (fractional between increments, for cut-backs).
+
+        A path is a list of ``(increment, factor)`` pairs with increasing
+        increments in ``0 … increments``, linear in between, starting from
+        ``(0, 0)`` unless it gives increment 0, and holding its last factor
+        after its last keyframe.  No path is the ramp ``(0, 0) → (n, 1)``:
+        equal increments of the full load (SCENES.md).
+        """
+        keys = tuple(path) or ((self.increments, 1.0),)
+        if keys[0][0] != 0:
+            keys = ((0, 0.0),) + keys
+        steps, values = zip(*keys)
+        return float(np.interp(k, steps, values))
+
+    def factors(self, k: int | float) -> tuple[tuple[float, ...], tuple[float, ...]]:
+        """The factor of every load and of every support at increment ``k``."""
+        return (tuple(self.factor(ld.path, k) for ld in self.loads),
+                tuple(self.factor(sp.path, k) for sp in self.supports))
 
     def validated(self) -> "Scene":
         """Check every physical and geometric rule; returns ``self``."""
@@ -283,9 +309,26 @@ def _check_fix(fix: str, path: str) -> None:
         raise SceneError(path, f"must be one of {', '.join(COMPONENTS)} (got {fix!r})")
 
 
+def _check_path(scene: Scene, keys, path: str) -> None:
+    """A load path: (increment, factor) pairs, increments strictly increasing
+    integers in 0 … scene.increments, factors finite."""
+    previous = -1
+    for j, pair in enumerate(keys):
+        where = f"{path}[{j}]"
+        if not isinstance(pair, (tuple, list)) or len(pair) != 2:
+            raise SceneError(where, f"must be a pair [increment, factor] (got {pair!r})")
+        k, f = pair
+        if isinstance(k, bool) or not isinstance(k, int) or not previous < k <= scene.increments:
+            raise SceneError(where, f"the increment must be an integer in {previous + 1} … {scene.increments} "
+                             f"(increasing, at most 'increments'); got {k!r}")
+        _finite(f, f"{where}[1]")
+        previous = k
+
+
 def _check_loads(scene: Scene) -> None:
     for i, load in enumerate(scene.loads):
         path = f"loads[{i}]"
+        _check_path(scene, load.path, f"{path}.path")
         if isinstance(load, (Traction, Pressure)):
             _check_boundary(scene, load.boundary, f"{path}.boundary")
         else:
@@ -357,6 +400,7 @@ def validate(scene: Scene) -> None:
         _check_fix(sup.fix, f"supports[{i}].fix")
         for k, v in zip("xy", sup.value):
             _finite(v, f"supports[{i}].value.{k}")
+        _check_path(scene, sup.path, f"supports[{i}].path")
     for i, pin in enumerate(scene.pins):
         _check_point_inside(scene, pin.point, f"pins[{i}].point")
         _check_fix(pin.fix, f"pins[{i}].fix")
@@ -412,6 +456,10 @@ class _Table:
             value = tuple(value)
         elif kind == "table":
             value = _Table(value, path)
+        elif kind == "path":
+            if not isinstance(value, list) or not value:
+                raise SceneError(path, f"must be a non-empty list of [increment, factor] pairs (got {value!r})")
+            value = tuple(tuple(v) if isinstance(v, list) else v for v in value)
         elif kind == "tables":
             if not isinstance(value, list):
                 raise SceneError(path, "must be an array of tables ([[...]] in TOML)")
@@ -465,7 +513,8 @@ def _read_materials(t: _Table) -> dict[str, Material]:
 
 
 def _read_support(t: _Table) -> Support:
-    s = Support(t.get("boundary", "str"), t.get("fix", "str", "xy"), t.get("value", "vector", (0.0, 0.0)))
+    s = Support(t.get("boundary", "str"), t.get("fix", "str", "xy"), t.get("value", "vector", (0.0, 0.0)),
+                t.get("path", "path", ()))
     t.done()
     return s
 
@@ -478,14 +527,15 @@ def _read_pin(t: _Table) -> Pin:
 
 def _read_load(t: _Table) -> Load:
     kind = t.get("type", "str", choices=("traction", "pressure", "body_force", "torque"))
+    path = t.get("path", "path", ())
     if kind == "traction":
-        load = Traction(t.get("boundary", "str"), t.get("value", "vector"))
+        load = Traction(t.get("boundary", "str"), t.get("value", "vector"), path)
     elif kind == "pressure":
-        load = Pressure(t.get("boundary", "str"), t.get("value", "number"))
+        load = Pressure(t.get("boundary", "str"), t.get("value", "number"), path)
     elif kind == "body_force":
-        load = BodyForce(t.get("body", "str"), t.get("value", "vector"))
+        load = BodyForce(t.get("body", "str"), t.get("value", "vector"), path)
     else:
-        load = Torque(t.get("body", "str", "minus"), t.get("torque", "number"))
+        load = Torque(t.get("body", "str", "minus"), t.get("torque", "number"), path)
     t.done()
     return load
 

@@ -108,3 +108,32 @@ FALSE_TN_WARN = 2.0
 #: f = 1e-6).  Above SLIVER_LEAK_WARN the error may pass ACCURATE_FLOOR, and
 #: the run warns.
 SLIVER_LEAK_WARN = 1e-7
+
+# ----- nonlinear interface laws and Newton (issue 6) -------------------------
+
+#: Coulomb's stick test ``|t_trial| <= mu p (1 + STICK_ROUNDOFF)``: a point
+#: exactly at the slip limit (a converged slip point re-evaluated, or stick
+#: after reversal) computes its trial traction with a relative round-off of
+#: ~1e-15; 1e-10 (SCENES.md's example) absorbs it without moving the limit.
+STICK_ROUNDOFF = 1e-10
+
+#: Newton on one load increment has converged when the residual of the free
+#: equations satisfies ||R||_inf <= NEWTON_RTOL * F, F the larger of the
+#: external and internal nodal forces (infinity norms).  A piecewise-linear
+#: law converges in a finite number of steps once the status of every point
+#: is settled; what is left is the linear solver's round-off, ||R|| ~ eps
+#: cond ||F||.  Measured on scenes A and C with coulomb (springs 1e-2..1e2
+#: E/h): 1e-15..1e-11 at the final iteration; 1e-8 is reached only by a
+#: settled status, never by an unconverged one (whose residual is O(1) of a
+#: point's spring force).
+NEWTON_RTOL = 1e-8
+
+#: Newton iterations per (sub-)increment before the step is cut back.  A
+#: settled status needs one more iteration; each status change one more.
+#: Measured: 2-6 on the scenes shipped; 25 leaves room for cycling near a
+#: stick/slip switch that the cut-back then resolves.
+NEWTON_MAX_ITERATIONS = 25
+
+#: A failed increment is halved at most this many times (1/64 of an
+#: increment) before the run stops with an error naming the increment.
+MAX_CUTBACKS = 6

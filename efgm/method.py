@@ -12,7 +12,10 @@ operators ``N`` (displacement) and ``B`` (strain):
 essential conditions are imposed by Lagrange multipliers at collocation
 points — the nodes on a supported boundary and the pins — which makes them
 exact at those points, pins included, with no penalty to tune.  The
-saddle-point system is solved by SuperLU after equilibration.
+saddle-point system is solved by SuperLU after equilibration, through the
+shared increments and Newton of :mod:`contactcore.newton` (one solve for the
+linear law).  The history of a ``coulomb`` law is kept at the Gauss points
+of Γ (``interface_rule``).
 
 numpy and scipy only: importing this package imports neither dolfinx,
 petsc4py nor gmsh.
@@ -27,6 +30,7 @@ import scipy.sparse as sp
 from contactcore import BODIES, DiscretisationError, Result, Scene, Timings
 from contactcore import tolerances as tol
 from contactcore.elasticity import voigt_matrix
+from contactcore.newton import InterfaceOperator, solve_increments, with_history
 from contactcore.geometry import CircleInterface, Disc, LevelSetInterface, Rectangle, tangent_of
 from contactcore.scene import Pressure, Traction, body_force
 
@@ -169,10 +173,11 @@ class EFGMFields:
 
 
 def _constraints(scene: Scene, approx: Approximation):
-    """Collocation rows ``C u = g`` (supported boundary nodes, and pins) and
-    the point of each row."""
+    """Collocation rows ``C u = g`` (supported boundary nodes, and pins): the
+    rows, the values at full load, the support of each row (−1 for a pin)
+    and the point of each row."""
     nodes = approx.mls.nodes
-    points, comps, values = [], [], []
+    points, comps, values, owners = [], [], [], []
     for i, sup in enumerate(scene.supports):
         on = np.flatnonzero(scene.domain.on_boundary(sup.boundary, nodes, tol.NODE_MATCH * scene.length_scale))
         if len(on) == 0:
@@ -183,45 +188,82 @@ def _constraints(scene: Scene, approx: Approximation):
             points.append(nodes[on])
             comps.append(np.full(len(on), j))
             values.append(np.full(len(on), sup.value[j]))
+            owners.append(np.full(len(on), i))
     for pin in scene.pins:
         for comp in pin.fix:
             points.append(np.array([pin.point]))
             comps.append(np.array(["xy".index(comp)]))
             values.append(np.zeros(1))
+            owners.append(np.full(1, -1))
     if not points:
-        return sp.csr_matrix((0, approx.ndofs)), np.zeros(0), np.zeros((0, 2))
-    pts, comp, g = np.concatenate(points), np.concatenate(comps), np.concatenate(values)
+        return sp.csr_matrix((0, approx.ndofs)), np.zeros(0), np.zeros(0, int), np.zeros((0, 2))
+    pts, comp, g, owner = (np.concatenate(a) for a in (points, comps, values, owners))
     # a point shared by two supports (a corner) is constrained once: a repeated
     # row would make the saddle-point system singular
     key = np.round(pts / (tol.NODE_MATCH * scene.length_scale)).astype(np.int64)
     _, first, inverse = np.unique(np.column_stack([key, comp]), axis=0, return_index=True, return_inverse=True)
-    clash = np.abs(g - g[first][inverse.ravel()]) > 0
+    clash = (np.abs(g - g[first][inverse.ravel()]) > 0) | ((g != 0) & (owner != owner[first][inverse.ravel()]))
     if clash.any():
         i = int(np.flatnonzero(clash)[0])
-        raise DiscretisationError(f"efgm: two supports prescribe different values of u_{'xy'[comp[i]]} at "
-                                  f"({pts[i, 0]:.6g}, {pts[i, 1]:.6g})")
-    pts, comp, g = pts[first], comp[first], g[first]
+        raise DiscretisationError(f"efgm: two supports prescribe u_{'xy'[comp[i]]} at "
+                                  f"({pts[i, 0]:.6g}, {pts[i, 1]:.6g}) with different values or load paths")
+    pts, comp, g, owner = pts[first], comp[first], g[first], owner[first]
     N = approx.displacement_operator(approx.mls.evaluate(pts), scene.body_of(pts))
-    return N[2 * np.arange(len(pts)) + comp], g, pts
+    return N[2 * np.arange(len(pts)) + comp], g, owner, pts
 
 
-def _load_vector(scene: Scene, approx: Approximation, vol: Rule, vol_sv, h: float, n: int) -> np.ndarray:
-    f = np.zeros(approx.ndofs)
+def _load_vectors(scene: Scene, approx: Approximation, vol: Rule, vol_sv, h: float, n: int) -> list[np.ndarray]:
+    """One vector per load of the scene, at its full value."""
+    vectors = []
     volume_N = None
     for load in scene.loads:
         if isinstance(load, (Traction, Pressure)):
             pts, w, normals, bodies = boundary_rule(scene, load.boundary, h, n)
             t = np.tile(load.value, (len(w), 1)) if isinstance(load, Traction) else -load.value * normals
             N = approx.displacement_operator(approx.mls.evaluate(pts), bodies)
-            f += N.T @ (w[:, None] * t).ravel()
+            vectors.append(N.T @ (w[:, None] * t).ravel())
             continue
         if volume_N is None:
             volume_N = approx.displacement_operator(vol_sv, vol.bodies)
         body = BODIES.index(load.body)
         mask = (vol.bodies == body) * vol.weights
         b = np.column_stack(body_force(scene, load, vol.points[:, 0], vol.points[:, 1]))
-        f += volume_N.T @ (mask[:, None] * b).ravel()
-    return f
+        vectors.append(volume_N.T @ (mask[:, None] * b).ravel())
+    return vectors
+
+
+class EFGMSystem:
+    """The saddle-point system ``[[K, s Cᵀ], [s C, 0]]`` as a
+    :class:`~contactcore.newton.ContactSystem`: every unknown is free (the
+    supports are multiplier rows, scaled by ``s`` = the largest E)."""
+
+    def __init__(self, K, C, g, owner, loads, interface: InterfaceOperator, scale: float, coords, reach,
+                 estimate_condition, what):
+        self.scale = scale
+        self.A = sp.bmat([[K, self.scale * C.T], [self.scale * C, None]], format="csr")
+        self.size = self.A.shape[0]
+        self.ndofs = K.shape[0]
+        self.C_values, self.owner, self.loads = g, owner, loads
+        G = interface.G
+        self.interface = InterfaceOperator(sp.csr_matrix((G.data, G.indices, G.indptr), shape=(G.shape[0], self.size)),
+                                           interface.weights, interface.points)
+        self.fixed = np.zeros(0, int)
+        self.coords, self.reach, self.estimate, self.what = coords, reach, estimate_condition, what
+
+    def fixed_values(self, support_factors) -> np.ndarray:
+        return np.zeros(0)
+
+    def external(self, load_factors, support_factors) -> np.ndarray:
+        f = sum((lam * v for lam, v in zip(load_factors, self.loads)), np.zeros(self.ndofs))
+        factor = np.where(self.owner >= 0, np.asarray(support_factors + (0.0,))[self.owner], 0.0)
+        return np.concatenate([f, self.scale * self.C_values * factor])
+
+    def internal(self, u: np.ndarray) -> np.ndarray:
+        return self.A @ u
+
+    def solve(self, interface_tangent, rhs):
+        return sparse_solver.solve((self.A + interface_tangent).tocsr(), rhs, coords=self.coords, reach=self.reach,
+                                   estimate_condition=self.estimate, what=self.what)
 
 
 def solve(scene: Scene, h: float | None = None, *, degree: int = 1, paper: bool = False,
@@ -240,8 +282,6 @@ def solve(scene: Scene, h: float | None = None, *, degree: int = 1, paper: bool 
         raise DiscretisationError(f"efgm: degree must be 1 or 2 (got {degree})")
     if support not in ("circular", "rectangular"):
         raise DiscretisationError(f"efgm: support must be 'circular' or 'rectangular' (got {support!r})")
-    if not scene.law.is_linear:
-        raise DiscretisationError(f"efgm: the '{scene.law.name}' law is not supported yet")
     if isinstance(scene.interface, LevelSetInterface):
         raise DiscretisationError("efgm: a general level set Γ is supported by xfem only (its mesh ignores Γ)")
     start, timings = time.perf_counter(), Timings()
@@ -264,22 +304,19 @@ def solve(scene: Scene, h: float | None = None, *, degree: int = 1, paper: bool 
         jump = (approx.displacement_operator(gam_sv, np.ones(m, int))
                 - approx.displacement_operator(gam_sv, np.zeros(m, int)))
         G = block_diagonal(np.stack([gam_n, tangent_of(gam_n)], axis=1)) @ jump
-        K = K + G.T @ block_diagonal(gam_w[:, None, None] * scene.law.constant_tangent()[None]) @ G
-        f = _load_vector(scene, approx, vol, vol_sv, ns.h, n)
-        C, g, c_pts = _constraints(scene, approx)
-        scale = max(mat.E for mat in scene.materials.values())
-        A = sp.bmat([[K, scale * C.T], [scale * C, None]], format="csr")
-        rhs = np.concatenate([f, scale * g])
-    if estimate_condition is None:
-        estimate_condition = approx.ndofs <= tol.CONDITION_ESTIMATE_MAX_DOFS
+        C, g, owner, c_pts = _constraints(scene, approx)
+        if estimate_condition is None:
+            estimate_condition = approx.ndofs <= tol.CONDITION_ESTIMATE_MAX_DOFS
+        system = EFGMSystem(K, C, g, owner, _load_vectors(scene, approx, vol, vol_sv, ns.h, n),
+                            InterfaceOperator(G.tocsr(), gam_w, gam_pts), max(m.E for m in scene.materials.values()),
+                            np.vstack([approx.dof_points(), c_pts]), 2 * mls.reach, estimate_condition,
+                            f"scene {scene.name} (efgm)")
     with timings.measure("solve"):
-        x, report = sparse_solver.solve(A, rhs, coords=np.vstack([approx.dof_points(), c_pts]),
-                                        reach=2 * mls.reach, estimate_condition=estimate_condition,
-                                        what=f"scene {scene.name} (efgm)")
+        x, path, report = solve_increments(scene, system)
     report.increments = scene.increments
     report.warnings += scene.interface_warnings(ns.h)
     timings.total = time.perf_counter() - start
     return Result(method=METHOD, scene=scene, degree=degree, dofs=approx.ndofs, timings=timings, solver=report,
-                  fields=EFGMFields(scene, approx, x[:approx.ndofs]),
+                  fields=with_history(scene, EFGMFields(scene, approx, x[:approx.ndofs]), path), interface=path,
                   discretisation={"h": ns.h, "nodes": len(ns.x), "enriched_nodes": approx.enr.count, "dmax": dmax,
                                   "weight": weight, "support": support, "gauss": n, "basis_degree": degree})

@@ -121,3 +121,38 @@ def test_pressurised_rod_converges_at_the_expected_rate(degree, rate, record_pro
     record_property("relative_l2_errors", errs)
     record_property("observed_rate", observed)
     assert observed >= rate - tol.RATE_MARGIN, (observed, errs)
+
+
+@pytest.mark.parametrize("degree", [1, 2])
+@pytest.mark.parametrize("angle", [30.0, -65.0])
+def test_interface_operator_equals_dolfinx_assembly(degree, angle):
+    """Our Γ quadrature and jump operator G give the matrix Gᵀ W D G that
+    dolfinx assembles from the UFL interface form on the same facets (a
+    straight inclined Γ: both integrate exactly)."""
+    import ufl
+    from dolfinx import fem
+    from dolfinx.fem import petsc as fem_petsc
+
+    import meshes
+    from xdolfinx.fitted_mesh import fitted_mesh
+
+    scene = interface_patch(angle).scene
+    fm = fitted_mesh(scene, 0.2, order=degree)
+    el = ufl.VectorElement("Lagrange", fm.mesh.ufl_cell(), degree)
+    V = fem.FunctionSpace(fm.mesh, ufl.MixedElement([el, el]))
+    n = ufl.as_vector([float(c) for c in scene.interface.normal])
+    t = ufl.as_vector([n[1], -n[0]])
+    u, v = ufl.split(ufl.TrialFunction(V)), ufl.split(ufl.TestFunction(V))
+    gap = lambda w: ufl.as_vector([ufl.dot(w[1]("+") - w[0]("+"), n), ufl.dot(w[1]("+") - w[0]("+"), t)])  # noqa
+    D = ufl.as_matrix(scene.law.constant_tangent().tolist())
+    dS = ufl.Measure("dS", domain=fm.mesh, subdomain_data=fm.facet_tags)
+    A = fem_petsc.assemble_matrix(fem.form(ufl.inner(D * gap(u), gap(v)) * dS(meshes.INTERFACE)))
+    A.assemble()
+    theirs = np.zeros(A.getSize())
+    indptr, indices, data = A.getValuesCSR()
+    for i in range(len(indptr) - 1):
+        theirs[i, indices[indptr[i]:indptr[i + 1]]] = data[indptr[i]:indptr[i + 1]]
+    itf = conforming.interface_operator(scene, fm, V, degree)
+    ours = itf.stiffness(np.broadcast_to(scene.law.constant_tangent(), (itf.size, 2, 2))).toarray()
+    assert np.isclose(itf.weights.sum(), np.linalg.norm(np.subtract(*scene.interface.chord(scene.domain))))
+    assert np.max(np.abs(ours - theirs)) <= tol.PATCH_ROUNDOFF * np.max(np.abs(theirs))

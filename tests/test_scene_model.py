@@ -13,8 +13,10 @@ from contactcore.profiles import sample_points
 from contactcore.scene import Torque, Traction
 
 
-def test_builtin_scenes_are_the_papers_three():
-    assert builtin_scenes() == ["A", "B", "C"]
+def test_builtin_scenes_are_the_papers_three_and_the_friction_cases():
+    assert builtin_scenes() == ["A", "A-cyclic", "B", "C", "C-coulomb", "layered-slip"]
+    for name in builtin_scenes():
+        assert load_scene(name).name == name
 
 
 def test_scene_a_values():

@@ -47,8 +47,14 @@ def kept_samples(scene: Scene, profile: ProfileData, exclude: float) -> np.ndarr
 
 
 def quantity_class(scene: Scene, profile, quantity: str) -> str:
-    """``interface`` (gaps, tractions), ``edge`` (a stress on a segment of
+    """``interface`` (gaps, tractions), ``contact`` (g_N, g_T, t_N of a law
+    that opens: they have kinks where Γ opens, which cost a P2 method its
+    higher order there), ``contact edge`` (t_T of such a law, which jumps from
+    0 to k_T(g_T − s) where Γ closes: methods whose contact edges lie O(h)
+    apart differ there by the whole jump), ``edge`` (a stress on a segment of
     the outer boundary) or ``interior`` (any other stress or displacement)."""
+    if quantity in ("tN", "tT", "gN", "gT") and not scene.law.is_linear:
+        return "contact edge" if quantity == "tT" else "contact"
     if quantity in ("tN", "tT", "gN", "gT"):
         return "interface"
     if hasattr(profile, "start"):

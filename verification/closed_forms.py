@@ -7,6 +7,7 @@ by the same code as every method's.  numpy only.
 """
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 
 import numpy as np
@@ -14,7 +15,7 @@ import numpy as np
 from contactcore import (CircleInterface, Disc, InterfaceProfile, LineInterface, LinearLaw, LineProfile, Material,
                          Pin, Pressure, Rectangle, Scene, Support, Torque, Traction)
 from contactcore.elasticity import compliance, lame
-from contactcore.tolerances import GEOMETRY
+from contactcore.tolerances import GEOMETRY, STICK_ROUNDOFF
 
 _ROT = np.array([[0.0, -1.0], [1.0, 0.0]])  # infinitesimal rotation generator
 
@@ -223,3 +224,101 @@ def twisted_rod(*, a: float = 0.4, b: float = 1.0, torque: float = 1e4, kN: floa
 
 #: The closed-form cases of the verification, by name.
 CLOSED_FORMS = {"patch": interface_patch, "pressurised_rod": pressurised_rod, "twisted_rod": twisted_rod}
+
+
+@dataclass
+class LayerState:
+    """The exact state of the layered block at one increment."""
+
+    p: float  # contact pressure (Pa)
+    delta: float  # prescribed u_x of the top edge (m)
+    tau: float  # σ_xy everywhere = t_T on Γ (Pa)
+    slip: float  # accumulated slip s (m)
+    status: str  # "stick" or "slip"
+
+
+@dataclass
+class LayeredSlipFields:
+    """Displacement and stress of the layered block in one state: with ν = 0
+    every field is uniform in x, σ = (0, −p, τ),
+    ``u = (τ y/G₋, −p y/E₋)`` below Γ (y < h₁) and above it
+    ``u = (τ h₁/G₋ + g_T + τ (y − h₁)/G₊, −p h₁/E₋ + g_N − p (y − h₁)/E₊)``,
+    ``g_N = −p/k_N``, ``g_T = τ/k_T + s``."""
+
+    case: "LayeredSlip"
+    state: LayerState
+
+    def displacement(self, points, bodies) -> np.ndarray:
+        c, st = self.case, self.state
+        y = np.asarray(points, float)[:, 1] - c.y0
+        gN, gT = -st.p / c.kN, st.tau / c.kT + st.slip
+        below = np.column_stack([st.tau * y / c.G[0], -st.p * y / c.E[0]])
+        above = np.column_stack([st.tau * c.h1 / c.G[0] + gT + st.tau * (y - c.h1) / c.G[1],
+                                 -st.p * c.h1 / c.E[0] + gN - st.p * (y - c.h1) / c.E[1]])
+        return np.where((np.asarray(bodies) == 0)[:, None], below, above)
+
+    def stress(self, points, bodies) -> np.ndarray:
+        return np.tile([0.0, -self.state.p, self.state.tau], (len(points), 1))
+
+
+class LayeredSlip:
+    """Coulomb friction in closed form: the built-in scene ``layered-slip``
+    (two layers, ν = 0, pressed by p, then sheared by a prescribed top
+    displacement δ to and fro; its TOML file explains the inputs).
+
+    One interface point stands for the whole of Γ: the layers and the
+    tangential spring act in series with compliance
+    ``C = h₁/G₋ + h₂/G₊ + 1/k_T``, so the trial shear is ``τ* = (δ − s)/C``;
+    the point sticks while ``|τ*| <= μp``, otherwise ``τ = μp sign τ*`` and
+    ``s = δ − τ C`` (the return map of SCENES.md's coulomb law).
+    """
+
+    def __init__(self, scene: Scene):
+        law, itf, dom = scene.law, scene.interface, scene.domain
+        if law.name != "coulomb" or any(m.nu != 0 for m in scene.materials.values()):
+            raise ValueError("the layered closed form needs the coulomb law and ν = 0 in both layers")
+        self.scene, self.kN, self.kT, self.mu = scene, law.kN, law.kT, law.mu
+        self.y0 = dom.corner[1]
+        self.h1, self.h2 = itf.point[1] - self.y0, dom.corner[1] + dom.size[1] - itf.point[1]
+        self.E = [scene.materials[b].E for b in ("minus", "plus")]
+        self.G = [E / 2 for E in self.E]
+        self.compliance = self.h1 / self.G[0] + self.h2 / self.G[1] + 1 / self.kT
+
+    def history(self) -> list[LayerState]:
+        """The state after every increment 1 … n."""
+        scene, s, states = self.scene, 0.0, []
+        pressure, top = scene.loads[0], scene.supports[1]
+        for k in range(1, scene.increments + 1):
+            loads, supports = scene.factors(k)
+            p, delta = -loads[0] * pressure.value[1], supports[1] * top.value[0]
+            trial = (delta - s) / self.compliance
+            limit = self.mu * p
+            if abs(trial) <= limit * (1 + STICK_ROUNDOFF):
+                states.append(LayerState(p, delta, trial, s, "stick"))
+            else:
+                tau = limit * np.sign(trial)
+                s = delta - tau * self.compliance
+                states.append(LayerState(p, delta, tau, s, "slip"))
+        return states
+
+    def fields(self, state: LayerState) -> LayeredSlipFields:
+        return LayeredSlipFields(self, state)
+
+
+def layered_slip(kN: float | None = None, kT: float | None = None) -> LayeredSlip:
+    """The closed form of the built-in scene ``layered-slip``; with other
+    springs, the top's displacement is rescaled so that its path still
+    switches between stick and slip at the same increments (δ_stick = μpC)."""
+    from contactcore import load_scene
+    from contactcore.laws import CoulombLaw
+
+    case = LayeredSlip(load_scene("layered-slip"))
+    if kN is None and kT is None:
+        return case
+    scene, law = case.scene, case.scene.law
+    law = CoulombLaw(kN or law.kN, kT or law.kT, law.mu)
+    top = scene.supports[1]
+    p = -scene.loads[0].value[1]
+    stick = law.mu * p * (case.h1 / case.G[0] + case.h2 / case.G[1] + 1 / law.kT)
+    supports = (scene.supports[0], dataclasses.replace(top, value=(stick, 0.0)))
+    return LayeredSlip(scene.with_changes(law=law, supports=supports))

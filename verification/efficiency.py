@@ -7,15 +7,20 @@ the relative RMS difference to the reference (:mod:`verification.agreement`:
 samples near corners and the ends of Γ left out, a quantity that is exactly
 zero measured against its companion).  Each run is timed by stage (mesh,
 assembly, solve, total) after one warm-up solve per method and degree (the
-one-off JIT compilation is not a steady cost).  Writes
+one-off JIT compilation is not a steady cost).  The reference and every
+rung run in a fresh process of their own: nothing of one run (dolfinx and
+PETSc objects, the allocator's free lists) can inflate the memory of the
+next — in one process the full report grew past 17 GB and was killed by the
+out-of-memory killer on a 24 GB machine.  Writes
 ``DIR/efficiency.csv``, ``DIR/efficiency.md`` (the table and a sentence
 saying which method reaches a common error level soonest) and
 ``DIR/efficiency.png`` (error against total wall time, log-log).
 """
 from __future__ import annotations
 
-import gc
 import logging
+import multiprocessing
+from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
 from contactcore import load_scene, sample_profiles
@@ -61,24 +66,35 @@ def soonest(rows: list[dict]) -> str:
             f"{first[0]} p{first[1]} gets there soonest, in {times[first]:.2f} s; then {others}.")
 
 
+def _isolated(function, *args):
+    """``function(*args)`` in a fresh process (spawned, not forked: no
+    inherited MPI or PETSc state), its memory returned to the system after."""
+    with ProcessPoolExecutor(max_workers=1, mp_context=multiprocessing.get_context("spawn"),
+                             max_tasks_per_child=1) as pool:
+        return pool.submit(function, *args).result()
+
+
+def _reference(scene_name: str, ref_h: float) -> tuple[dict, int, float]:
+    """The reference's profiles, DOFs and run time."""
+    scene = load_scene(scene_name)
+    reference = methods.solver("fe")(scene, ref_h, degree=2, estimate_condition=False)
+    return {p.id: p for p in sample_profiles(scene, reference.fields)}, reference.dofs, reference.timings.total
+
+
 def efficiency(scene_name: str, variants, ladders: dict, ref_h: float, exclude: float, out: Path, argv=()) -> str:
     """Run the ladders (``ladders[degree]``: the h of that degree), write the
     table and the plot; return the Markdown section."""
     scene = load_scene(scene_name)
-    reference = methods.solver("fe")(scene, ref_h, degree=2, estimate_condition=False)
-    ref = {p.id: p for p in sample_profiles(scene, reference.fields)}
-    ref_dofs = reference.dofs
-    log.info("reference: fe P2 h=%g, %d DOFs, %.1f s", ref_h, ref_dofs, reference.timings.total)
-    del reference  # its mesh, fields and factorisation: memory the ladder needs
-    gc.collect()  # dolfinx and petsc4py objects sit in reference cycles
+    ref, ref_dofs, ref_time = _isolated(_reference, scene_name, ref_h)
+    log.info("reference: fe P2 h=%g, %d DOFs, %.1f s", ref_h, ref_dofs, ref_time)
     rows = []
     for name, degree in variants:
-        solve = methods.solver(name)
         hs = ladders[degree]
-        solve(scene, max(hs), degree=degree, estimate_condition=False)  # warm-up (JIT)
         for h in sorted(hs, reverse=True):
-            rows.append(_measure(scene, name, degree, h, ref, exclude))
-            gc.collect()
+            row = _isolated(_measure, scene_name, name, degree, h, max(hs), ref, exclude)
+            log.info("%s p%d h=%g: %d DOFs, %.2f s, worst error %.2e (%s)", name, degree, h, row["dofs"],
+                     row["total"], row["error"], row["worst"])
+            rows.append(row)
     out = Path(out)
     files.write_csv(out / "efficiency.csv", rows, COLUMNS)
     loglog_by_variant(out / "efficiency.png", rows, "total", "error", "total wall time (s)",
@@ -94,13 +110,15 @@ def efficiency(scene_name: str, variants, ladders: dict, ref_h: float, exclude: 
     return text
 
 
-def _measure(scene, name: str, degree: int, h: float, ref: dict, exclude: float) -> dict:
-    """One rung of a ladder: solve, sample, compare; nothing of the solution
-    outlives the call (the finest rungs need the memory)."""
-    res = methods.solver(name)(scene, h, degree=degree, estimate_condition=False)
+def _measure(scene_name: str, name: str, degree: int, h: float, warm_h: float, ref: dict, exclude: float) -> dict:
+    """One rung of a ladder, after a warm-up solve at ``warm_h`` (JIT,
+    imports): solve, sample, compare."""
+    scene = load_scene(scene_name)
+    solve = methods.solver(name)
+    solve(scene, warm_h, degree=degree, estimate_condition=False)
+    res = solve(scene, h, degree=degree, estimate_condition=False)
     got = {p.id: p for p in sample_profiles(scene, res.fields)}
     err, where = worst_error(scene, got, ref, exclude)
     t = res.timings
-    log.info("%s p%d h=%g: %d DOFs, %.2f s, worst error %.2e (%s)", name, degree, h, res.dofs, t.total, err, where)
     return {"method": name, "degree": degree, "h": h, "dofs": res.dofs, "mesh": t.mesh, "assembly": t.assembly,
             "solve": t.solve, "total": t.total, "error": err, "worst": where}

@@ -3,7 +3,9 @@
 Runs, each into its own folder under DIR, the paper's figures
 (:mod:`~verification.paper`), the closed forms (:mod:`~verification.convergence`),
 error against run time on scenes A, B and C (:mod:`~verification.efficiency`),
-the stiff and extreme sweeps (:mod:`~verification.sweeps`) and one parameter
+the stiff and extreme sweeps (:mod:`~verification.sweeps`, the coulomb law's
+among them), the friction scenes with every method (Newton iterations per
+increment, status along Γ, :mod:`~verification.run`) and one parameter
 study per scene (:mod:`~verification.study`), then gathers their sections
 into ``DIR/report.md`` with the wall time of each part.  ``--quick`` runs
 every part on short ladders (a smoke test of the whole chain, minutes not
@@ -23,6 +25,7 @@ from .agreement import default_exclusion
 from .convergence import CASES, closed
 from .efficiency import LADDERS, REFERENCE_H, VARIANTS, efficiency
 from .paper import paper
+from .run import run
 from .study import study
 from .sweeps import run_sweeps
 
@@ -41,6 +44,7 @@ class Plan:
     sweeps: tuple | None  # None: all
     paper_ref_h: float | None
     studies: tuple  # (scene, param, values, degree)
+    friction: tuple = ("layered-slip", "A-cyclic", "C-coulomb")  # scenes run with every method
 
 
 FULL = Plan(ladders=LADDERS, reference_h=REFERENCE_H, variants=VARIANTS, closed_cases=tuple(CASES),
@@ -52,7 +56,14 @@ QUICK = Plan(ladders={s: {1: (0.2, 0.1), 2: (0.2, 0.1)} for s in "ABC"},
              reference_h={"A": 0.05, "B": 0.1, "C": 0.1}, variants=(("fe", 1), ("xfem", 1), ("efgm", 1)),
              closed_cases=("patch", "twisted_rod"), closed_variants=(("fe", 1), ("xfem", 1), ("efgm", 1)),
              sweeps=("cut", "false_tN"), paper_ref_h=0.1,
-             studies=(("B", "radius", (0.2, 0.3), 1),))
+             studies=(("B", "radius", (0.2, 0.3), 1),), friction=("layered-slip",))
+
+
+def _friction(scene: str, out: Path) -> str:
+    """A friction scene with every method: status, response and the Newton
+    iterations per increment (:mod:`verification.interface`)."""
+    run(scene, ["all"], out)
+    return "#" + (out / "summary.md").read_text() + "\n![response](plots/response.png)\n"
 
 
 def report(out: Path, quick: bool = False, argv=()) -> Path:
@@ -74,6 +85,8 @@ def report(out: Path, quick: bool = False, argv=()) -> Path:
              lambda d, s=scene: efficiency(s, plan.variants, plan.ladders[s], plan.reference_h[s],
                                            default_exclusion(load_scene(s)), d))
     part("sweeps", "sweeps", lambda d: run_sweeps(d, plan.sweeps))
+    for scene in plan.friction:
+        part(f"friction {scene}", f"friction/{scene}", lambda d, s=scene: _friction(s, d))
     for scene, param, values, degree in plan.studies:
         folder = f"study/{scene}-{param}"
         part(f"study {scene} {param}", folder,

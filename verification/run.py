@@ -9,6 +9,9 @@ Writes, under ``--out DIR``::
     DIR/<method>/xdmf/            (with --xdmf) one XDMF file per body
     DIR/plots/<ID>.png            each profile, methods overlaid
     DIR/summary.md                a table of the runs
+    (a nonlinear law, :mod:`verification.interface`:)
+    DIR/<method>/increments.csv, interface.csv
+    DIR/plots/status_<method>.png, response.png; Newton iterations in summary.md
 """
 from __future__ import annotations
 
@@ -20,7 +23,7 @@ import numpy as np
 
 from contactcore import BODIES, ContactError, load_scene, sample_profiles, scene_text
 
-from . import files, methods, plots
+from . import files, interface, methods, plots
 
 log = logging.getLogger("verification")
 
@@ -70,7 +73,7 @@ def run(scene_name: str, method_names: list[str], out: Path, *, h=None, degree=1
     nodes = read_nodes(nodes_file) if nodes_file else None
     out = Path(out)
     files.write_text(out / "scene.toml", scene_text(scene_name))
-    profiles, summaries = {}, []
+    profiles, summaries, paths = {}, [], {}
     for name in methods.expand(method_names):
         log.info("scene %s: solving with %s (degree %d)", scene.name, name, degree)
         options = methods.options_for(name, petsc_options=petsc_options or None, dmax=dmax, nodes=nodes, cell=cell)
@@ -89,10 +92,19 @@ def run(scene_name: str, method_names: list[str], out: Path, *, h=None, degree=1
         elif xdmf:
             log.info("%s: no mesh, so no XDMF", name)
         files.write_json(out / name / "summary.json", summary)
+        if not scene.law.is_linear:
+            paths[name] = result.interface
+            interface.write_history(out / name, scene, result.interface)
+            interface.plot_status(out / "plots" / f"status_{name}.png", scene, name, result.interface)
     titles = {p.id: p.title for p in scene.profiles}
     for pid, runs in profiles.items():
         plots.plot_profile(out / "plots" / f"{pid}.png", titles[pid], runs)
-    files.write_text(out / "summary.md", f"# Scene {scene.name}: {scene.title}\n\n" + _summary_table(summaries))
+    text = f"# Scene {scene.name}: {scene.title}\n\n" + _summary_table(summaries)
+    if paths:
+        interface.plot_response(out / "plots" / "response.png", scene, paths)
+        text += ("\n## Newton iterations (final relative residual) per increment\n\n"
+                 + interface.iterations_table(paths))
+    files.write_text(out / "summary.md", text)
     files.write_json(out / "run.json", {**files.provenance(list(argv)), "scene": scene_name,
                                         "methods": methods.expand(method_names), "h": h, "degree": degree,
                                         "paper": paper, "petsc_options": petsc_options or {}, "dmax": dmax,

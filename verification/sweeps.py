@@ -20,7 +20,10 @@ a bug).  The sweeps:
   supports, on the patch; ``perturb``: EFGM nodes moved at random by up to
   0.4 h;
 * ``false_tN``: scene B's false normal traction (its exact t_N is zero)
-  against ``k_N/k_T`` from 1 to 1e4, relative to max |t_T|.
+  against ``k_N/k_T`` from 1 to 1e4, relative to max |t_T|;
+* ``kN_coulomb``, ``kT_coulomb``: the ``kN``/``kT`` sweeps repeated with the
+  ``coulomb`` law, on the layered closed form (pressure, stick, slip,
+  reversal: 20 Newton-solved increments), error in the final displacement.
 
 Writes ``DIR/sweeps.csv``, ``DIR/sweeps.md`` (one table per sweep and the
 range each method handles) and ``DIR/<sweep>.png``.
@@ -41,7 +44,7 @@ from contactcore.geometry import Rectangle
 from contactcore.scene import InterfaceProfile
 
 from . import files, methods
-from .closed_forms import interface_patch, pressurised_rod, twisted_rod
+from .closed_forms import interface_patch, layered_slip, pressurised_rod, twisted_rod
 from .norms import l2_error, max_errors
 from .outcomes import accuracy_bound, attempt, classify, health
 
@@ -125,6 +128,16 @@ def _springs(build, which: str, h: float = H):
     return cases
 
 
+def _friction_springs(which: str):
+    """The layered closed form with one spring k = α E/h, at its last increment."""
+    cases = []
+    for alpha in PENALTY_FACTORS:
+        k = alpha * _stiffest(layered_slip().scene) / H
+        c = layered_slip(**{which: k})
+        cases.append(Case(alpha, c.scene, c.fields(c.history()[-1])))
+    return cases
+
+
 def _contrasts(build, minus: str, plus: str, nu_plus: float):
     """Cases of ``build`` with the + material's E⁺ = r E⁻ (``minus`` and
     ``plus``: the keyword names of the two materials in ``build``)."""
@@ -193,6 +206,10 @@ def sweeps() -> list[Sweep]:
               methods=("efgm",), nominal=0.0, logx=False),
         Sweep("false_tN", "k_N/k_T", "scene B: false t_N / max |t_T| (exact t_N = 0)", _stiffness_ratios,
               bound=tol.FALSE_TN_ACCEPTABLE),
+        Sweep("kN_coulomb", "α (k_N = α E/h)", "normal spring, coulomb law, layered closed form (20 increments)",
+              lambda: _friction_springs("kN"), nominal=1.0),
+        Sweep("kT_coulomb", "α (k_T = α E/h)", "tangential spring, coulomb law, layered closed form "
+              "(20 increments)", lambda: _friction_springs("kT"), nominal=1.0),
     ]
 
 

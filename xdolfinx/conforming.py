@@ -12,7 +12,7 @@ so field ``b`` lives on body ``b`` and its trace on Γ.  The weak form is
     Σ_b ∫_{Ω_b} σ_b(u_b) : ε(v_b) dx + ∫_Γ g(v) · D g(u) dΓ
         = Σ_b ∫_{∂Ω_b ∩ Γ_t} t̄ · v_b ds + Σ_b ∫_{Ω_b} f · v_b dx,
 
-with ``g(w) = ([[w]]·n, [[w]]·t)``, ``[[w]] = w_+ − w_−`` and ``D`` the
+(shown for a linear law) with ``g(w) = ([[w]]·n, [[w]]·t)``, ``[[w]] = w_+ − w_−`` and ``D`` the
 law's tangent ``∂(t_N, t_T)/∂(g_N, g_T)`` (the paper's Eq. 6 for ``linear``;
 SCENES.md for signs).  Both fields are continuous across every facet, so
 their traces on Γ need no side: the interior-facet orientation trap of
@@ -22,13 +22,16 @@ curved Γ a chord normal creates a false normal traction of order
 ``(k_N/k_T)(h/2R)|t_T|`` (SCENES.md).  Boundary loads on an outer facet are
 weighted by the DG0 indicator of the body that owns the facet's cell.
 
-A linear law is one linear solve (load increments only scale it).
+Increments, Newton and the law are :mod:`contactcore.newton`'s, shared with
+the other methods; the bulk matrix is dolfinx's, the interface term
+``Gᵀ W D G`` comes from :func:`interface_operator` (a linear law: one solve).
+The history of a ``coulomb`` law is kept at Γ's Gauss points.
 """
 from __future__ import annotations
 
-import functools
 import time
 
+import basix
 import numpy as np
 import ufl
 from dolfinx import fem
@@ -40,14 +43,22 @@ import meshes
 from contactcore import BODIES, DiscretisationError, Result, Scene, Timings
 from contactcore import tolerances as tol
 from contactcore.elasticity import lame
-from contactcore.geometry import LevelSetInterface, LineInterface, Rectangle
+from contactcore.assembly import Triplets
+from contactcore.cutcell import gauss01
+from contactcore.geometry import LevelSetInterface, Rectangle, tangent_of
+from contactcore.newton import InterfaceOperator, solve_increments, with_history
 from contactcore.scene import Pressure, Traction, body_force
 
-from . import linear_solver
+from .contact_system import PETScSystem
 from .evaluation import BodyCellLocator, BodyFields
 from .fitted_mesh import FittedMesh, fitted_mesh
 
 METHOD = "fe"
+
+#: Gauss points on each Γ facet, by degree: the integrand N_i N_j of P_k on a
+#: straight facet has degree 2k, exact with k + 1 points; one more covers
+#: the curved (P2) facets and the exact normal of a circle.
+INTERFACE_GAUSS = {1: 3, 2: 4}
 
 
 def resolution(scene: Scene, h: float | None, paper: bool) -> float:
@@ -69,15 +80,13 @@ def sigma(w, E: float, nu: float, plane: str):
     return 2.0 * mu * eps + lam * ufl.tr(eps) * ufl.Identity(2)
 
 
-def _interface_frame(scene: Scene, x):
-    """Exact unit normal (− into +) and tangent ``t = (n_y, −n_x)`` at ``x``."""
-    itf = scene.interface
-    if isinstance(itf, LineInterface):
-        n = ufl.as_vector([float(itf.normal[0]), float(itf.normal[1])])
-    else:
-        d = x - ufl.as_vector([float(itf.centre[0]), float(itf.centre[1])])
-        n = d / ufl.sqrt(ufl.dot(d, d))
-    return n, ufl.as_vector([n[1], -n[0]])
+def bilinear_form(scene: Scene, fm: FittedMesh, V):
+    """Bulk elasticity of each body (the interface is :func:`interface_operator`'s)."""
+    u, v = ufl.TrialFunction(V), ufl.TestFunction(V)
+    us, vs = ufl.split(u), ufl.split(v)
+    dx = ufl.Measure("dx", domain=fm.mesh, subdomain_data=fm.cell_tags)
+    return sum(ufl.inner(sigma(us[b], scene.materials[name].E, scene.materials[name].nu, scene.plane),
+                         ufl.sym(ufl.grad(vs[b]))) * dx(meshes.BODY[name]) for b, name in enumerate(BODIES))
 
 
 def _body_indicator(fm: FittedMesh):
@@ -89,26 +98,9 @@ def _body_indicator(fm: FittedMesh):
     return chi
 
 
-def bilinear_form(scene: Scene, fm: FittedMesh, V):
-    """Bulk elasticity of each body plus the interface springs on Γ."""
-    u, v = ufl.TrialFunction(V), ufl.TestFunction(V)
-    us, vs = ufl.split(u), ufl.split(v)
-    dx = ufl.Measure("dx", domain=fm.mesh, subdomain_data=fm.cell_tags)
-    dS = ufl.Measure("dS", domain=fm.mesh, subdomain_data=fm.facet_tags)
-    a = sum(ufl.inner(sigma(us[b], scene.materials[name].E, scene.materials[name].nu, scene.plane),
-                      ufl.sym(ufl.grad(vs[b]))) * dx(meshes.BODY[name]) for b, name in enumerate(BODIES))
-    n, t = _interface_frame(scene, ufl.SpatialCoordinate(fm.mesh)("+"))
-
-    def gap(w):
-        jump = w[1]("+") - w[0]("+")  # both fields are continuous across Γ's facets
-        return ufl.as_vector([ufl.dot(jump, n), ufl.dot(jump, t)])
-
-    D = ufl.as_matrix(scene.law.constant_tangent().tolist())
-    return a + ufl.inner(D * gap(us), gap(vs)) * dS(meshes.INTERFACE)
-
-
-def linear_form(scene: Scene, fm: FittedMesh, V):
-    """Boundary tractions, pressures, body forces and torques at full load."""
+def linear_forms(scene: Scene, fm: FittedMesh, V) -> list:
+    """One form per load (traction, pressure, body force or torque), at its
+    full value."""
     v = ufl.TestFunction(V)
     vs = ufl.split(v)
     dx = ufl.Measure("dx", domain=fm.mesh, subdomain_data=fm.cell_tags)
@@ -116,8 +108,9 @@ def linear_form(scene: Scene, fm: FittedMesh, V):
     x = ufl.SpatialCoordinate(fm.mesh)
     chi = _body_indicator(fm)
     v_owner = chi * vs[0] + (1.0 - chi) * vs[1]  # trace of the body that owns the boundary facet
-    L = ufl.inner(ufl.as_vector([0.0, 0.0]), vs[0]) * dx
+    forms = []
     for load in scene.loads:
+        L = ufl.inner(ufl.as_vector([0.0, 0.0]), vs[0]) * dx
         if isinstance(load, Traction):
             L += ufl.dot(ufl.as_vector(list(load.value)), v_owner) * ds(meshes.BOUNDARY[load.boundary])
         elif isinstance(load, Pressure):
@@ -125,67 +118,111 @@ def linear_form(scene: Scene, fm: FittedMesh, V):
         else:
             b = ufl.as_vector(body_force(scene, load, x[0], x[1]))
             L += ufl.dot(b, vs[BODIES.index(load.body)]) * dx(meshes.BODY[load.body])
-    return L
+        forms.append(L)
+    return forms
+
+
+def interface_operator(scene: Scene, fm: FittedMesh, V, degree: int) -> InterfaceOperator:
+    """Γ's quadrature on the mesh's Γ facets and ``G``: the jump
+    ``[[u]] = u₊ − u₋`` in the frame (n, t) of the level set's exact normal
+    at each point (not the chord's: SCENES.md, scene B).
+
+    Both fields are continuous across Γ's facets, so their traces are taken
+    from one cell of each facet, whichever side: the interior-facet
+    orientation trap of dolfinx 0.5.2 does not arise.  Points and weights
+    come from the cell's own (possibly curved) geometry map:
+    ``x(X) = Σ ψ_g(X) x_g``, ``dΓ = |∂x/∂ξ| dξ`` on the reference facet, with
+    ``INTERFACE_GAUSS[degree]`` Gauss points.
+    """
+    msh = fm.mesh
+    tdim = msh.topology.dim
+    msh.topology.create_connectivity(tdim - 1, tdim)
+    msh.topology.create_connectivity(tdim, tdim - 1)
+    f2c, c2f = msh.topology.connectivity(tdim - 1, tdim), msh.topology.connectivity(tdim, tdim - 1)
+    cell = basix.CellType.triangle
+    element = basix.create_element(basix.ElementFamily.P, cell, degree, basix.LagrangeVariant.gll_warped)
+    gdeg = msh.ufl_domain().ufl_coordinate_element().degree()
+    cmap = basix.create_element(basix.ElementFamily.P, cell, gdeg, basix.LagrangeVariant.gll_warped)
+    ref, edges = basix.geometry(cell), basix.topology(cell)[1]
+    xi, w_ref = gauss01(INTERFACE_GAUSS[degree])
+    geom = msh.geometry.dofmap
+    xg = msh.geometry.x[:, :2]
+    dofs = [[V.sub(b).sub(j).dofmap for j in range(2)] for b in range(2)]
+    facets = fm.facets_tagged(meshes.INTERFACE)
+    trip = Triplets((2 * len(facets) * len(xi), V.dofmap.index_map.size_global))
+    points, weights = [], []
+    for i, f in enumerate(facets):
+        c = f2c.links(f)[0]
+        a, b = ref[edges[int(np.flatnonzero(c2f.links(c) == f)[0])]]
+        X = a + xi[:, None] * (b - a)
+        coords = xg[geom.links(c)]
+        tab = cmap.tabulate(1, X)
+        x = tab[0, :, :, 0] @ coords
+        dx_dxi = (tab[1, :, :, 0] * (b - a)[0] + tab[2, :, :, 0] * (b - a)[1]) @ coords
+        N = element.tabulate(0, X)[0, :, :, 0]
+        normals = scene.interface.normals(x)
+        frame = np.stack([normals, tangent_of(normals)], axis=1)  # rows n, t
+        rows = 2 * (i * len(xi) + np.arange(len(xi)))[:, None, None] + np.arange(2)[None, :, None]
+        for side, sign in ((0, -1.0), (1, 1.0)):
+            for j in range(2):
+                trip.add(rows, dofs[side][j].cell_dofs(c)[None, None, :], sign * N[:, None, :] * frame[:, :, j:j + 1])
+        points.append(x)
+        weights.append(w_ref * np.linalg.norm(dx_dxi, axis=1))
+    return InterfaceOperator(trip.to_csr(), np.concatenate(weights), np.concatenate(points))
 
 
 class _Constraints:
-    """Dirichlet data: fields held at zero off their body, supports and pins."""
+    """The prescribed unknowns: fields held at zero off their body, supports
+    (value × the support's factor) and pins (zero)."""
 
     def __init__(self, scene: Scene, fm: FittedMesh, V):
         self.scene, self.fm, self.V = scene, fm, V
         tdim = fm.mesh.topology.dim
         ncells = fm.mesh.topology.index_map(tdim).size_local + fm.mesh.topology.index_map(tdim).num_ghosts
         every = np.arange(ncells, dtype=np.int32)
-        self.active, self.bcs = [], []
+        self.active, self.fixed, self.values, self.owner = [], [], [], []
         for b, name in enumerate(BODIES):
             Vb, _ = V.sub(b).collapse()
-            allb = fem.locate_dofs_topological((V.sub(b), Vb), tdim, every)
-            mine = fem.locate_dofs_topological((V.sub(b), Vb), tdim, fm.cells_of(name))
-            off = ~np.isin(allb[0], mine[0])
-            self.active.append(mine[0])
-            zero = fem.Function(Vb)
-            self.bcs.append(fem.dirichletbc(zero, [allb[0][off], allb[1][off]], V.sub(b)))
-        for sup in scene.supports:
+            allb = fem.locate_dofs_topological((V.sub(b), Vb), tdim, every)[0]
+            mine = fem.locate_dofs_topological((V.sub(b), Vb), tdim, fm.cells_of(name))[0]
+            self.active.append(mine)
+            self._add(allb[~np.isin(allb, mine)], 0.0, -1)
+        for i, sup in enumerate(scene.supports):
             facets = fm.facets_tagged(meshes.BOUNDARY[sup.boundary])
             for b in range(2):
                 for j in _components(sup.fix):
-                    self._fix(b, j, fem.locate_dofs_topological, (tdim - 1, facets), sup.value[j])
+                    self._fix(b, j, fem.locate_dofs_topological, (tdim - 1, facets), sup.value[j], i)
         for i, pin in enumerate(scene.pins):
             b = int(scene.body_of([pin.point])[0])
             p = np.asarray(pin.point)
             near = tol.NODE_MATCH * scene.length_scale
             for j in _components(pin.fix):
                 found = self._fix(b, j, fem.locate_dofs_geometrical,
-                                  (lambda x, p=p: np.hypot(x[0] - p[0], x[1] - p[1]) <= near,), 0.0)
+                                  (lambda x, p=p: np.hypot(x[0] - p[0], x[1] - p[1]) <= near,), 0.0, -1)
                 if found == 0:
                     raise DiscretisationError(f"pins[{i}]: no mesh node at {list(pin.point)}")
 
-    @functools.cache
-    def _component_space(self, b: int, j: int):
-        """Component ``j`` of body ``b``'s field, collapsed once."""
-        return self.V.sub(b).sub(j).collapse()[0]
+    def _add(self, dofs, value: float, owner: int) -> None:
+        self.fixed.append(np.asarray(dofs, np.int64))
+        self.values.append(np.full(len(dofs), value))
+        self.owner.append(np.full(len(dofs), owner))
 
-    def _fix(self, b: int, j: int, locate, args, value: float) -> int:
-        Vbj = self._component_space(b, j)
-        dofs = locate((self.V.sub(b).sub(j), Vbj), *args)
-        keep = np.isin(dofs[0], self.active[b])
-        if keep.any():
-            g = fem.Function(Vbj)
-            g.x.array[:] = value
-            self.bcs.append(fem.dirichletbc(g, [dofs[0][keep], dofs[1][keep]], self.V.sub(b).sub(j)))
-        return int(keep.sum())
+    def _fix(self, b: int, j: int, locate, args, value: float, owner: int) -> int:
+        Vbj = self.V.sub(b).sub(j).collapse()[0]
+        dofs = locate((self.V.sub(b).sub(j), Vbj), *args)[0]
+        keep = dofs[np.isin(dofs, self.active[b])]
+        self._add(keep, value, owner)
+        return len(keep)
 
     @property
     def num_active(self) -> int:
         return sum(len(a) for a in self.active)
 
-    def owned_active_rows(self) -> np.ndarray:
-        """Global indices of the owned unknowns that are not held at zero."""
-        imap = self.V.dofmap.index_map
-        bs = self.V.dofmap.index_map_bs
-        local = np.unique(np.concatenate(self.active))
-        local = local[local < imap.size_local * bs]
-        return local + imap.local_range[0] * bs
+    def arrays(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Prescribed unknowns, their values at a factor of 1, their support
+        (−1: always zero); an unknown fixed twice keeps its first entry."""
+        fixed, first = np.unique(np.concatenate(self.fixed), return_index=True)
+        return fixed, np.concatenate(self.values)[first], np.concatenate(self.owner)[first]
 
 
 def _components(fix: str) -> list[int]:
@@ -232,33 +269,30 @@ def solve(scene: Scene, h: float | None = None, *, degree: int = 1, paper: bool 
         el = ufl.VectorElement("Lagrange", fm.mesh.ufl_cell(), degree)
         V = fem.FunctionSpace(fm.mesh, ufl.MixedElement([el, el]))
         cons = _Constraints(scene, fm, V)
-        a = fem.form(bilinear_form(scene, fm, V), jit_params=jit_params or {})
-        L = fem.form(linear_form(scene, fm, V), jit_params=jit_params or {})
-        # Support rows get a diagonal of the order of the stiffness, not 1, so
-        # that they do not spoil the condition estimate; rows held at zero off
-        # their body are left out of the solve altogether.
-        diag = max(m.E for m in scene.materials.values())
-        A = fem_petsc.assemble_matrix(a, bcs=cons.bcs, diagonal=diag)
-        A.assemble()
-        rhs = fem_petsc.assemble_vector(L)
-        fem_petsc.apply_lifting(rhs, [a], bcs=[cons.bcs])
-        rhs.ghostUpdate(addv=PETSc.InsertMode.ADD, mode=PETSc.ScatterMode.REVERSE)
-        fem_petsc.set_bc(rhs, cons.bcs, scale=diag)
-    uh = fem.Function(V)
-    if estimate_condition is None:
-        estimate_condition = cons.num_active <= tol.CONDITION_ESTIMATE_MAX_DOFS
+        K = fem_petsc.assemble_matrix(fem.form(bilinear_form(scene, fm, V), jit_params=jit_params or {}))
+        K.assemble()
+        loads = []
+        for L in linear_forms(scene, fm, V):
+            vec = fem_petsc.assemble_vector(fem.form(L, jit_params=jit_params or {}))
+            vec.ghostUpdate(addv=PETSc.InsertMode.ADD, mode=PETSc.ScatterMode.REVERSE)
+            loads.append(vec.getArray().copy())
+            vec.destroy()
+        if estimate_condition is None:
+            estimate_condition = cons.num_active <= tol.CONDITION_ESTIMATE_MAX_DOFS
+        system = PETScSystem(K, loads, *cons.arrays(), interface_operator(scene, fm, V, degree),
+                             petsc_options=petsc_options, estimate_condition=estimate_condition,
+                             what=f"scene {scene.name} (fe)")
     with timings.measure("solve"):
-        report = linear_solver.solve(A, rhs, uh.vector, rows=cons.owned_active_rows(), petsc_options=petsc_options,
-                                     estimate_condition=estimate_condition, what=f"scene {scene.name} (fe)")
-    uh.x.scatter_forward()
-    report.increments = scene.increments
+        x, path, report = solve_increments(scene, system)
+    uh = fem.Function(V)
+    uh.x.array[:] = x
     report.warnings += scene.interface_warnings(h, fitted=True)
     disps, stresses = _stress_functions(scene, fm, uh, degree)
     locator = BodyCellLocator(fm.mesh, [fm.cells_of(b) for b in BODIES])
-    A.destroy()
-    rhs.destroy()
+    K.destroy()
     timings.total = time.perf_counter() - start
     return Result(method=METHOD, scene=scene, degree=degree, dofs=cons.num_active, timings=timings,
-                  solver=report, fields=BodyFields(locator, disps, stresses),
+                  solver=report, fields=with_history(scene, BodyFields(locator, disps, stresses), path),
+                  interface=path,
                   discretisation={"h": h, "degree": degree, "geometry_order": geometry_order or degree,
                                   "cells": fm.num_cells, "grading": None if grading is None else vars(grading)})

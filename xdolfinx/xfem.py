@@ -42,9 +42,11 @@ from contactcore import tolerances as tol
 from contactcore.cutcell import cut_polygon, edge_crossings, gauss01, interface_rule_in, polygon_rule
 from contactcore.elasticity import voigt_matrix
 from contactcore.geometry import LevelSetInterface, Rectangle, tangent_of
+from contactcore.assembly import Triplets
+from contactcore.newton import InterfaceOperator, solve_increments, with_history
 from contactcore.scene import BodyForce, Pressure, Torque, Traction, body_force
 
-from . import linear_solver
+from .contact_system import PETScSystem
 from .conforming import sigma
 from .evaluation import BodyCellLocator
 
@@ -216,10 +218,9 @@ def _strain_matrix(dN: np.ndarray, coeff: np.ndarray) -> np.ndarray:
     return B
 
 
-def band_kernels(space: EnrichedFunctionSpace, D: np.ndarray, D_law: np.ndarray):
-    """Element matrices (4n × 4n) of the band cells: bulk on each region with
-    its body's D, plus the springs on Γ ∩ cell: [[u]] = 2 Σ N_J a_J."""
-    scene = space.scene
+def band_kernels(space: EnrichedFunctionSpace, D: np.ndarray):
+    """Element matrices (4n × 4n) of the band cells: the bulk of each region
+    with its body's D (the interface is :func:`interface_operator`'s)."""
     for c in space.band:
         dofs = space.cell_dofs[c]
         n = len(dofs)
@@ -228,16 +229,32 @@ def band_kernels(space: EnrichedFunctionSpace, D: np.ndarray, D_law: np.ndarray)
             _, dN, coeff = space.functions(c, pts, side)
             B = _strain_matrix(dN, coeff)
             K += np.einsum("p,pia,ij,pjb->ab", w, B, D[(side + 1) // 2], B)
-        pts, w, normals = interface_rule_in(scene.interface, space.corners[c], space.gauss)
-        if len(w):
-            N, _ = space.tabulate(c, pts)
-            N = N * space.enriched[dofs]
-            frame = np.stack([normals, tangent_of(normals)], axis=1)  # (P, 2, 2): rows n, t
-            G = np.zeros((len(w), 2, 4 * n))
-            G[:, :, 2::4] = 2 * N[:, None, :] * frame[:, :, 0:1]
-            G[:, :, 3::4] = 2 * N[:, None, :] * frame[:, :, 1:2]
-            K += np.einsum("p,pia,ij,pjb->ab", w, G, D_law, G)
         yield dofs, K
+
+
+def interface_operator(space: EnrichedFunctionSpace) -> InterfaceOperator:
+    """Γ's quadrature points in the band cells, on the exact Γ with the level
+    set's normal, and ``G``: ``[[u]] = 2 Σ_J N_J a_J`` in the frame (n, t),
+    rows ``g_N, g_T`` of each point, columns the unrolled unknowns
+    ``4·node + 2 + j`` of a_j."""
+    trip = Triplets((0, 4 * len(space.node_side)))
+    points, weights = [], []
+    m = 0
+    for c in space.band:
+        pts, w, normals = interface_rule_in(space.scene.interface, space.corners[c], space.gauss)
+        if not len(w):
+            continue
+        dofs = space.cell_dofs[c]
+        N = space.tabulate(c, pts)[0] * space.enriched[dofs]
+        frame = np.stack([normals, tangent_of(normals)], axis=1)  # (P, 2, 2): rows n, t
+        rows = 2 * (m + np.arange(len(w)))[:, None, None] + np.arange(2)[None, :, None]
+        for j in range(2):
+            trip.add(rows, 4 * dofs[None, None, :] + 2 + j, 2 * N[:, None, :] * frame[:, :, j:j + 1])
+        points.append(pts)
+        weights.append(w)
+        m += len(w)
+    trip.shape = (2 * m, trip.shape[1])
+    return InterfaceOperator(trip.to_csr(), np.concatenate(weights), np.concatenate(points))
 
 
 def _edge_name(scene: Scene, a: np.ndarray, b: np.ndarray) -> str | None:
@@ -246,14 +263,14 @@ def _edge_name(scene: Scene, a: np.ndarray, b: np.ndarray) -> str | None:
     return common.pop() if common else None
 
 
-def band_loads(space: EnrichedFunctionSpace):
-    """Load vectors (4n) of the band cells: body forces on each region, and
-    tractions or pressures on the cell's boundary edges, split where Γ
-    crosses them (the enriched functions jump there)."""
+def band_loads(space: EnrichedFunctionSpace, load):
+    """Load vectors (4n) of one load on the band cells: a body force on each
+    region, a traction or pressure on the cell's boundary edges, split where
+    Γ crosses them (the enriched functions jump there)."""
     scene = space.scene
     g, gw = gauss01(space.gauss)
-    body_loads = [ld for ld in scene.loads if isinstance(ld, (BodyForce, Torque))]
-    edge_loads = [ld for ld in scene.loads if isinstance(ld, (Traction, Pressure))]
+    body_loads = [load] if isinstance(load, (BodyForce, Torque)) else []
+    edge_loads = [load] if isinstance(load, (Traction, Pressure)) else []
     for c in space.band:
         n = len(space.cell_dofs[c])
         f = np.zeros(4 * n)
@@ -316,8 +333,9 @@ def _tags(space: EnrichedFunctionSpace):
 
 
 def _forms(space: EnrichedFunctionSpace, cell_tags, facet_tags):
-    """Bulk stiffness and loads of the cells outside the band (UFL), and the
-    pattern form that gives the matrix room for every cell's 4n × 4n block."""
+    """Bulk stiffness and one linear form per load for the cells outside the
+    band (UFL), and the pattern form that gives the matrix room for every
+    cell's 4n × 4n block."""
     import meshes
 
     scene, msh, V = space.scene, space.msh, space.V
@@ -327,17 +345,31 @@ def _forms(space: EnrichedFunctionSpace, cell_tags, facet_tags):
     ds = ufl.Measure("ds", domain=msh, subdomain_data=facet_tags)
     a = sum(ufl.inner(sigma(us, scene.materials[b].E, scene.materials[b].nu, scene.plane),
                       ufl.sym(ufl.grad(vs))) * dx(_TAG_UNCUT[b]) for b in BODIES)
-    L = ufl.inner(ufl.as_vector([0.0, 0.0]), vs) * dx
     x = ufl.SpatialCoordinate(msh)
+    forms = []
     for load in scene.loads:
+        L = ufl.inner(ufl.as_vector([0.0, 0.0]), vs) * dx
         if isinstance(load, Traction):
             L += ufl.dot(ufl.as_vector(list(load.value)), vs) * ds(meshes.BOUNDARY[load.boundary])
         elif isinstance(load, Pressure):
             L += -load.value * ufl.dot(ufl.FacetNormal(msh), vs) * ds(meshes.BOUNDARY[load.boundary])
         else:
             L += ufl.dot(ufl.as_vector(body_force(scene, load, x[0], x[1])), vs) * dx(_TAG_UNCUT[load.body])
+        forms.append(fem.form(L))
     pattern = ufl.inner(u, v) * dx
-    return fem.form(a), fem.form(L), fem.form(pattern)
+    return fem.form(a), forms, fem.form(pattern)
+
+
+def _load_vector(space: EnrichedFunctionSpace, L, load) -> np.ndarray:
+    """One load's vector: UFL outside the band, our kernels inside."""
+    b = fem_petsc.create_vector(L)
+    fem_petsc.assemble_vector(b, L)
+    for dofs, f in band_loads(space, load):
+        b.setValuesBlockedLocal(dofs.astype(PETSc.IntType), f, addv=PETSc.InsertMode.ADD_VALUES)
+    b.assemble()
+    out = b.getArray().copy()
+    b.destroy()
+    return out
 
 
 class XFEMFields:
@@ -380,18 +412,20 @@ class XFEMFields:
         return self._eval(points, bodies, True)
 
 
-def _support_rows(space: EnrichedFunctionSpace) -> tuple[np.ndarray, np.ndarray]:
-    """Rows (unrolled, local) and values of the supports and pins."""
+def _support_rows(space: EnrichedFunctionSpace) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Rows (unrolled, local) of the supports and pins, their values at a
+    factor of 1 and the support each follows (−1 for a pin)."""
     scene, msh, V = space.scene, space.msh, space.V
-    rows, vals = [], []
+    rows, vals, owners = [], [], []
     tol_L = tol.NODE_MATCH * scene.length_scale
-    for sup in scene.supports:
+    for i, sup in enumerate(scene.supports):
         facets = mesh.locate_entities_boundary(msh, 1, lambda x, n=sup.boundary: scene.domain.on_boundary(n, x[:2].T, tol_L))
         blocks = fem.locate_dofs_topological(V, 1, facets)
         for comp in sup.fix:
             j = "xy".index(comp)
             rows.append(4 * blocks + j)
             vals.append(np.full(len(blocks), sup.value[j]))
+            owners.append(np.full(len(blocks), i))
     coords = V.tabulate_dof_coordinates()[:, :2]
     for i, pin in enumerate(scene.pins):
         d = np.linalg.norm(coords - np.asarray(pin.point), axis=1)
@@ -401,10 +435,11 @@ def _support_rows(space: EnrichedFunctionSpace) -> tuple[np.ndarray, np.ndarray]
         for comp in pin.fix:
             rows.append(np.array([4 * block + "xy".index(comp)]))
             vals.append(np.zeros(1))
+            owners.append(np.full(1, -1))
     if not rows:
-        return np.zeros(0, np.int32), np.zeros(0)
+        return np.zeros(0, np.int64), np.zeros(0), np.zeros(0, int)
     rows, idx = np.unique(np.concatenate(rows), return_index=True)
-    return rows.astype(np.int32), np.concatenate(vals)[idx]
+    return rows.astype(np.int64), np.concatenate(vals)[idx], np.concatenate(owners)[idx]
 
 
 def solve(scene: Scene, h: float | None = None, *, degree: int = 1, paper: bool = False, cell: str = "quad",
@@ -422,47 +457,36 @@ def solve(scene: Scene, h: float | None = None, *, degree: int = 1, paper: bool 
         space = EnrichedFunctionSpace(msh, degree, scene, GAUSS_POINTS[degree] if gauss is None else gauss)
     with timings.measure("assembly"):
         cell_tags, facet_tags = _tags(space)
-        a, L, pattern = _forms(space, cell_tags, facet_tags)
+        a, loads, pattern = _forms(space, cell_tags, facet_tags)
         A = fem_petsc.create_matrix(pattern)
         fem_petsc.assemble_matrix(A, a)
         D = np.array([voigt_matrix(scene.materials[b].E, scene.materials[b].nu, scene.plane) for b in BODIES])
-        for dofs, K in band_kernels(space, D, scene.law.constant_tangent()):
+        for dofs, K in band_kernels(space, D):
             A.setValuesBlockedLocal(dofs.astype(PETSc.IntType), dofs.astype(PETSc.IntType), np.ascontiguousarray(K),
                                     addv=PETSc.InsertMode.ADD_VALUES)
         A.assemble()
-        b = fem_petsc.create_vector(L)
-        fem_petsc.assemble_vector(b, L)
-        for dofs, f in band_loads(space):
-            b.setValuesBlockedLocal(dofs.astype(PETSc.IntType), f, addv=PETSc.InsertMode.ADD_VALUES)
-        b.assemble()
-        rows, values = _support_rows(space)
-        x = b.duplicate()
-        x.set(0.0)
-        x.setValues(rows, values)
-        x.assemble()
-        diag = max(m.E for m in scene.materials.values())
-        A.zeroRowsColumns(rows, diag, x, b)
-    nblocks = space.V.dofmap.index_map.size_local
-    active = np.concatenate([4 * np.arange(nblocks)[:, None] + np.arange(2)[None],
-                             4 * np.flatnonzero(space.enriched[:nblocks])[:, None] + np.arange(2, 4)[None]]).ravel()
-    active = np.sort(active) + space.V.dofmap.index_map.local_range[0] * 4
-    if estimate_condition is None:
-        estimate_condition = len(active) <= tol.CONDITION_ESTIMATE_MAX_DOFS
+        rows, values, owners = _support_rows(space)
+        nblocks = space.V.dofmap.index_map.size_local
+        unused = (4 * np.flatnonzero(~space.enriched[:nblocks])[:, None] + np.arange(2, 4)[None]).ravel()
+        fixed = np.concatenate([rows, unused])
+        if estimate_condition is None:
+            estimate_condition = 4 * nblocks - len(unused) <= tol.CONDITION_ESTIMATE_MAX_DOFS
+        system = PETScSystem(A, [_load_vector(space, L, load) for L, load in zip(loads, scene.loads)], fixed,
+                             np.concatenate([values, np.zeros(len(unused))]),
+                             np.concatenate([owners, np.full(len(unused), -1)]), interface_operator(space),
+                             petsc_options=petsc_options, estimate_condition=estimate_condition,
+                             what=f"scene {scene.name} (xfem)")
     with timings.measure("solve"):
-        report = linear_solver.solve(A, b, x, rows=active, petsc_options=petsc_options,
-                                     estimate_condition=estimate_condition, what=f"scene {scene.name} (xfem)")
-    report.increments = scene.increments
+        x, path, report = solve_increments(scene, system)
     report.warnings += scene.interface_warnings(h)
     if space.sliver_leak > tol.SLIVER_LEAK_WARN:
         report.warnings.append(f"Γ leaves slivers too thin to enrich (MIN_CUT_FRACTION): a shape function that is "
                                f"not enriched reaches {space.sliver_leak:.1e} across Γ, which perturbs the answer "
                                "by about ten times that; move Γ or the mesh by a little")
-    blocks = x.getArray(readonly=True).reshape(-1, 4).copy()
     A.destroy()
-    b.destroy()
     timings.total = time.perf_counter() - start
-    return Result(method=METHOD, scene=scene, degree=degree, dofs=len(active), timings=timings, solver=report,
-                  fields=XFEMFields(space, blocks),
+    return Result(method=METHOD, scene=scene, degree=degree, dofs=4 * nblocks - len(unused), timings=timings,
+                  solver=report, fields=with_history(scene, XFEMFields(space, x.reshape(-1, 4)), path), interface=path,
                   discretisation={"h": h, "cell": cell, "degree": degree, "cells": int(space.num_cells),
                                   "cut_cells": len(space.regions), "enriched_nodes": space.num_enriched,
                                   "gauss": space.gauss})

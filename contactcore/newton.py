@@ -1,0 +1,295 @@
+"""Load increments and Newton's method for any interface law, any method.
+
+Every method reduces its discretisation to the same algebraic object, a
+:class:`ContactSystem`: a bulk operator ``A`` (elasticity, and for EFGM its
+constraint rows), load vectors ``b(λ)``, prescribed unknowns, and the
+interface operator ``G`` that maps the unknowns to the jumps
+``g = [g_N, g_T]`` at the interface quadrature points.  The residual and the
+consistent tangent of the law are then method-independent:
+
+    R(u) = A u − b(λ) + Gᵀ W t(G u, s),      J = A + Gᵀ W (∂t/∂g) G,
+
+``W`` the quadrature weights and ``s`` the law's history at the points.  For
+each increment (:meth:`Scene.factors`) the prescribed values are set, then
+Newton iterates ``J δu = −R`` on the free unknowns until
+``‖R‖∞ <= NEWTON_RTOL·F`` (:mod:`contactcore.tolerances`), or until the
+law's tangent is the one the last solve used: a piecewise-linear law (every
+law here) is then solved exactly up to that solve's round-off, which stiff
+springs (k ≥ 1e8 E/h) raise above NEWTON_RTOL.  ``J`` is not
+symmetric while points slip, so every method factorises it with a general
+LU.  A failed increment (no convergence, a singular tangent) is halved up to
+``MAX_CUTBACKS`` times; the state is committed only at converged steps.  A
+linear law is one solve at the last increment's factors (history-free, so
+the last increment equals a single solve).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Protocol
+
+import numpy as np
+import scipy.sparse as sp
+
+from scipy.spatial import cKDTree
+
+from . import tolerances as tol
+from .errors import SolverError
+from .geometry import CircleInterface, LineInterface, tangent_of
+from .laws import STATUS_NAMES
+from .result import SolverReport
+
+
+@dataclass
+class InterfaceOperator:
+    """The interface as a method discretises it: ``m`` quadrature points on
+    Γ, their weights, and ``G`` (2m × n) with rows ``2p, 2p+1`` giving
+    ``g_N, g_T`` of point p from the unknowns."""
+
+    G: sp.csr_matrix
+    weights: np.ndarray
+    points: np.ndarray
+
+    @property
+    def size(self) -> int:
+        return len(self.weights)
+
+    def jumps(self, u: np.ndarray) -> np.ndarray:
+        """``[g_N, g_T]`` (m, 2) of the unknowns ``u``."""
+        return (self.G @ u).reshape(-1, 2)
+
+    def forces(self, traction: np.ndarray) -> np.ndarray:
+        """Nodal forces ``Gᵀ W t`` of the tractions ``t`` (m, 2)."""
+        return self.G.T @ (self.weights[:, None] * traction).ravel()
+
+    def stiffness(self, tangent: np.ndarray) -> sp.csr_matrix:
+        """``Gᵀ W D G`` for the tangents ``D`` (m, 2, 2) of the points."""
+        m = self.size
+        rows = 2 * np.arange(m)[:, None, None] + np.arange(2)[None, :, None]
+        cols = 2 * np.arange(m)[:, None, None] + np.arange(2)[None, None, :]
+        WD = sp.csr_matrix(((self.weights[:, None, None] * tangent).ravel(),
+                            (np.broadcast_to(rows, tangent.shape).ravel(),
+                             np.broadcast_to(cols, tangent.shape).ravel())), shape=(2 * m, 2 * m))
+        return (self.G.T @ WD @ self.G).tocsr()
+
+
+class ContactSystem(Protocol):
+    """What a method hands to :func:`solve_increments` (serial, numpy vectors)."""
+
+    size: int
+    interface: InterfaceOperator
+    fixed: np.ndarray  # indices of the prescribed unknowns
+
+    def fixed_values(self, support_factors) -> np.ndarray:
+        """Values of the prescribed unknowns for the supports' factors."""
+
+    def external(self, load_factors, support_factors) -> np.ndarray:
+        """``b(λ)``: loads (and, for multipliers, prescribed values)."""
+
+    def internal(self, u: np.ndarray) -> np.ndarray:
+        """``A u``: the bulk forces of the unknowns."""
+
+    def solve(self, interface_tangent: sp.csr_matrix, rhs: np.ndarray) -> tuple[np.ndarray, SolverReport]:
+        """``δu`` with ``(A + K_Γ)[free, free] δu = rhs[free]``, zero on the
+        fixed unknowns; raise SolverError if the solve fails."""
+
+
+@dataclass
+class Increment:
+    """The converged state of one (sub-)increment at the interface points."""
+
+    step: float
+    factors: tuple
+    iterations: int
+    residuals: list[float]
+    jump: np.ndarray
+    traction: np.ndarray
+    status: np.ndarray
+
+    def counts(self) -> dict[str, int]:
+        """How many points are open, sticking and slipping."""
+        return {name: int(np.sum(self.status == i)) for i, name in enumerate(STATUS_NAMES)}
+
+
+@dataclass
+class InterfacePath:
+    """The interface's history: points, weights and every converged step."""
+
+    points: np.ndarray
+    weights: np.ndarray
+    steps: list[Increment] = field(default_factory=list)
+    state: np.ndarray | None = None
+
+    @property
+    def final(self) -> Increment:
+        return self.steps[-1]
+
+    def iterations(self) -> list[int]:
+        return [s.iterations for s in self.steps]
+
+    def state_at(self, interface, points: np.ndarray) -> np.ndarray | None:
+        """The law's history at other points of Γ, interpolated linearly
+        along Γ (the polar angle of a circle, the arc length of a line) from
+        the quadrature points; the nearest point on a general level set."""
+        if self.state is None:
+            return None
+        if isinstance(interface, (CircleInterface, LineInterface)):
+            a, b = along(interface, self.points), along(interface, points)
+            order = np.argsort(a)
+            period = 2 * np.pi if isinstance(interface, CircleInterface) else None
+            return np.interp(b, a[order], self.state[order], period=period)
+        return self.state[cKDTree(self.points).query(points)[1]]
+
+
+def along(interface, points: np.ndarray) -> np.ndarray:
+    """The parameter along Γ of points on it: polar angle or arc length."""
+    if isinstance(interface, CircleInterface):
+        d = np.asarray(points) - interface.centre
+        return np.arctan2(d[:, 1], d[:, 0])
+    t = tangent_of(np.asarray(interface.normal, float)[None])[0]
+    return (np.asarray(points) - interface.point) @ t
+
+
+class FieldsWithHistory:
+    """A method's fields plus the law's history on Γ, for laws that have one:
+    interface quantities then follow from the jump *and* the history."""
+
+    def __init__(self, fields, interface, path: InterfacePath):
+        self.fields, self.interface, self.path = fields, interface, path
+
+    def displacement(self, points, bodies):
+        return self.fields.displacement(points, bodies)
+
+    def stress(self, points, bodies):
+        return self.fields.stress(points, bodies)
+
+    def interface_state(self, points):
+        return self.path.state_at(self.interface, points)
+
+
+def _merge(total: SolverReport, one: SolverReport) -> None:
+    total.solver = one.solver
+    total.solves += 1
+    total.backward_error = np.nanmax([total.backward_error, one.backward_error])
+    if one.condition is not None:
+        total.condition = max(total.condition or 0.0, one.condition)
+    total.warnings += [w for w in one.warnings if w not in total.warnings]
+    total.options = one.options
+
+
+class _Newton:
+    """Newton on one system and law, state committed only on convergence."""
+
+    def __init__(self, scene, system: ContactSystem):
+        self.scene, self.system, self.law = scene, system, scene.law
+        self.itf = system.interface
+        self.free = np.setdiff1d(np.arange(system.size), system.fixed)
+        self.u = np.zeros(system.size)
+        self.state = self.law.initial_state(self.itf.size)
+        self.report = SolverReport(solver="", solves=0, iterations=[])
+        self.path = InterfacePath(self.itf.points, self.itf.weights)
+
+    def _residual(self, u, b, response) -> tuple[np.ndarray, float]:
+        internal = self.system.internal(u) + self.itf.forces(response.traction)
+        R = internal - b
+        scale = max(np.max(np.abs(b[self.free]), initial=0.0), np.max(np.abs(internal), initial=0.0))
+        return R, scale
+
+    def step(self, k: float) -> None:
+        """Converge the step to increment ``k`` from the committed state, or
+        raise SolverError with the residual history."""
+        loads, supports = self.scene.factors(k)
+        b = self.system.external(loads, supports)
+        u = self.u.copy()
+        u[self.system.fixed] = self.system.fixed_values(supports)
+        history, tangent = [], None
+        for it in range(1, tol.NEWTON_MAX_ITERATIONS + 1):
+            response = self.law.evaluate(self.itf.jumps(u), self.state)
+            R, scale = self._residual(u, b, response)
+            norm = float(np.max(np.abs(R[self.free]), initial=0.0))
+            history.append(norm / scale if scale > 0 else norm)
+            if not np.isfinite(norm):
+                raise SolverError(f"the residual is not finite; residual history {_fmt(history)}")
+            # converged: a small residual, or the law's tangent is the one the
+            # last solve used — a piecewise-linear law is then solved exactly,
+            # up to that solve's round-off (its backward error is checked)
+            settled = tangent is not None and np.array_equal(tangent, response.tangent)
+            if it > 1 and (norm <= tol.NEWTON_RTOL * scale or settled):
+                self._commit(k, (loads, supports), u, response, it - 1, history)
+                return
+            tangent = response.tangent
+            du, rep = self.system.solve(self.itf.stiffness(tangent), -R)
+            _merge(self.report, rep)
+            u = u + du
+        cycling = len(history) > 4 and np.isclose(history[-1], history[-3]) and np.isclose(history[-2], history[-4])
+        raise SolverError(f"Newton did not converge in {tol.NEWTON_MAX_ITERATIONS} iterations"
+                          + (" (it cycles between two contact states)" if cycling else "")
+                          + f"; relative residual history {_fmt(history)}")
+
+    def _commit(self, k, factors, u, response, iterations, history) -> None:
+        self.u, self.state = u, response.state
+        g = self.itf.jumps(u)
+        self.path.steps.append(Increment(k, factors, iterations, history, g, response.traction, response.status))
+        self.report.iterations.append(iterations)
+        self.report.residual = history[-1]
+
+    def increment(self, n: int) -> None:
+        """Increment ``n`` (from ``n − 1``), halving it on failure."""
+        pending, failures = [(float(n), 0)], []
+        start = float(n - 1)
+        while pending:
+            k, depth = pending.pop(0)
+            try:
+                self.step(k)
+                start = k
+            except SolverError as exc:
+                failures.append(f"step {start:g} → {k:g}: {exc}")
+                if depth >= tol.MAX_CUTBACKS:
+                    raise SolverError(
+                        f"scene {self.scene.name}: increment {n} of {self.scene.increments} failed after "
+                        f"{tol.MAX_CUTBACKS} cut-backs (smallest step 1/{2 ** depth} of an increment) — "
+                        f"{failures[0]}; last: {failures[-1]}. Either the load has no equilibrium (shear "
+                        "above μp under a traction load, a body held only by open points), or the springs are "
+                        "too stiff for Newton to settle which points stick and which slip (soften k_N, k_T or "
+                        "use more increments)") from None
+                mid = (start + k) / 2
+                pending[:0] = [(mid, depth + 1), (k, depth + 1)]
+
+
+def _fmt(values) -> str:
+    return "[" + ", ".join(f"{v:.2e}" for v in values) + "]"
+
+
+def with_history(scene, fields, path: InterfacePath):
+    """``fields`` as a Result holds them: wrapped with the history when the
+    law has one."""
+    return FieldsWithHistory(fields, scene.interface, path) if scene.law.has_history else fields
+
+
+def solve_increments(scene, system: ContactSystem) -> tuple[np.ndarray, InterfacePath, SolverReport]:
+    """Solve ``scene`` on ``system``: its unknowns at the last increment, the
+    interface's history and the solver's report (module doc)."""
+    newton = _Newton(scene, system)
+    if scene.law.is_linear:
+        _linear(newton, scene.increments)
+    else:
+        for n in range(1, scene.increments + 1):
+            newton.increment(n)
+        newton.report.solver = f"newton + {newton.report.solver}"
+    newton.report.increments = scene.increments
+    newton.path.state = newton.state
+    return newton.u, newton.path, newton.report
+
+
+def _linear(newton: _Newton, n: int) -> None:
+    """A linear law: one solve at the last increment's factors."""
+    system, itf, law = newton.system, newton.itf, newton.law
+    loads, supports = newton.scene.factors(n)
+    b = system.external(loads, supports)
+    u = newton.u
+    u[system.fixed] = system.fixed_values(supports)
+    response = law.evaluate(itf.jumps(u))
+    R, _ = newton._residual(u, b, response)
+    du, rep = system.solve(itf.stiffness(response.tangent), -R)
+    _merge(newton.report, rep)
+    u += du
+    newton._commit(float(n), (loads, supports), u, law.evaluate(itf.jumps(u)), 1, [rep.residual])

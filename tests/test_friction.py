@@ -1,0 +1,243 @@
+"""Unilateral contact and Coulomb friction (issue 6): the laws, load paths,
+Newton with cut-back, and the three methods against a closed form and
+against each other."""
+import dataclasses
+
+import numpy as np
+import pytest
+
+import tolerances as tol
+from contactcore import SceneError, SolverError, load_scene, make_law, sample_profiles, scene_from_dict
+from contactcore.laws import OPEN, SLIP, STICK, CoulombLaw, LinearLaw, UnilateralLaw
+from contactcore.newton import InterfaceOperator, solve_increments
+from contactcore.result import SolverReport
+from verification import methods
+from verification.closed_forms import layered_slip
+
+METHODS = ["fe", "xfem", "efgm"]
+
+
+# ----- the laws ---------------------------------------------------------------
+
+def _fd_tangent(law, g, state, eps=1e-9):
+    """∂t/∂g by central differences, one point at a time."""
+    out = np.zeros((len(g), 2, 2))
+    for j in range(2):
+        d = np.zeros_like(g)
+        d[:, j] = eps
+        out[:, :, j] = (law.evaluate(g + d, state).traction - law.evaluate(g - d, state).traction) / (2 * eps)
+    return out
+
+
+def test_coulomb_return_map_and_consistent_tangent():
+    law = CoulombLaw(kN=2.0, kT=1.0, mu=0.5)
+    # open; stick; slip forwards; slip backwards (kN g_N = -2, μp = 1)
+    g = np.array([[0.3, 0.7], [-1.0, 0.4], [-1.0, 3.0], [-1.0, -3.0]])
+    s = np.array([0.1, 0.0, 0.5, -0.5])
+    r = law.evaluate(g, s)
+    assert list(r.status) == [OPEN, STICK, SLIP, SLIP]
+    assert np.allclose(r.traction, [[0, 0], [-2, 0.4], [-2, 1.0], [-2, -1.0]])
+    # open: s follows g_T; stick: s unchanged; slip: k_T (g_T - s) = t_T
+    assert np.allclose(r.state, [0.7, 0.0, 2.0, -2.0])
+    assert np.allclose(r.tangent, _fd_tangent(law, g, s), atol=1e-6)
+    assert r.tangent[2, 1, 0] != r.tangent[2, 0, 1]  # slipping: not symmetric
+
+
+def test_coulomb_sticks_exactly_at_the_limit_despite_round_off():
+    law = CoulombLaw(kN=1e10, kT=1e8, mu=0.3)
+    gN = -1e-5
+    limit = law.mu * law.kN * -gN
+    gT = limit / law.kT * (1 + 1e-14)  # the limit, plus round-off
+    assert law.evaluate(np.array([[gN, gT]]), np.zeros(1)).status[0] == STICK
+
+
+def test_unilateral_opens_in_tension_and_matches_linear_when_closed():
+    uni, lin = UnilateralLaw(3.0, 2.0), LinearLaw(3.0, 2.0)
+    g = np.array([[-1.0, 0.5], [0.2, 0.5]])
+    r = uni.evaluate(g)
+    assert list(r.status) == [STICK, OPEN]
+    assert np.allclose(r.traction[0], lin.evaluate(g[:1]).traction[0]) and np.all(r.traction[1] == 0)
+    assert np.allclose(r.tangent, _fd_tangent(uni, g, None), atol=1e-6)
+
+
+@pytest.mark.parametrize("params,field", [
+    ({"type": "coulomb", "kN": 1.0, "kT": 1.0}, "interface.law.mu"),
+    ({"type": "coulomb", "kN": 1.0, "kT": 1.0, "mu": -0.1}, "interface.law.mu"),
+    ({"type": "unilateral", "kN": 1.0, "kT": 0.0}, "interface.law.kT"),
+    ({"type": "unilateral", "kN": 1.0, "kT": 1.0, "mu": 0.2}, "interface.law.mu"),
+])
+def test_bad_law_parameters_name_the_field(params, field):
+    with pytest.raises(SceneError, match=field.replace(".", r"\.")):
+        make_law(params, "interface.law")
+
+
+# ----- load paths --------------------------------------------------------------
+
+def test_load_path_factors():
+    scene = load_scene("layered-slip")
+    assert scene.factors(2) == ((0.5, 0.0, 0.0), (0.1, 0.0))  # no path on the bottom support: the ramp 2/20
+    assert scene.factors(10)[1][1] == 1.5 and scene.factors(14)[0][1] == 0.0
+    assert scene.factors(20) == ((1.0, -1.0, -1.0), (1.0, -1.0))
+
+
+@pytest.mark.parametrize("path,problem", [
+    ([[4, 1.0], [3, 0.0]], "increasing"),
+    ([[25, 1.0]], "at most"),
+    ([[4, "x"]], "finite number"),
+    ([4, 1.0], "pair"),
+    ([], "non-empty"),
+])
+def test_bad_load_paths_are_refused(scene_dict, path, problem):
+    data = scene_dict("layered-slip")
+    data["loads"][0]["path"] = path
+    with pytest.raises(SceneError, match=r"loads\[0\]\.path") as exc:
+        scene_from_dict(data)
+    assert problem in str(exc.value)
+
+
+# ----- Newton and cut-back on a system of one spring ------------------------------
+
+class _OneSpring:
+    """One unknown u (the jump), a bulk spring of stiffness K to ground, a
+    load F: R = K u + w t(u) − F.  Its solve refuses steps longer than
+    ``max_step`` increments of the load (a stand-in for a failing Newton)."""
+
+    def __init__(self, K, F, max_step):
+        self.size, self.K, self.F, self.max_step = 1, K, F, max_step
+        self.interface = InterfaceOperator(__import__("scipy.sparse").sparse.csr_matrix([[1.0], [0.0]]),
+                                           np.ones(1), np.zeros((1, 2)))
+        self.fixed = np.zeros(0, int)
+        self.last = 0.0
+
+    def fixed_values(self, f):
+        return np.zeros(0)
+
+    def external(self, loads, supports):
+        self.load = loads[0]
+        return np.array([loads[0] * self.F])
+
+    def internal(self, u):
+        return self.K * u
+
+    def solve(self, Ki, rhs):
+        if abs(self.load - self.last) > self.max_step + 1e-12:
+            raise SolverError("step too long")
+        self.last = self.load
+        return rhs / (self.K + Ki.toarray()[0, 0]), SolverReport("direct", residual=0.0, backward_error=0.0)
+
+
+def _one_spring_scene(increments):
+    scene = load_scene("A")
+    return dataclasses.replace(scene, law=UnilateralLaw(1.0, 1.0), increments=increments)
+
+
+def test_newton_cuts_back_and_records_each_sub_step():
+    # compression: g_N < 0 closed, K_total = 2, u = -F/2
+    system = _OneSpring(K=1.0, F=-1.0, max_step=0.25 / 2)  # each increment (0.25) needs one halving
+    u, path, report = solve_increments(_one_spring_scene(4), system)
+    assert np.isclose(u[0], -0.5)
+    assert [s.step for s in path.steps] == [0.5, 1, 1.5, 2, 2.5, 3, 3.5, 4]
+
+
+def test_newton_failure_names_the_increment_and_the_residuals():
+    system = _OneSpring(K=1.0, F=-1.0, max_step=0.0)  # no step is ever short enough
+    with pytest.raises(SolverError, match=r"increment 1 of 4 failed after \d+ cut-backs"):
+        solve_increments(_one_spring_scene(4), system)
+
+
+def test_shear_above_friction_has_no_equilibrium_and_says_so(scene_dict):
+    data = scene_dict("A")
+    data["interface"]["law"] = {"type": "coulomb", "kN": 1e10, "kT": 1e8, "mu": 0.2}  # 2.5e4 > 0.2 · 1e5
+    with pytest.raises(SolverError, match=r"increment 1 of 20 failed.*no equilibrium"):
+        methods.solver("fe")(scene_from_dict(data), 0.1)
+
+
+# ----- the three methods ------------------------------------------------------
+
+@pytest.fixture(scope="module")
+def layered():
+    return layered_slip()
+
+
+@pytest.mark.parametrize("method", METHODS)
+def test_layered_closed_form_in_every_method(method, layered):
+    """Stick, slip, stick after reversal and reversed slip, increment by
+    increment: the mean t_T, g_T and every point's status match the closed
+    form; the final fields match it to round-off (fe, xfem: linear fields
+    are in their spaces) or to EFGM's quadrature error."""
+    result = methods.solver(method)(layered.scene)
+    exact = layered.history()
+    w = result.interface.weights / result.interface.weights.sum()
+    assert len(result.interface.steps) == len(exact)
+    bound, bound_sigma = tol.FRICTION_CLOSED_FORM[method]
+    for step, st in zip(result.interface.steps, exact):
+        # where the exact shear sits on the limit (the last stick step before
+        # a slip), the status is decided by the method's own error
+        on_limit = abs(st.tau) >= (1 - bound) * layered.mu * st.p
+        if not on_limit or st.status == "slip":
+            assert np.all(step.status == (STICK if st.status == "stick" else SLIP)), step.step
+        assert abs(w @ step.traction[:, 1] - st.tau) <= bound * layered.mu * st.p + 1e-9, step.step
+        gT = st.tau / layered.kT + st.slip
+        assert abs(w @ step.jump[:, 1] - gT) <= bound * layered.mu * st.p / layered.kT, step.step
+    pts = np.column_stack([np.full(41, 0.37), np.linspace(0.01, 0.99, 41)])
+    bodies = layered.scene.body_of(pts)
+    want = layered.fields(exact[-1])
+    err_u = np.max(np.abs(result.fields.displacement(pts, bodies) - want.displacement(pts, bodies)))
+    err_s = np.max(np.abs(result.fields.stress(pts, bodies) - want.stress(pts, bodies)))
+    assert err_u <= bound * np.max(np.abs(want.displacement(pts, bodies)))
+    assert err_s <= bound_sigma * exact[-1].p
+
+
+def test_the_closed_form_matches_its_scene_inputs(layered):
+    """The side tractions of the scene file are τ of the closed form at every
+    increment (the file was written from it)."""
+    for k, st in enumerate(layered.history(), 1):
+        loads, _ = layered.scene.factors(k)
+        assert np.isclose(loads[2] * layered.scene.loads[2].value[1], st.tau, rtol=1e-12, atol=1e-6)
+
+
+def _profiles(scene, method, h):
+    res = methods.solver(method)(scene, h, estimate_condition=False)
+    return res, {p.id: p for p in sample_profiles(scene, res.fields)}
+
+
+@pytest.mark.parametrize("method", METHODS)
+def test_unilateral_in_full_compression_is_the_linear_answer(method):
+    linear = load_scene("A")
+    unilateral = linear.with_changes(law=UnilateralLaw(linear.law.kN, linear.law.kT))
+    res, got = _profiles(unilateral, method, 0.1)
+    assert np.all(res.interface.final.status == STICK)  # closed everywhere
+    _, want = _profiles(linear, method, 0.1)
+    for pid, prof in want.items():
+        for q in prof.names[3:]:
+            scale = np.max(np.abs(prof.columns[q]))
+            assert np.max(np.abs(got[pid].columns[q] - prof.columns[q])) <= tol.PATCH_ROUNDOFF * scale, (pid, q)
+
+
+@pytest.mark.parametrize("method", METHODS)
+def test_coulomb_with_large_friction_is_the_unilateral_answer(method):
+    """Compared where the law is evaluated, at Γ's quadrature points, and on
+    the bulk profiles (between quadrature points a profile's t_T interpolates
+    the history, which is approximate where open and closed points meet)."""
+    scene = load_scene("C-coulomb")
+    sticky = scene.with_changes(law=CoulombLaw(scene.law.kN, scene.law.kT, tol.NEVER_SLIPS_MU))
+    unilateral = scene.with_changes(law=UnilateralLaw(scene.law.kN, scene.law.kT))
+    res, got = _profiles(sticky, method, 0.1)
+    assert not np.any(res.interface.final.status == SLIP)
+    assert np.any(res.interface.final.status == OPEN)  # the comparison includes open points
+    ref, want = _profiles(unilateral, method, 0.1)
+    t_got, t_want = res.interface.final.traction, ref.interface.final.traction
+    assert np.max(np.abs(t_got - t_want)) <= tol.PATCH_ROUNDOFF * np.max(np.abs(t_want))
+    assert np.array_equal(res.interface.final.status, ref.interface.final.status)
+    for pid, prof in want.items():
+        for q in set(prof.names[3:]) - {"tN", "tT", "gN", "gT"}:
+            scale = np.max(np.abs(prof.columns[q]))
+            assert np.max(np.abs(got[pid].columns[q] - prof.columns[q])) <= tol.PATCH_ROUNDOFF * scale, (pid, q)
+
+
+@pytest.mark.parametrize("method", METHODS)
+def test_scene_c_coulomb_has_open_stick_and_slip(method):
+    res = methods.solver(method)(load_scene("C-coulomb"), estimate_condition=False)  # the scene's h = 0.05
+    counts = res.interface.final.counts()
+    assert min(counts.values()) > 0, counts
+    assert res.solver.solver.startswith("newton") and len(res.solver.iterations) == 20

@@ -1,0 +1,83 @@
+"""A dolfinx-assembled bulk matrix as the shared :class:`ContactSystem`.
+
+The conforming reference and XFEM both end with a PETSc matrix ``K`` of the
+bulk (no supports applied), one load vector per load, the prescribed
+unknowns and an :class:`~contactcore.newton.InterfaceOperator`.  This class
+hands them to :func:`contactcore.newton.solve_increments`: prescribed
+unknowns are eliminated (only the free rows are factorised, by MUMPS LU,
+which assumes no symmetry), and the interface tangent ``K_Γ`` (scipy CSR,
+from the one assembly sink) is added into a copy of ``K`` whose pattern
+already holds it (every cell couples all its unknowns).  Serial only.
+"""
+from __future__ import annotations
+
+import numpy as np
+import scipy.sparse as sp
+from petsc4py import PETSc
+
+from contactcore import DiscretisationError
+from contactcore.newton import InterfaceOperator
+
+from . import linear_solver
+
+
+def to_petsc(A: sp.csr_matrix) -> PETSc.Mat:
+    """A serial PETSc AIJ matrix with the entries of a scipy CSR matrix."""
+    A = A.tocsr()
+    A.sort_indices()
+    return PETSc.Mat().createAIJ(size=A.shape, csr=(A.indptr.astype(PETSc.IntType),
+                                                    A.indices.astype(PETSc.IntType), A.data),
+                                 comm=PETSc.COMM_SELF)
+
+
+class PETScSystem:
+    """``K`` (PETSc), loads, prescribed unknowns and Γ (see module doc).
+
+    ``fixed`` are the prescribed unknowns; ``fixed_full`` their values at a
+    factor of 1 and ``owner`` the support each follows (−1: always zero);
+    ``active`` the unknowns that take part at all (the others are fixed at
+    zero too).
+    """
+
+    def __init__(self, K, loads: list[np.ndarray], fixed, fixed_full, owner, interface: InterfaceOperator, *,
+                 petsc_options=None, estimate_condition: bool = True, what: str = "linear system"):
+        if K.getComm().getSize() > 1:
+            raise DiscretisationError("the increment and Newton driver runs in serial only (no mpirun)")
+        self.K, self.loads = K, loads
+        self.size = K.getSize()[0]
+        self.fixed = np.asarray(fixed, dtype=np.int64)
+        self.fixed_full, self.owner = np.asarray(fixed_full, float), np.asarray(owner)
+        self.free = np.setdiff1d(np.arange(self.size), self.fixed)
+        self.interface = interface
+        self.options, self.estimate, self.what = petsc_options, estimate_condition, what
+
+    def fixed_values(self, support_factors) -> np.ndarray:
+        factor = np.asarray(tuple(support_factors) + (0.0,))[self.owner]
+        return self.fixed_full * np.where(self.owner >= 0, factor, 0.0)
+
+    def external(self, load_factors, support_factors) -> np.ndarray:
+        return sum((lam * v for lam, v in zip(load_factors, self.loads)), np.zeros(self.size))
+
+    def internal(self, u: np.ndarray) -> np.ndarray:
+        x, y = self.K.createVecs()
+        x.setArray(u)
+        self.K.mult(x, y)
+        out = y.getArray().copy()
+        x.destroy()
+        y.destroy()
+        return out
+
+    def solve(self, interface_tangent: sp.csr_matrix, rhs: np.ndarray):
+        J = self.K.copy()
+        Ki = to_petsc(interface_tangent)
+        J.axpy(1.0, Ki, structure=PETSc.Mat.Structure.SUBSET_NONZERO_PATTERN)
+        b, x = J.createVecs()
+        b.setArray(rhs)
+        x.set(0.0)
+        try:
+            report = linear_solver.solve(J, b, x, rows=self.free, petsc_options=self.options,
+                                         estimate_condition=self.estimate, what=self.what)
+            return x.getArray().copy(), report
+        finally:
+            for obj in (J, Ki, b, x):
+                obj.destroy()
