@@ -270,7 +270,7 @@ def solve_increments(scene, system: ContactSystem) -> tuple[np.ndarray, Interfac
     interface's history and the solver's report (module doc)."""
     newton = _Newton(scene, system)
     if scene.law.is_linear:
-        _linear(newton, scene.increments)
+        newton.step(float(scene.increments))  # one solve: the tangent is settled at once
     else:
         for n in range(1, scene.increments + 1):
             newton.increment(n)
@@ -278,18 +278,3 @@ def solve_increments(scene, system: ContactSystem) -> tuple[np.ndarray, Interfac
     newton.report.increments = scene.increments
     newton.path.state = newton.state
     return newton.u, newton.path, newton.report
-
-
-def _linear(newton: _Newton, n: int) -> None:
-    """A linear law: one solve at the last increment's factors."""
-    system, itf, law = newton.system, newton.itf, newton.law
-    loads, supports = newton.scene.factors(n)
-    b = system.external(loads, supports)
-    u = newton.u
-    u[system.fixed] = system.fixed_values(supports)
-    response = law.evaluate(itf.jumps(u))
-    R, _ = newton._residual(u, b, response)
-    du, rep = system.solve(itf.stiffness(response.tangent), -R)
-    _merge(newton.report, rep)
-    u += du
-    newton._commit(float(n), (loads, supports), u, law.evaluate(itf.jumps(u)), 1, [rep.residual])
