@@ -266,18 +266,27 @@ class EFGMSystem:
                                    estimate_condition=self.estimate, what=self.what)
 
 
-def solve(scene: Scene, h: float | None = None, *, degree: int = 1, paper: bool = False,
+#: The MLS bases by name (``--basis``) and their degree.
+BASES = {"linear": 1, "quadratic": 2}
+
+
+def solve(scene: Scene, h: float | None = None, *, degree: int = 1, paper: bool = False, basis: str | None = None,
           dmax: float | None = None, weight: str = "cubic", support: str = "circular",
           nodes: np.ndarray | None = None, gauss: int | None = None,
           estimate_condition: bool | None = None) -> Result:
     """Solve ``scene`` with EFGM.
 
-    ``degree`` 1 or 2 (MLS basis), ``dmax`` the support dilation (default
+    ``degree`` 1 or 2 (MLS basis), or ``basis`` "linear" or "quadratic"
+    (the same choice by name; it overrides ``degree``), ``dmax`` the support dilation (default
     :data:`DMAX`), ``weight`` "cubic" or "quartic", ``support`` "circular" or
     "rectangular", ``nodes`` any (N, 2) point set instead of a grid (it must
     include nodes on the supported boundaries), ``gauss`` the points per
     direction of each cell (default :data:`GAUSS_POINTS`).
     """
+    if basis is not None:
+        if basis not in BASES:
+            raise DiscretisationError(f"efgm: basis must be one of {', '.join(BASES)} (got {basis!r})")
+        degree = BASES[basis]
     if degree not in (1, 2):
         raise DiscretisationError(f"efgm: degree must be 1 or 2 (got {degree})")
     if support not in ("circular", "rectangular"):

@@ -1,7 +1,8 @@
 """Command line of the verification drivers.
 
     python -m verification run SCENE_OR_TOML --method fe|xfem|efgm|all [--degree 1|2] [--cell quad|triangle|gmsh]
-        [--h H] [--paper] [--xdmf] [--petsc-option KEY=VALUE ...] [--dmax D] [--nodes FILE] --out DIR
+        [--h H] [--paper] [--xdmf] [--petsc-option KEY=VALUE ...] [--dmax D] [--basis linear|quadratic]
+        [--nodes FILE] --out DIR
     python -m verification paper [--scene A B C] [--ref-h H] --out DIR
     python -m verification closed [--case patch pressurised_rod twisted_rod] [--method ...] [--degree 1 2] --out DIR
     python -m verification efficiency SCENE --method fe efgm --degree 1 2 --h H1 H2 ... --ref-h H --out DIR
@@ -53,6 +54,8 @@ def _parser() -> argparse.ArgumentParser:
                      help="override a PETSc option of the fe solve (e.g. pc_factor_mat_solver_type=superlu)")
     run.add_argument("--cell", choices=("quad", "triangle", "gmsh"), help="XFEM background cells (default quad)")
     run.add_argument("--dmax", type=float, help="EFGM support dilation (default: by basis degree)")
+    run.add_argument("--basis", choices=("linear", "quadratic"),
+                     help="EFGM's MLS basis (default: linear for --degree 1, quadratic for --degree 2)")
     run.add_argument("--nodes", type=Path, help="EFGM node set: a text file of x y rows (default: a grid)")
     run.add_argument("--out", type=Path, required=True, help="result folder")
     pap = sub.add_parser("paper", help="the paper's figures and an agreement table against a refined reference")
@@ -129,7 +132,8 @@ def _dispatch(args, argv) -> None:
     if cmd == "run":
         from .run import run
         run(args.scene, args.method, args.out, h=args.h, degree=args.degree, paper=args.paper, xdmf=args.xdmf,
-            petsc_options=dict(args.petsc_option), dmax=args.dmax, nodes_file=args.nodes, cell=args.cell, argv=argv)
+            petsc_options=dict(args.petsc_option), dmax=args.dmax, nodes_file=args.nodes, cell=args.cell,
+            basis=args.basis, argv=argv)
     elif cmd == "paper":
         from .paper import paper
         paper(args.out, tuple(args.scene), args.ref_h, argv=argv)

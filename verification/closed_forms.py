@@ -12,8 +12,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from contactcore import (CircleInterface, Disc, InterfaceProfile, LineInterface, LinearLaw, LineProfile, Material,
-                         Pin, Pressure, Rectangle, Scene, Support, Torque, Traction)
+from contactcore import (BodyForce, CircleInterface, Disc, InterfaceProfile, LineInterface, LinearLaw, LineProfile,
+                         Material, Pin, Pressure, Rectangle, Scene, Support, Torque, Traction)
 from contactcore.elasticity import compliance, lame
 from contactcore.tolerances import GEOMETRY, STICK_ROUNDOFF
 
@@ -220,6 +220,80 @@ def twisted_rod(*, a: float = 0.4, b: float = 1.0, torque: float = 1e4, kN: floa
         profiles=(InterfaceProfile("gamma", ("tN", "tT", "gT")),),
     ).validated()
     return TwistedRod(scene, np.array([A, D, B, C]), (mm, mp))
+
+
+@dataclass
+class QuadraticLayers:
+    """Two layers whose displacement is quadratic in each (issue 7's
+    degree-2 reproduction test).
+
+    On ``[0, 1]²`` with Γ at ``y = y_Γ`` (n = e_y, − below), one component
+    ``j`` of u depends on y alone: the shear ``u = (w(y), 0)`` held by
+    rollers ``u_y = 0`` on the sides, or the stretch ``u = (0, w(y))`` held
+    by rollers ``u_x = 0``.  With the modulus ``M = μ`` (shear) or
+    ``E/(1 − ν²)`` (stretch, plane stress with ε_xx = 0), equilibrium is
+    ``(M w′)′ + b = 0`` with a constant body force ``b±`` in each layer, so
+    ``M w′`` is linear and w quadratic.  The bottom is clamped, the top
+    carries the traction τ in component j, and on Γ the stress ``s = M w′``
+    is continuous and carried by the spring: ``s = k [[w]]`` (``k = k_T`` or
+    ``k_N``; the + layer's traction is ``−s e_j = −(t_N n + t_T t)``)::
+
+        M⁺ w⁺′(y) = τ + b⁺ (1 − y),     M⁻ w⁻′(y) = s + b⁻ (y_Γ − y),
+        s = τ + b⁺ (1 − y_Γ),   w⁻(0) = 0,   w⁺(y_Γ) = w⁻(y_Γ) + s/k.
+
+    Every method of degree ≥ 2 holds it exactly (EFGM to its quadrature).
+    """
+
+    scene: Scene
+    component: int
+    moduli: tuple[float, float]
+    body: tuple[float, float]
+    traction: float
+    spring: float
+    y_gamma: float
+
+    def _profile(self, y, bodies):
+        """``w`` and ``M w′`` at heights y for the given bodies."""
+        (Mm, Mp), (bm, bp), tau, yg = self.moduli, self.body, self.traction, self.y_gamma
+        s = tau + bp * (1 - yg)
+        wm = (s * y + bm * (yg * y - y * y / 2)) / Mm
+        w_gamma = (s * yg + bm * yg * yg / 2) / Mm + s / self.spring
+        wp = w_gamma + (tau * (y - yg) + bp * ((y - yg) - (y * y - yg * yg) / 2)) / Mp
+        plus = np.asarray(bodies) == 1
+        return np.where(plus, wp, wm), np.where(plus, tau + bp * (1 - y), s + bm * (yg - y))
+
+    def displacement(self, points, bodies) -> np.ndarray:
+        w, _ = self._profile(np.asarray(points, float)[:, 1], bodies)
+        out = np.zeros((len(w), 2))
+        out[:, self.component] = w
+        return out
+
+    def stress(self, points, bodies) -> np.ndarray:
+        _, s = self._profile(np.asarray(points, float)[:, 1], bodies)
+        if self.component == 0:
+            return np.column_stack([0 * s, 0 * s, s])
+        nu = np.where(np.asarray(bodies) == 1, self.scene.materials["plus"].nu, self.scene.materials["minus"].nu)
+        return np.column_stack([nu * s, s, 0 * s])
+
+
+def quadratic_layers(kind: str = "shear", *, y_gamma: float = 0.53, minus=Material(2e11, 0.3),
+                     plus=Material(7e10, 0.2), kN: float = 1e12, kT: float = 5e10, traction: float = 1e6,
+                     body_force: tuple[float, float] = (4e6, -3e6)) -> QuadraticLayers:
+    """The closed form of :class:`QuadraticLayers` ("shear" or "stretch")
+    and its scene; ``body_force`` is (b⁻, b⁺) in the moving component."""
+    j = {"shear": 0, "stretch": 1}[kind]
+    moduli = tuple(m.E / (2 * (1 + m.nu)) if j == 0 else m.E / (1 - m.nu ** 2) for m in (minus, plus))
+    value = lambda v: (v, 0.0) if j == 0 else (0.0, v)  # noqa: E731
+    roller = "y" if j == 0 else "x"
+    scene = Scene(
+        name=f"quadratic_{kind}", title=f"two layers, quadratic {kind} in each", plane="stress",
+        domain=Rectangle((0.0, 0.0), (1.0, 1.0)), interface=LineInterface((0.0, y_gamma), (0.0, 1.0)),
+        materials={"minus": minus, "plus": plus}, law=LinearLaw(kN, kT),
+        supports=(Support("bottom", "xy"), Support("left", roller), Support("right", roller)),
+        loads=(Traction("top", value(traction)), BodyForce("minus", value(body_force[0])),
+               BodyForce("plus", value(body_force[1]))),
+    ).validated()
+    return QuadraticLayers(scene, j, moduli, body_force, traction, kT if j == 0 else kN, y_gamma)
 
 
 #: The closed-form cases of the verification, by name.

@@ -19,7 +19,7 @@ METHODS = {
 OPTIONS = {
     "fe": ("petsc_options",),
     "xfem": ("petsc_options", "cell"),
-    "efgm": ("dmax", "nodes"),
+    "efgm": ("dmax", "nodes", "basis"),
 }
 
 #: Methods whose fields live on a dolfinx mesh, so XDMF output exists.

@@ -67,7 +67,7 @@ def _summary_table(summaries: list[dict]) -> str:
 
 
 def run(scene_name: str, method_names: list[str], out: Path, *, h=None, degree=1, paper=False,
-        xdmf=False, petsc_options=None, dmax=None, nodes_file=None, cell=None, argv=()) -> list[dict]:
+        xdmf=False, petsc_options=None, dmax=None, nodes_file=None, cell=None, basis=None, argv=()) -> list[dict]:
     """Solve, sample the scene's profiles, write everything; return the summaries."""
     scene = load_scene(scene_name)
     nodes = read_nodes(nodes_file) if nodes_file else None
@@ -75,8 +75,10 @@ def run(scene_name: str, method_names: list[str], out: Path, *, h=None, degree=1
     files.write_text(out / "scene.toml", scene_text(scene_name))
     profiles, summaries, paths = {}, [], {}
     for name in methods.expand(method_names):
-        log.info("scene %s: solving with %s (degree %d)", scene.name, name, degree)
-        options = methods.options_for(name, petsc_options=petsc_options or None, dmax=dmax, nodes=nodes, cell=cell)
+        options = methods.options_for(name, petsc_options=petsc_options or None, dmax=dmax, nodes=nodes, cell=cell,
+                                      basis=basis)
+        log.info("scene %s: solving with %s (%s)", scene.name, name, f"{basis} basis" if "basis" in options
+                 else f"degree {degree}")
         result = methods.solver(name)(scene, h, degree=degree, paper=paper, **options)
         summary = result.summary()
         summaries.append(summary)
@@ -86,7 +88,7 @@ def run(scene_name: str, method_names: list[str], out: Path, *, h=None, degree=1
                  result.solver.residual)
         for prof in sample_profiles(scene, result.fields):
             files.write_profile_csv(out / name / "profiles" / f"{prof.id}.csv", prof)
-            profiles.setdefault(prof.id, {})[f"{name} (p{degree})"] = prof
+            profiles.setdefault(prof.id, {})[f"{name} (p{result.degree})"] = prof
         if xdmf and name in methods.WITH_XDMF:
             _write_xdmf(out / name / "xdmf", result)
         elif xdmf:
@@ -108,6 +110,6 @@ def run(scene_name: str, method_names: list[str], out: Path, *, h=None, degree=1
     files.write_json(out / "run.json", {**files.provenance(list(argv)), "scene": scene_name,
                                         "methods": methods.expand(method_names), "h": h, "degree": degree,
                                         "paper": paper, "petsc_options": petsc_options or {}, "dmax": dmax,
-                                        "nodes": str(nodes_file) if nodes_file else None, "cell": cell})
+                                        "basis": basis, "nodes": str(nodes_file) if nodes_file else None, "cell": cell})
     log.info("wrote %s", out)
     return summaries
