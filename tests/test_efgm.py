@@ -75,13 +75,18 @@ def _patch_errors(patch, **kw):
     return max_errors(patch.scene, method.solve(patch.scene, 0.1, **kw).fields, patch)
 
 
+@pytest.mark.parametrize("basis", ["linear", "quadratic"])
 @pytest.mark.parametrize("angle", [30.0, -65.0])
-def test_interface_patch_at_the_quadrature_level(angle):
+def test_interface_patch_at_the_quadrature_level(angle, basis):
+    """Exact but for quadrature, in both bases: twice the Gauss points
+    (per direction) cut the error by EFGM_PATCH_QUADRATURE_GAIN."""
     patch = interface_patch(angle)
-    u6, s6 = _patch_errors(patch)
-    assert u6 <= tol.EFGM_PATCH_U and s6 <= tol.EFGM_PATCH_SIGMA, (u6, s6)
-    u12, s12 = _patch_errors(patch, gauss=12)
-    assert u12 * tol.EFGM_PATCH_QUADRATURE_GAIN <= u6 and s12 * tol.EFGM_PATCH_QUADRATURE_GAIN <= s6
+    n = method.GAUSS_POINTS[method.BASES[basis]]
+    u_n, s_n = _patch_errors(patch, basis=basis)
+    assert u_n <= tol.EFGM_PATCH_U and s_n <= tol.EFGM_PATCH_SIGMA, (u_n, s_n)
+    u_2n, s_2n = _patch_errors(patch, basis=basis, gauss=2 * n)
+    gain = tol.EFGM_PATCH_QUADRATURE_GAIN[basis]
+    assert u_2n * gain <= u_n and s_2n * gain <= s_n, (u_n, u_2n, s_n, s_2n)
 
 
 def test_curved_interface_converges(record_property):
@@ -106,7 +111,7 @@ def test_every_dilation_answers_or_explains(dmax, support):
         return
     assert u <= tol.EFGM_DILATION_U and s <= tol.EFGM_DILATION_SIGMA, (u, s)
     u16, _ = _patch_errors(patch, dmax=dmax, support=support, gauss=16)
-    assert u16 * tol.EFGM_PATCH_QUADRATURE_GAIN <= u, (u, u16)  # the quadrature's error, not the method's
+    assert u16 * tol.EFGM_PATCH_QUADRATURE_GAIN["linear"] <= u, (u, u16)  # the quadrature's error, not the method's
 
 
 @pytest.mark.parametrize("perturb", [0.1, 0.45])

@@ -9,6 +9,7 @@
     python -m verification sweeps [--sweep NAME ...] [--method ...] [--degree 1] --out DIR
     python -m verification study SCENE --param NAME --values V1 V2 ... [--method ...] [--degree 1] [--h H] --out DIR
     python -m verification report DIR [--quick]
+    python -m verification benchmark [--scene A B C] --out DIR      (needs python3-getfem)
     python -m verification timing SCENE --method fe --degree 1 2 --h H1 H2 ... --out DIR
 
 Bad input ends with one line ``error: <field>: <problem>`` and exit status 2.
@@ -92,6 +93,9 @@ def _parser() -> argparse.ArgumentParser:
     rep = sub.add_parser("report", help="every verification, gathered into DIR/report.md")
     rep.add_argument("out", type=Path)
     rep.add_argument("--quick", action="store_true", help="short ladders: a smoke test of the whole chain")
+    ben = sub.add_parser("benchmark", help="error against run time beside GetFEM's level-set XFEM (issue 7)")
+    ben.add_argument("--scene", nargs="+", default=["A", "B", "C"], choices=["A", "B", "C"])
+    ben.add_argument("--out", type=Path, required=True)
     tim = sub.add_parser("timing", help="wall time against DOFs on a ladder of resolutions")
     tim.add_argument("scene")
     _methods(tim)
@@ -141,6 +145,16 @@ def _dispatch(args, argv) -> None:
         from .convergence import closed
         variants = [(m, d) for m in methods.expand(args.method) for d in args.degree]
         closed(args.out, tuple(args.case), variants, argv=argv)
+    elif cmd == "benchmark":
+        from .efficiency import BENCHMARK_LADDERS, BENCHMARK_VARIANTS, REFERENCE_H, efficiency
+        from .files import write_text
+        from .peer_getfem import getfem_module
+        getfem_module()  # before the long reference runs
+        sections = [efficiency(s, BENCHMARK_VARIANTS, BENCHMARK_LADDERS[s], REFERENCE_H[s],
+                               default_exclusion(load_scene(s)), args.out / s, argv=argv) for s in args.scene]
+        write_text(args.out / "benchmark.md", "# Benchmark against GetFEM's level-set XFEM\n\n"
+                   + "\n".join(t.replace("](efficiency.png)", f"]({s}/efficiency.png)")
+                                for s, t in zip(args.scene, sections)))
     elif cmd == "efficiency":
         from .efficiency import efficiency
         scene = load_scene(args.scene)

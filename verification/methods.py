@@ -15,6 +15,9 @@ METHODS = {
     "efgm": "efgm.method",
 }
 
+#: Peers run beside the methods by the benchmark only (never in "all").
+PEERS = {"getfem": "verification.peer_getfem"}
+
 #: Options of the command line that only some methods take.
 OPTIONS = {
     "fe": ("petsc_options",),
@@ -27,8 +30,8 @@ WITH_XDMF = ("fe", "xfem")
 
 
 def solver(name: str):
-    """The ``solve`` function of method ``name``."""
-    return importlib.import_module(METHODS[name]).solve
+    """The ``solve`` function of method (or peer) ``name``."""
+    return importlib.import_module({**METHODS, **PEERS}[name]).solve
 
 
 def options_for(name: str, **given) -> dict:
