@@ -49,8 +49,8 @@ VARIANTS = (("fe", 1), ("fe", 2), ("xfem", 1), ("xfem", 2), ("efgm", 1))
 #: itself, and GetFEM's level-set XFEM of both degrees.
 BENCHMARK_VARIANTS = (("fe", 2), ("xfem", 1), ("xfem", 2), ("efgm", 1), ("efgm", 2), ("getfem", 1), ("getfem", 2))
 
-#: Quadratic EFGM stops two rungs short of the others: its next rung (1e5
-#: unknowns) costs minutes and ~10 GB (measured 175 s at 4.3e4 on a disc).
+#: Quadratic EFGM stops one or two rungs short of the others: its cost grows
+#: fast (measured 175 s for 4.3e4 unknowns on the pressurised rod's disc).
 BENCHMARK_LADDERS = {s: {**lad, ("efgm", 2): lad[2][:3]} for s, lad in LADDERS.items()}
 
 

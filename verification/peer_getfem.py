@@ -33,10 +33,11 @@ import time
 import numpy as np
 
 from contactcore import BODIES, DiscretisationError, Result, Scene, Timings
-from contactcore.elasticity import lame
+from contactcore.elasticity import lame, voigt_matrix
 from contactcore.geometry import CircleInterface, LineInterface, Rectangle
 from contactcore.result import SolverReport
 from contactcore.scene import BodyForce, Torque, Traction
+from xdolfinx import xfem
 
 METHOD = "getfem"
 
@@ -105,7 +106,7 @@ class GetFEMFields:
     def __init__(self, md, mesh, scene: Scene, keep: tuple):
         self.md, self.mesh, self.scene = md, mesh, scene
         self._keep = keep  # GetFEM frees an object with its last Python reference; the model needs these
-        self.D = [_plane_lame(scene, b) for b in BODIES]
+        self.D = np.array([voigt_matrix(scene.materials[b].E, scene.materials[b].nu, scene.plane) for b in BODIES])
 
     def _eval(self, expr: str, points, bodies, width: int) -> np.ndarray:
         points = np.asarray(points, float)[:, :2]
@@ -130,11 +131,10 @@ class GetFEMFields:
         return self._eval("u", points, bodies, 2)
 
     def stress(self, points, bodies) -> np.ndarray:
-        """σ = λ tr ε I + 2μ ε from ``Grad_u`` (column-major: ∂u_i/∂x_j at i + 2j)."""
+        """σ = D ε from ``Grad_u`` (column-major: ∂u_i/∂x_j at i + 2j)."""
         g = self._eval("Grad_u", points, bodies, 4)
-        exx, eyy, exy = g[:, 0], g[:, 3], (g[:, 1] + g[:, 2]) / 2
-        lam, mu = np.array(self.D)[np.asarray(bodies)].T
-        return np.column_stack([lam * (exx + eyy) + 2 * mu * exx, lam * (exx + eyy) + 2 * mu * eyy, 2 * mu * exy])
+        voigt = np.column_stack([g[:, 0], g[:, 3], g[:, 1] + g[:, 2]])
+        return np.einsum("pij,pj->pi", self.D[np.asarray(bodies)], voigt)
 
 
 def _plane_lame(scene: Scene, body: str) -> tuple[float, float]:
@@ -143,15 +143,9 @@ def _plane_lame(scene: Scene, body: str) -> tuple[float, float]:
 
 
 def _resolution(scene: Scene, h, paper: bool) -> tuple[int, int]:
-    if paper:
-        cells = scene.paper.get("xfem_cells")
-        if cells is None:
-            raise DiscretisationError(f"scene {scene.name} gives no paper discretisation")
-        return tuple(cells)
-    h = scene.h if h is None else h
-    if h is None or not h > 0:
-        raise DiscretisationError(f"the resolution h must be > 0 (got {h}); the scene gives no default")
-    return tuple(max(1, round(s / h)) for s in scene.domain.size)
+    """The same quadrilaterals as our XFEM's: the paper's grid or cells ≈ h."""
+    h, cells = xfem.resolution(scene, h, paper)
+    return tuple(cells or xfem.cell_counts(scene, h))
 
 
 def _model(gf, scene: Scene, degree: int, cells: tuple[int, int]):

@@ -92,9 +92,14 @@ def background_mesh(scene: Scene, h: float, cell: str, counts=None, comm=MPI.COM
                 meshes.build_model(scene, h, order=order, fitted=False)
             return gmshio.model_to_mesh(model, comm, 0, gdim=2)[0]
     (x0, y0), (a, b) = scene.domain.corner, scene.domain.size
-    n = list(counts) if counts is not None else [max(1, round(a / h)), max(1, round(b / h))]
+    n = list(counts) if counts is not None else cell_counts(scene, h)
     kind = mesh.CellType.quadrilateral if cell == "quad" else mesh.CellType.triangle
     return mesh.create_rectangle(comm, [np.array([x0, y0]), np.array([x0 + a, y0 + b])], n, kind)
+
+
+def cell_counts(scene: Scene, h: float) -> list[int]:
+    """Cells per side of a structured mesh of the rectangle with cells of size ≈ h."""
+    return [max(1, round(s / h)) for s in scene.domain.size]
 
 
 def resolution(scene: Scene, h, paper: bool) -> tuple[float, tuple[int, int] | None]:
