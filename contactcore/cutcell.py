@@ -18,6 +18,7 @@ triangles.
 from __future__ import annotations
 
 import functools
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -98,21 +99,26 @@ def edge_crossings(itf, a: np.ndarray, b: np.ndarray) -> list[float]:
             return []
         fa, fb = itf.phi([a, b])
         return [float(fa / (fa - fb))]
-    c, R = np.asarray(itf.centre, float), itf.radius
-    d, f = b - a, a - c
-    qa, qb, qc = d @ d, 2 * f @ d, f @ f - R * R
-    sq = np.sqrt(max(qb * qb - 4 * qa * qc, 0.0))
+    # scalar arithmetic: this runs for every edge of every cell near Γ
+    (cx, cy), R = itf.centre, itf.radius
+    dx, dy, fx, fy = b[0] - a[0], b[1] - a[1], a[0] - cx, a[1] - cy
+    qa, qb, qc = dx * dx + dy * dy, 2 * (fx * dx + fy * dy), fx * fx + fy * fy - R * R
+    sq = math.sqrt(max(qb * qb - 4 * qa * qc, 0.0))
     lo_root, hi_root = (-qb - sq) / (2 * qa), (-qb + sq) / (2 * qa)
     if sa != sb:  # exactly one crossing: the root between the end points
         t = lo_root if sa > 0 else hi_root
-        return [float(np.clip(t, 0.0, np.nextafter(1.0, 0.0)))]
+        return [float(min(max(t, 0.0), _BELOW_ONE))]
     # same side: two crossings only if the segment dips into the disc by more
     # than the geometric tolerance (a touch is no crossing)
-    t_near = np.clip(-qb / (2 * qa), 0.0, 1.0)
-    depth = R - np.linalg.norm(f + t_near * d)
+    t_near = min(max(-qb / (2 * qa), 0.0), 1.0)
+    depth = R - math.hypot(fx + t_near * dx, fy + t_near * dy)
     if sa < 0 or depth <= tol.GEOMETRY * R or not (0.0 <= lo_root and hi_root < 1.0):
         return []
     return [float(lo_root), float(hi_root)]
+
+
+#: The largest parameter below 1: a crossing at an edge's end belongs to the next edge.
+_BELOW_ONE = float(np.nextafter(1.0, 0.0))
 
 
 #: Newton steps projecting a chord point onto a general Γ (quadratic
@@ -173,17 +179,18 @@ def _fan(vertex, curve, n) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _region_rule(corners_and_curves, n, size2):
-    """Fan a region from the first of its corners that sees all of it."""
-    pieces = corners_and_curves
-    for vertex in [p for p, is_corner in pieces[0] if is_corner] or [pieces[0][0][0]]:
-        pts, wts = [], []
-        for curve in pieces[1]:
-            p, w = _fan(vertex, curve, n)
-            pts.append(p)
-            wts.append(w)
-        w = np.concatenate(wts)
+    """Fan a region from the first of its corners that sees all of it.
+    Curve k runs from boundary point k to point k + 1 (the last one, Γ,
+    back to point 0), so a corner's two sides are curves k − 1 and k:
+    straight, their fans have no area and are left out."""
+    points, curves = corners_and_curves
+    corners = [k for k, (_, is_corner) in enumerate(points) if is_corner]
+    for k in corners or [None]:
+        vertex = points[0 if k is None else k][0]
+        fans = [_fan(vertex, curve, n) for j, curve in enumerate(curves) if k is None or j not in (k - 1, k)]
+        w = np.concatenate([f[1] for f in fans])
         if w.min(initial=0.0) >= -FAN_FOLD * size2:
-            return np.concatenate(pts), np.maximum(w, 0.0)
+            return np.concatenate([f[0] for f in fans]), np.maximum(w, 0.0)
     return None
 
 

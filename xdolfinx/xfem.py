@@ -27,6 +27,7 @@ these would create a false normal traction of (k_N/k_T)(h/2R)|t_T|).
 """
 from __future__ import annotations
 
+import functools
 import time
 
 import basix
@@ -66,9 +67,10 @@ GAUSS_POINTS = {1: 3, 2: 4}
 MIN_CUT_FRACTION = 1e-9
 
 #: Cells whose centre lies within NEAR_FACTOR·|∇φ|·(circumradius) of Γ are
-#: examined for cuts: 1 for lines and circles (φ is the distance), 2 leaves
-#: room for the curvature of a general φ.
-NEAR_FACTOR = 2.0
+#: examined for cuts: the φ of a line or a circle is the signed distance, so
+#: a cell farther than its circumradius cannot meet Γ (1, plus a round-off
+#: allowance); 2 leaves room for the curvature of a general φ.
+NEAR_FACTOR = {"distance": 1.0 + 1e-9, "level set": 2.0}
 
 _TAG_UNCUT = {"minus": 1, "plus": 2}
 _TAG_BAND = 3
@@ -163,22 +165,29 @@ class EnrichedFunctionSpace:
         # Γ may reach a cell whose centre is within |∇φ|·radius of it (φ/|∇φ|
         # is the distance to first order; exactly so for lines and circles),
         # or whose corners differ in sign
-        grad = np.linalg.norm(itf.grad_fn(centre), axis=1) if isinstance(itf, LevelSetInterface) else 1.0
+        general = isinstance(itf, LevelSetInterface)
+        grad = np.linalg.norm(itf.grad_fn(centre), axis=1) if general else 1.0
+        factor = NEAR_FACTOR["level set" if general else "distance"]
         corner_sides = np.where(itf.phi(self.corners.reshape(-1, 2)) >= 0, 1, -1).reshape(len(centre), -1)
-        near = np.flatnonzero((np.abs(phi_c) <= NEAR_FACTOR * grad * radius)
+        near = np.flatnonzero((np.abs(phi_c) <= factor * grad * radius)
                               | (corner_sides.min(axis=1) != corner_sides.max(axis=1)))
         across = np.zeros(len(self.node_side))
         total = np.zeros(len(self.node_side))
         leak = np.zeros(len(self.node_side))
+        self.gamma_rules = {}
         for c in near:
-            parts = [(s, p, w) for s, p, w in cut_polygon(itf, self.corners[c], self.gauss) if np.sum(w) > 0]
-            if len({s for s, _, _ in parts}) > 1:
+            gamma = interface_rule_in(itf, self.corners[c], self.gauss)
+            if len(gamma[1]):
+                self.gamma_rules[c] = gamma
+            parts = [(s, p, w, *self.tabulate(c, p)) for s, p, w in cut_polygon(itf, self.corners[c], self.gauss)
+                     if np.sum(w) > 0]
+            if len({part[0] for part in parts}) > 1:
                 self.regions[c] = parts
             elif parts:
                 self.cell_side[c] = parts[0][0]
             dofs = self.cell_dofs[c]
-            for side, pts, w in parts:
-                values = np.abs(self.tabulate(c, pts)[0])
+            for side, pts, w, N, _ in parts:
+                values = np.abs(N)
                 other = self.node_side[dofs] != side
                 total[dofs] += w @ values
                 across[dofs] += (w @ values) * other
@@ -201,6 +210,12 @@ class EnrichedFunctionSpace:
         gap = np.max(np.abs(X - self.geometry_element.points[None]), axis=(1, 2))
         return gap > tol.GEOMETRY
 
+    @functools.cached_property
+    def reference_rule(self) -> tuple[np.ndarray, np.ndarray]:
+        """The whole-cell rule on the reference cell (points X, weights)."""
+        X = basix.geometry(self.element.cell_type)
+        return polygon_rule(X[[0, 1, 3, 2]] if len(X) == 4 else X, self.gauss)
+
     @property
     def num_enriched(self) -> int:
         return int(self.enriched.sum())
@@ -222,47 +237,75 @@ class EnrichedFunctionSpace:
         dN = np.stack([tab[1, :, :, 0], tab[2, :, :, 0]], axis=-1)
         return tab[0, :, :, 0], np.einsum("pnd,pda->pna", dN, inverse)
 
-    def cell_rules(self, cell: int):
-        """[(side, points, weights)] of a band cell: its regions if cut, else
-        the whole cell on its side."""
+    def cell_values(self, cell: int):
+        """[(side, points, weights, N)] of a band cell, N the basis values
+        (P, n) at the points: its regions if cut, else the whole cell on its
+        side (the reference rule, mapped)."""
         if cell in self.regions:
-            return self.regions[cell]
-        return [(self.cell_side[cell], *polygon_rule(self.corners[cell], self.gauss))]
+            return [part[:4] for part in self.regions[cell]]
+        X, w = self.reference_rule
+        points = self.origin[cell] + X @ self.jacobian[cell].T
+        return [(self.cell_side[cell], points, w * abs(np.linalg.det(self.jacobian[cell])), self.reference_values)]
+
+    @functools.cached_property
+    def reference_values(self) -> np.ndarray:
+        """The basis functions at the reference rule's points (P, n)."""
+        return self.element.tabulate(0, self.reference_rule[0])[0, :, :, 0]
 
     def functions(self, cell: int, points: np.ndarray, side: int):
         """Values (P, 4n) and gradients (P, 4n, 2) for the block layout: per
         node u_x, u_y, a_x, a_y, with the shifted Heaviside (H − H_J) on a."""
-        N, dN = self.tabulate(cell, points)
+        return (*self.tabulate(cell, points), self.coefficients(cell, side))
+
+    def coefficients(self, cell: int, side: int) -> np.ndarray:
+        """(n,): the shifted Heaviside H − H_J of the cell's enriched nodes on ``side`` (0 if not enriched)."""
         dofs = self.cell_dofs[cell]
-        coeff = np.where(self.enriched[dofs], side - self.node_side[dofs], 0)
-        return N, dN, coeff
+        return np.where(self.enriched[dofs], side - self.node_side[dofs], 0)
 
 
 def _strain_matrix(dN: np.ndarray, coeff: np.ndarray) -> np.ndarray:
-    """(P, 3, 4n): ε_xx, ε_yy, γ_xy of the block layout."""
-    P, n, _ = dN.shape
-    B = np.zeros((P, 3, 4 * n))
+    """(..., P, 3, 4n): ε_xx, ε_yy, γ_xy of the block layout, from gradients
+    (..., P, n, 2) and enrichment coefficients broadcast to (..., P, n)."""
+    n = dN.shape[-2]
+    B = np.zeros(dN.shape[:-2] + (3, 4 * n))
     for comp, c in ((0, 1.0), (2, coeff)):
         gx, gy = dN[..., 0] * c, dN[..., 1] * c
-        B[:, 0, comp::4] = gx
-        B[:, 1, comp + 1::4] = gy
-        B[:, 2, comp::4] = gy
-        B[:, 2, comp + 1::4] = gx
+        B[..., 0, comp::4] = gx
+        B[..., 1, comp + 1::4] = gy
+        B[..., 2, comp::4] = gy
+        B[..., 2, comp + 1::4] = gx
     return B
+
+
+def _stiffness(B: np.ndarray, w: np.ndarray, D: np.ndarray) -> np.ndarray:
+    """Σ_p w_p B_pᵀ D B_p over the points (axis −3) of B (..., P, 3, m)."""
+    m = B.shape[-1]
+    lead = B.shape[:-3]
+    Bw = (B * w[..., None, None]).reshape(lead + (-1, m))
+    return np.swapaxes(Bw, -1, -2) @ (D[..., None, :, :] @ B).reshape(lead + (-1, m))
 
 
 def band_kernels(space: EnrichedFunctionSpace, D: np.ndarray):
     """Element matrices (4n × 4n) of the band cells: the bulk of each region
-    with its body's D (the interface is :func:`interface_operator`'s)."""
-    for c in space.band:
+    with its body's D (the interface is :func:`interface_operator`'s).
+    Cells that Γ does not cut share the reference cell's rule (mapped
+    affinely) and are computed together."""
+    whole = np.array([c for c in space.band if c not in space.regions], dtype=np.int64)
+    for c in (c for c in space.band if c in space.regions):
         dofs = space.cell_dofs[c]
-        n = len(dofs)
-        K = np.zeros((4 * n, 4 * n))
-        for side, pts, w in space.cell_rules(c):
-            _, dN, coeff = space.functions(c, pts, side)
-            B = _strain_matrix(dN, coeff)
-            K += np.einsum("p,pia,ij,pjb->ab", w, B, D[(side + 1) // 2], B)
+        K = np.zeros((4 * len(dofs), 4 * len(dofs)))
+        for side, _, w, _, dN in space.regions[c]:
+            K += _stiffness(_strain_matrix(dN, space.coefficients(c, side)), w, D[(side + 1) // 2])
         yield dofs, K
+    if len(whole):
+        X, w = space.reference_rule
+        dN_ref = np.moveaxis(space.element.tabulate(1, X)[1:3, :, :, 0], 0, -1)    # (P, n, 2)
+        dN = np.einsum("pnd,cda->cpna", dN_ref, space.inverse[whole])
+        dofs = space.cell_dofs[whole]
+        side = space.cell_side[whole]
+        coeff = np.where(space.enriched[dofs], side[:, None] - space.node_side[dofs], 0)[:, None, :]
+        weights = w[None, :] * np.abs(np.linalg.det(space.jacobian[whole]))[:, None]
+        yield from zip(dofs, _stiffness(_strain_matrix(dN, coeff), weights, D[(side + 1) // 2]))
 
 
 def interface_operator(space: EnrichedFunctionSpace) -> InterfaceOperator:
@@ -273,10 +316,8 @@ def interface_operator(space: EnrichedFunctionSpace) -> InterfaceOperator:
     trip = Triplets((0, 4 * len(space.node_side)))
     points, weights = [], []
     m = 0
-    for c in space.band:
-        pts, w, normals = interface_rule_in(space.scene.interface, space.corners[c], space.gauss)
-        if not len(w):
-            continue
+    for c in (c for c in space.band if c in space.gamma_rules):
+        pts, w, normals = space.gamma_rules[c]
         dofs = space.cell_dofs[c]
         N = space.tabulate(c, pts)[0] * space.enriched[dofs]
         frame = np.stack([normals, tangent_of(normals)], axis=1)  # (P, 2, 2): rows n, t
@@ -290,43 +331,51 @@ def interface_operator(space: EnrichedFunctionSpace) -> InterfaceOperator:
     return InterfaceOperator(trip.to_csr(), np.concatenate(weights), np.concatenate(points))
 
 
-def _edge_name(scene: Scene, a: np.ndarray, b: np.ndarray) -> str | None:
-    tol_L = tol.NODE_MATCH * scene.length_scale
-    common = set(scene.domain.boundary_of(a, tol_L)) & set(scene.domain.boundary_of(b, tol_L))
-    return common.pop() if common else None
-
-
 def band_loads(space: EnrichedFunctionSpace, load):
     """Load vectors (4n) of one load on the band cells: a body force on each
-    region, a traction or pressure on the cell's boundary edges, split where
-    Γ crosses them (the enriched functions jump there)."""
+    region of its body, a traction or pressure on the cell's edges along
+    its boundary, split where Γ crosses them (the enriched functions jump
+    there)."""
+    if isinstance(load, (BodyForce, Torque)):
+        yield from _band_body_loads(space, load)
+    else:
+        yield from _band_edge_loads(space, load)
+
+
+def _band_body_loads(space: EnrichedFunctionSpace, load):
+    side = 2 * BODIES.index(load.body) - 1
+    for c in space.band:
+        f = np.zeros(4 * len(space.cell_dofs[c]))
+        for _, pts, w, N in (part for part in space.cell_values(c) if part[0] == side):
+            force = np.column_stack(body_force(space.scene, load, pts[:, 0], pts[:, 1]))
+            f += _vector_load(N, space.coefficients(c, side), w[:, None] * force)
+        yield space.cell_dofs[c], f
+
+
+def _band_edge_loads(space: EnrichedFunctionSpace, load):
     scene = space.scene
     g, gw = gauss01(space.gauss)
-    body_loads = [load] if isinstance(load, (BodyForce, Torque)) else []
-    edge_loads = [load] if isinstance(load, (Traction, Pressure)) else []
-    for c in space.band:
-        n = len(space.cell_dofs[c])
-        f = np.zeros(4 * n)
-        for load in body_loads:
-            for side, pts, w in space.cell_rules(c):
-                if BODIES[(side + 1) // 2] != load.body:
-                    continue
+    corners = space.corners[space.band]
+    count = corners.shape[1]
+    on = scene.domain.on_boundary(load.boundary, corners.reshape(-1, 2), tol.NODE_MATCH * scene.length_scale)
+    on = on.reshape(-1, count)
+    along = on & np.roll(on, -1, axis=1)  # edge i: corner i to corner i + 1
+    if not along.any():
+        return
+    t = (np.asarray(load.value, float) if isinstance(load, Traction)
+         else -load.value * scene.domain.outward_normal(load.boundary))
+    for k in np.flatnonzero(along.any(axis=1)):
+        c = space.band[k]
+        f = np.zeros(4 * len(space.cell_dofs[c]))
+        for i in np.flatnonzero(along[k]):
+            a, b = corners[k, i], corners[k, (i + 1) % count]
+            knots = [0.0] + edge_crossings(scene.interface, a, b) + [1.0]
+            for t0, t1 in zip(knots[:-1], knots[1:]):
+                pts = a + (t0 + g[:, None] * (t1 - t0)) * (b - a)
+                w = gw * (t1 - t0) * np.linalg.norm(b - a)
+                side = 1 if scene.interface.phi([(pts[0] + pts[-1]) / 2])[0] >= 0 else -1
                 N, _, coeff = space.functions(c, pts, side)
-                f += _vector_load(N, coeff, w[:, None] * np.column_stack(body_force(scene, load, pts[:, 0], pts[:, 1])))
-        corners = space.corners[c]
-        for i in range(len(corners)):
-            a, b = corners[i], corners[(i + 1) % len(corners)]
-            name = _edge_name(scene, a, b)
-            for load in (ld for ld in edge_loads if ld.boundary == name):
-                knots = [0.0] + edge_crossings(scene.interface, a, b) + [1.0]
-                for t0, t1 in zip(knots[:-1], knots[1:]):
-                    pts = a + (t0 + g[:, None] * (t1 - t0)) * (b - a)
-                    w = gw * (t1 - t0) * np.linalg.norm(b - a)
-                    side = 1 if scene.interface.phi([(pts[0] + pts[-1]) / 2])[0] >= 0 else -1
-                    t = (np.tile(load.value, (len(w), 1)) if isinstance(load, Traction)
-                         else -load.value * np.tile(scene.domain.outward_normal(name), (len(w), 1)))
-                    N, _, coeff = space.functions(c, pts, side)
-                    f += _vector_load(N, coeff, w[:, None] * t)
+                f += _vector_load(N, coeff, w[:, None] * t[None, :])
         yield space.cell_dofs[c], f
 
 
