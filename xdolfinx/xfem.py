@@ -253,8 +253,9 @@ class EnrichedFunctionSpace:
         return self.element.tabulate(0, self.reference_rule[0])[0, :, :, 0]
 
     def functions(self, cell: int, points: np.ndarray, side: int):
-        """Values (P, 4n) and gradients (P, 4n, 2) for the block layout: per
-        node u_x, u_y, a_x, a_y, with the shifted Heaviside (H − H_J) on a."""
+        """Values (P, n), gradients (P, n, 2) and enrichment coefficients
+        (n,) at physical points: the block layout per node is u_x, u_y, a_x,
+        a_y, with the shifted Heaviside (H − H_J) on a."""
         return (*self.tabulate(cell, points), self.coefficients(cell, side))
 
     def coefficients(self, cell: int, side: int) -> np.ndarray:
