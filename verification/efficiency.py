@@ -8,9 +8,10 @@ samples near corners and the ends of Γ left out, a quantity that is exactly
 zero measured against its companion).  Each run is timed by stage (mesh,
 assembly, solve, total) after one warm-up solve per method and degree (the
 one-off JIT compilation is not a steady cost); a run under a second is
-repeated and its fastest repeat kept (:func:`verification.timing.fastest`).  The reference and every
-rung run in a fresh process of their own: nothing of one run (dolfinx and
-PETSc objects, the allocator's free lists) can inflate the memory of the
+repeated and its fastest repeat kept (:func:`verification.timing.fastest`).
+The reference and every rung run in a fresh process of their own: nothing
+of one run (dolfinx and PETSc objects, the allocator's free lists) can
+inflate the memory of the
 next — in one process the full report grew past 17 GB and was killed by the
 out-of-memory killer on a 24 GB machine.  Writes
 ``DIR/efficiency.csv``, ``DIR/efficiency.md`` (the table and a sentence
@@ -114,7 +115,8 @@ def efficiency(scene_name: str, variants, ladders: dict, ref_h: float, exclude: 
     text = (f"## Error against run time, scene {scene.name}\n\n"
             f"Reference: fe P2, h = {ref_h:g} ({ref_dofs} DOFs). Error: worst relative RMS difference over "
             f"the profiles, samples within {exclude:.3g} m of corners and of the ends of Γ left out. Times in s, "
-            f"after a warm-up solve; a run under {REPEAT_BELOW:g} s is the fastest of {REPEATS}.\n\n{soonest(rows)}\n\n![efficiency {scene.name}](efficiency.png)\n\n"
+            f"after a warm-up solve; a run under {REPEAT_BELOW:g} s is the fastest of {REPEATS}.\n\n"
+            f"{soonest(rows)}\n\n![efficiency {scene.name}](efficiency.png)\n\n"
             + files.markdown_table(rows, COLUMNS, ["method", "degree", "h", "DOFs", "mesh", "assembly", "solve",
                                                    "total", "error", "worst at"]))
     files.write_text(out / "efficiency.md", text)

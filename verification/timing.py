@@ -25,12 +25,12 @@ REPEAT_BELOW = 1.0
 REPEATS = 5
 
 
-def fastest(solve, scene, h: float, degree: int, **options):
+def fastest(solve, scene, h: float, degree: int):
     """``solve(scene, h, degree=degree)``, repeated if short; the fastest Result."""
-    best = solve(scene, h, degree=degree, estimate_condition=False, **options)
+    best = solve(scene, h, degree=degree, estimate_condition=False)
     if best.timings.total < REPEAT_BELOW:
         for _ in range(REPEATS - 1):
-            res = solve(scene, h, degree=degree, estimate_condition=False, **options)
+            res = solve(scene, h, degree=degree, estimate_condition=False)
             best = res if res.timings.total < best.timings.total else best
     return best
 
