@@ -3,6 +3,7 @@
 The drivers in :mod:`verification` turn them into a one-line message and a
 non-zero exit status; nothing else should be needed to explain the failure.
 """
+import numpy as np
 
 
 class ContactError(Exception):
@@ -28,3 +29,12 @@ class SolverError(ContactError, RuntimeError):
 
 class DiscretisationError(ContactError, ValueError):
     """Discretisation parameters that cannot work (e.g. h <= 0, bad degree)."""
+
+
+def require_finite(what: str, values) -> None:
+    """SolverError naming ``what`` unless every value is finite: a run
+    never reports NaN or ∞ as an answer."""
+    bad = ~np.isfinite(np.asarray(values, float))
+    if bad.any():
+        raise SolverError(f"{what}: {int(bad.sum())} of {bad.size} values are not finite (NaN or ∞), "
+                          "so the answer is refused; the scene's magnitudes may exceed the floating-point range")

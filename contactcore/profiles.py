@@ -21,6 +21,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import tolerances as tol
+from .errors import require_finite
 from .geometry import CircleInterface, tangent_of
 from .result import Fields
 from .scene import DISPLACEMENT_QUANTITIES, INTERFACE_QUANTITIES, STRESS_QUANTITIES, LineProfile, Profile, Scene
@@ -94,10 +95,13 @@ def evaluate_quantities(scene: Scene, fields: Fields, points: np.ndarray, quanti
 
 
 def sample_profile(scene: Scene, fields: Fields, profile: Profile) -> ProfileData:
-    """One profile of ``scene`` evaluated on ``fields``."""
+    """One profile of ``scene`` evaluated on ``fields``; SolverError if a
+    quantity is not finite (the last guard before anything is written)."""
     s, pts, param = sample_points(scene, profile)
     columns = {"s": s, "x": pts[:, 0], "y": pts[:, 1]}
     columns.update(evaluate_quantities(scene, fields, pts, profile.quantities, profile.side))
+    for q in profile.quantities:
+        require_finite(f"profile {profile.id}: {q}", columns[q])
     return ProfileData(profile.id, param, columns)
 
 

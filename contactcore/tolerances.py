@@ -137,3 +137,16 @@ NEWTON_MAX_ITERATIONS = 25
 #: A failed increment is halved at most this many times (1/64 of an
 #: increment) before the run stops with an error naming the increment.
 MAX_CUTBACKS = 6
+
+# ----- units and placement (issue 23) -----------------------------------------
+
+#: Every method solves the scene made dimensionless (contactcore.scaling):
+#: x' = (x − o)/L.  Dimensionless points are rounded to multiples of this
+#: step (2^-36 ≈ 1.5e-11, exact in binary), so that the round-off of the
+#: change of units and of the move, eps·|x|/L (2e-13 after a move by 1e3 L),
+#: cannot put a point that lies on a cell edge (a profile sample at a mesh
+#: vertex, where a P1 stress jumps by ~20 %) on another side in other units.
+#: The rounding moves a point by at most 7.3e-12 L: far below ON_INTERFACE
+#: (1e-10 L), GEOMETRY (1e-9 L) and any cell (h >= 1e-3 L).  Beyond a move
+#: of ~1e4 L the inputs carry fewer digits than the step resolves.
+DIMENSIONLESS_GRID = 2.0 ** -36

@@ -31,6 +31,7 @@ from contactcore import BODIES, DiscretisationError, Result, Scene, Timings
 from contactcore import tolerances as tol
 from contactcore.elasticity import voigt_matrix
 from contactcore.newton import InterfaceOperator, solve_increments, with_history
+from contactcore.scaling import dimensionless
 from contactcore.geometry import CircleInterface, Disc, LevelSetInterface, Rectangle, tangent_of
 from contactcore.scene import Pressure, Traction, body_force
 
@@ -270,6 +271,7 @@ class EFGMSystem:
 BASES = {"linear": 1, "quadratic": 2}
 
 
+@dimensionless
 def solve(scene: Scene, h: float | None = None, *, degree: int = 1, paper: bool = False, basis: str | None = None,
           dmax: float | None = None, weight: str = "cubic", support: str = "circular",
           nodes: np.ndarray | None = None, gauss: int | None = None,

@@ -47,6 +47,7 @@ from contactcore.assembly import Triplets
 from contactcore.cutcell import gauss01
 from contactcore.geometry import LevelSetInterface, Rectangle, tangent_of
 from contactcore.newton import InterfaceOperator, solve_increments, with_history
+from contactcore.scaling import dimensionless
 from contactcore.scene import Pressure, Traction, body_force
 
 from .contact_system import PETScSystem
@@ -245,6 +246,7 @@ def _stress_functions(scene: Scene, fm: FittedMesh, uh, degree: int):
     return disps, stresses
 
 
+@dimensionless
 def solve(scene: Scene, h: float | None = None, *, degree: int = 1, paper: bool = False,
           geometry_order: int | None = None, grading: meshes.Grading | None = None,
           petsc_options: dict | None = None, estimate_condition: bool | None = None,

@@ -12,6 +12,8 @@ import ufl
 from dolfinx import fem
 from dolfinx.mesh import meshtags
 
+from contactcore.scaling import ScaledFields
+
 from .evaluation import BodyFields
 
 #: The exact field is interpolated this many degrees above the solution's.
@@ -19,7 +21,15 @@ EXACT_DEGREE_RAISE = 2
 
 
 def l2_error(fields: BodyFields, exact) -> tuple[float, float]:
-    """``(‖u_h − u‖, ‖u‖)`` in L2 over both bodies."""
+    """``(‖u_h − u‖, ‖u‖)`` in L2 over both bodies.
+
+    A Result's fields (:class:`contactcore.scaling.ScaledFields`) are
+    measured on the method's dimensionless mesh: ``‖u‖ = U L ‖u'‖'``
+    (u = U u', dA = L² dA')."""
+    scales = getattr(fields, "scales", None)
+    if scales is not None:
+        err, ref = l2_error(fields.inner, ScaledFields(exact, scales, to_user=False))
+        return scales.displacement * scales.length * err, scales.displacement * scales.length * ref
     msh = fields.locator.msh
     cells = fields.locator.body_cells
     tags = meshtags(msh, 2, np.concatenate(cells), np.concatenate([np.full(len(c), b, np.int32)

@@ -18,9 +18,12 @@ from mpi4py import MPI
 
 
 def body_functions(fields, body: int):
-    """``(mesh, u, sigma)`` of body ``body`` (0 = −, 1 = +) on its own mesh."""
-    msh = fields.locator.msh
-    cells = fields.locator.body_cells[body]
+    """``(mesh, u, sigma)`` of body ``body`` (0 = −, 1 = +) on its own mesh,
+    in the user's units (a :class:`contactcore.scaling.ScaledFields` maps
+    the method's dimensionless mesh back)."""
+    scales = getattr(fields, "scales", None)  # a Result's fields: the method's own mesh is dimensionless
+    locator = (fields if scales is None else fields.inner).locator
+    msh, cells = locator.msh, locator.body_cells[body]
     cell_name = msh.topology.cell_name()
     nverts = {"triangle": 3, "quadrilateral": 4}[cell_name]
     dofmap = msh.geometry.dofmap
@@ -28,8 +31,9 @@ def body_functions(fields, body: int):
     conn = dofmap.array.reshape(-1, per_cell)[cells, :nverts]  # vertices come first
     nodes, inverse = np.unique(conn, return_inverse=True)
     domain = ufl.Mesh(ufl.VectorElement("Lagrange", cell_name, 1))
-    sub = create_mesh(MPI.COMM_SELF, inverse.reshape(-1, nverts).astype(np.int64), msh.geometry.x[nodes, :2],
-                      domain)
+    x = msh.geometry.x[nodes, :2]
+    sub = create_mesh(MPI.COMM_SELF, inverse.reshape(-1, nverts).astype(np.int64),
+                      x if scales is None else scales.to_user(x), domain)
     V = fem.VectorFunctionSpace(sub, ("Lagrange", 1))
     pts = V.tabulate_dof_coordinates()[:, :2]
     u = fem.Function(V, name="u")

@@ -45,6 +45,7 @@ from contactcore.elasticity import voigt_matrix
 from contactcore.geometry import LevelSetInterface, Rectangle, tangent_of
 from contactcore.assembly import Triplets
 from contactcore.newton import InterfaceOperator, solve_increments, with_history
+from contactcore.scaling import dimensionless
 from contactcore.scene import BodyForce, Pressure, Torque, Traction, body_force
 
 from .contact_system import PETScSystem
@@ -528,6 +529,7 @@ def _support_rows(space: EnrichedFunctionSpace) -> tuple[np.ndarray, np.ndarray,
     return rows.astype(np.int64), np.concatenate(vals)[idx], np.concatenate(owners)[idx]
 
 
+@dimensionless
 def solve(scene: Scene, h: float | None = None, *, degree: int = 1, paper: bool = False, cell: str = "quad",
           gauss: int | None = None, petsc_options: dict | None = None, estimate_condition: bool | None = None,
           comm=MPI.COMM_WORLD) -> Result:

@@ -1,0 +1,261 @@
+"""Units and placement: every method solves the scene made dimensionless.
+
+A scene may be drawn in any units (µm for micro-contact, km for geology)
+and anywhere in the plane.  So that no tolerance of any method (gmsh's, point
+location, cut cells, quadrature) is absolute, each method's ``solve`` is
+decorated with :func:`dimensionless`: it solves the scene mapped by
+
+    x' = (x − o)/L,   u' = u/U,   E' = E/S,   σ' = σ/(S U/L),
+
+``o`` the lower-left corner of the domain's bounding box, ``L`` its larger
+side, ``S`` the largest Young's modulus and ``U`` the displacement the loads
+cause, ``U = max(L τ/S, |prescribed displacements|)`` with ``τ`` the largest
+load as a stress (or ``U = L`` with no load), and maps the answer back.  The
+rest of the scene follows from the dimensions of its fields (SI units as in
+``contactcore.scene``, thickness 1), with the stress unit ``Σ = S U/L``:
+
+* tractions, pressures (Pa):                   ``t' = t/Σ``;
+* penalty springs (Pa/m):                       ``k' = k L/S``;
+* body forces (N/m³):                           ``b' = b L/Σ``;
+* torques (N·m per unit thickness, i.e. N):    ``T' = T/(Σ L²)``, since
+  ``b = (T/J) r`` with ``J = πR⁴/2``;
+* prescribed displacements, the slip history of a law (m): ``/U``;
+* h (m): ``/L``; points (pins, profile ends, Γ, nodes): ``(x − o)/L``;
+  ν, μ and load paths are dimensionless already.
+
+Equilibrium ``∇·σ + b = 0`` and the laws (``t = k g``, ``t_N = k_N
+min(g_N, 0)``, Coulomb's cone: positively homogeneous of degree one in g)
+hold in the primed quantities exactly when they hold in the original ones,
+so the discrete answer is the same up to round-off whatever the units and
+the placement, and gmsh meshes the same dimensionless geometry at every
+scale.  ``U`` keeps the unknowns of order one however soft the material:
+E = 1e-300 Pa under 1e5 Pa is a strain of 1e305 that ``σ = D ε`` would
+overflow, but an ordinary problem once made dimensionless.
+"""
+from __future__ import annotations
+
+import functools
+import math
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from . import tolerances as tol
+from .errors import SceneError, require_finite
+from .geometry import CircleInterface, Disc, LevelSetInterface, LineInterface, Rectangle
+from .newton import InterfacePath
+from .scene import BodyForce, LineProfile, Pressure, Scene, Torque, Traction
+
+
+def _scaled(value: float, unit: float, path: str) -> float:
+    """``value / unit``, refused if it leaves the floating-point range."""
+    out = float(value) / unit if math.isfinite(unit) and unit > 0 else math.nan
+    if not math.isfinite(out) or (value != 0 and out == 0):
+        raise SceneError(path, f"{value!r} is out of floating-point range once made dimensionless "
+                         f"(over {unit:.3g}); choose units closer to the problem's scale (README, 'Units')")
+    return out
+
+
+def _load_stress(scene: Scene) -> float:
+    """``τ``: the largest load as a stress (|t|, p, |b| L, |T|/L²; Pa)."""
+    L = Scales.extent(scene.domain)[1]
+    sizes = [0.0]
+    for load in scene.loads:
+        if isinstance(load, (Traction, BodyForce)):
+            size = max(abs(v) for v in load.value) * (L if isinstance(load, BodyForce) else 1.0)
+        elif isinstance(load, Pressure):
+            size = abs(load.value)
+        else:
+            size = abs(load.torque) / L / L
+        sizes.append(size)
+    return max(sizes)
+
+
+@dataclass(frozen=True)
+class Scales:
+    """The length ``L``, origin ``o``, modulus ``S`` and displacement ``U``
+    of a scene (module doc)."""
+
+    length: float
+    origin: tuple[float, float]
+    modulus: float
+    displacement: float
+
+    @property
+    def stress(self) -> float:
+        """The stress unit ``Σ = S U/L`` (Pa)."""
+        return self.modulus * (self.displacement / self.length)
+
+    @staticmethod
+    def extent(dom) -> tuple[tuple[float, float], float]:
+        """The lower-left corner of the domain's bounding box and its larger side."""
+        if isinstance(dom, Rectangle):
+            return (float(dom.corner[0]), float(dom.corner[1])), float(max(dom.size))
+        return (float(dom.centre[0] - dom.radius), float(dom.centre[1] - dom.radius)), 2.0 * float(dom.radius)
+
+    @classmethod
+    def of(cls, scene: Scene) -> "Scales":
+        """The scales of ``scene`` (module doc); SceneError if the
+        displacement its loads cause is out of floating-point range."""
+        origin, L = cls.extent(scene.domain)
+        S = float(max(m.E for m in scene.materials.values()))
+        prescribed = max((abs(v) for s in scene.supports for v in s.value), default=0.0)
+        U = max(L * (_load_stress(scene) / S), prescribed) or L
+        if not 0.0 < U < math.inf or not 0.0 < S * (U / L) < math.inf:
+            raise SceneError("loads", f"the displacement the loads cause, about {U:.3g} (L τ/E), is out of "
+                             "floating-point range; choose units closer to the problem's scale (README, 'Units')")
+        return cls(L, origin, S, U)
+
+    # ----- points -------------------------------------------------------
+
+    def to_dimensionless(self, points) -> np.ndarray:
+        """``x' = (x − o)/L`` of points (m, 2), rounded to multiples of
+        :data:`~contactcore.tolerances.DIMENSIONLESS_GRID`: the round-off of
+        the change of units and of the move (~eps |x|/L) then cannot decide
+        on which side of a cell edge a point lying on it falls, so the same
+        point in any units is the same dimensionless point."""
+        x = (np.asarray(points, float)[..., :2] - self.origin) / self.length
+        return np.round(x / tol.DIMENSIONLESS_GRID) * tol.DIMENSIONLESS_GRID
+
+    def to_user(self, points) -> np.ndarray:
+        """``x = o + L x'`` of points (m, 2)."""
+        return np.asarray(self.origin) + self.length * np.asarray(points, float)[..., :2]
+
+    def _point(self, point, path: str) -> tuple[float, float]:
+        for k, x, o in zip("xy", point, self.origin):
+            _scaled(x - o, self.length, f"{path}.{k}")
+        return tuple(float(v) for v in self.to_dimensionless(point))
+
+    # ----- the scene ----------------------------------------------------
+
+    def _domain(self, dom):
+        if isinstance(dom, Rectangle):
+            return Rectangle(self._point(dom.corner, "domain.corner"), tuple(s / self.length for s in dom.size))
+        return Disc(self._point(dom.centre, "domain.centre"), dom.radius / self.length)
+
+    def _interface(self, itf):
+        if isinstance(itf, LineInterface):
+            return LineInterface(self._point(itf.point, "interface.point"), itf.normal)
+        if isinstance(itf, CircleInterface):
+            return CircleInterface(self._point(itf.centre, "interface.centre"), itf.radius / self.length)
+        # φ'(x') = φ(x)/L keeps |∇φ'| = |∇φ|; the normal is unchanged
+        return LevelSetInterface(lambda p: np.asarray(itf.phi_fn(self.to_user(p)), float) / self.length,
+                                 lambda p: itf.grad_fn(self.to_user(p)))
+
+    def _load(self, load, i: int):
+        L, S, path = self.length, self.stress, f"loads[{i}]"  # S: the stress unit Σ
+        if isinstance(load, Traction):
+            return replace(load, value=tuple(_scaled(v, S, f"{path}.value") for v in load.value))
+        if isinstance(load, Pressure):
+            return replace(load, value=_scaled(load.value, S, f"{path}.value"))
+        if isinstance(load, BodyForce):
+            return replace(load, value=tuple(_scaled(v, S / L, f"{path}.value") for v in load.value))
+        return replace(load, torque=_scaled(_scaled(load.torque, S, f"{path}.torque"), L * L, f"{path}.torque"))
+
+    def _profile(self, prof, i: int):
+        if isinstance(prof, LineProfile):
+            return replace(prof, start=self._point(prof.start, f"profiles[{i}].start"),
+                           end=self._point(prof.end, f"profiles[{i}].end"))
+        return prof
+
+    def scene(self, scene: Scene) -> Scene:
+        """The dimensionless scene (module doc); SceneError if a value leaves
+        the floating-point range."""
+        L, S, U = self.length, self.modulus, self.displacement
+        law = replace(scene.law, kN=_scaled(scene.law.kN, S / L, "interface.law.kN"),
+                      kT=_scaled(scene.law.kT, S / L, "interface.law.kT"))
+        return replace(
+            scene, domain=self._domain(scene.domain), interface=self._interface(scene.interface), law=law,
+            materials={b: replace(m, E=_scaled(m.E, S, f"materials.{b}.E")) for b, m in scene.materials.items()},
+            supports=tuple(replace(s, value=tuple(_scaled(v, U, f"supports[{i}].value") for v in s.value))
+                           for i, s in enumerate(scene.supports)),
+            pins=tuple(replace(p, point=self._point(p.point, f"pins[{i}].point")) for i, p in enumerate(scene.pins)),
+            loads=tuple(self._load(ld, i) for i, ld in enumerate(scene.loads)),
+            profiles=tuple(self._profile(p, i) for i, p in enumerate(scene.profiles)),
+            h=None if scene.h is None else scene.h / L)
+
+    # ----- the answer ---------------------------------------------------
+
+    def path(self, path: InterfacePath | None) -> InterfacePath | None:
+        """The interface history in the user's units: points and weights
+        (m, ×L), jumps and the slip history (m, ×U), tractions (Pa, ×Σ)."""
+        if path is None:
+            return None
+        L, U = self.length, self.displacement
+        steps = [replace(st, jump=U * st.jump, traction=self.stress * st.traction) for st in path.steps]
+        for st in steps:
+            require_finite(f"interface jumps of step {st.step:g}", st.jump)
+            require_finite(f"interface tractions of step {st.step:g}", st.traction)
+        return InterfacePath(self.to_user(path.points), L * path.weights, steps,
+                             None if path.state is None else U * path.state)
+
+    def discretisation(self, record: dict) -> dict:
+        """A method's discretisation record with its lengths (h, a grading's
+        distance) back in the user's units."""
+        out = dict(record)
+        if out.get("h") is not None:
+            out["h"] = out["h"] * self.length
+        if isinstance(out.get("grading"), dict):
+            out["grading"] = {**out["grading"], "distance": out["grading"]["distance"] * self.length}
+        return out
+
+
+class ScaledFields:
+    """``inner`` (fields over ``scales``' dimensionless scene) read in the
+    user's units: ``u(x) = U u'(x')``, ``σ(x) = Σ σ'(x')``, ``x' = (x − o)/L``,
+    and the law's slip history ``s(x) = U s'(x')`` when ``inner`` has one.
+
+    With ``to_user=False`` the reverse: ``inner`` is in the user's units (an
+    exact solution) and is read over the dimensionless scene.
+    """
+
+    def __init__(self, inner, scales: Scales, *, to_user: bool = True):
+        self.inner, self.scales, self.to_user = inner, scales, to_user
+        self._points = scales.to_dimensionless if to_user else scales.to_user
+        self._u, self._s = ((scales.displacement, scales.stress) if to_user
+                            else (1 / scales.displacement, 1 / scales.stress))
+        if hasattr(inner, "interface_state"):
+            self.interface_state = self._interface_state
+
+    def displacement(self, points, bodies) -> np.ndarray:
+        return self._u * self.inner.displacement(self._points(points), bodies)
+
+    def stress(self, points, bodies) -> np.ndarray:
+        return self._s * self.inner.stress(self._points(points), bodies)
+
+    def _interface_state(self, points):
+        state = self.inner.interface_state(self._points(points))
+        return None if state is None else self._u * state
+
+
+def _option_in(name: str, value, scales: Scales):
+    """A method's keyword option made dimensionless: ``nodes`` (points) and a
+    ``grading``'s distance (a length); every other option is a count or a
+    choice."""
+    if value is None:
+        return value
+    if name == "nodes":
+        x = np.asarray(value, float)
+        return scales.to_dimensionless(x) if x.ndim == 2 and x.shape[1] == 2 else value
+    if name == "grading":
+        return replace(value, distance=value.distance / scales.length)
+    return value
+
+
+def dimensionless(solve):
+    """Decorate a method's ``solve(scene, h=None, **options) -> Result`` so
+    that it solves the dimensionless scene and returns the Result in the
+    user's units: ``scene`` the user's, ``fields`` a :class:`ScaledFields`
+    (``fields.inner`` the method's own, ``fields.scales``), ``interface``
+    and ``discretisation`` mapped back.  An ``h`` that is not > 0 is passed
+    on unchanged, for the method to refuse in the user's numbers.
+    """
+    @functools.wraps(solve)
+    def solve_dimensionless(scene: Scene, h: float | None = None, **options):
+        scales = Scales.of(scene)
+        h_in = h / scales.length if h is not None and h > 0 else h
+        result = solve(scales.scene(scene), h_in, **{k: _option_in(k, v, scales) for k, v in options.items()})
+        return replace(result, scene=scene, fields=ScaledFields(result.fields, scales),
+                       interface=scales.path(result.interface),
+                       discretisation=scales.discretisation(result.discretisation))
+    return solve_dimensionless

@@ -1,0 +1,187 @@
+"""Units and placement (issue 23): the same problem in other units or moved
+elsewhere gives the same stresses, and gaps and displacements scaled with
+the length; nothing non-finite is ever reported as an answer.
+
+The scenes in other units are built here by hand, field by field from its
+physical dimension (independently of contactcore.scaling, whose round trip
+would hide a wrong power of L).
+"""
+import importlib
+from dataclasses import replace
+
+import numpy as np
+import pytest
+
+from contactcore import (BodyForce, CircleInterface, Disc, LineInterface, LineProfile, Pressure, Rectangle,
+                         SceneError, SolverError, Torque, Traction, load_scene, sample_profile, sample_profiles)
+from contactcore.scaling import Scales, ScaledFields
+from tests import tolerances as ttol
+
+MODULES = {"fe": "xdolfinx.conforming", "xfem": "xdolfinx.xfem", "efgm": "efgm.method"}
+LENGTHS = ("gN", "gT", "ux", "uy")
+H = 0.2
+
+
+def in_units(scene, length=1.0, shift=(0.0, 0.0), stress=(1.0, 1.0), stiffness=(1.0, 1.0)):
+    """``scene`` drawn with every length × ``length``, moved by ``shift``,
+    and every stress × ``stress[0]/stress[1]`` (a ratio, so that 1e-300/2e11
+    is not formed as a subnormal): E, tractions, pressures × c; springs
+    (Pa/m) and body forces (N/m³) × c/length; torques × c·length²;
+    prescribed displacements × length.  ``stiffness`` multiplies E and the
+    springs alone (displacements then scale by its inverse)."""
+    a = length
+    def c(v):
+        return v * stress[0] / stress[1]
+    def k(v):
+        return c(v) * stiffness[0] / stiffness[1]
+    def pt(p):
+        return (a * p[0] + shift[0], a * p[1] + shift[1])
+    dom, itf = scene.domain, scene.interface
+    domain = (Rectangle(pt(dom.corner), (a * dom.size[0], a * dom.size[1])) if isinstance(dom, Rectangle)
+              else Disc(pt(dom.centre), a * dom.radius))
+    interface = (LineInterface(pt(itf.point), itf.normal) if isinstance(itf, LineInterface)
+                 else CircleInterface(pt(itf.centre), a * itf.radius))
+    def load(ld):
+        if isinstance(ld, Traction):
+            return replace(ld, value=tuple(c(v) for v in ld.value))
+        if isinstance(ld, Pressure):
+            return replace(ld, value=c(ld.value))
+        if isinstance(ld, BodyForce):
+            return replace(ld, value=tuple(c(v) / a for v in ld.value))
+        return replace(ld, torque=c(ld.torque) * a * a)
+    profiles = tuple(replace(p, start=pt(p.start), end=pt(p.end)) if isinstance(p, LineProfile) else p
+                     for p in scene.profiles)
+    return replace(
+        scene, domain=domain, interface=interface,
+        law=replace(scene.law, kN=k(scene.law.kN) / a, kT=k(scene.law.kT) / a),
+        materials={b: replace(m, E=k(m.E)) for b, m in scene.materials.items()},
+        supports=tuple(replace(s, value=tuple(a * v for v in s.value)) for s in scene.supports),
+        pins=tuple(replace(p, point=pt(p.point)) for p in scene.pins),
+        loads=tuple(load(ld) for ld in scene.loads), profiles=profiles,
+        h=None if scene.h is None else a * scene.h).validated()
+
+
+_solved = {}
+
+
+def solved(method, name, length=1.0, shift=(0.0, 0.0), stress=(1.0, 1.0), stiffness=(1.0, 1.0)):
+    """``(scene, result)`` of a built-in scene in other units at h = H·length (cached)."""
+    key = (method, name, length, shift, stress, stiffness)
+    if key not in _solved:
+        scene = in_units(load_scene(name), length, shift, stress, stiffness)
+        _solved[key] = scene, importlib.import_module(MODULES[method]).solve(scene, H * length)
+    return _solved[key]
+
+
+def assert_same_profiles(method, name, length=1.0, shift=(0.0, 0.0), stress=(1.0, 1.0), stiffness=(1.0, 1.0)):
+    """Every profile agrees with the original's to UNITS_AGREEMENT of its
+    scale: stresses × c, gaps and displacements × length / stiffness; x, y
+    moved."""
+    base_scene, base = solved(method, name)
+    scene, other = solved(method, name, length, shift, stress, stiffness)
+    for p0, p in zip(sample_profiles(base_scene, base.fields), sample_profiles(scene, other.fields)):
+        assert np.allclose(p.columns["x"], length * p0.columns["x"] + shift[0], rtol=1e-12, atol=0)
+        for q in p0.columns:
+            if q in ("s", "x", "y"):
+                continue
+            want = p0.columns[q]
+            got = (p.columns[q] * stiffness[0] / stiffness[1] / length if q in LENGTHS
+                   else p.columns[q] * stress[1] / stress[0])
+            err = np.max(np.abs(got - want)) / np.max(np.abs(want))
+            assert err <= ttol.UNITS_AGREEMENT, f"{method} {p0.id} {q}: {err:.2e}"
+
+
+CASES = {"um": dict(length=1e-6), "Mm": dict(length=1e6), "moved": dict(shift=(1e3, -7e2))}
+
+
+@pytest.mark.parametrize("case", list(CASES))
+@pytest.mark.parametrize("method", list(MODULES))
+def test_scene_a_in_any_units_and_place(method, case):
+    assert_same_profiles(method, "A", **CASES[case])
+
+
+@pytest.mark.parametrize("method", ["fe", "xfem"])
+def test_disc_interface_in_micrometres(method):
+    assert_same_profiles(method, "C", length=1e-6)
+
+
+def test_torque_scales_with_length_squared():
+    """Scene B's torque (N·m per unit thickness) in mm: T × 1e-6 (efgm)."""
+    assert_same_profiles("efgm", "B", length=1e-3)
+
+
+@pytest.mark.parametrize("method", list(MODULES))
+def test_tiny_moduli_give_finite_scaled_profiles(method):
+    """E = 1e-300 with every stress × 1e-300/2e11: the same answer, scaled."""
+    assert_same_profiles(method, "A", stress=(1e-300, 2e11))
+
+
+@pytest.mark.parametrize("method", list(MODULES))
+def test_tiny_stiffness_under_the_same_loads(method):
+    """E and the springs × 1e-300/2e11 under the same loads (strains ~1e304):
+    once NaN profiles with exit 0 in xfem and efgm; now the same stresses
+    and displacements × 2e311."""
+    assert_same_profiles(method, "A", stiffness=(1e-300, 2e11))
+
+
+def test_discretisation_in_user_units():
+    """The same mesh at every scale, and h reported in the user's units."""
+    (_, base), (_, um) = solved("fe", "A"), solved("fe", "A", 1e-6)
+    assert um.discretisation["cells"] == base.discretisation["cells"]
+    assert um.discretisation["h"] == pytest.approx(1e-6 * H, rel=1e-12)
+    assert np.allclose(um.interface.points, 1e-6 * base.interface.points, rtol=0, atol=1e-18)
+    assert np.allclose(um.interface.final.traction, base.interface.final.traction, rtol=1e-9)
+
+
+def test_xdmf_mesh_in_user_units():
+    """Output maps the method's dimensionless mesh back to the user's place."""
+    from xdolfinx.output import body_functions
+    scene, res = solved("fe", "A", shift=(1e3, -7e2))
+    msh, u, _ = body_functions(res.fields, 1)
+    x = msh.geometry.x[:, :2]
+    assert np.allclose([x[:, 0].min(), x[:, 1].min()], [1e3, -7e2 + 0.5], atol=1e-9)
+    assert np.allclose(x.max(axis=0), [1e3 + 1, -7e2 + 1], atol=1e-9)
+    pts = u.function_space.tabulate_dof_coordinates()[:, :2]
+    assert np.allclose(u.x.array.reshape(-1, 2), res.fields.displacement(pts, np.ones(len(pts), int)))
+
+
+def test_dimensionless_scene_is_the_same_at_every_scale():
+    """What the methods see: the scene over (L, o, S), equal to round-off."""
+    a = load_scene("C")
+    for b in (in_units(a, 1e-6), in_units(a, 1e6, (3e6, 1e6)), in_units(a, stress=(1.0, 7.0))):
+        da, db = Scales.of(a).scene(a), Scales.of(b).scene(b)
+        assert da.domain == db.domain == Rectangle((0.0, 0.0), (2 / 3, 1.0))
+        assert np.allclose(db.interface.centre, da.interface.centre, rtol=1e-14)
+        assert db.law.kN == pytest.approx(da.law.kN, rel=1e-14)
+        assert db.loads[0].value == pytest.approx(da.loads[0].value, rel=1e-14)
+        assert db.materials["plus"].E == 1.0
+
+
+def test_out_of_range_scene_is_refused():
+    """A spring that overflows once made dimensionless is a scene error."""
+    scene = load_scene("A")
+    huge = replace(scene, law=replace(scene.law, kN=1e300),
+                   materials={b: replace(m, E=1e-20) for b, m in scene.materials.items()})
+    with pytest.raises(SceneError, match=r"^interface\.law\.kN: .*floating-point range"):
+        Scales.of(huge).scene(huge)
+
+
+class _NaNFields:
+    def displacement(self, points, bodies):
+        return np.full((len(points), 2), np.nan)
+
+    def stress(self, points, bodies):
+        out = np.zeros((len(points), 3))
+        out[3, 1] = np.inf
+        return out
+
+
+def test_non_finite_profile_is_refused():
+    """The last guard: a NaN or ∞ is an error naming the profile and quantity."""
+    scene = load_scene("A")
+    fields = ScaledFields(_NaNFields(), Scales.of(scene))
+    with pytest.raises(SolverError, match=r"^profile A2: syy: 1 of 101 values are not finite"):
+        sample_profile(scene, fields, scene.profiles[1])
+    with pytest.raises(SolverError, match=r"^profile A5: gN: 101 of 101"):
+        sample_profile(scene, fields, scene.profiles[4])
+    sample_profile(scene, fields, scene.profiles[0])  # σxy is finite: no error
