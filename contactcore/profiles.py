@@ -96,13 +96,23 @@ def evaluate_quantities(scene: Scene, fields: Fields, points: np.ndarray, quanti
 
 def sample_profile(scene: Scene, fields: Fields, profile: Profile) -> ProfileData:
     """One profile of ``scene`` evaluated on ``fields``; SolverError if a
-    quantity is not finite (the last guard before anything is written)."""
-    s, pts, param = sample_points(scene, profile)
-    columns = {"s": s, "x": pts[:, 0], "y": pts[:, 1]}
-    columns.update(evaluate_quantities(scene, fields, pts, profile.quantities, profile.side))
+    quantity is not finite (the last guard before anything is written).
+
+    A Result's fields (:class:`contactcore.scaling.ScaledFields`) are
+    sampled where the method solved, on the dimensionless scene, and mapped
+    back: the same samples in any units and placement, so that one on a cell
+    edge (a P1 stress jumps there) takes the same side of it."""
+    scales = getattr(fields, "scales", None)
+    if scales is not None:
+        data = scales.profile_data(sample_profile(scales.scene(scene), fields.inner, scales.profile(profile)))
+    else:
+        s, pts, param = sample_points(scene, profile)
+        columns = {"s": s, "x": pts[:, 0], "y": pts[:, 1]}
+        columns.update(evaluate_quantities(scene, fields, pts, profile.quantities, profile.side))
+        data = ProfileData(profile.id, param, columns)
     for q in profile.quantities:
-        require_finite(f"profile {profile.id}: {q}", columns[q])
-    return ProfileData(profile.id, param, columns)
+        require_finite(f"profile {profile.id}: {q}", data.columns[q])
+    return data
 
 
 def sample_profiles(scene: Scene, fields: Fields) -> list[ProfileData]:

@@ -44,6 +44,7 @@ from . import tolerances as tol
 from .errors import SceneError, require_finite
 from .geometry import CircleInterface, Disc, LevelSetInterface, LineInterface, Rectangle
 from .newton import InterfacePath
+from .profiles import ProfileData
 from .scene import BodyForce, LineProfile, Pressure, Scene, Torque, Traction
 
 
@@ -109,22 +110,22 @@ class Scales:
     # ----- points -------------------------------------------------------
 
     def to_dimensionless(self, points) -> np.ndarray:
-        """``x' = (x − o)/L`` of points (m, 2), rounded to multiples of
-        :data:`~contactcore.tolerances.DIMENSIONLESS_GRID`: the round-off of
-        the change of units and of the move (~eps |x|/L) then cannot decide
-        on which side of a cell edge a point lying on it falls, so the same
-        point in any units is the same dimensionless point."""
-        x = (np.asarray(points, float)[..., :2] - self.origin) / self.length
-        return np.round(x / tol.DIMENSIONLESS_GRID) * tol.DIMENSIONLESS_GRID
+        """``x' = (x − o)/L`` of points (m, 2)."""
+        return (np.asarray(points, float)[..., :2] - self.origin) / self.length
 
     def to_user(self, points) -> np.ndarray:
         """``x = o + L x'`` of points (m, 2)."""
         return np.asarray(self.origin) + self.length * np.asarray(points, float)[..., :2]
 
     def _point(self, point, path: str) -> tuple[float, float]:
-        for k, x, o in zip("xy", point, self.origin):
-            _scaled(x - o, self.length, f"{path}.{k}")
-        return tuple(float(v) for v in self.to_dimensionless(point))
+        """A point of the scene, rounded to multiples of
+        :data:`~contactcore.tolerances.DIMENSIONLESS_GRID`: the round-off of
+        the change of units and of the move (~eps |x|/L) then vanishes, so
+        the same scene in any units is the same dimensionless scene, bit
+        for bit (the same mesh, the same profile samples)."""
+        grid = tol.DIMENSIONLESS_GRID
+        return tuple(round(_scaled(x - o, self.length, f"{path}.{k}") / grid) * grid
+                     for k, x, o in zip("xy", point, self.origin))
 
     # ----- the scene ----------------------------------------------------
 
@@ -152,11 +153,23 @@ class Scales:
             return replace(load, value=tuple(_scaled(v, S / L, f"{path}.value") for v in load.value))
         return replace(load, torque=_scaled(_scaled(load.torque, S, f"{path}.torque"), L * L, f"{path}.torque"))
 
-    def _profile(self, prof, i: int):
+    def profile(self, prof, path: str = "profile"):
+        """A profile of the dimensionless scene."""
         if isinstance(prof, LineProfile):
-            return replace(prof, start=self._point(prof.start, f"profiles[{i}].start"),
-                           end=self._point(prof.end, f"profiles[{i}].end"))
+            return replace(prof, start=self._point(prof.start, f"{path}.start"),
+                           end=self._point(prof.end, f"{path}.end"))
         return prof
+
+    def profile_data(self, data: ProfileData) -> ProfileData:
+        """Samples of a profile of the dimensionless scene in the user's
+        units: x, y and an arc length (×L), an angle as it is, displacements
+        and gaps (×U), stresses and tractions (×Σ)."""
+        unit = {**dict.fromkeys(("ux", "uy", "gN", "gT"), self.displacement),
+                **dict.fromkeys(("sxx", "syy", "sxy", "tN", "tT"), self.stress),
+                "s": 1.0 if data.parameter == "angle" else self.length}
+        xy = self.to_user(np.column_stack([data.columns["x"], data.columns["y"]]))
+        columns = {q: xy[:, "xy".index(q)] if q in ("x", "y") else unit[q] * v for q, v in data.columns.items()}
+        return replace(data, columns=columns)
 
     def scene(self, scene: Scene) -> Scene:
         """The dimensionless scene (module doc); SceneError if a value leaves
@@ -171,7 +184,7 @@ class Scales:
                            for i, s in enumerate(scene.supports)),
             pins=tuple(replace(p, point=self._point(p.point, f"pins[{i}].point")) for i, p in enumerate(scene.pins)),
             loads=tuple(self._load(ld, i) for i, ld in enumerate(scene.loads)),
-            profiles=tuple(self._profile(p, i) for i, p in enumerate(scene.profiles)),
+            profiles=tuple(self.profile(p, f"profiles[{i}]") for i, p in enumerate(scene.profiles)),
             h=None if scene.h is None else scene.h / L)
 
     # ----- the answer ---------------------------------------------------

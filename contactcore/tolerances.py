@@ -141,12 +141,13 @@ MAX_CUTBACKS = 6
 # ----- units and placement (issue 23) -----------------------------------------
 
 #: Every method solves the scene made dimensionless (contactcore.scaling):
-#: x' = (x − o)/L.  Dimensionless points are rounded to multiples of this
-#: step (2^-36 ≈ 1.5e-11, exact in binary), so that the round-off of the
-#: change of units and of the move, eps·|x|/L (2e-13 after a move by 1e3 L),
-#: cannot put a point that lies on a cell edge (a profile sample at a mesh
-#: vertex, where a P1 stress jumps by ~20 %) on another side in other units.
-#: The rounding moves a point by at most 7.3e-12 L: far below ON_INTERFACE
+#: x' = (x − o)/L.  The scene's points (corner, Γ, pins, profile ends) are
+#: rounded to multiples of this step (2^-36 ≈ 1.5e-11, exact in binary), so
+#: that the round-off of the change of units and of the move, eps·|x|/L
+#: (2e-13 after a move by 1e3 L), vanishes: the same scene in any units is
+#: the same dimensionless scene, and a profile sample on a cell edge (a mesh
+#: vertex, where a P1 stress jumps by ~20 %) takes the same side of it.  The
+#: rounding moves a point by at most 7.3e-12 L: far below ON_INTERFACE
 #: (1e-10 L), GEOMETRY (1e-9 L) and any cell (h >= 1e-3 L).  Beyond a move
 #: of ~1e4 L the inputs carry fewer digits than the step resolves.
 DIMENSIONLESS_GRID = 2.0 ** -36
