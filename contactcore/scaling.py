@@ -45,7 +45,7 @@ from .errors import SceneError, require_finite
 from .geometry import CircleInterface, Disc, LevelSetInterface, LineInterface, Rectangle
 from .newton import InterfacePath
 from .profiles import ProfileData
-from .scene import BodyForce, LineProfile, Pressure, Scene, Torque, Traction
+from .scene import DISPLACEMENT_QUANTITIES, STRESS_QUANTITIES, BodyForce, LineProfile, Pressure, Scene, Traction
 
 
 def _scaled(value: float, unit: float, path: str) -> float:
@@ -58,7 +58,10 @@ def _scaled(value: float, unit: float, path: str) -> float:
 
 
 def _load_stress(scene: Scene) -> float:
-    """``τ``: the largest load as a stress (|t|, p, |b| L, |T|/L²; Pa)."""
+    """``τ``: the largest load as a stress (|t|, p, |b| L, |T|/L²; Pa).
+
+    Load paths are left out: ``U`` only has to keep the unknowns within a
+    few orders of one, since every tolerance is relative."""
     L = Scales.extent(scene.domain)[1]
     sizes = [0.0]
     for load in scene.loads:
@@ -100,6 +103,8 @@ class Scales:
         displacement its loads cause is out of floating-point range."""
         origin, L = cls.extent(scene.domain)
         S = float(max(m.E for m in scene.materials.values()))
+        if not 0.0 < S < math.inf:
+            raise SceneError("materials", f"Young's moduli must be finite and > 0 (the largest is {S!r})")
         prescribed = max((abs(v) for s in scene.supports for v in s.value), default=0.0)
         U = max(L * (_load_stress(scene) / S), prescribed) or L
         if not 0.0 < U < math.inf or not 0.0 < S * (U / L) < math.inf:
@@ -164,8 +169,8 @@ class Scales:
         """Samples of a profile of the dimensionless scene in the user's
         units: x, y and an arc length (×L), an angle as it is, displacements
         and gaps (×U), stresses and tractions (×Σ)."""
-        unit = {**dict.fromkeys(("ux", "uy", "gN", "gT"), self.displacement),
-                **dict.fromkeys(("sxx", "syy", "sxy", "tN", "tT"), self.stress),
+        unit = {**dict.fromkeys(DISPLACEMENT_QUANTITIES + ("gN", "gT"), self.displacement),
+                **dict.fromkeys(STRESS_QUANTITIES + ("tN", "tT"), self.stress),
                 "s": 1.0 if data.parameter == "angle" else self.length}
         xy = self.to_user(np.column_stack([data.columns["x"], data.columns["y"]]))
         columns = {q: xy[:, "xy".index(q)] if q in ("x", "y") else unit[q] * v for q, v in data.columns.items()}

@@ -13,7 +13,8 @@ import numpy as np
 import pytest
 
 from contactcore import (BodyForce, CircleInterface, Disc, LineInterface, LineProfile, Pressure, Rectangle,
-                         SceneError, SolverError, Torque, Traction, load_scene, sample_profile, sample_profiles)
+                         SceneError, SolverError, Traction, evaluate_quantities, load_scene, sample_profile,
+                         sample_profiles)
 from contactcore.scaling import Scales, ScaledFields
 from tests import tolerances as ttol
 
@@ -105,6 +106,18 @@ def test_disc_interface_in_micrometres(method):
     assert_same_profiles(method, "C", length=1e-6)
 
 
+def test_friction_history_in_micrometres():
+    """C with Coulomb friction: t_T between the quadrature points follows the
+    slip history, a length mapped back with the displacements (efgm)."""
+    assert_same_profiles("efgm", "C-coulomb", length=1e-6)
+    scene, res = solved("efgm", "C-coulomb", 1e-6)
+    prof = sample_profile(scene, res.fields, scene.profiles[3])  # C4: t_N, t_T, g_N, g_T on Γ
+    pts = np.column_stack([prof.columns["x"], prof.columns["y"]])
+    direct = evaluate_quantities(scene, res.fields, pts, ("tT", "gT"))  # in the user's frame
+    for q in ("tT", "gT"):
+        assert np.allclose(direct[q], prof.columns[q], rtol=0, atol=ttol.UNITS_AGREEMENT * np.max(np.abs(prof.columns[q])))
+
+
 def test_torque_scales_with_length_squared():
     """Scene B's torque (N·m per unit thickness) in mm: T × 1e-6 (efgm)."""
     assert_same_profiles("efgm", "B", length=1e-3)
@@ -158,12 +171,17 @@ def test_dimensionless_scene_is_the_same_at_every_scale():
 
 
 def test_out_of_range_scene_is_refused():
-    """A spring that overflows once made dimensionless is a scene error."""
+    """A spring, or the displacement of the loads, that overflows once made
+    dimensionless is a scene error naming the field."""
     scene = load_scene("A")
     huge = replace(scene, law=replace(scene.law, kN=1e300),
                    materials={b: replace(m, E=1e-20) for b, m in scene.materials.items()})
     with pytest.raises(SceneError, match=r"^interface\.law\.kN: .*floating-point range"):
         Scales.of(huge).scene(huge)
+    strained = replace(scene, loads=(Traction("top", (0.0, -1e10)),),
+                       materials={b: replace(m, E=1e-300) for b, m in scene.materials.items()})
+    with pytest.raises(SceneError, match=r"^loads: the displacement .* floating-point range"):
+        Scales.of(strained)  # a strain of 1e310
 
 
 class _NaNFields:
