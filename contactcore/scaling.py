@@ -218,32 +218,41 @@ class Scales:
         return out
 
 
-class ScaledFields:
-    """``inner`` (fields over ``scales``' dimensionless scene) read in the
-    user's units: ``u(x) = U u'(x')``, ``σ(x) = Σ σ'(x')``, ``x' = (x − o)/L``,
-    and the law's slip history ``s(x) = U s'(x')`` when ``inner`` has one.
+class _Mapped:
+    """Fields read through a change of units: ``u(x) = a u_f(P(x))``,
+    ``σ(x) = b σ_f(P(x))``."""
 
-    With ``to_user=False`` the reverse: ``inner`` is in the user's units (an
-    exact solution) and is read over the dimensionless scene.
-    """
-
-    def __init__(self, inner, scales: Scales, *, to_user: bool = True):
-        self.inner, self.scales, self.to_user = inner, scales, to_user
-        self._points = scales.to_dimensionless if to_user else scales.to_user
-        self._u, self._s = ((scales.displacement, scales.stress) if to_user
-                            else (1 / scales.displacement, 1 / scales.stress))
-        if hasattr(inner, "interface_state"):
-            self.interface_state = self._interface_state
+    def __init__(self, fields, points, u: float, s: float):
+        self._fields, self._points, self._u, self._s = fields, points, u, s
 
     def displacement(self, points, bodies) -> np.ndarray:
-        return self._u * self.inner.displacement(self._points(points), bodies)
+        return self._u * self._fields.displacement(self._points(points), bodies)
 
     def stress(self, points, bodies) -> np.ndarray:
-        return self._s * self.inner.stress(self._points(points), bodies)
+        return self._s * self._fields.stress(self._points(points), bodies)
+
+
+class ScaledFields(_Mapped):
+    """A Result's fields: ``inner`` (the method's, over ``scales``'
+    dimensionless scene) read in the user's units: ``u(x) = U u'(x')``,
+    ``σ(x) = Σ σ'(x')``, ``x' = (x − o)/L``, and the law's slip history
+    ``s(x) = U s'(x')`` when ``inner`` has one."""
+
+    def __init__(self, inner, scales: Scales):
+        super().__init__(inner, scales.to_dimensionless, scales.displacement, scales.stress)
+        self.inner, self.scales = inner, scales
+        if hasattr(inner, "interface_state"):
+            self.interface_state = self._interface_state
 
     def _interface_state(self, points):
         state = self.inner.interface_state(self._points(points))
         return None if state is None else self._u * state
+
+
+def dimensionless_view(fields, scales: Scales) -> _Mapped:
+    """The reverse of :class:`ScaledFields`: fields in the user's units (an
+    exact solution) read over the dimensionless scene."""
+    return _Mapped(fields, scales.to_user, 1 / scales.displacement, 1 / scales.stress)
 
 
 def _option_in(name: str, value, scales: Scales):
