@@ -137,3 +137,11 @@ FRICTION_CLOSED_FORM = {"fe": (1e-8, 1e-8), "xfem": (1e-8, 1e-8), "efgm": (EFGM_
 #: measured 0.09 (fe), 0.94 (xfem) and 0.52 (efgm) at h = 0.1; 1e6 leaves the
 #: stick test no chance to fail (the test also checks that none slips).
 NEVER_SLIPS_MU = 1e6
+
+# --- Field files (tests/test_output.py, issue 18) -------------------------
+#: Field files hold float64 (VTU, base64) and the interface point cloud is
+#: the solver's own state, so what is read back equals the run's fields and
+#: profiles up to round-off: measured 0 (u at vertices) and 6e-16 (t_N on Γ,
+#: relative to max |t_N|, fe and xfem, scene C-coulomb at h = 0.2).  Relative
+#: to each quantity's largest |value|; 1e-12 leaves room for summation order.
+FIELD_FILE_RTOL = 1e-12
