@@ -137,3 +137,12 @@ NEWTON_MAX_ITERATIONS = 25
 #: A failed increment is halved at most this many times (1/64 of an
 #: increment) before the run stops with an error naming the increment.
 MAX_CUTBACKS = 6
+
+# --- Figures (verification/plots.py, issue 18) ---------------------------
+#: A panel's y range never spans less than this fraction of its quantity's
+#: scale (the largest |value| of any curve of the quantity): a difference
+#: panel of methods that agree to round-off, or a nearly constant curve,
+#: is drawn flat at this resolution instead of zoomed onto noise (issue 18:
+#: a ±3 Pa wobble on 24 kPa filled B5's panel).  1e-3 is finer than any
+#: agreement bound the drivers report (SCENES.md's comparisons are at 1e-2).
+PLOT_MIN_Y_SPAN = 1e-3

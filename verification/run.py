@@ -82,9 +82,10 @@ def run(scene_name: str, method_names: list[str], out: Path, *, h=None, degree=1
                      "" if name in methods.WITH_XDMF else " (Γ only: no mesh)")
         files.write_json(out / name / "summary.json", summary)
         if not scene.law.is_linear:
-            paths[name] = result.interface
+            paths[f"{name} (p{result.degree})"] = result.interface
             interface.write_history(out / name, scene, result.interface)
-            interface.plot_status(out / "plots" / f"status_{name}.png", scene, name, result.interface)
+            interface.plot_status(out / "plots" / f"status_{name}.png", scene, f"{name} (p{result.degree})",
+                                  result.interface)
     titles = {p.id: p.title for p in scene.profiles}
     for pid, runs in profiles.items():
         plots.plot_profile(out / "plots" / f"{pid}.png", titles[pid], runs)
