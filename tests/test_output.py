@@ -7,11 +7,12 @@ import meshio
 import numpy as np
 import pytest
 
-from contactcore import BODIES, evaluate_quantities, load_scene, scene_text
+from contactcore import BODIES, ProfileData, evaluate_quantities, load_scene, scene_text
+from contactcore.tolerances import PLOT_MIN_Y_SPAN
 from tests.tolerances import FIELD_FILE_RTOL
-from verification import fields_out, methods
+from verification import fields_out, interface, methods, plots
 from verification.__main__ import main
-from xdolfinx.output import signed_areas
+from xdolfinx.output import body_mesh, signed_areas
 
 INCREMENTS = 3
 H = 0.2
@@ -77,6 +78,37 @@ def test_field_files_hold_the_run(tmp_path, coulomb_toml, method):
         _close(meshio.read(tmp_path / entries[-1][1]).point_data[k], col)
 
 
+class _Units:
+    """A units wrapper as :func:`contactcore.result.method_fields` reads one:
+    the inner problem in lengths / L and stresses / S, moved by ``origin``."""
+
+    def __init__(self, base, origin, length_scale, stress_scale):
+        self.base, self.origin, self.length_scale, self.stress_scale = base, origin, length_scale, stress_scale
+
+    def _inner(self, points):
+        return (np.asarray(points) - self.origin) / self.length_scale
+
+    def displacement(self, points, bodies):
+        return self.length_scale * self.base.displacement(self._inner(points), bodies)
+
+    def stress(self, points, bodies):
+        return self.stress_scale * self.base.stress(self._inner(points), bodies)
+
+
+def test_body_meshes_through_wrappers_are_in_the_users_frame(coulomb_toml):
+    """Through the history wrapper and a units wrapper: the mesh is placed
+    by origin + L x, u is scaled by L and σ by S."""
+    result = methods.solver("fe")(load_scene(coulomb_toml), H)
+    origin, L, S = np.array([1e3, -7e2]), 2.0, 1e6  # lengths over the domain's size, as a units wrapper does
+    wrapped = _Units(result.fields, origin, L, S)
+    for b in range(2):
+        plain, moved = body_mesh(result.fields, b), body_mesh(wrapped, b)
+        _close(moved.points, origin + L * plain.points)
+        assert np.array_equal(moved.cells, plain.cells)
+        _close(moved.u, L * plain.u)
+        _close(moved.sigma, S * plain.sigma)
+
+
 def test_cli_fields_for_a_nonlinear_law(tmp_path, coulomb_toml):
     """The issue's traceback: ``--xdmf`` (alias of ``--fields``) on Coulomb."""
     assert main(["run", str(coulomb_toml), "--method", "fe", "efgm", "--h", str(H), "--xdmf",
@@ -100,3 +132,64 @@ def test_fields_of_a_linear_law_at_degree_2(tmp_path, method, cell):
         assert signed_areas(mesh.points[:, :2], mesh.cells[0].data).min() > 0
         assert np.isfinite(mesh.point_data["u"]).all() and np.abs(mesh.point_data["u"]).max() > 0
     assert len(_pvd_entries(folder / "interface.pvd")) == 1  # a linear law: one step
+
+
+# --- Figures (issue 18, item 6) ---------------------------------------------
+
+def _profile(pid, s, **quantities):
+    return ProfileData(pid, "arclength", {"s": s, "x": s, "y": 0 * s, **quantities})
+
+
+def _inside(inner, outer):
+    return (inner.x0 >= outer.x0 - 0.5 and inner.y0 >= outer.y0 - 0.5 and inner.x1 <= outer.x1 + 0.5
+            and inner.y1 <= outer.y1 + 0.5)
+
+
+def test_every_method_and_degree_has_its_own_style():
+    looks = {(m, d): (st["color"], st["linestyle"], st["marker"])
+             for m in plots.METHOD_STYLE for d in (1, 2) for st in [plots.style(f"{m} (p{d})")]}
+    assert len(set(looks.values())) == len(looks)  # no two curves look alike
+    assert len({look[2] for look in looks.values()}) == len(looks)  # not even by marker alone
+    assert plots.variant("reference: fe P2, h = 0.025 (3000 DOFs)") == ("fe", 2)
+    assert plots.reference_label(["xfem (p2)", "fe (p1)", "fe (p2)", "efgm (p1)"]) == "fe (p2)"
+    assert plots.reference_label(["xfem (p1)", "efgm (p1)"]) == "xfem (p1)"
+
+
+def test_profile_figure_differences_span_and_layout():
+    """A 24 kPa t_T with a ±3 Pa wobble (scene B5 in the issue): no offset
+    labels, no zoom onto the wobble, the difference panel is method minus
+    reference in Pa, legend and title inside the figure and off the axes."""
+    s = np.linspace(0.0, 1.0, 101)
+    ref = -24000.0 + 3.0 * np.sin(20 * s)
+    runs = {"fe (p2)": _profile("B5", s, tT=ref), "xfem (p1)": _profile("B5", s, tT=ref + 1.0 + s),
+            "efgm (p1)": _profile("B5", s, tT=ref - 2.0)}
+    fig = plots.profile_figure("tangential traction on Γ", runs)
+    fig.canvas.draw()
+    overlay, diff = fig.axes[0], fig.axes[1]
+    for ax in (overlay, diff):
+        assert ax.yaxis.get_major_formatter().get_offset() == ""
+        low, high = ax.get_ylim()
+        scale = max(np.abs(p.columns["tT"]).max() for p in runs.values())
+        assert high - low >= PLOT_MIN_Y_SPAN * scale * (1 - 1e-9)  # (round-off of mid ± span/2)
+    lines = {line.get_label(): line.get_ydata() for line in diff.get_lines() if not line.get_label().startswith("_")}
+    assert set(lines) == {"xfem (p1)", "efgm (p1)"}
+    assert np.allclose(lines["xfem (p1)"], 1.0 + s) and np.allclose(lines["efgm (p1)"], -2.0)
+    figure_box = fig.bbox
+    legend = overlay.get_legend().get_window_extent()
+    assert legend.x0 >= overlay.get_window_extent().x1  # outside the axes, to their right
+    assert _inside(legend, figure_box) and _inside(overlay.title.get_window_extent(), figure_box)
+    plots.plt.close(fig)
+
+
+def test_response_figure_counts_increments(tmp_path, coulomb_toml):
+    scene = load_scene(coulomb_toml)
+    result = methods.solver("efgm")(scene, H)
+    fig = interface.response_figure(scene, {"efgm (p1)": result.interface})
+    fig.canvas.draw()
+    by_label = {ax.get_ylabel(): ax for ax in fig.axes}
+    assert "mean t_T on Γ (Pa)" not in by_label  # Γ is a circle: its mean t_T is the (zero) net torque
+    rms = interface.increment_rows(result.interface)[-1]["rms_tT"]
+    assert rms > 1.0  # Pa, where the mean is ~1e-4 Pa
+    for ax in fig.axes:
+        assert all(float(t).is_integer() for t in ax.get_xticks())  # increments are counted
+    plots.plt.close(fig)

@@ -90,6 +90,11 @@ RESPONSE_PANELS = (("rms_tN", "RMS t_N on Γ (Pa)", "traction"), ("rms_tT", "RMS
 
 
 def plot_response(out: Path, scene, paths: dict[str, InterfacePath]) -> Path:
+    """Write :func:`response_figure` as a PNG."""
+    return save(response_figure(scene, paths), out)
+
+
+def response_figure(scene, paths: dict[str, InterfacePath]):
     """The interface's response over the steps, one style per method (see
     module doc); the loop of mean t_T against mean g_T on a straight Γ."""
     loop = isinstance(scene.interface, LineInterface)
@@ -119,7 +124,7 @@ def plot_response(out: Path, scene, paths: dict[str, InterfacePath]) -> Path:
         keep_span(axes["loop"], traction)
     legend_outside(axes["loop" if loop else "rms_tT"])
     fig.suptitle(f"scene {scene.name}: the interface's response over the increments", fontsize=11)
-    return save(fig, out)
+    return fig
 
 
 def iterations_table(paths: dict[str, InterfacePath]) -> str:

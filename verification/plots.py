@@ -82,6 +82,11 @@ def legend_outside(ax, **kw) -> None:
 
 
 def plot_profile(path: Path, title: str, runs: dict[str, ProfileData]) -> Path:
+    """Write :func:`profile_figure` as a PNG."""
+    return save(profile_figure(title, runs), path)
+
+
+def profile_figure(title: str, runs: dict[str, ProfileData]):
     """One figure for a profile: per quantity, the methods overlaid and,
     under it, each method minus the reference (see module doc)."""
     first = next(iter(runs.values()))
@@ -105,7 +110,8 @@ def plot_profile(path: Path, title: str, runs: dict[str, ProfileData]) -> Path:
             _difference_panel(axes[rows * k + 1, 0], q, runs, ref, scale)
     axes[-1, 0].set_xlabel(XLABEL.get(first.parameter, "s"))
     axes[0, 0].set_title(f"{first.id}: {title}", fontsize=10, wrap=True)
-    return save(fig, path)
+    _no_offsets(fig)
+    return fig
 
 
 def _difference_panel(ax, q: str, runs: dict[str, ProfileData], ref: str, scale: float) -> None:
@@ -122,15 +128,20 @@ def _difference_panel(ax, q: str, runs: dict[str, ProfileData], ref: str, scale:
     ax.set_title(f"each minus {ref}", fontsize=8, loc="right")
 
 
+def _no_offsets(fig) -> None:
+    """Tick labels in full, never as an offset plus small differences."""
+    for ax in fig.axes:
+        for axis in (ax.xaxis, ax.yaxis):
+            if isinstance(axis.get_major_formatter(), matplotlib.ticker.ScalarFormatter):
+                axis.get_major_formatter().set_useOffset(False)
+
+
 def save(fig, path: Path) -> Path:
     """Lay out (constrained, so titles and outside legends fit), drop offset
     tick labels, write atomically as PNG, and close a figure."""
     if fig.get_layout_engine() is None:
         fig.set_layout_engine("constrained")
-    for ax in fig.axes:
-        for axis in (ax.xaxis, ax.yaxis):
-            if isinstance(axis.get_major_formatter(), matplotlib.ticker.ScalarFormatter):
-                axis.get_major_formatter().set_useOffset(False)
+    _no_offsets(fig)
     with atomic_path(Path(path)) as tmp:
         fig.savefig(tmp, dpi=110, format="png")
     plt.close(fig)

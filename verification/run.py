@@ -21,7 +21,7 @@ from pathlib import Path
 
 import numpy as np
 
-from contactcore import BODIES, ContactError, load_scene, sample_profiles, scene_text
+from contactcore import ContactError, load_scene, sample_profiles, scene_text
 
 from . import fields_out, files, interface, methods, plots
 
