@@ -156,6 +156,11 @@ class FieldsWithHistory:
     def __init__(self, fields, interface, path: InterfacePath):
         self.fields, self.interface, self.path = fields, interface, path
 
+    @property
+    def base(self):
+        """The wrapped fields (the protocol of :func:`contactcore.result.method_fields`)."""
+        return self.fields
+
     def displacement(self, points, bodies):
         return self.fields.displacement(points, bodies)
 

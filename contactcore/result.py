@@ -26,6 +26,37 @@ class Fields(Protocol):
         """``(σxx, σyy, σxy)`` (m, 3) of body ``bodies[i]`` at ``points[i]``."""
 
 
+@dataclass(frozen=True)
+class Placement:
+    """Where a method's own (inner) coordinates sit in the user's frame:
+    ``x_user = origin + length_scale · x_inner``."""
+
+    origin: tuple = (0.0, 0.0)
+    length_scale: float = 1.0
+
+    def to_user(self, x: np.ndarray) -> np.ndarray:
+        """Inner coordinates (m, 2) mapped to the user's frame."""
+        return np.asarray(self.origin, float) + self.length_scale * np.asarray(x, float)[:, :2]
+
+
+def method_fields(fields) -> tuple[object, Placement]:
+    """The method's own fields behind any wrappers, and their placement.
+
+    The one protocol for wrappers of :class:`Fields` (history, units): a
+    wrapper names what it wraps ``base``, and may map coordinates with
+    ``origin`` and ``length_scale`` (``x_outer = origin + length_scale ·
+    x_inner``; defaults 0 and 1).  The chain is followed to the first object
+    without ``base``; the placements compose outermost last.
+    """
+    origin, scale = np.zeros(2), 1.0
+    while hasattr(fields, "base"):
+        length = float(getattr(fields, "length_scale", 1.0))
+        origin = origin + scale * np.asarray(getattr(fields, "origin", (0.0, 0.0)), float)
+        scale *= length
+        fields = fields.base
+    return fields, Placement(tuple(origin), scale)
+
+
 @dataclass
 class Timings:
     """Wall times in seconds of the stages of one run."""

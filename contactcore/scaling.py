@@ -241,6 +241,8 @@ class ScaledFields(_Mapped):
     def __init__(self, inner, scales: Scales):
         super().__init__(inner, scales.to_dimensionless, scales.displacement, scales.stress)
         self.inner, self.scales = inner, scales
+        # the wrapper protocol of contactcore.result.method_fields
+        self.base, self.origin, self.length_scale = inner, scales.origin, scales.length
         if hasattr(inner, "interface_state"):
             self.interface_state = self._interface_state
 

@@ -151,3 +151,12 @@ MAX_CUTBACKS = 6
 #: (1e-10 L), GEOMETRY (1e-9 L) and any cell (h >= 1e-3 L).  Beyond a move
 #: of ~1e4 L the inputs carry fewer digits than the step resolves.
 DIMENSIONLESS_GRID = 2.0 ** -36
+
+# --- Figures (verification/plots.py, issue 18) ---------------------------
+#: A panel's y range never spans less than this fraction of its quantity's
+#: scale (the largest |value| of any curve of the quantity): a difference
+#: panel of methods that agree to round-off, or a nearly constant curve,
+#: is drawn flat at this resolution instead of zoomed onto noise (issue 18:
+#: a ±3 Pa wobble on 24 kPa filled B5's panel).  1e-3 is finer than any
+#: agreement bound the drivers report (SCENES.md's comparisons are at 1e-2).
+PLOT_MIN_Y_SPAN = 1e-3

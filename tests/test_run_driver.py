@@ -1,7 +1,6 @@
 """``python -m verification run``: the files, and only what the scene needs."""
 import csv
 import json
-import xml.etree.ElementTree as ET
 
 import pytest
 
@@ -47,22 +46,11 @@ def test_summary_and_provenance(run_a):
     assert efgm["discretisation"]["nodes"] == 121 and efgm["discretisation"]["enriched_nodes"] > 0
 
 
-def test_plots_and_no_xdmf_unless_asked(run_a):
+def test_plots_and_no_fields_unless_asked(run_a):
     assert sorted(p.stem for p in (run_a / "plots").iterdir()) == ["A1", "A2", "A3", "A4", "A5"]
     assert (run_a / "plots" / "A1.png").read_bytes()[:4] == b"\x89PNG"
-    assert not (run_a / "fe" / "xdmf").exists()
+    assert not (run_a / "fe" / "fields").exists()
     assert not [p for p in run_a.rglob(".*")]  # no temporary file left behind
-
-
-@pytest.mark.parametrize("method,cell", [("fe", None), ("xfem", "quad"), ("xfem", "triangle")])
-def test_xdmf_per_body(tmp_path, method, cell):
-    args = ["run", "B", "--method", method, "--h", "0.2", "--degree", "2", "--xdmf", "--out", str(tmp_path)]
-    assert main(args + (["--cell", cell] if cell else [])) == 0
-    for body in ("minus", "plus"):
-        root = ET.parse(tmp_path / method / "xdmf" / f"{body}.xdmf").getroot()
-        names = {a.get("Name") for a in root.iter("Attribute")}
-        assert names == {"u", "sigma_xx_yy_xy"}
-        assert (tmp_path / method / "xdmf" / f"{body}.h5").stat().st_size > 0
 
 
 def test_interrupted_write_leaves_nothing_under_the_final_name(tmp_path):

@@ -146,16 +146,15 @@ def test_discretisation_in_user_units():
     assert np.allclose(um.interface.final.traction, base.interface.final.traction, rtol=1e-9)
 
 
-def test_xdmf_mesh_in_user_units():
+def test_field_mesh_in_user_units():
     """Output maps the method's dimensionless mesh back to the user's place."""
-    from xdolfinx.output import body_functions
+    from xdolfinx.output import body_mesh
     scene, res = solved("fe", "A", shift=(1e3, -7e2))
-    msh, u, _ = body_functions(res.fields, 1)
-    x = msh.geometry.x[:, :2]
+    body = body_mesh(res.fields, 1)
+    x = body.points[:, :2]
     assert np.allclose([x[:, 0].min(), x[:, 1].min()], [1e3, -7e2 + 0.5], atol=1e-9)
     assert np.allclose(x.max(axis=0), [1e3 + 1, -7e2 + 1], atol=1e-9)
-    pts = u.function_space.tabulate_dof_coordinates()[:, :2]
-    assert np.allclose(u.x.array.reshape(-1, 2), res.fields.displacement(pts, np.ones(len(pts), int)))
+    assert np.allclose(body.u, res.fields.displacement(x, np.ones(len(x), int)))
 
 
 def test_dimensionless_scene_is_the_same_at_every_scale():

@@ -148,3 +148,19 @@ NEVER_SLIPS_MU = 1e6
 #: at most 2.2e-16 in every method on scenes A and C in µm, mm, Mm, moved,
 #: and at E = 1e-300.  Without the scaling: up to 0.63 (fe, xfem).
 UNITS_AGREEMENT = 1e-6
+
+# --- Field files (tests/test_output.py, issue 18) -------------------------
+#: Field files hold float64 (VTU, base64) and the interface point cloud is
+#: the solver's own state, so what is read back equals the run's fields and
+#: profiles up to round-off: measured 0 (u at vertices) and 6e-16 (t_N on Γ,
+#: relative to max |t_N|, fe and xfem, scene C-coulomb at h = 0.2).  Relative
+#: to each quantity's largest |value|; 1e-12 leaves room for summation order.
+FIELD_FILE_RTOL = 1e-12
+
+#: Profiles sample the dimensionless scene at points rounded to
+#: contactcore.tolerances.DIMENSIONLESS_GRID (at most 7.3e-12 L away from the
+#: quadrature point asked for), so a quantity sampled there differs from the
+#: solver's own value at the point by its variation over that distance: at
+#: most ~7e-12 L / h of its scale (h >= 0.01 L in these tests: 7e-10).
+#: Measured: 2.5e-11 (g_N, fe, C-coulomb at h = 0.2).  1e-9 bounds it.
+SAMPLE_ROUNDING_RTOL = 1e-9

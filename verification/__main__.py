@@ -1,7 +1,7 @@
 """Command line of the verification drivers.
 
     python -m verification run SCENE_OR_TOML --method fe|xfem|efgm|all [--degree 1|2] [--cell quad|triangle|gmsh]
-        [--h H] [--paper] [--xdmf] [--petsc-option KEY=VALUE ...] [--dmax D] [--basis linear|quadratic]
+        [--h H] [--paper] [--fields] [--petsc-option KEY=VALUE ...] [--dmax D] [--basis linear|quadratic]
         [--nodes FILE] --out DIR
     python -m verification paper [--scene A B C] [--ref-h H] --out DIR
     python -m verification closed [--case patch pressurised_rod twisted_rod] [--method ...] [--degree 1 2] --out DIR
@@ -50,7 +50,8 @@ def _parser() -> argparse.ArgumentParser:
     run.add_argument("--degree", type=int, default=1, choices=(1, 2))
     run.add_argument("--h", type=float, help="resolution for every method (default: the scene's h)")
     run.add_argument("--paper", action="store_true", help="use the paper's discretisations")
-    run.add_argument("--xdmf", action="store_true", help="also write XDMF per body for ParaView")
+    run.add_argument("--fields", "--xdmf", dest="fields", action="store_true",
+                     help="also write VTU field files (per body; Γ per step, PVD) for ParaView and meshio")
     run.add_argument("--petsc-option", type=_petsc_option, action="append", default=[], metavar="KEY=VALUE",
                      help="override a PETSc option of the fe solve (e.g. pc_factor_mat_solver_type=superlu)")
     run.add_argument("--cell", choices=("quad", "triangle", "gmsh"), help="XFEM background cells (default quad)")
@@ -135,7 +136,7 @@ def _dispatch(args, argv) -> None:
     cmd = args.command
     if cmd == "run":
         from .run import run
-        run(args.scene, args.method, args.out, h=args.h, degree=args.degree, paper=args.paper, xdmf=args.xdmf,
+        run(args.scene, args.method, args.out, h=args.h, degree=args.degree, paper=args.paper, fields=args.fields,
             petsc_options=dict(args.petsc_option), dmax=args.dmax, nodes_file=args.nodes, cell=args.cell,
             basis=args.basis, argv=argv)
     elif cmd == "paper":

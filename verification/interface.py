@@ -2,13 +2,18 @@
 Newton iterations per increment (issue 6).
 
 ``DIR/<method>/increments.csv``  one row per converged (sub-)increment:
-    iterations, final relative residual, open/stick/slip counts, mean t_N,
-    t_T, g_N, g_T over Γ (weighted by the quadrature).
+    iterations, final relative residual, open/stick/slip counts, mean and
+    RMS of t_N, t_T and mean g_N, g_T over Γ, and the open and slipping
+    fractions of Γ (all weighted by the quadrature).
 ``DIR/<method>/interface.csv``   one row per increment and Γ point:
     x, y, s (along Γ), g_N, g_T, t_N, t_T, status.
 ``DIR/plots/status_<method>.png`` status along Γ (x) against the increment (y).
-``DIR/plots/response.png``       mean t_T against mean g_T over the increments,
-    methods overlaid: a frictional hysteresis loop under cyclic shear.
+``DIR/plots/response.png``       against the increment, methods overlaid:
+    RMS t_N and t_T on Γ and the open and slipping fractions of Γ; on a
+    straight Γ also mean t_T against mean g_T (a frictional hysteresis loop
+    under cyclic shear).  On a closed Γ (a circle) the mean of t_T is the
+    net torque over 2πR², zero to round-off under a load without torque
+    (about 1e-4 Pa on scene C-coulomb), so no loop is drawn there.
 """
 from __future__ import annotations
 
@@ -16,11 +21,12 @@ from pathlib import Path
 
 import numpy as np
 
+from contactcore import LineInterface
 from contactcore.laws import STATUS_NAMES
 from contactcore.newton import InterfacePath, along
 
 from . import files
-from .plots import plt, save
+from .plots import keep_span, legend_outside, plt, save, style
 
 STATUS_COLOURS = ("#bbbbbb", "#2c7fb8", "#d95f0e")  # open, stick, slip
 
@@ -30,9 +36,13 @@ def increment_rows(path: InterfacePath) -> list[dict]:
     w = path.weights / path.weights.sum()
     rows = []
     for s in path.steps:
-        means = w @ np.column_stack([s.traction, s.jump])
+        values = np.column_stack([s.traction, s.jump])
+        means, rms = w @ values, np.sqrt(w @ s.traction ** 2)
         rows.append({"step": s.step, "iterations": s.iterations, "residual": s.residuals[-1], **s.counts(),
-                     **dict(zip(("mean_tN", "mean_tT", "mean_gN", "mean_gT"), map(float, means)))})
+                     **dict(zip(("mean_tN", "mean_tT", "mean_gN", "mean_gT"), map(float, means))),
+                     "rms_tN": float(rms[0]), "rms_tT": float(rms[1]),
+                     **{f"{name}_fraction": float(w @ (s.status == STATUS_NAMES.index(name)))
+                        for name in ("open", "slip")}})
     return rows
 
 
@@ -51,10 +61,15 @@ def write_history(folder: Path, scene, path: InterfacePath) -> None:
     files.write_csv(folder / "interface.csv", points, list(points[0]))
 
 
+def _integer_steps(axis) -> None:
+    """Increments are counted: integer ticks only."""
+    axis.set_major_locator(plt.MaxNLocator(integer=True))
+
+
 def plot_status(out: Path, scene, label: str, path: InterfacePath) -> Path:
     """Status of every Γ point (x: along Γ) at every step (y)."""
     s = along(scene.interface, path.points)
-    fig, ax = plt.subplots(figsize=(7, 4))
+    fig, ax = plt.subplots(figsize=(8, 4), layout="constrained")
     for code, (name, colour) in enumerate(zip(STATUS_NAMES, STATUS_COLOURS)):
         xs = [s[step.status == code] for step in path.steps]
         ys = [np.full(len(x), step.step) for x, step in zip(xs, path.steps)]
@@ -62,23 +77,54 @@ def plot_status(out: Path, scene, label: str, path: InterfacePath) -> Path:
             ax.scatter(np.concatenate(xs), np.concatenate(ys), s=6, c=colour, label=name, marker="s")
     ax.set_xlabel("polar angle θ (rad)" if hasattr(scene.interface, "radius") else "position along Γ (m)")
     ax.set_ylabel("increment")
-    ax.set_title(f"scene {scene.name}, {label}: contact status on Γ")
-    ax.legend(loc="upper right", fontsize=8)
+    _integer_steps(ax.yaxis)
+    ax.set_title(f"scene {scene.name}, {label}: contact status on Γ", fontsize=10)
+    legend_outside(ax, markerscale=2)
     return save(fig, out)
+
+
+#: Panels of the response figure against the increment: (column, label, scale key).
+RESPONSE_PANELS = (("rms_tN", "RMS t_N on Γ (Pa)", "traction"), ("rms_tT", "RMS t_T on Γ (Pa)", "traction"),
+                   ("open_fraction", "open fraction of Γ", "fraction"),
+                   ("slip_fraction", "slipping fraction of Γ", "fraction"))
 
 
 def plot_response(out: Path, scene, paths: dict[str, InterfacePath]) -> Path:
-    """Mean t_T against mean g_T over the steps, one line per method."""
-    fig, ax = plt.subplots(figsize=(6.5, 4.5))
-    for label, path in paths.items():
-        rows = increment_rows(path)
-        ax.plot([r["mean_gT"] for r in rows], [r["mean_tT"] for r in rows], "o-", ms=3, label=label)
-    ax.set_xlabel("mean slip g_T on Γ (m)")
-    ax.set_ylabel("mean t_T on Γ (Pa)")
-    ax.set_title(f"scene {scene.name}: interface shear against slip over the increments")
-    ax.grid(alpha=0.3)
-    ax.legend()
-    return save(fig, out)
+    """Write :func:`response_figure` as a PNG."""
+    return save(response_figure(scene, paths), out)
+
+
+def response_figure(scene, paths: dict[str, InterfacePath]):
+    """The interface's response over the steps, one style per method (see
+    module doc); the loop of mean t_T against mean g_T on a straight Γ."""
+    loop = isinstance(scene.interface, LineInterface)
+    mosaic = ([["loop", "loop"]] if loop else []) + [["rms_tN", "rms_tT"], ["open_fraction", "slip_fraction"]]
+    fig, axes = plt.subplot_mosaic(mosaic, figsize=(10, 3.2 * len(mosaic)), layout="constrained")
+    rows = {label: increment_rows(path) for label, path in paths.items()}
+    traction = max(max(r["rms_tN"], r["rms_tT"]) for rs in rows.values() for r in rs)
+    for i, (label, rs) in enumerate(rows.items()):
+        steps = [r["step"] for r in rs]
+        for key, _, _ in RESPONSE_PANELS:
+            axes[key].plot(steps, [r[key] for r in rs], **style(label, i))
+        if loop:
+            axes["loop"].plot([r["mean_gT"] for r in rs], [r["mean_tT"] for r in rs], **style(label, i))
+    for key, ylabel, kind in RESPONSE_PANELS:
+        axes[key].set_xlabel("increment")
+        axes[key].set_ylabel(ylabel)
+        _integer_steps(axes[key].xaxis)
+        axes[key].grid(alpha=0.3)
+        if kind == "fraction":
+            axes[key].set_ylim(-0.05, 1.05)
+        else:
+            keep_span(axes[key], traction)
+    if loop:
+        axes["loop"].set_xlabel("mean slip g_T on Γ (m)")
+        axes["loop"].set_ylabel("mean t_T on Γ (Pa)")
+        axes["loop"].grid(alpha=0.3)
+        keep_span(axes["loop"], traction)
+    legend_outside(axes["loop" if loop else "rms_tT"])
+    fig.suptitle(f"scene {scene.name}: the interface's response over the increments", fontsize=11)
+    return fig
 
 
 def iterations_table(paths: dict[str, InterfacePath]) -> str:

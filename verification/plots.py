@@ -1,14 +1,25 @@
-"""Plots of profiles, overlaying methods: one PNG per profile."""
+"""Plots of profiles, overlaying methods: one PNG per profile.
+
+Every curve of a (method, degree) has its own colour, line style and
+marker, so coincident curves stay distinguishable; under each overlay a
+panel shows each method minus the reference (fe at its highest degree, or
+the first curve) in the quantity's units.  Legends sit outside the axes,
+tick labels never carry an offset, and no panel zooms below
+:data:`~contactcore.tolerances.PLOT_MIN_Y_SPAN` of its quantity's scale.
+"""
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
 
 from contactcore import ProfileData  # noqa: E402
+from contactcore.tolerances import PLOT_MIN_Y_SPAN  # noqa: E402
 
 from .files import atomic_path  # noqa: E402
 
@@ -16,26 +27,121 @@ UNITS = {"sxx": "σxx (Pa)", "syy": "σyy (Pa)", "sxy": "σxy (Pa)", "tN": "t_N 
          "gN": "g_N (m)", "gT": "g_T (m)", "ux": "u_x (m)", "uy": "u_y (m)"}
 XLABEL = {"arclength": "s (m)", "angle": "θ (rad)"}
 
+#: Colour, line style and markers (by degree 1, 2, 3) of each method: no two
+#: (method, degree) share a marker, so coincident curves show each one's.
+METHOD_STYLE = {"fe": ("tab:blue", "-", "osp"), "xfem": ("tab:orange", "--", "^D*"),
+                "efgm": ("tab:green", ":", "vXh"), "getfem": ("tab:purple", "-.", "<>H")}
+OTHER_STYLE = ("tab:gray", (0, (5, 1, 1, 1)), "+x1")
+#: Markers on a sampled curve: this many per curve, shifted from curve to
+#: curve so that coincident curves show each one's markers.
+MARKERS_PER_CURVE = 10
+
+
+def variant(label: str) -> tuple[str, int]:
+    """``(method, degree)`` of a curve label: the first known method name in
+    it, and the degree written ``p<k>`` or ``P<k>`` (1 if none)."""
+    words = re.findall(r"[a-z]+", label.lower())
+    method = next((w for w in words if w in METHOD_STYLE), words[0] if words else "")
+    degree = re.search(r"\b[pP](\d)\b", label)
+    return method, int(degree.group(1)) if degree else 1
+
+
+def style(label: str, index: int = 0, points: int = 0) -> dict:
+    """Line keyword arguments of the curve ``label``, the ``index``-th of its
+    figure; ``points`` > 0 spreads markers over a sampled curve."""
+    method, degree = variant(label)
+    colour, line, markers = METHOD_STYLE.get(method, OTHER_STYLE)
+    kw = {"color": colour, "linestyle": line, "marker": markers[min(degree, len(markers)) - 1], "lw": 1.4,
+          "ms": 6, "mfc": "none", "label": label}
+    if points > MARKERS_PER_CURVE:
+        every = max(1, points // MARKERS_PER_CURVE)
+        kw["markevery"] = (index * every // 4 % every, every)
+    return kw
+
+
+def reference_label(labels: list[str]) -> str:
+    """The reference of a difference panel: fe at its highest degree, else
+    the first curve."""
+    fe = [lab for lab in labels if variant(lab)[0] == "fe"]
+    return max(fe, key=lambda lab: variant(lab)[1]) if fe else labels[0]
+
+
+def keep_span(ax, scale: float) -> None:
+    """Widen the y range of ``ax`` to at least ``PLOT_MIN_Y_SPAN · scale``
+    about its middle (no zoom onto round-off)."""
+    low, high = ax.get_ylim()
+    span = PLOT_MIN_Y_SPAN * scale
+    if scale > 0 and high - low < span:
+        mid = 0.5 * (low + high)
+        ax.set_ylim(mid - span / 2, mid + span / 2)
+
+
+def legend_outside(ax, **kw) -> None:
+    """The legend of ``ax`` to the right of its axes, off the data."""
+    ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0, fontsize=8, **kw)
+
 
 def plot_profile(path: Path, title: str, runs: dict[str, ProfileData]) -> Path:
-    """One figure for a profile: a panel per quantity, a line per method."""
+    """Write :func:`profile_figure` as a PNG."""
+    return save(profile_figure(title, runs), path)
+
+
+def profile_figure(title: str, runs: dict[str, ProfileData]):
+    """One figure for a profile: per quantity, the methods overlaid and,
+    under it, each method minus the reference (see module doc)."""
     first = next(iter(runs.values()))
     quantities = [n for n in first.names if n not in ("s", "x", "y")]
-    fig, axes = plt.subplots(len(quantities), 1, figsize=(7, 3.2 * len(quantities)), squeeze=False)
-    for ax, q in zip(axes[:, 0], quantities):
-        for label, prof in runs.items():
-            ax.plot(prof.columns["s"], prof.columns[q], label=label, lw=1.4)
+    ref = reference_label(list(runs))
+    rows = 2 if len(runs) > 1 else 1
+    fig, axes = plt.subplots(rows * len(quantities), 1, figsize=(8.5, (3.0 + 1.6 * (rows - 1)) * len(quantities)),
+                             squeeze=False, sharex=True, layout="constrained",
+                             gridspec_kw={"height_ratios": [2, 1][:rows] * len(quantities)})
+    for k, q in enumerate(quantities):
+        ax = axes[rows * k, 0]
+        scale = max(float(np.nanmax(np.abs(p.columns[q]))) for p in runs.values())
+        for i, (label, prof) in enumerate(runs.items()):
+            ax.plot(prof.columns["s"], prof.columns[q], **style(label, i, len(prof.columns["s"])))
         ax.set_ylabel(UNITS.get(q, q))
         ax.grid(alpha=0.3)
-        ax.legend()
+        keep_span(ax, scale)
+        if k == 0:
+            legend_outside(ax)
+        if rows == 2:
+            _difference_panel(axes[rows * k + 1, 0], q, runs, ref, scale)
     axes[-1, 0].set_xlabel(XLABEL.get(first.parameter, "s"))
-    axes[0, 0].set_title(f"{first.id}: {title}")
-    return save(fig, path)
+    axes[0, 0].set_title(f"{first.id}: {title}", fontsize=10, wrap=True)
+    _no_offsets(fig)
+    return fig
+
+
+def _difference_panel(ax, q: str, runs: dict[str, ProfileData], ref: str, scale: float) -> None:
+    """Each curve but the reference minus the reference, at its own samples."""
+    s_ref, v_ref = runs[ref].columns["s"], runs[ref].columns[q]
+    for i, (label, prof) in enumerate(runs.items()):
+        if label != ref:
+            s = prof.columns["s"]
+            ax.plot(s, prof.columns[q] - np.interp(s, s_ref, v_ref), **style(label, i, len(s)))
+    ax.axhline(0.0, color="black", lw=0.6)
+    ax.grid(alpha=0.3)
+    ax.set_ylabel("Δ " + UNITS.get(q, q))
+    keep_span(ax, scale)
+    ax.set_title(f"each minus {ref}", fontsize=8, loc="right")
+
+
+def _no_offsets(fig) -> None:
+    """Tick labels in full, never as an offset plus small differences."""
+    for ax in fig.axes:
+        for axis in (ax.xaxis, ax.yaxis):
+            if isinstance(axis.get_major_formatter(), matplotlib.ticker.ScalarFormatter):
+                axis.get_major_formatter().set_useOffset(False)
 
 
 def save(fig, path: Path) -> Path:
-    """Lay out, write atomically as PNG, and close a figure."""
-    fig.tight_layout()
+    """Lay out (constrained, so titles and outside legends fit), drop offset
+    tick labels, write atomically as PNG, and close a figure."""
+    if fig.get_layout_engine() is None:
+        fig.set_layout_engine("constrained")
+    _no_offsets(fig)
     with atomic_path(Path(path)) as tmp:
         fig.savefig(tmp, dpi=110, format="png")
     plt.close(fig)
@@ -44,14 +150,14 @@ def save(fig, path: Path) -> Path:
 
 def loglog_by_variant(path: Path, rows: list[dict], x: str, y: str, xlabel: str, ylabel: str, title: str) -> Path:
     """``rows[y]`` against ``rows[x]``, log-log, one line per (method, degree)."""
-    fig, ax = plt.subplots(figsize=(6.5, 4.5))
-    for key in dict.fromkeys((r["method"], r["degree"]) for r in rows):
+    fig, ax = plt.subplots(figsize=(7.5, 4.5))
+    for i, key in enumerate(dict.fromkeys((r["method"], r["degree"]) for r in rows)):
         pts = [(r[x], r[y]) for r in rows if (r["method"], r["degree"]) == key and y in r]
         if pts:
-            ax.loglog(*zip(*pts), "o-", label=f"{key[0]} p{key[1]}")
+            ax.loglog(*zip(*pts), **style(f"{key[0]} p{key[1]}", i))
     ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
-    ax.set_title(title)
+    ax.set_title(title, fontsize=10)
     ax.grid(which="both", alpha=0.3)
-    ax.legend()
+    legend_outside(ax)
     return save(fig, path)

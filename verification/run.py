@@ -6,7 +6,7 @@ Writes, under ``--out DIR``::
     DIR/scene.toml                the scene as read
     DIR/<method>/summary.json     DOFs, timings, solver health
     DIR/<method>/profiles/<ID>.csv
-    DIR/<method>/xdmf/            (with --xdmf) one XDMF file per body
+    DIR/<method>/fields/          (with --fields) VTU per body, Γ per step + PVD
     DIR/plots/<ID>.png            each profile, methods overlaid
     DIR/summary.md                a table of the runs
     (a nonlinear law, :mod:`verification.interface`:)
@@ -21,24 +21,11 @@ from pathlib import Path
 
 import numpy as np
 
-from contactcore import BODIES, ContactError, load_scene, sample_profiles, scene_text
+from contactcore import ContactError, load_scene, sample_profiles, scene_text
 
-from . import files, interface, methods, plots
+from . import fields_out, files, interface, methods, plots
 
 log = logging.getLogger("verification")
-
-
-def _write_xdmf(folder: Path, result) -> None:
-    from dolfinx.io import XDMFFile
-    from xdolfinx.output import body_functions
-
-    with files.atomic_folder(folder) as tmp:
-        for b, name in enumerate(BODIES):
-            msh, u, sigma = body_functions(result.fields, b)
-            with XDMFFile(msh.comm, str(tmp / f"{name}.xdmf"), "w") as xdmf:
-                xdmf.write_mesh(msh)
-                xdmf.write_function(u)
-                xdmf.write_function(sigma)
 
 
 def read_nodes(path) -> np.ndarray:
@@ -67,7 +54,7 @@ def _summary_table(summaries: list[dict]) -> str:
 
 
 def run(scene_name: str, method_names: list[str], out: Path, *, h=None, degree=1, paper=False,
-        xdmf=False, petsc_options=None, dmax=None, nodes_file=None, cell=None, basis=None, argv=()) -> list[dict]:
+        fields=False, petsc_options=None, dmax=None, nodes_file=None, cell=None, basis=None, argv=()) -> list[dict]:
     """Solve, sample the scene's profiles, write everything; return the summaries."""
     scene = load_scene(scene_name)
     nodes = read_nodes(nodes_file) if nodes_file else None
@@ -89,15 +76,16 @@ def run(scene_name: str, method_names: list[str], out: Path, *, h=None, degree=1
         for prof in sample_profiles(scene, result.fields):
             files.write_profile_csv(out / name / "profiles" / f"{prof.id}.csv", prof)
             profiles.setdefault(prof.id, {})[f"{name} (p{result.degree})"] = prof
-        if xdmf and name in methods.WITH_XDMF:
-            _write_xdmf(out / name / "xdmf", result)
-        elif xdmf:
-            log.info("%s: no mesh, so no XDMF", name)
+        if fields:
+            written = fields_out.write_fields(out / name / "fields", result, mesh=name in methods.WITH_XDMF)
+            log.info("%s: wrote %d field files%s", name, len(written),
+                     "" if name in methods.WITH_XDMF else " (Γ only: no mesh)")
         files.write_json(out / name / "summary.json", summary)
         if not scene.law.is_linear:
-            paths[name] = result.interface
+            paths[f"{name} (p{result.degree})"] = result.interface
             interface.write_history(out / name, scene, result.interface)
-            interface.plot_status(out / "plots" / f"status_{name}.png", scene, name, result.interface)
+            interface.plot_status(out / "plots" / f"status_{name}.png", scene, f"{name} (p{result.degree})",
+                                  result.interface)
     titles = {p.id: p.title for p in scene.profiles}
     for pid, runs in profiles.items():
         plots.plot_profile(out / "plots" / f"{pid}.png", titles[pid], runs)

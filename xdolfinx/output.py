@@ -1,46 +1,72 @@
-"""Per-body dolfinx meshes and functions for visual output (ParaView).
+"""Per-body meshes with their fields, for visual output (ParaView, meshio).
 
-Each body gets its own first-order mesh (the vertices of the cells that hold
-it), its displacement at those vertices and its stress at cell midpoints
-(DG0), evaluated through the body-aware point evaluation of any method with
-a :class:`~xdolfinx.evaluation.BodyCellLocator` (fe, xfem).  For XFEM a cell
-cut by Γ belongs to both bodies' meshes, each showing its own field there.
-The caller writes them (e.g. XDMFFile).  Serial only.
+Each body gets its own first-order mesh: the vertices of the cells that hold
+it (a cell cut by Γ, in XFEM, belongs to both bodies' meshes, each showing
+its own field there).  On it:
+
+* ``u``: the displacement at every vertex (P1 in the vertices, whatever the
+  method's degree);
+* ``sigma``: ``(σxx, σyy, σxy)`` per cell, the value at the cell's vertex
+  centroid: the cell's own value for P1 (constant stress), its mean for P2
+  on a straight triangle (linear stress).  True cell data, not per vertex.
+
+The mesh is the method's own (``locator.msh`` of the fields behind any
+wrapper, :func:`contactcore.result.method_fields`), mapped into the user's
+frame by the wrappers' placement; the values are those of the Result's
+public fields at the mapped points, so they are in the user's units and
+equal to what the profiles sample.  Numbers only: the caller writes them.
+Serial only.
 """
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
-import ufl
-from dolfinx import fem
-from dolfinx.mesh import compute_midpoints, create_mesh
-from mpi4py import MPI
+
+from contactcore import DiscretisationError
+from contactcore.result import method_fields
+
+#: dolfinx's vertex order -> a cycle around the cell (VTK/meshio order), per cell type.
+_CCW = {"triangle": [0, 1, 2], "quadrilateral": [0, 1, 3, 2]}
+#: meshio's name of each dolfinx cell type.
+MESHIO_CELL = {"triangle": "triangle", "quadrilateral": "quad"}
 
 
+@dataclass
+class BodyMesh:
+    """One body's first-order mesh in the user's frame, with its fields."""
 
-def body_functions(fields, body: int):
-    """``(mesh, u, sigma)`` of body ``body`` (0 = −, 1 = +) on its own mesh,
-    in the user's units (a :class:`contactcore.scaling.ScaledFields` maps
-    the method's dimensionless mesh back)."""
-    scales = getattr(fields, "scales", None)  # a Result's fields: the method's own mesh is dimensionless
-    locator = (fields if scales is None else fields.inner).locator
-    msh, cells = locator.msh, locator.body_cells[body]
+    points: np.ndarray  # (n, 2) vertices
+    cells: np.ndarray  # (m, k) vertex indices, counter-clockwise
+    cell_type: str  # dolfinx's name: "triangle" or "quadrilateral"
+    u: np.ndarray  # (n, 2) displacement at the vertices
+    sigma: np.ndarray  # (m, 3) (σxx, σyy, σxy) at the cells' vertex centroids
+
+
+def body_mesh(fields, body: int) -> BodyMesh:
+    """Body ``body`` (0 = −, 1 = +) of a Result's ``fields`` (see module doc)."""
+    inner, placement = method_fields(fields)
+    if not hasattr(inner, "locator"):
+        raise DiscretisationError(f"fields: {type(inner).__name__} has no mesh to write")
+    msh = inner.locator.msh
     cell_name = msh.topology.cell_name()
-    nverts = {"triangle": 3, "quadrilateral": 4}[cell_name]
+    order = _CCW[cell_name]
     dofmap = msh.geometry.dofmap
-    per_cell = np.diff(dofmap.offsets)[0]
-    conn = dofmap.array.reshape(-1, per_cell)[cells, :nverts]  # vertices come first
+    per_cell = int(np.diff(dofmap.offsets)[0])
+    conn = dofmap.array.reshape(-1, per_cell)[inner.locator.body_cells[body]][:, order]  # vertices come first
     nodes, inverse = np.unique(conn, return_inverse=True)
-    domain = ufl.Mesh(ufl.VectorElement("Lagrange", cell_name, 1))
-    x = msh.geometry.x[nodes, :2]
-    sub = create_mesh(MPI.COMM_SELF, inverse.reshape(-1, nverts).astype(np.int64),
-                      x if scales is None else scales.to_user(x), domain)
-    V = fem.VectorFunctionSpace(sub, ("Lagrange", 1))
-    pts = V.tabulate_dof_coordinates()[:, :2]
-    u = fem.Function(V, name="u")
-    u.x.array[:] = fields.displacement(pts, np.full(len(pts), body)).ravel()
-    S = fem.VectorFunctionSpace(sub, ("DG", 0), dim=3)
-    ncells = sub.topology.index_map(2).size_local
-    mids = compute_midpoints(sub, 2, np.arange(ncells, dtype=np.int32))[:, :2]
-    sigma = fem.Function(S, name="sigma_xx_yy_xy")
-    sigma.x.array[:] = fields.stress(mids, np.full(ncells, body)).ravel()
-    return sub, u, sigma
+    cells = inverse.reshape(conn.shape)
+    points = placement.to_user(msh.geometry.x[nodes])
+    clockwise = signed_areas(points, cells) < 0  # a mapping or mesh generator may mirror cells
+    cells[clockwise] = cells[clockwise, ::-1]
+    centroids = points[cells].mean(axis=1)
+    return BodyMesh(points=points, cells=cells, cell_type=cell_name,
+                    u=fields.displacement(points, np.full(len(points), body)),
+                    sigma=fields.stress(centroids, np.full(len(cells), body)))
+
+
+def signed_areas(points: np.ndarray, cells: np.ndarray) -> np.ndarray:
+    """Shoelace area of each polygon ``points[cells[i]]``: positive when
+    its vertices run counter-clockwise."""
+    x, y = points[cells, 0], points[cells, 1]
+    return 0.5 * np.sum(x * np.roll(y, -1, axis=1) - np.roll(x, -1, axis=1) * y, axis=1)

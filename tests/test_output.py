@@ -1,0 +1,195 @@
+"""Field files (``run --fields``, issue 18): every file opens with meshio,
+and what it holds is the run's own fields and interface state."""
+import re
+import xml.etree.ElementTree as ET
+
+import meshio
+import numpy as np
+import pytest
+
+from contactcore import BODIES, ProfileData, evaluate_quantities, load_scene, scene_text
+from contactcore.tolerances import PLOT_MIN_Y_SPAN
+from tests.tolerances import FIELD_FILE_RTOL, SAMPLE_ROUNDING_RTOL
+from verification import fields_out, interface, methods, plots
+from verification.__main__ import main
+from xdolfinx.output import body_mesh, signed_areas
+
+INCREMENTS = 3
+H = 0.2
+
+
+@pytest.fixture(scope="module")
+def coulomb_toml(tmp_path_factory):
+    """Scene C-coulomb in a few increments (the load path is the same)."""
+    text = re.sub(r"(?m)^increments = \d+", f"increments = {INCREMENTS}", scene_text("C-coulomb"))
+    path = tmp_path_factory.mktemp("scene") / "C-coulomb-3.toml"
+    path.write_text(text)
+    return path
+
+
+def _close(read, expected, rtol=FIELD_FILE_RTOL):
+    """``read`` equals ``expected`` to ``rtol`` of the quantity's scale."""
+    scale = max(np.abs(expected).max(), np.finfo(float).tiny)
+    assert np.abs(np.asarray(read) - expected).max() <= rtol * scale
+
+
+def _pvd_entries(path):
+    return [(float(d.get("timestep")), d.get("file")) for d in ET.parse(path).getroot().iter("DataSet")]
+
+
+@pytest.mark.parametrize("method", ["fe", "xfem"])
+def test_field_files_hold_the_run(tmp_path, coulomb_toml, method):
+    scene = load_scene(coulomb_toml)
+    result = methods.solver(method)(scene, H)
+    written = fields_out.write_fields(tmp_path, result, mesh=True)
+    steps = result.interface.steps
+    assert len(steps) >= INCREMENTS
+    assert sorted(written) == sorted(["minus.vtu", "plus.vtu", "interface.pvd"]
+                                     + [f"interface_{n:04d}.vtu" for n in range(len(steps))])
+    area = 0.0
+    for b, body in enumerate(BODIES):
+        mesh = meshio.read(tmp_path / f"{body}.vtu")
+        pts, cells = mesh.points[:, :2], mesh.cells[0].data
+        assert signed_areas(pts, cells).min() > 0  # every cell counter-clockwise, none degenerate
+        area += signed_areas(pts, cells).sum()
+        inside = scene.body_of(pts, body) == b  # vertices of XFEM cut cells may lie in the other body
+        assert inside.sum() > 10
+        u = evaluate_quantities(scene, result.fields, pts[inside], ["ux", "uy"], side=body)
+        _close(mesh.point_data["u"][inside, :2], np.column_stack([u["ux"], u["uy"]]))
+        sig = result.fields.stress(pts[cells].mean(axis=1), np.full(len(cells), b))
+        for i, c in enumerate(("xx", "yy", "xy")):
+            assert mesh.cell_data[f"sigma_{c}_cell"][0].shape == (len(cells),)  # cell data, one per cell
+            _close(mesh.cell_data[f"sigma_{c}_cell"][0], sig[:, i])
+    if method == "fe":  # the bodies tile the rectangle 2 x 3 (XFEM's cut cells are in both)
+        assert area == pytest.approx(6.0, rel=1e-12)
+    else:
+        assert area > 6.0
+    entries = _pvd_entries(tmp_path / "interface.pvd")
+    assert [t for t, _ in entries] == [s.step for s in steps]
+    for (_, name), step in zip(entries, steps):
+        cloud = meshio.read(tmp_path / name)
+        _close(cloud.points[:, :2], result.interface.points)
+        assert np.array_equal(cloud.point_data["status"], step.status)
+        for k, col in (("gN", step.jump[:, 0]), ("gT", step.jump[:, 1]), ("tN", step.traction[:, 0]),
+                       ("tT", step.traction[:, 1])):
+            _close(cloud.point_data[k], col)
+    final = evaluate_quantities(scene, result.fields, result.interface.points, ["gN", "gT", "tN", "tT"])
+    for k, col in final.items():  # the last step is what the profiles sample on Γ
+        _close(meshio.read(tmp_path / entries[-1][1]).point_data[k], col, SAMPLE_ROUNDING_RTOL)
+
+
+class _Units:
+    """A units wrapper as :func:`contactcore.result.method_fields` reads one:
+    the inner problem in lengths / L and stresses / S, moved by ``origin``."""
+
+    def __init__(self, base, origin, length_scale, stress_scale):
+        self.base, self.origin, self.length_scale, self.stress_scale = base, origin, length_scale, stress_scale
+
+    def _inner(self, points):
+        return (np.asarray(points) - self.origin) / self.length_scale
+
+    def displacement(self, points, bodies):
+        return self.length_scale * self.base.displacement(self._inner(points), bodies)
+
+    def stress(self, points, bodies):
+        return self.stress_scale * self.base.stress(self._inner(points), bodies)
+
+
+def test_body_meshes_through_wrappers_are_in_the_users_frame(coulomb_toml):
+    """Through the history wrapper and a units wrapper: the mesh is placed
+    by origin + L x, u is scaled by L and σ by S."""
+    result = methods.solver("fe")(load_scene(coulomb_toml), H)
+    origin, L, S = np.array([1e3, -7e2]), 2.0, 1e6  # lengths over the domain's size, as a units wrapper does
+    wrapped = _Units(result.fields, origin, L, S)
+    for b in range(2):
+        plain, moved = body_mesh(result.fields, b), body_mesh(wrapped, b)
+        _close(moved.points, origin + L * plain.points)
+        assert np.array_equal(moved.cells, plain.cells)
+        _close(moved.u, L * plain.u)
+        _close(moved.sigma, S * plain.sigma)
+
+
+def test_cli_fields_for_a_nonlinear_law(tmp_path, coulomb_toml):
+    """The issue's traceback: ``--xdmf`` (alias of ``--fields``) on Coulomb."""
+    assert main(["run", str(coulomb_toml), "--method", "fe", "efgm", "--h", str(H), "--xdmf",
+                 "--out", str(tmp_path)]) == 0
+    for method, bodies in (("fe", True), ("efgm", False)):
+        folder = tmp_path / method / "fields"
+        assert (folder / "minus.vtu").exists() == bodies  # efgm has no mesh: Γ only
+        for _, name in _pvd_entries(folder / "interface.pvd"):
+            assert len(meshio.read(folder / name).points) > 0
+    assert not [p for p in tmp_path.rglob(".*")]  # no temporary left behind
+
+
+@pytest.mark.parametrize("method,cell", [("fe", None), ("xfem", "quad"), ("xfem", "triangle")])
+def test_fields_of_a_linear_law_at_degree_2(tmp_path, method, cell):
+    args = ["run", "B", "--method", method, "--degree", "2", "--h", str(H), "--fields", "--out", str(tmp_path)]
+    assert main(args + (["--cell", cell] if cell else [])) == 0
+    folder = tmp_path / method / "fields"
+    for body in BODIES:
+        mesh = meshio.read(folder / f"{body}.vtu")
+        assert mesh.cells[0].type == ("quad" if cell == "quad" else "triangle")
+        assert signed_areas(mesh.points[:, :2], mesh.cells[0].data).min() > 0
+        assert np.isfinite(mesh.point_data["u"]).all() and np.abs(mesh.point_data["u"]).max() > 0
+    assert len(_pvd_entries(folder / "interface.pvd")) == 1  # a linear law: one step
+
+
+# --- Figures (issue 18, item 6) ---------------------------------------------
+
+def _profile(pid, s, **quantities):
+    return ProfileData(pid, "arclength", {"s": s, "x": s, "y": 0 * s, **quantities})
+
+
+def _inside(inner, outer):
+    return (inner.x0 >= outer.x0 - 0.5 and inner.y0 >= outer.y0 - 0.5 and inner.x1 <= outer.x1 + 0.5
+            and inner.y1 <= outer.y1 + 0.5)
+
+
+def test_every_method_and_degree_has_its_own_style():
+    looks = {(m, d): (st["color"], st["linestyle"], st["marker"])
+             for m in plots.METHOD_STYLE for d in (1, 2) for st in [plots.style(f"{m} (p{d})")]}
+    assert len(set(looks.values())) == len(looks)  # no two curves look alike
+    assert len({look[2] for look in looks.values()}) == len(looks)  # not even by marker alone
+    assert plots.variant("reference: fe P2, h = 0.025 (3000 DOFs)") == ("fe", 2)
+    assert plots.reference_label(["xfem (p2)", "fe (p1)", "fe (p2)", "efgm (p1)"]) == "fe (p2)"
+    assert plots.reference_label(["xfem (p1)", "efgm (p1)"]) == "xfem (p1)"
+
+
+def test_profile_figure_differences_span_and_layout():
+    """A 24 kPa t_T with a ±3 Pa wobble (scene B5 in the issue): no offset
+    labels, no zoom onto the wobble, the difference panel is method minus
+    reference in Pa, legend and title inside the figure and off the axes."""
+    s = np.linspace(0.0, 1.0, 101)
+    ref = -24000.0 + 3.0 * np.sin(20 * s)
+    runs = {"fe (p2)": _profile("B5", s, tT=ref), "xfem (p1)": _profile("B5", s, tT=ref + 1.0 + s),
+            "efgm (p1)": _profile("B5", s, tT=ref - 2.0)}
+    fig = plots.profile_figure("tangential traction on Γ", runs)
+    fig.canvas.draw()
+    overlay, diff = fig.axes[0], fig.axes[1]
+    for ax in (overlay, diff):
+        assert ax.yaxis.get_major_formatter().get_offset() == ""
+        low, high = ax.get_ylim()
+        scale = max(np.abs(p.columns["tT"]).max() for p in runs.values())
+        assert high - low >= PLOT_MIN_Y_SPAN * scale * (1 - 1e-9)  # (round-off of mid ± span/2)
+    lines = {line.get_label(): line.get_ydata() for line in diff.get_lines() if not line.get_label().startswith("_")}
+    assert set(lines) == {"xfem (p1)", "efgm (p1)"}
+    assert np.allclose(lines["xfem (p1)"], 1.0 + s) and np.allclose(lines["efgm (p1)"], -2.0)
+    figure_box = fig.bbox
+    legend = overlay.get_legend().get_window_extent()
+    assert legend.x0 >= overlay.get_window_extent().x1  # outside the axes, to their right
+    assert _inside(legend, figure_box) and _inside(overlay.title.get_window_extent(), figure_box)
+    plots.plt.close(fig)
+
+
+def test_response_figure_counts_increments(tmp_path, coulomb_toml):
+    scene = load_scene(coulomb_toml)
+    result = methods.solver("efgm")(scene, H)
+    fig = interface.response_figure(scene, {"efgm (p1)": result.interface})
+    fig.canvas.draw()
+    by_label = {ax.get_ylabel(): ax for ax in fig.axes}
+    assert "mean t_T on Γ (Pa)" not in by_label  # Γ is a circle: its mean t_T is the (zero) net torque
+    rms = interface.increment_rows(result.interface)[-1]["rms_tT"]
+    assert rms > 1.0  # Pa, where the mean is ~1e-4 Pa
+    for ax in fig.axes:
+        assert all(float(t).is_integer() for t in ax.get_xticks())  # increments are counted
+    plots.plt.close(fig)
