@@ -137,3 +137,13 @@ NEWTON_MAX_ITERATIONS = 25
 #: A failed increment is halved at most this many times (1/64 of an
 #: increment) before the run stops with an error naming the increment.
 MAX_CUTBACKS = 6
+
+# ----- PETSc solver selection (efgm.petsc_solver) ----------------------------
+
+#: EFGM's system is factorised by MUMPS LDLᵀ (upper triangle only) when
+#: max |A − Aᵀ| <= SYMMETRIC_TO_ROUNDOFF · max |A|, else by LU.  Assembled
+#: Bᵀ W D B is symmetric to summation round-off (measured 1.1e-16 on scene C,
+#: h = 0.0125); a Coulomb slip tangent is off by O(μ kN / kmax) ≫ 1e-13.
+#: Dropping the lower triangle then perturbs each row (~100 entries) by at
+#: most 1e-11 of max |A|, far below BACKWARD_ERROR_FAIL.
+SYMMETRIC_TO_ROUNDOFF = 1e-13
