@@ -137,3 +137,17 @@ FRICTION_CLOSED_FORM = {"fe": (1e-8, 1e-8), "xfem": (1e-8, 1e-8), "efgm": (EFGM_
 #: measured 0.09 (fe), 0.94 (xfem) and 0.52 (efgm) at h = 0.1; 1e6 leaves the
 #: stick test no chance to fail (the test also checks that none slips).
 NEVER_SLIPS_MU = 1e6
+
+# ----- PETSc objects and solvers (test_petsc.py) -----------------------------
+
+#: Growth of resident memory allowed over 30 MUMPS factor-and-solve cycles of
+#: the 4 900-unknown Laplacian, after one warm-up solve.  The factor handle
+#: that outlived its KSP (the bug of issue 23) leaked 2.4 MB a cycle, 71 MB
+#: over the cycles (measured with the old linear_solver); fixed: < 0.1 MB.
+#: 8 MB is about three leaked factors: room for the allocator, not for a leak.
+MEMORY_CYCLE_GROWTH_MB = 8.0
+
+#: Two backward-stable direct solvers (MUMPS, SuperLU) on the same system
+#: differ by about cond · eps: condition estimates ≤ 1e5 on the systems
+#: compared (EFGM scene A at h = 0.2: 5e4), so ≲ 1e-11 of the field's scale.
+SOLVER_AGREEMENT = 1e-10
