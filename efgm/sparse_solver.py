@@ -1,6 +1,9 @@
-"""Sparse direct solves (SuperLU) with the same health report as the others.
+"""Sparse direct solves of EFGM's systems, with the same health report as
+the others: PETSc + MUMPS when petsc4py imports (:mod:`efgm.petsc_solver`,
+the solver of fe and xfem), else SuperLU (:func:`solve_superlu`); the
+report's ``solver`` says which ran.
 
-The system is equilibrated first (symmetric scaling by the inverse square
+SuperLU: the system is equilibrated first (symmetric scaling by the inverse square
 root of each row's largest entry), which removes the scale gap between the
 stiffness (~E) and the constraint rows, then factorised by SuperLU.  The
 report: relative residual, normwise backward error (which decides success,
@@ -16,6 +19,7 @@ import scipy.sparse.linalg as spla
 from contactcore import SolverError, SolverReport
 from contactcore import tolerances as tol
 
+from . import petsc_solver
 
 #: Nested-dissection leaves below this many unknowns are kept in their order.
 ND_LEAF = 64
@@ -66,6 +70,15 @@ def _equilibrate(A: sp.csr_matrix) -> np.ndarray:
 
 def solve(A: sp.csr_matrix, b: np.ndarray, *, coords: np.ndarray, reach: float, estimate_condition: bool = True,
           what: str = "linear system") -> tuple[np.ndarray, SolverReport]:
+    """Solve ``A x = b`` by MUMPS if petsc4py imports, else by SuperLU
+    (module doc; ``coords`` and ``reach`` as for :func:`solve_superlu`)."""
+    if petsc_solver.available():
+        return petsc_solver.solve(A, b, estimate_condition=estimate_condition, what=what)
+    return solve_superlu(A, b, coords=coords, reach=reach, estimate_condition=estimate_condition, what=what)
+
+
+def solve_superlu(A: sp.csr_matrix, b: np.ndarray, *, coords: np.ndarray, reach: float,
+                  estimate_condition: bool = True, what: str = "linear system") -> tuple[np.ndarray, SolverReport]:
     """Solve ``A x = b``, unknown i located at ``coords[i]`` and coupled to
     unknowns within ``reach`` (for the ordering); raise :class:`SolverError`
     if it fails."""

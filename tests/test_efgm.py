@@ -144,9 +144,11 @@ def test_bad_node_sets_are_named():
 
 
 def test_efgm_imports_neither_dolfinx_nor_gmsh():
+    """Importing efgm loads no petsc4py; solving may (MUMPS), but never dolfinx, gmsh or MPI."""
     code = ("import sys, numpy as np; from efgm import method; from verification.closed_forms import "
-            "interface_patch; method.solve(interface_patch(30.0).scene, 0.25); "
-            "bad = [m for m in ('dolfinx', 'petsc4py', 'gmsh', 'ufl', 'basix', 'mpi4py') if m in sys.modules]; "
+            "interface_patch; bad = [m for m in ('petsc4py',) if m in sys.modules]; "
+            "method.solve(interface_patch(30.0).scene, 0.25); "
+            "bad += [m for m in ('dolfinx', 'gmsh', 'ufl', 'basix', 'mpi4py') if m in sys.modules]; "
             "print(bad); sys.exit(1 if bad else 0)")
     proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
     assert proc.returncode == 0, proc.stdout + proc.stderr

@@ -164,3 +164,17 @@ FIELD_FILE_RTOL = 1e-12
 #: most ~7e-12 L / h of its scale (h >= 0.01 L in these tests: 7e-10).
 #: Measured: 2.5e-11 (g_N, fe, C-coulomb at h = 0.2).  1e-9 bounds it.
 SAMPLE_ROUNDING_RTOL = 1e-9
+
+# ----- PETSc objects and solvers (test_petsc.py) -----------------------------
+
+#: Growth of resident memory allowed over 30 MUMPS factor-and-solve cycles of
+#: the 4 900-unknown Laplacian, after one warm-up solve.  The factor handle
+#: that outlived its KSP (the bug of issue 23) leaked 2.4 MB a cycle, 71 MB
+#: over the cycles (measured with the old linear_solver); fixed: < 0.1 MB.
+#: 8 MB is about three leaked factors: room for the allocator, not for a leak.
+MEMORY_CYCLE_GROWTH_MB = 8.0
+
+#: Two backward-stable direct solvers (MUMPS, SuperLU) on the same system
+#: differ by about cond · eps: condition estimates ≤ 1e5 on the systems
+#: compared (EFGM scene A at h = 0.2: 5e4), so ≲ 1e-11 of the field's scale.
+SOLVER_AGREEMENT = 1e-10

@@ -21,15 +21,6 @@ from contactcore.newton import InterfaceOperator
 from . import linear_solver
 
 
-def to_petsc(A: sp.csr_matrix) -> PETSc.Mat:
-    """A serial PETSc AIJ matrix with the entries of a scipy CSR matrix."""
-    A = A.tocsr()
-    A.sort_indices()
-    return PETSc.Mat().createAIJ(size=A.shape, csr=(A.indptr.astype(PETSc.IntType),
-                                                    A.indices.astype(PETSc.IntType), A.data),
-                                 comm=PETSc.COMM_SELF)
-
-
 class PETScSystem:
     """``K`` (PETSc), loads, prescribed unknowns and Γ (see module doc).
 
@@ -69,7 +60,7 @@ class PETScSystem:
 
     def solve(self, interface_tangent: sp.csr_matrix, rhs: np.ndarray):
         J = self.K.copy()
-        Ki = to_petsc(interface_tangent)
+        Ki = linear_solver.to_petsc(interface_tangent)
         J.axpy(1.0, Ki, structure=PETSc.Mat.Structure.SUBSET_NONZERO_PATTERN)
         b, x = J.createVecs()
         b.setArray(rhs)

@@ -1,0 +1,138 @@
+"""PETSc objects are freed, options are checked, and EFGM solves by MUMPS
+when petsc4py imports (SuperLU otherwise) with the same answer."""
+import json
+import os
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+import scipy.sparse as sp
+from petsc4py import PETSc
+
+from contactcore import SolverError
+from efgm import sparse_solver
+from verification.files import read_profile_csv
+from xdolfinx import linear_solver
+from xdolfinx.linear_solver import PETScOptionError
+
+import tolerances as tol
+
+
+def _laplacian(n: int) -> sp.csr_matrix:
+    """The 5-point Laplacian on an n × n grid (SPD, n² unknowns)."""
+    T = sp.diags([-1.0, 2.0, -1.0], [-1, 0, 1], shape=(n, n))
+    return (sp.kron(T, sp.identity(n)) + sp.kron(sp.identity(n), T)).tocsr()
+
+
+def _resident_mb() -> float:
+    with open("/proc/self/statm") as fh:
+        return int(fh.read().split()[1]) * os.sysconf("SC_PAGE_SIZE") / 2**20
+
+
+def _left_in_database() -> list[str]:
+    return [k for k in PETSc.Options().getAll() if k.startswith("xdolfinx_")]
+
+
+def test_factor_and_solve_cycles_keep_memory_flat():
+    A = linear_solver.to_petsc(_laplacian(70))
+    b, x = A.createVecs()
+    b.set(1.0)
+    try:
+        linear_solver.solve(A, b, x, estimate_condition=False)  # libraries warmed up
+        start = _resident_mb()
+        for _ in range(30):
+            report = linear_solver.solve(A, b, x, estimate_condition=False)
+        growth = _resident_mb() - start
+    finally:
+        for obj in (A, b, x):
+            obj.destroy()
+    assert report.solver == "preonly+lu (mumps)" and report.backward_error < 1e-14
+    assert growth <= tol.MEMORY_CYCLE_GROWTH_MB, f"resident memory grew by {growth:.1f} MB over 30 solves"
+    assert _left_in_database() == []
+
+
+def _solve_small(options: dict):
+    return linear_solver.solve_csr(_laplacian(6), np.ones(36), petsc_options=options, estimate_condition=False)
+
+
+@pytest.mark.parametrize("options, named, reason", [
+    ({"pc_type": "nonexistent"}, "pc_type", "unknown type 'nonexistent'"),
+    ({"ksp_type": "gmress"}, "ksp_type", "unknown type 'gmress'"),
+    ({"pc_factor_mat_solver_type": "nonexistent"}, "pc_factor_mat_solver_type", "unknown type 'nonexistent'"),
+    ({"pc_type": "cholesky", "pc_factor_mat_solver_type": "superlu"}, "pc_factor_mat_solver_type=superlu",
+     "does not support factorization type CHOLESKY"),
+    ({"mat_mumps_icntl_7": "x"}, "mat_mumps_icntl_7=x", "has no integer value"),
+    ({"-pc_type": "lu"}, "'-pc_type'", "not an option name"),
+])
+def test_a_bad_option_is_named_before_any_solve(options, named, reason):
+    with pytest.raises(PETScOptionError, match=f"^petsc option {named}") as info:
+        _solve_small(options)
+    assert reason in str(info.value) and "singular" not in str(info.value)
+    assert isinstance(info.value, SolverError) and _left_in_database() == []
+
+
+def test_options_petsc_never_read_are_warned_about():
+    x, report = _solve_small({"pc_factor_shfit_type": "nonzero", "ksp_rtol": 1e-3})  # preonly reads no rtol
+    assert np.allclose(_laplacian(6) @ x, 1.0, rtol=0, atol=1e-12)
+    assert report.warnings == ["petsc option(s) pc_factor_shfit_type, ksp_rtol never used by PETSc: misspelt, "
+                               "or not for this solver"]
+    _, clean = _solve_small({"pc_factor_mat_solver_type": "mumps", "mat_mumps_icntl_14": 40})
+    assert clean.warnings == []
+
+
+def test_cli_names_a_bad_option_and_exits_2(tmp_path):
+    proc = subprocess.run([sys.executable, "-m", "verification", "run", "A", "--method", "fe", "--h", "0.5",
+                           "--petsc-option", "pc_factor_mat_solver_type=nonexistent", "--out", str(tmp_path)],
+                          capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 2 and "Traceback" not in proc.stderr
+    assert proc.stderr.strip().splitlines()[-1].startswith(
+        "error: petsc option pc_factor_mat_solver_type: unknown type 'nonexistent'")
+
+
+def _saddle_point(asymmetry: float) -> tuple[sp.csr_matrix, np.ndarray]:
+    """[[K, Cᵀ], [C, 0]] with K the Laplacian plus ``asymmetry`` in one
+    off-diagonal pair (a slip tangent), C pinning two unknowns."""
+    K = _laplacian(5).tolil()
+    K[0, 1] += asymmetry
+    C = sp.csr_matrix((np.ones(2), ([0, 1], [3, 17])), shape=(2, 25))
+    A = sp.bmat([[K.tocsr(), C.T], [C, None]], format="csr")
+    return A, np.linspace(1.0, 2.0, 27)
+
+
+@pytest.mark.parametrize("asymmetry, factor", [(0.0, "cholesky"), (0.5, "lu")])
+def test_efgm_mumps_picks_ldlt_only_for_a_symmetric_system(asymmetry, factor):
+    A, b = _saddle_point(asymmetry)
+    coords = np.vstack([np.c_[np.arange(25) % 5, np.arange(25) // 5], [[3, 0], [2, 3]]]).astype(float)
+    x, report = sparse_solver.solve(A, b, coords=coords, reach=2.0, what="saddle point")
+    ref, superlu = sparse_solver.solve_superlu(A, b, coords=coords, reach=2.0, what="saddle point")
+    assert report.solver == f"preonly+{factor} (mumps)" and superlu.solver.startswith("superlu")
+    assert report.backward_error < 1e-14 and report.condition > 1.0
+    assert np.max(np.abs(x - ref)) <= tol.SOLVER_AGREEMENT * np.max(np.abs(ref))
+
+
+def _run_efgm(out, block_petsc: bool) -> dict:
+    """``run A --method efgm --h 0.2`` in a fresh interpreter; its summary."""
+    code = ("import sys; " + ("sys.modules['petsc4py'] = None; " if block_petsc else "")
+            + "from verification.__main__ import main; "
+            f"code = main(['run', 'A', '--method', 'efgm', '--h', '0.2', '--out', {str(out)!r}]); "
+            "sys.exit(code or ('dolfinx' in sys.modules))")
+    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0, proc.stderr
+    return json.loads((out / "efgm" / "summary.json").read_text())["solver"]
+
+
+def test_efgm_without_petsc4py_falls_back_to_superlu_with_the_same_profiles(tmp_path):
+    superlu = _run_efgm(tmp_path / "superlu", block_petsc=True)
+    mumps = _run_efgm(tmp_path / "mumps", block_petsc=False)
+    assert superlu["solver"].startswith("superlu (scipy)") and mumps["solver"] == "preonly+cholesky (mumps)"
+    assert superlu["backward_error"] < 1e-14 and mumps["backward_error"] < 1e-14
+    profiles = sorted(p.name for p in (tmp_path / "mumps" / "efgm" / "profiles").iterdir())
+    assert profiles == sorted(p.name for p in (tmp_path / "superlu" / "efgm" / "profiles").iterdir()) != []
+    for name in profiles:
+        a = read_profile_csv(tmp_path / "superlu" / "efgm" / "profiles" / name)
+        b = read_profile_csv(tmp_path / "mumps" / "efgm" / "profiles" / name)
+        for q in set(a) - {"s", "x", "y"}:
+            qa, qb = np.array(a[q]), np.array(b[q])
+            assert np.max(np.abs(qa - qb)) <= tol.SOLVER_AGREEMENT * np.max(np.abs(qa)), (name, q)
+
