@@ -33,24 +33,10 @@ NODE_MATCH = 1e-6
 #: domain's area, otherwise the interface "only touches" the domain.
 MIN_BODY_AREA_FRACTION = 1e-8
 
-#: Normwise backward error ||b - A x|| / (||A|| ||x|| + ||b||) (infinity
-#: norms) above which a direct solve is reported as failed.  A backward-stable
-#: LU gives O(eps) = 1e-16 whatever the penalty; measured on scene A with
-#: springs up to 1e13 E/h: at most 1e-15.  1e-10 leaves room for that and
-#: catches a factorisation gone wrong (O(1)).  The plain relative residual
-#: ||r||/||b|| is reported too, but it grows with ||A|| ~ k for a perfectly
-#: good solve, so it cannot be the criterion.
-BACKWARD_ERROR_FAIL = 1e-10
-
 #: MUMPS condition estimate (its error analysis, RINFOG(10)) above which the
 #: answer is flagged as not to be trusted: with eps = 2.2e-16 the forward error
 #: bound cond * eps reaches 1e-4 at 5e11, i.e. four digits may be lost.
 CONDITION_WARN = 5e11
-
-#: Above this many unknowns the condition estimate is skipped by default: the
-#: MUMPS error analysis costs a few extra solves and dominates small runs
-#: only; large runs are timed, so they should not pay for it.
-CONDITION_ESTIMATE_MAX_DOFS = 200_000
 
 #: Pivot threshold of MUMPS's null-pivot detection (CNTL(3)), relative to the
 #: matrix norm: a pivot below it marks the matrix as singular (a rigid-body
@@ -137,3 +123,38 @@ NEWTON_MAX_ITERATIONS = 25
 #: A failed increment is halved at most this many times (1/64 of an
 #: increment) before the run stops with an error naming the increment.
 MAX_CUTBACKS = 6
+
+# ----- solve health (issue 14): one policy for every method ------------------
+
+#: A solve (linear, or a Newton step's) succeeds only if its relative residual
+#: ||b - A x||_inf / max(||b||_inf, F) (F the internal forces of a Newton
+#: iteration) is at most RESIDUAL_FAIL: x then solves the equations for a load
+#: perturbed by at most this fraction, the engineering accuracy of
+#: ACCURATE_FLOOR.  Measured on scene A at h = 0.2, linear law,
+#: k_N = k_T = a E/h (fe / xfem / efgm): a = 1 gives 8e-15 / 5e-15 / 7e-15;
+#: a = 1e8: 8.5e-8 / 1.1e-9 / 9.8e-9 (the sweeps' stiffest); a = 1e10:
+#: 1.0e-5 / 1.7e-7 / 1.3e-6; a = 1e12: 1.1e-3 / 1.1e-5 / 9.8e-5 (round-off
+#: in the spring rows, ~eps k w/E); a = 1e-8: 1.0e-7 / 7.9e-8 / 1.2e-7 and
+#: a = 1e-12: 1.7e-3 / 4.3e-4 / 7.6e-4 (the + block held only by the springs:
+#: a nearly free mode).  Singular systems give 0.09 to 1.0 (issue 14) while
+#: their backward error is 1e-16 or less, so the backward error cannot decide.
+#: Springs outside ~1e-8..1e8 E/h are thus refused with a reason unless the
+#: method's round-off happens to stay below it.
+RESIDUAL_FAIL = 1e-6
+
+#: A rigid-body mode of a body counts as free when the restraint of the
+#: supports (E per held component), pins and springs (k |Γ|) against it is
+#: at most RIGID_MODE_FREE E: MUMPS's null-pivot threshold (NULL_PIVOT); a
+#: spring that weak is lost in round-off beside the bulk stiffness ~E.
+RIGID_MODE_FREE = 1e-14
+
+#: Volumetric locking of degree-1 elements in plane strain: warned above this
+#: Poisson's ratio (λ/μ = 2ν/(1-2ν) = 1e3).  Issue 14: at ν = 0.4999999 fe P1's
+#: stresses differ from fe P2's by 6-9 %, EFGM's by 1-2 %.
+NU_LOCKING_WARN = 0.4995
+
+#: A failed solve names a spring whose entry k w (w a quadrature weight) lies
+#: outside [SPRING_HINT_RANGE, 1/SPRING_HINT_RANGE]·E as its likely cause:
+#: RESIDUAL_FAIL's measurements fail from ~1e8..1e10 E/h (k w ~ 1e7..1e9 E)
+#: and below ~1e-8 E/h; 1e-6 flags both well before.
+SPRING_HINT_RANGE = 1e-6
