@@ -55,10 +55,11 @@ def check_residual(residual: float, what: str, backward: float = float("nan"), h
                              "stiff or too soft for double precision"))
 
 
-def spring_hint(scene, weights) -> str:
-    """Why a solve may fail, naming the springs: their entries ``k w``
-    against the stiffer modulus ``E`` (round-off in the spring rows grows as
-    eps·k w/E; a body held by springs far below E/h is nearly free)."""
+def failure_hint(scene, weights) -> str:
+    """Why a solve may fail, naming the springs (their entries ``k w``
+    against the stiffer modulus ``E``: round-off in the spring rows grows as
+    eps·k w/E; a body held by springs far below E/h is nearly free) and a
+    nearly incompressible material in plane strain (λ/μ)."""
     E = max(m.E for m in scene.materials.values())
     w = float(np.max(weights)) if len(weights) else 0.0
     law = scene.law
@@ -71,6 +72,9 @@ def spring_hint(scene, weights) -> str:
         elif ratio < tol.SPRING_HINT_RANGE:
             out.append(f"interface.law.k{c} = {k:.3g} Pa/m is very soft: k w = {ratio:.1e} E, a body held by it "
                        "is nearly free — stiffen it or add a support")
+    if scene.plane == "strain":
+        out += [f"materials.{body}.nu = {m.nu:g}: λ/μ = {2 * m.nu / (1 - 2 * m.nu):.1e} amplifies round-off"
+                for body, m in scene.materials.items() if m.nu > tol.NU_LOCKING_WARN]
     return "; ".join(out) or "a rigid-body mode may be nearly free"
 
 

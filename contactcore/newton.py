@@ -283,7 +283,7 @@ def solve_increments(scene, system: ContactSystem) -> tuple[np.ndarray, Interfac
         try:
             newton.step(float(scene.increments))  # one solve: the tangent is settled at once
         except SolverError as exc:
-            raise SolverError(f"{exc}; {health.spring_hint(scene, system.interface.weights)}") from None
+            raise SolverError(f"{exc}; {health.failure_hint(scene, system.interface.weights)}") from None
     else:
         for n in range(1, scene.increments + 1):
             newton.increment(n)
