@@ -119,7 +119,6 @@ def test_efgm_solver_refuses_a_matrix_with_a_null_space():
 
 def test_petsc_solver_refuses_a_matrix_with_a_null_space():
     """PETSc with SuperLU (no null-pivot detection) answers; the residual refuses."""
-    from petsc4py import PETSc
     from xdolfinx import linear_solver
     from xdolfinx.contact_system import to_petsc
     A, b = _null_space_matrix()
