@@ -10,7 +10,8 @@ solve).  The normwise backward error ``‖b − A x‖/(‖A‖‖x‖ + ‖b‖
 reported beside it, never instead: for a (nearly) singular ``A`` a huge
 ``x`` makes it tiny while ``ρ`` stays O(1).
 
-Before any solve, :func:`check_restraint` asks whether the supports, pins
+Before any solve, :func:`check_springs` refuses springs so stiff that the
+bulk is lost in their rows, and :func:`check_restraint` asks whether the supports, pins
 and interface springs remove the six rigid-body modes of the two bodies; a
 mode held by less than ``RIGID_MODE_FREE·E`` (springs lost in round-off, a
 missing support) is refused with the body and the missing support named.
@@ -21,7 +22,7 @@ from __future__ import annotations
 import numpy as np
 
 from . import tolerances as tol
-from .errors import SolverError
+from .errors import SceneError, SolverError
 from .geometry import Disc, LineInterface, tangent_of
 
 #: Sample points per support boundary in the rigid-mode check (three
@@ -76,6 +77,22 @@ def failure_hint(scene, weights) -> str:
         out += [f"materials.{body}.nu = {m.nu:g}: λ/μ = {2 * m.nu / (1 - 2 * m.nu):.1e} amplifies round-off"
                 for body, m in scene.materials.items() if m.nu > tol.NU_LOCKING_WARN]
     return "; ".join(out) or "a rigid-body mode may be nearly free"
+
+
+def check_springs(scene, weights) -> None:
+    """Refuse springs whose entries ``k w`` (w the largest quadrature weight
+    on Γ) exceed ``SPRING_ENTRY_MAX·E``: the bulk stiffness (~E) added to
+    those rows keeps fewer digits than the residual policy asks for, so the
+    matrix itself is wrong (t_N = k g_N loses the bulk's share) and no
+    residual of it can tell."""
+    E = max(m.E for m in scene.materials.values())
+    w = float(np.max(weights)) if len(weights) else 0.0
+    for c, k in (("N", scene.law.kN), ("T", scene.law.kT)):
+        if k * w > tol.SPRING_ENTRY_MAX * E:
+            raise SceneError(f"interface.law.k{c}", f"{k:.3g} Pa/m is too stiff for double precision here: its "
+                             f"entries k w = {k * w / E:.1e} E exceed {tol.SPRING_ENTRY_MAX:.1e} E, beyond which the "
+                             f"bulk stiffness in the interface rows is lost to round-off (no accurate solve "
+                             f"exists); use k_{c} <= {tol.SPRING_ENTRY_MAX * E / w:.2e} Pa/m")
 
 
 # ----- rigid-body modes -------------------------------------------------------

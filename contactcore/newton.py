@@ -19,8 +19,10 @@ springs (k ≥ 1e8 E/h) raise above NEWTON_RTOL.  Either way the step is
 accepted only if ``‖R‖∞ <= RESIDUAL_FAIL·F`` and every solve passed the
 same test (:mod:`contactcore.health`): a settled status whose solve was
 singular (a body sliding away at the slip limit) is a failure, not a
-converged runaway.  Before any solve the supports, pins and springs must
-hold every rigid-body mode (:func:`contactcore.health.check_restraint`).  ``J`` is not
+converged runaway.  Before any solve the springs must leave the bulk
+digits in their rows (:func:`contactcore.health.check_springs`) and the
+supports, pins and springs must hold every rigid-body mode
+(:func:`contactcore.health.check_restraint`).  ``J`` is not
 symmetric while points slip, so every method factorises it with a general
 LU.  A failed increment (no convergence, a singular tangent) is halved up to
 ``MAX_CUTBACKS`` times; the state is committed only at converged steps.  A
@@ -277,6 +279,7 @@ def with_history(scene, fields, path: InterfacePath):
 def solve_increments(scene, system: ContactSystem) -> tuple[np.ndarray, InterfacePath, SolverReport]:
     """Solve ``scene`` on ``system``: its unknowns at the last increment, the
     interface's history and the solver's report (module doc)."""
+    health.check_springs(scene, system.interface.weights)
     health.check_restraint(scene, system.interface.points, system.interface.weights)
     newton = _Newton(scene, system)
     if scene.law.is_linear:

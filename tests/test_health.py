@@ -12,11 +12,11 @@ import numpy as np
 import pytest
 import scipy.sparse as sp
 
-from contactcore import Pin, SolverError, SolverReport, load_scene, scene_text
+from contactcore import Pin, SceneError, SolverError, SolverReport, load_scene, scene_text
 from contactcore import health
 from contactcore.laws import LinearLaw
 from contactcore.newton import InterfaceOperator, solve_increments
-from contactcore.tolerances import RESIDUAL_FAIL
+from contactcore.tolerances import RESIDUAL_FAIL, SPRING_ENTRY_MAX
 from verification import methods
 from verification.__main__ import main
 
@@ -51,7 +51,7 @@ BAD = {
     "kT = 1e-300": (_replace("kT = 1e8", "kT = 1e-300"), r"body \+ can slide along Γ: k_T is 1e-300"),
     "coulomb mu = 0.05": (_replace(LINEAR, 'type = "coulomb"\nmu = 0.05'),
                           r"increment 1 of 20 failed.*no equilibrium"),
-    "kN = 1e300": (_replace("kN = 1e10", "kN = 1e300"), r"interface\.law\.kN = 1e\+300 Pa/m is too stiff"),
+    "kN = 1e300": (_replace("kN = 1e10", "kN = 1e300"), r"^error: interface\.law\.kN: 1e\+300 Pa/m is too stiff"),
     # our own: the + block held only by unilateral points that open (tension)
     "open unilateral points": (_chain(_replace(LINEAR, 'type = "unilateral"'),
                                       _replace("value = [2.5e4, -1.0e5]", "value = [0.0, 1.0e5]")),
@@ -185,3 +185,30 @@ def test_condition_estimate_only_when_asked(method):
 def test_a_good_solve_passes_the_policy(method):
     rep = methods.solver(method)(load_scene("A"), 0.2).solver
     assert rep.residual <= RESIDUAL_FAIL and rep.backward_error < 1e-14 and not rep.warnings
+
+
+def test_springs_that_swamp_the_bulk_are_refused_before_the_solve():
+    """XFEM at scene A's own h with k_N = 1e300: its residual alone is 1.5e-11
+    while t_N = k_N g_N is ~1e277 Pa, so the springs are refused up front;
+    just below SPRING_ENTRY_MAX the same check lets them through."""
+    from xdolfinx import xfem
+    scene = load_scene("A")
+    with pytest.raises(SceneError, match=r"interface\.law\.kN: 1e\+300 Pa/m is too stiff .* use k_N <= "):
+        xfem.solve(scene.with_changes(law=LinearLaw(1e300, scene.law.kT)), 0.025)
+    weights = np.array([0.05])
+    E = max(m.E for m in scene.materials.values())
+    ok = 0.5 * SPRING_ENTRY_MAX * E / 0.05
+    health.check_springs(scene.with_changes(law=LinearLaw(ok, ok)), weights)
+    with pytest.raises(SceneError, match="interface.law.kT"):
+        health.check_springs(scene.with_changes(law=LinearLaw(ok, 4 * ok)), weights)
+
+
+def test_the_sweep_calls_nothing_accurate_beyond_the_residual_policy():
+    """k_N from 1e-12 to 1e12 E/h on the patch (XFEM): every accurate row
+    passes RESIDUAL_FAIL, and both extremes are refused naming the spring."""
+    from verification.sweeps import run_sweep, sweeps
+    rows = run_sweep(next(s for s in sweeps() if s.name == "kN_patch"), method_names=["xfem"])
+    assert all(r["residual"] <= RESIDUAL_FAIL for r in rows if r["outcome"] == "accurate")
+    assert sum(r["outcome"] == "accurate" for r in rows) >= 10 and not [r for r in rows if r["outcome"] == "wrong"]
+    for extreme in (rows[0], rows[-1]):
+        assert extreme["outcome"] == "refused" and "interface.law.kN" in extreme["message"], extreme
