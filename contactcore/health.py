@@ -22,7 +22,7 @@ from __future__ import annotations
 import numpy as np
 
 from . import tolerances as tol
-from .errors import SceneError, SolverError
+from .errors import SolverError
 from .geometry import Disc, LineInterface, tangent_of
 
 #: Sample points per support boundary in the rigid-mode check (three
@@ -89,10 +89,10 @@ def check_springs(scene, weights) -> None:
     w = float(np.max(weights)) if len(weights) else 0.0
     for c, k in (("N", scene.law.kN), ("T", scene.law.kT)):
         if k * w > tol.SPRING_ENTRY_MAX * E:
-            raise SceneError(f"interface.law.k{c}", f"{k:.3g} Pa/m is too stiff for double precision here: its "
-                             f"entries k w = {k * w / E:.1e} E exceed {tol.SPRING_ENTRY_MAX:.1e} E, beyond which the "
-                             f"bulk stiffness in the interface rows is lost to round-off (no accurate solve "
-                             f"exists); use k_{c} <= {tol.SPRING_ENTRY_MAX * E / w:.2e} Pa/m")
+            raise SolverError(f"interface.law.k{c}: {k:.3g} Pa/m is too stiff for double precision here: its "
+                              f"entries k w = {k * w / E:.1e} E exceed {tol.SPRING_ENTRY_MAX:.1e} E, beyond which "
+                              f"the bulk stiffness in the interface rows is lost to round-off (no accurate solve "
+                              f"exists); use k_{c} <= {tol.SPRING_ENTRY_MAX * E / w:.2e} Pa/m")
 
 
 # ----- rigid-body modes -------------------------------------------------------
@@ -115,6 +115,7 @@ def _modes(points: np.ndarray, bodies: np.ndarray, centre: np.ndarray, length: f
 
 
 def _boundary_points(domain, name: str) -> np.ndarray:
+    """Evenly spaced points on the named boundary (an edge, or the rim)."""
     s = (np.arange(_SUPPORT_SAMPLES) + 0.5) / _SUPPORT_SAMPLES
     if isinstance(domain, Disc):
         a = 2 * np.pi * s
@@ -131,7 +132,7 @@ def _restraint(scene, interface_points, interface_weights) -> tuple[np.ndarray, 
     the stiffer modulus; and the spring parts ``Q_N``, ``Q_T`` alone."""
     E = max(m.E for m in scene.materials.values())
     dom = scene.domain
-    centre = np.mean(dom.corners, axis=0) if hasattr(dom, "corners") else np.asarray(dom.centre, float)
+    centre = np.asarray(dom.centre, float) if isinstance(dom, Disc) else np.mean(dom.corners, axis=0)
     L = scene.length_scale
     Q = np.zeros((6, 6))
     held = [(_boundary_points(dom, s.boundary), s.fix, 1.0 / _SUPPORT_SAMPLES) for s in scene.supports]

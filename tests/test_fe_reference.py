@@ -86,7 +86,8 @@ def test_bonded_limit_falls_as_one_over_k(record_property):
             res = conforming.solve(base.with_changes(law=LinearLaw(alpha * E / h, alpha * E / h)), h,
                                    estimate_condition=True)
         except SolverError as exc:
-            assert "singular to working precision" in str(exc) or "relative residual" in str(exc)
+            assert any(reason in str(exc) for reason in ("singular to working precision", "relative residual",
+                                                         "too stiff for double precision"))
             outcome.append("refused")
             continue
         u = res.fields.displacement(pts, bodies)
