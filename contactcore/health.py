@@ -74,7 +74,7 @@ def failure_hint(scene, weights) -> str:
             out.append(f"interface.law.k{c} = {k:.3g} Pa/m is very soft: k w = {ratio:.1e} E, a body held by it "
                        "is nearly free — stiffen it or add a support")
     if scene.plane == "strain":
-        out += [f"materials.{body}.nu = {m.nu:g}: λ/μ = {2 * m.nu / (1 - 2 * m.nu):.1e} amplifies round-off"
+        out += [f"materials.{body}.nu = {m.nu:.10g}: λ/μ = {2 * m.nu / (1 - 2 * m.nu):.1e} amplifies round-off"
                 for body, m in scene.materials.items() if m.nu > tol.NU_LOCKING_WARN]
     return "; ".join(out) or "a rigid-body mode may be nearly free"
 
@@ -207,7 +207,8 @@ def material_warnings(scene) -> list[str]:
     out = []
     for body, m in scene.materials.items():
         if m.nu > tol.NU_LOCKING_WARN:
-            out.append(f"materials.{body}.nu = {m.nu:g} in plane strain (above {tol.NU_LOCKING_WARN:g}, "
+            out.append(f"materials.{body}.nu = {m.nu:.10g} in plane strain (above {tol.NU_LOCKING_WARN:g}, "
                        f"λ/μ = {2 * m.nu / (1 - 2 * m.nu):.1e}): degree-1 elements lock volumetrically and their "
-                       "stresses may be off by percents; degree 2 (fe, xfem) or efgm are safer")
+                       "stresses may be off by tens of percent; degree 2 (fe, xfem) is safer, and EFGM's "
+                       "linear basis strays from it too as ν → 0.5")
     return out
