@@ -15,7 +15,14 @@ Newton iterates ``J δu = −R`` on the free unknowns until
 ``‖R‖∞ <= NEWTON_RTOL·F`` (:mod:`contactcore.tolerances`), or until the
 law's tangent is the one the last solve used: a piecewise-linear law (every
 law here) is then solved exactly up to that solve's round-off, which stiff
-springs (k ≥ 1e8 E/h) raise above NEWTON_RTOL.  ``J`` is not
+springs (k ≥ 1e8 E/h) raise above NEWTON_RTOL.  Either way the step is
+accepted only if ``‖R‖∞ <= RESIDUAL_FAIL·F`` and every solve passed the
+same test (:mod:`contactcore.health`): a settled status whose solve was
+singular (a body sliding away at the slip limit) is a failure, not a
+converged runaway.  Before any solve the springs must leave the bulk
+digits in their rows (:func:`contactcore.health.check_springs`) and the
+supports, pins and springs must hold every rigid-body mode
+(:func:`contactcore.health.check_restraint`).  ``J`` is not
 symmetric while points slip, so every method factorises it with a general
 LU.  A failed increment (no convergence, a singular tangent) is halved up to
 ``MAX_CUTBACKS`` times; the state is committed only at converged steps.  A
@@ -32,6 +39,7 @@ import scipy.sparse as sp
 
 from scipy.spatial import cKDTree
 
+from . import health
 from . import tolerances as tol
 from .errors import SolverError
 from .geometry import CircleInterface, LineInterface, tangent_of
@@ -88,9 +96,11 @@ class ContactSystem(Protocol):
     def internal(self, u: np.ndarray) -> np.ndarray:
         """``A u``: the bulk forces of the unknowns."""
 
-    def solve(self, interface_tangent: sp.csr_matrix, rhs: np.ndarray) -> tuple[np.ndarray, SolverReport]:
+    def solve(self, interface_tangent: sp.csr_matrix, rhs: np.ndarray,
+              force_scale: float = 0.0) -> tuple[np.ndarray, SolverReport]:
         """``δu`` with ``(A + K_Γ)[free, free] δu = rhs[free]``, zero on the
-        fixed unknowns; raise SolverError if the solve fails."""
+        fixed unknowns; raise SolverError if the solve fails, by the health
+        policy with the residual relative to ``max(‖rhs‖, force_scale)``."""
 
 
 @dataclass
@@ -219,10 +229,11 @@ class _Newton:
             # up to that solve's round-off (its backward error is checked)
             settled = tangent is not None and np.array_equal(tangent, response.tangent)
             if it > 1 and (norm <= tol.NEWTON_RTOL * scale or settled):
+                health.check_residual(history[-1], "the settled Newton step")
                 self._commit(k, (loads, supports), u, response, it - 1, history)
                 return
             tangent = response.tangent
-            du, rep = self.system.solve(self.itf.stiffness(tangent), -R)
+            du, rep = self.system.solve(self.itf.stiffness(tangent), -R, force_scale=scale)
             _merge(self.report, rep)
             u = u + du
         cycling = len(history) > 4 and np.isclose(history[-1], history[-3]) and np.isclose(history[-2], history[-4])
@@ -273,13 +284,19 @@ def with_history(scene, fields, path: InterfacePath):
 def solve_increments(scene, system: ContactSystem) -> tuple[np.ndarray, InterfacePath, SolverReport]:
     """Solve ``scene`` on ``system``: its unknowns at the last increment, the
     interface's history and the solver's report (module doc)."""
+    health.check_springs(scene, system.interface.weights)
+    health.check_restraint(scene, system.interface.points, system.interface.weights)
     newton = _Newton(scene, system)
     if scene.law.is_linear:
-        newton.step(float(scene.increments))  # one solve: the tangent is settled at once
+        try:
+            newton.step(float(scene.increments))  # one solve: the tangent is settled at once
+        except SolverError as exc:
+            raise SolverError(f"{exc}; {health.failure_hint(scene, system.interface.weights)}") from None
     else:
         for n in range(1, scene.increments + 1):
             newton.increment(n)
         newton.report.solver = f"newton + {newton.report.solver}"
     newton.report.increments = scene.increments
+    newton.report.warnings += health.material_warnings(scene)
     newton.path.state = newton.state
     return newton.u, newton.path, newton.report

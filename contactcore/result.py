@@ -80,9 +80,12 @@ class Timings:
 class SolverReport:
     """Health of the solve: what ran, how well, and what to distrust.
 
-    ``residual`` is ``‖b − A x‖/‖b‖`` of the last solve; ``backward_error``
-    is ``‖b − A x‖/(‖A‖‖x‖ + ‖b‖)``, the criterion of success; ``condition``
-    the solver's condition estimate where it gives one.
+    ``residual`` is the relative residual ``‖b − A x‖/max(‖b‖, F)`` of the
+    equations actually solved (F the internal forces of a Newton step; after
+    Newton, its last relative residual): the criterion of success
+    (:mod:`contactcore.health`); ``backward_error`` is
+    ``‖b − A x‖/(‖A‖‖x‖ + ‖b‖)``, reported beside it, never instead;
+    ``condition`` the solver's condition estimate when it was asked for.
     """
 
     solver: str

@@ -190,7 +190,7 @@ class Scales:
             pins=tuple(replace(p, point=self._point(p.point, f"pins[{i}].point")) for i, p in enumerate(scene.pins)),
             loads=tuple(self._load(ld, i) for i, ld in enumerate(scene.loads)),
             profiles=tuple(self.profile(p, f"profiles[{i}]") for i, p in enumerate(scene.profiles)),
-            h=None if scene.h is None else scene.h / L)
+            h=None if scene.h is None else scene.h / L, source=scene.user)
 
     # ----- the answer ---------------------------------------------------
 

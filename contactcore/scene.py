@@ -148,6 +148,14 @@ class Scene:
     h: float | None = None
     paper: dict[str, tuple[int, int]] = field(default_factory=dict)
     title: str = ""
+    #: The scene as the user gave it, when this one is its dimensionless
+    #: form (contactcore.scaling): messages name the user's values.
+    source: "Scene | None" = field(default=None, compare=False, repr=False)
+
+    @property
+    def user(self) -> "Scene":
+        """The scene in the user's units (itself unless dimensionless)."""
+        return self.source or self
 
     @property
     def length_scale(self) -> float:

@@ -262,9 +262,9 @@ class EFGMSystem:
     def internal(self, u: np.ndarray) -> np.ndarray:
         return self.A @ u
 
-    def solve(self, interface_tangent, rhs):
+    def solve(self, interface_tangent, rhs, force_scale=0.0):
         return sparse_solver.solve((self.A + interface_tangent).tocsr(), rhs, coords=self.coords, reach=self.reach,
-                                   estimate_condition=self.estimate, what=self.what)
+                                   estimate_condition=self.estimate, what=self.what, force_scale=force_scale)
 
 
 #: The MLS bases by name (``--basis``) and their degree.
@@ -275,7 +275,7 @@ BASES = {"linear": 1, "quadratic": 2}
 def solve(scene: Scene, h: float | None = None, *, degree: int = 1, paper: bool = False, basis: str | None = None,
           dmax: float | None = None, weight: str = "cubic", support: str = "circular",
           nodes: np.ndarray | None = None, gauss: int | None = None,
-          estimate_condition: bool | None = None) -> Result:
+          estimate_condition: bool = False) -> Result:
     """Solve ``scene`` with EFGM.
 
     ``degree`` 1 or 2 (MLS basis), or ``basis`` "linear" or "quadratic"
@@ -316,8 +316,6 @@ def solve(scene: Scene, h: float | None = None, *, degree: int = 1, paper: bool 
                 - approx.displacement_operator(gam_sv, np.zeros(m, int)))
         G = block_diagonal(np.stack([gam_n, tangent_of(gam_n)], axis=1)) @ jump
         C, g, owner, c_pts = _constraints(scene, approx)
-        if estimate_condition is None:
-            estimate_condition = approx.ndofs <= tol.CONDITION_ESTIMATE_MAX_DOFS
         system = EFGMSystem(K, C, g, owner, _load_vectors(scene, approx, vol, vol_sv, ns.h, n),
                             InterfaceOperator(G.tocsr(), gam_w, gam_pts), max(m.E for m in scene.materials.values()),
                             np.vstack([approx.dof_points(), c_pts]), 2 * mls.reach, estimate_condition,

@@ -39,12 +39,12 @@ def is_symmetric(A: sp.csr_matrix) -> bool:
     return A.nnz == 0 or abs(A - A.T).max() <= tol.SYMMETRIC_TO_ROUNDOFF * scale
 
 
-def solve(A: sp.csr_matrix, b: np.ndarray, *, petsc_options: dict | None = None, estimate_condition: bool = True,
-          what: str = "linear system") -> tuple[np.ndarray, SolverReport]:
+def solve(A: sp.csr_matrix, b: np.ndarray, *, petsc_options: dict | None = None, estimate_condition: bool = False,
+          what: str = "linear system", force_scale: float = 0.0) -> tuple[np.ndarray, SolverReport]:
     """Solve ``A x = b`` with MUMPS: LDLᵀ if ``A`` is symmetric to
     round-off, else LU (module doc); ``petsc_options`` override that."""
     from xdolfinx import linear_solver
 
     factor = {"pc_type": "cholesky"} if is_symmetric(A) else {}
     return linear_solver.solve_csr(A, b, petsc_options={**factor, **(petsc_options or {})},
-                                   estimate_condition=estimate_condition, what=what)
+                                   estimate_condition=estimate_condition, what=what, force_scale=force_scale)

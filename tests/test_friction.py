@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 import tolerances as tol
-from contactcore import SceneError, SolverError, load_scene, make_law, sample_profiles, scene_from_dict
+from contactcore import Pin, SceneError, SolverError, load_scene, make_law, sample_profiles, scene_from_dict
 from contactcore.laws import OPEN, SLIP, STICK, CoulombLaw, LinearLaw, UnilateralLaw
 from contactcore.newton import InterfaceOperator, solve_increments
 from contactcore.result import SolverReport
@@ -119,7 +119,7 @@ class _OneSpring:
     def internal(self, u):
         return self.K * u
 
-    def solve(self, Ki, rhs):
+    def solve(self, Ki, rhs, force_scale=0.0):
         if abs(self.load - self.last) > self.max_step + 1e-12:
             raise SolverError("step too long")
         self.last = self.load
@@ -128,7 +128,10 @@ class _OneSpring:
 
 def _one_spring_scene(increments):
     scene = load_scene("A")
-    return dataclasses.replace(scene, law=UnilateralLaw(1.0, 1.0), increments=increments)
+    # the + block pinned at two points: the rigid-mode check sees it held
+    # (the one-unknown system stands for the jump alone)
+    pins = (Pin((0.2, 0.8)), Pin((0.8, 0.8)))
+    return dataclasses.replace(scene, law=UnilateralLaw(1.0, 1.0), increments=increments, pins=pins)
 
 
 def test_newton_cuts_back_and_records_each_sub_step():

@@ -104,7 +104,7 @@ def _saddle_point(asymmetry: float) -> tuple[sp.csr_matrix, np.ndarray]:
 def test_efgm_mumps_picks_ldlt_only_for_a_symmetric_system(asymmetry, factor):
     A, b = _saddle_point(asymmetry)
     coords = np.vstack([np.c_[np.arange(25) % 5, np.arange(25) // 5], [[3, 0], [2, 3]]]).astype(float)
-    x, report = sparse_solver.solve(A, b, coords=coords, reach=2.0, what="saddle point")
+    x, report = sparse_solver.solve(A, b, coords=coords, reach=2.0, what="saddle point", estimate_condition=True)
     ref, superlu = sparse_solver.solve_superlu(A, b, coords=coords, reach=2.0, what="saddle point")
     assert report.solver == f"preonly+{factor} (mumps)" and superlu.solver.startswith("superlu")
     assert report.backward_error < 1e-14 and report.condition > 1.0

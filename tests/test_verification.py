@@ -60,13 +60,14 @@ def test_twisted_rod_is_the_exact_solution():
 def test_outcomes():
     """refused < warned < accurate < wrong, by the rules of outcomes.py."""
     class R:  # the least of a Result that classify reads
-        def __init__(self, warnings):
-            self.solver = type("S", (), {"warnings": warnings})()
+        def __init__(self, warnings, residual=0.0):
+            self.solver = type("S", (), {"warnings": warnings, "residual": residual})()
     assert classify(Attempt(None, "singular"), float("nan"), 1.0) == "refused"
     assert classify(Attempt(R(["ill-conditioned"])), 10.0, 1.0) == "warned"
     assert classify(Attempt(R([])), 0.5, 1.0) == "accurate"
     assert classify(Attempt(R([])), 2.0, 1.0) == "wrong"
     assert classify(Attempt(R([])), float("nan"), 1.0) == "wrong"
+    assert classify(Attempt(R([], residual=1e-3)), 0.5, 1.0) == "wrong"  # the health policy's residual
     assert accuracy_bound(1e-3) == 1e-2 and accuracy_bound(0.0) == 1e-6
 
 

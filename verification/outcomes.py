@@ -8,8 +8,10 @@ project's own errors (bad input, singular systems, failed solves), and
 
 * ``refused``  — the method stopped with a clear message;
 * ``warned``   — it answered, with a warning (e.g. ill-conditioning);
-* ``accurate`` — it answered silently, within the bound;
-* ``wrong``    — it answered silently, beyond the bound: a bug, not a data point.
+* ``accurate`` — it answered silently, within the bound, and its relative
+  residual passes the health policy (:data:`~contactcore.tolerances.RESIDUAL_FAIL`);
+* ``wrong``    — it answered silently, beyond the bound or with a residual the
+  policy rejects: a bug, not a data point.
 """
 from __future__ import annotations
 
@@ -51,7 +53,8 @@ def classify(tried: Attempt, error: float, bound: float) -> str:
         return "refused"
     if tried.result.solver.warnings:
         return "warned"
-    return "accurate" if math.isfinite(error) and error <= bound else "wrong"
+    healthy = tried.result.solver.residual <= tol.RESIDUAL_FAIL
+    return "accurate" if healthy and math.isfinite(error) and error <= bound else "wrong"
 
 
 def health(tried: Attempt) -> dict:

@@ -59,6 +59,10 @@ DIAGONAL_PINS = ((0.3, 0.1), (0.7, 0.1))  # below a Γ along the diagonal y = x
 #: Spring factors α of k = α·E/h, contrasts E⁺/E⁻, sliver fractions f.
 PENALTY_FACTORS = tuple(float(f"1e{k}") for k in range(-3, 9))
 CONTRASTS = tuple(float(f"1e{k}") for k in range(-4, 5))
+#: The extremes of issue 14 on the (cheap, exact) patch: springs 1e-12..1e12
+#: E/h and contrasts 1e±12, each accurate, warned or refused with a reason.
+EXTREME_PENALTY_FACTORS = (1e-12, 1e-9, 1e-6) + PENALTY_FACTORS + (1e10, 1e12)
+EXTREME_CONTRASTS = (1e-12, 1e-8) + CONTRASTS + (1e8, 1e12)
 CUT_FRACTIONS = (1e-1, 1e-2, 1e-4, 1e-6, 1e-8, 1e-10, 0.0)
 DILATIONS = (1.1, 1.25, 1.5, 2.0, 3.0, 4.0)
 PERTURBATIONS = (0.0, 0.1, 0.2, 0.3, 0.4)
@@ -116,12 +120,12 @@ def _patch(**kw):
     return interface_patch(30.0, pins=PATCH_PINS, **kw)
 
 
-def _springs(build, which: str, h: float = H):
+def _springs(build, which: str, h: float = H, factors=PENALTY_FACTORS):
     """Cases of ``build`` (a closed form taking kN, kT) with one spring swept."""
     nominal = build()
     law = nominal.scene.law
     cases = []
-    for alpha in PENALTY_FACTORS:
+    for alpha in factors:
         k = alpha * _stiffest(nominal.scene) / h
         c = build(kN=k, kT=law.kT) if which == "kN" else build(kN=law.kN, kT=k)
         cases.append(Case(alpha, c.scene, c))
@@ -138,11 +142,11 @@ def _friction_springs(which: str):
     return cases
 
 
-def _contrasts(build, minus: str, plus: str, nu_plus: float):
+def _contrasts(build, minus: str, plus: str, nu_plus: float, contrasts=CONTRASTS):
     """Cases of ``build`` with the + material's E⁺ = r E⁻ (``minus`` and
     ``plus``: the keyword names of the two materials in ``build``)."""
     out = []
-    for r in CONTRASTS:
+    for r in contrasts:
         c = build(**{minus: Material(2e11, 0.3), plus: Material(2e11 * r, nu_plus)})
         out.append(Case(r, c.scene, c))
     return out
@@ -183,15 +187,15 @@ def sweeps() -> list[Sweep]:
     """Every sweep of the study, in report order."""
     return [
         Sweep("kN_patch", "α (k_N = α E/h)", "normal spring, inclined patch (exact)",
-              lambda: _springs(_patch, "kN"), nominal=1.0),
+              lambda: _springs(_patch, "kN", factors=EXTREME_PENALTY_FACTORS), nominal=1.0),
         Sweep("kT_patch", "α (k_T = α E/h)", "tangential spring, inclined patch (exact)",
-              lambda: _springs(_patch, "kT"), nominal=1.0),
+              lambda: _springs(_patch, "kT", factors=EXTREME_PENALTY_FACTORS), nominal=1.0),
         Sweep("kN_rod", "α (k_N = α E/h)", "normal spring, pressurised rod (curved Γ, closed form)",
               lambda: _springs(pressurised_rod, "kN"), nominal=1.0),
         Sweep("kT_rod", "α (k_T = α E/h)", "tangential spring, twisted rod (curved Γ, closed form)",
               lambda: _springs(twisted_rod, "kT"), nominal=1.0),
         Sweep("contrast_patch", "E⁺/E⁻", "material contrast, inclined patch (exact)",
-              lambda: _contrasts(_patch, "minus", "plus", 0.2),
+              lambda: _contrasts(_patch, "minus", "plus", 0.2, EXTREME_CONTRASTS),
               nominal=1.0),
         Sweep("contrast_rod", "E⁺/E⁻", "material contrast, pressurised rod (closed form)",
               lambda: _contrasts(pressurised_rod, "rod", "matrix", 0.25),

@@ -249,14 +249,14 @@ def _stress_functions(scene: Scene, fm: FittedMesh, uh, degree: int):
 @dimensionless
 def solve(scene: Scene, h: float | None = None, *, degree: int = 1, paper: bool = False,
           geometry_order: int | None = None, grading: meshes.Grading | None = None,
-          petsc_options: dict | None = None, estimate_condition: bool | None = None,
+          petsc_options: dict | None = None, estimate_condition: bool = False,
           jit_params: dict | None = None, comm=MPI.COMM_WORLD) -> Result:
     """Solve ``scene`` with the conforming reference.
 
     ``degree`` 1 or 2 (P1/P2 triangles); ``geometry_order`` defaults to the
     degree (P2 on curved, second-order cells); ``petsc_options`` override the
-    MUMPS LU defaults; the condition estimate is on below
-    :data:`~contactcore.tolerances.CONDITION_ESTIMATE_MAX_DOFS` unknowns.
+    MUMPS LU defaults; the condition estimate runs only with
+    ``estimate_condition=True`` (it costs a few extra solves).
     """
     if degree not in (1, 2):
         raise DiscretisationError(f"fe: degree must be 1 or 2 (got {degree})")
@@ -279,8 +279,6 @@ def solve(scene: Scene, h: float | None = None, *, degree: int = 1, paper: bool 
             vec.ghostUpdate(addv=PETSc.InsertMode.ADD, mode=PETSc.ScatterMode.REVERSE)
             loads.append(vec.getArray().copy())
             vec.destroy()
-        if estimate_condition is None:
-            estimate_condition = cons.num_active <= tol.CONDITION_ESTIMATE_MAX_DOFS
         system = PETScSystem(K, loads, *cons.arrays(), interface_operator(scene, fm, V, degree),
                              petsc_options=petsc_options, estimate_condition=estimate_condition,
                              what=f"scene {scene.name} (fe)")

@@ -31,7 +31,7 @@ class PETScSystem:
     """
 
     def __init__(self, K, loads: list[np.ndarray], fixed, fixed_full, owner, interface: InterfaceOperator, *,
-                 petsc_options=None, estimate_condition: bool = True, what: str = "linear system"):
+                 petsc_options=None, estimate_condition: bool = False, what: str = "linear system"):
         if K.getComm().getSize() > 1:
             raise DiscretisationError("the increment and Newton driver runs in serial only (no mpirun)")
         self.K, self.loads = K, loads
@@ -58,7 +58,7 @@ class PETScSystem:
         y.destroy()
         return out
 
-    def solve(self, interface_tangent: sp.csr_matrix, rhs: np.ndarray):
+    def solve(self, interface_tangent: sp.csr_matrix, rhs: np.ndarray, force_scale: float = 0.0):
         J = self.K.copy()
         Ki = linear_solver.to_petsc(interface_tangent)
         J.axpy(1.0, Ki, structure=PETSc.Mat.Structure.SUBSET_NONZERO_PATTERN)
@@ -67,7 +67,8 @@ class PETScSystem:
         x.set(0.0)
         try:
             report = linear_solver.solve(J, b, x, rows=self.free, petsc_options=self.options,
-                                         estimate_condition=self.estimate, what=self.what)
+                                         estimate_condition=self.estimate, what=self.what,
+                                         force_scale=force_scale)
             return x.getArray().copy(), report
         finally:
             for obj in (J, Ki, b, x):

@@ -531,7 +531,7 @@ def _support_rows(space: EnrichedFunctionSpace) -> tuple[np.ndarray, np.ndarray,
 
 @dimensionless
 def solve(scene: Scene, h: float | None = None, *, degree: int = 1, paper: bool = False, cell: str = "quad",
-          gauss: int | None = None, petsc_options: dict | None = None, estimate_condition: bool | None = None,
+          gauss: int | None = None, petsc_options: dict | None = None, estimate_condition: bool = False,
           comm=MPI.COMM_WORLD) -> Result:
     """Solve ``scene`` with XFEM of ``degree`` 1 or 2 on a mesh that ignores
     Γ: structured ``cell`` = "quad" (the paper's) or "triangle", or "gmsh"
@@ -557,8 +557,6 @@ def solve(scene: Scene, h: float | None = None, *, degree: int = 1, paper: bool 
         nblocks = space.V.dofmap.index_map.size_local
         unused = (4 * np.flatnonzero(~space.enriched[:nblocks])[:, None] + np.arange(2, 4)[None]).ravel()
         fixed = np.concatenate([rows, unused])
-        if estimate_condition is None:
-            estimate_condition = 4 * nblocks - len(unused) <= tol.CONDITION_ESTIMATE_MAX_DOFS
         system = PETScSystem(A, [_load_vector(space, L, load) for L, load in zip(loads, scene.loads)], fixed,
                              np.concatenate([values, np.zeros(len(unused))]),
                              np.concatenate([owners, np.full(len(unused), -1)]), interface_operator(space),

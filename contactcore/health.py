@@ -1,0 +1,220 @@
+"""One health policy for every solve of every method.
+
+A solve of ``A x = b`` succeeds only if the *relative residual* of the
+equations actually solved (the free block) is small:
+
+    ρ = ‖b − A x‖∞ / max(‖b‖∞, F) <= RESIDUAL_FAIL,
+
+``F`` the internal-force scale of a Newton iteration (0 for a plain linear
+solve).  The normwise backward error ``‖b − A x‖/(‖A‖‖x‖ + ‖b‖)`` is
+reported beside it, never instead: for a (nearly) singular ``A`` a huge
+``x`` makes it tiny while ``ρ`` stays O(1).
+
+Before any solve, :func:`check_springs` refuses springs so stiff that the
+bulk is lost in their rows, and :func:`check_restraint` asks whether the supports, pins
+and interface springs remove the six rigid-body modes of the two bodies; a
+mode held by less than ``RIGID_MODE_FREE·E`` (springs lost in round-off, a
+missing support) is refused with the body and the missing support named.
+:func:`material_warnings` warns about volumetric locking near ν = 0.5.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from . import tolerances as tol
+from .errors import SolverError
+from .geometry import Disc, LineInterface, tangent_of
+
+#: Sample points per support boundary in the rigid-mode check (three
+#: non-collinear points suffice; more make the check independent of them).
+_SUPPORT_SAMPLES = 16
+
+
+def _inf(v) -> float:
+    v = np.asarray(v)
+    return float(np.max(np.abs(v))) if v.size else 0.0
+
+
+def relative_residual(r, b, force_scale: float = 0.0) -> float:
+    """``‖r‖∞ / max(‖b‖∞, F)`` (``‖r‖∞`` itself when both are zero)."""
+    scale = max(_inf(b), force_scale)
+    return _inf(r) / scale if scale > 0 else _inf(r)
+
+
+def backward_error(r, a_norm: float, x, b) -> float:
+    """Normwise backward error ``‖r‖∞ / (‖A‖∞‖x‖∞ + ‖b‖∞)`` (reported only)."""
+    scale = a_norm * _inf(x) + _inf(b)
+    return _inf(r) / scale if scale > 0 else _inf(r)
+
+
+def check_residual(residual: float, what: str, backward: float = float("nan"), hint: str = "") -> None:
+    """Raise :class:`SolverError` unless ``residual <= RESIDUAL_FAIL`` (NaN fails)."""
+    if not residual <= tol.RESIDUAL_FAIL:
+        raise SolverError(f"{what}: relative residual {residual:.2e} exceeds {tol.RESIDUAL_FAIL:g} "
+                          f"(backward error {backward:.1e}) — the answer does not satisfy the equations"
+                          + (f"; {hint}" if hint else "; a rigid-body mode may be free, or the springs are too "
+                             "stiff or too soft for double precision"))
+
+
+def failure_hint(scene, weights) -> str:
+    """Why a solve may fail, naming the springs (their entries ``k w``
+    against the stiffer modulus ``E``: round-off in the spring rows grows as
+    eps·k w/E; a body held by springs far below E/h is nearly free) and a
+    nearly incompressible material in plane strain (λ/μ)."""
+    E = max(m.E for m in scene.materials.values())
+    w = float(np.max(weights)) if len(weights) else 0.0
+    out = []
+    for c, k, k_user in _springs(scene):
+        ratio = k * w / E
+        if ratio > 1 / tol.SPRING_HINT_RANGE:
+            out.append(f"interface.law.k{c} = {k_user:.3g} Pa/m is too stiff: k w = {ratio:.1e} E, its round-off "
+                       f"(~2e-16 k w/E) swamps the bulk — soften it")
+        elif ratio < tol.SPRING_HINT_RANGE:
+            out.append(f"interface.law.k{c} = {k_user:.3g} Pa/m is very soft: k w = {ratio:.1e} E, a body held by it "
+                       "is nearly free — stiffen it or add a support")
+    if scene.plane == "strain":
+        out += [f"materials.{body}.nu = {m.nu:.10g}: λ/μ = {2 * m.nu / (1 - 2 * m.nu):.1e} amplifies round-off"
+                for body, m in scene.materials.items() if m.nu > tol.NU_LOCKING_WARN]
+    return "; ".join(out) or "a rigid-body mode may be nearly free"
+
+
+def check_springs(scene, weights) -> None:
+    """Refuse springs whose entries ``k w`` (w the largest quadrature weight
+    on Γ) exceed ``SPRING_ENTRY_MAX·E``: the bulk stiffness (~E) added to
+    those rows keeps fewer digits than the residual policy asks for, so the
+    matrix itself is wrong (t_N = k g_N loses the bulk's share) and no
+    residual of it can tell."""
+    E = max(m.E for m in scene.materials.values())
+    w = float(np.max(weights)) if len(weights) else 0.0
+    for c, k, k_user in _springs(scene):
+        if k * w > tol.SPRING_ENTRY_MAX * E:
+            raise SolverError(f"interface.law.k{c}: {k_user:.3g} Pa/m is too stiff for double precision here: its "
+                              f"entries k w = {k * w / E:.1e} E exceed {tol.SPRING_ENTRY_MAX:.1e} E, beyond which "
+                              f"the bulk stiffness in the interface rows is lost to round-off (no accurate solve "
+                              f"exists); use k_{c} <= {tol.SPRING_ENTRY_MAX * E / w * k_user / k:.2e} Pa/m")
+
+
+def _springs(scene):
+    """``(component, k, k in the user's units)`` of the law's springs."""
+    user = scene.user.law
+    return (("N", scene.law.kN, user.kN), ("T", scene.law.kT, user.kT))
+
+
+# ----- rigid-body modes -------------------------------------------------------
+
+_BODY_NAMES = ("−", "+")
+
+
+def _modes(points: np.ndarray, bodies: np.ndarray, centre: np.ndarray, length: float) -> np.ndarray:
+    """(m, 2, 6): displacement of each point under the six rigid modes
+    (body −: x, y, rotation; body +: x, y, rotation), zero off the point's body."""
+    out = np.zeros((len(points), 2, 6))
+    d = (points - centre) / length
+    for b in (0, 1):
+        on = bodies == b
+        out[on, 0, 3 * b] = 1.0
+        out[on, 1, 3 * b + 1] = 1.0
+        out[on, 0, 3 * b + 2] = -d[on, 1]
+        out[on, 1, 3 * b + 2] = d[on, 0]
+    return out
+
+
+def _boundary_points(domain, name: str) -> np.ndarray:
+    """Evenly spaced points on the named boundary (an edge, or the rim)."""
+    s = (np.arange(_SUPPORT_SAMPLES) + 0.5) / _SUPPORT_SAMPLES
+    if isinstance(domain, Disc):
+        a = 2 * np.pi * s
+        return np.column_stack([domain.centre[0] + domain.radius * np.cos(a),
+                                domain.centre[1] + domain.radius * np.sin(a)])
+    c = domain.corners
+    i, j = {"bottom": (0, 1), "right": (1, 2), "top": (2, 3), "left": (3, 0)}[name]
+    return c[i] + s[:, None] * (c[j] - c[i])
+
+
+def _restraint(scene, interface_points, interface_weights) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``Q`` (6×6): the stiffness of the supports (E per held component),
+    pins and springs (``Σ w k g gᵀ``) against the rigid modes, relative to
+    the stiffer modulus; and the spring parts ``Q_N``, ``Q_T`` alone."""
+    E = max(m.E for m in scene.materials.values())
+    dom = scene.domain
+    centre = np.asarray(dom.centre, float) if isinstance(dom, Disc) else np.mean(dom.corners, axis=0)
+    L = scene.length_scale
+    Q = np.zeros((6, 6))
+    held = [(_boundary_points(dom, s.boundary), s.fix, 1.0 / _SUPPORT_SAMPLES) for s in scene.supports]
+    held += [(np.asarray([p.point], float), p.fix, 1.0) for p in scene.pins]
+    for pts, fix, weight in held:
+        M = _modes(pts, scene.body_of(pts), centre, L)
+        for c in (0, 1):
+            if "xy"[c] in fix:
+                Q += weight * M[:, c, :].T @ M[:, c, :]
+    pts = np.asarray(interface_points, float)
+    w = np.asarray(interface_weights, float)
+    if len(pts):
+        n = scene.interface.normals(pts)
+        t = tangent_of(n)
+        jump = _modes(pts, np.ones(len(pts), int), centre, L) - _modes(pts, np.zeros(len(pts), int), centre, L)
+        gN, gT = np.einsum("mi,mij->mj", n, jump), np.einsum("mi,mij->mj", t, jump)
+        # a spring stiffer than E per |Γ| holds like a support; capping it
+        # there keeps the eigenvalues of Q within double precision
+        cap = 1.0 / np.sum(w)
+        QN = (w[:, None] * gN).T @ gN * min(scene.law.kN / E, cap)
+        QT = (w[:, None] * gT).T @ gT * min(scene.law.kT / E, cap)
+    else:
+        QN = QT = np.zeros((6, 6))
+    return Q + QN + QT, QN, QT
+
+
+def _describe(scene, v: np.ndarray) -> str:
+    """The motion of mode ``v`` (6): which body, translation or rotation."""
+    parts = [np.linalg.norm(v[:3]), np.linalg.norm(v[3:])]
+    if min(parts) > 0.3 * max(parts):
+        who, u = "bodies − and + together", v[:3] if parts[0] >= parts[1] else v[3:]
+    else:
+        b = int(np.argmax(parts))
+        who, u = f"body {_BODY_NAMES[b]}", v[3 * b:3 * b + 3]
+    u = u / np.linalg.norm(u)
+    if abs(u[2]) > np.hypot(u[0], u[1]):
+        return f"{who} can rotate"
+    d = u[:2] / np.linalg.norm(u[:2])
+    if isinstance(scene.interface, LineInterface):
+        nrm = np.asarray(scene.interface.normal, float)
+        if abs(d @ nrm) < 0.1:
+            return f"{who} can slide along Γ"
+        if abs(d @ nrm) > 0.99:
+            return f"{who} can move normal to Γ"
+    return f"{who} can translate along ({d[0]:.2g}, {d[1]:.2g})"
+
+
+def check_restraint(scene, interface_points, interface_weights) -> None:
+    """Refuse a scene whose supports, pins and springs leave a rigid-body
+    mode free: an eigenvalue of the restraint ``Q`` (relative to E) below
+    ``RIGID_MODE_FREE``.  The message names the body, the motion and why
+    (a negligible spring, or no support)."""
+    Q, QN, QT = _restraint(scene, interface_points, interface_weights)
+    lam, vec = np.linalg.eigh(Q)
+    free = np.flatnonzero(lam <= tol.RIGID_MODE_FREE)
+    if not len(free):
+        return
+    v = vec[:, free[0]]
+    user = scene.user.law
+    why = [f"k_{c} is {k:.3g}" for c, k, Qc in (("N", user.kN, QN), ("T", user.kT, QT))
+           if 0 < np.trace(Qc) <= tol.RIGID_MODE_FREE]
+    why = " and ".join(why) + " (springs lost in round-off beside E)" if why else "no support or pin holds it"
+    raise SolverError(f"scene {scene.name}: {_describe(scene, v)}: {why} — {len(free)} rigid-body mode(s) "
+                      "are not removed by the supports, pins and interface springs; add a support or pin")
+
+
+# ----- materials --------------------------------------------------------------
+
+def material_warnings(scene) -> list[str]:
+    """Volumetric locking: plane strain with ν above NU_LOCKING_WARN."""
+    if scene.plane != "strain":
+        return []
+    out = []
+    for body, m in scene.materials.items():
+        if m.nu > tol.NU_LOCKING_WARN:
+            out.append(f"materials.{body}.nu = {m.nu:.10g} in plane strain (above {tol.NU_LOCKING_WARN:g}, "
+                       f"λ/μ = {2 * m.nu / (1 - 2 * m.nu):.1e}): degree-1 elements lock volumetrically and their "
+                       "stresses may be off by tens of percent; degree 2 (fe, xfem) is safer, and EFGM's "
+                       "linear basis strays from it too as ν → 0.5")
+    return out

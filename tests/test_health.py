@@ -1,0 +1,213 @@
+"""No silent garbage (issue 14): one health policy for every method.
+
+Scene A changed in one place each is refused by every method through the
+CLI (exit 2, one ``error:`` line, no traceback, no result of the method);
+the policy cannot be fooled by a tiny backward error; a settled Newton step
+with a large residual is not convergence; locking and condition estimates.
+"""
+import dataclasses
+import re
+
+import numpy as np
+import pytest
+import scipy.sparse as sp
+
+from contactcore import Pin, SolverError, SolverReport, load_scene, scene_text
+from contactcore import health
+from contactcore.laws import LinearLaw
+from contactcore.newton import InterfaceOperator, solve_increments
+from contactcore.tolerances import RESIDUAL_FAIL, SPRING_ENTRY_MAX
+from verification import methods
+from verification.__main__ import main
+
+H = "0.2"
+A_TEXT = scene_text("A")
+
+
+def _without_supports(text):
+    return text[:text.index("[[supports]]")] + text[text.index("[[loads]]"):]
+
+
+def _replace(old, new):
+    def edit(text):
+        assert old in text
+        return text.replace(old, new)
+    return edit
+
+
+def _chain(*edits):
+    def edit(text):
+        for e in edits:
+            text = e(text)
+        return text
+    return edit
+
+
+LINEAR = 'type = "linear"        # the paper\'s Eq. (6)'
+#: (scene A edit, a regular expression the error line must match)
+BAD = {
+    "no supports": (_without_supports, r"bodies − and \+ together can .*no support or pin holds it"),
+    "bottom held in x only": (_replace('fix = "xy"', 'fix = "x"'), r"can .*no support or pin holds it"),
+    "kT = 1e-300": (_replace("kT = 1e8", "kT = 1e-300"), r"body \+ can slide along Γ: k_T is 1e-300"),
+    "coulomb mu = 0.05": (_replace(LINEAR, 'type = "coulomb"\nmu = 0.05'),
+                          r"increment 1 of 20 failed.*no equilibrium"),
+    "kN = 1e300": (_replace("kN = 1e10", "kN = 1e300"), r"^error: interface\.law\.kN: 1e\+300 Pa/m is too stiff"),
+    # our own: the + block held only by unilateral points that open (tension)
+    "open unilateral points": (_chain(_replace(LINEAR, 'type = "unilateral"'),
+                                      _replace("value = [2.5e4, -1.0e5]", "value = [0.0, 1.0e5]")),
+                               r"increment 1 of 20 failed"),
+    # our own: springs of 1e-12 E/h (E = 2e11, h = 0.2) hold the + block alone
+    "springs 1e-12 E/h": (_replace("kN = 1e10\nkT = 1e8", "kN = 1.0\nkT = 1.0"),
+                          r"relative residual .* exceeds 1e-05.*interface\.law\.kN = 1 Pa/m is very soft"),
+    # our own: one pin and no support: both blocks can turn about the pin
+    "one pin": (_chain(_without_supports, _replace("[[loads]]", "[[pins]]\npoint = [0.6, 0.8]\n\n[[loads]]")),
+                r"bodies − and \+ together can rotate: no support or pin holds it"),
+}
+
+
+@pytest.mark.parametrize("method", methods.METHODS)
+@pytest.mark.parametrize("case", list(BAD))
+def test_bad_scene_is_refused_in_one_line(case, method, tmp_path, capsys):
+    edit, message = BAD[case]
+    path = tmp_path / "scene.toml"
+    path.write_text(edit(A_TEXT))
+    out = tmp_path / "out"
+    assert main(["run", str(path), "--method", method, "--h", H, "--out", str(out)]) == 2
+    err = capsys.readouterr().err
+    lines = [line for line in err.splitlines() if line.startswith("error:")]
+    assert len(lines) == 1 and "Traceback" not in err
+    assert re.search(message, lines[0]), lines[0]
+    assert not (out / method / "summary.json").exists()
+
+
+def test_the_policy_is_not_fooled_by_a_tiny_backward_error():
+    """A free-free chain of springs (null space: the constants) and a load
+    with a non-zero resultant: no x solves it.  x = a particular solution
+    plus 1e20 times the null vector has a backward error ~1e-20 and a
+    relative residual ~1: the policy must refuse it."""
+    n = 6
+    A = sp.diags([-np.ones(n - 1), np.r_[1, 2 * np.ones(n - 2), 1], -np.ones(n - 1)], [-1, 0, 1]).tocsr()
+    b = np.zeros(n)
+    b[-1] = 1.0
+    x = np.linalg.lstsq(A.toarray(), b, rcond=None)[0] + 1e20
+    r = b - A @ x
+    backward = health.backward_error(r, sp.linalg.norm(A, np.inf), x, b)
+    residual = health.relative_residual(r, b)
+    assert backward < 1e-16 and residual > 0.1
+    with pytest.raises(SolverError, match="relative residual .* exceeds"):
+        health.check_residual(residual, "chain", backward)
+
+
+def _null_space_matrix(n=6):
+    """``A = Q diag(0, 1, …, n−1) Qᵀ`` (Q random orthogonal): its null space
+    is Q's first column, and in floating point A is not exactly singular
+    (smallest eigenvalue ~1e-16), so LU does not break down."""
+    rng = np.random.default_rng(0)
+    Q = np.linalg.qr(rng.standard_normal((n, n)))[0]
+    return sp.csr_matrix(Q @ np.diag(np.arange(n, dtype=float)) @ Q.T), rng.standard_normal(n)
+
+
+def test_efgm_solver_refuses_a_matrix_with_a_null_space():
+    from efgm import sparse_solver
+    A, b = _null_space_matrix()
+    coords = np.column_stack([np.arange(A.shape[0], dtype=float), np.zeros(A.shape[0])])
+    with pytest.raises(SolverError, match=r"relative residual \S+ exceeds 1e-05 \(backward error \S+e-1[6-9]"):
+        sparse_solver.solve(A, b, coords=coords, reach=10.0)
+    x, report = sparse_solver.solve(A + sp.eye(A.shape[0]), b, coords=coords, reach=10.0)  # regular: passes
+    assert report.residual <= RESIDUAL_FAIL and np.allclose((A + sp.eye(A.shape[0])) @ x, b)
+
+
+def test_petsc_solver_refuses_a_matrix_with_a_null_space():
+    """PETSc with SuperLU (no null-pivot detection) answers; the residual refuses."""
+    from xdolfinx import linear_solver
+    A, b = _null_space_matrix()
+    M = linear_solver.to_petsc(A)
+    bv, xv = M.createVecs()
+    bv.setArray(b)
+    try:
+        with pytest.raises(SolverError, match=r"relative residual \S+ exceeds 1e-05 \(backward error"):
+            linear_solver.solve(M, bv, xv, petsc_options={"pc_factor_mat_solver_type": "superlu"})
+    finally:
+        for obj in (M, bv, xv):
+            obj.destroy()
+
+
+class _WrongSolve:
+    """One unknown, bulk K, load F, a linear spring; its solve returns half
+    the step and claims success (a stand-in for a singular factorisation
+    that reports a tiny backward error)."""
+
+    def __init__(self, K, F):
+        self.size, self.K, self.F = 1, K, F
+        self.interface = InterfaceOperator(sp.csr_matrix([[1.0], [0.0]]), np.ones(1), np.zeros((1, 2)))
+        self.fixed = np.zeros(0, int)
+
+    def fixed_values(self, f):
+        return np.zeros(0)
+
+    def external(self, loads, supports):
+        return np.array([loads[0] * self.F])
+
+    def internal(self, u):
+        return self.K * u
+
+    def solve(self, Ki, rhs, force_scale=0.0):
+        return 0.5 * rhs / (self.K + Ki.toarray()[0, 0]), SolverReport("fake", residual=0.0, backward_error=0.0)
+
+
+def test_a_settled_newton_step_with_a_large_residual_is_not_converged():
+    scene = dataclasses.replace(load_scene("A"), law=LinearLaw(1.0, 1.0), pins=(Pin((0.2, 0.8)), Pin((0.8, 0.8))))
+    with pytest.raises(SolverError, match="settled Newton step: relative residual 5.00e-01 exceeds"):
+        solve_increments(scene, _WrongSolve(K=1.0, F=-1.0))
+
+
+@pytest.mark.parametrize("method", methods.METHODS)
+def test_plane_strain_near_incompressible_warns_about_locking(method):
+    scene = load_scene("A")
+    nearly = {b: dataclasses.replace(m, nu=0.4999999) for b, m in scene.materials.items()}
+    warned = methods.solver(method)(scene.with_changes(plane="strain", materials=nearly), 0.2).solver.warnings
+    assert any("lock volumetrically" in w and "degree 2" in w for w in warned), warned
+    # plane stress does not lock; ν = 0.3 in plane strain does not either
+    for quiet in (scene.with_changes(materials=nearly), scene.with_changes(plane="strain")):
+        assert not any("lock" in w for w in methods.solver(method)(quiet, 0.2).solver.warnings)
+
+
+@pytest.mark.parametrize("method", methods.METHODS)
+def test_condition_estimate_only_when_asked(method):
+    solve = methods.solver(method)
+    scene = load_scene("A")
+    assert solve(scene, 0.2).solver.condition is None
+    assert solve(scene, 0.2, estimate_condition=True).solver.condition > 1.0
+
+
+@pytest.mark.parametrize("method", methods.METHODS)
+def test_a_good_solve_passes_the_policy(method):
+    rep = methods.solver(method)(load_scene("A"), 0.2).solver
+    assert rep.residual <= RESIDUAL_FAIL and rep.backward_error < 1e-14 and not rep.warnings
+
+
+def test_springs_that_swamp_the_bulk_are_refused_before_the_solve():
+    """XFEM at scene A's own h with k_N = 1e300: its residual alone is 1.5e-11
+    while t_N = k_N g_N is ~1e277 Pa, so the springs are refused up front;
+    just below SPRING_ENTRY_MAX the same check lets them through."""
+    from xdolfinx import xfem
+    scene = load_scene("A")
+    with pytest.raises(SolverError, match=r"interface\.law\.kN: 1e\+300 Pa/m is too stiff .* use k_N <= "):
+        xfem.solve(scene.with_changes(law=LinearLaw(1e300, scene.law.kT)), 0.025)
+    weights = np.array([0.05])
+    E = max(m.E for m in scene.materials.values())
+    ok = 0.5 * SPRING_ENTRY_MAX * E / 0.05
+    health.check_springs(scene.with_changes(law=LinearLaw(ok, ok)), weights)
+    with pytest.raises(SolverError, match="interface.law.kT"):
+        health.check_springs(scene.with_changes(law=LinearLaw(ok, 4 * ok)), weights)
+
+
+def test_the_sweep_calls_nothing_accurate_beyond_the_residual_policy():
+    """k_N from 1e-12 to 1e12 E/h on the patch (XFEM): every accurate row
+    passes RESIDUAL_FAIL, and both extremes are refused naming the spring."""
+    from verification.sweeps import run_sweep, sweeps
+    rows = run_sweep(next(s for s in sweeps() if s.name == "kN_patch"), method_names=["xfem"])
+    assert all(r["residual"] <= RESIDUAL_FAIL for r in rows if r["outcome"] == "accurate")
+    assert sum(r["outcome"] == "accurate" for r in rows) >= 10 and not [r for r in rows if r["outcome"] == "wrong"]
+    for extreme in (rows[0], rows[-1]):
+        assert extreme["outcome"] == "refused" and "interface.law.kN" in extreme["message"], extreme
