@@ -1,7 +1,8 @@
 """The element-free Galerkin method ("efgm"), the paper's §VII (Eqs. 19–29).
 
 MLS shape functions (:mod:`efgm.shape`) on a node set, Heaviside enrichment
-of the nodes whose support Γ cuts (:mod:`efgm.operators`), integration on
+of the nodes whose support reaches across Γ by more than a fraction of its
+reach, the others not seen from across Γ (visibility; :mod:`efgm.operators`), integration on
 background cells split exactly along Γ (:mod:`efgm.quadrature`).  With the
 operators ``N`` (displacement) and ``B`` (strain):
 
@@ -163,12 +164,12 @@ class EFGMFields:
         self.D = [voigt_matrix(scene.materials[b].E, scene.materials[b].nu, scene.plane) for b in BODIES]
 
     def displacement(self, points, bodies) -> np.ndarray:
-        sv = self.approx.mls.evaluate(np.asarray(points, float)[:, :2])
+        sv = self.approx.mls.evaluate(np.asarray(points, float)[:, :2], bodies)
         return (self.approx.displacement_operator(sv, np.asarray(bodies)) @ self.U).reshape(-1, 2)
 
     def stress(self, points, bodies) -> np.ndarray:
         bodies = np.asarray(bodies)
-        sv = self.approx.mls.evaluate(np.asarray(points, float)[:, :2])
+        sv = self.approx.mls.evaluate(np.asarray(points, float)[:, :2], bodies)
         eps = (self.approx.strain_operator(sv, bodies) @ self.U).reshape(-1, 3)
         return np.where(bodies[:, None] == 1, eps @ self.D[1].T, eps @ self.D[0].T)
 
@@ -209,7 +210,8 @@ def _constraints(scene: Scene, approx: Approximation):
         raise DiscretisationError(f"efgm: two supports prescribe u_{'xy'[comp[i]]} at "
                                   f"({pts[i, 0]:.6g}, {pts[i, 1]:.6g}) with different values or load paths")
     pts, comp, g, owner = pts[first], comp[first], g[first], owner[first]
-    N = approx.displacement_operator(approx.mls.evaluate(pts), scene.body_of(pts))
+    bodies = scene.body_of(pts)
+    N = approx.displacement_operator(approx.mls.evaluate(pts, bodies), bodies)
     return N[2 * np.arange(len(pts)) + comp], g, owner, pts
 
 
@@ -221,7 +223,7 @@ def _load_vectors(scene: Scene, approx: Approximation, vol: Rule, vol_sv, h: flo
         if isinstance(load, (Traction, Pressure)):
             pts, w, normals, bodies = boundary_rule(scene, load.boundary, h, n)
             t = np.tile(load.value, (len(w), 1)) if isinstance(load, Traction) else -load.value * normals
-            N = approx.displacement_operator(approx.mls.evaluate(pts), bodies)
+            N = approx.displacement_operator(approx.mls.evaluate(pts, bodies), bodies)
             vectors.append(N.T @ (w[:, None] * t).ravel())
             continue
         if volume_N is None:
@@ -304,16 +306,16 @@ def solve(scene: Scene, h: float | None = None, *, degree: int = 1, paper: bool 
         vol = volume_rule(scene, ns.h, n)
         gam_pts, gam_w, gam_n = interface_rule(scene, ns.h, n)
     with timings.measure("assembly"):
-        mls = MLS(ns.x, radii, degree=degree, weight=weight, dilation=dmax)
-        vol_sv = mls.evaluate(vol.points)
-        approx = Approximation(mls, find_enrichment(scene, mls, vol_sv, vol.weights, vol.bodies))
+        enrichment = find_enrichment(scene, ns.x, radii, vol.points, vol.bodies)
+        mls = MLS(ns.x, radii, degree=degree, weight=weight, dilation=dmax, seen_from=enrichment.seen_from)
+        vol_sv = mls.evaluate(vol.points, vol.bodies)
+        approx = Approximation(mls, enrichment)
         D = np.array([voigt_matrix(scene.materials[b].E, scene.materials[b].nu, scene.plane) for b in BODIES])
         B = approx.strain_operator(vol_sv, vol.bodies)
         K = B.T @ block_diagonal(vol.weights[:, None, None] * D[vol.bodies]) @ B
-        gam_sv = mls.evaluate(gam_pts)
         m = len(gam_w)
-        jump = (approx.displacement_operator(gam_sv, np.ones(m, int))
-                - approx.displacement_operator(gam_sv, np.zeros(m, int)))
+        jump = (approx.displacement_operator(mls.evaluate(gam_pts, np.ones(m, int)), np.ones(m, int))
+                - approx.displacement_operator(mls.evaluate(gam_pts, np.zeros(m, int)), np.zeros(m, int)))
         G = block_diagonal(np.stack([gam_n, tangent_of(gam_n)], axis=1)) @ jump
         C, g, owner, c_pts = _constraints(scene, approx)
         system = EFGMSystem(K, C, g, owner, _load_vectors(scene, approx, vol, vol_sv, ns.h, n),

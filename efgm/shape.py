@@ -14,6 +14,13 @@ held fixed: with ``γ = A⁻¹ p̃(x)``,
     ∂Φ_I = (∂γ)ᵀ p̃_I w_I + γᵀ p̃_I ∂w_I,   ∂γ = A⁻¹ (∂p̃(x) − ∂A γ),
     ∂A = Σ_I ∂w_I p̃_I p̃_Iᵀ.
 
+*Visibility* (Belytschko et al. 1996, the criterion cut at Γ): with
+``seen_from`` (N, 2), node I takes part in the MLS fit of body b only where
+``seen_from[I, b]``; a point of body b then has the shape functions of the
+nodes body b sees, which reproduce the basis in b on their own and are
+smooth up to Γ from b's side.  Without it (or without bodies) every node is
+seen everywhere.
+
 Weights ``w(r)``: the cubic spline and the quartic spline of Belytschko et
 al. (1994), on circular supports (``r = |x − x_I| / r_I``) or rectangular ones
 (``w(r_x) w(r_y)``).  Everything is vectorised over points; neighbours come
@@ -122,11 +129,12 @@ class MLS:
     """MLS shape functions of a node set.
 
     ``radii``: support radius of each node, shape (N,) for circular supports
-    or (N, 2) for rectangular ones (half-widths in x and y).
+    or (N, 2) for rectangular ones (half-widths in x and y).  ``seen_from``:
+    (N, 2) bool, the bodies each node takes part in (module doc), or None.
     """
 
     def __init__(self, nodes: np.ndarray, radii: np.ndarray, *, degree: int = 1, weight: str = "cubic",
-                 dilation: float | None = None):
+                 dilation: float | None = None, seen_from: np.ndarray | None = None):
         if degree not in (1, 2):
             raise DiscretisationError(f"efgm: the MLS basis degree must be 1 or 2 (got {degree})")
         if weight not in WEIGHTS:
@@ -135,6 +143,7 @@ class MLS:
         self.radii = np.asarray(radii, float)
         self.rectangular = self.radii.ndim == 2
         self.degree, self.weight, self.dilation = degree, WEIGHTS[weight], dilation
+        self.seen_from = None if seen_from is None else np.asarray(seen_from, bool)
         self.m = basis_size(degree)
         self.tree = cKDTree(self.nodes)
         self.reach = float(np.max(self.radii))
@@ -146,9 +155,11 @@ class MLS:
             self._classes.append([members, cKDTree(self.nodes[members]), float(size[members].max()),
                                   min(len(members), 16)])
 
-    def neighbours(self, points: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """Neighbours (P, K) — nodes whose own support holds the point, first
-        in each row, −1 after — and offsets ``x − x_I`` as two (P, K) arrays.
+    def neighbours(self, points: np.ndarray, bodies: np.ndarray | None = None
+                   ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Neighbours (P, K) — nodes whose own support holds the point and
+        that the point's body sees, first in each row, −1 after — and
+        offsets ``x − x_I`` as two (P, K) arrays.
 
         Nodes are grouped by support radius (classes a factor
         :data:`RADIUS_CLASS_RATIO` apart), each class searched up to its own
@@ -175,6 +186,8 @@ class MLS:
         else:
             d = np.hypot(points[:, None, 0] - self.nodes[safe, 0], points[:, None, 1] - self.nodes[safe, 1])
             inside = (idx >= 0) & (d < self.radii[safe])
+        if self.seen_from is not None and bodies is not None:
+            inside &= self.seen_from[safe, np.asarray(bodies)[:, None]]
         order = np.argsort(~inside, axis=1, kind="stable")
         used = int(inside.sum(axis=1).max(initial=1))
         idx = np.take_along_axis(np.where(inside, idx, -1), order, axis=1)[:, :used]
@@ -200,8 +213,9 @@ class MLS:
             arr[pad] = 0.0
         return w, wdx, wdy, r_node
 
-    def evaluate(self, points) -> ShapeValues:
-        """Φ and ∇Φ at ``points`` (P, 2); a clear error where A is singular.
+    def evaluate(self, points, bodies=None) -> ShapeValues:
+        """Φ and ∇Φ at ``points`` (P, 2) of ``bodies`` (P,) (needed with
+        ``seen_from``); a clear error where A is singular.
 
         Points are taken in chunks of :data:`CHUNK` (their temporaries stay in
         cache) spread over the cores: numpy releases the GIL in these kernels.
@@ -209,11 +223,15 @@ class MLS:
         thread, 5.4e5 on two.
         """
         points = np.asarray(points, float).reshape(-1, 2)
+        if self.seen_from is not None and bodies is None:
+            raise ValueError("efgm: shape functions with visibility need the body of each point")
+        bodies = None if bodies is None else np.broadcast_to(np.asarray(bodies, int), (len(points),))
         if len(points) <= CHUNK:
-            return self._evaluate(points)
+            return self._evaluate(points, bodies)
         starts = range(0, len(points), CHUNK)
         with ThreadPoolExecutor(os.cpu_count() or 1) as pool:
-            parts = list(pool.map(lambda i: self._evaluate(points[i:i + CHUNK]), starts))
+            parts = list(pool.map(lambda i: self._evaluate(points[i:i + CHUNK],
+                                                           None if bodies is None else bodies[i:i + CHUNK]), starts))
         K = max(p.index.shape[1] for p in parts)
 
         def padded(arr, fill):
@@ -224,8 +242,8 @@ class MLS:
                            np.concatenate([padded(p.phi, 0.0) for p in parts]),
                            np.concatenate([padded(p.grad, 0.0) for p in parts]))
 
-    def _evaluate(self, points: np.ndarray) -> ShapeValues:
-        idx, ox, oy = self.neighbours(points)
+    def _evaluate(self, points: np.ndarray, bodies: np.ndarray | None) -> ShapeValues:
+        idx, ox, oy = self.neighbours(points, bodies)
         w, wdx, wdy, r_node = self._weights(idx, ox, oy)
         s = np.max(np.where(w > 0, r_node, 0.0), axis=1, initial=0.0)
         s[s == 0] = 1.0

@@ -50,9 +50,11 @@ def test_enriched_sets_reproduce_a_discontinuous_linear_field():
     patch = interface_patch(30.0)
     scene = patch.scene
     nodes = grid_nodes(scene, 0.1)
-    mls = MLS(nodes.x, support_radii(nodes, 2.0, False))
+    radii = support_radii(nodes, 2.0, False)
     vol = method.volume_rule(scene, nodes.h, 6)
-    approx = Approximation(mls, find_enrichment(scene, mls, mls.evaluate(vol.points), vol.weights, vol.bodies))
+    enrichment = find_enrichment(scene, nodes.x, radii, vol.points, vol.bodies)
+    mls = MLS(nodes.x, radii, seen_from=enrichment.seen_from)
+    approx = Approximation(mls, enrichment)
     own = scene.body_of(nodes.x)
     U = np.zeros(approx.ndofs)
     U[:2 * len(nodes.x)] = patch.displacement(nodes.x, own).ravel()
@@ -65,9 +67,10 @@ def test_enriched_sets_reproduce_a_discontinuous_linear_field():
     pts = np.random.default_rng(2).uniform(0, 1, (3000, 2))
     for body in (0, 1):
         mine = pts[scene.body_of(pts) == body]  # each body's field holds in that body
-        got = (approx.displacement_operator(mls.evaluate(mine), np.full(len(mine), body)) @ U).reshape(-1, 2)
-        want = patch.displacement(mine, np.full(len(mine), body))
-        # exact but for the nodes left unenriched (ENRICH_MIN_FRACTION)
+        own = np.full(len(mine), body)
+        got = (approx.displacement_operator(mls.evaluate(mine, own), own) @ U).reshape(-1, 2)
+        want = patch.displacement(mine, own)
+        # exact: a node left unenriched (ENRICH_MIN_DEPTH) is not seen from across Γ
         assert np.max(np.abs(got - want)) <= 1e-6 * np.max(np.abs(want))
 
 
@@ -78,15 +81,15 @@ def _patch_errors(patch, **kw):
 @pytest.mark.parametrize("basis", ["linear", "quadratic"])
 @pytest.mark.parametrize("angle", [30.0, -65.0])
 def test_interface_patch_at_the_quadrature_level(angle, basis):
-    """Exact but for quadrature, in both bases: twice the Gauss points
-    (per direction) cut the error by EFGM_PATCH_QUADRATURE_GAIN."""
+    """Exact but for quadrature, in both bases: two doublings of the Gauss
+    points (per direction) cut the error by EFGM_PATCH_QUADRATURE_GAIN²."""
     patch = interface_patch(angle)
     n = method.GAUSS_POINTS[method.BASES[basis]]
     u_n, s_n = _patch_errors(patch, basis=basis)
     assert u_n <= tol.EFGM_PATCH_U and s_n <= tol.EFGM_PATCH_SIGMA, (u_n, s_n)
-    u_2n, s_2n = _patch_errors(patch, basis=basis, gauss=2 * n)
-    gain = tol.EFGM_PATCH_QUADRATURE_GAIN[basis]
-    assert u_2n * gain <= u_n and s_2n * gain <= s_n, (u_n, u_2n, s_n, s_2n)
+    u_4n, s_4n = _patch_errors(patch, basis=basis, gauss=4 * n)
+    gain = tol.EFGM_PATCH_QUADRATURE_GAIN[basis] ** 2
+    assert u_4n * gain <= u_n and s_4n * gain <= s_n, (u_n, u_4n, s_n, s_4n)
 
 
 @pytest.mark.parametrize("basis", ["linear", "quadratic"])
@@ -116,8 +119,8 @@ def test_every_dilation_answers_or_explains(dmax, support):
         assert "is too small here: about" in str(exc) and f"dmax = {dmax:g}" in str(exc)
         return
     assert u <= tol.EFGM_DILATION_U and s <= tol.EFGM_DILATION_SIGMA, (u, s)
-    u16, _ = _patch_errors(patch, dmax=dmax, support=support, gauss=16)
-    assert u16 * tol.EFGM_PATCH_QUADRATURE_GAIN["linear"] <= u, (u, u16)  # the quadrature's error, not the method's
+    u24, _ = _patch_errors(patch, dmax=dmax, support=support, gauss=4 * method.GAUSS_POINTS[1])
+    assert u24 * tol.EFGM_PATCH_QUADRATURE_GAIN["linear"] <= u, (u, u24)  # the quadrature's error, not the method's
 
 
 @pytest.mark.parametrize("perturb", [0.1, 0.45])
