@@ -2,7 +2,9 @@
 
 Every method package (``xdolfinx``, ``efgm``) and the drivers in
 ``verification`` import this package; it imports none of them, and needs
-neither dolfinx nor gmsh (numpy only).
+neither dolfinx nor gmsh (numpy only).  One submodule,
+:mod:`contactcore.linear_solver` (the PETSc/MUMPS solve every method shares),
+imports petsc4py and is never imported by this package itself.
 """
 from .errors import ContactError, DiscretisationError, SceneError, SolverError
 from .laws import LAWS, LinearLaw, make_law

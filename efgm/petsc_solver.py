@@ -1,6 +1,6 @@
 """EFGM's systems solved by PETSc + MUMPS, through the solver of fe and xfem.
 
-:func:`xdolfinx.linear_solver.solve_csr` converts the scipy matrix to PETSc
+:func:`contactcore.linear_solver.solve_csr` converts the scipy matrix to PETSc
 AIJ and solves it with the same options, checks and health report as the
 dolfinx methods; that module imports petsc4py but neither dolfinx nor MPI.
 Nothing here is imported before :func:`available` is asked, so ``efgm``
@@ -43,7 +43,7 @@ def solve(A: sp.csr_matrix, b: np.ndarray, *, petsc_options: dict | None = None,
           what: str = "linear system", force_scale: float = 0.0) -> tuple[np.ndarray, SolverReport]:
     """Solve ``A x = b`` with MUMPS: LDLᵀ if ``A`` is symmetric to
     round-off, else LU (module doc); ``petsc_options`` override that."""
-    from xdolfinx import linear_solver
+    from contactcore import linear_solver
 
     factor = {"pc_type": "cholesky"} if is_symmetric(A) else {}
     return linear_solver.solve_csr(A, b, petsc_options={**factor, **(petsc_options or {})},

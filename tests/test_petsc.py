@@ -13,8 +13,8 @@ from petsc4py import PETSc
 from contactcore import SolverError
 from efgm import sparse_solver
 from verification.files import read_profile_csv
-from xdolfinx import linear_solver
-from xdolfinx.linear_solver import PETScOptionError
+from contactcore import linear_solver
+from contactcore.linear_solver import PETScOptionError
 
 import tolerances as tol
 

@@ -18,7 +18,7 @@ from petsc4py import PETSc
 from contactcore import DiscretisationError
 from contactcore.newton import InterfaceOperator
 
-from . import linear_solver
+from contactcore import linear_solver
 
 
 class PETScSystem:
