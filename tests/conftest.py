@@ -26,3 +26,27 @@ def scene_dict():
     def make(name="A"):
         return copy.deepcopy(tomllib.loads(scene_text(name)))
     return make
+
+
+#: The default suite's memory budget (issue 17): the developers' and CI's
+#: machines have 24 GB and run the suite beside a study.
+PEAK_RSS_LIMIT_GB = 4.0
+
+
+def _peak_rss_gb() -> float:
+    """This process's peak resident memory (Linux reports ru_maxrss in kB)."""
+    import resource
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024 ** 2
+
+
+def pytest_sessionfinish(session, exitstatus):
+    """Fail the run when the suite's peak resident memory exceeds the budget."""
+    peak = _peak_rss_gb()
+    reporter = session.config.pluginmanager.get_plugin("terminalreporter")
+    if reporter is not None:
+        reporter.write_line(f"peak resident memory: {peak:.2f} GB (budget {PEAK_RSS_LIMIT_GB:g} GB)")
+    if peak > PEAK_RSS_LIMIT_GB and not session.config.getoption("--runslow"):
+        if reporter is not None:
+            reporter.write_line(f"error: the suite's peak resident memory {peak:.2f} GB exceeds "
+                                f"{PEAK_RSS_LIMIT_GB:g} GB", red=True)
+        session.exitstatus = pytest.ExitCode.TESTS_FAILED
