@@ -9,6 +9,7 @@ dotted path.  Conventions (signs, normals, profiles) are those of
 from __future__ import annotations
 
 import math
+import re
 import tomllib
 from dataclasses import dataclass, field, replace
 from importlib import resources
@@ -353,6 +354,37 @@ def _check_loads(scene: Scene) -> None:
                 _finite(v, f"{path}.value.{k}")
 
 
+#: A name that becomes a file name (a scene's, a profile's id): letters,
+#: digits, '-', '_' and '.', not leading with '.' — nothing that can leave
+#: the result folder ('/', '..') or hide a file.
+FILE_NAME = re.compile(r"[A-Za-z0-9_-][A-Za-z0-9_.-]*")
+
+
+def check_file_name(value, field: str) -> None:
+    """Raise :class:`SceneError` unless ``value`` is a safe file name."""
+    if not isinstance(value, str) or not FILE_NAME.fullmatch(value):
+        raise SceneError(field, f"must be a file-safe name: letters, digits, '-', '_', '.' not leading "
+                         f"(got {value!r})")
+
+
+def smallest_dimension(domain) -> float:
+    """The domain's smallest extent: a rectangle's shorter side, a disc's diameter."""
+    return float(min(domain.size)) if isinstance(domain, Rectangle) else 2.0 * float(domain.radius)
+
+
+def check_resolution(scene: Scene, h, field: str = "--h") -> float:
+    """A resolution ``h`` that can discretise the scene: finite, > 0 and no
+    larger than the domain's smallest dimension (a coarser h gives a
+    one-cell mesh whose answer is meaningless)."""
+    if isinstance(h, bool) or not isinstance(h, (int, float)) or not math.isfinite(h) or h <= 0:
+        raise SceneError(field, f"must be a finite number > 0 (got {h!r})")
+    top = smallest_dimension(scene.domain)
+    if h > top:
+        raise SceneError(field, f"{h:g} exceeds the domain's smallest dimension {top:g}: the mesh would be one "
+                         "cell across")
+    return float(h)
+
+
 def _check_profiles(scene: Scene) -> None:
     seen = set()
     L = scene.length_scale
@@ -360,6 +392,7 @@ def _check_profiles(scene: Scene) -> None:
         path = f"profiles[{i}]"
         if not prof.id or prof.id in seen:
             raise SceneError(f"{path}.id", f"must be a unique, non-empty name (got {prof.id!r})")
+        check_file_name(prof.id, f"{path}.id")
         seen.add(prof.id)
         if not prof.quantities:
             raise SceneError(f"{path}.quantities", "must name at least one quantity")
@@ -391,6 +424,7 @@ def validate(scene: Scene) -> None:
     """Raise :class:`SceneError` at the first invalid field of ``scene``."""
     if not isinstance(scene.name, str) or not scene.name:
         raise SceneError("name", "must be a non-empty string")
+    check_file_name(scene.name, "name")
     if scene.plane not in ("stress", "strain"):
         raise SceneError("plane", f"must be 'stress' or 'strain' (got {scene.plane!r})")
     _check_domain(scene.domain)
@@ -401,8 +435,8 @@ def validate(scene: Scene) -> None:
         _check_material(scene.materials[body], scene.plane, f"materials.{body}")
     if isinstance(scene.increments, bool) or not isinstance(scene.increments, int) or scene.increments < 1:
         raise SceneError("increments", f"must be an integer >= 1 (got {scene.increments!r})")
-    if scene.h is not None and _finite(scene.h, "h") <= 0:
-        raise SceneError("h", f"the default resolution must be > 0 (got {scene.h!r})")
+    if scene.h is not None:
+        check_resolution(scene, scene.h, "h")
     for i, sup in enumerate(scene.supports):
         _check_boundary(scene, sup.boundary, f"supports[{i}].boundary")
         _check_fix(sup.fix, f"supports[{i}].fix")
@@ -603,7 +637,12 @@ def scene_text(name_or_path: str | Path) -> str:
     if not path.is_file():
         raise SceneError("scene", f"{str(name_or_path)!r} is neither a built-in scene "
                          f"({', '.join(builtin_scenes())}) nor a readable file")
-    return path.read_text()
+    try:
+        return path.read_text(encoding="utf-8")
+    except UnicodeDecodeError as exc:
+        raise SceneError("scene", f"{path} is not UTF-8 text (byte {exc.start}: {exc.reason})") from None
+    except OSError as exc:
+        raise SceneError("scene", f"cannot read {path}: {exc.strerror}") from None
 
 
 def load_scene(name_or_path: str | Path) -> Scene:

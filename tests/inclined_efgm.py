@@ -39,7 +39,7 @@ def inclined_A(angle: float, height: float):
 def circle_C(centre, radius: float):
     """Scene C with its rod centred at ``centre`` with ``radius``."""
     base = load_scene("C")
-    return base.with_changes(name=f"C-rod{centre[0]:.2f},{centre[1]:.2f}",
+    return base.with_changes(name=f"C-rod{centre[0]:.2f}_{centre[1]:.2f}",
                              interface=CircleInterface(tuple(centre), radius))
 
 

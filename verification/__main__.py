@@ -18,12 +18,15 @@ from __future__ import annotations
 
 import argparse
 import logging
+import math
 import sys
 from pathlib import Path
 
 from contactcore import ContactError, load_scene
 
-from . import methods
+from . import files, methods
+
+log = logging.getLogger("verification")
 
 
 def _petsc_option(text: str) -> tuple[str, str]:
@@ -59,6 +62,8 @@ def _parser() -> argparse.ArgumentParser:
     run.add_argument("--basis", choices=("linear", "quadratic"),
                      help="EFGM's MLS basis (default: linear for --degree 1, quadratic for --degree 2)")
     run.add_argument("--nodes", type=Path, help="EFGM node set: a text file of x y rows (default: a grid)")
+    run.add_argument("--allow-large", action="store_true",
+                     help="run even when the estimated memory exceeds what this machine has")
     run.add_argument("--out", type=Path, required=True, help="result folder")
     pap = sub.add_parser("paper", help="the paper's figures and an agreement table against a refined reference")
     pap.add_argument("--scene", nargs="+", default=["A", "B", "C"], choices=["A", "B", "C"])
@@ -126,8 +131,8 @@ def _check_sizes(args) -> None:
     for name in ("h", "ref_h"):
         value = getattr(args, name, None)
         for h in value if isinstance(value, list) else [value]:
-            if h is not None and not h > 0:
-                raise ContactError(f"--{name.replace('_', '-')}: must be > 0 (got {h})")
+            if h is not None and not (math.isfinite(h) and h > 0):
+                raise ContactError(f"--{name.replace('_', '-')}: must be a finite number > 0 (got {h})")
 
 
 def _dispatch(args, argv) -> None:
@@ -138,7 +143,7 @@ def _dispatch(args, argv) -> None:
         from .run import run
         run(args.scene, args.method, args.out, h=args.h, degree=args.degree, paper=args.paper, fields=args.fields,
             petsc_options=dict(args.petsc_option), dmax=args.dmax, nodes_file=args.nodes, cell=args.cell,
-            basis=args.basis, argv=argv)
+            basis=args.basis, allow_large=args.allow_large, argv=argv)
     elif cmd == "paper":
         from .paper import paper
         paper(args.out, tuple(args.scene), args.ref_h, argv=argv)
@@ -183,7 +188,13 @@ def main(argv=None) -> int:
     _configure_logging()
     try:
         _check_sizes(args)
-        _dispatch(args, argv)
+        if getattr(args, "out", None) is None:
+            _dispatch(args, argv)
+        else:
+            with files.result_folder(args.out) as tmp:
+                final, args.out = args.out, tmp
+                _dispatch(args, argv)
+            log.info("wrote %s", final)
     except ContactError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2

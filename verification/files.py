@@ -18,7 +18,27 @@ import tempfile
 from contextlib import contextmanager
 from pathlib import Path
 
-from contactcore import ProfileData
+from contactcore import ContactError, ProfileData
+
+#: The file that marks a folder as a result folder of this tool (every
+#: command writes it last): only such a folder is replaced by a new run.
+MANIFEST = "run.json"
+
+
+class OutFolderError(ContactError):
+    """``--out`` names something that cannot hold this run's results."""
+
+
+def _umask() -> int:
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
+
+
+def _follow_umask(path: str, mode: int) -> None:
+    """``mkstemp``/``mkdtemp`` create 0600/0700: give the file or folder the
+    mode an ordinary ``open``/``mkdir`` would (``mode & ~umask``)."""
+    os.chmod(path, mode & ~_umask())
 
 
 @contextmanager
@@ -28,6 +48,7 @@ def atomic_path(path: Path, suffix: str = ""):
     path.parent.mkdir(parents=True, exist_ok=True)
     fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=suffix or path.suffix, dir=path.parent)
     os.close(fd)
+    _follow_umask(tmp, 0o666)
     try:
         yield Path(tmp)
         os.replace(tmp, path)
@@ -42,6 +63,7 @@ def atomic_folder(path: Path):
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     tmp = Path(tempfile.mkdtemp(prefix=f".{path.name}.", dir=path.parent))
+    _follow_umask(str(tmp), 0o777)
     try:
         yield tmp
         if path.exists():
@@ -50,6 +72,36 @@ def atomic_folder(path: Path):
     finally:
         if tmp.exists():
             shutil.rmtree(tmp)
+
+
+def check_out(path: Path) -> Path:
+    """``path`` as a result folder: refuse an existing file, a path below a
+    file, a folder that cannot be created, and a non-empty folder that this
+    tool did not write (no :data:`MANIFEST`), all with an
+    :class:`OutFolderError` that names it; nothing is touched."""
+    path = Path(path)
+    for parent in [path, *path.parents]:
+        if parent.exists() and not parent.is_dir():
+            where = "is a file" if parent == path else f"lies below the file {parent}"
+            raise OutFolderError(f"--out: {path} {where}")
+        if parent.exists():
+            if not os.access(parent, os.W_OK | os.X_OK):
+                raise OutFolderError(f"--out: {path} cannot be created or written ({parent} is not writable)")
+            break
+    if path.is_dir() and any(path.iterdir()) and not (path / MANIFEST).is_file():
+        raise OutFolderError(f"--out: {path} is a non-empty folder that this tool did not write (no {MANIFEST}); "
+                             "give a new or empty folder")
+    return path
+
+
+@contextmanager
+def result_folder(path: Path):
+    """Build a run's results in a temporary folder beside ``path`` and put it
+    in place of ``path`` (an earlier run's folder is replaced whole) only if
+    the block succeeds: a failed or interrupted run leaves nothing under the
+    final name."""
+    with atomic_folder(check_out(path)) as tmp:
+        yield tmp
 
 
 def write_text(path: Path, text: str) -> Path:
@@ -112,11 +164,16 @@ def cell(value) -> str:
     return str(value)
 
 
+def md_escape(text) -> str:
+    """``text`` safe inside a Markdown table cell: its pipes escaped."""
+    return str(text).replace("|", "\\|")
+
+
 def markdown_table(rows: list[dict], columns: list[str], headers: list[str] | None = None) -> str:
     """A Markdown table of ``rows`` (dicts) with ``columns`` in order."""
     head = headers or columns
-    lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
-    lines += ["| " + " | ".join(cell(r.get(c, "")) for c in columns) + " |" for r in rows]
+    lines = ["| " + " | ".join(md_escape(h) for h in head) + " |", "|" + "---|" * len(head)]
+    lines += ["| " + " | ".join(md_escape(cell(r.get(c, ""))) for c in columns) + " |" for r in rows]
     return "\n".join(lines) + "\n"
 
 

@@ -22,6 +22,8 @@ from pathlib import Path
 import numpy as np
 
 from contactcore import ContactError, load_scene, sample_profiles, scene_text
+from contactcore.budget import check_budget
+from contactcore.scene import check_resolution, smallest_dimension
 
 from . import fields_out, files, interface, methods, plots
 
@@ -54,14 +56,26 @@ def _summary_table(summaries: list[dict]) -> str:
 
 
 def run(scene_name: str, method_names: list[str], out: Path, *, h=None, degree=1, paper=False,
-        fields=False, petsc_options=None, dmax=None, nodes_file=None, cell=None, basis=None, argv=()) -> list[dict]:
-    """Solve, sample the scene's profiles, write everything; return the summaries."""
+        fields=False, petsc_options=None, dmax=None, nodes_file=None, cell=None, basis=None, allow_large=False,
+        argv=()) -> list[dict]:
+    """Solve, sample the scene's profiles, write everything; return the
+    summaries.  Before any work: every option must mean something to a chosen
+    method, ``h`` must fit the domain, and the run must fit the machine
+    (:func:`contactcore.budget.check_budget`, unless ``allow_large``).  The
+    scene as read is written last, with ``run.json``."""
     scene = load_scene(scene_name)
+    chosen = methods.expand(method_names)
+    methods.check_options(chosen, petsc_options=petsc_options or None, dmax=dmax, nodes=nodes_file, cell=cell,
+                          basis=basis)
+    if h is not None:
+        check_resolution(scene, h)
+    if not (paper or allow_large):
+        for name in chosen:
+            check_budget(scene, h or scene.h or smallest_dimension(scene.domain), degree, name)
     nodes = read_nodes(nodes_file) if nodes_file else None
     out = Path(out)
-    files.write_text(out / "scene.toml", scene_text(scene_name))
     profiles, summaries, paths = {}, [], {}
-    for name in methods.expand(method_names):
+    for name in chosen:
         options = methods.options_for(name, petsc_options=petsc_options or None, dmax=dmax, nodes=nodes, cell=cell,
                                       basis=basis)
         log.info("scene %s: solving with %s (%s)", scene.name, name, f"{basis} basis" if "basis" in options
@@ -95,9 +109,9 @@ def run(scene_name: str, method_names: list[str], out: Path, *, h=None, degree=1
         text += ("\n## Newton iterations (final relative residual) per increment\n\n"
                  + interface.iterations_table(paths))
     files.write_text(out / "summary.md", text)
+    files.write_text(out / "scene.toml", scene_text(scene_name))
     files.write_json(out / "run.json", {**files.provenance(list(argv)), "scene": scene_name,
                                         "methods": methods.expand(method_names), "h": h, "degree": degree,
                                         "paper": paper, "petsc_options": petsc_options or {}, "dmax": dmax,
                                         "basis": basis, "nodes": str(nodes_file) if nodes_file else None, "cell": cell})
-    log.info("wrote %s", out)
     return summaries

@@ -1,0 +1,76 @@
+"""What a run will cost, estimated before any work, so that a size the
+machine cannot hold is refused in a second instead of exhausting it.
+
+For a resolution ``h`` on a domain of area ``A`` and degree ``k`` the mesh
+has about ``A k² / h²`` nodes (vertices, and edge and cell nodes for k = 2;
+the EFGM grid has ``A / h²`` nodes whatever the basis); each carries two
+displacement components per field: fe keeps one field per body on the whole
+mesh (``× 2``), xfem one standard field plus a few enriched nodes, EFGM one
+field.  The direct solver's factors dominate memory: measured
+:data:`BYTES_PER_UNKNOWN` at up to ~2.4e5 unknowns (2D nested dissection
+grows as N log N, so larger runs need somewhat more).  The interface history
+keeps, per increment, a few numbers per quadrature point of Γ (about
+``3 |Γ| / h`` points).
+"""
+from __future__ import annotations
+
+import math
+import os
+from dataclasses import dataclass
+
+from .errors import ContactError
+
+#: Resident bytes per unknown of a run, factors included: run C-coulomb, fe
+#: P2, h = 0.02 (2.4e5 unknowns) peaks at 1.0 GB (issue 23, after the factor
+#: leak was fixed): 4.2 kB; rounded up for the N log N growth of the factors.
+BYTES_PER_UNKNOWN = 6_000
+
+#: Fields per method: fe keeps one per body on the whole mesh.
+FIELDS = {"fe": 2, "xfem": 1, "efgm": 1}
+
+#: Bytes kept per increment and Γ point (jump, traction, status, residuals).
+BYTES_PER_HISTORY_POINT = 64
+
+#: Fraction of the machine's memory a run may plan to use.
+MEMORY_SHARE = 0.8
+
+
+class TooLargeError(ContactError):
+    """A run that would not fit in the machine's memory."""
+
+
+@dataclass(frozen=True)
+class Estimate:
+    unknowns: float
+    memory: float  # bytes
+    solves: float
+
+    def describe(self) -> str:
+        return f"about {self.unknowns:.2g} unknowns, {self.memory / 1e9:.3g} GB and {self.solves:.3g} solves"
+
+
+def machine_memory() -> float:
+    """Physical memory of this machine in bytes."""
+    return float(os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES"))
+
+
+def estimate(scene, h: float, degree: int, method: str) -> Estimate:
+    """The cost of solving ``scene`` at resolution ``h`` (module doc)."""
+    nodes = scene.domain.area / h ** 2 * (degree ** 2 if method != "efgm" else 1)
+    unknowns = 2 * FIELDS.get(method, 1) * nodes + 4  # a one-cell mesh still has a few
+    gamma_points = 3 * scene.length_scale * math.pi / h
+    solves = 1 if scene.law.is_linear else scene.increments * 3  # Newton: ~3 solves an increment
+    memory = BYTES_PER_UNKNOWN * unknowns + BYTES_PER_HISTORY_POINT * gamma_points * solves
+    return Estimate(unknowns, memory, solves)
+
+
+def check_budget(scene, h: float, degree: int, method: str, field: str = "--h") -> Estimate:
+    """Raise :class:`TooLargeError` when the run would need more than
+    MEMORY_SHARE of this machine's memory."""
+    est = estimate(scene, h, degree, method)
+    have = MEMORY_SHARE * machine_memory()
+    if est.memory > have:
+        raise TooLargeError(f"{field} {h:g} with {method} (degree {degree}, {scene.increments} increments): "
+                            f"{est.describe()}, against {have / 1e9:.3g} GB usable on this machine; use a larger h "
+                            "or fewer increments, or pass --allow-large to try anyway")
+    return est

@@ -1,0 +1,145 @@
+"""The edges of the input space (issues 14, 18, 23): names that become files,
+``--out``, resolutions and sizes, text encodings, file modes, tables, and
+options that mean nothing for the chosen method."""
+import os
+import re
+import stat
+
+import pytest
+
+from contactcore import load_scene
+from contactcore.budget import estimate
+from verification import files
+from verification.__main__ import main
+
+
+def _refused(capsys, argv, pattern):
+    """``main(argv)`` ends with exit 2 and one ``error:`` line matching ``pattern``."""
+    assert main(argv) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    errors = [line for line in err if line.startswith("error:")]
+    assert len(errors) == 1 and "Traceback" not in "\n".join(err), err
+    assert re.search(pattern, errors[0]), errors[0]
+
+
+def _toml(data, prefix="") -> str:
+    """A minimal TOML writer for the scene dicts (tables, arrays of tables)."""
+    import json
+    scalars, tables, arrays = [], [], []
+    for k, v in data.items():
+        if isinstance(v, dict):
+            tables.append((k, v))
+        elif isinstance(v, list) and v and isinstance(v[0], dict):
+            arrays.append((k, v))
+        else:
+            scalars.append(f"{k} = {json.dumps(v)}")
+    out = "\n".join(scalars) + "\n"
+    for k, v in tables:
+        out += f"\n[{prefix}{k}]\n" + _toml(v, f"{prefix}{k}.")
+    for k, items in arrays:
+        for item in items:
+            out += f"\n[[{prefix}{k}]]\n" + _toml(item, f"{prefix}{k}.")
+    return out
+
+
+def test_an_escaping_profile_id_is_a_scene_error(tmp_path, scene_dict, capsys):
+    data = scene_dict("A")
+    data["profiles"][0]["id"] = "../../escaped"
+    (tmp_path / "in").mkdir()
+    path = tmp_path / "in" / "scene.toml"
+    path.write_text(_toml(data))
+    out = tmp_path / "in" / "deep" / "out"
+    _refused(capsys, ["run", str(path), "--method", "efgm", "--h", "0.2", "--out", str(out)],
+             r"profiles\[0\]\.id: must be a file-safe name")
+    assert not list(tmp_path.rglob("escaped*")) and not out.exists()
+
+
+@pytest.mark.parametrize("where", ["file", "below a file"])
+def test_out_that_is_or_lies_below_a_file(tmp_path, capsys, where):
+    target = tmp_path / "taken"
+    target.write_text("keep me")
+    out = target if where == "file" else target / "sub"
+    _refused(capsys, ["run", "A", "--method", "efgm", "--h", "0.2", "--out", str(out)],
+             "is a file" if where == "file" else "lies below the file")
+    assert target.read_text() == "keep me"
+
+
+def test_out_that_holds_files_of_someone_else(tmp_path, capsys):
+    (tmp_path / "notes.txt").write_text("mine")
+    _refused(capsys, ["run", "A", "--method", "efgm", "--h", "0.2", "--out", str(tmp_path)],
+             "non-empty folder that this tool did not write")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["notes.txt"]
+
+
+def test_a_rerun_replaces_the_earlier_run_whole(tmp_path):
+    out = tmp_path / "out"
+    assert main(["run", "A", "--method", "efgm", "--h", "0.2", "--out", str(out)]) == 0
+    (out / "efgm" / "stale.csv").write_text("from before")
+    assert main(["run", "A", "--method", "efgm", "--h", "0.2", "--out", str(out)]) == 0
+    assert not (out / "efgm" / "stale.csv").exists() and (out / "run.json").is_file()
+    assert not [p for p in tmp_path.iterdir() if p.name.startswith(".")]  # no temporary folder left
+
+
+def test_a_failed_run_leaves_nothing_under_the_final_name(tmp_path, scene_dict, capsys):
+    data = scene_dict("A")
+    del data["supports"]  # a floating body: refused before any solve
+    path = tmp_path / "floating.toml"
+    path.write_text(_toml(data))
+    out = tmp_path / "out"
+    _refused(capsys, ["run", str(path), "--method", "fe", "--h", "0.2", "--out", str(out)], "rigid-body mode")
+    assert not out.exists()
+    assert [p.name for p in tmp_path.iterdir()] == ["floating.toml"]
+
+
+@pytest.mark.parametrize("h, pattern", [("inf", "finite number > 0"), ("nan", "finite number > 0"),
+                                        ("-0.1", "finite number > 0"), ("10", "exceeds the domain's smallest")])
+def test_a_resolution_that_cannot_mesh_the_scene(tmp_path, capsys, h, pattern):
+    _refused(capsys, ["run", "A", "--method", "fe", "--h", h, "--out", str(tmp_path / "out")], pattern)
+
+
+def test_a_size_beyond_the_machine_is_refused_before_any_work(tmp_path, capsys):
+    """h = 1e-5 on the unit square: ~1e10 cells.  Refused by the estimate
+    (no mesh, no allocation), naming the input and the estimate."""
+    _refused(capsys, ["run", "A", "--method", "fe", "--h", "1e-5", "--out", str(tmp_path / "out")],
+             r"--h 1e-05 with fe .*unknowns, .* GB .* usable on this machine.*--allow-large")
+    assert not (tmp_path / "out").exists()
+
+
+def test_the_estimate_grows_with_the_unknowns():
+    scene = load_scene("C-coulomb")
+    small, large = estimate(scene, 0.1, 1, "fe"), estimate(scene, 0.05, 2, "fe")
+    assert large.unknowns == pytest.approx(16 * (small.unknowns - 4) + 4)
+    assert large.memory > small.memory and small.solves == 3 * scene.increments
+
+
+def test_a_scene_that_is_not_text(tmp_path, capsys):
+    path = tmp_path / "binary.toml"
+    path.write_bytes(bytes(range(256)))
+    _refused(capsys, ["run", str(path), "--method", "efgm", "--out", str(tmp_path / "out")],
+             r"scene: .* is not UTF-8 text")
+
+
+def test_files_follow_the_umask(tmp_path):
+    old = os.umask(0o022)
+    try:
+        out = tmp_path / "out"
+        assert main(["run", "A", "--method", "efgm", "--h", "0.2", "--out", str(out)]) == 0
+    finally:
+        os.umask(old)
+    modes = {stat.S_IMODE(p.stat().st_mode) for p in out.rglob("*") if p.is_file()}
+    folders = {stat.S_IMODE(p.stat().st_mode) for p in [out, *out.rglob("*")] if p.is_dir()}
+    assert modes == {0o644} and folders == {0o755}
+
+
+def test_markdown_tables_escape_pipes():
+    text = files.markdown_table([{"a": "x | y", "b": 1.0}], ["a", "b"], ["max |g_N|", "b"])
+    head, rule, row = text.splitlines()
+    cells = [len(re.split(r"(?<!\\)\|", line)) for line in (head, rule, row)]
+    assert cells[0] == cells[1] == cells[2] == 4  # three separators: two cells each
+
+
+@pytest.mark.parametrize("method, option", [("fe", ["--dmax", "2.0"]), ("xfem", ["--basis", "linear"]),
+                                            ("fe", ["--cell", "quad"]), ("efgm", ["--petsc-option", "ksp_type=cg"])])
+def test_an_option_that_means_nothing_for_the_method(tmp_path, capsys, method, option):
+    _refused(capsys, ["run", "A", "--method", method, "--h", "0.2", *option, "--out", str(tmp_path / "out")],
+             "means nothing for " + method)
