@@ -214,3 +214,17 @@ SPRING_HINT_RANGE = 1e-6
 #: keep the digits the residual policy asks for.  At h = 0.1 this is about
 #: 1e11 E/h; the sweeps' refusals by residual start at 1e10 E/h.
 SPRING_ENTRY_MAX = 4.5e10
+
+# ----- EFGM support dilation ---------------------------------------------------
+
+#: EFGM warns when its support dilation dmax leaves this range, in
+#: fractions of the basis's default (efgm.method.DMAX).  Below it, near the
+#: smallest dilation that keeps every moment matrix invertible (about 1.2 on
+#: a grid, linear basis), the approximation degrades; above it, the default
+#: Gauss rule under-integrates the wider (rational) shape functions.
+#: Measured on the 30° interface patch (h = 0.1, relative error in u, 6×6
+#: points) for dmax 1.25 / 1.5 / 2 / 3 / 4: circular supports 2.4e-4 /
+#: 3.3e-5 / 1.9e-5 / 3.3e-5 / 2.5e-5, rectangular 1.9e-4 / 7.5e-5 / 1.8e-5
+#: / 6.8e-5 / 1.9e-4: ten times the default's at 1.25 and at 4 (rectangular),
+#: within 4x of it from 1.5 to 3.
+DMAX_WARN_RANGE = (0.75, 1.5)

@@ -326,6 +326,15 @@ def solve(scene: Scene, h: float | None = None, *, degree: int = 1, paper: bool 
         x, path, report = solve_increments(scene, system)
     report.increments = scene.increments
     report.warnings += scene.interface_warnings(ns.h)
+    low, high = tol.DMAX_WARN_RANGE
+    if dmax < low * DMAX[degree]:
+        report.warnings.append(f"dmax = {dmax:g} is below {low:g} of the default {DMAX[degree]:g}: supports that "
+                               "barely cover their neighbours give near-singular moment matrices and an error "
+                               "about ten times the default's")
+    elif dmax > high * DMAX[degree] and gauss is None:
+        report.warnings.append(f"dmax = {dmax:g} is above {high:g} of the default {DMAX[degree]:g}: the default "
+                               f"{n}x{n} Gauss rule under-integrates such wide supports (error up to ten times the "
+                               "default's); pass gauss with more points")
     timings.total = time.perf_counter() - start
     return Result(method=METHOD, scene=scene, degree=degree, dofs=approx.ndofs, timings=timings, solver=report,
                   fields=with_history(scene, EFGMFields(scene, approx, x[:approx.ndofs]), path), interface=path,

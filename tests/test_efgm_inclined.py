@@ -6,7 +6,7 @@ import pytest
 
 import tolerances as tol
 from contactcore import sample_profiles
-from inclined_efgm import circle_C, inclined_A, worst_sample
+from placements import circle_C, inclined_A, worst_sample
 from verification import methods
 
 BASES = ["linear", "quadratic"]

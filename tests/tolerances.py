@@ -201,3 +201,15 @@ EFGM_ONE_SIDED = 1e-2
 #: profile's largest |value| (samples 0.1 of the shorter side from corners
 #: and Γ's ends left out): the issue's 10 %.
 EFGM_INCLINED_AGREE = 0.10
+
+# --- XFEM with Γ through or next to mesh nodes (tests/test_xfem_nodes.py, issue 19) ---
+#: Worst sample of any profile (corners and Γ's ends left out, tests/
+#: placements.py) of xfem at h = 0.05 against fe P2 at h/2, scene C with the
+#: rod's radius on a node row (R = 0.3 = 6h) or 1e-12 h and 1e-6 h off it.
+#: Measured after the fix (points of a body's sliver evaluated in the
+#: neighbouring cell that resolves that body): P1 0.105 (quads) and
+#: 0.12-0.15 (triangles), the discretisation error of P1 near the rod;
+#: P2 0.014-0.037, R = 0.3 exactly (no sliver) 0.020 and 0.023.  Before the
+#: fix R = 0.3 + 2e-6 h gave 0.90 (P1) and 2.6 (P2): σyy of the + body
+#: read inside the rod.  Scene A with Γ on a node row: P2 0.020.
+XFEM_NODE_AGREE = {1: 0.16, 2: 0.05}

@@ -1,5 +1,5 @@
 """Scenes with Γ placed off the node rows, and the pointwise agreement
-measure of issue 22, for the EFGM tests.
+measure of issues 19 and 22, for the EFGM and XFEM tests.
 
 ``inclined_A(angle, height)`` is scene A with a straight Γ turned ``angle``
 degrees through ``(0.5, height)``, its profiles A1, A2, A3, A5 along Γ's
@@ -33,7 +33,7 @@ def inclined_A(angle: float, height: float):
     a, b = itf.chord(base.domain)
     profiles = tuple(p if p.id == "A4" else dataclasses.replace(p, start=tuple(a), end=tuple(b))
                      for p in base.profiles if isinstance(p, LineProfile))
-    return base.with_changes(name=f"A-tilt{angle:+.1f}-{height:.2f}", interface=itf, profiles=profiles)
+    return base.with_changes(name=f"A-tilt{angle:.1f}_{height:.2f}", interface=itf, profiles=profiles)
 
 
 def circle_C(centre, radius: float):
