@@ -143,3 +143,26 @@ def test_markdown_tables_escape_pipes():
 def test_an_option_that_means_nothing_for_the_method(tmp_path, capsys, method, option):
     _refused(capsys, ["run", "A", "--method", method, "--h", "0.2", *option, "--out", str(tmp_path / "out")],
              "means nothing for " + method)
+
+
+def test_quiet_keeps_warnings_and_repeats_are_collapsed(tmp_path, capsys):
+    import logging
+
+    from verification.__main__ import _configure_logging
+    repeats = _configure_logging(-1)
+    log = logging.getLogger("verification")
+    log.info("progress")
+    for _ in range(30):
+        log.warning("the same warning")
+    err = capsys.readouterr().err
+    assert "progress" not in err and err.count("the same warning") == 1
+    assert repeats.summary() == ['(the warning "the same warning…" repeated 29 more time(s))']
+
+
+def test_run_json_names_the_code(tmp_path):
+    import json
+    out = tmp_path / "out"
+    assert main(["run", "A", "--method", "efgm", "--h", "0.2", "--quiet", "--out", str(out)]) == 0
+    run = json.loads((out / "run.json").read_text())
+    assert run["version"] == "0.1.0"
+    assert run["commit"] is None or re.fullmatch(r"[0-9a-f]{40}(\+dirty)?", run["commit"])

@@ -46,8 +46,14 @@ def _parser() -> argparse.ArgumentParser:
     from .sweeps import sweeps
 
     parser = argparse.ArgumentParser(prog="python -m verification")
+    common = argparse.ArgumentParser(add_help=False)
+    talk = common.add_mutually_exclusive_group()
+    talk.add_argument("-q", "--quiet", action="store_const", dest="verbosity", const=-1, default=0,
+                      help="errors and warnings only")
+    talk.add_argument("-v", "--verbose", action="store_const", dest="verbosity", const=1,
+                      help="also the debug messages of this tool")
     sub = parser.add_subparsers(dest="command", required=True)
-    run = sub.add_parser("run", help="solve one scene with one or more methods")
+    run = sub.add_parser("run", parents=[common], help="solve one scene with one or more methods")
     run.add_argument("scene", help="built-in scene name (A, B, C) or a scene TOML file")
     _methods(run)
     run.add_argument("--degree", type=int, default=1, choices=(1, 2))
@@ -65,16 +71,16 @@ def _parser() -> argparse.ArgumentParser:
     run.add_argument("--allow-large", action="store_true",
                      help="run even when the estimated memory exceeds what this machine has")
     run.add_argument("--out", type=Path, required=True, help="result folder")
-    pap = sub.add_parser("paper", help="the paper's figures and an agreement table against a refined reference")
+    pap = sub.add_parser("paper", parents=[common], help="the paper's figures and an agreement table against a refined reference")
     pap.add_argument("--scene", nargs="+", default=["A", "B", "C"], choices=["A", "B", "C"])
     pap.add_argument("--ref-h", type=float, help="cell size of the P2 reference (default: a quarter of the scene's h)")
     pap.add_argument("--out", type=Path, required=True)
-    clo = sub.add_parser("closed", help="closed-form cases on refinement ladders, with observed rates")
+    clo = sub.add_parser("closed", parents=[common], help="closed-form cases on refinement ladders, with observed rates")
     clo.add_argument("--case", nargs="+", default=list(CASES), choices=list(CASES))
     _methods(clo)
     clo.add_argument("--degree", nargs="+", type=int, default=[1, 2], choices=(1, 2))
     clo.add_argument("--out", type=Path, required=True)
-    eff = sub.add_parser("efficiency", help="error against run time, against a refined reference")
+    eff = sub.add_parser("efficiency", parents=[common], help="error against run time, against a refined reference")
     eff.add_argument("scene")
     _methods(eff)
     eff.add_argument("--degree", nargs="+", type=int, default=[1], choices=(1, 2))
@@ -82,12 +88,12 @@ def _parser() -> argparse.ArgumentParser:
     eff.add_argument("--ref-h", type=float, required=True, help="element size of the P2 reference")
     eff.add_argument("--exclude", type=float, help="distance from corners and Γ's ends left out (default 0.1 L)")
     eff.add_argument("--out", type=Path, required=True)
-    swp = sub.add_parser("sweeps", help="stiff and extreme cases: error, condition and outcome")
+    swp = sub.add_parser("sweeps", parents=[common], help="stiff and extreme cases: error, condition and outcome")
     swp.add_argument("--sweep", nargs="+", choices=[s.name for s in sweeps()], help="default: all")
     _methods(swp)
     swp.add_argument("--degree", type=int, default=1, choices=(1, 2))
     swp.add_argument("--out", type=Path, required=True)
-    stu = sub.add_parser("study", help="one input varied (geometry through gmsh, h, springs, materials)")
+    stu = sub.add_parser("study", parents=[common], help="one input varied (geometry through gmsh, h, springs, materials)")
     stu.add_argument("scene")
     stu.add_argument("--param", required=True, choices=list(PARAMETERS))
     stu.add_argument("--values", nargs="+", type=float, required=True)
@@ -96,13 +102,13 @@ def _parser() -> argparse.ArgumentParser:
     stu.add_argument("--h", type=float, help="resolution (default: the scene's h)")
     stu.add_argument("--cell", choices=("quad", "triangle", "gmsh"), help="XFEM background cells (default quad)")
     stu.add_argument("--out", type=Path, required=True)
-    rep = sub.add_parser("report", help="every verification, gathered into DIR/report.md")
+    rep = sub.add_parser("report", parents=[common], help="every verification, gathered into DIR/report.md")
     rep.add_argument("out", type=Path)
     rep.add_argument("--quick", action="store_true", help="short ladders: a smoke test of the whole chain")
-    ben = sub.add_parser("benchmark", help="error against run time beside GetFEM's level-set XFEM (issue 7)")
+    ben = sub.add_parser("benchmark", parents=[common], help="error against run time beside GetFEM's level-set XFEM (issue 7)")
     ben.add_argument("--scene", nargs="+", default=["A", "B", "C"], choices=["A", "B", "C"])
     ben.add_argument("--out", type=Path, required=True)
-    tim = sub.add_parser("timing", help="wall time against DOFs on a ladder of resolutions")
+    tim = sub.add_parser("timing", parents=[common], help="wall time against DOFs on a ladder of resolutions")
     tim.add_argument("scene")
     _methods(tim)
     tim.add_argument("--degree", nargs="+", type=int, default=[1], choices=(1, 2))
@@ -111,20 +117,42 @@ def _parser() -> argparse.ArgumentParser:
     return parser
 
 
-def _configure_logging() -> None:
-    """Our progress at INFO; everything else (ffcx's JIT goes through
-    setuptools, which lowers the root logger's level) only from WARNING on,
-    enforced on the handler, which setuptools does not touch."""
+class Repeats(logging.Filter):
+    """Lets a message through once; counts its repeats (a sweep warns about
+    the same thing in every case) for one line at the end."""
+
+    def __init__(self):
+        super().__init__()
+        self.counts = {}
+
+    def filter(self, record) -> bool:
+        key = (record.levelno, record.getMessage())
+        self.counts[key] = self.counts.get(key, 0) + 1
+        return self.counts[key] == 1
+
+    def summary(self) -> list[str]:
+        return [f"(the {logging.getLevelName(level).lower()} \"{msg[:80]}…\" repeated {n - 1} more time(s))"
+                for (level, msg), n in self.counts.items() if n > 1]
+
+
+def _configure_logging(verbosity: int = 0) -> Repeats:
+    """Our progress at INFO (WARNING with --quiet, DEBUG with --verbose);
+    everything else (ffcx's JIT goes through setuptools, which lowers the
+    root logger's level) only from WARNING on, enforced on the handler,
+    which setuptools does not touch.  Repeated messages are collapsed."""
     fmt = logging.Formatter("%(levelname)s %(name)s: %(message)s")
     root = logging.StreamHandler()
     root.setLevel(logging.WARNING)
     root.setFormatter(fmt)
     logging.basicConfig(handlers=[root], force=True)
     ours = logging.getLogger("verification")
+    repeats = Repeats()
     ours.handlers[:] = [logging.StreamHandler()]
     ours.handlers[0].setFormatter(fmt)
-    ours.setLevel(logging.INFO)
+    ours.handlers[0].addFilter(repeats)
+    ours.setLevel({-1: logging.WARNING, 0: logging.INFO, 1: logging.DEBUG}[verbosity])
     ours.propagate = False
+    return repeats
 
 
 def _check_sizes(args) -> None:
@@ -185,7 +213,7 @@ def _dispatch(args, argv) -> None:
 def main(argv=None) -> int:
     argv = sys.argv[1:] if argv is None else argv
     args = _parser().parse_args(argv)
-    _configure_logging()
+    repeats = _configure_logging(args.verbosity)
     try:
         _check_sizes(args)
         if getattr(args, "out", None) is None:
@@ -198,6 +226,9 @@ def main(argv=None) -> int:
     except ContactError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
+    finally:
+        for line in repeats.summary():
+            print(line, file=sys.stderr)
     return 0
 
 

@@ -148,10 +148,38 @@ def versions() -> dict:
     return out
 
 
+def package_version() -> str:
+    """This project's installed version (pyproject.toml), or "unknown"."""
+    from importlib import metadata
+    try:
+        return metadata.version("jameel-contact")
+    except metadata.PackageNotFoundError:
+        return "unknown"
+
+
+def git_commit() -> str | None:
+    """The commit of the source tree this code runs from (with ``+dirty`` if
+    it has uncommitted changes), or None outside a git checkout."""
+    import subprocess
+    top = Path(__file__).resolve().parent.parent
+    try:
+        head = subprocess.run(["git", "-C", str(top), "rev-parse", "HEAD"], capture_output=True, text=True,
+                              timeout=10)
+        if head.returncode != 0:
+            return None
+        dirty = subprocess.run(["git", "-C", str(top), "status", "--porcelain", "--untracked-files=no"],
+                               capture_output=True, text=True, timeout=10).stdout.strip()
+    except (OSError, subprocess.SubprocessError):
+        return None
+    return head.stdout.strip() + ("+dirty" if dirty else "")
+
+
 def provenance(argv: list[str]) -> dict:
-    """What produced a result folder: the command, the machine, the versions."""
+    """What produced a result folder: the command, the code (version and git
+    commit), the machine and the versions of the packages."""
     return {"command": " ".join(["python -m verification", *argv]), "cwd": os.getcwd(),
-            "host": platform.node(), "versions": versions()}
+            "host": platform.node(), "version": package_version(), "commit": git_commit(),
+            "versions": versions()}
 
 
 def cell(value) -> str:
