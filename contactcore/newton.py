@@ -26,8 +26,10 @@ supports, pins and springs must hold every rigid-body mode
 symmetric while points slip, so every method factorises it with a general
 LU.  A failed increment (no convergence, a singular tangent) is halved up to
 ``MAX_CUTBACKS`` times; the state is committed only at converged steps.  A
-linear law is one solve at the last increment's factors (history-free, so
-the last increment equals a single solve).
+law without history (linear, unilateral) is path-independent: Newton goes
+to the last increment's factors in one step (a linear law in one solve),
+and follows the increments only if that step fails; the report records the
+steps solved.
 """
 from __future__ import annotations
 
@@ -281,22 +283,38 @@ def with_history(scene, fields, path: InterfacePath):
     return FieldsWithHistory(fields, scene.interface, path) if scene.law.has_history else fields
 
 
+def _final_state(scene, system: ContactSystem, newton: _Newton) -> _Newton:
+    """A law without history (linear, unilateral): its state at the last
+    increment does not depend on the path, so Newton goes there in one step
+    from the unloaded state (a linear law in one solve, its tangent settled
+    at once).  A nonlinear law whose one step does not converge follows the
+    increments instead, with cut-backs; a linear one ends with the error."""
+    try:
+        newton.step(float(scene.increments))
+        return newton
+    except SolverError as exc:
+        if scene.law.is_linear:
+            raise SolverError(f"{exc}; {health.failure_hint(scene, system.interface.weights)}") from None
+    newton = _Newton(scene, system)
+    for n in range(1, scene.increments + 1):
+        newton.increment(n)
+    return newton
+
+
 def solve_increments(scene, system: ContactSystem) -> tuple[np.ndarray, InterfacePath, SolverReport]:
     """Solve ``scene`` on ``system``: its unknowns at the last increment, the
     interface's history and the solver's report (module doc)."""
     health.check_springs(scene, system.interface.weights)
     health.check_restraint(scene, system.interface.points, system.interface.weights)
     newton = _Newton(scene, system)
-    if scene.law.is_linear:
-        try:
-            newton.step(float(scene.increments))  # one solve: the tangent is settled at once
-        except SolverError as exc:
-            raise SolverError(f"{exc}; {health.failure_hint(scene, system.interface.weights)}") from None
+    if not scene.law.has_history:
+        newton = _final_state(scene, system, newton)
     else:
         for n in range(1, scene.increments + 1):
             newton.increment(n)
+    if not scene.law.is_linear:
         newton.report.solver = f"newton + {newton.report.solver}"
-    newton.report.increments = scene.increments
+    newton.report.increments = len(newton.path.steps)  # what was solved, not the scene's count
     newton.report.warnings += health.material_warnings(scene)
     newton.path.state = newton.state
     return newton.u, newton.path, newton.report

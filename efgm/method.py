@@ -324,7 +324,6 @@ def solve(scene: Scene, h: float | None = None, *, degree: int = 1, paper: bool 
                             f"scene {scene.name} (efgm)")
     with timings.measure("solve"):
         x, path, report = solve_increments(scene, system)
-    report.increments = scene.increments
     report.warnings += scene.interface_warnings(ns.h)
     low, high = tol.DMAX_WARN_RANGE
     if dmax < low * DMAX[degree]:
