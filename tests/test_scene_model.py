@@ -71,7 +71,14 @@ def _set(d, path, value):
         d[keys[-1]] = value
 
 
-_DELETE = object()
+class _Delete:
+    """The marker of a key to delete (a stable repr for the test ids)."""
+
+    def __repr__(self) -> str:
+        return "<deleted>"
+
+
+_DELETE = _Delete()
 
 # (scene, dotted path to change, new value, field named in the error, words in the message)
 BAD_INPUTS = [
