@@ -178,7 +178,7 @@ def test_profile_figure_differences_span_and_layout():
     legend = overlay.get_legend().get_window_extent()
     assert legend.x0 >= overlay.get_window_extent().x1  # outside the axes, to their right
     assert _inside(legend, figure_box) and _inside(overlay.title.get_window_extent(), figure_box)
-    plots.plt.close(fig)
+    plots.pyplot().close(fig)
 
 
 def test_response_figure_counts_increments(tmp_path, coulomb_toml):
@@ -192,4 +192,4 @@ def test_response_figure_counts_increments(tmp_path, coulomb_toml):
     assert rms > 1.0  # Pa, where the mean is ~1e-4 Pa
     for ax in fig.axes:
         assert all(float(t).is_integer() for t in ax.get_xticks())  # increments are counted
-    plots.plt.close(fig)
+    plots.pyplot().close(fig)

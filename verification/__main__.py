@@ -68,6 +68,7 @@ def _parser() -> argparse.ArgumentParser:
     run.add_argument("--basis", choices=("linear", "quadratic"),
                      help="EFGM's MLS basis (default: linear for --degree 1, quadratic for --degree 2)")
     run.add_argument("--nodes", type=Path, help="EFGM node set: a text file of x y rows (default: a grid)")
+    run.add_argument("--no-plots", dest="draw", action="store_false", help="write no figures")
     run.add_argument("--allow-large", action="store_true",
                      help="run even when the estimated memory exceeds what this machine has")
     run.add_argument("--out", type=Path, required=True, help="result folder")
@@ -171,7 +172,7 @@ def _dispatch(args, argv) -> None:
         from .run import run
         run(args.scene, args.method, args.out, h=args.h, degree=args.degree, paper=args.paper, fields=args.fields,
             petsc_options=dict(args.petsc_option), dmax=args.dmax, nodes_file=args.nodes, cell=args.cell,
-            basis=args.basis, allow_large=args.allow_large, argv=argv)
+            basis=args.basis, allow_large=args.allow_large, draw=args.draw, argv=argv)
     elif cmd == "paper":
         from .paper import paper
         paper(args.out, tuple(args.scene), args.ref_h, argv=argv)

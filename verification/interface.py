@@ -26,7 +26,7 @@ from contactcore.laws import STATUS_NAMES
 from contactcore.newton import InterfacePath, along
 
 from . import files
-from .plots import keep_span, legend_outside, plt, save, style
+from .plots import keep_span, legend_outside, pyplot, save, style
 
 STATUS_COLOURS = ("#bbbbbb", "#2c7fb8", "#d95f0e")  # open, stick, slip
 
@@ -63,13 +63,13 @@ def write_history(folder: Path, scene, path: InterfacePath) -> None:
 
 def _integer_steps(axis) -> None:
     """Increments are counted: integer ticks only."""
-    axis.set_major_locator(plt.MaxNLocator(integer=True))
+    axis.set_major_locator(pyplot().MaxNLocator(integer=True))
 
 
 def plot_status(out: Path, scene, label: str, path: InterfacePath) -> Path:
     """Status of every Γ point (x: along Γ) at every step (y)."""
     s = along(scene.interface, path.points)
-    fig, ax = plt.subplots(figsize=(8, 4), layout="constrained")
+    fig, ax = pyplot().subplots(figsize=(8, 4), layout="constrained")
     for code, (name, colour) in enumerate(zip(STATUS_NAMES, STATUS_COLOURS)):
         xs = [s[step.status == code] for step in path.steps]
         ys = [np.full(len(x), step.step) for x, step in zip(xs, path.steps)]
@@ -99,7 +99,7 @@ def response_figure(scene, paths: dict[str, InterfacePath]):
     module doc); the loop of mean t_T against mean g_T on a straight Γ."""
     loop = isinstance(scene.interface, LineInterface)
     mosaic = ([["loop", "loop"]] if loop else []) + [["rms_tN", "rms_tT"], ["open_fraction", "slip_fraction"]]
-    fig, axes = plt.subplot_mosaic(mosaic, figsize=(10, 3.2 * len(mosaic)), layout="constrained")
+    fig, axes = pyplot().subplot_mosaic(mosaic, figsize=(10, 3.2 * len(mosaic)), layout="constrained")
     rows = {label: increment_rows(path) for label, path in paths.items()}
     traction = max(max(r["rms_tN"], r["rms_tT"]) for rs in rows.values() for r in rs)
     for i, (label, rs) in enumerate(rows.items()):

@@ -9,19 +9,27 @@ tick labels never carry an offset, and no panel zooms below
 """
 from __future__ import annotations
 
+import functools
 import re
 from pathlib import Path
 
-import matplotlib
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+from contactcore import ProfileData
+from contactcore.tolerances import PLOT_MIN_Y_SPAN
 
-from contactcore import ProfileData  # noqa: E402
-from contactcore.tolerances import PLOT_MIN_Y_SPAN  # noqa: E402
+from .files import atomic_path
 
-from .files import atomic_path  # noqa: E402
+
+@functools.cache
+def pyplot():
+    """matplotlib's pyplot on the file-only Agg backend, imported when the
+    first figure is drawn (a run without plots, or ``--help``, never pays
+    for it)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    return plt
 
 UNITS = {"sxx": "σxx (Pa)", "syy": "σyy (Pa)", "sxy": "σxy (Pa)", "tN": "t_N (Pa)", "tT": "t_T (Pa)",
          "gN": "g_N (m)", "gT": "g_T (m)", "ux": "u_x (m)", "uy": "u_y (m)"}
@@ -93,7 +101,7 @@ def profile_figure(title: str, runs: dict[str, ProfileData]):
     quantities = [n for n in first.names if n not in ("s", "x", "y")]
     ref = reference_label(list(runs))
     rows = 2 if len(runs) > 1 else 1
-    fig, axes = plt.subplots(rows * len(quantities), 1, figsize=(8.5, (3.0 + 1.6 * (rows - 1)) * len(quantities)),
+    fig, axes = pyplot().subplots(rows * len(quantities), 1, figsize=(8.5, (3.0 + 1.6 * (rows - 1)) * len(quantities)),
                              squeeze=False, sharex=True, layout="constrained",
                              gridspec_kw={"height_ratios": [2, 1][:rows] * len(quantities)})
     for k, q in enumerate(quantities):
@@ -130,9 +138,10 @@ def _difference_panel(ax, q: str, runs: dict[str, ProfileData], ref: str, scale:
 
 def _no_offsets(fig) -> None:
     """Tick labels in full, never as an offset plus small differences."""
+    from matplotlib.ticker import ScalarFormatter
     for ax in fig.axes:
         for axis in (ax.xaxis, ax.yaxis):
-            if isinstance(axis.get_major_formatter(), matplotlib.ticker.ScalarFormatter):
+            if isinstance(axis.get_major_formatter(), ScalarFormatter):
                 axis.get_major_formatter().set_useOffset(False)
 
 
@@ -144,13 +153,13 @@ def save(fig, path: Path) -> Path:
     _no_offsets(fig)
     with atomic_path(Path(path)) as tmp:
         fig.savefig(tmp, dpi=110, format="png")
-    plt.close(fig)
+    pyplot().close(fig)
     return Path(path)
 
 
 def loglog_by_variant(path: Path, rows: list[dict], x: str, y: str, xlabel: str, ylabel: str, title: str) -> Path:
     """``rows[y]`` against ``rows[x]``, log-log, one line per (method, degree)."""
-    fig, ax = plt.subplots(figsize=(7.5, 4.5))
+    fig, ax = pyplot().subplots(figsize=(7.5, 4.5))
     for i, key in enumerate(dict.fromkeys((r["method"], r["degree"]) for r in rows)):
         pts = [(r[x], r[y]) for r in rows if (r["method"], r["degree"]) == key and y in r]
         if pts:

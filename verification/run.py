@@ -25,7 +25,7 @@ from contactcore import ContactError, load_scene, sample_profiles, scene_text
 from contactcore.budget import check_budget
 from contactcore.scene import check_resolution, smallest_dimension
 
-from . import fields_out, files, interface, methods, plots
+from . import files, interface, methods, plots
 
 log = logging.getLogger("verification")
 
@@ -57,12 +57,13 @@ def _summary_table(summaries: list[dict]) -> str:
 
 def run(scene_name: str, method_names: list[str], out: Path, *, h=None, degree=1, paper=False,
         fields=False, petsc_options=None, dmax=None, nodes_file=None, cell=None, basis=None, allow_large=False,
-        argv=()) -> list[dict]:
+        draw=True, argv=()) -> list[dict]:
     """Solve, sample the scene's profiles, write everything; return the
     summaries.  Before any work: every option must mean something to a chosen
     method, ``h`` must fit the domain, and the run must fit the machine
     (:func:`contactcore.budget.check_budget`, unless ``allow_large``).  The
-    scene as read is written last, with ``run.json``."""
+    scene as read is written last, with ``run.json``; no figure unless
+    ``draw`` (matplotlib is then never imported)."""
     scene = load_scene(scene_name)
     chosen = methods.expand(method_names)
     methods.check_options(chosen, petsc_options=petsc_options or None, dmax=dmax, nodes=nodes_file, cell=cell,
@@ -91,6 +92,7 @@ def run(scene_name: str, method_names: list[str], out: Path, *, h=None, degree=1
             files.write_profile_csv(out / name / "profiles" / f"{prof.id}.csv", prof)
             profiles.setdefault(prof.id, {})[f"{name} (p{result.degree})"] = prof
         if fields:
+            from . import fields_out  # meshio, only for field files
             written = fields_out.write_fields(out / name / "fields", result, mesh=name in methods.WITH_XDMF)
             log.info("%s: wrote %d field files%s", name, len(written),
                      "" if name in methods.WITH_XDMF else " (Γ only: no mesh)")
@@ -98,14 +100,16 @@ def run(scene_name: str, method_names: list[str], out: Path, *, h=None, degree=1
         if not scene.law.is_linear:
             paths[f"{name} (p{result.degree})"] = result.interface
             interface.write_history(out / name, scene, result.interface)
-            interface.plot_status(out / "plots" / f"status_{name}.png", scene, f"{name} (p{result.degree})",
-                                  result.interface)
+            if draw:
+                interface.plot_status(out / "plots" / f"status_{name}.png", scene, f"{name} (p{result.degree})",
+                                      result.interface)
     titles = {p.id: p.title for p in scene.profiles}
-    for pid, runs in profiles.items():
+    for pid, runs in profiles.items() if draw else ():
         plots.plot_profile(out / "plots" / f"{pid}.png", titles[pid], runs)
     text = f"# Scene {scene.name}: {scene.title}\n\n" + _summary_table(summaries)
     if paths:
-        interface.plot_response(out / "plots" / "response.png", scene, paths)
+        if draw:
+            interface.plot_response(out / "plots" / "response.png", scene, paths)
         text += ("\n## Newton iterations (final relative residual) per increment\n\n"
                  + interface.iterations_table(paths))
     files.write_text(out / "summary.md", text)

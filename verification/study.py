@@ -156,9 +156,9 @@ def markdown(scene_name: str, param: str, rows: list[dict]) -> str:
 
 
 def _plot(path: Path, scene_name: str, param: str, rows: list[dict]) -> None:
-    from .plots import UNITS, plt, save
+    from .plots import UNITS, pyplot, save
 
-    fig, axes = plt.subplots(2, 2, figsize=(9, 6.5), squeeze=False)
+    fig, axes = pyplot().subplots(2, 2, figsize=(9, 6.5), squeeze=False)
     values = [r["value"] for r in rows]
     logx = min(values) > 0 and max(values) / min(values) > 100
     for ax, q in zip(axes.ravel(), ("gN", "gT", "tN", "tT")):

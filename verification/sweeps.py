@@ -261,9 +261,9 @@ COLUMNS = ["sweep", "method", "degree", "value", "error", "bound", "outcome", "c
 
 
 def _plot(path: Path, sweep: Sweep, rows: list[dict]) -> None:
-    from .plots import plt, save
+    from .plots import pyplot, save
 
-    fig, ax = plt.subplots(figsize=(6.5, 4.2))
+    fig, ax = pyplot().subplots(figsize=(6.5, 4.2))
     values = [r["value"] for r in rows]
     numeric = all(isinstance(v, float) for v in values)
     for name in dict.fromkeys(r["method"] for r in rows):
