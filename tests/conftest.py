@@ -64,3 +64,13 @@ def pytest_sessionfinish(session, exitstatus):
             reporter.write_line(f"error: the suite's peak resident memory {peak:.2f} GB exceeds "
                                 f"{PEAK_RSS_LIMIT_GB:g} GB", red=True)
         session.exitstatus = pytest.ExitCode.TESTS_FAILED
+
+
+@pytest.fixture(autouse=True, scope="module")
+def _free_between_files():
+    """Free each file's dolfinx/PETSc objects (and their C memory) before the
+    next file: petsc4py frees a Mat or KSP only when its last Python
+    reference goes, and module fixtures hold results until the file ends."""
+    yield
+    import gc
+    gc.collect()
