@@ -228,3 +228,11 @@ SPRING_ENTRY_MAX = 4.5e10
 #: / 6.8e-5 / 1.9e-4: ten times the default's at 1.25 and at 4 (rectangular),
 #: within 4x of it from 1.5 to 3.
 DMAX_WARN_RANGE = (0.75, 1.5)
+
+# ----- meshing ----------------------------------------------------------------
+
+#: A circle (rod or disc) meshed by gmsh must have a radius of at least this
+#: fraction of the mesh size h: gmsh 4.8 aborted the process (SIGABRT, no
+#: Python exception) on scene C with a rod of radius 1e-6 and 1e-9 at
+#: h = 0.05, and meshed 1e-3 (h/50).  h/100 keeps the cases that mesh.
+MESH_MIN_FEATURE = 1e-2

@@ -166,3 +166,13 @@ def test_run_json_names_the_code(tmp_path):
     run = json.loads((out / "run.json").read_text())
     assert run["version"] == "0.1.0"
     assert run["commit"] is None or re.fullmatch(r"[0-9a-f]{40}(\+dirty)?", run["commit"])
+
+
+def test_a_rod_far_below_the_mesh_size_is_refused_before_gmsh(tmp_path, scene_dict, capsys):
+    """gmsh aborts the process on a rod of radius 1e-9 at h = 0.05."""
+    data = scene_dict("C")
+    data["interface"]["radius"] = 1e-9
+    path = tmp_path / "tiny.toml"
+    path.write_text(_toml(data))
+    _refused(capsys, ["run", str(path), "--method", "fe", "--h", "0.05", "--out", str(tmp_path / "out")],
+             r"interface.radius: 1e-09 is .* h, below 0.01 h: gmsh cannot mesh")
