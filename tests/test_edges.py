@@ -176,3 +176,12 @@ def test_a_rod_far_below_the_mesh_size_is_refused_before_gmsh(tmp_path, scene_di
     path.write_text(_toml(data))
     _refused(capsys, ["run", str(path), "--method", "fe", "--h", "0.05", "--out", str(tmp_path / "out")],
              r"interface.radius: 1e-09 is .* h, below 0.01 h: gmsh cannot mesh")
+
+
+def test_the_cells_that_ran_are_recorded():
+    """xfem on a disc runs gmsh triangles whatever --cell asked for, and
+    says so (run.json takes the cell from the methods' summaries)."""
+    from verification.closed_forms import pressurised_rod
+    from xdolfinx import xfem
+    result = xfem.solve(pressurised_rod().scene, 0.2, cell="quad")
+    assert result.summary()["discretisation"]["cell"] == "gmsh"

@@ -117,5 +117,7 @@ def run(scene_name: str, method_names: list[str], out: Path, *, h=None, degree=1
     files.write_json(out / "run.json", {**files.provenance(list(argv)), "scene": scene_name,
                                         "methods": methods.expand(method_names), "h": h, "degree": degree,
                                         "paper": paper, "petsc_options": petsc_options or {}, "dmax": dmax,
-                                        "basis": basis, "nodes": str(nodes_file) if nodes_file else None, "cell": cell})
+                                        "basis": basis, "nodes": str(nodes_file) if nodes_file else None,
+                                        "cell": next((s["discretisation"]["cell"] for s in summaries
+                                                      if "cell" in s["discretisation"]), cell)})
     return summaries

@@ -77,6 +77,14 @@ _TAG_UNCUT = {"minus": 1, "plus": 2}
 _TAG_BAND = 3
 
 
+def background_cell(scene: Scene, cell: str) -> str:
+    """The background cells that run for the requested ``cell``: structured
+    quads or triangles on a rectangle, gmsh triangles otherwise (a disc)."""
+    if cell not in ("quad", "triangle", "gmsh"):
+        raise DiscretisationError(f"xfem: cell must be 'quad', 'triangle' or 'gmsh' (got {cell!r})")
+    return cell if isinstance(scene.domain, Rectangle) else "gmsh"
+
+
 def background_mesh(scene: Scene, h: float, cell: str, counts=None, comm=MPI.COMM_WORLD, order: int = 1):
     """A mesh of the outer domain that ignores Γ, cells of size ≈ h (or
     ``counts`` cells per side): structured quadrilaterals or triangles on a
@@ -84,9 +92,7 @@ def background_mesh(scene: Scene, h: float, cell: str, counts=None, comm=MPI.COM
     choice for a disc), pins embedded as nodes, with geometry of ``order``
     1 or 2 (curved cells on a curved outer boundary: a polygonal rim would
     cap degree 2 at an O(h²) error, as it did before, rate 2.1)."""
-    if cell not in ("quad", "triangle", "gmsh"):
-        raise DiscretisationError(f"xfem: cell must be 'quad', 'triangle' or 'gmsh' (got {cell!r})")
-    if cell == "gmsh" or not isinstance(scene.domain, Rectangle):
+    if background_cell(scene, cell) == "gmsh":
         import meshes
         from dolfinx.io import gmshio
 
@@ -584,6 +590,6 @@ def solve(scene: Scene, h: float | None = None, *, degree: int = 1, paper: bool 
     timings.total = time.perf_counter() - start
     return Result(method=METHOD, scene=scene, degree=degree, dofs=4 * nblocks - len(unused), timings=timings,
                   solver=report, fields=with_history(scene, XFEMFields(space, x.reshape(-1, 4)), path), interface=path,
-                  discretisation={"h": h, "cell": cell, "degree": degree, "cells": int(space.num_cells),
+                  discretisation={"h": h, "cell": background_cell(scene, cell), "degree": degree, "cells": int(space.num_cells),
                                   "cut_cells": len(space.regions), "enriched_nodes": space.num_enriched,
                                   "gauss": space.gauss})
