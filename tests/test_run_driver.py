@@ -102,3 +102,14 @@ def test_efgm_nodes_from_a_file(tmp_path, capsys):
     assert main(["run", "A", "--method", "efgm", "--nodes", str(path), "--out", str(tmp_path / "bad")]) == 2
     err = capsys.readouterr().err
     assert err.startswith("error: --nodes:") and "must hold two columns (x y), it has 3" in err
+
+
+def test_the_advisor_picks_the_fastest_rung_that_reaches_each_target():
+    from verification.efficiency import advisor
+    rows = [{"method": "fe", "degree": 1, "h": 0.1, "dofs": 100, "total": 0.5, "error": 5e-3},
+            {"method": "xfem", "degree": 2, "h": 0.1, "dofs": 300, "total": 0.8, "error": 5e-4},
+            {"method": "fe", "degree": 1, "h": 0.05, "dofs": 400, "total": 0.9, "error": 8e-4}]
+    lines = advisor(rows).splitlines()
+    assert lines[2].startswith("| 1e-02 | fe | 1 | 0.1 |")  # both fe rungs reach 1e-2: the faster one
+    assert lines[3].startswith("| 1e-03 | xfem | 2 | 0.1 |")  # fe at 0.05 reaches it too, but later
+    assert "not reached" in lines[4]

@@ -63,6 +63,25 @@ def worst_error(scene, got: dict, ref: dict, exclude: float) -> tuple[float, str
     return err, f"{pid}:{q}"
 
 
+#: The errors a user asks the advisor about (worst relative RMS profile error).
+ADVISOR_TARGETS = (1e-2, 1e-3, 1e-4)
+
+
+def advisor(rows: list[dict], targets=ADVISOR_TARGETS) -> str:
+    """A Markdown table: for each target error, the measured rung (method,
+    degree, h) that reached it in the least wall time, or that none did."""
+    lines = ["| target error | method | degree | h | DOFs | total (s) | error |", "|---|---|---|---|---|---|---|"]
+    for target in targets:
+        hits = [r for r in rows if r["error"] <= target]
+        if not hits:
+            lines.append(f"| {target:.0e} | not reached on these ladders | | | | | |")
+            continue
+        r = min(hits, key=lambda row: row["total"])
+        lines.append(f"| {target:.0e} | {r['method']} | {r['degree']} | {r['h']:g} | {r['dofs']} | "
+                     f"{r['total']:.3g} | {r['error']:.2e} |")
+    return "\n".join(lines) + "\n"
+
+
 def soonest(rows: list[dict]) -> str:
     """Which variant reaches, first in wall time, the smallest error that
     every variant reaches on its ladder."""
@@ -116,7 +135,8 @@ def efficiency(scene_name: str, variants, ladders: dict, ref_h: float, exclude: 
             f"Reference: fe P2, h = {ref_h:g} ({ref_dofs} DOFs). Error: worst relative RMS difference over "
             f"the profiles, samples within {exclude:.3g} m of corners and of the ends of Γ left out. Times in s, "
             f"after a warm-up solve; a run under {REPEAT_BELOW:g} s is the fastest of {REPEATS}.\n\n"
-            f"{soonest(rows)}\n\n![efficiency {scene.name}](efficiency.png)\n\n"
+            f"{soonest(rows)}\n\nWhich method to pick for a target error (the fastest measured rung that "
+            f"reaches it):\n\n{advisor(rows)}\n![efficiency {scene.name}](efficiency.png)\n\n"
             + files.markdown_table(rows, COLUMNS, ["method", "degree", "h", "DOFs", "mesh", "assembly", "solve",
                                                    "total", "error", "worst at"]))
     files.write_text(out / "efficiency.md", text)
