@@ -223,6 +223,8 @@ def main(argv=None) -> int:
             with files.result_folder(args.out) as tmp:
                 final, args.out = args.out, tmp
                 _dispatch(args, argv)
+                if not (tmp / files.MANIFEST).exists():  # every result folder says what made it
+                    files.write_json(tmp / files.MANIFEST, files.provenance(list(argv)))
             log.info("wrote %s", final)
     except ContactError as exc:
         print(f"error: {exc}", file=sys.stderr)
