@@ -7,7 +7,7 @@ neither dolfinx nor gmsh (numpy only).  One submodule,
 imports petsc4py and is never imported by this package itself.
 """
 from .errors import ContactError, DiscretisationError, SceneError, SolverError
-from .laws import LAWS, LinearLaw, make_law
+from .laws import LAWS, CoulombLaw, LinearLaw, UnilateralLaw, make_law
 from .profiles import ProfileData, evaluate_quantities, sample_profile, sample_profiles
 from .result import Result, SolverReport, Timings
 from .scene import (BODIES, BodyForce, InterfaceProfile, LineProfile, Material, Pin, Pressure, Scene, Support,
@@ -16,8 +16,8 @@ from .geometry import CircleInterface, Disc, LevelSetInterface, LineInterface, R
 
 __all__ = [
     "BODIES", "BodyForce", "CircleInterface", "ContactError", "Disc", "DiscretisationError", "InterfaceProfile",
-    "LAWS", "LevelSetInterface", "LineInterface", "LineProfile", "LinearLaw", "Material", "Pin", "Pressure", "ProfileData", "Rectangle",
-    "Result", "Scene", "SceneError", "SolverError", "SolverReport", "Support", "Timings", "Torque", "Traction",
+    "CoulombLaw", "LAWS", "LevelSetInterface", "LineInterface", "LineProfile", "LinearLaw", "Material", "Pin", "Pressure", "ProfileData", "Rectangle",
+    "Result", "Scene", "SceneError", "SolverError", "SolverReport", "Support", "Timings", "Torque", "Traction", "UnilateralLaw",
     "builtin_scenes", "evaluate_quantities", "load_scene", "make_law", "sample_profile", "sample_profiles",
     "scene_from_dict", "scene_text",
 ]

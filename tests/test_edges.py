@@ -185,3 +185,8 @@ def test_the_cells_that_ran_are_recorded():
     from xdolfinx import xfem
     result = xfem.solve(pressurised_rod().scene, 0.2, cell="quad")
     assert result.summary()["discretisation"]["cell"] == "gmsh"
+
+
+def test_a_coarse_h_is_warned(tmp_path, capsys):
+    assert main(["run", "A", "--method", "efgm", "--h", "0.5", "--no-plots", "--out", str(tmp_path / "o")]) == 0
+    assert "fewer than 4 cells across" in capsys.readouterr().err

@@ -22,6 +22,7 @@ from pathlib import Path
 import numpy as np
 
 from contactcore import ContactError, load_scene, sample_profiles, scene_text
+from contactcore import tolerances as tol
 from contactcore.budget import check_budget
 from contactcore.scene import check_resolution, smallest_dimension
 
@@ -70,6 +71,10 @@ def run(scene_name: str, method_names: list[str], out: Path, *, h=None, degree=1
                           basis=basis)
     if h is not None:
         check_resolution(scene, h)
+    span = smallest_dimension(scene.domain)
+    if (h or scene.h or 0.0) > span / tol.MIN_CELLS_ACROSS and not paper:
+        log.warning("h = %g leaves fewer than %d cells across the domain's smallest dimension (%g): the profiles "
+                    "are resolved by a few cells only", h or scene.h, tol.MIN_CELLS_ACROSS, span)
     if not (paper or allow_large):
         for name in chosen:
             check_budget(scene, h or scene.h or smallest_dimension(scene.domain), degree, name)
