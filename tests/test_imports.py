@@ -26,3 +26,9 @@ def test_an_efgm_run_without_plots_loads_no_mesh_package_and_no_matplotlib(tmp_p
     loaded = _loaded(["run", "A", "--method", "efgm", "--h", "0.2", "--quiet", "--no-plots", "--out", str(out)])
     assert loaded == {"efgm"}, loaded
     assert (out / "efgm" / "profiles" / "A1.csv").is_file() and not (out / "plots").exists()
+
+
+def test_an_xfem_run_on_structured_cells_loads_neither_gmsh_nor_efgm(tmp_path):
+    loaded = _loaded(["run", "A", "--method", "xfem", "--h", "0.2", "--quiet", "--no-plots",
+                      "--out", str(tmp_path / "out")])
+    assert loaded == {"dolfinx", "ufl", "basix"}, loaded

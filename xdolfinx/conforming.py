@@ -42,7 +42,7 @@ from petsc4py import PETSc
 import meshes
 from contactcore import BODIES, DiscretisationError, Result, Scene, Timings
 from contactcore import tolerances as tol
-from contactcore.elasticity import lame
+from .elasticity import sigma
 from contactcore.assembly import Triplets
 from contactcore.cutcell import gauss01
 from contactcore.geometry import LevelSetInterface, Rectangle, tangent_of
@@ -73,12 +73,6 @@ def resolution(scene: Scene, h: float | None, paper: bool) -> float:
     if h is None or not h > 0:
         raise DiscretisationError(f"the resolution h must be > 0 (got {h}); the scene gives no default")
     return float(h)
-
-
-def sigma(w, E: float, nu: float, plane: str):
-    lam, mu = lame(E, nu, plane)
-    eps = ufl.sym(ufl.grad(w))
-    return 2.0 * mu * eps + lam * ufl.tr(eps) * ufl.Identity(2)
 
 
 def bilinear_form(scene: Scene, fm: FittedMesh, V):

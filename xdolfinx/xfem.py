@@ -49,7 +49,7 @@ from contactcore.scaling import dimensionless
 from contactcore.scene import BodyForce, Pressure, Torque, Traction, body_force
 
 from .contact_system import PETScSystem
-from .conforming import sigma
+from .elasticity import sigma
 from .evaluation import BodyCellLocator
 
 METHOD = "xfem"
