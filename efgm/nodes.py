@@ -86,23 +86,3 @@ def support_radii(nodes: NodeSet, dmax: float, rectangular: bool) -> np.ndarray:
     d, _ = cKDTree(nodes.x).query(nodes.x, k=k)
     r = dmax * d[:, -1]
     return np.column_stack([r, r]) if rectangular else r
-
-
-def background_cells(scene: Scene, h: float) -> tuple[np.ndarray, np.ndarray]:
-    """Lower and upper corners (C, 2) of square-ish cells of size ≈ h covering
-    the domain (for a disc: those that meet it)."""
-    dom = scene.domain
-    if isinstance(dom, Rectangle):
-        lo0, size = np.asarray(dom.corner, float), np.asarray(dom.size, float)
-    else:
-        lo0, size = np.asarray(dom.centre, float) - dom.radius, np.full(2, 2 * dom.radius)
-    n = np.maximum(1, np.round(size / h)).astype(int)
-    step = size / n
-    I, J = np.meshgrid(np.arange(n[0]), np.arange(n[1]), indexing="ij")
-    lo = lo0 + np.column_stack([I.ravel(), J.ravel()]) * step
-    hi = lo + step
-    if isinstance(dom, Disc):
-        centre_dist = np.hypot(*((lo + hi) / 2 - np.asarray(dom.centre)).T)
-        keep = centre_dist < dom.radius + np.linalg.norm(step) / 2
-        lo, hi = lo[keep], hi[keep]
-    return lo, hi

@@ -18,7 +18,7 @@ from verification.closed_forms import interface_patch, pressurised_rod, quadrati
 from verification.norms import max_errors, observed_rate
 from verification.sweeps import horizontal_patch
 from xdolfinx import conforming, xfem
-from xdolfinx.conforming import sigma
+from xdolfinx.elasticity import sigma
 
 PINS = {30.0: ((0.1, 0.1), (0.5, 0.1)), -65.0: ((0.1, 0.1), (0.1, 0.5)), 0.0: ((0.1, 0.1), (0.5, 0.1))}
 

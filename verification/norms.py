@@ -1,7 +1,7 @@
 """Error norms of any method's fields against an exact solution.
 
 The integral runs over the exact geometry (the domain split along the exact
-Γ, see :func:`efgm.method.volume_rule`) and samples each method only
+Γ, see :func:`contactcore.quadrature.volume_rule`) and samples each method only
 through its :class:`~contactcore.result.Fields`, so every method is measured
 the same way: ``‖u_h − u‖²_{L2} = Σ_q w_q |u_h(x_q) − u(x_q)|²`` with the
 body of each quadrature point known exactly.
@@ -10,13 +10,13 @@ from __future__ import annotations
 
 import numpy as np
 
+from contactcore.quadrature import volume_rule
 
 
 def l2_error(scene, fields, exact, *, h: float, gauss: int = 4) -> tuple[float, float]:
     """``(‖u_h − u‖, ‖u‖)`` in L2 with cells of size ``h`` (≤ the method's
     own resolution, so the quadrature resolves its error) and ``gauss``²
     points per cell."""
-    from efgm.method import volume_rule  # the exact cut-cell rule (imported when a norm is asked for)
     rule = volume_rule(scene, h, gauss)
     ue = exact.displacement(rule.points, rule.bodies)
     err = fields.displacement(rule.points, rule.bodies) - ue

@@ -1,0 +1,118 @@
+"""The scene's quadrature on its exact geometry: the domain split along Γ,
+its named boundaries, and Γ itself.
+
+Background cells of size ≈ h cover the domain; a cell that Γ (or a disc's
+rim) crosses is integrated piecewise by :mod:`contactcore.cutcell`'s fans,
+so every quadrature point knows its body exactly and
+
+    ∫_{Ω_b} f dx ≈ Σ_{q: body(q) = b} w_q f(x_q)
+
+holds to the rule's order whatever a method's mesh does.  EFGM integrates
+its weak form with these rules (the paper's background cells) and
+:mod:`verification.norms` measures every method's error with them, so
+neither depends on the other.  numpy only.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from contactcore import DiscretisationError, Scene
+from contactcore.cutcell import Rule, curve_rule, cut_cell, edge_crossings, tensor_cells
+from contactcore.geometry import CircleInterface, Disc, Rectangle
+
+
+def background_cells(scene: Scene, h: float) -> tuple[np.ndarray, np.ndarray]:
+    """Lower and upper corners (C, 2) of square-ish cells of size ≈ h covering
+    the domain (for a disc: those that meet it)."""
+    dom = scene.domain
+    if isinstance(dom, Rectangle):
+        lo0, size = np.asarray(dom.corner, float), np.asarray(dom.size, float)
+    else:
+        lo0, size = np.asarray(dom.centre, float) - dom.radius, np.full(2, 2 * dom.radius)
+    n = np.maximum(1, np.round(size / h)).astype(int)
+    step = size / n
+    I, J = np.meshgrid(np.arange(n[0]), np.arange(n[1]), indexing="ij")
+    lo = lo0 + np.column_stack([I.ravel(), J.ravel()]) * step
+    hi = lo + step
+    if isinstance(dom, Disc):
+        centre_dist = np.hypot(*((lo + hi) / 2 - np.asarray(dom.centre)).T)
+        keep = centre_dist < dom.radius + np.linalg.norm(step) / 2
+        lo, hi = lo[keep], hi[keep]
+    return lo, hi
+
+
+def _outer_circle(scene: Scene) -> CircleInterface | None:
+    dom = scene.domain
+    return CircleInterface(dom.centre, dom.radius) if isinstance(dom, Disc) else None
+
+
+def volume_rule(scene: Scene, h: float, n: int) -> Rule:
+    """Gauss points of the domain with the body of each, Γ followed exactly."""
+    lo, hi = background_cells(scene, h)
+    centre, half = (lo + hi) / 2, np.linalg.norm(hi - lo, axis=1) / 2
+    near_gamma = np.abs(scene.interface.phi(centre)) < half
+    outer = _outer_circle(scene)
+    near_rim = np.abs(outer.phi(centre)) < half if outer else np.zeros(len(lo), bool)
+    plain = ~near_gamma & ~near_rim
+    pts, w = tensor_cells(lo[plain], hi[plain], n)
+    body = np.repeat((scene.interface.phi(centre[plain]) >= 0).astype(int), n * n)
+    rules = [Rule(pts, w, body)]
+    for c in np.flatnonzero(~plain):
+        if near_rim[c]:
+            parts = [(s, p, wt) for s, p, wt in cut_cell(outer, lo[c], hi[c], n) if s < 0]
+            for _, p, wt in parts:
+                b = (scene.interface.phi(p) >= 0).astype(int)
+                if near_gamma[c] and len(np.unique(b[wt > 0])) > 1:
+                    raise DiscretisationError("a background cell is cut by both Γ and the outer boundary; "
+                                              "refine h")
+                rules.append(Rule(p, wt, b))
+        else:
+            rules += [Rule(p, wt, np.full(len(wt), int(s > 0))) for s, p, wt in cut_cell(scene.interface, lo[c],
+                                                                                        hi[c], n)]
+    rule = Rule.concatenate(rules)
+    keep = rule.weights > 0
+    return Rule(rule.points[keep], rule.weights[keep], rule.bodies[keep])
+
+
+def _edge(scene: Scene, name: str):
+    """End points of a rectangle edge, in the direction of +x (or +y)."""
+    c = scene.domain.corners
+    return {"bottom": (c[0], c[1]), "top": (c[3], c[2]), "left": (c[0], c[3]), "right": (c[1], c[2])}[name]
+
+
+def boundary_rule(scene: Scene, name: str, h: float, n: int):
+    """Gauss points on a named boundary: points, weights, outward normals,
+    bodies; pieces of length ≤ h broken where Γ meets the boundary."""
+    dom, itf = scene.domain, scene.interface
+    if isinstance(dom, Rectangle):
+        a, b = _edge(scene, name)
+        breaks = edge_crossings(itf, a, b)
+        pts, w, _ = curve_rule(lambda t: a + t[:, None] * (b - a), lambda t: np.broadcast_to(b - a, (len(t), 2)),
+                               float(np.linalg.norm(b - a)), h, n, breaks)
+        normals = np.tile(dom.outward_normal(name), (len(w), 1))
+    else:
+        c, R = np.asarray(dom.centre, float), dom.radius
+        chord = itf.chord(dom) if not isinstance(itf, CircleInterface) else None
+        breaks = [] if chord is None else list((np.arctan2(*(chord - c).T[::-1]) / (2 * np.pi)) % 1.0)
+        ring = lambda t: c + R * np.column_stack([np.cos(2 * np.pi * t), np.sin(2 * np.pi * t)])  # noqa: E731
+        pts, w, _ = curve_rule(ring, lambda t: 2 * np.pi * R * np.column_stack([-np.sin(2 * np.pi * t),
+                                                                              np.cos(2 * np.pi * t)]),
+                               2 * np.pi * R, h, n, breaks)
+        normals = (pts - c) / R
+    return pts, w, normals, scene.body_of(pts)
+
+
+def interface_rule(scene: Scene, h: float, n: int):
+    """Gauss points on Γ inside the domain: points, weights, normals."""
+    itf = scene.interface
+    if isinstance(itf, CircleInterface):
+        R = itf.radius
+        pts, w, _ = curve_rule(lambda t: itf.points_at_angles(2 * np.pi * t),
+                               lambda t: 2 * np.pi * R * np.column_stack([-np.sin(2 * np.pi * t),
+                                                                        np.cos(2 * np.pi * t)]),
+                               2 * np.pi * R, h, n)
+    else:
+        a, b = itf.chord(scene.domain)
+        pts, w, _ = curve_rule(lambda t: a + t[:, None] * (b - a), lambda t: np.broadcast_to(b - a, (len(t), 2)),
+                               float(np.linalg.norm(b - a)), h, n)
+    return pts, w, itf.normals(pts)
