@@ -211,11 +211,34 @@ def _dispatch(args, argv) -> None:
         timing(args.scene, args.method, args.degree, args.h, args.out, argv=argv)
 
 
+def _launcher(names: tuple[str, ...]) -> int | None:
+    """An integer that mpirun (Open MPI or any PMI launcher) put in the
+    environment, read without importing MPI."""
+    import os
+    return next((int(os.environ[n]) for n in names if n in os.environ), None)
+
+
+def _rank() -> int:
+    """This process's rank under mpirun (0 without it)."""
+    return _launcher(("OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK")) or 0
+
+
+def _check_serial() -> None:
+    """The drivers run in one process (issue 15 is open): under mpirun with
+    several ranks every command is refused, once, before any rank writes
+    into the same result folder."""
+    size = _launcher(("OMPI_COMM_WORLD_SIZE", "PMI_SIZE"))
+    if size is not None and size > 1:
+        raise ContactError(f"mpirun: the drivers run in one process only (this is rank {_rank()} of {size}); "
+                           "run them without mpirun")
+
+
 def main(argv=None) -> int:
     argv = sys.argv[1:] if argv is None else argv
     args = _parser().parse_args(argv)
     repeats = _configure_logging(args.verbosity)
     try:
+        _check_serial()
         _check_sizes(args)
         if getattr(args, "out", None) is None:
             _dispatch(args, argv)
@@ -227,7 +250,8 @@ def main(argv=None) -> int:
                     files.write_json(tmp / files.MANIFEST, files.provenance(list(argv)))
             log.info("wrote %s", final)
     except ContactError as exc:
-        print(f"error: {exc}", file=sys.stderr)
+        if _rank() == 0:  # under mpirun every rank meets the error: one line is enough
+            print(f"error: {exc}", file=sys.stderr)
         return 2
     finally:
         for line in repeats.summary():
