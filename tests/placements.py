@@ -58,3 +58,10 @@ def worst_sample(scene, got: dict, ref: dict) -> tuple[float, str, str]:
             value = float(np.max(np.abs(g - r)) / np.max(np.abs(r)))
             worst = max(worst, (value, pid, q))
     return worst
+
+
+def seeded_inclined(count: int, seed: int = 22) -> list[tuple[float, float]]:
+    """``count`` seeded ``(angle in ±30°, height in 0.35–0.65)`` placements
+    of a straight Γ in scene A (issue 22), 4 decimals."""
+    rng = np.random.default_rng(seed)
+    return [tuple(float(v) for v in np.round(rng.uniform((-30.0, 0.35), (30.0, 0.65)), 4)) for _ in range(count)]

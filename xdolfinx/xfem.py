@@ -60,12 +60,16 @@ METHOD = "xfem"
 #: in 2D, plus the curved-map factor); n = k + 2 leaves a margin.
 GAUSS_POINTS = {1: 3, 2: 4}
 
-#: An enriched node is kept when the part of its shape function's integral
-#: lying across Γ exceeds this fraction of its integral over the cut cells.
-#: Below it the enriched function lives on a sliver (a cut fraction → 0):
-#: its stiffness vanishes like the sliver's area and the matrix becomes
-#: singular; left out, the jump loses that fraction of one function.
-MIN_CUT_FRACTION = 1e-9
+#: An enriched node is kept when the stiffness of its shape function across
+#: Γ, ∫|∇N_J|² there, exceeds this fraction of its stiffness over the cells
+#: Γ reaches (issue 22: a fraction 1e-9 of ∫|N_J| dropped nodes whose
+#: gradient still reached across a corner h/2500 deep, σxy 85 % off in P2;
+#: a stiffness fraction 1e-9 still left 2.7 % on P2 triangles).  Below it
+#: the enriched function lives on a sliver: its stiffness vanishes with the
+#: fraction and the matrix becomes singular (MUMPS found null pivots at
+#: 1e-13 and 1e-14 on 3 of 24 inclined Γ in scene A, quads P2).  Left out,
+#: the node carries its own side's value across the sliver.
+MIN_CUT_FRACTION = 1e-11
 
 #: Cells whose centre lies within NEAR_FACTOR·|∇φ|·(circumradius) of Γ are
 #: examined for cuts: the φ of a line or a circle is the signed distance, so
@@ -159,8 +163,8 @@ class EnrichedFunctionSpace:
     def _classify(self) -> None:
         """Cut cells and their regions; enriched nodes; the band.
 
-        A node is enriched when part of its support lies on the other side
-        of Γ (see MIN_CUT_FRACTION): the nodes of cut cells, and also nodes
+        A node is enriched when part of its support's stiffness lies on the
+        other side of Γ (see MIN_CUT_FRACTION): the nodes of cut cells, and also nodes
         on Γ (H = +1) whose support reaches − cells when Γ runs along edges.
         """
         itf = self.scene.interface
@@ -175,12 +179,15 @@ class EnrichedFunctionSpace:
         general = isinstance(itf, LevelSetInterface)
         grad = np.linalg.norm(itf.grad_fn(centre), axis=1) if general else 1.0
         factor = NEAR_FACTOR["level set" if general else "distance"]
-        corner_sides = np.where(itf.phi(self.corners.reshape(-1, 2)) >= 0, 1, -1).reshape(len(centre), -1)
+        corner_phi = itf.phi(self.corners.reshape(-1, 2)).reshape(len(centre), -1)
+        corner_sides = np.where(corner_phi >= 0, 1, -1)
         near = np.flatnonzero((np.abs(phi_c) <= factor * grad * radius)
                               | (corner_sides.min(axis=1) != corner_sides.max(axis=1)))
+        self.cell_size = 2 * radius
+        # depth of each body's part of a cut cell (distance from Γ, φ/|∇φ|)
+        self.depth = np.zeros((len(centre), 2))
         across = np.zeros(len(self.node_side))
         total = np.zeros(len(self.node_side))
-        leak = np.zeros(len(self.node_side))
         self.gamma_rules = {}
         for c in near:
             gamma = interface_rule_in(itf, self.corners[c], self.gauss)
@@ -190,18 +197,15 @@ class EnrichedFunctionSpace:
                      if np.sum(w) > 0]
             if len({part[0] for part in parts}) > 1:
                 self.regions[c] = parts
+                self.depth[c] = self._depths(parts, self.corners[c], corner_phi[c])
             elif parts:
                 self.cell_side[c] = parts[0][0]
             dofs = self.cell_dofs[c]
-            for side, pts, w, N, _ in parts:
-                values = np.abs(N)
-                other = self.node_side[dofs] != side
-                total[dofs] += w @ values
-                across[dofs] += (w @ values) * other
-                leak[dofs[other]] = np.maximum(leak[dofs[other]], values[:, other].max(axis=0, initial=0.0))
+            for side, pts, w, N, dN in parts:
+                energy = w @ np.sum(dN ** 2, axis=-1)
+                total[dofs] += energy
+                across[dofs] += energy * (self.node_side[dofs] != side)
         self.enriched = across > MIN_CUT_FRACTION * np.where(total > 0, total, 1.0)
-        # a node left unenriched still carries its own side's value across Γ
-        self.sliver_leak = float(np.max(leak[~self.enriched], initial=0.0))
         if not self.enriched.any():
             raise DiscretisationError("xfem: Γ crosses no cell of the mesh")
         self.band = np.flatnonzero(np.any(self.enriched[self.cell_dofs], axis=1))
@@ -209,21 +213,40 @@ class EnrichedFunctionSpace:
             raise DiscretisationError("xfem: Γ reaches a curved cell of the rim (its cut-cell quadrature assumes "
                                       "straight cells there); refine h")
 
+    def _depths(self, parts, corners: np.ndarray, corner_phi: np.ndarray) -> np.ndarray:
+        """(2,): how far the − and + parts of a cut cell reach from Γ,
+        ``max s·φ/|∇φ|`` over the part's corners and quadrature points (the
+        corners give it exactly for a straight Γ, the points for a cap of a
+        curve that enters the cell through one edge)."""
+        itf = self.scene.interface
+        out = np.zeros(2)
+        for side, pts, *_ in parts:
+            x = np.vstack([pts, corners[np.where(corner_phi >= 0, 1, -1) == side]])
+            phi = itf.phi(x)
+            if isinstance(itf, LevelSetInterface):
+                phi = phi / np.linalg.norm(itf.grad_fn(x), axis=1)
+            out[(side + 1) // 2] = max(out[(side + 1) // 2], float(np.max(side * phi)))
+        return out
+
     def cells_resolving(self, side: int) -> np.ndarray:
         """The cells in which the field of the body on ``side`` (±1) is
         resolved, where that body's points are evaluated: the cells on its
-        side, and the cut cells whose nodes on the other side are all
-        enriched.  A cut cell with an unenriched node across Γ (its support
-        crossed by a sliver, MIN_CUT_FRACTION) holds only a sliver of the
-        body, in which that node carries the other side's value: a point of
-        the sliver is evaluated in the neighbouring cell that resolves the
-        body (the locator's nearest), the one-sided limit up to the sliver's
-        width (issue 19: σyy 2.6x off on a node 1e-7 inside the rod)."""
+        side, and the cut cells whose part on ``side`` reaches at least
+        tol.SLIVER_EVAL_DEPTH of the cell's diameter from Γ and whose nodes
+        on the other side are all enriched.  In a thinner part (a sliver)
+        the body's polynomial is fitted to the sliver alone: its enriched
+        unknowns are barely determined (σ on Γ 71x off in P2, issue 22), or
+        an unenriched node across Γ (MIN_CUT_FRACTION) carries the other
+        side's value (issue 19: σyy 2.6x off on a node 1e-7 inside the rod).
+        A point of a sliver is evaluated in the nearest cell that resolves
+        the body (the locator's), its polynomial extended by at most the
+        sliver's depth: the one-sided limit."""
         cut = np.zeros(self.num_cells, bool)
         cut[list(self.regions)] = True
         dofs = self.cell_dofs
         across_unenriched = np.any((self.node_side[dofs] != side) & ~self.enriched[dofs], axis=1)
-        return np.flatnonzero((~cut & (self.cell_side == side)) | (cut & ~across_unenriched))
+        thick = self.depth[:, (side + 1) // 2] >= tol.SLIVER_EVAL_DEPTH * self.cell_size
+        return np.flatnonzero((~cut & (self.cell_side == side)) | (cut & thick & ~across_unenriched))
 
     def _curved_cells(self) -> np.ndarray:
         """Cells whose geometry nodes are not the affine image (from the
@@ -582,10 +605,6 @@ def solve(scene: Scene, h: float | None = None, *, degree: int = 1, paper: bool 
     with timings.measure("solve"):
         x, path, report = solve_increments(scene, system)
     report.warnings += scene.interface_warnings(h)
-    if space.sliver_leak > tol.SLIVER_LEAK_WARN:
-        report.warnings.append(f"Γ leaves slivers too thin to enrich (MIN_CUT_FRACTION): a shape function that is "
-                               f"not enriched reaches {space.sliver_leak:.1e} across Γ, which perturbs the answer "
-                               "by about ten times that; move Γ or the mesh by a little")
     A.destroy()
     timings.total = time.perf_counter() - start
     return Result(method=METHOD, scene=scene, degree=degree, dofs=4 * nblocks - len(unused), timings=timings,
