@@ -68,7 +68,11 @@ GAUSS_POINTS = {1: 3, 2: 4}
 #: the enriched function lives on a sliver: its stiffness vanishes with the
 #: fraction and the matrix becomes singular (MUMPS found null pivots at
 #: 1e-13 and 1e-14 on 3 of 24 inclined Γ in scene A, quads P2).  Left out,
-#: the node carries its own side's value across the sliver.
+#: the node carries its own side's value across the sliver: against
+#: enriching down to 1e-12, measured on the first 15 inclined Γ of
+#: tests/test_xfem_inclined.py, σ at the profiles' samples moves by at most
+#: 0.34 % of the profile's scale (P2 quads; 1e-7 elsewhere) and u by 1.2e-8,
+#: within the agreement bounds, so the run gives no warning.
 MIN_CUT_FRACTION = 1e-11
 
 #: Cells whose centre lies within NEAR_FACTOR·|∇φ|·(circumradius) of Γ are
