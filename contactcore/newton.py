@@ -26,7 +26,8 @@ supports, pins and springs must hold every rigid-body mode
 symmetric while points slip, so every method factorises it with a general
 LU.  A failed increment (no convergence, a singular tangent) is halved up to
 ``MAX_CUTBACKS`` times; the state is committed only at converged steps.  A
-law without history (linear, unilateral) is path-independent: Newton goes
+law without history (linear, unilateral) is path-independent: unless the
+scene asks for the response along the path (``follow_path``), Newton goes
 to the last increment's factors in one step (a linear law in one solve),
 and follows the increments only if that step fails; the report records the
 steps solved.
@@ -307,7 +308,7 @@ def solve_increments(scene, system: ContactSystem) -> tuple[np.ndarray, Interfac
     health.check_springs(scene, system.interface.weights)
     health.check_restraint(scene, system.interface.points, system.interface.weights)
     newton = _Newton(scene, system)
-    if not scene.law.has_history:
+    if not (scene.law.has_history or scene.follow_path):
         newton = _final_state(scene, system, newton)
     else:
         for n in range(1, scene.increments + 1):

@@ -145,6 +145,11 @@ class Scene:
     loads: tuple[Load, ...] = ()
     profiles: tuple[Profile, ...] = ()
     increments: int = 1
+    #: Follow the increments even for a law without history, whose final
+    #: state does not depend on the path: the user asks for the response
+    #: along it (increments.csv, interface.csv).  A law with history always
+    #: follows the path.
+    follow_path: bool = False
     plane: str = "stress"
     h: float | None = None
     paper: dict[str, tuple[int, int]] = field(default_factory=dict)
@@ -435,6 +440,8 @@ def validate(scene: Scene) -> None:
         _check_material(scene.materials[body], scene.plane, f"materials.{body}")
     if isinstance(scene.increments, bool) or not isinstance(scene.increments, int) or scene.increments < 1:
         raise SceneError("increments", f"must be an integer >= 1 (got {scene.increments!r})")
+    if not isinstance(scene.follow_path, bool):
+        raise SceneError("follow_path", f"must be true or false (got {scene.follow_path!r})")
     if scene.h is not None:
         check_resolution(scene, scene.h, "h")
     for i, sup in enumerate(scene.supports):
@@ -467,7 +474,7 @@ class _Table:
 
     def get(self, key: str, kind: str, default=..., choices=None):
         """The value of ``key`` checked against ``kind``: number, int, str,
-        vector (two numbers), numbers, strings, table, tables."""
+        vector (two numbers), numbers, strings, bool, table, tables."""
         self.used.add(key)
         path = self._key(key)
         if key not in self.data:
@@ -480,6 +487,9 @@ class _Table:
         elif kind == "int":
             if isinstance(value, bool) or not isinstance(value, int):
                 raise SceneError(path, f"must be an integer (got {value!r})")
+        elif kind == "bool":
+            if not isinstance(value, bool):
+                raise SceneError(path, f"must be true or false (got {value!r})")
         elif kind == "str":
             if not isinstance(value, str):
                 raise SceneError(path, f"must be a string (got {value!r})")
@@ -610,6 +620,7 @@ def scene_from_dict(data: dict) -> Scene:
         plane=t.get("plane", "str", "stress"),
         h=t.get("h", "number", None),
         increments=t.get("increments", "int", 1),
+        follow_path=t.get("follow_path", "bool", False),
         domain=_read_domain(t.get("domain", "table")),
         interface=interface,
         law=law,

@@ -32,3 +32,18 @@ def test_an_xfem_run_on_structured_cells_loads_neither_gmsh_nor_efgm(tmp_path):
     loaded = _loaded(["run", "A", "--method", "xfem", "--h", "0.2", "--quiet", "--no-plots",
                       "--out", str(tmp_path / "out")])
     assert loaded == {"dolfinx", "ufl", "basix"}, loaded
+
+
+def test_an_fe_run_loads_no_efgm(tmp_path):
+    loaded = _loaded(["run", "A", "--method", "fe", "--h", "0.2", "--quiet", "--no-plots",
+                      "--out", str(tmp_path / "out")])
+    assert loaded == {"dolfinx", "ufl", "basix", "gmsh"}, loaded
+
+
+def test_the_error_norm_depends_on_no_method():
+    """One norm measures every method: its quadrature is the core's
+    (contactcore.quadrature), so importing it loads no method's package."""
+    code = (f"import sys\nsys.path.insert(0, {str(ROOT)!r})\nimport verification.norms\n"
+            f"print(sorted({{m.split('.')[0] for m in sys.modules}} & {{'efgm', 'xdolfinx', 'dolfinx', 'gmsh'}}))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True, cwd=ROOT)
+    assert out.stdout.strip().splitlines()[-1] == "[]", out.stdout

@@ -1,8 +1,13 @@
 """Only what a run needs (issue 24): a law without history is solved at
-the final load, not along the path."""
+the final load, not along the path, unless the scene asks for the path
+(``follow_path``); a law with history always follows it."""
+import tomllib
+
+import numpy as np
 import pytest
 
-from contactcore import load_scene, make_law
+import tolerances as tol
+from contactcore import SceneError, linear_solver, load_scene, make_law, scene_from_dict, scene_text
 from verification import methods
 
 
@@ -11,14 +16,72 @@ def _unilateral_A():
     return scene.with_changes(law=make_law({"type": "unilateral", "kN": scene.law.kN, "kT": scene.law.kT}))
 
 
+@pytest.fixture
+def factorisations(monkeypatch):
+    """Counts the matrices factorised: every method's solve goes through
+    contactcore.linear_solver.solve, which calls itself on the free block
+    when given ``rows`` (that outer call factorises nothing)."""
+    count = [0]
+    solve = linear_solver.solve
+
+    def counted(A, b, x, *, rows=None, **kwargs):
+        count[0] += rows is None
+        return solve(A, b, x, rows=rows, **kwargs)
+
+    monkeypatch.setattr(linear_solver, "solve", counted)
+    return count
+
+
+def _run(method, scene, h=0.2):
+    return methods.solver(method)(scene, h, estimate_condition=False)
+
+
 @pytest.mark.parametrize("method", ["fe", "xfem", "efgm"])
-def test_a_law_without_history_is_solved_once(method):
+def test_a_law_without_history_is_solved_once(method, factorisations):
     """Scene A, unilateral law, proportional load over 20 increments: at most
-    3 factorisations (Newton from the unloaded state at the final load).
-    That this is the answer at the end of the path is checked by
-    tests/test_friction.py: Coulomb with a huge μ follows the path and
-    equals the unilateral answer."""
+    3 factorisations (Newton from the unloaded state at the final load;
+    20 before issue 24), as counted at the solver and as reported."""
     scene = _unilateral_A()
-    result = methods.solver(method)(scene, 0.2)
-    assert result.solver.solves <= 3 and result.solver.increments == 1
+    result = _run(method, scene)
+    assert 1 <= factorisations[0] <= 3 and result.solver.solves == factorisations[0]
+    assert result.solver.increments == 1
     assert len(result.interface.steps) == 1 and result.interface.final.step == scene.increments
+
+
+@pytest.mark.parametrize("method", ["fe", "xfem", "efgm"])
+def test_the_path_asked_for_is_followed_and_ends_where_one_solve_does(method, factorisations):
+    """``follow_path`` gives every increment of the unilateral law; its last
+    state is the one-solve answer to round-off (the law has no history, so
+    the final state does not depend on the path)."""
+    scene = _unilateral_A()
+    once = _run(method, scene)
+    solved_once = factorisations[0]
+    path = _run(method, scene.with_changes(follow_path=True))
+    assert path.solver.increments == scene.increments == len(path.interface.steps)
+    assert [s.step for s in path.interface.steps] == list(range(1, scene.increments + 1))
+    assert factorisations[0] - solved_once == path.solver.solves >= scene.increments
+    a, b = once.interface.final, path.interface.final
+    assert np.array_equal(a.status, b.status)
+    for x, y in ((a.jump, b.jump), (a.traction, b.traction)):
+        assert np.max(np.abs(x - y)) <= tol.PATCH_ROUNDOFF * np.max(np.abs(x))
+
+
+def test_a_law_with_history_follows_its_path_whatever_follow_path_says(factorisations):
+    """C-coulomb (stick-slip, history in s) follows all its increments, one
+    factorisation per Newton iteration, and ``follow_path`` changes none of
+    its iteration counts (the dispatch is in the core: one method checks it)."""
+    scene = load_scene("C-coulomb")
+    runs = [_run("xfem", scene.with_changes(follow_path=f)) for f in (False, True)]
+    for r in runs:
+        assert r.solver.increments == scene.increments == len(r.interface.steps)
+    assert runs[0].solver.iterations == runs[1].solver.iterations
+    assert factorisations[0] == sum(r.solver.solves for r in runs) == 2 * sum(runs[0].solver.iterations)
+
+
+def test_follow_path_must_be_a_boolean():
+    data = tomllib.loads(scene_text("A"))
+    data["follow_path"] = "yes"
+    with pytest.raises(SceneError, match=r"^follow_path: must be true or false \(got 'yes'\)$"):
+        scene_from_dict(data)
+    data["follow_path"] = True
+    assert scene_from_dict(data).follow_path
