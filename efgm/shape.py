@@ -28,6 +28,7 @@ from ``scipy.spatial.cKDTree``.
 """
 from __future__ import annotations
 
+import itertools
 import os
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
@@ -125,6 +126,14 @@ def _spd_inverse(A: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return aug[:, :, m:], pivots
 
 
+def parallel_map(function, items):
+    """``function`` of each item, in order, on one thread per core (numpy
+    releases the GIL in its kernels); a generator, so a consumer can reduce
+    the results as they come."""
+    with ThreadPoolExecutor(os.cpu_count() or 1) as pool:
+        yield from pool.map(function, items)
+
+
 class MLS:
     """MLS shape functions of a node set.
 
@@ -194,6 +203,45 @@ class MLS:
         safe = np.maximum(idx, 0)
         return idx, points[:, :1] - self.nodes[safe, 0], points[:, 1:] - self.nodes[safe, 1]
 
+    def cell_candidates(self, lo: np.ndarray, hi: np.ndarray, bodies: np.ndarray | None = None) -> np.ndarray:
+        """The nodes (G, U), −1 after, whose support meets the box
+        ``[lo, hi]`` (G, 2) of each group of points and that the group's body
+        sees: a superset of the neighbours of every point in the box, found
+        once per box instead of once per point."""
+        centre, half = (lo + hi) / 2, (hi - lo) / 2
+        size = np.max(half, axis=1) if self.rectangular else np.hypot(half[:, 0], half[:, 1])
+        groups, found = [], []
+        for members, tree, reach, _ in self._classes:
+            hits = tree.query_ball_point(centre, size + reach, p=np.inf if self.rectangular else 2)
+            counts = np.fromiter(map(len, hits), int, len(hits))
+            groups.append(np.repeat(np.arange(len(hits)), counts))
+            found.append(members[np.fromiter(itertools.chain.from_iterable(hits), int, counts.sum())])
+        g, node = np.concatenate(groups), np.concatenate(found)
+        gap = np.maximum(np.abs(self.nodes[node] - centre[g]) - half[g], 0.0)  # box to node, per axis
+        if self.rectangular:
+            meet = np.all(gap < self.radii[node], axis=1)
+        else:
+            meet = np.hypot(gap[:, 0], gap[:, 1]) < self.radii[node]
+        if self.seen_from is not None and bodies is not None:
+            meet &= self.seen_from[node, np.asarray(bodies)[g]]
+        order = np.argsort(g[meet], kind="stable")
+        g, node = g[meet][order], node[meet][order]
+        counts = np.bincount(g, minlength=len(lo))
+        idx = np.full((len(lo), max(int(counts.max(initial=0)), 1)), -1)
+        idx[g, np.arange(len(g)) - np.repeat(np.cumsum(counts) - counts, counts)] = node
+        return idx
+
+    def cell_shape(self, points: np.ndarray, idx: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Φ (G, Q, U) and ∇Φ (G, Q, U, 2) at the points (G, Q, 2) of G
+        groups, of the candidate nodes ``idx`` (G, U) of each group
+        (:meth:`cell_candidates`, zero where a support misses a point)."""
+        G, Q, _ = points.shape
+        every = np.repeat(idx, Q, axis=0)
+        pts = points.reshape(-1, 2)
+        safe = np.maximum(every, 0)
+        phi, grad = self._shape(pts, every, pts[:, :1] - self.nodes[safe, 0], pts[:, 1:] - self.nodes[safe, 1])
+        return phi.reshape(G, Q, -1), grad.reshape(G, Q, -1, 2)
+
     def _weights(self, idx: np.ndarray, ox: np.ndarray, oy: np.ndarray):
         """``w``, ``∂w/∂x``, ``∂w/∂y`` (P, K) and each neighbour's largest radius."""
         r_node = self.radii[np.maximum(idx, 0)]
@@ -228,10 +276,9 @@ class MLS:
         bodies = None if bodies is None else np.broadcast_to(np.asarray(bodies, int), (len(points),))
         if len(points) <= CHUNK:
             return self._evaluate(points, bodies)
-        starts = range(0, len(points), CHUNK)
-        with ThreadPoolExecutor(os.cpu_count() or 1) as pool:
-            parts = list(pool.map(lambda i: self._evaluate(points[i:i + CHUNK],
-                                                           None if bodies is None else bodies[i:i + CHUNK]), starts))
+        parts = list(parallel_map(lambda i: self._evaluate(points[i:i + CHUNK],
+                                                           None if bodies is None else bodies[i:i + CHUNK]),
+                                  range(0, len(points), CHUNK)))
         K = max(p.index.shape[1] for p in parts)
 
         def padded(arr, fill):
@@ -244,6 +291,13 @@ class MLS:
 
     def _evaluate(self, points: np.ndarray, bodies: np.ndarray | None) -> ShapeValues:
         idx, ox, oy = self.neighbours(points, bodies)
+        return ShapeValues(idx, *self._shape(points, idx, ox, oy))
+
+    def _shape(self, points: np.ndarray, idx: np.ndarray, ox: np.ndarray, oy: np.ndarray):
+        """Φ (P, K) and ∇Φ (P, K, 2) of the nodes ``idx`` (−1 = padding) at
+        ``points``, offsets ``x − x_I`` given; a node whose support does not
+        hold the point (w = 0) gets zeros, so ``idx`` may be any superset of
+        the neighbours (the nodes that reach a whole cell, :meth:`cell_shape`)."""
         w, wdx, wdy, r_node = self._weights(idx, ox, oy)
         s = np.max(np.where(w > 0, r_node, 0.0), axis=1, initial=0.0)
         s[s == 0] = 1.0
@@ -260,7 +314,7 @@ class MLS:
             rhs[:, d + 1] += 1.0 / s  # ∂p̃(x)/∂x_d = e_{d+1}/s
             dgamma = np.einsum("pij,pj->pi", Ainv, rhs)
             grad[..., d] = np.einsum("pi,ipk->pk", dgamma, pI) * w + gp * dw
-        return ShapeValues(idx, phi, grad)
+        return phi, grad
 
     def _moments(self, w: np.ndarray, pI: np.ndarray) -> np.ndarray:
         """``Σ_K w p̃_i p̃_j`` (P, m, m) from the m(m+1)/2 distinct products."""

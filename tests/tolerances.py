@@ -213,3 +213,13 @@ EFGM_INCLINED_AGREE = 0.10
 #: fix R = 0.3 + 2e-6 h gave 0.90 (P1) and 2.6 (P2): σyy of the + body
 #: read inside the rod.  Scene A with Γ on a node row: P2 0.020.
 XFEM_NODE_AGREE = {1: 0.16, 2: 0.05}
+
+# --------------------------------------------------------------------------
+# EFGM stiffness accumulated per background cell (issue 16 item 2;
+# tests/test_efgm_assembly.py)
+# --------------------------------------------------------------------------
+
+#: The per-cell stiffness against the per-point ``Bᵀ W D B``, max |ΔK| over
+#: max |K|: the same sums in another order, so round-off (measured 2e-15 to
+#: 7e-15 on scenes A, B, C, both bases, both support shapes).
+EFGM_CELL_ASSEMBLY = 1e-12
