@@ -24,7 +24,7 @@ from scipy.spatial import cKDTree
 
 from contactcore.assembly import Triplets, blocks_to_csr, point_rows_to_csr, sum_csr
 
-from .shape import CHUNK, MLS, ShapeValues, parallel_map
+from .shape import CHUNK, MLS, ShapeValues, matmul, parallel_map
 
 #: A node is enriched (it carries Heaviside unknowns and takes part in the
 #: other body's fit) when its support reaches across Γ deeper than this
@@ -187,23 +187,24 @@ class Approximation:
             lambda c: blocks_to_csr(shape, *self._cell_stiffness(rule.points[c[0]], rule.weights[c[0]], c[1], tensor)),
             chunks)))
 
-    def _cell_functions(self, idx: np.ndarray, body: np.ndarray):
+    def _cell_functions(self, idx: np.ndarray, body: np.ndarray, grad: np.ndarray):
         """The functions of groups of one body each whose candidate nodes are
-        ``idx`` (G, U): the node's column in ``idx``, the first dof (−1 =
-        padding) and the coefficient of each (G, F): the U nodes, then the
-        non-zero enriched functions ``(H_b − H(x_J)) Φ_J``."""
-        G, U = idx.shape
-        cols, dofs, coeff = [np.broadcast_to(np.arange(U), (G, U))], [np.where(idx >= 0, 2 * idx, -1)], [idx >= 0]
+        ``idx`` (G, U), with gradients ``grad`` (G, Q, U, 2) at their points:
+        the first dof of each (G, F) (−1 = padding) and its gradients (G, Q,
+        F, 2): the U nodes, then the non-zero enriched functions
+        ``(H_b − H(x_J)) Φ_J``."""
+        dofs = np.where(idx >= 0, 2 * idx, -1)
         rows, base, c = self._enriched(idx, body)
-        if len(rows):
-            width = int(np.max(np.sum(c != 0, axis=1)))
-            order = np.argsort(c == 0, axis=1, kind="stable")[:, :width]  # the non-zero ones first
-            e_cols, e_dofs, e_coeff = np.zeros((G, width), int), np.full((G, width), -1), np.zeros((G, width))
-            e_cols[rows] = order
-            e_dofs[rows] = np.take_along_axis(base, order, axis=1)
-            e_coeff[rows] = np.take_along_axis(c, order, axis=1)
-            cols, dofs, coeff = cols + [e_cols], dofs + [e_dofs], coeff + [e_coeff]
-        return np.concatenate(cols, axis=1), np.concatenate(dofs, axis=1), np.concatenate(coeff, axis=1)
+        if len(rows) == 0:
+            return dofs, grad
+        width = int(np.max(np.sum(c != 0, axis=1)))
+        order = np.argsort(c == 0, axis=1, kind="stable")[:, :width]  # the non-zero ones first
+        e_dofs = np.full((len(idx), width), -1)
+        e_dofs[rows] = np.take_along_axis(base, order, axis=1)
+        e_grad = np.zeros(grad.shape[:2] + (width, 2))
+        e_grad[rows] = (np.take_along_axis(grad[rows], order[:, None, :, None], axis=2)
+                        * np.take_along_axis(c, order, axis=1)[:, None, :, None])
+        return np.concatenate([dofs, e_dofs], axis=1), np.concatenate([grad, e_grad], axis=2)
 
     def _cell_stiffness(self, points: np.ndarray, weights: np.ndarray, body: np.ndarray, tensor: np.ndarray):
         """Dofs (G, 2F) and dense stiffness blocks (G, 2F, 2F) of G groups of
@@ -211,14 +212,13 @@ class Approximation:
         ``K_ab[i, j] = Σ_de T_b[i, j, d, e] S_de[a, b]``,
         ``S_de = Σ_q w_q ∂_d Φ_a ∂_e Φ_b`` (:func:`strain_energy_tensor`)."""
         idx = self.mls.cell_candidates(points.min(axis=1), points.max(axis=1), body)
-        _, grad = self.mls.cell_shape(points, idx)
-        cols, dofs, coeff = self._cell_functions(idx, body)
-        g = np.take_along_axis(grad, cols[:, None, :, None], axis=2) * coeff[:, None, :, None]  # (G, Q, F, 2)
+        dofs, g = self._cell_functions(idx, body, self.mls.cell_shape(points, idx)[1])
         gx, gy = g[..., 0], g[..., 1]
         wgx, wgy = weights[..., None] * gx, weights[..., None] * gy
-        sxy = wgx.transpose(0, 2, 1) @ gy
-        S = [[wgx.transpose(0, 2, 1) @ gx, sxy], [sxy.transpose(0, 2, 1), wgy.transpose(0, 2, 1) @ gy]]
-        G, F = cols.shape
+        wgx, wgy = wgx.transpose(0, 2, 1), wgy.transpose(0, 2, 1)
+        sxy = matmul(wgx, gy)
+        S = [[matmul(wgx, gx), sxy], [sxy.transpose(0, 2, 1), matmul(wgy, gy)]]
+        G, F = dofs.shape
         T = tensor[body]
         blocks = np.zeros((G, F, 2, F, 2))
         for i, j, d, e in zip(*np.nonzero(np.any(tensor != 0, axis=0))):

@@ -30,6 +30,7 @@ from __future__ import annotations
 
 import itertools
 import os
+import threading
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 
@@ -95,6 +96,21 @@ def _basis(xi: np.ndarray, eta: np.ndarray, degree: int) -> np.ndarray:
     return np.stack(cols, axis=0)
 
 
+def _shift(v: np.ndarray, rho: np.ndarray, degree: int) -> np.ndarray:
+    """``M`` (…, m, m) with ``p(ρ (u − v)) = M p(u)`` for the monomials of
+    ``degree``: v (…, 2), ρ (…)."""
+    a, b = v[..., 0], v[..., 1]
+    one, zero = np.ones_like(a), np.zeros_like(a)
+    rows = [[one, zero, zero], [-rho * a, rho, zero], [-rho * b, zero, rho]]
+    if degree == 2:
+        r2 = rho * rho
+        rows = [row + [zero, zero, zero] for row in rows] + [
+            [r2 * a * a, -2 * r2 * a, zero, r2, zero, zero],
+            [r2 * a * b, -r2 * b, -r2 * a, zero, r2, zero],
+            [r2 * b * b, zero, -2 * r2 * b, zero, zero, r2]]
+    return np.stack([np.stack(row, axis=-1) for row in rows], axis=-2)
+
+
 @dataclass
 class ShapeValues:
     """Shape functions at P points: neighbour indices (P, K) (−1 = padding),
@@ -124,6 +140,20 @@ def _spd_inverse(A: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
             factors[:, k] = 0.0
             aug -= factors[:, :, None] * aug[:, k:k + 1, :]
     return aug[:, :, m:], pivots
+
+
+#: One BLAS call at a time: numpy's matmul calls BLAS, and the serial
+#: OpenBLAS build gives wrong answers when called from two threads at once
+#: (measured here: singular moment matrices in a threaded assembly that
+#: is regular serially).  The products are a small part of a chunk's work;
+#: the rest runs in parallel (:func:`parallel_map`).
+_BLAS = threading.Lock()
+
+
+def matmul(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """``a @ b`` under :data:`_BLAS` (einsum, BLAS-free, is 5-15x slower here)."""
+    with _BLAS:
+        return a @ b
 
 
 def parallel_map(function, items):
@@ -231,17 +261,6 @@ class MLS:
         idx[g, np.arange(len(g)) - np.repeat(np.cumsum(counts) - counts, counts)] = node
         return idx
 
-    def cell_shape(self, points: np.ndarray, idx: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """Φ (G, Q, U) and ∇Φ (G, Q, U, 2) at the points (G, Q, 2) of G
-        groups, of the candidate nodes ``idx`` (G, U) of each group
-        (:meth:`cell_candidates`, zero where a support misses a point)."""
-        G, Q, _ = points.shape
-        every = np.repeat(idx, Q, axis=0)
-        pts = points.reshape(-1, 2)
-        safe = np.maximum(every, 0)
-        phi, grad = self._shape(pts, every, pts[:, :1] - self.nodes[safe, 0], pts[:, 1:] - self.nodes[safe, 1])
-        return phi.reshape(G, Q, -1), grad.reshape(G, Q, -1, 2)
-
     def _weights(self, idx: np.ndarray, ox: np.ndarray, oy: np.ndarray):
         """``w``, ``∂w/∂x``, ``∂w/∂y`` (P, K) and each neighbour's largest radius."""
         r_node = self.radii[np.maximum(idx, 0)]
@@ -256,7 +275,7 @@ class MLS:
             w, dwr = self.weight(d / r_node)
             scale = dwr / (r_node * np.where(d > 0, d, 1.0))
             wdx, wdy = scale * ox, scale * oy
-        pad = idx < 0
+        pad = np.broadcast_to(idx < 0, w.shape)
         for arr in (w, wdx, wdy):
             arr[pad] = 0.0
         return w, wdx, wdy, r_node
@@ -290,40 +309,55 @@ class MLS:
                            np.concatenate([padded(p.grad, 0.0) for p in parts]))
 
     def _evaluate(self, points: np.ndarray, bodies: np.ndarray | None) -> ShapeValues:
-        idx, ox, oy = self.neighbours(points, bodies)
-        return ShapeValues(idx, *self._shape(points, idx, ox, oy))
+        idx, _, _ = self.neighbours(points, bodies)
+        phi, grad = self.cell_shape(points[:, None, :], idx)
+        return ShapeValues(idx, phi[:, 0], grad[:, 0])
 
-    def _shape(self, points: np.ndarray, idx: np.ndarray, ox: np.ndarray, oy: np.ndarray):
-        """Φ (P, K) and ∇Φ (P, K, 2) of the nodes ``idx`` (−1 = padding) at
-        ``points``, offsets ``x − x_I`` given; a node whose support does not
-        hold the point (w = 0) gets zeros, so ``idx`` may be any superset of
-        the neighbours (the nodes that reach a whole cell, :meth:`cell_shape`)."""
-        w, wdx, wdy, r_node = self._weights(idx, ox, oy)
-        s = np.max(np.where(w > 0, r_node, 0.0), axis=1, initial=0.0)
+    def cell_shape(self, points: np.ndarray, idx: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Φ (G, Q, U) and ∇Φ (G, Q, U, 2) at the points (G, Q, 2) of G
+        groups, of the nodes ``idx`` (G, U) of each (−1 = padding): a group
+        of one point and its neighbours (:meth:`evaluate`), or the points of
+        a cell and its candidates (:meth:`cell_candidates`; a node whose
+        support misses a point has w = 0 there, so Φ = 0).
+
+        The moments are summed in a basis common to the group, ``p̂_I = p((x_I − c)/s_g)`` (c the group's mean point, s_g its
+        largest radius), then moved to each point's own (module doc):
+        ``p̃ = M p̂``, ``M = Λ(s_g/s) T((x − c)/s_g)`` (:func:`_shift`),
+        ``A = M Â Mᵀ`` and ``∂A = M ∂Â Mᵀ`` with ``Â = Σ_I w_I p̂_I p̂_Iᵀ``.
+        For a group of one point, c = x, s_g = s and M = I."""
+        G, Q, _ = points.shape
+        m = self.m
+        safe = np.maximum(idx, 0)
+        ox = points[..., :1] - self.nodes[safe, 0][:, None, :]  # (G, Q, U)
+        oy = points[..., 1:] - self.nodes[safe, 1][:, None, :]
+        w, wdx, wdy, r_node = self._weights(idx[:, None, :], ox, oy)
+        s = np.max(np.where(w > 0, r_node, 0.0), axis=2, initial=0.0)
         s[s == 0] = 1.0
-        pI = _basis(-ox / s[:, None], -oy / s[:, None], self.degree)  # p̃(x_I), (m, P, K)
-        A = self._moments(w, pI)
+        s_g = np.max(np.where(idx >= 0, r_node[:, 0], 0.0), axis=1, initial=0.0)
+        s_g[s_g == 0] = 1.0
+        centre = points.mean(axis=1)
+        pI = _basis(*((self.nodes[safe] - centre[:, None, :]) / s_g[:, None, None]).transpose(2, 0, 1),
+                    self.degree).transpose(1, 2, 0)  # p̂_I, (G, U, m)
+        pp = (pI[..., :, None] * pI[..., None, :]).reshape(G, -1, m * m)
+        M = _shift((points - centre[:, None, :]) / s_g[:, None, None], s_g[:, None] / s, self.degree).reshape(-1, m, m)
+
+        Mt, pIt = M.transpose(0, 2, 1), pI.transpose(0, 2, 1)
+
+        def moved(weights):  # M (Σ_I w_I p̂_I p̂_Iᵀ) Mᵀ, (G·Q, m, m)
+            return matmul(matmul(M, matmul(weights, pp).reshape(-1, m, m)), Mt)
+
+        A = moved(w)
         Ainv, pivots = _spd_inverse(A)
-        self._check_regular(points, A, pivots, w)
-        gamma = Ainv[:, :, 0]  # A⁻¹ p̃(x), p̃(x) = e₁
-        gp = np.einsum("pi,ipk->pk", gamma, pI)
-        phi = gp * w
+        self._check_regular(points.reshape(-1, 2), A, pivots, w.reshape(G * Q, -1))
+        gamma = Ainv[:, :, :1]  # A⁻¹ p̃(x), p̃(x) = e₁
+        gp = matmul(matmul(Mt, gamma).reshape(G, Q, m), pIt)  # γᵀ M p̂_I
         grad = np.empty(w.shape + (2,))
         for d, dw in enumerate((wdx, wdy)):
-            rhs = -np.einsum("pij,pj->pi", self._moments(dw, pI), gamma)
-            rhs[:, d + 1] += 1.0 / s  # ∂p̃(x)/∂x_d = e_{d+1}/s
-            dgamma = np.einsum("pij,pj->pi", Ainv, rhs)
-            grad[..., d] = np.einsum("pi,ipk->pk", dgamma, pI) * w + gp * dw
-        return phi, grad
-
-    def _moments(self, w: np.ndarray, pI: np.ndarray) -> np.ndarray:
-        """``Σ_K w p̃_i p̃_j`` (P, m, m) from the m(m+1)/2 distinct products."""
-        A = np.empty((w.shape[0], self.m, self.m))
-        for i in range(self.m):
-            wi = w * pI[i]
-            for j in range(i, self.m):
-                A[:, i, j] = A[:, j, i] = np.sum(wi * pI[j], axis=1)
-        return A
+            rhs = -matmul(moved(dw), gamma)
+            rhs[:, d + 1, 0] += 1.0 / s.ravel()  # ∂p̃(x)/∂x_d = e_{d+1}/s
+            dbeta = matmul(Mt, matmul(Ainv, rhs)).reshape(G, Q, m)  # Mᵀ ∂γ, ∂γ = A⁻¹ rhs
+            grad[..., d] = matmul(dbeta, pIt) * w + gp * dw
+        return gp * w, grad
 
     def regularity(self, A, pivots) -> np.ndarray:
         """``det(A) / Π A_ii``: the determinant of A scaled to a unit
