@@ -96,6 +96,15 @@ def _basis(xi: np.ndarray, eta: np.ndarray, degree: int) -> np.ndarray:
     return np.stack(cols, axis=0)
 
 
+#: For m = 3, 6: the position among the distinct products ``p_i p_j``
+#: (i ≤ j, row by row) of each entry of an m × m symmetric matrix.
+_SYMMETRIC = {}
+for _m in (3, 6):
+    _SYMMETRIC[_m] = np.zeros((_m, _m), int)
+    _SYMMETRIC[_m][np.triu_indices(_m)] = np.arange(_m * (_m + 1) // 2)
+    _SYMMETRIC[_m] = np.maximum(_SYMMETRIC[_m], _SYMMETRIC[_m].T).ravel()
+
+
 def _shift(v: np.ndarray, rho: np.ndarray, degree: int) -> np.ndarray:
     """``M`` (…, m, m) with ``p(ρ (u − v)) = M p(u)`` for the monomials of
     ``degree``: v (…, 2), ρ (…)."""
@@ -320,8 +329,9 @@ class MLS:
         a cell and its candidates (:meth:`cell_candidates`; a node whose
         support misses a point has w = 0 there, so Φ = 0).
 
-        The moments are summed in a basis common to the group, ``p̂_I = p((x_I − c)/s_g)`` (c the group's mean point, s_g its
-        largest radius), then moved to each point's own (module doc):
+        The moments are summed in a basis common to the group,
+        ``p̂_I = p((x_I − c)/s_g)`` (c the group's mean point, s_g its
+        largest radius), by matrix products, then moved to each point's own (module doc):
         ``p̃ = M p̂``, ``M = Λ(s_g/s) T((x − c)/s_g)`` (:func:`_shift`),
         ``A = M Â Mᵀ`` and ``∂A = M ∂Â Mᵀ`` with ``Â = Σ_I w_I p̂_I p̂_Iᵀ``.
         For a group of one point, c = x, s_g = s and M = I."""
@@ -336,28 +346,48 @@ class MLS:
         s_g = np.max(np.where(idx >= 0, r_node[:, 0], 0.0), axis=1, initial=0.0)
         s_g[s_g == 0] = 1.0
         centre = points.mean(axis=1)
-        pI = _basis(*((self.nodes[safe] - centre[:, None, :]) / s_g[:, None, None]).transpose(2, 0, 1),
-                    self.degree).transpose(1, 2, 0)  # p̂_I, (G, U, m)
-        pp = (pI[..., :, None] * pI[..., None, :]).reshape(G, -1, m * m)
-        M = _shift((points - centre[:, None, :]) / s_g[:, None, None], s_g[:, None] / s, self.degree).reshape(-1, m, m)
+        pI_m = _basis(*((self.nodes[safe] - centre[:, None, :]) / s_g[:, None, None]).transpose(2, 0, 1),
+                      self.degree)  # p̂_I, (m, G, U)
+        pI, pIt = pI_m.transpose(1, 2, 0), pI_m.transpose(1, 0, 2)
+        if Q == 1:  # M = I; one point per group: no products p̂_i p̂_j kept per node
+            M = Mt = None
 
-        Mt, pIt = M.transpose(0, 2, 1), pI.transpose(0, 2, 1)
+            def moved(weights):  # Σ_I w_I p̂_I p̂_Iᵀ, (G, m, m)
+                return self._moments(weights[:, 0], pI_m)
+        else:
+            upper = np.triu_indices(m)
+            pp = pI[..., upper[0]] * pI[..., upper[1]]  # the distinct products p̂_i p̂_j, (G, U, m(m+1)/2)
+            M = _shift((points - centre[:, None, :]) / s_g[:, None, None], s_g[:, None] / s, self.degree)
+            M = M.reshape(-1, m, m)
+            Mt = M.transpose(0, 2, 1)
 
-        def moved(weights):  # M (Σ_I w_I p̂_I p̂_Iᵀ) Mᵀ, (G·Q, m, m)
-            return matmul(matmul(M, matmul(weights, pp).reshape(-1, m, m)), Mt)
+            def moved(weights):  # M (Σ_I w_I p̂_I p̂_Iᵀ) Mᵀ, (G·Q, m, m)
+                return matmul(matmul(M, matmul(weights, pp)[..., _SYMMETRIC[m]].reshape(-1, m, m)), Mt)
+
+        def back(v):  # Mᵀ v for v (G·Q, m, 1), as (G, Q, m)
+            return (v if M is None else matmul(Mt, v)).reshape(G, Q, m)
 
         A = moved(w)
         Ainv, pivots = _spd_inverse(A)
         self._check_regular(points.reshape(-1, 2), A, pivots, w.reshape(G * Q, -1))
         gamma = Ainv[:, :, :1]  # A⁻¹ p̃(x), p̃(x) = e₁
-        gp = matmul(matmul(Mt, gamma).reshape(G, Q, m), pIt)  # γᵀ M p̂_I
+        gp = matmul(back(gamma), pIt)  # γᵀ M p̂_I
         grad = np.empty(w.shape + (2,))
         for d, dw in enumerate((wdx, wdy)):
             rhs = -matmul(moved(dw), gamma)
             rhs[:, d + 1, 0] += 1.0 / s.ravel()  # ∂p̃(x)/∂x_d = e_{d+1}/s
-            dbeta = matmul(Mt, matmul(Ainv, rhs)).reshape(G, Q, m)  # Mᵀ ∂γ, ∂γ = A⁻¹ rhs
-            grad[..., d] = matmul(dbeta, pIt) * w + gp * dw
+            grad[..., d] = matmul(back(matmul(Ainv, rhs)), pIt) * w + gp * dw  # Mᵀ ∂γ, ∂γ = A⁻¹ rhs
         return gp * w, grad
+
+    def _moments(self, w: np.ndarray, pI: np.ndarray) -> np.ndarray:
+        """``Σ_K w p̂_i p̂_j`` (P, m, m) of w (P, K), p̂ (m, P, K), from the
+        m(m+1)/2 distinct products."""
+        A = np.empty((w.shape[0], self.m, self.m))
+        for i in range(self.m):
+            wi = w * pI[i]
+            for j in range(i, self.m):
+                A[:, i, j] = A[:, j, i] = np.sum(wi * pI[j], axis=1)
+        return A
 
     def regularity(self, A, pivots) -> np.ndarray:
         """``det(A) / Π A_ii``: the determinant of A scaled to a unit
