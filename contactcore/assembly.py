@@ -52,12 +52,13 @@ def blocks_to_csr(shape: tuple[int, int], dofs: np.ndarray, blocks: np.ndarray) 
     at its dof, and the product's dense row accumulator sums the
     duplicates without sorting them (entries that sum to zero are dropped)."""
     E, n = dofs.shape
-    cols = np.broadcast_to(np.maximum(dofs, 0)[:, None, :], (E, n, n)).ravel()
+    index = np.int32 if E * n * n < np.iinfo(np.int32).max else np.int64  # scipy's own choice: no conversion
+    cols = np.broadcast_to(np.maximum(dofs, 0).astype(index)[:, None, :], (E, n, n)).ravel()
     vals = np.where(dofs[:, None, :] >= 0, blocks, 0.0).ravel()
-    M = sp.csr_matrix((vals, cols, np.arange(0, E * n * n + 1, n)), shape=(E * n, shape[1]))
+    M = sp.csr_matrix((vals, cols, np.arange(0, E * n * n + 1, n, dtype=index)), shape=(E * n, shape[1]))
     used = np.flatnonzero(dofs.ravel() >= 0)
-    P = sp.csr_matrix((np.ones(len(used)), (used, dofs.ravel()[used])), shape=(E * n, shape[0]))
-    return (P.T @ M).tocsr()
+    PT = sp.csr_matrix((np.ones(len(used)), (dofs.ravel()[used], used)), shape=(shape[0], E * n))
+    return PT @ M  # both CSR: a CSC factor would convert M first
 
 
 def sum_csr(shape: tuple[int, int], parts: list[sp.csr_matrix]) -> sp.csr_matrix:

@@ -166,7 +166,12 @@ class EFGMSystem:
     def __init__(self, K, C, g, owner, loads, interface: InterfaceOperator, scale: float, coords, reach,
                  estimate_condition, what):
         self.scale = scale
-        self.A = sp.bmat([[K, self.scale * C.T], [self.scale * C, None]], format="csr")
+        n, c = K.shape[0], C.shape[0]
+        K = K.tocsr()  # padded to the full size without a copy of its entries, plus the constraint blocks
+        padded = sp.csr_matrix((K.data, K.indices, np.concatenate([K.indptr, np.full(c, K.indptr[-1])])),
+                               shape=(n + c, n + c))
+        self.A = (padded + sp.bmat([[sp.csr_matrix((n, n)), self.scale * C.T], [self.scale * C, None]],
+                                   format="csr")).tocsr()
         self.size = self.A.shape[0]
         self.ndofs = K.shape[0]
         self.C_values, self.owner, self.loads = g, owner, loads

@@ -216,13 +216,12 @@ class Approximation:
         gx, gy = g[..., 0], g[..., 1]
         wgx, wgy = weights[..., None] * gx, weights[..., None] * gy
         wgx, wgy = wgx.transpose(0, 2, 1), wgy.transpose(0, 2, 1)
-        sxy = matmul(wgx, gy)
-        S = [[matmul(wgx, gx), sxy], [sxy.transpose(0, 2, 1), matmul(wgy, gy)]]
         G, F = dofs.shape
-        T = tensor[body]
-        blocks = np.zeros((G, F, 2, F, 2))
-        for i, j, d, e in zip(*np.nonzero(np.any(tensor != 0, axis=0))):
-            blocks[:, :, i, :, j] += T[:, i, j, d, e, None, None] * S[d][e]
+        S = np.empty((G, 2, 2, F, F))  # S[:, d, e] = Σ_q w_q ∂_d Φ_a ∂_e Φ_b
+        S[:, 0, 0], S[:, 0, 1], S[:, 1, 1] = matmul(wgx, gx), matmul(wgx, gy), matmul(wgy, gy)
+        S[:, 1, 0] = S[:, 0, 1].transpose(0, 2, 1)
+        blocks = matmul(tensor[body].reshape(G, 4, 4), S.reshape(G, 4, F * F)).reshape(G, 2, 2, F, F)
+        blocks = blocks.transpose(0, 3, 1, 4, 2)  # (G, F, 2, F, 2): [a, i, b, j]
         dofs = np.where(dofs[:, :, None] >= 0, dofs[:, :, None] + np.arange(2), -1)
         return dofs.reshape(G, 2 * F), blocks.reshape(G, 2 * F, 2 * F)
 
