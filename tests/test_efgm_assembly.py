@@ -80,3 +80,27 @@ def test_blocks_to_csr_sums_dense_blocks():
     assert total.has_sorted_indices and np.allclose(total.toarray(), dense, rtol=0,
                                                     atol=1e-14 * np.abs(dense).max())
     assert sum_csr((9, 9), []).nnz == 0 and isinstance(sum_csr((9, 9), []), sp.csr_matrix)
+
+
+def test_newton_reuses_the_shape_functions(monkeypatch):
+    """The coulomb law's increments and Newton iterations reuse K, Γ's
+    operator and the loads: no shape function is evaluated while they run."""
+    during, inside = [], []
+    cell_shape, solve_increments = MLS.cell_shape, method.solve_increments
+
+    def counting(self, points, idx):
+        during.append(bool(inside))
+        return cell_shape(self, points, idx)
+
+    def marked(*args, **kwargs):
+        inside.append(True)
+        try:
+            return solve_increments(*args, **kwargs)
+        finally:
+            inside.pop()
+
+    monkeypatch.setattr(MLS, "cell_shape", counting)
+    monkeypatch.setattr(method, "solve_increments", marked)
+    result = method.solve(load_scene("C-coulomb"), 0.2)
+    assert result.solver.increments > 1 and sum(result.solver.iterations) > result.solver.increments
+    assert during and not any(during)
