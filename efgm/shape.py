@@ -60,13 +60,11 @@ _NEIGHBOUR_SLACK = 2
 
 def cubic_spline(r):
     """``w(r)`` and ``dw/dr`` of the cubic spline (support r < 1)."""
-    r2 = r * r
     inner = r <= 0.5
-    w = np.where(inner, 2 / 3 - 4 * r2 + 4 * r2 * r, 4 / 3 - 4 * r + 4 * r2 - 4 / 3 * r2 * r)
-    dw = np.where(inner, -8 * r + 12 * r2, -4 + 8 * r - 4 * r2)
-    outside = r >= 1.0
-    w[outside] = 0.0
-    dw[outside] = 0.0
+    t = np.maximum(1.0 - r, 0.0)  # the outer piece is 4/3 (1 − r)³: zero from r = 1 on
+    t2 = t * t
+    w = np.where(inner, 2 / 3 - 4 * r * r * t, 4 / 3 * t2 * t)
+    dw = np.where(inner, r * (12 * r - 8), -4 * t2)
     return w, dw
 
 
@@ -284,10 +282,8 @@ class MLS:
             w, dwr = self.weight(d / r_node)
             scale = dwr / (r_node * np.where(d > 0, d, 1.0))
             wdx, wdy = scale * ox, scale * oy
-        pad = np.broadcast_to(idx < 0, w.shape)
-        for arr in (w, wdx, wdy):
-            arr[pad] = 0.0
-        return w, wdx, wdy, r_node
+        used = idx >= 0
+        return w * used, wdx * used, wdy * used, r_node
 
     def evaluate(self, points, bodies=None) -> ShapeValues:
         """Φ and ∇Φ at ``points`` (P, 2) of ``bodies`` (P,) (needed with
