@@ -207,7 +207,7 @@ class Approximation:
         return np.concatenate([dofs, e_dofs], axis=1), np.concatenate([grad, e_grad], axis=2)
 
     def _cell_stiffness(self, points: np.ndarray, weights: np.ndarray, body: np.ndarray, tensor: np.ndarray):
-        """Dofs (G, 2F) and dense stiffness blocks (G, 2F, 2F) of G groups of
+        """Dofs (G, F, 2) and dense stiffness blocks (G, F, 2, F, 2) of G groups of
         points (G, Q, 2), weights (G, Q), one body each:
         ``K_ab[i, j] = Σ_de T_b[i, j, d, e] S_de[a, b]``,
         ``S_de = Σ_q w_q ∂_d Φ_a ∂_e Φ_b`` (:func:`strain_energy_tensor`)."""
@@ -221,9 +221,8 @@ class Approximation:
         S[:, 0, 0], S[:, 0, 1], S[:, 1, 1] = matmul(wgx, gx), matmul(wgx, gy), matmul(wgy, gy)
         S[:, 1, 0] = S[:, 0, 1].transpose(0, 2, 1)
         blocks = matmul(tensor[body].reshape(G, 4, 4), S.reshape(G, 4, F * F)).reshape(G, 2, 2, F, F)
-        blocks = blocks.transpose(0, 3, 1, 4, 2)  # (G, F, 2, F, 2): [a, i, b, j]
         dofs = np.where(dofs[:, :, None] >= 0, dofs[:, :, None] + np.arange(2), -1)
-        return dofs.reshape(G, 2 * F), blocks.reshape(G, 2 * F, 2 * F)
+        return dofs, blocks.transpose(0, 3, 1, 4, 2)  # (G, F, 2) and (G, F, 2, F, 2): [a, i, b, j]
 
 
 #: ``E[k, i, d]``: the strain component k (ε_xx, ε_yy, γ_xy) of the

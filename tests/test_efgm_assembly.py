@@ -104,3 +104,13 @@ def test_newton_reuses_the_shape_functions(monkeypatch):
     result = method.solve(load_scene("C-coulomb"), 0.2)
     assert result.solver.increments > 1 and sum(result.solver.iterations) > result.solver.increments
     assert during and not any(during)
+
+
+def test_blocks_to_csr_reads_shaped_local_dofs():
+    """dofs (E, nodes, 2) with blocks (E, nodes, 2, nodes, 2), as a strided
+    view: the same matrix as the flattened (E, n, n) blocks."""
+    rng = np.random.default_rng(4)
+    dofs = rng.integers(-1, 12, (6, 3, 2))
+    blocks = rng.normal(size=(6, 2, 2, 3, 3)).transpose(0, 3, 1, 4, 2)
+    flat = blocks_to_csr((12, 12), dofs.reshape(6, 6), blocks.reshape(6, 6, 6))
+    assert abs(blocks_to_csr((12, 12), dofs, blocks) - flat).max() == 0.0
