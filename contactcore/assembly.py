@@ -41,3 +41,41 @@ def point_rows_to_csr(ncols: int, widths: tuple[int, ...], cols: np.ndarray, val
     P = cols.shape[0]
     indptr = np.concatenate([[0], np.cumsum(np.tile(np.asarray(widths), P))])
     return sp.csr_matrix((vals.ravel(), cols.ravel(), indptr), shape=(P * len(widths), ncols))
+
+
+
+def blocks_to_csr(shape: tuple[int, int], dofs: np.ndarray, blocks: np.ndarray) -> sp.csr_matrix:
+    """``Σ_e P_eᵀ K_e P_e`` of dense element blocks ``blocks`` (E, n, n) on
+    the dofs ``dofs`` (E, n) (``P_e`` picks them; a negative dof is padding:
+    its row and column are left out).  The local dofs may have any shape s,
+    dofs (E, *s) and blocks (E, *s, *s), e.g. (node, component): a strided
+    view is then read once, not copied to (E, n, n) first.  Summed by one
+    sparse product ``Pᵀ M``: ``M`` holds the blocks' rows with global
+    columns, ``P`` one 1 per block row at its dof, and the product's dense
+    row accumulator sums the duplicates without sorting them (entries that
+    sum to zero are dropped)."""
+    E = dofs.shape[0]
+    local = dofs.shape[1:]
+    vals = np.where((dofs >= 0).reshape((E,) + (1,) * len(local) + local), blocks, 0.0).ravel()
+    dofs = dofs.reshape(E, -1)
+    n = dofs.shape[1]
+    index = np.int32 if E * n * n < np.iinfo(np.int32).max else np.int64  # scipy's own choice: no conversion
+    cols = np.broadcast_to(np.maximum(dofs, 0).astype(index)[:, None, :], (E, n, n)).ravel()
+    M = sp.csr_matrix((vals, cols, np.arange(0, E * n * n + 1, n, dtype=index)), shape=(E * n, shape[1]))
+    used = np.flatnonzero(dofs.ravel() >= 0)
+    PT = sp.csr_matrix((np.ones(len(used)), (dofs.ravel()[used], used)), shape=(shape[0], E * n))
+    return PT @ M  # both CSR: a CSC factor would convert M first
+
+
+def sum_csr(shape: tuple[int, int], parts: list[sp.csr_matrix]) -> sp.csr_matrix:
+    """The sum of sparse matrices of one ``shape``, by one product
+    ``[I … I] · [A₁; …; A_k]`` (no pairwise additions), canonical."""
+    if not parts:
+        return sp.csr_matrix(shape)
+    stacked = sp.vstack(parts, format="csr")
+    k = len(parts)
+    ones = sp.csr_matrix((np.ones(k * shape[0]), np.arange(k * shape[0]).reshape(k, -1).T.ravel(),
+                          np.arange(0, k * shape[0] + 1, k)), shape=(shape[0], k * shape[0]))
+    total = (ones @ stacked).tocsr()
+    total.sort_indices()
+    return total

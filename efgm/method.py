@@ -40,7 +40,7 @@ from . import sparse_solver
 from .nodes import NodeSet, check_nodes, grid_nodes, support_radii
 from .operators import Approximation, block_diagonal, find_enrichment
 from contactcore.cutcell import Rule
-from contactcore.quadrature import boundary_rule, interface_rule, volume_rule
+from contactcore.quadrature import background_cells, boundary_rule, interface_rule, volume_rule
 from .shape import MLS
 
 METHOD = "efgm"
@@ -137,8 +137,9 @@ def _constraints(scene: Scene, approx: Approximation):
     return N[2 * np.arange(len(pts)) + comp], g, owner, pts
 
 
-def _load_vectors(scene: Scene, approx: Approximation, vol: Rule, vol_sv, h: float, n: int) -> list[np.ndarray]:
-    """One vector per load of the scene, at its full value."""
+def _load_vectors(scene: Scene, approx: Approximation, vol: Rule, h: float, n: int) -> list[np.ndarray]:
+    """One vector per load of the scene, at its full value (the shape
+    functions at the volume points are evaluated for a body force only)."""
     vectors = []
     volume_N = None
     for load in scene.loads:
@@ -149,7 +150,7 @@ def _load_vectors(scene: Scene, approx: Approximation, vol: Rule, vol_sv, h: flo
             vectors.append(N.T @ (w[:, None] * t).ravel())
             continue
         if volume_N is None:
-            volume_N = approx.displacement_operator(vol_sv, vol.bodies)
+            volume_N = approx.displacement_operator(approx.mls.evaluate(vol.points, vol.bodies), vol.bodies)
         body = BODIES.index(load.body)
         mask = (vol.bodies == body) * vol.weights
         b = np.column_stack(body_force(scene, load, vol.points[:, 0], vol.points[:, 1]))
@@ -165,7 +166,12 @@ class EFGMSystem:
     def __init__(self, K, C, g, owner, loads, interface: InterfaceOperator, scale: float, coords, reach,
                  estimate_condition, what):
         self.scale = scale
-        self.A = sp.bmat([[K, self.scale * C.T], [self.scale * C, None]], format="csr")
+        n, c = K.shape[0], C.shape[0]
+        K = K.tocsr()  # padded to the full size without a copy of its entries, plus the constraint blocks
+        padded = sp.csr_matrix((K.data, K.indices, np.concatenate([K.indptr, np.full(c, K.indptr[-1])])),
+                               shape=(n + c, n + c))
+        self.A = (padded + sp.bmat([[sp.csr_matrix((n, n)), self.scale * C.T], [self.scale * C, None]],
+                                   format="csr")).tocsr()
         self.size = self.A.shape[0]
         self.ndofs = K.shape[0]
         self.C_values, self.owner, self.loads = g, owner, loads
@@ -230,17 +236,16 @@ def solve(scene: Scene, h: float | None = None, *, degree: int = 1, paper: bool 
     with timings.measure("assembly"):
         enrichment = find_enrichment(scene, ns.x, radii, vol.points, vol.bodies)
         mls = MLS(ns.x, radii, degree=degree, weight=weight, dilation=dmax, seen_from=enrichment.seen_from)
-        vol_sv = mls.evaluate(vol.points, vol.bodies)
         approx = Approximation(mls, enrichment)
         D = np.array([voigt_matrix(scene.materials[b].E, scene.materials[b].nu, scene.plane) for b in BODIES])
-        B = approx.strain_operator(vol_sv, vol.bodies)
-        K = B.T @ block_diagonal(vol.weights[:, None, None] * D[vol.bodies]) @ B
+        lo, hi = background_cells(scene, ns.h)
+        K = approx.stiffness(vol, lo.min(axis=0), hi[0] - lo[0], D)
         m = len(gam_w)
         jump = (approx.displacement_operator(mls.evaluate(gam_pts, np.ones(m, int)), np.ones(m, int))
                 - approx.displacement_operator(mls.evaluate(gam_pts, np.zeros(m, int)), np.zeros(m, int)))
         G = block_diagonal(np.stack([gam_n, tangent_of(gam_n)], axis=1)) @ jump
         C, g, owner, c_pts = _constraints(scene, approx)
-        system = EFGMSystem(K, C, g, owner, _load_vectors(scene, approx, vol, vol_sv, ns.h, n),
+        system = EFGMSystem(K, C, g, owner, _load_vectors(scene, approx, vol, ns.h, n),
                             InterfaceOperator(G.tocsr(), gam_w, gam_pts), max(m.E for m in scene.materials.values()),
                             np.vstack([approx.dof_points(), c_pts]), 2 * mls.reach, estimate_condition,
                             f"scene {scene.name} (efgm)")

@@ -22,9 +22,9 @@ import numpy as np
 import scipy.sparse as sp
 from scipy.spatial import cKDTree
 
-from contactcore.assembly import Triplets, point_rows_to_csr
+from contactcore.assembly import Triplets, blocks_to_csr, point_rows_to_csr, sum_csr
 
-from .shape import MLS, ShapeValues
+from .shape import CHUNK, MLS, ShapeValues, matmul, parallel_map
 
 #: A node is enriched (it carries Heaviside unknowns and takes part in the
 #: other body's fit) when its support reaches across Γ deeper than this
@@ -127,12 +127,13 @@ class Approximation:
         enriched = np.flatnonzero(self.enr.index >= 0)[np.argsort(self.enr.index[self.enr.index >= 0])]
         return np.repeat(np.vstack([nodes, nodes[enriched]]), 2, axis=0)
 
-    def _enriched(self, sv: ShapeValues, bodies: np.ndarray):
-        """The enriched functions that are non-zero, at the points that have
-        any: (points (Q,), first dof (Q, K) or −1, coefficient ±2 (Q, K))."""
-        safe = np.maximum(sv.index, 0)
+    def _enriched(self, index: np.ndarray, bodies: np.ndarray):
+        """The enriched functions of the nodes ``index`` (P, K) that are
+        non-zero, at the points (or groups) that have any: (points (Q,),
+        first dof (Q, K) or −1, coefficient ±2 (Q, K))."""
+        safe = np.maximum(index, 0)
         e = self.enr.index[safe]
-        coeff = np.where((sv.index >= 0) & (e >= 0), heaviside(bodies)[:, None] - self.enr.node_side[safe], 0)
+        coeff = np.where((index >= 0) & (e >= 0), heaviside(bodies)[:, None] - self.enr.node_side[safe], 0)
         rows = np.flatnonzero(np.any(coeff != 0, axis=1))
         coeff = coeff[rows]
         return rows, np.where(coeff != 0, 2 * (self.n_nodes + e[rows]), -1), coeff
@@ -144,7 +145,7 @@ class Approximation:
         K = node.shape[1]
         N = point_rows_to_csr(self.ndofs, (K, K), np.concatenate([node, node + 1], axis=1),
                               np.concatenate([sv.phi, sv.phi], axis=1))
-        rows, base, coeff = self._enriched(sv, bodies)
+        rows, base, coeff = self._enriched(sv.index, bodies)
         trip = Triplets(N.shape)
         for c in range(2):
             trip.add((2 * rows + c)[:, None], np.where(base >= 0, base + c, -1), coeff * sv.phi[rows])
@@ -158,7 +159,7 @@ class Approximation:
         gx, gy = sv.grad[..., 0], sv.grad[..., 1]
         B = point_rows_to_csr(self.ndofs, (K, K, 2 * K), np.concatenate([node, node + 1, node, node + 1], axis=1),
                               np.concatenate([gx, gy, gy, gx], axis=1))
-        rows, base, coeff = self._enriched(sv, bodies)
+        rows, base, coeff = self._enriched(sv.index, bodies)
         trip = Triplets(B.shape)
         ex, ey = np.where(base >= 0, base, -1), np.where(base >= 0, base + 1, -1)
         egx, egy = coeff * gx[rows], coeff * gy[rows]
@@ -168,6 +169,88 @@ class Approximation:
         trip.add(r3 + 2, ex, egy)
         trip.add(r3 + 2, ey, egx)
         return B + trip.to_csr()
+
+    def stiffness(self, rule, origin: np.ndarray, step: np.ndarray, D: np.ndarray) -> sp.csr_matrix:
+        """``K = Σ_q w_q B_qᵀ D_b(q) B_q`` over the quadrature ``rule``
+        (points, weights, bodies), ``D`` (2, 3, 3) by body, accumulated per
+        background cell (squares of side ``step`` from ``origin``) and body:
+        shape functions on the union of the group's supports, one dense
+        block per group to the sink (:func:`~contactcore.assembly.blocks_to_csr`).
+        Equal to the per-point ``Bᵀ W D B`` of :meth:`strain_operator`."""
+        chunks = []
+        for members, body in cell_groups(rule.points, rule.bodies, origin, step):
+            size = max(1, CHUNK // members.shape[1])
+            chunks += [(members[i:i + size], body[i:i + size]) for i in range(0, len(members), size)]
+        tensor = strain_energy_tensor(D)
+        shape = (self.ndofs, self.ndofs)
+        return sum_csr(shape, list(parallel_map(
+            lambda c: blocks_to_csr(shape, *self._cell_stiffness(rule.points[c[0]], rule.weights[c[0]], c[1], tensor)),
+            chunks)))
+
+    def _cell_functions(self, idx: np.ndarray, body: np.ndarray, grad: np.ndarray):
+        """The functions of groups of one body each whose candidate nodes are
+        ``idx`` (G, U), with gradients ``grad`` (G, Q, U, 2) at their points:
+        the first dof of each (G, F) (−1 = padding) and its gradients (G, Q,
+        F, 2): the U nodes, then the non-zero enriched functions
+        ``(H_b − H(x_J)) Φ_J``."""
+        dofs = np.where(idx >= 0, 2 * idx, -1)
+        rows, base, c = self._enriched(idx, body)
+        if len(rows) == 0:
+            return dofs, grad
+        width = int(np.max(np.sum(c != 0, axis=1)))
+        order = np.argsort(c == 0, axis=1, kind="stable")[:, :width]  # the non-zero ones first
+        e_dofs = np.full((len(idx), width), -1)
+        e_dofs[rows] = np.take_along_axis(base, order, axis=1)
+        e_grad = np.zeros(grad.shape[:2] + (width, 2))
+        e_grad[rows] = (np.take_along_axis(grad[rows], order[:, None, :, None], axis=2)
+                        * np.take_along_axis(c, order, axis=1)[:, None, :, None])
+        return np.concatenate([dofs, e_dofs], axis=1), np.concatenate([grad, e_grad], axis=2)
+
+    def _cell_stiffness(self, points: np.ndarray, weights: np.ndarray, body: np.ndarray, tensor: np.ndarray):
+        """Dofs (G, F, 2) and dense stiffness blocks (G, F, 2, F, 2) of G groups of
+        points (G, Q, 2), weights (G, Q), one body each:
+        ``K_ab[i, j] = Σ_de T_b[i, j, d, e] S_de[a, b]``,
+        ``S_de = Σ_q w_q ∂_d Φ_a ∂_e Φ_b`` (:func:`strain_energy_tensor`)."""
+        idx = self.mls.cell_candidates(points.min(axis=1), points.max(axis=1), body)
+        dofs, g = self._cell_functions(idx, body, self.mls.cell_shape(points, idx)[1])
+        gx, gy = g[..., 0], g[..., 1]
+        wgx, wgy = weights[..., None] * gx, weights[..., None] * gy
+        wgx, wgy = wgx.transpose(0, 2, 1), wgy.transpose(0, 2, 1)
+        G, F = dofs.shape
+        S = np.empty((G, 2, 2, F, F))  # S[:, d, e] = Σ_q w_q ∂_d Φ_a ∂_e Φ_b
+        S[:, 0, 0], S[:, 0, 1], S[:, 1, 1] = matmul(wgx, gx), matmul(wgx, gy), matmul(wgy, gy)
+        S[:, 1, 0] = S[:, 0, 1].transpose(0, 2, 1)
+        blocks = matmul(tensor[body].reshape(G, 4, 4), S.reshape(G, 4, F * F)).reshape(G, 2, 2, F, F)
+        dofs = np.where(dofs[:, :, None] >= 0, dofs[:, :, None] + np.arange(2), -1)
+        return dofs, blocks.transpose(0, 3, 1, 4, 2)  # (G, F, 2) and (G, F, 2, F, 2): [a, i, b, j]
+
+
+#: ``E[k, i, d]``: the strain component k (ε_xx, ε_yy, γ_xy) of the
+#: displacement component i per unit ``∂_d Φ``, ``B_a[k, i] = Σ_d E[k, i, d] ∂_d Φ_a``.
+_STRAIN = np.zeros((3, 2, 2))
+_STRAIN[0, 0, 0] = _STRAIN[1, 1, 1] = _STRAIN[2, 0, 1] = _STRAIN[2, 1, 0] = 1.0
+
+
+def strain_energy_tensor(D: np.ndarray) -> np.ndarray:
+    """``T[b, i, j, d, e] = Σ_kl E[k, i, d] D_b[k, l] E[l, j, e]`` for the
+    Voigt matrices ``D`` (nb, 3, 3): ``B_aᵀ D_b B_c = Σ_de T[b, :, :, d, e] ∂_d Φ_a ∂_e Φ_c``."""
+    return np.einsum("kid,bkl,lje->bijde", _STRAIN, D, _STRAIN)
+
+
+def cell_groups(points: np.ndarray, bodies: np.ndarray, origin: np.ndarray, step: np.ndarray):
+    """The points grouped by background cell (squares of side ``step`` from
+    ``origin``) and body, in buckets of equal size: ``(members (G, Q), body
+    (G,))`` per size Q.  Any grouping gives the same sums; the cells make
+    the unions of supports small."""
+    cell = np.maximum(np.floor((points - origin) / step), 0).astype(np.int64)
+    key = (cell[:, 0] * (cell[:, 1].max(initial=0) + 1) + cell[:, 1]) * 2 + bodies
+    order = np.argsort(key, kind="stable")
+    _, starts, counts = np.unique(key[order], return_index=True, return_counts=True)
+    buckets = []
+    for Q in np.unique(counts):
+        members = order[starts[counts == Q][:, None] + np.arange(Q)]
+        buckets.append((members, bodies[members[:, 0]]))
+    return buckets
 
 
 def block_diagonal(blocks: np.ndarray) -> sp.csr_matrix:

@@ -28,7 +28,9 @@ from ``scipy.spatial.cKDTree``.
 """
 from __future__ import annotations
 
+import itertools
 import os
+import threading
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 
@@ -58,13 +60,11 @@ _NEIGHBOUR_SLACK = 2
 
 def cubic_spline(r):
     """``w(r)`` and ``dw/dr`` of the cubic spline (support r < 1)."""
-    r2 = r * r
     inner = r <= 0.5
-    w = np.where(inner, 2 / 3 - 4 * r2 + 4 * r2 * r, 4 / 3 - 4 * r + 4 * r2 - 4 / 3 * r2 * r)
-    dw = np.where(inner, -8 * r + 12 * r2, -4 + 8 * r - 4 * r2)
-    outside = r >= 1.0
-    w[outside] = 0.0
-    dw[outside] = 0.0
+    t = np.maximum(1.0 - r, 0.0)  # the outer piece is 4/3 (1 − r)³: zero from r = 1 on
+    t2 = t * t
+    w = np.where(inner, 2 / 3 - 4 * r * r * t, 4 / 3 * t2 * t)
+    dw = np.where(inner, r * (12 * r - 8), -4 * t2)
     return w, dw
 
 
@@ -92,6 +92,30 @@ def _basis(xi: np.ndarray, eta: np.ndarray, degree: int) -> np.ndarray:
     if degree == 2:
         cols += [xi * xi, xi * eta, eta * eta]
     return np.stack(cols, axis=0)
+
+
+#: For m = 3, 6: the position among the distinct products ``p_i p_j``
+#: (i ≤ j, row by row) of each entry of an m × m symmetric matrix.
+_SYMMETRIC = {}
+for _m in (3, 6):
+    _SYMMETRIC[_m] = np.zeros((_m, _m), int)
+    _SYMMETRIC[_m][np.triu_indices(_m)] = np.arange(_m * (_m + 1) // 2)
+    _SYMMETRIC[_m] = np.maximum(_SYMMETRIC[_m], _SYMMETRIC[_m].T).ravel()
+
+
+def _shift(v: np.ndarray, rho: np.ndarray, degree: int) -> np.ndarray:
+    """``M`` (…, m, m) with ``p(ρ (u − v)) = M p(u)`` for the monomials of
+    ``degree``: v (…, 2), ρ (…)."""
+    a, b = v[..., 0], v[..., 1]
+    one, zero = np.ones_like(a), np.zeros_like(a)
+    rows = [[one, zero, zero], [-rho * a, rho, zero], [-rho * b, zero, rho]]
+    if degree == 2:
+        r2 = rho * rho
+        rows = [row + [zero, zero, zero] for row in rows] + [
+            [r2 * a * a, -2 * r2 * a, zero, r2, zero, zero],
+            [r2 * a * b, -r2 * b, -r2 * a, zero, r2, zero],
+            [r2 * b * b, zero, -2 * r2 * b, zero, zero, r2]]
+    return np.stack([np.stack(row, axis=-1) for row in rows], axis=-2)
 
 
 @dataclass
@@ -123,6 +147,28 @@ def _spd_inverse(A: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
             factors[:, k] = 0.0
             aug -= factors[:, :, None] * aug[:, k:k + 1, :]
     return aug[:, :, m:], pivots
+
+
+#: One BLAS call at a time: numpy's matmul calls BLAS, and the serial
+#: OpenBLAS build gives wrong answers when called from two threads at once
+#: (measured here: singular moment matrices in a threaded assembly that
+#: is regular serially).  The products are a small part of a chunk's work;
+#: the rest runs in parallel (:func:`parallel_map`).
+_BLAS = threading.Lock()
+
+
+def matmul(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """``a @ b`` under :data:`_BLAS` (einsum, BLAS-free, is 5-15x slower here)."""
+    with _BLAS:
+        return a @ b
+
+
+def parallel_map(function, items):
+    """``function`` of each item, in order, on one thread per core (numpy
+    releases the GIL in its kernels); a generator, so a consumer can reduce
+    the results as they come."""
+    with ThreadPoolExecutor(os.cpu_count() or 1) as pool:
+        yield from pool.map(function, items)
 
 
 class MLS:
@@ -194,6 +240,34 @@ class MLS:
         safe = np.maximum(idx, 0)
         return idx, points[:, :1] - self.nodes[safe, 0], points[:, 1:] - self.nodes[safe, 1]
 
+    def cell_candidates(self, lo: np.ndarray, hi: np.ndarray, bodies: np.ndarray | None = None) -> np.ndarray:
+        """The nodes (G, U), −1 after, whose support meets the box
+        ``[lo, hi]`` (G, 2) of each group of points and that the group's body
+        sees: a superset of the neighbours of every point in the box, found
+        once per box instead of once per point."""
+        centre, half = (lo + hi) / 2, (hi - lo) / 2
+        size = np.max(half, axis=1) if self.rectangular else np.hypot(half[:, 0], half[:, 1])
+        groups, found = [], []
+        for members, tree, reach, _ in self._classes:
+            hits = tree.query_ball_point(centre, size + reach, p=np.inf if self.rectangular else 2)
+            counts = np.fromiter(map(len, hits), int, len(hits))
+            groups.append(np.repeat(np.arange(len(hits)), counts))
+            found.append(members[np.fromiter(itertools.chain.from_iterable(hits), int, counts.sum())])
+        g, node = np.concatenate(groups), np.concatenate(found)
+        gap = np.maximum(np.abs(self.nodes[node] - centre[g]) - half[g], 0.0)  # box to node, per axis
+        if self.rectangular:
+            meet = np.all(gap < self.radii[node], axis=1)
+        else:
+            meet = np.hypot(gap[:, 0], gap[:, 1]) < self.radii[node]
+        if self.seen_from is not None and bodies is not None:
+            meet &= self.seen_from[node, np.asarray(bodies)[g]]
+        order = np.argsort(g[meet], kind="stable")
+        g, node = g[meet][order], node[meet][order]
+        counts = np.bincount(g, minlength=len(lo))
+        idx = np.full((len(lo), max(int(counts.max(initial=0)), 1)), -1)
+        idx[g, np.arange(len(g)) - np.repeat(np.cumsum(counts) - counts, counts)] = node
+        return idx
+
     def _weights(self, idx: np.ndarray, ox: np.ndarray, oy: np.ndarray):
         """``w``, ``∂w/∂x``, ``∂w/∂y`` (P, K) and each neighbour's largest radius."""
         r_node = self.radii[np.maximum(idx, 0)]
@@ -208,10 +282,8 @@ class MLS:
             w, dwr = self.weight(d / r_node)
             scale = dwr / (r_node * np.where(d > 0, d, 1.0))
             wdx, wdy = scale * ox, scale * oy
-        pad = idx < 0
-        for arr in (w, wdx, wdy):
-            arr[pad] = 0.0
-        return w, wdx, wdy, r_node
+        used = idx >= 0
+        return w * used, wdx * used, wdy * used, r_node
 
     def evaluate(self, points, bodies=None) -> ShapeValues:
         """Φ and ∇Φ at ``points`` (P, 2) of ``bodies`` (P,) (needed with
@@ -228,10 +300,9 @@ class MLS:
         bodies = None if bodies is None else np.broadcast_to(np.asarray(bodies, int), (len(points),))
         if len(points) <= CHUNK:
             return self._evaluate(points, bodies)
-        starts = range(0, len(points), CHUNK)
-        with ThreadPoolExecutor(os.cpu_count() or 1) as pool:
-            parts = list(pool.map(lambda i: self._evaluate(points[i:i + CHUNK],
-                                                           None if bodies is None else bodies[i:i + CHUNK]), starts))
+        parts = list(parallel_map(lambda i: self._evaluate(points[i:i + CHUNK],
+                                                           None if bodies is None else bodies[i:i + CHUNK]),
+                                  range(0, len(points), CHUNK)))
         K = max(p.index.shape[1] for p in parts)
 
         def padded(arr, fill):
@@ -243,27 +314,70 @@ class MLS:
                            np.concatenate([padded(p.grad, 0.0) for p in parts]))
 
     def _evaluate(self, points: np.ndarray, bodies: np.ndarray | None) -> ShapeValues:
-        idx, ox, oy = self.neighbours(points, bodies)
-        w, wdx, wdy, r_node = self._weights(idx, ox, oy)
-        s = np.max(np.where(w > 0, r_node, 0.0), axis=1, initial=0.0)
+        idx, _, _ = self.neighbours(points, bodies)
+        phi, grad = self.cell_shape(points[:, None, :], idx)
+        return ShapeValues(idx, phi[:, 0], grad[:, 0])
+
+    def cell_shape(self, points: np.ndarray, idx: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Φ (G, Q, U) and ∇Φ (G, Q, U, 2) at the points (G, Q, 2) of G
+        groups, of the nodes ``idx`` (G, U) of each (−1 = padding): a group
+        of one point and its neighbours (:meth:`evaluate`), or the points of
+        a cell and its candidates (:meth:`cell_candidates`; a node whose
+        support misses a point has w = 0 there, so Φ = 0).
+
+        The moments are summed in a basis common to the group,
+        ``p̂_I = p((x_I − c)/s_g)`` (c the group's mean point, s_g its
+        largest radius), by matrix products, then moved to each point's own (module doc):
+        ``p̃ = M p̂``, ``M = Λ(s_g/s) T((x − c)/s_g)`` (:func:`_shift`),
+        ``A = M Â Mᵀ`` and ``∂A = M ∂Â Mᵀ`` with ``Â = Σ_I w_I p̂_I p̂_Iᵀ``.
+        For a group of one point, c = x, s_g = s and M = I."""
+        G, Q, _ = points.shape
+        m = self.m
+        safe = np.maximum(idx, 0)
+        ox = points[..., :1] - self.nodes[safe, 0][:, None, :]  # (G, Q, U)
+        oy = points[..., 1:] - self.nodes[safe, 1][:, None, :]
+        w, wdx, wdy, r_node = self._weights(idx[:, None, :], ox, oy)
+        s = np.max(np.where(w > 0, r_node, 0.0), axis=2, initial=0.0)
         s[s == 0] = 1.0
-        pI = _basis(-ox / s[:, None], -oy / s[:, None], self.degree)  # p̃(x_I), (m, P, K)
-        A = self._moments(w, pI)
+        s_g = np.max(np.where(idx >= 0, r_node[:, 0], 0.0), axis=1, initial=0.0)
+        s_g[s_g == 0] = 1.0
+        centre = points.mean(axis=1)
+        pI_m = _basis(*((self.nodes[safe] - centre[:, None, :]) / s_g[:, None, None]).transpose(2, 0, 1),
+                      self.degree)  # p̂_I, (m, G, U)
+        pI, pIt = pI_m.transpose(1, 2, 0), pI_m.transpose(1, 0, 2)
+        if Q == 1:  # M = I; one point per group: no products p̂_i p̂_j kept per node
+            M = Mt = None
+
+            def moved(weights):  # Σ_I w_I p̂_I p̂_Iᵀ, (G, m, m)
+                return self._moments(weights[:, 0], pI_m)
+        else:
+            upper = np.triu_indices(m)
+            pp = pI[..., upper[0]] * pI[..., upper[1]]  # the distinct products p̂_i p̂_j, (G, U, m(m+1)/2)
+            M = _shift((points - centre[:, None, :]) / s_g[:, None, None], s_g[:, None] / s, self.degree)
+            M = M.reshape(-1, m, m)
+            Mt = M.transpose(0, 2, 1)
+
+            def moved(weights):  # M (Σ_I w_I p̂_I p̂_Iᵀ) Mᵀ, (G·Q, m, m)
+                return matmul(matmul(M, matmul(weights, pp)[..., _SYMMETRIC[m]].reshape(-1, m, m)), Mt)
+
+        def back(v):  # Mᵀ v for v (G·Q, m, 1), as (G, Q, m)
+            return (v if M is None else matmul(Mt, v)).reshape(G, Q, m)
+
+        A = moved(w)
         Ainv, pivots = _spd_inverse(A)
-        self._check_regular(points, A, pivots, w)
-        gamma = Ainv[:, :, 0]  # A⁻¹ p̃(x), p̃(x) = e₁
-        gp = np.einsum("pi,ipk->pk", gamma, pI)
-        phi = gp * w
+        self._check_regular(points.reshape(-1, 2), A, pivots, w.reshape(G * Q, -1))
+        gamma = Ainv[:, :, :1]  # A⁻¹ p̃(x), p̃(x) = e₁
+        gp = matmul(back(gamma), pIt)  # γᵀ M p̂_I
         grad = np.empty(w.shape + (2,))
         for d, dw in enumerate((wdx, wdy)):
-            rhs = -np.einsum("pij,pj->pi", self._moments(dw, pI), gamma)
-            rhs[:, d + 1] += 1.0 / s  # ∂p̃(x)/∂x_d = e_{d+1}/s
-            dgamma = np.einsum("pij,pj->pi", Ainv, rhs)
-            grad[..., d] = np.einsum("pi,ipk->pk", dgamma, pI) * w + gp * dw
-        return ShapeValues(idx, phi, grad)
+            rhs = -matmul(moved(dw), gamma)
+            rhs[:, d + 1, 0] += 1.0 / s.ravel()  # ∂p̃(x)/∂x_d = e_{d+1}/s
+            grad[..., d] = matmul(back(matmul(Ainv, rhs)), pIt) * w + gp * dw  # Mᵀ ∂γ, ∂γ = A⁻¹ rhs
+        return gp * w, grad
 
     def _moments(self, w: np.ndarray, pI: np.ndarray) -> np.ndarray:
-        """``Σ_K w p̃_i p̃_j`` (P, m, m) from the m(m+1)/2 distinct products."""
+        """``Σ_K w p̂_i p̂_j`` (P, m, m) of w (P, K), p̂ (m, P, K), from the
+        m(m+1)/2 distinct products."""
         A = np.empty((w.shape[0], self.m, self.m))
         for i in range(self.m):
             wi = w * pI[i]

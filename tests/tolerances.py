@@ -229,3 +229,13 @@ XFEM_INCLINED_AGREE = {("quad", 1): 0.35, ("triangle", 1): 0.40, ("quad", 2): 0.
 #: σ on Γ against σ 1e-6 off Γ and the quadratic extrapolation from h/8,
 #: h/4, 3h/8 off Γ (xfem P2), relative to |σ|: the issue's 1 %.
 XFEM_ONE_SIDED = 1e-2
+
+# --------------------------------------------------------------------------
+# EFGM stiffness accumulated per background cell (issue 16 item 2;
+# tests/test_efgm_assembly.py)
+# --------------------------------------------------------------------------
+
+#: The per-cell stiffness against the per-point ``Bᵀ W D B``, max |ΔK| over
+#: max |K|: the same sums in another order, so round-off (measured 2e-15 to
+#: 7e-15 on scenes A, B, C, both bases, both support shapes).
+EFGM_CELL_ASSEMBLY = 1e-12
