@@ -48,11 +48,11 @@ def _launched_size() -> int:
 
 
 def under_mpi_pool() -> bool:
-    """Whether this process is the master of ``python -m mpi4py.futures``
-    started by mpiexec with workers beside it: mpi4py.futures documents that
-    the script then runs on rank 0 and every ``MPIPoolExecutor`` uses the
-    other ranks.  Read from the launcher's environment and the modules
-    loaded, without importing MPI."""
+    """Whether this process runs under ``mpiexec -n K python -m mpi4py.futures``
+    with K > 1, as its master or as one of its workers: mpi4py.futures
+    documents that the script then runs on rank 0 and that every
+    ``MPIPoolExecutor`` it makes uses the other ranks.  Read from the
+    launcher's environment and the modules loaded, without importing MPI."""
     return _launched_size() > 1 and "mpi4py.futures" in sys.modules
 
 
@@ -61,7 +61,7 @@ def executor(workers: int | None, fresh: bool = False) -> Executor:
     case in a new process of its own, even serially (its memory is returned
     to the system after it; the efficiency ladders need this)."""
     if under_mpi_pool():
-        petsc_on_self()  # the master too may solve (a report's friction runs)
+        petsc_on_self()  # before the master itself meets PETSc
         from mpi4py.futures import MPIPoolExecutor
         return MPIPoolExecutor()
     if (workers or 1) == 1 and not fresh:
