@@ -98,3 +98,16 @@ def test_bad_pool_or_product_input_is_one_line(args, message, tmp_path, capsys):
     err = capsys.readouterr().err
     assert message in err and "Traceback" not in err
     assert not (tmp_path / "study.csv").exists()
+
+
+def test_local_workers_share_out_the_cores(monkeypatch):
+    """K workers get cores // K BLAS threads each (a serial run's BLAS
+    already uses every core); this process's environment is left as it was."""
+    from verification import pool
+
+    for name in pool.THREAD_VARIABLES:
+        monkeypatch.delenv(name, raising=False)
+    got = pool.map_cases(os.getenv, list(pool.THREAD_VARIABLES), workers=2)
+    assert got == [str(max(1, (os.cpu_count() or 1) // 2))] * 2
+    assert pool.map_cases(os.getenv, list(pool.THREAD_VARIABLES)) == [None, None]  # serial: untouched
+    assert not any(name in os.environ for name in pool.THREAD_VARIABLES)
