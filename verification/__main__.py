@@ -108,7 +108,8 @@ def _parser() -> argparse.ArgumentParser:
     swp.add_argument("--degree", type=int, default=1, choices=(1, 2))
     swp.add_argument("--out", type=Path, required=True)
     _workers(swp)
-    stu = sub.add_parser("study", parents=[common], help="one input varied (geometry through gmsh, h, springs, materials)")
+    stu = sub.add_parser("study", parents=[common],
+                         help="inputs varied over their product (geometry through gmsh, h, springs, materials)")
     stu.add_argument("scene")
     stu.add_argument("--param", required=True, choices=list(PARAMETERS), action="append",
                      help="repeat --param NAME --values ... for a Cartesian product")
