@@ -7,10 +7,15 @@
     python -m verification closed [--case patch pressurised_rod twisted_rod] [--method ...] [--degree 1 2] --out DIR
     python -m verification efficiency SCENE --method fe efgm --degree 1 2 --h H1 H2 ... --ref-h H --out DIR
     python -m verification sweeps [--sweep NAME ...] [--method ...] [--degree 1] --out DIR
-    python -m verification study SCENE --param NAME --values V1 V2 ... [--method ...] [--degree 1] [--h H] --out DIR
+    python -m verification study SCENE --param NAME --values V1 V2 ... [--param NAME2 --values ...] [--method ...]
+        [--degree 1] [--h H] --out DIR
     python -m verification report DIR [--quick]
     python -m verification benchmark [--scene A B C] --out DIR      (needs python3-getfem)
     python -m verification timing SCENE --method fe --degree 1 2 --h H1 H2 ... --out DIR
+
+``study``, ``sweeps``, ``efficiency``, ``paper``, ``benchmark`` and ``report`` take
+``--workers K`` (their cases on K local processes, :mod:`verification.pool`),
+or run under ``mpiexec -n K python -m mpi4py.futures -m verification ...``.
 
 Bad input ends with one line ``error: <field>: <problem>`` and exit status 2.
 """
@@ -19,6 +24,7 @@ from __future__ import annotations
 import argparse
 import logging
 import math
+import os
 import sys
 from pathlib import Path
 
@@ -38,6 +44,11 @@ def _petsc_option(text: str) -> tuple[str, str]:
 
 def _methods(p, **kw) -> None:
     p.add_argument("--method", nargs="+", default=["all"], choices=[*methods.METHODS, "all"], **kw)
+
+
+def _workers(p, default=None) -> None:
+    p.add_argument("--workers", type=int, default=default, metavar="K",
+                   help=f"run the independent cases on K processes (default {default or 1})")
 
 
 def _parser() -> argparse.ArgumentParser:
@@ -76,6 +87,7 @@ def _parser() -> argparse.ArgumentParser:
     pap.add_argument("--scene", nargs="+", default=["A", "B", "C"], choices=["A", "B", "C"])
     pap.add_argument("--ref-h", type=float, help="cell size of the P2 reference (default: a quarter of the scene's h)")
     pap.add_argument("--out", type=Path, required=True)
+    _workers(pap)
     clo = sub.add_parser("closed", parents=[common], help="closed-form cases on refinement ladders, with observed rates")
     clo.add_argument("--case", nargs="+", default=list(CASES), choices=list(CASES))
     _methods(clo)
@@ -89,26 +101,33 @@ def _parser() -> argparse.ArgumentParser:
     eff.add_argument("--ref-h", type=float, required=True, help="element size of the P2 reference")
     eff.add_argument("--exclude", type=float, help="distance from corners and Γ's ends left out (default 0.1 L)")
     eff.add_argument("--out", type=Path, required=True)
+    _workers(eff, default=os.cpu_count())
     swp = sub.add_parser("sweeps", parents=[common], help="stiff and extreme cases: error, condition and outcome")
     swp.add_argument("--sweep", nargs="+", choices=[s.name for s in sweeps()], help="default: all")
     _methods(swp)
     swp.add_argument("--degree", type=int, default=1, choices=(1, 2))
     swp.add_argument("--out", type=Path, required=True)
-    stu = sub.add_parser("study", parents=[common], help="one input varied (geometry through gmsh, h, springs, materials)")
+    _workers(swp)
+    stu = sub.add_parser("study", parents=[common],
+                         help="inputs varied over their product (geometry through gmsh, h, springs, materials)")
     stu.add_argument("scene")
-    stu.add_argument("--param", required=True, choices=list(PARAMETERS))
-    stu.add_argument("--values", nargs="+", type=float, required=True)
+    stu.add_argument("--param", required=True, choices=list(PARAMETERS), action="append",
+                     help="repeat --param NAME --values ... for a Cartesian product")
+    stu.add_argument("--values", nargs="+", type=float, required=True, action="append")
     _methods(stu)
     stu.add_argument("--degree", type=int, default=1, choices=(1, 2))
     stu.add_argument("--h", type=float, help="resolution (default: the scene's h)")
     stu.add_argument("--cell", choices=("quad", "triangle", "gmsh"), help="XFEM background cells (default quad)")
     stu.add_argument("--out", type=Path, required=True)
+    _workers(stu)
     rep = sub.add_parser("report", parents=[common], help="every verification, gathered into DIR/report.md")
     rep.add_argument("out", type=Path)
     rep.add_argument("--quick", action="store_true", help="short ladders: a smoke test of the whole chain")
+    _workers(rep)
     ben = sub.add_parser("benchmark", parents=[common], help="error against run time beside GetFEM's level-set XFEM (issue 7)")
     ben.add_argument("--scene", nargs="+", default=["A", "B", "C"], choices=["A", "B", "C"])
     ben.add_argument("--out", type=Path, required=True)
+    _workers(ben, default=os.cpu_count())
     tim = sub.add_parser("timing", parents=[common], help="wall time against DOFs on a ladder of resolutions")
     tim.add_argument("scene")
     _methods(tim)
@@ -164,6 +183,20 @@ def _check_sizes(args) -> None:
                 raise ContactError(f"--{name.replace('_', '-')}: must be a finite number > 0 (got {h})")
 
 
+def _check_workers(args) -> None:
+    workers = getattr(args, "workers", None)
+    if workers is not None and workers < 1:
+        raise ContactError(f"--workers: must be at least 1 (got {workers})")
+
+
+def _study_params(args) -> list[tuple[str, list[float]]]:
+    """The (--param, --values) pairs of ``study``, in the order given."""
+    if len(args.param) != len(args.values):
+        raise ContactError(f"--values: give one --values list after each --param ({len(args.param)} --param, "
+                           f"{len(args.values)} --values)")
+    return list(zip(args.param, args.values))
+
+
 def _dispatch(args, argv) -> None:
     from .agreement import default_exclusion
 
@@ -175,7 +208,7 @@ def _dispatch(args, argv) -> None:
             basis=args.basis, allow_large=args.allow_large, draw=args.draw, argv=argv)
     elif cmd == "paper":
         from .paper import paper
-        paper(args.out, tuple(args.scene), args.ref_h, argv=argv)
+        paper(args.out, tuple(args.scene), args.ref_h, workers=args.workers, argv=argv)
     elif cmd == "closed":
         from .convergence import closed
         variants = [(m, d) for m in methods.expand(args.method) for d in args.degree]
@@ -186,7 +219,8 @@ def _dispatch(args, argv) -> None:
         from .peer_getfem import getfem_module
         getfem_module()  # before the long reference runs
         sections = [efficiency(s, BENCHMARK_VARIANTS, BENCHMARK_LADDERS[s], REFERENCE_H[s],
-                               default_exclusion(load_scene(s)), args.out / s, argv=argv) for s in args.scene]
+                               default_exclusion(load_scene(s)), args.out / s, workers=args.workers, argv=argv)
+                    for s in args.scene]
         write_text(args.out / "benchmark.md", "# Benchmark against GetFEM's level-set XFEM\n\n"
                    + "\n".join(t.replace("](efficiency.png)", f"]({s}/efficiency.png)")
                                 for s, t in zip(args.scene, sections)))
@@ -195,17 +229,18 @@ def _dispatch(args, argv) -> None:
         scene = load_scene(args.scene)
         exclude = args.exclude if args.exclude is not None else default_exclusion(scene)
         variants = [(m, d) for m in methods.expand(args.method) for d in args.degree]
-        efficiency(args.scene, variants, {d: args.h for d in args.degree}, args.ref_h, exclude, args.out, argv=argv)
+        efficiency(args.scene, variants, {d: args.h for d in args.degree}, args.ref_h, exclude, args.out,
+                   workers=args.workers, argv=argv)
     elif cmd == "sweeps":
         from .sweeps import run_sweeps
-        run_sweeps(args.out, args.sweep, methods.expand(args.method), args.degree, argv=argv)
+        run_sweeps(args.out, args.sweep, methods.expand(args.method), args.degree, workers=args.workers, argv=argv)
     elif cmd == "study":
         from .study import study
-        study(args.scene, args.param, args.values, args.method, args.out, degree=args.degree, h=args.h,
-              cell=args.cell, argv=argv)
+        study(args.scene, _study_params(args), args.method, args.out, degree=args.degree, h=args.h,
+              cell=args.cell, workers=args.workers, argv=argv)
     elif cmd == "report":
         from .report import report
-        report(args.out, args.quick, argv=argv)
+        report(args.out, args.quick, workers=args.workers, argv=argv)
     else:
         from .timing import timing
         timing(args.scene, args.method, args.degree, args.h, args.out, argv=argv)
@@ -226,9 +261,11 @@ def _rank() -> int:
 def _check_serial() -> None:
     """The drivers run in one process (issue 15 is open): under mpirun with
     several ranks every command is refused, once, before any rank writes
-    into the same result folder."""
+    into the same result folder — except under ``python -m mpi4py.futures``,
+    where only rank 0 runs the command and the other ranks are its pool."""
+    from .pool import under_mpi_pool
     size = _launcher(("OMPI_COMM_WORLD_SIZE", "PMI_SIZE"))
-    if size is not None and size > 1:
+    if size is not None and size > 1 and not under_mpi_pool():
         raise ContactError(f"mpirun: the drivers run in one process only (this is rank {_rank()} of {size}); "
                            "run them without mpirun")
 
@@ -240,6 +277,7 @@ def main(argv=None) -> int:
     try:
         _check_serial()
         _check_sizes(args)
+        _check_workers(args)
         if getattr(args, "out", None) is None:
             _dispatch(args, argv)
         else:

@@ -13,21 +13,23 @@ The reference and every rung run in a fresh process of their own: nothing
 of one run (dolfinx and PETSc objects, the allocator's free lists) can
 inflate the memory of the
 next — in one process the full report grew past 17 GB and was killed by the
-out-of-memory killer on a 24 GB machine.  Writes
+out-of-memory killer on a 24 GB machine.  The rungs run on
+:mod:`verification.pool` (``--workers K``, by default one per core, or an
+mpi4py.futures pool): rungs measured beside each other share the cores and
+the memory bandwidth, so the table says how many workers measured it.  Writes
 ``DIR/efficiency.csv``, ``DIR/efficiency.md`` (the table and a sentence
 saying which method reaches a common error level soonest) and
 ``DIR/efficiency.png`` (error against total wall time, log-log).
 """
 from __future__ import annotations
 
+import functools
 import logging
-import multiprocessing
-from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
 from contactcore import load_scene, sample_profiles
 
-from . import files, methods
+from . import files, pool
 from .agreement import agreements
 from .plots import loglog_by_variant
 from .timing import REPEAT_BELOW, REPEATS, fastest
@@ -97,36 +99,37 @@ def soonest(rows: list[dict]) -> str:
             f"{first[0]} p{first[1]} gets there soonest, in {times[first]:.2f} s; then {others}.")
 
 
-def _isolated(function, *args):
-    """``function(*args)`` in a fresh process (spawned, not forked: no
-    inherited MPI or PETSc state), its memory returned to the system after."""
-    with ProcessPoolExecutor(max_workers=1, mp_context=multiprocessing.get_context("spawn"),
-                             max_tasks_per_child=1) as pool:
-        return pool.submit(function, *args).result()
-
-
 def _reference(scene_name: str, ref_h: float) -> tuple[dict, int, float]:
     """The reference's profiles, DOFs and run time."""
     scene = load_scene(scene_name)
-    reference = methods.solver("fe")(scene, ref_h, degree=2, estimate_condition=False)
+    solve, comm = pool.solver("fe")
+    reference = solve(scene, ref_h, degree=2, estimate_condition=False, **comm)
     return {p.id: p for p in sample_profiles(scene, reference.fields)}, reference.dofs, reference.timings.total
 
 
-def efficiency(scene_name: str, variants, ladders: dict, ref_h: float, exclude: float, out: Path, argv=()) -> str:
-    """Run the ladders (``ladders[(method, degree)]`` if given, else
-    ``ladders[degree]``: the h of that variant), write the table and the
-    plot; return the Markdown section."""
-    scene = load_scene(scene_name)
-    ref, ref_dofs, ref_time = _isolated(_reference, scene_name, ref_h)
-    log.info("reference: fe P2 h=%g, %d DOFs, %.1f s", ref_h, ref_dofs, ref_time)
-    rows = []
+def _rungs(variants, ladders: dict) -> list[tuple]:
+    """``(method, degree, h, warm_h)`` of every rung, each ladder coarse to fine."""
+    rungs = []
     for name, degree in variants:
         hs = ladders.get((name, degree), ladders.get(degree))
-        for h in sorted(hs, reverse=True):
-            row = _isolated(_measure, scene_name, name, degree, h, max(hs), ref, exclude)
-            log.info("%s p%d h=%g: %d DOFs, %.2f s, worst error %.2e (%s)", name, degree, h, row["dofs"],
-                     row["total"], row["error"], row["worst"])
-            rows.append(row)
+        rungs += [(name, degree, h, max(hs)) for h in sorted(hs, reverse=True)]
+    return rungs
+
+
+def efficiency(scene_name: str, variants, ladders: dict, ref_h: float, exclude: float, out: Path,
+               workers: int | None = None, argv=()) -> str:
+    """Run the ladders (``ladders[(method, degree)]`` if given, else
+    ``ladders[degree]``: the h of that variant) on ``workers`` fresh
+    processes, write the table and the plot; return the Markdown section."""
+    scene = load_scene(scene_name)
+    [(ref, ref_dofs, ref_time)] = pool.map_cases(functools.partial(_reference, scene_name), [ref_h], fresh=True)
+    log.info("reference: fe P2 h=%g, %d DOFs, %.1f s", ref_h, ref_dofs, ref_time)
+    rows = pool.map_cases(functools.partial(_measure, scene_name, ref=ref, exclude=exclude),
+                          _rungs(variants, ladders), workers, fresh=True)
+    for row in rows:
+        log.info("%s p%d h=%g: %d DOFs, %.2f s, worst error %.2e (%s)", row["method"], row["degree"], row["h"],
+                 row["dofs"], row["total"], row["error"], row["worst"])
+    measured_by = pool.workers_label(workers)
     out = Path(out)
     files.write_csv(out / "efficiency.csv", rows, COLUMNS)
     loglog_by_variant(out / "efficiency.png", rows, "total", "error", "total wall time (s)",
@@ -134,21 +137,24 @@ def efficiency(scene_name: str, variants, ladders: dict, ref_h: float, exclude: 
     text = (f"## Error against run time, scene {scene.name}\n\n"
             f"Reference: fe P2, h = {ref_h:g} ({ref_dofs} DOFs). Error: worst relative RMS difference over "
             f"the profiles, samples within {exclude:.3g} m of corners and of the ends of Γ left out. Times in s, "
-            f"after a warm-up solve; a run under {REPEAT_BELOW:g} s is the fastest of {REPEATS}.\n\n"
+            f"after a warm-up solve; a run under {REPEAT_BELOW:g} s is the fastest of {REPEATS}; measured by "
+            f"{measured_by} at once (rungs beside each other share the cores).\n\n"
             f"{soonest(rows)}\n\nWhich method to pick for a target error (the fastest measured rung that "
             f"reaches it):\n\n{advisor(rows)}\n![efficiency {scene.name}](efficiency.png)\n\n"
             + files.markdown_table(rows, COLUMNS, ["method", "degree", "h", "DOFs", "mesh", "assembly", "solve",
                                                    "total", "error", "worst at"]))
     files.write_text(out / "efficiency.md", text)
-    files.write_json(out / "run.json", files.provenance(list(argv)))
+    files.write_json(out / "run.json", {**files.provenance(list(argv)), "workers": measured_by})
     return text
 
 
-def _measure(scene_name: str, name: str, degree: int, h: float, warm_h: float, ref: dict, exclude: float) -> dict:
-    """One rung of a ladder, after a warm-up solve at ``warm_h`` (JIT,
-    imports): solve, sample, compare."""
+def _measure(scene_name: str, rung: tuple, ref: dict, exclude: float) -> dict:
+    """One rung ``(method, degree, h, warm_h)`` of a ladder, after a warm-up
+    solve at ``warm_h`` (JIT, imports): solve, sample, compare."""
+    name, degree, h, warm_h = rung
     scene = load_scene(scene_name)
-    solve = methods.solver(name)
+    solve, comm = pool.solver(name)
+    solve = functools.partial(solve, **comm)
     solve(scene, warm_h, degree=degree, estimate_condition=False)
     res = fastest(solve, scene, h, degree)
     got = {p.id: p for p in sample_profiles(scene, res.fields)}

@@ -23,13 +23,14 @@ first shows how much the corners weigh.
 """
 from __future__ import annotations
 
+import functools
 import logging
 import re
 from pathlib import Path
 
 from contactcore import load_scene, sample_profiles
 
-from . import files, methods, plots
+from . import files, methods, plots, pool
 from .agreement import agreements, default_exclusion
 
 log = logging.getLogger("verification")
@@ -55,7 +56,8 @@ def _label(name: str, result) -> str:
 
 
 def _solve(scene, name: str, out: Path, role: str, **kwargs):
-    result = methods.solver(name)(scene, **kwargs)
+    solve, comm = pool.solver(name)
+    result = solve(scene, **kwargs, **comm)
     profiles = sample_profiles(scene, result.fields)
     for prof in profiles:
         files.write_profile_csv(out / "profiles" / f"{prof.id}.csv", prof)
@@ -117,13 +119,13 @@ def markdown(rows: list[dict], warnings: list[str]) -> str:
     return "\n".join(md)
 
 
-def paper(out: Path, scenes=SCENES, ref_h: float | None = None, argv=()) -> str:
-    """Reproduce the paper's scenes; write the figures and the agreement table."""
+def paper(out: Path, scenes=SCENES, ref_h: float | None = None, workers: int | None = None, argv=()) -> str:
+    """Reproduce the paper's scenes, one case each on :mod:`verification.pool`;
+    write the figures and the agreement table."""
     out = Path(out)
     rows, warnings = [], []
-    for k, name in enumerate(scenes, 1):
-        log.info("paper: scene %s (%d/%d)", name, k, len(scenes))
-        got, warned = reproduce_scene(name, out, ref_h)
+    log.info("paper: scenes %s on %s", ", ".join(scenes), pool.workers_label(workers))
+    for got, warned in pool.map_cases(functools.partial(reproduce_scene, out=out, ref_h=ref_h), scenes, workers):
         rows += got
         warnings += warned
     files.write_csv(out / "agreement.csv", rows, COLUMNS)

@@ -9,18 +9,21 @@ increment, status along Γ, :mod:`~verification.run`) and one parameter
 study per scene (:mod:`~verification.study`), then gathers their sections
 into ``DIR/report.md`` with the wall time of each part.  ``--quick`` runs
 every part on short ladders (a smoke test of the whole chain, minutes not
-tens of minutes); its figures are not the report's.
+tens of minutes); its figures are not the report's.  ``--workers K`` runs
+each part's independent cases on K processes (:mod:`verification.pool`);
+the parts themselves run one after another.
 """
 from __future__ import annotations
 
+import functools
 import logging
 import time
 from dataclasses import dataclass
 from pathlib import Path
 
-from contactcore import load_scene
+from contactcore import ContactError, load_scene
 
-from . import files
+from . import files, pool
 from .agreement import default_exclusion
 from .convergence import CASES, closed
 from .efficiency import LADDERS, REFERENCE_H, VARIANTS, efficiency
@@ -62,15 +65,26 @@ QUICK = Plan(ladders={"C": {1: (0.2,)}},
 
 
 def _friction(scene: str, out: Path) -> str:
-    """A friction scene with every method: status, response and the Newton
-    iterations per increment (:mod:`verification.interface`)."""
-    run(scene, ["all"], out)
-    return "#" + (out / "summary.md").read_text() + "\n![response](plots/response.png)\n"
+    """A friction scene with every method, into ``out/<scene>``: status,
+    response and the Newton iterations per increment (:mod:`verification.interface`)."""
+    run(scene, ["all"], out / scene)
+    return files.relink("#" + (out / scene / "summary.md").read_text() + "\n![response](plots/response.png)\n",
+                        scene)
 
 
-def report(out: Path, quick: bool = False, argv=()) -> Path:
-    """Run every part into ``out`` and write ``out/report.md``."""
+def _frictions(scenes, workers):
+    """The part that runs the friction scenes, one case each on the pool."""
+    return lambda out: "\n\n".join(pool.map_cases(functools.partial(_friction, out=out), scenes, workers))
+
+
+def report(out: Path, quick: bool = False, workers: int | None = None, argv=()) -> Path:
+    """Run every part into ``out`` (each part's cases on ``workers``
+    processes) and write ``out/report.md``."""
     plan = QUICK if quick else FULL
+    if pool.under_mpi_pool() and plan.friction:
+        raise ContactError("report: its friction runs (verification.run) solve on the launcher's whole world, "
+                           "not on a worker's own communicator: run the report with --workers K, not under "
+                           "mpi4py.futures")
     out = Path(out)
     sections, times = [], {}
 
@@ -80,25 +94,28 @@ def report(out: Path, quick: bool = False, argv=()) -> Path:
         sections.append(files.relink(run(out / folder), folder))
         times[name] = time.perf_counter() - start
 
-    part("paper", "paper", lambda d: paper(d, ref_h=plan.paper_ref_h))
+    part("paper", "paper", lambda d: paper(d, ref_h=plan.paper_ref_h, workers=workers))
     part("closed forms", "closed", lambda d: closed(d, plan.closed_cases, plan.closed_variants))
     for scene in plan.ladders:
         part(f"efficiency {scene}", f"efficiency/{scene}",
              lambda d, s=scene: efficiency(s, plan.variants, plan.ladders[s], plan.reference_h[s],
-                                           default_exclusion(load_scene(s)), d))
-    part("sweeps", "sweeps", lambda d: run_sweeps(d, plan.sweeps))
-    for scene in plan.friction:
-        part(f"friction {scene}", f"friction/{scene}", lambda d, s=scene: _friction(s, d))
+                                           default_exclusion(load_scene(s)), d, workers=workers))
+    part("sweeps", "sweeps", lambda d: run_sweeps(d, plan.sweeps, workers=workers))
+    part("friction " + ", ".join(plan.friction), "friction", _frictions(plan.friction, workers))
     for scene, param, values, degree in plan.studies:
         folder = f"study/{scene}-{param}"
         part(f"study {scene} {param}", folder,
-             lambda d, s=scene, p=param, v=values, k=degree: study(s, p, list(v), ["all"], d, degree=k))
+             lambda d, s=scene, p=param, v=values, k=degree: study(s, [(p, list(v))], ["all"], d, degree=k,
+                                                                    workers=workers))
     head = ["# Verification report", "", f"Command: `{files.provenance(list(argv))['command']}`"
             + (" (quick: short ladders, not the report's figures)" if quick else ""), "",
+            f"Each part's cases ran on {pool.workers_label(workers)} at once (cases beside each other share the "
+            "cores, and their timings with them).", "",
             "| part | wall time (s) |", "|---|---|"]
     head += [f"| {name} | {t:.1f} |" for name, t in times.items()]
     head += [f"| total | {sum(times.values()):.1f} |", ""]
     path = files.write_text(out / "report.md", "\n".join(head) + "\n" + "\n\n".join(sections) + "\n")
-    files.write_json(out / "run.json", {**files.provenance(list(argv)), "quick": quick, "times": times})
+    files.write_json(out / "run.json", {**files.provenance(list(argv)), "quick": quick, "times": times,
+                                        "workers": pool.workers_label(workers)})
     return path
 

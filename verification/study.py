@@ -1,24 +1,33 @@
-"""``python -m verification study``: one input varied, every method solved.
+"""``python -m verification study``: inputs varied, every method solved.
 
-    python -m verification study SCENE --param NAME --values V1 V2 ... [--method ...] [--degree 1] [--h H] --out DIR
+    python -m verification study SCENE --param NAME --values V1 V2 ... [--param NAME2 --values ...]
+        [--method ...] [--degree 1] [--h H] [--workers K] --out DIR
 
 Parameters (:data:`PARAMETERS`): the mesh size ``h``; the springs ``kN``,
 ``kT``; the materials ``E_minus``, ``nu_minus``, ``E_plus``, ``nu_plus``;
 and the geometry of Γ — ``radius`` of a circular Γ, ``offset`` of a straight
 Γ along its normal, ``angle`` of a straight Γ (degrees from the x axis,
-turned about the middle of its chord).  A geometry change is a new scene,
+turned about the middle of its chord).  Several ``--param`` pairs run their
+Cartesian product (the last parameter varies fastest), one row per point
+and method.  A geometry change is a new scene,
 so the conforming method meshes it afresh through gmsh (and XFEM with
 ``--cell gmsh`` too); the scene's own profiles may no longer lie on the moved
 Γ, so the study samples Γ itself: for each point it records DOFs, wall
 time, solver health, and the largest |g_N|, |g_T|, |t_N|, |t_T| on Γ with
-the mean t_N and t_T.  Every point is logged as it ends; a point that fails
+the mean t_N and t_T.  The cases run on :mod:`verification.pool` (``--workers K``
+or an mpi4py.futures pool), each in a process of its own; they are logged
+in case order as their results arrive; a point that fails
 (bad value, refused solve) is recorded with its message and the study goes
-on.  Writes ``DIR/study.csv``, ``DIR/study.md`` and ``DIR/study.png``.
+on.  Writes ``DIR/study.csv``, ``DIR/study.md`` and one plot per parameter,
+the others as series: ``DIR/study.png`` for one parameter,
+``DIR/study_<param>.png`` for several.
 """
 from __future__ import annotations
 
 import dataclasses
+import itertools
 import logging
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -26,7 +35,7 @@ import numpy as np
 from contactcore import CircleInterface, ContactError, LineInterface, SceneError, load_scene, sample_profile
 from contactcore.scene import InterfaceProfile
 
-from . import files, methods
+from . import files, methods, pool
 from .outcomes import attempt, health
 
 log = logging.getLogger("verification")
@@ -87,12 +96,21 @@ PARAMETERS = {
 }
 
 
-def scene_at(scene, param: str, value: float):
-    """``scene`` with ``param`` set to ``value``, sampled on Γ, validated."""
+def _check(param: str) -> None:
     if param not in PARAMETERS:
         raise SceneError("--param", f"unknown parameter {param!r} (known: {', '.join(PARAMETERS)})")
-    change = PARAMETERS[param][1]
-    return scene.with_changes(profiles=(GAMMA,), **(change(scene, value) if change else {}))
+
+
+def scene_at(scene, point: dict):
+    """``scene`` with each parameter of ``point`` (name -> value) set, in
+    order, sampled on Γ, validated."""
+    changes = {}
+    for param, value in point.items():
+        _check(param)
+        change = PARAMETERS[param][1]
+        if change:
+            changes.update(change(scene.with_changes(**changes), value))
+    return scene.with_changes(profiles=(GAMMA,), **changes)
 
 
 def _outputs(scene, result) -> dict:
@@ -102,75 +120,121 @@ def _outputs(scene, result) -> dict:
             "mean_tN": float(np.mean(prof["tN"])), "mean_tT": float(np.mean(prof["tT"]))}
 
 
-COLUMNS = ["value", "method", "degree", "status", "dofs", "total", "condition", "backward_error", *OUTPUTS,
-           "message"]
+STATS = ["method", "degree", "status", "dofs", "total", "condition", "backward_error", *OUTPUTS, "message"]
 
 
-def study(scene_name: str, param: str, values: list[float], method_names: list[str], out: Path, *, degree: int = 1,
-          h: float | None = None, cell: str | None = None, argv=()) -> str:
-    """Run the study and write its table and plot; return the Markdown section."""
+def point_columns(params: list[str]) -> list[str]:
+    """The columns naming a point: ``value`` for a one-parameter study (its
+    table as before), else one column per parameter, named after it."""
+    return ["value"] if len(params) == 1 else list(params)
+
+
+@dataclass(frozen=True)
+class Case:
+    """One point and one method: picklable (a scene name, not a scene)."""
+
+    scene: str
+    point: tuple  # ((param, value), ...)
+    method: str
+    degree: int
+    h: float | None
+    cell: str | None
+
+
+def solve_case(case: Case) -> dict:
+    """The row of one case, solved in this process on its own communicator;
+    a failure (bad value, refused solve) is a row with its message."""
+    point = dict(case.point)
+    row = {"method": case.method, "degree": case.degree}
+    try:
+        scene = scene_at(load_scene(case.scene), point)
+    except ContactError as exc:
+        return {**row, "status": "failed", "message": str(exc)}
+    solve, comm = pool.solver(case.method)
+    options = {**methods.options_for(case.method, cell=case.cell), **comm}
+    tried = attempt(solve, scene, point.get("h", case.h), degree=case.degree, **options)
+    row.update(health(tried))
+    if tried.refused:
+        return {**row, "status": "failed", "message": tried.message}
+    status = "warned" if tried.result.solver.warnings else "ok"
+    return {**row, "status": status, "message": "; ".join(tried.result.solver.warnings),
+            **_outputs(scene, tried.result)}
+
+
+def study(scene_name: str, params: list[tuple[str, list[float]]], method_names: list[str], out: Path, *,
+          degree: int = 1, h: float | None = None, cell: str | None = None, workers: int | None = None,
+          argv=()) -> str:
+    """Run the study over the Cartesian product of ``params`` ((name, values)
+    pairs; the last varies fastest) on :mod:`verification.pool`, and write
+    its table and plots; return the Markdown section."""
+    names = [p for p, _ in params]
+    if len(set(names)) != len(names):
+        raise SceneError("--param", f"each parameter may be given once (got {', '.join(names)})")
     base = load_scene(scene_name)
-    scene_at(base, param, values[0])  # an unknown or inapplicable parameter ends here, before any solve
-    names = methods.expand(method_names)
-    rows, total = [], len(values) * len(names)
-    for i, value in enumerate(values):
-        for j, name in enumerate(names):
-            k = i * len(names) + j + 1
-            row = {"value": value, "method": name, "degree": degree}
-            try:
-                scene = scene_at(base, param, value)
-            except ContactError as exc:
-                rows.append({**row, "status": "failed", "message": str(exc)})
-                log.warning("[%d/%d] %s = %g, %s: failed: %s", k, total, param, value, name, exc)
-                continue
-            options = methods.options_for(name, cell=cell)
-            tried = attempt(methods.solver(name), scene, value if param == "h" else h, degree=degree, **options)
-            row.update(health(tried))
-            if tried.refused:
-                rows.append({**row, "status": "failed", "message": tried.message})
-                log.warning("[%d/%d] %s = %g, %s: failed: %s", k, total, param, value, name, tried.message)
-                continue
-            status = "warned" if tried.result.solver.warnings else "ok"
-            rows.append({**row, "status": status, "message": "; ".join(tried.result.solver.warnings),
-                         **_outputs(scene, tried.result)})
-            log.info("[%d/%d] %s = %g, %s: %s, %d DOFs, %.2f s", k, total, param, value, name, status,
-                     tried.result.dofs, tried.result.timings.total)
+    scene_at(base, {p: values[0] for p, values in params})  # an inapplicable parameter ends here, before any solve
+    labels = point_columns(names)
+    points = list(itertools.product(*(values for _, values in params)))
+    cases = [Case(scene_name, tuple(zip(names, pt)), m, degree, h, cell) for pt in points
+             for m in methods.expand(method_names)]
+    rows = []
+    for k, (case, row) in enumerate(zip(cases, pool.map_cases(solve_case, cases, workers)), 1):
+        where = ", ".join(f"{p} = {v:g}" for p, v in case.point)
+        if row["status"] == "failed":
+            log.warning("[%d/%d] %s, %s: failed: %s", k, len(cases), where, case.method, row["message"])
+        else:
+            log.info("[%d/%d] %s, %s: %s, %d DOFs, %.2f s", k, len(cases), where, case.method, row["status"],
+                     row["dofs"], row["total"])
+        rows.append({**dict(zip(labels, (v for _, v in case.point))), **row})
     out = Path(out)
-    files.write_csv(out / "study.csv", rows, COLUMNS)
-    _plot(out / "study.png", base.name, param, rows)
-    text = markdown(base.name, param, rows)
+    files.write_csv(out / "study.csv", rows, [*labels, *STATS])
+    for param, label in zip(names, labels):
+        _plot(out / _plot_name(names, param), base.name, param, label, [lb for lb in labels if lb != label], rows)
+    text = markdown(base.name, names, rows)
     files.write_text(out / "study.md", text)
-    files.write_json(out / "run.json", {**files.provenance(list(argv)), "scene": scene_name, "param": param,
-                                        "values": values, "methods": names, "degree": degree, "h": h})
+    files.write_json(out / "run.json", {**files.provenance(list(argv)), "scene": scene_name,
+                                        "params": {p: list(v) for p, v in params},
+                                        "methods": methods.expand(method_names), "degree": degree, "h": h,
+                                        "workers": pool.workers_label(workers)})
     return text
 
 
-def markdown(scene_name: str, param: str, rows: list[dict]) -> str:
-    """The study's section: its plot and its table."""
+def _plot_name(names: list[str], param: str) -> str:
+    return "study.png" if len(names) == 1 else f"study_{param}.png"
+
+
+def markdown(scene_name: str, names: list[str], rows: list[dict]) -> str:
+    """The study's section: its plots and its table."""
     failed = [r for r in rows if r["status"] == "failed"]
-    return (f"## Study: scene {scene_name}, {param} ({PARAMETERS[param][0]})\n\n![study](study.png)\n\n"
-            + files.markdown_table(rows, ["value", "method", "status", "dofs", "total", *OUTPUTS, "message"],
-                                   [param, "method", "status", "DOFs", "total (s)", "max |g_N|", "max |g_T|",
+    what = " × ".join(f"{p} ({PARAMETERS[p][0]})" for p in names)
+    labels = point_columns(names)
+    return (f"## Study: scene {scene_name}, {what}\n\n"
+            + "".join(f"![study {p}]({_plot_name(names, p)})\n" for p in names) + "\n"
+            + files.markdown_table(rows, [*labels, "method", "status", "dofs", "total", *OUTPUTS, "message"],
+                                   [*names, "method", "status", "DOFs", "total (s)", "max |g_N|", "max |g_T|",
                                     "max |t_N|", "max |t_T|", "mean t_N", "mean t_T", "message"])
             + (f"\n{len(failed)} of {len(rows)} points failed; the study went on.\n" if failed else ""))
 
 
-def _plot(path: Path, scene_name: str, param: str, rows: list[dict]) -> None:
+def _plot(path: Path, scene_name: str, param: str, column: str, others: list[str], rows: list[dict]) -> None:
+    """The response on Γ against ``param`` (the table's ``column``); one
+    series per method and values of the ``others`` columns."""
     from .plots import UNITS, pyplot, save
 
     fig, axes = pyplot().subplots(2, 2, figsize=(9, 6.5), squeeze=False)
-    values = [r["value"] for r in rows]
+    values = [r[column] for r in rows]
     logx = min(values) > 0 and max(values) / min(values) > 100
+    series = dict.fromkeys((r["method"], *(r[o] for o in others)) for r in rows)
     for ax, q in zip(axes.ravel(), ("gN", "gT", "tN", "tT")):
-        for name in dict.fromkeys(r["method"] for r in rows):
-            pts = [(r["value"], r[f"max_{q}"]) for r in rows if r["method"] == name and r["status"] != "failed"]
+        for key in series:
+            pts = [(r[column], r[f"max_{q}"]) for r in rows
+                   if (r["method"], *(r[o] for o in others)) == key and r["status"] != "failed"]
             if pts:
-                ax.plot(*zip(*pts), "o-", label=name)
+                ax.plot(*zip(*pts), "o-", label=", ".join([key[0], *(f"{o} = {v:g}" for o, v in zip(others, key[1:]))]))
         ax.set_ylabel("max |" + UNITS[q].split(" ")[0] + "| " + UNITS[q].split(" ")[1])
         ax.set_xlabel(param)
         if logx:
             ax.set_xscale("log")
         ax.grid(alpha=0.3)
-        ax.legend(fontsize=8)
+        ax.legend(fontsize=7)
     fig.suptitle(f"Scene {scene_name}: interface response against {param}")
     save(fig, path)

@@ -31,6 +31,7 @@ range each method handles) and ``DIR/<sweep>.png``.
 from __future__ import annotations
 
 import dataclasses
+import functools
 import logging
 from dataclasses import dataclass
 from pathlib import Path
@@ -43,7 +44,7 @@ from contactcore import tolerances as tol
 from contactcore.geometry import Rectangle
 from contactcore.scene import InterfaceProfile
 
-from . import files, methods
+from . import files, pool
 from .closed_forms import interface_patch, layered_slip, pressurised_rod, twisted_rod
 from .norms import l2_error, max_errors
 from .outcomes import accuracy_bound, attempt, classify, health
@@ -223,7 +224,8 @@ def run_sweep(sweep: Sweep, degree: int = 1, method_names=None) -> list[dict]:
     rows = []
     cases = sweep.cases()
     for name in [m for m in sweep.methods if method_names is None or m in method_names]:
-        solve = methods.solver(name)
+        solve, comm = pool.solver(name)
+        solve = functools.partial(solve, **comm)
         h = None if sweep.name == "false_tN" else H
         tried = [attempt(solve, c.scene, h, degree=degree, estimate_condition=True, **c.options) for c in cases]
         errors = [float("nan") if t.refused else error(c, t.result) for c, t in zip(cases, tried)]
@@ -312,14 +314,23 @@ def markdown(rows: list[dict], selected: list[Sweep]) -> str:
     return "\n".join(md) + "\n"
 
 
-def run_sweeps(out: Path, names=None, method_names=None, degree: int = 1, argv=()) -> str:
-    """Run the sweeps (all, or those named), write the tables and plots, and
-    return the Markdown section."""
+def _sweep_by_name(name: str, degree: int, method_names) -> list[dict]:
+    """:func:`run_sweep` of the sweep called ``name``: a picklable case of the
+    pool (a sweep holds the functions that build its cases)."""
+    return run_sweep(next(s for s in sweeps() if s.name == name), degree, method_names)
+
+
+def run_sweeps(out: Path, names=None, method_names=None, degree: int = 1, workers: int | None = None,
+               argv=()) -> str:
+    """Run the sweeps (all, or those named), one case each on
+    :mod:`verification.pool`, write the tables and plots, and return the
+    Markdown section."""
     selected = [s for s in sweeps() if names is None or s.name in names]
     rows = []
-    for k, sw in enumerate(selected, 1):
-        log.info("sweep %d/%d: %s (%s)", k, len(selected), sw.name, sw.what)
-        mine = run_sweep(sw, degree, method_names)
+    runs = pool.map_cases(functools.partial(_sweep_by_name, degree=degree, method_names=method_names),
+                          [sw.name for sw in selected], workers)
+    for k, (sw, mine) in enumerate(zip(selected, runs), 1):
+        log.info("sweep %d/%d: %s (%s): %d solves", k, len(selected), sw.name, sw.what, len(mine))
         if mine:
             _plot(Path(out) / f"{sw.name}.png", sw, mine)
         rows += mine

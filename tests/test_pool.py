@@ -1,0 +1,113 @@
+"""Studies spread over a pool (issue 15, items 2 and 3): several parameters
+in one study, and the same table on --workers K or an mpi4py.futures pool
+as in one process."""
+from __future__ import annotations
+
+import csv
+import itertools
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from verification.__main__ import main
+
+ROOT = Path(__file__).resolve().parents[1]
+#: Columns measured by the clock: the only ones a pool may change.
+TIMING = {"total"}
+#: Scene C (circular Γ) at a coarse h, fe and efgm: 3 × 2 points, 12 solves in about 3 s.
+STUDY = ["study", "C", "--param", "kN", "--values", "1e9", "1e10", "1e11", "--param", "E_plus", "--values", "1e9",
+         "2e9", "--method", "fe", "efgm", "--h", "0.2"]
+
+
+def _rows(folder: Path) -> list[dict]:
+    with open(folder / "study.csv") as fh:
+        return list(csv.DictReader(fh))
+
+
+def _untimed(rows: list[dict]) -> list[dict]:
+    return [{k: v for k, v in r.items() if k not in TIMING} for r in rows]
+
+
+@pytest.fixture(scope="module")
+def serial(tmp_path_factory) -> list[dict]:
+    out = tmp_path_factory.mktemp("serial")
+    assert main([*STUDY, "--out", str(out)]) == 0
+    return _rows(out)
+
+
+def test_two_parameters_run_their_product(serial, tmp_path):
+    """One row per point and method, in product order (the last parameter
+    fastest), one column per parameter, one plot per parameter; a stiffer
+    normal spring closes the gap."""
+    points = [(kN, E, m) for kN, E in itertools.product(("1e9", "1e10", "1e11"), ("1e9", "2e9"))
+              for m in ("fe", "efgm")]
+    assert [(float(r["kN"]), float(r["E_plus"]), r["method"]) for r in serial] == [
+        (float(kN), float(E), m) for kN, E, m in points]
+    assert all(r["status"] in ("ok", "warned") for r in serial)
+    for E, m in itertools.product(("1e9", "2e9"), ("fe", "efgm")):
+        gaps = [float(r["max_gN"]) for r in serial if float(r["E_plus"]) == float(E) and r["method"] == m]
+        assert gaps[0] > gaps[1] > gaps[2], (E, m, gaps)
+
+
+def test_two_workers_write_the_serial_table(serial, tmp_path):
+    assert main([*STUDY, "--workers", "2", "--out", str(tmp_path)]) == 0
+    assert _untimed(_rows(tmp_path)) == _untimed(serial)
+    assert (tmp_path / "study_kN.png").read_bytes()[:4] == b"\x89PNG"
+    assert (tmp_path / "study_E_plus.png").read_bytes()[:4] == b"\x89PNG"
+
+
+@pytest.mark.skipif(shutil.which("mpiexec") is None, reason="needs mpiexec")
+def test_an_mpi4py_futures_pool_writes_the_serial_table(serial, tmp_path):
+    """rank 0 runs the study, ranks 1 and 2 solve its cases (each on
+    COMM_SELF: a shared PETSc world would hang them)."""
+    # a launcher's variables inherited from this process would confuse the nested mpiexec
+    env = {k: v for k, v in os.environ.items() if not k.startswith(("OMPI_", "PMIX_", "PMI_"))}
+    env["PYTHONPATH"] = str(ROOT)
+    out = subprocess.run([shutil.which("mpiexec"), "--allow-run-as-root", "--oversubscribe", "-n", "3",
+                          sys.executable, "-m", "mpi4py.futures", "-m", "verification", *STUDY,
+                          "--out", str(tmp_path)], env=env, cwd=ROOT, capture_output=True, text=True,
+                         timeout=300)
+    assert out.returncode == 0, out.stderr
+    assert _untimed(_rows(tmp_path)) == _untimed(serial)
+
+
+def test_a_failing_point_is_recorded_and_the_pool_goes_on(tmp_path):
+    """A radius of 1.5 leaves the domain: its rows say so, the others solve."""
+    assert main(["study", "C", "--param", "radius", "--values", "0.2", "1.5", "--param", "kN", "--values", "1e9",
+                 "1e10", "--method", "efgm", "--h", "0.2", "--workers", "2", "--out", str(tmp_path)]) == 0
+    rows = _rows(tmp_path)
+    assert [(r["radius"], r["kN"], r["status"] != "failed") for r in rows] == [
+        ("0.2", "1000000000.0", True), ("0.2", "10000000000.0", True),
+        ("1.5", "1000000000.0", False), ("1.5", "10000000000.0", False)]
+    assert all("interface" in r["message"] for r in rows[2:])
+    assert "2 of 4 points failed" in (tmp_path / "study.md").read_text()
+
+
+@pytest.mark.parametrize("args, message", [
+    (["--workers", "0"], "error: --workers: must be at least 1"),
+    (["--param", "kN"], "error: --values: give one --values list after each --param"),
+    (["--param", "kN", "--values", "1e9"], "error: --param: each parameter may be given once"),
+])
+def test_bad_pool_or_product_input_is_one_line(args, message, tmp_path, capsys):
+    assert main(["study", "C", "--param", "kN", "--values", "1e9", *args, "--method", "efgm",
+                 "--out", str(tmp_path)]) == 2
+    err = capsys.readouterr().err
+    assert message in err and "Traceback" not in err
+    assert not (tmp_path / "study.csv").exists()
+
+
+def test_local_workers_share_out_the_cores(monkeypatch):
+    """K workers get cores // K BLAS threads each (a serial run's BLAS
+    already uses every core); this process's environment is left as it was."""
+    from verification import pool
+
+    for name in pool.THREAD_VARIABLES:
+        monkeypatch.delenv(name, raising=False)
+    got = pool.map_cases(os.getenv, list(pool.THREAD_VARIABLES), workers=2)
+    assert got == [str(max(1, (os.cpu_count() or 1) // 2))] * 2
+    assert pool.map_cases(os.getenv, list(pool.THREAD_VARIABLES)) == [None, None]  # serial: untouched
+    assert not any(name in os.environ for name in pool.THREAD_VARIABLES)

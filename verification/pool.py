@@ -1,0 +1,136 @@
+"""The independent cases of a study, handed to a ``concurrent.futures`` executor.
+
+Every driver that runs many independent solves (``study``, ``sweeps``,
+``efficiency``, ``paper``, ``benchmark``, ``report``) maps one picklable,
+module-level case function over its cases with :func:`map_cases`; this
+module only picks the executor, it schedules nothing itself:
+
+* ``--workers K`` (K > 1): a local :class:`~concurrent.futures.ProcessPoolExecutor`
+  of K spawned processes (spawned, not forked: no inherited MPI or PETSc state);
+* no ``--workers`` or K = 1: the cases run one after another in this process
+  (:class:`Serial`), exactly as before the pool existed;
+* under ``mpiexec -n K python -m mpi4py.futures -m verification ...``: the
+  K − 1 MPI workers that ``mpi4py.futures`` set up, through its
+  :class:`~mpi4py.futures.MPIPoolExecutor` (``--workers`` is then ignored:
+  the pool's size is the launcher's).  mpi4py is imported only then.
+
+``executor.map`` yields the results in the order of the cases, whatever
+order they end in, and at most K cases run at once.  Each case runs in its
+own process on its own communicator (:func:`solver`), so a dolfinx solve
+never waits for the other workers; its timings are measured inside it.
+"""
+from __future__ import annotations
+
+import contextlib
+import inspect
+import multiprocessing
+import os
+import sys
+from concurrent.futures import Executor, Future, ProcessPoolExecutor
+
+from . import methods
+
+
+class Serial(Executor):
+    """An executor that runs each case in this process when it is submitted."""
+
+    def submit(self, fn, /, *args, **kwargs) -> Future:
+        future = Future()
+        try:
+            future.set_result(fn(*args, **kwargs))
+        except BaseException as exc:  # handed back through the future, as a pool would
+            future.set_exception(exc)
+        return future
+
+
+def _launched_size() -> int:
+    """How many ranks mpiexec started (1 without it), read from its environment."""
+    return next((int(os.environ[n]) for n in ("OMPI_COMM_WORLD_SIZE", "PMI_SIZE") if n in os.environ), 1)
+
+
+def under_mpi_pool() -> bool:
+    """Whether this process runs under ``mpiexec -n K python -m mpi4py.futures``
+    with K > 1, as its master or as one of its workers: mpi4py.futures
+    documents that the script then runs on rank 0 and that every
+    ``MPIPoolExecutor`` it makes uses the other ranks.  Read from the
+    launcher's environment and the modules loaded, without importing MPI."""
+    return _launched_size() > 1 and "mpi4py.futures" in sys.modules
+
+
+def executor(workers: int | None, fresh: bool = False) -> Executor:
+    """The executor for ``--workers`` (None or 1: serial).  ``fresh``: every
+    case in a new process of its own, even serially (its memory is returned
+    to the system after it; the efficiency ladders need this)."""
+    if under_mpi_pool():
+        petsc_on_self()  # before the master itself meets PETSc
+        from mpi4py.futures import MPIPoolExecutor
+        return MPIPoolExecutor()
+    if (workers or 1) == 1 and not fresh:
+        return Serial()
+    return ProcessPoolExecutor(max_workers=workers or 1, mp_context=multiprocessing.get_context("spawn"),
+                               max_tasks_per_child=1 if fresh else None)
+
+
+#: The variables that size the BLAS and OpenMP thread pools (Debian's
+#: OpenBLAS reads the first, its OpenMP build and MUMPS the second).
+THREAD_VARIABLES = ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS")
+
+
+@contextlib.contextmanager
+def _threads_per_worker(workers: int | None):
+    """The environment that K > 1 local workers are spawned with: the cores
+    shared out, ``max(1, cores // K)`` threads each, unless the user sized
+    the thread pools already.  A serial run's BLAS
+    already keeps every core busy (a 3 × 4-point study on B: 31 s with its
+    threads, 43 s with one), so K workers left at one pool of threads each
+    would ask for K times the cores and run each case K times slower."""
+    saved = {k: os.environ.get(k) for k in THREAD_VARIABLES}
+    if (workers or 1) > 1:
+        for k in THREAD_VARIABLES:
+            os.environ.setdefault(k, str(max(1, (os.cpu_count() or 1) // workers)))
+    try:
+        yield
+    finally:
+        for k, v in saved.items():
+            if v is None:
+                os.environ.pop(k, None)
+            else:
+                os.environ[k] = v
+
+
+def map_cases(function, cases, workers: int | None = None, fresh: bool = False) -> list:
+    """``[function(c) for c in cases]`` on :func:`executor` (``workers``, ``fresh``),
+    in the order of ``cases``."""
+    with _threads_per_worker(workers), executor(workers, fresh) as pool:
+        return list(pool.map(function, cases))
+
+
+def workers_label(workers: int | None) -> str:
+    """How many cases ran at once, for the tables whose timings depend on it."""
+    if under_mpi_pool():
+        return f"{_launched_size() - 1} MPI workers"
+    return f"{workers or 1} worker" + ("s" if (workers or 1) > 1 else "")
+
+
+def petsc_on_self() -> None:
+    """Under an MPI pool every rank solves alone: PETSc's world becomes
+    ``COMM_SELF`` before PETSc is first imported (by dolfinx or EFGM's
+    solver).  Initialised on the launcher's world, PETSc's start-up is
+    collective over every rank, and a worker waits for ever for the
+    master and the other workers, which never join it."""
+    if under_mpi_pool() and "petsc4py.PETSc" not in sys.modules:
+        import petsc4py
+        from mpi4py import MPI
+        petsc4py.init(comm=MPI.COMM_SELF)
+
+
+def solver(name: str):
+    """Method ``name``'s solve for one case, and the options that put it on
+    its own communicator (``COMM_SELF`` for the dolfinx methods, which take
+    ``comm``): a case never shares its mesh with the other workers."""
+    petsc_on_self()
+    solve = methods.solver(name)
+    if "comm" not in inspect.signature(solve).parameters:
+        return solve, {}
+    from mpi4py import MPI
+    return solve, {"comm": MPI.COMM_SELF}
