@@ -67,6 +67,13 @@ class PETScOptionError(SolverError):
     """A PETSc option that PETSc does not know or cannot use; the message names it."""
 
 
+def is_symmetric(A: sp.spmatrix) -> bool:
+    """``max |A − Aᵀ| <= SYMMETRIC_TO_ROUNDOFF · max |A|``."""
+    A = sp.csr_matrix(A)
+    scale = abs(A).max() if A.nnz else 0.0
+    return A.nnz == 0 or abs(A - A.T).max() <= tol.SYMMETRIC_TO_ROUNDOFF * scale
+
+
 def to_petsc(A: sp.spmatrix) -> PETSc.Mat:
     """A serial PETSc AIJ matrix with the entries of a scipy sparse matrix
     (the PETSc side of :mod:`contactcore.assembly`'s one sink)."""
@@ -150,19 +157,29 @@ def _mumps_factor(ksp):
     return pc.getFactorMatrix()
 
 
-def _mumps_health(ksp, opts: dict, report: SolverReport, what: str) -> None:
-    """Null pivots (a clear error) and the condition estimate from MUMPS."""
+def _null_pivots(ksp, what: str) -> None:
+    """A clear error if MUMPS found null pivots in its factorisation."""
     factor = _mumps_factor(ksp)
     if factor is None:
         return
     try:
         nulls = factor.getMumpsInfog(28)
-        if nulls > 0:
-            raise SolverError(f"{what} is singular to working precision: MUMPS found {nulls} null pivot(s) — "
-                              "a rigid-body mode is not removed by the supports and pins, or a penalty is "
-                              "so stiff that the bulk stiffness is lost in round-off")
-        if opts.get("mat_mumps_icntl_11") == 1:
-            report.condition = float(factor.getMumpsRinfog(10))
+    finally:
+        factor.destroy()
+    if nulls > 0:
+        raise SolverError(f"{what} is singular to working precision: MUMPS found {nulls} null pivot(s) — "
+                          "a rigid-body mode is not removed by the supports and pins, or a penalty is "
+                          "so stiff that the bulk stiffness is lost in round-off")
+
+
+def _condition(ksp, opts: dict) -> float | None:
+    """MUMPS's condition estimate, computed with the solve that followed a
+    factorisation when its error analysis is on (ICNTL(11) = 1)."""
+    factor = _mumps_factor(ksp) if opts.get("mat_mumps_icntl_11") == 1 else None
+    if factor is None:
+        return None
+    try:
+        return float(factor.getMumpsRinfog(10))
     finally:
         factor.destroy()
 
@@ -179,9 +196,184 @@ def _measure_residual(A, b, x, report: SolverReport, force_scale: float) -> None
     r.destroy()
 
 
+class Factorisation:
+    """A direct solver kept for a run, as dolfinx's ``NonlinearProblem``
+    keeps its matrix: one KSP whose operator is refilled in place.
+
+    :meth:`factorise` (re)factorises ``A`` — PETSc redoes only the numeric
+    factorisation while ``A``'s nonzero pattern is unchanged, the symbolic
+    analysis is kept — and checks it (null pivots, the condition estimate
+    when asked for); :meth:`solve` solves with the last factorisation, as
+    often as asked (a piecewise-linear law keeps its tangent for whole
+    increments), each solve judged by its own residual.  The caller
+    destroys it (:meth:`destroy`).
+    """
+
+    def __init__(self, *, petsc_options: dict | None = None, estimate_condition: bool = False,
+                 what: str = "linear system"):
+        self.opts = _options(petsc_options, estimate_condition)
+        check_options(self.opts)
+        self.what, self.count = what, 0
+        self.prefix = f"xdolfinx_{next(_prefixes)}_"
+        self.ksp, self.A, self.base = None, None, None
+        db = PETSc.Options()
+        for key, value in self.opts.items():
+            db[self.prefix + key] = value
+
+    def factorise(self, A) -> None:
+        """Factorise ``A`` (kept by reference: refill it, then call again)."""
+        first = self.ksp is None
+        if first:
+            self.ksp = PETSc.KSP().create(A.getComm())
+            self.ksp.setOptionsPrefix(self.prefix)
+        self.ksp.setOperators(A)
+        self.A, self.base = A, None
+        try:
+            if first:
+                self.ksp.setFromOptions()
+            self.ksp.setUp()
+        except PETSc.Error as exc:
+            if exc.ierr in OPTION_ERRORS:
+                raise _refused(exc, self.opts) from None
+            raise SolverError(f"{self.what}: PETSc failed (error {exc.ierr}); the matrix may be singular — "
+                              "check that the supports remove every rigid-body mode") from None
+        self.count += 1
+        pc = self.ksp.getPC()
+        base = SolverReport(solver=f"{self.ksp.getType()}+{pc.getType()}"
+                            + (f" ({pc.getFactorSolverType()})" if pc.getType() in ("lu", "cholesky") else ""),
+                            options=self.opts, factorisations=1)
+        _null_pivots(self.ksp, self.what)
+        if first:
+            unused = unused_options(self.prefix, self.opts)
+            if unused is None:
+                base.warnings.append("petsc options: could not ask PETSc which options it used")
+            elif unused:
+                base.warnings.append(f"petsc option(s) {', '.join(unused)} never used by PETSc: misspelt, "
+                                     "or not for this solver")
+        self.base = base
+
+    def solve(self, b, x, force_scale: float = 0.0) -> SolverReport:
+        """Solve ``A x = b`` in place with the last factorisation; raise
+        :class:`SolverError` if it fails (module doc).  The report carries
+        the factorisation's checks only on the first solve after it."""
+        report = SolverReport(solver=self.base.solver, options=self.opts, factorisations=self.base.factorisations,
+                              warnings=list(self.base.warnings))
+        self.base.warnings = []
+        try:
+            self.ksp.solve(b, x)
+        except PETSc.Error as exc:
+            if exc.ierr in OPTION_ERRORS:
+                raise _refused(exc, self.opts) from None
+            raise SolverError(f"{self.what}: PETSc failed in the solve (error {exc.ierr})") from None
+        if self.base.factorisations:  # the first solve after a factorisation
+            self.base.factorisations = 0
+            report.condition = _condition(self.ksp, self.opts)
+            if report.condition is not None and report.condition > tol.CONDITION_WARN:
+                report.warnings.append(f"condition estimate {report.condition:.2e} exceeds "
+                                       f"{tol.CONDITION_WARN:.0e}: digits may be lost (penalty too stiff for "
+                                       "the mesh?)")
+        report.iterations = [self.ksp.getIterationNumber()]
+        reason = self.ksp.getConvergedReason()
+        _measure_residual(self.A, b, x, report, force_scale)
+        if reason < 0:
+            raise SolverError(f"{self.what}: the solver diverged (PETSc reason {reason}, "
+                              f"relative residual {report.residual:.3e})")
+        health.check_residual(report.residual, self.what, report.backward_error)
+        return report
+
+    def destroy(self) -> None:
+        if self.ksp is not None:
+            self.ksp.destroy()
+        self.ksp = self.A = None
+        db = PETSc.Options()
+        for key in self.opts:
+            db.delValue(self.prefix + key)
+
+
+class Tangent:
+    """Newton's ``J = K + K_Γ`` and its factorisations, allocated once per
+    run and refilled, as dolfinx's ``NonlinearProblem`` does.
+
+    ``K`` (PETSc AIJ, owned from here on) is the bulk; ``free`` the unknowns
+    solved for (the others are prescribed: only the free block is
+    factorised, MUMPS pays 3-4x for held rows otherwise);
+    ``interface_pattern`` (scipy sparse, values ignored) the entries ``K_Γ``
+    may reach outside ``K``'s pattern.  At a new ``K_Γ`` the work copy of
+    ``K`` is refilled, ``K_Γ`` added into it, its free block refilled into
+    the submatrix of the slot asked for, and that slot's factorisation
+    redone (numerically only: the pattern is fixed).  Each slot keeps its
+    factorisation until it is refilled.  ``symmetric`` options (e.g.
+    MUMPS's LDLᵀ) are used for a symmetric ``K`` while ``K_Γ`` is
+    symmetric too; any other tangent takes the general LU.
+    """
+
+    def __init__(self, K, free: np.ndarray, *, interface_pattern: sp.spmatrix | None = None,
+                 symmetric: dict | None = None, petsc_options: dict | None = None,
+                 estimate_condition: bool = False, what: str = "linear system"):
+        self.K, self.free, self.symmetric = K, np.asarray(free), symmetric
+        self.options = {False: petsc_options, True: {**(symmetric or {}), **(petsc_options or {})}}
+        self.estimate, self.what = estimate_condition, what
+        self._slots = {}  # slot -> [free block, Factorisation, symmetric]
+        self._rows = PETSc.IS().createGeneral(self.free.astype(PETSc.IntType), comm=PETSc.COMM_SELF)
+        self._J, self._vectors = K.copy(), None
+        if interface_pattern is not None:
+            pattern = to_petsc(abs(sp.csr_matrix(interface_pattern)) * 0.0)
+            self._J.axpy(1.0, pattern, structure=PETSc.Mat.Structure.DIFFERENT_NONZERO_PATTERN)
+            pattern.destroy()
+
+    def solve(self, interface_tangent: sp.spmatrix | None, rhs: np.ndarray, force_scale: float = 0.0,
+              slot: int = 0) -> tuple[np.ndarray, SolverReport]:
+        """``δu``: ``J[free, free] δu = rhs[free]``, zero elsewhere, with
+        ``J = K + interface_tangent`` factorised into ``slot``, or with that
+        slot's last factorisation if ``interface_tangent`` is None."""
+        if interface_tangent is not None:
+            self._refill(sp.csr_matrix(interface_tangent), slot)
+        b, x = self._vectors
+        b.setArray(rhs[self.free])
+        x.set(0.0)
+        report = self._slots[slot][1].solve(b, x, force_scale)
+        du = np.zeros(len(rhs))
+        du[self.free] = x.getArray(readonly=True)
+        return du, report
+
+    def _refill(self, interface_tangent: sp.csr_matrix, slot: int) -> None:
+        block, factorisation, was_symmetric = self._slots.pop(slot, (None, None, None))  # back once factorised
+        Ki = to_petsc(interface_tangent)
+        self._J.zeroEntries()
+        self._J.axpy(1.0, self.K, structure=PETSc.Mat.Structure.SUBSET_NONZERO_PATTERN)
+        self._J.axpy(1.0, Ki, structure=PETSc.Mat.Structure.SUBSET_NONZERO_PATTERN)
+        Ki.destroy()
+        block = self._J.createSubMatrix(self._rows, self._rows, submat=block)
+        if self._vectors is None:
+            self._vectors = block.createVecs()
+        symmetric = self.symmetric is not None and is_symmetric(interface_tangent)
+        if factorisation is None or symmetric != was_symmetric:
+            if factorisation is not None:
+                factorisation.destroy()
+            factorisation = Factorisation(petsc_options=self.options[symmetric], estimate_condition=self.estimate,
+                                          what=self.what)
+        try:
+            factorisation.factorise(block)
+        except SolverError:
+            factorisation.destroy()
+            block.destroy()
+            raise
+        self._slots[slot] = [block, factorisation, symmetric]
+
+    def close(self) -> None:
+        """Destroy every PETSc object made here, and ``K``."""
+        for block, factorisation, _ in self._slots.values():
+            factorisation.destroy()
+            block.destroy()
+        for obj in (self._J, self._rows, self.K, *(self._vectors or ())):
+            obj.destroy()
+        self._slots, self._J, self._vectors = {}, None, None
+
+
 def solve(A, b, x, *, rows=None, petsc_options: dict | None = None, estimate_condition: bool = False,
           what: str = "linear system", force_scale: float = 0.0) -> SolverReport:
-    """Solve ``A x = b`` in place; raise :class:`SolverError` if it fails.
+    """Solve ``A x = b`` in place once (a :class:`Factorisation` used for
+    one solve); raise :class:`SolverError` if it fails.
 
     With ``rows`` (global indices of the unknowns that are not held at zero,
     owned by this process) only that block is factorised and the other
@@ -205,50 +397,12 @@ def solve(A, b, x, *, rows=None, petsc_options: dict | None = None, estimate_con
             b.restoreSubVector(index, bs)
             As.destroy()
             index.destroy()
-    opts = _options(petsc_options, estimate_condition)
-    check_options(opts)
-    prefix = f"xdolfinx_{next(_prefixes)}_"
-    db = PETSc.Options()
-    for key, value in opts.items():
-        db[prefix + key] = value
-    ksp = PETSc.KSP().create(A.getComm())
+    factorisation = Factorisation(petsc_options=petsc_options, estimate_condition=estimate_condition, what=what)
     try:
-        ksp.setOptionsPrefix(prefix)
-        ksp.setOperators(A)
-        try:
-            ksp.setFromOptions()
-            ksp.setUp()
-            ksp.solve(b, x)
-        except PETSc.Error as exc:
-            if exc.ierr in OPTION_ERRORS:
-                raise _refused(exc, opts) from None
-            raise SolverError(f"{what}: PETSc failed (error {exc.ierr}); the matrix may be singular — "
-                              "check that the supports remove every rigid-body mode") from None
-        report = SolverReport(solver=f"{ksp.getType()}+{ksp.getPC().getType()}"
-                              + (f" ({ksp.getPC().getFactorSolverType()})"
-                                 if ksp.getPC().getType() in ("lu", "cholesky") else ""),
-                              iterations=[ksp.getIterationNumber()], options=opts)
-        _mumps_health(ksp, opts, report, what)
-        unused = unused_options(prefix, opts)
-        if unused is None:
-            report.warnings.append("petsc options: could not ask PETSc which options it used")
-        elif unused:
-            report.warnings.append(f"petsc option(s) {', '.join(unused)} never used by PETSc: misspelt, "
-                                   "or not for this solver")
-        reason = ksp.getConvergedReason()
-        _measure_residual(A, b, x, report, force_scale)
-        if reason < 0:
-            raise SolverError(f"{what}: the solver diverged (PETSc reason {reason}, "
-                              f"relative residual {report.residual:.3e})")
-        health.check_residual(report.residual, what, report.backward_error)
-        if report.condition is not None and report.condition > tol.CONDITION_WARN:
-            report.warnings.append(f"condition estimate {report.condition:.2e} exceeds {tol.CONDITION_WARN:.0e}: "
-                                   "digits may be lost (penalty too stiff for the mesh?)")
-        return report
+        factorisation.factorise(A)
+        return factorisation.solve(b, x, force_scale)
     finally:
-        ksp.destroy()
-        for key in opts:
-            db.delValue(prefix + key)
+        factorisation.destroy()
 
 
 def solve_csr(A: sp.spmatrix, b: np.ndarray, *, petsc_options: dict | None = None, estimate_condition: bool = False,

@@ -24,7 +24,11 @@ digits in their rows (:func:`contactcore.health.check_springs`) and the
 supports, pins and springs must hold every rigid-body mode
 (:func:`contactcore.health.check_restraint`).  ``J`` is not
 symmetric while points slip, so every method factorises it with a general
-LU.  A failed increment (no convergence, a singular tangent) is halved up to
+LU.  The tangent of a piecewise-linear law changes only when a point
+changes status: a solve whose tangent is one of the last factorised
+(:data:`~contactcore.tolerances.FACTORISATIONS_KEPT`) reuses that
+factorisation, often for whole load paths, and the system refills the
+matrices it allocated once.  A failed increment (no convergence, a singular tangent) is halved up to
 ``MAX_CUTBACKS`` times; the state is committed only at converged steps.  A
 law without history (linear, unilateral) is path-independent: unless the
 scene asks for the response along the path (``follow_path``), Newton goes
@@ -82,6 +86,13 @@ class InterfaceOperator:
                              np.broadcast_to(cols, tangent.shape).ravel())), shape=(2 * m, 2 * m))
         return (self.G.T @ WD @ self.G).tocsr()
 
+    def pattern(self) -> sp.csr_matrix:
+        """Every entry any ``Gᵀ W D G`` can reach (values meaningless):
+        both jumps of a point couple through a full 2 × 2 ``D``."""
+        A = abs(self.G)
+        pairs = sp.kron(sp.identity(self.size), np.ones((2, 2)), format="csr")
+        return (A.T @ pairs @ A).tocsr()
+
 
 class ContactSystem(Protocol):
     """What a method hands to :func:`solve_increments` (serial, numpy vectors)."""
@@ -99,11 +110,17 @@ class ContactSystem(Protocol):
     def internal(self, u: np.ndarray) -> np.ndarray:
         """``A u``: the bulk forces of the unknowns."""
 
-    def solve(self, interface_tangent: sp.csr_matrix, rhs: np.ndarray,
-              force_scale: float = 0.0) -> tuple[np.ndarray, SolverReport]:
+    def solve(self, interface_tangent: sp.csr_matrix | None, rhs: np.ndarray,
+              force_scale: float = 0.0, slot: int = 0) -> tuple[np.ndarray, SolverReport]:
         """``δu`` with ``(A + K_Γ)[free, free] δu = rhs[free]``, zero on the
         fixed unknowns; raise SolverError if the solve fails, by the health
-        policy with the residual relative to ``max(‖rhs‖, force_scale)``."""
+        policy with the residual relative to ``max(‖rhs‖, force_scale)``.
+        The matrix is factorised into ``slot`` (one of
+        :data:`~contactcore.tolerances.FACTORISATIONS_KEPT`); with
+        ``interface_tangent`` None, the slot's last factorisation is used."""
+
+    def close(self) -> None:
+        """Release the matrices and factorisations the solves kept."""
 
 
 @dataclass
@@ -187,6 +204,7 @@ class FieldsWithHistory:
 def _merge(total: SolverReport, one: SolverReport) -> None:
     total.solver = one.solver
     total.solves += 1
+    total.factorisations += one.factorisations
     total.backward_error = np.nanmax([total.backward_error, one.backward_error])
     if one.condition is not None:
         total.condition = max(total.condition or 0.0, one.condition)
@@ -205,6 +223,7 @@ class _Newton:
         self.state = self.law.initial_state(self.itf.size)
         self.report = SolverReport(solver="", solves=0, iterations=[])
         self.path = InterfacePath(self.itf.points, self.itf.weights)
+        self._factorised = []  # (slot, interface tangent) of the system's factorisations, last used last
 
     def _residual(self, u, b, response) -> tuple[np.ndarray, float]:
         internal = self.system.internal(u) + self.itf.forces(response.traction)
@@ -236,13 +255,29 @@ class _Newton:
                 self._commit(k, (loads, supports), u, response, it - 1, history)
                 return
             tangent = response.tangent
-            du, rep = self.system.solve(self.itf.stiffness(tangent), -R, force_scale=scale)
+            du, rep = self._solve(tangent, -R, scale)
             _merge(self.report, rep)
             u = u + du
         cycling = len(history) > 4 and np.isclose(history[-1], history[-3]) and np.isclose(history[-2], history[-4])
         raise SolverError(f"Newton did not converge in {tol.NEWTON_MAX_ITERATIONS} iterations"
                           + (" (it cycles between two contact states)" if cycling else "")
                           + f"; relative residual history {_fmt(history)}")
+
+    def _solve(self, tangent: np.ndarray, rhs: np.ndarray, scale: float):
+        """``J δu = rhs`` with the law's ``tangent`` at the points: with the
+        factorisation kept for that tangent if there is one, else refilled
+        into the slot used longest ago (:data:`~contactcore.tolerances.FACTORISATIONS_KEPT`)."""
+        for i, (slot, kept) in enumerate(self._factorised):
+            if np.array_equal(kept, tangent):
+                self._factorised.append(self._factorised.pop(i))
+                return self.system.solve(None, rhs, force_scale=scale, slot=slot)
+        used = {slot for slot, _ in self._factorised}
+        free = [s for s in range(tol.FACTORISATIONS_KEPT) if s not in used]
+        slot = free[0] if free else self._factorised.pop(0)[0]
+        self._factorised = [(s, t) for s, t in self._factorised if s != slot]  # until the solve succeeds
+        du, report = self.system.solve(self.itf.stiffness(tangent), rhs, force_scale=scale, slot=slot)
+        self._factorised.append((slot, tangent))
+        return du, report
 
     def _commit(self, k, factors, u, response, iterations, history) -> None:
         self.u, self.state = u, response.state

@@ -85,7 +85,9 @@ class SolverReport:
     Newton, its last relative residual): the criterion of success
     (:mod:`contactcore.health`); ``backward_error`` is
     ``‖b − A x‖/(‖A‖‖x‖ + ‖b‖)``, reported beside it, never instead;
-    ``condition`` the solver's condition estimate when it was asked for.
+    ``condition`` the solver's condition estimate when it was asked for;
+    ``solves`` the linear solves and ``factorisations`` the matrices
+    factorised for them (a solve with an unchanged tangent reuses the last).
     """
 
     solver: str
@@ -94,6 +96,7 @@ class SolverReport:
     iterations: list[int] = field(default_factory=list)
     increments: int = 1
     solves: int = 1
+    factorisations: int = 0
     condition: float | None = None
     warnings: list[str] = field(default_factory=list)
     options: dict = field(default_factory=dict)

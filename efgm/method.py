@@ -180,6 +180,7 @@ class EFGMSystem:
                                            interface.weights, interface.points)
         self.fixed = np.zeros(0, int)
         self.coords, self.reach, self.estimate, self.what = coords, reach, estimate_condition, what
+        self._tangent = None  # Newton's J and its factorisation, made at the first solve
 
     def fixed_values(self, support_factors) -> np.ndarray:
         return np.zeros(0)
@@ -192,9 +193,16 @@ class EFGMSystem:
     def internal(self, u: np.ndarray) -> np.ndarray:
         return self.A @ u
 
-    def solve(self, interface_tangent, rhs, force_scale=0.0):
-        return sparse_solver.solve((self.A + interface_tangent).tocsr(), rhs, coords=self.coords, reach=self.reach,
-                                   estimate_condition=self.estimate, what=self.what, force_scale=force_scale)
+    def solve(self, interface_tangent, rhs, force_scale=0.0, slot=0):
+        if self._tangent is None:
+            self._tangent = sparse_solver.tangent(self.A, self.interface.pattern(), coords=self.coords, reach=self.reach,
+                                                  estimate_condition=self.estimate, what=self.what)
+        return self._tangent.solve(interface_tangent, rhs, force_scale, slot)
+
+    def close(self) -> None:
+        if self._tangent is not None:
+            self._tangent.close()
+        self._tangent = None
 
 
 #: The MLS bases by name (``--basis``) and their degree.
@@ -251,6 +259,7 @@ def solve(scene: Scene, h: float | None = None, *, degree: int = 1, paper: bool 
                             f"scene {scene.name} (efgm)")
     with timings.measure("solve"):
         x, path, report = solve_increments(scene, system)
+    system.close()
     report.warnings += scene.interface_warnings(ns.h)
     low, high = tol.DMAX_WARN_RANGE
     if dmax < low * DMAX[degree]:

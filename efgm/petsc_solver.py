@@ -21,7 +21,10 @@ import numpy as np
 import scipy.sparse as sp
 
 from contactcore import SolverReport
-from contactcore import tolerances as tol
+
+
+#: The factorisation of a symmetric (indefinite) system: MUMPS's LDLᵀ.
+SYMMETRIC = {"pc_type": "cholesky"}
 
 
 def available() -> bool:
@@ -33,18 +36,24 @@ def available() -> bool:
     return True
 
 
-def is_symmetric(A: sp.csr_matrix) -> bool:
-    """``max |A − Aᵀ| <= SYMMETRIC_TO_ROUNDOFF · max |A|``."""
-    scale = abs(A).max() if A.nnz else 0.0
-    return A.nnz == 0 or abs(A - A.T).max() <= tol.SYMMETRIC_TO_ROUNDOFF * scale
-
-
 def solve(A: sp.csr_matrix, b: np.ndarray, *, petsc_options: dict | None = None, estimate_condition: bool = False,
           what: str = "linear system", force_scale: float = 0.0) -> tuple[np.ndarray, SolverReport]:
     """Solve ``A x = b`` with MUMPS: LDLᵀ if ``A`` is symmetric to
     round-off, else LU (module doc); ``petsc_options`` override that."""
     from contactcore import linear_solver
 
-    factor = {"pc_type": "cholesky"} if is_symmetric(A) else {}
+    factor = SYMMETRIC if linear_solver.is_symmetric(A) else {}
     return linear_solver.solve_csr(A, b, petsc_options={**factor, **(petsc_options or {})},
                                    estimate_condition=estimate_condition, what=what, force_scale=force_scale)
+
+
+def tangent(A: sp.csr_matrix, interface_pattern: sp.spmatrix, *, estimate_condition: bool = False,
+            what: str = "linear system"):
+    """Newton's ``J = A + K_Γ`` on MUMPS (:class:`contactcore.linear_solver.Tangent`):
+    LDLᵀ while ``J`` is symmetric, else LU; every unknown is free."""
+    from contactcore import linear_solver
+
+    return linear_solver.Tangent(linear_solver.to_petsc(A), np.arange(A.shape[0]),
+                                 interface_pattern=interface_pattern,
+                                 symmetric=SYMMETRIC if linear_solver.is_symmetric(A) else None,
+                                 estimate_condition=estimate_condition, what=what)

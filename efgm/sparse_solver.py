@@ -79,38 +79,86 @@ def solve(A: sp.csr_matrix, b: np.ndarray, *, coords: np.ndarray, reach: float, 
                          force_scale=force_scale)
 
 
+def tangent(A: sp.csr_matrix, interface_pattern: sp.spmatrix, *, coords: np.ndarray, reach: float,
+            estimate_condition: bool = False, what: str = "linear system"):
+    """Newton's ``J = A + K_Γ`` of a run: on MUMPS if petsc4py imports
+    (:func:`efgm.petsc_solver.tangent`), else on SuperLU (:class:`SuperLUTangent`)."""
+    if petsc_solver.available():
+        return petsc_solver.tangent(A, interface_pattern, estimate_condition=estimate_condition, what=what)
+    return SuperLUTangent(A, coords=coords, reach=reach, estimate_condition=estimate_condition, what=what)
+
+
 def solve_superlu(A: sp.csr_matrix, b: np.ndarray, *, coords: np.ndarray, reach: float,
                   estimate_condition: bool = False, what: str = "linear system",
                   force_scale: float = 0.0) -> tuple[np.ndarray, SolverReport]:
-    """Solve ``A x = b``, unknown i located at ``coords[i]`` and coupled to
-    unknowns within ``reach`` (for the ordering); raise :class:`SolverError`
-    if it fails: the relative residual ``‖b − A x‖/max(‖b‖, force_scale)``
-    decides (:func:`contactcore.health.check_residual`), the backward error
-    is reported beside it.  SuperLU's equilibrated factors of a singular
-    matrix rarely break down (round-off leaves a tiny pivot, hence a huge
-    ``x`` and a tiny backward error), so the residual is the check that
-    catches them."""
-    s = _equilibrate(A)
-    perm = nested_dissection(coords, reach)
-    As = (sp.diags(s) @ A @ sp.diags(s))[perm][:, perm]
-    try:
-        lu = spla.splu(As.tocsc(), permc_spec="NATURAL", diag_pivot_thresh=PIVOT_THRESHOLD,
-                       options={"SymmetricMode": True})
-    except RuntimeError as exc:
-        raise SolverError(f"{what} is singular ({exc}) — a rigid-body mode is not removed by the supports "
-                          "and pins, or a penalty is so stiff that the bulk stiffness is lost in round-off") from None
-    x = np.empty_like(b)
-    x[perm] = lu.solve((s * b)[perm])
-    x *= s
-    report = SolverReport(solver="superlu (scipy), equilibrated, nested dissection", iterations=[1])
-    r = b - A @ x
-    report.residual = health.relative_residual(r, b, force_scale)
-    report.backward_error = health.backward_error(r, spla.norm(A, np.inf), x, b)
-    health.check_residual(report.residual if np.all(np.isfinite(x)) else float("nan"), what, report.backward_error)
-    if estimate_condition:
-        inv = spla.LinearOperator(As.shape, matvec=lu.solve, rmatvec=lambda v: lu.solve(v, trans="T"))
-        report.condition = float(spla.onenormest(inv) * spla.norm(As, 1))
-        if report.condition > tol.CONDITION_WARN:
-            report.warnings.append(f"condition estimate {report.condition:.2e} exceeds {tol.CONDITION_WARN:.0e}: "
-                                   "digits may be lost (penalty too stiff, or supports too small?)")
-    return x, report
+    """Solve ``A x = b`` once by :class:`SuperLU`; ``coords`` and ``reach``
+    as there."""
+    return SuperLU(A, coords=coords, reach=reach, estimate_condition=estimate_condition, what=what).solve(
+        b, force_scale)
+
+
+class SuperLU:
+    """``A`` equilibrated and factorised by SuperLU, unknown i located at
+    ``coords[i]`` and coupled to unknowns within ``reach`` (for the
+    ordering); raise :class:`SolverError` if it is singular.  Each
+    :meth:`solve` is judged by its relative residual
+    ``‖b − A x‖/max(‖b‖, force_scale)`` (:func:`contactcore.health.check_residual`),
+    the backward error reported beside it.  SuperLU's equilibrated factors
+    of a singular matrix rarely break down (round-off leaves a tiny pivot,
+    hence a huge ``x`` and a tiny backward error), so the residual is the
+    check that catches them."""
+
+    def __init__(self, A: sp.csr_matrix, *, coords: np.ndarray, reach: float, estimate_condition: bool = False,
+                 what: str = "linear system"):
+        self.A, self.what = A, what
+        self.s = _equilibrate(A)
+        self.perm = nested_dissection(coords, reach)
+        As = (sp.diags(self.s) @ A @ sp.diags(self.s))[self.perm][:, self.perm]
+        try:
+            self.lu = spla.splu(As.tocsc(), permc_spec="NATURAL", diag_pivot_thresh=PIVOT_THRESHOLD,
+                                options={"SymmetricMode": True})
+        except RuntimeError as exc:
+            raise SolverError(f"{what} is singular ({exc}) — a rigid-body mode is not removed by the supports "
+                              "and pins, or a penalty is so stiff that the bulk stiffness is lost in round-off") from None
+        self.base = SolverReport(solver="superlu (scipy), equilibrated, nested dissection", factorisations=1)
+        if estimate_condition:
+            inv = spla.LinearOperator(As.shape, matvec=self.lu.solve, rmatvec=lambda v: self.lu.solve(v, trans="T"))
+            self.base.condition = float(spla.onenormest(inv) * spla.norm(As, 1))
+            if self.base.condition > tol.CONDITION_WARN:
+                self.base.warnings.append(f"condition estimate {self.base.condition:.2e} exceeds "
+                                          f"{tol.CONDITION_WARN:.0e}: digits may be lost (penalty too stiff, or "
+                                          "supports too small?)")
+
+    def solve(self, b: np.ndarray, force_scale: float = 0.0) -> tuple[np.ndarray, SolverReport]:
+        x = np.empty_like(b)
+        x[self.perm] = self.lu.solve((self.s * b)[self.perm])
+        x *= self.s
+        report = SolverReport(solver=self.base.solver, iterations=[1], factorisations=self.base.factorisations,
+                              condition=self.base.condition, warnings=list(self.base.warnings))
+        self.base.factorisations, self.base.warnings = 0, []
+        r = b - self.A @ x
+        report.residual = health.relative_residual(r, b, force_scale)
+        report.backward_error = health.backward_error(r, spla.norm(self.A, np.inf), x, b)
+        health.check_residual(report.residual if np.all(np.isfinite(x)) else float("nan"), self.what,
+                              report.backward_error)
+        return x, report
+
+
+class SuperLUTangent:
+    """Newton's ``J = A + K_Γ`` for :class:`SuperLU` (every unknown free),
+    with the interface of :class:`contactcore.linear_solver.Tangent`: one
+    factorisation per slot, a ``K_Γ`` of None solves with the slot's last."""
+
+    def __init__(self, A: sp.csr_matrix, *, coords: np.ndarray, reach: float, estimate_condition: bool = False,
+                 what: str = "linear system"):
+        self.A, self.slots = A, {}
+        self.kwargs = dict(coords=coords, reach=reach, estimate_condition=estimate_condition, what=what)
+
+    def solve(self, interface_tangent, rhs: np.ndarray, force_scale: float = 0.0, slot: int = 0):
+        if interface_tangent is not None:
+            self.slots.pop(slot, None)  # until the factorisation succeeds
+            self.slots[slot] = SuperLU((self.A + interface_tangent).tocsr(), **self.kwargs)
+        return self.slots[slot].solve(rhs, force_scale)
+
+    def close(self) -> None:
+        self.slots = {}

@@ -283,7 +283,7 @@ def solve(scene: Scene, h: float | None = None, *, degree: int = 1, paper: bool 
     report.warnings += scene.interface_warnings(h, fitted=True)
     disps, stresses = _stress_functions(scene, fm, uh, degree)
     locator = BodyCellLocator(fm.mesh, [fm.cells_of(b) for b in BODIES])
-    K.destroy()
+    system.close()
     timings.total = time.perf_counter() - start
     return Result(method=METHOD, scene=scene, degree=degree, dofs=cons.num_active, timings=timings,
                   solver=report, fields=with_history(scene, BodyFields(locator, disps, stresses), path),

@@ -7,7 +7,9 @@ hands them to :func:`contactcore.newton.solve_increments`: prescribed
 unknowns are eliminated (only the free rows are factorised, by MUMPS LU,
 which assumes no symmetry), and the interface tangent ``K_Γ`` (scipy CSR,
 from the one assembly sink) is added into a copy of ``K`` whose pattern
-already holds it (every cell couples all its unknowns).  Serial only.
+already holds it (every cell couples all its unknowns).  That copy, its
+free block and the factorisation are allocated once and refilled
+(:class:`contactcore.linear_solver.Tangent`).  Serial only.
 """
 from __future__ import annotations
 
@@ -40,7 +42,8 @@ class PETScSystem:
         self.fixed_full, self.owner = np.asarray(fixed_full, float), np.asarray(owner)
         self.free = np.setdiff1d(np.arange(self.size), self.fixed)
         self.interface = interface
-        self.options, self.estimate, self.what = petsc_options, estimate_condition, what
+        self._tangent = linear_solver.Tangent(K, self.free, petsc_options=petsc_options,
+                                              estimate_condition=estimate_condition, what=what)
 
     def fixed_values(self, support_factors) -> np.ndarray:
         factor = np.asarray(tuple(support_factors) + (0.0,))[self.owner]
@@ -58,18 +61,8 @@ class PETScSystem:
         y.destroy()
         return out
 
-    def solve(self, interface_tangent: sp.csr_matrix, rhs: np.ndarray, force_scale: float = 0.0):
-        J = self.K.copy()
-        Ki = linear_solver.to_petsc(interface_tangent)
-        J.axpy(1.0, Ki, structure=PETSc.Mat.Structure.SUBSET_NONZERO_PATTERN)
-        b, x = J.createVecs()
-        b.setArray(rhs)
-        x.set(0.0)
-        try:
-            report = linear_solver.solve(J, b, x, rows=self.free, petsc_options=self.options,
-                                         estimate_condition=self.estimate, what=self.what,
-                                         force_scale=force_scale)
-            return x.getArray().copy(), report
-        finally:
-            for obj in (J, Ki, b, x):
-                obj.destroy()
+    def solve(self, interface_tangent, rhs: np.ndarray, force_scale: float = 0.0, slot: int = 0):
+        return self._tangent.solve(interface_tangent, rhs, force_scale, slot)
+
+    def close(self) -> None:
+        self._tangent.close()

@@ -609,7 +609,7 @@ def solve(scene: Scene, h: float | None = None, *, degree: int = 1, paper: bool 
     with timings.measure("solve"):
         x, path, report = solve_increments(scene, system)
     report.warnings += scene.interface_warnings(h)
-    A.destroy()
+    system.close()
     timings.total = time.perf_counter() - start
     return Result(method=METHOD, scene=scene, degree=degree, dofs=4 * nblocks - len(unused), timings=timings,
                   solver=report, fields=with_history(scene, XFEMFields(space, x.reshape(-1, 4)), path), interface=path,
