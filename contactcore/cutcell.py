@@ -25,6 +25,7 @@ import numpy as np
 
 from contactcore import DiscretisationError
 from contactcore import tolerances as tol
+from contactcore.bodies import sign_of
 from contactcore.geometry import CircleInterface, LevelSetInterface, LineInterface
 
 #: Quad-tree splits of a cell before giving up on a cut that stays complicated.
@@ -61,11 +62,6 @@ def gauss01(n: int) -> tuple[np.ndarray, np.ndarray]:
 
 # ----- the level set seen from a cell ---------------------------------------
 
-def _side(phi: np.ndarray) -> np.ndarray:
-    """+1 on the + side including φ = 0 (SCENES.md), −1 on the − side."""
-    return np.where(phi >= 0, 1, -1)
-
-
 #: Samples per edge that detect the sign changes of a general level set
 #: (two crossings closer than 1/EDGE_SAMPLES of an edge would be missed), and
 #: bisection steps that locate each (2^-52: to round-off).
@@ -75,13 +71,13 @@ BISECTIONS = 52
 
 def _general_crossings(itf, a: np.ndarray, b: np.ndarray) -> list[float]:
     t = np.linspace(0.0, 1.0, EDGE_SAMPLES + 1)
-    side = _side(itf.phi(a + t[:, None] * (b - a)))
+    side = sign_of(itf.phi(a + t[:, None] * (b - a)))
     out = []
     for k in np.flatnonzero(side[:-1] != side[1:]):
         lo, hi = t[k], t[k + 1]
         for _ in range(BISECTIONS):
             mid = (lo + hi) / 2
-            if _side(itf.phi([a + mid * (b - a)]))[0] == side[k]:
+            if sign_of(itf.phi([a + mid * (b - a)]))[0] == side[k]:
                 lo = mid
             else:
                 hi = mid
@@ -93,7 +89,7 @@ def edge_crossings(itf, a: np.ndarray, b: np.ndarray) -> list[float]:
     """Parameters t ∈ [0, 1) of the segment a→b where the side changes."""
     if isinstance(itf, LevelSetInterface):
         return _general_crossings(itf, a, b)
-    sa, sb = _side(itf.phi([a, b]))
+    sa, sb = sign_of(itf.phi([a, b]))
     if isinstance(itf, LineInterface):
         if sa == sb:
             return []
@@ -228,7 +224,7 @@ def polygon_rule(vertices: np.ndarray, n: int):
 def cut_polygon(itf, vertices: np.ndarray, n: int, depth: int = 0) -> list[tuple[int, np.ndarray, np.ndarray]]:
     """``[(side, points, weights)]`` for a convex polygon (counter-clockwise)
     and level set ``itf``: one entry per region on one side of Γ."""
-    sides = _side(itf.phi(vertices))
+    sides = sign_of(itf.phi(vertices))
     walk = []  # the boundary, counter-clockwise: (point, is_corner, side_after)
     for i in range(len(vertices)):
         a, b = vertices[i], vertices[(i + 1) % len(vertices)]

@@ -179,28 +179,6 @@ def along(interface, points: np.ndarray) -> np.ndarray:
     return (np.asarray(points) - interface.point) @ t
 
 
-class FieldsWithHistory:
-    """A method's fields plus the law's history on Γ, for laws that have one:
-    interface quantities then follow from the jump *and* the history."""
-
-    def __init__(self, fields, interface, path: InterfacePath):
-        self.fields, self.interface, self.path = fields, interface, path
-
-    @property
-    def base(self):
-        """The wrapped fields (the protocol of :func:`contactcore.result.method_fields`)."""
-        return self.fields
-
-    def displacement(self, points, bodies):
-        return self.fields.displacement(points, bodies)
-
-    def stress(self, points, bodies):
-        return self.fields.stress(points, bodies)
-
-    def interface_state(self, points):
-        return self.path.state_at(self.interface, points)
-
-
 def _merge(total: SolverReport, one: SolverReport) -> None:
     total.solver = one.solver
     total.solves += 1
@@ -311,12 +289,6 @@ class _Newton:
 
 def _fmt(values) -> str:
     return "[" + ", ".join(f"{v:.2e}" for v in values) + "]"
-
-
-def with_history(scene, fields, path: InterfacePath):
-    """``fields`` as a Result holds them: wrapped with the history when the
-    law has one."""
-    return FieldsWithHistory(fields, scene.interface, path) if scene.law.has_history else fields
 
 
 def _final_state(scene, system: ContactSystem, newton: _Newton) -> _Newton:

@@ -8,8 +8,9 @@ last moved back by 1e-9 of 2π.  Each point takes the body that contains it
 Interface quantities come from the computed jump and the law, never from the
 bulk stress: ``[[u]] = u⁺ − u⁻``, ``g_N = [[u]]·n``, ``g_T = [[u]]·t``, and
 ``(t_N, t_T)`` is the law's response to ``(g_N, g_T)`` — and, for a law with
-history (``coulomb``), to the history that the fields carry
-(:class:`contactcore.newton.FieldsWithHistory`).  That history lives at the
+history (``coulomb``), to the history at the last increment, which the
+caller passes as data: the Result's ``interface`` path
+(:class:`contactcore.newton.InterfacePath`).  That history lives at the
 method's quadrature points on Γ and is interpolated along Γ to the samples:
 exact where neighbouring points share a status, approximate where an open
 point meets a closed one.
@@ -67,21 +68,27 @@ def sample_points(scene: Scene, profile: Profile, n: int = tol.PROFILE_POINTS) -
     return f * np.linalg.norm(b - a), a + f[:, None] * (b - a), "arclength"
 
 
-def interface_response(scene: Scene, fields: Fields, points: np.ndarray) -> dict[str, np.ndarray]:
-    """``gN, gT, tN, tT`` at points of Γ from the jump of the computed field."""
+def interface_response(scene: Scene, fields: Fields, points: np.ndarray, path=None) -> dict[str, np.ndarray]:
+    """``gN, gT, tN, tT`` at points of Γ from the jump of the computed field
+    (and the law's history on ``path``, for a law that has one)."""
     m = len(points)
     jump = fields.displacement(points, np.ones(m, int)) - fields.displacement(points, np.zeros(m, int))
     n = scene.interface.normals(points)
     g = np.column_stack([np.sum(jump * n, axis=1), np.sum(jump * tangent_of(n), axis=1)])
-    state = getattr(fields, "interface_state", None)
-    if scene.law.has_history and state is None:
-        raise ValueError(f"the '{scene.law.name}' law needs the interface history: sample a Result's fields")
-    t = scene.law.evaluate(g, state(points) if state else None).traction
+    state = None
+    if scene.law.has_history:
+        if path is None or path.state is None:
+            raise ValueError(f"the '{scene.law.name}' law needs the interface history: pass the Result's "
+                             "interface path")
+        state = path.state_at(scene.interface, points)
+    t = scene.law.evaluate(g, state).traction
     return {"gN": g[:, 0], "gT": g[:, 1], "tN": t[:, 0], "tT": t[:, 1]}
 
 
-def evaluate_quantities(scene: Scene, fields: Fields, points: np.ndarray, quantities, side: str = "plus") -> dict:
-    """Every quantity in ``quantities`` at ``points`` (see module doc)."""
+def evaluate_quantities(scene: Scene, fields: Fields, points: np.ndarray, quantities, side: str = "plus",
+                        path=None) -> dict:
+    """Every quantity in ``quantities`` at ``points`` (see module doc;
+    ``path`` the interface history, needed by a law that has one)."""
     bodies = scene.body_of(points, side)
     out = {}
     if set(quantities) & set(STRESS_QUANTITIES):
@@ -90,13 +97,15 @@ def evaluate_quantities(scene: Scene, fields: Fields, points: np.ndarray, quanti
     if set(quantities) & set(DISPLACEMENT_QUANTITIES):
         out.update(zip(DISPLACEMENT_QUANTITIES, fields.displacement(points, bodies).T))
     if set(quantities) & set(INTERFACE_QUANTITIES):
-        out.update(interface_response(scene, fields, points))
+        out.update(interface_response(scene, fields, points, path))
     return {q: out[q] for q in quantities}
 
 
-def sample_profile(scene: Scene, fields: Fields, profile: Profile) -> ProfileData:
-    """One profile of ``scene`` evaluated on ``fields``; SolverError if a
-    quantity is not finite (the last guard before anything is written).
+def sample_profile(scene: Scene, fields: Fields, profile: Profile, path=None) -> ProfileData:
+    """One profile of ``scene`` evaluated on ``fields`` (and the interface
+    history ``path``, for a law that has one: a Result's ``interface``);
+    SolverError if a quantity is not finite (the last guard before anything
+    is written).
 
     A Result's fields (:class:`contactcore.scaling.ScaledFields`) are
     sampled where the method solved, on the dimensionless scene, and mapped
@@ -104,17 +113,19 @@ def sample_profile(scene: Scene, fields: Fields, profile: Profile) -> ProfileDat
     edge (a P1 stress jumps there) takes the same side of it."""
     scales = getattr(fields, "scales", None)
     if scales is not None:
-        data = scales.profile_data(sample_profile(scales.scene(scene), fields.inner, scales.profile(profile)))
+        data = scales.profile_data(sample_profile(scales.scene(scene), fields.inner, scales.profile(profile),
+                                                  scales.path_in(path)))
     else:
         s, pts, param = sample_points(scene, profile)
         columns = {"s": s, "x": pts[:, 0], "y": pts[:, 1]}
-        columns.update(evaluate_quantities(scene, fields, pts, profile.quantities, profile.side))
+        columns.update(evaluate_quantities(scene, fields, pts, profile.quantities, profile.side, path))
         data = ProfileData(profile.id, param, columns)
     for q in profile.quantities:
         require_finite(f"profile {profile.id}: {q}", data.columns[q])
     return data
 
 
-def sample_profiles(scene: Scene, fields: Fields) -> list[ProfileData]:
-    """Exactly the profiles the scene asks for, nothing more."""
-    return [sample_profile(scene, fields, p) for p in scene.profiles]
+def sample_profiles(scene: Scene, fields: Fields, path=None) -> list[ProfileData]:
+    """Exactly the profiles the scene asks for, nothing more (``path`` as
+    for :func:`sample_profile`)."""
+    return [sample_profile(scene, fields, p, path) for p in scene.profiles]

@@ -2,8 +2,9 @@
 
 A scene may be drawn in any units (µm for micro-contact, km for geology)
 and anywhere in the plane.  So that no tolerance of any method (gmsh's, point
-location, cut cells, quadrature) is absolute, each method's ``solve`` is
-decorated with :func:`dimensionless`: it solves the scene mapped by
+location, cut cells, quadrature) is absolute, the one ``solve`` of every
+method (:mod:`contactcore.discretisation`) is decorated with
+:func:`dimensionless`: it solves the scene mapped by
 
     x' = (x − o)/L,   u' = u/U,   E' = E/S,   σ' = σ/(S U/L),
 
@@ -34,6 +35,7 @@ overflow, but an ordinary problem once made dimensionless.
 """
 from __future__ import annotations
 
+import dataclasses
 import functools
 import math
 from dataclasses import dataclass, replace
@@ -207,6 +209,16 @@ class Scales:
         return InterfacePath(self.to_user(path.points), L * path.weights, steps,
                              None if path.state is None else U * path.state)
 
+    def path_in(self, path: InterfacePath | None) -> InterfacePath | None:
+        """The reverse of :meth:`path`: a user's interface history over the
+        dimensionless scene."""
+        if path is None:
+            return None
+        L, U = self.length, self.displacement
+        steps = [replace(st, jump=st.jump / U, traction=st.traction / self.stress) for st in path.steps]
+        return InterfacePath(self.to_dimensionless(path.points), path.weights / L, steps,
+                             None if path.state is None else path.state / U)
+
     def discretisation(self, record: dict) -> dict:
         """A method's discretisation record with its lengths (h, a grading's
         distance) back in the user's units."""
@@ -235,20 +247,13 @@ class _Mapped:
 class ScaledFields(_Mapped):
     """A Result's fields: ``inner`` (the method's, over ``scales``'
     dimensionless scene) read in the user's units: ``u(x) = U u'(x')``,
-    ``σ(x) = Σ σ'(x')``, ``x' = (x − o)/L``, and the law's slip history
-    ``s(x) = U s'(x')`` when ``inner`` has one."""
+    ``σ(x) = Σ σ'(x')``, ``x' = (x − o)/L``."""
 
     def __init__(self, inner, scales: Scales):
         super().__init__(inner, scales.to_dimensionless, scales.displacement, scales.stress)
         self.inner, self.scales = inner, scales
         # the wrapper protocol of contactcore.result.method_fields
         self.base, self.origin, self.length_scale = inner, scales.origin, scales.length
-        if hasattr(inner, "interface_state"):
-            self.interface_state = self._interface_state
-
-    def _interface_state(self, points):
-        state = self.inner.interface_state(self._points(points))
-        return None if state is None else self._u * state
 
 
 def dimensionless_view(fields, scales: Scales) -> _Mapped:
@@ -272,18 +277,22 @@ def _option_in(name: str, value, scales: Scales):
 
 
 def dimensionless(solve):
-    """Decorate a method's ``solve(scene, h=None, **options) -> Result`` so
-    that it solves the dimensionless scene and returns the Result in the
-    user's units: ``scene`` the user's, ``fields`` a :class:`ScaledFields`
+    """Decorate the one ``solve(scene, discretisation, h=None, **options)
+    -> Result`` (:mod:`contactcore.discretisation`) so that it solves the
+    dimensionless scene, with the discretisation's options made
+    dimensionless too, and returns the Result in the user's units:
+    ``scene`` the user's, ``fields`` a :class:`ScaledFields`
     (``fields.inner`` the method's own, ``fields.scales``), ``interface``
     and ``discretisation`` mapped back.  An ``h`` that is not > 0 is passed
     on unchanged, for the method to refuse in the user's numbers.
     """
     @functools.wraps(solve)
-    def solve_dimensionless(scene: Scene, h: float | None = None, **options):
+    def solve_dimensionless(scene: Scene, discretisation, h: float | None = None, **options):
         scales = Scales.of(scene)
         h_in = h / scales.length if h is not None and h > 0 else h
-        result = solve(scales.scene(scene), h_in, **{k: _option_in(k, v, scales) for k, v in options.items()})
+        given = {f.name: getattr(discretisation, f.name) for f in dataclasses.fields(discretisation)}
+        inner = replace(discretisation, **{k: _option_in(k, v, scales) for k, v in given.items()})
+        result = solve(scales.scene(scene), inner, h_in, **options)
         return replace(result, scene=scene, fields=ScaledFields(result.fields, scales),
                        interface=scales.path(result.interface),
                        discretisation=scales.discretisation(result.discretisation))

@@ -18,11 +18,13 @@ from pathlib import Path
 import numpy as np
 
 from . import tolerances as tol
+from .bodies import Body
+from .elasticity import voigt_matrix
 from .errors import SceneError
 from .geometry import CircleInterface, Disc, Domain, Interface, LevelSetInterface, LineInterface, Rectangle
 from .laws import InterfaceLaw, make_law
 
-BODIES = ("minus", "plus")
+BODIES = tuple(b.label for b in Body)
 COMPONENTS = ("xy", "x", "y")
 STRESS_QUANTITIES = ("sxx", "syy", "sxy")
 DISPLACEMENT_QUANTITIES = ("ux", "uy")
@@ -196,6 +198,12 @@ class Scene:
     def with_changes(self, **changes) -> "Scene":
         """A validated copy with some fields replaced (parameter studies)."""
         return replace(self, **changes).validated()
+
+    def voigt_matrices(self) -> np.ndarray:
+        """The plane-stress or plane-strain ``D`` (σ = D ε in Voigt
+        notation) of each body, (2, 3, 3) in :data:`BODIES` order: the one
+        place the methods take their material matrices from."""
+        return np.array([voigt_matrix(self.materials[b].E, self.materials[b].nu, self.plane) for b in BODIES])
 
     def interface_warnings(self, h: float, fitted: bool = False) -> list[str]:
         """What a method of cell or node spacing ``h`` should warn about

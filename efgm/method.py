@@ -23,27 +23,27 @@ petsc4py nor gmsh.
 """
 from __future__ import annotations
 
-import time
-
 import numpy as np
 import scipy.sparse as sp
 
 from contactcore import BODIES, DiscretisationError, Result, Scene, Timings
+from contactcore import discretisation
+from contactcore.discretisation import Built, Resolution, make
 from contactcore import tolerances as tol
-from contactcore.elasticity import voigt_matrix
-from contactcore.newton import InterfaceOperator, solve_increments, with_history
-from contactcore.scaling import dimensionless
-from contactcore.geometry import LevelSetInterface, tangent_of
+from contactcore.constraints import Constraints
+from contactcore.newton import InterfaceOperator
+from contactcore.geometry import tangent_of
 from contactcore.scene import Pressure, Traction, body_force
 
 from . import sparse_solver
 from .nodes import NodeSet, check_nodes, grid_nodes, support_radii
 from .operators import Approximation, block_diagonal, find_enrichment
+from .options import BASES, EFGM  # noqa: F401 (BASES re-exported: the bases by name)
 from contactcore.cutcell import Rule
 from contactcore.quadrature import background_cells, boundary_rule, interface_rule, volume_rule
 from .shape import MLS
 
-METHOD = "efgm"
+METHOD = EFGM.name
 
 #: Gauss points per direction in each background cell or sub-cell, and per
 #: boundary segment, by basis degree.  The integrand of K is rational and the
@@ -63,17 +63,11 @@ GAUSS_POINTS = {1: 6, 2: 8}
 DMAX = {1: 2.0, 2: 3.0}
 
 
-def resolution(scene: Scene, h: float | None, paper: bool) -> NodeSet:
-    """The node set: the paper's grid, a grid of spacing h, or the scene's default."""
-    if paper:
-        counts = scene.paper.get("efgm_nodes")
-        if counts is None:
-            raise DiscretisationError(f"scene {scene.name} gives no paper discretisation")
-        return grid_nodes(scene, counts=counts)
-    h = scene.h if h is None else h
-    if h is None or not h > 0:
-        raise DiscretisationError(f"the resolution h must be > 0 (got {h}); the scene gives no default")
-    return grid_nodes(scene, h)
+def _node_set(scene: Scene, resolution: Resolution) -> NodeSet:
+    """The paper's grid of nodes, or a grid of spacing h."""
+    if resolution.counts is not None:
+        return grid_nodes(scene, counts=resolution.counts)
+    return grid_nodes(scene, resolution.h)
 
 
 # ----- the discrete system --------------------------------------------------
@@ -83,7 +77,7 @@ class EFGMFields:
 
     def __init__(self, scene: Scene, approx: Approximation, U: np.ndarray):
         self.scene, self.approx, self.U = scene, approx, U
-        self.D = [voigt_matrix(scene.materials[b].E, scene.materials[b].nu, scene.plane) for b in BODIES]
+        self.D = scene.voigt_matrices()
 
     def displacement(self, points, bodies) -> np.ndarray:
         sv = self.approx.mls.evaluate(np.asarray(points, float)[:, :2], bodies)
@@ -96,10 +90,10 @@ class EFGMFields:
         return np.where(bodies[:, None] == 1, eps @ self.D[1].T, eps @ self.D[0].T)
 
 
-def _constraints(scene: Scene, approx: Approximation):
+def _constraints(scene: Scene, approx: Approximation) -> Constraints:
     """Collocation rows ``C u = g`` (supported boundary nodes, and pins): the
-    rows, the values at full load, the support of each row (−1 for a pin)
-    and the point of each row."""
+    rows (``operator``), the values at full load, the support of each row
+    (−1 for a pin) and the point of each row."""
     nodes = approx.mls.nodes
     points, comps, values, owners = [], [], [], []
     for i, sup in enumerate(scene.supports):
@@ -120,7 +114,8 @@ def _constraints(scene: Scene, approx: Approximation):
             values.append(np.zeros(1))
             owners.append(np.full(1, -1))
     if not points:
-        return sp.csr_matrix((0, approx.ndofs)), np.zeros(0), np.zeros(0, int), np.zeros((0, 2))
+        return Constraints(np.zeros(0), np.zeros(0, int), operator=sp.csr_matrix((0, approx.ndofs)),
+                           points=np.zeros((0, 2)))
     pts, comp, g, owner = (np.concatenate(a) for a in (points, comps, values, owners))
     # a point shared by two supports (a corner) is constrained once: a repeated
     # row would make the saddle-point system singular
@@ -134,7 +129,7 @@ def _constraints(scene: Scene, approx: Approximation):
     pts, comp, g, owner = pts[first], comp[first], g[first], owner[first]
     bodies = scene.body_of(pts)
     N = approx.displacement_operator(approx.mls.evaluate(pts, bodies), bodies)
-    return N[2 * np.arange(len(pts)) + comp], g, owner, pts
+    return Constraints(g, owner, operator=N[2 * np.arange(len(pts)) + comp], points=pts)
 
 
 def _load_vectors(scene: Scene, approx: Approximation, vol: Rule, h: float, n: int) -> list[np.ndarray]:
@@ -161,11 +156,13 @@ def _load_vectors(scene: Scene, approx: Approximation, vol: Rule, h: float, n: i
 class EFGMSystem:
     """The saddle-point system ``[[K, s Cᵀ], [s C, 0]]`` as a
     :class:`~contactcore.newton.ContactSystem`: every unknown is free (the
-    supports are multiplier rows, scaled by ``s`` = the largest E)."""
+    supports are multiplier rows of the ``constraints``' operator, scaled by
+    ``s`` = the largest E)."""
 
-    def __init__(self, K, C, g, owner, loads, interface: InterfaceOperator, scale: float, coords, reach,
+    def __init__(self, K, constraints: Constraints, loads, interface: InterfaceOperator, scale: float, coords, reach,
                  estimate_condition, what):
-        self.scale = scale
+        self.scale, self.constraints = scale, constraints
+        C = constraints.operator
         n, c = K.shape[0], C.shape[0]
         K = K.tocsr()  # padded to the full size without a copy of its entries, plus the constraint blocks
         padded = sp.csr_matrix((K.data, K.indices, np.concatenate([K.indptr, np.full(c, K.indptr[-1])])),
@@ -174,7 +171,7 @@ class EFGMSystem:
                                    format="csr")).tocsr()
         self.size = self.A.shape[0]
         self.ndofs = K.shape[0]
-        self.C_values, self.owner, self.loads = g, owner, loads
+        self.loads = loads
         G = interface.G
         self.interface = InterfaceOperator(sp.csr_matrix((G.data, G.indices, G.indptr), shape=(G.shape[0], self.size)),
                                            interface.weights, interface.points)
@@ -187,8 +184,7 @@ class EFGMSystem:
 
     def external(self, load_factors, support_factors) -> np.ndarray:
         f = sum((lam * v for lam, v in zip(load_factors, self.loads)), np.zeros(self.ndofs))
-        factor = np.where(self.owner >= 0, np.asarray(support_factors + (0.0,))[self.owner], 0.0)
-        return np.concatenate([f, self.scale * self.C_values * factor])
+        return np.concatenate([f, self.scale * self.constraints.at(support_factors)])
 
     def internal(self, u: np.ndarray) -> np.ndarray:
         return self.A @ u
@@ -205,73 +201,54 @@ class EFGMSystem:
         self._tangent = None
 
 
-#: The MLS bases by name (``--basis``) and their degree.
-BASES = {"linear": 1, "quadratic": 2}
-
-
-@dimensionless
-def solve(scene: Scene, h: float | None = None, *, degree: int = 1, paper: bool = False, basis: str | None = None,
-          dmax: float | None = None, weight: str = "cubic", support: str = "circular",
-          nodes: np.ndarray | None = None, gauss: int | None = None,
-          estimate_condition: bool = False) -> Result:
-    """Solve ``scene`` with EFGM.
-
-    ``degree`` 1 or 2 (MLS basis), or ``basis`` "linear" or "quadratic"
-    (the same choice by name; it overrides ``degree``), ``dmax`` the support dilation (default
-    :data:`DMAX`), ``weight`` "cubic" or "quartic", ``support`` "circular" or
-    "rectangular", ``nodes`` any (N, 2) point set instead of a grid (it must
-    include nodes on the supported boundaries), ``gauss`` the points per
-    direction of each cell (default :data:`GAUSS_POINTS`).
-    """
-    if basis is not None:
-        if basis not in BASES:
-            raise DiscretisationError(f"efgm: basis must be one of {', '.join(BASES)} (got {basis!r})")
-        degree = BASES[basis]
-    if degree not in (1, 2):
-        raise DiscretisationError(f"efgm: degree must be 1 or 2 (got {degree})")
-    if support not in ("circular", "rectangular"):
-        raise DiscretisationError(f"efgm: support must be 'circular' or 'rectangular' (got {support!r})")
-    if isinstance(scene.interface, LevelSetInterface):
-        raise DiscretisationError("efgm: a general level set Γ is supported by xfem only (its mesh ignores Γ)")
-    start, timings = time.perf_counter(), Timings()
-    n = GAUSS_POINTS[degree] if gauss is None else gauss
-    dmax = DMAX[degree] if dmax is None else dmax
+def build(scene: Scene, options: EFGM, resolution: Resolution, timings: Timings) -> Built:
+    """The EFGM system of ``scene`` (:class:`~contactcore.discretisation.Discretisation`'s
+    ``build``; :class:`efgm.options.EFGM` for the options)."""
+    degree = options.degree
+    n = GAUSS_POINTS[degree] if options.gauss is None else options.gauss
+    dmax = DMAX[degree] if options.dmax is None else options.dmax
     with timings.measure("mesh"):
-        ns = check_nodes(scene, nodes) if nodes is not None else resolution(scene, h, paper)
-        radii = support_radii(ns, dmax, support == "rectangular")
+        ns = check_nodes(scene, options.nodes) if options.nodes is not None else _node_set(scene, resolution)
+        radii = support_radii(ns, dmax, options.support == "rectangular")
         vol = volume_rule(scene, ns.h, n)
         gam_pts, gam_w, gam_n = interface_rule(scene, ns.h, n)
     with timings.measure("assembly"):
         enrichment = find_enrichment(scene, ns.x, radii, vol.points, vol.bodies)
-        mls = MLS(ns.x, radii, degree=degree, weight=weight, dilation=dmax, seen_from=enrichment.seen_from)
+        mls = MLS(ns.x, radii, degree=degree, weight=options.weight, dilation=dmax, seen_from=enrichment.seen_from)
         approx = Approximation(mls, enrichment)
-        D = np.array([voigt_matrix(scene.materials[b].E, scene.materials[b].nu, scene.plane) for b in BODIES])
+        D = scene.voigt_matrices()
         lo, hi = background_cells(scene, ns.h)
         K = approx.stiffness(vol, lo.min(axis=0), hi[0] - lo[0], D)
         m = len(gam_w)
         jump = (approx.displacement_operator(mls.evaluate(gam_pts, np.ones(m, int)), np.ones(m, int))
                 - approx.displacement_operator(mls.evaluate(gam_pts, np.zeros(m, int)), np.zeros(m, int)))
         G = block_diagonal(np.stack([gam_n, tangent_of(gam_n)], axis=1)) @ jump
-        C, g, owner, c_pts = _constraints(scene, approx)
-        system = EFGMSystem(K, C, g, owner, _load_vectors(scene, approx, vol, ns.h, n),
+        constraints = _constraints(scene, approx)
+        system = EFGMSystem(K, constraints, _load_vectors(scene, approx, vol, ns.h, n),
                             InterfaceOperator(G.tocsr(), gam_w, gam_pts), max(m.E for m in scene.materials.values()),
-                            np.vstack([approx.dof_points(), c_pts]), 2 * mls.reach, estimate_condition,
-                            f"scene {scene.name} (efgm)")
-    with timings.measure("solve"):
-        x, path, report = solve_increments(scene, system)
-    system.close()
-    report.warnings += scene.interface_warnings(ns.h)
+                            np.vstack([approx.dof_points(), constraints.points]), 2 * mls.reach,
+                            options.estimate_condition, f"scene {scene.name} (efgm)")
+    return Built(system, lambda x: EFGMFields(scene, approx, x[:approx.ndofs]), approx.ndofs, h=ns.h,
+                 warnings=_dilation_warnings(degree, dmax, options.gauss is None, n),
+                 record={"h": ns.h, "nodes": len(ns.x), "enriched_nodes": approx.enr.count, "dmax": dmax,
+                         "weight": options.weight, "support": options.support, "gauss": n, "basis_degree": degree})
+
+
+def _dilation_warnings(degree: int, dmax: float, default_gauss: bool, n: int) -> list[str]:
+    """What a dilation outside :data:`~contactcore.tolerances.DMAX_WARN_RANGE` of the default costs."""
     low, high = tol.DMAX_WARN_RANGE
     if dmax < low * DMAX[degree]:
-        report.warnings.append(f"dmax = {dmax:g} is below {low:g} of the default {DMAX[degree]:g}: supports that "
-                               "barely cover their neighbours give near-singular moment matrices and an error "
-                               "about ten times the default's")
-    elif dmax > high * DMAX[degree] and gauss is None:
-        report.warnings.append(f"dmax = {dmax:g} is above {high:g} of the default {DMAX[degree]:g}: the default "
-                               f"{n}x{n} Gauss rule under-integrates such wide supports (error up to ten times the "
-                               "default's); pass gauss with more points")
-    timings.total = time.perf_counter() - start
-    return Result(method=METHOD, scene=scene, degree=degree, dofs=approx.ndofs, timings=timings, solver=report,
-                  fields=with_history(scene, EFGMFields(scene, approx, x[:approx.ndofs]), path), interface=path,
-                  discretisation={"h": ns.h, "nodes": len(ns.x), "enriched_nodes": approx.enr.count, "dmax": dmax,
-                                  "weight": weight, "support": support, "gauss": n, "basis_degree": degree})
+        return [f"dmax = {dmax:g} is below {low:g} of the default {DMAX[degree]:g}: supports that barely cover "
+                "their neighbours give near-singular moment matrices and an error about ten times the default's"]
+    if dmax > high * DMAX[degree] and default_gauss:
+        return [f"dmax = {dmax:g} is above {high:g} of the default {DMAX[degree]:g}: the default {n}x{n} Gauss "
+                "rule under-integrates such wide supports (error up to ten times the default's); pass gauss with "
+                "more points"]
+    return []
+
+
+def solve(scene: Scene, h: float | None = None, *, paper: bool = False, **options) -> Result:
+    """Solve ``scene`` with EFGM: the contract's
+    :func:`contactcore.discretisation.solve` with :class:`efgm.options.EFGM`
+    ``(**options)``."""
+    return discretisation.solve(scene, make(EFGM, **options), h, paper=paper)

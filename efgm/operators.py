@@ -23,6 +23,7 @@ import scipy.sparse as sp
 from scipy.spatial import cKDTree
 
 from contactcore.assembly import Triplets, blocks_to_csr, point_rows_to_csr, sum_csr
+from contactcore.bodies import index_of_sign, sign_of_index, side
 
 from .shape import CHUNK, MLS, ShapeValues, matmul, parallel_map
 
@@ -46,7 +47,7 @@ ENRICH_MIN_DEPTH = 0.25
 
 def heaviside(bodies: np.ndarray) -> np.ndarray:
     """H = +1 in the + body (1), −1 in the − body (0)."""
-    return 2 * np.asarray(bodies) - 1
+    return sign_of_index(np.asarray(bodies))
 
 
 @dataclass
@@ -63,7 +64,7 @@ class Enrichment:
     @property
     def seen_from(self) -> np.ndarray:
         """(N, 2): node I takes part in body b's fit if it lies in b or is enriched."""
-        own = (self.node_side + 1) // 2
+        own = index_of_sign(self.node_side)
         return (own[:, None] == np.arange(2)[None, :]) | (self.index >= 0)[:, None]
 
 
@@ -106,7 +107,7 @@ def find_enrichment(scene, nodes: np.ndarray, radii: np.ndarray, points: np.ndar
     """Enrich the nodes whose support reaches across Γ by more than
     ENRICH_MIN_DEPTH of its reach (:func:`crossing_depth` over the
     quadrature ``points`` of ``bodies``)."""
-    node_side = np.where(scene.interface.phi(nodes) >= 0, 1, -1)
+    node_side = side(scene.interface, nodes)
     enriched = crossing_depth(scene, nodes, np.asarray(radii, float), points, bodies) > ENRICH_MIN_DEPTH
     index = np.full(len(nodes), -1)
     index[enriched] = np.arange(int(enriched.sum()))

@@ -14,7 +14,8 @@ from verification.agreement import agreements
 @functools.lru_cache(maxsize=None)
 def _reference(name):
     scene = load_scene(name)
-    return {p.id: p for p in sample_profiles(scene, methods.solver("fe")(scene, degree=2).fields)}
+    fe = methods.solver("fe")(scene, degree=2)
+    return {p.id: p for p in sample_profiles(scene, fe.fields, fe.interface)}
 
 
 @pytest.mark.parametrize("method,degree", list(tol.AGREE))
@@ -22,7 +23,7 @@ def _reference(name):
 def test_agrees_with_the_reference(name, method, degree, record_property):
     scene = load_scene(name)
     result = methods.solver(method)(scene, degree=degree, estimate_condition=False)
-    ours = {p.id: p for p in sample_profiles(scene, result.fields)}
+    ours = {p.id: p for p in sample_profiles(scene, result.fields, result.interface)}
     bounds = {**tol.AGREE[(method, degree)], "zero": tol.FALSE_TN[degree]}
     rows = agreements(scene, ours, _reference(name), 2 * scene.h)
     record_property("agreement", [(pid, q, kind, f"{v:.2e}") for pid, q, kind, v in rows])

@@ -7,6 +7,7 @@ import scipy.sparse as sp
 
 import tolerances as tol
 from contactcore import BODIES, load_scene
+from contactcore import discretisation
 from contactcore.assembly import blocks_to_csr, sum_csr
 from contactcore.elasticity import voigt_matrix
 from contactcore.quadrature import background_cells, volume_rule
@@ -86,7 +87,7 @@ def test_newton_reuses_the_shape_functions(monkeypatch):
     """The coulomb law's increments and Newton iterations reuse K, Γ's
     operator and the loads: no shape function is evaluated while they run."""
     during, inside = [], []
-    cell_shape, solve_increments = MLS.cell_shape, method.solve_increments
+    cell_shape, solve_increments = MLS.cell_shape, discretisation.solve_increments
 
     def counting(self, points, idx):
         during.append(bool(inside))
@@ -100,7 +101,7 @@ def test_newton_reuses_the_shape_functions(monkeypatch):
             inside.pop()
 
     monkeypatch.setattr(MLS, "cell_shape", counting)
-    monkeypatch.setattr(method, "solve_increments", marked)
+    monkeypatch.setattr(discretisation, "solve_increments", marked)
     result = method.solve(load_scene("C-coulomb"), 0.2)
     assert result.solver.increments > 1 and sum(result.solver.iterations) > result.solver.increments
     assert during and not any(during)

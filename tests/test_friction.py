@@ -203,7 +203,7 @@ def test_the_closed_form_matches_its_scene_inputs(layered):
 
 def _profiles(scene, method, h):
     res = methods.solver(method)(scene, h, estimate_condition=False)
-    return res, {p.id: p for p in sample_profiles(scene, res.fields)}
+    return res, {p.id: p for p in sample_profiles(scene, res.fields, res.interface)}
 
 
 @pytest.mark.parametrize("method", METHODS)

@@ -73,7 +73,8 @@ def test_field_files_hold_the_run(tmp_path, coulomb_toml, method):
         for k, col in (("gN", step.jump[:, 0]), ("gT", step.jump[:, 1]), ("tN", step.traction[:, 0]),
                        ("tT", step.traction[:, 1])):
             _close(cloud.point_data[k], col)
-    final = evaluate_quantities(scene, result.fields, result.interface.points, ["gN", "gT", "tN", "tT"])
+    final = evaluate_quantities(scene, result.fields, result.interface.points, ["gN", "gT", "tN", "tT"],
+                                path=result.interface)
     for k, col in final.items():  # the last step is what the profiles sample on Γ
         _close(meshio.read(tmp_path / entries[-1][1]).point_data[k], col, SAMPLE_ROUNDING_RTOL)
 

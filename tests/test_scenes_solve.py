@@ -12,7 +12,7 @@ def _profiles(name, h, degree=1):
     scene = load_scene(name)
     result = conforming.solve(scene, h, degree=degree)
     assert result.dofs > 0 and result.solver.backward_error < 1e-12
-    return scene, result, {p.id: p.columns for p in sample_profiles(scene, result.fields)}
+    return scene, result, {p.id: p.columns for p in sample_profiles(scene, result.fields, result.interface)}
 
 
 def test_scene_a_interface_carries_the_load():
@@ -51,6 +51,10 @@ def test_scene_c_rod_is_in_equilibrium():
 
 
 def test_paper_resolution_is_the_xfem_cell_size():
-    assert conforming.resolution(load_scene("C"), None, True) == pytest.approx(0.1)
-    assert conforming.resolution(load_scene("A"), 0.3, False) == 0.3
-    assert conforming.resolution(load_scene("A"), None, False) == load_scene("A").h
+    from contactcore.discretisation import resolution
+    assert resolution(load_scene("C"), None, True, "xfem_cells").h == pytest.approx(0.1)
+    assert resolution(load_scene("A"), 0.3, False, "xfem_cells").h == 0.3
+    assert resolution(load_scene("A"), None, False, "xfem_cells").h == load_scene("A").h
+    nodes = load_scene("A").paper["efgm_nodes"]
+    assert resolution(load_scene("A"), None, True, "efgm_nodes").h == pytest.approx(max(
+        s / (n - 1) for s, n in zip(load_scene("A").domain.size, nodes)))

@@ -80,7 +80,8 @@ def assert_same_profiles(method, name, length=1.0, shift=(0.0, 0.0), stress=(1.0
     moved."""
     base_scene, base = solved(method, name)
     scene, other = solved(method, name, length, shift, stress, stiffness)
-    for p0, p in zip(sample_profiles(base_scene, base.fields), sample_profiles(scene, other.fields)):
+    for p0, p in zip(sample_profiles(base_scene, base.fields, base.interface),
+                     sample_profiles(scene, other.fields, other.interface)):
         assert np.allclose(p.columns["x"], length * p0.columns["x"] + shift[0], rtol=1e-12, atol=0)
         for q in p0.columns:
             if q in ("s", "x", "y"):
@@ -111,9 +112,9 @@ def test_friction_history_in_micrometres():
     slip history, a length mapped back with the displacements (efgm)."""
     assert_same_profiles("efgm", "C-coulomb", length=1e-6)
     scene, res = solved("efgm", "C-coulomb", 1e-6)
-    prof = sample_profile(scene, res.fields, scene.profiles[3])  # C4: t_N, t_T, g_N, g_T on Γ
+    prof = sample_profile(scene, res.fields, scene.profiles[3], res.interface)  # C4: t_N, t_T, g_N, g_T on Γ
     pts = np.column_stack([prof.columns["x"], prof.columns["y"]])
-    direct = evaluate_quantities(scene, res.fields, pts, ("tT", "gT"))  # in the user's frame
+    direct = evaluate_quantities(scene, res.fields, pts, ("tT", "gT"), path=res.interface)  # in the user's frame
     for q in ("tT", "gT"):
         assert np.allclose(direct[q], prof.columns[q], rtol=0, atol=ttol.UNITS_AGREEMENT * np.max(np.abs(prof.columns[q])))
 

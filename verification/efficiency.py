@@ -104,7 +104,7 @@ def _reference(scene_name: str, ref_h: float) -> tuple[dict, int, float]:
     scene = load_scene(scene_name)
     solve, comm = pool.solver("fe")
     reference = solve(scene, ref_h, degree=2, estimate_condition=False, **comm)
-    return {p.id: p for p in sample_profiles(scene, reference.fields)}, reference.dofs, reference.timings.total
+    return {p.id: p for p in sample_profiles(scene, reference.fields, reference.interface)}, reference.dofs, reference.timings.total
 
 
 def _rungs(variants, ladders: dict) -> list[tuple]:
@@ -157,7 +157,7 @@ def _measure(scene_name: str, rung: tuple, ref: dict, exclude: float) -> dict:
     solve = functools.partial(solve, **comm)
     solve(scene, warm_h, degree=degree, estimate_condition=False)
     res = fastest(solve, scene, h, degree)
-    got = {p.id: p for p in sample_profiles(scene, res.fields)}
+    got = {p.id: p for p in sample_profiles(scene, res.fields, res.interface)}
     err, where = worst_error(scene, got, ref, exclude)
     t = res.timings
     return {"method": name, "degree": degree, "h": h, "dofs": res.dofs, "mesh": t.mesh, "assembly": t.assembly,

@@ -47,18 +47,13 @@ def figure_name(profile) -> str:
 
 
 def _label(name: str, result) -> str:
-    d = result.discretisation
-    if name == "xfem":
-        return f"xfem P1 ({d['cells']} cells)"
-    if name == "efgm":
-        return f"efgm ({d['nodes']} nodes)"
-    return f"fe P{result.degree} (h = {d['h']:.3g})"
+    return methods.discretisation(name).label(result)
 
 
 def _solve(scene, name: str, out: Path, role: str, **kwargs):
     solve, comm = pool.solver(name)
     result = solve(scene, **kwargs, **comm)
-    profiles = sample_profiles(scene, result.fields)
+    profiles = sample_profiles(scene, result.fields, result.interface)
     for prof in profiles:
         files.write_profile_csv(out / "profiles" / f"{prof.id}.csv", prof)
     files.write_json(out / "summary.json", result.summary())

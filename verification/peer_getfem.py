@@ -36,11 +36,13 @@ import time
 import numpy as np
 
 from contactcore import BODIES, DiscretisationError, Result, Scene, Timings
-from contactcore.elasticity import lame, voigt_matrix
+from contactcore.elasticity import lame
 from contactcore.geometry import CircleInterface, LineInterface, Rectangle
 from contactcore.result import SolverReport
 from contactcore.scene import BodyForce, Torque, Traction
+from contactcore.discretisation import resolution
 from xdolfinx import xfem
+from xdolfinx.options import XFEM
 
 METHOD = "getfem"
 
@@ -112,7 +114,7 @@ class GetFEMFields:
     def __init__(self, md, mesh, scene: Scene, keep: tuple):
         self.md, self.mesh, self.scene = md, mesh, scene
         self._keep = keep  # GetFEM frees an object with its last Python reference; the model needs these
-        self.D = np.array([voigt_matrix(scene.materials[b].E, scene.materials[b].nu, scene.plane) for b in BODIES])
+        self.D = scene.voigt_matrices()
 
     def _eval(self, expr: str, points, bodies, width: int) -> np.ndarray:
         points = np.asarray(points, float)[:, :2]
@@ -150,8 +152,8 @@ def _plane_lame(scene: Scene, body: str) -> tuple[float, float]:
 
 def _resolution(scene: Scene, h, paper: bool) -> tuple[int, int]:
     """The same quadrilaterals as our XFEM's: the paper's grid or cells ≈ h."""
-    h, cells = xfem.resolution(scene, h, paper)
-    return tuple(cells or xfem.cell_counts(scene, h))
+    res = resolution(scene, h, paper, XFEM.paper_grid)
+    return tuple(res.counts or xfem.cell_counts(scene, res.h))
 
 
 def _model(gf, scene: Scene, degree: int, cells: tuple[int, int]):

@@ -22,7 +22,6 @@ never waits for the other workers; its timings are measured inside it.
 from __future__ import annotations
 
 import contextlib
-import inspect
 import multiprocessing
 import os
 import sys
@@ -130,7 +129,7 @@ def solver(name: str):
     ``comm``): a case never shares its mesh with the other workers."""
     petsc_on_self()
     solve = methods.solver(name)
-    if "comm" not in inspect.signature(solve).parameters:
+    if not methods.takes(name, "comm"):
         return solve, {}
     from mpi4py import MPI
     return solve, {"comm": MPI.COMM_SELF}

@@ -93,7 +93,7 @@ def run(scene_name: str, method_names: list[str], out: Path, *, h=None, degree=1
             log.warning("%s: %s", name, w)
         log.info("%s: %d DOFs, total %.2f s, residual %.1e", name, result.dofs, result.timings.total,
                  result.solver.residual)
-        for prof in sample_profiles(scene, result.fields):
+        for prof in sample_profiles(scene, result.fields, result.interface):
             files.write_profile_csv(out / name / "profiles" / f"{prof.id}.csv", prof)
             profiles.setdefault(prof.id, {})[f"{name} (p{result.degree})"] = prof
         if fields:

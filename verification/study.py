@@ -114,7 +114,7 @@ def scene_at(scene, point: dict):
 
 
 def _outputs(scene, result) -> dict:
-    prof = sample_profile(scene, result.fields, GAMMA).columns
+    prof = sample_profile(scene, result.fields, GAMMA, result.interface).columns
     return {"max_gN": float(np.max(np.abs(prof["gN"]))), "max_gT": float(np.max(np.abs(prof["gT"]))),
             "max_tN": float(np.max(np.abs(prof["tN"]))), "max_tT": float(np.max(np.abs(prof["tT"]))),
             "mean_tN": float(np.mean(prof["tN"])), "mean_tT": float(np.mean(prof["tT"]))}

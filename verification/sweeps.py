@@ -109,7 +109,7 @@ def displacement_error(case: Case, result) -> float:
 
 def false_normal_traction(case: Case, result) -> float:
     """max |t_N| / max |t_T| on Γ (the exact t_N is zero)."""
-    prof = sample_profile(case.scene, result.fields, InterfaceProfile("gamma", ("tN", "tT")))
+    prof = sample_profile(case.scene, result.fields, InterfaceProfile("gamma", ("tN", "tT")), result.interface)
     return float(np.max(np.abs(prof.columns["tN"])) / np.max(np.abs(prof.columns["tT"])))
 
 

@@ -29,8 +29,6 @@ The history of a ``coulomb`` law is kept at Γ's Gauss points.
 """
 from __future__ import annotations
 
-import time
-
 import basix
 import numpy as np
 import ufl
@@ -41,38 +39,28 @@ from petsc4py import PETSc
 
 import meshes
 from contactcore import BODIES, DiscretisationError, Result, Scene, Timings
+from contactcore import discretisation
+from contactcore.discretisation import Built, Resolution, make
 from contactcore import tolerances as tol
 from .elasticity import sigma
 from contactcore.assembly import Triplets
+from contactcore.constraints import Constraints
 from contactcore.cutcell import gauss01
-from contactcore.geometry import LevelSetInterface, Rectangle, tangent_of
-from contactcore.newton import InterfaceOperator, solve_increments, with_history
-from contactcore.scaling import dimensionless
+from contactcore.geometry import tangent_of
+from contactcore.newton import InterfaceOperator
 from contactcore.scene import Pressure, Traction, body_force
 
 from .contact_system import PETScSystem
 from .evaluation import BodyCellLocator, BodyFields
 from .fitted_mesh import FittedMesh, fitted_mesh
+from .options import FE
 
-METHOD = "fe"
+METHOD = FE.name
 
 #: Gauss points on each Γ facet, by degree: the integrand N_i N_j of P_k on a
 #: straight facet has degree 2k, exact with k + 1 points; one more covers
 #: the curved (P2) facets and the exact normal of a circle.
 INTERFACE_GAUSS = {1: 3, 2: 4}
-
-
-def resolution(scene: Scene, h: float | None, paper: bool) -> float:
-    """The element size: ``h``, the paper's XFEM cell size, or the scene's default."""
-    if paper:
-        cells = scene.paper.get("xfem_cells")
-        if cells is None or not isinstance(scene.domain, Rectangle):
-            raise DiscretisationError(f"scene {scene.name} gives no paper discretisation")
-        return min(s / n for s, n in zip(scene.domain.size, cells))
-    h = scene.h if h is None else h
-    if h is None or not h > 0:
-        raise DiscretisationError(f"the resolution h must be > 0 (got {h}); the scene gives no default")
-    return float(h)
 
 
 def bilinear_form(scene: Scene, fm: FittedMesh, V):
@@ -213,11 +201,9 @@ class _Constraints:
     def num_active(self) -> int:
         return sum(len(a) for a in self.active)
 
-    def arrays(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """Prescribed unknowns, their values at a factor of 1, their support
-        (−1: always zero); an unknown fixed twice keeps its first entry."""
-        fixed, first = np.unique(np.concatenate(self.fixed), return_index=True)
-        return fixed, np.concatenate(self.values)[first], np.concatenate(self.owner)[first]
+    def constraints(self) -> Constraints:
+        """The prescribed unknowns as the one constraint type."""
+        return Constraints.on_dofs(self.fixed, self.values, self.owner)
 
 
 def _components(fix: str) -> list[int]:
@@ -240,53 +226,44 @@ def _stress_functions(scene: Scene, fm: FittedMesh, uh, degree: int):
     return disps, stresses
 
 
-@dimensionless
-def solve(scene: Scene, h: float | None = None, *, degree: int = 1, paper: bool = False,
-          geometry_order: int | None = None, grading: meshes.Grading | None = None,
-          petsc_options: dict | None = None, estimate_condition: bool = False,
-          jit_params: dict | None = None, comm=MPI.COMM_WORLD) -> Result:
-    """Solve ``scene`` with the conforming reference.
-
-    ``degree`` 1 or 2 (P1/P2 triangles); ``geometry_order`` defaults to the
-    degree (P2 on curved, second-order cells); ``petsc_options`` override the
-    MUMPS LU defaults; the condition estimate runs only with
-    ``estimate_condition=True`` (it costs a few extra solves).
-    """
-    if degree not in (1, 2):
-        raise DiscretisationError(f"fe: degree must be 1 or 2 (got {degree})")
-    if isinstance(scene.interface, LevelSetInterface):
-        raise DiscretisationError("fe: a general level set Γ is supported by xfem only (its mesh ignores Γ)")
-    start = time.perf_counter()
-    timings = Timings()
-    h = resolution(scene, h, paper)
+def build(scene: Scene, options: FE, resolution: Resolution, timings: Timings) -> Built:
+    """The conforming system of ``scene`` (:class:`~contactcore.discretisation.Discretisation`'s
+    ``build``; :class:`xdolfinx.options.FE` for the options)."""
+    h, degree = resolution.h, options.degree
+    comm = MPI.COMM_WORLD if options.comm is None else options.comm
+    jit = options.jit_params or {}
     with timings.measure("mesh"):
-        fm = fitted_mesh(scene, h, order=geometry_order or degree, grading=grading, comm=comm)
+        fm = fitted_mesh(scene, h, order=options.geometry_order or degree, grading=options.grading, comm=comm)
     with timings.measure("assembly"):
         el = ufl.VectorElement("Lagrange", fm.mesh.ufl_cell(), degree)
         V = fem.FunctionSpace(fm.mesh, ufl.MixedElement([el, el]))
         cons = _Constraints(scene, fm, V)
-        K = fem_petsc.assemble_matrix(fem.form(bilinear_form(scene, fm, V), jit_params=jit_params or {}))
+        K = fem_petsc.assemble_matrix(fem.form(bilinear_form(scene, fm, V), jit_params=jit))
         K.assemble()
         loads = []
         for L in linear_forms(scene, fm, V):
-            vec = fem_petsc.assemble_vector(fem.form(L, jit_params=jit_params or {}))
+            vec = fem_petsc.assemble_vector(fem.form(L, jit_params=jit))
             vec.ghostUpdate(addv=PETSc.InsertMode.ADD, mode=PETSc.ScatterMode.REVERSE)
             loads.append(vec.getArray().copy())
             vec.destroy()
-        system = PETScSystem(K, loads, *cons.arrays(), interface_operator(scene, fm, V, degree),
-                             petsc_options=petsc_options, estimate_condition=estimate_condition,
+        system = PETScSystem(K, loads, cons.constraints(), interface_operator(scene, fm, V, degree),
+                             petsc_options=options.petsc_options, estimate_condition=options.estimate_condition,
                              what=f"scene {scene.name} (fe)")
-    with timings.measure("solve"):
-        x, path, report = solve_increments(scene, system)
-    uh = fem.Function(V)
-    uh.x.array[:] = x
-    report.warnings += scene.interface_warnings(h, fitted=True)
-    disps, stresses = _stress_functions(scene, fm, uh, degree)
-    locator = BodyCellLocator(fm.mesh, [fm.cells_of(b) for b in BODIES])
-    system.close()
-    timings.total = time.perf_counter() - start
-    return Result(method=METHOD, scene=scene, degree=degree, dofs=cons.num_active, timings=timings,
-                  solver=report, fields=with_history(scene, BodyFields(locator, disps, stresses), path),
-                  interface=path,
-                  discretisation={"h": h, "degree": degree, "geometry_order": geometry_order or degree,
-                                  "cells": fm.num_cells, "grading": None if grading is None else vars(grading)})
+
+    def fields(x):
+        uh = fem.Function(V)
+        uh.x.array[:] = x
+        disps, stresses = _stress_functions(scene, fm, uh, degree)
+        return BodyFields(BodyCellLocator(fm.mesh, [fm.cells_of(b) for b in BODIES]), disps, stresses)
+
+    grading = options.grading
+    return Built(system, fields, cons.num_active, h=h, fitted=True,
+                 record={"h": h, "degree": degree, "geometry_order": options.geometry_order or degree,
+                         "cells": fm.num_cells, "grading": None if grading is None else vars(grading)})
+
+
+def solve(scene: Scene, h: float | None = None, *, paper: bool = False, **options) -> Result:
+    """Solve ``scene`` with the conforming reference: the contract's
+    :func:`contactcore.discretisation.solve` with :class:`xdolfinx.options.FE`
+    ``(**options)``."""
+    return discretisation.solve(scene, make(FE, **options), h, paper=paper)

@@ -14,40 +14,32 @@ free block and the factorisation are allocated once and refilled
 from __future__ import annotations
 
 import numpy as np
-import scipy.sparse as sp
-from petsc4py import PETSc
 
 from contactcore import DiscretisationError
+from contactcore.constraints import Constraints
 from contactcore.newton import InterfaceOperator
 
 from contactcore import linear_solver
 
 
 class PETScSystem:
-    """``K`` (PETSc), loads, prescribed unknowns and Γ (see module doc).
+    """``K`` (PETSc), loads, the prescribed unknowns (``constraints`` on
+    dofs) and Γ (see module doc)."""
 
-    ``fixed`` are the prescribed unknowns; ``fixed_full`` their values at a
-    factor of 1 and ``owner`` the support each follows (−1: always zero);
-    ``active`` the unknowns that take part at all (the others are fixed at
-    zero too).
-    """
-
-    def __init__(self, K, loads: list[np.ndarray], fixed, fixed_full, owner, interface: InterfaceOperator, *,
+    def __init__(self, K, loads: list[np.ndarray], constraints: Constraints, interface: InterfaceOperator, *,
                  petsc_options=None, estimate_condition: bool = False, what: str = "linear system"):
         if K.getComm().getSize() > 1:
             raise DiscretisationError("the increment and Newton driver runs in serial only (no mpirun)")
-        self.K, self.loads = K, loads
+        self.K, self.loads, self.constraints = K, loads, constraints
         self.size = K.getSize()[0]
-        self.fixed = np.asarray(fixed, dtype=np.int64)
-        self.fixed_full, self.owner = np.asarray(fixed_full, float), np.asarray(owner)
+        self.fixed = constraints.dofs
         self.free = np.setdiff1d(np.arange(self.size), self.fixed)
         self.interface = interface
         self._tangent = linear_solver.Tangent(K, self.free, petsc_options=petsc_options,
                                               estimate_condition=estimate_condition, what=what)
 
     def fixed_values(self, support_factors) -> np.ndarray:
-        factor = np.asarray(tuple(support_factors) + (0.0,))[self.owner]
-        return self.fixed_full * np.where(self.owner >= 0, factor, 0.0)
+        return self.constraints.at(support_factors)
 
     def external(self, load_factors, support_factors) -> np.ndarray:
         return sum((lam * v for lam, v in zip(load_factors, self.loads)), np.zeros(self.size))

@@ -28,7 +28,6 @@ these would create a false normal traction of (k_N/k_T)(h/2R)|t_T|).
 from __future__ import annotations
 
 import functools
-import time
 
 import basix
 import numpy as np
@@ -39,20 +38,24 @@ from mpi4py import MPI
 from petsc4py import PETSc
 
 from contactcore import BODIES, DiscretisationError, Result, Scene, Timings
+from contactcore import discretisation
+from contactcore.discretisation import Built, Resolution, check_choice, make
 from contactcore import tolerances as tol
 from contactcore.cutcell import cut_polygon, edge_crossings, gauss01, interface_rule_in, polygon_rule
-from contactcore.elasticity import voigt_matrix
 from contactcore.geometry import LevelSetInterface, Rectangle, tangent_of
 from contactcore.assembly import Triplets
-from contactcore.newton import InterfaceOperator, solve_increments, with_history
-from contactcore.scaling import dimensionless
+from contactcore.bodies import index_of_sign, sign_of, sign_of_index
+from contactcore.bodies import side as side_of
+from contactcore.constraints import Constraints
+from contactcore.newton import InterfaceOperator
 from contactcore.scene import BodyForce, Pressure, Torque, Traction, body_force
 
 from .contact_system import PETScSystem
 from .elasticity import sigma
 from .evaluation import BodyCellLocator
+from .options import XFEM, XFEM_CELLS
 
-METHOD = "xfem"
+METHOD = XFEM.name
 
 #: Gauss points per direction in each (sub-)cell and on each piece of Γ, by
 #: degree: a fan maps a square onto a triangle or curved sector, so n points
@@ -88,8 +91,7 @@ _TAG_BAND = 3
 def background_cell(scene: Scene, cell: str) -> str:
     """The background cells that run for the requested ``cell``: structured
     quads or triangles on a rectangle, gmsh triangles otherwise (a disc)."""
-    if cell not in ("quad", "triangle", "gmsh"):
-        raise DiscretisationError(f"xfem: cell must be 'quad', 'triangle' or 'gmsh' (got {cell!r})")
+    check_choice("xfem", "cell", cell, XFEM_CELLS)
     return cell if isinstance(scene.domain, Rectangle) else "gmsh"
 
 
@@ -117,19 +119,6 @@ def background_mesh(scene: Scene, h: float, cell: str, counts=None, comm=MPI.COM
 def cell_counts(scene: Scene, h: float) -> list[int]:
     """Cells per side of a structured mesh of the rectangle with cells of size ≈ h."""
     return [max(1, round(s / h)) for s in scene.domain.size]
-
-
-def resolution(scene: Scene, h, paper: bool) -> tuple[float, tuple[int, int] | None]:
-    """The cell size: the paper's grid, h, or the scene's default."""
-    if paper:
-        cells = scene.paper.get("xfem_cells")
-        if cells is None:
-            raise DiscretisationError(f"scene {scene.name} gives no paper discretisation")
-        return min(s / c for s, c in zip(scene.domain.size, cells)), cells
-    h = scene.h if h is None else h
-    if h is None or not h > 0:
-        raise DiscretisationError(f"the resolution h must be > 0 (got {h}); the scene gives no default")
-    return float(h), None
 
 
 class EnrichedFunctionSpace:
@@ -161,7 +150,7 @@ class EnrichedFunctionSpace:
         self.corners = np.where((area2 < 0)[:, None, None], corners[:, ::-1], corners)
         self.cell_dofs = self.V.dofmap.list.array.reshape(self.num_cells, -1)  # block (node) indices
         coords = self.V.tabulate_dof_coordinates()[:, :2]
-        self.node_side = np.where(scene.interface.phi(coords) >= 0, 1, -1)
+        self.node_side = side_of(scene.interface, coords)
         self._classify()
 
     def _classify(self) -> None:
@@ -175,7 +164,7 @@ class EnrichedFunctionSpace:
         centre = self.corners.mean(axis=1)
         radius = np.max(np.linalg.norm(self.corners - centre[:, None], axis=2), axis=1)
         phi_c = itf.phi(centre)
-        self.cell_side = np.where(phi_c >= 0, 1, -1)
+        self.cell_side = sign_of(phi_c)
         self.regions = {}
         # Γ may reach a cell whose centre is within |∇φ|·radius of it (φ/|∇φ|
         # is the distance to first order; exactly so for lines and circles),
@@ -184,7 +173,7 @@ class EnrichedFunctionSpace:
         grad = np.linalg.norm(itf.grad_fn(centre), axis=1) if general else 1.0
         factor = NEAR_FACTOR["level set" if general else "distance"]
         corner_phi = itf.phi(self.corners.reshape(-1, 2)).reshape(len(centre), -1)
-        corner_sides = np.where(corner_phi >= 0, 1, -1)
+        corner_sides = sign_of(corner_phi)
         near = np.flatnonzero((np.abs(phi_c) <= factor * grad * radius)
                               | (corner_sides.min(axis=1) != corner_sides.max(axis=1)))
         self.cell_size = 2 * radius
@@ -225,11 +214,11 @@ class EnrichedFunctionSpace:
         itf = self.scene.interface
         out = np.zeros(2)
         for side, pts, *_ in parts:
-            x = np.vstack([pts, corners[np.where(corner_phi >= 0, 1, -1) == side]])
+            x = np.vstack([pts, corners[sign_of(corner_phi) == side]])
             phi = itf.phi(x)
             if isinstance(itf, LevelSetInterface):
                 phi = phi / np.linalg.norm(itf.grad_fn(x), axis=1)
-            out[(side + 1) // 2] = max(out[(side + 1) // 2], float(np.max(side * phi)))
+            out[index_of_sign(side)] = max(out[index_of_sign(side)], float(np.max(side * phi)))
         return out
 
     def cells_resolving(self, side: int) -> np.ndarray:
@@ -249,7 +238,7 @@ class EnrichedFunctionSpace:
         cut[list(self.regions)] = True
         dofs = self.cell_dofs
         across_unenriched = np.any((self.node_side[dofs] != side) & ~self.enriched[dofs], axis=1)
-        thick = self.depth[:, (side + 1) // 2] >= tol.SLIVER_EVAL_DEPTH * self.cell_size
+        thick = self.depth[:, index_of_sign(side)] >= tol.SLIVER_EVAL_DEPTH * self.cell_size
         return np.flatnonzero((~cut & (self.cell_side == side)) | (cut & thick & ~across_unenriched))
 
     def _curved_cells(self) -> np.ndarray:
@@ -346,7 +335,7 @@ def band_kernels(space: EnrichedFunctionSpace, D: np.ndarray):
         dofs = space.cell_dofs[c]
         K = np.zeros((4 * len(dofs), 4 * len(dofs)))
         for side, _, w, _, dN in space.regions[c]:
-            K += _stiffness(_strain_matrix(dN, space.coefficients(c, side)), w, D[(side + 1) // 2])
+            K += _stiffness(_strain_matrix(dN, space.coefficients(c, side)), w, D[index_of_sign(side)])
         yield dofs, K
     if len(whole):
         X, w = space.reference_rule
@@ -356,7 +345,7 @@ def band_kernels(space: EnrichedFunctionSpace, D: np.ndarray):
         side = space.cell_side[whole]
         coeff = np.where(space.enriched[dofs], side[:, None] - space.node_side[dofs], 0)[:, None, :]
         weights = w[None, :] * np.abs(np.linalg.det(space.jacobian[whole]))[:, None]
-        yield from zip(dofs, _stiffness(_strain_matrix(dN, coeff), weights, D[(side + 1) // 2]))
+        yield from zip(dofs, _stiffness(_strain_matrix(dN, coeff), weights, D[index_of_sign(side)]))
 
 
 def interface_operator(space: EnrichedFunctionSpace) -> InterfaceOperator:
@@ -394,7 +383,7 @@ def band_loads(space: EnrichedFunctionSpace, load):
 
 
 def _band_body_loads(space: EnrichedFunctionSpace, load):
-    side = 2 * BODIES.index(load.body) - 1
+    side = sign_of_index(BODIES.index(load.body))
     for c in space.band:
         f = np.zeros(4 * len(space.cell_dofs[c]))
         for _, pts, w, N in (part for part in space.cell_values(c) if part[0] == side):
@@ -511,7 +500,7 @@ class XFEMFields:
     def __init__(self, space: EnrichedFunctionSpace, blocks: np.ndarray):
         self.space, self.blocks = space, blocks
         scene = space.scene
-        self.D = [voigt_matrix(scene.materials[b].E, scene.materials[b].nu, scene.plane) for b in BODIES]
+        self.D = scene.voigt_matrices()
         self.locator = BodyCellLocator(space.msh, [space.cells_resolving(side) for side in (-1, 1)])
 
     def _eval(self, points, bodies, gradient: bool) -> np.ndarray:
@@ -522,7 +511,7 @@ class XFEMFields:
         for c in np.unique(cells):
             for body in np.unique(bodies[cells == c]):
                 sel = np.flatnonzero((cells == c) & (bodies == body))
-                N, dN, coeff = self.space.functions(c, points[sel], 2 * body - 1)
+                N, dN, coeff = self.space.functions(c, points[sel], sign_of_index(body))
                 U = self.blocks[self.space.cell_dofs[c]]
                 vec = U[:, :2] + coeff[:, None] * U[:, 2:]
                 if gradient:
@@ -573,26 +562,21 @@ def _support_rows(space: EnrichedFunctionSpace) -> tuple[np.ndarray, np.ndarray,
     return rows.astype(np.int64), np.concatenate(vals)[idx], np.concatenate(owners)[idx]
 
 
-@dimensionless
-def solve(scene: Scene, h: float | None = None, *, degree: int = 1, paper: bool = False, cell: str = "quad",
-          gauss: int | None = None, petsc_options: dict | None = None, estimate_condition: bool = False,
-          comm=MPI.COMM_WORLD) -> Result:
-    """Solve ``scene`` with XFEM of ``degree`` 1 or 2 on a mesh that ignores
-    Γ: structured ``cell`` = "quad" (the paper's) or "triangle", or "gmsh"
-    triangles (used for a disc)."""
-    if degree not in (1, 2):
-        raise DiscretisationError(f"xfem: degree must be 1 or 2 (got {degree})")
-    start, timings = time.perf_counter(), Timings()
-    h, cells = resolution(scene, h, paper)
+def build(scene: Scene, options: XFEM, resolution: Resolution, timings: Timings) -> Built:
+    """The XFEM system of ``scene`` (:class:`~contactcore.discretisation.Discretisation`'s
+    ``build``; :class:`xdolfinx.options.XFEM` for the options)."""
+    h, degree = resolution.h, options.degree
+    comm = MPI.COMM_WORLD if options.comm is None else options.comm
     with timings.measure("mesh"):
-        msh = background_mesh(scene, h, cell, cells, comm, order=degree)
-        space = EnrichedFunctionSpace(msh, degree, scene, GAUSS_POINTS[degree] if gauss is None else gauss)
+        msh = background_mesh(scene, h, options.cell, resolution.counts, comm, order=degree)
+        space = EnrichedFunctionSpace(msh, degree, scene, GAUSS_POINTS[degree] if options.gauss is None
+                                      else options.gauss)
     with timings.measure("assembly"):
         cell_tags, facet_tags = _tags(space)
         a, loads, pattern = _forms(space, cell_tags, facet_tags)
         A = fem_petsc.create_matrix(pattern)
         fem_petsc.assemble_matrix(A, a)
-        D = np.array([voigt_matrix(scene.materials[b].E, scene.materials[b].nu, scene.plane) for b in BODIES])
+        D = scene.voigt_matrices()
         for dofs, K in band_kernels(space, D):
             A.setValuesBlockedLocal(dofs.astype(PETSc.IntType), dofs.astype(PETSc.IntType), np.ascontiguousarray(K),
                                     addv=PETSc.InsertMode.ADD_VALUES)
@@ -600,19 +584,20 @@ def solve(scene: Scene, h: float | None = None, *, degree: int = 1, paper: bool 
         rows, values, owners = _support_rows(space)
         nblocks = space.V.dofmap.index_map.size_local
         unused = (4 * np.flatnonzero(~space.enriched[:nblocks])[:, None] + np.arange(2, 4)[None]).ravel()
-        fixed = np.concatenate([rows, unused])
-        system = PETScSystem(A, [_load_vector(space, L, load) for L, load in zip(loads, scene.loads)], fixed,
-                             np.concatenate([values, np.zeros(len(unused))]),
-                             np.concatenate([owners, np.full(len(unused), -1)]), interface_operator(space),
-                             petsc_options=petsc_options, estimate_condition=estimate_condition,
+        constraints = Constraints.on_dofs([rows, unused], [values, np.zeros(len(unused))],
+                                          [owners, np.full(len(unused), -1)])
+        system = PETScSystem(A, [_load_vector(space, L, load) for L, load in zip(loads, scene.loads)], constraints,
+                             interface_operator(space),
+                             petsc_options=options.petsc_options, estimate_condition=options.estimate_condition,
                              what=f"scene {scene.name} (xfem)")
-    with timings.measure("solve"):
-        x, path, report = solve_increments(scene, system)
-    report.warnings += scene.interface_warnings(h)
-    system.close()
-    timings.total = time.perf_counter() - start
-    return Result(method=METHOD, scene=scene, degree=degree, dofs=4 * nblocks - len(unused), timings=timings,
-                  solver=report, fields=with_history(scene, XFEMFields(space, x.reshape(-1, 4)), path), interface=path,
-                  discretisation={"h": h, "cell": background_cell(scene, cell), "degree": degree, "cells": int(space.num_cells),
-                                  "cut_cells": len(space.regions), "enriched_nodes": space.num_enriched,
-                                  "gauss": space.gauss})
+    return Built(system, lambda x: XFEMFields(space, x.reshape(-1, 4)), 4 * nblocks - len(unused), h=h,
+                 record={"h": h, "cell": background_cell(scene, options.cell), "degree": degree,
+                         "cells": int(space.num_cells), "cut_cells": len(space.regions),
+                         "enriched_nodes": space.num_enriched, "gauss": space.gauss})
+
+
+def solve(scene: Scene, h: float | None = None, *, paper: bool = False, **options) -> Result:
+    """Solve ``scene`` with XFEM: the contract's
+    :func:`contactcore.discretisation.solve` with :class:`xdolfinx.options.XFEM`
+    ``(**options)``."""
+    return discretisation.solve(scene, make(XFEM, **options), h, paper=paper)

@@ -1,0 +1,64 @@
+"""EFGM's typed options (:mod:`contactcore.discretisation`).
+
+A plain dataclass: importing it imports no numerics; ``build`` imports
+:mod:`efgm.method`.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import ClassVar
+
+from contactcore.discretisation import Discretisation, Resolution, check_choice, check_degree
+
+#: The MLS bases by name (``--basis``) and their degree.
+BASES = {"linear": 1, "quadratic": 2}
+
+#: The weight functions and support shapes EFGM offers.
+WEIGHT_NAMES = ("cubic", "quartic")
+SUPPORTS = ("circular", "rectangular")
+
+
+@dataclass(frozen=True)
+class EFGM(Discretisation):
+    """EFGM (:mod:`efgm.method`): an MLS basis of ``degree`` 1 or 2, or
+    ``basis`` "linear" or "quadratic" (the same choice by name; it sets
+    ``degree``); ``dmax`` the support dilation (default by degree,
+    :data:`efgm.method.DMAX`); ``weight`` and ``support`` the weight
+    function and support shape; ``nodes`` any (N, 2) point set instead of
+    a grid (it must include nodes on the supported boundaries); ``gauss``
+    points per direction of each background cell (default by degree); the
+    condition estimate only with ``estimate_condition``."""
+
+    degree: int = 1
+    basis: str | None = None
+    dmax: float | None = None
+    weight: str = "cubic"
+    support: str = "circular"
+    nodes: object = field(default=None, compare=False)
+    gauss: int | None = None
+    estimate_condition: bool = False
+
+    name: ClassVar[str] = "efgm"
+    paper_grid: ClassVar[str] = "efgm_nodes"
+
+    def __post_init__(self):
+        if self.basis is not None:
+            check_choice(self.name, "basis", self.basis, tuple(BASES))
+            object.__setattr__(self, "degree", BASES[self.basis])
+        check_degree(self.name, self.degree)
+        check_choice(self.name, "weight", self.weight, WEIGHT_NAMES)
+        check_choice(self.name, "support", self.support, SUPPORTS)
+
+    def resolution(self, scene, h, paper):
+        """Given ``nodes`` fix the spacing themselves; otherwise the one rule."""
+        if self.nodes is not None:
+            return Resolution(None)
+        return super().resolution(scene, h, paper)
+
+    def build(self, scene, resolution, timings):
+        from . import method
+        return method.build(scene, self, resolution, timings)
+
+    @classmethod
+    def label(cls, result) -> str:
+        return f"efgm ({result.discretisation['nodes']} nodes)"
