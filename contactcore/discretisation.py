@@ -145,15 +145,17 @@ def resolution(scene, h: float | None, paper: bool, grid: str) -> Resolution:
 
 
 @dimensionless
-def solve(scene, discretisation: Discretisation, h: float | None = None, *, paper: bool = False) -> Result:
+def solve(scene, discretisation: Discretisation, h: float | None = None, *, paper: bool = False,
+          progress=None) -> Result:
     """Solve ``scene`` with ``discretisation`` at the spacing ``h`` (or the
-    paper's grid): the one entry point of every method (module doc)."""
+    paper's grid): the one entry point of every method (module doc);
+    ``progress`` as for :func:`contactcore.newton.solve_increments`."""
     discretisation.check(scene)
     start, timings = time.perf_counter(), Timings()
     built = discretisation.build(scene, discretisation.resolution(scene, h, paper), timings)
     try:
         with timings.measure("solve"):
-            x, path, report = solve_increments(scene, built.system)
+            x, path, report = solve_increments(scene, built.system, progress)
     finally:
         built.system.close()
     report.warnings += scene.interface_warnings(built.h, fitted=built.fitted) + built.warnings

@@ -291,7 +291,7 @@ def _fmt(values) -> str:
     return "[" + ", ".join(f"{v:.2e}" for v in values) + "]"
 
 
-def _final_state(scene, system: ContactSystem, newton: _Newton) -> _Newton:
+def _final_state(scene, system: ContactSystem, newton: _Newton, progress=None) -> _Newton:
     """A law without history (linear, unilateral): its state at the last
     increment does not depend on the path, so Newton goes there in one step
     from the unloaded state (a linear law in one solve, its tangent settled
@@ -304,22 +304,31 @@ def _final_state(scene, system: ContactSystem, newton: _Newton) -> _Newton:
         if scene.law.is_linear:
             raise SolverError(f"{exc}; {health.failure_hint(scene, system.interface.weights)}") from None
     newton = _Newton(scene, system)
-    for n in range(1, scene.increments + 1):
-        newton.increment(n)
+    _follow(scene, newton, progress)
     return newton
 
 
-def solve_increments(scene, system: ContactSystem) -> tuple[np.ndarray, InterfacePath, SolverReport]:
+def _follow(scene, newton: _Newton, progress) -> None:
+    """Every increment of the path, in order, reported to ``progress``."""
+    for n in range(1, scene.increments + 1):
+        newton.increment(n)
+        if progress is not None:
+            progress(n, scene.increments, newton.path.final)
+
+
+def solve_increments(scene, system: ContactSystem, progress=None) -> tuple[np.ndarray, InterfacePath, SolverReport]:
     """Solve ``scene`` on ``system``: its unknowns at the last increment, the
-    interface's history and the solver's report (module doc)."""
+    interface's history and the solver's report (module doc).  ``progress``,
+    if given, is called as ``progress(n, increments, step)`` after each
+    increment ``n`` of a followed path converges (``step`` its
+    :class:`Increment`): the driver reports it, the numerics print nothing."""
     health.check_springs(scene, system.interface.weights)
     health.check_restraint(scene, system.interface.points, system.interface.weights)
     newton = _Newton(scene, system)
     if not (scene.law.has_history or scene.follow_path):
-        newton = _final_state(scene, system, newton)
+        newton = _final_state(scene, system, newton, progress)
     else:
-        for n in range(1, scene.increments + 1):
-            newton.increment(n)
+        _follow(scene, newton, progress)
     if not scene.law.is_linear:
         newton.report.solver = f"newton + {newton.report.solver}"
     newton.report.increments = len(newton.path.steps)  # what was solved, not the scene's count

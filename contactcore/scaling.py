@@ -202,12 +202,17 @@ class Scales:
         if path is None:
             return None
         L, U = self.length, self.displacement
-        steps = [replace(st, jump=U * st.jump, traction=self.stress * st.traction) for st in path.steps]
-        for st in steps:
-            require_finite(f"interface jumps of step {st.step:g}", st.jump)
-            require_finite(f"interface tractions of step {st.step:g}", st.traction)
+        steps = [self.step(st) for st in path.steps]
         return InterfacePath(self.to_user(path.points), L * path.weights, steps,
                              None if path.state is None else U * path.state)
+
+    def step(self, st):
+        """One converged increment in the user's units: jumps (m, ×U),
+        tractions (Pa, ×Σ); refused if they leave the floating-point range."""
+        out = replace(st, jump=self.displacement * st.jump, traction=self.stress * st.traction)
+        require_finite(f"interface jumps of step {st.step:g}", out.jump)
+        require_finite(f"interface tractions of step {st.step:g}", out.traction)
+        return out
 
     def path_in(self, path: InterfacePath | None) -> InterfacePath | None:
         """The reverse of :meth:`path`: a user's interface history over the
@@ -280,7 +285,8 @@ def dimensionless(solve):
     """Decorate the one ``solve(scene, discretisation, h=None, **options)
     -> Result`` (:mod:`contactcore.discretisation`) so that it solves the
     dimensionless scene, with the discretisation's options made
-    dimensionless too, and returns the Result in the user's units:
+    dimensionless too, and returns the Result (and the steps it reports to
+    a ``progress`` callback) in the user's units:
     ``scene`` the user's, ``fields`` a :class:`ScaledFields`
     (``fields.inner`` the method's own, ``fields.scales``), ``interface``
     and ``discretisation`` mapped back.  An ``h`` that is not > 0 is passed
@@ -292,6 +298,9 @@ def dimensionless(solve):
         h_in = h / scales.length if h is not None and h > 0 else h
         given = {f.name: getattr(discretisation, f.name) for f in dataclasses.fields(discretisation)}
         inner = replace(discretisation, **{k: _option_in(k, v, scales) for k, v in given.items()})
+        progress = options.get("progress")
+        if progress is not None:
+            options = {**options, "progress": lambda n, total, st: progress(n, total, scales.step(st))}
         result = solve(scales.scene(scene), inner, h_in, **options)
         return replace(result, scene=scene, fields=ScaledFields(result.fields, scales),
                        interface=scales.path(result.interface),

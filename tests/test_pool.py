@@ -107,7 +107,7 @@ def test_local_workers_share_out_the_cores(monkeypatch):
 
     for name in pool.THREAD_VARIABLES:
         monkeypatch.delenv(name, raising=False)
-    got = pool.map_cases(os.getenv, list(pool.THREAD_VARIABLES), workers=2)
+    got = list(pool.map_cases(os.getenv, list(pool.THREAD_VARIABLES), workers=2))
     assert got == [str(max(1, (os.cpu_count() or 1) // 2))] * 2
-    assert pool.map_cases(os.getenv, list(pool.THREAD_VARIABLES)) == [None, None]  # serial: untouched
+    assert list(pool.map_cases(os.getenv, list(pool.THREAD_VARIABLES))) == [None, None]  # serial: untouched
     assert not any(name in os.environ for name in pool.THREAD_VARIABLES)

@@ -11,7 +11,7 @@
         [--degree 1] [--h H] --out DIR
     python -m verification report DIR [--quick]
     python -m verification benchmark [--scene A B C] --out DIR      (needs python3-getfem)
-    python -m verification timing SCENE --method fe --degree 1 2 --h H1 H2 ... --out DIR
+    python -m verification timing SCENE [SCENE ...] --method fe --degree 1 2 --h H1 H2 ... --out DIR
 
 ``study``, ``sweeps``, ``efficiency``, ``paper``, ``benchmark`` and ``report`` take
 ``--workers K`` (their cases on K local processes, :mod:`verification.pool`),
@@ -129,7 +129,7 @@ def _parser() -> argparse.ArgumentParser:
     ben.add_argument("--out", type=Path, required=True)
     _workers(ben, default=os.cpu_count())
     tim = sub.add_parser("timing", parents=[common], help="wall time against DOFs on a ladder of resolutions")
-    tim.add_argument("scene")
+    tim.add_argument("scene", nargs="+", help="one or more scenes, measured in one run (e.g. C C-coulomb)")
     _methods(tim)
     tim.add_argument("--degree", nargs="+", type=int, default=[1], choices=(1, 2))
     tim.add_argument("--h", nargs="+", type=float, required=True)

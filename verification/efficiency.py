@@ -124,11 +124,12 @@ def efficiency(scene_name: str, variants, ladders: dict, ref_h: float, exclude: 
     scene = load_scene(scene_name)
     [(ref, ref_dofs, ref_time)] = pool.map_cases(functools.partial(_reference, scene_name), [ref_h], fresh=True)
     log.info("reference: fe P2 h=%g, %d DOFs, %.1f s", ref_h, ref_dofs, ref_time)
-    rows = pool.map_cases(functools.partial(_measure, scene_name, ref=ref, exclude=exclude),
-                          _rungs(variants, ladders), workers, fresh=True)
-    for row in rows:
-        log.info("%s p%d h=%g: %d DOFs, %.2f s, worst error %.2e (%s)", row["method"], row["degree"], row["h"],
-                 row["dofs"], row["total"], row["error"], row["worst"])
+    rungs, rows = _rungs(variants, ladders), []
+    for k, row in enumerate(pool.map_cases(functools.partial(_measure, scene_name, ref=ref, exclude=exclude),
+                                           rungs, workers, fresh=True), 1):
+        log.info("[%d/%d] %s p%d h=%g: %d DOFs, %.2f s, worst error %.2e (%s)", k, len(rungs), row["method"],
+                 row["degree"], row["h"], row["dofs"], row["total"], row["error"], row["worst"])
+        rows.append(row)
     measured_by = pool.workers_label(workers)
     out = Path(out)
     files.write_csv(out / "efficiency.csv", rows, COLUMNS)

@@ -97,11 +97,13 @@ def _threads_per_worker(workers: int | None):
                 os.environ[k] = v
 
 
-def map_cases(function, cases, workers: int | None = None, fresh: bool = False) -> list:
-    """``[function(c) for c in cases]`` on :func:`executor` (``workers``, ``fresh``),
-    in the order of ``cases``."""
+def map_cases(function, cases, workers: int | None = None, fresh: bool = False):
+    """``function(c) for c in cases`` on :func:`executor` (``workers``,
+    ``fresh``): yields the results in the order of ``cases``, each as soon
+    as it and those before it are done, so that the caller reports progress
+    as it goes (consume it whole: the pool closes at the end)."""
     with _threads_per_worker(workers), executor(workers, fresh) as pool:
-        return list(pool.map(function, cases))
+        yield from pool.map(function, cases)
 
 
 def workers_label(workers: int | None) -> str:

@@ -56,6 +56,15 @@ def _summary_table(summaries: list[dict]) -> str:
     return "\n".join(lines + ([""] + ["Warnings:"] + warnings if warnings else [])) + "\n"
 
 
+def _progress(name: str):
+    """A method's progress along the load path, one log line per increment."""
+    def report(n: int, total: int, step) -> None:
+        counts = ", ".join(f"{v} {k}" for k, v in step.counts().items())
+        log.info("%s: increment %d/%d: %d Newton iteration%s (%s)", name, n, total, step.iterations,
+                 "" if step.iterations == 1 else "s", counts)
+    return report
+
+
 def run(scene_name: str, method_names: list[str], out: Path, *, h=None, degree=1, paper=False,
         fields=False, petsc_options=None, dmax=None, nodes_file=None, cell=None, basis=None, allow_large=False,
         draw=True, argv=()) -> list[dict]:
@@ -86,7 +95,7 @@ def run(scene_name: str, method_names: list[str], out: Path, *, h=None, degree=1
                                       basis=basis)
         log.info("scene %s: solving with %s (%s)", scene.name, name, f"{basis} basis" if "basis" in options
                  else f"degree {degree}")
-        result = methods.solver(name)(scene, h, degree=degree, paper=paper, **options)
+        result = methods.solver(name)(scene, h, degree=degree, paper=paper, progress=_progress(name), **options)
         summary = result.summary()
         summaries.append(summary)
         for w in result.solver.warnings:
