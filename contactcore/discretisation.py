@@ -27,12 +27,16 @@ not take is a :class:`~contactcore.errors.DiscretisationError` naming it
 from __future__ import annotations
 
 import dataclasses
+import hashlib
+import pickle
 import time
+from collections import OrderedDict
 from dataclasses import dataclass, field
 from typing import Any, Callable, ClassVar
 
 import numpy as np
 
+from . import tolerances as tol
 from .errors import DiscretisationError
 from .geometry import LevelSetInterface, Rectangle
 from .newton import ContactSystem, solve_increments
@@ -144,20 +148,81 @@ def resolution(scene, h: float | None, paper: bool, grid: str) -> Resolution:
     return Resolution(float(h))
 
 
+class Reuse:
+    """Built systems kept between solves that differ only in what a system
+    does not depend on: the interface law and its parameters, the load path
+    (increments, ``follow_path``), the profiles and the names.  A study of
+    k_N, k_T or μ then meshes, evaluates shape functions and assembles once
+    per discretisation (issue 24).
+
+    Keyed by a digest of everything else — the (dimensionless) scene
+    without those, the discretisation's options but its communicator, and
+    the resolution — so a change of h, geometry, material or load builds
+    afresh.  At most :data:`~contactcore.tolerances.SYSTEMS_KEPT` are kept,
+    the one used longest ago released first; :meth:`close` releases all.
+    A scene that cannot be pickled (a general level set of Python
+    callables) is never reused.
+    """
+
+    def __init__(self, size: int | None = None):
+        self.size = tol.SYSTEMS_KEPT if size is None else size
+        self._kept: OrderedDict[bytes, Built] = OrderedDict()
+
+    @staticmethod
+    def key(scene, discretisation: Discretisation, resolution: Resolution) -> bytes | None:
+        """The digest of what a built system depends on, or None."""
+        bare = dataclasses.replace(scene, law=None, increments=1, follow_path=False, profiles=(), name="",
+                                   title="", source=None)
+        options = {f.name: getattr(discretisation, f.name) for f in dataclasses.fields(discretisation)
+                   if f.name != "comm"}
+        try:
+            blob = pickle.dumps((type(discretisation).__name__, options, bare, resolution))
+        except (pickle.PicklingError, TypeError, AttributeError):
+            return None
+        return hashlib.sha256(blob).digest()
+
+    def build(self, scene, discretisation: Discretisation, resolution: Resolution, timings: Timings) -> Built:
+        """A kept system for this key, or a new one (kept)."""
+        key = self.key(scene, discretisation, resolution)
+        if key is not None and key in self._kept:
+            self._kept.move_to_end(key)
+            built = self._kept[key]
+            return dataclasses.replace(built, record={**built.record, "reused": True})
+        built = discretisation.build(scene, resolution, timings)
+        if key is not None:
+            self._kept[key] = built
+            while len(self._kept) > self.size:
+                self._kept.popitem(last=False)[1].system.close()
+        return built
+
+    def owns(self, built: Built) -> bool:
+        return any(b.system is built.system for b in self._kept.values())
+
+    def close(self) -> None:
+        while self._kept:
+            self._kept.popitem()[1].system.close()
+
+
 @dimensionless
 def solve(scene, discretisation: Discretisation, h: float | None = None, *, paper: bool = False,
-          progress=None) -> Result:
+          progress=None, reuse: Reuse | None = None) -> Result:
     """Solve ``scene`` with ``discretisation`` at the spacing ``h`` (or the
     paper's grid): the one entry point of every method (module doc);
-    ``progress`` as for :func:`contactcore.newton.solve_increments`."""
+    ``progress`` as for :func:`contactcore.newton.solve_increments`;
+    ``reuse`` a :class:`Reuse` that may hold this system already (the
+    record then says ``"reused": true`` and the mesh and assembly times
+    are zero: nothing was built)."""
     discretisation.check(scene)
     start, timings = time.perf_counter(), Timings()
-    built = discretisation.build(scene, discretisation.resolution(scene, h, paper), timings)
+    resolution = discretisation.resolution(scene, h, paper)
+    built = (reuse.build(scene, discretisation, resolution, timings) if reuse is not None
+             else discretisation.build(scene, resolution, timings))
     try:
         with timings.measure("solve"):
             x, path, report = solve_increments(scene, built.system, progress)
     finally:
-        built.system.close()
+        if reuse is None or not reuse.owns(built):
+            built.system.close()
     report.warnings += scene.interface_warnings(built.h, fitted=built.fitted) + built.warnings
     fields = built.fields(x)
     timings.total = time.perf_counter() - start

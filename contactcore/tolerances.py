@@ -137,6 +137,11 @@ MAX_CUTBACKS = 6
 #: -> 2).  Each costs one factor's memory.
 FACTORISATIONS_KEPT = 2
 
+#: Built systems a study keeps for reuse (contactcore.discretisation.Reuse):
+#: one per method of a ``--method all`` study, whose cases alternate
+#: between the methods; each costs one system's matrices and factorisations.
+SYSTEMS_KEPT = 3
+
 # ----- units and placement (issue 23) -----------------------------------------
 
 #: Every method solves the scene made dimensionless (contactcore.scaling):

@@ -247,8 +247,9 @@ def _dilation_warnings(degree: int, dmax: float, default_gauss: bool, n: int) ->
     return []
 
 
-def solve(scene: Scene, h: float | None = None, *, paper: bool = False, progress=None, **options) -> Result:
+def solve(scene: Scene, h: float | None = None, *, paper: bool = False, progress=None, reuse=None,
+          **options) -> Result:
     """Solve ``scene`` with EFGM: the contract's
     :func:`contactcore.discretisation.solve` with :class:`efgm.options.EFGM`
     ``(**options)``."""
-    return discretisation.solve(scene, make(EFGM, **options), h, paper=paper, progress=progress)
+    return discretisation.solve(scene, make(EFGM, **options), h, paper=paper, progress=progress, reuse=reuse)

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 import tolerances as tol
-from contactcore import SceneError, linear_solver, load_scene, make_law, scene_from_dict, scene_text
+from contactcore import SceneError, linear_solver, load_scene, make_law, sample_profiles, scene_from_dict, scene_text
 from verification import methods
 
 
@@ -86,3 +86,29 @@ def test_follow_path_must_be_a_boolean():
         scene_from_dict(data)
     data["follow_path"] = True
     assert scene_from_dict(data).follow_path
+
+
+@pytest.mark.parametrize("method", ["fe", "xfem", "efgm"])
+def test_a_study_of_the_law_builds_once_and_answers_as_separate_runs(method, monkeypatch):
+    """Reuse keeps the built system while only the law's parameters change
+    (issue 24): one build for three k_N, the profiles identical to separate
+    runs'; a change of h builds afresh."""
+    from contactcore.discretisation import Reuse
+    cls = methods.discretisation(method)
+    builds = []
+    build = cls.build
+    monkeypatch.setattr(cls, "build", lambda self, *a: builds.append(a) or build(self, *a))
+    base, reuse = load_scene("C"), Reuse()
+    try:
+        for kN in (1e11, 1e12, 1e13):
+            scene = base.with_changes(law=make_law({"type": "linear", "kN": kN, "kT": base.law.kT}))
+            kept = methods.solver(method)(scene, 0.2, reuse=reuse)
+            alone = methods.solver(method)(scene, 0.2)
+            assert kept.discretisation.get("reused", False) == (kN != 1e11)
+            for a, b in zip(sample_profiles(scene, kept.fields), sample_profiles(scene, alone.fields)):
+                assert all(np.array_equal(a.columns[q], b.columns[q]) for q in a.columns)
+        assert len(builds) == 1 + 3  # the kept system once, and each separate run
+        methods.solver(method)(scene, 0.1, reuse=reuse)
+        assert len(builds) == 5
+    finally:
+        reuse.close()

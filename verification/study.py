@@ -33,6 +33,7 @@ from pathlib import Path
 import numpy as np
 
 from contactcore import CircleInterface, ContactError, LineInterface, SceneError, load_scene, sample_profile
+from contactcore.discretisation import Reuse
 from contactcore.scene import InterfaceProfile
 
 from . import files, methods, pool
@@ -141,6 +142,12 @@ class Case:
     cell: str | None
 
 
+#: This process's systems kept between the cases it solves: a point that
+#: changes only the law's parameters reuses its method's mesh, shape
+#: functions and matrices (contactcore.discretisation.Reuse).
+_REUSE = Reuse()
+
+
 def solve_case(case: Case) -> dict:
     """The row of one case, solved in this process on its own communicator;
     a failure (bad value, refused solve) is a row with its message."""
@@ -152,7 +159,7 @@ def solve_case(case: Case) -> dict:
         return {**row, "status": "failed", "message": str(exc)}
     solve, comm = pool.solver(case.method)
     options = {**methods.options_for(case.method, cell=case.cell), **comm}
-    tried = attempt(solve, scene, point.get("h", case.h), degree=case.degree, **options)
+    tried = attempt(solve, scene, point.get("h", case.h), degree=case.degree, reuse=_REUSE, **options)
     row.update(health(tried))
     if tried.refused:
         return {**row, "status": "failed", "message": tried.message}
@@ -177,14 +184,17 @@ def study(scene_name: str, params: list[tuple[str, list[float]]], method_names: 
     cases = [Case(scene_name, tuple(zip(names, pt)), m, degree, h, cell) for pt in points
              for m in methods.expand(method_names)]
     rows = []
-    for k, (case, row) in enumerate(zip(cases, pool.map_cases(solve_case, cases, workers)), 1):
-        where = ", ".join(f"{p} = {v:g}" for p, v in case.point)
-        if row["status"] == "failed":
-            log.warning("[%d/%d] %s, %s: failed: %s", k, len(cases), where, case.method, row["message"])
-        else:
-            log.info("[%d/%d] %s, %s: %s, %d DOFs, %.2f s", k, len(cases), where, case.method, row["status"],
-                     row["dofs"], row["total"])
-        rows.append({**dict(zip(labels, (v for _, v in case.point))), **row})
+    try:
+        for k, (case, row) in enumerate(zip(cases, pool.map_cases(solve_case, cases, workers)), 1):
+            where = ", ".join(f"{p} = {v:g}" for p, v in case.point)
+            if row["status"] == "failed":
+                log.warning("[%d/%d] %s, %s: failed: %s", k, len(cases), where, case.method, row["message"])
+            else:
+                log.info("[%d/%d] %s, %s: %s, %d DOFs, %.2f s", k, len(cases), where, case.method, row["status"],
+                         row["dofs"], row["total"])
+            rows.append({**dict(zip(labels, (v for _, v in case.point))), **row})
+    finally:
+        _REUSE.close()  # the systems this process kept (a worker's end with it)
     out = Path(out)
     files.write_csv(out / "study.csv", rows, [*labels, *STATS])
     for param, label in zip(names, labels):

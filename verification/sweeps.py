@@ -44,6 +44,8 @@ from contactcore import tolerances as tol
 from contactcore.geometry import Rectangle
 from contactcore.scene import InterfaceProfile
 
+from contactcore.discretisation import Reuse
+
 from . import files, pool
 from .closed_forms import interface_patch, layered_slip, pressurised_rod, twisted_rod
 from .norms import l2_error, max_errors
@@ -227,7 +229,12 @@ def run_sweep(sweep: Sweep, degree: int = 1, method_names=None) -> list[dict]:
         solve, comm = pool.solver(name)
         solve = functools.partial(solve, **comm)
         h = None if sweep.name == "false_tN" else H
-        tried = [attempt(solve, c.scene, h, degree=degree, estimate_condition=True, **c.options) for c in cases]
+        reuse = Reuse()  # a sweep of springs builds each discretisation once
+        try:
+            tried = [attempt(solve, c.scene, h, degree=degree, estimate_condition=True, reuse=reuse, **c.options)
+                     for c in cases]
+        finally:
+            reuse.close()
         errors = [float("nan") if t.refused else error(c, t.result) for c, t in zip(cases, tried)]
         bound = sweep.bound
         if bound is None:

@@ -262,8 +262,9 @@ def build(scene: Scene, options: FE, resolution: Resolution, timings: Timings) -
                          "cells": fm.num_cells, "grading": None if grading is None else vars(grading)})
 
 
-def solve(scene: Scene, h: float | None = None, *, paper: bool = False, progress=None, **options) -> Result:
+def solve(scene: Scene, h: float | None = None, *, paper: bool = False, progress=None, reuse=None,
+          **options) -> Result:
     """Solve ``scene`` with the conforming reference: the contract's
     :func:`contactcore.discretisation.solve` with :class:`xdolfinx.options.FE`
     ``(**options)``."""
-    return discretisation.solve(scene, make(FE, **options), h, paper=paper, progress=progress)
+    return discretisation.solve(scene, make(FE, **options), h, paper=paper, progress=progress, reuse=reuse)

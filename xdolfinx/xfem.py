@@ -596,8 +596,9 @@ def build(scene: Scene, options: XFEM, resolution: Resolution, timings: Timings)
                          "enriched_nodes": space.num_enriched, "gauss": space.gauss})
 
 
-def solve(scene: Scene, h: float | None = None, *, paper: bool = False, progress=None, **options) -> Result:
+def solve(scene: Scene, h: float | None = None, *, paper: bool = False, progress=None, reuse=None,
+          **options) -> Result:
     """Solve ``scene`` with XFEM: the contract's
     :func:`contactcore.discretisation.solve` with :class:`xdolfinx.options.XFEM`
     ``(**options)``."""
-    return discretisation.solve(scene, make(XFEM, **options), h, paper=paper, progress=progress)
+    return discretisation.solve(scene, make(XFEM, **options), h, paper=paper, progress=progress, reuse=reuse)
