@@ -8,6 +8,8 @@ dotted path.  Conventions (signs, normals, profiles) are those of
 """
 from __future__ import annotations
 
+import dataclasses
+import json
 import math
 import re
 import tomllib
@@ -643,13 +645,96 @@ def scene_from_dict(data: dict) -> Scene:
     return scene.validated()
 
 
+# ----- writing a scene back as TOML -------------------------------------------
+
+_LOAD_TYPES = {Traction: "traction", Pressure: "pressure", BodyForce: "body_force", Torque: "torque"}
+
+
+def scene_to_dict(scene: Scene) -> dict:
+    """The TOML tables of ``scene``: :func:`scene_from_dict` of the result is
+    ``scene`` again (every built-in scene round-trips, tests/test_scene_model.py)."""
+    itf = scene.interface
+    if isinstance(itf, LevelSetInterface):
+        raise SceneError("interface", "a general level set (Python callables) has no TOML form")
+    data = {"name": scene.name, "title": scene.title, "plane": scene.plane, "increments": scene.increments,
+            "follow_path": scene.follow_path}
+    if scene.h is not None:
+        data["h"] = scene.h
+    if scene.paper:
+        data["paper"] = {k: list(v) for k, v in scene.paper.items()}
+    dom = scene.domain
+    data["domain"] = ({"type": "rectangle", "corner": list(dom.corner), "size": list(dom.size)}
+                      if isinstance(dom, Rectangle) else {"type": "disc", "centre": list(dom.centre),
+                                                          "radius": dom.radius})
+    data["interface"] = ({"type": "line", "point": list(itf.point), "normal": list(itf.normal)}
+                         if isinstance(itf, LineInterface) else {"type": "circle", "centre": list(itf.centre),
+                                                                 "radius": itf.radius})
+    data["interface"]["law"] = {"type": scene.law.name, **{k: getattr(scene.law, k) for k in scene.law.parameters}}
+    data["materials"] = {b: {"E": scene.materials[b].E, "nu": scene.materials[b].nu} for b in BODIES}
+    data["supports"] = [_fields(s) for s in scene.supports]
+    data["pins"] = [_fields(p) for p in scene.pins]
+    data["loads"] = [{"type": _LOAD_TYPES[type(x)], **_fields(x)} for x in scene.loads]
+    data["profiles"] = [{"type": "line" if isinstance(p, LineProfile) else "interface", **_fields(p)}
+                        for p in scene.profiles]
+    return {k: v for k, v in data.items() if v != []}
+
+
+def _fields(item) -> dict:
+    """A scene item's fields as TOML values (tuples as lists, empty paths left out)."""
+    out = {}
+    for f in dataclasses.fields(item):
+        value = getattr(item, f.name)
+        if f.name == "path" and not value:
+            continue
+        out[f.name] = [list(v) if isinstance(v, tuple) else v for v in value] if isinstance(value, tuple) else value
+    return out
+
+
+def _toml_value(value) -> str:
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, int):
+        return str(value)
+    if isinstance(value, float):  # the shortest text that reads back exactly, always a TOML float
+        text = next(t for t in (f"{value:.{p}g}" for p in range(1, 18)) if float(t) == value)
+        return text if any(c in text for c in ".e") else text + ".0"
+    if isinstance(value, str):
+        return json.dumps(value, ensure_ascii=False)
+    return "[" + ", ".join(_toml_value(v) for v in value) + "]"
+
+
+def _toml_table(name: str, table: dict, array: bool = False) -> list[str]:
+    """``table`` under the header ``name`` (``[[name]]`` for an array
+    element), its scalar keys first, then its sub-tables."""
+    lines = ([f"[[{name}]]" if array else f"[{name}]"] if name else [])
+    tables = []
+    for key, value in table.items():
+        if isinstance(value, dict):
+            tables.append((key, value, False))
+        elif isinstance(value, list) and value and isinstance(value[0], dict):
+            tables += [(key, v, True) for v in value]
+        else:
+            lines.append(f"{key} = {_toml_value(value)}")
+    for key, value, is_array in tables:
+        lines += [""] + _toml_table(f"{name}.{key}" if name else key, value, is_array)
+    return lines
+
+
+def scene_toml(scene: Scene) -> str:
+    """``scene`` as the TOML text :func:`load_scene` reads back."""
+    return "\n".join(_toml_table("", scene_to_dict(scene))) + "\n"
+
+
 def builtin_scenes() -> list[str]:
     """Names of the scenes shipped with the package (the paper's A, B, C)."""
     return sorted(p.name[:-5] for p in resources.files("contactcore.scenes").iterdir() if p.name.endswith(".toml"))
 
 
-def scene_text(name_or_path: str | Path) -> str:
-    """The TOML text of a built-in scene name or of a file path."""
+def scene_text(name_or_path: str | Path | Scene) -> str:
+    """The TOML text of a built-in scene name, of a file path, or of a
+    :class:`Scene` (:func:`scene_toml`)."""
+    if isinstance(name_or_path, Scene):
+        return scene_toml(name_or_path)
     if str(name_or_path) in builtin_scenes():
         return resources.files("contactcore.scenes").joinpath(f"{name_or_path}.toml").read_text()
     path = Path(name_or_path)
@@ -664,8 +749,12 @@ def scene_text(name_or_path: str | Path) -> str:
         raise SceneError("scene", f"cannot read {path}: {exc.strerror}") from None
 
 
-def load_scene(name_or_path: str | Path) -> Scene:
-    """Read and validate a scene: a built-in name (``A``) or a TOML path."""
+def load_scene(name_or_path: str | Path | Scene) -> Scene:
+    """Read and validate a scene: a built-in name (``A``) or a TOML path; a
+    :class:`Scene` (built in Python) is returned as it is, so every driver
+    takes a scene or a name."""
+    if isinstance(name_or_path, Scene):
+        return name_or_path.validated()
     text = scene_text(name_or_path)
     try:
         data = tomllib.loads(text)

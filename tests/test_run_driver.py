@@ -113,3 +113,14 @@ def test_the_advisor_picks_the_fastest_rung_that_reaches_each_target():
     assert lines[2].startswith("| 1e-02 | fe | 1 | 0.1 |")  # both fe rungs reach 1e-2: the faster one
     assert lines[3].startswith("| 1e-03 | xfem | 2 | 0.1 |")  # fe at 0.05 reaches it too, but later
     assert "not reached" in lines[4]
+
+
+def test_a_scene_built_in_python_goes_through_run(tmp_path):
+    """run takes a Scene as well as a name: it writes the scene as TOML,
+    which reads back equal, and returns its section (summary.md's text)."""
+    from verification.run import run
+    scene = load_scene("A").with_changes(name="A-python", increments=1)
+    text = run(scene, ["efgm"], tmp_path / "out", h=0.2, draw=False)
+    assert load_scene(tmp_path / "out" / "scene.toml") == scene
+    assert text == (tmp_path / "out" / "summary.md").read_text()
+    assert json.loads((tmp_path / "out" / "run.json").read_text())["scene"] == "A-python"

@@ -67,9 +67,8 @@ QUICK = Plan(ladders={"C": {1: (0.2,)}},
 def _friction(scene: str, out: Path) -> str:
     """A friction scene with every method, into ``out/<scene>``: status,
     response and the Newton iterations per increment (:mod:`verification.interface`)."""
-    run(scene, ["all"], out / scene)
-    return files.relink("#" + (out / scene / "summary.md").read_text() + "\n![response](plots/response.png)\n",
-                        scene)
+    text = run(scene, ["all"], out / scene)
+    return files.relink("#" + text + "\n![response](plots/response.png)\n", scene)
 
 
 def _frictions(scenes, workers):

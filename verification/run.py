@@ -21,7 +21,7 @@ from pathlib import Path
 
 import numpy as np
 
-from contactcore import ContactError, load_scene, sample_profiles, scene_text
+from contactcore import ContactError, Scene, load_scene, sample_profiles, scene_text
 from contactcore import tolerances as tol
 from contactcore.budget import check_budget
 from contactcore.scene import check_resolution, smallest_dimension
@@ -65,15 +65,17 @@ def _progress(name: str):
     return report
 
 
-def run(scene_name: str, method_names: list[str], out: Path, *, h=None, degree=1, paper=False,
+def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, paper=False,
         fields=False, petsc_options=None, dmax=None, nodes_file=None, cell=None, basis=None, allow_large=False,
-        draw=True, argv=()) -> list[dict]:
-    """Solve, sample the scene's profiles, write everything; return the
-    summaries.  Before any work: every option must mean something to a chosen
-    method, ``h`` must fit the domain, and the run must fit the machine
-    (:func:`contactcore.budget.check_budget`, unless ``allow_large``).  The
-    scene as read is written last, with ``run.json``; no figure unless
-    ``draw`` (matplotlib is then never imported)."""
+        draw=True, argv=()) -> str:
+    """Solve ``scene_name`` (a scene, a built-in name or a TOML file),
+    sample the scene's profiles, write everything; return the Markdown
+    section (``summary.md``'s text).  Before any work: every option must
+    mean something to a chosen method, ``h`` must fit the domain, and the
+    run must fit the machine (:func:`contactcore.budget.check_budget`,
+    unless ``allow_large``).  The scene as read is written last (as TOML),
+    with ``run.json``; no figure unless ``draw`` (matplotlib is then never
+    imported)."""
     scene = load_scene(scene_name)
     chosen = methods.expand(method_names)
     methods.check_options(chosen, petsc_options=petsc_options or None, dmax=dmax, nodes=nodes_file, cell=cell,
@@ -128,10 +130,11 @@ def run(scene_name: str, method_names: list[str], out: Path, *, h=None, degree=1
                  + interface.iterations_table(paths))
     files.write_text(out / "summary.md", text)
     files.write_text(out / "scene.toml", scene_text(scene_name))
-    files.write_json(out / "run.json", {**files.provenance(list(argv)), "scene": scene_name,
+    given = scene.name if isinstance(scene_name, Scene) else str(scene_name)
+    files.write_json(out / "run.json", {**files.provenance(list(argv)), "scene": given,
                                         "methods": methods.expand(method_names), "h": h, "degree": degree,
                                         "paper": paper, "petsc_options": petsc_options or {}, "dmax": dmax,
                                         "basis": basis, "nodes": str(nodes_file) if nodes_file else None,
                                         "cell": next((s["discretisation"]["cell"] for s in summaries
                                                       if "cell" in s["discretisation"]), cell)})
-    return summaries
+    return text

@@ -201,7 +201,7 @@ def study(scene_name: str, params: list[tuple[str, list[float]]], method_names: 
         _plot(out / _plot_name(names, param), base.name, param, label, [lb for lb in labels if lb != label], rows)
     text = markdown(base.name, names, rows)
     files.write_text(out / "study.md", text)
-    files.write_json(out / "run.json", {**files.provenance(list(argv)), "scene": scene_name,
+    files.write_json(out / "run.json", {**files.provenance(list(argv)), "scene": base.name,
                                         "params": {p: list(v) for p, v in params},
                                         "methods": methods.expand(method_names), "degree": degree, "h": h,
                                         "workers": pool.workers_label(workers)})
