@@ -38,7 +38,7 @@ steps solved.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Protocol
 
 import numpy as np
@@ -48,6 +48,7 @@ from scipy.spatial import cKDTree
 
 from . import health
 from . import tolerances as tol
+from .collective import SERIAL
 from .errors import SolverError
 from .geometry import CircleInterface, LineInterface, tangent_of
 from .laws import STATUS_NAMES
@@ -63,18 +64,26 @@ class InterfaceOperator:
     G: sp.csr_matrix
     weights: np.ndarray
     points: np.ndarray
+    #: Under mpirun, this rank's points only, ``G``'s columns in the local
+    #: numbering of the unknowns it touches (owned, then ghosts), and
+    #: ``exchange`` the system's ghost exchange (``forward``: owned values
+    #: -> local values; ``reverse``: local contributions -> owned sums);
+    #: None in serial (local = owned = all).
+    exchange: object = None
 
     @property
     def size(self) -> int:
         return len(self.weights)
 
     def jumps(self, u: np.ndarray) -> np.ndarray:
-        """``[g_N, g_T]`` (m, 2) of the unknowns ``u``."""
-        return (self.G @ u).reshape(-1, 2)
+        """``[g_N, g_T]`` (m, 2) of the unknowns ``u`` (owned values)."""
+        local = u if self.exchange is None else self.exchange.forward(u)
+        return (self.G @ local).reshape(-1, 2)
 
     def forces(self, traction: np.ndarray) -> np.ndarray:
-        """Nodal forces ``Gᵀ W t`` of the tractions ``t`` (m, 2)."""
-        return self.G.T @ (self.weights[:, None] * traction).ravel()
+        """Nodal forces ``Gᵀ W t`` of the tractions ``t`` (m, 2), owned rows."""
+        local = self.G.T @ (self.weights[:, None] * traction).ravel()
+        return local if self.exchange is None else self.exchange.reverse(local)
 
     def stiffness(self, tangent: np.ndarray) -> sp.csr_matrix:
         """``Gᵀ W D G`` for the tangents ``D`` (m, 2, 2) of the points."""
@@ -135,6 +144,11 @@ class Increment:
     traction: np.ndarray
     status: np.ndarray
 
+    def gathered(self, ranks, order: np.ndarray) -> "Increment":
+        """Every rank's points of this increment, in ``order``."""
+        return replace(self, jump=ranks.gather(self.jump)[order], traction=ranks.gather(self.traction)[order],
+                       status=ranks.gather(self.status)[order])
+
     def counts(self) -> dict[str, int]:
         """How many points are open, sticking and slipping."""
         return {name: int(np.sum(self.status == i)) for i, name in enumerate(STATUS_NAMES)}
@@ -156,6 +170,16 @@ class InterfacePath:
     def iterations(self) -> list[int]:
         return [s.iterations for s in self.steps]
 
+    def gathered(self, ranks, interface) -> "InterfacePath":
+        """Every rank's points on every rank, ordered along Γ (polar angle
+        or arc length, else x then y): the same path, in the same order,
+        however the points were shared between ranks (serial included)."""
+        points = ranks.gather(self.points)
+        order = canonical_order(interface, points)
+        return InterfacePath(points[order], ranks.gather(self.weights)[order],
+                             [st.gathered(ranks, order) for st in self.steps],
+                             None if self.state is None else ranks.gather(self.state)[order])
+
     def state_at(self, interface, points: np.ndarray) -> np.ndarray | None:
         """The law's history at other points of Γ, interpolated linearly
         along Γ (the polar angle of a circle, the arc length of a line) from
@@ -168,6 +192,15 @@ class InterfacePath:
             period = 2 * np.pi if isinstance(interface, CircleInterface) else None
             return np.interp(b, a[order], self.state[order], period=period)
         return self.state[cKDTree(self.points).query(points)[1]]
+
+
+def canonical_order(interface, points: np.ndarray) -> np.ndarray:
+    """Points of Γ sorted along it (:func:`along`; x then y on a general
+    level set): an order that no mesh numbering or partition changes."""
+    points = np.asarray(points, float).reshape(-1, 2)
+    if isinstance(interface, (CircleInterface, LineInterface)):
+        return np.lexsort((points[:, 1], points[:, 0], along(interface, points)))
+    return np.lexsort((points[:, 1], points[:, 0]))
 
 
 def along(interface, points: np.ndarray) -> np.ndarray:
@@ -201,13 +234,14 @@ class _Newton:
         self.state = self.law.initial_state(self.itf.size)
         self.report = SolverReport(solver="", solves=0, iterations=[])
         self.path = InterfacePath(self.itf.points, self.itf.weights)
+        self.ranks = getattr(system, "collective", SERIAL)  # every decision is taken on all ranks alike
         self._factorised = []  # (slot, interface tangent) of the system's factorisations, last used last
 
     def _residual(self, u, b, response) -> tuple[np.ndarray, float]:
         internal = self.system.internal(u) + self.itf.forces(response.traction)
         R = internal - b
         scale = max(np.max(np.abs(b[self.free]), initial=0.0), np.max(np.abs(internal), initial=0.0))
-        return R, scale
+        return R, self.ranks.max(scale)
 
     def step(self, k: float) -> None:
         """Converge the step to increment ``k`` from the committed state, or
@@ -220,14 +254,14 @@ class _Newton:
         for it in range(1, tol.NEWTON_MAX_ITERATIONS + 1):
             response = self.law.evaluate(self.itf.jumps(u), self.state)
             R, scale = self._residual(u, b, response)
-            norm = float(np.max(np.abs(R[self.free]), initial=0.0))
+            norm = self.ranks.max(float(np.max(np.abs(R[self.free]), initial=0.0)))
             history.append(norm / scale if scale > 0 else norm)
             if not np.isfinite(norm):
                 raise SolverError(f"the residual is not finite; residual history {_fmt(history)}")
             # converged: a small residual, or the law's tangent is the one the
             # last solve used — a piecewise-linear law is then solved exactly,
             # up to that solve's round-off (its backward error is checked)
-            settled = tangent is not None and np.array_equal(tangent, response.tangent)
+            settled = tangent is not None and self.ranks.all(np.array_equal(tangent, response.tangent))
             if it > 1 and (norm <= tol.NEWTON_RTOL * scale or settled):
                 health.check_residual(history[-1], "the settled Newton step")
                 self._commit(k, (loads, supports), u, response, it - 1, history)
@@ -246,7 +280,7 @@ class _Newton:
         factorisation kept for that tangent if there is one, else refilled
         into the slot used longest ago (:data:`~contactcore.tolerances.FACTORISATIONS_KEPT`)."""
         for i, (slot, kept) in enumerate(self._factorised):
-            if np.array_equal(kept, tangent):
+            if self.ranks.all(np.array_equal(kept, tangent)):
                 self._factorised.append(self._factorised.pop(i))
                 return self.system.solve(None, rhs, force_scale=scale, slot=slot)
         used = {slot for slot, _ in self._factorised}
@@ -302,7 +336,8 @@ def _final_state(scene, system: ContactSystem, newton: _Newton, progress=None) -
         return newton
     except SolverError as exc:
         if scene.law.is_linear:
-            raise SolverError(f"{exc}; {health.failure_hint(scene, system.interface.weights)}") from None
+            weights = getattr(system, "collective", SERIAL).gather(system.interface.weights)
+            raise SolverError(f"{exc}; {health.failure_hint(scene, weights)}") from None
     newton = _Newton(scene, system)
     _follow(scene, newton, progress)
     return newton
@@ -313,7 +348,9 @@ def _follow(scene, newton: _Newton, progress) -> None:
     for n in range(1, scene.increments + 1):
         newton.increment(n)
         if progress is not None:
-            progress(n, scene.increments, newton.path.final)
+            ranks = newton.ranks
+            order = canonical_order(scene.interface, ranks.gather(newton.itf.points))
+            progress(n, scene.increments, newton.path.final.gathered(ranks, order))
 
 
 def solve_increments(scene, system: ContactSystem, progress=None) -> tuple[np.ndarray, InterfacePath, SolverReport]:
@@ -322,8 +359,10 @@ def solve_increments(scene, system: ContactSystem, progress=None) -> tuple[np.nd
     if given, is called as ``progress(n, increments, step)`` after each
     increment ``n`` of a followed path converges (``step`` its
     :class:`Increment`): the driver reports it, the numerics print nothing."""
-    health.check_springs(scene, system.interface.weights)
-    health.check_restraint(scene, system.interface.points, system.interface.weights)
+    ranks = getattr(system, "collective", SERIAL)
+    weights, points = ranks.gather(system.interface.weights), ranks.gather(system.interface.points)
+    health.check_springs(scene, weights)
+    health.check_restraint(scene, points, weights)
     newton = _Newton(scene, system)
     if not (scene.law.has_history or scene.follow_path):
         newton = _final_state(scene, system, newton, progress)
