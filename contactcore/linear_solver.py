@@ -290,13 +290,26 @@ class Factorisation:
             db.delValue(self.prefix + key)
 
 
+def _local_to_global(K) -> tuple:
+    """``K``'s row and column local-to-global maps (dolfinx sets them); the
+    identity for a matrix made here (one process)."""
+    maps = K.getLGMap()
+    if maps[0].handle:  # a null handle: no map was set
+        return maps
+    identity = PETSc.LGMap().create(np.arange(K.getSize()[0], dtype=PETSc.IntType), comm=K.getComm())
+    return identity, identity
+
+
 class Tangent:
     """Newton's ``J = K + K_Γ`` and its factorisations, allocated once per
     run and refilled, as dolfinx's ``NonlinearProblem`` does.
 
-    ``K`` (PETSc AIJ, owned from here on) is the bulk; ``free`` the unknowns
-    solved for (the others are prescribed: only the free block is
-    factorised, MUMPS pays 3-4x for held rows otherwise);
+    ``K`` (PETSc AIJ, owned from here on, distributed or not) is the bulk;
+    ``free`` this rank's unknowns solved for, numbered from its first owned
+    row (the others are prescribed: only the free block is factorised,
+    MUMPS pays 3-4x for held rows otherwise); ``K_Γ`` comes in the local
+    numbering of ``K``'s local-to-global map (owned, then ghosts) and is
+    added where it falls, on whichever rank owns the row;
     ``interface_pattern`` (scipy sparse, values ignored) the entries ``K_Γ``
     may reach outside ``K``'s pattern.  At a new ``K_Γ`` the work copy of
     ``K`` is refilled, ``K_Γ`` added into it, its free block refilled into
@@ -314,12 +327,14 @@ class Tangent:
         self.options = {False: petsc_options, True: {**(symmetric or {}), **(petsc_options or {})}}
         self.estimate, self.what = estimate_condition, what
         self._slots = {}  # slot -> [free block, Factorisation, symmetric]
-        self._rows = PETSc.IS().createGeneral(self.free.astype(PETSc.IntType), comm=PETSc.COMM_SELF)
+        start = K.getOwnershipRange()[0]  # free: this rank's owned rows, numbered from its first
+        self._rows = PETSc.IS().createGeneral((start + self.free).astype(PETSc.IntType), comm=K.getComm())
         self._J, self._vectors = K.copy(), None
         if interface_pattern is not None:
             pattern = to_petsc(abs(sp.csr_matrix(interface_pattern)) * 0.0)
             self._J.axpy(1.0, pattern, structure=PETSc.Mat.Structure.DIFFERENT_NONZERO_PATTERN)
             pattern.destroy()
+        self._J.setLGMap(*_local_to_global(K))
 
     def solve(self, interface_tangent: sp.spmatrix | None, rhs: np.ndarray, force_scale: float = 0.0,
               slot: int = 0) -> tuple[np.ndarray, SolverReport]:
@@ -338,15 +353,17 @@ class Tangent:
 
     def _refill(self, interface_tangent: sp.csr_matrix, slot: int) -> None:
         block, factorisation, was_symmetric = self._slots.pop(slot, (None, None, None))  # back once factorised
-        Ki = to_petsc(interface_tangent)
         self._J.zeroEntries()
         self._J.axpy(1.0, self.K, structure=PETSc.Mat.Structure.SUBSET_NONZERO_PATTERN)
-        self._J.axpy(1.0, Ki, structure=PETSc.Mat.Structure.SUBSET_NONZERO_PATTERN)
-        Ki.destroy()
+        K_Gamma = interface_tangent.tocsr()
+        K_Gamma.sort_indices()
+        self._J.setValuesLocalCSR(K_Gamma.indptr.astype(PETSc.IntType), K_Gamma.indices.astype(PETSc.IntType),
+                                  K_Gamma.data, addv=PETSc.InsertMode.ADD_VALUES)
+        self._J.assemble()
         block = self._J.createSubMatrix(self._rows, self._rows, submat=block)
         if self._vectors is None:
             self._vectors = block.createVecs()
-        symmetric = self.symmetric is not None and is_symmetric(interface_tangent)
+        symmetric = self.symmetric is not None and is_symmetric(K_Gamma)
         if factorisation is None or symmetric != was_symmetric:
             if factorisation is not None:
                 factorisation.destroy()

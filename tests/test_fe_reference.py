@@ -7,6 +7,7 @@ from contactcore import LinearLaw
 from contactcore.profiles import interface_response
 from verification.closed_forms import interface_patch
 from xdolfinx import conforming
+from xdolfinx.contact_system import GhostExchange
 from xdolfinx.elasticity import sigma
 
 
@@ -139,7 +140,8 @@ def test_interface_operator_equals_dolfinx_assembly(degree, angle):
     indptr, indices, data = A.getValuesCSR()
     for i in range(len(indptr) - 1):
         theirs[i, indices[indptr[i]:indptr[i + 1]]] = data[indptr[i]:indptr[i + 1]]
-    itf = conforming.interface_operator(scene, fm, V, degree)
+    itf = conforming.interface_operator(scene, fm, V, degree,
+                                        GhostExchange(V.dofmap.index_map, V.dofmap.index_map_bs, fm.mesh.comm))
     ours = itf.stiffness(np.broadcast_to(scene.law.constant_tangent(), (itf.size, 2, 2))).toarray()
     assert np.isclose(itf.weights.sum(), np.linalg.norm(np.subtract(*scene.interface.chord(scene.domain))))
     assert np.max(np.abs(ours - theirs)) <= tol.PATCH_ROUNDOFF * np.max(np.abs(theirs))

@@ -26,6 +26,7 @@ import logging
 import math
 import os
 import sys
+import tempfile
 from pathlib import Path
 
 from contactcore import ContactError, load_scene
@@ -156,7 +157,8 @@ class Repeats(logging.Filter):
 
 
 def _configure_logging(verbosity: int = 0) -> Repeats:
-    """Our progress at INFO (WARNING with --quiet, DEBUG with --verbose);
+    """Our progress at INFO (WARNING with --quiet, DEBUG with --verbose,
+    nothing at -2: the ranks after the first under mpirun);
     everything else (ffcx's JIT goes through setuptools, which lowers the
     root logger's level) only from WARNING on, enforced on the handler,
     which setuptools does not touch.  Repeated messages are collapsed."""
@@ -170,7 +172,7 @@ def _configure_logging(verbosity: int = 0) -> Repeats:
     ours.handlers[:] = [logging.StreamHandler()]
     ours.handlers[0].setFormatter(fmt)
     ours.handlers[0].addFilter(repeats)
-    ours.setLevel({-1: logging.WARNING, 0: logging.INFO, 1: logging.DEBUG}[verbosity])
+    ours.setLevel({-2: logging.CRITICAL + 1, -1: logging.WARNING, 0: logging.INFO, 1: logging.DEBUG}[verbosity])
     ours.propagate = False
     return repeats
 
@@ -246,40 +248,53 @@ def _dispatch(args, argv) -> None:
         timing(args.scene, args.method, args.degree, args.h, args.out, argv=argv)
 
 
-def _launcher(names: tuple[str, ...]) -> int | None:
-    """An integer that mpirun (Open MPI or any PMI launcher) put in the
-    environment, read without importing MPI."""
-    import os
-    return next((int(os.environ[n]) for n in names if n in os.environ), None)
+#: The commands that run on many ranks under mpirun: one solve (or a
+#: ladder of them) spread over the ranks by dolfinx and PETSc.
+DISTRIBUTED = ("run", "timing")
 
 
-def _rank() -> int:
-    """This process's rank under mpirun (0 without it)."""
-    return _launcher(("OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK")) or 0
+def _check_ranks(args) -> None:
+    """Under mpirun with several ranks, ``run`` and ``timing`` solve fe and
+    xfem on all of them (EFGM on rank 0, the others waiting); the study
+    drivers spread their cases over a pool instead (``--workers``, or
+    ``mpiexec -n K python -m mpi4py.futures``), so they are refused here,
+    once, before any rank writes."""
+    from .pool import distributed
+    if not distributed():
+        return
+    if args.command not in DISTRIBUTED:
+        raise ContactError(f"mpirun: '{args.command}' spreads its cases over a pool, not over mpirun's ranks: run "
+                           f"it with --workers K, or under mpiexec -n K python -m mpi4py.futures -m verification")
+    if getattr(args, "fields", False):
+        raise ContactError("--fields under mpirun: field files are written from one process; run without mpirun "
+                           "(the profiles and summaries are the same)")
 
 
-def _check_serial() -> None:
-    """The drivers run in one process (issue 15 is open): under mpirun with
-    several ranks every command is refused, once, before any rank writes
-    into the same result folder — except under ``python -m mpi4py.futures``,
-    where only rank 0 runs the command and the other ranks are its pool."""
-    from .pool import under_mpi_pool
-    size = _launcher(("OMPI_COMM_WORLD_SIZE", "PMI_SIZE"))
-    if size is not None and size > 1 and not under_mpi_pool():
-        raise ContactError(f"mpirun: the drivers run in one process only (this is rank {_rank()} of {size}); "
-                           "run them without mpirun")
+def _abort_on(exc: BaseException) -> None:
+    """An unexpected error on one rank under mpirun would leave the others
+    waiting in a collective for ever: print it and abort them all."""
+    import traceback
+    from mpi4py import MPI
+    traceback.print_exception(exc)
+    MPI.COMM_WORLD.Abort(1)
 
 
 def main(argv=None) -> int:
     argv = sys.argv[1:] if argv is None else argv
     args = _parser().parse_args(argv)
-    repeats = _configure_logging(args.verbosity)
+    from .pool import distributed, launched_rank
+    rank = launched_rank()
+    repeats = _configure_logging(args.verbosity if rank == 0 else -2)  # one log, rank 0's
     try:
-        _check_serial()
+        _check_ranks(args)
         _check_sizes(args)
         _check_workers(args)
         if getattr(args, "out", None) is None:
             _dispatch(args, argv)
+        elif rank > 0:  # every rank computes (the solves are collective), rank 0 alone writes
+            with tempfile.TemporaryDirectory() as scratch:
+                args.out = Path(scratch) / "out"
+                _dispatch(args, argv)
         else:
             with files.result_folder(args.out) as tmp:
                 final, args.out = args.out, tmp
@@ -288,9 +303,13 @@ def main(argv=None) -> int:
                     files.write_json(tmp / files.MANIFEST, files.provenance(list(argv)))
             log.info("wrote %s", final)
     except ContactError as exc:
-        if _rank() == 0:  # under mpirun every rank meets the error: one line is enough
+        if rank == 0:  # every rank meets the same error (Newton's decisions are collective): one line
             print(f"error: {exc}", file=sys.stderr)
         return 2
+    except Exception as exc:
+        if distributed():
+            _abort_on(exc)
+        raise
     finally:
         for line in repeats.summary():
             print(line, file=sys.stderr)

@@ -36,6 +36,10 @@ FLAGS = {"petsc_options": "--petsc-option", "cell": "--cell", "dmax": "--dmax", 
 #: Methods whose fields live on a dolfinx mesh, so XDMF output exists.
 WITH_XDMF = ("fe", "xfem")
 
+#: Methods whose solve spreads over mpirun's ranks (dolfinx and PETSc own
+#: the partition); the others run on rank 0 while the rest wait.
+DISTRIBUTED = ("fe",)
+
 
 def solver(name: str):
     """The ``solve`` function of method (or peer) ``name``."""

@@ -47,6 +47,19 @@ def _launched_size() -> int:
     return next((int(os.environ[n]) for n in ("OMPI_COMM_WORLD_SIZE", "PMI_SIZE") if n in os.environ), 1)
 
 
+def launched_rank() -> int:
+    """This process's rank under mpiexec (0 without it), read from its environment."""
+    return next((int(os.environ[n]) for n in ("OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK") if n in os.environ),
+                0)
+
+
+def distributed() -> bool:
+    """Whether this command runs on several mpirun ranks as one job (not as
+    an mpi4py.futures pool): the solves of fe and xfem are then spread over
+    them."""
+    return _launched_size() > 1 and not under_mpi_pool()
+
+
 def under_mpi_pool() -> bool:
     """Whether this process runs under ``mpiexec -n K python -m mpi4py.futures``
     with K > 1, as its master or as one of its workers: mpi4py.futures

@@ -26,7 +26,7 @@ from contactcore import tolerances as tol
 from contactcore.budget import check_budget
 from contactcore.scene import check_resolution, smallest_dimension
 
-from . import files, interface, methods, plots
+from . import files, interface, methods, plots, pool
 
 log = logging.getLogger("verification")
 
@@ -93,6 +93,10 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
     out = Path(out)
     profiles, summaries, paths = {}, [], {}
     for name in chosen:
+        if name not in methods.DISTRIBUTED and pool.distributed():
+            if pool.launched_rank() > 0:
+                continue
+            log.info("%s is serial: it runs on rank 0 while the other ranks wait", name)
         options = methods.options_for(name, petsc_options=petsc_options or None, dmax=dmax, nodes=nodes, cell=cell,
                                       basis=basis)
         log.info("scene %s: solving with %s (%s)", scene.name, name, f"{basis} basis" if "basis" in options

@@ -50,7 +50,7 @@ from contactcore.geometry import tangent_of
 from contactcore.newton import InterfaceOperator
 from contactcore.scene import Pressure, Traction, body_force
 
-from .contact_system import PETScSystem
+from .contact_system import GhostExchange, PETScSystem
 from .evaluation import BodyCellLocator, BodyFields
 from .fitted_mesh import FittedMesh, fitted_mesh
 from .options import FE
@@ -105,7 +105,7 @@ def linear_forms(scene: Scene, fm: FittedMesh, V) -> list:
     return forms
 
 
-def interface_operator(scene: Scene, fm: FittedMesh, V, degree: int) -> InterfaceOperator:
+def interface_operator(scene: Scene, fm: FittedMesh, V, degree: int, exchange: "GhostExchange") -> InterfaceOperator:
     """Γ's quadrature on the mesh's Γ facets and ``G``: the jump
     ``[[u]] = u₊ − u₋`` in the frame (n, t) of the level set's exact normal
     at each point (not the chord's: SCENES.md, scene B).
@@ -132,7 +132,8 @@ def interface_operator(scene: Scene, fm: FittedMesh, V, degree: int) -> Interfac
     xg = msh.geometry.x[:, :2]
     dofs = [[V.sub(b).sub(j).dofmap for j in range(2)] for b in range(2)]
     facets = fm.facets_tagged(meshes.INTERFACE)
-    trip = Triplets((2 * len(facets) * len(xi), V.dofmap.index_map.size_global))
+    facets = facets[facets < msh.topology.index_map(tdim - 1).size_local]  # each facet on the rank that owns it
+    trip = Triplets((2 * len(facets) * len(xi), exchange.local_size))
     points, weights = [], []
     for i, f in enumerate(facets):
         c = f2c.links(f)[0]
@@ -151,23 +152,33 @@ def interface_operator(scene: Scene, fm: FittedMesh, V, degree: int) -> Interfac
                 trip.add(rows, dofs[side][j].cell_dofs(c)[None, None, :], sign * N[:, None, :] * frame[:, :, j:j + 1])
         points.append(x)
         weights.append(w_ref * np.linalg.norm(dx_dxi, axis=1))
-    return InterfaceOperator(trip.to_csr(), np.concatenate(weights), np.concatenate(points))
+    return InterfaceOperator(trip.to_csr(), _concatenate(weights, 0), _concatenate(points, 2),
+                             exchange if exchange.ranks.parallel else None)
+
+
+def _concatenate(parts: list, width: int) -> np.ndarray:
+    """The parts joined (a rank may own no Γ facet)."""
+    return np.concatenate(parts) if parts else np.zeros((0, width) if width else 0)
 
 
 class _Constraints:
     """The prescribed unknowns: fields held at zero off their body, supports
-    (value × the support's factor) and pins (zero)."""
+    (value × the support's factor) and pins (zero), as this rank's owned
+    unknowns.  Under mpirun a rank may not see every cell or facet around a
+    dof it owns, so each finding is marked on the local dofs (owned and
+    ghosts) and summed onto their owners (:class:`GhostExchange`) before
+    it is read."""
 
-    def __init__(self, scene: Scene, fm: FittedMesh, V):
-        self.scene, self.fm, self.V = scene, fm, V
+    def __init__(self, scene: Scene, fm: FittedMesh, V, exchange: "GhostExchange"):
+        self.scene, self.fm, self.V, self.exchange = scene, fm, V, exchange
         tdim = fm.mesh.topology.dim
         ncells = fm.mesh.topology.index_map(tdim).size_local + fm.mesh.topology.index_map(tdim).num_ghosts
         every = np.arange(ncells, dtype=np.int32)
         self.active, self.fixed, self.values, self.owner = [], [], [], []
         for b, name in enumerate(BODIES):
             Vb, _ = V.sub(b).collapse()
-            allb = fem.locate_dofs_topological((V.sub(b), Vb), tdim, every)[0]
-            mine = fem.locate_dofs_topological((V.sub(b), Vb), tdim, fm.cells_of(name))[0]
+            allb = self._owned(fem.locate_dofs_topological((V.sub(b), Vb), tdim, every)[0])
+            mine = self._owned(fem.locate_dofs_topological((V.sub(b), Vb), tdim, fm.cells_of(name))[0])
             self.active.append(mine)
             self._add(allb[~np.isin(allb, mine)], 0.0, -1)
         for i, sup in enumerate(scene.supports):
@@ -182,8 +193,14 @@ class _Constraints:
             for j in _components(pin.fix):
                 found = self._fix(b, j, fem.locate_dofs_geometrical,
                                   (lambda x, p=p: np.hypot(x[0] - p[0], x[1] - p[1]) <= near,), 0.0, -1)
-                if found == 0:
+                if exchange.ranks.sum(found) == 0:
                     raise DiscretisationError(f"pins[{i}]: no mesh node at {list(pin.point)}")
+
+    def _owned(self, local_dofs) -> np.ndarray:
+        """The owned dofs that some rank found among its local ``local_dofs``."""
+        flags = np.zeros(self.exchange.local_size)
+        flags[np.asarray(local_dofs, np.int64)] = 1.0
+        return np.flatnonzero(self.exchange.reverse(flags) > 0)
 
     def _add(self, dofs, value: float, owner: int) -> None:
         self.fixed.append(np.asarray(dofs, np.int64))
@@ -192,14 +209,15 @@ class _Constraints:
 
     def _fix(self, b: int, j: int, locate, args, value: float, owner: int) -> int:
         Vbj = self.V.sub(b).sub(j).collapse()[0]
-        dofs = locate((self.V.sub(b).sub(j), Vbj), *args)[0]
+        dofs = self._owned(locate((self.V.sub(b).sub(j), Vbj), *args)[0])
         keep = dofs[np.isin(dofs, self.active[b])]
         self._add(keep, value, owner)
         return len(keep)
 
     @property
     def num_active(self) -> int:
-        return sum(len(a) for a in self.active)
+        """The unknowns that take part, over every rank."""
+        return self.exchange.ranks.sum(sum(len(a) for a in self.active))
 
     def constraints(self) -> Constraints:
         """The prescribed unknowns as the one constraint type."""
@@ -237,7 +255,8 @@ def build(scene: Scene, options: FE, resolution: Resolution, timings: Timings) -
     with timings.measure("assembly"):
         el = ufl.VectorElement("Lagrange", fm.mesh.ufl_cell(), degree)
         V = fem.FunctionSpace(fm.mesh, ufl.MixedElement([el, el]))
-        cons = _Constraints(scene, fm, V)
+        exchange = GhostExchange(V.dofmap.index_map, V.dofmap.index_map_bs, fm.mesh.comm)
+        cons = _Constraints(scene, fm, V, exchange)
         K = fem_petsc.assemble_matrix(fem.form(bilinear_form(scene, fm, V), jit_params=jit))
         K.assemble()
         loads = []
@@ -246,13 +265,14 @@ def build(scene: Scene, options: FE, resolution: Resolution, timings: Timings) -
             vec.ghostUpdate(addv=PETSc.InsertMode.ADD, mode=PETSc.ScatterMode.REVERSE)
             loads.append(vec.getArray().copy())
             vec.destroy()
-        system = PETScSystem(K, loads, cons.constraints(), interface_operator(scene, fm, V, degree),
-                             petsc_options=options.petsc_options, estimate_condition=options.estimate_condition,
-                             what=f"scene {scene.name} (fe)")
+        system = PETScSystem(K, loads, cons.constraints(), interface_operator(scene, fm, V, degree, exchange),
+                             comm=fm.mesh.comm, petsc_options=options.petsc_options,
+                             estimate_condition=options.estimate_condition, what=f"scene {scene.name} (fe)")
 
     def fields(x):
         uh = fem.Function(V)
-        uh.x.array[:] = x
+        uh.x.array[:len(x)] = x
+        uh.x.scatter_forward()
         disps, stresses = _stress_functions(scene, fm, uh, degree)
         return BodyFields(BodyCellLocator(fm.mesh, [fm.cells_of(b) for b in BODIES]), disps, stresses)
 

@@ -9,13 +9,18 @@ which assumes no symmetry), and the interface tangent ``K_Γ`` (scipy CSR,
 from the one assembly sink) is added into a copy of ``K`` whose pattern
 already holds it (every cell couples all its unknowns).  That copy, its
 free block and the factorisation are allocated once and refilled
-(:class:`contactcore.linear_solver.Tangent`).  Serial only.
+(:class:`contactcore.linear_solver.Tangent`).  Under mpirun every rank
+holds its owned rows: vectors are owned values, ``K`` and the solve are
+PETSc's distributed ones, and Newton's decisions are reduced over the
+ranks (:attr:`collective`).
 """
 from __future__ import annotations
 
 import numpy as np
 
-from contactcore import DiscretisationError
+from dolfinx import la
+
+from contactcore.collective import Collective
 from contactcore.constraints import Constraints
 from contactcore.newton import InterfaceOperator
 
@@ -24,14 +29,13 @@ from contactcore import linear_solver
 
 class PETScSystem:
     """``K`` (PETSc), loads, the prescribed unknowns (``constraints`` on
-    dofs) and Γ (see module doc)."""
+    dofs) and Γ (see module doc), distributed over ``comm`` (the mesh's)."""
 
     def __init__(self, K, loads: list[np.ndarray], constraints: Constraints, interface: InterfaceOperator, *,
-                 petsc_options=None, estimate_condition: bool = False, what: str = "linear system"):
-        if K.getComm().getSize() > 1:
-            raise DiscretisationError("the increment and Newton driver runs in serial only (no mpirun)")
+                 comm=None, petsc_options=None, estimate_condition: bool = False, what: str = "linear system"):
         self.K, self.loads, self.constraints = K, loads, constraints
-        self.size = K.getSize()[0]
+        self.collective = Collective(comm)  # the mesh's (mpi4py): it outlives K
+        self.size = K.getLocalSize()[0]  # this rank's owned rows (all of them in serial)
         self.fixed = constraints.dofs
         self.free = np.setdiff1d(np.arange(self.size), self.fixed)
         self.interface = interface
@@ -58,3 +62,27 @@ class PETScSystem:
 
     def close(self) -> None:
         self._tangent.close()
+
+
+class GhostExchange:
+    """dolfinx's ghost updates of a space's unknowns (its index map and
+    block size, on ``comm``): ``forward`` owned values -> local values (owned, then the
+    ghosts this rank sees), ``reverse`` local contributions -> their sums on
+    the owners (owned values).  ``ranks`` reduces over the map's
+    communicator."""
+
+    def __init__(self, index_map, bs: int, comm):
+        self.vector = la.vector(index_map, bs)
+        self.owned_size = index_map.size_local * bs
+        self.local_size = (index_map.size_local + index_map.num_ghosts) * bs
+        self.ranks = Collective(comm)
+
+    def forward(self, owned: np.ndarray) -> np.ndarray:
+        self.vector.array[:self.owned_size] = owned
+        self.vector.scatter_forward()
+        return self.vector.array.copy()
+
+    def reverse(self, local: np.ndarray) -> np.ndarray:
+        self.vector.array[:] = local
+        self.vector.scatter_reverse(la.ScatterMode.add)
+        return self.vector.array[:self.owned_size].copy()

@@ -12,6 +12,7 @@ from __future__ import annotations
 import numpy as np
 from dolfinx import geometry
 from dolfinx.mesh import compute_midpoints
+from mpi4py import MPI
 from scipy.spatial import cKDTree
 
 #: Nearest cell midpoints examined before the exact distance decides.
@@ -33,12 +34,22 @@ class BodyCellLocator:
         for b, cells in enumerate(body_cells):
             self.holds[b, cells[cells < ncells]] = True
         self.tree = geometry.BoundingBoxTree(msh, tdim)
+        self.all_midpoints = compute_midpoints(msh, tdim, np.arange(ncells, dtype=np.int32))[:, :2]
         self.body_cells = [c[c < ncells] for c in body_cells]
         self.midpoints = [compute_midpoints(msh, tdim, c)[:, :2] for c in self.body_cells]
         self.kdtrees = [cKDTree(m) for m in self.midpoints]
 
     def cells(self, points: np.ndarray, bodies: np.ndarray) -> np.ndarray:
-        """A cell of body ``bodies[i]`` holding (or nearest to) ``points[i]``."""
+        """A cell of body ``bodies[i]`` holding (or nearest to) ``points[i]``;
+        of several cells holding it (a point on a cell edge, where a stress
+        jumps), the one whose midpoint comes first in x, then y: a choice
+        that no numbering or partition of the mesh changes."""
+        return self.cells_and_distances(points, bodies)[0]
+
+    def cells_and_distances(self, points: np.ndarray, bodies: np.ndarray):
+        """:meth:`cells` among this rank's owned cells, the squared distance
+        from each point to its cell (0 inside it; inf, with cell −1, where
+        this rank owns no cell of that body) and the cell's midpoint."""
         p3 = np.zeros((len(points), 3))
         p3[:, :2] = points
         colliding = geometry.compute_colliding_cells(self.msh, geometry.compute_collisions(self.tree, p3), p3)
@@ -47,18 +58,25 @@ class BodyCellLocator:
         hit = colliding.array
         ok = hit < self.holds.shape[1]
         ok[ok] = self.holds[bodies[owner[ok]], hit[ok]]
-        first_point, first = np.unique(owner[ok], return_index=True)
-        out[first_point] = hit[ok][first]
+        owner, hit = owner[ok], hit[ok]
+        mid = self.all_midpoints[hit]
+        order = np.lexsort((mid[:, 1], mid[:, 0], owner))  # per point, the first midpoint in x, then y
+        first_point, first = np.unique(owner[order], return_index=True)
+        out[first_point] = hit[order][first]
+        dist = np.where(out >= 0, 0.0, np.inf)
         for b in np.unique(bodies[out < 0]):
             missing = np.flatnonzero((out < 0) & (bodies == b))
             k = min(_NEAREST_CANDIDATES, len(self.body_cells[b]))
+            if k == 0:
+                continue
             _, idx = self.kdtrees[b].query(points[missing], k=k)
             idx = idx.reshape(len(missing), k)
             for j, i in enumerate(missing):
                 cand = self.body_cells[b][idx[j]]
                 d2 = geometry.squared_distance(self.msh, 2, cand, np.tile(p3[i], (len(cand), 1)))
-                out[i] = cand[int(np.argmin(d2))]
-        return out
+                out[i], dist[i] = cand[int(np.argmin(d2))], float(np.min(d2))
+        key = np.where((out >= 0)[:, None], self.all_midpoints[np.maximum(out, 0)], np.inf)
+        return out, dist, key
 
 
 class BodyFields:
@@ -72,21 +90,26 @@ class BodyFields:
         self.locator, self.displacements, self.stresses = locator, displacements, stresses
 
     def _eval(self, functions, points, bodies) -> np.ndarray:
+        """Under mpirun a collective call: every rank evaluates the points in
+        its owned cells, and each point takes the value of the cell the
+        locator's rule picks among every rank's (holding it, else nearest;
+        the first midpoint on a tie)."""
         points = np.asarray(points, float)[:, :2]
         bodies = np.asarray(bodies, int)
-        cells = self.locator.cells(points, bodies)
+        cells, dist, key = self.locator.cells_and_distances(points, bodies)
+        comm = self.locator.msh.comm
+        mine = cells >= 0
+        if comm.size > 1:  # the locator's rule over every rank's candidates; only the winner evaluates
+            dists, keys = np.array(comm.allgather(dist)), np.array(comm.allgather(key))
+            mine &= np.lexsort((keys[..., 1], keys[..., 0], dists), axis=0)[0] == comm.rank
         p3 = np.zeros((len(points), 3))
         p3[:, :2] = points
-        out = None
+        out = np.zeros((len(points), int(np.prod(functions[0].function_space.element.value_shape))))
         for b, fn in enumerate(functions):
-            sel = np.flatnonzero(bodies == b)
-            if len(sel) == 0:
-                continue
-            vals = fn.eval(p3[sel], cells[sel]).reshape(len(sel), -1)
-            if out is None:
-                out = np.zeros((len(points), vals.shape[1]))
-            out[sel] = vals
-        return out if out is not None else np.zeros((0, 0))
+            sel = np.flatnonzero((bodies == b) & mine)
+            if len(sel):
+                out[sel] = fn.eval(p3[sel], cells[sel]).reshape(len(sel), -1)
+        return out if comm.size == 1 else comm.allreduce(out, op=MPI.SUM)
 
     def displacement(self, points, bodies) -> np.ndarray:
         return self._eval(self.displacements, points, bodies)

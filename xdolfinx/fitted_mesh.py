@@ -29,7 +29,8 @@ class FittedMesh:
 
     @property
     def num_cells(self) -> int:
-        return self.mesh.topology.index_map(2).size_local
+        """Cells over every rank."""
+        return self.mesh.topology.index_map(2).size_global
 
 
 def fitted_mesh(scene: Scene, h: float, *, order: int = 1, grading: meshes.Grading | None = None,

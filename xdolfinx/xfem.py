@@ -567,6 +567,9 @@ def build(scene: Scene, options: XFEM, resolution: Resolution, timings: Timings)
     ``build``; :class:`xdolfinx.options.XFEM` for the options)."""
     h, degree = resolution.h, options.degree
     comm = MPI.COMM_WORLD if options.comm is None else options.comm
+    if comm.size > 1:
+        raise DiscretisationError("xfem under mpirun: its enrichment and cut cells are built per process, not yet "
+                                  "across ranks; run xfem without mpirun (fe runs distributed)")
     with timings.measure("mesh"):
         msh = background_mesh(scene, h, options.cell, resolution.counts, comm, order=degree)
         space = EnrichedFunctionSpace(msh, degree, scene, GAUSS_POINTS[degree] if options.gauss is None
@@ -588,8 +591,8 @@ def build(scene: Scene, options: XFEM, resolution: Resolution, timings: Timings)
                                           [owners, np.full(len(unused), -1)])
         system = PETScSystem(A, [_load_vector(space, L, load) for L, load in zip(loads, scene.loads)], constraints,
                              interface_operator(space),
-                             petsc_options=options.petsc_options, estimate_condition=options.estimate_condition,
-                             what=f"scene {scene.name} (xfem)")
+                             comm=msh.comm, petsc_options=options.petsc_options,
+                             estimate_condition=options.estimate_condition, what=f"scene {scene.name} (xfem)")
     return Built(system, lambda x: XFEMFields(space, x.reshape(-1, 4)), 4 * nblocks - len(unused), h=h,
                  record={"h": h, "cell": background_cell(scene, options.cell), "degree": degree,
                          "cells": int(space.num_cells), "cut_cells": len(space.regions),
