@@ -312,12 +312,14 @@ class EnrichedFunctionSpace:
         incidence of :meth:`cell_blocks`; local numbering = global (serial),
         so dolfinx's assembler (V's dofmap) and the band kernels both write
         into it with ``setValuesBlockedLocal``."""
+        comm = self.msh.comm
+        if comm.size > 1:
+            raise DiscretisationError("xfem: the enriched numbering is serial only (no mpirun)")
         blocks = self.cell_blocks(np.arange(self.num_cells))
         cells, k = np.nonzero(blocks >= 0)
         C = sp.csr_matrix((np.ones(len(cells)), (cells, blocks[cells, k])), shape=(self.num_cells, self.num_blocks))
         S = sp.kron((C.T @ C).tocsr(), np.ones((2, 2)), format="csr")
         S.sort_indices()
-        comm = self.msh.comm
         A = PETSc.Mat().createAIJ(2 * self.num_blocks, bsize=2, comm=comm,
                                   csr=(S.indptr.astype(PETSc.IntType), S.indices.astype(PETSc.IntType)))
         lgmap = PETSc.LGMap().create(np.arange(self.num_blocks, dtype=PETSc.IntType), bsize=2, comm=comm)
