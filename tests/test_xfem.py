@@ -38,8 +38,7 @@ def test_cell_kernels_equal_dolfinx_without_enrichment(cell, degree):
     space.enriched[:] = False
     space.band = np.arange(space.num_cells)
     D = np.array([voigt_matrix(m.E, m.nu, scene.plane) for m in scene.materials.values()])
-    a_all = xfem._forms(space, *xfem._tags(space))[2]
-    ours = fem_petsc.create_matrix(a_all)
+    ours = space.create_matrix()
     for dofs, K in xfem.band_kernels(space, D):
         ours.setValuesBlockedLocal(dofs.astype(PETSc.IntType), dofs.astype(PETSc.IntType), np.ascontiguousarray(K),
                                    addv=PETSc.InsertMode.ADD_VALUES)

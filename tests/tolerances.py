@@ -239,3 +239,14 @@ XFEM_ONE_SIDED = 1e-2
 #: max |K|: the same sums in another order, so round-off (measured 2e-15 to
 #: 7e-15 on scenes A, B, C, both bases, both support shapes).
 EFGM_CELL_ASSEMBLY = 1e-12
+
+# --------------------------------------------------------------------------
+# XFEM enriched unknowns only at enriched nodes (issue 24 item 3;
+# tests/test_xfem_dofs.py)
+# --------------------------------------------------------------------------
+
+#: |G x| of the interface operator against the fields' |u₊ − u₋| at Γ's
+#: points evaluated in their own cell, relative to max |G x|: the same sum
+#: 2 Σ N_J a_J read through two numberings, so round-off (measured ≤ 8.5e-16
+#: on scenes A, B, C).  A wrong block in either numbering gives O(1).
+XFEM_NUMBERING = 1e-12

@@ -10,15 +10,17 @@ the shifted Heaviside enrichment of Eq. (8), ``H = +1`` on the + side
 across Γ is ``[[u]] = 2 Σ_J N_J a_J`` ("2N̄").
 
 Layout, after dolfinx_mpc's habit of extending dolfinx rather than
-replacing it: one dolfinx space of blocks ``[u_x, u_y, a_x, a_y]`` per node
-(a ``VectorFunctionSpace`` of dimension 4), so that dolfinx owns the
-numbering, ownership and ghosts.  :class:`EnrichedFunctionSpace` decorates
-it: it owns which nodes are enriched, the cut-cell quadrature and the cell
-kernels of the *band* (cells holding an enriched node).  Away from the band
-dolfinx assembles the standard elasticity from UFL; band cells are added by
-our kernels (``setValuesBlockedLocal``) into the same PETSc matrix, whose
-pattern covers every cell.  The unused enriched components are left out of
-the solve, as the conforming reference leaves out its held dofs.
+replacing it (its MultiPointConstraint owns its own dof maps): the standard
+part ``u`` is dolfinx's vector space V (block size 2, one block per node),
+numbered by dolfinx; :class:`EnrichedFunctionSpace` decorates it and owns
+the enriched part: which nodes are enriched and the numbering of their
+blocks ``a`` (after V's blocks, over the enriched nodes only), the cut-cell
+quadrature and the cell kernels of the *band* (cells holding an enriched
+node).  One PETSc matrix of block size 2 covers both; its preallocation is
+the cells' couplings (every cell couples its nodes' blocks, a band cell
+also their enrichments).  Away from the band dolfinx assembles the standard
+elasticity from UFL into it; band cells are added by our kernels
+(``setValuesBlockedLocal``).  Serial only, like the Newton driver.
 
 Cut cells are split along the exact Γ (:mod:`contactcore.cutcell`), each
 piece integrated with its body's material; the interface law is integrated
@@ -31,6 +33,7 @@ import functools
 
 import basix
 import numpy as np
+import scipy.sparse as sp
 import ufl
 from dolfinx import fem, mesh
 from dolfinx.fem import petsc as fem_petsc
@@ -122,13 +125,18 @@ def cell_counts(scene: Scene, h: float) -> list[int]:
 
 
 class EnrichedFunctionSpace:
-    """dolfinx's space of blocks [u_x, u_y, a_x, a_y], decorated with the
+    """dolfinx's vector space V of the standard part, decorated with the
     Heaviside enrichment of a level set: which nodes are enriched, the
-    quadrature of each band cell, and the shape functions there."""
+    numbering of their enriched blocks, the quadrature of each band cell,
+    and the shape functions there.
+
+    Unknowns (unrolled, block size 2): ``2·node + j`` for u_j of a node (V's
+    own numbering), ``2·(nodes + e) + j`` for a_j of the e-th enriched node
+    (in node order)."""
 
     def __init__(self, msh, degree: int, scene: Scene, gauss: int):
         self.msh, self.scene, self.degree, self.gauss = msh, scene, degree, gauss
-        self.V = fem.VectorFunctionSpace(msh, ("Lagrange", degree), dim=4)
+        self.V = fem.VectorFunctionSpace(msh, ("Lagrange", degree), dim=2)
         name = msh.topology.cell_name()
         self.element = basix.create_element(basix.ElementFamily.P, basix.cell.string_to_type(name), degree,
                                             basix.LagrangeVariant.gll_warped)
@@ -259,6 +267,52 @@ class EnrichedFunctionSpace:
     def num_enriched(self) -> int:
         return int(self.enriched.sum())
 
+    @property
+    def num_blocks(self) -> int:
+        """Blocks (pairs of unknowns): every node's u, the enriched nodes' a."""
+        return len(self.enriched) + self.num_enriched
+
+    @functools.cached_property
+    def enriched_blocks(self) -> np.ndarray:
+        """(nodes,): the block of each node's a, ``nodes + e`` for the e-th
+        enriched node, −1 where the node is not enriched.  Fixed at first use."""
+        out = np.full(len(self.enriched), -1, dtype=np.int64)
+        out[self.enriched] = len(self.enriched) + np.arange(self.num_enriched)
+        return out
+
+    def cell_blocks(self, cells) -> np.ndarray:
+        """(..., 2n): the blocks of cells in the kernels' layout, per node its
+        u then its a (−1 where not enriched: PETSc skips negative indices)."""
+        dofs = self.cell_dofs[cells]
+        return np.stack([dofs, self.enriched_blocks[dofs]], axis=-1).reshape(dofs.shape[:-1] + (-1,))
+
+    def node_values(self, x: np.ndarray) -> np.ndarray:
+        """(nodes, 4): ``[u_x, u_y, a_x, a_y]`` of each node from the unknowns
+        ``x`` (a = 0 where the node is not enriched)."""
+        n = len(self.enriched)
+        out = np.zeros((n, 4))
+        out[:, :2] = x[:2 * n].reshape(n, 2)
+        out[self.enriched, 2:] = x[2 * n:].reshape(-1, 2)
+        return out
+
+    def create_matrix(self) -> PETSc.Mat:
+        """An AIJ matrix of block size 2 over :attr:`num_blocks`, with room
+        for exactly the cells' couplings ``P = CᵀC``, C the (cells × blocks)
+        incidence of :meth:`cell_blocks`; local numbering = global (serial),
+        so dolfinx's assembler (V's dofmap) and the band kernels both write
+        into it with ``setValuesBlockedLocal``."""
+        comm = self.msh.comm  # one process: build() refuses mpirun
+        blocks = self.cell_blocks(np.arange(self.num_cells))
+        cells, k = np.nonzero(blocks >= 0)
+        C = sp.csr_matrix((np.ones(len(cells)), (cells, blocks[cells, k])), shape=(self.num_cells, self.num_blocks))
+        S = sp.kron((C.T @ C).tocsr(), np.ones((2, 2)), format="csr")
+        S.sort_indices()
+        A = PETSc.Mat().createAIJ(2 * self.num_blocks, bsize=2, comm=comm,
+                                  csr=(S.indptr.astype(PETSc.IntType), S.indices.astype(PETSc.IntType)))
+        lgmap = PETSc.LGMap().create(np.arange(self.num_blocks, dtype=PETSc.IntType), bsize=2, comm=comm)
+        A.setLGMap(lgmap, lgmap)
+        return A
+
     def tabulate(self, cell: int, points: np.ndarray):
         """Values (P, n) and physical gradients (P, n, 2) of the cell's
         basis functions at physical points: ``∇N = ∇_X N · J⁻¹`` with
@@ -326,17 +380,17 @@ def _stiffness(B: np.ndarray, w: np.ndarray, D: np.ndarray) -> np.ndarray:
 
 
 def band_kernels(space: EnrichedFunctionSpace, D: np.ndarray):
-    """Element matrices (4n × 4n) of the band cells: the bulk of each region
-    with its body's D (the interface is :func:`interface_operator`'s).
-    Cells that Γ does not cut share the reference cell's rule (mapped
-    affinely) and are computed together."""
+    """Blocks (2n, :meth:`EnrichedFunctionSpace.cell_blocks`) and element
+    matrices (4n × 4n) of the band cells: the bulk of each region with its
+    body's D (the interface is :func:`interface_operator`'s).  Cells that Γ
+    does not cut share the reference cell's rule (mapped affinely) and are
+    computed together."""
     whole = np.array([c for c in space.band if c not in space.regions], dtype=np.int64)
     for c in (c for c in space.band if c in space.regions):
-        dofs = space.cell_dofs[c]
-        K = np.zeros((4 * len(dofs), 4 * len(dofs)))
+        K = np.zeros((4 * space.cell_dofs.shape[1],) * 2)
         for side, _, w, _, dN in space.regions[c]:
             K += _stiffness(_strain_matrix(dN, space.coefficients(c, side)), w, D[index_of_sign(side)])
-        yield dofs, K
+        yield space.cell_blocks(c), K
     if len(whole):
         X, w = space.reference_rule
         dN_ref = np.moveaxis(space.element.tabulate(1, X)[1:3, :, :, 0], 0, -1)    # (P, n, 2)
@@ -345,25 +399,27 @@ def band_kernels(space: EnrichedFunctionSpace, D: np.ndarray):
         side = space.cell_side[whole]
         coeff = np.where(space.enriched[dofs], side[:, None] - space.node_side[dofs], 0)[:, None, :]
         weights = w[None, :] * np.abs(np.linalg.det(space.jacobian[whole]))[:, None]
-        yield from zip(dofs, _stiffness(_strain_matrix(dN, coeff), weights, D[index_of_sign(side)]))
+        yield from zip(space.cell_blocks(whole), _stiffness(_strain_matrix(dN, coeff), weights, D[index_of_sign(side)]))
 
 
 def interface_operator(space: EnrichedFunctionSpace) -> InterfaceOperator:
     """Γ's quadrature points in the band cells, on the exact Γ with the level
     set's normal, and ``G``: ``[[u]] = 2 Σ_J N_J a_J`` in the frame (n, t),
     rows ``g_N, g_T`` of each point, columns the unrolled unknowns
-    ``4·node + 2 + j`` of a_j."""
-    trip = Triplets((0, 4 * len(space.node_side)))
+    ``2·block + j`` of a_j of the cell's enriched nodes."""
+    trip = Triplets((0, 2 * space.num_blocks))
     points, weights = [], []
     m = 0
     for c in (c for c in space.band if c in space.gamma_rules):
         pts, w, normals = space.gamma_rules[c]
         dofs = space.cell_dofs[c]
-        N = space.tabulate(c, pts)[0] * space.enriched[dofs]
+        keep = space.enriched[dofs]
+        N = space.tabulate(c, pts)[0][:, keep]
+        blocks = space.enriched_blocks[dofs[keep]]
         frame = np.stack([normals, tangent_of(normals)], axis=1)  # (P, 2, 2): rows n, t
         rows = 2 * (m + np.arange(len(w)))[:, None, None] + np.arange(2)[None, :, None]
         for j in range(2):
-            trip.add(rows, 4 * dofs[None, None, :] + 2 + j, 2 * N[:, None, :] * frame[:, :, j:j + 1])
+            trip.add(rows, 2 * blocks[None, None, :] + j, 2 * N[:, None, :] * frame[:, :, j:j + 1])
         points.append(pts)
         weights.append(w)
         m += len(w)
@@ -372,7 +428,7 @@ def interface_operator(space: EnrichedFunctionSpace) -> InterfaceOperator:
 
 
 def band_loads(space: EnrichedFunctionSpace, load):
-    """Load vectors (4n) of one load on the band cells: a body force on each
+    """Blocks (2n) and load vectors (4n) of one load on the band cells: a body force on each
     region of its body, a traction or pressure on the cell's edges along
     its boundary, split where Γ crosses them (the enriched functions jump
     there)."""
@@ -389,7 +445,7 @@ def _band_body_loads(space: EnrichedFunctionSpace, load):
         for _, pts, w, N in (part for part in space.cell_values(c) if part[0] == side):
             force = np.column_stack(body_force(space.scene, load, pts[:, 0], pts[:, 1]))
             f += _vector_load(N, space.coefficients(c, side), w[:, None] * force)
-        yield space.cell_dofs[c], f
+        yield space.cell_blocks(c), f
 
 
 def _band_edge_loads(space: EnrichedFunctionSpace, load):
@@ -416,7 +472,7 @@ def _band_edge_loads(space: EnrichedFunctionSpace, load):
                 side = 1 if scene.interface.phi([(pts[0] + pts[-1]) / 2])[0] >= 0 else -1
                 N, _, coeff = space.functions(c, pts, side)
                 f += _vector_load(N, coeff, w[:, None] * t[None, :])
-        yield space.cell_dofs[c], f
+        yield space.cell_blocks(c), f
 
 
 def _vector_load(N: np.ndarray, coeff: np.ndarray, wt: np.ndarray) -> np.ndarray:
@@ -456,49 +512,47 @@ def _tags(space: EnrichedFunctionSpace):
 
 def _forms(space: EnrichedFunctionSpace, cell_tags, facet_tags):
     """Bulk stiffness and one linear form per load for the cells outside the
-    band (UFL), and the pattern form that gives the matrix room for every
-    cell's 4n × 4n block."""
+    band (UFL), on the standard part V."""
     import meshes
 
     scene, msh, V = space.scene, space.msh, space.V
     u, v = ufl.TrialFunction(V), ufl.TestFunction(V)
-    us, vs = ufl.as_vector([u[0], u[1]]), ufl.as_vector([v[0], v[1]])
     dx = ufl.Measure("dx", domain=msh, subdomain_data=cell_tags)
     ds = ufl.Measure("ds", domain=msh, subdomain_data=facet_tags)
-    a = sum(ufl.inner(sigma(us, scene.materials[b].E, scene.materials[b].nu, scene.plane),
-                      ufl.sym(ufl.grad(vs))) * dx(_TAG_UNCUT[b]) for b in BODIES)
+    a = sum(ufl.inner(sigma(u, scene.materials[b].E, scene.materials[b].nu, scene.plane),
+                      ufl.sym(ufl.grad(v))) * dx(_TAG_UNCUT[b]) for b in BODIES)
     x = ufl.SpatialCoordinate(msh)
     forms = []
     for load in scene.loads:
-        L = ufl.inner(ufl.as_vector([0.0, 0.0]), vs) * dx
+        L = ufl.inner(ufl.as_vector([0.0, 0.0]), v) * dx
         if isinstance(load, Traction):
-            L += ufl.dot(ufl.as_vector(list(load.value)), vs) * ds(meshes.BOUNDARY[load.boundary])
+            L += ufl.dot(ufl.as_vector(list(load.value)), v) * ds(meshes.BOUNDARY[load.boundary])
         elif isinstance(load, Pressure):
-            L += -load.value * ufl.dot(ufl.FacetNormal(msh), vs) * ds(meshes.BOUNDARY[load.boundary])
+            L += -load.value * ufl.dot(ufl.FacetNormal(msh), v) * ds(meshes.BOUNDARY[load.boundary])
         else:
-            L += ufl.dot(ufl.as_vector(body_force(scene, load, x[0], x[1])), vs) * dx(_TAG_UNCUT[load.body])
+            L += ufl.dot(ufl.as_vector(body_force(scene, load, x[0], x[1])), v) * dx(_TAG_UNCUT[load.body])
         forms.append(fem.form(L))
-    pattern = ufl.inner(u, v) * dx
-    return fem.form(a), forms, fem.form(pattern)
+    return fem.form(a), forms
 
 
 def _load_vector(space: EnrichedFunctionSpace, L, load) -> np.ndarray:
-    """One load's vector: UFL outside the band, our kernels inside."""
-    b = fem_petsc.create_vector(L)
-    fem_petsc.assemble_vector(b, L)
-    for dofs, f in band_loads(space, load):
-        b.setValuesBlockedLocal(dofs.astype(PETSc.IntType), f, addv=PETSc.InsertMode.ADD_VALUES)
-    b.assemble()
-    out = b.getArray().copy()
+    """One load's vector: UFL outside the band (V's part), our kernels inside."""
+    b = fem_petsc.assemble_vector(L)
+    out = np.zeros(2 * space.num_blocks)
+    out[:b.getLocalSize()] = b.getArray()
     b.destroy()
+    for blocks, f in band_loads(space, load):
+        index = (2 * blocks[:, None] + np.arange(2)).ravel()
+        keep = np.repeat(blocks >= 0, 2)
+        np.add.at(out, index[keep], f[keep])
     return out
 
 
 class XFEMFields:
     """Displacement and stress of either body at arbitrary points."""
 
-    def __init__(self, space: EnrichedFunctionSpace, blocks: np.ndarray):
-        self.space, self.blocks = space, blocks
+    def __init__(self, space: EnrichedFunctionSpace, x: np.ndarray):
+        self.space, self.blocks = space, space.node_values(x)
         scene = space.scene
         self.D = scene.voigt_matrices()
         self.locator = BodyCellLocator(space.msh, [space.cells_resolving(side) for side in (-1, 1)])
@@ -540,10 +594,10 @@ def _support_rows(space: EnrichedFunctionSpace) -> tuple[np.ndarray, np.ndarray,
         blocks = fem.locate_dofs_topological(V, 1, facets)
         # an enriched node where Γ meets the support: u_J + (H − H_J) a_J
         # must take the value on both sides, so a_J = 0 as well
-        enriched = blocks[space.enriched[blocks]]
+        enriched = space.enriched_blocks[blocks[space.enriched[blocks]]]
         for comp in sup.fix:
             j = "xy".index(comp)
-            rows += [4 * blocks + j, 4 * enriched + 2 + j]
+            rows += [2 * blocks + j, 2 * enriched + j]
             vals += [np.full(len(blocks), sup.value[j]), np.zeros(len(enriched))]
             owners += [np.full(len(blocks), i), np.full(len(enriched), -1)]
     coords = V.tabulate_dof_coordinates()[:, :2]
@@ -553,7 +607,7 @@ def _support_rows(space: EnrichedFunctionSpace) -> tuple[np.ndarray, np.ndarray,
         if d[block] > tol_L:
             raise DiscretisationError(f"pins[{i}]: xfem needs pins at mesh nodes; the nearest is {d[block]:.3g} away")
         for comp in pin.fix:
-            rows.append(np.array([4 * block + "xy".index(comp)]))
+            rows.append(np.array([2 * block + "xy".index(comp)]))
             vals.append(np.zeros(1))
             owners.append(np.full(1, -1))
     if not rows:
@@ -568,32 +622,29 @@ def build(scene: Scene, options: XFEM, resolution: Resolution, timings: Timings)
     h, degree = resolution.h, options.degree
     comm = MPI.COMM_WORLD if options.comm is None else options.comm
     if comm.size > 1:
-        raise DiscretisationError("xfem under mpirun: its enrichment and cut cells are built per process, not yet "
-                                  "across ranks; run xfem without mpirun (fe runs distributed)")
+        raise DiscretisationError("xfem under mpirun: its enriched unknowns are numbered after the standard ones, "
+                                  "which PETSc's row ownership does not allow across ranks; run xfem without mpirun "
+                                  "(fe runs distributed)")
     with timings.measure("mesh"):
         msh = background_mesh(scene, h, options.cell, resolution.counts, comm, order=degree)
         space = EnrichedFunctionSpace(msh, degree, scene, GAUSS_POINTS[degree] if options.gauss is None
                                       else options.gauss)
     with timings.measure("assembly"):
         cell_tags, facet_tags = _tags(space)
-        a, loads, pattern = _forms(space, cell_tags, facet_tags)
-        A = fem_petsc.create_matrix(pattern)
+        a, loads = _forms(space, cell_tags, facet_tags)
+        A = space.create_matrix()
         fem_petsc.assemble_matrix(A, a)
         D = scene.voigt_matrices()
-        for dofs, K in band_kernels(space, D):
-            A.setValuesBlockedLocal(dofs.astype(PETSc.IntType), dofs.astype(PETSc.IntType), np.ascontiguousarray(K),
+        for blocks, K in band_kernels(space, D):
+            A.setValuesBlockedLocal(blocks.astype(PETSc.IntType), blocks.astype(PETSc.IntType), np.ascontiguousarray(K),
                                     addv=PETSc.InsertMode.ADD_VALUES)
         A.assemble()
         rows, values, owners = _support_rows(space)
-        nblocks = space.V.dofmap.index_map.size_local
-        unused = (4 * np.flatnonzero(~space.enriched[:nblocks])[:, None] + np.arange(2, 4)[None]).ravel()
-        constraints = Constraints.on_dofs([rows, unused], [values, np.zeros(len(unused))],
-                                          [owners, np.full(len(unused), -1)])
-        system = PETScSystem(A, [_load_vector(space, L, load) for L, load in zip(loads, scene.loads)], constraints,
-                             interface_operator(space),
+        system = PETScSystem(A, [_load_vector(space, L, load) for L, load in zip(loads, scene.loads)],
+                             Constraints.on_dofs([rows], [values], [owners]), interface_operator(space),
                              comm=msh.comm, petsc_options=options.petsc_options,
                              estimate_condition=options.estimate_condition, what=f"scene {scene.name} (xfem)")
-    return Built(system, lambda x: XFEMFields(space, x.reshape(-1, 4)), 4 * nblocks - len(unused), h=h,
+    return Built(system, lambda x: XFEMFields(space, x), 2 * space.num_blocks, h=h,
                  record={"h": h, "cell": background_cell(scene, options.cell), "degree": degree,
                          "cells": int(space.num_cells), "cut_cells": len(space.regions),
                          "enriched_nodes": space.num_enriched, "gauss": space.gauss})
