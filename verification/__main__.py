@@ -286,6 +286,8 @@ def main(argv=None) -> int:
     rank = launched_rank()
     repeats = _configure_logging(args.verbosity if rank == 0 else -2)  # one log, rank 0's
     try:
+        if distributed():  # PETSc starts collectively: every rank now, not rank 0 alone later (EFGM)
+            from petsc4py import PETSc  # noqa: F401
         _check_ranks(args)
         _check_sizes(args)
         _check_workers(args)
