@@ -9,11 +9,12 @@ zero measured against its companion).  Each run is timed by stage (mesh,
 assembly, solve, total) after one warm-up solve per method and degree (the
 one-off JIT compilation is not a steady cost); a run under a second is
 repeated and its fastest repeat kept (:func:`verification.timing.fastest`).
-The reference and every rung run in a fresh process of their own: nothing
-of one run (dolfinx and PETSc objects, the allocator's free lists) can
-inflate the memory of the
-next — in one process the full report grew past 17 GB and was killed by the
-out-of-memory killer on a 24 GB machine.  The rungs run on
+The reference and the rungs run in this process when their memory
+estimates (:mod:`contactcore.budget`), summed as if none were ever returned
+to the system, fit in the machine; otherwise each runs in a fresh process,
+whose memory goes back to the system when it ends (before the PETSc factor
+leak was fixed, one process running the full report grew past 17 GB).  The
+log says which, and why (:func:`spawn_each`).  The rungs run on
 :mod:`verification.pool` (``--workers K``, by default one per core, or an
 mpi4py.futures pool): rungs measured beside each other share the cores and
 the memory bandwidth, so the table says how many workers measured it.  Writes
@@ -28,6 +29,7 @@ import logging
 from pathlib import Path
 
 from contactcore import load_scene, sample_profiles
+from contactcore.budget import MEMORY_SHARE, estimate, machine_memory
 
 from . import files, pool
 from .agreement import agreements
@@ -107,6 +109,24 @@ def _reference(scene_name: str, ref_h: float) -> tuple[dict, int, float]:
     return {p.id: p for p in sample_profiles(scene, reference.fields, reference.interface)}, reference.dofs, reference.timings.total
 
 
+def spawn_each(scene, rungs, ref_h: float) -> bool:
+    """Whether the reference and the rungs need a fresh process each: only
+    when all of them together (their memory estimates summed, as if none
+    were ever returned to the system) would not fit in
+    :data:`~contactcore.budget.MEMORY_SHARE` of this machine's memory.  The
+    log says which, and why."""
+    needed = (estimate(scene, ref_h, 2, "fe").memory
+              + sum(estimate(scene, h, degree, name).memory for name, degree, h, _ in rungs))
+    have = MEMORY_SHARE * machine_memory()
+    if needed > have:
+        log.info("efficiency: each run in a fresh process: together they may need %.3g GB, more than the %.3g GB "
+                 "usable here", needed / 1e9, have / 1e9)
+        return True
+    log.info("efficiency: the runs in this process (together at most %.3g GB of the %.3g GB usable here)",
+             needed / 1e9, have / 1e9)
+    return False
+
+
 def _rungs(variants, ladders: dict) -> list[tuple]:
     """``(method, degree, h, warm_h)`` of every rung, each ladder coarse to fine."""
     rungs = []
@@ -119,14 +139,15 @@ def _rungs(variants, ladders: dict) -> list[tuple]:
 def efficiency(scene_name: str, variants, ladders: dict, ref_h: float, exclude: float, out: Path,
                workers: int | None = None, argv=()) -> str:
     """Run the ladders (``ladders[(method, degree)]`` if given, else
-    ``ladders[degree]``: the h of that variant) on ``workers`` fresh
+    ``ladders[degree]``: the h of that variant) on ``workers``
     processes, write the table and the plot; return the Markdown section."""
     scene = load_scene(scene_name)
-    [(ref, ref_dofs, ref_time)] = pool.map_cases(functools.partial(_reference, scene_name), [ref_h], fresh=True)
-    log.info("reference: fe P2 h=%g, %d DOFs, %.1f s", ref_h, ref_dofs, ref_time)
     rungs, rows = _rungs(variants, ladders), []
+    fresh = spawn_each(scene, rungs, ref_h)
+    [(ref, ref_dofs, ref_time)] = pool.map_cases(functools.partial(_reference, scene_name), [ref_h], fresh=fresh)
+    log.info("reference: fe P2 h=%g, %d DOFs, %.1f s", ref_h, ref_dofs, ref_time)
     for k, row in enumerate(pool.map_cases(functools.partial(_measure, scene_name, ref=ref, exclude=exclude),
-                                           rungs, workers, fresh=True), 1):
+                                           rungs, workers, fresh=fresh), 1):
         log.info("[%d/%d] %s p%d h=%g: %d DOFs, %.2f s, worst error %.2e (%s)", k, len(rungs), row["method"],
                  row["degree"], row["h"], row["dofs"], row["total"], row["error"], row["worst"])
         rows.append(row)
