@@ -75,6 +75,21 @@ def test_an_mpi4py_futures_pool_writes_the_serial_table(serial, tmp_path):
     assert _untimed(_rows(tmp_path)) == _untimed(serial)
 
 
+@pytest.mark.slow
+def test_the_quick_report_runs_on_an_mpi4py_futures_pool(tmp_path):
+    """Every part of the report, its friction runs (verification.run) too,
+    solves on the workers' own communicators: no part refuses or hangs."""
+    env = {k: v for k, v in os.environ.items() if not k.startswith(("OMPI_", "PMIX_", "PMI_"))}
+    env["PYTHONPATH"] = str(ROOT)
+    out = subprocess.run([shutil.which("mpiexec"), "--allow-run-as-root", "--oversubscribe", "-n", "3",
+                          sys.executable, "-m", "mpi4py.futures", "-m", "verification", "report",
+                          str(tmp_path / "r"), "--quick"], env=env, cwd=ROOT, capture_output=True, text=True,
+                         timeout=600)
+    assert out.returncode == 0, out.stderr
+    text = (tmp_path / "r" / "report.md").read_text()
+    assert "layered-slip" in text and "Newton iterations" in text
+
+
 def test_a_failing_point_is_recorded_and_the_pool_goes_on(tmp_path):
     """A radius of 1.5 leaves the domain: its rows say so, the others solve."""
     assert main(["study", "C", "--param", "radius", "--values", "0.2", "1.5", "--param", "kN", "--values", "1e9",

@@ -21,7 +21,7 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
-from contactcore import ContactError, load_scene
+from contactcore import load_scene
 
 from . import files, pool
 from .agreement import default_exclusion
@@ -80,10 +80,6 @@ def report(out: Path, quick: bool = False, workers: int | None = None, argv=()) 
     """Run every part into ``out`` (each part's cases on ``workers``
     processes) and write ``out/report.md``."""
     plan = QUICK if quick else FULL
-    if pool.under_mpi_pool() and plan.friction:
-        raise ContactError("report: its friction runs (verification.run) solve on the launcher's whole world, "
-                           "not on a worker's own communicator: run the report with --workers K, not under "
-                           "mpi4py.futures")
     out = Path(out)
     sections, times = [], {}
 

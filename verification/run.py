@@ -101,7 +101,9 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
                                       basis=basis)
         log.info("scene %s: solving with %s (%s)", scene.name, name, f"{basis} basis" if "basis" in options
                  else f"degree {degree}")
-        result = methods.solver(name)(scene, h, degree=degree, paper=paper, progress=_progress(name), **options)
+        # a worker of an mpi4py.futures pool solves on its own communicator; mpirun's ranks share the world
+        solve, on_comm = pool.solver(name) if pool.under_mpi_pool() else (methods.solver(name), {})
+        result = solve(scene, h, degree=degree, paper=paper, progress=_progress(name), **options, **on_comm)
         summary = result.summary()
         summaries.append(summary)
         for w in result.solver.warnings:
