@@ -13,7 +13,7 @@ import pytest
 
 import tolerances as tol
 from contactcore import sample_profiles
-from placements import inclined_A, seeded_inclined, worst_sample
+from placements import circle_C, inclined_A, seeded_inclined, worst_sample
 from xdolfinx import conforming, xfem
 
 H = 0.025
@@ -64,3 +64,21 @@ def test_stress_on_gamma_is_its_one_sided_limit(k, cell, x):
     assert np.linalg.norm(sig[0] - sig[1]) <= tol.XFEM_ONE_SIDED * scale, sig[:2]
     extrapolated = np.polynomial.polynomial.polyfit(offs[2:], sig[2:], 2)[0]
     assert np.linalg.norm(sig[0] - extrapolated) <= tol.XFEM_ONE_SIDED * scale, (sig[0], extrapolated)
+
+
+#: off-centre rods (centre, radius) of scene C (the EFGM tests' list)
+CIRCLES = [((0.93, 1.43), 0.45), ((1.063, 1.581), 0.421)]
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("degree", [1, 2])
+@pytest.mark.parametrize("cell", ["quad", "triangle"])
+@pytest.mark.parametrize("centre,radius", CIRCLES)
+def test_off_centre_rod_agrees_with_fe(centre, radius, cell, degree):
+    """Scene C with its rod moved off the node rows, at the scene's h,
+    against fe P2 at h/2 (tests/tolerances.py::XFEM_ROD_AGREE)."""
+    scene = circle_C(centre, radius)
+    ref = {p.id: p for p in sample_profiles(scene, conforming.solve(scene, scene.h / 2, degree=2).fields)}
+    got = {p.id: p for p in sample_profiles(scene, xfem.solve(scene, scene.h, degree=degree, cell=cell).fields)}
+    worst, pid, q = worst_sample(scene, got, ref)
+    assert worst <= tol.XFEM_ROD_AGREE[cell, degree], (worst, pid, q)
