@@ -65,3 +65,17 @@ def seeded_inclined(count: int, seed: int = 22) -> list[tuple[float, float]]:
     of a straight Γ in scene A (issue 22), 4 decimals."""
     rng = np.random.default_rng(seed)
     return [tuple(float(v) for v in np.round(rng.uniform((-30.0, 0.35), (30.0, 0.65)), 4)) for _ in range(count)]
+
+
+def one_sided_gaps(fields, scene, x: float, angle: float, h: float) -> tuple[float, float]:
+    """σ of the + body at the point of Γ above ``x`` (Γ turned ``angle``°)
+    against σ 1e-6 off Γ, and against the quadratic extrapolation to Γ of σ
+    at h/8, h/4 and 3h/8 off Γ: both differences over |σ| 1e-6 off Γ."""
+    n = np.asarray(scene.interface.normal)
+    on = np.array([[x, scene.interface.point[1] + x * np.tan(np.radians(angle))]])
+    assert abs(scene.interface.phi(on)[0]) < 1e-12
+    offs = np.array([0.0, 1e-6, h / 8, h / 4, 3 * h / 8])
+    sig = fields.stress(on + offs[:, None] * n, np.ones(len(offs), int))
+    scale = np.linalg.norm(sig[1])
+    extrapolated = np.polynomial.polynomial.polyfit(offs[2:], sig[2:], 2)[0]
+    return float(np.linalg.norm(sig[0] - sig[1]) / scale), float(np.linalg.norm(sig[0] - extrapolated) / scale)
