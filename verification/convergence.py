@@ -23,7 +23,7 @@ import logging
 from pathlib import Path
 
 
-from . import files, methods
+from . import files, pool
 from .closed_forms import interface_patch, pressurised_rod, twisted_rod
 from .norms import fitted_rate, l2_error
 from .outcomes import attempt
@@ -59,8 +59,9 @@ def run_case(name: str, variants=VARIANTS) -> list[dict]:
     rows = []
     for method, degree in variants:
         errors, mine = [], []
+        solve, on_comm = pool.solver(method)  # this process alone, even as the master of an MPI pool
         for h in hs:
-            tried = attempt(methods.solver(method), case.scene, h, degree=degree, estimate_condition=False)
+            tried = attempt(solve, case.scene, h, degree=degree, estimate_condition=False, **on_comm)
             if tried.refused:
                 log.warning("%s %s p%d h=%g: refused: %s", name, method, degree, h, tried.message)
                 mine.append({"case": name, "method": method, "degree": degree, "h": h, "message": tried.message})
