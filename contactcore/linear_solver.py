@@ -307,33 +307,32 @@ class Tangent:
     ``K`` (PETSc AIJ, owned from here on, distributed or not) is the bulk;
     ``free`` this rank's unknowns solved for, numbered from its first owned
     row (the others are prescribed: only the free block is factorised,
-    MUMPS pays 3-4x for held rows otherwise); ``K_Γ`` comes in the local
+    MUMPS pays 3-4x for held rows otherwise); ``work`` a matrix whose
+    pattern holds ``K``'s and every ``K_Γ``'s (default: a copy of ``K``,
+    whose cells already couple what Γ couples); ``K_Γ`` comes in the local
     numbering of ``K``'s local-to-global map (owned, then ghosts) and is
-    added where it falls, on whichever rank owns the row;
-    ``interface_pattern`` (scipy sparse, values ignored) the entries ``K_Γ``
-    may reach outside ``K``'s pattern.  At a new ``K_Γ`` the work copy of
-    ``K`` is refilled, ``K_Γ`` added into it, its free block refilled into
-    the submatrix of the slot asked for, and that slot's factorisation
-    redone (numerically only: the pattern is fixed).  Each slot keeps its
+    added where it falls, on whichever rank owns the row.  At a new
+    ``K_Γ`` the work matrix is refilled with ``K`` and ``K_Γ``, its free
+    block refilled into the submatrix of the slot asked for (with every row
+    free, the slot's own copy is refilled directly), and that slot's
+    factorisation redone (numerically only: the pattern is fixed).  Each slot keeps its
     factorisation until it is refilled.  ``symmetric`` options (e.g.
     MUMPS's LDLᵀ) are used for a symmetric ``K`` while ``K_Γ`` is
     symmetric too; any other tangent takes the general LU.
     """
 
-    def __init__(self, K, free: np.ndarray, *, interface_pattern: sp.spmatrix | None = None,
-                 symmetric: dict | None = None, petsc_options: dict | None = None,
-                 estimate_condition: bool = False, what: str = "linear system"):
+    def __init__(self, K, free: np.ndarray, *, work=None, symmetric: dict | None = None,
+                 petsc_options: dict | None = None, estimate_condition: bool = False,
+                 what: str = "linear system"):
         self.K, self.free, self.symmetric = K, np.asarray(free), symmetric
         self.options = {False: petsc_options, True: {**(symmetric or {}), **(petsc_options or {})}}
         self.estimate, self.what = estimate_condition, what
         self._slots = {}  # slot -> [free block, Factorisation, symmetric]
         start = K.getOwnershipRange()[0]  # free: this rank's owned rows, numbered from its first
         self._rows = PETSc.IS().createGeneral((start + self.free).astype(PETSc.IntType), comm=K.getComm())
-        self._J, self._vectors = K.copy(), None
-        if interface_pattern is not None:
-            pattern = to_petsc(abs(sp.csr_matrix(interface_pattern)) * 0.0)
-            self._J.axpy(1.0, pattern, structure=PETSc.Mat.Structure.DIFFERENT_NONZERO_PATTERN)
-            pattern.destroy()
+        # every row free (EFGM's multipliers): each slot refills its own copy of J, no submatrix is cut
+        self._all_free = self._rows.getSize() == K.getSize()[0]
+        self._J, self._vectors = (K.copy() if work is None else work), None
         self._J.setLGMap(*_local_to_global(K))
 
     def solve(self, interface_tangent: sp.spmatrix | None, rhs: np.ndarray, force_scale: float = 0.0,
@@ -351,16 +350,27 @@ class Tangent:
         du[self.free] = x.getArray(readonly=True)
         return du, report
 
+    def _fill(self, J, K_Gamma: sp.csr_matrix) -> None:
+        """``J = K + K_Γ`` in place (``J``'s pattern holds both)."""
+        J.zeroEntries()
+        J.axpy(1.0, self.K, structure=PETSc.Mat.Structure.SUBSET_NONZERO_PATTERN)
+        J.setValuesLocalCSR(K_Gamma.indptr.astype(PETSc.IntType), K_Gamma.indices.astype(PETSc.IntType),
+                            K_Gamma.data, addv=PETSc.InsertMode.ADD_VALUES)
+        J.assemble()
+
     def _refill(self, interface_tangent: sp.csr_matrix, slot: int) -> None:
         block, factorisation, was_symmetric = self._slots.pop(slot, (None, None, None))  # back once factorised
-        self._J.zeroEntries()
-        self._J.axpy(1.0, self.K, structure=PETSc.Mat.Structure.SUBSET_NONZERO_PATTERN)
         K_Gamma = interface_tangent.tocsr()
         K_Gamma.sort_indices()
-        self._J.setValuesLocalCSR(K_Gamma.indptr.astype(PETSc.IntType), K_Gamma.indices.astype(PETSc.IntType),
-                                  K_Gamma.data, addv=PETSc.InsertMode.ADD_VALUES)
-        self._J.assemble()
-        block = self._J.createSubMatrix(self._rows, self._rows, submat=block)
+        if self._all_free:
+            if block is None:
+                taken = any(b is self._J for b, _, _ in self._slots.values())
+                block = self._J.duplicate() if taken else self._J
+                block.setLGMap(*_local_to_global(self._J))
+            self._fill(block, K_Gamma)
+        else:
+            self._fill(self._J, K_Gamma)
+            block = self._J.createSubMatrix(self._rows, self._rows, submat=block)
         if self._vectors is None:
             self._vectors = block.createVecs()
         symmetric = self.symmetric is not None and is_symmetric(K_Gamma)
@@ -373,7 +383,8 @@ class Tangent:
             factorisation.factorise(block)
         except SolverError:
             factorisation.destroy()
-            block.destroy()
+            if block is not self._J:
+                block.destroy()
             raise
         self._slots[slot] = [block, factorisation, symmetric]
 
@@ -381,7 +392,8 @@ class Tangent:
         """Destroy every PETSc object made here, and ``K``."""
         for block, factorisation, _ in self._slots.values():
             factorisation.destroy()
-            block.destroy()
+            if block is not self._J:
+                block.destroy()
         for obj in (self._J, self._rows, self.K, *(self._vectors or ())):
             obj.destroy()
         self._slots, self._J, self._vectors = {}, None, None

@@ -53,7 +53,8 @@ def tangent(A: sp.csr_matrix, interface_pattern: sp.spmatrix, *, estimate_condit
     LDLᵀ while ``J`` is symmetric, else LU; every unknown is free."""
     from contactcore import linear_solver
 
-    return linear_solver.Tangent(linear_solver.to_petsc(A), np.arange(A.shape[0]),
-                                 interface_pattern=interface_pattern,
+    union = (abs(A) + abs(sp.csr_matrix(interface_pattern))).tocsr()  # K's and every K_Γ's entries
+    union.data[:] = 0.0
+    return linear_solver.Tangent(linear_solver.to_petsc(A), np.arange(A.shape[0]), work=linear_solver.to_petsc(union),
                                  symmetric=SYMMETRIC if linear_solver.is_symmetric(A) else None,
                                  estimate_condition=estimate_condition, what=what)
