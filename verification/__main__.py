@@ -32,6 +32,7 @@ from pathlib import Path
 from contactcore import ContactError, load_scene
 
 from . import files, methods
+from .pool import LOG_FORMAT
 
 log = logging.getLogger("verification")
 
@@ -162,7 +163,7 @@ def _configure_logging(verbosity: int = 0) -> Repeats:
     everything else (ffcx's JIT goes through setuptools, which lowers the
     root logger's level) only from WARNING on, enforced on the handler,
     which setuptools does not touch.  Repeated messages are collapsed."""
-    fmt = logging.Formatter("%(levelname)s %(name)s: %(message)s")
+    fmt = logging.Formatter(LOG_FORMAT)
     root = logging.StreamHandler()
     root.setLevel(logging.WARNING)
     root.setFormatter(fmt)

@@ -22,6 +22,7 @@ never waits for the other workers; its timings are measured inside it.
 from __future__ import annotations
 
 import contextlib
+import logging
 import multiprocessing
 import os
 import sys
@@ -73,14 +74,30 @@ def executor(workers: int | None, fresh: bool = False) -> Executor:
     """The executor for ``--workers`` (None or 1: serial).  ``fresh``: every
     case in a new process of its own, even serially (its memory is returned
     to the system after it; the efficiency ladders need this)."""
+    level = logging.getLogger("verification").getEffectiveLevel()  # the workers log as the command does
     if under_mpi_pool():
         petsc_on_self()  # before the master itself meets PETSc
         from mpi4py.futures import MPIPoolExecutor
-        return MPIPoolExecutor()
+        return MPIPoolExecutor()  # its static workers outlive one executor: no initializer (it breaks the next)
     if (workers or 1) == 1 and not fresh:
         return Serial()
     return ProcessPoolExecutor(max_workers=workers or 1, mp_context=multiprocessing.get_context("spawn"),
-                               max_tasks_per_child=1 if fresh else None)
+                               max_tasks_per_child=1 if fresh else None, initializer=worker_logging,
+                               initargs=(level,))
+
+
+#: Every process's log line: level, logger, message.
+LOG_FORMAT = "%(levelname)s %(name)s: %(message)s"
+
+
+def worker_logging(level: int) -> None:
+    """A worker's ``verification`` log: the command's level (``--quiet``,
+    ``--verbose``) and format, on the worker's stderr."""
+    handler = logging.StreamHandler()
+    handler.setFormatter(logging.Formatter(LOG_FORMAT))
+    logger = logging.getLogger("verification")
+    logger.handlers[:], logger.propagate = [handler], False
+    logger.setLevel(level)
 
 
 #: The variables that size the BLAS and OpenMP thread pools (Debian's
