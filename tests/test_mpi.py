@@ -122,9 +122,10 @@ def _errors(out) -> list[str]:
 def test_bad_input_under_mpirun_is_one_line(tmp_path):
     """A scene error (every rank meets it while reading), a solver error
     (friction that cannot carry the patch's shear: Newton's decisions are
-    collective, so every rank gives up together) and a command that does
-    not run on mpirun's ranks: one line each, exit 2, nothing written, no
-    rank left waiting (the timeout would fail the test)."""
+    collective, so every rank gives up together), a command that does not
+    run on mpirun's ranks, xfem (not distributed) and field files (written
+    from one process): one line each, exit 2, nothing written, no rank left
+    waiting (the timeout would fail the test)."""
     bad = tmp_path / "bad.toml"
     bad.write_text(scene_toml(load_scene("A")).replace("E = 2e+11", "E = -1.0", 1))
     patch = interface_patch(30.0).scene
@@ -133,7 +134,9 @@ def test_bad_input_under_mpirun_is_one_line(tmp_path):
     for args, message in (
             (["run", bad, "--method", "fe"], "materials.minus.E"),
             (["run", slip, "--method", "fe", "--h", "0.1"], "failed after 6 cut-backs"),
-            (["study", "A", "--param", "kN", "--values", "1e9"], "spreads its cases over a pool")):
+            (["study", "A", "--param", "kN", "--values", "1e9"], "spreads its cases over a pool"),
+            (["run", "A", "--method", "xfem", "--h", "0.2"], "xfem under mpirun"),
+            (["run", "A", "--method", "fe", "--h", "0.2", "--fields"], "--fields under mpirun")):
         out = mpirun(2, "-m", "verification", *args, "--out", tmp_path / "o", timeout=120)
         assert out.returncode == 2 and len(_errors(out)) == 1 and message in _errors(out)[0], out.stderr
         assert not (tmp_path / "o").exists()
