@@ -46,8 +46,7 @@ class Collective:
         array = np.asarray(array)
         if self.comm is None:
             return array
-        parts = [p for p in self.comm.allgather(array)]
-        return np.concatenate(parts) if parts else array
+        return np.concatenate(self.comm.allgather(array))
 
 
 #: The reductions of a system on one process.

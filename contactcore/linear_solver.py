@@ -21,7 +21,7 @@ KSP keeps the PC and the MUMPS factor alive for good (measured: 2.4 MB per
 solve of a 4 900-unknown Laplacian, ~0.3 GB per solve of a 1.4e5-unknown P2
 system, and flat once the factor is destroyed before the KSP).  Neither
 dolfinx nor MPI is imported: EFGM solves its scipy systems here too
-(:func:`solve_csr`).
+(:func:`to_petsc`, :class:`Tangent`).
 """
 from __future__ import annotations
 
@@ -432,21 +432,3 @@ def solve(A, b, x, *, rows=None, petsc_options: dict | None = None, estimate_con
         return factorisation.solve(b, x, force_scale)
     finally:
         factorisation.destroy()
-
-
-def solve_csr(A: sp.spmatrix, b: np.ndarray, *, petsc_options: dict | None = None, estimate_condition: bool = False,
-              what: str = "linear system", force_scale: float = 0.0) -> tuple[np.ndarray, SolverReport]:
-    """Solve the scipy sparse system ``A x = b`` by :func:`solve` (EFGM's
-    entry: the same solver, options and report as fe and xfem); returns
-    ``x`` and the report."""
-    M = to_petsc(A)
-    bv, xv = M.createVecs()
-    try:
-        bv.setArray(np.asarray(b, dtype=PETSc.ScalarType))
-        xv.set(0.0)
-        report = solve(M, bv, xv, petsc_options=petsc_options, estimate_condition=estimate_condition, what=what,
-                       force_scale=force_scale)
-        return xv.getArray().copy(), report
-    finally:
-        for obj in (M, bv, xv):
-            obj.destroy()

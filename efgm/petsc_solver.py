@@ -1,8 +1,8 @@
 """EFGM's systems solved by PETSc + MUMPS, through the solver of fe and xfem.
 
-:func:`contactcore.linear_solver.solve_csr` converts the scipy matrix to PETSc
-AIJ and solves it with the same options, checks and health report as the
-dolfinx methods; that module imports petsc4py but neither dolfinx nor MPI.
+:func:`tangent` converts the scipy matrix to PETSc AIJ and factorises it
+with :class:`contactcore.linear_solver.Tangent`: the same options, checks,
+reuse and health report as the dolfinx methods; that module imports petsc4py but neither dolfinx nor MPI.
 Nothing here is imported before :func:`available` is asked, so ``efgm``
 still imports with numpy and scipy alone.
 
@@ -34,17 +34,6 @@ def available() -> bool:
     except ImportError:
         return False
     return True
-
-
-def solve(A: sp.csr_matrix, b: np.ndarray, *, petsc_options: dict | None = None, estimate_condition: bool = False,
-          what: str = "linear system", force_scale: float = 0.0) -> tuple[np.ndarray, SolverReport]:
-    """Solve ``A x = b`` with MUMPS: LDLᵀ if ``A`` is symmetric to
-    round-off, else LU (module doc); ``petsc_options`` override that."""
-    from contactcore import linear_solver
-
-    factor = SYMMETRIC if linear_solver.is_symmetric(A) else {}
-    return linear_solver.solve_csr(A, b, petsc_options={**factor, **(petsc_options or {})},
-                                   estimate_condition=estimate_condition, what=what, force_scale=force_scale)
 
 
 def tangent(A: sp.csr_matrix, interface_pattern: sp.spmatrix, *, estimate_condition: bool = False,

@@ -71,12 +71,15 @@ def _equilibrate(A: sp.csr_matrix) -> np.ndarray:
 
 def solve(A: sp.csr_matrix, b: np.ndarray, *, coords: np.ndarray, reach: float, estimate_condition: bool = False,
           what: str = "linear system", force_scale: float = 0.0) -> tuple[np.ndarray, SolverReport]:
-    """Solve ``A x = b`` by MUMPS if petsc4py imports, else by SuperLU
-    (module doc; ``coords`` and ``reach`` as for :func:`solve_superlu`)."""
-    if petsc_solver.available():
-        return petsc_solver.solve(A, b, estimate_condition=estimate_condition, what=what, force_scale=force_scale)
-    return solve_superlu(A, b, coords=coords, reach=reach, estimate_condition=estimate_condition, what=what,
-                         force_scale=force_scale)
+    """Solve ``A x = b`` once, on the path Newton takes (:func:`tangent`
+    with no interface term): MUMPS if petsc4py imports, else SuperLU
+    (module doc; ``coords`` and ``reach`` as for :class:`SuperLU`)."""
+    none = sp.csr_matrix(A.shape)
+    solver = tangent(A, none, coords=coords, reach=reach, estimate_condition=estimate_condition, what=what)
+    try:
+        return solver.solve(none, b, force_scale)
+    finally:
+        solver.close()
 
 
 def tangent(A: sp.csr_matrix, interface_pattern: sp.spmatrix, *, coords: np.ndarray, reach: float,

@@ -53,7 +53,15 @@ def test_factor_and_solve_cycles_keep_memory_flat():
 
 
 def _solve_small(options: dict):
-    return linear_solver.solve_csr(_laplacian(6), np.ones(36), petsc_options=options, estimate_condition=False)
+    M = linear_solver.to_petsc(_laplacian(6))
+    b, x = M.createVecs()
+    b.set(1.0)
+    try:
+        report = linear_solver.solve(M, b, x, petsc_options=options, estimate_condition=False)
+        return x.getArray().copy(), report
+    finally:
+        for obj in (M, b, x):
+            obj.destroy()
 
 
 @pytest.mark.parametrize("options, named, reason", [
