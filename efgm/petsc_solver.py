@@ -20,8 +20,6 @@ from __future__ import annotations
 import numpy as np
 import scipy.sparse as sp
 
-from contactcore import SolverReport
-
 
 #: The factorisation of a symmetric (indefinite) system: MUMPS's LDLᵀ.
 SYMMETRIC = {"pc_type": "cholesky"}
