@@ -108,6 +108,16 @@ NEAR_FACTOR = {"distance": 1.0 + 1e-9, "level set": 2.0}
 #: 1.6 % on the same Γ).
 RECOVERY_RINGS = 2
 
+#: Cells fitted at once by XFEMFields._fit (its padded arrays: this many
+#: patches of about 25–45 samples).
+_FIT_BATCH = 4096
+
+
+def _quadratic_basis(d: np.ndarray, terms: int) -> np.ndarray:
+    """(P, terms): 1, x, y, x², xy, y² of scaled offsets d (P, 2), the first ``terms``."""
+    return np.column_stack([np.ones(len(d)), d[:, 0], d[:, 1], d[:, 0] ** 2, d[:, 0] * d[:, 1], d[:, 1] ** 2][:terms])
+
+
 _TAG_UNCUT = {"minus": 1, "plus": 2}
 _TAG_BAND = 3
 
@@ -581,20 +591,22 @@ class XFEMFields:
         scene = space.scene
         self.D = scene.voigt_matrices()
         self.locator = BodyCellLocator(space.msh, [space.cells_resolving(side) for side in (-1, 1)])
-        self._samples = {}
+        self._samples, self._fits = {}, {}
 
     def _eval(self, points, bodies, gradient: bool) -> np.ndarray:
         points = np.asarray(points, float)[:, :2]
         bodies = np.asarray(bodies)
         cells = self.locator.cells(points, bodies)
         out = np.zeros((len(points), 3 if gradient else 2))
+        if gradient and self.space.degree == 1:
+            for body in np.unique(bodies):
+                sel = np.flatnonzero(bodies == body)
+                out[sel] = self._recovered(cells[sel], int(body), points[sel])
+            return out
         for c in np.unique(cells):
             for body in np.unique(bodies[cells == c]):
                 sel = np.flatnonzero((cells == c) & (bodies == body))
-                if gradient and self.space.degree == 1:
-                    out[sel] = self._recovered(c, int(body), points[sel])
-                else:
-                    out[sel] = self._local(c, int(body), points[sel], gradient)
+                out[sel] = self._local(c, int(body), points[sel], gradient)
         return out
 
     def _local(self, c: int, body: int, points: np.ndarray, gradient: bool) -> np.ndarray:
@@ -649,29 +661,59 @@ class XFEMFields:
         self._samples[body] = (index, centroids, areas, sig, patches)
         return self._samples[body]
 
-    def _recovered(self, c: int, body: int, points: np.ndarray) -> np.ndarray:
-        """Voigt σ (P, 3) of ``body`` at ``points`` (located in cell ``c``):
+    def _recovered(self, cells: np.ndarray, body: int, points: np.ndarray) -> np.ndarray:
+        """Voigt σ (P, 3) of ``body`` at ``points`` (located in ``cells``):
         the least-squares polynomial, weighted by part area, through the
         body's own σ at the part centroids of its resolving cells within
-        RECOVERY_RINGS vertex rings of ``c``: quadratic, or linear (then the
-        cell's own field) where the patch has too few independent samples."""
+        RECOVERY_RINGS vertex rings of the point's cell: quadratic, or linear
+        where the patch has too few independent samples for a quadratic (then
+        the cell's own field where it has too few for a line)."""
         index, centroids, areas, sig, patches = self._body_samples(body)
-        patch = index[patches.indices[patches.indptr[c]:patches.indptr[c + 1]]]
-        patch = patch[patch >= 0]
-        origin, length = centroids[index[c]], np.sqrt(areas[patch].max())
-        weight = np.sqrt(areas[patch] / areas[patch].max())
+        fits = self._fits.setdefault(body, {})
+        todo = np.setdiff1d(np.unique(cells), np.fromiter(fits, dtype=np.int64, count=len(fits)))
+        for start in range(0, len(todo), _FIT_BATCH):
+            fits.update(self._fit(todo[start:start + _FIT_BATCH], index, centroids, areas, sig, patches))
+        origin, length, coef = (np.array([fits[c][k] for c in cells]).reshape(len(cells), *shape)
+                                for k, shape in ((0, (2,)), (1, ()), (2, (6, 3))))
+        out = np.einsum("pi,pic->pc", _quadratic_basis((points - origin) / length[:, None], 6), coef)
+        for c in np.unique(cells[np.isnan(coef[:, 0, 0])]):  # too few samples even for a line
+            sel = np.flatnonzero(cells == c)
+            out[sel] = self._local(c, body, points[sel], True)
+        return out
 
-        def basis(x, terms):
-            d = (x - origin) / length
-            cols = [np.ones(len(d)), d[:, 0], d[:, 1], d[:, 0] ** 2, d[:, 0] * d[:, 1], d[:, 1] ** 2]
-            return np.column_stack(cols[:terms])
-
+    @staticmethod
+    def _fit(targets, index, centroids, areas, sig, patches) -> dict:
+        """``{cell: (origin, length, coefficients (6, 3))}`` for ``targets``
+        (NaN where the patch fits no line), all at once: each patch's samples
+        padded to the longest patch with zero weight, and solved by SVD
+        (numpy's lstsq and matrix_rank, batched)."""
+        sub = patches[targets]
+        rows = np.repeat(np.arange(len(targets)), np.diff(sub.indptr))
+        member = index[sub.indices]
+        keep = member >= 0
+        rows, member = rows[keep], member[keep]
+        count = np.bincount(rows, minlength=len(targets))
+        pos = np.arange(len(rows)) - np.repeat(np.cumsum(count) - count, count)
+        largest = np.zeros(len(targets))
+        np.maximum.at(largest, rows, areas[member])
+        origin, length = centroids[index[targets]], np.sqrt(largest)
+        weight = np.sqrt(areas[member] / largest[rows])
+        d = (centroids[member] - origin[rows]) / length[rows, None]
+        A = np.zeros((len(targets), count.max(), 6))
+        Y = np.zeros((len(targets), count.max(), 3))
+        A[rows, pos] = _quadratic_basis(d, 6) * weight[:, None]
+        Y[rows, pos] = sig[member] * weight[:, None]
+        coef = np.full((len(targets), 6, 3), np.nan)  # a line's: its quadratic terms 0
         for terms in (6, 3):
-            A = basis(centroids[patch], terms) * weight[:, None]
-            if len(patch) > terms and np.linalg.matrix_rank(A) == terms:
-                coef = np.linalg.lstsq(A, sig[patch] * weight[:, None], rcond=None)[0]
-                return basis(points, terms) @ coef
-        return self._local(c, body, points, True)
+            todo = np.flatnonzero(np.isnan(coef[:, 0, 0]) & (count > terms))
+            if not len(todo):
+                continue
+            U, S, Vt = np.linalg.svd(A[todo, :, :terms], full_matrices=False)
+            full = np.sum(S > S[:, :1] * max(count.max(), terms) * np.finfo(float).eps, axis=1) == terms
+            solved = np.einsum("tji,tj,tkj,tkc->tic", Vt, 1 / np.where(S > 0, S, 1.0), U, Y[todo])
+            coef[todo[full]] = 0.0
+            coef[todo[full], :terms] = solved[full]
+        return {int(c): (origin[n], length[n], coef[n]) for n, c in enumerate(targets)}
 
     def displacement(self, points, bodies) -> np.ndarray:
         return self._eval(points, bodies, False)
