@@ -95,17 +95,20 @@ NEAR_FACTOR = {"distance": 1.0 + 1e-9, "level set": 2.0}
 #: part has its centroid up to 0.7 h from Γ (a fitted mesh's cells next to
 #: Γ: about h/3), and in a thin part the cell's gradient is fitted to that
 #: part alone.  Where the stress varies steeply across Γ (issue 22: scene A
-#: with Γ inclined, σ along Γ of each block bending on its soft tangential
-#: spring, 15.3e3 on Γ against 19.7e3 0.8 h off it, σxy) the cell's own field
-#: missed on Γ by up to 0.29 (quads) and 0.31 (triangles) of the profile's
-#: scale at h = 0.025 over 24 inclined Γ, and by up to 0.34 at a thin part's
-#: own centroid; both halve with h (0.15 at h = 0.0125), fe P1 gave 0.18.
+#: with Γ inclined 21.5°, each block bending on its soft tangential spring,
+#: σxy is 15.3e3 on Γ and 19.7e3 0.8 h off it) the cell's own field missed
+#: on Γ by up to 0.29 (quads) and 0.31 (triangles) of the profile's scale at
+#: h = 0.025 over 24 inclined Γ (fe P1: 0.18), and by up to 0.34 at a thin
+#: part's own centroid; at h = 0.0125 still 0.16 on the four worst Γ (fe P1
+#: 0.073): the degree-1 error, O(h), magnified by the cut parts' geometry.
 #: Recovered: one ring, linear (Zienkiewicz-Zhu) 0.063 / 0.18; two rings,
 #: linear 0.11 / 0.12 on the five worst Γ (it smooths the corners' layers);
 #: two rings, quadratic 0.076 / 0.124, and on two off-centre rods in scene C
 #: 0.052 / 0.084 (0.19 / 0.25 before).  Constant stress is reproduced
 #: exactly (the patch tests).  Degree 2 keeps the cell's own field (1.3 % /
 #: 1.6 % on the same Γ).
+#: The rings are counted through vertices, not along the body: a body
+#: thinner than about four cells may see both of its sides in one patch.
 RECOVERY_RINGS = 2
 
 #: Cells fitted at once by XFEMFields._fit (its padded arrays: this many
