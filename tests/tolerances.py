@@ -233,9 +233,10 @@ XFEM_INCLINED_AGREE = {("quad", 1): 0.15, ("triangle", 1): 0.15, ("quad", 2): 0.
 #: 5.2 % / 4.8 %, triangles 8.4 % / 8.0 % -> the issue's 15 % (raw: 15 % /
 #: 19 % and 17 % / 25 %).  P2 triangles 1.6 % / 2.5 % (σyy on C3 at x =
 #: 1.54, an uncut cell next to the rod whose enrichments vanish there): the
-#: ordinary P2 error of the structured triangles, 0.64 % at h = 0.025
-#: (rate 1.95); the issue's 2 % is NOT met there at h = 0.05, and that bound
-#: is the measured worst plus 20 %.
+#: P2 triangle's own approximation error (the nodal P2 interpolant of the
+#: reference on that cell misses by 2.6 % there), 0.64 % at h = 0.025 (rate
+#: 1.95); the issue's 2 % is NOT met there at h = 0.05, and that bound is
+#: the measured worst plus 20 %.
 XFEM_ROD_AGREE = {("quad", 1): 0.15, ("triangle", 1): 0.15, ("quad", 2): 0.02, ("triangle", 2): 0.03}
 #: σ on Γ against σ 1e-6 off Γ and the quadratic extrapolation from h/8,
 #: h/4, 3h/8 off Γ (xfem P2), relative to |σ|: the issue's 1 %.
