@@ -266,9 +266,6 @@ def _check_ranks(args) -> None:
     if args.command not in DISTRIBUTED:
         raise ContactError(f"mpirun: '{args.command}' spreads its cases over a pool, not over mpirun's ranks: run "
                            f"it with --workers K, or under mpiexec -n K python -m mpi4py.futures -m verification")
-    if getattr(args, "fields", False):
-        raise ContactError("--fields under mpirun: field files are written from one process; run without mpirun "
-                           "(the profiles and summaries are the same)")
 
 
 def _abort_on(exc: BaseException) -> None:

@@ -38,7 +38,7 @@ WITH_XDMF = ("fe", "xfem")
 
 #: Methods whose solve spreads over mpirun's ranks (dolfinx and PETSc own
 #: the partition); the others run on rank 0 while the rest wait.
-DISTRIBUTED = ("fe",)
+DISTRIBUTED = ("fe", "xfem")
 
 
 def solver(name: str):
