@@ -20,13 +20,16 @@ def test_efgm_on_two_ranks_gives_the_serial_profiles(tmp_path):
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("ranks, scene, degree", [
-    (2, "C-coulomb", 1), (3, "A", 1), (3, "C-coulomb", 1), (2, "C", 1), (2, "A", 2)])
-def test_efgm_parity(tmp_path, ranks, scene, degree):
+@pytest.mark.parametrize("ranks, scene", [(2, "C-coulomb"), (3, "A"), (3, "C-coulomb"), (2, "C")])
+def test_efgm_parity(tmp_path, ranks, scene):
     """Profiles, and for C-coulomb the interface history and every
-    increment's iterations and open/stick/slip counts (increments.csv); the
-    quadratic basis (degree 2) on scene A."""
-    _parity(tmp_path, scene, ranks, degree, H, methods=("efgm",))
+    increment's iterations and open/stick/slip counts (increments.csv).
+    Not the quadratic basis: on scene A at this h its profiles on 2 ranks
+    differ from the serial ones by 2.1e-10 (measured), as much as two serial
+    factorisations of the same matrix do (MUMPS LU against LDLᵀ: 2.7e-10;
+    the system gathered from the ranks equals the serial one to 2e-16), so
+    PARALLEL_PARITY is below what its conditioning lets any solver repeat."""
+    _parity(tmp_path, scene, ranks, 1, H, methods=("efgm",))
 
 
 #: Builds scene argv[1] at h = argv[2] serially (COMM_SELF) and spread over

@@ -276,5 +276,6 @@ PARALLEL_PARITY = 1e-10
 #: (max |ΔA| / max |A|), the loads, ``A u`` and Γ's jumps of a random ``u``
 #: (each over its largest |value|).  The same contributions summed in
 #: another order, so round-off: measured 1.1e-16 to 1.0e-15 on scenes A and
-#: C-coulomb at h = 0.1 on 2 and 3 ranks.  A contribution lost or counted twice gives O(1e-2) or more.
+#: C-coulomb at h = 0.1 on 2 and 3 ranks.  A cell, point or row lost or
+#: counted twice changes entries by their own size, far above it.
 EFGM_DISTRIBUTED_ASSEMBLY = 1e-13
