@@ -5,7 +5,8 @@ enrichment and quadrature rules (geometry only, the same on each), then
 does its own share of the work that costs:
 
 * the background cells are split into contiguous ranges, in the fixed
-  order of their grid index, holding about equal numbers of Gauss points
+  order of their grid index (row by row), holding about equal numbers of
+  Gauss points
   (:func:`cell_share`: no partitioner, the same split on any machine); a
   rank evaluates the shape functions and the stiffness of its cells only;
 * Γ's quadrature points and each loaded boundary's are split into
@@ -62,12 +63,14 @@ def communicator(comm=None):
 def cell_share(points: np.ndarray, origin: np.ndarray, step: np.ndarray, ranks: Collective) -> np.ndarray:
     """Which of the volume Gauss ``points`` this rank integrates: those of
     its contiguous range of background cells (squares of side ``step``
-    from ``origin``, ordered by grid index, x first), the ranges cut where
-    the points before them reach ``rank/size`` of all points."""
+    from ``origin``, ordered row by row: y, then x), the ranges cut where
+    the points before them reach ``rank/size`` of all points.  A grid's
+    nodes are numbered in the same order (:func:`efgm.nodes.grid_nodes`),
+    so a rank's cells mostly fill the rows it owns."""
     if not ranks.parallel:
         return np.ones(len(points), bool)
     cell = np.maximum(np.floor((points - origin) / step), 0).astype(np.int64)
-    key = cell[:, 0] * (cell[:, 1].max(initial=0) + 1) + cell[:, 1]
+    key = cell[:, 1] * (cell[:, 0].max(initial=0) + 1) + cell[:, 0]  # row by row, as a grid's nodes are numbered
     keys, counts = np.unique(key, return_counts=True)
     owner = (np.cumsum(counts) - counts) * ranks.comm.size // max(len(points), 1)
     return owner[np.searchsorted(keys, key)] == ranks.rank
