@@ -97,11 +97,11 @@ def is_symmetric_mat(A, ranks: Collective = SERIAL) -> bool:
         difference.destroy()
 
 
-def ownership(size: int, ranks: int) -> np.ndarray:
-    """The first row of each of ``ranks`` ranks, and ``size`` last: PETSc's
+def ownership(size: int, parts: int) -> np.ndarray:
+    """The first row of each of ``parts`` ranks, and ``size`` last: PETSc's
     own split of ``size`` rows (PetscSplitOwnership), contiguous in rank
-    order, the first ``size % ranks`` ranks one row more."""
-    counts = size // ranks + (np.arange(ranks) < size % ranks)
+    order, the first ``size % parts`` ranks one row more."""
+    counts = size // parts + (np.arange(parts) < size % parts)
     return np.concatenate([[0], np.cumsum(counts)]).astype(np.int64)
 
 
