@@ -28,6 +28,8 @@ import os
 import sys
 from concurrent.futures import Executor, Future, ProcessPoolExecutor
 
+from contactcore.collective import launched_size
+
 from . import methods
 
 
@@ -45,7 +47,7 @@ class Serial(Executor):
 
 def _launched_size() -> int:
     """How many ranks mpiexec started (1 without it), read from its environment."""
-    return next((int(os.environ[n]) for n in ("OMPI_COMM_WORLD_SIZE", "PMI_SIZE") if n in os.environ), 1)
+    return launched_size()
 
 
 def launched_rank() -> int:
