@@ -1,4 +1,4 @@
-"""Under mpirun (issue 15): fe and xfem spread over the ranks give the
+"""Under mpirun (issues 15, 16): fe, xfem and efgm spread over the ranks give the
 serial run's numbers; EFGM runs on rank 0; errors end in one line on every rank count,
 and no rank hangs.  Each case is a real ``mpirun`` of the command line."""
 import csv
@@ -70,7 +70,7 @@ def _parity(tmp_path, scene, ranks: int, degree: int, h: float, methods=("fe",))
                 assert _worst(f, parallel / f.relative_to(serial)) <= tol.PARALLEL_PARITY, f
 
 
-def test_fe_and_xfem_on_two_ranks_give_the_serial_profiles_and_efgm_runs_on_rank_0(tmp_path):
+def test_every_method_on_two_ranks_gives_the_serial_profiles(tmp_path):
     _parity(tmp_path, "A", 2, 1, 0.1, methods=("fe", "xfem", "efgm"))
 
 
