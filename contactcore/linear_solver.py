@@ -20,8 +20,11 @@ before its owner is destroyed: with petsc4py 3.18 a handle that outlives the
 KSP keeps the PC and the MUMPS factor alive for good (measured: 2.4 MB per
 solve of a 4 900-unknown Laplacian, ~0.3 GB per solve of a 1.4e5-unknown P2
 system, and flat once the factor is destroyed before the KSP).  Neither
-dolfinx nor MPI is imported: EFGM solves its scipy systems here too
-(:func:`to_petsc`, :class:`Tangent`).
+dolfinx nor MPI is imported at the top: EFGM solves its scipy systems here too
+(:func:`to_petsc`, :class:`Tangent`).  Its distributed systems are made
+here as well (:func:`owned_rows`, :func:`distributed_aij`,
+:class:`ScatterExchange`), on PETSc and on the mpi4py communicator the
+caller hands in, so EFGM runs under mpirun without dolfinx.
 """
 from __future__ import annotations
 
@@ -38,6 +41,8 @@ from petsc4py import PETSc
 from contactcore import SolverError, SolverReport
 from contactcore import health
 from contactcore import tolerances as tol
+from contactcore.assembly import sum_csr
+from contactcore.collective import SERIAL, Collective
 
 DEFAULT_OPTIONS = {"ksp_type": "preonly", "pc_type": "lu", "pc_factor_mat_solver_type": "mumps"}
 
@@ -72,6 +77,104 @@ def is_symmetric(A: sp.spmatrix) -> bool:
     A = sp.csr_matrix(A)
     scale = abs(A).max() if A.nnz else 0.0
     return A.nnz == 0 or abs(A - A.T).max() <= tol.SYMMETRIC_TO_ROUNDOFF * scale
+
+
+def is_symmetric_mat(A, ranks: Collective = SERIAL) -> bool:
+    """:func:`is_symmetric` of a PETSc AIJ matrix, distributed or not
+    (``ranks`` its communicator's reductions): the same test, every rank
+    given the same answer."""
+    def largest(M) -> float:
+        return ranks.max(float(np.max(np.abs(M.getValuesCSR()[2]), initial=0.0)))
+
+    scale = largest(A)
+    # Aᵀ − A in a new matrix: PETSc's MatIsSymmetric gave the ranks different
+    # answers on MPIAIJ (EFGM on scene A, 3 ranks: a deadlock, measured)
+    difference = A.transpose(PETSc.Mat())
+    try:
+        difference.axpy(-1.0, A, structure=PETSc.Mat.Structure.DIFFERENT_NONZERO_PATTERN)
+        return scale == 0.0 or largest(difference) <= tol.SYMMETRIC_TO_ROUNDOFF * scale
+    finally:
+        difference.destroy()
+
+
+def ownership(size: int, parts: int) -> np.ndarray:
+    """The first row of each of ``parts`` ranks, and ``size`` last: PETSc's
+    own split of ``size`` rows (PetscSplitOwnership), contiguous in rank
+    order, the first ``size % parts`` ranks one row more."""
+    counts = size // parts + (np.arange(parts) < size % parts)
+    return np.concatenate([[0], np.cumsum(counts)]).astype(np.int64)
+
+
+def owned_rows(local: sp.spmatrix, starts: np.ndarray, comm) -> sp.csr_matrix:
+    """The rows this rank owns (``starts[rank]`` to ``starts[rank + 1]``, in
+    global numbering) of the sum over the ranks of every rank's ``local``
+    contributions (global shape and numbering), canonical CSR: each rank
+    sends every other the rows it owns (one ``alltoall`` of CSR slices over
+    the mpi4py ``comm``) and sums what it receives in rank order, so the
+    sum does not depend on timing.  Entries summing to exactly zero are
+    dropped (:func:`~contactcore.assembly.sum_csr`)."""
+    local = sp.csr_matrix(local)
+    rank = comm.rank
+    received = comm.alltoall([(piece.indptr, piece.indices, piece.data) for piece in
+                              (local[starts[r]:starts[r + 1]] for r in range(comm.size))])
+    shape = (int(starts[rank + 1] - starts[rank]), local.shape[1])
+    return sum_csr(shape, [sp.csr_matrix((data, indices, indptr), shape=shape)
+                           for indptr, indices, data in received])
+
+
+def distributed_aij(owned: sp.csr_matrix, starts: np.ndarray, comm) -> PETSc.Mat:
+    """A PETSc MPIAIJ matrix on ``comm`` whose rows ``starts[rank]`` to
+    ``starts[rank + 1]`` are ``owned`` (global columns, :func:`owned_rows`),
+    columns split as the rows: preallocated exactly from that CSR, explicit
+    zeros kept (a pattern to refill)."""
+    owned = sp.csr_matrix(owned)
+    owned.sort_indices()
+    n, N = owned.shape[0], owned.shape[1]
+    return PETSc.Mat().createAIJ(size=((n, N), (n, N)), csr=(owned.indptr.astype(PETSc.IntType),
+                                                            owned.indices.astype(PETSc.IntType), owned.data),
+                                 comm=comm)
+
+
+class ScatterExchange:
+    """The ghost exchange of unknowns split in contiguous rows over the
+    mpi4py ``comm`` (``starts`` as :func:`ownership`), on PETSc alone: this
+    rank's local numbering is its owned unknowns, then ``ghosts`` (global
+    indices it reads but does not own, in the order given).  ``forward``:
+    owned values -> local values; ``reverse``: local contributions -> their
+    sums on the owners (owned values).  One :class:`PETSc.Scatter` between
+    the distributed vector and a sequential one of the local unknowns does
+    both; :meth:`local_to_global` gives the map for ``setValuesLocal``.
+    The caller destroys it (:meth:`destroy`)."""
+
+    def __init__(self, comm, starts: np.ndarray, ghosts: np.ndarray):
+        rank = comm.rank
+        first, last = int(starts[rank]), int(starts[rank + 1])
+        self.indices = np.concatenate([np.arange(first, last), np.asarray(ghosts, np.int64)])
+        self.owned_size, self.local_size = last - first, len(self.indices)
+        self._global = PETSc.Vec().createMPI((self.owned_size, int(starts[-1])), comm=comm)
+        self._local = PETSc.Vec().createSeq(self.local_size, comm=PETSc.COMM_SELF)
+        self._is = PETSc.IS().createGeneral(self.indices.astype(PETSc.IntType), comm=PETSc.COMM_SELF)
+        self._scatter = PETSc.Scatter().create(self._global, self._is, self._local, None)
+        self._map = PETSc.LGMap().create(self.indices.astype(PETSc.IntType), comm=comm)
+
+    def forward(self, owned: np.ndarray) -> np.ndarray:
+        self._global.setArray(np.ascontiguousarray(owned, float))
+        self._scatter.scatter(self._global, self._local, PETSc.InsertMode.INSERT_VALUES, PETSc.ScatterMode.FORWARD)
+        return self._local.getArray(readonly=True).copy()
+
+    def reverse(self, local: np.ndarray) -> np.ndarray:
+        self._local.setArray(np.ascontiguousarray(local, float))
+        self._global.set(0.0)
+        self._scatter.scatter(self._local, self._global, PETSc.InsertMode.ADD_VALUES, PETSc.ScatterMode.REVERSE)
+        return self._global.getArray(readonly=True).copy()
+
+    def local_to_global(self) -> PETSc.LGMap:
+        """The local numbering's map to the global one (owned by this object)."""
+        return self._map
+
+    def destroy(self) -> None:
+        for obj in (self._scatter, self._is, self._local, self._global, self._map):
+            obj.destroy()
 
 
 def to_petsc(A: sp.spmatrix) -> PETSc.Mat:
@@ -190,7 +293,9 @@ def _measure_residual(A, b, x, report: SolverReport, force_scale: float) -> None
     r = b.duplicate()
     A.mult(x, r)
     r.aypx(-1.0, b)
-    rv, bv, xv = r.getArray(readonly=True), b.getArray(readonly=True), x.getArray(readonly=True)
+    # norms over every rank (PETSc's): each rank judges the solve alike
+    inf = PETSc.NormType.INFINITY
+    rv, bv, xv = (np.array([v.norm(inf)]) for v in (r, b, x))
     report.residual = health.relative_residual(rv, bv, force_scale)
     report.backward_error = health.backward_error(rv, A.norm(PETSc.NormType.INFINITY), xv, bv)
     r.destroy()
@@ -318,13 +423,15 @@ class Tangent:
     factorisation redone (numerically only: the pattern is fixed).  Each slot keeps its
     factorisation until it is refilled.  ``symmetric`` options (e.g.
     MUMPS's LDLᵀ) are used for a symmetric ``K`` while ``K_Γ`` is
-    symmetric too; any other tangent takes the general LU.
+    symmetric too on every rank (``ranks``: the reductions of ``K``'s
+    communicator; each rank holds its points' part of ``K_Γ``); any other
+    tangent takes the general LU.
     """
 
     def __init__(self, K, free: np.ndarray, *, work=None, symmetric: dict | None = None,
                  petsc_options: dict | None = None, estimate_condition: bool = False,
-                 what: str = "linear system"):
-        self.K, self.free, self.symmetric = K, np.asarray(free), symmetric
+                 what: str = "linear system", ranks: Collective = SERIAL):
+        self.K, self.free, self.symmetric, self.ranks = K, np.asarray(free), symmetric, ranks
         self.options = {False: petsc_options, True: {**(symmetric or {}), **(petsc_options or {})}}
         self.estimate, self.what = estimate_condition, what
         self._slots = {}  # slot -> [free block, Factorisation, symmetric]
@@ -373,7 +480,7 @@ class Tangent:
             block = self._J.createSubMatrix(self._rows, self._rows, submat=block)
         if self._vectors is None:
             self._vectors = block.createVecs()
-        symmetric = self.symmetric is not None and is_symmetric(K_Gamma)
+        symmetric = self.symmetric is not None and self.ranks.all(is_symmetric(K_Gamma))
         if factorisation is None or symmetric != was_symmetric:
             if factorisation is not None:
                 factorisation.destroy()

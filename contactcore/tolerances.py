@@ -29,6 +29,17 @@ GEOMETRY = 1e-9
 #: 1e-6 L cannot match a neighbouring node.
 NODE_MATCH = 1e-6
 
+#: A mesh node within this distance of Γ (relative to L) lies on Γ: H = +1,
+#: whatever the sign of φ there.  dolfinx computes a node's coordinates by
+#: pushing a reference point through one of its cells, and which cell (so
+#: which rank under mpirun) leaves a round-off of a few ulps (≤ 1e-15 L):
+#: a node on Γ came out at y = 0.5 in serial and 1 ulp below it on one of
+#: 3 ranks, so XFEM's enrichment of that node took the other side (scene
+#: A, quads P1, h = 0.1: profiles 1.4 of their scale apart).  10× that
+#: round-off, and 5× below the closest placement the tests make on purpose
+#: (Γ 1e-12 h off a node row at h = 0.05, tests/test_xfem_nodes.py).
+NODE_ON_INTERFACE = 1e-14
+
 #: The smaller of the two bodies must cover at least this fraction of the
 #: domain's area, otherwise the interface "only touches" the domain.
 MIN_BODY_AREA_FRACTION = 1e-8

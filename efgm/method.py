@@ -16,18 +16,20 @@ exact at those points, pins included, with no penalty to tune.  The
 saddle-point system is solved by SuperLU after equilibration, through the
 shared increments and Newton of :mod:`contactcore.newton` (one solve for the
 linear law).  The history of a ``coulomb`` law is kept at the Gauss points
-of Γ (``interface_rule``).
+of Γ (``interface_rule``).  Under mpirun the cells, Γ's points and the
+rows are split over the ranks (:mod:`efgm.distributed`).
 
 numpy and scipy only: importing this package imports neither dolfinx,
-petsc4py nor gmsh.
+petsc4py, mpi4py nor gmsh.
 """
 from __future__ import annotations
 
 import numpy as np
 import scipy.sparse as sp
 
-from contactcore import BODIES, DiscretisationError, Result, Scene, Timings
+from contactcore import BODIES, ContactError, DiscretisationError, Result, Scene, Timings
 from contactcore import discretisation
+from contactcore.collective import SERIAL, Collective
 from contactcore.discretisation import Built, Resolution, make
 from contactcore import tolerances as tol
 from contactcore.constraints import Constraints
@@ -35,7 +37,7 @@ from contactcore.newton import InterfaceOperator
 from contactcore.geometry import tangent_of
 from contactcore.scene import Pressure, Traction, body_force
 
-from . import sparse_solver
+from . import distributed, sparse_solver
 from .nodes import NodeSet, check_nodes, grid_nodes, support_radii
 from .operators import Approximation, block_diagonal, find_enrichment
 from .options import BASES, EFGM  # noqa: F401 (BASES re-exported: the bases by name)
@@ -90,10 +92,12 @@ class EFGMFields:
         return np.where(bodies[:, None] == 1, eps @ self.D[1].T, eps @ self.D[0].T)
 
 
-def _constraints(scene: Scene, approx: Approximation) -> Constraints:
+def _constraints(scene: Scene, approx: Approximation, evaluated=None) -> Constraints:
     """Collocation rows ``C u = g`` (supported boundary nodes, and pins): the
     rows (``operator``), the values at full load, the support of each row
-    (−1 for a pin) and the point of each row."""
+    (−1 for a pin) and the point of each row.  ``evaluated(count)``, if
+    given, picks the rows whose shape functions are evaluated (a rank's
+    own, :func:`efgm.distributed.owned_multipliers`); the others are zero."""
     nodes = approx.mls.nodes
     points, comps, values, owners = [], [], [], []
     for i, sup in enumerate(scene.supports):
@@ -127,19 +131,27 @@ def _constraints(scene: Scene, approx: Approximation) -> Constraints:
         raise DiscretisationError(f"efgm: two supports prescribe u_{'xy'[comp[i]]} at "
                                   f"({pts[i, 0]:.6g}, {pts[i, 1]:.6g}) with different values or load paths")
     pts, comp, g, owner = pts[first], comp[first], g[first], owner[first]
-    bodies = scene.body_of(pts)
-    N = approx.displacement_operator(approx.mls.evaluate(pts, bodies), bodies)
-    return Constraints(g, owner, operator=N[2 * np.arange(len(pts)) + comp], points=pts)
+    rows = np.arange(len(pts)) if evaluated is None else evaluated(len(pts))
+    bodies = scene.body_of(pts[rows])
+    N = approx.displacement_operator(approx.mls.evaluate(pts[rows], bodies), bodies)
+    C = N[2 * np.arange(len(rows)) + comp[rows]]
+    if evaluated is not None:  # the rows in their places among all
+        C = sp.csr_matrix((np.ones(len(rows)), (rows, np.arange(len(rows)))), shape=(len(pts), len(rows))) @ C
+    return Constraints(g, owner, operator=C, points=pts)
 
 
-def _load_vectors(scene: Scene, approx: Approximation, vol: Rule, h: float, n: int) -> list[np.ndarray]:
+def _load_vectors(scene: Scene, approx: Approximation, vol: Rule, h: float, n: int,
+                  ranks: Collective = SERIAL) -> list[np.ndarray]:
     """One vector per load of the scene, at its full value (the shape
-    functions at the volume points are evaluated for a body force only)."""
+    functions at the volume points are evaluated for a body force only):
+    from the points of ``vol`` and this rank's share of each boundary's."""
     vectors = []
     volume_N = None
     for load in scene.loads:
         if isinstance(load, (Traction, Pressure)):
-            pts, w, normals, bodies = boundary_rule(scene, load.boundary, h, n)
+            part = boundary_rule(scene, load.boundary, h, n)
+            share = ranks.share(len(part[1]))
+            pts, w, normals, bodies = (a[share] for a in part)
             t = np.tile(load.value, (len(w), 1)) if isinstance(load, Traction) else -load.value * normals
             N = approx.displacement_operator(approx.mls.evaluate(pts, bodies), bodies)
             vectors.append(N.T @ (w[:, None] * t).ravel())
@@ -207,6 +219,7 @@ def build(scene: Scene, options: EFGM, resolution: Resolution, timings: Timings)
     degree = options.degree
     n = GAUSS_POINTS[degree] if options.gauss is None else options.gauss
     dmax = DMAX[degree] if options.dmax is None else options.dmax
+    ranks = Collective(distributed.communicator(options.comm))  # serial unless mpirun gave several ranks
     with timings.measure("mesh"):
         ns = check_nodes(scene, options.nodes) if options.nodes is not None else _node_set(scene, resolution)
         radii = support_radii(ns, dmax, options.support == "rectangular")
@@ -218,17 +231,35 @@ def build(scene: Scene, options: EFGM, resolution: Resolution, timings: Timings)
         approx = Approximation(mls, enrichment)
         D = scene.voigt_matrices()
         lo, hi = background_cells(scene, ns.h)
-        K = approx.stiffness(vol, lo.min(axis=0), hi[0] - lo[0], D)
-        m = len(gam_w)
-        jump = (approx.displacement_operator(mls.evaluate(gam_pts, np.ones(m, int)), np.ones(m, int))
-                - approx.displacement_operator(mls.evaluate(gam_pts, np.zeros(m, int)), np.zeros(m, int)))
-        G = block_diagonal(np.stack([gam_n, tangent_of(gam_n)], axis=1)) @ jump
-        constraints = _constraints(scene, approx)
-        system = EFGMSystem(K, constraints, _load_vectors(scene, approx, vol, ns.h, n),
-                            InterfaceOperator(G.tocsr(), gam_w, gam_pts), max(m.E for m in scene.materials.values()),
-                            np.vstack([approx.dof_points(), constraints.points]), 2 * mls.reach,
-                            options.estimate_condition, f"scene {scene.name} (efgm)")
-    return Built(system, lambda x: EFGMFields(scene, approx, x[:approx.ndofs]), approx.ndofs, h=ns.h,
+        origin, step = lo.min(axis=0), hi[0] - lo[0]
+        mine = distributed.cell_share(vol.points, origin, step, ranks)  # this rank's cells (all in serial)
+        cells = Rule(vol.points[mine], vol.weights[mine], vol.bodies[mine]) if ranks.parallel else vol
+        share = ranks.share(len(gam_w))  # and Γ's points
+        gam_pts, gam_w, gam_n = gam_pts[share], gam_w[share], gam_n[share]
+        evaluated = (lambda c: distributed.owned_multipliers(ranks, approx.ndofs, c)) if ranks.parallel else None
+        error = None
+        try:  # what a rank evaluates alone may fail on it alone: every rank raises the error alike
+            K = approx.stiffness(cells, origin, step, D)
+            m = len(gam_w)
+            jump = (approx.displacement_operator(mls.evaluate(gam_pts, np.ones(m, int)), np.ones(m, int))
+                    - approx.displacement_operator(mls.evaluate(gam_pts, np.zeros(m, int)), np.zeros(m, int)))
+            G = block_diagonal(np.stack([gam_n, tangent_of(gam_n)], axis=1)) @ jump
+            constraints = _constraints(scene, approx, evaluated)
+            loads = _load_vectors(scene, approx, cells, ns.h, n, ranks)
+        except ContactError as exc:
+            error = exc
+        ranks.raise_any(error)
+        scale, what = max(m.E for m in scene.materials.values()), f"scene {scene.name} (efgm)"
+        interface = InterfaceOperator(G.tocsr(), gam_w, gam_pts)
+        if ranks.parallel:
+            system = distributed.DistributedEFGMSystem(K, constraints, loads, interface, scale, ranks,
+                                                       options.estimate_condition, what)
+        else:
+            system = EFGMSystem(K, constraints, loads, interface, scale,
+                                np.vstack([approx.dof_points(), constraints.points]), 2 * mls.reach,
+                                options.estimate_condition, what)
+    # the fields of the whole solution, on every rank (gathered: output only)
+    return Built(system, lambda x: EFGMFields(scene, approx, ranks.gather(x)[:approx.ndofs]), approx.ndofs, h=ns.h,
                  warnings=_dilation_warnings(degree, dmax, options.gauss is None, n),
                  record={"h": ns.h, "nodes": len(ns.x), "enriched_nodes": approx.enr.count, "dmax": dmax,
                          "weight": options.weight, "support": options.support, "gauss": n, "basis_degree": degree})

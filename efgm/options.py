@@ -27,7 +27,10 @@ class EFGM(Discretisation):
     function and support shape; ``nodes`` any (N, 2) point set instead of
     a grid (it must include nodes on the supported boundaries); ``gauss``
     points per direction of each background cell (default by degree); the
-    condition estimate only with ``estimate_condition``."""
+    condition estimate only with ``estimate_condition``; ``comm`` the
+    mpi4py communicator to spread the work over (default: ``COMM_WORLD``
+    when mpirun started several ranks, else one process without MPI;
+    :mod:`efgm.distributed`)."""
 
     degree: int = 1
     basis: str | None = None
@@ -37,6 +40,7 @@ class EFGM(Discretisation):
     nodes: object = field(default=None, compare=False)
     gauss: int | None = None
     estimate_condition: bool = False
+    comm: object = None
 
     name: ClassVar[str] = "efgm"
     paper_grid: ClassVar[str] = "efgm_nodes"

@@ -298,6 +298,8 @@ class MLS:
         if self.seen_from is not None and bodies is None:
             raise ValueError("efgm: shape functions with visibility need the body of each point")
         bodies = None if bodies is None else np.broadcast_to(np.asarray(bodies, int), (len(points),))
+        if len(points) == 0:  # a rank whose share of a rule is empty
+            return ShapeValues(np.full((0, 1), -1), np.zeros((0, 1)), np.zeros((0, 1, 2)))
         if len(points) <= CHUNK:
             return self._evaluate(points, bodies)
         parts = list(parallel_map(lambda i: self._evaluate(points[i:i + CHUNK],

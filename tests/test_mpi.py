@@ -1,5 +1,5 @@
-"""Under mpirun (issue 15): fe spread over the ranks gives the serial run's
-numbers; EFGM runs on rank 0; errors end in one line on every rank count,
+"""Under mpirun (issues 15, 16): fe, xfem and efgm spread over the ranks give the
+serial run's numbers; EFGM runs on rank 0; errors end in one line on every rank count,
 and no rank hangs.  Each case is a real ``mpirun`` of the command line."""
 import csv
 import os
@@ -70,18 +70,19 @@ def _parity(tmp_path, scene, ranks: int, degree: int, h: float, methods=("fe",))
                 assert _worst(f, parallel / f.relative_to(serial)) <= tol.PARALLEL_PARITY, f
 
 
-def test_fe_on_two_ranks_gives_the_serial_profiles_and_efgm_runs_on_rank_0(tmp_path):
-    _parity(tmp_path, "A", 2, 1, 0.1, methods=("fe", "efgm"))
+def test_every_method_on_two_ranks_gives_the_serial_profiles(tmp_path):
+    _parity(tmp_path, "A", 2, 1, 0.1, methods=("fe", "xfem", "efgm"))
 
 
 @pytest.mark.slow
 @pytest.mark.parametrize("ranks", [2, 3])
 @pytest.mark.parametrize("degree", [1, 2])
 @pytest.mark.parametrize("scene", ["A", "C", "C-coulomb"])
-def test_fe_parity(tmp_path, scene, degree, ranks):
+@pytest.mark.parametrize("method", ["fe", "xfem"])
+def test_parity(tmp_path, method, scene, degree, ranks):
     """Profiles, and for C-coulomb the interface history and every
     increment's iterations and open/stick/slip counts (increments.csv)."""
-    _parity(tmp_path, scene, ranks, degree, 0.1)
+    _parity(tmp_path, scene, ranks, degree, 0.1, methods=(method,))
 
 
 #: Scene A with Γ near its top, where some rank of a few is likely to own
@@ -90,9 +91,11 @@ NEAR_TOP = 0.9
 
 
 @pytest.mark.slow
-def test_ranks_without_gamma(tmp_path):
-    """A rank that owns no point of Γ takes part in every collective: the
-    profiles are still the serial ones.
+@pytest.mark.parametrize("method", ["FE", "XFEM"])
+def test_ranks_without_gamma(tmp_path, method):
+    """A rank that owns no point of Γ (and, Γ being near the top, likely no
+    cell of the + body) takes part in every collective: the profiles are
+    still the serial ones.
     Which partition has such a rank is dolfinx's choice, so rank counts are
     tried until one does (checked on the partition itself)."""
     from contactcore import LineInterface
@@ -102,17 +105,18 @@ def test_ranks_without_gamma(tmp_path):
                                                   profiles=base.profiles[3:4])))  # A4: σxx along y = 1
     probe = ("import sys\nfrom contactcore import load_scene, discretisation as d\n"
              "from contactcore.scaling import Scales\nfrom contactcore.result import Timings\n"
-             "from xdolfinx.options import FE\nscene = load_scene(sys.argv[1]); s = Scales.of(scene)\n"
-             "b = FE().build(s.scene(scene), d.Resolution(0.1 / s.length), Timings())\n"
-             "print('gamma points', b.system.interface.size, flush=True)\nb.system.close()")
+             f"from xdolfinx.options import {method}\nscene = load_scene(sys.argv[1]); s = Scales.of(scene)\n"
+             f"b = {method}().build(s.scene(scene), d.Resolution(0.1 / s.length), Timings())\n"
+             "from mpi4py import MPI\ncounts = MPI.COMM_WORLD.gather(b.system.interface.size)\n"
+             "if counts: print('gamma points', *counts, flush=True)\nb.system.close()")
     for ranks in (3, 4, 5, 6):
         out = mpirun(ranks, "-c", probe, scene)
-        counts = [int(line.split()[-1]) for line in out.stdout.splitlines() if line.startswith("gamma points")]
+        counts = [int(c) for line in out.stdout.splitlines() if line.startswith("gamma points") for c in line.split()[2:]]
         assert len(counts) == ranks and sum(counts) > 0, out.stdout + out.stderr
         if min(counts) == 0:
             break
     assert min(counts) == 0, "no partition of 3-6 ranks left a rank without Γ"
-    _parity(tmp_path, scene, ranks, 1, 0.1)
+    _parity(tmp_path, scene, ranks, 1, 0.1, methods=(method.lower(),))
 
 
 def _errors(out) -> list[str]:
@@ -122,21 +126,45 @@ def _errors(out) -> list[str]:
 def test_bad_input_under_mpirun_is_one_line(tmp_path):
     """A scene error (every rank meets it while reading), a solver error
     (friction that cannot carry the patch's shear: Newton's decisions are
-    collective, so every rank gives up together), a command that does not
-    run on mpirun's ranks, xfem (not distributed) and field files (written
-    from one process): one line each, exit 2, nothing written, no rank left
+    collective, so every rank gives up together) in fe and in xfem, and a
+    command that does not run on mpirun's ranks: one line each, exit 2, nothing written, no rank left
     waiting (the timeout would fail the test)."""
     bad = tmp_path / "bad.toml"
     bad.write_text(scene_toml(load_scene("A")).replace("E = 2e+11", "E = -1.0", 1))
     patch = interface_patch(30.0).scene
     slip = tmp_path / "slip.toml"
     slip.write_text(scene_toml(patch).replace('type = "linear"', 'type = "coulomb"\nmu = 0.2'))
+    # scene A with μ = 0.2: its shear 2.5e4 Pa exceeds μp = 2e4 Pa (no equilibrium); its mesh holds xfem's nodes
+    slip_a = tmp_path / "slip_a.toml"
+    slip_a.write_text(scene_toml(load_scene("A")).replace('type = "linear"', 'type = "coulomb"\nmu = 0.2'))
     for args, message in (
             (["run", bad, "--method", "fe"], "materials.minus.E"),
             (["run", slip, "--method", "fe", "--h", "0.1"], "failed after 6 cut-backs"),
+            (["run", slip_a, "--method", "xfem", "--h", "0.1"], "failed after"),
             (["study", "A", "--param", "kN", "--values", "1e9"], "spreads its cases over a pool"),
-            (["run", "A", "--method", "xfem", "--h", "0.2"], "xfem under mpirun"),
-            (["run", "A", "--method", "fe", "--h", "0.2", "--fields"], "--fields under mpirun")):
+):
         out = mpirun(2, "-m", "verification", *args, "--out", tmp_path / "o", timeout=120)
         assert out.returncode == 2 and len(_errors(out)) == 1 and message in _errors(out)[0], out.stderr
         assert not (tmp_path / "o").exists()
+
+
+@pytest.mark.slow
+def test_field_files_under_mpirun_are_the_serial_ones(tmp_path):
+    """``--fields`` on 2 ranks: each body's VTU (every rank's cells, in an
+    order no partition changes) and Γ's point clouds are the serial run's:
+    the same cells, the points and values to PARALLEL_PARITY."""
+    import meshio
+    args = ["run", "C-coulomb", "--method", "fe", "xfem", "--h", "0.2", "--no-plots", "--fields"]
+    assert main(args + ["--out", str(tmp_path / "s"), "--quiet"]) == 0
+    out = mpirun(2, "-m", "verification", *args, "--out", tmp_path / "p")
+    assert out.returncode == 0, out.stderr
+    files = sorted((tmp_path / "s").rglob("*.vtu"))
+    assert {f.name for f in files} >= {"minus.vtu", "plus.vtu", "interface_0000.vtu"}
+    for f in files:
+        a, b = meshio.read(f), meshio.read(tmp_path / "p" / f.relative_to(tmp_path / "s"))
+        # Γ's Gauss points are pushed through the cell a rank owns: the same to round-off
+        assert np.max(np.abs(a.points - b.points)) <= tol.PARALLEL_PARITY * np.max(np.abs(a.points)), f
+        assert all(np.array_equal(x.data, y.data) for x, y in zip(a.cells, b.cells)), f
+        for name, x in [*a.point_data.items(), *((k, v[0]) for k, v in a.cell_data.items())]:
+            y = b.point_data[name] if name in b.point_data else b.cell_data[name][0]
+            assert np.max(np.abs(x - y)) <= tol.PARALLEL_PARITY * max(np.max(np.abs(x)), np.finfo(float).tiny), (f, name)

@@ -212,3 +212,14 @@ def test_general_level_set_is_for_xfem_only():
     outside = LevelSetInterface(lambda x: x[:, 0] + 5.0, lambda x: np.tile([1.0, 0.0], (len(x), 1)))
     with pytest.raises(SceneError, match="interface: the level set does not change sign in the domain"):
         dataclasses.replace(patch.scene, interface=outside).validated()
+
+
+def test_a_node_within_round_off_of_gamma_lies_on_it():
+    """dolfinx pushes each node through one of its cells, so a node on Γ may
+    come out an ulp off it, on either side, depending on the cell (and the
+    rank): it still lies on Γ (H = +1).  A node off Γ by a distance the
+    tests place on purpose (1e-12 h, h = 0.05) keeps its side."""
+    scene = _tiny(LineInterface((0.0, 0.5), (0.0, 1.0)))
+    y = np.array([0.5, np.nextafter(0.5, 0.0), np.nextafter(0.5, 1.0), 0.5 - 5e-14, 0.5 + 5e-14])
+    coords = np.column_stack([np.full(len(y), 0.3), y])
+    assert list(xfem.node_sides(scene, coords)) == [1, 1, 1, -1, 1]

@@ -256,7 +256,7 @@ DISTRIBUTED = ("run", "timing")
 
 def _check_ranks(args) -> None:
     """Under mpirun with several ranks, ``run`` and ``timing`` solve fe and
-    xfem on all of them (EFGM on rank 0, the others waiting); the study
+    EFGM on all of them (xfem refuses); the study
     drivers spread their cases over a pool instead (``--workers``, or
     ``mpiexec -n K python -m mpi4py.futures``), so they are refused here,
     once, before any rank writes."""
@@ -266,9 +266,6 @@ def _check_ranks(args) -> None:
     if args.command not in DISTRIBUTED:
         raise ContactError(f"mpirun: '{args.command}' spreads its cases over a pool, not over mpirun's ranks: run "
                            f"it with --workers K, or under mpiexec -n K python -m mpi4py.futures -m verification")
-    if getattr(args, "fields", False):
-        raise ContactError("--fields under mpirun: field files are written from one process; run without mpirun "
-                           "(the profiles and summaries are the same)")
 
 
 def _abort_on(exc: BaseException) -> None:
@@ -287,7 +284,7 @@ def main(argv=None) -> int:
     rank = launched_rank()
     repeats = _configure_logging(args.verbosity if rank == 0 else -2)  # one log, rank 0's
     try:
-        if distributed():  # PETSc starts collectively: every rank now, not rank 0 alone later (EFGM)
+        if distributed():  # PETSc starts collectively: every rank now, before any method needs it
             from petsc4py import PETSc  # noqa: F401
         _check_ranks(args)
         _check_sizes(args)

@@ -36,9 +36,15 @@ FLAGS = {"petsc_options": "--petsc-option", "cell": "--cell", "dmax": "--dmax", 
 #: Methods whose fields live on a dolfinx mesh, so XDMF output exists.
 WITH_XDMF = ("fe", "xfem")
 
-#: Methods whose solve spreads over mpirun's ranks (dolfinx and PETSc own
-#: the partition); the others run on rank 0 while the rest wait.
-DISTRIBUTED = ("fe",)
+#: Methods whose solve spreads over mpirun's ranks (fe and xfem: dolfinx
+#: and PETSc own the partition; efgm: its cells, Γ's points and rows split
+#: in fixed contiguous ranges, :mod:`efgm.distributed`); any other runs on
+#: rank 0 while the rest wait.
+DISTRIBUTED = ("fe", "xfem", "efgm")
+
+#: Methods that start no MPI outside mpirun (their ``comm`` None is one
+#: process there): a driver hands them a communicator only under a launcher.
+MPI_FREE = ("efgm",)
 
 
 def solver(name: str):

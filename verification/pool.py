@@ -28,6 +28,8 @@ import os
 import sys
 from concurrent.futures import Executor, Future, ProcessPoolExecutor
 
+from contactcore.collective import launched_size
+
 from . import methods
 
 
@@ -45,7 +47,7 @@ class Serial(Executor):
 
 def _launched_size() -> int:
     """How many ranks mpiexec started (1 without it), read from its environment."""
-    return next((int(os.environ[n]) for n in ("OMPI_COMM_WORLD_SIZE", "PMI_SIZE") if n in os.environ), 1)
+    return launched_size()
 
 
 def launched_rank() -> int:
@@ -157,11 +159,13 @@ def petsc_on_self() -> None:
 
 def solver(name: str):
     """Method ``name``'s solve for one case, and the options that put it on
-    its own communicator (``COMM_SELF`` for the dolfinx methods, which take
-    ``comm``): a case never shares its mesh with the other workers."""
+    its own communicator (``COMM_SELF`` for the methods that take ``comm``;
+    for one that starts no MPI outside a launcher, :data:`methods.MPI_FREE`,
+    only under one): a case never shares its mesh or its rows with the
+    other workers."""
     petsc_on_self()
     solve = methods.solver(name)
-    if not methods.takes(name, "comm"):
+    if not methods.takes(name, "comm") or (name in methods.MPI_FREE and _launched_size() == 1):
         return solve, {}
     from mpi4py import MPI
     return solve, {"comm": MPI.COMM_SELF}

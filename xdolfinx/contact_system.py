@@ -69,20 +69,29 @@ class GhostExchange:
     block size, on ``comm``): ``forward`` owned values -> local values (owned, then the
     ghosts this rank sees), ``reverse`` local contributions -> their sums on
     the owners (owned values).  ``ranks`` reduces over the map's
-    communicator."""
+    communicator.
 
-    def __init__(self, index_map, bs: int, comm):
+    ``order`` (optional) gives, for each block of the caller's own local
+    numbering, its local index in ``index_map`` (a permutation): XFEM's
+    local blocks are V's nodes then the enriched ones, while an index map
+    lists every owned block before any ghost."""
+
+    def __init__(self, index_map, bs: int, comm, order: np.ndarray | None = None):
         self.vector = la.vector(index_map, bs)
         self.owned_size = index_map.size_local * bs
         self.local_size = (index_map.size_local + index_map.num_ghosts) * bs
         self.ranks = Collective(comm)
+        self.order = None if order is None else (np.asarray(order, np.int64)[:, None] * bs + np.arange(bs)).ravel()
 
     def forward(self, owned: np.ndarray) -> np.ndarray:
         self.vector.array[:self.owned_size] = owned
         self.vector.scatter_forward()
-        return self.vector.array.copy()
+        return self.vector.array.copy() if self.order is None else self.vector.array[self.order]
 
     def reverse(self, local: np.ndarray) -> np.ndarray:
-        self.vector.array[:] = local
+        if self.order is None:
+            self.vector.array[:] = local
+        else:
+            self.vector.array[self.order] = local
         self.vector.scatter_reverse(la.ScatterMode.add)
         return self.vector.array[:self.owned_size].copy()

@@ -79,6 +79,27 @@ class BodyCellLocator:
         return out, dist, key
 
 
+    def choose(self, points: np.ndarray, bodies: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """The cell of each point (:meth:`cells_and_distances`) and whether
+        this rank evaluates it.  Under mpirun a collective call: each point
+        goes to the cell the rule picks among every rank's (holding it, else
+        nearest; the first midpoint on a tie), and only that cell's rank
+        evaluates it; :meth:`combine` then gives every rank the values."""
+        cells, dist, key = self.cells_and_distances(points, bodies)
+        mine = cells >= 0
+        comm = self.msh.comm
+        if comm.size > 1:
+            dists, keys = np.array(comm.allgather(dist)), np.array(comm.allgather(key))
+            mine &= np.lexsort((keys[..., 1], keys[..., 0], dists), axis=0)[0] == comm.rank
+        return cells, mine
+
+    def combine(self, values: np.ndarray) -> np.ndarray:
+        """Every rank's evaluations (zero where it did not evaluate) summed:
+        each point's value, on every rank."""
+        comm = self.msh.comm
+        return values if comm.size == 1 else comm.allreduce(values, op=MPI.SUM)
+
+
 class BodyFields:
     """The :class:`contactcore.result.Fields` of per-body dolfinx functions.
 
@@ -90,18 +111,10 @@ class BodyFields:
         self.locator, self.displacements, self.stresses = locator, displacements, stresses
 
     def _eval(self, functions, points, bodies) -> np.ndarray:
-        """Under mpirun a collective call: every rank evaluates the points in
-        its owned cells, and each point takes the value of the cell the
-        locator's rule picks among every rank's (holding it, else nearest;
-        the first midpoint on a tie)."""
+        """Under mpirun a collective call (:meth:`BodyCellLocator.choose`)."""
         points = np.asarray(points, float)[:, :2]
         bodies = np.asarray(bodies, int)
-        cells, dist, key = self.locator.cells_and_distances(points, bodies)
-        comm = self.locator.msh.comm
-        mine = cells >= 0
-        if comm.size > 1:  # the locator's rule over every rank's candidates; only the winner evaluates
-            dists, keys = np.array(comm.allgather(dist)), np.array(comm.allgather(key))
-            mine &= np.lexsort((keys[..., 1], keys[..., 0], dists), axis=0)[0] == comm.rank
+        cells, mine = self.locator.choose(points, bodies)
         p3 = np.zeros((len(points), 3))
         p3[:, :2] = points
         out = np.zeros((len(points), int(np.prod(functions[0].function_space.element.value_shape))))
@@ -109,7 +122,7 @@ class BodyFields:
             sel = np.flatnonzero((bodies == b) & mine)
             if len(sel):
                 out[sel] = fn.eval(p3[sel], cells[sel]).reshape(len(sel), -1)
-        return out if comm.size == 1 else comm.allreduce(out, op=MPI.SUM)
+        return self.locator.combine(out)
 
     def displacement(self, points, bodies) -> np.ndarray:
         return self._eval(self.displacements, points, bodies)

@@ -15,7 +15,11 @@ wrapper, :func:`contactcore.result.method_fields`), mapped into the user's
 frame by the wrappers' placement; the values are those of the Result's
 public fields at the mapped points, so they are in the user's units and
 equal to what the profiles sample.  Numbers only: the caller writes them.
-Serial only.
+
+Under mpirun every rank contributes the cells it owns and every rank gets
+the whole body (a collective call): vertices are keyed by dolfinx's input
+index of the geometry node and cells ordered by their sorted vertex keys,
+an order no partition changes, so rank 0 writes the serial run's files.
 """
 from __future__ import annotations
 
@@ -54,15 +58,28 @@ def body_mesh(fields, body: int) -> BodyMesh:
     dofmap = msh.geometry.dofmap
     per_cell = int(np.diff(dofmap.offsets)[0])
     conn = dofmap.array.reshape(-1, per_cell)[inner.locator.body_cells[body]][:, order]  # vertices come first
-    nodes, inverse = np.unique(conn, return_inverse=True)
-    cells = inverse.reshape(conn.shape)
-    points = placement.to_user(msh.geometry.x[nodes])
+    keys = np.asarray(msh.geometry.input_global_indices, np.int64)[conn]  # the same on every partition
+    coords = msh.geometry.x[conn][..., :2]
+    if msh.comm.size > 1:
+        keys, coords = (np.concatenate(msh.comm.allgather(a)) for a in (keys, coords))
+    keys, coords = _in_key_order(keys, coords)
+    nodes, first, inverse = np.unique(keys, return_index=True, return_inverse=True)
+    cells = inverse.reshape(keys.shape)
+    points = placement.to_user(coords.reshape(-1, 2)[first])
     clockwise = signed_areas(points, cells) < 0  # a mapping or mesh generator may mirror cells
     cells[clockwise] = cells[clockwise, ::-1]
     centroids = points[cells].mean(axis=1)
     return BodyMesh(points=points, cells=cells, cell_type=cell_name,
                     u=fields.displacement(points, np.full(len(points), body)),
                     sigma=fields.stress(centroids, np.full(len(cells), body)))
+
+
+def _in_key_order(keys: np.ndarray, coords: np.ndarray):
+    """Cells (rows of vertex ``keys``, with their ``coords``) sorted by
+    their sorted vertex keys: an order that no numbering or partition of
+    the mesh changes."""
+    order = np.lexsort(np.sort(keys, axis=1).T[::-1])
+    return keys[order], coords[order]
 
 
 def signed_areas(points: np.ndarray, cells: np.ndarray) -> np.ndarray:

@@ -20,7 +20,15 @@ node).  One PETSc matrix of block size 2 covers both; its preallocation is
 the cells' couplings (every cell couples its nodes' blocks, a band cell
 also their enrichments).  Away from the band dolfinx assembles the standard
 elasticity from UFL into it; band cells are added by our kernels
-(``setValuesBlockedLocal``).  Serial only, like the Newton driver.
+(``setValuesBlockedLocal``).
+
+Under mpirun every rank numbers its own blocks, as dolfinx_mpc does for its
+constraints: its owned nodes' u, then its owned enriched nodes' a, from the
+rank's offset (:attr:`EnrichedFunctionSpace.numbering`), so PETSc's rows
+stay contiguous per rank.  Which nodes are enriched is decided by each
+node's owner from the cut energy summed over every rank's cells and sent to
+the ranks that ghost it; each rank integrates the band cells it owns, and
+dolfinx's sparsity pattern and scatters carry the rest.
 
 Cut cells are split along the exact Γ (:mod:`contactcore.cutcell`), each
 piece integrated with its body's material; the interface law is integrated
@@ -30,8 +38,10 @@ these would create a false normal traction of (k_N/k_T)(h/2R)|t_T|).
 from __future__ import annotations
 
 import functools
+from dataclasses import dataclass
 
 import basix
+import dolfinx.cpp as _cpp
 import numpy as np
 import scipy.sparse as sp
 import ufl
@@ -49,11 +59,12 @@ from contactcore.geometry import LevelSetInterface, Rectangle, tangent_of
 from contactcore.assembly import Triplets
 from contactcore.bodies import index_of_sign, sign_of, sign_of_index
 from contactcore.bodies import side as side_of
+from contactcore.collective import Collective
 from contactcore.constraints import Constraints
 from contactcore.newton import InterfaceOperator
 from contactcore.scene import BodyForce, Pressure, Torque, Traction, body_force
 
-from .contact_system import PETScSystem
+from .contact_system import GhostExchange, PETScSystem
 from .elasticity import sigma
 from .evaluation import BodyCellLocator
 from .options import XFEM, XFEM_CELLS
@@ -158,15 +169,44 @@ def cell_counts(scene: Scene, h: float) -> list[int]:
     return [max(1, round(s / h)) for s in scene.domain.size]
 
 
+@dataclass(frozen=True)
+class BlockNumbering:
+    """A rank's blocks of XFEM unknowns in the global numbering: dolfinx's
+    ``index_map`` of them (owned: the rank's nodes' u then its enriched
+    nodes' a; ghosts after), ``global_blocks`` the global block of each
+    local block (V's nodes, then the enriched ones), ``order`` the index
+    map's local index of each local block, ``owned`` the local blocks
+    this rank owns, in the order of its rows."""
+
+    index_map: object
+    global_blocks: np.ndarray
+    order: np.ndarray
+    owned: np.ndarray
+
+
+def node_sides(scene: Scene, coords: np.ndarray) -> np.ndarray:
+    """The side (±1) of mesh nodes, a node within NODE_ON_INTERFACE of Γ
+    on Γ (+1): the same for every cell and rank that computed its
+    coordinates (:data:`contactcore.tolerances.NODE_ON_INTERFACE`).  The
+    distance is |φ|/|∇φ| (φ itself for a line or a circle)."""
+    itf = scene.interface
+    phi = itf.phi(coords)
+    distance = np.abs(phi)
+    if isinstance(itf, LevelSetInterface):
+        distance = distance / np.linalg.norm(itf.grad_fn(coords), axis=1)
+    return np.where(distance <= tol.NODE_ON_INTERFACE * scene.length_scale, 1, side_of(itf, coords))
+
+
 class EnrichedFunctionSpace:
     """dolfinx's vector space V of the standard part, decorated with the
     Heaviside enrichment of a level set: which nodes are enriched, the
     numbering of their enriched blocks, the quadrature of each band cell,
     and the shape functions there.
 
-    Unknowns (unrolled, block size 2): ``2·node + j`` for u_j of a node (V's
-    own numbering), ``2·(nodes + e) + j`` for a_j of the e-th enriched node
-    (in node order)."""
+    Local unknowns (unrolled, block size 2): ``2·node + j`` for u_j of a
+    node (V's own local numbering, owned nodes then ghosts),
+    ``2·(nodes + e) + j`` for a_j of the e-th enriched node (in node order);
+    :attr:`numbering` maps them to the global rows (the same in serial)."""
 
     def __init__(self, msh, degree: int, scene: Scene, gauss: int):
         self.msh, self.scene, self.degree, self.gauss = msh, scene, degree, gauss
@@ -191,8 +231,11 @@ class EnrichedFunctionSpace:
         area2 = np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
         self.corners = np.where((area2 < 0)[:, None, None], corners[:, ::-1], corners)
         self.cell_dofs = self.V.dofmap.list.array.reshape(self.num_cells, -1)  # block (node) indices
-        coords = self.V.tabulate_dof_coordinates()[:, :2]
-        self.node_side = side_of(scene.interface, coords)
+        self.owned_nodes = self.V.dofmap.index_map.size_local  # the others are ghosts (mpirun)
+        self.owned_cells = msh.topology.index_map(tdim).size_local
+        self.ranks = Collective(msh.comm)
+        self.node_exchange = GhostExchange(self.V.dofmap.index_map, 1, msh.comm)
+        self.node_side = node_sides(scene, self.V.tabulate_dof_coordinates()[:, :2])
         self._classify()
 
     def _classify(self) -> None:
@@ -201,6 +244,9 @@ class EnrichedFunctionSpace:
         A node is enriched when part of its support's stiffness lies on the
         other side of Γ (see MIN_CUT_FRACTION): the nodes of cut cells, and also nodes
         on Γ (H = +1) whose support reaches − cells when Γ runs along edges.
+        Under mpirun each cell's stiffness is counted by the rank that owns
+        the cell, summed on the node's owner, which decides and tells the
+        ranks that ghost the node: every rank sees the same enrichment.
         """
         itf = self.scene.interface
         centre = self.corners.mean(axis=1)
@@ -235,16 +281,20 @@ class EnrichedFunctionSpace:
                 self.depth[c] = self._depths(parts, self.corners[c], corner_phi[c])
             elif parts:
                 self.cell_side[c] = parts[0][0]
+            if c >= self.owned_cells:  # a ghost cell: its owner counts it
+                continue
             dofs = self.cell_dofs[c]
             for side, pts, w, N, dN in parts:
                 energy = w @ np.sum(dN ** 2, axis=-1)
                 total[dofs] += energy
                 across[dofs] += energy * (self.node_side[dofs] != side)
-        self.enriched = across > MIN_CUT_FRACTION * np.where(total > 0, total, 1.0)
-        if not self.enriched.any():
+        across, total = self.node_exchange.reverse(across), self.node_exchange.reverse(total)
+        owned = across > MIN_CUT_FRACTION * np.where(total > 0, total, 1.0)
+        self.enriched = self.node_exchange.forward(owned.astype(float)) > 0.5
+        if self.ranks.sum(int(np.count_nonzero(owned))) == 0:
             raise DiscretisationError("xfem: Γ crosses no cell of the mesh")
         self.band = np.flatnonzero(np.any(self.enriched[self.cell_dofs], axis=1))
-        if self.curved[self.band].any():
+        if not self.ranks.all(not self.curved[self.band].any()):
             raise DiscretisationError("xfem: Γ reaches a curved cell of the rim (its cut-cell quadrature assumes "
                                       "straight cells there); refine h")
 
@@ -299,52 +349,101 @@ class EnrichedFunctionSpace:
 
     @property
     def num_enriched(self) -> int:
+        """Enriched nodes this rank sees (owned and ghosts)."""
         return int(self.enriched.sum())
 
     @property
     def num_blocks(self) -> int:
-        """Blocks (pairs of unknowns): every node's u, the enriched nodes' a."""
+        """This rank's local blocks (pairs of unknowns): every node's u, the
+        enriched nodes' a (owned and ghosts)."""
         return len(self.enriched) + self.num_enriched
+
+    @property
+    def owned_band(self) -> np.ndarray:
+        """The band cells this rank owns: each cell is integrated once, by its owner."""
+        return self.band[self.band < self.owned_cells]
 
     @functools.cached_property
     def enriched_blocks(self) -> np.ndarray:
-        """(nodes,): the block of each node's a, ``nodes + e`` for the e-th
-        enriched node, −1 where the node is not enriched.  Fixed at first use."""
+        """(nodes,): the local block of each node's a, ``nodes + e`` for the
+        e-th enriched node (in node order: the owned ones first), −1 where
+        the node is not enriched.  Fixed at first use."""
         out = np.full(len(self.enriched), -1, dtype=np.int64)
         out[self.enriched] = len(self.enriched) + np.arange(self.num_enriched)
         return out
 
+    @functools.cached_property
+    def numbering(self) -> "BlockNumbering":
+        """The global numbering of this rank's local blocks (module doc):
+        rank r owns ``offset_r + [0, n_r)`` for its nodes' u and
+        ``offset_r + n_r + [0, e_r)`` for its enriched nodes' a; a ghost
+        takes its owner's numbers, sent by dolfinx's forward scatter.  In
+        serial: u of node i is block i, a of the e-th enriched node is
+        block ``nodes + e``.  Fixed at first use."""
+        comm, imap = self.msh.comm, self.V.dofmap.index_map
+        n_owned, n_local = self.owned_nodes, len(self.enriched)
+        enriched = np.flatnonzero(self.enriched)
+        e_owned = int(np.count_nonzero(enriched < n_owned))
+        offset = (comm.exscan(n_owned + e_owned) if comm.size > 1 else 0) or 0  # exscan gives None on rank 0
+        own = np.full((n_owned, 2), -1.0)
+        own[:, 0] = offset + np.arange(n_owned)
+        own[enriched[:e_owned], 1] = offset + n_owned + np.arange(e_owned)
+        glob = np.rint(GhostExchange(imap, 2, comm).forward(own.ravel())).astype(np.int64).reshape(-1, 2)
+        ghost_enriched = enriched[e_owned:]
+        index_map = _cpp.common.IndexMap(
+            comm, n_owned + e_owned, np.concatenate([glob[n_owned:, 0], glob[ghost_enriched, 1]]),
+            np.concatenate([imap.owners, imap.owners[ghost_enriched - n_owned]]).astype(np.int32))
+        n_ghosts, owned_total = n_local - n_owned, n_owned + e_owned
+        order = np.concatenate([np.arange(n_owned), owned_total + np.arange(n_ghosts), n_owned + np.arange(e_owned),
+                                owned_total + n_ghosts + np.arange(len(ghost_enriched))])
+        return BlockNumbering(index_map, np.concatenate([glob[:, 0], glob[enriched, 1]]), order,
+                              np.concatenate([np.arange(n_owned), n_local + np.arange(e_owned)]))
+
+    @functools.cached_property
+    def exchange(self) -> GhostExchange:
+        """Ghost updates of the unknowns in the local block numbering."""
+        num = self.numbering
+        return GhostExchange(num.index_map, 2, self.msh.comm, num.order)
+
+    def owned_rows(self, local_flags: np.ndarray) -> np.ndarray:
+        """The owned unknowns (rows) that some rank flagged among its local
+        ones (``local_flags`` in the unrolled local numbering)."""
+        return np.flatnonzero(self.exchange.reverse(np.asarray(local_flags, float)) > 0)
+
     def cell_blocks(self, cells) -> np.ndarray:
-        """(..., 2n): the blocks of cells in the kernels' layout, per node its
+        """(..., 2n): the local blocks of cells in the kernels' layout, per node its
         u then its a (−1 where not enriched: PETSc skips negative indices)."""
         dofs = self.cell_dofs[cells]
         return np.stack([dofs, self.enriched_blocks[dofs]], axis=-1).reshape(dofs.shape[:-1] + (-1,))
 
     def node_values(self, x: np.ndarray) -> np.ndarray:
-        """(nodes, 4): ``[u_x, u_y, a_x, a_y]`` of each node from the unknowns
-        ``x`` (a = 0 where the node is not enriched)."""
+        """(nodes, 4): ``[u_x, u_y, a_x, a_y]`` of each local node from the
+        owned unknowns ``x`` (ghosts by the forward scatter; a = 0 where the
+        node is not enriched)."""
+        local = self.exchange.forward(x)
         n = len(self.enriched)
         out = np.zeros((n, 4))
-        out[:, :2] = x[:2 * n].reshape(n, 2)
-        out[self.enriched, 2:] = x[2 * n:].reshape(-1, 2)
+        out[:, :2] = local[:2 * n].reshape(n, 2)
+        out[self.enriched, 2:] = local[2 * n:].reshape(-1, 2)
         return out
 
     def create_matrix(self) -> PETSc.Mat:
-        """An AIJ matrix of block size 2 over :attr:`num_blocks`, with room
-        for exactly the cells' couplings ``P = CᵀC``, C the (cells × blocks)
-        incidence of :meth:`cell_blocks`; local numbering = global (serial),
-        so dolfinx's assembler (V's dofmap) and the band kernels both write
-        into it with ``setValuesBlockedLocal``."""
-        comm = self.msh.comm  # one process: build() refuses mpirun
-        blocks = self.cell_blocks(np.arange(self.num_cells))
-        cells, k = np.nonzero(blocks >= 0)
-        C = sp.csr_matrix((np.ones(len(cells)), (cells, blocks[cells, k])), shape=(self.num_cells, self.num_blocks))
-        S = sp.kron((C.T @ C).tocsr(), np.ones((2, 2)), format="csr")
-        S.sort_indices()
-        A = PETSc.Mat().createAIJ(2 * self.num_blocks, bsize=2, comm=comm,
-                                  csr=(S.indptr.astype(PETSc.IntType), S.indices.astype(PETSc.IntType)))
-        lgmap = PETSc.LGMap().create(np.arange(self.num_blocks, dtype=PETSc.IntType), bsize=2, comm=comm)
+        """An AIJ matrix of block size 2 over the blocks of :attr:`numbering`,
+        with room for exactly the cells' couplings (every owned cell couples
+        the blocks of :meth:`cell_blocks`; dolfinx's sparsity pattern sends
+        the rows other ranks own to them), addressed in the local block
+        numbering, so dolfinx's assembler (V's dofmap) and the band kernels
+        both write into it with ``setValuesBlockedLocal``."""
+        comm, num = self.msh.comm, self.numbering
+        pattern = _cpp.la.SparsityPattern(comm, [num.index_map, num.index_map], [2, 2])
+        for blocks in self.cell_blocks(np.arange(self.owned_cells)):
+            mapped = num.order[blocks[blocks >= 0]].astype(np.int32)
+            pattern.insert(mapped, mapped)
+        pattern.assemble()
+        A = _cpp.la.petsc.create_matrix(comm, pattern)
+        lgmap = PETSc.LGMap().create(num.global_blocks.astype(PETSc.IntType), bsize=2, comm=comm)
         A.setLGMap(lgmap, lgmap)
+        lgmap.destroy()
         return A
 
     def tabulate(self, cell: int, points: np.ndarray):
@@ -419,8 +518,9 @@ def band_kernels(space: EnrichedFunctionSpace, D: np.ndarray):
     body's D (the interface is :func:`interface_operator`'s).  Cells that Γ
     does not cut share the reference cell's rule (mapped affinely) and are
     computed together."""
-    whole = np.array([c for c in space.band if c not in space.regions], dtype=np.int64)
-    for c in (c for c in space.band if c in space.regions):
+    band = space.owned_band
+    whole = np.array([c for c in band if c not in space.regions], dtype=np.int64)
+    for c in (c for c in band if c in space.regions):
         K = np.zeros((4 * space.cell_dofs.shape[1],) * 2)
         for side, _, w, _, dN in space.regions[c]:
             K += _stiffness(_strain_matrix(dN, space.coefficients(c, side)), w, D[index_of_sign(side)])
@@ -444,7 +544,7 @@ def interface_operator(space: EnrichedFunctionSpace) -> InterfaceOperator:
     trip = Triplets((0, 2 * space.num_blocks))
     points, weights = [], []
     m = 0
-    for c in (c for c in space.band if c in space.gamma_rules):
+    for c in (c for c in space.owned_band if c in space.gamma_rules):
         pts, w, normals = space.gamma_rules[c]
         dofs = space.cell_dofs[c]
         keep = space.enriched[dofs]
@@ -458,7 +558,9 @@ def interface_operator(space: EnrichedFunctionSpace) -> InterfaceOperator:
         weights.append(w)
         m += len(w)
     trip.shape = (2 * m, trip.shape[1])
-    return InterfaceOperator(trip.to_csr(), np.concatenate(weights), np.concatenate(points))
+    return InterfaceOperator(trip.to_csr(), np.concatenate(weights) if weights else np.zeros(0),
+                             np.concatenate(points) if points else np.zeros((0, 2)),
+                             space.exchange if space.ranks.parallel else None)
 
 
 def band_loads(space: EnrichedFunctionSpace, load):
@@ -474,7 +576,7 @@ def band_loads(space: EnrichedFunctionSpace, load):
 
 def _band_body_loads(space: EnrichedFunctionSpace, load):
     side = sign_of_index(BODIES.index(load.body))
-    for c in space.band:
+    for c in space.owned_band:
         f = np.zeros(4 * len(space.cell_dofs[c]))
         for _, pts, w, N in (part for part in space.cell_values(c) if part[0] == side):
             force = np.column_stack(body_force(space.scene, load, pts[:, 0], pts[:, 1]))
@@ -485,7 +587,8 @@ def _band_body_loads(space: EnrichedFunctionSpace, load):
 def _band_edge_loads(space: EnrichedFunctionSpace, load):
     scene = space.scene
     g, gw = gauss01(space.gauss)
-    corners = space.corners[space.band]
+    band = space.owned_band
+    corners = space.corners[band]
     count = corners.shape[1]
     on = scene.domain.on_boundary(load.boundary, corners.reshape(-1, 2), tol.NODE_MATCH * scene.length_scale)
     on = on.reshape(-1, count)
@@ -495,7 +598,7 @@ def _band_edge_loads(space: EnrichedFunctionSpace, load):
     t = (np.asarray(load.value, float) if isinstance(load, Traction)
          else -load.value * scene.domain.outward_normal(load.boundary))
     for k in np.flatnonzero(along.any(axis=1)):
-        c = space.band[k]
+        c = band[k]
         f = np.zeros(4 * len(space.cell_dofs[c]))
         for i in np.flatnonzero(along[k]):
             a, b = corners[k, i], corners[k, (i + 1) % count]
@@ -570,20 +673,25 @@ def _forms(space: EnrichedFunctionSpace, cell_tags, facet_tags):
 
 
 def _load_vector(space: EnrichedFunctionSpace, L, load) -> np.ndarray:
-    """One load's vector: UFL outside the band (V's part), our kernels inside."""
-    b = fem_petsc.assemble_vector(L)
-    out = np.zeros(2 * space.num_blocks)
-    out[:b.getLocalSize()] = b.getArray()
-    b.destroy()
+    """One load's vector on the owned unknowns: UFL outside the band (V's
+    part), our kernels on the band cells this rank owns, each summed onto
+    the owners of its rows."""
+    local = np.zeros(2 * space.num_blocks)
     for blocks, f in band_loads(space, load):
         index = (2 * blocks[:, None] + np.arange(2)).ravel()
         keep = np.repeat(blocks >= 0, 2)
-        np.add.at(out, index[keep], f[keep])
+        np.add.at(local, index[keep], f[keep])
+    out = space.exchange.reverse(local)
+    b = fem_petsc.assemble_vector(L)
+    b.ghostUpdate(addv=PETSc.InsertMode.ADD, mode=PETSc.ScatterMode.REVERSE)
+    out[:b.getLocalSize()] += b.getArray()
+    b.destroy()
     return out
 
 
 class XFEMFields:
-    """Displacement and stress of either body at arbitrary points.
+    """Displacement and stress of either body at arbitrary points; under
+    mpirun a collective call (:meth:`BodyCellLocator.choose`).
 
     Degree 1: a body's stress is recovered (:meth:`_recovered`, after
     Zienkiewicz and Zhu's patch recovery), not read from the cell's own
@@ -599,18 +707,19 @@ class XFEMFields:
     def _eval(self, points, bodies, gradient: bool) -> np.ndarray:
         points = np.asarray(points, float)[:, :2]
         bodies = np.asarray(bodies)
-        cells = self.locator.cells(points, bodies)
+        cells, mine = self.locator.choose(points, bodies)
         out = np.zeros((len(points), 3 if gradient else 2))
         if gradient and self.space.degree == 1:
             for body in np.unique(bodies):
-                sel = np.flatnonzero(bodies == body)
+                self._body_samples(int(body))  # collective: every rank, whatever points it evaluates
+                sel = np.flatnonzero(mine & (bodies == body))
                 out[sel] = self._recovered(cells[sel], int(body), points[sel])
-            return out
-        for c in np.unique(cells):
-            for body in np.unique(bodies[cells == c]):
-                sel = np.flatnonzero((cells == c) & (bodies == body))
+            return self.locator.combine(out)
+        for c in np.unique(cells[mine]):
+            for body in np.unique(bodies[mine & (cells == c)]):
+                sel = np.flatnonzero(mine & (cells == c) & (bodies == body))
                 out[sel] = self._local(c, int(body), points[sel], gradient)
-        return out
+        return self.locator.combine(out)
 
     def _local(self, c: int, body: int, points: np.ndarray, gradient: bool) -> np.ndarray:
         """u (P, 2) or Voigt σ (P, 3) of ``body``'s polynomial in cell ``c`` at ``points``."""
@@ -623,14 +732,21 @@ class XFEMFields:
         return np.column_stack([eps[:, 0, 0], eps[:, 1, 1], eps[:, 0, 1] + eps[:, 1, 0]]) @ self.D[body].T
 
     def _body_samples(self, body: int):
-        """``(index, centroids, areas, σ, patches)`` of ``body``'s resolving
-        cells: index (cells,) of each cell among them (−1 if not one), the
-        centroid and area of the body's part of each, the cell's own σ there,
-        and the cells within RECOVERY_RINGS vertex rings of each cell (CSR)."""
+        """``(index, centroids, areas, σ, patches, rows)`` of ``body``'s
+        resolving cells, over every rank's cells (a collective call under
+        mpirun): index (cells,) of each cell among the samples (−1 if not
+        one), the centroid and area of the body's part of each, the cell's
+        own σ there, the cells within RECOVERY_RINGS vertex rings of each
+        cell (CSR), and ``rows`` the row of each of this rank's owned cells.
+        Each rank samples the cells it owns; the cells, keyed by their
+        nodes' global blocks, and the samples are gathered in rank order
+        (serial: the local order), so a patch is the same on any partition
+        (a ghost layer of one cell would cut a patch of two rings)."""
         if body in self._samples:
             return self._samples[body]
         space, side = self.space, sign_of_index(body)
         cells = space.cells_resolving(side)
+        cells = cells[cells < space.owned_cells]  # each cell sampled by its owner
         centroids, areas, sig = np.zeros((len(cells), 2)), np.zeros(len(cells)), np.zeros((len(cells), 3))
         # whole (uncut, affine) cells at once: the reference rule's centroid, mapped
         whole = np.array([c not in space.regions and not space.curved[c] for c in cells], dtype=bool)
@@ -653,15 +769,23 @@ class XFEMFields:
             pts, wt = np.vstack([p for p, _ in parts]), np.concatenate([q for _, q in parts])
             areas[n], centroids[n] = wt.sum(), wt @ pts / wt.sum()
             sig[n] = self._local(c, body, centroids[n:n + 1], True)[0]
-        index = np.full(space.num_cells, -1)
+        owned = np.arange(space.owned_cells)
+        index = np.full(space.owned_cells, -1)
         index[cells] = np.arange(len(cells))
-        dofs = space.cell_dofs
-        incidence = sp.csr_matrix((np.ones(dofs.size), (np.repeat(np.arange(len(dofs)), dofs.shape[1]), dofs.ravel())))
+        ranks = space.ranks
+        start = int(np.sum(ranks.gather(np.array([len(cells)]))[:ranks.rank]))
+        rows = int(np.sum(ranks.gather(np.array([len(owned)]))[:ranks.rank])) + owned
+        index = ranks.gather(np.where(index >= 0, index + start, -1))
+        centroids, areas, sig = (ranks.gather(a) for a in (centroids, areas, sig))
+        keys = ranks.gather(space.numbering.global_blocks[space.cell_dofs[owned]])  # a node: the same key on every rank
+        nodes, inverse = np.unique(keys, return_inverse=True)
+        incidence = sp.csr_matrix((np.ones(keys.size), (np.repeat(np.arange(len(keys)), keys.shape[1]), inverse.ravel())),
+                                  shape=(len(keys), len(nodes)))
         ring = (incidence @ incidence.T).tocsr()
         patches = ring
         for _ in range(RECOVERY_RINGS - 1):
             patches = (patches @ ring).tocsr()
-        self._samples[body] = (index, centroids, areas, sig, patches)
+        self._samples[body] = (index, centroids, areas, sig, patches, rows)
         return self._samples[body]
 
     def _recovered(self, cells: np.ndarray, body: int, points: np.ndarray) -> np.ndarray:
@@ -671,12 +795,12 @@ class XFEMFields:
         RECOVERY_RINGS vertex rings of the point's cell: quadratic, or linear
         where the patch has too few independent samples for a quadratic (then
         the cell's own field where it has too few for a line)."""
-        index, centroids, areas, sig, patches = self._body_samples(body)
+        index, centroids, areas, sig, patches, rows = self._body_samples(body)
         fits = self._fits.setdefault(body, {})
-        todo = np.setdiff1d(np.unique(cells), np.fromiter(fits, dtype=np.int64, count=len(fits)))
+        todo = np.setdiff1d(np.unique(rows[cells]), np.fromiter(fits, dtype=np.int64, count=len(fits)))
         for start in range(0, len(todo), _FIT_BATCH):
             fits.update(self._fit(todo[start:start + _FIT_BATCH], index, centroids, areas, sig, patches))
-        origin, length, coef = (np.array([fits[c][k] for c in cells]).reshape(len(cells), *shape)
+        origin, length, coef = (np.array([fits[r][k] for r in rows[cells]]).reshape(len(cells), *shape)
                                 for k, shape in ((0, (2,)), (1, ()), (2, (6, 3))))
         out = np.einsum("pi,pic->pc", _quadratic_basis((points - origin) / length[:, None], 6), coef)
         for c in np.unique(cells[np.isnan(coef[:, 0, 0])]):  # too few samples even for a line
@@ -726,11 +850,22 @@ class XFEMFields:
 
 
 def _support_rows(space: EnrichedFunctionSpace) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Rows (unrolled, local) of the supports and pins, their values at a
-    factor of 1 and the support each follows (−1 for a pin or a fixed zero)."""
+    """Rows (owned unknowns) of the supports and pins, their values at a
+    factor of 1 and the support each follows (−1 for a pin or a fixed
+    zero).  Each rank finds them among its local nodes (a rank may not see
+    every facet around a node it owns); the owners read the sums."""
     scene, msh, V = space.scene, space.msh, space.V
     rows, vals, owners = [], [], []
     tol_L = tol.NODE_MATCH * scene.length_scale
+
+    def fix(blocks, j: int, value: float, owner: int) -> None:
+        flags = np.zeros(2 * space.num_blocks)
+        flags[2 * np.asarray(blocks, np.int64) + j] = 1.0
+        found = space.owned_rows(flags)
+        rows.append(found)
+        vals.append(np.full(len(found), value))
+        owners.append(np.full(len(found), owner))
+
     for i, sup in enumerate(scene.supports):
         facets = mesh.locate_entities_boundary(msh, 1, lambda x, n=sup.boundary: scene.domain.on_boundary(n, x[:2].T, tol_L))
         blocks = fem.locate_dofs_topological(V, 1, facets)
@@ -739,19 +874,17 @@ def _support_rows(space: EnrichedFunctionSpace) -> tuple[np.ndarray, np.ndarray,
         enriched = space.enriched_blocks[blocks[space.enriched[blocks]]]
         for comp in sup.fix:
             j = "xy".index(comp)
-            rows += [2 * blocks + j, 2 * enriched + j]
-            vals += [np.full(len(blocks), sup.value[j]), np.zeros(len(enriched))]
-            owners += [np.full(len(blocks), i), np.full(len(enriched), -1)]
+            fix(blocks, j, sup.value[j], i)
+            fix(enriched, j, 0.0, -1)
     coords = V.tabulate_dof_coordinates()[:, :2]
     for i, pin in enumerate(scene.pins):
         d = np.linalg.norm(coords - np.asarray(pin.point), axis=1)
-        block = int(np.argmin(d))
-        if d[block] > tol_L:
-            raise DiscretisationError(f"pins[{i}]: xfem needs pins at mesh nodes; the nearest is {d[block]:.3g} away")
+        at = np.flatnonzero(d <= tol_L)
+        nearest = -space.ranks.max(-float(np.min(d, initial=np.inf)))
+        if nearest > tol_L:
+            raise DiscretisationError(f"pins[{i}]: xfem needs pins at mesh nodes; the nearest is {nearest:.3g} away")
         for comp in pin.fix:
-            rows.append(np.array([2 * block + "xy".index(comp)]))
-            vals.append(np.zeros(1))
-            owners.append(np.full(1, -1))
+            fix(at, "xy".index(comp), 0.0, -1)
     if not rows:
         return np.zeros(0, np.int64), np.zeros(0), np.zeros(0, int)
     rows, idx = np.unique(np.concatenate(rows), return_index=True)
@@ -763,10 +896,6 @@ def build(scene: Scene, options: XFEM, resolution: Resolution, timings: Timings)
     ``build``; :class:`xdolfinx.options.XFEM` for the options)."""
     h, degree = resolution.h, options.degree
     comm = MPI.COMM_WORLD if options.comm is None else options.comm
-    if comm.size > 1:
-        raise DiscretisationError("xfem under mpirun: its enriched unknowns are numbered after the standard ones, "
-                                  "which PETSc's row ownership does not allow across ranks; run xfem without mpirun "
-                                  "(fe runs distributed)")
     with timings.measure("mesh"):
         msh = background_mesh(scene, h, options.cell, resolution.counts, comm, order=degree)
         space = EnrichedFunctionSpace(msh, degree, scene, GAUSS_POINTS[degree] if options.gauss is None
@@ -786,10 +915,12 @@ def build(scene: Scene, options: XFEM, resolution: Resolution, timings: Timings)
                              Constraints.on_dofs([rows], [values], [owners]), interface_operator(space),
                              comm=msh.comm, petsc_options=options.petsc_options,
                              estimate_condition=options.estimate_condition, what=f"scene {scene.name} (xfem)")
-    return Built(system, lambda x: XFEMFields(space, x), 2 * space.num_blocks, h=h,
+    owned = space.owned_cells
+    return Built(system, lambda x: XFEMFields(space, x), 2 * space.numbering.index_map.size_global, h=h,
                  record={"h": h, "cell": background_cell(scene, options.cell), "degree": degree,
-                         "cells": int(space.num_cells), "cut_cells": len(space.regions),
-                         "enriched_nodes": space.num_enriched, "gauss": space.gauss})
+                         "cells": space.ranks.sum(owned), "cut_cells": space.ranks.sum(sum(c < owned for c in space.regions)),
+                         "enriched_nodes": space.ranks.sum(int(np.count_nonzero(space.enriched[:space.owned_nodes]))),
+                         "gauss": space.gauss})
 
 
 def solve(scene: Scene, h: float | None = None, *, paper: bool = False, progress=None, reuse=None,
