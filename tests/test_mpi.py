@@ -1,5 +1,5 @@
 """Under mpirun (issues 15, 16): fe, xfem and efgm spread over the ranks give the
-serial run's numbers; EFGM runs on rank 0; errors end in one line on every rank count,
+serial run's numbers; errors end in one line on every rank count,
 and no rank hangs.  Each case is a real ``mpirun`` of the command line."""
 import csv
 import os

@@ -228,16 +228,16 @@ XFEM_NODE_AGREE = {1: 0.16, 2: 0.05}
 #: centroid up to 0.7 h off Γ where σ varies steeply across it.  Before
 #: issue 22's sliver fixes: quads P1 0.75, triangles P2 71x.
 XFEM_INCLINED_AGREE = {("quad", 1): 0.15, ("triangle", 1): 0.15, ("quad", 2): 0.02, ("triangle", 2): 0.02}
-#: The same measure on two off-centre rods in scene C at its h = 0.05:
-#: measured P2 quads 1.1 % / 0.88 % -> the issue's 2 %; P1 recovered quads
-#: 5.2 % / 4.8 %, triangles 8.4 % / 8.0 % -> the issue's 15 % (raw: 15 % /
-#: 19 % and 17 % / 25 %).  P2 triangles 1.6 % / 2.5 % (σyy on C3 at x =
-#: 1.54, an uncut cell next to the rod whose enrichments vanish there): the
-#: P2 triangle's own approximation error (the nodal P2 interpolant of the
-#: reference on that cell misses by 2.6 % there), 0.64 % at h = 0.025 (rate
-#: 1.95); the issue's 2 % is NOT met there at h = 0.05, and that bound is
-#: the measured worst plus 20 %.
-XFEM_ROD_AGREE = {("quad", 1): 0.15, ("triangle", 1): 0.15, ("quad", 2): 0.02, ("triangle", 2): 0.03}
+#: The same measure on two off-centre rods in scene C, at the issue's (and
+#: the inclined Γ's) h = 0.025 against fe P2 at h/2: measured (rod 1 / rod
+#: 2) P2 quads 0.26 % / 0.19 %, P2 triangles 0.37 % / 0.77 %, P1 (stress
+#: recovered) quads 0.71 % / 0.54 %, triangles 2.4 % / 2.3 % -> the issue's
+#: 2 % and 15 %.  At scene C's default h = 0.05, P2 triangles give 1.6 % /
+#: 2.5 % (σyy on C3 at x = 1.54, an uncut cell next to the rod whose
+#: enrichments vanish there): the structured P2 triangles' own
+#: approximation error (the nodal P2 interpolant of the reference misses
+#: by 2.6 % there), not XFEM's; P2 quads 1.1 % / 0.88 %, P1 5.2-8.4 %.
+XFEM_ROD_AGREE = {("quad", 1): 0.15, ("triangle", 1): 0.15, ("quad", 2): 0.02, ("triangle", 2): 0.02}
 #: σ on Γ against σ 1e-6 off Γ and the quadratic extrapolation from h/8,
 #: h/4, 3h/8 off Γ (xfem P2), relative to |σ|: the issue's 1 %.
 XFEM_ONE_SIDED = 1e-2
