@@ -40,6 +40,30 @@ NODE_MATCH = 1e-6
 #: (Γ 1e-12 h off a node row at h = 0.05, tests/test_xfem_nodes.py).
 NODE_ON_INTERFACE = 1e-14
 
+#: Degree 1 (fe and xfem) reads a body's stress from a least-squares quadratic through
+#: its cells' own stresses at their parts' centroids, weighted by the parts'
+#: areas, over the cells within this many vertex rings of the point's cell
+#: (:mod:`contactcore.recovery`).  A P1 or Q1 cell's stress stands for its
+#: centroid (constant there, or superconvergent); in a cut cell the body's
+#: part has its centroid up to 0.7 h from Γ (a fitted mesh's cells next to
+#: Γ: about h/3), and in a thin part the cell's gradient is fitted to that
+#: part alone.  Where the stress varies steeply across Γ (issue 22: scene A
+#: with Γ inclined 21.5°, each block bending on its soft tangential spring,
+#: σxy is 15.3e3 on Γ and 19.7e3 0.8 h off it) the cell's own field missed
+#: on Γ by up to 0.29 (quads) and 0.31 (triangles) of the profile's scale at
+#: h = 0.025 over 24 inclined Γ (fe P1: 0.18), and by up to 0.34 at a thin
+#: part's own centroid; at h = 0.0125 still 0.16 on the four worst Γ (fe P1
+#: 0.073): the degree-1 error, O(h), magnified by the cut parts' geometry.
+#: Recovered: one ring, linear (Zienkiewicz-Zhu) 0.063 / 0.18; two rings,
+#: linear 0.11 / 0.12 on the five worst Γ (it smooths the corners' layers);
+#: two rings, quadratic 0.076 / 0.124, and on two off-centre rods in scene C
+#: 0.052 / 0.084 (0.19 / 0.25 before).  Constant stress is reproduced
+#: exactly (the patch tests).  Degree 2 keeps the cell's own field (1.3 % /
+#: 1.6 % on the same Γ).
+#: The rings are counted through vertices, not along the body: a body
+#: thinner than about four cells may see both of its sides in one patch.
+RECOVERY_RINGS = 2
+
 #: The smaller of the two bodies must cover at least this fraction of the
 #: domain's area, otherwise the interface "only touches" the domain.
 MIN_BODY_AREA_FRACTION = 1e-8

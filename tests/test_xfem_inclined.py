@@ -5,7 +5,7 @@ that cell is fitted to the sliver alone; such points are evaluated in the
 nearest cell that resolves the body (tol.SLIVER_EVAL_DEPTH), and a node is
 enriched when its stiffness, not its value, reaches across Γ
 (xfem.MIN_CUT_FRACTION).  At degree 1 a body's stress is recovered from
-its cells' stresses at their parts' centroids (xfem.RECOVERY_RINGS): a cut
+its cells' stresses at their parts' centroids (contactcore.recovery): a cut
 part's centroid lies up to 0.7 h off Γ, where σ varies steeply across it.
 Every sample of every profile, away from corners and Γ's ends, must agree
 with fe P2 at h/2 within XFEM_INCLINED_AGREE (the issue's 2 % and 15 %)."""

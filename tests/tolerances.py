@@ -98,7 +98,7 @@ EFGM_DILATION_SIGMA = 1e-1
 #:   efgm    interface ≤ 3e-4, interior ≤ 1.1e-2, edge ≤ 4.3e-2 (collocated
 #:           supports and corners dominate).
 #: (xfem P1 measured before issue 22 recovered its stress, xdolfinx.xfem.
-#: RECOVERY_RINGS; the bounds still hold: tests/test_agreement.py.)
+#: recovery (contactcore.recovery); the bounds still hold: tests/test_agreement.py.)
 #: Bounds are about 2x those: a sign or factor error is O(1).  "zero" is
 #: scene B's t_N and g_N against the scale of t_T and g_T (FALSE_TN).
 #: C-coulomb (verification.agreement.quantity_class): "contact" is g_N, g_T,
@@ -222,7 +222,7 @@ XFEM_NODE_AGREE = {1: 0.16, 2: 0.05}
 #: inclined placements of scene A: the issue's 2 % (P2) and 15 % (P1).
 #: Measured: P2 quads 0.0126, triangles 0.0158 (sliver points evaluated in
 #: the nearest resolving cell, enrichment by stiffness).  P1 with its stress
-#: recovered (xdolfinx.xfem.RECOVERY_RINGS): quads 0.076, triangles 0.124
+#: recovered (contactcore.recovery, tolerances.RECOVERY_RINGS): quads 0.076, triangles 0.124
 #: (σxy on Γ, in cut cells whose part is thin); read from the cell's own
 #: field it was 0.29 and 0.31 (fe P1 at the same h: 0.18), the cut part's
 #: centroid up to 0.7 h off Γ where σ varies steeply across it.  Before

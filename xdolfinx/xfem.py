@@ -43,7 +43,6 @@ from dataclasses import dataclass
 import basix
 import dolfinx.cpp as _cpp
 import numpy as np
-import scipy.sparse as sp
 import ufl
 from dolfinx import fem, mesh
 from dolfinx.fem import petsc as fem_petsc
@@ -62,6 +61,7 @@ from contactcore.bodies import side as side_of
 from contactcore.collective import Collective
 from contactcore.constraints import Constraints
 from contactcore.newton import InterfaceOperator
+from contactcore.recovery import PatchRecovery
 from contactcore.scene import BodyForce, Pressure, Torque, Traction, body_force
 
 from .contact_system import GhostExchange, PETScSystem
@@ -97,40 +97,6 @@ MIN_CUT_FRACTION = 1e-11
 #: a cell farther than its circumradius cannot meet Γ (1, plus a round-off
 #: allowance); 2 leaves room for the curvature of a general φ.
 NEAR_FACTOR = {"distance": 1.0 + 1e-9, "level set": 2.0}
-
-#: Degree 1 reads a body's stress from a least-squares quadratic through
-#: its cells' own stresses at their parts' centroids, weighted by the parts'
-#: areas, over the cells within this many vertex rings of the point's cell
-#: (XFEMFields._recovered).  A P1 or Q1 cell's stress stands for its
-#: centroid (constant there, or superconvergent); in a cut cell the body's
-#: part has its centroid up to 0.7 h from Γ (a fitted mesh's cells next to
-#: Γ: about h/3), and in a thin part the cell's gradient is fitted to that
-#: part alone.  Where the stress varies steeply across Γ (issue 22: scene A
-#: with Γ inclined 21.5°, each block bending on its soft tangential spring,
-#: σxy is 15.3e3 on Γ and 19.7e3 0.8 h off it) the cell's own field missed
-#: on Γ by up to 0.29 (quads) and 0.31 (triangles) of the profile's scale at
-#: h = 0.025 over 24 inclined Γ (fe P1: 0.18), and by up to 0.34 at a thin
-#: part's own centroid; at h = 0.0125 still 0.16 on the four worst Γ (fe P1
-#: 0.073): the degree-1 error, O(h), magnified by the cut parts' geometry.
-#: Recovered: one ring, linear (Zienkiewicz-Zhu) 0.063 / 0.18; two rings,
-#: linear 0.11 / 0.12 on the five worst Γ (it smooths the corners' layers);
-#: two rings, quadratic 0.076 / 0.124, and on two off-centre rods in scene C
-#: 0.052 / 0.084 (0.19 / 0.25 before).  Constant stress is reproduced
-#: exactly (the patch tests).  Degree 2 keeps the cell's own field (1.3 % /
-#: 1.6 % on the same Γ).
-#: The rings are counted through vertices, not along the body: a body
-#: thinner than about four cells may see both of its sides in one patch.
-RECOVERY_RINGS = 2
-
-#: Cells fitted at once by XFEMFields._fit (its padded arrays: this many
-#: patches of about 25–45 samples).
-_FIT_BATCH = 4096
-
-
-def _quadratic_basis(d: np.ndarray, terms: int) -> np.ndarray:
-    """(P, terms): 1, x, y, x², xy, y² of scaled offsets d (P, 2), the first ``terms``."""
-    return np.column_stack([np.ones(len(d)), d[:, 0], d[:, 1], d[:, 0] ** 2, d[:, 0] * d[:, 1], d[:, 1] ** 2][:terms])
-
 
 _TAG_UNCUT = {"minus": 1, "plus": 2}
 _TAG_BAND = 3
@@ -695,14 +661,14 @@ class XFEMFields:
 
     Degree 1: a body's stress is recovered (:meth:`_recovered`, after
     Zienkiewicz and Zhu's patch recovery), not read from the cell's own
-    constant or bilinear field: see RECOVERY_RINGS."""
+    constant or bilinear field (:mod:`contactcore.recovery`)."""
 
     def __init__(self, space: EnrichedFunctionSpace, x: np.ndarray):
         self.space, self.blocks = space, space.node_values(x)
         scene = space.scene
         self.D = scene.voigt_matrices()
         self.locator = BodyCellLocator(space.msh, [space.cells_resolving(side) for side in (-1, 1)])
-        self._samples, self._fits = {}, {}
+        self._recoveries = {}
 
     def _eval(self, points, bodies, gradient: bool) -> np.ndarray:
         points = np.asarray(points, float)[:, :2]
@@ -711,7 +677,7 @@ class XFEMFields:
         out = np.zeros((len(points), 3 if gradient else 2))
         if gradient and self.space.degree == 1:
             for body in np.unique(bodies):
-                self._body_samples(int(body))  # collective: every rank, whatever points it evaluates
+                self._recovery(int(body))  # collective: every rank, whatever points it evaluates
                 sel = np.flatnonzero(mine & (bodies == body))
                 out[sel] = self._recovered(cells[sel], int(body), points[sel])
             return self.locator.combine(out)
@@ -731,19 +697,14 @@ class XFEMFields:
         eps = np.einsum("pjd,jk->pkd", dN, vec)  # ∂u_k/∂x_d
         return np.column_stack([eps[:, 0, 0], eps[:, 1, 1], eps[:, 0, 1] + eps[:, 1, 0]]) @ self.D[body].T
 
-    def _body_samples(self, body: int):
-        """``(index, centroids, areas, σ, patches, rows)`` of ``body``'s
-        resolving cells, over every rank's cells (a collective call under
-        mpirun): index (cells,) of each cell among the samples (−1 if not
-        one), the centroid and area of the body's part of each, the cell's
-        own σ there, the cells within RECOVERY_RINGS vertex rings of each
-        cell (CSR), and ``rows`` the row of each of this rank's owned cells.
-        Each rank samples the cells it owns; the cells, keyed by their
-        nodes' global blocks, and the samples are gathered in rank order
-        (serial: the local order), so a patch is the same on any partition
-        (a ghost layer of one cell would cut a patch of two rings)."""
-        if body in self._samples:
-            return self._samples[body]
+    def _recovery(self, body: int):
+        """``body``'s :class:`~contactcore.recovery.PatchRecovery` over every
+        rank's cells, and the row of each of this rank's owned cells (a
+        collective call under mpirun).  Its samples are the body's resolving
+        cells that this rank owns: the centroid and area of the body's part,
+        and the cell's own σ there; a node's key is its global block."""
+        if body in self._recoveries:
+            return self._recoveries[body]
         space, side = self.space, sign_of_index(body)
         cells = space.cells_resolving(side)
         cells = cells[cells < space.owned_cells]  # each cell sampled by its owner
@@ -770,77 +731,22 @@ class XFEMFields:
             areas[n], centroids[n] = wt.sum(), wt @ pts / wt.sum()
             sig[n] = self._local(c, body, centroids[n:n + 1], True)[0]
         owned = np.arange(space.owned_cells)
-        index = np.full(space.owned_cells, -1)
-        index[cells] = np.arange(len(cells))
-        ranks = space.ranks
-        start = int(np.sum(ranks.gather(np.array([len(cells)]))[:ranks.rank]))
-        rows = int(np.sum(ranks.gather(np.array([len(owned)]))[:ranks.rank])) + owned
-        index = ranks.gather(np.where(index >= 0, index + start, -1))
-        centroids, areas, sig = (ranks.gather(a) for a in (centroids, areas, sig))
-        keys = ranks.gather(space.numbering.global_blocks[space.cell_dofs[owned]])  # a node: the same key on every rank
-        nodes, inverse = np.unique(keys, return_inverse=True)
-        incidence = sp.csr_matrix((np.ones(keys.size), (np.repeat(np.arange(len(keys)), keys.shape[1]), inverse.ravel())),
-                                  shape=(len(keys), len(nodes)))
-        ring = (incidence @ incidence.T).tocsr()
-        patches = ring
-        for _ in range(RECOVERY_RINGS - 1):
-            patches = (patches @ ring).tocsr()
-        self._samples[body] = (index, centroids, areas, sig, patches, rows)
-        return self._samples[body]
+        sample = np.full(space.owned_cells, -1)
+        sample[cells] = np.arange(len(cells))
+        keys = space.numbering.global_blocks[space.cell_dofs[owned]]
+        self._recoveries[body] = PatchRecovery.gather(space.ranks, keys, sample, centroids, areas, sig)
+        return self._recoveries[body]
 
     def _recovered(self, cells: np.ndarray, body: int, points: np.ndarray) -> np.ndarray:
-        """Voigt σ (P, 3) of ``body`` at ``points`` (located in ``cells``):
-        the least-squares polynomial, weighted by part area, through the
-        body's own σ at the part centroids of its resolving cells within
-        RECOVERY_RINGS vertex rings of the point's cell: quadratic, or linear
-        where the patch has too few independent samples for a quadratic (then
-        the cell's own field where it has too few for a line)."""
-        index, centroids, areas, sig, patches, rows = self._body_samples(body)
-        fits = self._fits.setdefault(body, {})
-        todo = np.setdiff1d(np.unique(rows[cells]), np.fromiter(fits, dtype=np.int64, count=len(fits)))
-        for start in range(0, len(todo), _FIT_BATCH):
-            fits.update(self._fit(todo[start:start + _FIT_BATCH], index, centroids, areas, sig, patches))
-        origin, length, coef = (np.array([fits[r][k] for r in rows[cells]]).reshape(len(cells), *shape)
-                                for k, shape in ((0, (2,)), (1, ()), (2, (6, 3))))
-        out = np.einsum("pi,pic->pc", _quadratic_basis((points - origin) / length[:, None], 6), coef)
-        for c in np.unique(cells[np.isnan(coef[:, 0, 0])]):  # too few samples even for a line
+        """Voigt σ (P, 3) of ``body`` at ``points`` (located in ``cells``,
+        owned): the recovered stress, or the cell's own where its patch
+        fits no line (:mod:`contactcore.recovery`)."""
+        recovery, rows = self._recovery(body)
+        out = recovery.at(rows[cells], points)
+        for c in np.unique(cells[np.isnan(out[:, 0])]):
             sel = np.flatnonzero(cells == c)
             out[sel] = self._local(c, body, points[sel], True)
         return out
-
-    @staticmethod
-    def _fit(targets, index, centroids, areas, sig, patches) -> dict:
-        """``{cell: (origin, length, coefficients (6, 3))}`` for ``targets``
-        (NaN where the patch fits no line), all at once: each patch's samples
-        padded to the longest patch with zero weight, and solved by SVD
-        (numpy's lstsq and matrix_rank, batched)."""
-        sub = patches[targets]
-        rows = np.repeat(np.arange(len(targets)), np.diff(sub.indptr))
-        member = index[sub.indices]
-        keep = member >= 0
-        rows, member = rows[keep], member[keep]
-        count = np.bincount(rows, minlength=len(targets))
-        pos = np.arange(len(rows)) - np.repeat(np.cumsum(count) - count, count)
-        largest = np.zeros(len(targets))
-        np.maximum.at(largest, rows, areas[member])
-        origin, length = centroids[index[targets]], np.sqrt(largest)
-        weight = np.sqrt(areas[member] / largest[rows])
-        d = (centroids[member] - origin[rows]) / length[rows, None]
-        A = np.zeros((len(targets), count.max(), 6))
-        Y = np.zeros((len(targets), count.max(), 3))
-        A[rows, pos] = _quadratic_basis(d, 6) * weight[:, None]
-        Y[rows, pos] = sig[member] * weight[:, None]
-        coef = np.full((len(targets), 6, 3), np.nan)  # a line's: its quadratic terms 0
-        for terms in (6, 3):
-            todo = np.flatnonzero(np.isnan(coef[:, 0, 0]) & (count > terms))
-            if not len(todo):
-                continue
-            U, S, Vt = np.linalg.svd(A[todo, :, :terms], full_matrices=False)
-            full = np.sum(S > S[:, :1] * max(count.max(), terms) * np.finfo(float).eps, axis=1) == terms
-            solved = np.einsum("tji,tj,tkj,tkc->tic", Vt, 1 / np.where(S > 0, S, 1.0), U, Y[todo])
-            coef[todo[full]] = 0.0
-            coef[todo[full], :terms] = solved[full]
-        return {int(c): (origin[n], length[n], coef[n]) for n, c in enumerate(targets)}
 
     def displacement(self, points, bodies) -> np.ndarray:
         return self._eval(points, bodies, False)

@@ -1,0 +1,122 @@
+"""Patch recovery of a degree-1 stress, shared by the mesh methods (fe, xfem).
+
+A P1 or Q1 cell's stress stands for its centroid (constant there, or
+superconvergent), not for the points of Γ where the profiles read it.
+After Zienkiewicz and Zhu's superconvergent patch recovery (1992), a body's
+stress at a point is the area-weighted least-squares quadratic
+
+    σ*(x) = Σ_k c_k p_k((x − x_c)/ℓ),   p = (1, x, y, x², xy, y²),
+
+through the body's own cell stresses ``σ_j`` at the centroids ``x_j`` of its
+parts (weights ``√(A_j/A_max)``), over the cells within
+:data:`~contactcore.tolerances.RECOVERY_RINGS` vertex rings of the point's
+cell (``x_c`` that cell's centroid, ``ℓ`` the square root of the patch's
+largest area); a line where the patch holds too few independent samples
+for a quadratic, and the cell's own field where too few for a line.
+Constant stress is reproduced exactly.  A body never sees the other's
+stresses: each body's samples are its own cells (in xfem, the body's part
+of a cut cell).
+
+The caller gives every cell it owns, keyed by its nodes' ids (any ids that
+name a node alike on every rank), and which of them are the body's samples;
+:meth:`PatchRecovery.gather` joins every rank's cells in rank order (in
+serial, the local order), so a patch is the same on any partition.  numpy
+and scipy only: the ranks are reached through a
+:class:`~contactcore.collective.Collective`.
+"""
+from __future__ import annotations
+
+import numpy as np
+import scipy.sparse as sp
+
+from . import tolerances as tol
+
+#: Patches fitted at once (padded arrays of this many patches of about
+#: 25–45 samples each).
+FIT_BATCH = 4096
+
+
+def quadratic_basis(d: np.ndarray, terms: int) -> np.ndarray:
+    """(P, terms): 1, x, y, x², xy, y² of scaled offsets d (P, 2), the first ``terms``."""
+    return np.column_stack([np.ones(len(d)), d[:, 0], d[:, 1], d[:, 0] ** 2, d[:, 0] * d[:, 1],
+                            d[:, 1] ** 2][:terms])
+
+
+class PatchRecovery:
+    """The recovered stress of one body (module doc) over ``cells`` cells:
+    ``keys`` (cells, k) their nodes' ids, ``sample`` (cells,) each cell's
+    row among the samples (−1: not the body's), and per sample its part's
+    ``centroid`` (2,), ``area`` and own ``sigma`` (3,)."""
+
+    def __init__(self, keys: np.ndarray, sample: np.ndarray, centroids: np.ndarray, areas: np.ndarray,
+                 sigma: np.ndarray, rings: int = tol.RECOVERY_RINGS):
+        nodes, inverse = np.unique(keys, return_inverse=True)
+        self.incidence = sp.csr_matrix((np.ones(keys.size), (np.repeat(np.arange(len(keys)), keys.shape[1]),
+                                                             inverse.ravel())), shape=(len(keys), len(nodes)))
+        self.sample, self.centroids, self.areas, self.sigma = sample, centroids, areas, sigma
+        self.rings, self._fits = rings, {}
+
+    @classmethod
+    def gather(cls, ranks, keys, sample, centroids, areas, sigma) -> tuple["PatchRecovery", np.ndarray]:
+        """Every rank's owned cells (this rank's as in :class:`PatchRecovery`)
+        joined in rank order, and the row of each of this rank's cells among
+        them.  A collective call under mpirun."""
+        cell_start = int(np.sum(ranks.gather(np.array([len(keys)]))[:ranks.rank]))
+        sample_start = int(np.sum(ranks.gather(np.array([len(centroids)]))[:ranks.rank]))
+        sample = np.where(sample >= 0, sample + sample_start, -1)
+        joined = cls(ranks.gather(keys), ranks.gather(sample), ranks.gather(centroids), ranks.gather(areas),
+                     ranks.gather(sigma))
+        return joined, cell_start + np.arange(len(keys))
+
+    def patches(self, cells: np.ndarray) -> sp.csr_matrix:
+        """(len(cells), all cells): the cells within ``rings`` vertex rings of each."""
+        reach = self.incidence[cells]
+        for ring in range(self.rings):
+            patch = (reach @ self.incidence.T).tocsr()
+            if ring < self.rings - 1:
+                reach = patch @ self.incidence
+        return patch
+
+    def at(self, cells: np.ndarray, points: np.ndarray) -> np.ndarray:
+        """Voigt σ* (P, 3) at ``points`` of the cells (rows) ``cells``; NaN
+        where the patch fits no line (the caller reads the cell's own field)."""
+        todo = np.setdiff1d(np.unique(cells), np.fromiter(self._fits, dtype=np.int64, count=len(self._fits)))
+        for start in range(0, len(todo), FIT_BATCH):
+            self._fits.update(self._fit(todo[start:start + FIT_BATCH]))
+        origin, length, coef = (np.array([self._fits[c][k] for c in cells]).reshape(len(cells), *shape)
+                                for k, shape in ((0, (2,)), (1, ()), (2, (6, 3))))
+        return np.einsum("pi,pic->pc", quadratic_basis((points - origin) / length[:, None], 6), coef)
+
+    def _fit(self, targets: np.ndarray) -> dict:
+        """``{cell: (origin, length, coefficients (6, 3))}`` for ``targets``
+        (NaN where the patch fits no line), all at once: each patch's samples
+        padded to the longest patch with zero weight, and solved by SVD
+        (batched)."""
+        index, centroids, areas, sig = self.sample, self.centroids, self.areas, self.sigma
+        sub = self.patches(targets)
+        rows = np.repeat(np.arange(len(targets)), np.diff(sub.indptr))
+        member = index[sub.indices]
+        keep = member >= 0
+        rows, member = rows[keep], member[keep]
+        count = np.bincount(rows, minlength=len(targets))
+        pos = np.arange(len(rows)) - np.repeat(np.cumsum(count) - count, count)
+        largest = np.zeros(len(targets))
+        np.maximum.at(largest, rows, areas[member])
+        origin, length = centroids[index[targets]], np.sqrt(largest)
+        weight = np.sqrt(areas[member] / largest[rows])
+        d = (centroids[member] - origin[rows]) / length[rows, None]
+        A = np.zeros((len(targets), count.max(initial=0), 6))
+        Y = np.zeros((len(targets), count.max(initial=0), 3))
+        A[rows, pos] = quadratic_basis(d, 6) * weight[:, None]
+        Y[rows, pos] = sig[member] * weight[:, None]
+        coef = np.full((len(targets), 6, 3), np.nan)  # a line's: its quadratic terms 0
+        for terms in (6, 3):
+            todo = np.flatnonzero(np.isnan(coef[:, 0, 0]) & (count > terms))
+            if not len(todo):
+                continue
+            U, S, Vt = np.linalg.svd(A[todo, :, :terms], full_matrices=False)
+            full = np.sum(S > S[:, :1] * max(count.max(), terms) * np.finfo(float).eps, axis=1) == terms
+            solved = np.einsum("tji,tj,tkj,tkc->tic", Vt, 1 / np.where(S > 0, S, 1.0), U, Y[todo])
+            coef[todo[full]] = 0.0
+            coef[todo[full], :terms] = solved[full]
+        return {int(c): (origin[n], length[n], coef[n]) for n, c in enumerate(targets)}
