@@ -97,8 +97,9 @@ EFGM_DILATION_SIGMA = 1e-1
 #:   xfem P2 interface ≤ 1.1e-4, interior ≤ 1.7e-2, edge ≤ 1.4e-2;
 #:   efgm    interface ≤ 3e-4, interior ≤ 1.1e-2, edge ≤ 4.3e-2 (collocated
 #:           supports and corners dominate).
-#: (xfem P1 measured before issue 22 recovered its stress, xdolfinx.xfem.
-#: recovery (contactcore.recovery); the bounds still hold: tests/test_agreement.py.)
+#: (xfem P1 above: before issue 22 recovered its stress, contactcore.recovery;
+#: since, measured: interior ≤ 4.8e-2 (B), edge ≤ 8.1e-2 (B2), interface ≤
+#: 8.8e-3 (C4): the bounds still hold, tests/test_agreement.py.)
 #: Bounds are about 2x those: a sign or factor error is O(1).  "zero" is
 #: scene B's t_N and g_N against the scale of t_T and g_T (FALSE_TN).
 #: C-coulomb (verification.agreement.quantity_class): "contact" is g_N, g_T,
