@@ -142,6 +142,7 @@ def test_bad_input_under_mpirun_is_one_line(tmp_path):
             (["run", slip, "--method", "fe", "--h", "0.1"], "failed after 6 cut-backs"),
             (["run", slip_a, "--method", "xfem", "--h", "0.1"], "failed after"),
             (["study", "A", "--param", "kN", "--values", "1e9"], "spreads its cases over a pool"),
+            (["scaling", "A", "--h", "0.2"], "launches mpirun itself"),
 ):
         out = mpirun(2, "-m", "verification", *args, "--out", tmp_path / "o", timeout=120)
         assert out.returncode == 2 and len(_errors(out)) == 1 and message in _errors(out)[0], out.stderr
@@ -168,3 +169,18 @@ def test_field_files_under_mpirun_are_the_serial_ones(tmp_path):
         for name, x in [*a.point_data.items(), *((k, v[0]) for k, v in a.cell_data.items())]:
             y = b.point_data[name] if name in b.point_data else b.cell_data[name][0]
             assert np.max(np.abs(x - y)) <= tol.PARALLEL_PARITY * max(np.max(np.abs(x)), np.finfo(float).tiny), (f, name)
+
+
+@pytest.mark.slow
+def test_scaling_runs_the_ladder_on_each_rank_count(tmp_path):
+    """``scaling`` (issue 15's benchmark) launches the timing ladder under
+    mpirun on each rank count: one row per rank count and case, the same
+    DOFs on every rank count, speed-ups against the fewest ranks (no
+    timing asserted: speed is measured in benchmarks, not tests)."""
+    args = ["scaling", "A", "--method", "xfem", "--degree", "1", "--h", "0.2", "--ranks", "1", "2",
+            "--out", str(tmp_path / "s"), "--quiet"]
+    assert main(args) == 0
+    rows = _table(tmp_path / "s" / "scaling.csv")
+    assert rows["ranks"] == ["1", "2"] and rows["dofs"][0] == rows["dofs"][1]
+    assert all(float(rows[f"speedup_{stage}"][0]) == 1.0 for stage in ("mesh", "assembly", "solve", "total"))
+    assert (tmp_path / "s" / "ranks_2" / "timing.csv").exists()

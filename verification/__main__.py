@@ -12,6 +12,7 @@
     python -m verification report DIR [--quick]
     python -m verification benchmark [--scene A B C] --out DIR      (needs python3-getfem)
     python -m verification timing SCENE [SCENE ...] --method fe --degree 1 2 --h H1 H2 ... --out DIR
+    python -m verification scaling SCENE --method xfem --degree 2 --h H ... --ranks 1 2 --out DIR   (launches mpirun)
 
 ``study``, ``sweeps``, ``efficiency``, ``paper``, ``benchmark`` and ``report`` take
 ``--workers K`` (their cases on K local processes, :mod:`verification.pool`),
@@ -136,6 +137,14 @@ def _parser() -> argparse.ArgumentParser:
     tim.add_argument("--degree", nargs="+", type=int, default=[1], choices=(1, 2))
     tim.add_argument("--h", nargs="+", type=float, required=True)
     tim.add_argument("--out", type=Path, required=True)
+    sca = sub.add_parser("scaling", parents=[common],
+                         help="strong scaling: the timing ladder under mpirun on each rank count, one BLAS thread per rank")
+    sca.add_argument("scene")
+    _methods(sca)
+    sca.add_argument("--degree", nargs="+", type=int, default=[1], choices=(1, 2))
+    sca.add_argument("--h", nargs="+", type=float, required=True)
+    sca.add_argument("--ranks", nargs="+", type=int, default=[1, 2], help="rank counts (default 1 2)")
+    sca.add_argument("--out", type=Path, required=True)
     return parser
 
 
@@ -184,6 +193,11 @@ def _check_sizes(args) -> None:
         for h in value if isinstance(value, list) else [value]:
             if h is not None and not (math.isfinite(h) and h > 0):
                 raise ContactError(f"--{name.replace('_', '-')}: must be a finite number > 0 (got {h})")
+
+
+def _check_ranks_list(args) -> None:
+    if any(k < 1 for k in getattr(args, "ranks", None) or ()):
+        raise ContactError(f"--ranks: every rank count must be at least 1 (got {args.ranks})")
 
 
 def _check_workers(args) -> None:
@@ -244,6 +258,9 @@ def _dispatch(args, argv) -> None:
     elif cmd == "report":
         from .report import report
         report(args.out, args.quick, workers=args.workers, argv=argv)
+    elif cmd == "scaling":
+        from .scaling import scaling
+        scaling(args.scene, methods.expand(args.method), args.degree, args.h, args.ranks, args.out, argv=argv)
     else:
         from .timing import timing
         timing(args.scene, args.method, args.degree, args.h, args.out, argv=argv)
@@ -263,6 +280,8 @@ def _check_ranks(args) -> None:
     from .pool import distributed
     if not distributed():
         return
+    if args.command == "scaling":
+        raise ContactError("mpirun: 'scaling' launches mpirun itself, once per rank count: run it without mpirun")
     if args.command not in DISTRIBUTED:
         raise ContactError(f"mpirun: '{args.command}' spreads its cases over a pool, not over mpirun's ranks: run "
                            f"it with --workers K, or under mpiexec -n K python -m mpi4py.futures -m verification")
@@ -289,6 +308,7 @@ def main(argv=None) -> int:
         _check_ranks(args)
         _check_sizes(args)
         _check_workers(args)
+        _check_ranks_list(args)
         if getattr(args, "out", None) is None:
             _dispatch(args, argv)
         elif rank > 0:  # every rank computes (the solves are collective), rank 0 alone writes
