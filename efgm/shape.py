@@ -453,14 +453,19 @@ class MLS:
             def moved(weights):  # Σ_I w_I p̂_I p̂_Iᵀ, (G, m, m)
                 return self._moments(weights[:, 0], pI_m)
         else:
+            # every operand of matmul C-contiguous: on the strided views these
+            # products were up to 20x slower (numpy's loop instead of BLAS;
+            # measured on quadratic cells, 32768 6 × 6 products: 26 ms
+            # against 1.2 ms)
             upper = np.triu_indices(m)
-            pp = pI[..., upper[0]] * pI[..., upper[1]]  # the distinct products p̂_i p̂_j, (G, U, m(m+1)/2)
+            pp = np.ascontiguousarray(pI[..., upper[0]] * pI[..., upper[1]])  # the p̂_i p̂_j, (G, U, m(m+1)/2)
             M = _shift((points - centre[:, None, :]) / s_g[:, None, None], s_g[:, None] / s, self.degree)
-            M = M.reshape(-1, m, m)
-            Mt = M.transpose(0, 2, 1)
+            M = np.ascontiguousarray(M.reshape(-1, m, m))
+            Mt = np.ascontiguousarray(M.transpose(0, 2, 1))
 
             def moved(weights):  # M (Σ_I w_I p̂_I p̂_Iᵀ) Mᵀ, (G·Q, m, m)
-                return matmul(matmul(M, matmul(weights, pp)[..., _SYMMETRIC[m]].reshape(-1, m, m)), Mt)
+                sums = np.ascontiguousarray(matmul(weights, pp)[..., _SYMMETRIC[m]].reshape(-1, m, m))
+                return matmul(matmul(M, sums), Mt)
 
         def back(v):  # Mᵀ v for v (G·Q, m, 1), as (G, Q, m)
             return (v if M is None else matmul(Mt, v)).reshape(G, Q, m)
