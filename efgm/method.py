@@ -143,10 +143,10 @@ def _constraints(scene: Scene, approx: Approximation, evaluated=None) -> Constra
 def _load_vectors(scene: Scene, approx: Approximation, vol: Rule, h: float, n: int,
                   ranks: Collective = SERIAL) -> list[np.ndarray]:
     """One vector per load of the scene, at its full value (the shape
-    functions at the volume points are evaluated for a body force only):
-    from the points of ``vol`` and this rank's share of each boundary's."""
+    functions at the volume points are evaluated for a body force only,
+    :meth:`~efgm.operators.Approximation.load_vector`): from the points of
+    ``vol`` and this rank's share of each boundary's."""
     vectors = []
-    volume_N = None
     for load in scene.loads:
         if isinstance(load, (Traction, Pressure)):
             part = boundary_rule(scene, load.boundary, h, n)
@@ -156,12 +156,10 @@ def _load_vectors(scene: Scene, approx: Approximation, vol: Rule, h: float, n: i
             N = approx.displacement_operator(approx.mls.evaluate(pts, bodies), bodies)
             vectors.append(N.T @ (w[:, None] * t).ravel())
             continue
-        if volume_N is None:
-            volume_N = approx.displacement_operator(approx.mls.evaluate(vol.points, vol.bodies), vol.bodies)
         body = BODIES.index(load.body)
         mask = (vol.bodies == body) * vol.weights
         b = np.column_stack(body_force(scene, load, vol.points[:, 0], vol.points[:, 1]))
-        vectors.append(volume_N.T @ (mask[:, None] * b).ravel())
+        vectors.append(approx.load_vector(vol.points, vol.bodies, mask[:, None] * b))
     return vectors
 
 

@@ -25,7 +25,7 @@ from scipy.spatial import cKDTree
 from contactcore.assembly import Triplets, blocks_to_csr, point_rows_to_csr, sum_csr
 from contactcore.bodies import index_of_sign, sign_of_index, side
 
-from .shape import CHUNK, MLS, ShapeValues, matmul, parallel_map
+from .shape import CHUNK, MLS, POINT_CHUNK, ShapeValues, matmul, parallel_map
 
 #: A node is enriched (it carries Heaviside unknowns and takes part in the
 #: other body's fit) when its support reaches across Γ deeper than this
@@ -43,6 +43,12 @@ from .shape import CHUNK, MLS, ShapeValues, matmul, parallel_map
 #: 0.091, 0.4: 0.12 / 0.11 (the rest is resolution near Γ's ends: the
 #: same placement at h = 0.025 is 0.019).  δ = 0 leaves free unknowns.
 ENRICH_MIN_DEPTH = 0.25
+
+
+#: Points per task of :meth:`Approximation.load_vector` (evaluated in
+#: :data:`~efgm.shape.POINT_CHUNK` pieces): each task sums into its own
+#: vector of every unknown, so a task must be long beside that vector.
+LOAD_BATCH = 16 * POINT_CHUNK
 
 
 def heaviside(bodies: np.ndarray) -> np.ndarray:
@@ -134,9 +140,11 @@ class Approximation:
         first dof (Q, K) or −1, coefficient ±2 (Q, K))."""
         safe = np.maximum(index, 0)
         e = self.enr.index[safe]
-        coeff = np.where((index >= 0) & (e >= 0), heaviside(bodies)[:, None] - self.enr.node_side[safe], 0)
-        rows = np.flatnonzero(np.any(coeff != 0, axis=1))
-        coeff = coeff[rows]
+        enriched = (index >= 0) & (e >= 0)
+        rows = np.flatnonzero(np.any(enriched, axis=1))  # only these can have any (most points have none)
+        coeff = np.where(enriched[rows], heaviside(bodies[rows])[:, None] - self.enr.node_side[safe[rows]], 0)
+        keep = np.any(coeff != 0, axis=1)
+        rows, coeff = rows[keep], coeff[keep]
         return rows, np.where(coeff != 0, 2 * (self.n_nodes + e[rows]), -1), coeff
 
     def displacement_operator(self, sv: ShapeValues, bodies) -> sp.csr_matrix:
@@ -151,6 +159,38 @@ class Approximation:
         for c in range(2):
             trip.add((2 * rows + c)[:, None], np.where(base >= 0, base + c, -1), coeff * sv.phi[rows])
         return N + trip.to_csr()
+
+    def displacement_transpose(self, sv: ShapeValues, bodies, values: np.ndarray) -> np.ndarray:
+        """``Nᵀ v`` for ``v`` (P, 2) (``u_x, u_y`` rows of each point), summed
+        straight into the unknowns: the same sums as
+        ``displacement_operator(sv, bodies).T @ v.ravel()`` without making
+        ``N`` (for a body force, ``N`` at every volume point)."""
+        bodies = np.asarray(bodies)
+        node = 2 * np.maximum(sv.index, 0)  # padding: Φ = 0
+        rows, base, coeff = self._enriched(sv.index, bodies)
+        enriched = base >= 0
+        out = np.zeros(self.ndofs)
+        for c in range(2):
+            out += np.bincount((node + c).ravel(), (sv.phi * values[:, c:c + 1]).ravel(), self.ndofs)
+            out += np.bincount((base + c)[enriched], (coeff * sv.phi[rows] * values[rows, c:c + 1])[enriched],
+                               self.ndofs)
+        return out
+
+    def load_vector(self, points: np.ndarray, bodies: np.ndarray, values: np.ndarray) -> np.ndarray:
+        """``Nᵀ v`` at many ``points`` of ``bodies``, ``v`` (P, 2) (a body
+        force times the weights at the volume points): the shape functions
+        made and summed (:meth:`displacement_transpose`) batch by batch of
+        :data:`LOAD_BATCH` points on every core, never held for all the
+        points at once."""
+        def batch(start):
+            out = np.zeros(self.ndofs)
+            for i in range(start, min(start + LOAD_BATCH, len(points)), POINT_CHUNK):
+                part = slice(i, min(i + POINT_CHUNK, start + LOAD_BATCH, len(points)))
+                out += self.displacement_transpose(self.mls.evaluate(points[part], bodies[part]), bodies[part],
+                                                   values[part])
+            return out
+
+        return sum(parallel_map(batch, range(0, len(points), LOAD_BATCH)), np.zeros(self.ndofs))
 
     def strain_operator(self, sv: ShapeValues, bodies) -> sp.csr_matrix:
         """``B`` with rows ``3p, 3p+1, 3p+2`` = ``ε_xx, ε_yy, γ_xy`` at point p."""

@@ -362,18 +362,15 @@ class MLS:
         if len(points) <= POINT_CHUNK:
             return self._evaluate(points, bodies)
         step = POINT_CHUNK
+        starts = range(0, len(points), step)
         parts = list(parallel_map(lambda i: self._evaluate(points[i:i + step],
-                                                           None if bodies is None else bodies[i:i + step]),
-                                  range(0, len(points), step)))
+                                                           None if bodies is None else bodies[i:i + step]), starts))
         K = max(p.index.shape[1] for p in parts)
-
-        def padded(arr, fill):
-            width = [(0, 0), (0, K - arr.shape[1])] + [(0, 0)] * (arr.ndim - 2)
-            return np.pad(arr, width, constant_values=fill)
-
-        return ShapeValues(np.concatenate([padded(p.index, -1) for p in parts]),
-                           np.concatenate([padded(p.phi, 0.0) for p in parts]),
-                           np.concatenate([padded(p.grad, 0.0) for p in parts]))
+        out = ShapeValues(np.full((len(points), K), -1), np.zeros((len(points), K)), np.zeros((len(points), K, 2)))
+        for i, part in zip(starts, parts):  # each chunk's K columns, the padding after
+            rows, width = slice(i, i + len(part.index)), part.index.shape[1]
+            out.index[rows, :width], out.phi[rows, :width], out.grad[rows, :width] = part.index, part.phi, part.grad
+        return out
 
     def _evaluate(self, points: np.ndarray, bodies: np.ndarray | None) -> ShapeValues:
         idx, ox, oy = self.neighbours(points, bodies)
