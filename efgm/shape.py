@@ -58,7 +58,7 @@ CHUNK = 32768
 #: 2.5e5 / 2.2e5 points/s for 1024 / 2048 / 4096 / 8192 / 32768.
 POINT_CHUNK = 2048
 
-#: Support radii within this ratio share one search tree (see ``neighbours``).
+#: Support radii within this ratio share one search tree (see :meth:`MLS.cell_candidates`).
 RADIUS_CLASS_RATIO = 1.5
 
 #: Side of the buckets that collect each point's candidate neighbours, as a
@@ -68,6 +68,12 @@ RADIUS_CLASS_RATIO = 1.5
 #: call: 0.5 / 0.35 / 0.25 give 20 / 19 / 16 candidates a bucket on average
 #: (for ~13 neighbours) and 2.5e5 / 2.4e5 / 2.1e5 points/s.
 BUCKET = 0.5
+
+#: At most this many buckets per node: a node set with a few supports much
+#: smaller than the rest (a user's clustered nodes) then gets larger buckets
+#: instead of a bucket table that grows with (extent / smallest radius)².
+#: A grid at BUCKET = 0.5 has about one bucket per node.
+BUCKETS_PER_NODE = 4
 
 
 def cubic_spline(r):
@@ -218,9 +224,10 @@ class MLS:
         for b in np.unique(band):
             members = np.flatnonzero(band == b)
             self._classes.append((members, cKDTree(self.nodes[members]), float(size[members].max())))
-        self._bucket = BUCKET * float(size.min())
+        extent = np.ptp(self.nodes, axis=0)
+        self._bucket = max(BUCKET * float(size.min()), float(np.sqrt(np.prod(extent) / (BUCKETS_PER_NODE * len(size)))))
         self._grid_origin = self.nodes.min(axis=0)
-        self._grid_shape = np.floor(np.ptp(self.nodes, axis=0) / self._bucket).astype(np.int64) + 1
+        self._grid_shape = np.floor(extent / self._bucket).astype(np.int64) + 1
         self._tables, self._tables_lock = {}, threading.Lock()
 
     def neighbours(self, points: np.ndarray, bodies: np.ndarray | None = None
@@ -257,7 +264,8 @@ class MLS:
     def _bucket_candidates(self, points: np.ndarray, bodies: np.ndarray | None) -> np.ndarray:
         """For each point, the candidate nodes (P, U), −1 after, of its
         bucket (squares of side :data:`BUCKET` × the smallest support
-        radius over the nodes' bounding box; :meth:`cell_candidates` of each
+        radius, or larger (:data:`BUCKETS_PER_NODE`), over the nodes'
+        bounding box; :meth:`cell_candidates` of each
         bucket, kept per body); a point outside every bucket gets those of
         its own position."""
         visible = self.seen_from is not None and bodies is not None
