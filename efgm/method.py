@@ -140,28 +140,34 @@ def _constraints(scene: Scene, approx: Approximation, evaluated=None) -> Constra
     return Constraints(g, owner, operator=C, points=pts)
 
 
-def _load_vectors(scene: Scene, approx: Approximation, vol: Rule, h: float, n: int,
-                  ranks: Collective = SERIAL) -> list[np.ndarray]:
-    """One vector per load of the scene, at its full value (the shape
-    functions at the volume points are evaluated for a body force only):
-    from the points of ``vol`` and this rank's share of each boundary's."""
-    vectors = []
-    volume_N = None
+def _body_forces(scene: Scene, vol: Rule) -> np.ndarray:
+    """Each body force of the scene's loads (in order) at full value, times
+    the weights of ``vol``'s points in its body: (P, L, 2)."""
+    forces = []
     for load in scene.loads:
-        if isinstance(load, (Traction, Pressure)):
-            part = boundary_rule(scene, load.boundary, h, n)
-            share = ranks.share(len(part[1]))
-            pts, w, normals, bodies = (a[share] for a in part)
-            t = np.tile(load.value, (len(w), 1)) if isinstance(load, Traction) else -load.value * normals
-            N = approx.displacement_operator(approx.mls.evaluate(pts, bodies), bodies)
-            vectors.append(N.T @ (w[:, None] * t).ravel())
+        if not isinstance(load, (Traction, Pressure)):
+            mask = (vol.bodies == BODIES.index(load.body)) * vol.weights
+            forces.append(mask[:, None] * np.column_stack(body_force(scene, load, vol.points[:, 0], vol.points[:, 1])))
+    return np.stack(forces, axis=1) if forces else np.zeros((len(vol.weights), 0, 2))
+
+
+def _load_vectors(scene: Scene, approx: Approximation, body_vectors: np.ndarray, h: float, n: int,
+                  ranks: Collective = SERIAL) -> list[np.ndarray]:
+    """One vector per load of the scene, at its full value: the body forces'
+    from ``body_vectors`` (ndofs, L; summed with the stiffness,
+    :meth:`~efgm.operators.Approximation.stiffness_and_forces`), the
+    tractions' from this rank's share of each boundary's points."""
+    vectors, body = [], iter(body_vectors.T)
+    for load in scene.loads:
+        if not isinstance(load, (Traction, Pressure)):
+            vectors.append(next(body))
             continue
-        if volume_N is None:
-            volume_N = approx.displacement_operator(approx.mls.evaluate(vol.points, vol.bodies), vol.bodies)
-        body = BODIES.index(load.body)
-        mask = (vol.bodies == body) * vol.weights
-        b = np.column_stack(body_force(scene, load, vol.points[:, 0], vol.points[:, 1]))
-        vectors.append(volume_N.T @ (mask[:, None] * b).ravel())
+        part = boundary_rule(scene, load.boundary, h, n)
+        share = ranks.share(len(part[1]))
+        pts, w, normals, bodies = (a[share] for a in part)
+        t = np.tile(load.value, (len(w), 1)) if isinstance(load, Traction) else -load.value * normals
+        N = approx.displacement_operator(approx.mls.evaluate(pts, bodies), bodies)
+        vectors.append(N.T @ (w[:, None] * t).ravel())
     return vectors
 
 
@@ -239,13 +245,13 @@ def build(scene: Scene, options: EFGM, resolution: Resolution, timings: Timings)
         evaluated = (lambda c: distributed.owned_multipliers(ranks, approx.ndofs, c)) if ranks.parallel else None
         error = None
         try:  # what a rank evaluates alone may fail on it alone: every rank raises the error alike
-            K = approx.stiffness(cells, origin, step, D)
+            K, body_vectors = approx.stiffness_and_forces(cells, origin, step, D, _body_forces(scene, cells))
             m = len(gam_w)
             jump = (approx.displacement_operator(mls.evaluate(gam_pts, np.ones(m, int)), np.ones(m, int))
                     - approx.displacement_operator(mls.evaluate(gam_pts, np.zeros(m, int)), np.zeros(m, int)))
             G = block_diagonal(np.stack([gam_n, tangent_of(gam_n)], axis=1)) @ jump
             constraints = _constraints(scene, approx, evaluated)
-            loads = _load_vectors(scene, approx, cells, ns.h, n, ranks)
+            loads = _load_vectors(scene, approx, body_vectors, ns.h, n, ranks)
         except ContactError as exc:
             error = exc
         ranks.raise_any(error)
