@@ -14,7 +14,7 @@ SPD: MUMPS SYM = 2, with two-by-two pivots), any other by LU.  Measured on
 scene C at h = 0.0125, linear basis (79 660 unknowns, 7.2e6 entries, best
 of 3, no condition estimate): LDLᵀ 1.9 s, LU 2.6 s, SuperLU
 (:mod:`efgm.sparse_solver`) 13.5 s.  The symmetry check costs 0.23 s there.
-Both factorisations use :data:`ORDERING` rather than the shared AMF.
+Both factorisations compress the graph by 2 × 2 blocks (:data:`BLOCKS`).
 """
 from __future__ import annotations
 
@@ -25,17 +25,16 @@ import scipy.sparse as sp
 #: The factorisation of a symmetric (indefinite) system: MUMPS's LDLᵀ.
 SYMMETRIC = {"pc_type": "cholesky"}
 
-#: MUMPS's ordering for EFGM's systems, LDLᵀ and LU alike: PORD (ICNTL(7)
-#: = 4; this MUMPS has no METIS or SCOTCH, asking for them gives PORD)
-#: on the graph compressed by 2 × 2 blocks (ICNTL(15) = −2, an unknown's x
-#: and y; used when the size is even).  EFGM's rows hold ~90 entries, where
-#: AMF's fill is poor.  Measured on scene C at h = 0.0125, linear basis
-#: (79 244 rows, 7.1e6 entries), paired in one process, median of 4 under a
-#: load of 4 on 2 cores: LDLᵀ 2.12 s (AMF, 4.7e10 flops) against 1.75 s
-#: (3.1e10 flops; analysis 0.13 → 0.29 s, numeric 2.0 → 1.45 s); LU
-#: (median of 3) 3.78 s against 2.70 s.  Without the compression PORD's
-#: analysis takes 0.53 s.
-ORDERING = {"mat_mumps_icntl_7": 4}
+#: EFGM's systems are ordered by the shared AMF (contactcore.linear_solver.
+#: MUMPS_ORDERING) on the graph compressed by 2 × 2 blocks (ICNTL(15) = −2,
+#: an unknown's x and y; used when the size is even).  Measured on scene C
+#: at h = 0.0125, linear basis (79 244 rows, 7.1e6 entries), paired in one
+#: process, median of 4 under a load of 4 on 2 cores: LDLᵀ 2.12 s plain AMF,
+#: 2.0 s with the compression.  PORD (ICNTL(7) = 4) was faster there (1.75
+#: s; LU 3.78 → 2.70 s) but ends the whole process on a small dense graph
+#: ("Error in function orderMinPriority: no valid number of stages in
+#: multisector", then exit, no exception: every size from 2 to 20 measured),
+#: which a coarse EFGM run can give: not used.
 BLOCKS = {"mat_mumps_icntl_15": -2}
 
 
@@ -56,7 +55,7 @@ def tangent(A: sp.csr_matrix, interface_pattern: sp.spmatrix, *, estimate_condit
 
     union = (abs(A) + abs(sp.csr_matrix(interface_pattern))).tocsr()  # K's and every K_Γ's entries
     union.data[:] = 0.0
-    ordering = {**ORDERING, **(BLOCKS if A.shape[0] % 2 == 0 else {})}
+    ordering = BLOCKS if A.shape[0] % 2 == 0 else {}
     return linear_solver.Tangent(linear_solver.to_petsc(A), np.arange(A.shape[0]), work=linear_solver.to_petsc(union),
                                  symmetric=SYMMETRIC if linear_solver.is_symmetric(A) else None,
                                  petsc_options=ordering, estimate_condition=estimate_condition, what=what)

@@ -44,8 +44,9 @@ def _peak_rss_gb() -> float:
 
 
 def pytest_testnodedown(node, error):
-    """(xdist controller) a worker's peak, reported when it finishes."""
-    _WORKER_PEAKS.append(node.workeroutput.get("peak_rss_gb", 0.0))
+    """(xdist controller) a worker's peak, reported when it finishes; a
+    worker that crashed reports none (xdist then names the test it ran)."""
+    _WORKER_PEAKS.append(getattr(node, "workeroutput", {}).get("peak_rss_gb", 0.0))
 
 
 def pytest_sessionfinish(session, exitstatus):
