@@ -156,6 +156,7 @@ class DistributedEFGMSystem:
             from contactcore import linear_solver as ls
             self._tangent = ls.Tangent(self.A, np.arange(self.size), work=self.work,
                                        symmetric=petsc_solver.SYMMETRIC if self.symmetric else None,
+                                       petsc_options=petsc_solver.options(self.A.getSize()[0]),
                                        estimate_condition=self.estimate, what=self.what, ranks=self.collective)
         return self._tangent.solve(interface_tangent, rhs, force_scale, slot)
 

@@ -38,6 +38,12 @@ SYMMETRIC = {"pc_type": "cholesky"}
 BLOCKS = {"mat_mumps_icntl_15": -2}
 
 
+def options(size: int) -> dict:
+    """The PETSc options of an EFGM system of ``size`` unknowns (global),
+    serial or distributed alike: :data:`BLOCKS` when the size is even."""
+    return BLOCKS if size % 2 == 0 else {}
+
+
 def available() -> bool:
     """Whether petsc4py imports (then MUMPS solves EFGM's systems)."""
     try:
@@ -55,7 +61,6 @@ def tangent(A: sp.csr_matrix, interface_pattern: sp.spmatrix, *, estimate_condit
 
     union = (abs(A) + abs(sp.csr_matrix(interface_pattern))).tocsr()  # K's and every K_Γ's entries
     union.data[:] = 0.0
-    ordering = BLOCKS if A.shape[0] % 2 == 0 else {}
     return linear_solver.Tangent(linear_solver.to_petsc(A), np.arange(A.shape[0]), work=linear_solver.to_petsc(union),
                                  symmetric=SYMMETRIC if linear_solver.is_symmetric(A) else None,
-                                 petsc_options=ordering, estimate_condition=estimate_condition, what=what)
+                                 petsc_options=options(A.shape[0]), estimate_condition=estimate_condition, what=what)
