@@ -272,11 +272,11 @@ DISTRIBUTED = ("run", "timing")
 
 
 def _check_ranks(args) -> None:
-    """Under mpirun with several ranks, ``run`` and ``timing`` solve fe and
-    EFGM on all of them (xfem refuses); the study
-    drivers spread their cases over a pool instead (``--workers``, or
-    ``mpiexec -n K python -m mpi4py.futures``), so they are refused here,
-    once, before any rank writes."""
+    """Under mpirun with several ranks, ``run`` and ``timing`` solve every
+    method on all of them; the study drivers spread their cases over a pool
+    instead (``--workers``, or ``mpiexec -n K python -m mpi4py.futures``)
+    and ``scaling`` launches mpirun itself, so they are refused here, once,
+    before any rank writes."""
     from .pool import distributed
     if not distributed():
         return
