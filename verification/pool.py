@@ -45,11 +45,6 @@ class Serial(Executor):
         return future
 
 
-def _launched_size() -> int:
-    """How many ranks mpiexec started (1 without it), read from its environment."""
-    return launched_size()
-
-
 def launched_rank() -> int:
     """This process's rank under mpiexec (0 without it), read from its environment."""
     return next((int(os.environ[n]) for n in ("OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK") if n in os.environ),
@@ -60,7 +55,7 @@ def distributed() -> bool:
     """Whether this command runs on several mpirun ranks as one job (not as
     an mpi4py.futures pool): the solves of fe and xfem are then spread over
     them."""
-    return _launched_size() > 1 and not under_mpi_pool()
+    return launched_size() > 1 and not under_mpi_pool()
 
 
 def under_mpi_pool() -> bool:
@@ -69,7 +64,7 @@ def under_mpi_pool() -> bool:
     documents that the script then runs on rank 0 and that every
     ``MPIPoolExecutor`` it makes uses the other ranks.  Read from the
     launcher's environment and the modules loaded, without importing MPI."""
-    return _launched_size() > 1 and "mpi4py.futures" in sys.modules
+    return launched_size() > 1 and "mpi4py.futures" in sys.modules
 
 
 def executor(workers: int | None, fresh: bool = False) -> Executor:
@@ -141,7 +136,7 @@ def map_cases(function, cases, workers: int | None = None, fresh: bool = False):
 def workers_label(workers: int | None) -> str:
     """How many cases ran at once, for the tables whose timings depend on it."""
     if under_mpi_pool():
-        return f"{_launched_size() - 1} MPI workers"
+        return f"{launched_size() - 1} MPI workers"
     return f"{workers or 1} worker" + ("s" if (workers or 1) > 1 else "")
 
 
@@ -165,7 +160,7 @@ def solver(name: str):
     other workers."""
     petsc_on_self()
     solve = methods.solver(name)
-    if not methods.takes(name, "comm") or (name in methods.MPI_FREE and _launched_size() == 1):
+    if not methods.takes(name, "comm") or (name in methods.MPI_FREE and launched_size() == 1):
         return solve, {}
     from mpi4py import MPI
     return solve, {"comm": MPI.COMM_SELF}

@@ -141,13 +141,11 @@ class BlockNumbering:
     ``index_map`` of them (owned: the rank's nodes' u then its enriched
     nodes' a; ghosts after), ``global_blocks`` the global block of each
     local block (V's nodes, then the enriched ones), ``order`` the index
-    map's local index of each local block, ``owned`` the local blocks
-    this rank owns, in the order of its rows."""
+    map's local index of each local block."""
 
     index_map: object
     global_blocks: np.ndarray
     order: np.ndarray
-    owned: np.ndarray
 
 
 def node_sides(scene: Scene, coords: np.ndarray) -> np.ndarray:
@@ -362,8 +360,7 @@ class EnrichedFunctionSpace:
         n_ghosts, owned_total = n_local - n_owned, n_owned + e_owned
         order = np.concatenate([np.arange(n_owned), owned_total + np.arange(n_ghosts), n_owned + np.arange(e_owned),
                                 owned_total + n_ghosts + np.arange(len(ghost_enriched))])
-        return BlockNumbering(index_map, np.concatenate([glob[:, 0], glob[enriched, 1]]), order,
-                              np.concatenate([np.arange(n_owned), n_local + np.arange(e_owned)]))
+        return BlockNumbering(index_map, np.concatenate([glob[:, 0], glob[enriched, 1]]), order)
 
     @functools.cached_property
     def exchange(self) -> GhostExchange:
