@@ -54,6 +54,30 @@ DEFAULT_OPTIONS = {"ksp_type": "preonly", "pc_type": "lu", "pc_factor_mat_solver
 #: against 0.94 s.
 MUMPS_ORDERING = 2
 
+#: The factorisation of a symmetric tangent (every method's, while its
+#: interface law's tangent is symmetric): MUMPS's LDLᵀ for general symmetric
+#: matrices (PETSc ``cholesky`` on an AIJ matrix not flagged SPD: MUMPS
+#: SYM = 2, with two-by-two pivots, so EFGM's indefinite saddle point and
+#: the positive definite fe and xfem tangents take the same code).  Half of
+#: LU's operations; measured, XFEM P2 on scene B at 9.9e5 unknowns, one
+#: process: solve stage 13.6 s (LU) against 8.1 s; EFGM on scene C at h =
+#: 0.0125 (7.9e4 unknowns, best of 3, no condition estimate): 1.9 s against
+#: LU 2.6 s and SuperLU (:mod:`efgm.sparse_solver`) 13.5 s.
+SYMMETRIC = {"pc_type": "cholesky"}
+
+#: MUMPS's analysis on the graph compressed by 2 × 2 blocks (ICNTL(15) =
+#: −2: a node's x and y), used when the factorised rows come in such pairs
+#: (:meth:`Tangent._paired`).  Measured: EFGM on scene C at h = 0.0125, LDLᵀ
+#: 2.12 → 2.0 s (paired in one process, median of 4); XFEM P2 on scene B at
+#: 9.9e5 unknowns, LDLᵀ, MUMPS's analysis 0.71 → 0.51 s on one rank and
+#: 1.03–1.08 → 0.55 s on two (its serial part).  PORD (ICNTL(7) = 4) needs
+#: half AMF's operations there (6.1e10 against 1.1–1.5e10) but its own
+#: analysis takes 2.4 s, and it ends the whole process, without an
+#: exception, on a small dense graph ("Error in function orderMinPriority:
+#: no valid number of stages in multisector"; every size from 2 to 20
+#: measured), which a coarse EFGM run can give: not used.
+BLOCKS = {"mat_mumps_icntl_15": -2}
+
 _prefixes = itertools.count()
 
 #: Options whose value names a PETSc type, and where petsc4py lists the types.
@@ -240,10 +264,18 @@ def unused_options(prefix: str, opts: dict) -> list[str] | None:
     return [key for key, flag in flags.items() if not flag.value]
 
 
-def _options(user: dict | None, estimate_condition: bool) -> dict:
+def _options(user: dict | None, estimate_condition: bool, paired: bool, symmetric: bool) -> dict:
+    """The PETSc options: the defaults, then ``user``'s; with MUMPS, the
+    :data:`SYMMETRIC` factorisation for a ``symmetric`` matrix unless the
+    user chose one, :data:`BLOCKS` for a ``paired`` one, and the checks."""
     opts = {**DEFAULT_OPTIONS, **(user or {})}
-    if opts.get("pc_factor_mat_solver_type") == "mumps" and opts.get("pc_type") in ("lu", "cholesky"):
+    mumps = opts.get("pc_factor_mat_solver_type") == "mumps"
+    if mumps and symmetric:
+        opts.update({key: value for key, value in SYMMETRIC.items() if key not in (user or {})})
+    if mumps and opts.get("pc_type") in ("lu", "cholesky"):
         opts.setdefault("mat_mumps_icntl_7", MUMPS_ORDERING)
+        if paired:
+            opts.update({key: value for key, value in BLOCKS.items() if key not in opts})
         opts.setdefault("mat_mumps_icntl_24", 1)
         opts.setdefault("mat_mumps_cntl_3", tol.NULL_PIVOT)
         if estimate_condition:
@@ -310,13 +342,14 @@ class Factorisation:
     analysis is kept — and checks it (null pivots, the condition estimate
     when asked for); :meth:`solve` solves with the last factorisation, as
     often as asked (a piecewise-linear law keeps its tangent for whole
-    increments), each solve judged by its own residual.  The caller
+    increments), each solve judged by its own residual.  ``paired`` and
+    ``symmetric`` say what the matrix is, for the options (:func:`_options`).  The caller
     destroys it (:meth:`destroy`).
     """
 
     def __init__(self, *, petsc_options: dict | None = None, estimate_condition: bool = False,
-                 what: str = "linear system"):
-        self.opts = _options(petsc_options, estimate_condition)
+                 what: str = "linear system", paired: bool = False, symmetric: bool = False):
+        self.opts = _options(petsc_options, estimate_condition, paired, symmetric)
         check_options(self.opts)
         self.what, self.count = what, 0
         self.prefix = f"xdolfinx_{next(_prefixes)}_"
@@ -421,26 +454,42 @@ class Tangent:
     block refilled into the submatrix of the slot asked for (with every row
     free, the slot's own copy is refilled directly), and that slot's
     factorisation redone (numerically only: the pattern is fixed).  Each slot keeps its
-    factorisation until it is refilled.  ``symmetric`` options (e.g.
-    MUMPS's LDLᵀ) are used for a symmetric ``K`` while ``K_Γ`` is
-    symmetric too on every rank (``ranks``: the reductions of ``K``'s
-    communicator; each rank holds its points' part of ``K_Γ``); any other
-    tangent takes the general LU.
+    factorisation until it is refilled.  For a ``symmetric`` ``K`` (the
+    caller says so: fe's and xfem's by their weak form, EFGM's by a test)
+    MUMPS's :data:`SYMMETRIC` factorisation is used while ``K_Γ`` is symmetric
+    too on every rank (``ranks``: the reductions of ``K``'s communicator;
+    each rank holds its points' part of ``K_Γ``); any other tangent takes
+    the general LU.  Either compresses MUMPS's graph by :data:`BLOCKS` when
+    the factorised rows come in node pairs (:meth:`_paired`).
     """
 
-    def __init__(self, K, free: np.ndarray, *, work=None, symmetric: dict | None = None,
+    def __init__(self, K, free: np.ndarray, *, work=None, symmetric: bool = False,
                  petsc_options: dict | None = None, estimate_condition: bool = False,
                  what: str = "linear system", ranks: Collective = SERIAL):
         self.K, self.free, self.symmetric, self.ranks = K, np.asarray(free), symmetric, ranks
-        self.options = {False: petsc_options, True: {**(symmetric or {}), **(petsc_options or {})}}
+        self.options = petsc_options
         self.estimate, self.what = estimate_condition, what
         self._slots = {}  # slot -> [free block, Factorisation, symmetric]
         start = K.getOwnershipRange()[0]  # free: this rank's owned rows, numbered from its first
         self._rows = PETSc.IS().createGeneral((start + self.free).astype(PETSc.IntType), comm=K.getComm())
         # every row free (EFGM's multipliers): each slot refills its own copy of J, no submatrix is cut
         self._all_free = self._rows.getSize() == K.getSize()[0]
+        self.paired = self._paired(start)
         self._J, self._vectors = (K.copy() if work is None else work), None
         self._J.setLGMap(*_local_to_global(K))
+
+    def _paired(self, start: int) -> bool:
+        """Whether the factorised rows, in order, pair up as the unknowns
+        ``2k, 2k + 1`` of one node (x and y), the same answer on every
+        rank: every row free and an even global size (EFGM, whose
+        multipliers pair among themselves), or on every rank an even count
+        of free rows that are whole pairs (fe and xfem without a support
+        that holds one component only)."""
+        if self._all_free:
+            return self.K.getSize()[0] % 2 == 0
+        rows = start + self.free
+        return self.ranks.all(len(rows) % 2 == 0 and bool(np.all(rows[0::2] % 2 == 0))
+                              and bool(np.all(rows[1::2] == rows[0::2] + 1)))
 
     def solve(self, interface_tangent: sp.spmatrix | None, rhs: np.ndarray, force_scale: float = 0.0,
               slot: int = 0) -> tuple[np.ndarray, SolverReport]:
@@ -480,12 +529,12 @@ class Tangent:
             block = self._J.createSubMatrix(self._rows, self._rows, submat=block)
         if self._vectors is None:
             self._vectors = block.createVecs()
-        symmetric = self.symmetric is not None and self.ranks.all(is_symmetric(K_Gamma))
+        symmetric = self.symmetric and self.ranks.all(is_symmetric(K_Gamma))
         if factorisation is None or symmetric != was_symmetric:
             if factorisation is not None:
                 factorisation.destroy()
-            factorisation = Factorisation(petsc_options=self.options[symmetric], estimate_condition=self.estimate,
-                                          what=self.what)
+            factorisation = Factorisation(petsc_options=self.options, estimate_condition=self.estimate,
+                                          what=self.what, paired=self.paired, symmetric=symmetric)
         try:
             factorisation.factorise(block)
         except SolverError:

@@ -155,9 +155,7 @@ class DistributedEFGMSystem:
         if self._tangent is None:
             from contactcore import linear_solver as ls
             self._tangent = ls.Tangent(self.A, np.arange(self.size), work=self.work,
-                                       symmetric=petsc_solver.SYMMETRIC if self.symmetric else None,
-                                       petsc_options=petsc_solver.options(self.A.getSize()[0]),
-                                       estimate_condition=self.estimate, what=self.what, ranks=self.collective)
+                                       symmetric=self.symmetric, estimate_condition=self.estimate, what=self.what, ranks=self.collective)
         return self._tangent.solve(interface_tangent, rhs, force_scale, slot)
 
     def close(self) -> None:

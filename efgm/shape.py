@@ -38,6 +38,7 @@ import numpy as np
 from scipy.spatial import cKDTree
 
 from contactcore import DiscretisationError
+from contactcore.collective import launched_size
 
 #: A moment matrix is regular when ``det(A)/Π A_ii`` (its determinant once
 #: scaled to a unit diagonal) exceeds this.  Measured on grids with 2e4
@@ -187,11 +188,22 @@ def matmul(a: np.ndarray, b: np.ndarray) -> np.ndarray:
         return a @ b
 
 
+def threads() -> int:
+    """How many threads :func:`parallel_map` uses: ``OMP_NUM_THREADS`` when
+    set (the share of the cores that a study's workers and the scaling
+    benchmark's ranks are given, as for BLAS); else one per rank under
+    mpirun (MPI's one rank per core), one per core without it."""
+    try:
+        return max(1, int(os.environ["OMP_NUM_THREADS"]))
+    except (KeyError, ValueError):
+        return 1 if launched_size() > 1 else os.cpu_count() or 1
+
+
 def parallel_map(function, items):
-    """``function`` of each item, in order, on one thread per core (numpy
+    """``function`` of each item, in order, on :func:`threads` threads (numpy
     releases the GIL in its kernels); a generator, so a consumer can reduce
     the results as they come."""
-    with ThreadPoolExecutor(os.cpu_count() or 1) as pool:
+    with ThreadPoolExecutor(threads()) as pool:
         yield from pool.map(function, items)
 
 

@@ -119,6 +119,38 @@ def test_efgm_mumps_picks_ldlt_only_for_a_symmetric_system(asymmetry, factor):
     assert np.max(np.abs(x - ref)) <= tol.SOLVER_AGREEMENT * np.max(np.abs(ref))
 
 
+@pytest.mark.parametrize("free, paired", [([0, 1, 2, 3, 6, 7], True), ([0, 1, 3, 4], False), ([1, 2], False),
+                                          ([0, 1, 2], False)])
+def test_mumps_compresses_only_whole_node_pairs(free, paired):
+    """ICNTL(15) = −2 groups the factorised rows two by two: only right
+    when they are a node's x and y (a support holding one component
+    shifts them)."""
+    K = linear_solver.to_petsc(_laplacian(3) + sp.identity(9))
+    tangent = linear_solver.Tangent(K, np.array(free), symmetric=True)
+    try:
+        rhs = np.ones(9)
+        du, report = tangent.solve(sp.csr_matrix((9, 9)), rhs)
+        assert tangent.paired is paired
+        assert ("mat_mumps_icntl_15" in report.options) is paired
+        assert report.solver == "preonly+cholesky (mumps)"
+        J = (_laplacian(3) + sp.identity(9)).toarray()[np.ix_(free, free)]
+        assert np.allclose(J @ du[free], rhs[free])
+    finally:
+        tangent.close()
+
+
+def test_a_symmetric_tangent_keeps_a_solver_the_user_chose():
+    """LDLᵀ is MUMPS's: SuperLU asked for by the user is used as asked (LU)."""
+    K = linear_solver.to_petsc(_laplacian(3) + sp.identity(9))
+    tangent = linear_solver.Tangent(K, np.arange(9), symmetric=True,
+                                    petsc_options={"pc_factor_mat_solver_type": "superlu"})
+    try:
+        _, report = tangent.solve(sp.csr_matrix((9, 9)), np.ones(9))
+        assert report.solver == "preonly+lu (superlu)" and report.warnings == []
+    finally:
+        tangent.close()
+
+
 def _run_efgm(out, block_petsc: bool) -> dict:
     """``run A --method efgm --h 0.2`` in a fresh interpreter; its summary."""
     code = ("import sys; " + ("sys.modules['petsc4py'] = None; " if block_petsc else "")

@@ -126,3 +126,17 @@ def test_local_workers_share_out_the_cores(monkeypatch):
     assert got == [str(max(1, (os.cpu_count() or 1) // 2))] * 2
     assert list(pool.map_cases(os.getenv, list(pool.THREAD_VARIABLES))) == [None, None]  # serial: untouched
     assert not any(name in os.environ for name in pool.THREAD_VARIABLES)
+
+
+def test_efgm_threads_take_their_share_of_the_cores(monkeypatch):
+    """EFGM's numpy threads: OMP_NUM_THREADS when set (a worker's share),
+    one per rank under mpirun, else one per core."""
+    from efgm import shape
+
+    for name in ("OMP_NUM_THREADS", "OMPI_COMM_WORLD_SIZE", "PMI_SIZE"):
+        monkeypatch.delenv(name, raising=False)
+    assert shape.threads() == (os.cpu_count() or 1)
+    monkeypatch.setenv("OMPI_COMM_WORLD_SIZE", "2")
+    assert shape.threads() == 1
+    monkeypatch.setenv("OMP_NUM_THREADS", "3")
+    assert shape.threads() == 3

@@ -31,7 +31,7 @@ def test_floating_body_cli_exits_non_zero_without_traceback(tmp_path):
 def test_report_carries_residual_backward_error_and_condition():
     res = conforming.solve(load_scene("A"), 0.2, estimate_condition=True)
     rep = res.solver
-    assert rep.solver == "preonly+lu (mumps)"
+    assert rep.solver == "preonly+cholesky (mumps)"  # the linear law's tangent is symmetric: LDLᵀ
     assert 0 < rep.backward_error < 1e-14 and rep.residual <= RESIDUAL_FAIL
     assert rep.condition is not None and rep.condition > 1.0
     assert rep.iterations == [1] and rep.increments == 1 and rep.solves == 1  # one solve, recorded as one

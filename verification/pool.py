@@ -98,7 +98,8 @@ def worker_logging(level: int) -> None:
 
 
 #: The variables that size the BLAS and OpenMP thread pools (Debian's
-#: OpenBLAS reads the first, its OpenMP build and MUMPS the second).
+#: OpenBLAS reads the first, its OpenMP build and MUMPS the second, EFGM's
+#: numpy threads the second: :func:`efgm.shape.threads`).
 THREAD_VARIABLES = ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS")
 
 
@@ -106,10 +107,10 @@ THREAD_VARIABLES = ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS")
 def _threads_per_worker(workers: int | None):
     """The environment that K > 1 local workers are spawned with: the cores
     shared out, ``max(1, cores // K)`` threads each, unless the user sized
-    the thread pools already.  A serial run's BLAS
-    already keeps every core busy (a 3 × 4-point study on B: 31 s with its
-    threads, 43 s with one), so K workers left at one pool of threads each
-    would ask for K times the cores and run each case K times slower."""
+    the thread pools already.  A serial run keeps every core busy (EFGM's
+    shape functions and assembly run on one numpy thread per core), so K
+    workers left at one pool of threads each would ask for K times the
+    cores and run each case up to K times slower."""
     saved = {k: os.environ.get(k) for k in THREAD_VARIABLES}
     if (workers or 1) > 1:
         for k in THREAD_VARIABLES:

@@ -39,8 +39,10 @@ class PETScSystem:
         self.fixed = constraints.dofs
         self.free = np.setdiff1d(np.arange(self.size), self.fixed)
         self.interface = interface
-        self._tangent = linear_solver.Tangent(K, self.free, petsc_options=petsc_options,
-                                              estimate_condition=estimate_condition, what=what)
+        # K is symmetric by its weak form: LDLᵀ while the law's tangent is
+        self._tangent = linear_solver.Tangent(K, self.free, symmetric=True, petsc_options=petsc_options,
+                                              estimate_condition=estimate_condition, what=what,
+                                              ranks=self.collective)
 
     def fixed_values(self, support_factors) -> np.ndarray:
         return self.constraints.at(support_factors)
