@@ -477,6 +477,7 @@ class Tangent:
         self.paired = self._paired(start)
         self._J, self._vectors = (K.copy() if work is None else work), None
         self._J.setLGMap(*_local_to_global(K))
+        self._same_pattern = work is None  # J's pattern is K's: refilled by a copy of K's values
 
     def _paired(self, start: int) -> bool:
         """Whether the factorised rows, in order, pair up as the unknowns
@@ -507,9 +508,15 @@ class Tangent:
         return du, report
 
     def _fill(self, J, K_Gamma: sp.csr_matrix) -> None:
-        """``J = K + K_Γ`` in place (``J``'s pattern holds both)."""
-        J.zeroEntries()
-        J.axpy(1.0, self.K, structure=PETSc.Mat.Structure.SUBSET_NONZERO_PATTERN)
+        """``J = K + K_Γ`` in place (``J``'s pattern holds both).  On
+        ``K``'s own pattern, ``K``'s values are copied (fe P2 on scene B at
+        5.8e5 unknowns, one process: 0.57 s for PETSc's ``axpy`` on a
+        subset pattern, which goes row by row, against 0.03 s)."""
+        if self._same_pattern:
+            self.K.copy(J, structure=PETSc.Mat.Structure.SAME_NONZERO_PATTERN)
+        else:
+            J.zeroEntries()
+            J.axpy(1.0, self.K, structure=PETSc.Mat.Structure.SUBSET_NONZERO_PATTERN)
         J.setValuesLocalCSR(K_Gamma.indptr.astype(PETSc.IntType), K_Gamma.indices.astype(PETSc.IntType),
                             K_Gamma.data, addv=PETSc.InsertMode.ADD_VALUES)
         J.assemble()
