@@ -44,6 +44,42 @@ def test_shape_functions_reproduce_polynomials(degree, support, weight, perturb)
         assert np.max(np.abs(xy - pts[:, 0] * pts[:, 1])) <= tol.SHAPE_ROUNDOFF
 
 
+def _dense(sv, n_nodes: int) -> tuple[np.ndarray, np.ndarray]:
+    """Φ (P, N) and ∇Φ (P, N, 2) of shape values, whatever their padding."""
+    rows = np.repeat(np.arange(len(sv.index)), sv.index.shape[1])
+    used = sv.index.ravel() >= 0
+    phi, grad = np.zeros((len(sv.index), n_nodes)), np.zeros((len(sv.index), n_nodes, 2))
+    phi[rows[used], sv.index.ravel()[used]] = sv.phi.ravel()[used]
+    grad[rows[used], sv.index.ravel()[used]] = sv.grad.reshape(-1, 2)[used]
+    return phi, grad
+
+
+@pytest.mark.parametrize("degree", [1, 2])
+@pytest.mark.parametrize("threads", ["1", "2"])
+def test_evaluation_in_chunks_is_pointwise(degree, threads, monkeypatch):
+    """Points evaluated together, in several chunks of different widths (a
+    perturbed grid), on one or two threads, get what each gets alone (to
+    round-off: the sums run over other shapes), and the padding is empty."""
+    from efgm.nodes import NodeSet
+    from efgm.shape import POINT_CHUNK
+
+    monkeypatch.setenv("OMP_NUM_THREADS", threads)
+    nodes = _grid(perturb=0.4)
+    mls = MLS(nodes, support_radii(NodeSet(nodes, 0.1), {1: 2.0, 2: 3.0}[degree], False), degree=degree)
+    pts = np.random.default_rng(2).uniform(0, 1, (2 * POINT_CHUNK + 77, 2))
+    together = mls.evaluate(pts)
+    alone = [mls.evaluate(p) for p in pts[::97]]
+    widths = {mls.evaluate(pts[i:i + POINT_CHUNK]).index.shape[1] for i in range(0, len(pts), POINT_CHUNK)}
+    assert len(widths) > 1  # the chunks' own widths differ: the output pads the narrower ones
+    phi, grad = _dense(together, len(nodes))
+    for i, one in zip(range(0, len(pts), 97), alone):
+        phi_i, grad_i = _dense(one, len(nodes))
+        assert np.max(np.abs(phi[i] - phi_i[0])) <= tol.SHAPE_ROUNDOFF
+        assert np.max(np.abs(grad[i] - grad_i[0])) <= tol.SHAPE_ROUNDOFF * 10  # gradients scale as 1/h = 10
+    padding = together.index < 0
+    assert not together.phi[padding].any() and not together.grad[padding].any()
+
+
 def test_enriched_sets_reproduce_a_discontinuous_linear_field():
     """The enriched approximation holds u⁻ on the − side and u⁺ on the + side,
     both linear: u_I = own-side value, a_J = (u⁺ − u⁻)(x_J)/2 (Eq. 19)."""

@@ -83,6 +83,26 @@ def test_efficiency_table_and_plot(tmp_path):
     assert "worst at" in (tmp_path / "efficiency.md").read_text()
 
 
+def test_shapes_benchmark_reports_rates_of_right_shape_functions(tmp_path, capsys):
+    """The shape-function benchmark: one row per basis, a rate, and the
+    evaluation's own partition-of-unity and reproduction defects at
+    round-off; sizes it cannot use are one-line errors."""
+    import tolerances as tol
+
+    assert main(["shapes", "--grid", "11", "--points", "3000", "--repeats", "1", "--out", str(tmp_path)]) == 0
+    with open(tmp_path / "shapes.csv") as fh:
+        rows = list(csv.DictReader(fh))
+    assert [r["basis"] for r in rows] == ["linear", "quadratic"]
+    for row in rows:
+        assert row["points"] == "3000" and float(row["points_per_s"]) > 0 and int(row["threads"]) >= 1
+        assert max(float(row[k]) for k in ("unity", "reproduction")) <= tol.SHAPE_ROUNDOFF
+        assert max(float(row[k]) for k in ("gradient_unity", "gradient_reproduction")) <= tol.SHAPE_ROUNDOFF * 10
+    for bad in (["--grid", "2"], ["--points", "0"], ["--repeats", "0"]):
+        assert main(["shapes", *bad, "--out", str(tmp_path / "bad")]) == 2
+        assert capsys.readouterr().err.strip().splitlines()[-1].startswith(f"error: {bad[0]}: must be at least")
+    assert not (tmp_path / "bad").exists()
+
+
 def test_efgm_nodes_from_a_file(tmp_path, capsys):
     """Any point set, read from a file: here the vertices of a perturbed grid."""
     import numpy as np

@@ -12,6 +12,7 @@
     python -m verification report DIR [--quick]
     python -m verification benchmark [--scene A B C] --out DIR      (needs python3-getfem)
     python -m verification timing SCENE [SCENE ...] --method fe --degree 1 2 --h H1 H2 ... --out DIR
+    python -m verification shapes [--basis linear quadratic] [--grid 101] [--points 200000] [--repeats 5] --out DIR
     python -m verification scaling SCENE --method xfem --degree 2 --h H ... --ranks 1 2 --out DIR   (launches mpirun)
 
 ``study``, ``sweeps``, ``efficiency``, ``paper``, ``benchmark`` and ``report`` take
@@ -137,6 +138,12 @@ def _parser() -> argparse.ArgumentParser:
     tim.add_argument("--degree", nargs="+", type=int, default=[1], choices=(1, 2))
     tim.add_argument("--h", nargs="+", type=float, required=True)
     tim.add_argument("--out", type=Path, required=True)
+    shp = sub.add_parser("shapes", parents=[common], help="EFGM's shape functions with gradients: points per second")
+    shp.add_argument("--basis", nargs="+", default=["linear", "quadratic"], choices=["linear", "quadratic"])
+    shp.add_argument("--grid", type=int, default=101, help="nodes per side of the unit square (default 101)")
+    shp.add_argument("--points", type=int, default=200_000, help="random points evaluated (default 200000)")
+    shp.add_argument("--repeats", type=int, default=5, help="timed evaluations; the median is reported (default 5)")
+    shp.add_argument("--out", type=Path, required=True)
     sca = sub.add_parser("scaling", parents=[common],
                          help="strong scaling: the timing ladder under mpirun on each rank count, one BLAS thread per rank")
     sca.add_argument("scene")
@@ -200,6 +207,16 @@ def _check_ranks_list(args) -> None:
         raise ContactError(f"--ranks: every rank count must be at least 1 (got {args.ranks})")
 
 
+def _check_counts(args) -> None:
+    """``shapes``' sizes: a grid of at least 3 nodes a side (a linear
+    basis needs 3 nodes off one line in every support), at least one point
+    and one timed evaluation."""
+    for name, least in (("grid", 3), ("points", 1), ("repeats", 1)):
+        value = getattr(args, name, None)
+        if value is not None and value < least:
+            raise ContactError(f"--{name}: must be at least {least} (got {value})")
+
+
 def _check_workers(args) -> None:
     workers = getattr(args, "workers", None)
     if workers is not None and workers < 1:
@@ -258,6 +275,9 @@ def _dispatch(args, argv) -> None:
     elif cmd == "report":
         from .report import report
         report(args.out, args.quick, workers=args.workers, argv=argv)
+    elif cmd == "shapes":
+        from .shapes import shapes
+        shapes(args.basis, args.grid, args.points, args.repeats, args.out, argv=argv)
     elif cmd == "scaling":
         from .scaling import scaling
         scaling(args.scene, methods.expand(args.method), args.degree, args.h, args.ranks, args.out, argv=argv)
@@ -308,6 +328,7 @@ def main(argv=None) -> int:
         _check_ranks(args)
         _check_sizes(args)
         _check_workers(args)
+        _check_counts(args)
         _check_ranks_list(args)
         if getattr(args, "out", None) is None:
             _dispatch(args, argv)

@@ -1,0 +1,87 @@
+"""``python -m verification shapes``: EFGM's shape functions with gradients,
+points per second (issue 16's benchmark).
+
+The node set is an ``n × n`` grid on the unit square, whose supports
+(``dmax · c_I``, :func:`efgm.nodes.support_radii`) are larger along the
+edges; the points are uniformly random (a fixed seed).  For each basis, one
+warm-up evaluation of a few points (it fills the neighbour tables), then
+``repeats`` timed evaluations of all points; the median rate is reported.
+Each row also carries the evaluation's largest partition-of-unity and
+linear-reproduction defects, ``max |Σ Φ_I − 1|`` and ``max |Σ Φ_I x_I − x|``
+(and their gradients'), so that no rate stands for a wrong evaluation.
+Threads: :func:`efgm.shape.threads` (``OMP_NUM_THREADS``, else one per
+core).  Writes ``DIR/shapes.csv``, ``DIR/shapes.md`` and ``DIR/run.json``.
+"""
+from __future__ import annotations
+
+import logging
+import time
+from pathlib import Path
+
+import numpy as np
+
+from efgm.nodes import NodeSet, support_radii
+from efgm.shape import MLS, threads
+
+from . import files
+
+log = logging.getLogger("verification")
+
+#: The support factor of each basis: the methods' defaults (EFGM's options).
+DMAX = {"linear": 2.0, "quadratic": 3.0}
+
+#: Seed of the random points.
+SEED = 0
+
+#: Points of the warm-up evaluation.
+WARM_UP = 1000
+
+COLUMNS = ["basis", "grid", "points", "threads", "median_s", "points_per_s", "unity", "reproduction",
+           "gradient_unity", "gradient_reproduction"]
+
+
+def defects(values, nodes: np.ndarray, points: np.ndarray) -> dict:
+    """The partition-of-unity and linear-reproduction defects of shape
+    ``values`` (:class:`efgm.shape.ShapeValues`) at ``points``: largest
+    ``|Σ Φ_I − 1|``, ``|Σ Φ_I x_I − x|``, ``|Σ ∇Φ_I|`` and ``|Σ ∇Φ_I x_Iᵀ − I|``."""
+    x = nodes[np.maximum(values.index, 0)]  # (P, K, 2); padded entries have Φ = 0
+    gx = np.einsum("pkd,pke->pde", values.grad, x)
+    return {"unity": float(np.max(np.abs(values.phi.sum(axis=1) - 1.0))),
+            "reproduction": float(np.max(np.abs(np.einsum("pk,pkd->pd", values.phi, x) - points))),
+            "gradient_unity": float(np.max(np.abs(values.grad.sum(axis=1)))),
+            "gradient_reproduction": float(np.max(np.abs(gx - np.eye(2))))}
+
+
+def measure(basis: str, grid: int, count: int, repeats: int) -> dict:
+    """One row of the table (module doc)."""
+    axis = np.linspace(0.0, 1.0, grid)
+    nodes = np.column_stack([a.ravel() for a in np.meshgrid(axis, axis, indexing="ij")])
+    degree = {"linear": 1, "quadratic": 2}[basis]
+    mls = MLS(nodes, support_radii(NodeSet(nodes, 1.0 / (grid - 1)), DMAX[basis], False), degree=degree,
+              dilation=DMAX[basis])
+    points = np.random.default_rng(SEED).random((count, 2))
+    mls.evaluate(points[:WARM_UP])
+    seconds = []
+    for _ in range(repeats):
+        start = time.perf_counter()
+        values = mls.evaluate(points)
+        seconds.append(time.perf_counter() - start)
+    median = float(np.median(seconds))
+    row = {"basis": basis, "grid": grid, "points": count, "threads": threads(), "median_s": median,
+           "points_per_s": count / median, **defects(values, nodes, points)}
+    log.info("shapes, %s basis, %d² grid, %d points on %d thread(s): %.3g points/s (median of %d); unity %.1e, "
+             "reproduction %.1e", basis, grid, count, row["threads"], row["points_per_s"], repeats, row["unity"],
+             row["reproduction"])
+    return row
+
+
+def shapes(bases: list[str], grid: int, count: int, repeats: int, out: Path, argv=()) -> list[dict]:
+    """The table of every basis, in this one process."""
+    rows = [measure(basis, grid, count, repeats) for basis in bases]
+    out = Path(out)
+    files.write_csv(out / "shapes.csv", rows, COLUMNS)
+    files.write_text(out / "shapes.md", "# EFGM shape functions with gradients\n\n" + files.markdown_table(
+        rows, COLUMNS, ["basis", "grid", "points", "threads", "median (s)", "points/s", "max |ΣΦ − 1|",
+                        "max |ΣΦx − x|", "max |Σ∇Φ|", "max |Σ∇Φ xᵀ − I|"]))
+    files.write_json(out / "run.json", files.provenance(list(argv)))
+    return rows
