@@ -111,6 +111,27 @@ def test_slivers_keep_the_answer_and_the_conditioning(cell, record_property):
     assert max(conditions) <= 3 * plain.solver.condition, conditions
 
 
+#: Scene A with Γ at y = 1 − STRIP: the + body a strip along the top.
+STRIP = 0.005
+
+
+@pytest.mark.parametrize("degree", [1, 2])
+def test_a_body_no_cell_resolves_is_refused_then_resolved_when_refined(degree):
+    """A + body thinner than tol.SLIVER_EVAL_DEPTH of every cell it lies in
+    (a strip of 0.1 h at h = 0.05) has no cell to evaluate its fields in:
+    refused by name (its fields used to read zero, exit 0). At h = 0.025
+    the strip is 0.14 of a cell's diameter: solved, and its displacement
+    agrees with fe's."""
+    scene = load_scene("A").with_changes(interface=LineInterface((0.0, 1.0 - STRIP), (0.0, 1.0)), profiles=())
+    with pytest.raises(DiscretisationError, match="no cell resolves body plus"):
+        xfem.solve(scene, 0.05, degree=degree)
+    points = np.column_stack([np.linspace(0.1, 0.9, 9), np.full(9, 1.0 - STRIP / 2)])
+    bodies = np.ones(9, int)
+    got = xfem.solve(scene, 0.025, degree=degree).fields.displacement(points, bodies)
+    want = conforming.solve(scene, 0.025, degree=2).fields.displacement(points, bodies)
+    assert np.max(np.abs(got - want)) <= tol.STRIP_AGREEMENT * np.max(np.abs(want)), (got, want)
+
+
 @pytest.mark.parametrize("kind", ["shear", "stretch"])
 @pytest.mark.parametrize("solver", ["fe", "xfem quad", "xfem triangle"])
 def test_quadratic_field_is_reproduced_by_degree_two(solver, kind):

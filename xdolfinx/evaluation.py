@@ -15,6 +15,9 @@ from dolfinx.mesh import compute_midpoints
 from mpi4py import MPI
 from scipy.spatial import cKDTree
 
+from contactcore import DiscretisationError
+from contactcore.bodies import Body
+
 #: Nearest cell midpoints examined before the exact distance decides.
 _NEAREST_CANDIDATES = 8
 
@@ -88,8 +91,14 @@ class BodyCellLocator:
         cells, dist, key = self.cells_and_distances(points, bodies)
         mine = cells >= 0
         comm = self.msh.comm
+        dists = dist[None] if comm.size == 1 else np.array(comm.allgather(dist))
+        nowhere = np.flatnonzero(np.all(np.isinf(dists), axis=0))
+        if len(nowhere):  # every rank sees it: a zero would otherwise stand for the value
+            i = int(nowhere[0])
+            raise DiscretisationError(f"no cell of body {Body(int(bodies[i])).label} to evaluate its fields in at "
+                                      f"({points[i][0]:.6g}, {points[i][1]:.6g}) ({len(nowhere)} point(s))")
         if comm.size > 1:
-            dists, keys = np.array(comm.allgather(dist)), np.array(comm.allgather(key))
+            keys = np.array(comm.allgather(key))
             mine &= np.lexsort((keys[..., 1], keys[..., 0], dists), axis=0)[0] == comm.rank
         return cells, mine
 

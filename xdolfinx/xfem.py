@@ -56,7 +56,7 @@ from contactcore import tolerances as tol
 from contactcore.cutcell import cut_polygon, edge_crossings, gauss01, interface_rule_in, polygon_rule
 from contactcore.geometry import LevelSetInterface, Rectangle, tangent_of
 from contactcore.assembly import Triplets
-from contactcore.bodies import index_of_sign, sign_of, sign_of_index
+from contactcore.bodies import Body, index_of_sign, sign_of, sign_of_index
 from contactcore.bodies import side as side_of
 from contactcore.collective import Collective
 from contactcore.constraints import Constraints
@@ -261,6 +261,26 @@ class EnrichedFunctionSpace:
         if not self.ranks.all(not self.curved[self.band].any()):
             raise DiscretisationError("xfem: Γ reaches a curved cell of the rim (its cut-cell quadrature assumes "
                                       "straight cells there); refine h")
+        for body in Body:
+            self._check_resolved(body)
+
+    def _check_resolved(self, body: Body) -> None:
+        """A clear error where no cell, on any rank, resolves ``body``
+        (:meth:`cells_resolving`): a body thinner than
+        tol.SLIVER_EVAL_DEPTH of a cell wherever Γ cuts it (a strip along an
+        edge, a corner, a rod smaller than a cell) could be evaluated
+        nowhere, and its fields would read zero."""
+        resolving = self.cells_resolving(body.sign)
+        if self.ranks.sum(int(np.count_nonzero(resolving < self.owned_cells))) > 0:
+            return
+        cut = np.array(sorted(self.regions), dtype=int)
+        reach = self.ranks.max(float(np.max(self.depth[cut, int(body)] / self.cell_size[cut], initial=0.0)))
+        refine = (f"divide h by about {tol.SLIVER_EVAL_DEPTH / reach:.3g} or more" if reach > 0
+                  else "Γ only grazes it")
+        raise DiscretisationError(
+            f"xfem: no cell resolves body {body.label}: wherever Γ cuts it, it reaches at most {reach:.3g} of a "
+            f"cell's diameter from Γ (at least {tol.SLIVER_EVAL_DEPTH:g} is needed to evaluate its fields); "
+            f"{refine}, or use fe")
 
     def _depths(self, parts, corners: np.ndarray, corner_phi: np.ndarray) -> np.ndarray:
         """(2,): how far the − and + parts of a cut cell reach from Γ,
@@ -752,11 +772,12 @@ class XFEMFields:
         return self._eval(points, bodies, True)
 
 
-def _support_rows(space: EnrichedFunctionSpace) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def _support_rows(space: EnrichedFunctionSpace) -> tuple[list, list, list]:
     """Rows (owned unknowns) of the supports and pins, their values at a
     factor of 1 and the support each follows (−1 for a pin or a fixed
-    zero).  Each rank finds them among its local nodes (a rank may not see
-    every facet around a node it owns); the owners read the sums."""
+    zero), as lists of arrays for :meth:`Constraints.on_dofs`.  Each rank
+    finds them among its local nodes (a rank may not see every facet around
+    a node it owns); the owners read the sums."""
     scene, msh, V = space.scene, space.msh, space.V
     rows, vals, owners = [], [], []
     tol_L = tol.NODE_MATCH * scene.length_scale
@@ -788,10 +809,7 @@ def _support_rows(space: EnrichedFunctionSpace) -> tuple[np.ndarray, np.ndarray,
             raise DiscretisationError(f"pins[{i}]: xfem needs pins at mesh nodes; the nearest is {nearest:.3g} away")
         for comp in pin.fix:
             fix(at, "xy".index(comp), 0.0, -1)
-    if not rows:
-        return np.zeros(0, np.int64), np.zeros(0), np.zeros(0, int)
-    rows, idx = np.unique(np.concatenate(rows), return_index=True)
-    return rows.astype(np.int64), np.concatenate(vals)[idx], np.concatenate(owners)[idx]
+    return rows, vals, owners
 
 
 def build(scene: Scene, options: XFEM, resolution: Resolution, timings: Timings) -> Built:
@@ -815,7 +833,7 @@ def build(scene: Scene, options: XFEM, resolution: Resolution, timings: Timings)
         A.assemble()
         rows, values, owners = _support_rows(space)
         system = PETScSystem(A, [_load_vector(space, L, load) for L, load in zip(loads, scene.loads)],
-                             Constraints.on_dofs([rows], [values], [owners]), interface_operator(space),
+                             Constraints.on_dofs(rows, values, owners, space.ranks), interface_operator(space),
                              comm=msh.comm, petsc_options=options.petsc_options,
                              estimate_condition=options.estimate_condition, what=f"scene {scene.name} (xfem)")
     owned = space.owned_cells
