@@ -16,6 +16,9 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.sparse as sp
 
+from .collective import SERIAL, Collective
+from .errors import SceneError
+
 
 @dataclass
 class Constraints:
@@ -39,17 +42,32 @@ class Constraints:
         return len(self.values)
 
     @classmethod
-    def on_dofs(cls, dofs: list, values: list, owners: list) -> "Constraints":
+    def on_dofs(cls, dofs: list, values: list, owners: list, ranks: Collective = SERIAL) -> "Constraints":
         """Rows on unknowns given as lists of arrays; an unknown given twice
         keeps its first entry (a corner shared by two supports, a field
-        already held at zero)."""
+        already held at zero) where both prescribe the same: the same value,
+        and the same load path unless that value is zero.  Otherwise which
+        support won would depend on their order: a :class:`SceneError`,
+        raised on every rank alike (``ranks``, each rank giving its owned
+        unknowns), as EFGM's collocation refuses the same clash."""
         if not dofs:
             return cls(np.zeros(0), np.zeros(0, int), dofs=np.zeros(0, np.int64))
         d, v, o = (np.concatenate([np.ravel(p) for p in a]) for a in (dofs, values, owners))
-        unique, first = np.unique(d.astype(np.int64), return_index=True)
+        unique, first, inverse = np.unique(d.astype(np.int64), return_index=True, return_inverse=True)
+        kept_v, kept_o = v[first][inverse.ravel()], o[first][inverse.ravel()]
+        clash = np.flatnonzero((v != kept_v) | ((v != 0) & (o != kept_o)))
+        i = clash[0] if len(clash) else None
+        ranks.raise_any(None if i is None else SceneError(
+            _prescriber(o[i]), f"prescribes a displacement that {_prescriber(kept_o[i])} prescribes too, with "
+            f"another value or load path ({len(clash)} unknown(s)); make them agree where they meet"))
         return cls(v[first], o[first], dofs=unique)
 
     def at(self, support_factors) -> np.ndarray:
         """The prescribed values at the supports' ``support_factors``."""
         factor = np.asarray(tuple(support_factors) + (0.0,))[self.owners]
         return self.values * np.where(self.owners >= 0, factor, 0.0)
+
+
+def _prescriber(owner: int) -> str:
+    """What prescribes a row of ``owner`` (Constraints' ``owners``)."""
+    return f"supports[{owner}]" if owner >= 0 else "pins"

@@ -221,7 +221,7 @@ class _Constraints:
 
     def constraints(self) -> Constraints:
         """The prescribed unknowns as the one constraint type."""
-        return Constraints.on_dofs(self.fixed, self.values, self.owner)
+        return Constraints.on_dofs(self.fixed, self.values, self.owner, self.exchange.ranks)
 
 
 def _components(fix: str) -> list[int]:
