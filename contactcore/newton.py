@@ -237,11 +237,26 @@ class _Newton:
         self.ranks = getattr(system, "collective", SERIAL)  # every decision is taken on all ranks alike
         self._factorised = []  # (slot, interface tangent) of the system's factorisations, last used last
 
-    def _residual(self, u, b, response) -> tuple[np.ndarray, float]:
+    def _residual(self, u, b, response, lift: float) -> tuple[np.ndarray, float]:
+        """The residual and the force scale it is judged against: the
+        largest of the loads, the internal forces, and ``lift``, the forces
+        the prescribed displacements alone exert on the free unknowns (data,
+        like the loads: a stress-free answer — a rigid shift, bodies pulled
+        apart — has internal forces of round-off, which alone made round-off
+        look like a residual of order 1)."""
         internal = self.system.internal(u) + self.itf.forces(response.traction)
         R = internal - b
-        scale = max(np.max(np.abs(b[self.free]), initial=0.0), np.max(np.abs(internal), initial=0.0))
+        scale = max(np.max(np.abs(b[self.free]), initial=0.0), np.max(np.abs(internal), initial=0.0), lift)
         return R, self.ranks.max(scale)
+
+    def _lift(self, supports) -> float:
+        """The largest force on a free unknown of the prescribed
+        displacements at the ``supports``' factors, every other unknown at zero."""
+        prescribed = np.zeros(self.system.size)
+        prescribed[self.system.fixed] = self.system.fixed_values(supports)
+        if not prescribed.any():
+            return 0.0
+        return float(np.max(np.abs(self.system.internal(prescribed)[self.free]), initial=0.0))
 
     def step(self, k: float) -> None:
         """Converge the step to increment ``k`` from the committed state, or
@@ -250,10 +265,11 @@ class _Newton:
         b = self.system.external(loads, supports)
         u = self.u.copy()
         u[self.system.fixed] = self.system.fixed_values(supports)
+        lift = self._lift(supports)
         history, tangent = [], None
         for it in range(1, tol.NEWTON_MAX_ITERATIONS + 1):
             response = self.law.evaluate(self.itf.jumps(u), self.state)
-            R, scale = self._residual(u, b, response)
+            R, scale = self._residual(u, b, response, lift)
             norm = self.ranks.max(float(np.max(np.abs(R[self.free]), initial=0.0)))
             history.append(norm / scale if scale > 0 else norm)
             if not np.isfinite(norm):
