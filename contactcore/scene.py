@@ -459,6 +459,9 @@ def validate(scene: Scene) -> None:
         _check_fix(sup.fix, f"supports[{i}].fix")
         for k, v in zip("xy", sup.value):
             _finite(v, f"supports[{i}].value.{k}")
+            if v != 0 and k not in sup.fix:
+                raise SceneError(f"supports[{i}].value", f"gives u_{k} = {v:g}, but fix = {sup.fix!r} does not "
+                                 f"hold u_{k}: add {k} to fix, or give 0")
         _check_path(scene, sup.path, f"supports[{i}].path")
     for i, pin in enumerate(scene.pins):
         _check_point_inside(scene, pin.point, f"pins[{i}].point")

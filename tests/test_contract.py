@@ -20,8 +20,8 @@ import numpy as np
 import pytest
 
 import tolerances as tol
-from contactcore import (CoulombLaw, DiscretisationError, LinearLaw, SolverError, UnilateralLaw, load_scene,
-                         sample_profiles)
+from contactcore import (ContactError, CoulombLaw, DiscretisationError, LinearLaw, SolverError, Support,
+                         UnilateralLaw, load_scene, sample_profiles)
 from contactcore import discretisation
 from contactcore.geometry import LevelSetInterface
 from contactcore.profiles import interface_response
@@ -105,6 +105,50 @@ def test_friction_that_cannot_carry_the_load_is_refused(key, patch):
     with pytest.raises(SolverError, match="failed after"):
         discretisation.solve(patch.scene.with_changes(law=CoulombLaw(law.kN, law.kT, SLIP_MU)),
                              METHODS[key][0], PATCH_H)
+
+
+#: A prescribed displacement that leaves both bodies stress-free (m).
+SHIFT = 1e-6
+
+#: Scene A's stress-free cases: bottom moved rigidly with no load (both
+#: bodies shift by it), and the top pulled up off the fixed bottom with
+#: unilateral contact (Γ opens by it).  The forces of the answer are
+#: round-off; only the prescribed displacements' own forces give a scale.
+STRESS_FREE = {
+    "rigid shift": dict(supports=(Support("bottom", "xy", (SHIFT, 0.0)),),
+                        want=lambda y: np.column_stack([np.full(len(y), SHIFT), np.zeros(len(y))])),
+    "pulled open": dict(supports=(Support("bottom", "xy"), Support("top", "xy", (0.0, SHIFT))), unilateral=True,
+                        want=lambda y: np.column_stack([np.zeros(len(y)), np.where(y > 0.5, SHIFT, 0.0)])),
+}
+
+
+@pytest.mark.parametrize("case", list(STRESS_FREE))
+@pytest.mark.parametrize("key", list(METHODS), ids=lambda k: f"{k[0]}-P{k[1]}")
+def test_a_stress_free_answer_is_solved(key, case):
+    """The answer of a rigid shift or of bodies pulled apart: every method
+    returns it, never refuses it for a residual measured against forces of
+    round-off."""
+    spec = STRESS_FREE[case]
+    base = load_scene("A")
+    law = UnilateralLaw(base.law.kN, base.law.kT) if spec.get("unilateral") else base.law
+    scene = base.with_changes(loads=(), supports=spec["supports"], law=law, increments=1)
+    disc, bound_u, _ = METHODS[key]
+    result = discretisation.solve(scene, disc, PATCH_H)
+    y = np.r_[np.linspace(0.05, 0.45, 5), np.linspace(0.55, 0.95, 5)]
+    points = np.column_stack([np.full(len(y), 0.3), y])
+    u = result.fields.displacement(points, scene.body_of(points))
+    assert np.max(np.abs(u - spec["want"](y))) <= bound_u * SHIFT, u
+
+
+@pytest.mark.parametrize("key", [("fe", 1), ("xfem", 1), ("efgm", 1)], ids=lambda k: k[0])
+def test_supports_that_disagree_where_they_meet_are_refused(key):
+    """Two supports prescribing one displacement differently (here the
+    whole bottom edge): which one won would depend on their order, so every
+    method refuses the scene."""
+    base = load_scene("A")
+    scene = base.with_changes(supports=(Support("bottom", "xy"), Support("bottom", "x", (1e-3, 0.0))))
+    with pytest.raises(ContactError, match="prescribe"):
+        discretisation.solve(scene, METHODS[key][0], PATCH_H)
 
 
 @pytest.mark.parametrize("key", list(ROD), ids=lambda k: f"{k[0]}-P{k[1]}")

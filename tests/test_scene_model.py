@@ -134,6 +134,17 @@ def test_every_bad_input_is_named(scene_dict, name, path, value, field, words):
     assert words in str(err.value)
 
 
+def test_a_support_value_on_a_component_it_does_not_hold_is_named(scene_dict):
+    """fix = "x" with a non-zero u_y: the u_y would be dropped silently."""
+    data = scene_dict("A")
+    data["supports"][0].update(fix="x", value=[1e-3, 7e-3])
+    with pytest.raises(SceneError) as err:
+        scene_from_dict(data)
+    assert err.value.field == "supports[0].value" and "does not hold u_y" in str(err.value)
+    data["supports"][0].update(value=[1e-3, 0.0])
+    assert scene_from_dict(data).supports[0].value == (1e-3, 0.0)
+
+
 def test_torque_needs_the_disc_of_a_circle(scene_dict):
     data = scene_dict("A")
     data["loads"].append({"type": "torque", "body": "minus", "torque": 1.0})
