@@ -59,7 +59,10 @@ def estimate(scene, h: float, degree: int, method: str) -> Estimate:
     nodes = scene.domain.area / h ** 2 * (degree ** 2 if method != "efgm" else 1)
     unknowns = 2 * FIELDS.get(method, 1) * nodes + 4  # a one-cell mesh still has a few
     gamma_points = 3 * scene.length_scale * math.pi / h
-    solves = 1 if scene.law.is_linear else scene.increments * 3  # Newton: ~3 solves an increment
+    # every increment is solved, and its history kept, for a nonlinear law
+    # or a followed path: Newton's ~3 solves an increment, one for a linear law
+    followed = scene.follow_path or not scene.law.is_linear
+    solves = scene.increments * (1 if scene.law.is_linear else 3) if followed else 1
     memory = BYTES_PER_UNKNOWN * unknowns + BYTES_PER_HISTORY_POINT * gamma_points * solves
     return Estimate(unknowns, memory, solves)
 

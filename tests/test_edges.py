@@ -8,7 +8,7 @@ import stat
 import pytest
 
 from contactcore import load_scene
-from contactcore.budget import estimate
+from contactcore.budget import TooLargeError, check_budget, estimate
 from verification import files
 from verification.__main__ import main
 
@@ -110,6 +110,16 @@ def test_the_estimate_grows_with_the_unknowns():
     small, large = estimate(scene, 0.1, 1, "fe"), estimate(scene, 0.05, 2, "fe")
     assert large.unknowns == pytest.approx(16 * (small.unknowns - 4) + 4)
     assert large.memory > small.memory and small.solves == 3 * scene.increments
+
+
+def test_a_followed_path_counts_its_increments_whatever_the_law():
+    """A linear law on a followed path solves and keeps every increment:
+    1e9 of them are refused by the estimate, not run until killed."""
+    scene = load_scene("A").with_changes(follow_path=True)
+    assert estimate(scene, 0.1, 1, "fe").solves == scene.increments
+    assert estimate(scene.with_changes(follow_path=False), 0.1, 1, "fe").solves == 1
+    with pytest.raises(TooLargeError, match="increments"):
+        check_budget(scene.with_changes(increments=10 ** 9), 0.1, 1, "fe")
 
 
 def test_a_scene_that_is_not_text(tmp_path, capsys):
