@@ -233,11 +233,11 @@ def parallel_map(function, items):
     """``function`` of each item, in order, on :func:`threads` threads (numpy
     releases the GIL in its kernels; :func:`keep_temporaries`); a generator,
     so a consumer can reduce the results as they come."""
+    keep_temporaries()
     items = list(items)
     if len(items) < 2 or threads() == 1:
         yield from map(function, items)
         return
-    keep_temporaries()
     with ThreadPoolExecutor(threads()) as pool:
         yield from pool.map(function, items)
 
