@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 import tolerances as tol
-from contactcore import load_scene
+from contactcore import LineInterface, Support, load_scene
 from contactcore.scene import scene_toml
 from verification.closed_forms import interface_patch
 from verification.__main__ import main
@@ -137,10 +137,21 @@ def test_bad_input_under_mpirun_is_one_line(tmp_path):
     # scene A with μ = 0.2: its shear 2.5e4 Pa exceeds μp = 2e4 Pa (no equilibrium); its mesh holds xfem's nodes
     slip_a = tmp_path / "slip_a.toml"
     slip_a.write_text(scene_toml(load_scene("A")).replace('type = "linear"', 'type = "coulomb"\nmu = 0.2'))
+    # two supports of the bottom that disagree: found by the ranks that own its unknowns, raised on all
+    clash = tmp_path / "clash.toml"
+    clash.write_text(scene_toml(load_scene("A").with_changes(
+        supports=(Support("bottom", "xy"), Support("bottom", "x", (1e-3, 0.0))))))
+    # Γ 0.005 below the top: at h = 0.05 no cell resolves the + strip
+    strip = tmp_path / "strip.toml"
+    strip.write_text(scene_toml(load_scene("A").with_changes(interface=LineInterface((0.0, 0.995), (0.0, 1.0)),
+                                                             profiles=())))
     for args, message in (
             (["run", bad, "--method", "fe"], "materials.minus.E"),
             (["run", slip, "--method", "fe", "--h", "0.1"], "failed after 6 cut-backs"),
             (["run", slip_a, "--method", "xfem", "--h", "0.1"], "failed after"),
+            (["run", clash, "--method", "fe", "--h", "0.1"], "supports[1]: prescribes"),
+            (["run", clash, "--method", "xfem", "--h", "0.1"], "supports[1]: prescribes"),
+            (["run", strip, "--method", "xfem", "--h", "0.05"], "no cell resolves body plus"),
             (["study", "A", "--param", "kN", "--values", "1e9"], "spreads its cases over a pool"),
             (["scaling", "A", "--h", "0.2"], "launches mpirun itself"),
 ):
