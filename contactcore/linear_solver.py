@@ -78,6 +78,24 @@ SYMMETRIC = {"pc_type": "cholesky"}
 #: measured), which a coarse EFGM run can give: not used.
 BLOCKS = {"mat_mumps_icntl_15": -2}
 
+#: MUMPS's INFOG(1) where its workspace, sized by the analysis's estimate
+#: relaxed by ICNTL(14) per cent, fell short in the factorisation (MUMPS 5.5
+#: user guide, "Error diagnostics": −8, −9 its main work arrays; −11, −12,
+#: −14, −15 those of the solve; −17, −20 its communication buffers).  The
+#: estimate does not foresee every delayed pivot of an LDLᵀ with two-by-two
+#: pivots, whose count depends on the ranks' dynamic scheduling: fe P2 on
+#: scene C on 3 oversubscribed ranks failed once in a test run (−11 from
+#: PETSc, not reproduced in 8 runs under load).  Such a factorisation is
+#: redone with the relaxation doubled, at most MUMPS_RELAXATIONS times, and
+#: the report says so.
+MUMPS_WORKSPACE = (-8, -9, -11, -12, -14, -15, -17, -20)
+MUMPS_RELAXATIONS = 4
+
+#: What the other failures of MUMPS's factorisation mean (its user guide).
+MUMPS_ERRORS = {-10: "the matrix is numerically singular — a rigid-body mode may be free, or a penalty so stiff "
+                     "that the bulk stiffness is lost in round-off",
+                -13: "a workspace could not be allocated: the machine's memory is short for this size"}
+
 _prefixes = itertools.count()
 
 #: Options whose value names a PETSc type, and where petsc4py lists the types.
@@ -292,6 +310,18 @@ def _mumps_factor(ksp):
     return pc.getFactorMatrix()
 
 
+def _mumps_status(ksp) -> tuple[int, int]:
+    """MUMPS's INFOG(1) after ``ksp``'s factorisation and the relaxation
+    ICNTL(14) it ran with; (0, 0) for another solver."""
+    factor = _mumps_factor(ksp)
+    if factor is None:
+        return 0, 0
+    try:
+        return factor.getMumpsInfog(1), factor.getMumpsIcntl(14)
+    finally:
+        factor.destroy()
+
+
 def _null_pivots(ksp, what: str) -> None:
     """A clear error if MUMPS found null pivots in its factorisation."""
     factor = _mumps_factor(ksp)
@@ -359,7 +389,46 @@ class Factorisation:
             db[self.prefix + key] = value
 
     def factorise(self, A) -> None:
-        """Factorise ``A`` (kept by reference: refill it, then call again)."""
+        """Factorise ``A`` (kept by reference: refill it, then call again);
+        where MUMPS's workspace fell short (:data:`MUMPS_WORKSPACE`), again
+        with its relaxation doubled; any other failure of MUMPS is a
+        :class:`SolverError` that gives its INFOG(1)."""
+        relaxed = []
+        for attempt in range(MUMPS_RELAXATIONS + 1):
+            first = self._set_up(A)
+            status, relaxation = _mumps_status(self.ksp)
+            if status >= 0:
+                break
+            if status not in MUMPS_WORKSPACE or attempt == MUMPS_RELAXATIONS:
+                raise SolverError(f"{self.what}: MUMPS's factorisation failed (INFOG(1) = {status}: "
+                                  + MUMPS_ERRORS.get(status, "see the MUMPS user guide's error diagnostics")
+                                  + (f"; its workspace relaxation was raised to {relaxation} %" if relaxed else "")
+                                  + ")")
+            relaxed.append(status)
+            self.opts["mat_mumps_icntl_14"] = max(2 * relaxation, 1)
+            PETSc.Options()[self.prefix + "mat_mumps_icntl_14"] = self.opts["mat_mumps_icntl_14"]
+            self.ksp.destroy()
+            self.ksp = None
+        self.count += 1
+        pc = self.ksp.getPC()
+        base = SolverReport(solver=f"{self.ksp.getType()}+{pc.getType()}"
+                            + (f" ({pc.getFactorSolverType()})" if pc.getType() in ("lu", "cholesky") else ""),
+                            options=self.opts, factorisations=1)
+        if relaxed:
+            base.warnings.append(f"MUMPS's workspace estimate fell short (INFOG(1) = {relaxed[0]}): factorised "
+                                 f"again with ICNTL(14) = {self.opts['mat_mumps_icntl_14']} %")
+        _null_pivots(self.ksp, self.what)
+        if first:
+            unused = unused_options(self.prefix, self.opts)
+            if unused is None:
+                base.warnings.append("petsc options: could not ask PETSc which options it used")
+            elif unused:
+                base.warnings.append(f"petsc option(s) {', '.join(unused)} never used by PETSc: misspelt, "
+                                     "or not for this solver")
+        self.base = base
+
+    def _set_up(self, A) -> bool:
+        """KSP (made on first use) and factorisation of ``A``; whether the KSP is new."""
         first = self.ksp is None
         if first:
             self.ksp = PETSc.KSP().create(A.getComm())
@@ -375,20 +444,7 @@ class Factorisation:
                 raise _refused(exc, self.opts) from None
             raise SolverError(f"{self.what}: PETSc failed (error {exc.ierr}); the matrix may be singular — "
                               "check that the supports remove every rigid-body mode") from None
-        self.count += 1
-        pc = self.ksp.getPC()
-        base = SolverReport(solver=f"{self.ksp.getType()}+{pc.getType()}"
-                            + (f" ({pc.getFactorSolverType()})" if pc.getType() in ("lu", "cholesky") else ""),
-                            options=self.opts, factorisations=1)
-        _null_pivots(self.ksp, self.what)
-        if first:
-            unused = unused_options(self.prefix, self.opts)
-            if unused is None:
-                base.warnings.append("petsc options: could not ask PETSc which options it used")
-            elif unused:
-                base.warnings.append(f"petsc option(s) {', '.join(unused)} never used by PETSc: misspelt, "
-                                     "or not for this solver")
-        self.base = base
+        return first
 
     def solve(self, b, x, force_scale: float = 0.0) -> SolverReport:
         """Solve ``A x = b`` in place with the last factorisation; raise

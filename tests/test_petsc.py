@@ -176,3 +176,39 @@ def test_efgm_without_petsc4py_falls_back_to_superlu_with_the_same_profiles(tmp_
             qa, qb = np.array(a[q]), np.array(b[q])
             assert np.max(np.abs(qa - qb)) <= tol.SOLVER_AGREEMENT * np.max(np.abs(qa)), (name, q)
 
+
+
+def test_a_workspace_that_falls_short_is_relaxed_and_said():
+    """EFGM's saddle point (scene A, h = 0.1) needs delayed two-by-two
+    pivots; with MUMPS's workspace relaxation at 1 % its factorisation runs
+    out of workspace (INFOG(1) = −9, measured): it is redone with the
+    relaxation doubled until it fits, the report says so, and the answer is
+    SuperLU's."""
+    from contactcore import load_scene
+    from contactcore.discretisation import Resolution
+    from contactcore.result import Timings
+    from efgm import method
+    from efgm.options import EFGM
+
+    scene = load_scene("A")
+    system = method.build(scene, EFGM(), Resolution(0.1), Timings()).system
+    springs = np.tile(np.diag([scene.law.kN, scene.law.kT]), (system.interface.size, 1, 1))
+    A = (system.A + system.interface.stiffness(springs)).tocsr()
+    b = np.linspace(1.0, 2.0, A.shape[0])
+    factorisation = linear_solver.Factorisation(petsc_options={"mat_mumps_icntl_14": 1}, symmetric=True)
+    M = linear_solver.to_petsc(A)
+    try:
+        factorisation.factorise(M)
+        x, rhs = M.createVecs()
+        rhs.setArray(b)
+        report = factorisation.solve(rhs, x)
+        got = x.getArray().copy()
+        for v in (x, rhs):
+            v.destroy()
+    finally:
+        factorisation.destroy()
+        M.destroy()
+    assert any("INFOG(1) = -9" in w and "ICNTL(14)" in w for w in report.warnings), report.warnings
+    assert factorisation.opts["mat_mumps_icntl_14"] > 1
+    want = sp.linalg.spsolve(A.tocsc(), b)
+    assert np.max(np.abs(got - want)) <= tol.SOLVER_AGREEMENT * np.max(np.abs(want))
