@@ -218,9 +218,12 @@ def keep_temporaries() -> bool:
     back to the system when freed and taken again, page by page, at the next
     chunk, and two threads' page faults queue on one lock of the process's
     memory map.  Measured on this machine (2 cores, a virtual machine),
-    shape functions with gradients, linear basis, 2e5 points on 2 threads:
-    4.3e5 → 5.7e5 points/s; EFGM's assembly on scene C at h = 0.0125 about
-    4.0–5.3 s → 3.3–3.4 s, peak memory +9 %.  Settings only: no result
+    shape functions with gradients, linear basis, 2e5 points (the
+    ``verification shapes`` grid): 4.3e5 → 5.7e5 points/s on 2 threads
+    (the same code with and without the settings, another process loading
+    one core), 4.3–4.6e5 → 5.9–6.1e5 on one thread; EFGM's whole assembly
+    on scene C at h = 0.0125 did not change measurably (3.0–3.7 s either
+    way), its peak memory rose by up to 9 %.  Settings only: no result
     changes."""
     try:
         mallopt = ctypes.CDLL(None).mallopt
