@@ -28,8 +28,6 @@ from ``scipy.spatial.cKDTree``.
 """
 from __future__ import annotations
 
-import ctypes
-import functools
 import itertools
 import os
 import threading
@@ -201,42 +199,10 @@ def threads() -> int:
         return 1 if launched_size() > 1 else os.cpu_count() or 1
 
 
-#: glibc's malloc settings while numpy works on several threads
-#: (:func:`keep_temporaries`): chunks up to ``M_MMAP_THRESHOLD`` bytes come
-#: from the heap, which keeps up to ``M_TRIM_THRESHOLD`` free bytes (and
-#: grows by ``M_TOP_PAD`` more) instead of giving them back at every free.
-MALLOC_SETTINGS = {"M_TRIM_THRESHOLD": (-1, 128 << 20), "M_TOP_PAD": (-2, 16 << 20),
-                   "M_MMAP_THRESHOLD": (-3, 32 << 20)}
-
-
-@functools.cache
-def keep_temporaries() -> bool:
-    """Set :data:`MALLOC_SETTINGS` (``mallopt``) once per process, where the
-    C library is glibc; whether it was.
-
-    With glibc's defaults each chunk's temporaries (0.1–2 MB) were given
-    back to the system when freed and taken again, page by page, at the next
-    chunk, and two threads' page faults queue on one lock of the process's
-    memory map.  Measured on this machine (2 cores, a virtual machine),
-    shape functions with gradients, linear basis, 2e5 points (the
-    ``verification shapes`` grid): 4.3e5 → 5.7e5 points/s on 2 threads
-    (the same code with and without the settings, another process loading
-    one core), 4.3–4.6e5 → 5.9–6.1e5 on one thread; EFGM's whole assembly
-    on scene C at h = 0.0125 did not change measurably (3.0–3.7 s either
-    way), its peak memory rose by up to 9 %.  Settings only: no result
-    changes."""
-    try:
-        mallopt = ctypes.CDLL(None).mallopt
-    except (OSError, AttributeError):  # not glibc
-        return False
-    return all(mallopt(code, value) == 1 for code, value in MALLOC_SETTINGS.values())
-
-
 def parallel_map(function, items):
     """``function`` of each item, in order, on :func:`threads` threads (numpy
-    releases the GIL in its kernels; :func:`keep_temporaries`); a generator,
-    so a consumer can reduce the results as they come."""
-    keep_temporaries()
+    releases the GIL in its kernels); a generator, so a consumer can reduce
+    the results as they come."""
     items = list(items)
     if len(items) < 2 or threads() == 1:
         yield from map(function, items)
