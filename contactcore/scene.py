@@ -294,8 +294,12 @@ def _check_interface(scene: Scene) -> None:
         if itf.chord(dom) is None:
             raise SceneError("interface", "the line misses the domain")
         a_minus = itf.minus_area(dom)
-        if min(a_minus, dom.area - a_minus) <= tol.MIN_BODY_AREA_FRACTION * dom.area:
-            raise SceneError("interface", "the line only touches the domain: one body would be empty")
+        smaller = min(a_minus, dom.area - a_minus) / dom.area
+        if smaller <= tol.MIN_BODY_AREA_FRACTION:
+            touches = smaller <= tol.GEOMETRY ** 2  # an area of round-off
+            raise SceneError("interface", "the line only touches the domain: one body would be empty" if touches
+                             else f"the line cuts off a body of {smaller:.2g} of the domain's area, below the "
+                                  f"{tol.MIN_BODY_AREA_FRACTION:g} any method can resolve")
     elif isinstance(itf, LevelSetInterface):
         a_minus = itf.minus_area(dom)
         if min(a_minus, dom.area - a_minus) <= tol.MIN_BODY_AREA_FRACTION * dom.area:

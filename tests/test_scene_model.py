@@ -145,6 +145,15 @@ def test_a_support_value_on_a_component_it_does_not_hold_is_named(scene_dict):
     assert scene_from_dict(data).supports[0].value == (1e-3, 0.0)
 
 
+def test_a_line_that_cuts_off_a_sliver_says_so(scene_dict):
+    """A corner triangle of legs 1e-4 (5e-9 of the area): refused, and
+    named for what it is, not as a line that only touches."""
+    data = scene_dict("A")
+    data["interface"].update(point=[1.0 - 1e-4, 1.0], normal=[1.0, 1.0])
+    with pytest.raises(SceneError, match="cuts off a body of 5e-09 of the domain's area"):
+        scene_from_dict(data)
+
+
 def test_torque_needs_the_disc_of_a_circle(scene_dict):
     data = scene_dict("A")
     data["loads"].append({"type": "torque", "body": "minus", "torque": 1.0})
