@@ -214,7 +214,9 @@ def material_warnings(scene) -> list[str]:
     for body, m in scene.materials.items():
         if m.nu > tol.NU_LOCKING_WARN:
             out.append(f"materials.{body}.nu = {m.nu:.10g} in plane strain (above {tol.NU_LOCKING_WARN:g}, "
-                       f"λ/μ = {2 * m.nu / (1 - 2 * m.nu):.1e}): degree-1 elements lock volumetrically and their "
-                       "stresses may be off by tens of percent; degree 2 (fe, xfem) is safer, and EFGM's "
-                       "linear basis strays from it too as ν → 0.5")
+                       f"λ/μ = {2 * m.nu / (1 - 2 * m.nu):.1e}): every method here is displacement-based and may "
+                       "lock volumetrically, its stresses off by tens of percent or more, degree 1 the most but "
+                       "degree 2 too (scene "
+                       "A at ν = 0.4999, h = 0.05: the upper block's moment from σyy on Γ 18 % off in fe P2, 180 % "
+                       "in xfem P2, 120 % in EFGM's quadratic basis); tractions from the jumps are not affected")
     return out

@@ -273,10 +273,11 @@ def build(scene: Scene, options: EFGM, resolution: Resolution, timings: Timings)
 
 def _dilation_warnings(degree: int, dmax: float, default_gauss: bool, n: int) -> list[str]:
     """What a dilation outside :data:`~contactcore.tolerances.DMAX_WARN_RANGE` of the default costs."""
-    low, high = tol.DMAX_WARN_RANGE
+    low, high = tol.DMAX_WARN_RANGE[degree]
     if dmax < low * DMAX[degree]:
         return [f"dmax = {dmax:g} is below {low:g} of the default {DMAX[degree]:g}: supports that barely cover "
-                "their neighbours give near-singular moment matrices and an error about ten times the default's"]
+                "their neighbours give near-singular moment matrices, and stresses at least ten times the "
+                "default's error (a hundred times at 0.75 of it, linear basis)"]
     if dmax > high * DMAX[degree] and default_gauss:
         return [f"dmax = {dmax:g} is above {high:g} of the default {DMAX[degree]:g}: the default {n}x{n} Gauss "
                 "rule under-integrates such wide supports (error up to ten times the default's); pass gauss with "

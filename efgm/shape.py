@@ -534,8 +534,13 @@ class MLS:
             dist, _ = self.tree.query(points[i], k=min(self.m + 1, len(self.nodes)))
             radius = float(np.median(self.radii if not self.rectangular else self.radii.max(axis=1)))
             grow = 1.05 * float(np.max(dist)) / radius  # the m+1 nearest nodes inside the supports
-            need = (f"dmax = {self.dilation:g} is too small here: about {self.dilation * grow:.2g} is needed"
-                    if self.dilation else f"enlarge the supports about {grow:.2g} times")
+            if grow <= 1.0:  # no reach to suggest: the nodes it sees are too few (a gap, Γ's visibility cut)
+                need = ("the nodes it sees within reach are too few or on one line (a gap in the node set, a "
+                        "boundary, or Γ's cut of what each side sees): add nodes there, or enlarge dmax")
+            elif self.dilation:
+                need = f"dmax = {self.dilation:g} is too small here: about {self.dilation * grow:.2g} is needed"
+            else:
+                need = f"enlarge the supports about {grow:.2g} times"
             raise DiscretisationError(
                 f"efgm: the moment matrix at point ({points[i][0]:.6g}, {points[i][1]:.6g}) is singular: "
                 f"{count} node(s) in its support, at least {self.m} not on one line are needed "
