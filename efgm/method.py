@@ -266,9 +266,22 @@ def build(scene: Scene, options: EFGM, resolution: Resolution, timings: Timings)
                                 options.estimate_condition, what)
     # the fields of the whole solution, on every rank (gathered: output only)
     return Built(system, lambda x: EFGMFields(scene, approx, ranks.gather(x)[:approx.ndofs]), approx.ndofs, h=ns.h,
-                 warnings=_dilation_warnings(degree, dmax, options.gauss is None, n),
+                 warnings=_dilation_warnings(degree, dmax, options.gauss is None, n) + _cell_warnings(ns, radii, n),
                  record={"h": ns.h, "nodes": len(ns.x), "enriched_nodes": approx.enr.count, "dmax": dmax,
                          "weight": options.weight, "support": options.support, "gauss": n, "basis_degree": degree})
+
+
+def _cell_warnings(ns: NodeSet, radii: np.ndarray, n: int) -> list[str]:
+    """Supports smaller than :data:`~contactcore.tolerances.SUPPORT_CELL_WARN`
+    of the background cells (whose size is the median node spacing): the
+    cells' Gauss rule under-integrates them."""
+    smallest = float(np.min(radii))
+    if smallest >= tol.SUPPORT_CELL_WARN * ns.h:
+        return []
+    return [f"the smallest supports (radius {smallest:.2g}) are {smallest / ns.h:.2g} of the background cells "
+            f"(h = {ns.h:.2g}, the median node spacing): the {n}x{n} Gauss rule per cell under-integrates their "
+            "shape functions, and more nodes there can mean a larger error; pass gauss with more points, or give "
+            "nodes of more even spacing"]
 
 
 def _dilation_warnings(degree: int, dmax: float, default_gauss: bool, n: int) -> list[str]:
