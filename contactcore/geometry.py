@@ -139,6 +139,10 @@ class LineInterface:
     def normals(self, x) -> np.ndarray:
         return np.tile(np.asarray(self.normal, dtype=float), (len(_as_points(x)), 1))
 
+    def signed_distance(self, x) -> np.ndarray:
+        """The distance to Γ, signed as φ: φ itself (a unit normal)."""
+        return self.phi(x)
+
     def chord(self, domain: Domain) -> np.ndarray | None:
         """The two end points of Γ ∩ domain, ordered along ``t``; None if it
         misses (equal points if it only touches a corner or a tangent).
@@ -195,6 +199,10 @@ class CircleInterface:
         d = p - np.asarray(self.centre, dtype=float)
         return d / np.linalg.norm(d, axis=1)[:, None]
 
+    def signed_distance(self, x) -> np.ndarray:
+        """The distance to Γ, signed as φ: φ itself."""
+        return self.phi(x)
+
     def points_at_angles(self, theta: np.ndarray) -> np.ndarray:
         return np.column_stack([self.centre[0] + self.radius * np.cos(theta),
                                 self.centre[1] + self.radius * np.sin(theta)])
@@ -220,6 +228,12 @@ class LevelSetInterface:
     def normals(self, x) -> np.ndarray:
         g = np.asarray(self.grad_fn(_as_points(x)), float).reshape(-1, 2)
         return g / np.linalg.norm(g, axis=1)[:, None]
+
+    def signed_distance(self, x) -> np.ndarray:
+        """The distance to Γ, signed as φ, to first order: ``φ/|∇φ|`` (a
+        φ scaled by any factor gives the same)."""
+        p = _as_points(x)
+        return self.phi(p) / np.linalg.norm(np.asarray(self.grad_fn(p), float).reshape(-1, 2), axis=1)
 
     def minus_area(self, domain: Domain, samples: int = 400) -> float:
         """The − side's area, estimated on a grid of samples² points."""

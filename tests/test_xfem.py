@@ -12,6 +12,7 @@ from petsc4py import PETSc
 
 import tolerances as tol
 from contactcore import CircleInterface, DiscretisationError, LevelSetInterface, LineInterface, load_scene
+from contactcore import sample_profiles
 from contactcore.profiles import interface_response
 from contactcore.tolerances import ACCURATE_FLOOR
 from contactcore.elasticity import voigt_matrix
@@ -229,6 +230,21 @@ def test_callable_circle_matches_the_builtin_one():
     bodies = scene.body_of(pts)
     ua, ub = a.fields.displacement(pts, bodies), b.fields.displacement(pts, bodies)
     assert np.max(np.abs(ua - ub)) <= tol.GENERAL_VS_CIRCLE * np.max(np.abs(ua))
+
+
+def test_a_level_set_scaled_by_any_factor_gives_the_same_profiles():
+    """φ = s (r² − R²) is one circle for any s: the profiles read each
+    point from the same body (with s = 1e-9 the whole rod was taken as on
+    Γ and read from the + body: 12 times the profile's scale off)."""
+    scene = load_scene("C")
+    scene = scene.with_changes(profiles=tuple(p for p in scene.profiles if p.id == "C3"))
+    c, R = np.array(scene.interface.centre), scene.interface.radius
+    profiles = []
+    for s in (1.0, 1e-9):
+        general = scene.with_changes(interface=LevelSetInterface(lambda x, s=s: s * (np.sum((x - c) ** 2, axis=1) - R ** 2),
+                                                                 lambda x, s=s: 2 * s * (x - c)))
+        profiles.append(sample_profiles(general, xfem.solve(general, 0.1, degree=2).fields)[0].columns["syy"])
+    assert np.max(np.abs(profiles[1] - profiles[0])) <= tol.GENERAL_VS_CIRCLE * np.max(np.abs(profiles[0]))
 
 
 def test_ellipse_geometry_is_integrated():

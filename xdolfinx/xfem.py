@@ -154,10 +154,7 @@ def node_sides(scene: Scene, coords: np.ndarray) -> np.ndarray:
     coordinates (:data:`contactcore.tolerances.NODE_ON_INTERFACE`).  The
     distance is |φ|/|∇φ| (φ itself for a line or a circle)."""
     itf = scene.interface
-    phi = itf.phi(coords)
-    distance = np.abs(phi)
-    if isinstance(itf, LevelSetInterface):
-        distance = distance / np.linalg.norm(itf.grad_fn(coords), axis=1)
+    distance = np.abs(itf.signed_distance(coords))
     return np.where(distance <= tol.NODE_ON_INTERFACE * scene.length_scale, 1, side_of(itf, coords))
 
 
@@ -291,10 +288,7 @@ class EnrichedFunctionSpace:
         out = np.zeros(2)
         for side, pts, *_ in parts:
             x = np.vstack([pts, corners[sign_of(corner_phi) == side]])
-            phi = itf.phi(x)
-            if isinstance(itf, LevelSetInterface):
-                phi = phi / np.linalg.norm(itf.grad_fn(x), axis=1)
-            out[index_of_sign(side)] = max(out[index_of_sign(side)], float(np.max(side * phi)))
+            out[index_of_sign(side)] = max(out[index_of_sign(side)], float(np.max(side * itf.signed_distance(x))))
         return out
 
     def cells_resolving(self, side: int) -> np.ndarray:
