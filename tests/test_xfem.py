@@ -247,6 +247,27 @@ def test_a_level_set_scaled_by_any_factor_gives_the_same_profiles():
     assert np.max(np.abs(profiles[1] - profiles[0])) <= tol.GENERAL_VS_CIRCLE * np.max(np.abs(profiles[0]))
 
 
+def test_a_piece_of_gamma_inside_one_cell_is_refused():
+    """Γ = the line y = 0.5 and a disc of radius 0.01 inside one cell of
+    0.05 (min of the two level sets): the cut cells find Γ through their
+    edges, so the disc was left out and its inside read as the block's
+    stress, exit 0. Refused by name."""
+    c, radius = np.array([0.525, 0.825]), 0.01
+
+    def phi(x):
+        return np.minimum(x[:, 1] - 0.5, np.linalg.norm(x - c, axis=1) - radius)
+
+    def grad(x):
+        d = x - c
+        r = np.linalg.norm(d, axis=1)
+        disc = np.linalg.norm(d, axis=1) - radius < x[:, 1] - 0.5
+        return np.where(disc[:, None], d / np.where(r > 0, r, 1.0)[:, None], np.array([0.0, 1.0]))
+
+    scene = load_scene("A").with_changes(interface=LevelSetInterface(phi, grad), profiles=())
+    with pytest.raises(DiscretisationError, match="changes sign inside a cell without crossing its edges"):
+        xfem.solve(scene, 0.05, degree=2)
+
+
 def test_ellipse_geometry_is_integrated():
     from contactcore.cutcell import cut_polygon, interface_rule_in
 

@@ -98,6 +98,11 @@ MIN_CUT_FRACTION = 1e-11
 #: allowance); 2 leaves room for the curvature of a general φ.
 NEAR_FACTOR = {"distance": 1.0 + 1e-9, "level set": 2.0}
 
+#: Points per direction at which φ is sampled in a cell near a general
+#: level set that its corners and edges leave on one side, to find a piece
+#: of Γ inside it (:meth:`EnrichedFunctionSpace._check_no_hidden_piece`).
+HIDDEN_PIECE_SAMPLES = 16
+
 _TAG_UNCUT = {"minus": 1, "plus": 2}
 _TAG_BAND = 3
 
@@ -217,14 +222,16 @@ class EnrichedFunctionSpace:
         self.regions = {}
         # Γ may reach a cell whose centre is within |∇φ|·radius of it (φ/|∇φ|
         # is the distance to first order; exactly so for lines and circles),
-        # or whose corners differ in sign
+        # or whose corners differ in sign, or differ from the centre's (a
+        # general φ may have |∇φ| = 0 there: the centre of a small disc)
         general = isinstance(itf, LevelSetInterface)
         grad = np.linalg.norm(itf.grad_fn(centre), axis=1) if general else 1.0
         factor = NEAR_FACTOR["level set" if general else "distance"]
         corner_phi = itf.phi(self.corners.reshape(-1, 2)).reshape(len(centre), -1)
         corner_sides = sign_of(corner_phi)
         near = np.flatnonzero((np.abs(phi_c) <= factor * grad * radius)
-                              | (corner_sides.min(axis=1) != corner_sides.max(axis=1)))
+                              | (corner_sides.min(axis=1) != corner_sides.max(axis=1))
+                              | (corner_sides[:, 0] != self.cell_side))
         self.cell_size = 2 * radius
         # depth of each body's part of a cut cell (distance from Γ, φ/|∇φ|)
         self.depth = np.zeros((len(centre), 2))
@@ -242,6 +249,8 @@ class EnrichedFunctionSpace:
                 self.depth[c] = self._depths(parts, self.corners[c], corner_phi[c])
             elif parts:
                 self.cell_side[c] = parts[0][0]
+                if general:
+                    self._check_no_hidden_piece(c, parts[0][0])
             if c >= self.owned_cells:  # a ghost cell: its owner counts it
                 continue
             dofs = self.cell_dofs[c]
@@ -278,6 +287,27 @@ class EnrichedFunctionSpace:
             f"xfem: no cell resolves body {body.label}: wherever Γ cuts it, it reaches at most {reach:.3g} of a "
             f"cell's diameter from Γ (at least {tol.SLIVER_EVAL_DEPTH:g} is needed to evaluate its fields); "
             f"{refine}, or use fe")
+
+    def _check_no_hidden_piece(self, c: int, side: int) -> None:
+        """A clear error where a general level set changes sign inside cell
+        ``c`` whose corners and edges it leaves on ``side`` (a closed piece
+        of Γ, or a fold, smaller than the cell): the cut-cell quadrature,
+        which finds Γ through the cell's edges, would leave it out (a disc
+        of radius 0.01 in a cell of 0.05 was ignored, its inside read as
+        the body around it; found by a helper's audit).  φ is sampled on
+        HIDDEN_PIECE_SAMPLES² points of the cell: a piece smaller than
+        that spacing can still go unseen."""
+        t = (np.arange(HIDDEN_PIECE_SAMPLES) + 0.5) / HIDDEN_PIECE_SAMPLES
+        u, v = (g.reshape(-1, 1) for g in np.meshgrid(t, t))
+        corners = self.corners[c]  # counter-clockwise: a bilinear map of the unit square (a triangle repeats one)
+        q = corners if len(corners) == 4 else np.vstack([corners, corners[-1:]])
+        x = (1 - u) * (1 - v) * q[0] + u * (1 - v) * q[1] + u * v * q[2] + (1 - u) * v * q[3]
+        other = sign_of(self.scene.interface.phi(x)) != side
+        if other.any():
+            p = x[np.flatnonzero(other)[0]]
+            raise DiscretisationError(f"xfem: the level set changes sign inside a cell without crossing its edges, "
+                                      f"near ({p[0]:.6g}, {p[1]:.6g}): a piece of Γ smaller than a cell, which the "
+                                      "cut-cell quadrature would leave out; refine h")
 
     def _depths(self, parts, corners: np.ndarray, corner_phi: np.ndarray) -> np.ndarray:
         """(2,): how far the − and + parts of a cut cell reach from Γ,
