@@ -82,6 +82,26 @@ def test_a_law_with_history_follows_its_path_whatever_follow_path_says(factorisa
     assert factorisations[0] == sum(r.solver.factorisations for r in runs)
 
 
+def test_run_writes_the_path_of_a_linear_law_that_follows_it(tmp_path):
+    """``follow_path`` with the linear law: ``run`` writes the response at
+    every increment (``increments.csv``, ``interface.csv``), as for a law
+    with history; without it, no path files (one solve)."""
+    import csv
+
+    from contactcore.scene import scene_toml
+    from verification.__main__ import main
+    for follow in (True, False):
+        path = tmp_path / f"A{follow}.toml"
+        path.write_text(scene_toml(load_scene("A").with_changes(follow_path=follow)))
+        out = tmp_path / f"out{follow}"
+        assert main(["run", str(path), "--method", "fe", "--h", "0.2", "--no-plots", "--out", str(out), "--quiet"]) == 0
+        assert (out / "fe" / "increments.csv").exists() == follow
+    with open(tmp_path / "outTrue" / "fe" / "increments.csv") as fh:
+        rows = list(csv.DictReader(fh))
+    assert [float(r["step"]) for r in rows] == list(range(1, 21))
+    assert float(rows[-1]["mean_tT"]) == pytest.approx(2 * float(rows[9]["mean_tT"]), rel=1e-9)  # linear in the load
+
+
 def test_follow_path_must_be_a_boolean():
     data = tomllib.loads(scene_text("A"))
     data["follow_path"] = "yes"

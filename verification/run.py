@@ -119,7 +119,7 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
             log.info("%s: wrote %d field files%s", name, len(written),
                      "" if name in methods.WITH_XDMF else " (Γ only: no mesh)")
         files.write_json(out / name / "summary.json", summary)
-        if not scene.law.is_linear:
+        if not scene.law.is_linear or scene.follow_path:  # the response along the path, every step solved
             paths[f"{name} (p{result.degree})"] = result.interface
             interface.write_history(out / name, scene, result.interface)
             if draw:
