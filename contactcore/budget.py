@@ -56,7 +56,7 @@ def machine_memory() -> float:
 
 def estimate(scene, h: float, degree: int, method: str) -> Estimate:
     """The cost of solving ``scene`` at resolution ``h`` (module doc)."""
-    nodes = scene.domain.area / h ** 2 * (degree ** 2 if method != "efgm" else 1)
+    nodes = scene.domain.area / h / h * (degree ** 2 if method != "efgm" else 1)  # h ** 2 underflows to 0 at 1e-300
     unknowns = 2 * FIELDS.get(method, 1) * nodes + 4  # a one-cell mesh still has a few
     gamma_points = 3 * scene.length_scale * math.pi / h
     # every increment is solved, and its history kept, for a nonlinear law

@@ -22,6 +22,12 @@ class SceneError(ContactError, ValueError):
         self.problem = problem
         super().__init__(f"{field}: {problem}")
 
+    def __reduce__(self):
+        """Rebuilt from its two parts: a study's worker process hands it back
+        pickled (from its message alone it could not be made, and the pool
+        broke)."""
+        return type(self), (self.field, self.problem)
+
 
 class SolverError(ContactError, RuntimeError):
     """A linear or nonlinear solve that failed (singular matrix, divergence)."""

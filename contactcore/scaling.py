@@ -47,7 +47,8 @@ from .errors import SceneError, require_finite
 from .geometry import CircleInterface, Disc, LevelSetInterface, LineInterface, Rectangle
 from .newton import InterfacePath
 from .profiles import ProfileData
-from .scene import DISPLACEMENT_QUANTITIES, STRESS_QUANTITIES, BodyForce, LineProfile, Pressure, Scene, Traction
+from .scene import (DISPLACEMENT_QUANTITIES, STRESS_QUANTITIES, BodyForce, LineProfile, Pressure, Scene, Traction,
+                    check_resolution)
 
 
 def _scaled(value: float, unit: float, path: str) -> float:
@@ -295,6 +296,8 @@ def dimensionless(solve):
     @functools.wraps(solve)
     def solve_dimensionless(scene: Scene, discretisation, h: float | None = None, **options):
         scales = Scales.of(scene)
+        if h is not None and h > 0:  # in the user's numbers, whatever the driver (run checks it too)
+            check_resolution(scene, h, "h")
         h_in = h / scales.length if h is not None and h > 0 else h
         given = {f.name: getattr(discretisation, f.name) for f in dataclasses.fields(discretisation)}
         inner = replace(discretisation, **{k: _option_in(k, v, scales) for k, v in given.items()})

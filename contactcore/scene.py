@@ -404,6 +404,9 @@ def check_resolution(scene: Scene, h, field: str = "--h") -> float:
     if h > top:
         raise SceneError(field, f"{h:g} exceeds the domain's smallest dimension {top:g}: the mesh would be one "
                          "cell across")
+    if h < tol.GEOMETRY * top:
+        raise SceneError(field, f"{h:g} is below the geometric tolerance, {tol.GEOMETRY:g} of the domain's "
+                         f"smallest dimension {top:g}: no mesh or node set of it can be made or held")
     return float(h)
 
 

@@ -112,6 +112,29 @@ def test_the_estimate_grows_with_the_unknowns():
     assert large.memory > small.memory and small.solves == 3 * scene.increments
 
 
+@pytest.mark.parametrize("argv, pattern", [
+    (["run", "A", "--method", "xfem", "--h", "1e-300"], r"--h: 1e-300 is below the geometric tolerance"),
+    (["timing", "A", "--method", "xfem", "--h", "5"], r"h: 5 exceeds the domain's smallest dimension"),
+    (["efficiency", "A", "--method", "fe", "--h", "5", "--ref-h", "0.1", "--workers", "2"],
+     r"h: 5 exceeds the domain's smallest dimension"),
+])
+def test_every_driver_refuses_a_resolution_run_refuses(tmp_path, capsys, argv, pattern):
+    """The resolution is checked wherever a solve starts (a study's h, the
+    timing and efficiency ladders): one line, exit 2. A scene error met in
+    a pool's worker comes back whole (it broke the pool: it could not be
+    unpickled)."""
+    _refused(capsys, argv + ["--out", str(tmp_path / "out")], pattern)
+    assert not (tmp_path / "out").exists()
+
+
+def test_a_scene_error_survives_pickling():
+    import pickle
+
+    from contactcore import SceneError
+    err = pickle.loads(pickle.dumps(SceneError("h", "must be > 0")))
+    assert (err.field, err.problem, str(err)) == ("h", "must be > 0", "h: must be > 0")
+
+
 def test_a_followed_path_counts_its_increments_whatever_the_law():
     """A linear law on a followed path solves and keeps every increment:
     1e9 of them are refused by the estimate, not run until killed."""
