@@ -61,8 +61,11 @@ def atomic_path(path: Path, suffix: str = ""):
 def atomic_folder(path: Path):
     """A temporary folder beside ``path`` that replaces it if the block succeeds."""
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    tmp = Path(tempfile.mkdtemp(prefix=f".{path.name}.", dir=path.parent))
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        tmp = Path(tempfile.mkdtemp(prefix=f".{path.name}.", dir=path.parent))
+    except OSError as exc:  # a place the system will not let us write (/proc, /sys, a read-only mount)
+        raise OutFolderError(f"{path} cannot be created ({exc.strerror or exc})") from None
     _follow_umask(str(tmp), 0o777)
     try:
         yield tmp
