@@ -602,8 +602,6 @@ def _band_edge_loads(space: EnrichedFunctionSpace, load):
     along = on & np.roll(on, -1, axis=1)  # edge i: corner i to corner i + 1
     if not along.any():
         return
-    t = (np.asarray(load.value, float) if isinstance(load, Traction)
-         else -load.value * scene.domain.outward_normal(load.boundary))
     for k in np.flatnonzero(along.any(axis=1)):
         c = band[k]
         f = np.zeros(4 * len(space.cell_dofs[c]))
@@ -615,8 +613,20 @@ def _band_edge_loads(space: EnrichedFunctionSpace, load):
                 w = gw * (t1 - t0) * np.linalg.norm(b - a)
                 side = 1 if scene.interface.phi([(pts[0] + pts[-1]) / 2])[0] >= 0 else -1
                 N, _, coeff = space.functions(c, pts, side)
-                f += _vector_load(N, coeff, w[:, None] * t[None, :])
+                f += _vector_load(N, coeff, w[:, None] * _edge_traction(load, a, b, corners[k].mean(axis=0)))
         yield space.cell_blocks(c), f
+
+
+def _edge_traction(load, a: np.ndarray, b: np.ndarray, inside: np.ndarray) -> np.ndarray:
+    """The traction (2,) of a boundary ``load`` on the cell edge ``a``–``b``
+    (``inside`` a point of the cell): its value, or for a pressure ``−p n``
+    with ``n`` the edge's own outward normal (a disc's rim is the mesh's
+    chords: uniform pressure then gives σ = −p I to round-off).  A disc
+    used to fail here, with no straight edges' normals to name."""
+    if isinstance(load, Traction):
+        return np.asarray(load.value, float)
+    n = np.array([b[1] - a[1], a[0] - b[0]]) / np.linalg.norm(b - a)
+    return -load.value * (n if n @ (a - inside) > 0 else -n)
 
 
 def _vector_load(N: np.ndarray, coeff: np.ndarray, wt: np.ndarray) -> np.ndarray:
