@@ -240,10 +240,12 @@ class EnrichedFunctionSpace:
         self.gamma_rules = {}
         for c in near:
             gamma = interface_rule_in(itf, self.corners[c], self.gauss)
+            pieces = cut_polygon(itf, self.corners[c], self.gauss)
+            if general:
+                self._check_rules_found(c, [*gamma, *(a for _, p, w in pieces for a in (p, w))])
             if len(gamma[1]):
                 self.gamma_rules[c] = gamma
-            parts = [(s, p, w, *self.tabulate(c, p)) for s, p, w in cut_polygon(itf, self.corners[c], self.gauss)
-                     if np.sum(w) > 0]
+            parts = [(s, p, w, *self.tabulate(c, p)) for s, p, w in pieces if np.sum(w) > 0]
             if len({part[0] for part in parts}) > 1:
                 self.regions[c] = parts
                 self.depth[c] = self._depths(parts, self.corners[c], corner_phi[c])
@@ -287,6 +289,18 @@ class EnrichedFunctionSpace:
             f"xfem: no cell resolves body {body.label}: wherever Γ cuts it, it reaches at most {reach:.3g} of a "
             f"cell's diameter from Γ (at least {tol.SLIVER_EVAL_DEPTH:g} is needed to evaluate its fields); "
             f"{refine}, or use fe")
+
+    def _check_rules_found(self, c: int, arrays) -> None:
+        """A clear error where cell ``c``'s rules of Γ and of its parts hold
+        non-finite values: a general φ whose projection onto φ = 0 divides
+        by ∇φ·m = 0 (a kink, a flat φ), which reached the solver as NaN
+        (a helper's third audit: a LinAlgError traceback)."""
+        if all(np.all(np.isfinite(a)) for a in arrays):
+            return
+        centre = self.corners[c].mean(axis=0)
+        raise DiscretisationError(f"xfem: Γ could not be followed through the cell at ({centre[0]:.6g}, "
+                                  f"{centre[1]:.6g}): projecting onto φ = 0 met ∇φ perpendicular to the way "
+                                  "(a kink or a flat part of the level set); give a smooth φ, or refine h")
 
     def _check_no_hidden_piece(self, c: int, side: int) -> None:
         """A clear error where a general level set changes sign inside cell
