@@ -454,6 +454,8 @@ def validate(scene: Scene) -> None:
         raise SceneError("plane", f"must be 'stress' or 'strain' (got {scene.plane!r})")
     _check_domain(scene.domain)
     _check_interface(scene)
+    if scene.law is not None:  # a law built in code meets the file's rules (a negative k_N was refused late, as a rigid mode)
+        type(scene.law).from_params({k: getattr(scene.law, k) for k in scene.law.parameters}, "interface.law")
     for body in BODIES:
         if body not in scene.materials:
             raise SceneError(f"materials.{body}", "missing")

@@ -154,6 +154,17 @@ def test_a_line_that_cuts_off_a_sliver_says_so(scene_dict):
         scene_from_dict(data)
 
 
+def test_a_law_built_in_code_meets_the_files_rules():
+    """A law made in Python is checked as a file's is: a negative k_N was
+    accepted and refused only later, as a free rigid-body mode."""
+    from contactcore import CoulombLaw, LinearLaw, load_scene
+    scene = load_scene("A")
+    with pytest.raises(SceneError, match=r"^interface\.law\.kN: must be a finite penalty > 0"):
+        scene.with_changes(law=LinearLaw(-1e9, 1e8))
+    with pytest.raises(SceneError, match=r"^interface\.law\.mu: must be a finite friction coefficient"):
+        scene.with_changes(law=CoulombLaw(1e9, 1e8, -0.3))
+
+
 def test_torque_needs_the_disc_of_a_circle(scene_dict):
     data = scene_dict("A")
     data["loads"].append({"type": "torque", "body": "minus", "torque": 1.0})
