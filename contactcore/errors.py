@@ -33,6 +33,11 @@ class SolverError(ContactError, RuntimeError):
     """A linear or nonlinear solve that failed (singular matrix, divergence)."""
 
 
+class SolverOptionError(SolverError):
+    """A solver option that cannot be used: the input's fault, not the
+    system's (no hint about springs or rigid modes belongs to it)."""
+
+
 class DiscretisationError(ContactError, ValueError):
     """Discretisation parameters that cannot work (e.g. h <= 0, bad degree)."""
 

@@ -39,6 +39,7 @@ import scipy.sparse as sp
 from petsc4py import PETSc
 
 from contactcore import SolverError, SolverReport
+from contactcore.errors import SolverOptionError
 from contactcore import health
 from contactcore import tolerances as tol
 from contactcore.assembly import sum_csr
@@ -110,7 +111,7 @@ TYPED_OPTIONS = {"ksp_type": PETSc.KSP.Type, "pc_type": PETSc.PC.Type,
 OPTION_ERRORS = (56, 62, 63, 86, 92)
 
 
-class PETScOptionError(SolverError):
+class PETScOptionError(SolverOptionError):
     """A PETSc option that PETSc does not know or cannot use; the message names it."""
 
 

@@ -49,7 +49,7 @@ from scipy.spatial import cKDTree
 from . import health
 from . import tolerances as tol
 from .collective import SERIAL
-from .errors import SolverError
+from .errors import SolverError, SolverOptionError
 from .geometry import CircleInterface, LineInterface, tangent_of
 from .laws import STATUS_NAMES
 from .result import SolverReport
@@ -350,6 +350,8 @@ def _final_state(scene, system: ContactSystem, newton: _Newton, progress=None) -
     try:
         newton.step(float(scene.increments))
         return newton
+    except SolverOptionError:
+        raise
     except SolverError as exc:
         if scene.law.is_linear:
             weights = getattr(system, "collective", SERIAL).gather(system.interface.weights)

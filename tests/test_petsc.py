@@ -80,6 +80,17 @@ def test_a_bad_option_is_named_before_any_solve(options, named, reason):
     assert isinstance(info.value, SolverError) and _left_in_database() == []
 
 
+def test_a_bad_option_in_a_whole_solve_keeps_its_type_and_no_hint():
+    """Through the one entry point, the option's error is the input's: it
+    stays a PETScOptionError, without the springs' and rigid modes' hint
+    that a failed solve gets."""
+    from contactcore import discretisation, load_scene
+    from xdolfinx.options import FE
+    with pytest.raises(PETScOptionError, match="mat_mumps_icntl_14=abc") as info:
+        discretisation.solve(load_scene("A"), FE(petsc_options={"mat_mumps_icntl_14": "abc"}), 0.5)
+    assert "rigid-body" not in str(info.value)
+
+
 def test_options_petsc_never_read_are_warned_about():
     x, report = _solve_small({"pc_factor_shfit_type": "nonzero", "ksp_rtol": 1e-3})  # preonly reads no rtol
     assert np.allclose(_laplacian(6) @ x, 1.0, rtol=0, atol=1e-12)
