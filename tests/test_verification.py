@@ -119,6 +119,18 @@ def test_study_goes_on_after_a_failed_point(tmp_path):
     assert (tmp_path / "study.png").read_bytes()[:4] == b"\x89PNG"
 
 
+@pytest.mark.parametrize("first", ["angle", "offset"])
+def test_a_study_point_is_the_same_whatever_the_order_of_its_parameters(first):
+    """A parameter that moves Γ, given before another, used to fail the
+    point: the partly changed scene was checked with the scene's own
+    profiles, which no longer lay on Γ (a helper's fourth audit)."""
+    from verification.study import scene_at
+    value = {"angle": 20.0, "offset": 0.1}[first]
+    a = scene_at(load_scene("A"), {first: value, "kT": 1e7})
+    b = scene_at(load_scene("A"), {"kT": 1e7, first: value})
+    assert (a.interface, a.law) == (b.interface, b.law) and a.law.kT == 1e7
+
+
 def test_study_rejects_a_parameter_that_does_not_apply(tmp_path, capsys):
     assert main(["study", "A", "--param", "radius", "--values", "0.2", "--out", str(tmp_path)]) == 2
     assert "needs a circular interface" in capsys.readouterr().err

@@ -104,13 +104,15 @@ def _check(param: str) -> None:
 
 def scene_at(scene, point: dict):
     """``scene`` with each parameter of ``point`` (name -> value) set, in
-    order, sampled on Γ, validated."""
+    order, sampled on Γ, validated.  Each step sees the Γ profile already:
+    the scene's own profiles may not fit a moved Γ (an angle first, then
+    another parameter, failed on scene A's profiles along y = 0.5)."""
     changes = {}
     for param, value in point.items():
         _check(param)
         change = PARAMETERS[param][1]
         if change:
-            changes.update(change(scene.with_changes(**changes), value))
+            changes.update(change(scene.with_changes(profiles=(GAMMA,), **changes), value))
     return scene.with_changes(profiles=(GAMMA,), **changes)
 
 
