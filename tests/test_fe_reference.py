@@ -145,3 +145,16 @@ def test_interface_operator_equals_dolfinx_assembly(degree, angle):
     ours = itf.stiffness(np.broadcast_to(scene.law.constant_tangent(), (itf.size, 2, 2))).toarray()
     assert np.isclose(itf.weights.sum(), np.linalg.norm(np.subtract(*scene.interface.chord(scene.domain))))
     assert np.max(np.abs(ours - theirs)) <= tol.PATCH_ROUNDOFF * np.max(np.abs(theirs))
+
+
+def test_a_circle_drawn_with_few_segments_is_warned():
+    """A rod of R = 0.02 at h = 0.05: gmsh draws Γ with 7 segments at any h
+    above 2πR/7, so fe P1's interface forces stay 10 % off as h is refined
+    (a helper's fourth audit): the run says so; degree 2 (curved cells) and
+    scene B's own rod do not warn."""
+    from contactcore import CircleInterface, load_scene
+    small = load_scene("B").with_changes(interface=CircleInterface((0.0, 0.0), 0.02))
+    said = [w for w in conforming.solve(small, 0.05, degree=1).solver.warnings if "straight segments" in w]
+    assert len(said) == 1 and "about 7 straight segments" in said[0], said
+    assert not any("straight segments" in w for w in conforming.solve(small, 0.05, degree=2).solver.warnings)
+    assert not any("straight segments" in w for w in conforming.solve(load_scene("B"), 0.05, degree=1).solver.warnings)

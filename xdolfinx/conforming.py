@@ -277,7 +277,10 @@ def build(scene: Scene, options: FE, resolution: Resolution, timings: Timings) -
         return BodyFields(BodyCellLocator(fm.mesh, [fm.cells_of(b) for b in BODIES]), disps, stresses)
 
     grading = options.grading
+    on_gamma = h if grading is None else h * grading.factor  # the cells' size along Γ
+    straight = (options.geometry_order or degree) == 1
     return Built(system, fields, cons.num_active, h=h, fitted=True,
+                 warnings=scene.polygon_warnings(on_gamma) if straight else [],
                  record={"h": h, "degree": degree, "geometry_order": options.geometry_order or degree,
                          "cells": fm.num_cells, "grading": None if grading is None else vars(grading)})
 
