@@ -57,6 +57,18 @@ def test_twisted_rod_is_the_exact_solution():
     assert abs(srt(a, 1) - kT * jump) <= 1e-9 * abs(srt(a, 1)) and abs(srt(a, 0) - srt(a, 1)) <= 1e-9 * abs(srt(a, 0))
 
 
+def test_the_closed_table_gives_the_last_step_beside_the_fitted_rate():
+    """EFGM's twisted-rod errors (a helper's audit): the fitted slope reads
+    3.11 against an expected 3, the steps 4.55, 2.70, 2.21; the table's
+    last step says 2.21. A ladder at round-off or with a refused rung has
+    no step rate either."""
+    from verification.convergence import last_rate_of, rate_of
+    hs, errors = [0.2, 0.1, 0.05, 0.025], [3.07e-3, 1.31e-4, 2.02e-5, 4.36e-6]
+    assert rate_of(hs, errors) == pytest.approx(3.11, abs=0.01)
+    assert last_rate_of(hs, errors) == pytest.approx(2.21, abs=0.01)
+    assert last_rate_of(hs, [1e-12] * 4) == "round-off" and last_rate_of(hs, errors[:3]) == ""
+
+
 def test_outcomes():
     """refused < warned < accurate < wrong, by the rules of outcomes.py."""
     class R:  # the least of a Result that classify reads
