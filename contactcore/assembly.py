@@ -67,6 +67,21 @@ def blocks_to_csr(shape: tuple[int, int], dofs: np.ndarray, blocks: np.ndarray) 
     return PT @ M  # both CSR: a CSC factor would convert M first
 
 
+def pattern_union(*matrices: sp.spmatrix, value: float = 0.0) -> sp.csr_matrix:
+    """``value`` on every entry stored in any of ``matrices`` (of one
+    shape): with explicit zeros, the pattern a matrix refilled with any of
+    their sums needs; with ones, a pattern that a further sum keeps.  Summed
+    as ones, which cannot cancel, on the matrices' own index arrays (no copy
+    of their values)."""
+    ones = []
+    for A in matrices:
+        A = sp.csr_matrix(A)
+        ones.append(sp.csr_matrix((np.ones(len(A.indices)), A.indices, A.indptr), shape=A.shape))
+    union = sum(ones[1:], ones[0]).tocsr()
+    union.data[:] = value
+    return union
+
+
 def sum_csr(shape: tuple[int, int], parts: list[sp.csr_matrix]) -> sp.csr_matrix:
     """The sum of sparse matrices of one ``shape``, by one product
     ``[I … I] · [A₁; …; A_k]`` (no pairwise additions), canonical."""

@@ -122,24 +122,6 @@ def is_symmetric(A: sp.spmatrix) -> bool:
     return A.nnz == 0 or abs(A - A.T).max() <= tol.SYMMETRIC_TO_ROUNDOFF * scale
 
 
-def is_symmetric_mat(A, ranks: Collective = SERIAL) -> bool:
-    """:func:`is_symmetric` of a PETSc AIJ matrix, distributed or not
-    (``ranks`` its communicator's reductions): the same test, every rank
-    given the same answer."""
-    def largest(M) -> float:
-        return ranks.max(float(np.max(np.abs(M.getValuesCSR()[2]), initial=0.0)))
-
-    scale = largest(A)
-    # Aᵀ − A in a new matrix: PETSc's MatIsSymmetric gave the ranks different
-    # answers on MPIAIJ (EFGM on scene A, 3 ranks: a deadlock, measured)
-    difference = A.transpose(PETSc.Mat())
-    try:
-        difference.axpy(-1.0, A, structure=PETSc.Mat.Structure.DIFFERENT_NONZERO_PATTERN)
-        return scale == 0.0 or largest(difference) <= tol.SYMMETRIC_TO_ROUNDOFF * scale
-    finally:
-        difference.destroy()
-
-
 def ownership(size: int, parts: int) -> np.ndarray:
     """The first row of each of ``parts`` ranks, and ``size`` last: PETSc's
     own split of ``size`` rows (PetscSplitOwnership), contiguous in rank
@@ -222,12 +204,16 @@ class ScatterExchange:
 
 def to_petsc(A: sp.spmatrix) -> PETSc.Mat:
     """A serial PETSc AIJ matrix with the entries of a scipy sparse matrix
-    (the PETSc side of :mod:`contactcore.assembly`'s one sink)."""
+    (the PETSc side of :mod:`contactcore.assembly`'s one sink), made on
+    copies of its CSR arrays, which PETSc then uses as its own (its
+    ``MatCreateSeqAIJWithArrays``; petsc4py keeps them alive with the
+    matrix): no insertion row by row.  Measured on EFGM's matrix of scene C
+    at h = 0.0125 (7.2e6 entries): 0.011 s against 0.15 s through ``createAIJ``."""
     A = sp.csr_matrix(A)
     A.sort_indices()
-    return PETSc.Mat().createAIJ(size=A.shape, csr=(A.indptr.astype(PETSc.IntType),
-                                                    A.indices.astype(PETSc.IntType), A.data),
-                                 comm=PETSc.COMM_SELF)
+    return PETSc.Mat().createAIJWithArrays(size=A.shape, csr=(A.indptr.astype(PETSc.IntType),
+                                                              A.indices.astype(PETSc.IntType), A.data.copy()),
+                                           comm=PETSc.COMM_SELF)
 
 
 def _type_names(kinds) -> list[str]:
@@ -512,8 +498,8 @@ class Tangent:
     free, the slot's own copy is refilled directly), and that slot's
     factorisation redone (numerically only: the pattern is fixed).  Each slot keeps its
     factorisation until it is refilled.  For a ``symmetric`` ``K`` (the
-    caller says so: fe's and xfem's by their weak form, EFGM's by a test)
-    MUMPS's :data:`SYMMETRIC` factorisation is used while ``K_Γ`` is symmetric
+    caller says so, from its method's construction: fe's and xfem's weak
+    form, EFGM's Bubnov–Galerkin system) MUMPS's :data:`SYMMETRIC` factorisation is used while ``K_Γ`` is symmetric
     too on every rank (``ranks``: the reductions of ``K``'s communicator;
     each rank holds its points' part of ``K_Γ``); any other tangent takes
     the general LU.  Either compresses MUMPS's graph by :data:`BLOCKS` when

@@ -37,11 +37,13 @@ from __future__ import annotations
 import numpy as np
 import scipy.sparse as sp
 
+from contactcore.assembly import pattern_union
 from contactcore.collective import Collective, launched_size
 from contactcore.constraints import Constraints
 from contactcore.newton import InterfaceOperator
 
 from . import petsc_solver
+from .operators import SYMMETRIC
 
 
 def communicator(comm=None):
@@ -125,10 +127,9 @@ class DistributedEFGMSystem:
         # owned rows: the bulk, and the pattern of K and every K_Γ (zeros, refilled by the Tangent)
         self.A = ls.distributed_aij(ls.owned_rows(mine, starts, comm), starts, comm)
         self.A.setLGMap(self.exchange.local_to_global(), self.exchange.local_to_global())
-        work = ls.owned_rows(abs(mine) + reach, starts, comm)
+        work = ls.owned_rows(pattern_union(mine, reach, value=1.0), starts, comm)  # ones: the ranks' sum keeps them
         work.data[:] = 0.0
         self.work = ls.distributed_aij(work, starts, comm)
-        self.symmetric = ls.is_symmetric_mat(self.A, ranks)
         f = sp.vstack([sp.csr_matrix(np.column_stack(loads)) if loads else sp.csr_matrix((n, 0)),
                        sp.csr_matrix((c, len(loads)))], format="csr")
         self.loads = ls.owned_rows(f, starts, comm).toarray().T  # (loads, owned rows)
@@ -155,7 +156,7 @@ class DistributedEFGMSystem:
         if self._tangent is None:
             from contactcore import linear_solver as ls
             self._tangent = ls.Tangent(self.A, np.arange(self.size), work=self.work,
-                                       symmetric=self.symmetric, estimate_condition=self.estimate, what=self.what, ranks=self.collective)
+                                       symmetric=SYMMETRIC, estimate_condition=self.estimate, what=self.what, ranks=self.collective)
         return self._tangent.solve(interface_tangent, rhs, force_scale, slot)
 
     def close(self) -> None:

@@ -13,7 +13,8 @@ operators ``N`` (displacement) and ``B`` (strain):
 essential conditions are imposed by Lagrange multipliers at collocation
 points — the nodes on a supported boundary and the pins — which makes them
 exact at those points, pins included, with no penalty to tune.  The
-saddle-point system is solved by SuperLU after equilibration, through the
+saddle-point system is solved by MUMPS's LDLᵀ (the solver of fe and xfem)
+when petsc4py imports, else by SuperLU (:mod:`efgm.sparse_solver`), through the
 shared increments and Newton of :mod:`contactcore.newton` (one solve for the
 linear law).  The history of a ``coulomb`` law is kept at the Gauss points
 of Γ (``interface_rule``).  Under mpirun the cells, Γ's points and the
@@ -39,7 +40,7 @@ from contactcore.scene import Pressure, Traction, body_force
 
 from . import distributed, sparse_solver
 from .nodes import NodeSet, check_nodes, grid_nodes, support_radii
-from .operators import Approximation, block_diagonal, find_enrichment
+from .operators import SYMMETRIC, Approximation, block_diagonal, find_enrichment
 from .options import BASES, EFGM  # noqa: F401 (BASES re-exported: the bases by name)
 from contactcore.cutcell import Rule
 from contactcore.quadrature import background_cells, boundary_rule, interface_rule, volume_rule
@@ -210,7 +211,7 @@ class EFGMSystem:
     def solve(self, interface_tangent, rhs, force_scale=0.0, slot=0):
         if self._tangent is None:
             self._tangent = sparse_solver.tangent(self.A, self.interface.pattern(), coords=self.coords, reach=self.reach,
-                                                  estimate_condition=self.estimate, what=self.what)
+                                                  symmetric=SYMMETRIC, estimate_condition=self.estimate, what=self.what)
         return self._tangent.solve(interface_tangent, rhs, force_scale, slot)
 
     def close(self) -> None:

@@ -44,6 +44,14 @@ from .shape import CHUNK, MLS, ShapeValues, matmul, parallel_map
 #: same placement at h = 0.025 is 0.019).  δ = 0 leaves free unknowns.
 ENRICH_MIN_DEPTH = 0.25
 
+#: The systems built here are symmetric by construction, as fe's and
+#: xfem's are by their weak form: ``K = Bᵀ W D B`` (Bubnov–Galerkin: the
+#: same functions on both sides), bordered by the multipliers' ``s Cᵀ``
+#: and ``s C`` (:mod:`efgm.method`).  Known, not tested: the test cost 0.2 s
+#: of a 2.5 s solve on scene C at h = 0.0125; the solve's residual, taken
+#: with the whole matrix, would catch a system that is not.
+SYMMETRIC = True
+
 
 def heaviside(bodies: np.ndarray) -> np.ndarray:
     """H = +1 in the + body (1), −1 in the − body (0)."""

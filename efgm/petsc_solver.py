@@ -11,13 +11,17 @@ the interface law is (linear, or Coulomb in stick); a Coulomb slip tangent
 is not symmetric.  ``Tangent`` factorises a symmetric system by MUMPS's
 LDLᵀ (its ``SYMMETRIC``, with two-by-two pivots), any other by LU, each on
 the graph compressed by 2 × 2 blocks when the size is even (``BLOCKS``),
-with the options, measurements and reasons written there.  The symmetry
-check costs 0.23 s on scene C at h = 0.0125 (7.9e4 unknowns).
+with the options, measurements and reasons written there.  EFGM's own
+systems are symmetric by construction (:class:`efgm.method.EFGMSystem`:
+the test cost 0.2 s on scene C at h = 0.0125, 7.9e4 unknowns); a matrix
+from elsewhere is tested.
 """
 from __future__ import annotations
 
 import numpy as np
 import scipy.sparse as sp
+
+from contactcore.assembly import pattern_union
 
 
 def available() -> bool:
@@ -29,14 +33,16 @@ def available() -> bool:
     return True
 
 
-def tangent(A: sp.csr_matrix, interface_pattern: sp.spmatrix, *, estimate_condition: bool = False,
-            what: str = "linear system"):
+def tangent(A: sp.csr_matrix, interface_pattern: sp.spmatrix, *, symmetric: bool | None = None,
+            estimate_condition: bool = False, what: str = "linear system"):
     """Newton's ``J = A + K_Γ`` on MUMPS (:class:`contactcore.linear_solver.Tangent`):
-    LDLᵀ while ``J`` is symmetric, else LU; every unknown is free."""
+    LDLᵀ while ``J`` is symmetric, else LU; every unknown is free.
+    ``symmetric``: whether ``A`` is, known by construction, or None to
+    test it (:func:`~contactcore.linear_solver.is_symmetric`)."""
     from contactcore import linear_solver
 
-    union = (abs(A) + abs(sp.csr_matrix(interface_pattern))).tocsr()  # K's and every K_Γ's entries
-    union.data[:] = 0.0
+    if symmetric is None:
+        symmetric = linear_solver.is_symmetric(A)
+    union = pattern_union(A, interface_pattern)  # K's and every K_Γ's entries
     return linear_solver.Tangent(linear_solver.to_petsc(A), np.arange(A.shape[0]), work=linear_solver.to_petsc(union),
-                                 symmetric=linear_solver.is_symmetric(A), estimate_condition=estimate_condition,
-                                 what=what)
+                                 symmetric=symmetric, estimate_condition=estimate_condition, what=what)

@@ -83,11 +83,13 @@ def solve(A: sp.csr_matrix, b: np.ndarray, *, coords: np.ndarray, reach: float, 
 
 
 def tangent(A: sp.csr_matrix, interface_pattern: sp.spmatrix, *, coords: np.ndarray, reach: float,
-            estimate_condition: bool = False, what: str = "linear system"):
+            symmetric: bool | None = None, estimate_condition: bool = False, what: str = "linear system"):
     """Newton's ``J = A + K_Γ`` of a run: on MUMPS if petsc4py imports
-    (:func:`efgm.petsc_solver.tangent`), else on SuperLU (:class:`SuperLUTangent`)."""
+    (:func:`efgm.petsc_solver.tangent`, ``symmetric`` as there), else on
+    SuperLU (:class:`SuperLUTangent`)."""
     if petsc_solver.available():
-        return petsc_solver.tangent(A, interface_pattern, estimate_condition=estimate_condition, what=what)
+        return petsc_solver.tangent(A, interface_pattern, symmetric=symmetric, estimate_condition=estimate_condition,
+                                    what=what)
     return SuperLUTangent(A, coords=coords, reach=reach, estimate_condition=estimate_condition, what=what)
 
 

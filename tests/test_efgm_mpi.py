@@ -130,3 +130,22 @@ def test_an_error_one_rank_meets_is_raised_on_every_rank(tmp_path):
                  timeout=120)
     assert out.returncode == 2 and _errors(out) == ["error: efgm: injected on rank 1 alone"], out.stderr
     assert not (tmp_path / "o").exists()
+
+
+@pytest.mark.slow
+def test_shapes_benchmark_splits_its_points_over_the_ranks(tmp_path):
+    """``mpirun -n 2 … shapes``: one row per basis for 2 ranks, the points
+    split between them (each evaluation as long as its slowest rank), and
+    the defects of every rank's shape functions at round-off."""
+    import csv
+
+    out = mpirun(2, "-m", "verification", "shapes", "--grid", "11", "--points", "3000", "--repeats", "1",
+                 "--out", tmp_path / "s", timeout=120)
+    assert out.returncode == 0, out.stderr
+    with open(tmp_path / "s" / "shapes.csv") as fh:
+        rows = list(csv.DictReader(fh))
+    assert [(r["basis"], r["ranks"], r["threads"], r["points"]) for r in rows] == [
+        ("linear", "2", "1", "3000"), ("quadratic", "2", "1", "3000")]
+    for row in rows:
+        assert max(float(row[k]) for k in ("unity", "reproduction")) <= tol.SHAPE_ROUNDOFF
+        assert max(float(row[k]) for k in ("gradient_unity", "gradient_reproduction")) <= tol.SHAPE_ROUNDOFF * 10

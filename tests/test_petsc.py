@@ -223,3 +223,51 @@ def test_a_workspace_that_falls_short_is_relaxed_and_said():
     assert factorisation.opts["mat_mumps_icntl_14"] > 1
     want = sp.linalg.spsolve(A.tocsc(), b)
     assert np.max(np.abs(got - want)) <= tol.SOLVER_AGREEMENT * np.max(np.abs(want))
+
+
+def test_to_petsc_owns_copies_of_the_entries():
+    """``to_petsc`` hands PETSc copies of the CSR arrays, which PETSc then
+    uses as its own: the matrix has the entries, and changing the scipy
+    matrix afterwards does not change it."""
+    A = (_laplacian(4) + sp.random(16, 16, density=0.1, random_state=1)).tocsr()
+    M = linear_solver.to_petsc(A)
+    try:
+        want = A.toarray()
+        A.data[:] = 7.0
+        indptr, indices, data = M.getValuesCSR()
+        got = sp.csr_matrix((data, indices, indptr), shape=A.shape).toarray()
+        assert np.array_equal(got, want)
+    finally:
+        M.destroy()
+
+
+def test_pattern_union_keeps_entries_that_a_sum_would_cancel():
+    """The work matrix's pattern holds every entry of K and of every K_Γ,
+    even where their values cancel (A and −A), with zero values."""
+    from contactcore.assembly import pattern_union
+
+    A = sp.random(12, 12, density=0.3, random_state=2, format="csr")
+    B = sp.random(12, 12, density=0.3, random_state=3, format="csr")
+    union = pattern_union(A, -A, B)
+    assert union.shape == A.shape and not np.any(union.data)
+    stored = set(zip(np.repeat(np.arange(12), np.diff(union.indptr)).tolist(), union.indices.tolist()))
+    assert len(stored) == union.nnz  # no entry twice
+    assert stored == set(zip(*A.nonzero())) | set(zip(*B.nonzero()))
+
+
+@pytest.mark.parametrize("scene_name, degree, support", [("A", 1, "circular"), ("C", 2, "rectangular"),
+                                                         ("C-coulomb", 1, "circular")])
+def test_efgm_systems_are_symmetric_by_construction(scene_name, degree, support):
+    """EFGM's bulk system is factorised as symmetric without a test
+    (:data:`efgm.operators.SYMMETRIC`): it is, to round-off, for each basis,
+    support shape and law (the solve's residual would catch one that is not)."""
+    from contactcore import load_scene
+    from contactcore.discretisation import Resolution
+    from contactcore.result import Timings
+    from efgm import method
+    from efgm.operators import SYMMETRIC
+    from efgm.options import EFGM
+
+    system = method.build(load_scene(scene_name), EFGM(degree=degree, support=support), Resolution(0.1),
+                          Timings()).system
+    assert SYMMETRIC and linear_solver.is_symmetric(system.A)

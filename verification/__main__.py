@@ -287,8 +287,9 @@ def _dispatch(args, argv) -> None:
 
 
 #: The commands that run on many ranks under mpirun: one solve (or a
-#: ladder of them) spread over the ranks by dolfinx and PETSc.
-DISTRIBUTED = ("run", "timing")
+#: ladder of them) spread over the ranks by dolfinx and PETSc, and EFGM's
+#: shape functions split between them (``shapes``).
+DISTRIBUTED = ("run", "timing", "shapes")
 
 
 def _check_ranks(args) -> None:

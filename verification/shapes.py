@@ -10,7 +10,12 @@ Each row also carries the evaluation's largest partition-of-unity and
 linear-reproduction defects, ``max |Σ Φ_I − 1|`` and ``max |Σ Φ_I x_I − x|``
 (and their gradients'), so that no rate stands for a wrong evaluation.
 Threads: :func:`efgm.shape.threads` (``OMP_NUM_THREADS``, else one per
-core).  Writes ``DIR/shapes.csv``, ``DIR/shapes.md`` and ``DIR/run.json``.
+core; one per rank under mpirun).  Under ``mpirun -n K`` each rank
+evaluates its contiguous share of the points, as EFGM's ranks evaluate
+their own cells (:mod:`efgm.distributed`): every rank starts together, an
+evaluation lasts as long as its slowest rank, and the defects are the
+largest of any rank's.  Writes ``DIR/shapes.csv``, ``DIR/shapes.md`` and
+``DIR/run.json``.
 """
 from __future__ import annotations
 
@@ -20,10 +25,11 @@ from pathlib import Path
 
 import numpy as np
 
+from contactcore.collective import SERIAL, Collective
 from efgm.nodes import NodeSet, support_radii
 from efgm.shape import MLS, threads
 
-from . import files
+from . import files, pool
 
 log = logging.getLogger("verification")
 
@@ -36,7 +42,7 @@ SEED = 0
 #: Points of the warm-up evaluation.
 WARM_UP = 1000
 
-COLUMNS = ["basis", "grid", "points", "threads", "median_s", "points_per_s", "unity", "reproduction",
+COLUMNS = ["basis", "grid", "points", "ranks", "threads", "median_s", "points_per_s", "unity", "reproduction",
            "gradient_unity", "gradient_reproduction"]
 
 
@@ -52,26 +58,38 @@ def defects(values, nodes: np.ndarray, points: np.ndarray) -> dict:
             "gradient_reproduction": float(np.max(np.abs(gx - np.eye(2))))}
 
 
+def _ranks() -> Collective:
+    """mpirun's ranks (module doc), or one process."""
+    if not pool.distributed():
+        return SERIAL
+    from mpi4py import MPI
+    return Collective(MPI.COMM_WORLD)
+
+
 def measure(basis: str, grid: int, count: int, repeats: int) -> dict:
     """One row of the table (module doc)."""
+    ranks = _ranks()
     axis = np.linspace(0.0, 1.0, grid)
     nodes = np.column_stack([a.ravel() for a in np.meshgrid(axis, axis, indexing="ij")])
     degree = {"linear": 1, "quadratic": 2}[basis]
     mls = MLS(nodes, support_radii(NodeSet(nodes, 1.0 / (grid - 1)), DMAX[basis], False), degree=degree,
               dilation=DMAX[basis])
-    points = np.random.default_rng(SEED).random((count, 2))
+    points = np.random.default_rng(SEED).random((count, 2))[ranks.share(count)]  # this rank's share
     mls.evaluate(points[:WARM_UP])
     seconds = []
     for _ in range(repeats):
+        ranks.all(True)  # every rank starts together
         start = time.perf_counter()
         values = mls.evaluate(points)
-        seconds.append(time.perf_counter() - start)
+        seconds.append(ranks.max(time.perf_counter() - start))
     median = float(np.median(seconds))
-    row = {"basis": basis, "grid": grid, "points": count, "threads": threads(), "median_s": median,
-           "points_per_s": count / median, **defects(values, nodes, points)}
-    log.info("shapes, %s basis, %d² grid, %d points on %d thread(s): %.3g points/s (median of %d); unity %.1e, "
-             "reproduction %.1e", basis, grid, count, row["threads"], row["points_per_s"], repeats, row["unity"],
-             row["reproduction"])
+    size = 1 if ranks.comm is None else ranks.comm.size
+    row = {"basis": basis, "grid": grid, "points": count, "ranks": size, "threads": threads(), "median_s": median,
+           "points_per_s": count / median,
+           **{k: ranks.max(v) for k, v in defects(values, nodes, points).items()}}
+    log.info("shapes, %s basis, %d² grid, %d points on %d rank(s) of %d thread(s): %.3g points/s (median of %d); "
+             "unity %.1e, reproduction %.1e", basis, grid, count, size, row["threads"], row["points_per_s"], repeats,
+             row["unity"], row["reproduction"])
     return row
 
 
@@ -81,7 +99,7 @@ def shapes(bases: list[str], grid: int, count: int, repeats: int, out: Path, arg
     out = Path(out)
     files.write_csv(out / "shapes.csv", rows, COLUMNS)
     files.write_text(out / "shapes.md", "# EFGM shape functions with gradients\n\n" + files.markdown_table(
-        rows, COLUMNS, ["basis", "grid", "points", "threads", "median (s)", "points/s", "max |ΣΦ − 1|",
+        rows, COLUMNS, ["basis", "grid", "points", "ranks", "threads per rank", "median (s)", "points/s", "max |ΣΦ − 1|",
                         "max |ΣΦx − x|", "max |Σ∇Φ|", "max |Σ∇Φ xᵀ − I|"]))
     files.write_json(out / "run.json", files.provenance(list(argv)))
     return rows
