@@ -379,20 +379,26 @@ class LayeredSlip:
         return LayeredSlipFields(self, state)
 
 
-def layered_slip(kN: float | None = None, kT: float | None = None) -> LayeredSlip:
+def layered_slip(kN: float | None = None, kT: float | None = None, E: tuple[float, float] | None = None
+                 ) -> LayeredSlip:
     """The closed form of the built-in scene ``layered-slip``; with other
-    springs, the top's displacement is rescaled so that its path still
-    switches between stick and slip at the same increments (δ_stick = μpC)."""
+    springs, or other Young's moduli ``E`` (of the − and + layers), the
+    top's displacement is rescaled so that its path still switches between
+    stick and slip at the same increments (δ_stick = μpC): τ's path, and with
+    it the scene's side tractions, stay the closed form's."""
     from contactcore import load_scene
     from contactcore.laws import CoulombLaw
 
     case = LayeredSlip(load_scene("layered-slip"))
-    if kN is None and kT is None:
+    if kN is None and kT is None and E is None:
         return case
     scene, law = case.scene, case.scene.law
     law = CoulombLaw(kN or law.kN, kT or law.kT, law.mu)
+    materials = scene.materials if E is None else {
+        body: dataclasses.replace(scene.materials[body], E=value) for body, value in zip(("minus", "plus"), E)}
+    G = [materials[body].E / 2 for body in ("minus", "plus")]
     top = scene.supports[1]
     p = -scene.loads[0].value[1]
-    stick = law.mu * p * (case.h1 / case.G[0] + case.h2 / case.G[1] + 1 / law.kT)
+    stick = law.mu * p * (case.h1 / G[0] + case.h2 / G[1] + 1 / law.kT)
     supports = (scene.supports[0], dataclasses.replace(top, value=(stick, 0.0)))
-    return LayeredSlip(scene.with_changes(law=law, supports=supports))
+    return LayeredSlip(scene.with_changes(law=law, materials=materials, supports=supports))
