@@ -13,6 +13,7 @@ from petsc4py import PETSc
 import tolerances as tol
 from contactcore import CircleInterface, DiscretisationError, LevelSetInterface, LineInterface, load_scene
 from contactcore import sample_profiles
+from contactcore.bodies import Body
 from contactcore.profiles import interface_response
 from contactcore.tolerances import ACCURATE_FLOOR
 from contactcore.elasticity import voigt_matrix
@@ -68,6 +69,30 @@ def test_enriched_dof_counts(interface, enriched, cut):
     scene = _tiny(interface)
     space = xfem.EnrichedFunctionSpace(xfem.background_mesh(scene, 0.25, "quad"), 1, scene, 3)
     assert (space.num_enriched, len(space.regions)) == (enriched, cut)
+
+
+@pytest.mark.parametrize("cell", ["quad", "triangle"])
+def test_cut_share_is_the_area_of_a_body_in_cut_cells(cell):
+    """Γ at y = 0.55 on a 0.1 grid: the cells 0.5 < y < 0.6 are cut; the −
+    body holds 0.05 of them out of its 0.55, the + body 0.05 out of 0.45."""
+    scene = _tiny(LineInterface((0.0, 0.55), (0.0, 1.0)))
+    space = xfem.EnrichedFunctionSpace(xfem.background_mesh(scene, 0.1, cell), 1, scene, 3)
+    assert np.isclose(space.cut_share(Body.MINUS), 0.05 / 0.55, rtol=1e-12)
+    assert np.isclose(space.cut_share(Body.PLUS), 0.05 / 0.45, rtol=1e-12)
+    assert space.thin_body_warnings() == []
+
+
+def test_a_body_mostly_in_cut_cells_is_warned_about():
+    """A − wedge at 2.9° against the clamped bottom (Γ from (0, 0.03) to
+    (0.6, 0)) lies wholly in cut cells at h = 0.05: xfem's mean t_N on Γ
+    is 42 % below fe's there (tol.THIN_BODY_CUT_SHARE); the run says so.
+    Scene C's rod at the same h is not warned about."""
+    normal = tuple(np.array([0.05, 1.0]) / np.hypot(0.05, 1.0))
+    wedge = _tiny(LineInterface((0.0, 0.03), normal))
+    result = xfem.solve(wedge, 0.05, degree=1, estimate_condition=False)
+    assert any("100% of body minus's area lies in cells that Γ cuts" in w for w in result.solver.warnings)
+    rod = xfem.solve(load_scene("C"), 0.05, degree=1, estimate_condition=False)
+    assert not any("lies in cells that Γ cuts" in w for w in rod.solver.warnings)
 
 
 def test_gamma_missing_the_mesh_is_named():
