@@ -12,12 +12,14 @@ consistent tangent of the law are then method-independent:
 ``W`` the quadrature weights and ``s`` the law's history at the points.  For
 each increment (:meth:`Scene.factors`) the prescribed values are set, then
 Newton iterates ``J δu = −R`` on the free unknowns until
-``‖R‖∞ <= NEWTON_RTOL·F`` (:mod:`contactcore.tolerances`), or until the
-law's tangent is the one the last solve used: a piecewise-linear law (every
-law here) is then solved exactly up to that solve's round-off, which stiff
-springs (k ≥ 1e8 E/h) raise above NEWTON_RTOL.  Either way the step is
-accepted only if ``‖R‖∞ <= RESIDUAL_FAIL·F`` and every solve passed the
-same test (:mod:`contactcore.health`): a settled status whose solve was
+``‖R‖∞ <= NEWTON_RTOL·F`` (:mod:`contactcore.tolerances`; ``F`` the larger
+of the loads and the internal forces), or until the law's tangent is the
+one the last solve used: a piecewise-linear law (every law here) is then
+solved exactly up to that solve's round-off, which stiff springs
+(k ≥ 1e8 E/h) raise above NEWTON_RTOL.  Either way the step is accepted
+only if ``‖R‖∞ <= RESIDUAL_FAIL·max(F, L)``, ``L`` the forces of the
+prescribed displacements alone (the round-off scale of a stress-free
+answer), and every solve passed the same test (:mod:`contactcore.health`): a settled status whose solve was
 singular (a body sliding away at the slip limit) is a failure, not a
 converged runaway.  Before any solve the springs must leave the bulk
 digits in their rows (:func:`contactcore.health.check_springs`) and the
@@ -273,7 +275,7 @@ class _Newton:
             # like a residual of order 1); a status is accepted by it only once
             # settled: the lift of a stiff body (E δ/h) can dwarf the forces
             # of a soft one, and an unsettled residual measured against it let
-            # a wrong stick/slip split pass (LIFT_FOOLED in tests/test_friction.py)
+            # a wrong stick/slip split pass (tests/test_friction.py, a soft layer under a stiff one)
             scale = max(forces, lift)
             norm = self.ranks.max(float(np.max(np.abs(R[self.free]), initial=0.0)))
             history.append(norm / scale if scale > 0 else norm)
