@@ -111,6 +111,9 @@ class ContactSystem(Protocol):
     size: int
     interface: InterfaceOperator
     fixed: np.ndarray  # indices of the prescribed unknowns
+    # optional: the rows that prescribe values rather than balance forces
+    # (EFGM's multiplier rows); none if absent
+    constraint_rows: np.ndarray
 
     def fixed_values(self, support_factors) -> np.ndarray:
         """Values of the prescribed unknowns for the supports' factors."""
@@ -232,6 +235,11 @@ class _Newton:
         self.scene, self.system, self.law = scene, system, scene.law
         self.itf = system.interface
         self.free = np.setdiff1d(np.arange(system.size), system.fixed)
+        # rows that prescribe displacements (EFGM's multipliers, scaled by E:
+        # s (C u − ū)) rather than balance forces: data, like the lift
+        self.constraint = np.zeros(system.size, bool)
+        self.constraint[np.asarray(getattr(system, "constraint_rows", ()), int)] = True
+        self.balance = self.free[~self.constraint[self.free]]
         self.u = np.zeros(system.size)
         self.state = self.law.initial_state(self.itf.size)
         self.report = SolverReport(solver="", solves=0, iterations=[])
@@ -239,13 +247,16 @@ class _Newton:
         self.ranks = getattr(system, "collective", SERIAL)  # every decision is taken on all ranks alike
         self._factorised = []  # (slot, interface tangent) of the system's factorisations, last used last
 
-    def _residual(self, u, b, response) -> tuple[np.ndarray, float]:
-        """The residual and the forces it is judged against: the largest of
-        the loads and the internal forces."""
+    def _residual(self, u, b, response) -> tuple[np.ndarray, float, float]:
+        """The residual, the forces its equilibrium rows are judged against
+        (the largest of the loads and the internal forces there), and the
+        largest prescribed value of the constraint rows (data)."""
         internal = self.system.internal(u) + self.itf.forces(response.traction)
         R = internal - b
-        forces = max(np.max(np.abs(b[self.free]), initial=0.0), np.max(np.abs(internal), initial=0.0))
-        return R, self.ranks.max(forces)
+        forces = max(np.max(np.abs(b[self.balance]), initial=0.0),
+                      np.max(np.abs(internal[~self.constraint]), initial=0.0))
+        data = np.max(np.abs(b[self.constraint]), initial=0.0)
+        return R, self.ranks.max(forces), self.ranks.max(data)
 
     def _lift(self, supports) -> float:
         """The largest force on a free unknown of the prescribed
@@ -264,29 +275,38 @@ class _Newton:
         u = self.u.copy()
         u[self.system.fixed] = self.system.fixed_values(supports)
         lift = self._lift(supports)
-        history, tangent = [], None
+        history, tangent, start, du = [], None, 0.0, None
         for it in range(1, tol.NEWTON_MAX_ITERATIONS + 1):
             response = self.law.evaluate(self.itf.jumps(u), self.state)
-            R, forces = self._residual(u, b, response)
-            # the round-off scale of a solve also holds ``lift``, the forces the
-            # prescribed displacements alone exert on the free unknowns (data:
-            # a stress-free answer — a rigid shift, bodies pulled apart — has
-            # internal forces of round-off, which alone made round-off look
-            # like a residual of order 1); a status is accepted by it only once
-            # settled: the lift of a stiff body (E δ/h) can dwarf the forces
-            # of a soft one, and an unsettled residual measured against it let
-            # a wrong stick/slip split pass (tests/test_friction.py, a soft layer under a stiff one)
-            scale = max(forces, lift)
+            R, forces, data = self._residual(u, b, response)
             norm = self.ranks.max(float(np.max(np.abs(R[self.free]), initial=0.0)))
+            start = start or norm
+            # the round-off scale of this step's solves: the forces, the data
+            # (``lift``, the forces the prescribed displacements alone exert on
+            # the free unknowns; EFGM's prescribed values) and the residual the
+            # step began with (the first solve's right-hand side).  A
+            # stress-free answer — a rigid shift, bodies pulled apart, a load
+            # back to zero — has internal forces of round-off, which alone made
+            # round-off look like a residual of order 1.
+            scale = max(forces, data, lift, start)
             history.append(norm / scale if scale > 0 else norm)
             if not np.isfinite(norm):
                 raise SolverError(f"the residual is not finite; residual history {_fmt(history)}")
-            # converged: a small residual against the loads and internal forces,
-            # or the law's tangent is the one the last solve used — a
+            # converged: the equilibrium rows' residual small against their own
+            # forces (not against ``scale``: the data of a stiff body, E δ/h,
+            # can dwarf the forces of a soft one, and a wrong stick/slip split
+            # passed; tests/test_friction.py, a soft layer under a stiff one);
+            # or the law's tangent is the one the last solve used (a
             # piecewise-linear law is then solved exactly, up to that solve's
-            # round-off (its backward error is checked, against ``scale``)
+            # round-off); or the last correction moved no digit of u (points
+            # whose gap is round-off change status at every solve and change
+            # nothing: a rigid shift under unilateral contact).  Each is
+            # then held to the round-off check against ``scale``.
+            balance = self.ranks.max(float(np.max(np.abs(R[self.balance]), initial=0.0)))
             settled = tangent is not None and self.ranks.all(np.array_equal(tangent, response.tangent))
-            if it > 1 and (norm <= tol.NEWTON_RTOL * forces or settled):
+            still = du is not None and self.ranks.max(float(np.max(np.abs(du), initial=0.0))) <= (
+                tol.STEP_ROUNDOFF * self.ranks.max(float(np.max(np.abs(u), initial=0.0))))
+            if it > 1 and (balance <= tol.NEWTON_RTOL * forces or settled or still):
                 health.check_residual(history[-1], "the settled Newton step")
                 self._commit(k, (loads, supports), u, response, it - 1, history)
                 return

@@ -165,6 +165,17 @@ STICK_ROUNDOFF = 1e-10
 #: point's spring force).
 NEWTON_RTOL = 1e-8
 
+#: Newton has also converged when its last correction is below this
+#: fraction of the largest displacement: no digit that the solve holds
+#: moved (its backward error is ~1e-16, the conditioning here ~1e4-1e8),
+#: while points whose gap is pure round-off change status at every solve
+#: (a rigid shift of both supports under unilateral contact, Γ closed at
+#: zero pressure: residual history 1e-15 at every iteration, never
+#: "settled"; a helper's audit).  Far below any physical correction: a
+#: wrong stick/slip split is corrected by slips of the order of the
+#: displacements (a soft layer under a stiff one: 0.25 of them).
+STEP_ROUNDOFF = 1e-12
+
 #: Newton iterations per (sub-)increment before the step is cut back.  A
 #: settled status needs one more iteration; each status change one more.
 #: Measured: 2-6 on the scenes shipped; 25 leaves room for cycling near a

@@ -134,6 +134,7 @@ class DistributedEFGMSystem:
                        sp.csr_matrix((c, len(loads)))], format="csr")
         self.loads = ls.owned_rows(f, starts, comm).toarray().T  # (loads, owned rows)
         self.multipliers = np.arange(max(first, n), max(last, n))  # owned multiplier rows, global
+        self.constraint_rows = np.arange(self.size - len(self.multipliers), self.size)  # the same, local
         self._vectors = self.A.createVecs()
         self._tangent = None
 

@@ -190,6 +190,7 @@ class EFGMSystem:
                                    format="csr")).tocsr()
         self.size = self.A.shape[0]
         self.ndofs = K.shape[0]
+        self.constraint_rows = np.arange(self.ndofs, self.size)  # the multipliers' rows: s (C u − ū)
         self.loads = loads
         G = interface.G
         self.interface = InterfaceOperator(sp.csr_matrix((G.data, G.indices, G.indptr), shape=(G.shape[0], self.size)),

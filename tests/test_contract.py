@@ -20,7 +20,7 @@ import numpy as np
 import pytest
 
 import tolerances as tol
-from contactcore import (ContactError, CoulombLaw, DiscretisationError, LinearLaw, SolverError, Support,
+from contactcore import (ContactError, CoulombLaw, DiscretisationError, LinearLaw, SolverError, Support, Traction,
                          UnilateralLaw, load_scene, sample_profiles)
 from contactcore import discretisation
 from contactcore.geometry import LevelSetInterface
@@ -110,28 +110,49 @@ def test_friction_that_cannot_carry_the_load_is_refused(key, patch):
 #: A prescribed displacement that leaves both bodies stress-free (m).
 SHIFT = 1e-6
 
-#: Scene A's stress-free cases: bottom moved rigidly with no load (both
-#: bodies shift by it), and the top pulled up off the fixed bottom with
-#: unilateral contact (Γ opens by it).  The forces of the answer are
-#: round-off; only the prescribed displacements' own forces give a scale.
+def _shifted(y):
+    return np.column_stack([np.full(len(y), SHIFT), np.full(len(y), 0.3 * SHIFT)])
+
+
+#: Scene A's stress-free cases (no load unless given; the law: "unilateral",
+#: "coulomb", else the scene's):
+#: - the bottom moved rigidly (both bodies shift by it);
+#: - the top pulled up off the fixed bottom, unilateral (Γ opens by it);
+#: - both edges moved by one vector, unilateral or coulomb: Γ stays closed
+#:   at zero pressure, its gaps pure round-off, so its points change status
+#:   at every solve (refused once by a Newton that waited for a settled
+#:   status; a helper's audit);
+#: - both edges clamped, a side traction ramped, reversed and brought back
+#:   to zero along the path (refused by every method: "relative residual
+#:   1.00e+00" against forces of round-off).
+#: The forces of each answer are round-off; only the prescribed
+#: displacements' own forces, or the residual the step began with, give a scale.
+BOTH_SHIFTED = (Support("bottom", "xy", (SHIFT, 0.3 * SHIFT)), Support("top", "xy", (SHIFT, 0.3 * SHIFT)))
 STRESS_FREE = {
     "rigid shift": dict(supports=(Support("bottom", "xy", (SHIFT, 0.0)),),
                         want=lambda y: np.column_stack([np.full(len(y), SHIFT), np.zeros(len(y))])),
-    "pulled open": dict(supports=(Support("bottom", "xy"), Support("top", "xy", (0.0, SHIFT))), unilateral=True,
+    "pulled open": dict(supports=(Support("bottom", "xy"), Support("top", "xy", (0.0, SHIFT))), law="unilateral",
                         want=lambda y: np.column_stack([np.zeros(len(y)), np.where(y > 0.5, SHIFT, 0.0)])),
+    "both shifted, unilateral": dict(supports=BOTH_SHIFTED, law="unilateral", want=_shifted),
+    "both shifted, coulomb": dict(supports=BOTH_SHIFTED, law="coulomb", want=_shifted),
+    "load back to zero": dict(supports=(Support("bottom", "xy"), Support("top", "xy")), law="unilateral",
+                              loads=(Traction("left", (1e5, 2e4), ((1, 0.0), (2, 1.0), (3, -1.0), (4, 0.0))),),
+                              increments=4, follow_path=True, want=lambda y: np.zeros((len(y), 2))),
 }
 
 
 @pytest.mark.parametrize("case", list(STRESS_FREE))
 @pytest.mark.parametrize("key", list(METHODS), ids=lambda k: f"{k[0]}-P{k[1]}")
 def test_a_stress_free_answer_is_solved(key, case):
-    """The answer of a rigid shift or of bodies pulled apart: every method
-    returns it, never refuses it for a residual measured against forces of
-    round-off."""
+    """The answer of a rigid shift, of bodies pulled apart, or of a load
+    brought back to zero: every method returns it, never refuses it for a
+    residual measured against forces of round-off."""
     spec = STRESS_FREE[case]
     base = load_scene("A")
-    law = UnilateralLaw(base.law.kN, base.law.kT) if spec.get("unilateral") else base.law
-    scene = base.with_changes(loads=(), supports=spec["supports"], law=law, increments=1)
+    law = {"unilateral": UnilateralLaw(base.law.kN, base.law.kT),
+           "coulomb": CoulombLaw(base.law.kN, base.law.kT, 0.3)}.get(spec.get("law"), base.law)
+    scene = base.with_changes(loads=spec.get("loads", ()), supports=spec["supports"], law=law,
+                              increments=spec.get("increments", 1), follow_path=spec.get("follow_path", False))
     disc, bound_u, _ = METHODS[key]
     result = discretisation.solve(scene, disc, PATCH_H)
     y = np.r_[np.linspace(0.05, 0.45, 5), np.linspace(0.55, 0.95, 5)]

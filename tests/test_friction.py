@@ -221,6 +221,31 @@ def test_a_soft_layer_under_a_stiff_one_answers_right_or_refuses(method, layered
         assert abs(w @ step.jump[:, 1] - g) <= bound * np.max(np.abs(g_exact)), step.step
 
 
+@pytest.mark.parametrize("method", METHODS)
+def test_a_rigidly_shifted_block_has_the_unshifted_answer(method, layered):
+    """The layered closed form with both edges moved by tol.RIGID_SHIFT
+    more (x): t_T and g_T are the closed form's at every increment.  EFGM
+    imposes supports by multiplier rows whose values, E·S, once counted
+    among the forces Newton's residual was judged against: it accepted
+    stick/slip splits 0.30 of μp off (a helper's audit)."""
+    from contactcore import Support
+
+    top = layered.scene.supports[1]
+    path = ((0, tol.RIGID_SHIFT),) + tuple((k, tol.RIGID_SHIFT + f * top.value[0]) for k, f in top.path)
+    scene = layered.scene.with_changes(supports=(
+        Support("bottom", "xy", (tol.RIGID_SHIFT, 0.0), ((0, 1.0),)), Support("top", "x", (1.0, 0.0), path)))
+    result = methods.solver(method)(scene, estimate_condition=False)
+    exact = layered.history()
+    steps = [s for s in result.interface.steps if float(s.step).is_integer()]
+    assert len(steps) == len(exact)
+    w = result.interface.weights / result.interface.weights.sum()
+    g_exact = np.array([st.tau / layered.kT + st.slip for st in exact])
+    bound = max(tol.SHIFTED_CLOSED_FORM, tol.FRICTION_CLOSED_FORM[method][0])
+    for step, st, g in zip(steps, exact, g_exact):
+        assert abs(w @ step.traction[:, 1] - st.tau) <= bound * layered.mu * st.p + 1e-9, step.step
+        assert abs(w @ step.jump[:, 1] - g) <= bound * np.max(np.abs(g_exact)), step.step
+
+
 def test_the_closed_form_matches_its_scene_inputs(layered):
     """The side tractions of the scene file are τ of the closed form at every
     increment (the file was written from it)."""
