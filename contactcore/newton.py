@@ -275,7 +275,7 @@ class _Newton:
         u = self.u.copy()
         u[self.system.fixed] = self.system.fixed_values(supports)
         lift = self._lift(supports)
-        history, tangent, start, du = [], None, 0.0, None
+        history, tangent, start, du, u0 = [], None, 0.0, None, u.copy()
         for it in range(1, tol.NEWTON_MAX_ITERATIONS + 1):
             response = self.law.evaluate(self.itf.jumps(u), self.state)
             R, forces, data = self._residual(u, b, response)
@@ -298,14 +298,14 @@ class _Newton:
             # passed; tests/test_friction.py, a soft layer under a stiff one);
             # or the law's tangent is the one the last solve used (a
             # piecewise-linear law is then solved exactly, up to that solve's
-            # round-off); or the last correction moved no digit of u (points
-            # whose gap is round-off change status at every solve and change
-            # nothing: a rigid shift under unilateral contact).  Each is
-            # then held to the round-off check against ``scale``.
+            # round-off); or the last correction moved no digit of what the
+            # step moved u by (points whose gap is round-off change status at
+            # every solve and change nothing: a rigid shift under unilateral
+            # contact).  Each is then held to the round-off check against ``scale``.
             balance = self.ranks.max(float(np.max(np.abs(R[self.balance]), initial=0.0)))
             settled = tangent is not None and self.ranks.all(np.array_equal(tangent, response.tangent))
             still = du is not None and self.ranks.max(float(np.max(np.abs(du), initial=0.0))) <= (
-                tol.STEP_ROUNDOFF * self.ranks.max(float(np.max(np.abs(u), initial=0.0))))
+                tol.STEP_ROUNDOFF * self.ranks.max(float(np.max(np.abs(u - u0), initial=0.0))))
             if it > 1 and (balance <= tol.NEWTON_RTOL * forces or settled or still):
                 health.check_residual(history[-1], "the settled Newton step")
                 self._commit(k, (loads, supports), u, response, it - 1, history)

@@ -166,7 +166,9 @@ STICK_ROUNDOFF = 1e-10
 NEWTON_RTOL = 1e-8
 
 #: Newton has also converged when its last correction is below this
-#: fraction of the largest displacement: no digit that the solve holds
+#: fraction of what the step has moved the unknowns by (not of the
+#: displacements: a rigid shift 1e6 times the deformation would make
+#: physical corrections look like round-off): no digit that the solve holds
 #: moved (its backward error is ~1e-16, the conditioning here ~1e4-1e8),
 #: while points whose gap is pure round-off change status at every solve
 #: (a rigid shift of both supports under unilateral contact, Γ closed at
