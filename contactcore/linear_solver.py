@@ -499,8 +499,8 @@ class Tangent:
     factorisation redone (numerically only: the pattern is fixed).  Each slot keeps its
     factorisation until it is refilled.  For a ``symmetric`` ``K`` (the
     caller says so, from its method's construction: fe's and xfem's weak
-    form, EFGM's Bubnov–Galerkin system) MUMPS's :data:`SYMMETRIC` factorisation is used while ``K_Γ`` is symmetric
-    too on every rank (``ranks``: the reductions of ``K``'s communicator;
+    form, EFGM's Bubnov–Galerkin system) MUMPS's :data:`SYMMETRIC`
+    factorisation is used while ``K_Γ`` is symmetric too on every rank (``ranks``: the reductions of ``K``'s communicator;
     each rank holds its points' part of ``K_Γ``); any other tangent takes
     the general LU.  Either compresses MUMPS's graph by :data:`BLOCKS` when
     the factorised rows come in node pairs (:meth:`_paired`).

@@ -16,10 +16,12 @@ Newton iterates ``J δu = −R`` on the free unknowns until
 of the loads and the internal forces), or until the law's tangent is the
 one the last solve used: a piecewise-linear law (every law here) is then
 solved exactly up to that solve's round-off, which stiff springs
-(k ≥ 1e8 E/h) raise above NEWTON_RTOL.  Either way the step is accepted
-only if ``‖R‖∞ <= RESIDUAL_FAIL·max(F, L)``, ``L`` the forces of the
-prescribed displacements alone (the round-off scale of a stress-free
-answer), and every solve passed the same test (:mod:`contactcore.health`): a settled status whose solve was
+(k ≥ 1e8 E/h) raise above NEWTON_RTOL, or until the last correction
+moved no digit of what the step moved ``u`` by (STEP_ROUNDOFF).  Either way
+the step is accepted only if ``‖R‖∞ <= RESIDUAL_FAIL·max(F, L, R₀)``, ``L``
+the forces of the prescribed displacements alone, ``R₀`` the residual the
+step began with (the round-off scale of a stress-free answer), and every
+solve passed the same test (:mod:`contactcore.health`): a settled status whose solve was
 singular (a body sliding away at the slip limit) is a failure, not a
 converged runaway.  Before any solve the springs must leave the bulk
 digits in their rows (:func:`contactcore.health.check_springs`) and the
