@@ -26,7 +26,7 @@ import numpy as np
 from contactcore import DiscretisationError
 from contactcore import tolerances as tol
 from contactcore.bodies import sign_of
-from contactcore.geometry import CircleInterface, LevelSetInterface, LineInterface
+from contactcore.geometry import CircleInterface, LevelSetInterface, LineInterface, polygon_area
 
 #: Quad-tree splits of a cell before giving up on a cut that stays complicated.
 MAX_DEPTH = 6
@@ -206,11 +206,6 @@ def _split(vertices: np.ndarray) -> list[np.ndarray]:
     return [np.array([vertices[i], mids[i], c, mids[i - 1]]) for i in range(4)]
 
 
-def _area(vertices: np.ndarray) -> float:
-    x, y = vertices[:, 0], vertices[:, 1]
-    return 0.5 * abs(float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1))))
-
-
 def polygon_rule(vertices: np.ndarray, n: int):
     """Gauss points of an uncut convex polygon: tensor rule on an
     axis-aligned rectangle, fans from the first vertex otherwise."""
@@ -232,7 +227,7 @@ def cut_polygon(itf, vertices: np.ndarray, n: int, depth: int = 0) -> list[tuple
         for t in edge_crossings(itf, a, b):
             walk.append((a + t * (b - a), False, None))
     crossings = [i for i, w in enumerate(walk) if not w[1]]
-    size2 = _area(vertices)
+    size2 = polygon_area(vertices)
     lo, hi = vertices.min(axis=0), vertices.max(axis=0)
     # a circle smaller than the cell may lie inside it, or cut it along an arc
     # longer than π (the short-arc construction would then be wrong): split

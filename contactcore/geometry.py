@@ -175,7 +175,7 @@ class LineInterface:
     def minus_area(self, domain: Domain) -> float:
         """Area of the − side of the domain (exact for both domain types)."""
         if isinstance(domain, Rectangle):
-            return _polygon_area(_clip_halfplane(domain.corners, self))
+            return polygon_area(_clip_halfplane(domain.corners, self))
         R = domain.radius
         d = float(self.phi([domain.centre])[0])  # signed distance of the centre
         d = np.clip(d, -R, R)
@@ -268,8 +268,12 @@ def _clip_halfplane(poly: np.ndarray, line: LineInterface) -> np.ndarray:
     return np.array(out) if out else np.zeros((0, 2))
 
 
-def _polygon_area(poly: np.ndarray) -> float:
-    if len(poly) < 3:
-        return 0.0
-    x, y = poly[:, 0], poly[:, 1]
-    return 0.5 * abs(float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1))))
+def polygon_area(poly: np.ndarray):
+    """The area of a polygon (n, 2), or of each of a stack (…, n, 2), its
+    vertices in order (shoelace formula); fewer than 3 vertices: 0."""
+    poly = np.asarray(poly, float)
+    if poly.shape[-2] < 3:
+        return np.zeros(poly.shape[:-2]) if poly.ndim > 2 else 0.0
+    x, y = poly[..., 0], poly[..., 1]
+    area = 0.5 * np.abs(np.sum(x * np.roll(y, -1, axis=-1) - np.roll(x, -1, axis=-1) * y, axis=-1))
+    return float(area) if poly.ndim == 2 else area

@@ -54,7 +54,7 @@ from contactcore import discretisation
 from contactcore.discretisation import Built, Resolution, check_choice, make
 from contactcore import tolerances as tol
 from contactcore.cutcell import cut_polygon, edge_crossings, gauss01, interface_rule_in, polygon_rule
-from contactcore.geometry import LevelSetInterface, Rectangle, tangent_of
+from contactcore.geometry import LevelSetInterface, Rectangle, polygon_area, tangent_of
 from contactcore.assembly import Triplets
 from contactcore.bodies import Body, index_of_sign, sign_of, sign_of_index
 from contactcore.bodies import side as side_of
@@ -305,9 +305,7 @@ class EnrichedFunctionSpace:
         """The share of ``body``'s area that lies in cut cells, over every
         rank: 1 for a body no cell of the mesh lies wholly inside."""
         owned = self.owned_cells
-        corners = self.corners[:owned]
-        x, y = corners[..., 0], corners[..., 1]
-        area = 0.5 * np.abs(np.sum(x * np.roll(y, -1, axis=1) - np.roll(x, -1, axis=1) * y, axis=1))
+        area = polygon_area(self.corners[:owned])
         cut = np.zeros(owned, bool)
         cut[[c for c in self.regions if c < owned]] = True
         whole = float(np.sum(area[~cut & (self.cell_side[:owned] == body.sign)]))
