@@ -49,6 +49,31 @@ OPEN, STICK, SLIP = 0, 1, 2
 STATUS_NAMES = ("open", "stick", "slip")
 
 
+@dataclass(frozen=True)
+class Decision:
+    """What Newton hands a law so that no status follows round-off.
+
+    ``previous`` is each point's status at the previous iterate (at a
+    step's first iterate, the last converged one).  A switch whose margin —
+    ``−g_N`` for closed/open, ``μp − |t*|`` for stick/slip — lies within
+    ``DECISION_BAND`` of its scale keeps the previous status: the traction
+    of either branch differs there by at most that band, far above the
+    round-off that a BLAS kernel, a MUMPS ordering or a renumbering leaves
+    in the margin, so every machine takes the same decision.  The scales
+    are Γ-wide (reduced over every rank by Newton): ``gap`` the largest
+    ``|g_N|``, ``traction`` the largest slip limit ``μp`` (:meth:`_Law.decision_scales`).
+    """
+
+    previous: np.ndarray
+    gap: float
+    traction: float
+
+    def switch(self, margin: np.ndarray, scale: float, was: np.ndarray) -> np.ndarray:
+        """``margin > 0`` where it is beyond the band, else ``was``."""
+        band = tol.DECISION_BAND * scale
+        return np.where(margin > band, True, np.where(margin < -band, False, was))
+
+
 class _Law:
     """What every law shares: reading its parameters, its spring scale."""
 
@@ -76,10 +101,20 @@ class _Law:
         """The largest spring stiffness, used in conditioning diagnostics."""
         return max(self.kN, self.kT)
 
-    def _springs(self, g: np.ndarray):
-        """``g`` as (m, 2), the closed points (``g_N <= 0``) and ``t_N``."""
+    def decision_scales(self, g: np.ndarray, state=None) -> np.ndarray:
+        """This rank's ``[gap, traction]`` scales of :class:`Decision`."""
         g = np.asarray(g, dtype=float).reshape(-1, 2)
-        closed = g[:, 0] <= 0.0
+        gap = float(np.max(np.abs(g[:, 0]), initial=0.0))
+        return np.array([gap, gap * self.kN])
+
+    def _springs(self, g: np.ndarray, decision: Decision | None = None):
+        """``g`` as (m, 2), the closed points (``g_N <= 0``, or by
+        ``decision`` within its band) and ``t_N``."""
+        g = np.asarray(g, dtype=float).reshape(-1, 2)
+        if decision is None:
+            closed = g[:, 0] <= 0.0
+        else:
+            closed = decision.switch(-g[:, 0], decision.gap, decision.previous != OPEN)
         return g, closed, np.where(closed, self.kN * g[:, 0], 0.0)
 
 
@@ -110,7 +145,7 @@ class LinearLaw(_Law):
         """``∂t/∂g = diag(k_N, k_T)``: the same at every point."""
         return np.diag([self.kN, self.kT])
 
-    def evaluate(self, g: np.ndarray, state=None) -> LawResponse:
+    def evaluate(self, g: np.ndarray, state=None, decision: Decision | None = None) -> LawResponse:
         g = np.asarray(g, dtype=float).reshape(-1, 2)
         D = self.constant_tangent()
         return LawResponse(g @ D.T, np.broadcast_to(D, (len(g), 2, 2)).copy(), None,
@@ -132,8 +167,8 @@ class UnilateralLaw(_Law):
     name: ClassVar[str] = "unilateral"
     is_linear: ClassVar[bool] = False
 
-    def evaluate(self, g: np.ndarray, state=None) -> LawResponse:
-        g, closed, tN = self._springs(g)
+    def evaluate(self, g: np.ndarray, state=None, decision: Decision | None = None) -> LawResponse:
+        g, closed, tN = self._springs(g, decision)
         tT = np.where(closed, self.kT * g[:, 1], 0.0)
         tangent = np.zeros((len(g), 2, 2))
         tangent[closed] = np.diag([self.kN, self.kT])
@@ -169,12 +204,23 @@ class CoulombLaw(_Law):
         """No slip before the first increment."""
         return np.zeros(m)
 
-    def evaluate(self, g: np.ndarray, state=None) -> LawResponse:
+    def decision_scales(self, g: np.ndarray, state=None) -> np.ndarray:
+        """This rank's ``[gap, traction]`` scales of :class:`Decision`:
+        the largest ``|g_N|`` and the largest slip limit ``μp`` (not the
+        trial, which a far-off iterate can make arbitrarily large)."""
         g, closed, tN = self._springs(g)
+        return np.array([float(np.max(np.abs(g[:, 0]), initial=0.0)),
+                         float(np.max(-self.mu * tN, initial=0.0))])
+
+    def evaluate(self, g: np.ndarray, state=None, decision: Decision | None = None) -> LawResponse:
+        g, closed, tN = self._springs(g, decision)
+        limit = self.mu * np.maximum(-tN, 0.0)
         s = np.zeros(len(g)) if state is None else np.asarray(state, dtype=float)
-        limit = -self.mu * tN
         trial = self.kT * (g[:, 1] - s)
-        stick = closed & (np.abs(trial) <= limit * (1.0 + tol.STICK_ROUNDOFF))
+        if decision is None:
+            stick = closed & (np.abs(trial) <= limit * (1.0 + tol.STICK_ROUNDOFF))
+        else:
+            stick = closed & decision.switch(limit - np.abs(trial), decision.traction, decision.previous == STICK)
         slip = closed & ~stick
         direction = np.sign(trial)
         tT = np.where(stick, trial, np.where(slip, limit * direction, 0.0))

@@ -32,7 +32,14 @@ LU.  The tangent of a piecewise-linear law changes only when a point
 changes status: a solve whose tangent is one of the last factorised
 (:data:`~contactcore.tolerances.FACTORISATIONS_KEPT`) reuses that
 factorisation, often for whole load paths, and the system refills the
-matrices it allocated once.  A failed increment (no convergence, a singular tangent) is halved up to
+matrices it allocated once.  Every status decision is taken so that round-off cannot move it
+(:class:`~contactcore.laws.Decision`): a point whose margin (its gap, or
+``μp − |t*|``) lies within DECISION_BAND of the margin's Γ-wide scale keeps
+the status of the previous iterate, and a step starts from the elastic
+predictor (points that slipped are tried as sticking).  A status map met
+twice in one step is a cycle: from then on each correction is damped by an
+Armijo line search on ``‖R‖₂`` (:meth:`_Newton._line_search`).
+A failed increment (no convergence, a singular tangent) is halved up to
 ``MAX_CUTBACKS`` times; the state is committed only at converged steps.  A
 law without history (linear, unilateral) is path-independent: unless the
 scene asks for the response along the path (``follow_path``), Newton goes
@@ -55,7 +62,7 @@ from . import tolerances as tol
 from .collective import SERIAL
 from .errors import SolverError, SolverOptionError
 from .geometry import CircleInterface, LineInterface, tangent_of
-from .laws import STATUS_NAMES
+from .laws import SLIP, STATUS_NAMES, STICK, Decision
 from .result import SolverReport
 
 
@@ -244,6 +251,7 @@ class _Newton:
         self.balance = self.free[~self.constraint[self.free]]
         self.u = np.zeros(system.size)
         self.state = self.law.initial_state(self.itf.size)
+        self.status = np.full(self.itf.size, STICK, np.int8)  # an unloaded interface is closed and sticks
         self.report = SolverReport(solver="", solves=0, iterations=[])
         self.path = InterfacePath(self.itf.points, self.itf.weights)
         self.ranks = getattr(system, "collective", SERIAL)  # every decision is taken on all ranks alike
@@ -278,8 +286,14 @@ class _Newton:
         u[self.system.fixed] = self.system.fixed_values(supports)
         lift = self._lift(supports)
         history, tangent, start, du, u0 = [], None, 0.0, None, u.copy()
+        # the elastic predictor: a point that slipped is tried as sticking
+        # first (its margin is ~0 at the converged state, so the band keeps
+        # this choice), as the return map of Wriggers (2006, §5.2) does
+        previous = np.where(self.status == SLIP, STICK, self.status)
+        seen, damped = [], False
         for it in range(1, tol.NEWTON_MAX_ITERATIONS + 1):
-            response = self.law.evaluate(self.itf.jumps(u), self.state)
+            response = self._evaluate(u, previous)
+            previous = response.status
             R, forces, data = self._residual(u, b, response)
             norm = self.ranks.max(float(np.max(np.abs(R[self.free]), initial=0.0)))
             start = start or norm
@@ -312,14 +326,50 @@ class _Newton:
                 health.check_residual(history[-1], "the settled Newton step")
                 self._commit(k, (loads, supports), u, response, it - 1, history)
                 return
+            # a status map met before (not the last one: that is settled) is
+            # a cycle: from here on every correction is damped by a line search
+            damped = damped or any(self.ranks.all(np.array_equal(t, response.tangent)) for t in seen[:-1])
+            seen.append(response.tangent)
             tangent = response.tangent
             du, rep = self._solve(tangent, -R, scale)
             _merge(self.report, rep)
+            if damped:
+                du = du * self._line_search(u, du, b, R, response.status)
             u = u + du
-        cycling = len(history) > 4 and np.isclose(history[-1], history[-3]) and np.isclose(history[-2], history[-4])
         raise SolverError(f"Newton did not converge in {tol.NEWTON_MAX_ITERATIONS} iterations"
-                          + (" (it cycles between two contact states)" if cycling else "")
+                          + (" (its contact states cycled; damped steps did not settle them)" if damped else "")
                           + f"; relative residual history {_fmt(history)}")
+
+    def _merit(self, R: np.ndarray) -> float:
+        """``‖R‖₂`` over the free rows of every rank."""
+        return float(np.sqrt(self.ranks.sum(float(np.sum(R[self.free] ** 2)))))
+
+    def _line_search(self, u, du, b, R, status) -> float:
+        """The largest ``α = 2⁻ʲ`` (j <= LINE_SEARCH_HALVINGS) whose step
+        ``u + α δu`` decreases the merit ``‖R‖₂`` by Armijo's rule
+        ``‖R(u + α δu)‖ <= (1 − ARMIJO α) ‖R(u)‖`` — the globalised
+        semismooth Newton of GetFEM's contact bricks and PETSc's
+        ``vinewtonrsls``: ``δu = −J⁻¹R`` is a descent direction of ``½‖R‖²``
+        for any generalised Jacobian ``J`` of the semismooth residual, so a
+        small enough step always decreases it and breaks a cycle between
+        status maps.  The smallest step if none does."""
+        merit = self._merit(R)
+        alpha = 1.0
+        for _ in range(tol.LINE_SEARCH_HALVINGS):
+            trial = u + alpha * du
+            R_trial, _, _ = self._residual(trial, b, self._evaluate(trial, status))
+            if self._merit(R_trial) <= (1.0 - tol.ARMIJO * alpha) * merit:
+                return alpha
+            alpha /= 2
+        return alpha
+
+    def _evaluate(self, u: np.ndarray, previous: np.ndarray):
+        """The law at the jumps of ``u``, each switch within its round-off
+        band keeping the ``previous`` status (:class:`~contactcore.laws.Decision`,
+        its scales Γ-wide over every rank)."""
+        g = self.itf.jumps(u)
+        gap, traction = (self.ranks.max(float(v)) for v in self.law.decision_scales(g, self.state))
+        return self.law.evaluate(g, self.state, Decision(previous, gap, traction))
 
     def _solve(self, tangent: np.ndarray, rhs: np.ndarray, scale: float):
         """``J δu = rhs`` with the law's ``tangent`` at the points: with the
@@ -338,7 +388,7 @@ class _Newton:
         return du, report
 
     def _commit(self, k, factors, u, response, iterations, history) -> None:
-        self.u, self.state = u, response.state
+        self.u, self.state, self.status = u, response.state, response.status
         g = self.itf.jumps(u)
         self.path.steps.append(Increment(k, factors, iterations, history, g, response.traction, response.status))
         self.report.iterations.append(iterations)

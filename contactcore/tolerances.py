@@ -154,6 +154,27 @@ THIN_BODY_CUT_SHARE = 0.5
 #: ~1e-15; 1e-10 (SCENES.md's example) absorbs it without moving the limit.
 STICK_ROUNDOFF = 1e-10
 
+#: Newton's status decisions (open/closed, stick/slip) keep a point's
+#: previous status while its margin lies within DECISION_BAND of the
+#: margin's Γ-wide scale (contactcore.laws.Decision).  The margin's noise is
+#: round-off amplified by the system's conditioning: 1e-15 on the paper's
+#: scenes, 2.6e-9 of μp on a soft layer 1e8 times softer than its
+#: neighbour (layered slip, xfem P1), where a 1e-10 allowance let the
+#: points of a uniform interface split 17/13 between stick and slip by the
+#: BLAS kernel in use, and Newton cycled.  1e-6 sits 400 times above that
+#: noise and moves a traction by at most 1e-6 of Γ's largest, far below
+#: every discretisation error measured here (>= 1e-5 of the scale).
+DECISION_BAND = 1e-6
+
+#: Once Newton meets a status map it met before in the same step (a
+#: cycle), its corrections are damped: halved at most LINE_SEARCH_HALVINGS
+#: times (to 1/256) until Armijo's rule ``‖R(u + αδu)‖₂ <= (1 − ARMIJO α)‖R(u)‖₂``
+#: holds.  ARMIJO = 1e-4 is the usual sufficient decrease (Nocedal & Wright,
+#: Numerical Optimization, §3.1); full steps are kept until a cycle, so the
+#: iterations of a path that does not cycle do not change.
+LINE_SEARCH_HALVINGS = 8
+ARMIJO = 1e-4
+
 #: Newton on one load increment has converged when the residual of the free
 #: equations satisfies ||R||_inf <= NEWTON_RTOL * F, F the larger of the
 #: external and internal nodal forces (infinity norms).  A piecewise-linear

@@ -319,3 +319,32 @@ PARALLEL_PARITY = 1e-10
 #: C-coulomb at h = 0.1 on 2 and 3 ranks.  A cell, point or row lost or
 #: counted twice changes entries by their own size, far above it.
 EFGM_DISTRIBUTED_ASSEMBLY = 1e-13
+
+# ----- round-off probes of Newton's decisions (tests/roundoff.py) -------------
+
+#: Two runs of one stiff friction case under different round-off (OpenBLAS
+#: kernels, MUMPS orderings, EFGM's node order, a 1e-12 change of the load)
+#: must take the same status at every point and increment (the band of
+#: Newton's decisions, contactcore.tolerances.DECISION_BAND, sees to that),
+#: and give tractions and jumps within ROUNDOFF_PROFILES[case] of their
+#: largest value.  Those then differ by the solves' forward error, at most
+#: the conditioning times ε, which the case's contrast sets; each bound is
+#: 5-10x the worst measured over 3 methods × 9 perturbations (2026-11-26,
+#: the slow test_every_stiff_case_decides_alike_under_every_perturbation):
+#: C-coulomb at 10x/100x its springs 2.0e-12; a 1e-6 stiffness contrast
+#: either way 1.2e-8; the block shifted 1e6 times its deformation 1.6e-8;
+#: the soft layer (contrast 1e-8, ε/1e-8 = 2e-8 before the mesh's own
+#: conditioning) 1.6e-6 — its closed form holds only to SOFT_LAYER_CLOSED_FORM.
+ROUNDOFF_PROFILES = {"C-coulomb-10x": 1e-8, "C-coulomb-100x": 1e-8, "contrast-1e-6": 1e-7,
+                     "contrast+1e-6": 1e-7, "shifted": 1e-7, "soft-layer": 1e-5}
+
+#: The relative change of every load and prescribed value in the ``load``
+#: perturbation: far above round-off (1e-16), far below the band.
+ROUNDOFF_LOAD = 1e-12
+
+#: The spacing of the C-coulomb probes: the scene's own (0.05) keeps the
+#: matrix's 100-odd runs within the slow stage.
+ROUNDOFF_C_H = 0.05
+
+#: The seed of EFGM's node shuffle (any fixed seed: the run must not depend on it).
+ROUNDOFF_SEED = 20261126

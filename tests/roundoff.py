@@ -1,0 +1,159 @@
+"""Round-off probes of Newton's decisions: one stiff friction case solved
+under one deliberate perturbation of round-off, reduced to what must not
+change — the status of every Γ point at every increment, and the
+interface's tractions and jumps.
+
+A perturbation is one of:
+
+* ``coretype=NAME``: OpenBLAS's kernels for another CPU (the variable is
+  read when OpenBLAS loads, so the case runs in a child process:
+  :func:`in_child`);
+* ``ordering=K``: MUMPS's fill-reducing ordering ``ICNTL(7) = K`` (fe and
+  xfem: the pivot order of every factorisation);
+* ``renumber``: EFGM's nodes given in a shuffled order (assembly sums and
+  pivot order both change);
+* ``load=EPS``: every load and prescribed displacement scaled by ``1 + EPS``.
+
+``python tests/roundoff.py FOLDER PERTURBATION CASE:METHOD ...`` writes the
+fingerprints of those probes into FOLDER (the child process of :func:`in_child`).
+"""
+from __future__ import annotations
+
+import dataclasses
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+
+import tolerances as tol  # noqa: E402
+
+
+def _scaled_springs(factor: float):
+    from contactcore import load_scene
+
+    scene = load_scene("C-coulomb")
+    law = dataclasses.replace(scene.law, kN=scene.law.kN * factor, kT=scene.law.kT * factor)
+    return scene.with_changes(law=law)
+
+
+def _layered(E_minus_factor: float = 1.0, E_plus_factor: float = 1.0):
+    from verification.closed_forms import layered_slip
+
+    base = layered_slip()
+    return layered_slip(E=(E_minus_factor * base.E[0], E_plus_factor * base.E[1])).scene
+
+
+def _shifted():
+    from contactcore import Support
+
+    scene = _layered()
+    top = scene.supports[1]
+    path = ((0, tol.RIGID_SHIFT),) + tuple((k, tol.RIGID_SHIFT + f * top.value[0]) for k, f in top.path)
+    return scene.with_changes(supports=(Support("bottom", "xy", (tol.RIGID_SHIFT, 0.0), ((0, 1.0),)),
+                                        Support("top", "x", (1.0, 0.0), path)))
+
+
+#: The stiff friction cases, by name: (scene factory, h or None for the scene's).
+CASES = {
+    "soft-layer": (lambda: _layered(E_minus_factor=tol.SOFT_LAYER), None),
+    "contrast-1e-6": (lambda: _layered(E_minus_factor=1e-6), None),
+    "contrast+1e-6": (lambda: _layered(E_plus_factor=1e-6), None),
+    "shifted": (_shifted, None),
+    "C-coulomb-10x": (lambda: _scaled_springs(10.0), tol.ROUNDOFF_C_H),
+    "C-coulomb-100x": (lambda: _scaled_springs(100.0), tol.ROUNDOFF_C_H),
+}
+
+
+def _perturbed(scene, perturbation: str):
+    """The scene with its loads and prescribed values scaled (``load=EPS``)."""
+    if not perturbation.startswith("load="):
+        return scene
+    factor = 1.0 + float(perturbation.split("=")[1])
+    loads = tuple(dataclasses.replace(ld, value=tuple(factor * np.asarray(ld.value, float)))
+                  if isinstance(ld.value, (tuple, list)) else dataclasses.replace(ld, value=factor * ld.value)
+                  for ld in scene.loads)
+    supports = tuple(dataclasses.replace(s, value=tuple(factor * np.asarray(s.value, float))) for s in scene.supports)
+    return scene.with_changes(loads=loads, supports=supports)
+
+
+def _options(method: str, scene, h, perturbation: str) -> dict:
+    """The method's options for an ``ordering=K`` or ``renumber`` perturbation."""
+    if perturbation.startswith("ordering="):
+        return {"petsc_options": {"mat_mumps_icntl_7": perturbation.split("=")[1]}}
+    if perturbation == "renumber":
+        from contactcore.discretisation import resolution
+        from efgm.method import _node_set
+
+        nodes = _node_set(scene, resolution(scene, h, False, "efgm_nodes")).x
+        return {"nodes": nodes[np.random.default_rng(tol.ROUNDOFF_SEED).permutation(len(nodes))]}
+    return {}
+
+
+def fingerprint(case: str, method: str, perturbation: str = "none") -> dict:
+    """What must not change under ``perturbation``: the statuses (steps ×
+    points), tractions and jumps of every converged step, in Γ's canonical
+    order; or the refusal's message."""
+    from contactcore import SolverError
+    from verification import methods
+
+    factory, h = CASES[case]
+    scene = _perturbed(factory(), perturbation)
+    try:
+        result = methods.solver(method)(scene, h, estimate_condition=False, **_options(method, scene, h, perturbation))
+    except SolverError as exc:
+        return {"refused": str(exc).split(";")[0]}
+    steps = result.interface.steps
+    return {"step": np.array([s.step for s in steps]),
+            "status": np.array([s.status for s in steps]),
+            "traction": np.array([s.traction for s in steps]),
+            "jump": np.array([s.jump for s in steps])}
+
+
+def _file(folder: Path, case: str, method: str, perturbation: str) -> Path:
+    return folder / f"{case}-{method}-{perturbation}.npz"
+
+
+def in_child(probes: list[tuple[str, str]], perturbation: str, folder: Path) -> dict:
+    """:func:`fingerprint` of every ``(case, method)`` of ``probes`` in one
+    child process (``coretype=NAME`` sets OPENBLAS_CORETYPE there)."""
+    env = dict(os.environ)
+    if perturbation.startswith("coretype="):
+        env["OPENBLAS_CORETYPE"] = perturbation.split("=")[1]
+    subprocess.run([sys.executable, __file__, str(folder), perturbation] + [f"{c}:{m}" for c, m in probes],
+                   env=env, check=True, cwd=HERE.parent, capture_output=True)
+    out = {}
+    for case, method in probes:
+        with np.load(_file(folder, case, method, perturbation), allow_pickle=False) as data:
+            out[case, method] = {k: (str(data[k]) if k == "refused" else data[k]) for k in data.files}
+    return out
+
+
+def differences(a: dict, b: dict, bound: float) -> list[str]:
+    """Where two fingerprints differ beyond round-off: a refusal against an
+    answer, another refusal, another step sequence or status map, or a
+    traction or jump more than ``bound`` of its scale apart."""
+    if "refused" in a or "refused" in b:
+        return [] if a.get("refused") == b.get("refused") else [f"{a.get('refused', 'answer')} / {b.get('refused', 'answer')}"]
+    if not np.array_equal(a["step"], b["step"]):
+        return [f"steps {a['step'].tolist()} / {b['step'].tolist()}"]
+    out = []
+    for i in np.flatnonzero(np.any(a["status"] != b["status"], axis=1)):
+        out.append(f"step {a['step'][i]:g}: {int(np.sum(a['status'][i] != b['status'][i]))} points change status")
+    for key in ("traction", "jump"):
+        scale = max(np.max(np.abs(a[key])), np.finfo(float).tiny)
+        worst = np.max(np.abs(a[key] - b[key])) / scale
+        if worst > bound:
+            out.append(f"{key} differs by {worst:.2e} of its scale")
+    return out
+
+
+if __name__ == "__main__":
+    folder, perturbation = Path(sys.argv[1]), sys.argv[2]
+    for probe in sys.argv[3:]:
+        case, method = probe.split(":")
+        np.savez(_file(folder, case, method, perturbation), **fingerprint(case, method, perturbation))

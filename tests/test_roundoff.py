@@ -1,0 +1,58 @@
+"""Newton decides alike on every machine: the stiff friction cases under
+deliberate perturbations of round-off take the same status at every point
+and increment, and give the same tractions and jumps to
+ROUNDOFF_PROFILES[case] of their scale (tests/roundoff.py).  The default stage
+runs the case that once split by BLAS kernel (a soft layer under a stiff
+one, xfem P1: 17/13 stick/slip under Haswell's kernels at the first
+unloading increment, where Nehalem's gave an answer) and C-coulomb at 10x
+its springs; the slow stage runs the whole matrix."""
+import pytest
+
+import roundoff
+import tolerances as tol
+
+METHODS = ("fe", "xfem", "efgm")
+CORETYPES = ("Haswell", "Nehalem", "Sandybridge")
+
+
+def _assert_alike(reference: dict, perturbed: dict, case: str, what: str) -> None:
+    problems = roundoff.differences(reference, perturbed, tol.ROUNDOFF_PROFILES[case])
+    assert not problems, f"{what}: " + "; ".join(problems)
+
+
+def test_stiff_cases_decide_alike_under_two_blas_kernels(tmp_path):
+    probes = [("soft-layer", "xfem"), ("C-coulomb-10x", "xfem")]
+    haswell = roundoff.in_child(probes, "coretype=Haswell", tmp_path)
+    nehalem = roundoff.in_child(probes, "coretype=Nehalem", tmp_path)
+    for case, method in probes:
+        assert "refused" not in haswell[case, method], haswell[case, method]["refused"]
+        _assert_alike(haswell[case, method], nehalem[case, method], case, f"{case}, {method}, Haswell / Nehalem")
+
+
+def test_a_load_changed_by_round_off_decides_alike():
+    reference = roundoff.fingerprint("C-coulomb-10x", "xfem")
+    perturbed = roundoff.fingerprint("C-coulomb-10x", "xfem", f"load={tol.ROUNDOFF_LOAD}")
+    _assert_alike(reference, perturbed, "C-coulomb-10x", "C-coulomb at 10x its springs, xfem, load x (1 + 1e-12)")
+
+
+def _perturbations(method: str) -> list[str]:
+    numbering = ["ordering=0", "ordering=2"] if method != "efgm" else ["renumber"]
+    return [f"coretype={c}" for c in CORETYPES] + numbering + [f"load={tol.ROUNDOFF_LOAD}"]
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("method", METHODS)
+def test_every_stiff_case_decides_alike_under_every_perturbation(method, tmp_path):
+    probes = [(case, method) for case in roundoff.CASES]
+    reference = {p: roundoff.fingerprint(*p) for p in probes}
+    failures = []
+    for perturbation in _perturbations(method):
+        if perturbation.startswith("coretype="):
+            perturbed = roundoff.in_child(probes, perturbation, tmp_path)
+        else:
+            perturbed = {p: roundoff.fingerprint(*p, perturbation) for p in probes}
+        for p in probes:
+            bound = tol.ROUNDOFF_PROFILES[p[0]]
+            failures += [f"{p[0]} under {perturbation}: {d}"
+                         for d in roundoff.differences(reference[p], perturbed[p], bound)]
+    assert not failures, "\n".join(failures)
