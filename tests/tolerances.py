@@ -37,7 +37,7 @@ TORQUE_BALANCE = {1: 1e-2, 2: 1e-4}
 #: Scene B's exact t_N is zero.  With the level set's normal the false t_N,
 #: relative to |t_T|, measured 1.5e-2 (P1, h = 0.05) and 8.5e-3 (P2, h =
 #: 0.1); with chord normals it would be (k_N/k_T)(h/2R) = 10 and 20 there
-#: (SCENES.md), so these bounds tell the two apart by three orders.
+#: (docs/scenes.md), so these bounds tell the two apart by three orders.
 FALSE_TN = {1: 3e-2, 2: 2e-2}
 
 #: Shape functions: partition of unity and linear reproduction, values and
