@@ -54,6 +54,7 @@ from .contact_system import GhostExchange, PETScSystem
 from .evaluation import BodyCellLocator, BodyFields
 from .fitted_mesh import FittedMesh, fitted_mesh
 from .options import FE
+from .quiet import quiet_jit
 
 METHOD = FE.name
 
@@ -228,6 +229,7 @@ def _components(fix: str) -> list[int]:
     return [{"x": 0, "y": 1}[c] for c in fix]
 
 
+@quiet_jit
 def _stress_functions(scene: Scene, fm: FittedMesh, uh, degree: int):
     """Each body's stress ``(σxx, σyy, σxy)`` interpolated in DG of degree k−1
     (exact on straight cells) and its displacement, both on the whole mesh."""
@@ -244,6 +246,7 @@ def _stress_functions(scene: Scene, fm: FittedMesh, uh, degree: int):
     return disps, stresses
 
 
+@quiet_jit
 def build(scene: Scene, options: FE, resolution: Resolution, timings: Timings) -> Built:
     """The conforming system of ``scene`` (:class:`~contactcore.discretisation.Discretisation`'s
     ``build``; :class:`xdolfinx.options.FE` for the options)."""
