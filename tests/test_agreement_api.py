@@ -8,8 +8,8 @@ import numpy as np
 import pytest
 
 from contactcore import ContactError, ProfileData, load_scene
-from verification.agreement import (agreements, assert_methods_agree, compare, default_exclusion, relative_rms,
-                                    table, variant)
+from verification.agreement import (agreements, assert_methods_agree, compare, default_exclusion, percent,
+                                    relative_rms, table, variant)
 from xdolfinx.quiet import quiet_compiler
 
 #: A coarse resolution: the helper's logic, not the methods' accuracy, is under test.
@@ -108,3 +108,18 @@ def test_the_compilers_info_records_are_dropped_and_the_root_level_restored(caps
     err = capsys.readouterr().err
     assert "running build_ext" not in err
     assert "a compiler warning" in err and "the user's own warning" in err
+
+
+def test_run_writes_the_helpers_agreement_figures(tmp_path):
+    """On a scene of the user's own (examples/wedge.toml), `run --degree 2`
+    puts into summary.md the table `compare` returns against fe P2."""
+    from pathlib import Path
+    from verification.run import run
+    wedge = Path(__file__).resolve().parent.parent / "examples" / "wedge.toml"
+    run(wedge, ["all"], tmp_path / "out", h=COARSE_H, degree=2, draw=False)
+    written = (tmp_path / "out" / "summary.md").read_text()
+    helper = compare(wedge, ["xfem:2", "efgm:2"], COARSE_H)
+    for a in helper.rows:
+        method, degree = a.method.split(" p")
+        assert (f"| {method} (p{degree}) | {a.profile} | {a.quantity} | {a.kind} | {percent(a.worst)} | {a.s:.4g} "
+                f"({a.x:.4g}, {a.y:.4g}) | {percent(a.rms)} |") in written
