@@ -1,7 +1,7 @@
 """The one side vocabulary: which body a point belongs to.
 
 Γ separates the − body (φ < 0) from the + body (φ ≥ 0: the + side
-includes Γ itself, SCENES.md).  A body has three names, one per use:
+includes Γ itself, docs/scenes.md).  A body has three names, one per use:
 
 * its index 0/1 (:class:`Body`), for arrays indexed by body;
 * its label "minus"/"plus" (``Body.label``, :data:`contactcore.scene.BODIES`),

@@ -7,7 +7,7 @@
   ``φ(x) = |x − c| − R``.
 
 The unit normal ``n = ∇φ/|∇φ|`` points from − into +; the tangent is
-``t = (n_y, −n_x)`` (SCENES.md, "Conventions").
+``t = (n_y, −n_x)`` (docs/scenes.md).
 """
 from __future__ import annotations
 

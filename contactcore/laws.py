@@ -4,7 +4,7 @@ A law works in the local frame of Γ.  For ``m`` interface points it takes the
 jumps ``g = [g_N, g_T]`` (shape ``(m, 2)``, ``g_N = [[u]]·n``,
 ``g_T = [[u]]·t``) and returns the tractions ``[t_N, t_T]`` (Pa) and the
 tangent ``∂t/∂g`` (shape ``(m, 2, 2)``, Pa/m).  The traction acting on the +
-body is ``τ⁺ = −(t_N n + t_T t)``; the − body receives ``−τ⁺`` (SCENES.md).
+body is ``τ⁺ = −(t_N n + t_T t)``; the − body receives ``−τ⁺`` (docs/scenes.md).
 
 In a weak form the law contributes ``∫_Γ t(g(u)) · g(δu) dΓ`` to the
 internal virtual work.  Laws are looked up by name in :data:`LAWS`, so a new
@@ -154,7 +154,7 @@ class LinearLaw(_Law):
 
 @dataclass(frozen=True)
 class UnilateralLaw(_Law):
-    """Penalty contact without tension (SCENES.md): ``t_N = k_N min(g_N, 0)``;
+    """Penalty contact without tension (docs/scenes.md): ``t_N = k_N min(g_N, 0)``;
     where closed (``g_N <= 0``) ``t_T = k_T g_T``, where open ``t_T = 0``.
 
     History-free but piecewise linear: the tangent is ``diag(k_N, k_T)`` on
@@ -178,7 +178,7 @@ class UnilateralLaw(_Law):
 
 @dataclass(frozen=True)
 class CoulombLaw(_Law):
-    """Unilateral penalty contact with Coulomb friction (SCENES.md), the
+    """Unilateral penalty contact with Coulomb friction (docs/scenes.md), the
     elastic-predictor / return-map of Wriggers, *Computational Contact
     Mechanics* (2006), §5.2, in one dimension of slip.
 

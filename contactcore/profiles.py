@@ -1,4 +1,4 @@
-"""Profiles: quantities sampled on segments or along Γ (SCENES.md).
+"""Profiles: quantities sampled on segments or along Γ (docs/scenes.md).
 
 Sample points: 101 evenly spaced points on a segment, end points moved inside
 by 1e-9 of its length; on a circular Γ, 101 polar angles from 0 to 2π, the

@@ -56,7 +56,7 @@ def _scaled(value: float, unit: float, path: str) -> float:
     out = float(value) / unit if math.isfinite(unit) and unit > 0 else math.nan
     if not math.isfinite(out) or (value != 0 and out == 0):
         raise SceneError(path, f"{value!r} is out of floating-point range once made dimensionless "
-                         f"(over {unit:.3g}); choose units closer to the problem's scale (README, 'Units')")
+                         f"(over {unit:.3g}); choose units closer to the problem's scale (docs/scenes.md, 'Units')")
     return out
 
 
@@ -112,7 +112,7 @@ class Scales:
         U = max(L * (_load_stress(scene) / S), prescribed) or L
         if not 0.0 < U < math.inf or not 0.0 < S * (U / L) < math.inf:
             raise SceneError("loads", f"the displacement the loads cause, about {U:.3g} (L τ/E), is out of "
-                             "floating-point range; choose units closer to the problem's scale (README, 'Units')")
+                             "floating-point range; choose units closer to the problem's scale (docs/scenes.md, 'Units')")
         return cls(L, origin, S, U)
 
     # ----- points -------------------------------------------------------

@@ -1,10 +1,10 @@
 """The scene model: one description of a problem that feeds every method.
 
 A scene is built in code from the dataclasses below or read from a TOML file
-(:func:`load_scene`, schema in the README).  Reading validates every field;
+(:func:`load_scene`, schema in docs/scenes.md).  Reading validates every field;
 an error is a :class:`SceneError` whose message starts with the field's
 dotted path.  Conventions (signs, normals, profiles) are those of
-``shared/SCENES.md``.
+``docs/scenes.md``.
 """
 from __future__ import annotations
 
@@ -110,7 +110,7 @@ Load = Traction | Pressure | BodyForce | Torque
 class LineProfile:
     """Quantities sampled on a segment from ``start`` to ``end``.
 
-    On Γ the stress is taken from ``side`` (default +, SCENES.md).
+    On Γ the stress is taken from ``side`` (default +, docs/scenes.md).
     """
 
     id: str
@@ -179,7 +179,7 @@ class Scene:
         increments in ``0 … increments``, linear in between, starting from
         ``(0, 0)`` unless it gives increment 0, and holding its last factor
         after its last keyframe.  No path is the ramp ``(0, 0) → (n, 1)``:
-        equal increments of the full load (SCENES.md).
+        equal increments of the full load (docs/scenes.md).
         """
         keys = tuple(path) or ((self.increments, 1.0),)
         if keys[0][0] != 0:
@@ -217,7 +217,7 @@ class Scene:
           modulus;
         * a normal traction ``t_N = k_N g_N`` that amplifies the
           discretisation error of ``g_N`` on a circle of radius R:
-          ``(k_N/k_T)(h/2R)² > FALSE_TN_WARN`` (SCENES.md, scene B).
+          ``(k_N/k_T)(h/2R)² > FALSE_TN_WARN`` (docs/scenes.md, scene B).
         """
         warnings = []
         law, itf = self.law, self.interface
@@ -272,7 +272,7 @@ def body_force(scene: "Scene", load: BodyForce | Torque, x, y):
 
     Plain arithmetic, so x and y may be numpy arrays or UFL expressions: one
     formula for every method.  A torque is spread over the disc of the
-    circular Γ as ``b = (T/J)(−(y−y_c), x−x_c)``, ``J = πR⁴/2`` (SCENES.md).
+    circular Γ as ``b = (T/J)(−(y−y_c), x−x_c)``, ``J = πR⁴/2`` (docs/scenes.md).
     """
     if isinstance(load, BodyForce):
         return load.value[0] + 0 * x, load.value[1] + 0 * y

@@ -12,10 +12,10 @@ diameter) unless said otherwise.
 ON_INTERFACE = 1e-10
 
 #: Profile end points are moved inside the domain by this fraction of the
-#: segment length (SCENES.md) so that every sample point lies in a cell.
+#: segment length (docs/scenes.md) so that every sample point lies in a cell.
 PROFILE_END_SHIFT = 1e-9
 
-#: Number of samples of a profile (SCENES.md).
+#: Number of samples of a profile (docs/scenes.md).
 PROFILE_POINTS = 101
 
 #: Geometric tolerance of the scene validation (points inside the domain, an
@@ -95,7 +95,7 @@ ACCURATE_FLOOR = 1e-6
 
 #: Scene B's exact t_N is zero; its false t_N, relative to max |t_T|, is
 #: acceptable up to a tenth (chord normals give 10–20 on the paper's meshes,
-#: SCENES.md; the level set's normal gives 1e-3–4e-2, measured).
+#: docs/scenes.md; the level set's normal gives 1e-3–4e-2, measured).
 FALSE_TN_ACCEPTABLE = 0.1
 
 #: Penalty locking.  A Γ that cuts cells (XFEM) or supports (EFGM) and is
@@ -151,7 +151,7 @@ THIN_BODY_CUT_SHARE = 0.5
 #: Coulomb's stick test ``|t_trial| <= mu p (1 + STICK_ROUNDOFF)``: a point
 #: exactly at the slip limit (a converged slip point re-evaluated, or stick
 #: after reversal) computes its trial traction with a relative round-off of
-#: ~1e-15; 1e-10 (SCENES.md's example) absorbs it without moving the limit.
+#: ~1e-15; 1e-10 (the allowance of docs/scenes.md) absorbs it without moving the limit.
 STICK_ROUNDOFF = 1e-10
 
 #: Newton's status decisions (open/closed, stick/slip) keep a point's
@@ -242,7 +242,7 @@ DIMENSIONLESS_GRID = 2.0 ** -36
 #: panel of methods that agree to round-off, or a nearly constant curve,
 #: is drawn flat at this resolution instead of zoomed onto noise (issue 18:
 #: a ±3 Pa wobble on 24 kPa filled B5's panel).  1e-3 is finer than any
-#: agreement bound the drivers report (SCENES.md's comparisons are at 1e-2).
+#: agreement bound the drivers report (the tests' bounds are 1e-2 and up).
 PLOT_MIN_Y_SPAN = 1e-3
 
 # ----- PETSc solver selection (efgm.petsc_solver) ----------------------------

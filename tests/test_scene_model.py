@@ -1,4 +1,4 @@
-"""The scene model: the shipped scenes match SCENES.md, and every validation
+"""The scene model: the shipped scenes match docs/scenes.md, and every validation
 rule rejects its bad input with a message naming the field."""
 import dataclasses
 import math

@@ -26,7 +26,7 @@ def test_scene_a_interface_carries_the_load():
 
 @pytest.mark.parametrize("degree,h", [(1, 0.05), (2, 0.1)])
 def test_scene_b_interface_carries_the_torque(degree, h):
-    """Mean t_T = −T/(2πR²) (SCENES.md) and t_N ≈ 0: no false normal traction."""
+    """Mean t_T = −T/(2πR²) (docs/scenes.md) and t_N ≈ 0: no false normal traction."""
     scene, _, prof = _profiles("B", h, degree)
     R, T = scene.interface.radius, -scene.loads[0].torque
     expected = -T / (2 * np.pi * R ** 2)

@@ -1,19 +1,31 @@
-"""How two methods' profiles are compared, in one place.
+"""How two methods' profiles are compared, in one place, and the public
+agreement check built on it.
 
-The measure is the RMS of the difference over a profile relative to the RMS
-of the reference profile.  Samples closer than ``exclude`` to a *singular
-point* — a corner of the domain, or a point where Γ meets the outer boundary
-— are left out: there the stresses have boundary layers or singularities
-that no method resolves at these resolutions, so a pointwise difference
-there measures resolution, not agreement.  A quantity whose exact value is
-zero (scene B's t_N) has no relative measure; it is compared against the
-scale of another quantity instead (``scale``).
+Per profile and quantity, two figures over the *kept* samples:
+
+* the **RMS** of the difference relative to the RMS of the reference;
+* the **worst sample**: the largest |difference| relative to the reference's
+  largest |value|, with where it lies (s, x, y) and both values there.
+
+Samples closer than ``exclude`` to a *singular point* — a corner of the
+domain, or a point where a straight Γ meets the outer boundary — are left
+out: there the stresses have boundary layers or singularities that no
+method resolves at these resolutions, so a pointwise difference there
+measures resolution, not agreement.  A quantity whose exact value is zero
+(scene B's t_N) has no relative measure; it is compared against the scale of
+another quantity instead (``COMPANIONS``).
+
+:func:`compare` solves a scene with several methods and a reference and
+returns the :class:`AgreementTable`; :func:`assert_methods_agree` is the
+pytest helper built on it (docs/api.md).
 """
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 
-from contactcore import ProfileData, Scene
+from contactcore import ContactError, ProfileData, Scene, load_scene, sample_profiles
 from contactcore.geometry import LineInterface, Rectangle
 
 
@@ -29,11 +41,21 @@ def default_exclusion(scene: Scene) -> float:
     return EXCLUDE_FRACTION * scene.length_scale
 
 
+def singular_regions(scene: Scene) -> list[tuple[str, np.ndarray]]:
+    """The singular points, named: ``("corners", points)`` of a rectangular
+    domain and ``("ends of Γ", points)`` where a straight Γ meets the outer
+    boundary (each an (m, 2) array)."""
+    regions = []
+    if isinstance(scene.domain, Rectangle):
+        regions.append(("corners", np.asarray(scene.domain.corners, float)))
+    if isinstance(scene.interface, LineInterface):
+        regions.append(("ends of Γ", np.asarray(scene.interface.chord(scene.domain), float)))
+    return regions
+
+
 def singular_points(scene: Scene) -> np.ndarray:
     """Domain corners and the points where Γ meets the outer boundary."""
-    pts = [scene.domain.corners] if isinstance(scene.domain, Rectangle) else []
-    if isinstance(scene.interface, LineInterface):
-        pts.append(scene.interface.chord(scene.domain))
+    pts = [points for _, points in singular_regions(scene)]
     return np.vstack(pts) if pts else np.zeros((0, 2))
 
 
@@ -85,15 +107,184 @@ def agreements(scene: Scene, got: dict, ref: dict, exclude: float) -> list[tuple
     """``(profile id, quantity, class, relative RMS)`` for every quantity of
     every profile; the class is ``zero`` for a quantity measured against its
     companion (see COMPANIONS), else :func:`quantity_class`."""
+    return [(a.profile, a.quantity, a.kind, a.rms) for a in profile_agreements(scene, "", got, ref, exclude)]
+
+
+def percent(fraction: float) -> str:
+    """A relative difference in per cent, to three significant digits."""
+    return f"{100 * fraction:.3g} %"
+
+
+@dataclass(frozen=True)
+class Agreement:
+    """How one method's quantity on one profile differs from the reference's.
+
+    ``rms`` is RMS(got − ref)/RMS(scale) and ``worst`` max|got − ref|/max|scale|
+    over the kept samples, ``scale`` the reference's own values (or its
+    companion's, class ``zero``); the worst sample lies at ``s`` (the
+    profile's parameter) and ``x, y``, where the method gives ``value`` and
+    the reference ``reference``.  ``kept`` of ``samples`` were compared."""
+
+    method: str
+    profile: str
+    quantity: str
+    kind: str
+    rms: float
+    worst: float
+    s: float
+    x: float
+    y: float
+    value: float
+    reference: float
+    kept: int
+    samples: int
+
+    def describe(self, against: str = "the reference") -> str:
+        """One line naming the profile, the quantity, the worst sample and its values."""
+        return (f"{self.method} against {against}: {self.profile} {self.quantity} at s = {self.s:.4g} "
+                f"(x = {self.x:.4g}, y = {self.y:.4g}): {self.value:.4g} against {self.reference:.4g}, a difference "
+                f"of {percent(self.worst)} of the reference's largest |{self.quantity}| (RMS {percent(self.rms)})")
+
+
+def _compared(scene: Scene, label: str, pid: str, q: str, got: ProfileData, ref: ProfileData,
+              exclude: float, scale: np.ndarray | None) -> Agreement:
+    """One profile quantity of ``got`` against ``ref`` (see :class:`Agreement`)."""
+    keep = kept_samples(scene, ref, exclude)
+    diff = got.columns[q][keep] - ref.columns[q][keep]
+    base = ref.columns[q][keep] if scale is None else np.asarray(scale)[keep]
+    if not keep.any():
+        nan = float("nan")
+        return Agreement(label, pid, q, "", nan, nan, nan, nan, nan, nan, nan, 0, len(keep))
+    i = int(np.argmax(np.abs(diff)))
+    where = np.flatnonzero(keep)[i]
+    peak = float(np.max(np.abs(base)))
+    worst = float(abs(diff[i]) / peak) if peak > 0 else (0.0 if diff[i] == 0 else float("inf"))
+    return Agreement(label, pid, q, "", relative_rms(scene, got, ref, q, exclude, scale=None if scale is None
+                                                      else np.asarray(scale)[keep]),
+                     worst, float(ref.columns["s"][where]), float(ref.columns["x"][where]),
+                     float(ref.columns["y"][where]), float(got.columns[q][where]), float(ref.columns[q][where]),
+                     int(keep.sum()), len(keep))
+
+
+def profile_agreements(scene: Scene, label: str, got: dict, ref: dict, exclude: float) -> list[Agreement]:
+    """Every quantity of every profile of ``got`` (id -> ProfileData)
+    against ``ref``, as :class:`Agreement` rows of method ``label``."""
     profiles = {p.id: p for p in scene.profiles}
     rows = []
     for pid, prof in got.items():
         for q in prof.names[3:]:
             companion = COMPANIONS.get((pid, q))
-            if companion:
-                scale = ref[companion[0]].columns[companion[1]]
-                rows.append((pid, q, "zero", relative_rms(scene, prof, ref[pid], q, exclude, scale=scale)))
-            else:
-                rows.append((pid, q, quantity_class(scene, profiles[pid], q),
-                             relative_rms(scene, prof, ref[pid], q, exclude)))
+            scale = ref[companion[0]].columns[companion[1]] if companion else None
+            kind = "zero" if companion else quantity_class(scene, profiles[pid], q)
+            row = _compared(scene, label, pid, q, prof, ref[pid], exclude, scale)
+            rows.append(Agreement(**{**row.__dict__, "kind": kind}))
     return rows
+
+
+@dataclass(frozen=True)
+class AgreementTable:
+    """Methods against a reference on one scene: one :class:`Agreement` per
+    method, profile and quantity; samples within ``exclude`` of the named
+    singular ``regions`` left out."""
+
+    scene: str
+    reference: str
+    exclude: float
+    regions: tuple[tuple[str, tuple[tuple[float, float], ...]], ...]
+    rows: tuple[Agreement, ...]
+
+    def worst(self, measure: str = "worst") -> Agreement:
+        """The row with the largest ``measure`` (``"worst"`` or ``"rms"``)."""
+        return max(self.rows, key=lambda a: getattr(a, measure))
+
+    def excluded(self) -> str:
+        """Which samples were left out, in words."""
+        if not self.regions:
+            return "no sample was left out (the scene has no singular point)"
+        where = "; ".join(f"{name} " + ", ".join(f"({x:.4g}, {y:.4g})" for x, y in pts)
+                          for name, pts in self.regions)
+        return f"samples within {self.exclude:.3g} of these singular points were left out: {where}"
+
+    def markdown(self) -> str:
+        """The table in Markdown, worst sample and RMS in % of the reference's scale."""
+        lines = [f"Against {self.reference}; {self.excluded()}.", "",
+                 "| method | profile | quantity | class | worst sample | at s (x, y) | RMS |",
+                 "|---|---|---|---|---|---|---|"]
+        lines += [f"| {a.method} | {a.profile} | {a.quantity} | {a.kind} | {percent(a.worst)} | {a.s:.4g} "
+                  f"({a.x:.4g}, {a.y:.4g}) | {percent(a.rms)} |" for a in self.rows]
+        return "\n".join(lines) + "\n"
+
+
+def table(scene: Scene, runs: dict[str, dict], reference: str, exclude: float | None = None) -> AgreementTable:
+    """The :class:`AgreementTable` of sampled profiles ``runs`` (label ->
+    id -> ProfileData), ``runs[reference]`` the reference."""
+    exclude = default_exclusion(scene) if exclude is None else exclude
+    rows = [row for label, got in runs.items() if label != reference
+            for row in profile_agreements(scene, label, got, runs[reference], exclude)]
+    regions = tuple((name, tuple(map(tuple, pts.tolist()))) for name, pts in singular_regions(scene))
+    return AgreementTable(scene.name, reference, exclude, regions, tuple(rows))
+
+
+def variant(spec) -> tuple[str, int]:
+    """``(method, degree)`` of ``"xfem:2"``, ``"xfem"`` (degree 1) or ``("xfem", 2)``."""
+    from . import methods
+    name, _, degree = spec.partition(":") if isinstance(spec, str) else (spec[0], ":", spec[1])
+    if name not in methods.METHODS:
+        raise ContactError(f"method {name!r}: unknown (known: {', '.join(methods.METHODS)})")
+    try:
+        degree = int(degree or 1)
+    except ValueError:
+        raise ContactError(f"method {spec!r}: the degree after ':' must be 1 or 2") from None
+    if degree not in (1, 2):
+        raise ContactError(f"method {spec!r}: the degree must be 1 or 2 (got {degree})")
+    return name, degree
+
+
+def label(name: str, degree: int) -> str:
+    """How a (method, degree) is named in tables and plots: ``xfem p2``."""
+    return f"{name} p{degree}"
+
+
+def sampled(scene: Scene, result) -> dict:
+    """A Result's profiles of ``scene``, by id."""
+    return {p.id: p for p in sample_profiles(scene, result.fields, result.interface)}
+
+
+def compare(scene, methods, h: float | None = None, *, reference="fe:2", exclude: float | None = None,
+            **options) -> AgreementTable:
+    """Solve ``scene`` (a Scene, a shipped scene's name or a TOML path) with
+    each of ``methods`` (``"fe"``, ``"xfem:2"``, ``("efgm", 2)``, ...) and
+    with ``reference`` at resolution ``h`` (default: the scene's), sample its
+    profiles, and return the :class:`AgreementTable` of the methods against
+    the reference.  ``options`` (``cell="triangle"``, ``dmax=3``, ...) go to
+    the methods that take them; one that none takes is refused."""
+    from . import methods as known
+    scene = load_scene(scene)
+    variants = [variant(m) for m in methods]
+    ref = variant(reference)
+    names = sorted({n for n, _ in [ref, *variants]})
+    known.check_options(names, **options)
+    runs = {}
+    for name, degree in dict.fromkeys([ref, *variants]):
+        result = known.solver(name)(scene, h, degree=degree, **known.options_for(name, **options))
+        runs[label(name, degree)] = sampled(scene, result)
+    return table(scene, runs, label(*ref), exclude)
+
+
+def assert_methods_agree(scene, methods, h: float | None = None, rtol: float = 0.05, *, reference="fe:2",
+                         measure: str = "worst", exclude: float | None = None, **options) -> AgreementTable:
+    """Assert that every method agrees with ``reference`` on every profile
+    and quantity of ``scene`` to ``rtol``, measured as ``measure``: the worst
+    sample (``"worst"``, the default) or the RMS (``"rms"``), relative to the
+    reference's scale (see :func:`compare`).  The AssertionError names the
+    worst offender first (method, profile, quantity, the sample and both
+    values), then the others; the table is returned when all agree."""
+    result = compare(scene, methods, h, reference=reference, exclude=exclude, **options)
+    failed = sorted((a for a in result.rows if not getattr(a, measure) <= rtol),
+                    key=lambda a: -getattr(a, measure))
+    if failed:
+        lines = [a.describe(result.reference) for a in failed]
+        raise AssertionError(f"{len(failed)} of {len(result.rows)} profile quantities differ by more than "
+                             f"rtol = {rtol:g} ({measure}): " + "\n".join(lines)
+                             + f"\n({result.excluded()})")
+    return result

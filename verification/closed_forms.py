@@ -174,7 +174,7 @@ class TwistedRod:
     gives ``u_θ = A r + D r³`` with ``D = −T/(8 μ⁻ J)``; around it
     ``u_θ = B r + C/r``, ``σ_rθ = −2μ⁺C/r²``.  Shear balance on Γ fixes C,
     the clamp ``u_θ(b) = 0`` fixes B, and the spring fixes the rod's rigid
-    rotation A: with ``n = e_r``, ``t = −e_θ`` (SCENES.md) the traction on +
+    rotation A: with ``n = e_r``, ``t = −e_θ`` (docs/scenes.md) the traction on +
     is ``−t_T t = t_T e_θ = −σ_rθ e_θ``, so ``σ_rθ(a) = k_T [[u_θ]]``.  The
     exact t_N is zero and the mean of t_T is ``T/(2πa²)``.
     """
@@ -344,7 +344,7 @@ class LayeredSlip:
     tangential spring act in series with compliance
     ``C = h₁/G₋ + h₂/G₊ + 1/k_T``, so the trial shear is ``τ* = (δ − s)/C``;
     the point sticks while ``|τ*| <= μp``, otherwise ``τ = μp sign τ*`` and
-    ``s = δ − τ C`` (the return map of SCENES.md's coulomb law).
+    ``s = δ − τ C`` (the return map of the coulomb law, docs/scenes.md).
     """
 
     def __init__(self, scene: Scene):

@@ -1,7 +1,7 @@
 """``python -m verification closed``: the closed forms on refinement ladders.
 
 Three cases with exact solutions (derived in
-:mod:`verification.closed_forms` and in the README):
+:mod:`verification.closed_forms` and in docs/verification.md):
 
 * ``patch`` — uniform stress across an inclined straight Γ (30°) between two
   materials, with a normal and a tangential jump: every method of degree ≥ 1

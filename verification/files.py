@@ -124,7 +124,7 @@ def _jsonable(value):
 
 
 def write_profile_csv(path: Path, profile: ProfileData) -> Path:
-    """Columns ``s, x, y`` then the quantities (SCENES.md), full precision."""
+    """Columns ``s, x, y`` then the quantities (docs/scenes.md), full precision."""
     buf = io.StringIO()
     writer = csv.writer(buf, lineterminator="\n")
     writer.writerow(profile.names)

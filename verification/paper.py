@@ -7,7 +7,7 @@ conforming reference (P2, curved cells, at a quarter of the scene's default
 h unless ``--ref-h`` says otherwise).  Writes::
 
     DIR/figures/figNN_<ID>.png    each paper figure (Figs. 8–11, 15–18, 22–23), methods overlaid
-    DIR/figures/extra_<ID>.png    the extra profiles of SCENES.md (A5, B5, B6, C3, C4)
+    DIR/figures/extra_<ID>.png    the extra profiles of docs/scenes.md (A5, B5, B6, C3, C4)
     DIR/<scene>/<method>/profiles/<ID>.csv, DIR/<scene>/<method>/summary.json
     DIR/agreement.csv, DIR/paper.md
 

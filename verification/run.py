@@ -26,7 +26,7 @@ from contactcore import tolerances as tol
 from contactcore.budget import check_budget
 from contactcore.scene import check_resolution, smallest_dimension
 
-from . import files, interface, methods, plots, pool
+from . import agreement, files, interface, methods, plots, pool
 
 log = logging.getLogger("verification")
 
@@ -54,6 +54,21 @@ def _summary_table(summaries: list[dict]) -> str:
                      f"{t['solve']:.3f} | {t['total']:.3f} | {sv['residual']:.1e} | {cond} |")
     warnings = [f"- {s['method']}: {w}" for s in summaries for w in s["solver"]["warnings"]]
     return "\n".join(lines + ([""] + ["Warnings:"] + warnings if warnings else [])) + "\n"
+
+
+def agreement_section(scene: Scene, profiles: dict) -> str:
+    """``summary.md``'s agreement of every run with the reference of the
+    plots' difference panels (fe at its highest degree, else the first run):
+    :func:`verification.agreement.table` of ``profiles`` (id -> label ->
+    ProfileData), the figures :func:`~verification.agreement.compare` gives."""
+    runs = {}
+    for pid, by_label in profiles.items():
+        for label, prof in by_label.items():
+            runs.setdefault(label, {})[pid] = prof
+    if len(runs) < 2:
+        return ""
+    reference = plots.reference_label(list(runs))
+    return "\n## Agreement with the reference\n\n" + agreement.table(scene, runs, reference).markdown()
 
 
 def _progress(name: str):
@@ -128,7 +143,7 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
     titles = {p.id: p.title for p in scene.profiles}
     for pid, runs in profiles.items() if draw else ():
         plots.plot_profile(out / "plots" / f"{pid}.png", titles[pid], runs)
-    text = f"# Scene {scene.name}: {scene.title}\n\n" + _summary_table(summaries)
+    text = f"# Scene {scene.name}: {scene.title}\n\n" + _summary_table(summaries) + agreement_section(scene, profiles)
     if paths:
         if draw:
             interface.plot_response(out / "plots" / "response.png", scene, paths)

@@ -14,12 +14,12 @@ so field ``b`` lives on body ``b`` and its trace on Γ.  The weak form is
 
 (shown for a linear law) with ``g(w) = ([[w]]·n, [[w]]·t)``, ``[[w]] = w_+ − w_−`` and ``D`` the
 law's tangent ``∂(t_N, t_T)/∂(g_N, g_T)`` (the paper's Eq. 6 for ``linear``;
-SCENES.md for signs).  Both fields are continuous across every facet, so
+docs/scenes.md for signs).  Both fields are continuous across every facet, so
 their traces on Γ need no side: the interior-facet orientation trap of
 dolfinx 0.5.2 does not arise.  ``n`` is the exact normal of the level set at
 the quadrature point, not the normal of the mesh's chord: on scene B's
 curved Γ a chord normal creates a false normal traction of order
-``(k_N/k_T)(h/2R)|t_T|`` (SCENES.md).  Boundary loads on an outer facet are
+``(k_N/k_T)(h/2R)|t_T|`` (docs/scenes.md).  Boundary loads on an outer facet are
 weighted by the DG0 indicator of the body that owns the facet's cell.
 
 Increments, Newton and the law are :mod:`contactcore.newton`'s, shared with
@@ -54,6 +54,7 @@ from .contact_system import GhostExchange, PETScSystem
 from .evaluation import BodyCellLocator, BodyFields
 from .fitted_mesh import FittedMesh, fitted_mesh
 from .options import FE
+from .quiet import quiet_jit
 
 METHOD = FE.name
 
@@ -108,7 +109,7 @@ def linear_forms(scene: Scene, fm: FittedMesh, V) -> list:
 def interface_operator(scene: Scene, fm: FittedMesh, V, degree: int, exchange: "GhostExchange") -> InterfaceOperator:
     """Γ's quadrature on the mesh's Γ facets and ``G``: the jump
     ``[[u]] = u₊ − u₋`` in the frame (n, t) of the level set's exact normal
-    at each point (not the chord's: SCENES.md, scene B).
+    at each point (not the chord's: docs/scenes.md, scene B).
 
     Both fields are continuous across Γ's facets, so their traces are taken
     from one cell of each facet, whichever side: the interior-facet
@@ -228,6 +229,7 @@ def _components(fix: str) -> list[int]:
     return [{"x": 0, "y": 1}[c] for c in fix]
 
 
+@quiet_jit
 def _stress_functions(scene: Scene, fm: FittedMesh, uh, degree: int):
     """Each body's stress ``(σxx, σyy, σxy)`` interpolated in DG of degree k−1
     (exact on straight cells) and its displacement, both on the whole mesh."""
@@ -244,6 +246,7 @@ def _stress_functions(scene: Scene, fm: FittedMesh, uh, degree: int):
     return disps, stresses
 
 
+@quiet_jit
 def build(scene: Scene, options: FE, resolution: Resolution, timings: Timings) -> Built:
     """The conforming system of ``scene`` (:class:`~contactcore.discretisation.Discretisation`'s
     ``build``; :class:`xdolfinx.options.FE` for the options)."""

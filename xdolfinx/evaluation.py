@@ -5,7 +5,7 @@ something only on that body's cells.  A point is evaluated in a cell of the
 requested body that contains it; if none does (a point of the exact curved
 Γ that falls just outside the polygonal body), in the nearest cell of that
 body, whose polynomial is then extended a distance O(h²) — the same
-convention as the + side limit on Γ (SCENES.md).
+convention as the + side limit on Γ (docs/scenes.md).
 """
 from __future__ import annotations
 

@@ -68,6 +68,7 @@ from .contact_system import GhostExchange, PETScSystem
 from .elasticity import sigma
 from .evaluation import BodyCellLocator
 from .options import XFEM, XFEM_CELLS
+from .quiet import quiet_jit
 
 METHOD = XFEM.name
 
@@ -902,6 +903,7 @@ def _support_rows(space: EnrichedFunctionSpace) -> tuple[list, list, list]:
     return rows, vals, owners
 
 
+@quiet_jit
 def build(scene: Scene, options: XFEM, resolution: Resolution, timings: Timings) -> Built:
     """The XFEM system of ``scene`` (:class:`~contactcore.discretisation.Discretisation`'s
     ``build``; :class:`xdolfinx.options.XFEM` for the options)."""

@@ -1,0 +1,125 @@
+"""The public agreement check (verification.agreement): the table's figures
+from hand-made profiles, the pytest helper's pass/fail boundary and failure
+message, the same figures as the driver's measure, and the methods' quiet
+JIT compile."""
+import logging
+
+import numpy as np
+import pytest
+
+from contactcore import ContactError, ProfileData, load_scene
+from verification.agreement import (agreements, assert_methods_agree, compare, default_exclusion, percent,
+                                    relative_rms, table, variant)
+from xdolfinx.quiet import quiet_compiler
+
+#: A coarse resolution: the helper's logic, not the methods' accuracy, is under test.
+COARSE_H = 0.2
+
+
+def _profile(pid, values):
+    s = np.linspace(0.0, 1.0, len(values))
+    return ProfileData(pid, "arclength", {"s": s, "x": s, "y": np.full_like(s, 0.5), "syy": np.asarray(values)})
+
+
+def test_worst_sample_and_rms_from_hand_made_profiles():
+    """Scene A's A2 (σyy along Γ): the reference −1 everywhere, the method
+    off by 0.3 at one kept sample and by 5 at a sample next to the corner
+    (x = 0, within the exclusion): the worst sample is the kept one."""
+    scene = load_scene("A")
+    ref = _profile("A2", -np.ones(101))
+    got_values = -np.ones(101)
+    got_values[0] = 4.0        # at x = 0: an end of Γ, left out
+    got_values[50] = -1.3      # at x = 0.5: kept
+    runs = {"ref": {"A2": ref}, "mine": {"A2": _profile("A2", got_values)}}
+    scene = scene.with_changes(profiles=tuple(p for p in scene.profiles if p.id == "A2"))
+    [row] = table(scene, runs, "ref").rows
+    kept = int(np.sum(np.minimum(np.abs(ref.columns["s"]), np.abs(1 - ref.columns["s"])) >= default_exclusion(scene)))
+    assert (row.profile, row.quantity, row.kept) == ("A2", "syy", kept)
+    assert row.worst == pytest.approx(0.3)
+    assert (row.s, row.x, row.y, row.value, row.reference) == pytest.approx((0.5, 0.5, 0.5, -1.3, -1.0))
+    assert row.rms == pytest.approx(0.3 / np.sqrt(kept))
+
+
+def test_the_table_names_what_it_left_out_and_matches_the_drivers_measure():
+    scene = load_scene("A")
+    result = compare(scene, ["xfem:2"], COARSE_H)
+    assert "corners (0, 0), (1, 0), (1, 1), (0, 1)" in result.excluded()
+    assert "ends of Γ (0, 0.5), (1, 0.5)" in result.excluded()
+    assert {(a.profile, a.quantity) for a in result.rows} == {(p.id, q) for p in scene.profiles for q in p.quantities}
+    for a in result.rows:
+        assert a.rms <= a.worst * np.sqrt(a.kept)  # an RMS never exceeds the worst sample's share
+    assert result.reference == "fe p2"
+
+
+def test_the_helper_passes_at_the_worst_difference_and_fails_just_below_it():
+    scene = load_scene("A")
+    worst = compare(scene, ["xfem:1"], COARSE_H).worst()
+    assert_methods_agree(scene, ["xfem:1"], COARSE_H, rtol=worst.worst)
+    with pytest.raises(AssertionError) as failure:
+        assert_methods_agree(scene, ["xfem:1"], COARSE_H, rtol=0.99 * worst.worst)
+    first = str(failure.value).splitlines()[0]
+    assert f"xfem p1 against fe p2: {worst.profile} {worst.quantity} at s = {worst.s:.4g}" in first
+    assert f"{worst.value:.4g} against {worst.reference:.4g}" in first
+
+
+def test_the_helpers_rms_is_the_relative_rms_of_the_drivers():
+    """The RMS the helper reports is `relative_rms` (the efficiency and
+    paper drivers' measure) of the same profiles, and `agreements` lists it."""
+    from verification import methods
+    from verification.agreement import sampled
+    scene = load_scene("C")
+    got = sampled(scene, methods.solver("efgm")(scene, COARSE_H))
+    ref = sampled(scene, methods.solver("fe")(scene, COARSE_H, degree=2))
+    exclude = default_exclusion(scene)
+    rows = table(scene, {"efgm p1": got, "fe p2": ref}, "fe p2").rows
+    assert [a.rms for a in rows] == [relative_rms(scene, got[a.profile], ref[a.profile], a.quantity, exclude)
+                                     for a in rows]
+    assert [(a.profile, a.quantity, a.kind, a.rms) for a in rows] == agreements(scene, got, ref, exclude)
+
+
+@pytest.mark.parametrize("spec,message", [("xfam", "unknown"), ("xfem:3", "must be 1 or 2"), ("fe:two", "1 or 2")])
+def test_a_bad_method_is_named(spec, message):
+    with pytest.raises(ContactError, match=message):
+        variant(spec)
+
+
+def test_an_option_no_method_takes_is_refused():
+    with pytest.raises(ContactError, match="--dmax"):
+        compare("A", ["xfem"], COARSE_H, dmax=3.0, reference="fe:1")
+
+
+def test_the_compilers_info_records_are_dropped_and_the_root_level_restored(capsys):
+    """What setuptools does during a JIT compile (lowers the root logger to
+    INFO and logs each step) prints nothing inside quiet_compiler; outside,
+    the root logger is as it was and logs as before."""
+    root = logging.getLogger()
+    handler = logging.StreamHandler()
+    root.addHandler(handler)
+    level = root.level
+    try:
+        with quiet_compiler():
+            root.setLevel(logging.INFO)
+            logging.info("running build_ext")
+            logging.warning("a compiler warning")
+        assert root.level == level
+        logging.warning("the user's own warning")
+    finally:
+        root.removeHandler(handler)
+    err = capsys.readouterr().err
+    assert "running build_ext" not in err
+    assert "a compiler warning" in err and "the user's own warning" in err
+
+
+def test_run_writes_the_helpers_agreement_figures(tmp_path):
+    """On a scene of the user's own (examples/wedge.toml), `run --degree 2`
+    puts into summary.md the table `compare` returns against fe P2."""
+    from pathlib import Path
+    from verification.run import run
+    wedge = Path(__file__).resolve().parent.parent / "examples" / "wedge.toml"
+    run(wedge, ["all"], tmp_path / "out", h=COARSE_H, degree=2, draw=False)
+    written = (tmp_path / "out" / "summary.md").read_text()
+    helper = compare(wedge, ["xfem:2", "efgm:2"], COARSE_H)
+    for a in helper.rows:
+        method, degree = a.method.split(" p")
+        assert (f"| {method} (p{degree}) | {a.profile} | {a.quantity} | {a.kind} | {percent(a.worst)} | {a.s:.4g} "
+                f"({a.x:.4g}, {a.y:.4g}) | {percent(a.rms)} |") in written
