@@ -61,6 +61,7 @@ from . import health
 from . import tolerances as tol
 from .collective import SERIAL
 from .errors import SolverError, SolverOptionError
+from .exact import enforced
 from .geometry import CircleInterface, LineInterface, tangent_of
 from .laws import SLIP, STATUS_NAMES, STICK, Decision
 from .result import SolverReport
@@ -81,10 +82,33 @@ class InterfaceOperator:
     #: -> local values; ``reverse``: local contributions -> owned sums);
     #: None in serial (local = owned = all).
     exchange: object = None
+    #: For exact enforcement (:mod:`contactcore.exact`), None where the
+    #: method gives none: ``S`` (2m × n, ``G``'s shape and columns) with
+    #: rows ``2p, 2p+1`` the consistent traction ``τ = (n·{σ}n, t·{σ}n)``
+    #: of point p, ``{σ}`` the weighted average of the two sides' stresses
+    #: (Annavarapu et al. 2012: ``w_k ∝ |Ω_k^e|/E_k``), and
+    #: ``stabilisation`` γ₀ (m,) in Pa/m, ``2|Γ^e| / Σ_k (|Ω_k^e|/E_k)``
+    #: over the two sides' parts ``Ω_k^e`` of the cell(s) at the point's
+    #: piece ``Γ^e`` of Γ; the scene's β multiplies it.
+    S: sp.csr_matrix | None = None
+    stabilisation: np.ndarray | None = None
 
     @property
     def size(self) -> int:
         return len(self.weights)
+
+    def respond(self, law, u: np.ndarray, state, previous=None, ranks=SERIAL):
+        """The law's response to the jumps of ``u`` (penalty enforcement),
+        each switch within its round-off band keeping the ``previous``
+        status (:class:`~contactcore.laws.Decision`, its scales Γ-wide over
+        ``ranks``); every switch by its sign where ``previous`` is None."""
+        g = self.jumps(u)
+        decision = None if previous is None else Decision.reduced(law, g, state, previous, ranks)
+        return law.evaluate(g, state, decision)
+
+    def internal(self, u: np.ndarray, traction: np.ndarray) -> np.ndarray:
+        """The interface's forces at ``u`` with the tractions ``t``: ``Gᵀ W t``."""
+        return self.forces(traction)
 
     def jumps(self, u: np.ndarray) -> np.ndarray:
         """``[g_N, g_T]`` (m, 2) of the unknowns ``u`` (owned values)."""
@@ -198,14 +222,19 @@ class InterfacePath:
         """The law's history at other points of Γ, interpolated linearly
         along Γ (the polar angle of a circle, the arc length of a line) from
         the quadrature points; the nearest point on a general level set."""
-        if self.state is None:
-            return None
+        return None if self.state is None else self.interpolated(interface, points, self.state)
+
+    def interpolated(self, interface, points: np.ndarray, values: np.ndarray) -> np.ndarray:
+        """``values`` (m, ...) at the quadrature points, at other points of
+        Γ: as :meth:`state_at` interpolates the history."""
         if isinstance(interface, (CircleInterface, LineInterface)):
             a, b = along(interface, self.points), along(interface, points)
             order = np.argsort(a)
             period = 2 * np.pi if isinstance(interface, CircleInterface) else None
-            return np.interp(b, a[order], self.state[order], period=period)
-        return self.state[cKDTree(self.points).query(points)[1]]
+            columns = np.asarray(values, float).reshape(len(a), -1)[order]
+            out = np.column_stack([np.interp(b, a[order], c, period=period) for c in columns.T])
+            return out.reshape((len(b),) + np.shape(values)[1:])
+        return np.asarray(values)[cKDTree(self.points).query(points)[1]]
 
 
 def canonical_order(interface, points: np.ndarray) -> np.ndarray:
@@ -242,7 +271,7 @@ class _Newton:
 
     def __init__(self, scene, system: ContactSystem):
         self.scene, self.system, self.law = scene, system, scene.law
-        self.itf = system.interface
+        self.itf = enforced(scene.law, system.interface)
         self.free = np.setdiff1d(np.arange(system.size), system.fixed)
         # rows that prescribe displacements (EFGM's multipliers, scaled by E:
         # s (C u − ū)) rather than balance forces: data, like the lift
@@ -261,7 +290,7 @@ class _Newton:
         """The residual, the forces its equilibrium rows are judged against
         (the largest of the loads and the internal forces there), and the
         largest prescribed value of the constraint rows (data)."""
-        internal = self.system.internal(u) + self.itf.forces(response.traction)
+        internal = self.system.internal(u) + self.itf.internal(u, response.traction)
         R = internal - b
         forces = max(np.max(np.abs(b[self.balance]), initial=0.0),
                       np.max(np.abs(internal[~self.constraint]), initial=0.0))
@@ -292,7 +321,7 @@ class _Newton:
         previous = np.where(self.status == SLIP, STICK, self.status)
         seen, damped = [], False
         for it in range(1, tol.NEWTON_MAX_ITERATIONS + 1):
-            response = self._evaluate(u, previous)
+            response = self.itf.respond(self.law, u, self.state, previous, self.ranks)
             previous = response.status
             R, forces, data = self._residual(u, b, response)
             norm = self.ranks.max(float(np.max(np.abs(R[self.free]), initial=0.0)))
@@ -330,8 +359,7 @@ class _Newton:
             # a cycle: from here on every correction is damped by a line search
             damped = damped or any(self.ranks.all(np.array_equal(t, response.tangent)) for t in seen[:-1])
             seen.append(response.tangent)
-            tangent = response.tangent
-            du, rep = self._solve(tangent, -R, scale)
+            du, rep, tangent = self._solve(response.tangent, -R, scale)
             _merge(self.report, rep)
             if damped:
                 du = du * self._line_search(u, du, b, R, response.status)
@@ -357,35 +385,39 @@ class _Newton:
         alpha = 1.0
         for _ in range(tol.LINE_SEARCH_HALVINGS):
             trial = u + alpha * du
-            R_trial, _, _ = self._residual(trial, b, self._evaluate(trial, status))
+            R_trial, _, _ = self._residual(trial, b, self.itf.respond(self.law, trial, self.state, status, self.ranks))
             if self._merit(R_trial) <= (1.0 - tol.ARMIJO * alpha) * merit:
                 return alpha
             alpha /= 2
         return alpha
 
-    def _evaluate(self, u: np.ndarray, previous: np.ndarray):
-        """The law at the jumps of ``u``, each switch within its round-off
-        band keeping the ``previous`` status (:class:`~contactcore.laws.Decision`,
-        its scales Γ-wide over every rank)."""
-        g = self.itf.jumps(u)
-        gap, traction = (self.ranks.max(float(v)) for v in self.law.decision_scales(g, self.state))
-        return self.law.evaluate(g, self.state, Decision(previous, gap, traction))
-
     def _solve(self, tangent: np.ndarray, rhs: np.ndarray, scale: float):
         """``J δu = rhs`` with the law's ``tangent`` at the points: with the
         factorisation kept for that tangent if there is one, else refilled
-        into the slot used longest ago (:data:`~contactcore.tolerances.FACTORISATIONS_KEPT`)."""
+        into the slot used longest ago (:data:`~contactcore.tolerances.FACTORISATIONS_KEPT`).
+        Also returns the tangent solved with: the law's, or where that is
+        singular an exact law's regularised one (not the law's: Newton is
+        then not settled by it)."""
         for i, (slot, kept) in enumerate(self._factorised):
             if self.ranks.all(np.array_equal(kept, tangent)):
                 self._factorised.append(self._factorised.pop(i))
-                return self.system.solve(None, rhs, force_scale=scale, slot=slot)
+                return (*self.system.solve(None, rhs, force_scale=scale, slot=slot), tangent)
         used = {slot for slot, _ in self._factorised}
         free = [s for s in range(tol.FACTORISATIONS_KEPT) if s not in used]
         slot = free[0] if free else self._factorised.pop(0)[0]
         self._factorised = [(s, t) for s, t in self._factorised if s != slot]  # until the solve succeeds
-        du, report = self.system.solve(self.itf.stiffness(tangent), rhs, force_scale=scale, slot=slot)
+        try:
+            du, report = self.system.solve(self.itf.stiffness(tangent), rhs, force_scale=scale, slot=slot)
+        except SolverError:
+            # an exact law's slip tangent leaves a body held by friction
+            # alone free to turn: one step on the stick tangent there
+            # (:meth:`contactcore.exact.NitscheInterface.regularised`)
+            if not hasattr(self.itf, "regularised"):
+                raise
+            tangent = self.itf.regularised(tangent)
+            du, report = self.system.solve(self.itf.stiffness(tangent), rhs, force_scale=scale, slot=slot)
         self._factorised.append((slot, tangent))
-        return du, report
+        return du, report, tangent
 
     def _commit(self, k, factors, u, response, iterations, history) -> None:
         self.u, self.state, self.status = u, response.state, response.status

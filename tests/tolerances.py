@@ -364,3 +364,14 @@ EXAMPLE_SECTION_BALANCE = 2e-3
 #:   uniform row of facets) against the applied −1e5 Pa, a global balance:
 #:   measured 2.0e-13 (h = 0.05) and 1.0e-13 (h = 0.1).
 EXAMPLE_BALANCE = 1e-6
+
+# ----- exact enforcement (tests/test_exact.py) ----------------------------------
+
+#: The layered closed form with exact stick: a point whose exact shear lies
+#: within this share of the limit μp is decided by the method's own error
+#: (the last stick step before a slip), as in FRICTION_CLOSED_FORM's test.
+EXACT_LIMIT_BAND = 1e-6
+
+#: Exact enforcement ignores k_N, k_T: the acceptance's 1e-10 of the
+#: profiles' scale (the answers are the same solve; round-off only).
+EXACT_INDEPENDENCE = 1e-10
