@@ -86,6 +86,8 @@ def _parser() -> argparse.ArgumentParser:
     run.add_argument("--no-plots", dest="draw", action="store_false", help="write no figures")
     run.add_argument("--allow-large", action="store_true",
                      help="run even when the estimated memory exceeds what this machine has")
+    run.add_argument("--estimate", type=int, nargs="?", const=2, choices=(2, 3), metavar="{2,3}",
+                     help="also solve at h/2 (3: and h/4), write the finest run with its estimated errors")
     run.add_argument("--out", type=Path, required=True, help="result folder")
     pap = sub.add_parser("paper", parents=[common], help="the paper's figures and an agreement table against a refined reference")
     pap.add_argument("--scene", nargs="+", default=["A", "B", "C"], choices=["A", "B", "C"])
@@ -239,7 +241,7 @@ def _dispatch(args, argv) -> None:
         from .run import run
         run(args.scene, args.method, args.out, h=args.h, degree=args.degree, paper=args.paper, fields=args.fields,
             petsc_options=dict(args.petsc_option), dmax=args.dmax, nodes_file=args.nodes, cell=args.cell,
-            basis=args.basis, allow_large=args.allow_large, draw=args.draw, argv=argv)
+            basis=args.basis, allow_large=args.allow_large, draw=args.draw, estimate=args.estimate, argv=argv)
     elif cmd == "paper":
         from .paper import paper
         paper(args.out, tuple(args.scene), args.ref_h, workers=args.workers, argv=argv)

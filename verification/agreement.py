@@ -14,7 +14,7 @@ from __future__ import annotations
 import numpy as np
 
 from contactcore import ProfileData, Scene
-from contactcore.geometry import LineInterface, Rectangle
+from contactcore.estimate import far_from_singular
 
 
 #: Samples closer than this fraction of the scene's diameter L to a singular
@@ -29,21 +29,11 @@ def default_exclusion(scene: Scene) -> float:
     return EXCLUDE_FRACTION * scene.length_scale
 
 
-def singular_points(scene: Scene) -> np.ndarray:
-    """Domain corners and the points where Γ meets the outer boundary."""
-    pts = [scene.domain.corners] if isinstance(scene.domain, Rectangle) else []
-    if isinstance(scene.interface, LineInterface):
-        pts.append(scene.interface.chord(scene.domain))
-    return np.vstack(pts) if pts else np.zeros((0, 2))
-
-
 def kept_samples(scene: Scene, profile: ProfileData, exclude: float) -> np.ndarray:
-    """Mask of the samples at least ``exclude`` from every singular point."""
+    """Mask of the samples at least ``exclude`` from every singular point
+    (:func:`contactcore.estimate.singular_points`)."""
     xy = np.column_stack([profile.columns["x"], profile.columns["y"]])
-    sing = singular_points(scene)
-    if len(sing) == 0:
-        return np.ones(len(xy), bool)
-    return np.min(np.linalg.norm(xy[:, None, :] - sing[None], axis=-1), axis=1) >= exclude
+    return far_from_singular(scene, xy, exclude)
 
 
 def quantity_class(scene: Scene, profile, quantity: str) -> str:
@@ -96,4 +86,28 @@ def agreements(scene: Scene, got: dict, ref: dict, exclude: float) -> list[tuple
             else:
                 rows.append((pid, q, quantity_class(scene, profiles[pid], q),
                              relative_rms(scene, prof, ref[pid], q, exclude)))
+    return rows
+
+
+def _rms(x: np.ndarray) -> float:
+    return float(np.sqrt(np.mean(x ** 2))) if len(x) else 0.0
+
+
+def within_estimates(scene: Scene, a: dict, err_a: dict, b: dict, err_b: dict, exclude: float
+                     ) -> list[tuple[str, str, float, bool]]:
+    """Two methods' profiles (``{id: ProfileData}``) against their estimated
+    errors (``{id: {quantity + "_err": per-sample error}}``,
+    :meth:`contactcore.estimate.Estimate.error_columns`): per profile and
+    quantity, ``RMS(q_a − q_b) / RMS(e_a + e_b)`` over the kept samples
+    (RMS, not the worst sample: a pointwise estimate vanishes where the
+    runs at h and h/2 cross) and whether it exceeds 1 (they differ by more
+    than their estimated errors allow)."""
+    rows = []
+    for pid, prof in a.items():
+        keep = kept_samples(scene, prof, exclude)
+        for q in prof.names[3:]:
+            diff = (prof.columns[q] - b[pid].columns[q])[keep]
+            bound = (err_a[pid][f"{q}_err"] + err_b[pid][f"{q}_err"])[keep]
+            ratio = _rms(diff) / max(_rms(bound), np.finfo(float).tiny)
+            rows.append((pid, q, ratio, ratio > 1.0))
     return rows
