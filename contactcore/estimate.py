@@ -331,12 +331,14 @@ def levels_of(h: float, levels: int) -> list[float]:
     return [h / 2 ** k for k in range(levels)]
 
 
-def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: bool = True) -> Estimate:
+def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: bool = True,
+                  coarse: bool = False) -> Estimate:
     """The :class:`Estimate` of the finest of ``results`` (one method at
-    h, h/2 (, h/4), coarse to fine)."""
+    h, h/2 (, h/4), coarse to fine), or with ``coarse`` of the coarser of
+    two (its profiles' errors; the energy estimate still the finest run's)."""
     hs = tuple(float(r.discretisation["h"]) for r in results)
     levels = [sample_profiles(scene, r.fields, r.interface) for r in results]
-    profiles = profile_estimates(levels, results[-1].degree, results[-1].method)
+    profiles = profile_estimates(levels, results[-1].degree, results[-1].method, coarse=coarse)
     warnings = order_warnings(profiles)
     status = None
     if scene.law.has_history or not scene.law.is_linear:

@@ -377,3 +377,9 @@ ENERGY_GAUSS = 3
 #: quadratic layers: one ring 0.76-1.44 for fe, xfem P1/P2 and efgm; two
 #: rings 0.99-1.8 for degree 1 but 4.4-4.8 for fe and xfem P2.
 ENERGY_RINGS = 1
+
+#: Where an estimate is trusted, the true error lies within this factor of
+#: it either way: the effectivity range that the closed forms hold
+#: (tests/tolerances.py EFFECTIVITY; docs/error-estimates.md gives the
+#: measured table).  ``efficiency`` draws it as the estimate's error bar.
+ESTIMATE_TRUST = 2.0

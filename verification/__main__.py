@@ -99,12 +99,14 @@ def _parser() -> argparse.ArgumentParser:
     _methods(clo)
     clo.add_argument("--degree", nargs="+", type=int, default=[1, 2], choices=(1, 2))
     clo.add_argument("--out", type=Path, required=True)
-    eff = sub.add_parser("efficiency", parents=[common], help="error against run time, against a refined reference")
+    eff = sub.add_parser("efficiency", parents=[common],
+                         help="error against run time, against a refined reference or estimated without one")
     eff.add_argument("scene")
     _methods(eff)
     eff.add_argument("--degree", nargs="+", type=int, default=[1], choices=(1, 2))
     eff.add_argument("--h", nargs="+", type=float, required=True)
-    eff.add_argument("--ref-h", type=float, required=True, help="element size of the P2 reference")
+    eff.add_argument("--ref-h", type=float,
+                     help="element size of the P2 reference (default: none, the errors are estimated)")
     eff.add_argument("--exclude", type=float, help="distance from corners and Γ's ends left out (default 0.1 L)")
     eff.add_argument("--out", type=Path, required=True)
     _workers(eff, default=os.cpu_count())
@@ -266,7 +268,7 @@ def _dispatch(args, argv) -> None:
         exclude = args.exclude if args.exclude is not None else default_exclusion(scene)
         variants = [(m, d) for m in methods.expand(args.method) for d in args.degree]
         efficiency(args.scene, variants, {d: args.h for d in args.degree}, args.ref_h, exclude, args.out,
-                   workers=args.workers, argv=argv)
+                   workers=args.workers, estimated=True, argv=argv)
     elif cmd == "sweeps":
         from .sweeps import run_sweeps
         run_sweeps(args.out, args.sweep, methods.expand(args.method), args.degree, workers=args.workers, argv=argv)
