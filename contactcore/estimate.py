@@ -35,9 +35,9 @@ run's size ``h`` (:mod:`contactcore.quadrature`, Γ followed exactly) and
 recovered body by body with the core's patch recovery
 (:class:`contactcore.recovery.PatchRecovery`, every Gauss point a sample
 weighted by its quadrature weight: a local L2 projection onto quadratics
-over one ring of cells (:data:`~contactcore.tolerances.ENERGY_RINGS`), which filters the error's oscillation at the
-scale of the method's cells and leaves the smooth σ to O(h³)) into ``σ*``;
-then
+over one ring of cells, :data:`~contactcore.tolerances.ENERGY_RINGS`,
+which filters the error's oscillation at the scale of the method's cells
+and leaves the smooth σ to O(h³)) into ``σ*``; then
 
     η² = Σ_q w_q (σ* − σ_h)ᵀ C (σ* − σ_h)(x_q),   ‖σ_h‖²_E = Σ_q w_q σ_hᵀ C σ_h,
 

@@ -373,9 +373,10 @@ ENERGY_GAUSS = 3
 #: (contactcore.estimate).  One ring (3×3 cells, 81 Gauss samples) fits the
 #: quadratic where the smooth stress is still quadratic to O(h³); two (5×5)
 #: leave a fit error of the order of a P2 stress's own error.  Measured
-#: effectivity η/‖σ − σ_h‖_E on the pressurised and twisted rods and the
-#: quadratic layers: one ring 0.76-1.44 for fe, xfem P1/P2 and efgm; two
-#: rings 0.99-1.8 for degree 1 but 4.4-4.8 for fe and xfem P2.
+#: effectivity η/‖σ − σ_h‖_E on the closed forms (verification.effectivity):
+#: one ring 0.73-1.67 for fe, xfem P2 and efgm (xfem P1, whose stress is
+#: already recovered: 0.41-0.64); two rings 0.96-0.99 for fe P1 but 4.4-4.8
+#: for fe and xfem P2.
 ENERGY_RINGS = 1
 
 #: Where an estimate is trusted, the true error lies within this factor of
