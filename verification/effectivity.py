@@ -46,13 +46,15 @@ def _with_profiles(case, *profiles):
 #: Case name -> the closed form with its profiles (quantities whose exact
 #: value is zero left out where a profile can choose).
 CASES = {
-    "patch": lambda: _with_profiles(interface_patch(30.0, pins=PATCH_PINS), InterfaceProfile("gamma", GAMMA, parameter="arclength"),
+    "patch": lambda: _with_profiles(interface_patch(30.0, pins=PATCH_PINS),
+                                    InterfaceProfile("gamma", GAMMA, parameter="arclength"),
                                     LineProfile("line", (0.05, 0.2), (0.95, 0.8), BULK)),
     "pressurised_rod": lambda: _with_profiles(pressurised_rod(), InterfaceProfile("gamma", ("gN", "tN")),
                                               LineProfile("radial", (0.0, 0.0), (1.0, 0.0), ("ux", "sxx", "syy"))),
     "twisted_rod": lambda: _with_profiles(twisted_rod(), InterfaceProfile("gamma", ("gT", "tT")),
                                           LineProfile("radial", (0.0, 0.0), (1.0, 0.0), ("uy", "sxy"))),
-    "quadratic_layers": lambda: _with_profiles(quadratic_layers("shear"), InterfaceProfile("gamma", ("gT", "tT"), parameter="arclength"),
+    "quadratic_layers": lambda: _with_profiles(quadratic_layers("shear"),
+                                               InterfaceProfile("gamma", ("gT", "tT"), parameter="arclength"),
                                                LineProfile("vertical", (0.5, 0.0), (0.5, 1.0), ("ux", "sxy"))),
     "layered_slip": layered_slip,
 }

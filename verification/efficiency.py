@@ -140,7 +140,8 @@ def _reference(scene_name: str, ref_h: float) -> tuple[dict, int, float]:
 
 def spawn_each(scene, rungs, ref_h: float | None, estimated: bool = False) -> bool:
     """Whether the reference and the rungs need a fresh process each: only
-    when all of them together (with ``estimated``, each rung's run at h/2 too) (their memory estimates summed, as if none
+    when all of them together (with ``estimated``, each rung's run at
+    h/2 too) (their memory estimates summed, as if none
     were ever returned to the system) would not fit in
     :data:`~contactcore.budget.MEMORY_SHARE` of this machine's memory.  The
     log says which, and why."""

@@ -212,7 +212,8 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
     given = scene.name if isinstance(scene_name, Scene) else str(scene_name)
     files.write_json(out / "run.json", {**files.provenance(list(argv)), "scene": given,
                                         "methods": methods.expand(method_names), "h": h, "degree": degree,
-                                        "paper": paper, "estimate": estimate, "petsc_options": petsc_options or {}, "dmax": dmax,
+                                        "paper": paper, "estimate": estimate,
+                                        "petsc_options": petsc_options or {}, "dmax": dmax,
                                         "basis": basis, "nodes": str(nodes_file) if nodes_file else None,
                                         "cell": next((s["discretisation"]["cell"] for s in summaries
                                                       if "cell" in s["discretisation"]), cell)})
