@@ -116,7 +116,7 @@ class PatchRecovery:
                 continue
             U, S, Vt = np.linalg.svd(A[todo, :, :terms], full_matrices=False)
             full = np.sum(S > S[:, :1] * max(count.max(), terms) * np.finfo(float).eps, axis=1) == terms
-            solved = np.einsum("tji,tj,tkj,tkc->tic", Vt, 1 / np.where(S > 0, S, 1.0), U, Y[todo])
+            solved = np.einsum("tji,tj,tkj,tkc->tic", Vt, 1 / np.where(S > 0, S, 1.0), U, Y[todo], optimize=True)
             coef[todo[full]] = 0.0
             coef[todo[full], :terms] = solved[full]
         return {int(c): (origin[n], length[n], coef[n]) for n, c in enumerate(targets)}

@@ -376,3 +376,46 @@ MIN_CELLS_ACROSS = 4
 #: Python exception) on scene C with a rod of radius 1e-6 and 1e-9 at
 #: h = 0.05, and meshed 1e-3 (h/50).  h/100 keeps the cases that mesh.
 MESH_MIN_FEATURE = 1e-2
+
+# ----- error estimates (contactcore.estimate) ----------------------------------
+
+#: The observed order of a profile quantity (three runs, h, h/2, h/4) is
+#: clipped to this range before it enters the Richardson factor 1/(2^p − 1):
+#: below 0.5 the factor exceeds 2.4 and a noisy ratio of two small
+#: differences would blow the estimate up; above 5 (two orders past P2's
+#: displacement rate) it is a near-zero difference at the finest pair, not a
+#: rate, and the factor (1/31) would hide an error.
+ORDER_RANGE = (0.5, 5.0)
+
+#: An observed order further than this from the theoretical one (degree + 1
+#: for displacements, gaps and the law's tractions, degree for stresses)
+#: says the runs are not in the asymptotic range: a whole order off
+#: changes the Richardson factor by 2x or more (p = 2 → 1: 1/3 → 1).
+ORDER_MISMATCH = 1.0
+
+#: A difference between two runs below this fraction of the quantity's
+#: largest |value| is round-off (the systems lose up to 8 digits, condition
+#: estimates ~1e8: tests/tolerances.py PATCH_ROUNDOFF): it shows no order.
+ESTIMATE_ROUNDOFF = 1e-10
+
+#: Gauss points per direction on each background cell of the
+#: Zienkiewicz–Zhu estimate: 3 integrate the squared error of a P2 stress
+#: (degree 2 per cell where the cells align, smooth elsewhere) to well
+#: under the estimate's own uncertainty.
+ENERGY_GAUSS = 3
+
+#: Vertex rings of background cells in the Zienkiewicz–Zhu recovery's patch
+#: (contactcore.estimate).  One ring (3×3 cells, 81 Gauss samples) fits the
+#: quadratic where the smooth stress is still quadratic to O(h³); two (5×5)
+#: leave a fit error of the order of a P2 stress's own error.  Measured
+#: effectivity η/‖σ − σ_h‖_E on the closed forms (verification.effectivity):
+#: one ring 0.73-1.67 for fe, xfem P2 and efgm (xfem P1, whose stress is
+#: already recovered: 0.41-0.64); two rings 0.96-0.99 for fe P1 but 4.4-4.8
+#: for fe and xfem P2.
+ENERGY_RINGS = 1
+
+#: Where an estimate is trusted, the true error lies within this factor of
+#: it either way: the effectivity range that the closed forms hold
+#: (tests/tolerances.py EFFECTIVITY; docs/error-estimates.md gives the
+#: measured table).  ``efficiency`` draws it as the estimate's error bar.
+ESTIMATE_TRUST = 2.0

@@ -86,6 +86,8 @@ def _parser() -> argparse.ArgumentParser:
     run.add_argument("--no-plots", dest="draw", action="store_false", help="write no figures")
     run.add_argument("--allow-large", action="store_true",
                      help="run even when the estimated memory exceeds what this machine has")
+    run.add_argument("--estimate", type=int, nargs="?", const=2, choices=(2, 3), metavar="{2,3}",
+                     help="also solve at h/2 (3: and h/4), write the finest run with its estimated errors")
     run.add_argument("--out", type=Path, required=True, help="result folder")
     pap = sub.add_parser("paper", parents=[common], help="the paper's figures and an agreement table against a refined reference")
     pap.add_argument("--scene", nargs="+", default=["A", "B", "C"], choices=["A", "B", "C"])
@@ -97,12 +99,14 @@ def _parser() -> argparse.ArgumentParser:
     _methods(clo)
     clo.add_argument("--degree", nargs="+", type=int, default=[1, 2], choices=(1, 2))
     clo.add_argument("--out", type=Path, required=True)
-    eff = sub.add_parser("efficiency", parents=[common], help="error against run time, against a refined reference")
+    eff = sub.add_parser("efficiency", parents=[common],
+                         help="error against run time, against a refined reference or estimated without one")
     eff.add_argument("scene")
     _methods(eff)
     eff.add_argument("--degree", nargs="+", type=int, default=[1], choices=(1, 2))
     eff.add_argument("--h", nargs="+", type=float, required=True)
-    eff.add_argument("--ref-h", type=float, required=True, help="element size of the P2 reference")
+    eff.add_argument("--ref-h", type=float,
+                     help="element size of the P2 reference (default: none, the errors are estimated)")
     eff.add_argument("--exclude", type=float, help="distance from corners and Γ's ends left out (default 0.1 L)")
     eff.add_argument("--out", type=Path, required=True)
     _workers(eff, default=os.cpu_count())
@@ -247,7 +251,7 @@ def _dispatch(args, argv) -> None:
         from .run import run
         run(args.scene, args.method, args.out, h=args.h, degree=args.degree, paper=args.paper, fields=args.fields,
             petsc_options=dict(args.petsc_option), dmax=args.dmax, nodes_file=args.nodes, cell=args.cell,
-            basis=args.basis, allow_large=args.allow_large, draw=args.draw, argv=argv)
+            basis=args.basis, allow_large=args.allow_large, draw=args.draw, estimate=args.estimate, argv=argv)
     elif cmd == "paper":
         from .paper import paper
         paper(args.out, tuple(args.scene), args.ref_h, workers=args.workers, argv=argv)
@@ -272,7 +276,7 @@ def _dispatch(args, argv) -> None:
         exclude = args.exclude if args.exclude is not None else default_exclusion(scene)
         variants = [(m, d) for m in methods.expand(args.method) for d in args.degree]
         efficiency(args.scene, variants, {d: args.h for d in args.degree}, args.ref_h, exclude, args.out,
-                   workers=args.workers, argv=argv)
+                   workers=args.workers, estimated=True, argv=argv)
     elif cmd == "sweeps":
         from .sweeps import run_sweeps
         run_sweeps(args.out, args.sweep, methods.expand(args.method), args.degree, workers=args.workers, argv=argv)

@@ -26,7 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from contactcore import ContactError, ProfileData, Scene, load_scene, sample_profiles
-from contactcore.geometry import LineInterface, Rectangle
+from contactcore.estimate import far_from_singular, rms, singular_regions
 
 
 #: Samples closer than this fraction of the scene's diameter L to a singular
@@ -41,31 +41,11 @@ def default_exclusion(scene: Scene) -> float:
     return EXCLUDE_FRACTION * scene.length_scale
 
 
-def singular_regions(scene: Scene) -> list[tuple[str, np.ndarray]]:
-    """The singular points, named: ``("corners", points)`` of a rectangular
-    domain and ``("ends of Γ", points)`` where a straight Γ meets the outer
-    boundary (each an (m, 2) array)."""
-    regions = []
-    if isinstance(scene.domain, Rectangle):
-        regions.append(("corners", np.asarray(scene.domain.corners, float)))
-    if isinstance(scene.interface, LineInterface):
-        regions.append(("ends of Γ", np.asarray(scene.interface.chord(scene.domain), float)))
-    return regions
-
-
-def singular_points(scene: Scene) -> np.ndarray:
-    """Domain corners and the points where Γ meets the outer boundary."""
-    pts = [points for _, points in singular_regions(scene)]
-    return np.vstack(pts) if pts else np.zeros((0, 2))
-
-
 def kept_samples(scene: Scene, profile: ProfileData, exclude: float) -> np.ndarray:
-    """Mask of the samples at least ``exclude`` from every singular point."""
+    """Mask of the samples at least ``exclude`` from every singular point
+    (:func:`contactcore.estimate.singular_points`)."""
     xy = np.column_stack([profile.columns["x"], profile.columns["y"]])
-    sing = singular_points(scene)
-    if len(sing) == 0:
-        return np.ones(len(xy), bool)
-    return np.min(np.linalg.norm(xy[:, None, :] - sing[None], axis=-1), axis=1) >= exclude
+    return far_from_singular(scene, xy, exclude)
 
 
 def quantity_class(scene: Scene, profile, quantity: str) -> str:
@@ -288,3 +268,23 @@ def assert_methods_agree(scene, methods, h: float | None = None, rtol: float = 0
                              f"rtol = {rtol:g} ({measure}): " + "\n".join(lines)
                              + f"\n({result.excluded()})")
     return result
+
+
+def within_estimates(scene: Scene, a: dict, err_a: dict, b: dict, err_b: dict, exclude: float
+                     ) -> list[tuple[str, str, float, bool]]:
+    """Two methods' profiles (``{id: ProfileData}``) against their estimated
+    errors (``{id: {quantity + "_err": per-sample error}}``,
+    :meth:`contactcore.estimate.Estimate.error_columns`): per profile and
+    quantity, ``RMS(q_a − q_b) / RMS(e_a + e_b)`` over the kept samples
+    (RMS, not the worst sample: a pointwise estimate vanishes where the
+    runs at h and h/2 cross) and whether it exceeds 1 (they differ by more
+    than their estimated errors allow)."""
+    rows = []
+    for pid, prof in a.items():
+        keep = kept_samples(scene, prof, exclude)
+        for q in prof.names[3:]:
+            diff = (prof.columns[q] - b[pid].columns[q])[keep]
+            bound = (err_a[pid][f"{q}_err"] + err_b[pid][f"{q}_err"])[keep]
+            ratio = rms(diff) / max(rms(bound), np.finfo(float).tiny)
+            rows.append((pid, q, ratio, ratio > 1.0))
+    return rows

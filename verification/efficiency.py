@@ -21,6 +21,14 @@ the memory bandwidth, so the table says how many workers measured it.  Writes
 ``DIR/efficiency.csv``, ``DIR/efficiency.md`` (the table and a sentence
 saying which method reaches a common error level soonest) and
 ``DIR/efficiency.png`` (error against total wall time, log-log).
+
+Every rung is also solved at h/2 (untimed) for the Richardson estimate of
+its error (:mod:`contactcore.estimate`, the coarser run's error, samples
+near singular points left out as for the true error).  Without a
+reference (``ref_h`` None) the estimate is the error, drawn with an error
+bar of :data:`~contactcore.tolerances.ESTIMATE_TRUST` either way, and the
+table says so; with one, the table shows both and the effectivity
+(estimate ÷ true error).
 """
 from __future__ import annotations
 
@@ -28,17 +36,23 @@ import functools
 import logging
 from pathlib import Path
 
+import numpy as np
+
+from contactcore import estimate as estimates
 from contactcore import load_scene, sample_profiles
+from contactcore import tolerances as tol
 from contactcore.budget import MEMORY_SHARE, estimate, machine_memory
 
 from . import files, pool
-from .agreement import agreements
+from .agreement import COMPANIONS, agreements, kept_samples
 from .plots import loglog_by_variant
 from .timing import REPEAT_BELOW, REPEATS, fastest
 
 log = logging.getLogger("verification")
 
 COLUMNS = ["method", "degree", "h", "dofs", "mesh", "assembly", "solve", "total", "error", "worst"]
+#: With a reference, beside the true error.
+ESTIMATE_COLUMNS = ["estimate", "estimate_worst", "effectivity"]
 
 #: Default ladders of the report, by degree: the finest h gives every
 #: method at least 1e5 unknowns (P1: about 2/h² per unit area, P2 four times
@@ -65,6 +79,21 @@ def worst_error(scene, got: dict, ref: dict, exclude: float) -> tuple[float, str
     """The largest relative RMS difference over every profile and quantity."""
     pid, q, _, err = max(agreements(scene, got, ref, exclude), key=lambda row: row[3])
     return err, f"{pid}:{q}"
+
+
+def worst_estimate(scene, got: dict, est, exclude: float) -> tuple[float, str]:
+    """The largest estimated relative RMS error over every profile and
+    quantity, measured as :func:`worst_error` measures the true one (the
+    kept samples; a zero quantity against its companion's scale)."""
+    rows = []
+    for pid, qs in est.profiles.items():
+        keep = kept_samples(scene, got[pid], exclude)
+        for q, e in qs.items():
+            spid, sq = COMPANIONS.get((pid, q), (pid, q))
+            scale = float(np.sqrt(np.mean(got[spid].columns[sq][keep] ** 2)))
+            if scale > 0:
+                rows.append((float(np.sqrt(np.mean(e.error[keep] ** 2))) / scale, f"{pid}:{q}"))
+    return max(rows) if rows else (0.0, "")
 
 
 #: The errors a user asks the advisor about (worst relative RMS profile error).
@@ -109,14 +138,16 @@ def _reference(scene_name: str, ref_h: float) -> tuple[dict, int, float]:
     return {p.id: p for p in sample_profiles(scene, reference.fields, reference.interface)}, reference.dofs, reference.timings.total
 
 
-def spawn_each(scene, rungs, ref_h: float) -> bool:
+def spawn_each(scene, rungs, ref_h: float | None, estimated: bool = False) -> bool:
     """Whether the reference and the rungs need a fresh process each: only
-    when all of them together (their memory estimates summed, as if none
+    when all of them together (with ``estimated``, each rung's run at
+    h/2 too) (their memory estimates summed, as if none
     were ever returned to the system) would not fit in
     :data:`~contactcore.budget.MEMORY_SHARE` of this machine's memory.  The
     log says which, and why."""
-    needed = (estimate(scene, ref_h, 2, "fe").memory
-              + sum(estimate(scene, h, degree, name).memory for name, degree, h, _ in rungs))
+    needed = ((estimate(scene, ref_h, 2, "fe").memory if ref_h else 0.0)
+              + sum(estimate(scene, h, degree, name).memory for name, degree, h, _ in rungs)
+              + sum(estimate(scene, h / 2, degree, name).memory for name, degree, h, _ in rungs if estimated))
     have = MEMORY_SHARE * machine_memory()
     if needed > have:
         log.info("efficiency: each run in a fresh process: together they may need %.3g GB, more than the %.3g GB "
@@ -136,51 +167,92 @@ def _rungs(variants, ladders: dict) -> list[tuple]:
     return rungs
 
 
-def efficiency(scene_name: str, variants, ladders: dict, ref_h: float, exclude: float, out: Path,
-               workers: int | None = None, argv=()) -> str:
+def efficiency(scene_name: str, variants, ladders: dict, ref_h: float | None, exclude: float, out: Path,
+               workers: int | None = None, estimated: bool = False, argv=()) -> str:
     """Run the ladders (``ladders[(method, degree)]`` if given, else
     ``ladders[degree]``: the h of that variant) on ``workers``
-    processes, write the table and the plot; return the Markdown section."""
+    processes, write the table and the plot; return the Markdown section.
+    ``estimated``: each rung's error also estimated (module doc); without
+    ``ref_h`` it must be."""
     scene = load_scene(scene_name)
     rungs, rows = _rungs(variants, ladders), []
-    fresh = spawn_each(scene, rungs, ref_h)
-    [(ref, ref_dofs, ref_time)] = pool.map_cases(functools.partial(_reference, scene_name), [ref_h], fresh=fresh)
-    log.info("reference: fe P2 h=%g, %d DOFs, %.1f s", ref_h, ref_dofs, ref_time)
-    for k, row in enumerate(pool.map_cases(functools.partial(_measure, scene_name, ref=ref, exclude=exclude),
-                                           rungs, workers, fresh=fresh), 1):
-        log.info("[%d/%d] %s p%d h=%g: %d DOFs, %.2f s, worst error %.2e (%s)", k, len(rungs), row["method"],
-                 row["degree"], row["h"], row["dofs"], row["total"], row["error"], row["worst"])
+    fresh = spawn_each(scene, rungs, ref_h, estimated)
+    ref = ref_dofs = None
+    if ref_h is not None:
+        [(ref, ref_dofs, ref_time)] = pool.map_cases(functools.partial(_reference, scene_name), [ref_h],
+                                                     fresh=fresh)
+        log.info("reference: fe P2 h=%g, %d DOFs, %.1f s", ref_h, ref_dofs, ref_time)
+    measure = functools.partial(_measure, scene_name, ref=ref, exclude=exclude, estimated=estimated or ref is None)
+    for k, row in enumerate(pool.map_cases(measure, rungs, workers, fresh=fresh), 1):
+        log.info("[%d/%d] %s p%d h=%g: %d DOFs, %.2f s, worst error %.2e (%s)%s", k, len(rungs), row["method"],
+                 row["degree"], row["h"], row["dofs"], row["total"], row["error"], row["worst"],
+                 f", estimated {row['estimate']:.2e}" if "estimate" in row and ref is not None else "")
         rows.append(row)
     measured_by = pool.workers_label(workers)
     out = Path(out)
-    files.write_csv(out / "efficiency.csv", rows, COLUMNS)
+    columns = COLUMNS + (ESTIMATE_COLUMNS if ref is not None and "estimate" in rows[0] else [])
+    files.write_csv(out / "efficiency.csv", rows, columns + (["error_low", "error_high"] if ref is None else []))
     loglog_by_variant(out / "efficiency.png", rows, "total", "error", "total wall time (s)",
-                      "worst profile error (relative RMS)", f"Scene {scene.name}: error against run time")
-    text = (f"## Error against run time, scene {scene.name}\n\n"
-            f"Reference: fe P2, h = {ref_h:g} ({ref_dofs} DOFs). Error: worst relative RMS difference over "
-            f"the profiles, samples within {exclude:.3g} m of corners and of the ends of Γ left out. Times in s, "
-            f"after a warm-up solve; a run under {REPEAT_BELOW:g} s is the fastest of {REPEATS}; measured by "
-            f"{measured_by} at once (rungs beside each other share the cores).\n\n"
+                      "worst profile error (relative RMS)" + (", estimated" if ref is None else ""),
+                      f"Scene {scene.name}: error against run time",
+                      bars=("error_low", "error_high") if ref is None else None)
+    headers = ["method", "degree", "h", "DOFs", "mesh", "assembly", "solve", "total",
+               "error" if ref is not None else "estimated error", "worst at"]
+    text = (f"## Error against run time, scene {scene.name}\n\n" + _error_sentence(ref_h, ref_dofs, exclude)
+            + f" Times in s, after a warm-up solve; a run under {REPEAT_BELOW:g} s is the fastest of {REPEATS}; "
+            f"measured by {measured_by} at once (rungs beside each other share the cores).\n\n"
             f"{soonest(rows)}\n\nWhich method to pick for a target error (the fastest measured rung that "
             f"reaches it):\n\n{advisor(rows)}\n![efficiency {scene.name}](efficiency.png)\n\n"
-            + files.markdown_table(rows, COLUMNS, ["method", "degree", "h", "DOFs", "mesh", "assembly", "solve",
-                                                   "total", "error", "worst at"]))
+            + files.markdown_table(rows, columns, headers + ["estimate", "estimate worst at", "effectivity"]
+                                   [:len(columns) - len(COLUMNS)]))
     files.write_text(out / "efficiency.md", text)
     files.write_json(out / "run.json", {**files.provenance(list(argv)), "workers": measured_by})
     return text
 
 
-def _measure(scene_name: str, rung: tuple, ref: dict, exclude: float) -> dict:
+def _error_sentence(ref_h: float | None, ref_dofs: int | None, exclude: float) -> str:
+    where = f"samples within {exclude:.3g} m of corners and of the ends of Γ left out."
+    if ref_h is None:
+        return (f"No reference: the error is ESTIMATED (Richardson, each rung against a run at h/2 at the "
+                f"method's theoretical order, contactcore.estimate), the worst relative RMS over the profiles, "
+                f"{where} Error bars: a factor {tol.ESTIMATE_TRUST:g} either way, the range the estimate holds "
+                f"on the closed forms.")
+    return (f"Reference: fe P2, h = {ref_h:g} ({ref_dofs} DOFs). Error: worst relative RMS difference over the "
+            f"profiles, {where} Estimate: the same measure of the Richardson estimate (each rung against a run "
+            f"at h/2); effectivity = estimate ÷ error.")
+
+
+def _estimated(scene, solve, res, h: float, degree: int, exclude: float) -> dict:
+    """The rung's estimated error (the worst, relative) from an untimed run
+    at h/2, with its error bar."""
+    half = solve(scene, h / 2, degree=degree, estimate_condition=False)
+    got = {p.id: p for p in sample_profiles(scene, res.fields, res.interface)}
+    est = estimates.estimate_runs(scene, [res, half], exclude, energy=False, coarse=True)
+    value, where = worst_estimate(scene, got, est, exclude)
+    return {"estimate": value, "estimate_worst": where, "error_low": value / tol.ESTIMATE_TRUST,
+            "error_high": value * tol.ESTIMATE_TRUST}
+
+
+def _measure(scene_name: str, rung: tuple, ref: dict | None, exclude: float, estimated: bool = True) -> dict:
     """One rung ``(method, degree, h, warm_h)`` of a ladder, after a warm-up
-    solve at ``warm_h`` (JIT, imports): solve, sample, compare."""
+    solve at ``warm_h`` (JIT, imports): solve, sample, compare with the
+    reference, and (``estimated``) estimate; without a reference the
+    estimate is the error."""
     name, degree, h, warm_h = rung
     scene = load_scene(scene_name)
     solve, comm = pool.solver(name)
     solve = functools.partial(solve, **comm)
     solve(scene, warm_h, degree=degree, estimate_condition=False)
     res = fastest(solve, scene, h, degree)
-    got = {p.id: p for p in sample_profiles(scene, res.fields, res.interface)}
-    err, where = worst_error(scene, got, ref, exclude)
     t = res.timings
-    return {"method": name, "degree": degree, "h": h, "dofs": res.dofs, "mesh": t.mesh, "assembly": t.assembly,
-            "solve": t.solve, "total": t.total, "error": err, "worst": where}
+    row = {"method": name, "degree": degree, "h": h, "dofs": res.dofs, "mesh": t.mesh, "assembly": t.assembly,
+           "solve": t.solve, "total": t.total}
+    if estimated:
+        row.update(_estimated(scene, solve, res, h, degree, exclude))
+    if ref is None:
+        return {**row, "error": row["estimate"], "worst": row["estimate_worst"]}
+    got = {p.id: p for p in sample_profiles(scene, res.fields, res.interface)}
+    row["error"], row["worst"] = worst_error(scene, got, ref, exclude)
+    if estimated:
+        row["effectivity"] = row["estimate"] / row["error"] if row["error"] > 0 else float("nan")
+    return row

@@ -123,12 +123,14 @@ def _jsonable(value):
     return str(value)
 
 
-def write_profile_csv(path: Path, profile: ProfileData) -> Path:
-    """Columns ``s, x, y`` then the quantities (docs/scenes.md), full precision."""
+def write_profile_csv(path: Path, profile: ProfileData, errors: dict | None = None) -> Path:
+    """Columns ``s, x, y`` then the quantities (docs/scenes.md), full precision;
+    ``errors`` (``{q + "_err": per-sample error}``) each beside its quantity."""
     buf = io.StringIO()
     writer = csv.writer(buf, lineterminator="\n")
-    writer.writerow(profile.names)
-    cols = [profile.columns[n] for n in profile.names]
+    names = [c for n in profile.names for c in (n, f"{n}_err") if c == n or c in (errors or {})]
+    writer.writerow(names)
+    cols = [profile.columns[n] if n in profile.columns else errors[n] for n in names]
     for row in zip(*cols):
         writer.writerow([repr(float(v)) for v in row])
     return write_text(path, buf.getvalue())

@@ -157,13 +157,19 @@ def save(fig, path: Path) -> Path:
     return Path(path)
 
 
-def loglog_by_variant(path: Path, rows: list[dict], x: str, y: str, xlabel: str, ylabel: str, title: str) -> Path:
-    """``rows[y]`` against ``rows[x]``, log-log, one line per (method, degree)."""
+def loglog_by_variant(path: Path, rows: list[dict], x: str, y: str, xlabel: str, ylabel: str, title: str,
+                      bars: tuple[str, str] | None = None) -> Path:
+    """``rows[y]`` against ``rows[x]``, log-log, one line per (method,
+    degree); ``bars`` the keys of each point's lower and upper bound."""
     fig, ax = pyplot().subplots(figsize=(7.5, 4.5))
     for i, key in enumerate(dict.fromkeys((r["method"], r["degree"]) for r in rows)):
-        pts = [(r[x], r[y]) for r in rows if (r["method"], r["degree"]) == key and y in r]
-        if pts:
-            ax.loglog(*zip(*pts), **style(f"{key[0]} p{key[1]}", i))
+        mine = [r for r in rows if (r["method"], r["degree"]) == key and y in r]
+        if mine:
+            ax.loglog([r[x] for r in mine], [r[y] for r in mine], **style(f"{key[0]} p{key[1]}", i))
+        if mine and bars:
+            ax.errorbar([r[x] for r in mine], [r[y] for r in mine], fmt="none", capsize=2, alpha=0.6,
+                        yerr=[[r[y] - r[bars[0]] for r in mine], [r[bars[1]] - r[y] for r in mine]],
+                        color=ax.lines[-1].get_color())
     ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
     ax.set_title(title, fontsize=10)

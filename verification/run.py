@@ -9,6 +9,11 @@ Writes, under ``--out DIR``::
     DIR/<method>/fields/          (with --fields) VTU per body, Γ per step + PVD
     DIR/plots/<ID>.png            each profile, methods overlaid
     DIR/summary.md                a table of the runs
+    (with --estimate, :mod:`contactcore.estimate`: each method also solved at
+    h/2 (and h/4), the finest run written; ``q_err`` beside every quantity
+    ``q`` in the profile CSVs, ``"estimate"`` in summary.json, the estimated
+    error beside the time in summary.md, and whether the methods agree
+    within their estimated errors)
     (a nonlinear law, :mod:`verification.interface`:)
     DIR/<method>/increments.csv, interface.csv
     DIR/plots/status_<method>.png, response.png; Newton iterations in summary.md
@@ -22,11 +27,13 @@ from pathlib import Path
 import numpy as np
 
 from contactcore import ContactError, Scene, load_scene, sample_profiles, scene_text
+from contactcore import estimate as estimates
 from contactcore import tolerances as tol
 from contactcore.budget import check_budget
 from contactcore.scene import check_resolution, smallest_dimension
 
 from . import agreement, files, interface, methods, plots, pool
+from .agreement import default_exclusion, within_estimates
 
 log = logging.getLogger("verification")
 
@@ -45,14 +52,18 @@ def read_nodes(path) -> np.ndarray:
 
 
 def _summary_table(summaries: list[dict]) -> str:
-    lines = ["| method | degree | DOFs | mesh (s) | assembly (s) | solve (s) | total (s) | residual | condition |",
-             "|---|---|---|---|---|---|---|---|---|"]
+    estimated = any("estimate" in s for s in summaries)
+    extra = " estimated error (worst RMS) | energy (ZZ, relative) |" if estimated else ""
+    lines = ["| method | degree | DOFs | mesh (s) | assembly (s) | solve (s) | total (s) |" + extra
+             + " residual | condition |", "|---|---|---|---|---|---|---|" + "---|---|" * estimated + "---|---|"]
     for s in summaries:
         t, sv = s["timings"], s["solver"]
         cond = "—" if sv["condition"] is None else f"{sv['condition']:.2e}"
         lines.append(f"| {s['method']} | {s['degree']} | {s['dofs']} | {t['mesh']:.3f} | {t['assembly']:.3f} | "
-                     f"{t['solve']:.3f} | {t['total']:.3f} | {sv['residual']:.1e} | {cond} |")
-    warnings = [f"- {s['method']}: {w}" for s in summaries for w in s["solver"]["warnings"]]
+                     f"{t['solve']:.3f} | {t['total']:.3f} |{_estimate_cells(s) if estimated else ''} "
+                     f"{sv['residual']:.1e} | {cond} |")
+    warnings = [f"- {s['method']}: {w}" for s in summaries
+                for w in s["solver"]["warnings"] + s.get("estimate", {}).get("warnings", [])]
     return "\n".join(lines + ([""] + ["Warnings:"] + warnings if warnings else [])) + "\n"
 
 
@@ -71,6 +82,56 @@ def agreement_section(scene: Scene, profiles: dict) -> str:
     return "\n## Agreement with the reference\n\n" + agreement.table(scene, runs, reference).markdown()
 
 
+def _estimate_cells(summary: dict) -> str:
+    """The estimated-error cells of a method's row: the profile quantity
+    with the largest RMS error relative to its RMS value, and the ZZ
+    energy estimate relative to the energy norm."""
+    est = summary.get("estimate")
+    if est is None:
+        return " — | — |"
+    where, worst = max(((f"{pid}:{q}", e["rms"] / e["scale"]) for pid, qs in est.items()
+                        if isinstance(qs, dict) and pid not in ("energy", "status")
+                        for q, e in qs.items() if e.get("scale")), key=lambda r: r[1], default=("—", 0.0))
+    energy = est["energy"]["relative"] if est.get("energy") else float("nan")
+    return f" {worst:.2e} ({where}) | {energy:.2e} |"
+
+
+def _solve_estimated(solve, scene, h, levels: int | None, **options):
+    """The run at ``h`` (or with ``levels``, runs at h, h/2 (, h/4), the
+    finest returned) and its :class:`~contactcore.estimate.Estimate` (None
+    without ``levels``)."""
+    if not levels:
+        return solve(scene, h, **options), None
+    results = [solve(scene, hk, **options) for hk in estimates.levels_of(h, levels)]
+    return results[-1], estimates.estimate_runs(scene, results, default_exclusion(scene))
+
+
+def _estimate_record(est, profiles: list) -> dict:
+    """summary.json's ``"estimate"``: each quantity's max, RMS and order with
+    ``scale`` (the RMS of the quantity itself, what summary.md relates to)."""
+    record = est.summary()
+    for prof in profiles:
+        for q in record.get(prof.id, {}):
+            record[prof.id][q]["scale"] = float(np.sqrt(np.mean(prof.columns[q] ** 2)))
+    return record
+
+
+def _estimates_section(scene, runs: dict) -> str:
+    """Per pair of methods, the profile quantities on which they differ by
+    more than the sum of their estimated errors (samples near singular
+    points left out, :mod:`verification.agreement`)."""
+    names = list(runs)
+    lines = ["| methods | profile | quantity | RMS Δ / RMS (e₁ + e₂) | beyond the estimates |",
+             "|---|---|---|---|---|"]
+    for i, a in enumerate(names):
+        for b in names[i + 1:]:
+            for pid, q, ratio, beyond in within_estimates(scene, *runs[a], *runs[b], default_exclusion(scene)):
+                lines.append(f"| {a} – {b} | {pid} | {q} | {ratio:.2f} | {'yes' if beyond else 'no'} |")
+    return ("\n## Agreement within the estimated errors\n\nWhere two methods differ by more than the sum of "
+            "their estimated errors, at least one estimate is too small: that difference is not resolution.\n\n"
+            + "\n".join(lines) + "\n")
+
+
 def _progress(name: str):
     """A method's progress along the load path, one log line per increment."""
     def report(n: int, total: int, step) -> None:
@@ -82,7 +143,7 @@ def _progress(name: str):
 
 def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, paper=False,
         fields=False, petsc_options=None, dmax=None, nodes_file=None, cell=None, basis=None, allow_large=False,
-        draw=True, argv=()) -> str:
+        draw=True, estimate=None, argv=()) -> str:
     """Solve ``scene_name`` (a scene, a built-in name or a TOML file),
     sample the scene's profiles, write everything; return the Markdown
     section (``summary.md``'s text).  Before any work: every option must
@@ -97,16 +158,19 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
                           basis=basis)
     if h is not None:
         check_resolution(scene, h)
+    if estimate and paper:
+        raise ContactError("--estimate: the paper's grids are fixed, there is no h/2 to solve at; give --h instead")
     span = smallest_dimension(scene.domain)
     if (h or scene.h or 0.0) > span / tol.MIN_CELLS_ACROSS and not paper:
         log.warning("h = %g leaves fewer than %d cells across the domain's smallest dimension (%g): the profiles "
                     "are resolved by a few cells only", h or scene.h, tol.MIN_CELLS_ACROSS, span)
     if not (paper or allow_large):
         for name in chosen:
-            check_budget(scene, h or scene.h or smallest_dimension(scene.domain), degree, name)
+            check_budget(scene, (h or scene.h or smallest_dimension(scene.domain)) / 2 ** ((estimate or 1) - 1),
+                         degree, name)
     nodes = read_nodes(nodes_file) if nodes_file else None
     out = Path(out)
-    profiles, summaries, paths = {}, [], {}
+    profiles, summaries, paths, estimated = {}, [], {}, {}
     for name in chosen:
         if name not in methods.DISTRIBUTED and pool.distributed():
             if pool.launched_rank() > 0:
@@ -118,15 +182,22 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
                  else f"degree {degree}")
         # a worker of an mpi4py.futures pool solves on its own communicator; mpirun's ranks share the world
         solve, on_comm = pool.solver(name) if pool.under_mpi_pool() else (methods.solver(name), {})
-        result = solve(scene, h, degree=degree, paper=paper, progress=_progress(name), **options, **on_comm)
+        result, est = _solve_estimated(solve, scene, h, estimate, degree=degree, paper=paper,
+                                       progress=_progress(name), **options, **on_comm)
         summary = result.summary()
+        sampled = sample_profiles(scene, result.fields, result.interface)
+        if est is not None:
+            summary["estimate"] = _estimate_record(est, sampled)
+            estimated[f"{name} (p{result.degree})"] = ({p.id: p for p in sampled},
+                                                       {p.id: est.error_columns(p.id) for p in sampled})
         summaries.append(summary)
         for w in result.solver.warnings:
             log.warning("%s: %s", name, w)
         log.info("%s: %d DOFs, total %.2f s, residual %.1e", name, result.dofs, result.timings.total,
                  result.solver.residual)
-        for prof in sample_profiles(scene, result.fields, result.interface):
-            files.write_profile_csv(out / name / "profiles" / f"{prof.id}.csv", prof)
+        for prof in sampled:
+            files.write_profile_csv(out / name / "profiles" / f"{prof.id}.csv", prof,
+                                    est.error_columns(prof.id) if est is not None else None)
             profiles.setdefault(prof.id, {})[f"{name} (p{result.degree})"] = prof
         if fields:
             from . import fields_out  # meshio, only for field files
@@ -144,6 +215,8 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
     for pid, runs in profiles.items() if draw else ():
         plots.plot_profile(out / "plots" / f"{pid}.png", titles[pid], runs)
     text = f"# Scene {scene.name}: {scene.title}\n\n" + _summary_table(summaries) + agreement_section(scene, profiles)
+    if len(estimated) > 1:
+        text += _estimates_section(scene, estimated)
     if paths:
         if draw:
             interface.plot_response(out / "plots" / "response.png", scene, paths)
@@ -154,7 +227,8 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
     given = scene.name if isinstance(scene_name, Scene) else str(scene_name)
     files.write_json(out / "run.json", {**files.provenance(list(argv)), "scene": given,
                                         "methods": methods.expand(method_names), "h": h, "degree": degree,
-                                        "paper": paper, "petsc_options": petsc_options or {}, "dmax": dmax,
+                                        "paper": paper, "estimate": estimate,
+                                        "petsc_options": petsc_options or {}, "dmax": dmax,
                                         "basis": basis, "nodes": str(nodes_file) if nodes_file else None,
                                         "cell": next((s["discretisation"]["cell"] for s in summaries
                                                       if "cell" in s["discretisation"]), cell)})

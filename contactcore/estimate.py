@@ -1,0 +1,371 @@
+"""Error estimates without a reference: Richardson on profiles, ZZ in energy.
+
+Two estimates of how far a run is from the exact answer, method-independent
+(they read a run only through its :class:`~contactcore.result.Result`):
+
+**Richardson extrapolation** (Richardson 1911; Roache, *Verification and
+Validation in Computational Science*, 1998, ch. 5).  One method at ``h``
+and ``h/2`` samples every profile at the same points.  If a quantity's
+sample converges as ``q_h = q + C h^p``, the finer run's error is
+
+    e_{h/2} = q_{h/2} − q ≈ (q_{h/2} − q_h) / (2^p − 1),
+
+estimated sample by sample; the profile's worst sample and RMS summarise
+it.  With a third run at ``h/4`` the order is observed,
+
+    p = log₂ (‖q_{h/2} − q_h‖ / ‖q_{h/4} − q_{h/2}‖)        (RMS over the samples),
+
+clipped to :data:`~contactcore.tolerances.ORDER_RANGE`, and the estimate is
+the finest run's.  With two runs the method's theoretical order for the
+quantity is used (:func:`theoretical_order`): ``k + 1`` for a displacement
+and a gap (the L2 rate of degree k), and for a traction on Γ, which the law
+computes from the gaps (``t = k_N g_N`` …) not from the bulk stress; ``k``
+for a stress (the H1 rate).  An observed order further than
+:data:`~contactcore.tolerances.ORDER_MISMATCH` from theory means the runs
+are not yet in the asymptotic range: the estimate carries a warning.
+
+For a law with history (unilateral, Coulomb) the profiles are the final
+increment's, and the status along Γ (open, stick, slip) of the two runs is
+compared at :data:`~contactcore.tolerances.PROFILE_POINTS` points: where it
+differs, the error there is not asymptotic, and the estimate says so.
+
+**Zienkiewicz–Zhu** (Zienkiewicz and Zhu 1987, 1992).  From one run: its
+stress ``σ_h`` is sampled at the Gauss points of background cells of the
+run's size ``h`` (:mod:`contactcore.quadrature`, Γ followed exactly) and
+recovered body by body with the core's patch recovery
+(:class:`contactcore.recovery.PatchRecovery`, every Gauss point a sample
+weighted by its quadrature weight: a local L2 projection onto quadratics
+over one ring of cells, :data:`~contactcore.tolerances.ENERGY_RINGS`,
+which filters the error's oscillation at the scale of the method's cells
+and leaves the smooth σ to O(h³)) into ``σ*``; then
+
+    η² = Σ_q w_q (σ* − σ_h)ᵀ C (σ* − σ_h)(x_q),   ‖σ_h‖²_E = Σ_q w_q σ_hᵀ C σ_h,
+
+``C = D⁻¹`` the body's compliance, over the Gauss points farther than
+``exclude`` from the singular points (:func:`singular_points`): corners and
+the ends of Γ, whose stress singularities no recovery captures.  ``η`` is
+an estimate of the energy norm of the error ``‖σ − σ_h‖_E`` (the same
+integral with the exact σ).
+
+numpy and scipy only; no method is imported.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from . import tolerances as tol
+from .geometry import LineInterface, Rectangle
+from .newton import along
+from .profiles import ProfileData, sample_points, sample_profiles
+from .quadrature import background_cells, volume_rule
+from .recovery import PatchRecovery
+from .scene import InterfaceProfile, Scene
+
+#: Quantities that converge as the displacement (degree + 1): displacements,
+#: gaps, and the tractions the law computes from the gaps.
+DISPLACEMENT_LIKE = ("ux", "uy", "gN", "gT", "tN", "tT")
+
+
+#: Methods whose degree-1 stress is recovered (:mod:`contactcore.recovery`:
+#: xfem P1), not read from the cell: it converges one order faster, as
+#: the displacement (measured with the orders of the other methods, the
+#: Richardson effectivity of xfem P1's stresses was 3.0-6.2 on the
+#: pressurised and twisted rods: a rate 2 read as 1).
+RECOVERED_STRESS = (("xfem", 1),)
+
+
+def theoretical_order(quantity: str, degree: int, method: str = "") -> int:
+    """The rate of a profile quantity for ``method`` of ``degree`` (module doc)."""
+    if quantity in DISPLACEMENT_LIKE or (method, degree) in RECOVERED_STRESS:
+        return degree + 1
+    return degree
+
+
+def singular_regions(scene: Scene) -> list[tuple[str, np.ndarray]]:
+    """The singular points, named: ``("corners", points)`` of a rectangular
+    domain and ``("ends of Γ", points)`` where a straight Γ meets the outer
+    boundary (each an (m, 2) array)."""
+    regions = []
+    if isinstance(scene.domain, Rectangle):
+        regions.append(("corners", np.asarray(scene.domain.corners, float)))
+    if isinstance(scene.interface, LineInterface):
+        regions.append(("ends of Γ", np.asarray(scene.interface.chord(scene.domain), float)))
+    return regions
+
+
+def singular_points(scene: Scene) -> np.ndarray:
+    """Domain corners and the points where a straight Γ meets the outer boundary."""
+    pts = [points for _, points in singular_regions(scene)]
+    return np.vstack(pts) if pts else np.zeros((0, 2))
+
+
+def far_from_singular(scene: Scene, points: np.ndarray, exclude: float) -> np.ndarray:
+    """Mask of the points at least ``exclude`` from every singular point."""
+    sing = singular_points(scene)
+    if len(sing) == 0 or exclude <= 0:
+        return np.ones(len(points), bool)
+    return np.min(np.linalg.norm(points[:, None, :] - sing[None], axis=-1), axis=1) >= exclude
+
+
+def rms(x: np.ndarray) -> float:
+    """The root mean square of ``x`` (0 for none)."""
+    return float(np.sqrt(np.mean(np.square(x)))) if len(x) else 0.0
+
+
+# ----- Richardson -------------------------------------------------------------
+
+@dataclass(frozen=True)
+class QuantityEstimate:
+    """The finest run's estimated error of one quantity on one profile:
+    ``error`` (per sample, ≥ 0, in the quantity's units), the ``order`` used,
+    and whether it was ``observed`` (three runs) or theoretical."""
+
+    error: np.ndarray
+    order: float
+    observed: bool
+    theory: int
+
+    @property
+    def max(self) -> float:
+        return float(np.max(self.error)) if len(self.error) else 0.0
+
+    @property
+    def rms(self) -> float:
+        return rms(self.error)
+
+    def record(self) -> dict:
+        return {"max": self.max, "rms": self.rms, "order": self.order, "observed": self.observed}
+
+
+def observed_order(coarse: np.ndarray, mid: np.ndarray, fine: np.ndarray, ratio: float = 2.0) -> float | None:
+    """``log_ratio(‖mid − coarse‖ / ‖fine − mid‖)`` (RMS), clipped to
+    :data:`~contactcore.tolerances.ORDER_RANGE`; None when the finer
+    difference is at round-off of the quantity's scale
+    (:data:`~contactcore.tolerances.ESTIMATE_ROUNDOFF`): no order to see."""
+    scale = max(np.max(np.abs(fine)), np.max(np.abs(mid)), 0.0) if len(fine) else 0.0
+    d1, d2 = rms(mid - coarse), rms(fine - mid)
+    if d2 <= tol.ESTIMATE_ROUNDOFF * scale or d1 <= tol.ESTIMATE_ROUNDOFF * scale:
+        return None
+    p = np.log(d1 / d2) / np.log(ratio)
+    return float(np.clip(p, *tol.ORDER_RANGE))
+
+
+def richardson(values: list[np.ndarray], theory: int, ratio: float = 2.0, coarse: bool = False) -> QuantityEstimate:
+    """The estimate of one quantity from its samples at h, h/2 (and h/4),
+    coarse to fine (module doc): the finest run's error, or with
+    ``coarse`` the coarsest run's (``(q_{h/2} − q_h) r^p / (r^p − 1)``,
+    two levels only)."""
+    p = observed_order(*values[-3:], ratio=ratio) if len(values) >= 3 else None
+    order = float(theory) if p is None else p
+    diff = np.abs(values[-1] - values[-2])
+    factor = ratio ** order / (ratio ** order - 1) if coarse else 1 / (ratio ** order - 1)
+    return QuantityEstimate(diff * factor, order, p is not None, theory)
+
+
+def profile_estimates(levels: list[list[ProfileData]], degree: int, method: str = "", coarse: bool = False
+                      ) -> dict[str, dict[str, QuantityEstimate]]:
+    """``{profile id: {quantity: estimate}}`` from the profiles of each run,
+    coarse to fine (each a list in the scene's order)."""
+    out = {}
+    for profs in zip(*levels):
+        pid = profs[-1].id
+        out[pid] = {q: richardson([p.columns[q] for p in profs], theoretical_order(q, degree, method), coarse=coarse)
+                    for q in profs[-1].names[3:]}
+    return out
+
+
+def order_warnings(estimates: dict[str, dict[str, QuantityEstimate]]) -> list[str]:
+    """One line per quantity whose observed order is further than
+    :data:`~contactcore.tolerances.ORDER_MISMATCH` from theory."""
+    return [f"{pid}:{q}: observed order {e.order:.2f} against {e.theory} in theory: the runs are not in the "
+            f"asymptotic range, the estimate is not to be trusted"
+            for pid, qs in estimates.items() for q, e in qs.items()
+            if e.observed and abs(e.order - e.theory) > tol.ORDER_MISMATCH]
+
+
+# ----- the status along Γ -----------------------------------------------------
+
+def status_along(scene: Scene, path) -> np.ndarray:
+    """The final increment's status (index into ``STATUS_NAMES``) at the
+    profile samples of Γ, each the status of the nearest quadrature point
+    along Γ."""
+    _, pts, _ = sample_points(scene, InterfaceProfile("gamma", ("gN",)))
+    a, b = along(scene.interface, path.points), along(scene.interface, pts)
+    nearest = np.argmin(np.abs(b[:, None] - a[None, :]), axis=1)
+    return path.final.status[nearest]
+
+
+def status_change(scene: Scene, coarse_path, fine_path) -> dict:
+    """The final status of two runs compared along Γ: the share of Γ in
+    each status per run, and the samples whose status differs."""
+    from .laws import STATUS_NAMES
+    s0, s1 = status_along(scene, coarse_path), status_along(scene, fine_path)
+    shares = lambda s: {n: float(np.mean(s == i)) for i, n in enumerate(STATUS_NAMES)}  # noqa: E731
+    return {"coarse": shares(s0), "fine": shares(s1), "differ": int(np.sum(s0 != s1)), "samples": len(s0)}
+
+
+def status_warning(change: dict) -> list[str]:
+    if not change or change["differ"] == 0:
+        return []
+    show = lambda s: ", ".join(f"{v:.0%} {k}" for k, v in s.items())  # noqa: E731
+    return [f"the status along Γ differs between h and h/2 at {change['differ']} of {change['samples']} samples "
+            f"({show(change['coarse'])} → {show(change['fine'])}): the estimate is not asymptotic there"]
+
+
+# ----- Zienkiewicz–Zhu ----------------------------------------------------------
+
+@dataclass(frozen=True)
+class EnergyRule:
+    """Gauss points of the domain (``rule``) with each point's background
+    cell (``cell``), the grid's node keys of every cell (``keys``), and
+    which points lie away from the singular points (``kept``)."""
+
+    rule: object
+    cell: np.ndarray
+    keys: np.ndarray
+    kept: np.ndarray
+
+
+def energy_rule(scene: Scene, h: float, exclude: float = 0.0, gauss: int = tol.ENERGY_GAUSS) -> EnergyRule:
+    """The background cells of size ≈ h (:func:`contactcore.quadrature.background_cells`)
+    with their Gauss points, Γ followed exactly."""
+    lo, hi = background_cells(scene, h)
+    rule = volume_rule(scene, h, gauss)
+    step = hi[0] - lo[0]
+    origin = lo.min(axis=0)
+    n = np.round((hi.max(axis=0) - origin) / step).astype(int)
+    ij = np.clip(np.floor((rule.points - origin) / step).astype(int), 0, n - 1)
+    cell = ij[:, 0] * n[1] + ij[:, 1]
+    I, J = np.divmod(np.arange(n[0] * n[1]), n[1])
+    node = lambda i, j: i * (n[1] + 1) + j  # noqa: E731
+    keys = np.column_stack([node(I, J), node(I + 1, J), node(I, J + 1), node(I + 1, J + 1)])
+    return EnergyRule(rule, cell, keys, far_from_singular(scene, rule.points, exclude))
+
+
+def energy_norm(scene: Scene, er: EnergyRule, sigma: np.ndarray) -> float:
+    """``(Σ_q w_q σᵀ C σ)^½`` over the kept points of ``er`` (σ Voigt, (Q, 3))."""
+    C = np.linalg.inv(scene.voigt_matrices())[er.rule.bodies]
+    density = np.einsum("qi,qij,qj->q", sigma, C, sigma)
+    return float(np.sqrt(max(er.rule.weights[er.kept] @ density[er.kept], 0.0)))
+
+
+def recovered_stress(scene: Scene, er: EnergyRule, sigma: np.ndarray) -> np.ndarray:
+    """σ* at the Gauss points of ``er`` from ``σ_h`` there (module doc): body
+    by body, every Gauss point a sample (weight its quadrature weight, its
+    cell's node keys), so each background cell's quadratic is the weighted
+    least-squares fit to ``σ_h`` over the Gauss points of its patch, a local
+    L2 projection; σ_h itself where a patch fits no line."""
+    rule, out = er.rule, sigma.copy()
+    for body in (0, 1):
+        mine = np.flatnonzero(rule.bodies == body)
+        if not len(mine):
+            continue
+        sample = np.full(len(rule.weights), -1)
+        sample[mine] = np.arange(len(mine))
+        _, first, inverse = np.unique(er.cell[mine], return_index=True, return_inverse=True)
+        recovery = PatchRecovery(er.keys[er.cell], sample, rule.points[mine], rule.weights[mine], sigma[mine],
+                                 rings=tol.ENERGY_RINGS)
+        star = recovery.at(mine[first][inverse], rule.points[mine])
+        ok = ~np.isnan(star[:, 0])
+        out[mine[ok]] = star[ok]
+    return out
+
+
+@dataclass(frozen=True)
+class EnergyEstimate:
+    """The ZZ estimate ``eta`` of ``‖σ − σ_h‖_E`` and ``norm`` ``‖σ_h‖_E``
+    (J^½ per unit thickness), away from singular points by ``exclude``."""
+
+    eta: float
+    norm: float
+    exclude: float
+
+    @property
+    def relative(self) -> float:
+        return self.eta / self.norm if self.norm > 0 else float("nan")
+
+    def record(self) -> dict:
+        return {"eta": self.eta, "norm": self.norm, "relative": self.relative, "exclude": self.exclude}
+
+
+def energy_estimate(scene: Scene, fields, h: float, exclude: float = 0.0) -> EnergyEstimate:
+    """The Zienkiewicz–Zhu estimate of one run (module doc) on background
+    cells of the run's size ``h``."""
+    er = energy_rule(scene, h, exclude)
+    sigma = fields.stress(er.rule.points, er.rule.bodies)
+    star = recovered_stress(scene, er, sigma)
+    return EnergyEstimate(energy_norm(scene, er, star - sigma), energy_norm(scene, er, sigma), exclude)
+
+
+# ----- one estimate of a run ---------------------------------------------------
+
+@dataclass
+class Estimate:
+    """Everything estimated about the finest of a method's runs at ``hs``
+    (coarse to fine): per profile and quantity (:class:`QuantityEstimate`),
+    in energy (:class:`EnergyEstimate`), the status along Γ compared
+    between the two finest runs (a law with history), and warnings."""
+
+    hs: tuple
+    profiles: dict[str, dict[str, QuantityEstimate]]
+    energy: EnergyEstimate | None
+    status: dict | None = None
+    warnings: list[str] = field(default_factory=list)
+
+    def error_columns(self, pid: str) -> dict[str, np.ndarray]:
+        """``{q + "_err": per-sample error}`` of profile ``pid``."""
+        return {f"{q}_err": e.error for q, e in self.profiles.get(pid, {}).items()}
+
+    def summary(self) -> dict:
+        """JSON-ready: ``{PROFILE: {QUANTITY: {max, rms, order, observed}}}``
+        plus ``energy``, ``h`` (the runs), ``status`` and ``warnings``."""
+        out = {pid: {q: e.record() for q, e in qs.items()} for pid, qs in self.profiles.items()}
+        out.update({"energy": self.energy.record() if self.energy else None, "h": list(self.hs),
+                    "status": self.status, "warnings": list(self.warnings)})
+        return out
+
+    def worst(self, scales: dict[str, dict[str, float]] | None = None) -> tuple[str, float]:
+        """The largest RMS error over every profile and quantity, relative to
+        ``scales[pid][q]`` where given (``"pid:q"``, value)."""
+        rows = [(f"{pid}:{q}", e.rms / (scales[pid][q] if scales else 1.0))
+                for pid, qs in self.profiles.items() for q, e in qs.items()
+                if not scales or scales[pid][q] > 0]
+        return max(rows, key=lambda r: r[1]) if rows else ("", 0.0)
+
+
+def levels_of(h: float, levels: int) -> list[float]:
+    """``h, h/2`` (and ``h/4``), coarse to fine."""
+    if levels not in (2, 3):
+        raise ValueError(f"levels must be 2 or 3 (got {levels})")
+    return [h / 2 ** k for k in range(levels)]
+
+
+def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: bool = True,
+                  coarse: bool = False) -> Estimate:
+    """The :class:`Estimate` of the finest of ``results`` (one method at
+    h, h/2 (, h/4), coarse to fine), or with ``coarse`` of the coarser of
+    two (its profiles' errors; the energy estimate still the finest run's)."""
+    hs = tuple(float(r.discretisation["h"]) for r in results)
+    levels = [sample_profiles(scene, r.fields, r.interface) for r in results]
+    profiles = profile_estimates(levels, results[-1].degree, results[-1].method, coarse=coarse)
+    warnings = order_warnings(profiles)
+    status = None
+    if scene.law.has_history or not scene.law.is_linear:
+        status = status_change(scene, results[-2].interface, results[-1].interface)
+        warnings += status_warning(status)
+    zz = energy_estimate(scene, results[-1].fields, hs[-1], exclude) if energy else None
+    return Estimate(hs, profiles, zz, status, warnings)
+
+
+def estimate(scene: Scene, discretisation, h: float, levels: int = 2, *, exclude: float = 0.0, reuse=None,
+             progress=None):
+    """Solve ``scene`` with ``discretisation`` (:mod:`contactcore.discretisation`)
+    at ``h``, ``h/2`` (and ``h/4`` with ``levels=3``) and return the finest
+    :class:`~contactcore.result.Result` with its :class:`Estimate`; the
+    energy estimate leaves out Gauss points within ``exclude`` of the
+    singular points."""
+    from .discretisation import solve
+    results = [solve(scene, discretisation, hk, reuse=reuse, progress=progress) for hk in levels_of(h, levels)]
+    return results[-1], estimate_runs(scene, results, exclude)

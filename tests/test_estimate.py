@@ -1,0 +1,116 @@
+"""Error estimates without a reference (contactcore.estimate): Richardson
+per profile quantity and Zienkiewicz–Zhu in energy, their effectivity on
+the closed forms, and ``run --estimate``'s outputs."""
+import json
+
+import numpy as np
+import pytest
+
+import tolerances as tol
+from contactcore import estimate as est
+from contactcore import tolerances as core_tol
+from verification import files
+from verification.effectivity import CASES, VARIANTS, effectivity
+from verification.run import run
+
+
+def test_richardson_is_exact_for_an_error_that_is_a_power_of_h():
+    """q_h = q + C h^p: with the right order the finer run's error is
+    recovered exactly, and three levels observe the order."""
+    s = np.linspace(0.0, 1.0, 11)
+    exact, lead = np.sin(s), 1.0 + s ** 2
+    levels = [exact + lead * h ** 2 for h in (0.1, 0.05, 0.025)]
+    two = est.richardson(levels[:2], theory=2)
+    assert np.allclose(two.error, lead * 0.05 ** 2) and not two.observed
+    three = est.richardson(levels, theory=1)
+    assert three.observed and three.order == pytest.approx(2.0)
+    assert np.allclose(three.error, lead * 0.025 ** 2)
+    assert np.allclose(est.richardson(levels[:2], theory=2, coarse=True).error, lead * 0.1 ** 2)
+
+
+def test_an_observed_order_far_from_theory_warns():
+    s = np.linspace(0.0, 1.0, 11)
+    levels = [1.0 + h ** 1 * np.ones_like(s) for h in (0.1, 0.05, 0.025)]
+    e = est.richardson(levels, theory=3)
+    assert e.order == pytest.approx(1.0)
+    (warning,) = est.order_warnings({"P": {"ux": e}})
+    assert "P:ux" in warning and "asymptotic" in warning
+
+
+def test_the_observed_order_is_clipped_and_round_off_shows_none():
+    base = np.ones(5)
+    assert est.observed_order(base + 1.0, base + 1e-3, base + 1e-12) == core_tol.ORDER_RANGE[1]
+    assert est.observed_order(base, base * (1 + 1e-14), base) is None
+
+
+@pytest.mark.parametrize("case,key", [("pressurised_rod", ("fe", 1)), ("pressurised_rod", ("xfem", 2)),
+                                      ("layered_slip", ("efgm", 1))], ids=lambda v: str(v))
+def test_the_estimates_are_within_a_factor_two_of_the_true_error(case, key, record_property):
+    """One closed form per method (the layered slip: Coulomb, the final
+    increment): every profile quantity with an error above round-off and
+    the energy estimate within tol.EFFECTIVITY of the truth."""
+    rows = [r for r in effectivity(case, key) if r["kind"] == "error"]
+    assert rows
+    for r in rows:
+        record_property(f"{r['profile']}:{r['quantity']}", r["effectivity"])
+        assert tol.EFFECTIVITY[0] <= r["effectivity"] <= tol.EFFECTIVITY[1], r
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("case", list(CASES))
+@pytest.mark.parametrize("key", list(VARIANTS), ids=lambda k: f"{k[0]}-P{k[1]}")
+def test_the_full_effectivity_table(case, key):
+    """Every closed form, method and degree: in tol.EFFECTIVITY, but for
+    the measured exceptions of tol.EFFECTIVITY_OUTSIDE (which must stay
+    where they were measured, within 25 %)."""
+    for r in effectivity(case, key):
+        if r["kind"] != "error":
+            continue
+        known = tol.EFFECTIVITY_OUTSIDE.get((case, *key, r["profile"], r["quantity"]))
+        if known is not None:
+            assert r["effectivity"] == pytest.approx(known, rel=0.25), r
+        else:
+            assert tol.EFFECTIVITY[0] <= r["effectivity"] <= tol.EFFECTIVITY[1], r
+
+
+def test_run_estimate_writes_the_errors(tmp_path):
+    """``run --estimate``: every profile CSV has ``q_err`` beside each
+    ``q``, summary.json an ``estimate`` per profile and quantity and the
+    energy, summary.md the estimated error and the agreement table; the
+    answer is the run at h/2."""
+    out = tmp_path / "run"
+    text = run("A", ["xfem", "efgm"], out, h=0.2, estimate=2, draw=False)
+    assert "estimated error" in text and "Agreement within the estimated errors" in text
+    for name in ("xfem", "efgm"):
+        summary = json.loads((out / name / "summary.json").read_text())
+        assert summary["discretisation"]["h"] == pytest.approx(0.1)
+        estimate = summary["estimate"]
+        assert estimate["h"] == pytest.approx([0.2, 0.1]) and estimate["energy"]["eta"] > 0
+        columns = files.read_profile_csv(out / name / "profiles" / "A1.csv")
+        names = list(columns)
+        for q in names[3:]:
+            if not q.endswith("_err"):
+                assert names[names.index(q) + 1] == f"{q}_err"
+                record = estimate["A1"][q]
+                assert record["max"] == pytest.approx(max(columns[f"{q}_err"]))
+                assert record["order"] == est.theoretical_order(q, 1, name)
+    assert json.loads((out / "run.json").read_text())["estimate"] == 2
+
+
+def test_run_estimate_refuses_the_paper_grids(tmp_path):
+    from contactcore import ContactError
+    with pytest.raises(ContactError, match="--estimate"):
+        run("A", ["efgm"], tmp_path / "r", paper=True, estimate=2, draw=False)
+
+
+def test_efficiency_without_a_reference_estimates_and_says_so(tmp_path):
+    """No --ref-h: the error column is the estimate, with its error bar,
+    and the text says that it is estimated."""
+    from verification.efficiency import efficiency
+    text = efficiency("A", [("efgm", 1)], {1: (0.2,)}, None, 0.1, tmp_path / "eff", workers=1)
+    assert "ESTIMATED" in text and "estimated error" in text
+    import csv
+    with open(tmp_path / "eff" / "efficiency.csv", newline="") as fh:
+        (row,) = list(csv.DictReader(fh))
+    low, error, high = (float(row[k]) for k in ("error_low", "error", "error_high"))
+    assert 0 < error and high / error == pytest.approx(error / low) == pytest.approx(core_tol.ESTIMATE_TRUST)

@@ -1,0 +1,143 @@
+"""How good the error estimates are: their effectivity on the closed forms.
+
+The effectivity of an estimate is the estimate over the true error: 1 is a
+perfect estimate, below 1 an optimistic one.  For the Richardson estimate
+(:mod:`contactcore.estimate`) it is taken per profile quantity as the RMS
+of the estimated error over the RMS of the true error of the finer run
+(the closed form sampled by the same code as the method); for the
+Zienkiewicz–Zhu estimate as ``η / ‖σ − σ_h‖_E``, both on the same Gauss
+points, away from singular points (:func:`verification.agreement.default_exclusion`).
+A quantity whose true error is at round-off (:data:`ROUNDOFF` of its
+largest exact value), or whose exact value is zero, has no effectivity: its
+row says so.
+
+Cases: the interface patch, the pressurised and the twisted rod, the
+quadratic layers (shear) and the layered Coulomb slip, each with profiles
+through Γ and the bulk; every method and degree at the two finest rungs of
+its rate test (``LADDERS``).
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from contactcore import InterfaceProfile, LineProfile, ProfileData, sample_profiles
+from contactcore import estimate as est
+from contactcore.discretisation import solve
+
+from . import methods
+from .agreement import default_exclusion
+from .closed_forms import interface_patch, layered_slip, pressurised_rod, quadratic_layers, twisted_rod
+from .sweeps import PATCH_PINS
+
+#: A true RMS error below this fraction of the quantity's largest exact
+#: |value| is round-off (the patch tests' level, tests/tolerances.py
+#: PATCH_ROUNDOFF): there is no discretisation error to estimate.
+ROUNDOFF = 1e-8
+
+BULK = ("ux", "uy", "sxx", "syy", "sxy")
+GAMMA = ("gN", "gT", "tN", "tT")
+
+
+def _with_profiles(case, *profiles):
+    case.scene = case.scene.with_changes(profiles=profiles)
+    return case
+
+
+#: Case name -> the closed form with its profiles (quantities whose exact
+#: value is zero left out where a profile can choose).
+CASES = {
+    "patch": lambda: _with_profiles(interface_patch(30.0, pins=PATCH_PINS),
+                                    InterfaceProfile("gamma", GAMMA, parameter="arclength"),
+                                    LineProfile("line", (0.05, 0.2), (0.95, 0.8), BULK)),
+    "pressurised_rod": lambda: _with_profiles(pressurised_rod(), InterfaceProfile("gamma", ("gN", "tN")),
+                                              LineProfile("radial", (0.0, 0.0), (1.0, 0.0), ("ux", "sxx", "syy"))),
+    "twisted_rod": lambda: _with_profiles(twisted_rod(), InterfaceProfile("gamma", ("gT", "tT")),
+                                          LineProfile("radial", (0.0, 0.0), (1.0, 0.0), ("uy", "sxy"))),
+    "quadratic_layers": lambda: _with_profiles(quadratic_layers("shear"),
+                                               InterfaceProfile("gamma", ("gT", "tT"), parameter="arclength"),
+                                               LineProfile("vertical", (0.5, 0.0), (0.5, 1.0), ("ux", "sxy"))),
+    "layered_slip": layered_slip,
+}
+
+#: (method, degree) -> (discretisation options, h of the two finest rungs of
+#: its rate tests (tests/test_contract.py's rod ladders, tests/
+#: test_verification.py's twisted rod), per case where they differ).
+VARIANTS = {
+    ("fe", 1): ({}, {"default": (0.1, 0.05)}),
+    ("fe", 2): ({}, {"default": (0.1, 0.05)}),
+    ("xfem", 1): ({}, {"default": (0.1, 0.05)}),
+    ("xfem", 2): ({}, {"default": (0.1, 0.05), "pressurised_rod": (0.05, 0.025)}),
+    ("efgm", 1): ({}, {"default": (0.05, 0.025)}),
+    ("efgm", 2): ({"gauss": 12}, {"default": (0.1, 0.05)}),
+}
+
+
+def rungs(case: str, key: tuple) -> tuple[float, float]:
+    ladders = VARIANTS[key][1]
+    return ladders.get(case, ladders["default"])
+
+
+def exact_profiles(case) -> dict[str, ProfileData]:
+    """The closed form's profiles, sampled as a method's are (the layered
+    slip's Γ from its final state: its law has history)."""
+    scene = case.scene
+    if not hasattr(case, "history"):
+        return {p.id: p for p in sample_profiles(scene, case)}
+    state = case.history()[-1]
+    fields = case.fields(state)
+    out = {}
+    for prof in scene.profiles:
+        if set(prof.quantities) <= set(BULK):
+            out[prof.id] = sample_profiles(scene.with_changes(profiles=(prof,)), fields)[0]
+            continue
+        line = scene.with_changes(profiles=(LineProfile(prof.id, prof.start, prof.end, ("ux",)),))
+        s = sample_profiles(line, fields)[0]
+        n = len(s.columns["s"])
+        values = {"gN": -state.p / case.kN, "gT": state.tau / case.kT + state.slip, "tN": -state.p,
+                  "tT": state.tau}
+        out[prof.id] = ProfileData(prof.id, s.parameter, {**{k: s.columns[k] for k in ("s", "x", "y")},
+                                                          **{q: np.full(n, values[q]) for q in prof.quantities}})
+    return out
+
+
+def profile_rows(estimate: est.Estimate, got: dict, exact: dict) -> list[dict]:
+    """One row per profile quantity: estimated and true RMS error of the
+    finer run and the effectivity (None at round-off or for a zero)."""
+    rows = []
+    for pid, qs in estimate.profiles.items():
+        for q, e in qs.items():
+            want = exact[pid].columns[q]
+            true = float(np.sqrt(np.mean((got[pid].columns[q] - want) ** 2)))
+            scale = float(np.max(np.abs(want)))
+            kind = "zero" if scale == 0 else "round-off" if true <= ROUNDOFF * scale else "error"
+            rows.append({"profile": pid, "quantity": q, "estimate": e.rms, "true": true, "order": e.order,
+                         "kind": kind, "effectivity": e.rms / true if kind == "error" else None})
+    return rows
+
+
+def energy_row(scene, result, estimate: est.Estimate, exact, exclude: float) -> dict:
+    """The ZZ estimate against ``‖σ − σ_h‖_E`` on the same Gauss points."""
+    er = est.energy_rule(scene, estimate.hs[-1], exclude)
+    sigma = result.fields.stress(er.rule.points, er.rule.bodies)
+    true = est.energy_norm(scene, er, exact.stress(er.rule.points, er.rule.bodies) - sigma)
+    norm = est.energy_norm(scene, er, sigma)
+    eta = estimate.energy.eta
+    kind = "round-off" if true <= ROUNDOFF * norm else "error"
+    return {"profile": "energy", "quantity": "‖σ‖_E", "estimate": eta, "true": true, "order": None, "kind": kind,
+            "effectivity": eta / true if kind == "error" else None}
+
+
+def effectivity(case_name: str, key: tuple) -> list[dict]:
+    """Every row of one case and one (method, degree) at its two rungs."""
+    case = CASES[case_name]()
+    options, _ = VARIANTS[key]
+    disc = methods.discretisation(key[0])(degree=key[1], **options)
+    coarse, fine = rungs(case_name, key)
+    exclude = default_exclusion(case.scene)
+    results = [solve(case.scene, disc, h) for h in (coarse, fine)]
+    estimate = est.estimate_runs(case.scene, results, exclude)
+    got = {p.id: p for p in sample_profiles(case.scene, results[-1].fields, results[-1].interface)}
+    field_exact = case.fields(case.history()[-1]) if hasattr(case, "history") else case
+    rows = profile_rows(estimate, got, exact_profiles(case)) + [energy_row(case.scene, results[-1], estimate,
+                                                                           field_exact, exclude)]
+    return [{"case": case_name, "method": key[0], "degree": key[1], "h": fine, **r} for r in rows]
