@@ -74,6 +74,12 @@ class InterfaceOperator:
     #: -> local values; ``reverse``: local contributions -> owned sums);
     #: None in serial (local = owned = all).
     exchange: object = None
+    #: With the law enforced exactly (Nitsche), the consistent traction
+    #: ``τ = S u = [n·{σ}n, t·{σ}n]`` of each point (2m × n, ``G``'s rows,
+    #: columns and numbering) and the stabilisation ``γ`` (m,) in Pa/m
+    #: (:mod:`contactcore.traction`); None under the penalty.
+    S: sp.csr_matrix | None = None
+    stabilisation: np.ndarray | None = None
 
     @property
     def size(self) -> int:
