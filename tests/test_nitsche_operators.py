@@ -1,0 +1,127 @@
+"""Nitsche's consistent traction ``S`` and stabilisation ``γ`` of efgm and
+xfem (contactcore.traction, efgm.traction, xdolfinx.xfem_traction).
+
+The patch test of ``S``: with a polynomial field on each side that the
+basis reproduces (linear, and quadratic at degree 2), ``S u`` at every Γ
+point is ``w₋ τ(σ₋) + w₊ τ(σ₊)`` with the exact stresses and weights
+in [0, 1] summing to 1 — on a straight, an inclined and a circular Γ.  On
+a horizontal Γ a fraction θ up a row of cells the weights and ``γ`` are
+known in closed form (Annavarapu et al. 2012): every cell holding Γ has
+parts θh² and (1 − θ)h²; a sliver side's weight → 0 with θ while γ stays
+bounded.
+"""
+import dataclasses
+
+import numpy as np
+import pytest
+
+import tolerances as tol
+from contactcore import BODIES, CircleInterface, LineInterface, load_scene
+from contactcore import tolerances as ctol
+from contactcore.traction import nitsche_weights
+from nitsche_fields import PolynomialFields, build, exact, frame_traction, unknowns
+from placements import inclined_A
+
+#: Coarse: the operators are exact on any mesh.
+H = 0.1
+
+#: Moduli of the − and + bodies: unequal, so the weights are not ½.
+MODULI = (2e11, 5e10)
+
+METHODS = [("efgm", 1, {}), ("efgm", 2, {}), ("xfem", 1, {"cell": "quad"}), ("xfem", 2, {"cell": "quad"}),
+           ("xfem", 1, {"cell": "triangle"}), ("xfem", 2, {"cell": "triangle"})]
+IDS = [f"{m}-P{d}{'-' + o['cell'] if o else ''}" for m, d, o in METHODS]
+
+
+def _bimaterial(scene):
+    materials = {b: dataclasses.replace(scene.materials[b], E=E) for b, E in zip(BODIES, MODULI)}
+    return exact(scene.with_changes(materials=materials))
+
+
+def _horizontal(height: float):
+    return _bimaterial(load_scene("A").with_changes(interface=LineInterface((0.0, height), (0.0, 1.0)), profiles=()))
+
+
+GAMMAS = {"horizontal": lambda: _horizontal(0.53), "inclined": lambda: _bimaterial(inclined_A(10.0, 0.47)),
+          "circle": lambda: _bimaterial(load_scene("C").with_changes(interface=CircleInterface((1.0, 1.5), 0.45)))}
+
+
+def _split(method, degree, options, scene, seed=0):
+    """The interface, and for a seeded field per side: ``S u`` and the
+    exact tractions of the − and + sides at Γ's points."""
+    built = build(method, scene, degree, H, **options)
+    itf = built.system.interface
+    fields = PolynomialFields(degree, seed)
+    tau = (itf.S @ unknowns(method, built, fields)).reshape(-1, 2)
+    D = scene.voigt_matrices()
+    normals = scene.interface.normals(itf.points)
+    sides = [frame_traction(fields.stress(b, itf.points, D), normals) for b in (0, 1)]
+    built.system.close()
+    return itf, tau, sides
+
+
+def _weights(tau, sides):
+    """The weight w₋ (P,) that best writes ``tau`` as ``w₋ τ₋ + (1 − w₋) τ₊``,
+    and what is left over relative to the largest |τ|."""
+    minus, plus = sides
+    w = np.sum((tau - plus) * (minus - plus), axis=1) / np.sum((minus - plus) ** 2, axis=1)
+    rest = tau - (w[:, None] * minus + (1 - w[:, None]) * plus)
+    return w, float(np.max(np.abs(rest)) / np.max(np.abs(tau)))
+
+
+@pytest.mark.parametrize("gamma", list(GAMMAS))
+@pytest.mark.parametrize("method, degree, options", METHODS, ids=IDS)
+def test_traction_patch_test(method, degree, options, gamma):
+    """``S u`` is the weighted exact traction at every point, the weights in [0, 1]."""
+    itf, tau, sides = _split(method, degree, options, GAMMAS[gamma]())
+    assert itf.S.shape == itf.G.shape and len(itf.stabilisation) == itf.size > 0
+    w, rest = _weights(tau, sides)
+    assert rest <= tol.PATCH_ROUNDOFF
+    assert np.all((w >= -tol.PATCH_ROUNDOFF) & (w <= 1 + tol.PATCH_ROUNDOFF)), (w.min(), w.max())
+    assert np.all(itf.stabilisation > 0)
+
+
+def _closed_form(theta: float) -> tuple[float, float]:
+    """w₋ and γ of a cell of side H whose − part is θH² (module doc)."""
+    compliance = np.array([theta, 1 - theta]) * H ** 2 / np.array(MODULI)
+    return compliance[0] / compliance.sum(), ctol.NITSCHE_BETA * 2 * H / compliance.sum()
+
+
+@pytest.mark.parametrize("theta", [0.3, 1.0])
+@pytest.mark.parametrize("method, degree, options", METHODS[:3], ids=IDS[:3])
+def test_weights_and_stabilisation_on_a_horizontal_gamma(method, degree, options, theta):
+    """Γ θ up a row of cells: ``w₋`` and ``γ`` in closed form; θ = 1 puts Γ
+    on the cells' edges, whose points belong to the cell below (wholly −)."""
+    itf, tau, sides = _split(method, degree, options, _horizontal(0.5 + (theta - 1) * H))
+    w, rest = _weights(tau, sides)
+    w_minus, gamma = _closed_form(theta)
+    assert rest <= tol.PATCH_ROUNDOFF
+    assert np.max(np.abs(w - w_minus)) <= tol.PATCH_ROUNDOFF
+    assert np.max(np.abs(itf.stabilisation / gamma - 1)) <= tol.PATCH_ROUNDOFF
+
+
+@pytest.mark.parametrize("method, degree, options", [METHODS[2], METHODS[4]], ids=[IDS[2], IDS[4]])
+def test_a_sliver_side_gets_no_weight_and_gamma_stays_bounded(method, degree, options):
+    """xfem, Γ θ = 1e-2 … 1e-6 of a cell above a row of nodes: the − side's
+    weight falls as θ (a cut triangle's − part is at most 2θ of it, so
+    ``w₋ <= 2θ (E₊/E₋)/(1 − 2θ)``), and γ stays below twice (a triangle's
+    half area) its θ → 0 limit on a square, ``β·2H E₊/H²``, times 1 + 2θ."""
+    for theta in (1e-2, 1e-4, 1e-6):
+        itf, tau, sides = _split(method, degree, options, _horizontal(0.5 + theta * H))
+        w, rest = _weights(tau, sides)
+        assert rest <= tol.PATCH_ROUNDOFF
+        assert np.all(w >= -tol.PATCH_ROUNDOFF) and np.max(w) <= 2 * theta * MODULI[1] / MODULI[0] / (1 - 2 * theta)
+        assert np.max(itf.stabilisation) <= 2 * (1 + 2 * theta) * _closed_form(0.0)[1]
+
+
+def test_weights_sum_to_one_and_a_sliver_gets_none():
+    """nitsche_weights: the weights sum to 1; as one part's area θ → 0,
+    its weight is at most θ (E₊/E₋)/(1 − θ) and γ stays below its limit
+    β·2|Γ|E₊/((1 − θ)|Ω|)."""
+    theta = np.array([0.5, 1e-3, 1e-6, 1e-9, 0.0])
+    areas = np.column_stack([theta, 1 - theta])
+    w, gamma = nitsche_weights(areas, np.array(MODULI), np.ones(len(theta)), 2.0)
+    assert np.allclose(w.sum(axis=1), 1.0, rtol=0, atol=1e-15)
+    assert np.all(w[:, 0] <= theta * MODULI[1] / MODULI[0] / (1 - theta))
+    assert np.all(gamma <= 2.0 * 2 * MODULI[1] / (1 - theta))
+    assert gamma[-1] == pytest.approx(2.0 * 2 * MODULI[1], rel=1e-15)
