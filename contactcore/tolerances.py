@@ -342,11 +342,3 @@ MIN_CELLS_ACROSS = 4
 #: h = 0.05, and meshed 1e-3 (h/50).  h/100 keeps the cases that mesh.
 MESH_MIN_FEATURE = 1e-2
 
-#: The dimensionless factor β of Nitsche's stabilisation
-#: ``γ = β · 2|Γᵉ| / Σ_k(|Ω_kᵉ|/E_k)`` (:mod:`contactcore.traction`), unless
-#: the law's ``stabilisation`` overrides it.  Coercivity needs ``2β`` above
-#: the inverse-estimate constant of ``‖{σ}n‖²_Γᵉ`` against the cell's
-#: energy (1 for a constant stress and E-scaled D; larger for degree 2 and
-#: for ν near 1/2); 10 leaves room for both.  Provisional here: the exact
-#: enforcement's own default replaces it.
-NITSCHE_BETA = 10.0

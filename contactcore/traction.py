@@ -15,11 +15,12 @@ robust Nitsche's formulation for interface problems", CMAME 233 (2012)
 cell ``e`` that holds the point, cut by Γ into ``Ω₋ᵉ`` and ``Ω₊ᵉ``:
 
     w_k = (|Ω_kᵉ| / E_k) / Σ_j (|Ω_jᵉ| / E_j),
-    γ   = β · 2 |Γᵉ| / Σ_j (|Ω_jᵉ| / E_j)        (Pa/m),
+    γ   = β γ₀,   γ₀ = 2 |Γᵉ| / Σ_j (|Ω_jᵉ| / E_j)        (Pa/m),
 
-``|Γᵉ|`` the length of Γ in the cell and ``β`` dimensionless.  A sliver
-side (``|Ω_kᵉ| → 0``) gets a weight → 0, and ``γ`` stays bounded by
-``β · 2 |Γᵉ| E_big / |Ω_bigᵉ|``: the traction is read from the side that
+``|Γᵉ|`` the length of Γ in the cell and ``β`` the law's dimensionless
+``stabilisation``: the methods give ``γ₀``, the exact laws multiply it.  A sliver
+side (``|Ω_kᵉ| → 0``) gets a weight → 0, and ``γ₀`` stays bounded by
+``2 |Γᵉ| E_big / |Ω_bigᵉ|``: the traction is read from the side that
 resolves it, so no inf-sup condition is met or needed.  numpy and scipy only.
 """
 from __future__ import annotations
@@ -30,25 +31,20 @@ import scipy.sparse as sp
 from .geometry import tangent_of
 
 
-def stabilisation_factor(scene, default: float) -> float | None:
-    """``β`` when the scene's law asks for exact enforcement (its own
-    ``stabilisation``, else ``default``), None under the penalty."""
-    law = scene.law
-    if getattr(law, "enforcement", "penalty") != "exact":
-        return None
-    beta = getattr(law, "stabilisation", None)
-    return default if beta is None else float(beta)
+def wants_traction(scene) -> bool:
+    """Whether the scene's law is enforced exactly, so that the methods
+    build ``S`` and ``γ₀``."""
+    return getattr(scene.law, "enforcement", "penalty") == "exact"
 
 
-def nitsche_weights(areas: np.ndarray, moduli: np.ndarray, length: np.ndarray, beta: float
-                    ) -> tuple[np.ndarray, np.ndarray]:
-    """``(w, γ)`` of points (module doc) from the areas (m, 2) of the − and
+def nitsche_weights(areas: np.ndarray, moduli: np.ndarray, length: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``(w, γ₀)`` of points (module doc) from the areas (m, 2) of the − and
     + parts of each point's cell, the Young's moduli (2,) of the − and +
     bodies and the length (m,) of Γ in the cell: ``w`` (m, 2) with rows
-    summing to 1, ``γ`` (m,) in Pa/m."""
+    summing to 1, ``γ₀ = γ/β`` (m,) in Pa/m."""
     compliance = np.asarray(areas, float) / np.asarray(moduli, float)[None, :]
     total = compliance.sum(axis=1)
-    return compliance / total[:, None], beta * 2.0 * np.asarray(length, float) / total
+    return compliance / total[:, None], 2.0 * np.asarray(length, float) / total
 
 
 def traction_maps(normals: np.ndarray, D: np.ndarray, weights: np.ndarray) -> np.ndarray:

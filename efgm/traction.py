@@ -1,8 +1,8 @@
 """EFGM's consistent interface traction for Nitsche's method: ``S`` with
-``τ = S u = [n·{σ}n, t·{σ}n]`` at Γ's points, and the stabilisation ``γ``
+``τ = S u = [n·{σ}n, t·{σ}n]`` at Γ's points, and the stabilisation ``γ₀``
 (:mod:`contactcore.traction` for the maths and its source).
 
-EFGM has no cells of its own; the weights and ``γ`` of a Γ point are
+EFGM has no cells of its own; the weights and ``γ₀`` of a Γ point are
 taken on the background integration cell that holds it (its
 ``Ω₋ᵉ``, ``Ω₊ᵉ``: the areas the volume rule gives each body in that cell,
 the same rule that integrates ``K``; ``Γᵉ``: the length of Γ in the cell
@@ -61,13 +61,13 @@ def cell_parts(scene, vol: Rule, origin: np.ndarray, step: np.ndarray, counts: n
 
 
 def traction(scene, approx, shape_values, vol: Rule, cells: tuple, points: np.ndarray, normals: np.ndarray,
-             gauss: int, beta: float):
-    """``(S, γ)`` at Γ's ``points`` (module doc): ``shape_values`` the MLS
+             gauss: int):
+    """``(S, γ₀)`` at Γ's ``points`` (module doc): ``shape_values`` the MLS
     functions there for the − and + bodies, ``cells`` the background
     cells' ``(origin, step, counts)``."""
     areas, length = cell_parts(scene, vol, *cells, points, normals, gauss)
     moduli = np.array([scene.materials[b].E for b in BODIES])
-    weights, gamma = nitsche_weights(areas, moduli, length, beta)
+    weights, gamma = nitsche_weights(areas, moduli, length)
     m = len(points)
     strains = [approx.strain_operator(sv, np.full(m, b)) for b, sv in enumerate(shape_values)]
     return traction_operator(traction_maps(normals, scene.voigt_matrices(), weights), strains), gamma

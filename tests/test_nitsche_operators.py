@@ -1,13 +1,13 @@
-"""Nitsche's consistent traction ``S`` and stabilisation ``γ`` of efgm and
+"""Nitsche's consistent traction ``S`` and stabilisation ``γ₀`` of efgm and
 xfem (contactcore.traction, efgm.traction, xdolfinx.xfem_traction).
 
 The patch test of ``S``: with a polynomial field on each side that the
 basis reproduces (linear, and quadratic at degree 2), ``S u`` at every Γ
 point is ``w₋ τ(σ₋) + w₊ τ(σ₊)`` with the exact stresses and weights
 in [0, 1] summing to 1 — on a straight, an inclined and a circular Γ.  On
-a horizontal Γ a fraction θ up a row of cells the weights and ``γ`` are
+a horizontal Γ a fraction θ up a row of cells the weights and ``γ₀`` are
 known in closed form (Annavarapu et al. 2012): every cell holding Γ has
-parts θh² and (1 − θ)h²; a sliver side's weight → 0 with θ while γ stays
+parts θh² and (1 − θ)h²; a sliver side's weight → 0 with θ while γ₀ stays
 bounded.
 """
 import dataclasses
@@ -17,7 +17,6 @@ import pytest
 
 import tolerances as tol
 from contactcore import BODIES, CircleInterface, LineInterface, load_scene
-from contactcore import tolerances as ctol
 from contactcore.traction import nitsche_weights
 from nitsche_fields import PolynomialFields, build, exact, frame_traction, unknowns
 from placements import inclined_A
@@ -82,15 +81,15 @@ def test_traction_patch_test(method, degree, options, gamma):
 
 
 def _closed_form(theta: float) -> tuple[float, float]:
-    """w₋ and γ of a cell of side H whose − part is θH² (module doc)."""
+    """w₋ and γ₀ of a cell of side H whose − part is θH² (module doc)."""
     compliance = np.array([theta, 1 - theta]) * H ** 2 / np.array(MODULI)
-    return compliance[0] / compliance.sum(), ctol.NITSCHE_BETA * 2 * H / compliance.sum()
+    return compliance[0] / compliance.sum(), 2 * H / compliance.sum()
 
 
 @pytest.mark.parametrize("theta", [0.3, 1.0])
 @pytest.mark.parametrize("method, degree, options", METHODS[:3], ids=IDS[:3])
 def test_weights_and_stabilisation_on_a_horizontal_gamma(method, degree, options, theta):
-    """Γ θ up a row of cells: ``w₋`` and ``γ`` in closed form; θ = 1 puts Γ
+    """Γ θ up a row of cells: ``w₋`` and ``γ₀`` in closed form; θ = 1 puts Γ
     on the cells' edges, whose points belong to the cell below (wholly −)."""
     itf, tau, sides = _split(method, degree, options, _horizontal(0.5 + (theta - 1) * H))
     w, rest = _weights(tau, sides)
@@ -104,8 +103,8 @@ def test_weights_and_stabilisation_on_a_horizontal_gamma(method, degree, options
 def test_a_sliver_side_gets_no_weight_and_gamma_stays_bounded(method, degree, options):
     """xfem, Γ θ = 1e-2 … 1e-6 of a cell above a row of nodes: the − side's
     weight falls as θ (a cut triangle's − part is at most 2θ of it, so
-    ``w₋ <= 2θ (E₊/E₋)/(1 − 2θ)``), and γ stays below twice (a triangle's
-    half area) its θ → 0 limit on a square, ``β·2H E₊/H²``, times 1 + 2θ."""
+    ``w₋ <= 2θ (E₊/E₋)/(1 − 2θ)``), and γ₀ stays below twice (a triangle's
+    half area) its θ → 0 limit on a square, ``2H E₊/H²``, times 1 + 2θ."""
     for theta in (1e-2, 1e-4, 1e-6):
         itf, tau, sides = _split(method, degree, options, _horizontal(0.5 + theta * H))
         w, rest = _weights(tau, sides)
@@ -116,12 +115,12 @@ def test_a_sliver_side_gets_no_weight_and_gamma_stays_bounded(method, degree, op
 
 def test_weights_sum_to_one_and_a_sliver_gets_none():
     """nitsche_weights: the weights sum to 1; as one part's area θ → 0,
-    its weight is at most θ (E₊/E₋)/(1 − θ) and γ stays below its limit
-    β·2|Γ|E₊/((1 − θ)|Ω|)."""
+    its weight is at most θ (E₊/E₋)/(1 − θ) and γ₀ stays below its limit
+    2|Γ|E₊/((1 − θ)|Ω|)."""
     theta = np.array([0.5, 1e-3, 1e-6, 1e-9, 0.0])
     areas = np.column_stack([theta, 1 - theta])
-    w, gamma = nitsche_weights(areas, np.array(MODULI), np.ones(len(theta)), 2.0)
+    w, gamma = nitsche_weights(areas, np.array(MODULI), np.ones(len(theta)))
     assert np.allclose(w.sum(axis=1), 1.0, rtol=0, atol=1e-15)
     assert np.all(w[:, 0] <= theta * MODULI[1] / MODULI[0] / (1 - theta))
-    assert np.all(gamma <= 2.0 * 2 * MODULI[1] / (1 - theta))
-    assert gamma[-1] == pytest.approx(2.0 * 2 * MODULI[1], rel=1e-15)
+    assert np.all(gamma <= 2 * MODULI[1] / (1 - theta))
+    assert gamma[-1] == pytest.approx(2 * MODULI[1], rel=1e-15)

@@ -1,5 +1,5 @@
 """XFEM's consistent interface traction for Nitsche's method: ``S`` with
-``τ = S u = [n·{σ}n, t·{σ}n]`` at Γ's points, and the stabilisation ``γ``
+``τ = S u = [n·{σ}n, t·{σ}n]`` at Γ's points, and the stabilisation ``γ₀``
 (:mod:`contactcore.traction` for the maths and its source: Annavarapu,
 Hautefeuille and Dolbow, CMAME 2012).
 
@@ -11,7 +11,7 @@ part empty) and ``Γᵉ`` Γ's piece in it.  Body k's stress at a point of cell
 ``σ_k = D_k B_k u_c`` with ``B_k`` the strain matrix of the cell's block
 layout (u, then the shifted Heaviside ``(H_k − H_J)`` a, per node).  A
 sliver side gets a weight → 0 as the cut fraction does, so its barely
-determined enriched unknowns never reach the traction, and ``γ`` stays
+determined enriched unknowns never reach the traction, and ``γ₀`` stays
 bounded (:func:`contactcore.traction.nitsche_weights`).
 
 The rows are in the order of :func:`xdolfinx.xfem.interface_operator`
@@ -26,11 +26,10 @@ import dataclasses
 import numpy as np
 
 from contactcore import BODIES
-from contactcore import tolerances as tol
 from contactcore.assembly import Triplets
 from contactcore.bodies import Body
 from contactcore.newton import InterfaceOperator
-from contactcore.traction import nitsche_weights, stabilisation_factor, traction_maps
+from contactcore.traction import nitsche_weights, traction_maps, wants_traction
 
 
 def cell_parts(space, c: int) -> np.ndarray:
@@ -41,15 +40,15 @@ def cell_parts(space, c: int) -> np.ndarray:
     return areas
 
 
-def cell_traction(space, c: int, D: np.ndarray, moduli: np.ndarray, beta: float):
+def cell_traction(space, c: int, D: np.ndarray, moduli: np.ndarray):
     """Cell ``c``'s rows of ``S`` (P, 2, 4n) in its block layout, and
-    ``γ`` (P,), at the points of its Γ rule."""
+    ``γ₀`` (P,), at the points of its Γ rule."""
     from .xfem import _strain_matrix
 
     pts, w, normals = space.gamma_rules[c]
     P = len(w)
     areas = np.broadcast_to(cell_parts(space, c), (P, 2))
-    weights, gamma = nitsche_weights(areas, moduli, np.full(P, np.sum(w)), beta)
+    weights, gamma = nitsche_weights(areas, moduli, np.full(P, np.sum(w)))
     maps = traction_maps(normals, D, weights)
     _, dN = space.tabulate(c, pts)
     rows = np.zeros((P, 2, 4 * dN.shape[1]))
@@ -60,17 +59,17 @@ def cell_traction(space, c: int, D: np.ndarray, moduli: np.ndarray, beta: float)
     return rows, gamma
 
 
-def traction_operator(space, beta: float):
-    """``(S, γ)`` of the space's Γ points (module doc): ``S`` (2m × local
+def traction_operator(space):
+    """``(S, γ₀)`` of the space's Γ points (module doc): ``S`` (2m × local
     unknowns) in :func:`xdolfinx.xfem.interface_operator`'s rows and
-    columns, ``γ`` (m,) in Pa/m."""
+    columns, ``γ₀`` (m,) in Pa/m."""
     scene = space.scene
     D = scene.voigt_matrices()
     moduli = np.array([scene.materials[b].E for b in BODIES])
     trip = Triplets((0, 2 * space.num_blocks))
     gammas, m = [], 0
     for c in (c for c in space.owned_band if c in space.gamma_rules):
-        rows, gamma = cell_traction(space, c, D, moduli, beta)
+        rows, gamma = cell_traction(space, c, D, moduli)
         P = len(gamma)
         blocks = space.cell_blocks(c)  # (2n,): per node its u block, then its a block (−1 if none)
         cols = np.where(blocks[:, None] >= 0, 2 * blocks[:, None] + np.arange(2), -1).ravel()  # (4n,)
@@ -82,10 +81,9 @@ def traction_operator(space, beta: float):
 
 
 def with_traction(interface: InterfaceOperator, space) -> InterfaceOperator:
-    """``interface`` with ``S`` and ``γ`` when the scene's law is enforced
+    """``interface`` with ``S`` and ``γ₀`` when the scene's law is enforced
     exactly, else as it is."""
-    beta = stabilisation_factor(space.scene, tol.NITSCHE_BETA)
-    if beta is None:
+    if not wants_traction(space.scene):
         return interface
-    S, gamma = traction_operator(space, beta)
+    S, gamma = traction_operator(space)
     return dataclasses.replace(interface, S=S, stabilisation=gamma)
