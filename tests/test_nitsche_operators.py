@@ -11,6 +11,7 @@ parts θh² and (1 − θ)h²; a sliver side's weight → 0 with θ while γ₀ 
 bounded.
 """
 import dataclasses
+import json
 
 import numpy as np
 import pytest
@@ -124,3 +125,60 @@ def test_weights_sum_to_one_and_a_sliver_gets_none():
     assert np.all(w[:, 0] <= theta * MODULI[1] / MODULI[0] / (1 - theta))
     assert np.all(gamma <= 2 * MODULI[1] / (1 - theta))
     assert gamma[-1] == pytest.approx(2 * MODULI[1], rel=1e-15)
+
+
+#: Builds scene A with Γ inclined, its law exact, by argv[1] (efgm or xfem)
+#: at degree argv[2] serially (COMM_SELF) and spread over the ranks, and
+#: prints on rank 0 the largest relative differences of ``S u`` and ``γ₀``
+#: at Γ's points (in the canonical order along Γ), and whether the points
+#: are the same.  ``u``: a smooth field of the nodes' coordinates, its
+#: enriched values another (so the numbering of neither run enters).
+PROBE = """
+import json, sys
+import numpy as np
+from mpi4py import MPI
+sys.path.insert(0, "tests")
+from contactcore.collective import Collective
+from contactcore.newton import canonical_order
+from nitsche_fields import build, exact, unknowns
+from placements import inclined_A
+
+method, degree = sys.argv[1], int(sys.argv[2])
+scene = exact(inclined_A(20.0, 0.4))
+f = lambda b, x: np.column_stack([np.sin(3 * x[:, 0] + b), np.cos(2 * x[:, 1] - x[:, 0] * b)]) * 1e-3
+ranks = Collective(MPI.COMM_WORLD)
+
+def traction(comm, serial_unknowns=None):
+    built = build(method, scene, degree, 0.1, comm=comm)
+    itf = built.system.interface
+    if method == "efgm" and serial_unknowns is not None:  # the serial numbering's, at this rank's columns
+        x = serial_unknowns[itf.exchange.indices]
+    else:  # xfem: this rank's local unknowns
+        x = unknowns(method, built, f)
+    out = ((itf.S @ x).reshape(-1, 2), itf.stabilisation, itf.points, x)
+    built.system.close()
+    return out
+
+serial = traction(MPI.COMM_SELF)
+spread = [ranks.gather(a) for a in traction(None, serial[3])[:3]]
+o_s, o_p = canonical_order(scene.interface, serial[2]), canonical_order(scene.interface, spread[2])
+worst = lambda a, b: float(np.max(np.abs(a - b)) / np.max(np.abs(a)))
+out = {"traction": worst(serial[0][o_s], spread[0][o_p]), "stabilisation": worst(serial[1][o_s], spread[1][o_p]),
+       "same_points": bool(np.array_equal(serial[2][o_s], spread[2][o_p]))}
+if ranks.rank == 0:
+    print("PROBE", json.dumps(out), flush=True)
+"""
+
+
+@pytest.mark.parametrize("method, degree", [("efgm", 1), ("xfem", 2)])
+def test_traction_on_two_ranks_is_the_serial_one(method, degree):
+    """Under mpirun -n 2, ``S u`` and ``γ₀`` at Γ's points (each rank its
+    own, gathered) are the serial ones."""
+    from test_mpi import mpirun
+
+    out = mpirun(2, "-c", PROBE, method, degree, timeout=180)
+    lines = [line for line in out.stdout.splitlines() if line.startswith("PROBE")]
+    assert out.returncode == 0 and len(lines) == 1, out.stdout + out.stderr
+    probe = json.loads(lines[0].split(" ", 1)[1])
+    assert probe["same_points"], probe
+    assert probe["traction"] <= tol.EFGM_DISTRIBUTED_ASSEMBLY and probe["stabilisation"] <= tol.EFGM_DISTRIBUTED_ASSEMBLY, probe
