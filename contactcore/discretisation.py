@@ -36,6 +36,7 @@ from typing import Any, Callable, ClassVar
 
 import numpy as np
 
+from . import exact
 from . import tolerances as tol
 from .errors import DiscretisationError
 from .geometry import LevelSetInterface, Rectangle
@@ -151,7 +152,8 @@ def resolution(scene, h: float | None, paper: bool, grid: str) -> Resolution:
 
 class Reuse:
     """Built systems kept between solves that differ only in what a system
-    does not depend on: the interface law and its parameters, the load path
+    does not depend on: the interface law and its parameters (not how it
+    is enforced: an exact law's system holds Nitsche's operators), the load path
     (increments, ``follow_path``), the profiles and the names.  A study of
     k_N, k_T or μ then meshes, evaluates shape functions and assembles once
     per discretisation (issue 24).
@@ -177,7 +179,8 @@ class Reuse:
         options = {f.name: getattr(discretisation, f.name) for f in dataclasses.fields(discretisation)
                    if f.name != "comm"}
         try:
-            blob = pickle.dumps((type(discretisation).__name__, options, bare, resolution))
+            blob = pickle.dumps((type(discretisation).__name__, options, bare, resolution,
+                                 getattr(scene.law, "enforcement", "penalty")))
         except (pickle.PicklingError, TypeError, AttributeError):
             return None
         return hashlib.sha256(blob).digest()
@@ -219,6 +222,7 @@ def solve(scene, discretisation: Discretisation, h: float | None = None, *, pape
     built = (reuse.build(scene, discretisation, resolution, timings) if reuse is not None
              else discretisation.build(scene, resolution, timings))
     try:
+        exact.check(scene.law, built.system.interface, discretisation.name)
         with timings.measure("solve"):
             x, path, report = solve_increments(scene, built.system, progress)
     finally:

@@ -95,7 +95,10 @@ def check_springs(scene, weights) -> None:
 
 
 def _springs(scene):
-    """``(component, k, k in the user's units)`` of the law's springs."""
+    """``(component, k, k in the user's units)`` of the law's springs (none
+    for a law enforced exactly)."""
+    if not hasattr(scene.law, "kN"):
+        return ()
     user = scene.user.law
     return (("N", scene.law.kN, user.kN), ("T", scene.law.kT, user.kT))
 
@@ -157,8 +160,9 @@ def _restraint(scene, interface_points, interface_weights) -> tuple[np.ndarray, 
         # a spring stiffer than E per |Γ| holds like a support; capping it
         # there keeps the eigenvalues of Q within double precision
         cap = 1.0 / np.sum(w)
-        QN = (w[:, None] * gN).T @ gN * min(scene.law.kN / E, cap)
-        QT = (w[:, None] * gT).T @ gT * min(scene.law.kT / E, cap)
+        # a law enforced exactly holds like the stiffest spring
+        QN = (w[:, None] * gN).T @ gN * min(getattr(scene.law, "kN", np.inf) / E, cap)
+        QT = (w[:, None] * gT).T @ gT * min(getattr(scene.law, "kT", np.inf) / E, cap)
     else:
         QN = QT = np.zeros((6, 6))
     return Q + QN + QT, QN, QT
@@ -196,8 +200,7 @@ def check_restraint(scene, interface_points, interface_weights) -> None:
     if not len(free):
         return
     v = vec[:, free[0]]
-    user = scene.user.law
-    why = [f"k_{c} is {k:.3g}" for c, k, Qc in (("N", user.kN, QN), ("T", user.kT, QT))
+    why = [f"k_{c} is {k_user:.3g}" for (c, _, k_user), Qc in zip(_springs(scene), (QN, QT))
            if 0 < np.trace(Qc) <= tol.RIGID_MODE_FREE]
     why = " and ".join(why) + " (springs lost in round-off beside E)" if why else "no support or pin holds it"
     raise SolverError(f"scene {scene.name}: {_describe(scene, v)}: {why} — {len(free)} rigid-body mode(s) "

@@ -54,6 +54,10 @@ class _Law:
 
     parameters: ClassVar[tuple[str, ...]] = ("kN", "kT")
     has_history: ClassVar[bool] = False
+    #: how the law is enforced: by its springs (here) or exactly
+    #: (:mod:`contactcore.exact`, which evaluates these laws with per-point
+    #: stiffness arrays in place of k_N, k_T)
+    enforcement: ClassVar[str] = "penalty"
 
     @classmethod
     def from_params(cls, params: dict, path: str):
@@ -136,7 +140,8 @@ class UnilateralLaw(_Law):
         g, closed, tN = self._springs(g)
         tT = np.where(closed, self.kT * g[:, 1], 0.0)
         tangent = np.zeros((len(g), 2, 2))
-        tangent[closed] = np.diag([self.kN, self.kT])
+        tangent[:, 0, 0] = np.where(closed, self.kN, 0.0)
+        tangent[:, 1, 1] = np.where(closed, self.kT, 0.0)
         return LawResponse(np.column_stack([tN, tT]), tangent, None,
                            np.where(closed, STICK, OPEN).astype(np.int8))
 
@@ -179,28 +184,44 @@ class CoulombLaw(_Law):
         direction = np.sign(trial)
         tT = np.where(stick, trial, np.where(slip, limit * direction, 0.0))
         tangent = np.zeros((len(g), 2, 2))
-        tangent[closed, 0, 0] = self.kN
-        tangent[stick, 1, 1] = self.kT
-        tangent[slip, 1, 0] = -self.mu * self.kN * direction[slip]
+        tangent[:, 0, 0] = np.where(closed, self.kN, 0.0)
+        tangent[:, 1, 1] = np.where(stick, self.kT, 0.0)
+        tangent[:, 1, 0] = np.where(slip, -self.mu * self.kN * direction, 0.0)
         new_state = np.where(stick, s, g[:, 1] - tT / self.kT)
         status = np.where(stick, STICK, np.where(slip, SLIP, OPEN)).astype(np.int8)
         return LawResponse(np.column_stack([tN, tT]), tangent, new_state, status)
 
 
-#: Every interface law by the name a scene file gives it.
+#: Every penalty law by the name a scene file gives it.
 LAWS = {law.name: law for law in (LinearLaw, UnilateralLaw, CoulombLaw)}
 
 InterfaceLaw = LinearLaw | UnilateralLaw | CoulombLaw
 
+#: How a scene's ``[interface.law]`` may be enforced (``enforcement``).
+ENFORCEMENTS = ("penalty", "exact")
+
 
 def make_law(params: dict, path: str = "interface.law"):
-    """The law named by ``params["type"]`` built from the other entries."""
+    """The law named by ``params["type"]`` built from the other entries,
+    enforced as ``params["enforcement"]`` says (penalty by default; exact
+    laws and ``bonded``: :mod:`contactcore.exact`)."""
+    from . import exact  # it builds on these laws
     if not isinstance(params, dict):
         raise SceneError(path, "must be a table with a 'type' and the law's parameters")
+    known = [*LAWS, *exact.BONDED]
     kind = params.get("type")
     if kind is None:
-        raise SceneError(f"{path}.type", f"missing (one of: {', '.join(LAWS)})")
-    if kind not in LAWS:
-        raise SceneError(f"{path}.type", f"unknown interface law {kind!r} (known: {', '.join(LAWS)})")
+        raise SceneError(f"{path}.type", f"missing (one of: {', '.join(known)})")
+    if kind not in known:
+        raise SceneError(f"{path}.type", f"unknown interface law {kind!r} (known: {', '.join(known)})")
+    enforcement = params.get("enforcement", exact.default_enforcement(kind))
+    if enforcement not in ENFORCEMENTS:
+        raise SceneError(f"{path}.enforcement", f"must be one of {', '.join(ENFORCEMENTS)} (got {enforcement!r})")
+    params = {k: v for k, v in params.items() if k != "enforcement"}
+    if enforcement == "exact" or kind in exact.BONDED:
+        return exact.make_law(kind, enforcement, params, path)
+    if "stabilisation" in params:
+        raise SceneError(f"{path}.stabilisation", 'applies to enforcement = "exact" only (the penalty\'s springs '
+                         "are k_N, k_T)")
     return LAWS[kind].from_params(params, path)
 

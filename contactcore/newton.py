@@ -54,6 +54,7 @@ from . import health
 from . import tolerances as tol
 from .collective import SERIAL
 from .errors import SolverError, SolverOptionError
+from .exact import enforced
 from .geometry import CircleInterface, LineInterface, tangent_of
 from .laws import STATUS_NAMES
 from .result import SolverReport
@@ -74,16 +75,28 @@ class InterfaceOperator:
     #: -> local values; ``reverse``: local contributions -> owned sums);
     #: None in serial (local = owned = all).
     exchange: object = None
-    #: With the law enforced exactly (Nitsche), the consistent traction
-    #: ``τ = S u = [n·{σ}n, t·{σ}n]`` of each point (2m × n, ``G``'s rows,
-    #: columns and numbering) and the stabilisation ``γ`` (m,) in Pa/m
-    #: (:mod:`contactcore.traction`); None under the penalty.
+    #: For exact enforcement (:mod:`contactcore.exact`), None where the
+    #: method gives none: ``S`` (2m × n, ``G``'s shape and columns) with
+    #: rows ``2p, 2p+1`` the consistent traction ``τ = (n·{σ}n, t·{σ}n)``
+    #: of point p, ``{σ}`` the weighted average of the two sides' stresses
+    #: (Annavarapu et al. 2012: ``w_k ∝ |Ω_k^e|/E_k``), and
+    #: ``stabilisation`` γ₀ (m,) in Pa/m, ``2|Γ^e| / Σ_k (|Ω_k^e|/E_k)``
+    #: over the two sides' parts ``Ω_k^e`` of the cell(s) at the point's
+    #: piece ``Γ^e`` of Γ; the scene's β multiplies it.
     S: sp.csr_matrix | None = None
     stabilisation: np.ndarray | None = None
 
     @property
     def size(self) -> int:
         return len(self.weights)
+
+    def respond(self, law, u: np.ndarray, state, **options):
+        """The law's response to the jumps of ``u`` (penalty enforcement)."""
+        return law.evaluate(self.jumps(u), state, **options)
+
+    def internal(self, u: np.ndarray, traction: np.ndarray) -> np.ndarray:
+        """The interface's forces at ``u`` with the tractions ``t``: ``Gᵀ W t``."""
+        return self.forces(traction)
 
     def jumps(self, u: np.ndarray) -> np.ndarray:
         """``[g_N, g_T]`` (m, 2) of the unknowns ``u`` (owned values)."""
@@ -198,14 +211,19 @@ class InterfacePath:
         """The law's history at other points of Γ, interpolated linearly
         along Γ (the polar angle of a circle, the arc length of a line) from
         the quadrature points; the nearest point on a general level set."""
-        if self.state is None:
-            return None
+        return None if self.state is None else self.interpolated(interface, points, self.state)
+
+    def interpolated(self, interface, points: np.ndarray, values: np.ndarray) -> np.ndarray:
+        """``values`` (m, ...) at the quadrature points, at other points of
+        Γ: as :meth:`state_at` interpolates the history."""
         if isinstance(interface, (CircleInterface, LineInterface)):
             a, b = along(interface, self.points), along(interface, points)
             order = np.argsort(a)
             period = 2 * np.pi if isinstance(interface, CircleInterface) else None
-            return np.interp(b, a[order], self.state[order], period=period)
-        return self.state[cKDTree(self.points).query(points)[1]]
+            columns = np.asarray(values, float).reshape(len(a), -1)[order]
+            out = np.column_stack([np.interp(b, a[order], c, period=period) for c in columns.T])
+            return out.reshape((len(b),) + np.shape(values)[1:])
+        return np.asarray(values)[cKDTree(self.points).query(points)[1]]
 
 
 def canonical_order(interface, points: np.ndarray) -> np.ndarray:
@@ -242,7 +260,7 @@ class _Newton:
 
     def __init__(self, scene, system: ContactSystem):
         self.scene, self.system, self.law = scene, system, scene.law
-        self.itf = system.interface
+        self.itf = enforced(scene.law, system.interface)
         self.free = np.setdiff1d(np.arange(system.size), system.fixed)
         # rows that prescribe displacements (EFGM's multipliers, scaled by E:
         # s (C u − ū)) rather than balance forces: data, like the lift
@@ -260,7 +278,7 @@ class _Newton:
         """The residual, the forces its equilibrium rows are judged against
         (the largest of the loads and the internal forces there), and the
         largest prescribed value of the constraint rows (data)."""
-        internal = self.system.internal(u) + self.itf.forces(response.traction)
+        internal = self.system.internal(u) + self.itf.internal(u, response.traction)
         R = internal - b
         forces = max(np.max(np.abs(b[self.balance]), initial=0.0),
                       np.max(np.abs(internal[~self.constraint]), initial=0.0))
@@ -286,7 +304,7 @@ class _Newton:
         lift = self._lift(supports)
         history, tangent, start, du, u0 = [], None, 0.0, None, u.copy()
         for it in range(1, tol.NEWTON_MAX_ITERATIONS + 1):
-            response = self.law.evaluate(self.itf.jumps(u), self.state)
+            response = self.itf.respond(self.law, u, self.state)
             R, forces, data = self._residual(u, b, response)
             norm = self.ranks.max(float(np.max(np.abs(R[self.free]), initial=0.0)))
             start = start or norm
@@ -319,8 +337,7 @@ class _Newton:
                 health.check_residual(history[-1], "the settled Newton step")
                 self._commit(k, (loads, supports), u, response, it - 1, history)
                 return
-            tangent = response.tangent
-            du, rep = self._solve(tangent, -R, scale)
+            du, rep, tangent = self._solve(response.tangent, -R, scale)
             _merge(self.report, rep)
             u = u + du
         cycling = len(history) > 4 and np.isclose(history[-1], history[-3]) and np.isclose(history[-2], history[-4])
@@ -331,18 +348,30 @@ class _Newton:
     def _solve(self, tangent: np.ndarray, rhs: np.ndarray, scale: float):
         """``J δu = rhs`` with the law's ``tangent`` at the points: with the
         factorisation kept for that tangent if there is one, else refilled
-        into the slot used longest ago (:data:`~contactcore.tolerances.FACTORISATIONS_KEPT`)."""
+        into the slot used longest ago (:data:`~contactcore.tolerances.FACTORISATIONS_KEPT`).
+        Also returns the tangent solved with: the law's, or where that is
+        singular an exact law's regularised one (not the law's: Newton is
+        then not settled by it)."""
         for i, (slot, kept) in enumerate(self._factorised):
             if self.ranks.all(np.array_equal(kept, tangent)):
                 self._factorised.append(self._factorised.pop(i))
-                return self.system.solve(None, rhs, force_scale=scale, slot=slot)
+                return (*self.system.solve(None, rhs, force_scale=scale, slot=slot), tangent)
         used = {slot for slot, _ in self._factorised}
         free = [s for s in range(tol.FACTORISATIONS_KEPT) if s not in used]
         slot = free[0] if free else self._factorised.pop(0)[0]
         self._factorised = [(s, t) for s, t in self._factorised if s != slot]  # until the solve succeeds
-        du, report = self.system.solve(self.itf.stiffness(tangent), rhs, force_scale=scale, slot=slot)
+        try:
+            du, report = self.system.solve(self.itf.stiffness(tangent), rhs, force_scale=scale, slot=slot)
+        except SolverError:
+            # an exact law's slip tangent leaves a body held by friction
+            # alone free to turn: one step on the stick tangent there
+            # (:meth:`contactcore.exact.NitscheInterface.regularised`)
+            if not hasattr(self.itf, "regularised"):
+                raise
+            tangent = self.itf.regularised(tangent)
+            du, report = self.system.solve(self.itf.stiffness(tangent), rhs, force_scale=scale, slot=slot)
         self._factorised.append((slot, tangent))
-        return du, report
+        return du, report, tangent
 
     def _commit(self, k, factors, u, response, iterations, history) -> None:
         self.u, self.state = u, response.state

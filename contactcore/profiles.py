@@ -6,7 +6,9 @@ last moved back by 1e-9 of 2π.  Each point takes the body that contains it
 (exact geometry, the sign of φ); on Γ the profile's ``side`` (+ by default).
 
 Interface quantities come from the computed jump and the law, never from the
-bulk stress: ``[[u]] = u⁺ − u⁻``, ``g_N = [[u]]·n``, ``g_T = [[u]]·t``, and
+bulk stress (for a law enforced exactly, :mod:`contactcore.exact`, the
+tractions are those the solve converged to at the quadrature points of Γ,
+interpolated along Γ as the history is): ``[[u]] = u⁺ − u⁻``, ``g_N = [[u]]·n``, ``g_T = [[u]]·t``, and
 ``(t_N, t_T)`` is the law's response to ``(g_N, g_T)`` — and, for a law with
 history (``coulomb``), to the history at the last increment, which the
 caller passes as data: the Result's ``interface`` path
@@ -23,6 +25,7 @@ import numpy as np
 
 from . import tolerances as tol
 from .errors import require_finite
+from .exact import is_exact
 from .geometry import CircleInterface, tangent_of
 from .result import Fields
 from .scene import DISPLACEMENT_QUANTITIES, INTERFACE_QUANTITIES, STRESS_QUANTITIES, LineProfile, Profile, Scene
@@ -75,6 +78,12 @@ def interface_response(scene: Scene, fields: Fields, points: np.ndarray, path=No
     jump = fields.displacement(points, np.ones(m, int)) - fields.displacement(points, np.zeros(m, int))
     n = scene.interface.normals(points)
     g = np.column_stack([np.sum(jump * n, axis=1), np.sum(jump * tangent_of(n), axis=1)])
+    if is_exact(scene.law):
+        if path is None or not path.steps:
+            raise ValueError(f"the exact '{scene.law.name}' law's tractions come from the solve: pass the "
+                             "Result's interface path")
+        t = path.interpolated(scene.interface, points, path.final.traction)
+        return {"gN": g[:, 0], "gT": g[:, 1], "tN": t[:, 0], "tT": t[:, 1]}
     state = None
     if scene.law.has_history:
         if path is None or path.state is None:

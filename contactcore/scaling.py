@@ -183,8 +183,8 @@ class Scales:
         """The dimensionless scene (module doc); SceneError if a value leaves
         the floating-point range."""
         L, S, U = self.length, self.modulus, self.displacement
-        law = replace(scene.law, kN=_scaled(scene.law.kN, S / L, "interface.law.kN"),
-                      kT=_scaled(scene.law.kT, S / L, "interface.law.kT"))
+        law = replace(scene.law, **{k: _scaled(getattr(scene.law, k), S / L, f"interface.law.{k}")
+                                    for k in ("kN", "kT") if hasattr(scene.law, k)})  # none if exact
         return replace(
             scene, domain=self._domain(scene.domain), interface=self._interface(scene.interface), law=law,
             materials={b: replace(m, E=_scaled(m.E, S, f"materials.{b}.E")) for b, m in scene.materials.items()},

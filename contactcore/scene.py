@@ -24,6 +24,7 @@ from .bodies import Body
 from .elasticity import voigt_matrix
 from .errors import SceneError
 from .geometry import CircleInterface, Disc, Domain, Interface, LevelSetInterface, LineInterface, Rectangle
+from .exact import default_enforcement
 from .laws import InterfaceLaw, make_law
 
 BODIES = tuple(b.label for b in Body)
@@ -221,6 +222,8 @@ class Scene:
         """
         warnings = []
         law, itf = self.law, self.interface
+        if not hasattr(law, "kN"):  # enforced exactly: no springs
+            return warnings
         alpha = law.stiffness_scale * h / max(m.E for m in self.materials.values())
         if not fitted and not isinstance(itf, LineInterface) and alpha > tol.LOCKING_WARN:
             warnings.append(f"interface springs of {alpha:.1e}·E/h (above {tol.LOCKING_WARN:.0e}·E/h) on a curved "
@@ -707,6 +710,8 @@ def scene_to_dict(scene: Scene) -> dict:
                          if isinstance(itf, LineInterface) else {"type": "circle", "centre": list(itf.centre),
                                                                  "radius": itf.radius})
     data["interface"]["law"] = {"type": scene.law.name, **{k: getattr(scene.law, k) for k in scene.law.parameters}}
+    if scene.law.enforcement != default_enforcement(scene.law.name):
+        data["interface"]["law"]["enforcement"] = scene.law.enforcement
     data["materials"] = {b: {"E": scene.materials[b].E, "nu": scene.materials[b].nu} for b in BODIES}
     data["supports"] = [_fields(s) for s in scene.supports]
     data["pins"] = [_fields(p) for p in scene.pins]

@@ -154,6 +154,20 @@ THIN_BODY_CUT_SHARE = 0.5
 #: ~1e-15; 1e-10 (SCENES.md's example) absorbs it without moving the limit.
 STICK_ROUNDOFF = 1e-10
 
+#: Symmetric Nitsche's stabilisation (contactcore.exact): γ = β γ₀ at each
+#: point of Γ, γ₀ = 2|Γ^e| / Σ_k (|Ω_k^e|/E_k) from the method (~2E/h on
+#: fe's cells), β this default unless the scene's [interface.law] gives
+#: ``stabilisation``.  Nitsche's operator with Γ open, A − Sᵀ W Γ⁻¹ S, is
+#: positive definite iff β exceeds β₀ = the largest eigenvalue of
+#: (Sᵀ W Γ₀⁻¹ S, A) on the free unknowns (A's rigid modes, which S does
+#: not see, removed).  Measured on fe's fitted meshes (2026-11-26): degree
+#: 1 β₀ = 0.30 / 0.31 (scene A, h = 0.2 / 0.1), 0.28 (C-coulomb, h = 0.2);
+#: degree 2 β₀ = 1.29 / 1.26 (scene A).  β = 20 keeps β/10 = 2 above every
+#: β₀ measured (the acceptance asks that β/10 and 10β change the answer
+#: by less than h → h/2 does), while γ ~ 40 E/h adds no more than a few
+#: digits to the condition number.
+NITSCHE_STABILISATION = 20.0
+
 #: Newton on one load increment has converged when the residual of the free
 #: equations satisfies ||R||_inf <= NEWTON_RTOL * F, F the larger of the
 #: external and internal nodal forces (infinity norms).  A piecewise-linear

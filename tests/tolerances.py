@@ -319,3 +319,14 @@ PARALLEL_PARITY = 1e-10
 #: C-coulomb at h = 0.1 on 2 and 3 ranks.  A cell, point or row lost or
 #: counted twice changes entries by their own size, far above it.
 EFGM_DISTRIBUTED_ASSEMBLY = 1e-13
+
+# ----- exact enforcement (tests/test_exact.py) ----------------------------------
+
+#: The layered closed form with exact stick: a point whose exact shear lies
+#: within this share of the limit μp is decided by the method's own error
+#: (the last stick step before a slip), as in FRICTION_CLOSED_FORM's test.
+EXACT_LIMIT_BAND = 1e-6
+
+#: Exact enforcement ignores k_N, k_T: the acceptance's 1e-10 of the
+#: profiles' scale (the answers are the same solve; round-off only).
+EXACT_INDEPENDENCE = 1e-10

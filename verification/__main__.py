@@ -117,7 +117,7 @@ def _parser() -> argparse.ArgumentParser:
     stu.add_argument("scene")
     stu.add_argument("--param", required=True, choices=list(PARAMETERS), action="append",
                      help="repeat --param NAME --values ... for a Cartesian product")
-    stu.add_argument("--values", nargs="+", type=float, required=True, action="append")
+    stu.add_argument("--values", nargs="+", type=_number_or_word, required=True, action="append")
     _methods(stu)
     stu.add_argument("--degree", type=int, default=1, choices=(1, 2))
     stu.add_argument("--h", type=float, help="resolution (default: the scene's h)")
@@ -221,6 +221,14 @@ def _check_workers(args) -> None:
     workers = getattr(args, "workers", None)
     if workers is not None and workers < 1:
         raise ContactError(f"--workers: must be at least 1 (got {workers})")
+
+
+def _number_or_word(text: str):
+    """A study's value: a number, or a word (``--param enforcement``)."""
+    try:
+        return float(text)
+    except ValueError:
+        return text
 
 
 def _study_params(args) -> list[tuple[str, list[float]]]:

@@ -15,7 +15,7 @@ import numpy as np
 from contactcore import (BodyForce, CircleInterface, Disc, InterfaceProfile, LineInterface, LinearLaw, LineProfile,
                          Material, Pin, Pressure, Rectangle, Scene, Support, Torque, Traction)
 from contactcore.elasticity import compliance, lame
-from contactcore.tolerances import GEOMETRY, STICK_ROUNDOFF
+from contactcore.tolerances import GEOMETRY, NITSCHE_STABILISATION, STICK_ROUNDOFF
 
 _ROT = np.array([[0.0, -1.0], [1.0, 0.0]])  # infinitesimal rotation generator
 
@@ -351,7 +351,9 @@ class LayeredSlip:
         law, itf, dom = scene.law, scene.interface, scene.domain
         if law.name != "coulomb" or any(m.nu != 0 for m in scene.materials.values()):
             raise ValueError("the layered closed form needs the coulomb law and ν = 0 in both layers")
-        self.scene, self.kN, self.kT, self.mu = scene, law.kN, law.kT, law.mu
+        # enforced exactly, the springs are infinitely stiff: g_N = 0, g_T = s
+        self.kN, self.kT = getattr(law, "kN", np.inf), getattr(law, "kT", np.inf)
+        self.scene, self.mu = scene, law.mu
         self.y0 = dom.corner[1]
         self.h1, self.h2 = itf.point[1] - self.y0, dom.corner[1] + dom.size[1] - itf.point[1]
         self.E = [scene.materials[b].E for b in ("minus", "plus")]
@@ -379,26 +381,29 @@ class LayeredSlip:
         return LayeredSlipFields(self, state)
 
 
-def layered_slip(kN: float | None = None, kT: float | None = None, E: tuple[float, float] | None = None
-                 ) -> LayeredSlip:
+def layered_slip(kN: float | None = None, kT: float | None = None, E: tuple[float, float] | None = None,
+                 exact: bool = False) -> LayeredSlip:
     """The closed form of the built-in scene ``layered-slip``; with other
-    springs, or other Young's moduli ``E`` (of the − and + layers), the
+    springs, or other Young's moduli ``E`` (of the − and + layers), or the
+    law enforced ``exact``-ly (no spring: ``C = h₁/G₋ + h₂/G₊``), the
     top's displacement is rescaled so that its path still switches between
     stick and slip at the same increments (δ_stick = μpC): τ's path, and with
     it the scene's side tractions, stay the closed form's."""
     from contactcore import load_scene
+    from contactcore.exact import ExactCoulomb
     from contactcore.laws import CoulombLaw
 
     case = LayeredSlip(load_scene("layered-slip"))
-    if kN is None and kT is None and E is None:
+    if kN is None and kT is None and E is None and not exact:
         return case
     scene, law = case.scene, case.scene.law
-    law = CoulombLaw(kN or law.kN, kT or law.kT, law.mu)
+    law = ExactCoulomb(mu=law.mu, stabilisation=NITSCHE_STABILISATION) if exact else CoulombLaw(
+        kN or law.kN, kT or law.kT, law.mu)
     materials = scene.materials if E is None else {
         body: dataclasses.replace(scene.materials[body], E=value) for body, value in zip(("minus", "plus"), E)}
     G = [materials[body].E / 2 for body in ("minus", "plus")]
     top = scene.supports[1]
     p = -scene.loads[0].value[1]
-    stick = law.mu * p * (case.h1 / G[0] + case.h2 / G[1] + 1 / law.kT)
+    stick = law.mu * p * (case.h1 / G[0] + case.h2 / G[1] + 1 / getattr(law, "kT", np.inf))
     supports = (scene.supports[0], dataclasses.replace(top, value=(stick, 0.0)))
     return LayeredSlip(scene.with_changes(law=law, materials=materials, supports=supports))

@@ -4,7 +4,8 @@
         [--method ...] [--degree 1] [--h H] [--workers K] --out DIR
 
 Parameters (:data:`PARAMETERS`): the mesh size ``h``; the springs ``kN``,
-``kT``; the materials ``E_minus``, ``nu_minus``, ``E_plus``, ``nu_plus``;
+``kT``; how the law is enforced, ``enforcement`` (penalty or exact), and an
+exact law's ``stabilisation`` β; the materials ``E_minus``, ``nu_minus``, ``E_plus``, ``nu_plus``;
 and the geometry of Γ — ``radius`` of a circular Γ, ``offset`` of a straight
 Γ along its normal, ``angle`` of a straight Γ (degrees from the x axis,
 turned about the middle of its chord).  Several ``--param`` pairs run their
@@ -32,7 +33,7 @@ from pathlib import Path
 
 import numpy as np
 
-from contactcore import CircleInterface, ContactError, LineInterface, SceneError, load_scene, sample_profile
+from contactcore import CircleInterface, ContactError, LineInterface, SceneError, load_scene, make_law, sample_profile
 from contactcore.discretisation import Reuse
 from contactcore.scene import InterfaceProfile
 
@@ -56,6 +57,19 @@ def _law(scene, key: str, value: float):
     if key not in scene.law.parameters:
         raise SceneError(f"--param {key}", f"the '{scene.law.name}' law has no parameter {key}")
     return {"law": dataclasses.replace(scene.law, **{key: value})}
+
+
+def _enforcement(scene, value):
+    """The scene's law enforced ``value``-ly: ``exact`` drops its springs
+    (:mod:`contactcore.exact`); ``penalty`` needs the scene's own springs."""
+    law = scene.law
+    if value == getattr(law, "enforcement", "penalty"):
+        return {"law": law}
+    if value != "exact":
+        raise SceneError("--param enforcement", f"must be penalty or exact (got {value!r}); the scene's "
+                         f"'{law.name}' law is enforced exactly and has no springs to fall back on")
+    params = {k: getattr(law, k) for k in law.parameters if k not in ("kN", "kT")}
+    return {"law": make_law({"type": law.name, "enforcement": "exact", **params}, "--param enforcement")}
 
 
 def _radius(scene, value: float):
@@ -87,6 +101,8 @@ PARAMETERS = {
     "h": ("cell size or node spacing (m)", None),
     "kN": ("normal spring k_N (Pa/m)", lambda s, v: _law(s, "kN", v)),
     "kT": ("tangential spring k_T (Pa/m)", lambda s, v: _law(s, "kT", v)),
+    "enforcement": ("how the law is enforced: penalty (its springs) or exact (Nitsche)", _enforcement),
+    "stabilisation": ("Nitsche's β of an exact law (× the method's E/h)", lambda s, v: _law(s, "stabilisation", v)),
     "E_minus": ("Young's modulus of the − body (Pa)", lambda s, v: _material(s, "minus", "E", v)),
     "nu_minus": ("Poisson's ratio of the − body", lambda s, v: _material(s, "minus", "nu", v)),
     "E_plus": ("Young's modulus of the + body (Pa)", lambda s, v: _material(s, "plus", "E", v)),
@@ -188,7 +204,7 @@ def study(scene_name: str, params: list[tuple[str, list[float]]], method_names: 
     rows = []
     try:
         for k, (case, row) in enumerate(zip(cases, pool.map_cases(solve_case, cases, workers)), 1):
-            where = ", ".join(f"{p} = {v:g}" for p, v in case.point)
+            where = ", ".join(f"{p} = {_shown(v)}" for p, v in case.point)
             if row["status"] == "failed":
                 log.warning("[%d/%d] %s, %s: failed: %s", k, len(cases), where, case.method, row["message"])
             else:
@@ -208,6 +224,11 @@ def study(scene_name: str, params: list[tuple[str, list[float]]], method_names: 
                                         "methods": methods.expand(method_names), "degree": degree, "h": h,
                                         "workers": pool.workers_label(workers)})
     return text
+
+
+def _shown(value) -> str:
+    """A parameter's value as the tables show it (a number, or a word)."""
+    return value if isinstance(value, str) else f"{value:g}"
 
 
 def _plot_name(names: list[str], param: str) -> str:
@@ -234,14 +255,15 @@ def _plot(path: Path, scene_name: str, param: str, column: str, others: list[str
 
     fig, axes = pyplot().subplots(2, 2, figsize=(9, 6.5), squeeze=False)
     values = [r[column] for r in rows]
-    logx = min(values) > 0 and max(values) / min(values) > 100
+    numbers = all(not isinstance(v, str) for v in values)  # words (enforcement) are categories
+    logx = numbers and min(values) > 0 and max(values) / min(values) > 100
     series = dict.fromkeys((r["method"], *(r[o] for o in others)) for r in rows)
     for ax, q in zip(axes.ravel(), ("gN", "gT", "tN", "tT")):
         for key in series:
             pts = [(r[column], r[f"max_{q}"]) for r in rows
                    if (r["method"], *(r[o] for o in others)) == key and r["status"] != "failed"]
             if pts:
-                ax.plot(*zip(*pts), "o-", label=", ".join([key[0], *(f"{o} = {v:g}" for o, v in zip(others, key[1:]))]))
+                ax.plot(*zip(*pts), "o-", label=", ".join([key[0], *(f"{o} = {_shown(v)}" for o, v in zip(others, key[1:]))]))
         ax.set_ylabel("max |" + UNITS[q].split(" ")[0] + "| " + UNITS[q].split(" ")[1])
         ax.set_xlabel(param)
         if logx:

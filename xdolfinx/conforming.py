@@ -46,7 +46,8 @@ from .elasticity import sigma
 from contactcore.assembly import Triplets
 from contactcore.constraints import Constraints
 from contactcore.cutcell import gauss01
-from contactcore.geometry import tangent_of
+from contactcore.exact import is_exact
+from contactcore.geometry import polygon_area, tangent_of
 from contactcore.newton import InterfaceOperator
 from contactcore.scene import Pressure, Traction, body_force
 
@@ -63,13 +64,20 @@ METHOD = FE.name
 INTERFACE_GAUSS = {1: 3, 2: 4}
 
 
-def bilinear_form(scene: Scene, fm: FittedMesh, V):
-    """Bulk elasticity of each body (the interface is :func:`interface_operator`'s)."""
+def bilinear_form(scene: Scene, fm: FittedMesh, V, exact: bool = False):
+    """Bulk elasticity of each body (the interface is :func:`interface_operator`'s).
+    With ``exact``, a zero term on Γ's facets makes the matrix's pattern
+    couple the two cells of each: Nitsche's ``G̃ᵀ W D G̃`` reads each
+    body's stress in the cell on its own side."""
     u, v = ufl.TrialFunction(V), ufl.TestFunction(V)
     us, vs = ufl.split(u), ufl.split(v)
     dx = ufl.Measure("dx", domain=fm.mesh, subdomain_data=fm.cell_tags)
-    return sum(ufl.inner(sigma(us[b], scene.materials[name].E, scene.materials[name].nu, scene.plane),
-                         ufl.sym(ufl.grad(vs[b]))) * dx(meshes.BODY[name]) for b, name in enumerate(BODIES))
+    a = sum(ufl.inner(sigma(us[b], scene.materials[name].E, scene.materials[name].nu, scene.plane),
+                      ufl.sym(ufl.grad(vs[b]))) * dx(meshes.BODY[name]) for b, name in enumerate(BODIES))
+    if exact:
+        dS = ufl.Measure("dS", domain=fm.mesh, subdomain_data=fm.facet_tags)
+        a += fem.Constant(fm.mesh, 0.0) * ufl.inner(ufl.jump(u), ufl.jump(v)) * dS(meshes.INTERFACE)
+    return a
 
 
 def _body_indicator(fm: FittedMesh):
@@ -105,10 +113,12 @@ def linear_forms(scene: Scene, fm: FittedMesh, V) -> list:
     return forms
 
 
-def interface_operator(scene: Scene, fm: FittedMesh, V, degree: int, exchange: "GhostExchange") -> InterfaceOperator:
+def interface_operator(scene: Scene, fm: FittedMesh, V, degree: int, exchange: "GhostExchange",
+                       exact: bool = False) -> InterfaceOperator:
     """Γ's quadrature on the mesh's Γ facets and ``G``: the jump
     ``[[u]] = u₊ − u₋`` in the frame (n, t) of the level set's exact normal
-    at each point (not the chord's: SCENES.md, scene B).
+    at each point (not the chord's: SCENES.md, scene B); with ``exact``,
+    also Nitsche's ``S`` and ``stabilisation`` (:func:`_nitsche_rows`).
 
     Both fields are continuous across Γ's facets, so their traces are taken
     from one cell of each facet, whichever side: the interior-facet
@@ -117,33 +127,23 @@ def interface_operator(scene: Scene, fm: FittedMesh, V, degree: int, exchange: "
     ``x(X) = Σ ψ_g(X) x_g``, ``dΓ = |∂x/∂ξ| dξ`` on the reference facet, with
     ``INTERFACE_GAUSS[degree]`` Gauss points.
     """
-    msh = fm.mesh
-    tdim = msh.topology.dim
-    msh.topology.create_connectivity(tdim - 1, tdim)
-    msh.topology.create_connectivity(tdim, tdim - 1)
-    f2c, c2f = msh.topology.connectivity(tdim - 1, tdim), msh.topology.connectivity(tdim, tdim - 1)
-    cell = basix.CellType.triangle
-    element = basix.create_element(basix.ElementFamily.P, cell, degree, basix.LagrangeVariant.gll_warped)
-    gdeg = msh.ufl_domain().ufl_coordinate_element().degree()
-    cmap = basix.create_element(basix.ElementFamily.P, cell, gdeg, basix.LagrangeVariant.gll_warped)
-    ref, edges = basix.geometry(cell), basix.topology(cell)[1]
+    ref = _Reference(fm, degree)
     xi, w_ref = gauss01(INTERFACE_GAUSS[degree])
-    geom = msh.geometry.dofmap
-    xg = msh.geometry.x[:, :2]
     dofs = [[V.sub(b).sub(j).dofmap for j in range(2)] for b in range(2)]
     facets = fm.facets_tagged(meshes.INTERFACE)
-    facets = facets[facets < msh.topology.index_map(tdim - 1).size_local]  # each facet on the rank that owns it
+    facets = facets[facets < fm.mesh.topology.index_map(1).size_local]  # each facet on the rank that owns it
     trip = Triplets((2 * len(facets) * len(xi), exchange.local_size))
-    points, weights = [], []
+    traction = Triplets((2 * len(facets) * len(xi), exchange.local_size)) if exact else None
+    points, weights, stabilisation = [], [], []
     for i, f in enumerate(facets):
-        c = f2c.links(f)[0]
-        a, b = ref[edges[int(np.flatnonzero(c2f.links(c) == f)[0])]]
-        X = a + xi[:, None] * (b - a)
-        coords = xg[geom.links(c)]
-        tab = cmap.tabulate(1, X)
+        c = ref.f2c.links(f)[0]
+        X = ref.facet_points(c, f, xi)
+        coords = ref.coords(c)
+        tab = ref.cmap.tabulate(1, X)
         x = tab[0, :, :, 0] @ coords
-        dx_dxi = (tab[1, :, :, 0] * (b - a)[0] + tab[2, :, :, 0] * (b - a)[1]) @ coords
-        N = element.tabulate(0, X)[0, :, :, 0]
+        edge = ref.edge(c, f)
+        dx_dxi = (tab[1, :, :, 0] * edge[0] + tab[2, :, :, 0] * edge[1]) @ coords
+        N = ref.element.tabulate(0, X)[0, :, :, 0]
         normals = scene.interface.normals(x)
         frame = np.stack([normals, tangent_of(normals)], axis=1)  # rows n, t
         rows = 2 * (i * len(xi) + np.arange(len(xi)))[:, None, None] + np.arange(2)[None, :, None]
@@ -152,8 +152,99 @@ def interface_operator(scene: Scene, fm: FittedMesh, V, degree: int, exchange: "
                 trip.add(rows, dofs[side][j].cell_dofs(c)[None, None, :], sign * N[:, None, :] * frame[:, :, j:j + 1])
         points.append(x)
         weights.append(w_ref * np.linalg.norm(dx_dxi, axis=1))
+        if exact:
+            stabilisation.append(_nitsche_rows(scene, ref, dofs, f, xi, x, frame, rows, weights[-1].sum(), traction))
+    S = traction.to_csr() if exact else None
     return InterfaceOperator(trip.to_csr(), _concatenate(weights, 0), _concatenate(points, 2),
-                             exchange if exchange.ranks.parallel else None)
+                             exchange if exchange.ranks.parallel else None, S=S,
+                             stabilisation=_concatenate(stabilisation, 0) if exact else None)
+
+
+class _Reference:
+    """The mesh's cells as basix sees them: the degree's P element, the
+    geometry map, the reference facets and the connectivity of Γ's facets."""
+
+    def __init__(self, fm: FittedMesh, degree: int):
+        msh = fm.mesh
+        tdim = msh.topology.dim
+        msh.topology.create_connectivity(tdim - 1, tdim)
+        msh.topology.create_connectivity(tdim, tdim - 1)
+        self.f2c, self.c2f = msh.topology.connectivity(tdim - 1, tdim), msh.topology.connectivity(tdim, tdim - 1)
+        cell = basix.CellType.triangle
+        self.element = basix.create_element(basix.ElementFamily.P, cell, degree, basix.LagrangeVariant.gll_warped)
+        gdeg = msh.ufl_domain().ufl_coordinate_element().degree()
+        self.cmap = basix.create_element(basix.ElementFamily.P, cell, gdeg, basix.LagrangeVariant.gll_warped)
+        self.ref, self.edges = basix.geometry(cell), basix.topology(cell)[1]
+        self.geom, self.xg = msh.geometry.dofmap, msh.geometry.x[:, :2]
+
+    def coords(self, c: int) -> np.ndarray:
+        return self.xg[self.geom.links(c)]
+
+    def _ends(self, c: int, f: int) -> tuple[np.ndarray, np.ndarray]:
+        a, b = self.ref[self.edges[int(np.flatnonzero(self.c2f.links(c) == f)[0])]]
+        return a, b
+
+    def edge(self, c: int, f: int) -> np.ndarray:
+        a, b = self._ends(c, f)
+        return b - a
+
+    def facet_points(self, c: int, f: int, xi: np.ndarray, x: np.ndarray | None = None) -> np.ndarray:
+        """Reference points of cell ``c`` at the parameters ``xi`` of facet
+        ``f``; given the physical points ``x``, those of ``xi`` or of
+        ``1 − xi``, whichever lands on them (the two cells of a facet may
+        run along it in opposite directions)."""
+        a, b = self._ends(c, f)
+        X = a + xi[:, None] * (b - a)
+        if x is None:
+            return X
+        Y = a + (1.0 - xi)[:, None] * (b - a)
+        return Y if np.abs(self.physical(c, Y) - x).max() < np.abs(self.physical(c, X) - x).max() else X
+
+    def physical(self, c: int, X: np.ndarray) -> np.ndarray:
+        return self.cmap.tabulate(0, X)[0, :, :, 0] @ self.coords(c)
+
+    def gradients(self, c: int, X: np.ndarray) -> np.ndarray:
+        """``∂N_a/∂x_i`` (points, dofs, 2) of the P element in cell ``c``."""
+        geo = self.cmap.tabulate(1, X)[1:, :, :, 0]  # (2, points, nodes): ∂ψ/∂X_k
+        J = np.einsum("kpg,gi->pik", geo, self.coords(c))  # ∂x_i/∂X_k
+        dN = self.element.tabulate(1, X)[1:, :, :, 0]  # (2, points, dofs)
+        return np.einsum("kpa,pki->pai", dN, np.linalg.inv(J))
+
+    def area(self, c: int) -> float:
+        """The straight triangle of the cell's vertices."""
+        return float(polygon_area(self.coords(c)[:3]))
+def _nitsche_rows(scene: Scene, ref: _Reference, dofs, f: int, xi: np.ndarray, x: np.ndarray, frame: np.ndarray,
+                  rows, length: float, S: Triplets) -> np.ndarray:
+    """Facet ``f``'s rows of ``S``, added to ``S``, and its γ₀ at its points
+    ``x`` (parameters ``xi``; :class:`~contactcore.newton.InterfaceOperator`).  Each body's
+    field is read in the cell on its own side of the facet (it is zero
+    beyond its body), its stress by the body's Voigt matrix ``D``:
+    ``τ = frame · σ(u) n``, weighted ``w_k = (|Ω_k|/E_k) / Σ_j |Ω_j|/E_j``
+    over the two cells ``Ω_k`` (Annavarapu et al., CMAME 2012), and
+    ``γ₀ = 2|Γ^e| / Σ_j |Ω_j|/E_j``."""
+    cells = ref.f2c.links(f)
+    if len(cells) != 2:
+        raise DiscretisationError(f"fe: a facet of Γ has {len(cells)} cell(s) on this rank, not 2 (exact "
+                                  "enforcement needs both sides: ghost mode shared_facet)")
+    D = scene.voigt_matrices()
+    side = scene.body_of(np.array([ref.coords(c)[:3].mean(axis=0) for c in cells]))
+    if sorted(side) != [0, 1]:
+        raise DiscretisationError("fe: a facet of Γ does not separate the two bodies")
+    compliance = {b: ref.area(c) / scene.materials[BODIES[b]].E for c, b in zip(cells, side)}
+    total = sum(compliance.values())
+    n = frame[:, 0, :]
+    for c, b in zip(cells, side):
+        X = ref.facet_points(c, f, xi, x)
+        grad = ref.gradients(c, X)  # (points, dofs, 2)
+        Nx, Ny = grad[..., 0], grad[..., 1]
+        for j, (e_x, e_y, e_xy) in enumerate(((Nx, 0.0 * Nx, Ny), (0.0 * Ny, Ny, Nx))):
+            sigma = (D[b][:, 0, None, None] * e_x + D[b][:, 1, None, None] * e_y
+                     + D[b][:, 2, None, None] * e_xy)  # (3, points, dofs): σxx, σyy, σxy
+            sn = np.stack([sigma[0] * n[:, :1] + sigma[2] * n[:, 1:], sigma[2] * n[:, :1] + sigma[1] * n[:, 1:]],
+                          axis=1)  # (points, 2, dofs)
+            S.add(rows, dofs[b][j].cell_dofs(c)[None, None, :],
+                  compliance[b] / total * np.einsum("pij,pjd->pid", frame, sn))
+    return np.full(len(x), 2.0 * length / total)
 
 
 def _concatenate(parts: list, width: int) -> np.ndarray:
@@ -257,7 +348,8 @@ def build(scene: Scene, options: FE, resolution: Resolution, timings: Timings) -
         V = fem.FunctionSpace(fm.mesh, ufl.MixedElement([el, el]))
         exchange = GhostExchange(V.dofmap.index_map, V.dofmap.index_map_bs, fm.mesh.comm)
         cons = _Constraints(scene, fm, V, exchange)
-        K = fem_petsc.assemble_matrix(fem.form(bilinear_form(scene, fm, V), jit_params=jit))
+        exact = is_exact(scene.law)
+        K = fem_petsc.assemble_matrix(fem.form(bilinear_form(scene, fm, V, exact), jit_params=jit))
         K.assemble()
         loads = []
         for L in linear_forms(scene, fm, V):
@@ -265,7 +357,7 @@ def build(scene: Scene, options: FE, resolution: Resolution, timings: Timings) -
             vec.ghostUpdate(addv=PETSc.InsertMode.ADD, mode=PETSc.ScatterMode.REVERSE)
             loads.append(vec.getArray().copy())
             vec.destroy()
-        system = PETScSystem(K, loads, cons.constraints(), interface_operator(scene, fm, V, degree, exchange),
+        system = PETScSystem(K, loads, cons.constraints(), interface_operator(scene, fm, V, degree, exchange, exact),
                              comm=fm.mesh.comm, petsc_options=options.petsc_options,
                              estimate_condition=options.estimate_condition, what=f"scene {scene.name} (fe)")
 

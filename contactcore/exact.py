@@ -1,0 +1,250 @@
+"""Exact enforcement of the interface laws: symmetric Nitsche.
+
+The penalty laws (:mod:`contactcore.laws`) set the answer by their springs
+k_N, k_T.  Enforced exactly, ``unilateral`` is Signorini's condition
+(``g_N <= 0``, ``t_N <= 0``, ``g_N t_N = 0``, no shear) and ``coulomb``
+Signorini's with Coulomb's friction (``|t_T| <= μ|t_N|``, no slip
+increment where it holds with ``<``); ``bonded`` is perfect bonding
+(``g = 0``), the limit k → ∞ of ``linear``.  No spring enters the answer.
+
+Symmetric Nitsche (Chouly & Hild, SINUM 2013; Chouly, Hild & Renard,
+Math. Comp. 2015, for Coulomb), with the weighted average of Annavarapu,
+Hautefeuille & Dolbow (CMAME 2012, 2014).  In Γ's frame (``n`` from − to
++, ``t = (n_y, −n_x)``) the method's interface operator gives, at its m
+points, the jump ``g = G u`` and the consistent traction
+``τ = S u = (n·{σ}n, t·{σ}n)``, ``{σ} = w₋ σ(u⁻) + w₊ σ(u⁺)``
+(``w₋ + w₊ = 1``): integrating by parts, ``a(u, v) + ∫_Γ σn·[[v]] = ℓ(v)``,
+so ``τ`` is the traction ``t`` of the weak form ``a(u, v) + ∫_Γ t·g(v) = ℓ(v)``.
+Each law is the penalty law with ``k_N = k_T = γ`` (per point) evaluated at
+the augmented jump
+
+    y = g + τ/γ = G̃ u,     G̃ = G + Γ⁻¹ S,
+
+(``Γ = diag(γ)``): unilateral closed where ``y_N <= 0`` with ``t = γ y``
+(so ``g = 0`` holds weakly), open with ``t = 0``; coulomb with
+``t_N = min(γ y_N, 0)``, the trial ``t_T* = γ (y_T − s)``, ``s`` the jump
+``g_T`` at the last converged increment, stick if ``|t_T*| <= μ p``, else
+slip; bonded ``t = γ y``.  The residual and tangent are
+
+    R(u) = A u − b + C u + G̃ᵀ W t(G̃ u, s),   J = A + C + G̃ᵀ W (∂t/∂y) G̃,
+    C = −Sᵀ W Γ⁻¹ S,
+
+the penalty's on ``G̃`` plus a constant symmetric bulk correction ``C``:
+Newton, its reuse of factorisations and every method's solver carry it
+unchanged.  ``γ = β γ₀`` per point, ``γ₀ = 2|Γ^e| / Σ_k (|Ω_k^e|/E_k)``
+from the method (:class:`~contactcore.newton.InterfaceOperator`'s
+``stabilisation``) and ``β`` the scene's ``stabilisation``
+(default :data:`~contactcore.tolerances.NITSCHE_STABILISATION`).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+from typing import ClassVar
+
+import numpy as np
+import scipy.sparse as sp
+
+from . import tolerances as tol
+from .errors import DiscretisationError, SceneError
+from .laws import STICK, CoulombLaw, LawResponse, UnilateralLaw, _friction, _positive
+
+#: Laws that exist only enforced exactly (no springs).
+BONDED = ("bonded",)
+
+
+def default_enforcement(kind: str) -> str:
+    """How a law of type ``kind`` is enforced when the scene does not say."""
+    return "exact" if kind in BONDED else "penalty"
+
+
+def _stabilisation(params: dict, path: str) -> float:
+    """The scene's ``stabilisation`` β (dimensionless, > 0), or the default."""
+    if "stabilisation" not in params:
+        return tol.NITSCHE_STABILISATION
+    value = params["stabilisation"]
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) or value <= 0:
+        raise SceneError(f"{path}.stabilisation", f"must be a finite number > 0, a multiple of the method's "
+                         f"E/h (got {value!r})")
+    return float(value)
+
+
+@dataclass(frozen=True)
+class _ExactLaw:
+    """What the exact laws share: β and the reading of their parameters."""
+
+    stabilisation: float
+    enforcement: ClassVar[str] = "exact"
+    parameters: ClassVar[tuple[str, ...]] = ("stabilisation",)
+    has_history: ClassVar[bool] = False
+    is_linear: ClassVar[bool] = False
+    #: the penalty law evaluated with per-point stiffnesses (None: bonded)
+    springs: ClassVar[type | None] = None
+
+    @classmethod
+    def from_params(cls, params: dict, path: str):
+        """Build from a TOML table; k_N, k_T may be given (checked, unused)."""
+        allowed = set(cls.parameters) | {"type", "kN", "kT"}
+        unknown = sorted(set(params) - allowed)
+        if unknown:
+            raise SceneError(f"{path}.{unknown[0]}", f"unknown parameter of the exact '{cls.name}' law (it takes "
+                             f"{', '.join(cls.parameters)}; kN, kT play no part)")
+        for k in ("kN", "kT"):
+            if k in params:
+                _positive(params, k, path)
+        values = {"stabilisation": _stabilisation(params, path)}
+        if "mu" in cls.parameters:
+            values["mu"] = _friction(params, path)
+        return cls(**values)
+
+    def initial_state(self, m: int):
+        return None
+
+    def evaluate(self, y: np.ndarray, state, stiffness: np.ndarray) -> LawResponse:
+        """The penalty law with ``k_N = k_T = stiffness`` (per point) at the
+        augmented jumps ``y`` (module doc); the state is the caller's to set."""
+        k = np.asarray(stiffness, float)
+        return self.springs(**self._spring_values(k)).evaluate(y, state)
+
+    def _spring_values(self, k: np.ndarray) -> dict:
+        return {"kN": k, "kT": k}
+
+
+@dataclass(frozen=True)
+class ExactUnilateral(_ExactLaw):
+    """Signorini contact without friction, enforced exactly (module doc)."""
+
+    name: ClassVar[str] = "unilateral"
+    springs: ClassVar[type] = UnilateralLaw
+
+
+@dataclass(frozen=True)
+class ExactCoulomb(_ExactLaw):
+    """Signorini contact with Coulomb friction, enforced exactly: the state
+    is the jump ``g_T`` at the last converged increment (module doc)."""
+
+    mu: float = 0.0
+    name: ClassVar[str] = "coulomb"
+    parameters: ClassVar[tuple[str, ...]] = ("mu", "stabilisation")
+    has_history: ClassVar[bool] = True
+    springs: ClassVar[type] = CoulombLaw
+
+    def initial_state(self, m: int) -> np.ndarray:
+        return np.zeros(m)
+
+    def _spring_values(self, k: np.ndarray) -> dict:
+        return {"kN": k, "kT": k, "mu": self.mu}
+
+
+@dataclass(frozen=True)
+class Bonded(_ExactLaw):
+    """Perfect bonding, ``g = 0`` (the limit k → ∞ of ``linear``): ``t = γ y``."""
+
+    name: ClassVar[str] = "bonded"
+    is_linear: ClassVar[bool] = True
+
+    @classmethod
+    def from_params(cls, params: dict, path: str):
+        for k in ("kN", "kT"):
+            if k in params:
+                raise SceneError(f"{path}.{k}", "the bonded law has no springs (for springs use type = \"linear\")")
+        return super().from_params(params, path)
+
+    def evaluate(self, y: np.ndarray, state, stiffness: np.ndarray) -> LawResponse:
+        y = np.asarray(y, float).reshape(-1, 2)
+        k = np.asarray(stiffness, float)
+        tangent = k[:, None, None] * np.eye(2)
+        return LawResponse(k[:, None] * y, tangent, None, np.full(len(y), STICK, dtype=np.int8))
+
+
+#: Every law enforced exactly, by the name a scene file gives it.
+EXACT_LAWS = {law.name: law for law in (ExactUnilateral, ExactCoulomb, Bonded)}
+
+
+def make_law(kind: str, enforcement: str, params: dict, path: str):
+    """The exact law ``kind`` (``enforcement`` as the scene gave it), or a
+    SceneError naming the field."""
+    if kind in BONDED and enforcement != "exact":
+        raise SceneError(f"{path}.enforcement", f"the '{kind}' law has no springs: it is enforced exactly only "
+                         "(for springs use type = \"linear\")")
+    if kind not in EXACT_LAWS:
+        raise SceneError(f"{path}.enforcement", f"the '{kind}' law is enforced by its springs only (exact "
+                         f"enforcement: {', '.join(EXACT_LAWS)}; perfect bonding is type = \"bonded\")")
+    return EXACT_LAWS[kind].from_params(params, path)
+
+
+def is_exact(law) -> bool:
+    return getattr(law, "enforcement", "penalty") == "exact"
+
+
+# ----- the interface operator of Nitsche's method ----------------------------
+
+class NitscheInterface:
+    """A method's :class:`~contactcore.newton.InterfaceOperator` (with its
+    ``S`` and ``stabilisation`` γ₀) read by Newton for an exact law of
+    stabilisation ``β`` (module doc): ``jumps`` the actual jumps ``G u``,
+    the law evaluated at ``G̃ u`` with ``γ = β γ₀``, the forces
+    ``G̃ᵀ W t + C u`` and the tangent ``G̃ᵀ W D G̃ + C``.  Under mpirun the
+    columns of ``G``, ``S`` are the local numbering of ``exchange``, so
+    ``C`` is applied as ``exchange.reverse(Sᵀ (W Γ⁻¹ S exchange.forward(u)))``,
+    and added to the tangent where it falls, like ``Gᵀ W D G``."""
+
+    def __init__(self, operator, beta: float):
+        self.operator = operator
+        self.gamma = beta * np.asarray(operator.stabilisation, float)
+        inverse = sp.diags(np.repeat(1.0 / self.gamma, 2)) if len(self.gamma) else sp.csr_matrix((0, 0))
+        self.augmented = (operator.G + inverse @ operator.S).tocsr()  # G̃
+        self._scaled = replace(operator, G=self.augmented)  # forces, stiffness and pattern on G̃
+        WS = sp.diags(np.repeat(operator.weights / self.gamma, 2)) @ operator.S if len(self.gamma) else operator.S
+        self.correction = (-(operator.S.T @ WS)).tocsr()  # C, local numbering
+
+    def __getattr__(self, name):  # points, weights, exchange, size: the method's
+        return getattr(self.operator, name)
+
+    def jumps(self, u: np.ndarray) -> np.ndarray:
+        return self.operator.jumps(u)
+
+    def respond(self, law, u: np.ndarray, state, **options) -> LawResponse:
+        """The law at the augmented jumps ``G̃ u`` with ``γ``; a law with
+        history keeps the actual ``g_T`` (not the penalty's update)."""
+        response = law.evaluate(self._scaled.jumps(u), state, self.gamma, **options)
+        new_state = self.jumps(u)[:, 1].copy() if law.has_history else None
+        return replace(response, state=new_state)
+
+    def internal(self, u: np.ndarray, traction: np.ndarray) -> np.ndarray:
+        """``G̃ᵀ W t + C u`` (owned rows)."""
+        local = u if self.exchange is None else self.exchange.forward(u)
+        bulk = self.correction @ local
+        bulk = bulk if self.exchange is None else self.exchange.reverse(bulk)
+        return self._scaled.forces(traction) + bulk
+
+    def stiffness(self, tangent: np.ndarray) -> sp.csr_matrix:
+        return (self._scaled.stiffness(tangent) + self.correction).tocsr()
+
+    def pattern(self) -> sp.csr_matrix:
+        return self._scaled.pattern()
+
+    def regularised(self, tangent: np.ndarray) -> np.ndarray:
+        """The law's ``tangent`` with the stick stiffness γ in ``∂t_T/∂y_T``
+        of its slipping points (closed, ``∂t_T/∂y_T = 0``).  Where every
+        point of a body held by Γ alone slips, the exact tangent leaves it
+        free to turn (its residual is flat along that motion): Newton takes
+        one step on this one there, then goes on with the law's."""
+        out = np.array(tangent, float, copy=True)
+        slipping = (out[:, 0, 0] != 0.0) & (out[:, 1, 1] == 0.0)
+        out[slipping, 1, 1] = self.gamma[slipping]
+        return out
+
+
+def enforced(law, operator):
+    """The interface operator Newton reads for ``law``: the method's own for
+    a penalty law, :class:`NitscheInterface` for an exact one."""
+    return NitscheInterface(operator, law.stabilisation) if is_exact(law) else operator
+
+
+def check(law, operator, method: str) -> None:
+    """Refuse exact enforcement by a method whose operator lacks ``S`` or γ₀."""
+    if is_exact(law) and (getattr(operator, "S", None) is None or getattr(operator, "stabilisation", None) is None):
+        raise DiscretisationError(f"{method}: exact enforcement (the '{law.name}' law) needs the method's consistent "
+                                  "traction on Γ and its stabilisation, which it does not provide yet; use "
+                                  "enforcement = \"penalty\"")

@@ -1,0 +1,183 @@
+"""Exact enforcement (symmetric Nitsche, contactcore.exact): the scene
+keys, the bonded patch test (S reproduces the traction of a linear
+field), the layered closed form with exact stick at every increment, a
+unilateral closed form pulled apart and pressed, and the independence
+of the answer from k_N, k_T.  Methods whose interface operator does not
+yet carry Nitsche's S and γ₀ are skipped with that reason."""
+import numpy as np
+import pytest
+
+import tolerances as tol
+from contactcore import DiscretisationError, SceneError, Support, load_scene, make_law, sample_profiles
+from contactcore import discretisation
+from contactcore.exact import Bonded, ExactCoulomb, ExactUnilateral
+from contactcore.laws import OPEN, STICK
+from contactcore.scene import Pressure
+from efgm.options import EFGM
+from verification.closed_forms import interface_patch, layered_slip
+from xdolfinx.options import FE, XFEM
+
+#: (method, degree) -> its discretisation and its patch-test bound (as tests/test_contract.py).
+METHODS = {
+    ("fe", 1): (FE(degree=1), tol.PATCH_ROUNDOFF),
+    ("fe", 2): (FE(degree=2), tol.PATCH_ROUNDOFF),
+    ("xfem", 1): (XFEM(degree=1), 10 * tol.XFEM_PATCH),
+    ("xfem", 2): (XFEM(degree=2), 10 * tol.XFEM_PATCH),
+    ("efgm", 1): (EFGM(degree=1), tol.EFGM_PATCH_SIGMA),
+    ("efgm", 2): (EFGM(degree=2), tol.EFGM_PATCH_SIGMA),
+}
+IDS = lambda k: f"{k[0]}-P{k[1]}"  # noqa: E731
+
+PATCH_PINS = ((0.1, 0.1), (0.5, 0.1))
+PATCH_H = 0.1
+
+
+def _solve(scene, disc, h=None, **kw):
+    """Solve, skipping a method that refuses exact enforcement for want of S and γ₀."""
+    try:
+        return discretisation.solve(scene, disc, h, **kw)
+    except DiscretisationError as exc:
+        if "exact enforcement" in str(exc):
+            pytest.skip(f"{disc.name}: its interface operator carries no Nitsche S, γ₀ yet")
+        raise
+
+
+# ----- the scene keys --------------------------------------------------------
+
+@pytest.mark.parametrize("params, field", [
+    ({"type": "unilateral", "enforcement": "exakt"}, "enforcement"),
+    ({"type": "linear", "kN": 1.0, "kT": 1.0, "enforcement": "exact"}, "enforcement"),
+    ({"type": "bonded", "enforcement": "penalty"}, "enforcement"),
+    ({"type": "bonded", "kN": 1e10}, "kN"),
+    ({"type": "unilateral", "kN": 1.0, "kT": 1.0, "stabilisation": 5.0}, "stabilisation"),
+    ({"type": "coulomb", "enforcement": "exact", "stabilisation": -1.0, "mu": 0.2}, "stabilisation"),
+    ({"type": "coulomb", "enforcement": "exact"}, "mu"),
+    ({"type": "unilateral", "enforcement": "exact", "kN": -1.0}, "kN"),
+])
+def test_bad_exact_law_tables_name_the_field(params, field):
+    with pytest.raises(SceneError, match=f"interface.law.{field}"):
+        make_law(params)
+
+
+def test_exact_laws_read_from_tables():
+    """k_N, k_T are accepted and play no part; β defaults."""
+    law = make_law({"type": "coulomb", "enforcement": "exact", "kN": 1e6, "kT": 1.0, "mu": 0.3})
+    assert law == ExactCoulomb(mu=0.3, stabilisation=tol_default())
+    assert make_law({"type": "unilateral", "enforcement": "exact", "stabilisation": 3.0}) == ExactUnilateral(3.0)
+    assert make_law({"type": "bonded"}) == Bonded(tol_default())
+
+
+def tol_default():
+    from contactcore.tolerances import NITSCHE_STABILISATION
+    return NITSCHE_STABILISATION
+
+
+def test_exact_scene_round_trips_through_toml():
+    from contactcore.scene import scene_from_dict, scene_to_dict
+    scene = load_scene("A").with_changes(law=ExactUnilateral(7.0))
+    assert scene_from_dict(scene_to_dict(scene)).law == scene.law
+
+
+# ----- closed forms ------------------------------------------------------------
+
+@pytest.mark.parametrize("key", list(METHODS), ids=IDS)
+def test_bonded_patch_is_the_single_body_answer(key):
+    """Perfect bonding across the inclined Γ: the jump vanishes and the
+    tractions are σn (t_N = σ_nn, t_T = σ_nt) at every point, the fields
+    the closed form's, to round-off (Nitsche's S reproduces the traction of
+    the linear field)."""
+    disc, bound = METHODS[key]
+    patch = interface_patch(30.0, pins=PATCH_PINS)
+    scene = patch.scene.with_changes(law=Bonded(tol_default()))
+    result = _solve(scene, disc, PATCH_H)
+    final = result.interface.final
+    scale = np.abs(patch.sigma).max()
+    n = np.asarray(patch.scene.interface.normal)
+    want = np.array([n @ patch.sigma @ n, n @ patch.sigma @ np.array([n[1], -n[0]])])
+    assert np.abs(final.traction - want).max() <= bound * scale, final.traction
+    strain = scale / min(m.E for m in scene.materials.values())
+    assert np.abs(final.jump).max() <= bound * strain
+    pts = np.random.default_rng(1).uniform(0.05, 0.95, (40, 2))
+    bodies = scene.body_of(pts)
+    zero_jump = interface_patch(30.0, pins=PATCH_PINS)
+    zero_jump.jump = np.zeros(2)
+    assert np.abs(result.fields.stress(pts, bodies) - patch.stress(pts, bodies)).max() <= bound * scale
+    assert np.abs(result.fields.displacement(pts, bodies) - zero_jump.displacement(pts, bodies)).max() <= bound * strain
+
+
+@pytest.mark.parametrize("key", list(METHODS), ids=IDS)
+def test_layered_closed_form_with_exact_stick(key):
+    """Stick, slip, stick after reversal and reversed slip: at every
+    increment the mean t_T is the closed form's τ and the mean g_T its slip
+    alone (no τ/k_T part: no spring), every point in the closed form's
+    status away from the limit."""
+    disc, bound = METHODS[key]
+    case = layered_slip(exact=True)
+    result = _solve(case.scene, disc)
+    w = result.interface.weights / result.interface.weights.sum()
+    steps = [s for s in result.interface.steps if float(s.step).is_integer()]
+    history = case.history()
+    assert len(steps) == len(history)
+    slip_scale = max(abs(st.slip) for st in history)
+    for step, st in zip(steps, history):
+        limit = case.mu * st.p
+        assert abs(w @ step.traction[:, 1] - st.tau) <= bound * limit + 1e-9, step.step
+        assert abs(w @ step.jump[:, 1] - st.slip) <= bound * slip_scale, step.step
+        assert np.abs(step.jump[:, 0]).max() <= bound * slip_scale, step.step
+        if abs(st.tau) < (1 - tol.EXACT_LIMIT_BAND) * limit:
+            assert np.all(step.status == STICK), step.step
+
+
+def _pulled_and_pressed(d: float, p: float):
+    """The layered block (ν = 0) with the unilateral law enforced exactly:
+    its top held and lifted by ``d`` (Γ opens), or free in y and pressed by
+    ``p`` (Γ closes)."""
+    base = layered_slip(exact=True).scene
+    bottom = Support("bottom", "xy", (0.0, 0.0))
+    law = ExactUnilateral(tol_default())
+    pulled = base.with_changes(name="pulled", law=law, loads=(), increments=1,
+                               supports=(bottom, Support("top", "xy", (0.0, d))))
+    pressed = base.with_changes(name="pressed", law=law, loads=(Pressure("top", p),), increments=1,
+                                supports=(bottom, Support("top", "x", (0.0, 0.0))))
+    return pulled, pressed
+
+
+@pytest.mark.parametrize("key", list(METHODS), ids=IDS)
+def test_unilateral_pulled_apart_then_pressed(key):
+    """Pulled apart: Γ open, t = 0, g_N the lift.  Pressed: Γ closed,
+    g_N = 0 exactly (no spring), t_N = −p at every point."""
+    disc, bound = METHODS[key]
+    d, p = 1e-5, 1e6
+    pulled, pressed = _pulled_and_pressed(d, p)
+    open_ = _solve(pulled, disc).interface.final
+    assert np.all(open_.status == OPEN)
+    assert np.abs(open_.traction).max() == 0.0
+    assert np.abs(open_.jump[:, 0] - d).max() <= bound * d
+    closed = _solve(pressed, disc).interface.final
+    assert np.all(closed.status == STICK)
+    assert np.abs(closed.traction[:, 0] + p).max() <= bound * p
+    assert np.abs(closed.traction[:, 1]).max() <= bound * p
+    assert np.abs(closed.jump).max() <= bound * p / min(m.E for m in pressed.materials.values())
+
+
+# ----- independence of the springs ---------------------------------------------
+
+def _profiles(scene, disc, h):
+    res = _solve(scene, disc, h)
+    return {(p.id, q): p.columns[q] for p in sample_profiles(scene, res.fields, res.interface)
+            for q in p.names[3:]}
+
+
+@pytest.mark.parametrize("key", [("fe", 1), ("xfem", 1), ("efgm", 1)], ids=IDS)
+def test_scene_a_unilateral_exact_ignores_the_springs(key):
+    """Scene A with the unilateral law enforced exactly: its profiles with
+    k_N, k_T of the scene and 1000 times softer agree to 1e-10 of their
+    scale (the springs play no part)."""
+    disc, _ = METHODS[key]
+    scene = load_scene("A")
+    answers = []
+    for k in (1.0, 1e-3):
+        law = make_law({"type": "unilateral", "enforcement": "exact", "kN": k * 1e10, "kT": k * 1e8})
+        answers.append(_profiles(scene.with_changes(law=law), disc, 0.1))
+    for q, v in answers[0].items():
+        assert np.abs(v - answers[1][q]).max() <= tol.EXACT_INDEPENDENCE * max(np.abs(v).max(), 1e-300), q
