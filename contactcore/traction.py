@@ -31,12 +31,6 @@ import scipy.sparse as sp
 from .geometry import tangent_of
 
 
-def wants_traction(scene) -> bool:
-    """Whether the scene's law is enforced exactly, so that the methods
-    build ``S`` and ``γ₀``."""
-    return getattr(scene.law, "enforcement", "penalty") == "exact"
-
-
 def nitsche_weights(areas: np.ndarray, moduli: np.ndarray, length: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """``(w, γ₀)`` of points (module doc) from the areas (m, 2) of the − and
     + parts of each point's cell, the Young's moduli (2,) of the − and +

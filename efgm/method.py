@@ -40,7 +40,7 @@ from contactcore.newton import InterfaceOperator
 from contactcore.geometry import tangent_of
 from contactcore.scene import Pressure, Traction, body_force
 
-from contactcore.traction import wants_traction
+from contactcore.exact import is_exact
 
 from . import distributed, sparse_solver, traction
 from .nodes import NodeSet, check_nodes, grid_nodes, support_radii
@@ -261,9 +261,9 @@ def build(scene: Scene, options: EFGM, resolution: Resolution, timings: Timings)
             jump = (approx.displacement_operator(sv[1], np.ones(m, int))
                     - approx.displacement_operator(sv[0], np.zeros(m, int)))
             G = block_diagonal(np.stack([gam_n, tangent_of(gam_n)], axis=1)) @ jump
-            S, gamma = traction.traction(scene, approx, sv, vol, (origin, step, np.rint((hi.max(axis=0) - origin)
-                                                                                   / step).astype(int)),
-                                         gam_pts, gam_n, n) if wants_traction(scene) else (None, None)
+            cells = (origin, step, np.rint((hi.max(axis=0) - origin) / step).astype(int))
+            S, gamma = (traction.traction(scene, approx, sv, vol, cells, gam_pts, gam_n, n) if is_exact(scene.law)
+                        else (None, None))
             constraints = _constraints(scene, approx, evaluated)
             loads = _load_vectors(scene, approx, body_vectors, ns.h, n, ranks)
         except ContactError as exc:

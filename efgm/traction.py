@@ -12,7 +12,10 @@ on its − side, the cell whose Γ rule holds it (:mod:`contactcore.cutcell`:
 one above is not).  The parts' areas, not equal halves: a body thinner
 than a cell near Γ (a strip along a boundary, a corner Γ clips) controls
 its own stress over that small area only, and the weights then read the
-traction from the other body.
+traction from the other body.  (Squares of side h centred at each point,
+which a straight Γ halves, gave smoother weights along Γ and the same
+accuracy on the inclined placements of scene A, but Newton then cycled
+at the slip reversal of the layered Coulomb closed form, linear basis.)
 
 With ``sv`` the shape functions at the points for each body and ``B_k`` the
 strain operator of body k (:meth:`efgm.operators.Approximation.strain_operator`),

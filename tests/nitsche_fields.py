@@ -10,23 +10,16 @@ bodies k (the shifted Heaviside of both methods).
 """
 from __future__ import annotations
 
-import dataclasses
-
 import numpy as np
 
 from contactcore.discretisation import Resolution
-from contactcore.laws import UnilateralLaw
+from contactcore.laws import make_law
 from contactcore.result import Timings
-
-
-@dataclasses.dataclass(frozen=True)
-class _ExactUnilateral(UnilateralLaw):
-    enforcement = "exact"
 
 
 def exact(scene):
     """``scene`` with a unilateral law enforced exactly."""
-    return dataclasses.replace(scene, law=_ExactUnilateral(1e10, 1e8))
+    return scene.with_changes(law=make_law({"type": "unilateral", "enforcement": "exact"}))
 
 
 def build(method: str, scene, degree: int, h: float, **options):

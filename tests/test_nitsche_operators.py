@@ -90,8 +90,9 @@ def _closed_form(theta: float) -> tuple[float, float]:
 @pytest.mark.parametrize("theta", [0.3, 1.0])
 @pytest.mark.parametrize("method, degree, options", METHODS[:3], ids=IDS[:3])
 def test_weights_and_stabilisation_on_a_horizontal_gamma(method, degree, options, theta):
-    """Γ θ up a row of cells: ``w₋`` and ``γ₀`` in closed form; θ = 1 puts Γ
-    on the cells' edges, whose points belong to the cell below (wholly −)."""
+    """Γ θ up a row of cells (xfem's cut cells, efgm's background cells):
+    ``w₋`` and ``γ₀`` in closed form; θ = 1 puts Γ on the cells' edges,
+    whose points belong to the cell below (wholly −)."""
     itf, tau, sides = _split(method, degree, options, _horizontal(0.5 + (theta - 1) * H))
     w, rest = _weights(tau, sides)
     w_minus, gamma = _closed_form(theta)

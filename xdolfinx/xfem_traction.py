@@ -6,7 +6,11 @@ Hautefeuille and Dolbow, CMAME 2012).
 The cell of a Γ point is the mesh cell whose Γ rule holds it, ``Ω_kᵉ``
 the part of that cell on side k (the cut-cell rule's weights summed; a
 cell that Γ only touches along an edge is wholly on one side, the other
-part empty) and ``Γᵉ`` Γ's piece in it.  Body k's stress at a point of cell
+part empty) and ``Γᵉ`` Γ's piece in it.  Where Γ only passes through a
+corner of the cell the piece has no length and its points no weight:
+they enter no integral, and ``|Γᵉ|`` is taken as the cell's diameter so
+that ``γ₀ > 0`` there (the exact law divides by it) and their traction,
+reported along Γ, is of the kind of their neighbours'.  Body k's stress at a point of cell
 ``c`` is the polynomial of its side there,
 ``σ_k = D_k B_k u_c`` with ``B_k`` the strain matrix of the cell's block
 layout (u, then the shifted Heaviside ``(H_k − H_J)`` a, per node).  A
@@ -29,7 +33,8 @@ from contactcore import BODIES
 from contactcore.assembly import Triplets
 from contactcore.bodies import Body
 from contactcore.newton import InterfaceOperator
-from contactcore.traction import nitsche_weights, traction_maps, wants_traction
+from contactcore.exact import is_exact
+from contactcore.traction import nitsche_weights, traction_maps
 
 
 def cell_parts(space, c: int) -> np.ndarray:
@@ -48,7 +53,8 @@ def cell_traction(space, c: int, D: np.ndarray, moduli: np.ndarray):
     pts, w, normals = space.gamma_rules[c]
     P = len(w)
     areas = np.broadcast_to(cell_parts(space, c), (P, 2))
-    weights, gamma = nitsche_weights(areas, moduli, np.full(P, np.sum(w)))
+    length = np.sum(w) if np.sum(w) > 0 else space.cell_size[c]  # a piece through a corner: no length
+    weights, gamma = nitsche_weights(areas, moduli, np.full(P, length))
     maps = traction_maps(normals, D, weights)
     _, dN = space.tabulate(c, pts)
     rows = np.zeros((P, 2, 4 * dN.shape[1]))
@@ -83,7 +89,7 @@ def traction_operator(space):
 def with_traction(interface: InterfaceOperator, space) -> InterfaceOperator:
     """``interface`` with ``S`` and ``γ₀`` when the scene's law is enforced
     exactly, else as it is."""
-    if not wants_traction(space.scene):
+    if not is_exact(space.scene.law):
         return interface
     S, gamma = traction_operator(space)
     return dataclasses.replace(interface, S=S, stabilisation=gamma)
