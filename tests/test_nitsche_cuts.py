@@ -21,9 +21,8 @@ PLACEMENTS = [(20.0, 0.4)] + seeded_inclined(23)
 METHODS = {"xfem-quad-P1": XFEM(degree=1, cell="quad"), "xfem-quad-P2": XFEM(degree=2, cell="quad"),
            "xfem-triangle-P1": XFEM(degree=1, cell="triangle"), "xfem-triangle-P2": XFEM(degree=2, cell="triangle"),
            "efgm-P1": EFGM(degree=1), "efgm-P2": EFGM(degree=2)}
-#: efgm's quadratic basis: 1.9–4.0 % on placements 1, 2, 5, 12 at β = 20
-#: (1.2–1.3 % at β = 5): the γ g_N part of its traction (tests/test_exact.py's
-#: EFGM_P2_PRESSED).
+#: efgm's quadratic basis: 1.9–3.9 % on placements 1, 2, 12 at β = 20: the
+#: γ g_N part of its traction (tests/test_exact.py's EFGM_P2_PRESSED).
 EFGM_P2 = pytest.mark.xfail(strict=False, reason="efgm P2: t_N 2–4 % off fe's at β = 20 (NITSCHE_CUT_AGREE)")
 
 

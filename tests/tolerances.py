@@ -338,6 +338,6 @@ EXACT_INDEPENDENCE = 1e-10
 #: same bound on the second difference of that error from point to point
 #: (an error alternating with amplitude a has 4a), so that no oscillation
 #: hides under it.  Measured 2026-11-26 at h = 0.025, β = 20, on placements
-#: 1, 2, 5, 12: xfem P2 quads ≤ 0.02 %, xfem P1 triangles ≤ 2.5 % (second
-#: difference 4.6 %), efgm P1 ≤ 0.36 %, efgm P2 1.9–4.0 % (above its bound).
+#: 1, 2, 12: xfem P2 ≤ 0.07 %, xfem P1 ≤ 2.5 % (second difference 4.6 %),
+#: efgm P1 ≤ 0.35 %, efgm P2 1.9–3.9 % (above its bound).
 NITSCHE_CUT_AGREE = {1: 0.15, 2: 0.02}
