@@ -132,8 +132,9 @@ class InterfaceOperator:
 
     def pattern(self) -> sp.csr_matrix:
         """Every entry any ``Gᵀ W D G`` can reach (values meaningless):
-        both jumps of a point couple through a full 2 × 2 ``D``."""
-        A = abs(self.G)
+        both jumps of a point couple through a full 2 × 2 ``D``; with ``S``,
+        every unknown either reaches (Nitsche's ``G + Γ⁻¹S`` and ``SᵀWΓ⁻¹S``)."""
+        A = abs(self.G) if self.S is None else abs(self.G) + abs(self.S)
         pairs = sp.kron(sp.identity(self.size), np.ones((2, 2)), format="csr")
         return (A.T @ pairs @ A).tocsr()
 

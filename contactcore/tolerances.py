@@ -419,3 +419,4 @@ ENERGY_RINGS = 1
 #: (tests/tolerances.py EFFECTIVITY; docs/error-estimates.md gives the
 #: measured table).  ``efficiency`` draws it as the estimate's error bar.
 ESTIMATE_TRUST = 2.0
+

@@ -34,6 +34,8 @@ included) or without petsc4py, EFGM is the serial method, unchanged.
 """
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 import scipy.sparse as sp
 
@@ -112,15 +114,19 @@ class DistributedEFGMSystem:
         C = scale * constraints.operator
         mine = sp.bmat([[K, C.T], [C, sp.csr_matrix((c, c))]], format="csr")
         # the interface: this rank's points, G's columns local (owned, then the ghosts they reach)
-        G = sp.csr_matrix((interface.G.data, interface.G.indices, interface.G.indptr),
-                          shape=(interface.G.shape[0], total))
-        touched = np.unique(G.indices)
+        operators = [M for M in (interface.G, interface.S) if M is not None]  # Nitsche's S reaches further
+        touched = np.unique(np.concatenate([M.indices for M in operators]))
         self.exchange = ls.ScatterExchange(comm, starts, touched[(touched < first) | (touched >= last)])
         where = np.argsort(self.exchange.indices)
-        local = where[np.searchsorted(self.exchange.indices, G.indices, sorter=where)]
-        self.interface = InterfaceOperator(sp.csr_matrix((G.data, local, G.indptr),
-                                                         shape=(G.shape[0], self.exchange.local_size)),
-                                           interface.weights, interface.points, self.exchange)
+
+        def local(M):
+            if M is None:
+                return None
+            columns = where[np.searchsorted(self.exchange.indices, M.indices, sorter=where)]
+            return sp.csr_matrix((M.data, columns, M.indptr), shape=(M.shape[0], self.exchange.local_size))
+
+        self.interface = dataclasses.replace(interface, G=local(interface.G), S=local(interface.S),
+                                             exchange=self.exchange)
         reach = self.interface.pattern().tocoo()  # every K_Γ entry this rank may add, in global numbering
         reach = sp.csr_matrix((np.abs(reach.data), (self.exchange.indices[reach.row],
                                                     self.exchange.indices[reach.col])), shape=(total, total))

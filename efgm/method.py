@@ -25,6 +25,8 @@ petsc4py, mpi4py nor gmsh.
 """
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 import scipy.sparse as sp
 
@@ -38,7 +40,9 @@ from contactcore.newton import InterfaceOperator
 from contactcore.geometry import tangent_of
 from contactcore.scene import Pressure, Traction, body_force
 
-from . import distributed, sparse_solver
+from contactcore.exact import is_exact
+
+from . import distributed, sparse_solver, traction
 from .nodes import NodeSet, check_nodes, grid_nodes, support_radii
 from .operators import SYMMETRIC, Approximation, block_diagonal, find_enrichment
 from .options import BASES, EFGM  # noqa: F401 (BASES re-exported: the bases by name)
@@ -192,9 +196,8 @@ class EFGMSystem:
         self.ndofs = K.shape[0]
         self.constraint_rows = np.arange(self.ndofs, self.size)  # the multipliers' rows: s (C u − ū)
         self.loads = loads
-        G = interface.G
-        self.interface = InterfaceOperator(sp.csr_matrix((G.data, G.indices, G.indptr), shape=(G.shape[0], self.size)),
-                                           interface.weights, interface.points)
+        self.interface = dataclasses.replace(interface, G=widened(interface.G, self.size),
+                                             S=widened(interface.S, self.size))
         self.fixed = np.zeros(0, int)
         self.coords, self.reach, self.estimate, self.what = coords, reach, estimate_condition, what
         self._tangent = None  # Newton's J and its factorisation, made at the first solve
@@ -219,6 +222,11 @@ class EFGMSystem:
         if self._tangent is not None:
             self._tangent.close()
         self._tangent = None
+
+
+def widened(M: sp.csr_matrix | None, size: int) -> sp.csr_matrix | None:
+    """``M`` with ``size`` columns (the multipliers' after the unknowns'), its entries shared."""
+    return None if M is None else sp.csr_matrix((M.data, M.indices, M.indptr), shape=(M.shape[0], size))
 
 
 def build(scene: Scene, options: EFGM, resolution: Resolution, timings: Timings) -> Built:
@@ -249,16 +257,20 @@ def build(scene: Scene, options: EFGM, resolution: Resolution, timings: Timings)
         try:  # what a rank evaluates alone may fail on it alone: every rank raises the error alike
             K, body_vectors = approx.stiffness_and_forces(cells, origin, step, D, _body_forces(scene, cells))
             m = len(gam_w)
-            jump = (approx.displacement_operator(mls.evaluate(gam_pts, np.ones(m, int)), np.ones(m, int))
-                    - approx.displacement_operator(mls.evaluate(gam_pts, np.zeros(m, int)), np.zeros(m, int)))
+            sv = [mls.evaluate(gam_pts, np.full(m, b)) for b in (0, 1)]
+            jump = (approx.displacement_operator(sv[1], np.ones(m, int))
+                    - approx.displacement_operator(sv[0], np.zeros(m, int)))
             G = block_diagonal(np.stack([gam_n, tangent_of(gam_n)], axis=1)) @ jump
+            cells = (origin, step, np.rint((hi.max(axis=0) - origin) / step).astype(int))
+            S, gamma = (traction.traction(scene, approx, sv, vol, cells, gam_pts, gam_n, n) if is_exact(scene.law)
+                        else (None, None))
             constraints = _constraints(scene, approx, evaluated)
             loads = _load_vectors(scene, approx, body_vectors, ns.h, n, ranks)
         except ContactError as exc:
             error = exc
         ranks.raise_any(error)
         scale, what = max(m.E for m in scene.materials.values()), f"scene {scene.name} (efgm)"
-        interface = InterfaceOperator(G.tocsr(), gam_w, gam_pts)
+        interface = InterfaceOperator(G.tocsr(), gam_w, gam_pts, S=S, stabilisation=gamma)
         if ranks.parallel:
             system = distributed.DistributedEFGMSystem(K, constraints, loads, interface, scale, ranks,
                                                        options.estimate_condition, what)

@@ -410,3 +410,14 @@ EFFECTIVITY_OUTSIDE = {
     ("quadratic_layers", "efgm", 2, "gamma", "gT"): 0.447, ("quadratic_layers", "efgm", 2, "gamma", "tT"): 0.447,
     ("quadratic_layers", "efgm", 2, "vertical", "ux"): 0.419, ("layered_slip", "efgm", 2, "L2", "uy"): 0.488,
 }
+
+#: Scene A with the unilateral law enforced exactly and Γ inclined (the
+#: placements of tests/placements.py): xfem's and efgm's t_N at Γ's points
+#: against fe P2's at h/2, worst over the points away from Γ's ends, over
+#: the largest |t_N| (the issue's 2 % at degree 2, 15 % at degree 1); the
+#: same bound on the second difference of that error from point to point
+#: (an error alternating with amplitude a has 4a), so that no oscillation
+#: hides under it.  Measured 2026-11-26 at h = 0.025, β = 20, on placements
+#: 1, 2, 12: xfem P2 ≤ 0.07 %, xfem P1 ≤ 2.5 % (second difference 4.6 %),
+#: efgm P1 ≤ 0.35 %, efgm P2 1.9–3.9 % (above its bound).
+NITSCHE_CUT_AGREE = {1: 0.15, 2: 0.02}

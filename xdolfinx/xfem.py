@@ -69,6 +69,7 @@ from .elasticity import sigma
 from .evaluation import BodyCellLocator
 from .options import XFEM, XFEM_CELLS
 from .quiet import quiet_jit
+from .xfem_traction import with_traction
 
 METHOD = XFEM.name
 
@@ -925,7 +926,8 @@ def build(scene: Scene, options: XFEM, resolution: Resolution, timings: Timings)
         A.assemble()
         rows, values, owners = _support_rows(space)
         system = PETScSystem(A, [_load_vector(space, L, load) for L, load in zip(loads, scene.loads)],
-                             Constraints.on_dofs(rows, values, owners, space.ranks), interface_operator(space),
+                             Constraints.on_dofs(rows, values, owners, space.ranks),
+                             with_traction(interface_operator(space), space),
                              comm=msh.comm, petsc_options=options.petsc_options,
                              estimate_condition=options.estimate_condition, what=f"scene {scene.name} (xfem)")
     owned = space.owned_cells

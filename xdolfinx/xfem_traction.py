@@ -1,0 +1,95 @@
+"""XFEM's consistent interface traction for Nitsche's method: ``S`` with
+``τ = S u = [n·{σ}n, t·{σ}n]`` at Γ's points, and the stabilisation ``γ₀``
+(:mod:`contactcore.traction` for the maths and its source: Annavarapu,
+Hautefeuille and Dolbow, CMAME 2012).
+
+The cell of a Γ point is the mesh cell whose Γ rule holds it, ``Ω_kᵉ``
+the part of that cell on side k (the cut-cell rule's weights summed; a
+cell that Γ only touches along an edge is wholly on one side, the other
+part empty) and ``Γᵉ`` Γ's piece in it.  Where Γ only passes through a
+corner of the cell the piece has no length and its points no weight:
+they enter no integral, and ``|Γᵉ|`` is taken as the cell's diameter so
+that ``γ₀ > 0`` there (the exact law divides by it) and their traction,
+reported along Γ, is of the kind of their neighbours'.  Body k's stress at a point of cell
+``c`` is the polynomial of its side there,
+``σ_k = D_k B_k u_c`` with ``B_k`` the strain matrix of the cell's block
+layout (u, then the shifted Heaviside ``(H_k − H_J)`` a, per node).  A
+sliver side gets a weight → 0 as the cut fraction does, so its barely
+determined enriched unknowns never reach the traction, and ``γ₀`` stays
+bounded (:func:`contactcore.traction.nitsche_weights`).
+
+The rows are in the order of :func:`xdolfinx.xfem.interface_operator`
+(the owned band cells that hold Γ, in order) and the columns are the same
+local unrolled unknowns ``2·block + j``, so ``S`` and ``G`` share the
+ghost exchange under mpirun.
+"""
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+
+from contactcore import BODIES
+from contactcore.assembly import Triplets
+from contactcore.bodies import Body
+from contactcore.newton import InterfaceOperator
+from contactcore.exact import is_exact
+from contactcore.traction import nitsche_weights, traction_maps
+
+
+def cell_parts(space, c: int) -> np.ndarray:
+    """(2,): the areas of the − and + parts of cell ``c``."""
+    areas = np.zeros(2)
+    for side, _, w, *_ in space.cell_values(c):
+        areas[(side + 1) // 2] += np.sum(w)
+    return areas
+
+
+def cell_traction(space, c: int, D: np.ndarray, moduli: np.ndarray):
+    """Cell ``c``'s rows of ``S`` (P, 2, 4n) in its block layout, and
+    ``γ₀`` (P,), at the points of its Γ rule."""
+    from .xfem import _strain_matrix
+
+    pts, w, normals = space.gamma_rules[c]
+    P = len(w)
+    areas = np.broadcast_to(cell_parts(space, c), (P, 2))
+    length = np.sum(w) if np.sum(w) > 0 else space.cell_size[c]  # a piece through a corner: no length
+    weights, gamma = nitsche_weights(areas, moduli, np.full(P, length))
+    maps = traction_maps(normals, D, weights)
+    _, dN = space.tabulate(c, pts)
+    rows = np.zeros((P, 2, 4 * dN.shape[1]))
+    for body in Body:
+        if weights[0, body] > 0:
+            B = _strain_matrix(dN, space.coefficients(c, body.sign))  # (P, 3, 4n)
+            rows += maps[body] @ B
+    return rows, gamma
+
+
+def traction_operator(space):
+    """``(S, γ₀)`` of the space's Γ points (module doc): ``S`` (2m × local
+    unknowns) in :func:`xdolfinx.xfem.interface_operator`'s rows and
+    columns, ``γ₀`` (m,) in Pa/m."""
+    scene = space.scene
+    D = scene.voigt_matrices()
+    moduli = np.array([scene.materials[b].E for b in BODIES])
+    trip = Triplets((0, 2 * space.num_blocks))
+    gammas, m = [], 0
+    for c in (c for c in space.owned_band if c in space.gamma_rules):
+        rows, gamma = cell_traction(space, c, D, moduli)
+        P = len(gamma)
+        blocks = space.cell_blocks(c)  # (2n,): per node its u block, then its a block (−1 if none)
+        cols = np.where(blocks[:, None] >= 0, 2 * blocks[:, None] + np.arange(2), -1).ravel()  # (4n,)
+        trip.add(2 * (m + np.arange(P))[:, None, None] + np.arange(2)[None, :, None], cols[None, None, :], rows)
+        gammas.append(gamma)
+        m += P
+    trip.shape = (2 * m, trip.shape[1])
+    return trip.to_csr(), np.concatenate(gammas) if gammas else np.zeros(0)
+
+
+def with_traction(interface: InterfaceOperator, space) -> InterfaceOperator:
+    """``interface`` with ``S`` and ``γ₀`` when the scene's law is enforced
+    exactly, else as it is."""
+    if not is_exact(space.scene.law):
+        return interface
+    S, gamma = traction_operator(space)
+    return dataclasses.replace(interface, S=S, stabilisation=gamma)
