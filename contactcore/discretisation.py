@@ -40,7 +40,6 @@ from . import exact
 from . import tolerances as tol
 from .errors import DiscretisationError
 from .geometry import LevelSetInterface, Rectangle
-from .collective import SERIAL
 from .newton import ContactSystem, solve_increments
 from .result import Result, Timings
 from .scaling import dimensionless
@@ -229,7 +228,7 @@ def solve(scene, discretisation: Discretisation, h: float | None = None, *, pape
         if reuse is None or not reuse.owns(built):
             built.system.close()
     report.warnings += scene.interface_warnings(built.h, fitted=built.fitted) + built.warnings
-    path = path.gathered(getattr(built.system, "collective", SERIAL), scene.interface)
+    path = path.gathered(built.system.collective, scene.interface)
     fields = built.fields(x)
     timings.total = time.perf_counter() - start
     return Result(method=discretisation.name, scene=scene, degree=discretisation.degree, dofs=built.dofs,

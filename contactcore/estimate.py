@@ -57,7 +57,7 @@ import numpy as np
 
 from . import tolerances as tol
 from .geometry import LineInterface, Rectangle
-from .newton import along
+from .interface_path import along
 from .profiles import ProfileData, sample_points, sample_profiles
 from .quadrature import background_cells, volume_rule
 from .recovery import PatchRecovery

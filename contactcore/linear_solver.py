@@ -1,6 +1,8 @@
-"""Direct solves with PETSc/MUMPS and an honest report of their health.
+"""Direct factorisations with PETSc/MUMPS and an honest report of their health.
 
-Defaults: ``preonly`` + LU with MUMPS.  Any PETSc option may be overridden
+Defaults: ``preonly`` with MUMPS, by LDLᵀ (:data:`SYMMETRIC`) for a matrix
+its owner says is symmetric while the interface tangent is symmetric too,
+by LU otherwise.  Any PETSc option may be overridden
 (``{"pc_factor_mat_solver_type": "superlu"}``, ``{"ksp_type": "gmres", ...}``).
 With MUMPS, two of its features are switched on: null-pivot detection
 (ICNTL(24), threshold CNTL(3)), which turns a singular system into a clear
@@ -12,7 +14,9 @@ Options are checked before the solve: a type PETSc does not list, or an
 option PETSc refuses while setting up (an unparsable value, a factorisation
 package this build lacks), is a :class:`PETScOptionError` that names the
 option; an option PETSc never read (misspelt, or not for this solver) is a
-warning in the report.
+warning in the report.  Each factorisation keeps its options in PETSc's
+options database under its owner's ``prefix`` (the method that made the
+matrix) and a number of its own, and removes them when destroyed.
 
 Every PETSc object made here is destroyed here, and every petsc4py handle
 on a part of one (``ksp.getPC()``, ``pc.getFactorMatrix()``) is released
@@ -20,11 +24,9 @@ before its owner is destroyed: with petsc4py 3.18 a handle that outlives the
 KSP keeps the PC and the MUMPS factor alive for good (measured: 2.4 MB per
 solve of a 4 900-unknown Laplacian, ~0.3 GB per solve of a 1.4e5-unknown P2
 system, and flat once the factor is destroyed before the KSP).  Neither
-dolfinx nor MPI is imported at the top: EFGM solves its scipy systems here too
-(:func:`to_petsc`, :class:`Tangent`).  Its distributed systems are made
-here as well (:func:`owned_rows`, :func:`distributed_aij`,
-:class:`ScatterExchange`), on PETSc and on the mpi4py communicator the
-caller hands in, so EFGM runs under mpirun without dolfinx.
+dolfinx nor MPI is imported: the matrices come from their owners (dolfinx's
+for fe and xfem; EFGM's scipy matrices made PETSc's by
+:mod:`efgm.petsc_matrices`), distributed or not.
 """
 from __future__ import annotations
 
@@ -42,7 +44,6 @@ from contactcore import SolverError, SolverReport
 from contactcore.errors import SolverOptionError
 from contactcore import health
 from contactcore import tolerances as tol
-from contactcore.assembly import sum_csr
 from contactcore.collective import SERIAL, Collective
 
 DEFAULT_OPTIONS = {"ksp_type": "preonly", "pc_type": "lu", "pc_factor_mat_solver_type": "mumps"}
@@ -97,6 +98,9 @@ MUMPS_ERRORS = {-10: "the matrix is numerically singular — a rigid-body mode m
                      "that the bulk stiffness is lost in round-off",
                 -13: "a workspace could not be allocated: the machine's memory is short for this size"}
 
+#: The options prefix of a factorisation whose maker names no owner.
+DEFAULT_PREFIX = "contactcore_"
+
 _prefixes = itertools.count()
 
 #: Options whose value names a PETSc type, and where petsc4py lists the types.
@@ -120,100 +124,6 @@ def is_symmetric(A: sp.spmatrix) -> bool:
     A = sp.csr_matrix(A)
     scale = abs(A).max() if A.nnz else 0.0
     return A.nnz == 0 or abs(A - A.T).max() <= tol.SYMMETRIC_TO_ROUNDOFF * scale
-
-
-def ownership(size: int, parts: int) -> np.ndarray:
-    """The first row of each of ``parts`` ranks, and ``size`` last: PETSc's
-    own split of ``size`` rows (PetscSplitOwnership), contiguous in rank
-    order, the first ``size % parts`` ranks one row more."""
-    counts = size // parts + (np.arange(parts) < size % parts)
-    return np.concatenate([[0], np.cumsum(counts)]).astype(np.int64)
-
-
-def owned_rows(local: sp.spmatrix, starts: np.ndarray, comm) -> sp.csr_matrix:
-    """The rows this rank owns (``starts[rank]`` to ``starts[rank + 1]``, in
-    global numbering) of the sum over the ranks of every rank's ``local``
-    contributions (global shape and numbering), canonical CSR: each rank
-    sends every other the rows it owns (one ``alltoall`` of CSR slices over
-    the mpi4py ``comm``) and sums what it receives in rank order, so the
-    sum does not depend on timing.  Entries summing to exactly zero are
-    dropped (:func:`~contactcore.assembly.sum_csr`)."""
-    local = sp.csr_matrix(local)
-    rank = comm.rank
-    received = comm.alltoall([(piece.indptr, piece.indices, piece.data) for piece in
-                              (local[starts[r]:starts[r + 1]] for r in range(comm.size))])
-    shape = (int(starts[rank + 1] - starts[rank]), local.shape[1])
-    return sum_csr(shape, [sp.csr_matrix((data, indices, indptr), shape=shape)
-                           for indptr, indices, data in received])
-
-
-def distributed_aij(owned: sp.csr_matrix, starts: np.ndarray, comm) -> PETSc.Mat:
-    """A PETSc MPIAIJ matrix on ``comm`` whose rows ``starts[rank]`` to
-    ``starts[rank + 1]`` are ``owned`` (global columns, :func:`owned_rows`),
-    columns split as the rows: preallocated exactly from that CSR, explicit
-    zeros kept (a pattern to refill)."""
-    owned = sp.csr_matrix(owned)
-    owned.sort_indices()
-    n, N = owned.shape[0], owned.shape[1]
-    return PETSc.Mat().createAIJ(size=((n, N), (n, N)), csr=(owned.indptr.astype(PETSc.IntType),
-                                                            owned.indices.astype(PETSc.IntType), owned.data),
-                                 comm=comm)
-
-
-class ScatterExchange:
-    """The ghost exchange of unknowns split in contiguous rows over the
-    mpi4py ``comm`` (``starts`` as :func:`ownership`), on PETSc alone: this
-    rank's local numbering is its owned unknowns, then ``ghosts`` (global
-    indices it reads but does not own, in the order given).  ``forward``:
-    owned values -> local values; ``reverse``: local contributions -> their
-    sums on the owners (owned values).  One :class:`PETSc.Scatter` between
-    the distributed vector and a sequential one of the local unknowns does
-    both; :meth:`local_to_global` gives the map for ``setValuesLocal``.
-    The caller destroys it (:meth:`destroy`)."""
-
-    def __init__(self, comm, starts: np.ndarray, ghosts: np.ndarray):
-        rank = comm.rank
-        first, last = int(starts[rank]), int(starts[rank + 1])
-        self.indices = np.concatenate([np.arange(first, last), np.asarray(ghosts, np.int64)])
-        self.owned_size, self.local_size = last - first, len(self.indices)
-        self._global = PETSc.Vec().createMPI((self.owned_size, int(starts[-1])), comm=comm)
-        self._local = PETSc.Vec().createSeq(self.local_size, comm=PETSc.COMM_SELF)
-        self._is = PETSc.IS().createGeneral(self.indices.astype(PETSc.IntType), comm=PETSc.COMM_SELF)
-        self._scatter = PETSc.Scatter().create(self._global, self._is, self._local, None)
-        self._map = PETSc.LGMap().create(self.indices.astype(PETSc.IntType), comm=comm)
-
-    def forward(self, owned: np.ndarray) -> np.ndarray:
-        self._global.setArray(np.ascontiguousarray(owned, float))
-        self._scatter.scatter(self._global, self._local, PETSc.InsertMode.INSERT_VALUES, PETSc.ScatterMode.FORWARD)
-        return self._local.getArray(readonly=True).copy()
-
-    def reverse(self, local: np.ndarray) -> np.ndarray:
-        self._local.setArray(np.ascontiguousarray(local, float))
-        self._global.set(0.0)
-        self._scatter.scatter(self._local, self._global, PETSc.InsertMode.ADD_VALUES, PETSc.ScatterMode.REVERSE)
-        return self._global.getArray(readonly=True).copy()
-
-    def local_to_global(self) -> PETSc.LGMap:
-        """The local numbering's map to the global one (owned by this object)."""
-        return self._map
-
-    def destroy(self) -> None:
-        for obj in (self._scatter, self._is, self._local, self._global, self._map):
-            obj.destroy()
-
-
-def to_petsc(A: sp.spmatrix) -> PETSc.Mat:
-    """A serial PETSc AIJ matrix with the entries of a scipy sparse matrix
-    (the PETSc side of :mod:`contactcore.assembly`'s one sink), made on
-    copies of its CSR arrays, which PETSc then uses as its own (its
-    ``MatCreateSeqAIJWithArrays``; petsc4py keeps them alive with the
-    matrix): no insertion row by row.  Measured on EFGM's matrix of scene C
-    at h = 0.0125 (7.2e6 entries): 0.011 s against 0.15 s through ``createAIJ``."""
-    A = sp.csr_matrix(A)
-    A.sort_indices()
-    return PETSc.Mat().createAIJWithArrays(size=A.shape, csr=(A.indptr.astype(PETSc.IntType),
-                                                              A.indices.astype(PETSc.IntType), A.data.copy()),
-                                           comm=PETSc.COMM_SELF)
 
 
 def _type_names(kinds) -> list[str]:
@@ -360,16 +270,18 @@ class Factorisation:
     when asked for); :meth:`solve` solves with the last factorisation, as
     often as asked (a piecewise-linear law keeps its tangent for whole
     increments), each solve judged by its own residual.  ``paired`` and
-    ``symmetric`` say what the matrix is, for the options (:func:`_options`).  The caller
-    destroys it (:meth:`destroy`).
+    ``symmetric`` say what the matrix is, for the options (:func:`_options`);
+    ``prefix`` names its owner in PETSc's options database (module doc).
+    The caller destroys it (:meth:`destroy`).
     """
 
     def __init__(self, *, petsc_options: dict | None = None, estimate_condition: bool = False,
-                 what: str = "linear system", paired: bool = False, symmetric: bool = False):
+                 what: str = "linear system", paired: bool = False, symmetric: bool = False,
+                 prefix: str = DEFAULT_PREFIX):
         self.opts = _options(petsc_options, estimate_condition, paired, symmetric)
         check_options(self.opts)
         self.what, self.count = what, 0
-        self.prefix = f"xdolfinx_{next(_prefixes)}_"
+        self.prefix = f"{prefix}{next(_prefixes)}_"
         self.ksp, self.A, self.base = None, None, None
         db = PETSc.Options()
         for key, value in self.opts.items():
@@ -503,14 +415,15 @@ class Tangent:
     factorisation is used while ``K_Γ`` is symmetric too on every rank (``ranks``: the reductions of ``K``'s communicator;
     each rank holds its points' part of ``K_Γ``); any other tangent takes
     the general LU.  Either compresses MUMPS's graph by :data:`BLOCKS` when
-    the factorised rows come in node pairs (:meth:`_paired`).
+    the factorised rows come in node pairs (:meth:`_paired`).  ``prefix``
+    names the owner of the factorisations (:class:`Factorisation`).
     """
 
     def __init__(self, K, free: np.ndarray, *, work=None, symmetric: bool = False,
                  petsc_options: dict | None = None, estimate_condition: bool = False,
-                 what: str = "linear system", ranks: Collective = SERIAL):
+                 what: str = "linear system", ranks: Collective = SERIAL, prefix: str = DEFAULT_PREFIX):
         self.K, self.free, self.symmetric, self.ranks = K, np.asarray(free), symmetric, ranks
-        self.options = petsc_options
+        self.options, self.prefix = petsc_options, prefix
         self.estimate, self.what = estimate_condition, what
         self._slots = {}  # slot -> [free block, Factorisation, symmetric]
         start = K.getOwnershipRange()[0]  # free: this rank's owned rows, numbered from its first
@@ -584,7 +497,8 @@ class Tangent:
             if factorisation is not None:
                 factorisation.destroy()
             factorisation = Factorisation(petsc_options=self.options, estimate_condition=self.estimate,
-                                          what=self.what, paired=self.paired, symmetric=symmetric)
+                                          what=self.what, paired=self.paired, symmetric=symmetric,
+                                          prefix=self.prefix)
         try:
             factorisation.factorise(block)
         except SolverError:
@@ -603,38 +517,3 @@ class Tangent:
         for obj in (self._J, self._rows, self.K, *(self._vectors or ())):
             obj.destroy()
         self._slots, self._J, self._vectors = {}, None, None
-
-
-def solve(A, b, x, *, rows=None, petsc_options: dict | None = None, estimate_condition: bool = False,
-          what: str = "linear system", force_scale: float = 0.0) -> SolverReport:
-    """Solve ``A x = b`` in place once (a :class:`Factorisation` used for
-    one solve); raise :class:`SolverError` if it fails.
-
-    With ``rows`` (global indices of the unknowns that are not held at zero,
-    owned by this process) only that block is factorised and the other
-    entries of ``x`` are left as they are: held rows are decoupled, but
-    MUMPS still pays for them (3-4x slower solves on the conforming mixed
-    space, measured).
-
-    The report carries the relative residual ``‖b − A x‖/max(‖b‖, force_scale)``
-    (which decides success, :func:`contactcore.health.check_residual`), the
-    backward error beside it, the Krylov iterations, the condition estimate
-    when ``estimate_condition`` (MUMPS only) and every warning.
-    """
-    if rows is not None:
-        index = PETSc.IS().createGeneral(np.asarray(rows, dtype=PETSc.IntType), comm=A.getComm())
-        As, bs, xs = A.createSubMatrix(index, index), b.getSubVector(index), x.getSubVector(index)
-        try:
-            return solve(As, bs, xs, petsc_options=petsc_options, estimate_condition=estimate_condition, what=what,
-                         force_scale=force_scale)
-        finally:
-            x.restoreSubVector(index, xs)
-            b.restoreSubVector(index, bs)
-            As.destroy()
-            index.destroy()
-    factorisation = Factorisation(petsc_options=petsc_options, estimate_condition=estimate_condition, what=what)
-    try:
-        factorisation.factorise(A)
-        return factorisation.solve(b, x, force_scale)
-    finally:
-        factorisation.destroy()

@@ -49,20 +49,19 @@ steps solved.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field, replace
-from typing import Protocol
+from abc import ABC, abstractmethod
+from dataclasses import dataclass
 
 import numpy as np
 import scipy.sparse as sp
 
-from scipy.spatial import cKDTree
-
 from . import health
 from . import tolerances as tol
-from .collective import SERIAL
+from .collective import SERIAL, Collective
 from .errors import SolverError, SolverOptionError
 from .exact import enforced
-from .geometry import CircleInterface, LineInterface, tangent_of
+from .exchange import Exchange
+from .interface_path import Increment, InterfacePath, canonical_order
 from .laws import SLIP, STATUS_NAMES, STICK, Decision
 from .result import SolverReport
 
@@ -78,10 +77,9 @@ class InterfaceOperator:
     points: np.ndarray
     #: Under mpirun, this rank's points only, ``G``'s columns in the local
     #: numbering of the unknowns it touches (owned, then ghosts), and
-    #: ``exchange`` the system's ghost exchange (``forward``: owned values
-    #: -> local values; ``reverse``: local contributions -> owned sums);
+    #: ``exchange`` the system's ghost exchange (:class:`~contactcore.exchange.Exchange`);
     #: None in serial (local = owned = all).
-    exchange: object = None
+    exchange: Exchange | None = None
     #: For exact enforcement (:mod:`contactcore.exact`), None where the
     #: method gives none: ``S`` (2m × n, ``G``'s shape and columns) with
     #: rows ``2p, 2p+1`` the consistent traction ``τ = (n·{σ}n, t·{σ}n)``
@@ -139,25 +137,39 @@ class InterfaceOperator:
         return (A.T @ pairs @ A).tocsr()
 
 
-class ContactSystem(Protocol):
-    """What a method hands to :func:`solve_increments` (serial, numpy vectors)."""
+class ContactSystem(ABC):
+    """What a method hands to :func:`solve_increments`: every method's
+    system subclasses it.  Vectors are this rank's owned values (all of
+    them in serial).
+
+    Newton reads the attributes below and calls the methods; a subclass
+    sets ``size``, ``interface`` and ``fixed`` and implements the abstract
+    methods; ``constraint_rows`` and ``collective`` have real defaults."""
 
     size: int
     interface: InterfaceOperator
-    fixed: np.ndarray  # indices of the prescribed unknowns
-    # optional: the rows that prescribe values rather than balance forces
-    # (EFGM's multiplier rows); none if absent
-    constraint_rows: np.ndarray
+    #: indices of the prescribed unknowns
+    fixed: np.ndarray
+    #: the rows that prescribe values rather than balance forces (EFGM's
+    #: multiplier rows, ``s (C u − ū)``): judged as data, not as forces
+    constraint_rows: np.ndarray = np.zeros(0, dtype=int)
+    #: the reductions over the ranks the system is distributed on: every
+    #: decision of Newton is taken on values reduced by it (serial: none)
+    collective: Collective = SERIAL
 
+    @abstractmethod
     def fixed_values(self, support_factors) -> np.ndarray:
         """Values of the prescribed unknowns for the supports' factors."""
 
+    @abstractmethod
     def external(self, load_factors, support_factors) -> np.ndarray:
         """``b(λ)``: loads (and, for multipliers, prescribed values)."""
 
+    @abstractmethod
     def internal(self, u: np.ndarray) -> np.ndarray:
         """``A u``: the bulk forces of the unknowns."""
 
+    @abstractmethod
     def solve(self, interface_tangent: sp.csr_matrix | None, rhs: np.ndarray,
               force_scale: float = 0.0, slot: int = 0) -> tuple[np.ndarray, SolverReport]:
         """``δu`` with ``(A + K_Γ)[free, free] δu = rhs[free]``, zero on the
@@ -168,92 +180,10 @@ class ContactSystem(Protocol):
         ``interface_tangent`` None, the slot's last factorisation is used."""
 
     def close(self) -> None:
-        """Release the matrices and factorisations the solves kept."""
+        """Release the matrices and factorisations the solves kept (none here)."""
 
 
-@dataclass
-class Increment:
-    """The converged state of one (sub-)increment at the interface points."""
-
-    step: float
-    factors: tuple
-    iterations: int
-    residuals: list[float]
-    jump: np.ndarray
-    traction: np.ndarray
-    status: np.ndarray
-
-    def gathered(self, ranks, order: np.ndarray) -> "Increment":
-        """Every rank's points of this increment, in ``order``."""
-        return replace(self, jump=ranks.gather(self.jump)[order], traction=ranks.gather(self.traction)[order],
-                       status=ranks.gather(self.status)[order])
-
-    def counts(self) -> dict[str, int]:
-        """How many points are open, sticking and slipping."""
-        return {name: int(np.sum(self.status == i)) for i, name in enumerate(STATUS_NAMES)}
-
-
-@dataclass
-class InterfacePath:
-    """The interface's history: points, weights and every converged step."""
-
-    points: np.ndarray
-    weights: np.ndarray
-    steps: list[Increment] = field(default_factory=list)
-    state: np.ndarray | None = None
-
-    @property
-    def final(self) -> Increment:
-        return self.steps[-1]
-
-    def iterations(self) -> list[int]:
-        return [s.iterations for s in self.steps]
-
-    def gathered(self, ranks, interface) -> "InterfacePath":
-        """Every rank's points on every rank, ordered along Γ (polar angle
-        or arc length, else x then y): the same path, in the same order,
-        however the points were shared between ranks (serial included)."""
-        points = ranks.gather(self.points)
-        order = canonical_order(interface, points)
-        return InterfacePath(points[order], ranks.gather(self.weights)[order],
-                             [st.gathered(ranks, order) for st in self.steps],
-                             None if self.state is None else ranks.gather(self.state)[order])
-
-    def state_at(self, interface, points: np.ndarray) -> np.ndarray | None:
-        """The law's history at other points of Γ, interpolated linearly
-        along Γ (the polar angle of a circle, the arc length of a line) from
-        the quadrature points; the nearest point on a general level set."""
-        return None if self.state is None else self.interpolated(interface, points, self.state)
-
-    def interpolated(self, interface, points: np.ndarray, values: np.ndarray) -> np.ndarray:
-        """``values`` (m, ...) at the quadrature points, at other points of
-        Γ: as :meth:`state_at` interpolates the history."""
-        if isinstance(interface, (CircleInterface, LineInterface)):
-            a, b = along(interface, self.points), along(interface, points)
-            order = np.argsort(a)
-            period = 2 * np.pi if isinstance(interface, CircleInterface) else None
-            columns = np.asarray(values, float).reshape(len(a), -1)[order]
-            out = np.column_stack([np.interp(b, a[order], c, period=period) for c in columns.T])
-            return out.reshape((len(b),) + np.shape(values)[1:])
-        return np.asarray(values)[cKDTree(self.points).query(points)[1]]
-
-
-def canonical_order(interface, points: np.ndarray) -> np.ndarray:
-    """Points of Γ sorted along it (:func:`along`; x then y on a general
-    level set): an order that no mesh numbering or partition changes."""
-    points = np.asarray(points, float).reshape(-1, 2)
-    if isinstance(interface, (CircleInterface, LineInterface)):
-        return np.lexsort((points[:, 1], points[:, 0], along(interface, points)))
-    return np.lexsort((points[:, 1], points[:, 0]))
-
-
-def along(interface, points: np.ndarray) -> np.ndarray:
-    """The parameter along Γ of points on it: polar angle or arc length."""
-    if isinstance(interface, CircleInterface):
-        d = np.asarray(points) - interface.centre
-        return np.arctan2(d[:, 1], d[:, 0])
-    t = tangent_of(np.asarray(interface.normal, float)[None])[0]
-    return (np.asarray(points) - interface.point) @ t
+ContactSystem.constraint_rows.flags.writeable = False  # one shared empty default: read, never written
 
 
 def _merge(total: SolverReport, one: SolverReport) -> None:
@@ -277,14 +207,14 @@ class _Newton:
         # rows that prescribe displacements (EFGM's multipliers, scaled by E:
         # s (C u − ū)) rather than balance forces: data, like the lift
         self.constraint = np.zeros(system.size, bool)
-        self.constraint[np.asarray(getattr(system, "constraint_rows", ()), int)] = True
+        self.constraint[np.asarray(system.constraint_rows, int)] = True
         self.balance = self.free[~self.constraint[self.free]]
         self.u = np.zeros(system.size)
         self.state = self.law.initial_state(self.itf.size)
         self.status = np.full(self.itf.size, STICK, np.int8)  # an unloaded interface is closed and sticks
         self.report = SolverReport(solver="", solves=0, iterations=[])
         self.path = InterfacePath(self.itf.points, self.itf.weights)
-        self.ranks = getattr(system, "collective", SERIAL)  # every decision is taken on all ranks alike
+        self.ranks = system.collective  # every decision is taken on all ranks alike
         self._factorised = []  # (slot, interface tangent) of the system's factorisations, last used last
 
     def _residual(self, u, b, response) -> tuple[np.ndarray, float, float]:
@@ -467,7 +397,7 @@ def _final_state(scene, system: ContactSystem, newton: _Newton, progress=None) -
         raise
     except SolverError as exc:
         if scene.law.is_linear:
-            weights = getattr(system, "collective", SERIAL).gather(system.interface.weights)
+            weights = system.collective.gather(system.interface.weights)
             raise SolverError(f"{exc}; {health.failure_hint(scene, weights)}") from None
     newton = _Newton(scene, system)
     _follow(scene, newton, progress)
@@ -490,7 +420,7 @@ def solve_increments(scene, system: ContactSystem, progress=None) -> tuple[np.nd
     if given, is called as ``progress(n, increments, step)`` after each
     increment ``n`` of a followed path converges (``step`` its
     :class:`Increment`): the driver reports it, the numerics print nothing."""
-    ranks = getattr(system, "collective", SERIAL)
+    ranks = system.collective
     weights, points = ranks.gather(system.interface.weights), ranks.gather(system.interface.points)
     health.check_springs(scene, weights)
     health.check_restraint(scene, points, weights)

@@ -12,7 +12,7 @@ interpolated along Γ as the history is): ``[[u]] = u⁺ − u⁻``, ``g_N = [[u
 ``(t_N, t_T)`` is the law's response to ``(g_N, g_T)`` — and, for a law with
 history (``coulomb``), to the history at the last increment, which the
 caller passes as data: the Result's ``interface`` path
-(:class:`contactcore.newton.InterfacePath`).  That history lives at the
+(:class:`contactcore.interface_path.InterfacePath`).  That history lives at the
 method's quadrature points on Γ and is interpolated along Γ to the samples:
 exact where neighbouring points share a status, approximate where an open
 point meets a closed one.

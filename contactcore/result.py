@@ -114,7 +114,7 @@ class Result:
     solver: SolverReport
     fields: Fields
     discretisation: dict = field(default_factory=dict)
-    interface: object = None  # contactcore.newton.InterfacePath: every increment on Γ
+    interface: object = None  # contactcore.interface_path.InterfacePath: every increment on Γ
 
     def summary(self) -> dict:
         """A JSON-ready record of the run (no field values)."""

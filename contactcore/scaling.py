@@ -45,7 +45,7 @@ import numpy as np
 from . import tolerances as tol
 from .errors import SceneError, require_finite
 from .geometry import CircleInterface, Disc, LevelSetInterface, LineInterface, Rectangle
-from .newton import InterfacePath
+from .interface_path import InterfacePath
 from .profiles import ProfileData
 from .scene import (DISPLACEMENT_QUANTITIES, STRESS_QUANTITIES, BodyForce, LineProfile, Pressure, Scene, Traction,
                     check_resolution)

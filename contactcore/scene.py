@@ -238,24 +238,6 @@ class Scene:
                                 "appear: refine (it falls as h²) or lower k_N/k_T")
         return warnings
 
-    def polygon_warnings(self, h: float) -> list[str]:
-        """A circular Γ that a mesh of straight cells (gmsh, geometry order
-        1) draws with fewer than CIRCLE_SEGMENTS_WARN segments: gmsh keeps
-        at least GMSH_MIN_CIRCLE_POINTS however large h is, so the polygon,
-        and the error of the interface forces, stay what they are as h is
-        refined until h < 2πR/7."""
-        itf = self.interface
-        if not isinstance(itf, CircleInterface):
-            return []
-        segments = max(GMSH_MIN_CIRCLE_POINTS, math.ceil(2 * math.pi * itf.radius / h))
-        if segments >= tol.CIRCLE_SEGMENTS_WARN:
-            return []
-        short = 1 - math.sin(math.pi / segments) / (math.pi / segments)
-        return [f"the circle Γ is meshed with about {segments} straight segments at h = {h / itf.radius:.3g} R, a "
-                f"polygon {short:.1%} shorter than Γ: the interface forces stay about that far off until h < "
-                f"2πR/{GMSH_MIN_CIRCLE_POINTS} = {2 * math.pi / GMSH_MIN_CIRCLE_POINTS:.3g} R; refine h below "
-                f"{2 * math.pi / tol.CIRCLE_SEGMENTS_WARN:.3g} R, or use degree 2 (curved cells)"]
-
     def body_of(self, points, side: str = "plus") -> np.ndarray:
         """0 (−) or 1 (+) for each point: by the sign of φ, ``side`` within
         ON_INTERFACE of Γ, a distance (a level set's φ is scaled by
@@ -264,10 +246,6 @@ class Scene:
         phi = self.interface.phi(points)
         on = np.abs(self.interface.signed_distance(points)) <= tol.ON_INTERFACE * self.length_scale
         return np.where(on, BODIES.index(side), (phi > 0).astype(int))
-
-
-#: gmsh's "Mesh.MinimumCirclePoints" (4.8): the fewest segments it draws a circle with.
-GMSH_MIN_CIRCLE_POINTS = 7
 
 
 def body_force(scene: "Scene", load: BodyForce | Torque, x, y):

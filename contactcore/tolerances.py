@@ -120,7 +120,7 @@ LOCKING_WARN = 1e4
 #: (FALSE_TN_ACCEPTABLE), every method warns.
 FALSE_TN_WARN = 2.0
 
-#: XFEM slivers: which nodes are enriched is xdolfinx.xfem.MIN_CUT_FRACTION
+#: XFEM slivers: which nodes are enriched is xdolfinx.xfem.space.MIN_CUT_FRACTION
 #: (with its measured effect; issue 22 replaced the warning SLIVER_LEAK_WARN,
 #: which put the perturbation at ten times a shape function's value across
 #: Γ and under-stated it by orders of magnitude).

@@ -17,12 +17,12 @@ does its own share of the work that costs:
 
 Every rank's contributions (global indices, from the one assembly sink)
 are sent to the rows' owners and summed there in rank order
-(:func:`contactcore.linear_solver.owned_rows`), and PETSc makes the MPIAIJ
+(:func:`efgm.petsc_matrices.owned_rows`), and PETSc makes the MPIAIJ
 matrix from the owned rows, preallocated exactly
-(:func:`~contactcore.linear_solver.distributed_aij`; rows split as PETSc
+(:func:`~efgm.petsc_matrices.distributed_aij`; rows split as PETSc
 would, contiguously).  ``G``'s columns are renumbered locally (owned, then
 the ghosts this rank's Γ points reach), with a PETSc scatter for the
-jumps and the forces (:class:`~contactcore.linear_solver.ScatterExchange`);
+jumps and the forces (:class:`~efgm.petsc_matrices.ScatterExchange`);
 the shared Newton driver then runs unchanged on owned values, its
 decisions reduced over the ranks, and MUMPS factorises the distributed
 matrix through :class:`~contactcore.linear_solver.Tangent` (LDLᵀ while
@@ -42,7 +42,7 @@ import scipy.sparse as sp
 from contactcore.assembly import pattern_union
 from contactcore.collective import Collective, launched_size
 from contactcore.constraints import Constraints
-from contactcore.newton import InterfaceOperator
+from contactcore.newton import ContactSystem, InterfaceOperator
 
 from . import petsc_solver
 from .operators import SYMMETRIC
@@ -83,14 +83,14 @@ def cell_share(points: np.ndarray, origin: np.ndarray, step: np.ndarray, ranks: 
 def owned_multipliers(ranks: Collective, ndofs: int, count: int) -> np.ndarray:
     """The collocation rows (of ``count``, numbered after the ``ndofs``
     unknowns of the approximation) whose rows this rank owns."""
-    from contactcore.linear_solver import ownership
+    from .petsc_matrices import ownership
 
     starts = ownership(ndofs + count, ranks.comm.size)
     first, last = starts[ranks.rank], starts[ranks.rank + 1]
     return np.arange(max(first, ndofs), max(last, ndofs)) - ndofs
 
 
-class DistributedEFGMSystem:
+class DistributedEFGMSystem(ContactSystem):
     """The saddle point ``[[K, s Cᵀ], [s C, 0]]`` of
     :class:`efgm.method.EFGMSystem`, its rows split over ``ranks`` (module
     doc): a :class:`~contactcore.newton.ContactSystem` on this rank's owned
@@ -100,14 +100,14 @@ class DistributedEFGMSystem:
 
     def __init__(self, K, constraints: Constraints, loads, interface: InterfaceOperator, scale: float,
                  ranks: Collective, estimate_condition: bool, what: str):
-        from contactcore import linear_solver as ls
+        from . import petsc_matrices as pm
 
         comm = ranks.comm
         self.collective, self.scale, self.constraints = ranks, scale, constraints
         self.estimate, self.what = estimate_condition, what
         n, c = K.shape[0], constraints.operator.shape[0]
         self.ndofs, total = n, n + c
-        starts = ls.ownership(total, comm.size)
+        starts = pm.ownership(total, comm.size)
         first, last = int(starts[ranks.rank]), int(starts[ranks.rank + 1])
         self.size = last - first
         self.fixed = np.zeros(0, int)
@@ -116,7 +116,7 @@ class DistributedEFGMSystem:
         # the interface: this rank's points, G's columns local (owned, then the ghosts they reach)
         operators = [M for M in (interface.G, interface.S) if M is not None]  # Nitsche's S reaches further
         touched = np.unique(np.concatenate([M.indices for M in operators]))
-        self.exchange = ls.ScatterExchange(comm, starts, touched[(touched < first) | (touched >= last)])
+        self.exchange = pm.ScatterExchange(comm, starts, touched[(touched < first) | (touched >= last)])
         where = np.argsort(self.exchange.indices)
 
         def local(M):
@@ -131,14 +131,14 @@ class DistributedEFGMSystem:
         reach = sp.csr_matrix((np.abs(reach.data), (self.exchange.indices[reach.row],
                                                     self.exchange.indices[reach.col])), shape=(total, total))
         # owned rows: the bulk, and the pattern of K and every K_Γ (zeros, refilled by the Tangent)
-        self.A = ls.distributed_aij(ls.owned_rows(mine, starts, comm), starts, comm)
+        self.A = pm.distributed_aij(pm.owned_rows(mine, starts, comm), starts, comm)
         self.A.setLGMap(self.exchange.local_to_global(), self.exchange.local_to_global())
-        work = ls.owned_rows(pattern_union(mine, reach, value=1.0), starts, comm)  # ones: the ranks' sum keeps them
+        work = pm.owned_rows(pattern_union(mine, reach, value=1.0), starts, comm)  # ones: the ranks' sum keeps them
         work.data[:] = 0.0
-        self.work = ls.distributed_aij(work, starts, comm)
+        self.work = pm.distributed_aij(work, starts, comm)
         f = sp.vstack([sp.csr_matrix(np.column_stack(loads)) if loads else sp.csr_matrix((n, 0)),
                        sp.csr_matrix((c, len(loads)))], format="csr")
-        self.loads = ls.owned_rows(f, starts, comm).toarray().T  # (loads, owned rows)
+        self.loads = pm.owned_rows(f, starts, comm).toarray().T  # (loads, owned rows)
         self.multipliers = np.arange(max(first, n), max(last, n))  # owned multiplier rows, global
         self.constraint_rows = np.arange(self.size - len(self.multipliers), self.size)  # the same, local
         self._vectors = self.A.createVecs()
@@ -163,7 +163,8 @@ class DistributedEFGMSystem:
         if self._tangent is None:
             from contactcore import linear_solver as ls
             self._tangent = ls.Tangent(self.A, np.arange(self.size), work=self.work,
-                                       symmetric=SYMMETRIC, estimate_condition=self.estimate, what=self.what, ranks=self.collective)
+                                       symmetric=SYMMETRIC, estimate_condition=self.estimate, what=self.what, ranks=self.collective,
+                                       prefix=petsc_solver.PETSC_PREFIX)
         return self._tangent.solve(interface_tangent, rhs, force_scale, slot)
 
     def close(self) -> None:

@@ -23,6 +23,9 @@ import scipy.sparse as sp
 
 from contactcore.assembly import pattern_union
 
+#: The options prefix of EFGM's factorisations in PETSc's options database.
+PETSC_PREFIX = "efgm_"
+
 
 def available() -> bool:
     """Whether petsc4py imports (then MUMPS solves EFGM's systems)."""
@@ -41,8 +44,11 @@ def tangent(A: sp.csr_matrix, interface_pattern: sp.spmatrix, *, symmetric: bool
     test it (:func:`~contactcore.linear_solver.is_symmetric`)."""
     from contactcore import linear_solver
 
+    from .petsc_matrices import to_petsc
+
     if symmetric is None:
         symmetric = linear_solver.is_symmetric(A)
     union = pattern_union(A, interface_pattern)  # K's and every K_Γ's entries
-    return linear_solver.Tangent(linear_solver.to_petsc(A), np.arange(A.shape[0]), work=linear_solver.to_petsc(union),
-                                 symmetric=symmetric, estimate_condition=estimate_condition, what=what)
+    return linear_solver.Tangent(to_petsc(A), np.arange(A.shape[0]), work=to_petsc(union),
+                                 symmetric=symmetric, estimate_condition=estimate_condition, what=what,
+                                 prefix=PETSC_PREFIX)

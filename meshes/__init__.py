@@ -10,9 +10,10 @@ import importlib
 
 from .tags import BODY, BOUNDARY, INTERFACE, NAMES
 
-_BUILDERS = ("Grading", "build_model", "gmsh_session", "write_mesh")
+_BUILDERS = ("GMSH_MIN_CIRCLE_POINTS", "Grading", "build_model", "gmsh_session", "polygon_warnings", "write_mesh")
 
-__all__ = ["BODY", "BOUNDARY", "Grading", "INTERFACE", "NAMES", "build_model", "gmsh_session", "write_mesh"]
+__all__ = ["BODY", "BOUNDARY", "GMSH_MIN_CIRCLE_POINTS", "Grading", "INTERFACE", "NAMES", "build_model", "gmsh_session",
+           "polygon_warnings", "write_mesh"]
 
 
 def __getattr__(name: str):

@@ -9,6 +9,7 @@ that follows the circle.
 """
 from __future__ import annotations
 
+import math
 import os
 import tempfile
 from contextlib import contextmanager
@@ -221,3 +222,26 @@ def write_mesh(scene: Scene, h: float, out: str | Path, *, order: int = 1, gradi
             if os.path.exists(tmp):
                 os.unlink(tmp)
     return out
+
+
+#: gmsh's "Mesh.MinimumCirclePoints" (4.8): the fewest segments it draws a circle with.
+GMSH_MIN_CIRCLE_POINTS = 7
+
+
+def polygon_warnings(scene: Scene, h: float) -> list[str]:
+    """A circular Γ that a mesh of straight cells (gmsh, geometry order 1)
+    draws with fewer than CIRCLE_SEGMENTS_WARN segments: gmsh keeps at
+    least GMSH_MIN_CIRCLE_POINTS however large h is, so the polygon, and
+    the error of the interface forces, stay what they are as h is refined
+    until h < 2πR/7."""
+    itf = scene.interface
+    if not isinstance(itf, CircleInterface):
+        return []
+    segments = max(GMSH_MIN_CIRCLE_POINTS, math.ceil(2 * math.pi * itf.radius / h))
+    if segments >= tol.CIRCLE_SEGMENTS_WARN:
+        return []
+    short = 1 - math.sin(math.pi / segments) / (math.pi / segments)
+    return [f"the circle Γ is meshed with about {segments} straight segments at h = {h / itf.radius:.3g} R, a "
+            f"polygon {short:.1%} shorter than Γ: the interface forces stay about that far off until h < "
+            f"2πR/{GMSH_MIN_CIRCLE_POINTS} = {2 * math.pi / GMSH_MIN_CIRCLE_POINTS:.3g} R; refine h below "
+            f"{2 * math.pi / tol.CIRCLE_SEGMENTS_WARN:.3g} R, or use degree 2 (curved cells)"]

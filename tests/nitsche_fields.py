@@ -52,7 +52,7 @@ def unknowns(method: str, built, f) -> np.ndarray:
         x[own.size + 2 * enr.index[enr.index >= 0, None] + np.arange(2)] = a
         return x
     space = fields.space
-    own, a = _values(space.node_side, f, space.V.tabulate_dof_coordinates()[:, :2], space.enriched)
+    own, a = _values(space.cells.node_side, f, space.V.tabulate_dof_coordinates()[:, :2], space.enriched)
     return np.concatenate([own.ravel(), a.ravel()])  # a in node order: the enriched blocks' order
 
 

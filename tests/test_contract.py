@@ -275,3 +275,41 @@ def test_progress_is_reported_per_increment_of_a_followed_path():
     discretisation.solve(scene.with_changes(law=LinearLaw(1e12, 1e11)), FE(), OUTPUT_H,
                          progress=lambda *a: seen.append(a))
     assert len(seen) == 4
+
+
+def test_every_system_and_exchange_declares_its_contract():
+    """What Newton solves is a ContactSystem and what moves values between
+    ranks an Exchange, stated by each class, not implied by its attributes."""
+    from contactcore.exchange import Exchange
+    from contactcore.newton import ContactSystem
+    from efgm.distributed import DistributedEFGMSystem
+    from efgm.method import EFGMSystem
+    from efgm.petsc_matrices import ScatterExchange
+    from xdolfinx.contact_system import GhostExchange, PETScSystem
+    assert all(issubclass(c, ContactSystem) for c in (PETScSystem, EFGMSystem, DistributedEFGMSystem))
+    assert all(issubclass(c, Exchange) for c in (GhostExchange, ScatterExchange))
+
+
+def test_a_contact_system_must_implement_newtons_calls_and_defaults_to_serial():
+    from contactcore.collective import SERIAL
+    from contactcore.newton import ContactSystem
+
+    class Partial(ContactSystem):
+        def internal(self, u):
+            return u
+
+    with pytest.raises(TypeError, match="abstract"):
+        Partial()
+
+    class Whole(Partial):
+        def fixed_values(self, support_factors):
+            return np.zeros(0)
+
+        def external(self, load_factors, support_factors):
+            return np.zeros(1)
+
+        def solve(self, interface_tangent, rhs, force_scale=0.0, slot=0):
+            return rhs, None
+
+    system = Whole()
+    assert system.collective is SERIAL and len(system.constraint_rows) == 0

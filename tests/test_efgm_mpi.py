@@ -42,7 +42,7 @@ import numpy as np
 import scipy.sparse as sp
 from mpi4py import MPI
 from contactcore import load_scene, discretisation as d
-from contactcore.newton import canonical_order
+from contactcore.interface_path import canonical_order
 from contactcore.result import Timings
 from contactcore.scaling import Scales
 from efgm.options import EFGM

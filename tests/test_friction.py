@@ -4,12 +4,13 @@ against each other."""
 import dataclasses
 
 import numpy as np
+import scipy.sparse as sp
 import pytest
 
 import tolerances as tol
 from contactcore import Pin, SceneError, SolverError, load_scene, make_law, sample_profiles, scene_from_dict
 from contactcore.laws import OPEN, SLIP, STICK, CoulombLaw, LinearLaw, UnilateralLaw
-from contactcore.newton import InterfaceOperator, solve_increments
+from contactcore.newton import ContactSystem, InterfaceOperator, solve_increments
 from contactcore.result import SolverReport
 from verification import methods
 from verification.closed_forms import layered_slip
@@ -97,14 +98,14 @@ def test_bad_load_paths_are_refused(scene_dict, path, problem):
 
 # ----- Newton and cut-back on a system of one spring ------------------------------
 
-class _OneSpring:
+class _OneSpring(ContactSystem):
     """One unknown u (the jump), a bulk spring of stiffness K to ground, a
     load F: R = K u + w t(u) − F.  Its solve refuses steps longer than
     ``max_step`` increments of the load (a stand-in for a failing Newton)."""
 
     def __init__(self, K, F, max_step):
         self.size, self.K, self.F, self.max_step = 1, K, F, max_step
-        self.interface = InterfaceOperator(__import__("scipy.sparse").sparse.csr_matrix([[1.0], [0.0]]),
+        self.interface = InterfaceOperator(sp.csr_matrix([[1.0], [0.0]]),
                                            np.ones(1), np.zeros((1, 2)))
         self.fixed = np.zeros(0, int)
         self.last, self.J = 0.0, {}

@@ -15,7 +15,7 @@ import scipy.sparse as sp
 from contactcore import Pin, SolverError, SolverReport, load_scene, scene_text
 from contactcore import health
 from contactcore.laws import LinearLaw
-from contactcore.newton import InterfaceOperator, solve_increments
+from contactcore.newton import ContactSystem, InterfaceOperator, solve_increments
 from contactcore.tolerances import RESIDUAL_FAIL, SPRING_ENTRY_MAX
 from verification import methods
 from verification.__main__ import main
@@ -123,20 +123,21 @@ def test_efgm_solver_refuses_a_matrix_with_a_null_space():
 
 def test_petsc_solver_refuses_a_matrix_with_a_null_space():
     """PETSc with SuperLU (no null-pivot detection) answers; the residual refuses."""
-    from contactcore import linear_solver
+    from efgm.petsc_matrices import to_petsc
+    from petsc_once import solve_once
     A, b = _null_space_matrix()
-    M = linear_solver.to_petsc(A)
+    M = to_petsc(A)
     bv, xv = M.createVecs()
     bv.setArray(b)
     try:
         with pytest.raises(SolverError, match=r"relative residual \S+ exceeds 1e-05 \(backward error"):
-            linear_solver.solve(M, bv, xv, petsc_options={"pc_factor_mat_solver_type": "superlu"})
+            solve_once(M, bv, xv, petsc_options={"pc_factor_mat_solver_type": "superlu"})
     finally:
         for obj in (M, bv, xv):
             obj.destroy()
 
 
-class _WrongSolve:
+class _WrongSolve(ContactSystem):
     """One unknown, bulk K, load F, a linear spring; its solve returns half
     the step and claims success (a stand-in for a singular factorisation
     that reports a tiny backward error)."""

@@ -10,7 +10,7 @@ import pytest
 
 import tolerances as tol
 from contactcore import discretisation
-from contactcore.newton import along
+from contactcore.interface_path import along
 from efgm.options import EFGM
 from nitsche_fields import exact
 from placements import inclined_A, seeded_inclined

@@ -1,5 +1,5 @@
 """Nitsche's consistent traction ``S`` and stabilisation ``γ₀`` of efgm and
-xfem (contactcore.traction, efgm.traction, xdolfinx.xfem_traction).
+xfem (contactcore.traction, efgm.traction, xdolfinx.xfem.traction).
 
 The patch test of ``S``: with a polynomial field on each side that the
 basis reproduces (linear, and quadratic at degree 2), ``S u`` at every Γ
@@ -140,7 +140,7 @@ import numpy as np
 from mpi4py import MPI
 sys.path.insert(0, "tests")
 from contactcore.collective import Collective
-from contactcore.newton import canonical_order
+from contactcore.interface_path import canonical_order
 from nitsche_fields import build, exact, unknowns
 from placements import inclined_A
 

@@ -15,6 +15,8 @@ from efgm import sparse_solver
 from verification.files import read_profile_csv
 from contactcore import linear_solver
 from contactcore.linear_solver import PETScOptionError
+from efgm.petsc_matrices import to_petsc
+from petsc_once import solve_once
 
 import tolerances as tol
 
@@ -31,18 +33,18 @@ def _resident_mb() -> float:
 
 
 def _left_in_database() -> list[str]:
-    return [k for k in PETSc.Options().getAll() if k.startswith("xdolfinx_")]
+    return [k for k in PETSc.Options().getAll() if k.startswith(linear_solver.DEFAULT_PREFIX)]
 
 
 def test_factor_and_solve_cycles_keep_memory_flat():
-    A = linear_solver.to_petsc(_laplacian(70))
+    A = to_petsc(_laplacian(70))
     b, x = A.createVecs()
     b.set(1.0)
     try:
-        linear_solver.solve(A, b, x, estimate_condition=False)  # libraries warmed up
+        solve_once(A, b, x, estimate_condition=False)  # libraries warmed up
         start = _resident_mb()
         for _ in range(30):
-            report = linear_solver.solve(A, b, x, estimate_condition=False)
+            report = solve_once(A, b, x, estimate_condition=False)
         growth = _resident_mb() - start
     finally:
         for obj in (A, b, x):
@@ -53,11 +55,11 @@ def test_factor_and_solve_cycles_keep_memory_flat():
 
 
 def _solve_small(options: dict):
-    M = linear_solver.to_petsc(_laplacian(6))
+    M = to_petsc(_laplacian(6))
     b, x = M.createVecs()
     b.set(1.0)
     try:
-        report = linear_solver.solve(M, b, x, petsc_options=options, estimate_condition=False)
+        report = solve_once(M, b, x, petsc_options=options, estimate_condition=False)
         return x.getArray().copy(), report
     finally:
         for obj in (M, b, x):
@@ -136,7 +138,7 @@ def test_mumps_compresses_only_whole_node_pairs(free, paired):
     """ICNTL(15) = −2 groups the factorised rows two by two: only right
     when they are a node's x and y (a support holding one component
     shifts them)."""
-    K = linear_solver.to_petsc(_laplacian(3) + sp.identity(9))
+    K = to_petsc(_laplacian(3) + sp.identity(9))
     tangent = linear_solver.Tangent(K, np.array(free), symmetric=True)
     try:
         rhs = np.ones(9)
@@ -152,7 +154,7 @@ def test_mumps_compresses_only_whole_node_pairs(free, paired):
 
 def test_a_symmetric_tangent_keeps_a_solver_the_user_chose():
     """LDLᵀ is MUMPS's: SuperLU asked for by the user is used as asked (LU)."""
-    K = linear_solver.to_petsc(_laplacian(3) + sp.identity(9))
+    K = to_petsc(_laplacian(3) + sp.identity(9))
     tangent = linear_solver.Tangent(K, np.arange(9), symmetric=True,
                                     petsc_options={"pc_factor_mat_solver_type": "superlu"})
     try:
@@ -207,7 +209,7 @@ def test_a_workspace_that_falls_short_is_relaxed_and_said():
     A = (system.A + system.interface.stiffness(springs)).tocsr()
     b = np.linspace(1.0, 2.0, A.shape[0])
     factorisation = linear_solver.Factorisation(petsc_options={"mat_mumps_icntl_14": 1}, symmetric=True)
-    M = linear_solver.to_petsc(A)
+    M = to_petsc(A)
     try:
         factorisation.factorise(M)
         x, rhs = M.createVecs()
@@ -230,7 +232,7 @@ def test_to_petsc_owns_copies_of_the_entries():
     uses as its own: the matrix has the entries, and changing the scipy
     matrix afterwards does not change it."""
     A = (_laplacian(4) + sp.random(16, 16, density=0.1, random_state=1)).tocsr()
-    M = linear_solver.to_petsc(A)
+    M = to_petsc(A)
     try:
         want = A.toarray()
         A.data[:] = 7.0

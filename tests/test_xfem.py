@@ -35,11 +35,11 @@ def test_cell_kernels_equal_dolfinx_without_enrichment(cell, degree):
     # exactly (an arc's curved sub-cells are exact only to ~1e-6 with 3 points)
     n = np.array([0.3, 1.0]) / np.hypot(0.3, 1.0)
     scene = load_scene("A").with_changes(interface=LineInterface((0.0, 0.43), tuple(n)), profiles=())
-    msh = xfem.background_mesh(scene, 0.25, cell)
-    space = xfem.EnrichedFunctionSpace(msh, degree, scene, xfem.GAUSS_POINTS[degree])
-    assert space.regions  # some cells are cut, so the split quadrature is exercised
-    space.enriched[:] = False
-    space.band = np.arange(space.num_cells)
+    cells = xfem.CellBasis(xfem.background_mesh(scene, 0.25, cell), degree, scene)
+    cut = xfem.CutIntegration(cells, scene, xfem.GAUSS_POINTS[degree])
+    assert cut.regions  # some cells are cut, so the split quadrature is exercised
+    space = xfem.EnrichedFunctionSpace(cells, cut, enriched=np.zeros(len(cells.node_side), bool),
+                                       band=np.arange(cells.num_cells))
     D = np.array([voigt_matrix(m.E, m.nu, scene.plane) for m in scene.materials.values()])
     ours = space.create_matrix()
     for dofs, K in xfem.band_kernels(space, D):
@@ -67,8 +67,8 @@ def _tiny(interface):
 ])
 def test_enriched_dof_counts(interface, enriched, cut):
     scene = _tiny(interface)
-    space = xfem.EnrichedFunctionSpace(xfem.background_mesh(scene, 0.25, "quad"), 1, scene, 3)
-    assert (space.num_enriched, len(space.regions)) == (enriched, cut)
+    space = xfem.enriched_space(xfem.background_mesh(scene, 0.25, "quad"), 1, scene, 3)
+    assert (space.num_enriched, len(space.cut.regions)) == (enriched, cut)
 
 
 @pytest.mark.parametrize("cell", ["quad", "triangle"])
@@ -76,10 +76,10 @@ def test_cut_share_is_the_area_of_a_body_in_cut_cells(cell):
     """Γ at y = 0.55 on a 0.1 grid: the cells 0.5 < y < 0.6 are cut; the −
     body holds 0.05 of them out of its 0.55, the + body 0.05 out of 0.45."""
     scene = _tiny(LineInterface((0.0, 0.55), (0.0, 1.0)))
-    space = xfem.EnrichedFunctionSpace(xfem.background_mesh(scene, 0.1, cell), 1, scene, 3)
-    assert np.isclose(space.cut_share(Body.MINUS), 0.05 / 0.55, rtol=1e-12)
-    assert np.isclose(space.cut_share(Body.PLUS), 0.05 / 0.45, rtol=1e-12)
-    assert space.thin_body_warnings() == []
+    cut = xfem.enriched_space(xfem.background_mesh(scene, 0.1, cell), 1, scene, 3).cut
+    assert np.isclose(cut.cut_share(Body.MINUS), 0.05 / 0.55, rtol=1e-12)
+    assert np.isclose(cut.cut_share(Body.PLUS), 0.05 / 0.45, rtol=1e-12)
+    assert cut.thin_body_warnings() == []
 
 
 def test_a_body_mostly_in_cut_cells_is_warned_about():
@@ -98,7 +98,7 @@ def test_a_body_mostly_in_cut_cells_is_warned_about():
 def test_gamma_missing_the_mesh_is_named():
     scene = _tiny(CircleInterface((5.0, 5.0), 0.3))  # built without validation, on purpose
     with pytest.raises(DiscretisationError, match="Γ crosses no cell"):
-        xfem.EnrichedFunctionSpace(xfem.background_mesh(scene, 0.25, "quad"), 1, scene, 3)
+        xfem.enriched_space(xfem.background_mesh(scene, 0.25, "quad"), 1, scene, 3)
 
 
 def _patch_error(patch, **kw):

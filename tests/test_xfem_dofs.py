@@ -55,7 +55,7 @@ def test_only_supports_and_pins_are_fixed(solved):
     """Every fixed unknown is a support's or a pin's, and every unknown is
     coupled: no zero diagonal, as an unused enriched component had."""
     _, system, fields = solved
-    assert np.array_equal(system.fixed, np.unique(np.concatenate(xfem._support_rows(fields.space)[0])))
+    assert np.array_equal(system.fixed, np.unique(np.concatenate(xfem.support_rows(fields.space)[0])))
     assert np.all(system.diagonal > 0)
 
 

@@ -24,7 +24,7 @@ import meshio
 import numpy as np
 
 from contactcore import BODIES
-from contactcore.newton import InterfacePath, along
+from contactcore.interface_path import InterfacePath, along
 
 from . import files
 

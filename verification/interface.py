@@ -23,7 +23,7 @@ import numpy as np
 
 from contactcore import LineInterface
 from contactcore.laws import STATUS_NAMES
-from contactcore.newton import InterfacePath, along
+from contactcore.interface_path import InterfacePath, along
 
 from . import files
 from .plots import keep_span, legend_outside, pyplot, save, style

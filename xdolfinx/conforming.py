@@ -375,7 +375,7 @@ def build(scene: Scene, options: FE, resolution: Resolution, timings: Timings) -
     on_gamma = h if grading is None else h * grading.factor  # the cells' size along Γ
     straight = (options.geometry_order or degree) == 1
     return Built(system, fields, cons.num_active, h=h, fitted=True,
-                 warnings=scene.polygon_warnings(on_gamma) if straight else [],
+                 warnings=meshes.polygon_warnings(scene, on_gamma) if straight else [],
                  record={"h": h, "degree": degree, "geometry_order": options.geometry_order or degree,
                          "cells": fm.num_cells, "grading": None if grading is None else vars(grading)})
 

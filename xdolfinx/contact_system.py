@@ -4,15 +4,16 @@ The conforming reference and XFEM both end with a PETSc matrix ``K`` of the
 bulk (no supports applied), one load vector per load, the prescribed
 unknowns and an :class:`~contactcore.newton.InterfaceOperator`.  This class
 hands them to :func:`contactcore.newton.solve_increments`: prescribed
-unknowns are eliminated (only the free rows are factorised, by MUMPS LU,
-which assumes no symmetry), and the interface tangent ``K_Γ`` (scipy CSR,
-from the one assembly sink) is added into a copy of ``K`` whose pattern
-already holds it (every cell couples all its unknowns).  That copy, its
-free block and the factorisation are allocated once and refilled
-(:class:`contactcore.linear_solver.Tangent`).  Under mpirun every rank
-holds its owned rows: vectors are owned values, ``K`` and the solve are
-PETSc's distributed ones, and Newton's decisions are reduced over the
-ranks (:attr:`collective`).
+unknowns are eliminated (only the free rows are factorised, by MUMPS's
+LDLᵀ while the interface tangent is symmetric, as ``K`` is by its weak
+form, and by LU while Coulomb points slip), and the interface tangent
+``K_Γ`` (scipy CSR, from the one assembly sink) is added into a copy of
+``K`` whose pattern already holds it (every cell couples all its
+unknowns).  That copy, its free block and the factorisation are allocated
+once and refilled (:class:`contactcore.linear_solver.Tangent`).  Under
+mpirun every rank holds its owned rows: vectors are owned values, ``K``
+and the solve are PETSc's distributed ones, and Newton's decisions are
+reduced over the ranks (:attr:`collective`).
 """
 from __future__ import annotations
 
@@ -21,13 +22,16 @@ import numpy as np
 from dolfinx import la
 
 from contactcore.collective import Collective
-from contactcore.constraints import Constraints
-from contactcore.newton import InterfaceOperator
-
 from contactcore import linear_solver
+from contactcore.constraints import Constraints
+from contactcore.exchange import Exchange
+from contactcore.newton import ContactSystem, InterfaceOperator
+
+#: The options prefix of the dolfinx methods' factorisations in PETSc's options database.
+PETSC_PREFIX = "xdolfinx_"
 
 
-class PETScSystem:
+class PETScSystem(ContactSystem):
     """``K`` (PETSc), loads, the prescribed unknowns (``constraints`` on
     dofs) and Γ (see module doc), distributed over ``comm`` (the mesh's)."""
 
@@ -42,7 +46,7 @@ class PETScSystem:
         # K is symmetric by its weak form: LDLᵀ while the law's tangent is
         self._tangent = linear_solver.Tangent(K, self.free, symmetric=True, petsc_options=petsc_options,
                                               estimate_condition=estimate_condition, what=what,
-                                              ranks=self.collective)
+                                              ranks=self.collective, prefix=PETSC_PREFIX)
 
     def fixed_values(self, support_factors) -> np.ndarray:
         return self.constraints.at(support_factors)
@@ -66,7 +70,7 @@ class PETScSystem:
         self._tangent.close()
 
 
-class GhostExchange:
+class GhostExchange(Exchange):
     """dolfinx's ghost updates of a space's unknowns (its index map and
     block size, on ``comm``): ``forward`` owned values -> local values (owned, then the
     ghosts this rank sees), ``reverse`` local contributions -> their sums on

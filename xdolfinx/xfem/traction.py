@@ -36,33 +36,32 @@ from contactcore.newton import InterfaceOperator
 from contactcore.exact import is_exact
 from contactcore.traction import nitsche_weights, traction_maps
 
+from .kernels import side_strains
+
 
 def cell_parts(space, c: int) -> np.ndarray:
     """(2,): the areas of the − and + parts of cell ``c``."""
     areas = np.zeros(2)
-    for side, _, w, *_ in space.cell_values(c):
+    for side, _, w, *_ in space.cut.cell_values(c):
         areas[(side + 1) // 2] += np.sum(w)
     return areas
 
 
 def cell_traction(space, c: int, D: np.ndarray, moduli: np.ndarray):
-    """Cell ``c``'s rows of ``S`` (P, 2, 4n) in its block layout, and
-    ``γ₀`` (P,), at the points of its Γ rule."""
-    from .xfem import _strain_matrix
-
-    pts, w, normals = space.gamma_rules[c]
+    """Cell ``c``'s blocks (2n) and its rows of ``S`` (P, 2, 4n) in its
+    block layout, and ``γ₀`` (P,), at the points of its Γ rule."""
+    pts, w, normals = space.cut.gamma_rules[c]
     P = len(w)
     areas = np.broadcast_to(cell_parts(space, c), (P, 2))
-    length = np.sum(w) if np.sum(w) > 0 else space.cell_size[c]  # a piece through a corner: no length
+    length = np.sum(w) if np.sum(w) > 0 else space.cut.cell_size[c]  # a piece through a corner: no length
     weights, gamma = nitsche_weights(areas, moduli, np.full(P, length))
     maps = traction_maps(normals, D, weights)
-    _, dN = space.tabulate(c, pts)
-    rows = np.zeros((P, 2, 4 * dN.shape[1]))
+    blocks, strains = side_strains(space, c, pts)  # (B₋, B₊), each (P, 3, 4n)
+    rows = np.zeros((P, 2, strains[0].shape[-1]))
     for body in Body:
         if weights[0, body] > 0:
-            B = _strain_matrix(dN, space.coefficients(c, body.sign))  # (P, 3, 4n)
-            rows += maps[body] @ B
-    return rows, gamma
+            rows += maps[body] @ strains[body]
+    return blocks, rows, gamma
 
 
 def traction_operator(space):
@@ -74,10 +73,9 @@ def traction_operator(space):
     moduli = np.array([scene.materials[b].E for b in BODIES])
     trip = Triplets((0, 2 * space.num_blocks))
     gammas, m = [], 0
-    for c in (c for c in space.owned_band if c in space.gamma_rules):
-        rows, gamma = cell_traction(space, c, D, moduli)
+    for c in (c for c in space.owned_band if c in space.cut.gamma_rules):
+        blocks, rows, gamma = cell_traction(space, c, D, moduli)  # blocks (2n,): u, then a (−1 if none)
         P = len(gamma)
-        blocks = space.cell_blocks(c)  # (2n,): per node its u block, then its a block (−1 if none)
         cols = np.where(blocks[:, None] >= 0, 2 * blocks[:, None] + np.arange(2), -1).ravel()  # (4n,)
         trip.add(2 * (m + np.arange(P))[:, None, None] + np.arange(2)[None, :, None], cols[None, None, :], rows)
         gammas.append(gamma)

@@ -1,0 +1,98 @@
+"""The interface's history along a solve: the converged state of every
+increment at Γ's quadrature points, and the order along Γ in which every
+rank's points are gathered, the same whatever mesh numbering or partition
+produced them."""
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+
+import numpy as np
+from scipy.spatial import cKDTree
+
+from .geometry import CircleInterface, LineInterface, tangent_of
+from .laws import STATUS_NAMES
+
+
+@dataclass
+class Increment:
+    """The converged state of one (sub-)increment at the interface points."""
+
+    step: float
+    factors: tuple
+    iterations: int
+    residuals: list[float]
+    jump: np.ndarray
+    traction: np.ndarray
+    status: np.ndarray
+
+    def gathered(self, ranks, order: np.ndarray) -> "Increment":
+        """Every rank's points of this increment, in ``order``."""
+        return replace(self, jump=ranks.gather(self.jump)[order], traction=ranks.gather(self.traction)[order],
+                       status=ranks.gather(self.status)[order])
+
+    def counts(self) -> dict[str, int]:
+        """How many points are open, sticking and slipping."""
+        return {name: int(np.sum(self.status == i)) for i, name in enumerate(STATUS_NAMES)}
+
+
+@dataclass
+class InterfacePath:
+    """The interface's history: points, weights and every converged step."""
+
+    points: np.ndarray
+    weights: np.ndarray
+    steps: list[Increment] = field(default_factory=list)
+    state: np.ndarray | None = None
+
+    @property
+    def final(self) -> Increment:
+        return self.steps[-1]
+
+    def iterations(self) -> list[int]:
+        return [s.iterations for s in self.steps]
+
+    def gathered(self, ranks, interface) -> "InterfacePath":
+        """Every rank's points on every rank, ordered along Γ (polar angle
+        or arc length, else x then y): the same path, in the same order,
+        however the points were shared between ranks (serial included)."""
+        points = ranks.gather(self.points)
+        order = canonical_order(interface, points)
+        return InterfacePath(points[order], ranks.gather(self.weights)[order],
+                             [st.gathered(ranks, order) for st in self.steps],
+                             None if self.state is None else ranks.gather(self.state)[order])
+
+    def state_at(self, interface, points: np.ndarray) -> np.ndarray | None:
+        """The law's history at other points of Γ, interpolated linearly
+        along Γ (the polar angle of a circle, the arc length of a line) from
+        the quadrature points; the nearest point on a general level set."""
+        return None if self.state is None else self.interpolated(interface, points, self.state)
+
+    def interpolated(self, interface, points: np.ndarray, values: np.ndarray) -> np.ndarray:
+        """``values`` (m, ...) at the quadrature points, at other points of
+        Γ: as :meth:`state_at` interpolates the history."""
+        if isinstance(interface, (CircleInterface, LineInterface)):
+            a, b = along(interface, self.points), along(interface, points)
+            order = np.argsort(a)
+            period = 2 * np.pi if isinstance(interface, CircleInterface) else None
+            columns = np.asarray(values, float).reshape(len(a), -1)[order]
+            out = np.column_stack([np.interp(b, a[order], c, period=period) for c in columns.T])
+            return out.reshape((len(b),) + np.shape(values)[1:])
+        return np.asarray(values)[cKDTree(self.points).query(points)[1]]
+
+
+def canonical_order(interface, points: np.ndarray) -> np.ndarray:
+    """Points of Γ sorted along it (:func:`along`; x then y on a general
+    level set): an order that no mesh numbering or partition changes."""
+    points = np.asarray(points, float).reshape(-1, 2)
+    if isinstance(interface, (CircleInterface, LineInterface)):
+        return np.lexsort((points[:, 1], points[:, 0], along(interface, points)))
+    return np.lexsort((points[:, 1], points[:, 0]))
+
+
+def along(interface, points: np.ndarray) -> np.ndarray:
+    """The parameter along Γ of points on it: polar angle or arc length."""
+    if isinstance(interface, CircleInterface):
+        d = np.asarray(points) - interface.centre
+        return np.arctan2(d[:, 1], d[:, 0])
+    t = tangent_of(np.asarray(interface.normal, float)[None])[0]
+    return (np.asarray(points) - interface.point) @ t

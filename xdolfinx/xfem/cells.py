@@ -1,0 +1,132 @@
+"""XFEM's background mesh and its cells: the mesh that ignores Γ, which side
+of Γ each node lies on, and the Lagrange basis of each cell at physical
+points (affine cells, or dolfinx's pull-back on a curved one)."""
+from __future__ import annotations
+
+import basix
+import numpy as np
+from dolfinx import fem, mesh
+from mpi4py import MPI
+
+from contactcore import Scene
+from contactcore import tolerances as tol
+from contactcore.bodies import side as side_of
+from contactcore.collective import Collective
+from contactcore.discretisation import check_choice
+from contactcore.geometry import Rectangle
+
+from ..options import XFEM_CELLS
+
+
+def background_cell(scene: Scene, cell: str) -> str:
+    """The background cells that run for the requested ``cell``: structured
+    quads or triangles on a rectangle, gmsh triangles otherwise (a disc)."""
+    check_choice("xfem", "cell", cell, XFEM_CELLS)
+    return cell if isinstance(scene.domain, Rectangle) else "gmsh"
+
+
+def background_mesh(scene: Scene, h: float, cell: str, counts=None, comm=MPI.COMM_WORLD, order: int = 1):
+    """A mesh of the outer domain that ignores Γ, cells of size ≈ h (or
+    ``counts`` cells per side): structured quadrilaterals or triangles on a
+    rectangle, or ``cell="gmsh"`` triangles of the outer domain (the only
+    choice for a disc), pins embedded as nodes, with geometry of ``order``
+    1 or 2 (curved cells on a curved outer boundary: a polygonal rim caps
+    degree 2 at an O(h²) error)."""
+    if background_cell(scene, cell) == "gmsh":
+        import meshes
+        from dolfinx.io import gmshio
+
+        with meshes.gmsh_session() as model:
+            if comm.rank == 0:
+                meshes.build_model(scene, h, order=order, fitted=False)
+            return gmshio.model_to_mesh(model, comm, 0, gdim=2)[0]
+    (x0, y0), (a, b) = scene.domain.corner, scene.domain.size
+    n = list(counts) if counts is not None else cell_counts(scene, h)
+    kind = mesh.CellType.quadrilateral if cell == "quad" else mesh.CellType.triangle
+    return mesh.create_rectangle(comm, [np.array([x0, y0]), np.array([x0 + a, y0 + b])], n, kind)
+
+
+def cell_counts(scene: Scene, h: float) -> list[int]:
+    """Cells per side of a structured mesh of the rectangle with cells of size ≈ h."""
+    return [max(1, round(s / h)) for s in scene.domain.size]
+
+
+def node_sides(scene: Scene, coords: np.ndarray) -> np.ndarray:
+    """The side (±1) of mesh nodes, a node within NODE_ON_INTERFACE of Γ
+    on Γ (+1): the same for every cell and rank that computed its
+    coordinates (:data:`contactcore.tolerances.NODE_ON_INTERFACE`).  The
+    distance is |φ|/|∇φ| (φ itself for a line or a circle)."""
+    itf = scene.interface
+    distance = np.abs(itf.signed_distance(coords))
+    return np.where(distance <= tol.NODE_ON_INTERFACE * scene.length_scale, 1, side_of(itf, coords))
+
+
+class CellBasis:
+    """The cells of ``msh`` and dolfinx's vector Lagrange space V of
+    ``degree`` on them (block size 2, one block per node), with what the
+    cut-cell kernels need per cell: its corners counter-clockwise, its
+    affine map ``x = origin + J X`` (from the first three geometry nodes),
+    whether it is curved, its nodes (V's blocks) and each node's side of Γ.
+
+    Local numbering is dolfinx's: owned nodes and cells first, then the
+    ghosts this rank sees under mpirun (:attr:`owned_nodes`,
+    :attr:`owned_cells`)."""
+
+    def __init__(self, msh, degree: int, scene: Scene):
+        self.msh, self.degree = msh, degree
+        self.V = fem.VectorFunctionSpace(msh, ("Lagrange", degree), dim=2)
+        name = msh.topology.cell_name()
+        cell_type = basix.cell.string_to_type(name)
+        self.element = basix.create_element(basix.ElementFamily.P, cell_type, degree, basix.LagrangeVariant.gll_warped)
+        tdim = msh.topology.dim
+        self.owned_cells = msh.topology.index_map(tdim).size_local
+        self.num_cells = self.owned_cells + msh.topology.index_map(tdim).num_ghosts
+        geom = msh.geometry.dofmap.array.reshape(self.num_cells, -1)
+        x = msh.geometry.x[:, :2]
+        self.cell_geometry = x[geom]
+        self.origin = x[geom[:, 0]]
+        self.jacobian = np.stack([x[geom[:, 1]] - self.origin, x[geom[:, 2]] - self.origin], axis=2)
+        self.inverse = np.linalg.inv(self.jacobian)
+        self.cmap = msh.geometry.cmap
+        self.geometry_element = basix.create_element(basix.ElementFamily.P, cell_type, self.cmap.degree,
+                                                     basix.LagrangeVariant.equispaced)
+        self.curved = self._curved_cells()
+        # corners counter-clockwise (dolfinx orders a quadrilateral's as 0, 1, 3, 2)
+        corners = x[geom[:, [0, 1, 3, 2]]] if name == "quadrilateral" else x[geom[:, :3]]
+        area2 = np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
+        self.corners = np.where((area2 < 0)[:, None, None], corners[:, ::-1], corners)
+        self.cell_dofs = self.V.dofmap.list.array.reshape(self.num_cells, -1)  # block (node) indices
+        self.owned_nodes = self.V.dofmap.index_map.size_local  # the others are ghosts (mpirun)
+        self.ranks = Collective(msh.comm)
+        self.node_side = node_sides(scene, self.V.tabulate_dof_coordinates()[:, :2])
+
+    def _curved_cells(self) -> np.ndarray:
+        """Cells whose geometry nodes are not the affine image (from the
+        first three) of the reference nodes: curved cells on a curved rim,
+        or quadrilaterals that are not parallelograms."""
+        X = np.einsum("cpa,cda->cpd", self.cell_geometry - self.origin[:, None], self.inverse)
+        gap = np.max(np.abs(X - self.geometry_element.points[None]), axis=(1, 2))
+        return gap > tol.GEOMETRY
+
+    def tabulate(self, cell: int, points: np.ndarray):
+        """Values (P, n) and physical gradients (P, n, 2) of the cell's
+        basis functions at physical points: ``∇N = ∇_X N · J⁻¹`` with
+        ``X = F⁻¹(x)``, affine or, on a curved cell, dolfinx's Newton
+        pull-back and ``J(X) = Σ_i x_i ⊗ ∇_X φ_i(X)`` of the geometry."""
+        if not self.curved[cell]:
+            X = (points - self.origin[cell]) @ self.inverse[cell].T
+            tab = self.element.tabulate(1, X)
+            return tab[0, :, :, 0], np.stack([tab[1, :, :, 0], tab[2, :, :, 0]], axis=-1) @ self.inverse[cell]
+        nodes = np.ascontiguousarray(self.cell_geometry[cell])
+        X = self.cmap.pull_back(np.ascontiguousarray(points, dtype=float), nodes)
+        dphi = self.geometry_element.tabulate(1, X)[1:3, :, :, 0]            # (2, P, nodes)
+        inverse = np.linalg.inv(np.einsum("ia,dpi->pad", nodes, dphi))      # (P, 2, 2): ∂X_d/∂x_a
+        tab = self.element.tabulate(1, X)
+        dN = np.stack([tab[1, :, :, 0], tab[2, :, :, 0]], axis=-1)
+        return tab[0, :, :, 0], np.einsum("pnd,pda->pna", dN, inverse)
+
+    def affine_gradients(self, cells: np.ndarray, X: np.ndarray) -> np.ndarray:
+        """(cells, P, n, 2): the physical gradients of the basis of affine
+        ``cells`` at reference points X (P, 2), ``∇_X N · J⁻¹`` of each cell."""
+        dN_ref = np.moveaxis(self.element.tabulate(1, X)[1:3, :, :, 0], 0, -1)    # (P, n, 2)
+        return np.einsum("pnd,cda->cpna", dN_ref, self.inverse[cells])

@@ -1,0 +1,115 @@
+"""XFEM's displacement and stress of either body at arbitrary points, and
+the recovered stress at degree 1."""
+from __future__ import annotations
+
+import numpy as np
+
+from contactcore.bodies import sign_of_index
+from contactcore.recovery import PatchRecovery
+
+from ..evaluation import BodyCellLocator
+from .kernels import enriched_basis, heaviside_shift, voigt_stress
+from .space import EnrichedFunctionSpace
+
+
+class XFEMFields:
+    """Displacement and stress of either body at arbitrary points; under
+    mpirun a collective call (:meth:`BodyCellLocator.choose`).
+
+    Degree 1: a body's stress is recovered (:meth:`_recovered`, after
+    Zienkiewicz and Zhu's patch recovery), not read from the cell's own
+    constant or bilinear field (:mod:`contactcore.recovery`)."""
+
+    def __init__(self, space: EnrichedFunctionSpace, x: np.ndarray):
+        self.space, self.blocks = space, space.node_values(x)
+        self.D = space.scene.voigt_matrices()
+        self.locator = BodyCellLocator(space.msh, [space.cells_resolving(side) for side in (-1, 1)])
+        self._recoveries = {body: None for body in (0, 1)}
+
+    def _eval(self, points, bodies, gradient: bool) -> np.ndarray:
+        points = np.asarray(points, float)[:, :2]
+        bodies = np.asarray(bodies)
+        cells, mine = self.locator.choose(points, bodies)
+        out = np.zeros((len(points), 3 if gradient else 2))
+        if gradient and self.space.degree == 1:
+            for body in np.unique(bodies):
+                self._recovery(int(body))  # collective: every rank, whatever points it evaluates
+                sel = np.flatnonzero(mine & (bodies == body))
+                out[sel] = self._recovered(cells[sel], int(body), points[sel])
+            return self.locator.combine(out)
+        for c in np.unique(cells[mine]):
+            for body in np.unique(bodies[mine & (cells == c)]):
+                sel = np.flatnonzero(mine & (cells == c) & (bodies == body))
+                out[sel] = self._local(c, int(body), points[sel], gradient)
+        return self.locator.combine(out)
+
+    def _local(self, c: int, body: int, points: np.ndarray, gradient: bool) -> np.ndarray:
+        """u (P, 2) or Voigt σ (P, 3) of ``body``'s polynomial in cell ``c`` at ``points``."""
+        N, dN, shift = enriched_basis(self.space, c, points, sign_of_index(body))
+        U = self.blocks[self.space.cells.cell_dofs[c]]
+        vec = U[:, :2] + shift[:, None] * U[:, 2:]
+        if not gradient:
+            return N @ vec
+        return voigt_stress(np.einsum("pjd,jk->pkd", dN, vec), self.D[body])
+
+    def _recovery(self, body: int):
+        """``body``'s :class:`~contactcore.recovery.PatchRecovery` over every
+        rank's cells, and the row of each of this rank's owned cells (a
+        collective call under mpirun), built on first use.  Its samples are
+        the body's resolving cells that this rank owns: the centroid and
+        area of the body's part, and the cell's own σ there; a node's key
+        is its global block."""
+        if self._recoveries[body] is None:
+            space = self.space
+            cells = space.cells_resolving(sign_of_index(body))
+            cells = cells[cells < space.cells.owned_cells]  # each cell sampled by its owner
+            centroids, areas, sig = self._samples(cells, body)
+            owned = np.arange(space.cells.owned_cells)
+            sample = np.full(space.cells.owned_cells, -1)
+            sample[cells] = np.arange(len(cells))
+            keys = space.numbering.global_blocks[space.cells.cell_dofs[owned]]
+            self._recoveries[body] = PatchRecovery.gather(space.cells.ranks, keys, sample, centroids, areas, sig)
+        return self._recoveries[body]
+
+    def _samples(self, cells: np.ndarray, body: int):
+        """Centroids (m, 2), areas (m,) and Voigt σ (m, 3) of ``body``'s part
+        of each of ``cells``: whole (uncut, affine) cells at once, from the
+        reference rule's centroid mapped; cut and curved cells one by one."""
+        space, side = self.space, sign_of_index(body)
+        basis, cut = space.cells, space.cut
+        centroids, areas, sig = np.zeros((len(cells), 2)), np.zeros(len(cells)), np.zeros((len(cells), 3))
+        whole = np.array([c not in cut.regions and not basis.curved[c] for c in cells], dtype=bool)
+        X, w = cut.reference_rule
+        Xc = w @ X / w.sum()
+        c = cells[whole]
+        centroids[whole] = basis.origin[c] + basis.jacobian[c] @ Xc
+        areas[whole] = w.sum() * np.abs(np.linalg.det(basis.jacobian[c]))
+        dN = basis.affine_gradients(c, Xc[None])[:, 0]     # (cells, n, 2)
+        dofs = basis.cell_dofs[c]
+        U = self.blocks[dofs]
+        vec = U[..., :2] + heaviside_shift(space, dofs, side)[..., None] * U[..., 2:]
+        sig[whole] = voigt_stress(np.einsum("cjd,cjk->ckd", dN, vec), self.D[body])
+        for n in np.flatnonzero(~whole):
+            c = cells[n]
+            parts = [(pts, wt) for s, pts, wt, *_ in cut.cell_values(c) if s == side]
+            pts, wt = np.vstack([p for p, _ in parts]), np.concatenate([q for _, q in parts])
+            areas[n], centroids[n] = wt.sum(), wt @ pts / wt.sum()
+            sig[n] = self._local(c, body, centroids[n:n + 1], True)[0]
+        return centroids, areas, sig
+
+    def _recovered(self, cells: np.ndarray, body: int, points: np.ndarray) -> np.ndarray:
+        """Voigt σ (P, 3) of ``body`` at ``points`` (located in ``cells``,
+        owned): the recovered stress, or the cell's own where its patch
+        fits no line (:mod:`contactcore.recovery`)."""
+        recovery, rows = self._recovery(body)
+        out = recovery.at(rows[cells], points)
+        for c in np.unique(cells[np.isnan(out[:, 0])]):
+            sel = np.flatnonzero(cells == c)
+            out[sel] = self._local(c, body, points[sel], True)
+        return out
+
+    def displacement(self, points, bodies) -> np.ndarray:
+        return self._eval(points, bodies, False)
+
+    def stress(self, points, bodies) -> np.ndarray:
+        return self._eval(points, bodies, True)
