@@ -171,7 +171,7 @@ if ranks.rank == 0:
 """
 
 
-@pytest.mark.parametrize("method, degree", [("efgm", 1), ("xfem", 2)])
+@pytest.mark.parametrize("method, degree", [("efgm", 1), pytest.param("xfem", 2, marks=pytest.mark.slow)])
 def test_traction_on_two_ranks_is_the_serial_one(method, degree):
     """Under mpirun -n 2, ``S u`` and ``γ₀`` at Γ's points (each rank its
     own, gathered) are the serial ones."""
