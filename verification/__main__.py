@@ -19,7 +19,8 @@
 ``--workers K`` (their cases on K local processes, :mod:`verification.pool`),
 or run under ``mpiexec -n K python -m mpi4py.futures -m verification ...``.
 
-Bad input ends with one line ``error: <field>: <problem>`` and exit status 2.
+Bad input ends with one line ``error: <field>: <problem>`` and exit status 2;
+Ctrl-C with one line ``interrupted`` and exit status 130 (128 + SIGINT).
 """
 from __future__ import annotations
 
@@ -317,6 +318,10 @@ def _abort_on(exc: BaseException) -> None:
     MPI.COMM_WORLD.Abort(1)
 
 
+#: The exit status of a run ended by Ctrl-C: 128 + SIGINT, as a shell reports it.
+INTERRUPTED = 130
+
+
 def main(argv=None) -> int:
     argv = sys.argv[1:] if argv is None else argv
     args = _parser().parse_args(argv)
@@ -348,6 +353,10 @@ def main(argv=None) -> int:
         if rank == 0:  # every rank meets the same error (Newton's decisions are collective): one line
             print(f"error: {exc}", file=sys.stderr)
         return 2
+    except KeyboardInterrupt:  # the result folder is already discarded; the workers stop with the pool
+        if rank == 0:
+            print("interrupted", file=sys.stderr)
+        return INTERRUPTED
     except Exception as exc:
         if distributed():
             _abort_on(exc)
