@@ -2,6 +2,7 @@
 lines, units."""
 from __future__ import annotations
 
+import argparse
 import os
 import re
 import signal
@@ -13,6 +14,7 @@ import pytest
 
 from contactcore import SolverError, health, load_scene, scene_from_dict
 from contactcore.laws import CoulombLaw
+from verification import __main__ as verification_main
 from verification import methods
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -99,3 +101,15 @@ def test_a_nearly_incompressible_material_is_named_first(scene_dict):
     assert re.search(r"^scene A: materials\.minus\.nu and materials\.plus\.nu = 0\.4999999 in plane strain: "
                      r"λ/μ = 5\.0e\+06, nearly incompressible", lines[0]), lines[0]
     assert "rigid-body mode" not in str(lines)
+
+
+def _subparsers(parser: argparse.ArgumentParser):
+    for action in parser._actions:  # argparse keeps its subcommands on the subparsers action only
+        if isinstance(action, argparse._SubParsersAction):
+            yield from action.choices.items()
+
+
+def test_every_cli_option_has_a_help_line():
+    missing = [f"{name} {action.dest}" for name, sub in _subparsers(verification_main._parser())
+               for action in sub._actions if not action.help]
+    assert not missing, missing

@@ -129,7 +129,7 @@ def _parser() -> argparse.ArgumentParser:
     rep.add_argument("out", type=Path)
     rep.add_argument("--quick", action="store_true", help="short ladders: a smoke test of the whole chain")
     _workers(rep)
-    ben = sub.add_parser("benchmark", parents=[common], help="error against run time beside GetFEM's level-set XFEM (issue 7)")
+    ben = sub.add_parser("benchmark", parents=[common], help="error against run time beside GetFEM's level-set XFEM")
     ben.add_argument("--scene", nargs="+", default=["A", "B", "C"], choices=["A", "B", "C"])
     ben.add_argument("--out", type=Path, required=True)
     _workers(ben, default=os.cpu_count())
@@ -153,7 +153,28 @@ def _parser() -> argparse.ArgumentParser:
     sca.add_argument("--h", nargs="+", type=float, required=True)
     sca.add_argument("--ranks", nargs="+", type=int, default=[1, 2], help="rank counts (default 1 2)")
     sca.add_argument("--out", type=Path, required=True)
+    _default_help(sub)
     return parser
+
+
+#: The help line of an option that means the same in every command that has it.
+COMMON_HELP = {
+    "scene": "built-in scene name(s) (A, B, C, ...) or scene TOML file(s)",
+    "method": "fe, xfem, efgm, or all (default all)",
+    "degree": "polynomial degree(s) of every method: 1 or 2",
+    "h": "cell sizes of the ladder, in the scene's length unit",
+    "values": "the values of the --param just before",
+    "case": "closed-form cases to run (default: all)",
+    "basis": "EFGM's MLS bases to time (default: both)",
+    "out": "result folder (built aside, put in place only if the run succeeds)",
+}
+
+
+def _default_help(sub) -> None:
+    """Every option without a help line of its own gets :data:`COMMON_HELP`'s."""
+    for command in sub.choices.values():
+        for action in command._actions:
+            action.help = action.help or COMMON_HELP.get(action.dest)
 
 
 class Repeats(logging.Filter):
