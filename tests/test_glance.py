@@ -3,6 +3,7 @@ lines, units."""
 from __future__ import annotations
 
 import argparse
+import json
 import os
 import re
 import signal
@@ -12,10 +13,10 @@ from pathlib import Path
 
 import pytest
 
-from contactcore import SolverError, health, load_scene, scene_from_dict
+from contactcore import SolverError, health, load_scene, sample_profiles, scene_from_dict
 from contactcore.laws import CoulombLaw
 from verification import __main__ as verification_main
-from verification import methods
+from verification import files, methods, plots
 
 ROOT = Path(__file__).resolve().parents[1]
 #: Long enough to be interrupted mid-solve: several seconds at h = 0.02, degree 2.
@@ -113,3 +114,32 @@ def test_every_cli_option_has_a_help_line():
     missing = [f"{name} {action.dest}" for name, sub in _subparsers(verification_main._parser())
                for action in sub._actions if not action.help]
     assert not missing, missing
+
+
+@pytest.mark.parametrize("scale, unit", [(500.0, "Pa"), (1.75e5, "kPa"), (2e6, "MPa"), (3e9, "GPa")])
+def test_stress_axes_take_the_unit_that_fits(scale, unit):
+    factor, label = plots.axis_unit("syy", scale)
+    assert label == f"σyy ({unit})" and 1 <= scale / factor < 1000
+    assert plots.axis_unit("gN", scale) == (1.0, "g_N (m)")
+
+
+def test_a_run_folder_names_every_csv_columns_unit(tmp_path):
+    """Scene A's stresses (≈ 1e5 Pa) are drawn in kPa; ``units.json``
+    gives each CSV column's unit while the CSV headers stay bare names."""
+    out = tmp_path / "run"
+    assert verification_main.main(["run", "A", "--method", "fe", "--h", "0.2", "--no-plots", "-q",
+                                   "--out", str(out)]) == 0
+    units = json.loads((out / files.UNITS_FILE).read_text())
+    assert units["fe/profiles/A2.csv"] == {"s": "m or rad", "x": "m", "y": "m", "syy": "Pa"}
+    assert units["fe/profiles/A5.csv"]["gN"] == "m"
+    assert (out / "fe/profiles/A2.csv").read_text().splitlines()[0] == "s,x,y,syy"
+
+
+def test_scene_a_stresses_are_drawn_in_kpa():
+    """Scene A's σyy on Γ is about −1e5 Pa (its top traction): kPa."""
+    scene = load_scene("A")
+    result = methods.solver("fe")(scene, 0.2)
+    a2 = next(p for p in sample_profiles(scene, result.fields, result.interface) if p.id == "A2")
+    fig = plots.profile_figure("σyy", {"fe (p1)": a2, "fe (p2)": a2})
+    assert [fig.axes[0].get_ylabel(), fig.axes[1].get_ylabel()] == ["σyy (kPa)", "Δ σyy (kPa)"]
+    plots.pyplot().close(fig)

@@ -369,6 +369,7 @@ def main(argv=None) -> int:
                 _dispatch(args, argv)
                 if not (tmp / files.MANIFEST).exists():  # every result folder says what made it
                     files.write_json(tmp / files.MANIFEST, files.provenance(list(argv)))
+                files.write_units(tmp)  # every CSV column's unit, beside the CSVs (their headers stay as read)
             log.info("wrote %s", final)
     except ContactError as exc:
         if rank == 0:  # every rank meets the same error (Newton's decisions are collective): one line

@@ -3,7 +3,8 @@
 Every curve of a (method, degree) has its own colour, line style and
 marker, so coincident curves stay distinguishable; under each overlay a
 panel shows each method minus the reference (fe at its highest degree, or
-the first curve) in the quantity's units.  Legends sit outside the axes,
+the first curve) in the quantity's units: stresses in kPa, MPa or GPa as
+fits their size (:func:`axis_unit`).  Legends sit outside the axes,
 tick labels never carry an offset, and no panel zooms below
 :data:`~contactcore.tolerances.PLOT_MIN_Y_SPAN` of its quantity's scale.
 """
@@ -33,6 +34,20 @@ def pyplot():
 
 UNITS = {"sxx": "σxx (Pa)", "syy": "σyy (Pa)", "sxy": "σxy (Pa)", "tN": "t_N (Pa)", "tT": "t_T (Pa)",
          "gN": "g_N (m)", "gT": "g_T (m)", "ux": "u_x (m)", "uy": "u_y (m)"}
+#: The stress units of a plot's axis, from the largest: the first whose
+#: factor is at most the largest |value| shown (Pa below 1 kPa).
+STRESS_PREFIXES = ((1e9, "GPa"), (1e6, "MPa"), (1e3, "kPa"), (1.0, "Pa"))
+
+
+def axis_unit(q: str, scale: float) -> tuple[float, str]:
+    """``(factor, label)`` of quantity ``q``'s axis when its largest |value|
+    is ``scale``: a stress in kPa, MPa or GPa as fits (values divided by
+    ``factor``), any other quantity as :data:`UNITS` has it."""
+    label = UNITS.get(q, q)
+    if not label.endswith("(Pa)"):
+        return 1.0, label
+    factor, unit = next(((f, u) for f, u in STRESS_PREFIXES if scale >= f), STRESS_PREFIXES[-1])
+    return factor, label.replace("(Pa)", f"({unit})")
 XLABEL = {"arclength": "s (m)", "angle": "θ (rad)"}
 
 #: Colour, line style and markers (by degree 1, 2, 3) of each method: no two
@@ -107,11 +122,12 @@ def profile_figure(title: str, runs: dict[str, ProfileData]):
     for k, q in enumerate(quantities):
         ax = axes[rows * k, 0]
         scale = max(float(np.nanmax(np.abs(p.columns[q]))) for p in runs.values())
+        factor, unit = axis_unit(q, scale)
         for i, (label, prof) in enumerate(runs.items()):
-            ax.plot(prof.columns["s"], prof.columns[q], **style(label, i, len(prof.columns["s"])))
-        ax.set_ylabel(UNITS.get(q, q))
+            ax.plot(prof.columns["s"], prof.columns[q] / factor, **style(label, i, len(prof.columns["s"])))
+        ax.set_ylabel(unit)
         ax.grid(alpha=0.3)
-        keep_span(ax, scale)
+        keep_span(ax, scale / factor)
         if k == 0:
             legend_outside(ax)
         if rows == 2:
@@ -125,14 +141,15 @@ def profile_figure(title: str, runs: dict[str, ProfileData]):
 def _difference_panel(ax, q: str, runs: dict[str, ProfileData], ref: str, scale: float) -> None:
     """Each curve but the reference minus the reference, at its own samples."""
     s_ref, v_ref = runs[ref].columns["s"], runs[ref].columns[q]
+    factor, unit = axis_unit(q, scale)
     for i, (label, prof) in enumerate(runs.items()):
         if label != ref:
             s = prof.columns["s"]
-            ax.plot(s, prof.columns[q] - np.interp(s, s_ref, v_ref), **style(label, i, len(s)))
+            ax.plot(s, (prof.columns[q] - np.interp(s, s_ref, v_ref)) / factor, **style(label, i, len(s)))
     ax.axhline(0.0, color="black", lw=0.6)
     ax.grid(alpha=0.3)
-    ax.set_ylabel("Δ " + UNITS.get(q, q))
-    keep_span(ax, scale)
+    ax.set_ylabel("Δ " + unit)
+    keep_span(ax, scale / factor)
     ax.set_title(f"each minus {ref}", fontsize=8, loc="right")
 
 

@@ -230,19 +230,20 @@ def markdown(scene_name: str, names: list[str], rows: list[dict]) -> str:
 def _plot(path: Path, scene_name: str, param: str, column: str, others: list[str], rows: list[dict]) -> None:
     """The response on Γ against ``param`` (the table's ``column``); one
     series per method and values of the ``others`` columns."""
-    from .plots import UNITS, pyplot, save
+    from .plots import axis_unit, pyplot, save
 
     fig, axes = pyplot().subplots(2, 2, figsize=(9, 6.5), squeeze=False)
     values = [r[column] for r in rows]
     logx = min(values) > 0 and max(values) / min(values) > 100
     series = dict.fromkeys((r["method"], *(r[o] for o in others)) for r in rows)
     for ax, q in zip(axes.ravel(), ("gN", "gT", "tN", "tT")):
+        factor, unit = axis_unit(q, max((abs(r[f"max_{q}"]) for r in rows if r["status"] != "failed"), default=0.0))
         for key in series:
-            pts = [(r[column], r[f"max_{q}"]) for r in rows
+            pts = [(r[column], r[f"max_{q}"] / factor) for r in rows
                    if (r["method"], *(r[o] for o in others)) == key and r["status"] != "failed"]
             if pts:
                 ax.plot(*zip(*pts), "o-", label=", ".join([key[0], *(f"{o} = {v:g}" for o, v in zip(others, key[1:]))]))
-        ax.set_ylabel("max |" + UNITS[q].split(" ")[0] + "| " + UNITS[q].split(" ")[1])
+        ax.set_ylabel("max |" + unit.split(" ")[0] + "| " + unit.split(" ")[1])
         ax.set_xlabel(param)
         if logx:
             ax.set_xscale("log")
