@@ -3,6 +3,7 @@ lines, units."""
 from __future__ import annotations
 
 import argparse
+import csv
 import json
 import os
 import re
@@ -12,11 +13,12 @@ import sys
 from pathlib import Path
 
 import pytest
+import tolerances as tol
 
 from contactcore import SolverError, health, load_scene, sample_profiles, scene_from_dict
 from contactcore.laws import CoulombLaw
 from verification import __main__ as verification_main
-from verification import files, methods, plots
+from verification import files, methods, plots, study
 
 ROOT = Path(__file__).resolve().parents[1]
 #: Long enough to be interrupted mid-solve: several seconds at h = 0.02, degree 2.
@@ -142,4 +144,44 @@ def test_scene_a_stresses_are_drawn_in_kpa():
     a2 = next(p for p in sample_profiles(scene, result.fields, result.interface) if p.id == "A2")
     fig = plots.profile_figure("σyy", {"fe (p1)": a2, "fe (p2)": a2})
     assert [fig.axes[0].get_ylabel(), fig.axes[1].get_ylabel()] == ["σyy (kPa)", "Δ σyy (kPa)"]
+    plots.pyplot().close(fig)
+
+
+def _study(tmp_path, *args) -> list[dict]:
+    out = tmp_path / "study"
+    assert verification_main.main(["study", *args, "--method", "fe", "--h", "0.2", "-q", "--out", str(out)]) == 0
+    with open(out / "study.csv") as fh:
+        return list(csv.DictReader(fh))
+
+
+def test_study_varies_the_load(tmp_path):
+    """A linear law: twice the load, twice the mean tractions on Γ (scene A's
+    top traction (2.5e4, −1e5) averaged over Γ, to the solve's round-off)."""
+    one, two = _study(tmp_path, "A", "--param", "load", "--values", "1", "2")
+    for q in ("mean_tN", "mean_tT"):
+        assert float(two[q]) == pytest.approx(2 * float(one[q]), rel=tol.PATCH_ROUNDOFF)  # a linear solve, scaled: round-off alone
+
+
+def test_study_varies_mu_and_the_increments(tmp_path):
+    """C-coulomb (μ = 0.2): μ reaches the law; increments must be whole, a
+    fraction is a failed point with its message, the study goes on."""
+    rows = _study(tmp_path, "C-coulomb", "--param", "mu", "--values", "0.2", "0.5", "--param", "increments",
+                  "--values", "2", "2.5")
+    assert [(float(r["mu"]), float(r["increments"])) for r in rows] == [(0.2, 2), (0.2, 2.5), (0.5, 2), (0.5, 2.5)]
+    assert [r["status"] != "failed" for r in rows] == [True, False, True, False]
+    assert "--param increments: must be a whole number" in rows[1]["message"]
+
+
+def test_study_plots_mark_failed_and_warned_points():
+    """A ring on every warned point, a cross on the x axis at every failed one."""
+    rows = [{"value": v, "method": "fe", "status": st, **dict.fromkeys(study.OUTPUTS, 1.0 + v)}
+            for v, st in ((1.0, "ok"), (2.0, "warned"), (3.0, "failed"))]
+    fig = plots.pyplot().figure()
+    ax = fig.add_subplot()
+    colour = study._series(ax, "value", "tN", 1.0, rows, "fe")
+    study._mark(ax, "value", "tN", 1.0, rows, colour)
+    lines = {line.get_label(): line for line in ax.get_lines()}
+    assert list(lines["fe"].get_xdata()) == [1.0, 2.0]
+    assert list(lines["warned"].get_xdata()) == [2.0] and list(lines["failed"].get_xdata()) == [3.0]
+    assert lines["failed"].get_transform() == ax.get_xaxis_transform()
     plots.pyplot().close(fig)
