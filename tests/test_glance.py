@@ -143,7 +143,7 @@ def test_scene_a_stresses_are_drawn_in_kpa():
     result = methods.solver("fe")(scene, 0.2)
     a2 = next(p for p in sample_profiles(scene, result.fields, result.interface) if p.id == "A2")
     fig = plots.profile_figure("σyy", {"fe (p1)": a2, "fe (p2)": a2})
-    assert [fig.axes[0].get_ylabel(), fig.axes[1].get_ylabel()] == ["σyy (kPa)", "Δ σyy (kPa)"]
+    assert [fig.axes[0].get_ylabel(), fig.axes[1].get_ylabel()] == ["σyy (kPa)", "Δσyy / max|ref| (%)"]
     plots.pyplot().close(fig)
 
 
@@ -185,3 +185,33 @@ def test_study_plots_mark_failed_and_warned_points():
     assert list(lines["warned"].get_xdata()) == [2.0] and list(lines["failed"].get_xdata()) == [3.0]
     assert lines["failed"].get_transform() == ax.get_xaxis_transform()
     plots.pyplot().close(fig)
+
+
+def _run(tmp_path, *args) -> Path:
+    out = tmp_path / "run"
+    assert verification_main.main(["run", "A", "--method", "xfem", "efgm", "--h", "0.2", "--no-plots", "-q",
+                                   *args, "--out", str(out)]) == 0
+    return out
+
+
+def test_methods_are_compared_with_fe_p2_by_default(tmp_path):
+    """Two degree-1 methods: fe at degree 2 is solved at the same h as the
+    reference, listed in the summary, its profiles under reference/."""
+    out = _run(tmp_path)
+    summary = (out / "summary.md").read_text()
+    assert "| fe (reference) | 2 |" in summary and "Against fe (p2);" in summary
+    assert json.loads((out / "run.json").read_text())["reference"] == "fe (p2)"
+    assert (out / "reference" / "profiles" / "A1.csv").exists()
+
+
+def test_the_reference_is_chosen_with_reference(tmp_path):
+    """``--reference efgm:1``, one of the runs: nothing more is solved."""
+    out = _run(tmp_path, "--reference", "efgm:1")
+    assert "Against efgm (p1);" in (out / "summary.md").read_text()
+    assert not (out / "reference").exists()
+
+
+def test_a_bad_reference_is_refused_by_the_parser(capsys):
+    with pytest.raises(SystemExit) as ended:
+        verification_main.main(["run", "A", "--reference", "fe:3", "--out", "unused"])
+    assert ended.value.code == 2 and "expected METHOD:DEGREE" in capsys.readouterr().err

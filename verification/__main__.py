@@ -47,6 +47,17 @@ def _petsc_option(text: str) -> tuple[str, str]:
     return key.lstrip("-"), value
 
 
+def _reference(text: str) -> tuple[str, int] | None:
+    """``--reference METHOD:DEGREE`` (or ``none``)."""
+    if text == "none":
+        return None
+    name, sep, degree = text.partition(":")
+    if not sep or name not in methods.METHODS or degree not in ("1", "2"):
+        raise argparse.ArgumentTypeError(f"expected METHOD:DEGREE with METHOD one of {', '.join(methods.METHODS)} "
+                                         f"and DEGREE 1 or 2, or none (got {text!r})")
+    return name, int(degree)
+
+
 def _methods(p, **kw) -> None:
     p.add_argument("--method", nargs="+", default=["all"], choices=[*methods.METHODS, "all"], **kw)
 
@@ -87,6 +98,9 @@ def _parser() -> argparse.ArgumentParser:
     run.add_argument("--no-plots", dest="draw", action="store_false", help="write no figures")
     run.add_argument("--allow-large", action="store_true",
                      help="run even when the estimated memory exceeds what this machine has")
+    run.add_argument("--reference", type=_reference, default="fe:2", metavar="METHOD:DEGREE",
+                     help="the run the Δ panels and summary.md's agreement table compare with, solved at the same "
+                          "h if not among the methods (default fe:2; 'none': fe at its highest degree run)")
     run.add_argument("--out", type=Path, required=True, help="result folder")
     pap = sub.add_parser("paper", parents=[common], help="the paper's figures and an agreement table against a refined reference")
     pap.add_argument("--scene", nargs="+", default=["A", "B", "C"], choices=["A", "B", "C"])
@@ -261,7 +275,7 @@ def _dispatch(args, argv) -> None:
         from .run import run
         run(args.scene, args.method, args.out, h=args.h, degree=args.degree, paper=args.paper, fields=args.fields,
             petsc_options=dict(args.petsc_option), dmax=args.dmax, nodes_file=args.nodes, cell=args.cell,
-            basis=args.basis, allow_large=args.allow_large, draw=args.draw, argv=argv)
+            basis=args.basis, allow_large=args.allow_large, draw=args.draw, reference=args.reference, argv=argv)
     elif cmd == "paper":
         from .paper import paper
         paper(args.out, tuple(args.scene), args.ref_h, workers=args.workers, argv=argv)
