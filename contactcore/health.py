@@ -23,7 +23,7 @@ import numpy as np
 
 from . import tolerances as tol
 from .errors import SolverError
-from .geometry import Disc, LineInterface, tangent_of
+from .geometry import Disc, LineInterface, Rectangle, tangent_of
 
 #: Sample points per support boundary in the rigid-mode check (three
 #: non-collinear points suffice; more make the check independent of them).
@@ -59,8 +59,7 @@ def check_residual(residual: float, what: str, backward: float = float("nan"), h
 def failure_hint(scene, weights) -> str:
     """Why a solve may fail, naming the springs (their entries ``k w``
     against the stiffer modulus ``E``: round-off in the spring rows grows as
-    eps·k w/E; a body held by springs far below E/h is nearly free) and a
-    nearly incompressible material in plane strain (λ/μ)."""
+    eps·k w/E; a body held by springs far below E/h is nearly free)."""
     E = max(m.E for m in scene.materials.values())
     w = float(np.max(weights)) if len(weights) else 0.0
     out = []
@@ -72,10 +71,28 @@ def failure_hint(scene, weights) -> str:
         elif ratio < tol.SPRING_HINT_RANGE:
             out.append(f"interface.law.k{c} = {k_user:.3g} Pa/m is very soft: k w = {ratio:.1e} E, a body held by it "
                        "is nearly free — stiffen it or add a support")
-    if scene.plane == "strain":
-        out += [f"materials.{body}.nu = {m.nu:.10g}: λ/μ = {2 * m.nu / (1 - 2 * m.nu):.1e} amplifies round-off"
-                for body, m in scene.materials.items() if m.nu > tol.NU_LOCKING_WARN]
     return "; ".join(out) or "a rigid-body mode may be nearly free"
+
+
+def material_cause(scene) -> str:
+    """A nearly incompressible material in plane strain (ν above
+    NU_LOCKING_WARN), named with ``λ/μ = 2ν/(1 − 2ν)``: the bulk rows
+    carry λ, the shear rows μ, and a solve loses about log10(λ/μ) digits
+    to round-off (Hughes 2000, §4.1); "" if none."""
+    if scene.plane != "strain":
+        return ""
+    bad = [(body, m.nu) for body, m in scene.user.materials.items() if m.nu > tol.NU_LOCKING_WARN]
+    if not bad:
+        return ""
+    nu = max(v for _, v in bad)
+    names = " and ".join(f"materials.{body}.nu" for body, _ in bad)
+    return (f"{names} = {nu:.10g} in plane strain: λ/μ = {2 * nu / (1 - 2 * nu):.1e}, nearly incompressible, "
+            "and the solve keeps too few digits")
+
+
+def headline(message: str) -> str:
+    """A solver message up to its explanation (the part before " — ")."""
+    return message.split(" — ")[0]
 
 
 def check_springs(scene, weights) -> None:
@@ -223,3 +240,63 @@ def material_warnings(scene) -> list[str]:
                        "A at ν = 0.4999, h = 0.05: the upper block's moment from σyy on Γ 18 % off in fe P2, 180 % "
                        "in xfem P2, 120 % in EFGM's quadratic basis); tractions from the jumps are not affected")
     return out
+
+
+# ----- friction -----------------------------------------------------------------
+
+def friction_demand(scene, k: float) -> str:
+    """The check a Coulomb failure turns on, or "": a body held by Γ alone
+    (no support or pin on it) under boundary tractions and pressures is in
+    equilibrium only if their resultant ``F`` presses it onto a straight Γ
+    with ``|F·t| <= μ |F·n|`` (Coulomb's cone, integrated over Γ; Wriggers
+    2006, §2.3).  ``F`` is the sum of ``factor(k)·traction·length`` over the
+    part of each loaded edge on that body (φ linear along it), ``t = −p n_out`` for a
+    pressure.  Only a rectangle cut by a line with no body force on the
+    body is judged here."""
+    mu = getattr(scene.law, "mu", None)
+    if mu is None or not isinstance(scene.interface, LineInterface) or not isinstance(scene.domain, Rectangle):
+        return ""
+    n = np.asarray(scene.interface.normal, float)
+    for b, name in enumerate(_BODY_NAMES):
+        held = [_boundary_points(scene.domain, s.boundary) for s in scene.supports]
+        held += [np.asarray([p.point], float) for p in scene.pins]
+        if any((scene.body_of(p) == b).any() for p in held) or any(
+                getattr(ld, "body", None) == ("minus", "plus")[b] for ld in scene.loads):
+            continue
+        force = _boundary_resultant(scene, b, scene.factors(k)[0])
+        press = -force @ n if b == 1 else force @ n  # > 0: pressed onto Γ
+        if not force.any():
+            continue
+        if press <= 0:
+            return f"body {name} is held by Γ alone and the loads pull it off Γ: no equilibrium without a support"
+        shear = abs(force @ tangent_of(n[None])[0])
+        if shear > mu * press:
+            return (f"on Γ the loads ask for shear/normal = {shear / press:.3g} of body {name}, above μ = {mu:g}: "
+                    "it slides off (no equilibrium); lower the shear load or raise μ")
+    return ""
+
+
+def _share(phi_a: float, phi_b: float, body: int) -> float:
+    """The part of an edge on ``body`` (0: φ < 0, 1: φ > 0), φ linear along
+    it (a straight Γ) with the values ``phi_a``, ``phi_b`` at its ends."""
+    plus = (1.0 if phi_a + phi_b > 0 else 0.0) if (phi_a > 0) == (phi_b > 0) else \
+        (phi_a if phi_a > 0 else phi_b) / abs(phi_a - phi_b)
+    return plus if body == 1 else 1.0 - plus
+
+
+def _boundary_resultant(scene, body: int, factors) -> np.ndarray:
+    """The resultant of the tractions and pressures on the part of each
+    loaded edge of the rectangle that lies on ``body`` (0 −, 1 +)."""
+    from .scene import Pressure, Traction
+    c = scene.domain.corners
+    force = np.zeros(2)
+    for load, f in zip(scene.loads, factors):
+        if not isinstance(load, (Traction, Pressure)):
+            continue
+        i, j = {"bottom": (0, 1), "right": (1, 2), "top": (2, 3), "left": (3, 0)}[load.boundary]
+        edge = c[j] - c[i]
+        share = _share(*scene.interface.phi(c[[i, j]]), body)
+        out = np.array([edge[1], -edge[0]]) / np.linalg.norm(edge)  # corners counter-clockwise
+        t = np.asarray(load.value, float) if isinstance(load, Traction) else -load.value * out
+        force += f * t * np.linalg.norm(edge) * share
+    return force

@@ -369,15 +369,37 @@ class _Newton:
             except SolverError as exc:
                 failures.append(f"step {start:g} → {k:g}: {exc}")
                 if depth >= tol.MAX_CUTBACKS:
-                    raise SolverError(
-                        f"scene {self.scene.name}: increment {n} of {self.scene.increments} failed after "
-                        f"{tol.MAX_CUTBACKS} cut-backs (smallest step 1/{2 ** depth} of an increment) — "
-                        f"{failures[0]}; last: {failures[-1]}. Either the load has no equilibrium (shear "
-                        "above μp under a traction load, a body held only by open points), or the springs are "
-                        "too stiff for Newton to settle which points stick and which slip (soften k_N, k_T or "
-                        "use more increments)") from None
+                    raise _no_equilibrium(self.scene, n, depth, failures) from None
                 mid = (start + k) / 2
                 pending[:0] = [(mid, depth + 1), (k, depth + 1)]
+
+
+def _refusal(scene, system: ContactSystem, exc: SolverError) -> SolverError:
+    """A linear law's failed solve, its cause first: a nearly
+    incompressible material (:func:`~contactcore.health.material_cause`),
+    checked before the springs and rigid modes are blamed."""
+    cause = health.material_cause(scene)
+    if cause:
+        return SolverError(f"scene {scene.name}: {cause}\n  ({health.headline(str(exc))}); lower ν or use plane "
+                           "stress")
+    weights = getattr(system, "collective", SERIAL).gather(system.interface.weights)
+    return SolverError(f"{exc}; {health.failure_hint(scene, weights)}")
+
+
+def _no_equilibrium(scene, n: int, depth: int, failures: list[str]) -> SolverError:
+    """Two lines, the failed check first: the friction cone on Γ if the
+    loads leave it (:func:`~contactcore.health.friction_demand`), else the
+    last cut-back's failure (up to its explanation); then what may cause it.
+    Every cut-back's full message is kept in the error's ``details``."""
+    where = f"scene {scene.name}: increment {n} of {scene.increments}"
+    last = f"failed after {depth} cut-backs (step 1/{2 ** depth}): {health.headline(failures[-1])}"
+    check = health.friction_demand(scene, float(n)) or health.material_cause(scene)
+    error = SolverError(f"{where}: {check}\n  ({last})" if check else
+                        f"{where} {last}\n  either the load has no equilibrium (shear above μp, a body held only "
+                        "by open points) or the springs are too stiff to settle stick and slip: soften k_N, k_T or "
+                        "use more increments")
+    error.details = "\n".join(failures)
+    return error
 
 
 def _fmt(values) -> str:
@@ -397,8 +419,7 @@ def _final_state(scene, system: ContactSystem, newton: _Newton, progress=None) -
         raise
     except SolverError as exc:
         if scene.law.is_linear:
-            weights = system.collective.gather(system.interface.weights)
-            raise SolverError(f"{exc}; {health.failure_hint(scene, weights)}") from None
+            raise _refusal(scene, system, exc) from None
     newton = _Newton(scene, system)
     _follow(scene, newton, progress)
     return newton

@@ -36,8 +36,8 @@ def main(h=None, friction=FRICTION):
         try:
             result = solve_with(scene, mu, h)
         except SolverError as refused:
-            # The message names the increment that failed and why.
-            print(f"μ = {mu}: refused: {str(refused).split(' — ')[0]}")
+            # Its first line names the increment that failed and the check that failed.
+            print(f"μ = {mu}: refused: {str(refused).splitlines()[0]}")
             rows[mu] = None
             continue
         # The history on Γ, at fe's quadrature points: the final state.

@@ -158,8 +158,9 @@ def test_every_method_and_degree_has_its_own_style():
 
 def test_profile_figure_differences_span_and_layout():
     """A 24 kPa t_T with a ±3 Pa wobble (scene B5 in the issue): no offset
-    labels, no zoom onto the wobble, the difference panel is method minus
-    reference in Pa, legend and title inside the figure and off the axes."""
+    labels, no zoom onto the wobble, the overlay in kPa, the difference
+    panel method minus reference relative to the reference's largest
+    |t_T|, in percent; legend and title inside the figure and off the axes."""
     s = np.linspace(0.0, 1.0, 101)
     ref = -24000.0 + 3.0 * np.sin(20 * s)
     runs = {"fe (p2)": _profile("B5", s, tT=ref), "xfem (p1)": _profile("B5", s, tT=ref + 1.0 + s),
@@ -167,14 +168,18 @@ def test_profile_figure_differences_span_and_layout():
     fig = plots.profile_figure("tangential traction on Γ", runs)
     fig.canvas.draw()
     overlay, diff = fig.axes[0], fig.axes[1]
-    for ax in (overlay, diff):
+    scale = max(np.abs(p.columns["tT"]).max() for p in runs.values())
+    kpa, percent = 1e3, 100.0
+    ref_size = np.abs(ref).max()
+    assert [overlay.get_ylabel(), diff.get_ylabel()] == ["t_T (kPa)", "Δt_T / max|ref| (%)"]
+    for ax, span in ((overlay, scale / kpa), (diff, percent)):
         assert ax.yaxis.get_major_formatter().get_offset() == ""
         low, high = ax.get_ylim()
-        scale = max(np.abs(p.columns["tT"]).max() for p in runs.values())
-        assert high - low >= PLOT_MIN_Y_SPAN * scale * (1 - 1e-9)  # (round-off of mid ± span/2)
+        assert high - low >= PLOT_MIN_Y_SPAN * span * (1 - 1e-9)  # (round-off of mid ± span/2)
     lines = {line.get_label(): line.get_ydata() for line in diff.get_lines() if not line.get_label().startswith("_")}
     assert set(lines) == {"xfem (p1)", "efgm (p1)"}
-    assert np.allclose(lines["xfem (p1)"], 1.0 + s) and np.allclose(lines["efgm (p1)"], -2.0)
+    assert np.allclose(lines["xfem (p1)"], percent * (1.0 + s) / ref_size)
+    assert np.allclose(lines["efgm (p1)"], percent * -2.0 / ref_size)
     figure_box = fig.bbox
     legend = overlay.get_legend().get_window_extent()
     assert legend.x0 >= overlay.get_window_extent().x1  # outside the axes, to their right

@@ -19,7 +19,8 @@
 ``--workers K`` (their cases on K local processes, :mod:`verification.pool`),
 or run under ``mpiexec -n K python -m mpi4py.futures -m verification ...``.
 
-Bad input ends with one line ``error: <field>: <problem>`` and exit status 2.
+Bad input ends with one line ``error: <field>: <problem>`` and exit status 2;
+Ctrl-C with one line ``interrupted`` and exit status 130 (128 + SIGINT).
 """
 from __future__ import annotations
 
@@ -44,6 +45,17 @@ def _petsc_option(text: str) -> tuple[str, str]:
     if not sep or not key:
         raise argparse.ArgumentTypeError(f"expected KEY=VALUE, got {text!r}")
     return key.lstrip("-"), value
+
+
+def _reference(text: str) -> tuple[str, int] | None:
+    """``--reference METHOD:DEGREE`` (or ``none``)."""
+    if text == "none":
+        return None
+    name, sep, degree = text.partition(":")
+    if not sep or name not in methods.METHODS or degree not in ("1", "2"):
+        raise argparse.ArgumentTypeError(f"expected METHOD:DEGREE with METHOD one of {', '.join(methods.METHODS)} "
+                                         f"and DEGREE 1 or 2, or none (got {text!r})")
+    return name, int(degree)
 
 
 def _methods(p, **kw) -> None:
@@ -88,6 +100,9 @@ def _parser() -> argparse.ArgumentParser:
                      help="run even when the estimated memory exceeds what this machine has")
     run.add_argument("--estimate", type=int, nargs="?", const=2, choices=(2, 3), metavar="{2,3}",
                      help="also solve at h/2 (3: and h/4), write the finest run with its estimated errors")
+    run.add_argument("--reference", type=_reference, default="fe:2", metavar="METHOD:DEGREE",
+                     help="the run the Δ panels and summary.md's agreement table compare with, solved at the same "
+                          "h if not among the methods (default fe:2; 'none': fe at its highest degree run)")
     run.add_argument("--out", type=Path, required=True, help="result folder")
     pap = sub.add_parser("paper", parents=[common], help="the paper's figures and an agreement table against a refined reference")
     pap.add_argument("--scene", nargs="+", default=["A", "B", "C"], choices=["A", "B", "C"])
@@ -132,7 +147,7 @@ def _parser() -> argparse.ArgumentParser:
     rep.add_argument("out", type=Path)
     rep.add_argument("--quick", action="store_true", help="short ladders: a smoke test of the whole chain")
     _workers(rep)
-    ben = sub.add_parser("benchmark", parents=[common], help="error against run time beside GetFEM's level-set XFEM (issue 7)")
+    ben = sub.add_parser("benchmark", parents=[common], help="error against run time beside GetFEM's level-set XFEM")
     ben.add_argument("--scene", nargs="+", default=["A", "B", "C"], choices=["A", "B", "C"])
     ben.add_argument("--out", type=Path, required=True)
     _workers(ben, default=os.cpu_count())
@@ -156,7 +171,28 @@ def _parser() -> argparse.ArgumentParser:
     sca.add_argument("--h", nargs="+", type=float, required=True)
     sca.add_argument("--ranks", nargs="+", type=int, default=[1, 2], help="rank counts (default 1 2)")
     sca.add_argument("--out", type=Path, required=True)
+    _default_help(sub)
     return parser
+
+
+#: The help line of an option that means the same in every command that has it.
+COMMON_HELP = {
+    "scene": "built-in scene name(s) (A, B, C, ...) or scene TOML file(s)",
+    "method": "fe, xfem, efgm, or all (default all)",
+    "degree": "polynomial degree(s) of every method: 1 or 2",
+    "h": "cell sizes of the ladder, in the scene's length unit",
+    "values": "the values of the --param just before",
+    "case": "closed-form cases to run (default: all)",
+    "basis": "EFGM's MLS bases to time (default: both)",
+    "out": "result folder (built aside, put in place only if the run succeeds)",
+}
+
+
+def _default_help(sub) -> None:
+    """Every option without a help line of its own gets :data:`COMMON_HELP`'s."""
+    for command in sub.choices.values():
+        for action in command._actions:
+            action.help = action.help or COMMON_HELP.get(action.dest)
 
 
 class Repeats(logging.Filter):
@@ -251,7 +287,8 @@ def _dispatch(args, argv) -> None:
         from .run import run
         run(args.scene, args.method, args.out, h=args.h, degree=args.degree, paper=args.paper, fields=args.fields,
             petsc_options=dict(args.petsc_option), dmax=args.dmax, nodes_file=args.nodes, cell=args.cell,
-            basis=args.basis, allow_large=args.allow_large, draw=args.draw, estimate=args.estimate, argv=argv)
+            basis=args.basis, allow_large=args.allow_large, draw=args.draw, estimate=args.estimate,
+            reference=args.reference, argv=argv)
     elif cmd == "paper":
         from .paper import paper
         paper(args.out, tuple(args.scene), args.ref_h, workers=args.workers, argv=argv)
@@ -329,6 +366,10 @@ def _abort_on(exc: BaseException) -> None:
     MPI.COMM_WORLD.Abort(1)
 
 
+#: The exit status of a run ended by Ctrl-C: 128 + SIGINT, as a shell reports it.
+INTERRUPTED = 130
+
+
 def main(argv=None) -> int:
     argv = sys.argv[1:] if argv is None else argv
     args = _parser().parse_args(argv)
@@ -355,11 +396,16 @@ def main(argv=None) -> int:
                 _dispatch(args, argv)
                 if not (tmp / files.MANIFEST).exists():  # every result folder says what made it
                     files.write_json(tmp / files.MANIFEST, files.provenance(list(argv)))
+                files.write_units(tmp)  # every CSV column's unit, beside the CSVs (their headers stay as read)
             log.info("wrote %s", final)
     except ContactError as exc:
         if rank == 0:  # every rank meets the same error (Newton's decisions are collective): one line
             print(f"error: {exc}", file=sys.stderr)
         return 2
+    except KeyboardInterrupt:  # the result folder is already discarded; the workers stop with the pool
+        if rank == 0:
+            print("interrupted", file=sys.stderr)
+        return INTERRUPTED
     except Exception as exc:
         if distributed():
             _abort_on(exc)

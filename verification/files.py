@@ -224,3 +224,36 @@ def relink(markdown: str, folder: str) -> str:
     """``markdown`` written in ``folder``, with its relative image and file
     links made relative to the folder above (for a report that gathers it)."""
     return re.sub(r"\]\((?!https?:|/)([^)]+)\)", lambda m: f"]({folder}/{m.group(1)})", markdown)
+
+
+#: The sidecar of every result folder that names each CSV column's unit.
+UNITS_FILE = "units.json"
+_STRESS, _LENGTH = "Pa", "m"
+#: The unit of a CSV column, in the scene's units (docs/scenes.md, "Units":
+#: Pa is the scene's stress unit F/ℓ², m its length unit ℓ).  ``s`` is an
+#: arc length, or a polar angle in rad on a circular Γ (see the profile's
+#: ``parameter``).  Columns not named (counts, statuses, names, ratios)
+#: have no unit.
+COLUMN_UNITS = {
+    **dict.fromkeys(("sxx", "syy", "sxy", "tN", "tT", "mean_tN", "mean_tT", "rms_tN", "rms_tT", "max_tN", "max_tT",
+                     "E_minus", "E_plus"), _STRESS),
+    **dict.fromkeys(("x", "y", "ux", "uy", "gN", "gT", "mean_gN", "mean_gT", "max_gN", "max_gT", "h", "exclude",
+                     "radius", "offset"), _LENGTH),
+    **dict.fromkeys(("kN", "kT"), f"{_STRESS}/{_LENGTH}"),
+    **dict.fromkeys(("total", "mesh", "assembly", "solve", "median_s"), "s"),
+    "angle": "degree",
+    "points_per_s": "1/s",
+}
+
+
+def write_units(folder: Path) -> Path:
+    """``folder/units.json``: for every CSV under ``folder`` (by its path
+    relative to it), the unit of each of its columns that has one; ``s``
+    reads ``m or rad``: arc length, or polar angle on a circular Γ."""
+    units = {}
+    for path in sorted(Path(folder).rglob("*.csv")):
+        with open(path, newline="") as fh:
+            header = next(csv.reader(fh), [])
+        units[path.relative_to(folder).as_posix()] = {c: ("m or rad" if c == "s" else COLUMN_UNITS[c])
+                                                      for c in header if c == "s" or c in COLUMN_UNITS}
+    return write_json(Path(folder) / UNITS_FILE, units)

@@ -2,8 +2,11 @@
 
 Every curve of a (method, degree) has its own colour, line style and
 marker, so coincident curves stay distinguishable; under each overlay a
-panel shows each method minus the reference (fe at its highest degree, or
-the first curve) in the quantity's units.  Legends sit outside the axes,
+panel shows each method minus the reference (the run's ``--reference``,
+else fe at its highest degree, or the first curve) relative to the
+reference's largest |value|, in percent; the overlays are in the
+quantity's units, stresses in kPa, MPa or GPa as fits (:func:`axis_unit`).
+Legends sit outside the axes,
 tick labels never carry an offset, and no panel zooms below
 :data:`~contactcore.tolerances.PLOT_MIN_Y_SPAN` of its quantity's scale.
 """
@@ -33,6 +36,20 @@ def pyplot():
 
 UNITS = {"sxx": "σxx (Pa)", "syy": "σyy (Pa)", "sxy": "σxy (Pa)", "tN": "t_N (Pa)", "tT": "t_T (Pa)",
          "gN": "g_N (m)", "gT": "g_T (m)", "ux": "u_x (m)", "uy": "u_y (m)"}
+#: The stress units of a plot's axis, from the largest: the first whose
+#: factor is at most the largest |value| shown (Pa below 1 kPa).
+STRESS_PREFIXES = ((1e9, "GPa"), (1e6, "MPa"), (1e3, "kPa"), (1.0, "Pa"))
+
+
+def axis_unit(q: str, scale: float) -> tuple[float, str]:
+    """``(factor, label)`` of quantity ``q``'s axis when its largest |value|
+    is ``scale``: a stress in kPa, MPa or GPa as fits (values divided by
+    ``factor``), any other quantity as :data:`UNITS` has it."""
+    label = UNITS.get(q, q)
+    if not label.endswith("(Pa)"):
+        return 1.0, label
+    factor, unit = next(((f, u) for f, u in STRESS_PREFIXES if scale >= f), STRESS_PREFIXES[-1])
+    return factor, label.replace("(Pa)", f"({unit})")
 XLABEL = {"arclength": "s (m)", "angle": "θ (rad)"}
 
 #: Colour, line style and markers (by degree 1, 2, 3) of each method: no two
@@ -89,17 +106,19 @@ def legend_outside(ax, **kw) -> None:
     ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0, fontsize=8, **kw)
 
 
-def plot_profile(path: Path, title: str, runs: dict[str, ProfileData]) -> Path:
+def plot_profile(path: Path, title: str, runs: dict[str, ProfileData], reference: str | None = None) -> Path:
     """Write :func:`profile_figure` as a PNG."""
-    return save(profile_figure(title, runs), path)
+    return save(profile_figure(title, runs, reference), path)
 
 
-def profile_figure(title: str, runs: dict[str, ProfileData]):
+def profile_figure(title: str, runs: dict[str, ProfileData], reference: str | None = None):
     """One figure for a profile: per quantity, the methods overlaid and,
-    under it, each method minus the reference (see module doc)."""
+    under it, each method minus the ``reference`` curve (default
+    :func:`reference_label`), relative to the largest |value| of the
+    reference (see module doc)."""
     first = next(iter(runs.values()))
     quantities = [n for n in first.names if n not in ("s", "x", "y")]
-    ref = reference_label(list(runs))
+    ref = reference if reference in runs else reference_label(list(runs))
     rows = 2 if len(runs) > 1 else 1
     fig, axes = pyplot().subplots(rows * len(quantities), 1, figsize=(8.5, (3.0 + 1.6 * (rows - 1)) * len(quantities)),
                              squeeze=False, sharex=True, layout="constrained",
@@ -107,33 +126,41 @@ def profile_figure(title: str, runs: dict[str, ProfileData]):
     for k, q in enumerate(quantities):
         ax = axes[rows * k, 0]
         scale = max(float(np.nanmax(np.abs(p.columns[q]))) for p in runs.values())
+        factor, unit = axis_unit(q, scale)
         for i, (label, prof) in enumerate(runs.items()):
-            ax.plot(prof.columns["s"], prof.columns[q], **style(label, i, len(prof.columns["s"])))
-        ax.set_ylabel(UNITS.get(q, q))
+            ax.plot(prof.columns["s"], prof.columns[q] / factor, **style(label, i, len(prof.columns["s"])))
+        ax.set_ylabel(unit)
         ax.grid(alpha=0.3)
-        keep_span(ax, scale)
+        keep_span(ax, scale / factor)
         if k == 0:
             legend_outside(ax)
         if rows == 2:
-            _difference_panel(axes[rows * k + 1, 0], q, runs, ref, scale)
+            _difference_panel(axes[rows * k + 1, 0], q, runs, ref)
     axes[-1, 0].set_xlabel(XLABEL.get(first.parameter, "s"))
     axes[0, 0].set_title(f"{first.id}: {title}", fontsize=10, wrap=True)
     _no_offsets(fig)
     return fig
 
 
-def _difference_panel(ax, q: str, runs: dict[str, ProfileData], ref: str, scale: float) -> None:
-    """Each curve but the reference minus the reference, at its own samples."""
+#: The relative Δ panels are drawn in percent.
+PERCENT = 100.0
+
+
+def _difference_panel(ax, q: str, runs: dict[str, ProfileData], ref: str) -> None:
+    """Each curve but the reference minus the reference, at its own samples,
+    relative to the reference's largest |value| on the profile (a pointwise
+    ratio would blow up where the reference crosses zero), in percent."""
     s_ref, v_ref = runs[ref].columns["s"], runs[ref].columns[q]
+    size = float(np.nanmax(np.abs(v_ref))) or 1.0
     for i, (label, prof) in enumerate(runs.items()):
         if label != ref:
             s = prof.columns["s"]
-            ax.plot(s, prof.columns[q] - np.interp(s, s_ref, v_ref), **style(label, i, len(s)))
+            ax.plot(s, PERCENT * (prof.columns[q] - np.interp(s, s_ref, v_ref)) / size, **style(label, i, len(s)))
     ax.axhline(0.0, color="black", lw=0.6)
     ax.grid(alpha=0.3)
-    ax.set_ylabel("Δ " + UNITS.get(q, q))
-    keep_span(ax, scale)
-    ax.set_title(f"each minus {ref}", fontsize=8, loc="right")
+    ax.set_ylabel(f"Δ{UNITS.get(q, q).split(' ')[0]} / max|ref| (%)")
+    keep_span(ax, PERCENT)
+    ax.set_title(f"each minus {ref}, relative to its largest |{q}|", fontsize=8, loc="right")
 
 
 def _no_offsets(fig) -> None:

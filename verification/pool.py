@@ -25,6 +25,7 @@ import contextlib
 import logging
 import multiprocessing
 import os
+import signal
 import sys
 from concurrent.futures import Executor, Future, ProcessPoolExecutor
 
@@ -89,7 +90,10 @@ LOG_FORMAT = "%(levelname)s %(name)s: %(message)s"
 
 def worker_logging(level: int) -> None:
     """A worker's ``verification`` log: the command's level (``--quiet``,
-    ``--verbose``) and format, on the worker's stderr."""
+    ``--verbose``) and format, on the worker's stderr.  A worker ignores
+    Ctrl-C: the command that owns it stops it (:func:`map_cases`) and says
+    ``interrupted`` once, without a traceback from every worker."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
     handler = logging.StreamHandler()
     handler.setFormatter(logging.Formatter(LOG_FORMAT))
     logger = logging.getLogger("verification")
@@ -131,7 +135,21 @@ def map_cases(function, cases, workers: int | None = None, fresh: bool = False):
     as it and those before it are done, so that the caller reports progress
     as it goes (consume it whole: the pool closes at the end)."""
     with _threads_per_worker(workers), executor(workers, fresh) as pool:
-        yield from pool.map(function, cases)
+        try:
+            yield from pool.map(function, cases)
+        except KeyboardInterrupt:
+            _stop(pool)
+            raise
+
+
+def _stop(pool: Executor) -> None:
+    """Ctrl-C: drop the cases not started and end a local pool's workers now
+    (they ignore SIGINT), so that leaving the pool does not wait for the
+    cases under way.  An MPI pool's workers belong to the launcher."""
+    pool.shutdown(wait=False, cancel_futures=True)
+    if isinstance(pool, ProcessPoolExecutor):
+        for process in list((pool._processes or {}).values()):  # no public handle before Python 3.14
+            process.terminate()
 
 
 def workers_label(workers: int | None) -> str:

@@ -67,18 +67,19 @@ def _summary_table(summaries: list[dict]) -> str:
     return "\n".join(lines + ([""] + ["Warnings:"] + warnings if warnings else [])) + "\n"
 
 
-def agreement_section(scene: Scene, profiles: dict) -> str:
+def agreement_section(scene: Scene, profiles: dict, reference: str | None = None) -> str:
     """``summary.md``'s agreement of every run with the reference of the
-    plots' difference panels (fe at its highest degree, else the first run):
-    :func:`verification.agreement.table` of ``profiles`` (id -> label ->
-    ProfileData), the figures :func:`~verification.agreement.compare` gives."""
+    plots' difference panels (``reference``, else fe at its highest degree,
+    else the first run): :func:`verification.agreement.table` of
+    ``profiles`` (id -> label -> ProfileData), the figures
+    :func:`~verification.agreement.compare` gives."""
     runs = {}
     for pid, by_label in profiles.items():
         for label, prof in by_label.items():
             runs.setdefault(label, {})[pid] = prof
     if len(runs) < 2:
         return ""
-    reference = plots.reference_label(list(runs))
+    reference = reference if reference in runs else plots.reference_label(list(runs))
     return "\n## Agreement with the reference\n\n" + agreement.table(scene, runs, reference).markdown()
 
 
@@ -132,6 +133,34 @@ def _estimates_section(scene, runs: dict) -> str:
             + "\n".join(lines) + "\n")
 
 
+#: The run the Δ panels and the agreement table take as reference unless
+#: ``--reference`` says otherwise: the most accurate of the methods at a
+#: given h on the shipped scenes (docs/benchmarks.md), fe at degree 2.
+DEFAULT_REFERENCE = ("fe", 2)
+
+
+def reference_label(reference: tuple[str, int] | None) -> str | None:
+    """The curve label of a ``(method, degree)`` reference."""
+    return None if reference is None else f"{reference[0]} (p{reference[1]})"
+
+
+def _solve_reference(scene, reference, h, paper, petsc_options, out: Path, profiles: dict, summaries: list) -> None:
+    """Solve the ``reference`` run (method, degree) at the runs' ``h`` when
+    it is not one of them, write its profiles under ``out/reference`` and
+    add them to ``profiles`` and its summary to ``summaries``."""
+    name, degree = reference
+    if name not in methods.DISTRIBUTED and pool.distributed() and pool.launched_rank() > 0:
+        return
+    log.info("scene %s: solving the reference, %s (degree %d)", scene.name, name, degree)
+    solve, on_comm = pool.solver(name) if pool.under_mpi_pool() else (methods.solver(name), {})
+    result = solve(scene, h, degree=degree, paper=paper, **methods.options_for(name, petsc_options=petsc_options),
+                   **on_comm)
+    summaries.append({**result.summary(), "method": f"{name} (reference)"})
+    for prof in sample_profiles(scene, result.fields, result.interface):
+        files.write_profile_csv(out / "reference" / "profiles" / f"{prof.id}.csv", prof)
+        profiles.setdefault(prof.id, {})[reference_label(reference)] = prof
+
+
 def _progress(name: str):
     """A method's progress along the load path, one log line per increment."""
     def report(n: int, total: int, step) -> None:
@@ -143,7 +172,7 @@ def _progress(name: str):
 
 def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, paper=False,
         fields=False, petsc_options=None, dmax=None, nodes_file=None, cell=None, basis=None, allow_large=False,
-        draw=True, estimate=None, argv=()) -> str:
+        draw=True, estimate=None, reference=DEFAULT_REFERENCE, argv=()) -> str:
     """Solve ``scene_name`` (a scene, a built-in name or a TOML file),
     sample the scene's profiles, write everything; return the Markdown
     section (``summary.md``'s text).  Before any work: every option must
@@ -151,7 +180,9 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
     run must fit the machine (:func:`contactcore.budget.check_budget`,
     unless ``allow_large``).  The scene as read is written last (as TOML),
     with ``run.json``; no figure unless ``draw`` (matplotlib is then never
-    imported)."""
+    imported).  Two runs or more are compared with ``reference`` (method,
+    degree; None: fe at its highest degree among them), solved at the same
+    h if it is not one of them."""
     scene = load_scene(scene_name)
     chosen = methods.expand(method_names)
     methods.check_options(chosen, petsc_options=petsc_options or None, dmax=dmax, nodes=nodes_file, cell=cell,
@@ -164,10 +195,15 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
     if (h or scene.h or 0.0) > span / tol.MIN_CELLS_ACROSS and not paper:
         log.warning("h = %g leaves fewer than %d cells across the domain's smallest dimension (%g): the profiles "
                     "are resolved by a few cells only", h or scene.h, tol.MIN_CELLS_ACROSS, span)
+    compared = reference is not None and len(chosen) > 1  # a reference only where methods are compared
     if not (paper or allow_large):
         for name in chosen:
             check_budget(scene, (h or scene.h or smallest_dimension(scene.domain)) / 2 ** ((estimate or 1) - 1),
                          degree, name)
+
+
+        for name, d in [(n, degree) for n in chosen] + ([reference] if compared else []):
+            check_budget(scene, h or scene.h or smallest_dimension(scene.domain), d, name)
     nodes = read_nodes(nodes_file) if nodes_file else None
     out = Path(out)
     profiles, summaries, paths, estimated = {}, [], {}, {}
@@ -211,10 +247,14 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
             if draw:
                 interface.plot_status(out / "plots" / f"status_{name}.png", scene, f"{name} (p{result.degree})",
                                       result.interface)
+    ref = reference_label(reference)
+    if compared and profiles and ref not in {label for by_label in profiles.values() for label in by_label}:
+        _solve_reference(scene, reference, h, paper, petsc_options or None, out, profiles, summaries)
     titles = {p.id: p.title for p in scene.profiles}
     for pid, runs in profiles.items() if draw else ():
-        plots.plot_profile(out / "plots" / f"{pid}.png", titles[pid], runs)
-    text = f"# Scene {scene.name}: {scene.title}\n\n" + _summary_table(summaries) + agreement_section(scene, profiles)
+        plots.plot_profile(out / "plots" / f"{pid}.png", titles[pid], runs, ref)
+    text = (f"# Scene {scene.name}: {scene.title}\n\n" + _summary_table(summaries)
+            + agreement_section(scene, profiles, ref))
     if len(estimated) > 1:
         text += _estimates_section(scene, estimated)
     if paths:
@@ -230,6 +270,7 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
                                         "paper": paper, "estimate": estimate,
                                         "petsc_options": petsc_options or {}, "dmax": dmax,
                                         "basis": basis, "nodes": str(nodes_file) if nodes_file else None,
+                                        "reference": ref,
                                         "cell": next((s["discretisation"]["cell"] for s in summaries
                                                       if "cell" in s["discretisation"]), cell)})
     return text

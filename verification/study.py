@@ -3,9 +3,10 @@
     python -m verification study SCENE --param NAME --values V1 V2 ... [--param NAME2 --values ...]
         [--method ...] [--degree 1] [--h H] [--workers K] --out DIR
 
-Parameters (:data:`PARAMETERS`): the mesh size ``h``; the springs ``kN``,
-``kT``; how the law is enforced, ``enforcement`` (penalty or exact), and an
-exact law's ``stabilisation`` β; the materials ``E_minus``, ``nu_minus``, ``E_plus``, ``nu_plus``;
+Parameters (:data:`PARAMETERS`): the mesh size ``h``; the law's springs
+``kN``, ``kT`` and friction ``mu``; how the law is enforced, ``enforcement``
+(penalty or exact), and an exact law's ``stabilisation`` β; ``load``, a factor on every load;
+the number of ``increments``; the materials ``E_minus``, ``nu_minus``, ``E_plus``, ``nu_plus``;
 and the geometry of Γ — ``radius`` of a circular Γ, ``offset`` of a straight
 Γ along its normal, ``angle`` of a straight Γ (degrees from the x axis,
 turned about the middle of its chord).  Several ``--param`` pairs run their
@@ -20,7 +21,7 @@ or an mpi4py.futures pool), each in a process of its own; they are logged
 in case order as their results arrive; a point that fails
 (bad value, refused solve) is recorded with its message and the study goes
 on.  Writes ``DIR/study.csv``, ``DIR/study.md`` and one plot per parameter,
-the others as series: ``DIR/study.png`` for one parameter,
+the others as series, warned points ringed and failed ones crossed on the x axis: ``DIR/study.png`` for one parameter,
 ``DIR/study_<param>.png`` for several.
 """
 from __future__ import annotations
@@ -96,6 +97,26 @@ def _angle(scene, value: float):
     return {"interface": LineInterface(tuple(mid), (-np.sin(a), np.cos(a)))}
 
 
+def _scaled(load, value: float):
+    """``load`` times ``value``: its traction, pressure, body force or torque."""
+    if hasattr(load, "torque"):
+        return dataclasses.replace(load, torque=value * load.torque)
+    if isinstance(load.value, tuple):
+        return dataclasses.replace(load, value=tuple(value * v for v in load.value))
+    return dataclasses.replace(load, value=value * load.value)
+
+
+def _load(scene, value: float):
+    """Every load times ``value``, its path unchanged."""
+    return {"loads": tuple(_scaled(ld, value) for ld in scene.loads)}
+
+
+def _increments(scene, value: float):
+    if value != int(value) or value < 1:
+        raise SceneError("--param increments", f"must be a whole number >= 1 (got {value:g})")
+    return {"increments": int(value)}
+
+
 #: What each parameter changes in a scene: name -> (description, changes(scene, value) -> dict).
 PARAMETERS = {
     "h": ("cell size or node spacing (m)", None),
@@ -103,6 +124,9 @@ PARAMETERS = {
     "kT": ("tangential spring k_T (Pa/m)", lambda s, v: _law(s, "kT", v)),
     "enforcement": ("how the law is enforced: penalty (its springs) or exact (Nitsche)", _enforcement),
     "stabilisation": ("Nitsche's β of an exact law (× the method's E/h)", lambda s, v: _law(s, "stabilisation", v)),
+    "mu": ("friction coefficient μ of a coulomb law", lambda s, v: _law(s, "mu", v)),
+    "load": ("factor on every load", _load),
+    "increments": ("load increments", _increments),
     "E_minus": ("Young's modulus of the − body (Pa)", lambda s, v: _material(s, "minus", "E", v)),
     "nu_minus": ("Poisson's ratio of the − body", lambda s, v: _material(s, "minus", "nu", v)),
     "E_plus": ("Young's modulus of the + body (Pa)", lambda s, v: _material(s, "plus", "E", v)),
@@ -248,10 +272,36 @@ def markdown(scene_name: str, names: list[str], rows: list[dict]) -> str:
             + (f"\n{len(failed)} of {len(rows)} points failed; the study went on.\n" if failed else ""))
 
 
+#: How a study plot marks a point that solved with warnings, and one that failed (drawn on the x axis).
+WARNED_MARK = {"marker": "o", "ms": 11, "mfc": "none", "mec": "tab:red", "linestyle": "none"}
+FAILED_MARK = {"marker": "X", "ms": 9, "linestyle": "none", "clip_on": False}
+
+
+def _series(ax, column: str, q: str, factor: float, rows: list[dict], label: str):
+    """One series' solved points (``max_q`` / ``factor`` against ``column``);
+    its colour (a series may have no solved point)."""
+    pts = [(r[column], r[f"max_{q}"] / factor) for r in rows if r["status"] != "failed"]
+    return ax.plot(*(zip(*pts) if pts else ([], [])), "o-", label=label)[0].get_color()
+
+
+def _mark(ax, column: str, q: str, factor: float, rows: list[dict], colour) -> None:
+    """Ring the warned points; put a cross on the x axis at each failed one
+    (it has no value to show), in the series' colour.  Each mark is in the
+    legend once per panel."""
+    seen = {h.get_label() for h in ax.get_lines()}
+    warned = [(r[column], r[f"max_{q}"] / factor) for r in rows if r["status"] == "warned"]
+    failed = [r[column] for r in rows if r["status"] == "failed"]
+    if warned:
+        ax.plot(*zip(*warned), **WARNED_MARK, label="_" if "warned" in seen else "warned")
+    if failed:
+        ax.plot(failed, [0.0] * len(failed), transform=ax.get_xaxis_transform(), color=colour, **FAILED_MARK,
+                label="_" if "failed" in seen else "failed")
+
+
 def _plot(path: Path, scene_name: str, param: str, column: str, others: list[str], rows: list[dict]) -> None:
     """The response on Γ against ``param`` (the table's ``column``); one
     series per method and values of the ``others`` columns."""
-    from .plots import UNITS, pyplot, save
+    from .plots import axis_unit, pyplot, save
 
     fig, axes = pyplot().subplots(2, 2, figsize=(9, 6.5), squeeze=False)
     values = [r[column] for r in rows]
@@ -259,12 +309,13 @@ def _plot(path: Path, scene_name: str, param: str, column: str, others: list[str
     logx = numbers and min(values) > 0 and max(values) / min(values) > 100
     series = dict.fromkeys((r["method"], *(r[o] for o in others)) for r in rows)
     for ax, q in zip(axes.ravel(), ("gN", "gT", "tN", "tT")):
+        factor, unit = axis_unit(q, max((abs(r[f"max_{q}"]) for r in rows if r["status"] != "failed"), default=0.0))
         for key in series:
-            pts = [(r[column], r[f"max_{q}"]) for r in rows
-                   if (r["method"], *(r[o] for o in others)) == key and r["status"] != "failed"]
-            if pts:
-                ax.plot(*zip(*pts), "o-", label=", ".join([key[0], *(f"{o} = {_shown(v)}" for o, v in zip(others, key[1:]))]))
-        ax.set_ylabel("max |" + UNITS[q].split(" ")[0] + "| " + UNITS[q].split(" ")[1])
+            chosen = [r for r in rows if (r["method"], *(r[o] for o in others)) == key]
+            line = _series(ax, column, q, factor, chosen,
+                           ", ".join([key[0], *(f"{o} = {_shown(v)}" for o, v in zip(others, key[1:]))]))
+            _mark(ax, column, q, factor, chosen, line)
+        ax.set_ylabel("max |" + unit.split(" ")[0] + "| " + unit.split(" ")[1])
         ax.set_xlabel(param)
         if logx:
             ax.set_xscale("log")

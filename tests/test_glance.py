@@ -1,0 +1,217 @@
+"""Outputs a user reads at a glance: Ctrl-C, error messages, refusals, help
+lines, units."""
+from __future__ import annotations
+
+import argparse
+import csv
+import json
+import os
+import re
+import signal
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+import tolerances as tol
+
+from contactcore import SolverError, health, load_scene, sample_profiles, scene_from_dict
+from contactcore.laws import CoulombLaw
+from verification import __main__ as verification_main
+from verification import files, methods, plots, study
+
+ROOT = Path(__file__).resolve().parents[1]
+#: Long enough to be interrupted mid-solve: several seconds at h = 0.02, degree 2.
+LONG_RUN = ["run", "A", "--method", "all", "--degree", "2", "--h", "0.02"]
+#: A study on two local workers, interrupted while they solve.
+POOLED_STUDY = ["study", "A", "--param", "kN", "--values", "1e9", "1e10", "1e11", "1e12", "--method", "fe",
+                "--degree", "2", "--h", "0.02", "--workers", "2"]
+
+
+def _interrupt(args: list[str], out: Path) -> subprocess.CompletedProcess:
+    """Start ``python -m verification ARGS --out OUT`` in a process group of
+    its own, wait for its first progress line, send SIGINT to the whole
+    group (as a terminal's Ctrl-C does: pool workers too), collect its end."""
+    proc = subprocess.Popen([sys.executable, "-m", "verification", *args, "--out", str(out)], cwd=ROOT,
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True)
+    seen = []
+    for line in proc.stderr:
+        seen.append(line)
+        if line.startswith("INFO verification:"):
+            break
+    os.killpg(proc.pid, signal.SIGINT)
+    stdout, rest = proc.communicate(timeout=120)
+    return subprocess.CompletedProcess(proc.args, proc.returncode, stdout, "".join(seen) + rest)
+
+
+@pytest.mark.parametrize("args", [LONG_RUN, POOLED_STUDY], ids=["run", "study-workers"])
+def test_ctrl_c_ends_with_one_line_and_exit_130(args, tmp_path):
+    done = _interrupt(args, tmp_path / "out")
+    assert done.returncode == 130, done.stderr
+    assert "Traceback" not in done.stderr, done.stderr
+    assert done.stderr.rstrip().splitlines()[-1] == "interrupted"
+    assert not (tmp_path / "out").exists()  # an interrupted run leaves no result folder
+
+
+#: The most lines a refusal may take on the user's screen.
+ERROR_LINES = 2
+
+
+def _refusal(scene_dict, edit, h) -> SolverError:
+    data = scene_dict("A")
+    edit(data)
+    with pytest.raises(SolverError) as refused:
+        methods.solver("fe")(scene_from_dict(data), h)
+    return refused.value
+
+
+def _coulomb(mu):
+    def edit(data):
+        data["interface"]["law"] = {"type": "coulomb", "kN": 1e10, "kT": 1e8, "mu": mu}
+    return edit
+
+
+def test_no_equilibrium_leads_with_the_friction_check(scene_dict):
+    """Scene A's top traction (2.5e4, −1e5) asks the + block, held by Γ
+    alone, for shear/normal = 0.25 on Γ; μ = 0.05 cannot carry it: the
+    first line says so, the residual history of every cut-back is kept in
+    ``details`` and not shown."""
+    error = _refusal(scene_dict, _coulomb(0.05), 0.1)
+    lines = str(error).splitlines()
+    assert len(lines) <= ERROR_LINES
+    assert re.search(r"^scene A: increment 1 of 20: on Γ the loads ask for shear/normal = 0\.25 of body \+, "
+                     r"above μ = 0\.05", lines[0]), lines[0]
+    assert len(error.details.splitlines()) > len(lines) and "relative residual" in error.details
+
+
+def test_friction_that_carries_the_load_is_not_blamed():
+    """μ = 0.3 carries 0.25 of scene A: no friction check fails."""
+    scene = load_scene("A").with_changes(law=CoulombLaw(1e10, 1e8, 0.3))
+    assert health.friction_demand(scene, 1.0) == ""
+    assert "shear/normal = 0.25" in health.friction_demand(scene.with_changes(law=CoulombLaw(1e10, 1e8, 0.2)), 1.0)
+
+
+def test_a_nearly_incompressible_material_is_named_first(scene_dict):
+    """Scene A in plane strain with ν = 0.4999999 (λ/μ = 2ν/(1 − 2ν) = 5e6)
+    loses digits in every solve: the refusal names the material first, not
+    the springs or a rigid mode."""
+    def edit(data):
+        data["plane"] = "strain"
+        for m in data["materials"].values():
+            m["nu"] = 0.4999999
+    lines = str(_refusal(scene_dict, edit, None)).splitlines()
+    assert len(lines) <= ERROR_LINES
+    assert re.search(r"^scene A: materials\.minus\.nu and materials\.plus\.nu = 0\.4999999 in plane strain: "
+                     r"λ/μ = 5\.0e\+06, nearly incompressible", lines[0]), lines[0]
+    assert "rigid-body mode" not in str(lines)
+
+
+def _subparsers(parser: argparse.ArgumentParser):
+    for action in parser._actions:  # argparse keeps its subcommands on the subparsers action only
+        if isinstance(action, argparse._SubParsersAction):
+            yield from action.choices.items()
+
+
+def test_every_cli_option_has_a_help_line():
+    missing = [f"{name} {action.dest}" for name, sub in _subparsers(verification_main._parser())
+               for action in sub._actions if not action.help]
+    assert not missing, missing
+
+
+@pytest.mark.parametrize("scale, unit", [(500.0, "Pa"), (1.75e5, "kPa"), (2e6, "MPa"), (3e9, "GPa")])
+def test_stress_axes_take_the_unit_that_fits(scale, unit):
+    factor, label = plots.axis_unit("syy", scale)
+    assert label == f"σyy ({unit})" and 1 <= scale / factor < 1000
+    assert plots.axis_unit("gN", scale) == (1.0, "g_N (m)")
+
+
+def test_a_run_folder_names_every_csv_columns_unit(tmp_path):
+    """Scene A's stresses (≈ 1e5 Pa) are drawn in kPa; ``units.json``
+    gives each CSV column's unit while the CSV headers stay bare names."""
+    out = tmp_path / "run"
+    assert verification_main.main(["run", "A", "--method", "fe", "--h", "0.2", "--no-plots", "-q",
+                                   "--out", str(out)]) == 0
+    units = json.loads((out / files.UNITS_FILE).read_text())
+    assert units["fe/profiles/A2.csv"] == {"s": "m or rad", "x": "m", "y": "m", "syy": "Pa"}
+    assert units["fe/profiles/A5.csv"]["gN"] == "m"
+    assert (out / "fe/profiles/A2.csv").read_text().splitlines()[0] == "s,x,y,syy"
+
+
+def test_scene_a_stresses_are_drawn_in_kpa():
+    """Scene A's σyy on Γ is about −1e5 Pa (its top traction): kPa."""
+    scene = load_scene("A")
+    result = methods.solver("fe")(scene, 0.2)
+    a2 = next(p for p in sample_profiles(scene, result.fields, result.interface) if p.id == "A2")
+    fig = plots.profile_figure("σyy", {"fe (p1)": a2, "fe (p2)": a2})
+    assert [fig.axes[0].get_ylabel(), fig.axes[1].get_ylabel()] == ["σyy (kPa)", "Δσyy / max|ref| (%)"]
+    plots.pyplot().close(fig)
+
+
+def _study(tmp_path, *args) -> list[dict]:
+    out = tmp_path / "study"
+    assert verification_main.main(["study", *args, "--method", "fe", "--h", "0.2", "-q", "--out", str(out)]) == 0
+    with open(out / "study.csv") as fh:
+        return list(csv.DictReader(fh))
+
+
+def test_study_varies_the_load(tmp_path):
+    """A linear law: twice the load, twice the mean tractions on Γ (scene A's
+    top traction (2.5e4, −1e5) averaged over Γ, to the solve's round-off)."""
+    one, two = _study(tmp_path, "A", "--param", "load", "--values", "1", "2")
+    for q in ("mean_tN", "mean_tT"):
+        assert float(two[q]) == pytest.approx(2 * float(one[q]), rel=tol.PATCH_ROUNDOFF)  # a linear solve, scaled: round-off alone
+
+
+def test_study_varies_mu_and_the_increments(tmp_path):
+    """C-coulomb (μ = 0.2): μ reaches the law; increments must be whole, a
+    fraction is a failed point with its message, the study goes on."""
+    rows = _study(tmp_path, "C-coulomb", "--param", "mu", "--values", "0.2", "0.5", "--param", "increments",
+                  "--values", "2", "2.5")
+    assert [(float(r["mu"]), float(r["increments"])) for r in rows] == [(0.2, 2), (0.2, 2.5), (0.5, 2), (0.5, 2.5)]
+    assert [r["status"] != "failed" for r in rows] == [True, False, True, False]
+    assert "--param increments: must be a whole number" in rows[1]["message"]
+
+
+def test_study_plots_mark_failed_and_warned_points():
+    """A ring on every warned point, a cross on the x axis at every failed one."""
+    rows = [{"value": v, "method": "fe", "status": st, **dict.fromkeys(study.OUTPUTS, 1.0 + v)}
+            for v, st in ((1.0, "ok"), (2.0, "warned"), (3.0, "failed"))]
+    fig = plots.pyplot().figure()
+    ax = fig.add_subplot()
+    colour = study._series(ax, "value", "tN", 1.0, rows, "fe")
+    study._mark(ax, "value", "tN", 1.0, rows, colour)
+    lines = {line.get_label(): line for line in ax.get_lines()}
+    assert list(lines["fe"].get_xdata()) == [1.0, 2.0]
+    assert list(lines["warned"].get_xdata()) == [2.0] and list(lines["failed"].get_xdata()) == [3.0]
+    assert lines["failed"].get_transform() == ax.get_xaxis_transform()
+    plots.pyplot().close(fig)
+
+
+def _run(tmp_path, *args) -> Path:
+    out = tmp_path / "run"
+    assert verification_main.main(["run", "A", "--method", "xfem", "efgm", "--h", "0.2", "--no-plots", "-q",
+                                   *args, "--out", str(out)]) == 0
+    return out
+
+
+def test_methods_are_compared_with_fe_p2_by_default(tmp_path):
+    """Two degree-1 methods: fe at degree 2 is solved at the same h as the
+    reference, listed in the summary, its profiles under reference/."""
+    out = _run(tmp_path)
+    summary = (out / "summary.md").read_text()
+    assert "| fe (reference) | 2 |" in summary and "Against fe (p2);" in summary
+    assert json.loads((out / "run.json").read_text())["reference"] == "fe (p2)"
+    assert (out / "reference" / "profiles" / "A1.csv").exists()
+
+
+def test_the_reference_is_chosen_with_reference(tmp_path):
+    """``--reference efgm:1``, one of the runs: nothing more is solved."""
+    out = _run(tmp_path, "--reference", "efgm:1")
+    assert "Against efgm (p1);" in (out / "summary.md").read_text()
+    assert not (out / "reference").exists()
+
+
+def test_a_bad_reference_is_refused_by_the_parser(capsys):
+    with pytest.raises(SystemExit) as ended:
+        verification_main.main(["run", "A", "--reference", "fe:3", "--out", "unused"])
+    assert ended.value.code == 2 and "expected METHOD:DEGREE" in capsys.readouterr().err
