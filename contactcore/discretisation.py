@@ -28,6 +28,7 @@ from __future__ import annotations
 
 import dataclasses
 import hashlib
+import importlib
 import pickle
 import time
 from collections import OrderedDict
@@ -73,18 +74,32 @@ class Built:
 
 
 class Discretisation:
-    """Base of the method option classes (module doc).
+    """Base of the method option classes (module doc), and the one place
+    each method's facts are stated, as class attributes:
 
-    Subclasses are frozen dataclasses and set ``name`` (the method's name
-    in results and on the command line), ``paper_grid`` (the key of the
-    paper's grid in ``scene.paper``) and ``level_set`` (whether a general
-    level-set Γ can be solved); they validate their options in
-    ``__post_init__`` and implement :meth:`build`.
+    * ``name``: the method's name in results and on the command line;
+    * ``module``: the module that implements it, imported by :meth:`build`
+      only (so the options import no numerics): its
+      ``build(scene, options, resolution, timings)`` and ``solve``;
+    * ``paper_grid``: the key of the paper's grid in ``scene.paper``;
+    * ``level_set``: whether a general level-set Γ can be solved;
+    * ``field_output``: what its field files hold, ``"mesh"`` (each
+      body's mesh with u and σ, and Γ) or ``"interface"`` (Γ only);
+    * ``distributed``: whether one solve spreads over mpirun's ranks;
+    * ``needs_mpi``: whether it starts MPI even outside a launcher (a
+      driver hands a method that does not a communicator only under one).
+
+    Subclasses are frozen dataclasses; they validate their options in
+    ``__post_init__``.
     """
 
     name: ClassVar[str]
+    module: ClassVar[str]
     paper_grid: ClassVar[str]
     level_set: ClassVar[bool] = False
+    field_output: ClassVar[str] = "interface"
+    distributed: ClassVar[bool] = False
+    needs_mpi: ClassVar[bool] = True
     degree: int
 
     def check(self, scene) -> None:
@@ -99,7 +114,8 @@ class Discretisation:
         return resolution(scene, h, paper, self.paper_grid)
 
     def build(self, scene, resolution: Resolution, timings: Timings) -> Built:
-        raise NotImplementedError
+        """The method's system of ``scene`` (its :attr:`module`'s ``build``)."""
+        return importlib.import_module(self.module).build(scene, self, resolution, timings)
 
     @classmethod
     def label(cls, result: Result) -> str:

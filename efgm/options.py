@@ -1,7 +1,7 @@
 """EFGM's typed options (:mod:`contactcore.discretisation`).
 
 A plain dataclass: importing it imports no numerics; ``build`` imports
-:mod:`efgm.method`.
+:mod:`efgm.method` (:attr:`~contactcore.discretisation.Discretisation.module`).
 """
 from __future__ import annotations
 
@@ -43,7 +43,12 @@ class EFGM(Discretisation):
     comm: object = None
 
     name: ClassVar[str] = "efgm"
+    module: ClassVar[str] = "efgm.method"
     paper_grid: ClassVar[str] = "efgm_nodes"
+    # its cells, Γ's points and rows split in fixed contiguous ranges
+    # (:mod:`efgm.distributed`); one process without MPI outside mpirun
+    distributed: ClassVar[bool] = True
+    needs_mpi: ClassVar[bool] = False
 
     def __post_init__(self):
         if self.basis is not None:
@@ -58,10 +63,6 @@ class EFGM(Discretisation):
         if self.nodes is not None:
             return Resolution(None)
         return super().resolution(scene, h, paper)
-
-    def build(self, scene, resolution, timings):
-        from . import method
-        return method.build(scene, self, resolution, timings)
 
     @classmethod
     def label(cls, result) -> str:

@@ -477,10 +477,8 @@ class MLS:
             def moved(weights):  # Σ_I w_I p̂_I p̂_Iᵀ, (G, m, m)
                 return self._moments(weights[:, 0], pI_m)
         else:
-            # every operand of matmul C-contiguous: on the strided views these
-            # products were up to 20x slower (numpy's loop instead of BLAS;
-            # measured on quadratic cells, 32768 6 × 6 products: 26 ms
-            # against 1.2 ms)
+            # every operand of matmul C-contiguous: numpy loops on strided views instead of
+            # calling BLAS (32768 quadratic 6 × 6 products: 26 ms against 1.2 ms)
             upper = np.triu_indices(m)
             pp = np.ascontiguousarray(pI[..., upper[0]] * pI[..., upper[1]])  # the p̂_i p̂_j, (G, U, m(m+1)/2)
             M = _shift((points - centre[:, None, :]) / s_g[:, None, None], s_g[:, None] / s, self.degree)

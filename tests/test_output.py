@@ -111,8 +111,9 @@ def test_body_meshes_through_wrappers_are_in_the_users_frame(coulomb_toml):
 
 
 def test_cli_fields_for_a_nonlinear_law(tmp_path, coulomb_toml):
-    """The issue's traceback: ``--xdmf`` (alias of ``--fields``) on Coulomb."""
-    assert main(["run", str(coulomb_toml), "--method", "fe", "efgm", "--h", str(H), "--xdmf",
+    """``--fields`` on a Coulomb law: each body's mesh where the method has
+    one, Γ at every step for every method."""
+    assert main(["run", str(coulomb_toml), "--method", "fe", "efgm", "--h", str(H), "--fields",
                  "--out", str(tmp_path)]) == 0
     for method, bodies in (("fe", True), ("efgm", False)):
         folder = tmp_path / method / "fields"

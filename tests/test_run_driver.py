@@ -144,3 +144,17 @@ def test_a_scene_built_in_python_goes_through_run(tmp_path):
     assert load_scene(tmp_path / "out" / "scene.toml") == scene
     assert text == (tmp_path / "out" / "summary.md").read_text()
     assert json.loads((tmp_path / "out" / "run.json").read_text())["scene"] == "A-python"
+
+
+def test_a_method_that_does_not_spread_over_the_ranks_is_refused_under_mpirun(monkeypatch):
+    """Each method states whether its solve spreads over mpirun's ranks
+    (``Discretisation.distributed``); one that does not would be solved
+    whole on every rank, so a run under mpirun refuses it before any work."""
+    from contactcore import ContactError
+    from verification import methods
+    from xdolfinx.options import XFEM
+    methods.check_launch(["fe", "xfem", "efgm"], distributed=True)
+    monkeypatch.setattr(XFEM, "distributed", False)
+    methods.check_launch(["fe", "xfem"], distributed=False)
+    with pytest.raises(ContactError, match="^mpirun: xfem does not spread over mpirun's ranks"):
+        methods.check_launch(["fe", "xfem"], distributed=True)

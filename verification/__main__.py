@@ -30,9 +30,13 @@ import math
 import os
 import sys
 import tempfile
+from dataclasses import dataclass
 from pathlib import Path
+from typing import Callable
 
 from contactcore import ContactError, load_scene
+
+from xdolfinx.options import XFEM_CELLS
 
 from . import files, methods
 from .pool import LOG_FORMAT
@@ -58,20 +62,137 @@ def _reference(text: str) -> tuple[str, int] | None:
     return name, int(degree)
 
 
-def _methods(p, **kw) -> None:
-    p.add_argument("--method", nargs="+", default=["all"], choices=[*methods.METHODS, "all"], **kw)
+@dataclass(frozen=True)
+class Arg:
+    """One argument of a command: its flags (or name) and argparse's keywords."""
+
+    flags: tuple[str, ...]
+    options: dict
 
 
-def _workers(p, default=None) -> None:
-    p.add_argument("--workers", type=int, default=default, metavar="K",
-                   help=f"run the independent cases on K processes (default {default or 1})")
+def arg(*flags: str, **options) -> Arg:
+    return Arg(flags, options)
 
 
-def _parser() -> argparse.ArgumentParser:
+@dataclass(frozen=True)
+class Command:
+    """One command of the CLI: its help line, its arguments, what it runs
+    (``run(args, argv)``), and how it meets mpirun's ranks (``ranks``): it
+    spreads its solves over them (``"spread"``), spreads its cases over a
+    pool instead (``"pool"``: refused under mpirun), or launches mpirun
+    itself (``"launcher"``: refused under mpirun)."""
+
+    help: str
+    args: tuple[Arg, ...]
+    run: Callable[[argparse.Namespace, list], None]
+    ranks: str = "pool"
+
+
+#: What each ``Command.ranks`` says when the command is started under mpirun with several ranks.
+UNDER_MPIRUN = {
+    "pool": "mpirun: '{}' spreads its cases over a pool, not over mpirun's ranks: run it with --workers K, or "
+            "under mpiexec -n K python -m mpi4py.futures -m verification",
+    "launcher": "mpirun: '{}' launches mpirun itself, once per rank count: run it without mpirun",
+}
+
+
+def _commands() -> dict[str, Command]:
+    """The command table: every command, its arguments and its runner
+    (declarative; the choices that need a driver's tables import it here,
+    when the parser is built)."""
     from .convergence import CASES
     from .study import PARAMETERS
     from .sweeps import sweeps
 
+    method = arg("--method", nargs="+", default=["all"], choices=[*methods.METHODS, "all"],
+                 help="the methods to run (default: all)")
+    degree = arg("--degree", type=int, default=1, choices=(1, 2), help="polynomial degree (default 1)")
+    degrees = arg("--degree", nargs="+", type=int, default=[1], choices=(1, 2), help="polynomial degrees (default 1)")
+    ladder = arg("--h", nargs="+", type=float, required=True, help="the resolutions of the ladder, coarse to fine")
+    cell = arg("--cell", choices=XFEM_CELLS, help="XFEM background cells (default quad)")
+    scenes = arg("--scene", nargs="+", default=["A", "B", "C"], choices=["A", "B", "C"],
+                 help="the paper's scenes (default: A B C)")
+    out = arg("--out", type=Path, required=True,
+              help="result folder (built aside, put in place only if the run succeeds)")
+
+    def workers(default=None) -> Arg:
+        return arg("--workers", type=int, default=default, metavar="K",
+                   help=f"run the independent cases on K processes (default {default or 1})")
+
+    return {
+        "run": Command("solve one scene with one or more methods", (
+            arg("scene", help="built-in scene name (A, B, C, ...) or a scene TOML file"), method, degree,
+            arg("--h", type=float, help="resolution for every method (default: the scene's h)"),
+            arg("--paper", action="store_true", help="use the paper's discretisations"),
+            arg("--fields", action="store_true",
+                help="also write VTU field files (per body; Γ per step, PVD) for ParaView and meshio"),
+            arg("--petsc-option", type=_petsc_option, action="append", default=[], metavar="KEY=VALUE",
+                help="override a PETSc option of the linear solves of fe and xfem "
+                     "(e.g. pc_factor_mat_solver_type=superlu); repeat for several"),
+            cell, arg("--dmax", type=float, help="EFGM support dilation (default: by basis degree)"),
+            arg("--basis", choices=("linear", "quadratic"),
+                help="EFGM's MLS basis (default: linear for --degree 1, quadratic for --degree 2)"),
+            arg("--nodes", type=Path, help="EFGM node set: a text file of x y rows (default: a grid)"),
+            arg("--no-plots", dest="draw", action="store_false", help="write no figures"),
+            arg("--allow-large", action="store_true",
+                help="run even when the estimated memory exceeds what this machine has"),
+            arg("--estimate", type=int, nargs="?", const=2, choices=(2, 3), metavar="{2,3}",
+                help="also solve at h/2 (3: and h/4), write the finest run with its estimated errors"),
+            arg("--reference", type=_reference, default="fe:2", metavar="METHOD:DEGREE",
+                help="the run the Δ panels and summary.md's agreement table compare with, solved at the same "
+                     "h if not among the methods (default fe:2; 'none': fe at its highest degree run)"),
+            out), _run, "spread"),
+        "paper": Command("the paper's figures and an agreement table against a refined reference", (
+            scenes, arg("--ref-h", type=float, help="cell size of the P2 reference (default: a quarter of the "
+                                                    "scene's h)"), out, workers()), _paper),
+        "closed": Command("closed-form cases on refinement ladders, with observed rates", (
+            arg("--case", nargs="+", default=list(CASES), choices=list(CASES), help="the cases (default: all)"),
+            method, arg("--degree", nargs="+", type=int, default=[1, 2], choices=(1, 2),
+                        help="polynomial degrees (default 1 2)"), out), _closed),
+        "efficiency": Command("error against run time, against a refined reference or estimated without one", (
+            arg("scene", help="built-in scene name or a scene TOML file"), method, degrees, ladder,
+            arg("--ref-h", type=float,
+                help="element size of the P2 reference (default: none, the errors are estimated)"),
+            arg("--exclude", type=float, help="distance from corners and Γ's ends left out (default 0.1 L)"),
+            out, workers(os.cpu_count())), _efficiency),
+        "sweeps": Command("stiff and extreme cases: error, condition and outcome", (
+            arg("--sweep", nargs="+", choices=[s.name for s in sweeps()], help="the sweeps (default: all)"),
+            method, degree, out, workers()), _sweeps),
+        "study": Command("inputs varied over their product (geometry through gmsh, h, springs, materials)", (
+            arg("scene", help="built-in scene name or a scene TOML file"),
+            arg("--param", required=True, choices=list(PARAMETERS), action="append",
+                help="repeat --param NAME --values ... for a Cartesian product"),
+            arg("--values", nargs="+", type=_number_or_word, required=True, action="append",
+                help="the values of the --param just before"),
+            method, degree, arg("--h", type=float, help="resolution (default: the scene's h)"), cell, out,
+            workers()), _study),
+        "report": Command("every verification, gathered into DIR/report.md", (
+            arg("out", type=Path, help="result folder"),
+            arg("--quick", action="store_true", help="short ladders: a smoke test of the whole chain"),
+            workers()), _report),
+        "benchmark": Command("error against run time beside GetFEM's level-set XFEM", (
+            scenes, out, workers(os.cpu_count())), _benchmark),
+        "timing": Command("wall time against DOFs on a ladder of resolutions", (
+            arg("scene", nargs="+", help="one or more scenes, measured in one run (e.g. C C-coulomb)"),
+            method, degrees, ladder, out), _timing, "spread"),
+        "shapes": Command("EFGM's shape functions with gradients: points per second", (
+            arg("--basis", nargs="+", default=["linear", "quadratic"], choices=["linear", "quadratic"],
+                help="the MLS bases (default: both)"),
+            arg("--grid", type=int, default=101, help="nodes per side of the unit square (default 101)"),
+            arg("--points", type=int, default=200_000, help="random points evaluated (default 200000)"),
+            arg("--repeats", type=int, default=5, help="timed evaluations; the median is reported (default 5)"),
+            out), _shapes, "spread"),
+        "scaling": Command("strong scaling: the timing ladder under mpirun on each rank count, one BLAS thread "
+                           "per rank", (
+            arg("scene", help="built-in scene name or a scene TOML file"), method, degrees, ladder,
+            arg("--ranks", nargs="+", type=int, default=[1, 2], help="rank counts (default 1 2)"), out),
+            _scaling, "launcher"),
+    }
+
+
+def _parser(commands: dict[str, Command] | None = None) -> argparse.ArgumentParser:
+    """The argparse parser of the command table (:func:`_commands` by default)."""
+    commands = _commands() if commands is None else commands
     parser = argparse.ArgumentParser(prog="python -m verification")
     common = argparse.ArgumentParser(add_help=False)
     talk = common.add_mutually_exclusive_group()
@@ -80,119 +201,82 @@ def _parser() -> argparse.ArgumentParser:
     talk.add_argument("-v", "--verbose", action="store_const", dest="verbosity", const=1,
                       help="also the debug messages of this tool")
     sub = parser.add_subparsers(dest="command", required=True)
-    run = sub.add_parser("run", parents=[common], help="solve one scene with one or more methods")
-    run.add_argument("scene", help="built-in scene name (A, B, C) or a scene TOML file")
-    _methods(run)
-    run.add_argument("--degree", type=int, default=1, choices=(1, 2))
-    run.add_argument("--h", type=float, help="resolution for every method (default: the scene's h)")
-    run.add_argument("--paper", action="store_true", help="use the paper's discretisations")
-    run.add_argument("--fields", "--xdmf", dest="fields", action="store_true",
-                     help="also write VTU field files (per body; Γ per step, PVD) for ParaView and meshio")
-    run.add_argument("--petsc-option", type=_petsc_option, action="append", default=[], metavar="KEY=VALUE",
-                     help="override a PETSc option of the fe solve (e.g. pc_factor_mat_solver_type=superlu)")
-    run.add_argument("--cell", choices=("quad", "triangle", "gmsh"), help="XFEM background cells (default quad)")
-    run.add_argument("--dmax", type=float, help="EFGM support dilation (default: by basis degree)")
-    run.add_argument("--basis", choices=("linear", "quadratic"),
-                     help="EFGM's MLS basis (default: linear for --degree 1, quadratic for --degree 2)")
-    run.add_argument("--nodes", type=Path, help="EFGM node set: a text file of x y rows (default: a grid)")
-    run.add_argument("--no-plots", dest="draw", action="store_false", help="write no figures")
-    run.add_argument("--allow-large", action="store_true",
-                     help="run even when the estimated memory exceeds what this machine has")
-    run.add_argument("--estimate", type=int, nargs="?", const=2, choices=(2, 3), metavar="{2,3}",
-                     help="also solve at h/2 (3: and h/4), write the finest run with its estimated errors")
-    run.add_argument("--reference", type=_reference, default="fe:2", metavar="METHOD:DEGREE",
-                     help="the run the Δ panels and summary.md's agreement table compare with, solved at the same "
-                          "h if not among the methods (default fe:2; 'none': fe at its highest degree run)")
-    run.add_argument("--out", type=Path, required=True, help="result folder")
-    pap = sub.add_parser("paper", parents=[common], help="the paper's figures and an agreement table against a refined reference")
-    pap.add_argument("--scene", nargs="+", default=["A", "B", "C"], choices=["A", "B", "C"])
-    pap.add_argument("--ref-h", type=float, help="cell size of the P2 reference (default: a quarter of the scene's h)")
-    pap.add_argument("--out", type=Path, required=True)
-    _workers(pap)
-    clo = sub.add_parser("closed", parents=[common], help="closed-form cases on refinement ladders, with observed rates")
-    clo.add_argument("--case", nargs="+", default=list(CASES), choices=list(CASES))
-    _methods(clo)
-    clo.add_argument("--degree", nargs="+", type=int, default=[1, 2], choices=(1, 2))
-    clo.add_argument("--out", type=Path, required=True)
-    eff = sub.add_parser("efficiency", parents=[common],
-                         help="error against run time, against a refined reference or estimated without one")
-    eff.add_argument("scene")
-    _methods(eff)
-    eff.add_argument("--degree", nargs="+", type=int, default=[1], choices=(1, 2))
-    eff.add_argument("--h", nargs="+", type=float, required=True)
-    eff.add_argument("--ref-h", type=float,
-                     help="element size of the P2 reference (default: none, the errors are estimated)")
-    eff.add_argument("--exclude", type=float, help="distance from corners and Γ's ends left out (default 0.1 L)")
-    eff.add_argument("--out", type=Path, required=True)
-    _workers(eff, default=os.cpu_count())
-    swp = sub.add_parser("sweeps", parents=[common], help="stiff and extreme cases: error, condition and outcome")
-    swp.add_argument("--sweep", nargs="+", choices=[s.name for s in sweeps()], help="default: all")
-    _methods(swp)
-    swp.add_argument("--degree", type=int, default=1, choices=(1, 2))
-    swp.add_argument("--out", type=Path, required=True)
-    _workers(swp)
-    stu = sub.add_parser("study", parents=[common],
-                         help="inputs varied over their product (geometry through gmsh, h, springs, materials)")
-    stu.add_argument("scene")
-    stu.add_argument("--param", required=True, choices=list(PARAMETERS), action="append",
-                     help="repeat --param NAME --values ... for a Cartesian product")
-    stu.add_argument("--values", nargs="+", type=_number_or_word, required=True, action="append")
-    _methods(stu)
-    stu.add_argument("--degree", type=int, default=1, choices=(1, 2))
-    stu.add_argument("--h", type=float, help="resolution (default: the scene's h)")
-    stu.add_argument("--cell", choices=("quad", "triangle", "gmsh"), help="XFEM background cells (default quad)")
-    stu.add_argument("--out", type=Path, required=True)
-    _workers(stu)
-    rep = sub.add_parser("report", parents=[common], help="every verification, gathered into DIR/report.md")
-    rep.add_argument("out", type=Path)
-    rep.add_argument("--quick", action="store_true", help="short ladders: a smoke test of the whole chain")
-    _workers(rep)
-    ben = sub.add_parser("benchmark", parents=[common], help="error against run time beside GetFEM's level-set XFEM")
-    ben.add_argument("--scene", nargs="+", default=["A", "B", "C"], choices=["A", "B", "C"])
-    ben.add_argument("--out", type=Path, required=True)
-    _workers(ben, default=os.cpu_count())
-    tim = sub.add_parser("timing", parents=[common], help="wall time against DOFs on a ladder of resolutions")
-    tim.add_argument("scene", nargs="+", help="one or more scenes, measured in one run (e.g. C C-coulomb)")
-    _methods(tim)
-    tim.add_argument("--degree", nargs="+", type=int, default=[1], choices=(1, 2))
-    tim.add_argument("--h", nargs="+", type=float, required=True)
-    tim.add_argument("--out", type=Path, required=True)
-    shp = sub.add_parser("shapes", parents=[common], help="EFGM's shape functions with gradients: points per second")
-    shp.add_argument("--basis", nargs="+", default=["linear", "quadratic"], choices=["linear", "quadratic"])
-    shp.add_argument("--grid", type=int, default=101, help="nodes per side of the unit square (default 101)")
-    shp.add_argument("--points", type=int, default=200_000, help="random points evaluated (default 200000)")
-    shp.add_argument("--repeats", type=int, default=5, help="timed evaluations; the median is reported (default 5)")
-    shp.add_argument("--out", type=Path, required=True)
-    sca = sub.add_parser("scaling", parents=[common],
-                         help="strong scaling: the timing ladder under mpirun on each rank count, one BLAS thread per rank")
-    sca.add_argument("scene")
-    _methods(sca)
-    sca.add_argument("--degree", nargs="+", type=int, default=[1], choices=(1, 2))
-    sca.add_argument("--h", nargs="+", type=float, required=True)
-    sca.add_argument("--ranks", nargs="+", type=int, default=[1, 2], help="rank counts (default 1 2)")
-    sca.add_argument("--out", type=Path, required=True)
-    _default_help(sub)
+    for name, command in commands.items():
+        p = sub.add_parser(name, parents=[common], help=command.help)
+        for a in command.args:
+            p.add_argument(*a.flags, **a.options)
     return parser
 
 
-#: The help line of an option that means the same in every command that has it.
-COMMON_HELP = {
-    "scene": "built-in scene name(s) (A, B, C, ...) or scene TOML file(s)",
-    "method": "fe, xfem, efgm, or all (default all)",
-    "degree": "polynomial degree(s) of every method: 1 or 2",
-    "h": "cell sizes of the ladder, in the scene's length unit",
-    "values": "the values of the --param just before",
-    "case": "closed-form cases to run (default: all)",
-    "basis": "EFGM's MLS bases to time (default: both)",
-    "out": "result folder (built aside, put in place only if the run succeeds)",
-}
+def _run(args, argv) -> None:
+    from .run import run
+    run(args.scene, args.method, args.out, h=args.h, degree=args.degree, paper=args.paper, fields=args.fields,
+        petsc_options=dict(args.petsc_option), dmax=args.dmax, nodes_file=args.nodes, cell=args.cell,
+        basis=args.basis, allow_large=args.allow_large, draw=args.draw, estimate=args.estimate,
+        reference=args.reference, argv=argv)
 
 
-def _default_help(sub) -> None:
-    """Every option without a help line of its own gets :data:`COMMON_HELP`'s."""
-    for command in sub.choices.values():
-        for action in command._actions:
-            action.help = action.help or COMMON_HELP.get(action.dest)
+def _paper(args, argv) -> None:
+    from .paper import paper
+    paper(args.out, tuple(args.scene), args.ref_h, workers=args.workers, argv=argv)
+
+
+def _closed(args, argv) -> None:
+    from .convergence import closed
+    closed(args.out, tuple(args.case), [(m, d) for m in methods.expand(args.method) for d in args.degree], argv=argv)
+
+
+def _benchmark(args, argv) -> None:
+    from .agreement import default_exclusion
+    from .efficiency import BENCHMARK_LADDERS, BENCHMARK_VARIANTS, REFERENCE_H, efficiency
+    from .peer_getfem import getfem_module
+    getfem_module()  # before the long reference runs
+    sections = [efficiency(s, BENCHMARK_VARIANTS, BENCHMARK_LADDERS[s], REFERENCE_H[s],
+                           default_exclusion(load_scene(s)), args.out / s, workers=args.workers, argv=argv)
+                for s in args.scene]
+    files.write_text(args.out / "benchmark.md", "# Benchmark against GetFEM's level-set XFEM\n\n"
+                     + "\n".join(t.replace("](efficiency.png)", f"]({s}/efficiency.png)")
+                                 for s, t in zip(args.scene, sections)))
+
+
+def _efficiency(args, argv) -> None:
+    from .agreement import default_exclusion
+    from .efficiency import efficiency
+    exclude = args.exclude if args.exclude is not None else default_exclusion(load_scene(args.scene))
+    variants = [(m, d) for m in methods.expand(args.method) for d in args.degree]
+    efficiency(args.scene, variants, {d: args.h for d in args.degree}, args.ref_h, exclude, args.out,
+               workers=args.workers, estimated=True, argv=argv)
+
+
+def _sweeps(args, argv) -> None:
+    from .sweeps import run_sweeps
+    run_sweeps(args.out, args.sweep, methods.expand(args.method), args.degree, workers=args.workers, argv=argv)
+
+
+def _study(args, argv) -> None:
+    from .study import study
+    study(args.scene, _study_params(args), args.method, args.out, degree=args.degree, h=args.h,
+          cell=args.cell, workers=args.workers, argv=argv)
+
+
+def _report(args, argv) -> None:
+    from .report import report
+    report(args.out, args.quick, workers=args.workers, argv=argv)
+
+
+def _timing(args, argv) -> None:
+    from .timing import timing
+    timing(args.scene, args.method, args.degree, args.h, args.out, argv=argv)
+
+
+def _shapes(args, argv) -> None:
+    from .shapes import shapes
+    shapes(args.basis, args.grid, args.points, args.repeats, args.out, argv=argv)
+
+
+def _scaling(args, argv) -> None:
+    from .scaling import scaling
+    scaling(args.scene, methods.expand(args.method), args.degree, args.h, args.ranks, args.out, argv=argv)
 
 
 class Repeats(logging.Filter):
@@ -279,82 +363,13 @@ def _study_params(args) -> list[tuple[str, list[float]]]:
     return list(zip(args.param, args.values))
 
 
-def _dispatch(args, argv) -> None:
-    from .agreement import default_exclusion
-
-    cmd = args.command
-    if cmd == "run":
-        from .run import run
-        run(args.scene, args.method, args.out, h=args.h, degree=args.degree, paper=args.paper, fields=args.fields,
-            petsc_options=dict(args.petsc_option), dmax=args.dmax, nodes_file=args.nodes, cell=args.cell,
-            basis=args.basis, allow_large=args.allow_large, draw=args.draw, estimate=args.estimate,
-            reference=args.reference, argv=argv)
-    elif cmd == "paper":
-        from .paper import paper
-        paper(args.out, tuple(args.scene), args.ref_h, workers=args.workers, argv=argv)
-    elif cmd == "closed":
-        from .convergence import closed
-        variants = [(m, d) for m in methods.expand(args.method) for d in args.degree]
-        closed(args.out, tuple(args.case), variants, argv=argv)
-    elif cmd == "benchmark":
-        from .efficiency import BENCHMARK_LADDERS, BENCHMARK_VARIANTS, REFERENCE_H, efficiency
-        from .files import write_text
-        from .peer_getfem import getfem_module
-        getfem_module()  # before the long reference runs
-        sections = [efficiency(s, BENCHMARK_VARIANTS, BENCHMARK_LADDERS[s], REFERENCE_H[s],
-                               default_exclusion(load_scene(s)), args.out / s, workers=args.workers, argv=argv)
-                    for s in args.scene]
-        write_text(args.out / "benchmark.md", "# Benchmark against GetFEM's level-set XFEM\n\n"
-                   + "\n".join(t.replace("](efficiency.png)", f"]({s}/efficiency.png)")
-                                for s, t in zip(args.scene, sections)))
-    elif cmd == "efficiency":
-        from .efficiency import efficiency
-        scene = load_scene(args.scene)
-        exclude = args.exclude if args.exclude is not None else default_exclusion(scene)
-        variants = [(m, d) for m in methods.expand(args.method) for d in args.degree]
-        efficiency(args.scene, variants, {d: args.h for d in args.degree}, args.ref_h, exclude, args.out,
-                   workers=args.workers, estimated=True, argv=argv)
-    elif cmd == "sweeps":
-        from .sweeps import run_sweeps
-        run_sweeps(args.out, args.sweep, methods.expand(args.method), args.degree, workers=args.workers, argv=argv)
-    elif cmd == "study":
-        from .study import study
-        study(args.scene, _study_params(args), args.method, args.out, degree=args.degree, h=args.h,
-              cell=args.cell, workers=args.workers, argv=argv)
-    elif cmd == "report":
-        from .report import report
-        report(args.out, args.quick, workers=args.workers, argv=argv)
-    elif cmd == "shapes":
-        from .shapes import shapes
-        shapes(args.basis, args.grid, args.points, args.repeats, args.out, argv=argv)
-    elif cmd == "scaling":
-        from .scaling import scaling
-        scaling(args.scene, methods.expand(args.method), args.degree, args.h, args.ranks, args.out, argv=argv)
-    else:
-        from .timing import timing
-        timing(args.scene, args.method, args.degree, args.h, args.out, argv=argv)
-
-
-#: The commands that run on many ranks under mpirun: one solve (or a
-#: ladder of them) spread over the ranks by dolfinx and PETSc, and EFGM's
-#: shape functions split between them (``shapes``).
-DISTRIBUTED = ("run", "timing", "shapes")
-
-
-def _check_ranks(args) -> None:
-    """Under mpirun with several ranks, ``run`` and ``timing`` solve every
-    method on all of them; the study drivers spread their cases over a pool
-    instead (``--workers``, or ``mpiexec -n K python -m mpi4py.futures``)
-    and ``scaling`` launches mpirun itself, so they are refused here, once,
-    before any rank writes."""
+def _check_ranks(command: str, ranks: str) -> None:
+    """Under mpirun with several ranks, the commands that spread their
+    solves over the ranks run on all of them; the others are refused here,
+    once, before any rank writes (:data:`UNDER_MPIRUN`)."""
     from .pool import distributed
-    if not distributed():
-        return
-    if args.command == "scaling":
-        raise ContactError("mpirun: 'scaling' launches mpirun itself, once per rank count: run it without mpirun")
-    if args.command not in DISTRIBUTED:
-        raise ContactError(f"mpirun: '{args.command}' spreads its cases over a pool, not over mpirun's ranks: run "
-                           f"it with --workers K, or under mpiexec -n K python -m mpi4py.futures -m verification")
+    if distributed() and ranks in UNDER_MPIRUN:
+        raise ContactError(UNDER_MPIRUN[ranks].format(command))
 
 
 def _abort_on(exc: BaseException) -> None:
@@ -372,28 +387,30 @@ INTERRUPTED = 130
 
 def main(argv=None) -> int:
     argv = sys.argv[1:] if argv is None else argv
-    args = _parser().parse_args(argv)
+    commands = _commands()
+    args = _parser(commands).parse_args(argv)
+    command = commands[args.command]
     from .pool import distributed, launched_rank
     rank = launched_rank()
     repeats = _configure_logging(args.verbosity if rank == 0 else -2)  # one log, rank 0's
     try:
         if distributed():  # PETSc starts collectively: every rank now, before any method needs it
             from petsc4py import PETSc  # noqa: F401
-        _check_ranks(args)
+        _check_ranks(args.command, command.ranks)
         _check_sizes(args)
         _check_workers(args)
         _check_counts(args)
         _check_ranks_list(args)
         if getattr(args, "out", None) is None:
-            _dispatch(args, argv)
+            command.run(args, argv)
         elif rank > 0:  # every rank computes (the solves are collective), rank 0 alone writes
             with tempfile.TemporaryDirectory() as scratch:
                 args.out = Path(scratch) / "out"
-                _dispatch(args, argv)
+                command.run(args, argv)
         else:
             with files.result_folder(args.out) as tmp:
                 final, args.out = args.out, tmp
-                _dispatch(args, argv)
+                command.run(args, argv)
                 if not (tmp / files.MANIFEST).exists():  # every result folder says what made it
                     files.write_json(tmp / files.MANIFEST, files.provenance(list(argv)))
                 files.write_units(tmp)  # every CSV column's unit, beside the CSVs (their headers stay as read)

@@ -1,10 +1,14 @@
 """The methods a driver can run, by name, imported only when used.
 
-Every entry names a module with ``METHOD`` and ``solve(scene, h=None, *,
+:data:`METHODS` names each method's typed options class
+(:class:`contactcore.discretisation.Discretisation`), from modules that
+import no numerics; every fact about a method — its implementing module,
+its field output, whether it spreads over mpirun's ranks, whether it needs
+MPI — is a class attribute there, read through :func:`discretisation`.
+The implementing module has ``METHOD`` and ``solve(scene, h=None, *,
 paper=False, **options) -> contactcore.Result``, the contract's one solve
-(:mod:`contactcore.discretisation`) with the method's typed options, whose
-class is named in :data:`DISCRETISATIONS`.  Lazy import keeps an ``efgm``
-run free of dolfinx and gmsh.
+with the method's options.  Lazy import keeps an ``efgm`` run free of
+dolfinx and gmsh.
 """
 from __future__ import annotations
 
@@ -14,48 +18,31 @@ import inspect
 from contactcore import ContactError
 from contactcore.discretisation import option_names
 
-#: Method name -> module implementing it, in the order plots list them.
+#: Method name -> its options class, as ``module:Class``, in the order plots list them.
 METHODS = {
-    "fe": "xdolfinx.conforming",
-    "xfem": "xdolfinx.xfem",
-    "efgm": "efgm.method",
+    "fe": "xdolfinx.options:FE",
+    "xfem": "xdolfinx.options:XFEM",
+    "efgm": "efgm.options:EFGM",
 }
 
-#: Peers run beside the methods by the benchmark only (never in "all").
+#: Peers run beside the methods by the benchmark only (never in "all"): their modules.
 PEERS = {"getfem": "verification.peer_getfem"}
-
-#: Each method's typed options (:mod:`contactcore.discretisation`), from
-#: modules that import no numerics.
-DISCRETISATIONS = {"fe": ("xdolfinx.options", "FE"), "xfem": ("xdolfinx.options", "XFEM"),
-                   "efgm": ("efgm.options", "EFGM")}
 
 #: The command-line flag of each option.
 FLAGS = {"petsc_options": "--petsc-option", "cell": "--cell", "dmax": "--dmax", "nodes": "--nodes",
          "basis": "--basis"}
 
-#: Methods whose fields live on a dolfinx mesh, so XDMF output exists.
-WITH_XDMF = ("fe", "xfem")
 
-#: Methods whose solve spreads over mpirun's ranks (fe and xfem: dolfinx
-#: and PETSc own the partition; efgm: its cells, Γ's points and rows split
-#: in fixed contiguous ranges, :mod:`efgm.distributed`); any other runs on
-#: rank 0 while the rest wait.
-DISTRIBUTED = ("fe", "xfem", "efgm")
-
-#: Methods that start no MPI outside mpirun (their ``comm`` None is one
-#: process there): a driver hands them a communicator only under a launcher.
-MPI_FREE = ("efgm",)
+def discretisation(name: str) -> type:
+    """Method ``name``'s options class."""
+    module, cls = METHODS[name].split(":")
+    return getattr(importlib.import_module(module), cls)
 
 
 def solver(name: str):
     """The ``solve`` function of method (or peer) ``name``."""
-    return importlib.import_module({**METHODS, **PEERS}[name]).solve
-
-
-def discretisation(name: str) -> type:
-    """Method ``name``'s option class."""
-    module, cls = DISCRETISATIONS[name]
-    return getattr(importlib.import_module(module), cls)
+    module = PEERS[name] if name in PEERS else discretisation(name).module
+    return importlib.import_module(module).solve
 
 
 def takes(name: str, option: str) -> bool:
@@ -78,6 +65,14 @@ def check_options(names: list[str], **given) -> None:
             takers = [m for m in METHODS if takes(m, option)]
             raise ContactError(f"{FLAGS[option]}: means nothing for {', '.join(names)} "
                                f"(only {', '.join(takers)} take it)")
+
+
+def check_launch(names: list[str], distributed: bool) -> None:
+    """Refuse, under mpirun (``distributed``), a method whose solve does not
+    spread over the ranks: each rank would solve it whole, alongside."""
+    serial = [n for n in names if distributed and not discretisation(n).distributed]
+    if serial:
+        raise ContactError(f"mpirun: {', '.join(serial)} does not spread over mpirun's ranks: run it without mpirun")
 
 
 def expand(names: list[str]) -> list[str]:

@@ -174,12 +174,13 @@ def petsc_on_self() -> None:
 def solver(name: str):
     """Method ``name``'s solve for one case, and the options that put it on
     its own communicator (``COMM_SELF`` for the methods that take ``comm``;
-    for one that starts no MPI outside a launcher, :data:`methods.MPI_FREE`,
-    only under one): a case never shares its mesh or its rows with the
+    for one that starts no MPI outside a launcher, not ``needs_mpi``
+    (:class:`~contactcore.discretisation.Discretisation`), only under one): a case never shares its mesh or its rows with the
     other workers."""
     petsc_on_self()
     solve = methods.solver(name)
-    if not methods.takes(name, "comm") or (name in methods.MPI_FREE and launched_size() == 1):
+    if not methods.takes(name, "comm") or (name in methods.METHODS and not methods.discretisation(name).needs_mpi
+                                           and launched_size() == 1):
         return solve, {}
     from mpi4py import MPI
     return solve, {"comm": MPI.COMM_SELF}

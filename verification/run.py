@@ -149,8 +149,6 @@ def _solve_reference(scene, reference, h, paper, petsc_options, out: Path, profi
     it is not one of them, write its profiles under ``out/reference`` and
     add them to ``profiles`` and its summary to ``summaries``."""
     name, degree = reference
-    if name not in methods.DISTRIBUTED and pool.distributed() and pool.launched_rank() > 0:
-        return
     log.info("scene %s: solving the reference, %s (degree %d)", scene.name, name, degree)
     solve, on_comm = pool.solver(name) if pool.under_mpi_pool() else (methods.solver(name), {})
     result = solve(scene, h, degree=degree, paper=paper, **methods.options_for(name, petsc_options=petsc_options),
@@ -175,18 +173,55 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
         draw=True, estimate=None, reference=DEFAULT_REFERENCE, argv=()) -> str:
     """Solve ``scene_name`` (a scene, a built-in name or a TOML file),
     sample the scene's profiles, write everything; return the Markdown
-    section (``summary.md``'s text).  Before any work: every option must
-    mean something to a chosen method, ``h`` must fit the domain, and the
-    run must fit the machine (:func:`contactcore.budget.check_budget`,
-    unless ``allow_large``).  The scene as read is written last (as TOML),
-    with ``run.json``; no figure unless ``draw`` (matplotlib is then never
-    imported).  Two runs or more are compared with ``reference`` (method,
-    degree; None: fe at its highest degree among them), solved at the same
-    h if it is not one of them."""
+    section (``summary.md``'s text).  Before any work (:func:`_check`):
+    every option must mean something to a chosen method, ``h`` must fit
+    the domain, and the run must fit the machine
+    (:func:`contactcore.budget.check_budget`, unless ``allow_large``).  The
+    scene as read is written last (as TOML), with ``run.json``; no figure
+    unless ``draw`` (matplotlib is then never imported).  Two runs or more
+    are compared with ``reference`` (method, degree; None: fe at its
+    highest degree among them), solved at the same h if it is not one of
+    them."""
     scene = load_scene(scene_name)
     chosen = methods.expand(method_names)
-    methods.check_options(chosen, petsc_options=petsc_options or None, dmax=dmax, nodes=nodes_file, cell=cell,
-                          basis=basis)
+    given = dict(petsc_options=petsc_options or None, dmax=dmax, cell=cell, basis=basis)
+    compared = reference is not None and len(chosen) > 1  # a reference only where methods are compared
+    _check(scene, chosen, h, degree, paper, allow_large, estimate, reference if compared else None,
+           nodes=nodes_file, **given)
+    nodes = read_nodes(nodes_file) if nodes_file else None
+    out = Path(out)
+    profiles, summaries, paths, estimated = {}, [], {}, {}
+    for name in chosen:
+        result, est = _solve(scene, name, h, degree, paper, estimate, methods.options_for(name, nodes=nodes, **given))
+        summaries.append(_write_method(out, scene, name, result, est, fields, draw, profiles, paths, estimated))
+    ref = reference_label(reference)
+    if compared and profiles and ref not in {label for by_label in profiles.values() for label in by_label}:
+        _solve_reference(scene, reference, h, paper, petsc_options or None, out, profiles, summaries)
+    text = _write_summary(out, scene, summaries, profiles, paths, estimated, ref, draw)
+    files.write_text(out / "scene.toml", scene_text(scene_name))
+    files.write_json(out / "run.json", {**files.provenance(list(argv)),
+                                        "scene": scene.name if isinstance(scene_name, Scene) else str(scene_name),
+                                        "methods": chosen, "h": h, "degree": degree,
+                                        "paper": paper, "estimate": estimate,
+                                        "petsc_options": petsc_options or {}, "dmax": dmax,
+                                        "basis": basis, "nodes": str(nodes_file) if nodes_file else None,
+                                        "reference": ref,
+                                        "cell": next((s["discretisation"]["cell"] for s in summaries
+                                                      if "cell" in s["discretisation"]), cell)})
+    return text
+
+
+def _check(scene: Scene, chosen: list[str], h, degree: int, paper: bool, allow_large: bool, estimate,
+           reference, **given) -> None:
+    """Refuse, before any work, an option no chosen method takes, a method
+    that cannot run under this launch, an ``h`` that does not fit the
+    domain, an estimate on the paper's fixed grids, and (unless ``paper``
+    or ``allow_large``) a run too large for the machine: each method at
+    the finest h it solves, the ``reference`` (method, degree; None when
+    nothing is compared) at ``h``.  Warn about an ``h`` that leaves few
+    cells across the domain (not for the paper's grids)."""
+    methods.check_options(chosen, **given)
+    methods.check_launch(chosen + ([reference[0]] if reference else []), pool.distributed())
     if h is not None:
         check_resolution(scene, h)
     if estimate and paper:
@@ -195,61 +230,63 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
     if (h or scene.h or 0.0) > span / tol.MIN_CELLS_ACROSS and not paper:
         log.warning("h = %g leaves fewer than %d cells across the domain's smallest dimension (%g): the profiles "
                     "are resolved by a few cells only", h or scene.h, tol.MIN_CELLS_ACROSS, span)
-    compared = reference is not None and len(chosen) > 1  # a reference only where methods are compared
     if not (paper or allow_large):
         for name in chosen:
-            check_budget(scene, (h or scene.h or smallest_dimension(scene.domain)) / 2 ** ((estimate or 1) - 1),
-                         degree, name)
+            check_budget(scene, (h or scene.h or span) / 2 ** ((estimate or 1) - 1), degree, name)
+        if reference:
+            check_budget(scene, h or scene.h or span, reference[1], reference[0])
 
 
-        for name, d in [(n, degree) for n in chosen] + ([reference] if compared else []):
-            check_budget(scene, h or scene.h or smallest_dimension(scene.domain), d, name)
-    nodes = read_nodes(nodes_file) if nodes_file else None
-    out = Path(out)
-    profiles, summaries, paths, estimated = {}, [], {}, {}
-    for name in chosen:
-        if name not in methods.DISTRIBUTED and pool.distributed():
-            if pool.launched_rank() > 0:
-                continue
-            log.info("%s is serial: it runs on rank 0 while the other ranks wait", name)
-        options = methods.options_for(name, petsc_options=petsc_options or None, dmax=dmax, nodes=nodes, cell=cell,
-                                      basis=basis)
-        log.info("scene %s: solving with %s (%s)", scene.name, name, f"{basis} basis" if "basis" in options
-                 else f"degree {degree}")
-        # a worker of an mpi4py.futures pool solves on its own communicator; mpirun's ranks share the world
-        solve, on_comm = pool.solver(name) if pool.under_mpi_pool() else (methods.solver(name), {})
-        result, est = _solve_estimated(solve, scene, h, estimate, degree=degree, paper=paper,
-                                       progress=_progress(name), **options, **on_comm)
-        summary = result.summary()
-        sampled = sample_profiles(scene, result.fields, result.interface)
-        if est is not None:
-            summary["estimate"] = _estimate_record(est, sampled)
-            estimated[f"{name} (p{result.degree})"] = ({p.id: p for p in sampled},
-                                                       {p.id: est.error_columns(p.id) for p in sampled})
-        summaries.append(summary)
-        for w in result.solver.warnings:
-            log.warning("%s: %s", name, w)
-        log.info("%s: %d DOFs, total %.2f s, residual %.1e", name, result.dofs, result.timings.total,
-                 result.solver.residual)
-        for prof in sampled:
-            files.write_profile_csv(out / name / "profiles" / f"{prof.id}.csv", prof,
-                                    est.error_columns(prof.id) if est is not None else None)
-            profiles.setdefault(prof.id, {})[f"{name} (p{result.degree})"] = prof
-        if fields:
-            from . import fields_out  # meshio, only for field files
-            written = fields_out.write_fields(out / name / "fields", result, mesh=name in methods.WITH_XDMF)
-            log.info("%s: wrote %d field files%s", name, len(written),
-                     "" if name in methods.WITH_XDMF else " (Γ only: no mesh)")
-        files.write_json(out / name / "summary.json", summary)
-        if not scene.law.is_linear or scene.follow_path:  # the response along the path, every step solved
-            paths[f"{name} (p{result.degree})"] = result.interface
-            interface.write_history(out / name, scene, result.interface)
-            if draw:
-                interface.plot_status(out / "plots" / f"status_{name}.png", scene, f"{name} (p{result.degree})",
-                                      result.interface)
-    ref = reference_label(reference)
-    if compared and profiles and ref not in {label for by_label in profiles.values() for label in by_label}:
-        _solve_reference(scene, reference, h, paper, petsc_options or None, out, profiles, summaries)
+def _solve(scene: Scene, name: str, h, degree: int, paper: bool, estimate, options: dict):
+    """Method ``name``'s result (the finest, with ``estimate``) and its
+    estimate, logged: a worker of an mpi4py.futures pool solves on its own
+    communicator; mpirun's ranks share the world."""
+    log.info("scene %s: solving with %s (%s)", scene.name, name, f"{options['basis']} basis" if "basis" in options
+             else f"degree {degree}")
+    solve, on_comm = pool.solver(name) if pool.under_mpi_pool() else (methods.solver(name), {})
+    result, est = _solve_estimated(solve, scene, h, estimate, degree=degree, paper=paper,
+                                   progress=_progress(name), **options, **on_comm)
+    for w in result.solver.warnings:
+        log.warning("%s: %s", name, w)
+    log.info("%s: %d DOFs, total %.2f s, residual %.1e", name, result.dofs, result.timings.total,
+             result.solver.residual)
+    return result, est
+
+
+def _write_method(out: Path, scene: Scene, name: str, result, est, fields: bool, draw: bool, profiles: dict,
+                  paths: dict, estimated: dict) -> dict:
+    """Method ``name``'s files (profiles with their estimated errors,
+    fields, summary, the response along the path); its profiles, path and
+    estimate join ``profiles``, ``paths`` and ``estimated`` under its
+    label.  Returns its summary."""
+    label = f"{name} (p{result.degree})"
+    summary = result.summary()
+    sampled = sample_profiles(scene, result.fields, result.interface)
+    if est is not None:
+        summary["estimate"] = _estimate_record(est, sampled)
+        estimated[label] = ({p.id: p for p in sampled}, {p.id: est.error_columns(p.id) for p in sampled})
+    for prof in sampled:
+        files.write_profile_csv(out / name / "profiles" / f"{prof.id}.csv", prof,
+                                est.error_columns(prof.id) if est is not None else None)
+        profiles.setdefault(prof.id, {})[label] = prof
+    if fields:
+        from . import fields_out  # meshio, only for field files
+        on_mesh = methods.discretisation(name).field_output == "mesh"
+        written = fields_out.write_fields(out / name / "fields", result, mesh=on_mesh)
+        log.info("%s: wrote %d field files%s", name, len(written), "" if on_mesh else " (Γ only: no mesh)")
+    files.write_json(out / name / "summary.json", summary)
+    if not scene.law.is_linear or scene.follow_path:  # the response along the path, every step solved
+        paths[label] = result.interface
+        interface.write_history(out / name, scene, result.interface)
+        if draw:
+            interface.plot_status(out / "plots" / f"status_{name}.png", scene, label, result.interface)
+    return summary
+
+
+def _write_summary(out: Path, scene: Scene, summaries: list[dict], profiles: dict, paths: dict, estimated: dict,
+                   ref: str | None, draw: bool) -> str:
+    """The plots of every profile (methods overlaid, Δ against ``ref``) and
+    of the response, and ``summary.md``; returns its text."""
     titles = {p.id: p.title for p in scene.profiles}
     for pid, runs in profiles.items() if draw else ():
         plots.plot_profile(out / "plots" / f"{pid}.png", titles[pid], runs, ref)
@@ -263,14 +300,4 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
         text += ("\n## Newton iterations (final relative residual) per increment\n\n"
                  + interface.iterations_table(paths))
     files.write_text(out / "summary.md", text)
-    files.write_text(out / "scene.toml", scene_text(scene_name))
-    given = scene.name if isinstance(scene_name, Scene) else str(scene_name)
-    files.write_json(out / "run.json", {**files.provenance(list(argv)), "scene": given,
-                                        "methods": methods.expand(method_names), "h": h, "degree": degree,
-                                        "paper": paper, "estimate": estimate,
-                                        "petsc_options": petsc_options or {}, "dmax": dmax,
-                                        "basis": basis, "nodes": str(nodes_file) if nodes_file else None,
-                                        "reference": ref,
-                                        "cell": next((s["discretisation"]["cell"] for s in summaries
-                                                      if "cell" in s["discretisation"]), cell)})
     return text

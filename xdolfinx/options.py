@@ -2,7 +2,7 @@
 
 Plain dataclasses: importing this module imports no dolfinx, so a driver
 checks a method's options before paying for its libraries; ``build``
-imports the method.
+imports the method's module (:attr:`~contactcore.discretisation.Discretisation.module`).
 """
 from __future__ import annotations
 
@@ -34,14 +34,13 @@ class FE(Discretisation):
     comm: object = None
 
     name: ClassVar[str] = "fe"
+    module: ClassVar[str] = "xdolfinx.conforming"
     paper_grid: ClassVar[str] = "xfem_cells"
+    field_output: ClassVar[str] = "mesh"
+    distributed: ClassVar[bool] = True
 
     def __post_init__(self):
         check_degree(self.name, self.degree)
-
-    def build(self, scene, resolution, timings):
-        from . import conforming
-        return conforming.build(scene, self, resolution, timings)
 
 
 @dataclass(frozen=True)
@@ -59,16 +58,15 @@ class XFEM(Discretisation):
     comm: object = None
 
     name: ClassVar[str] = "xfem"
+    module: ClassVar[str] = "xdolfinx.xfem"
     paper_grid: ClassVar[str] = "xfem_cells"
     level_set: ClassVar[bool] = True
+    field_output: ClassVar[str] = "mesh"
+    distributed: ClassVar[bool] = True
 
     def __post_init__(self):
         check_degree(self.name, self.degree)
         check_choice(self.name, "cell", self.cell, XFEM_CELLS)
-
-    def build(self, scene, resolution, timings):
-        from . import xfem
-        return xfem.build(scene, self, resolution, timings)
 
     @classmethod
     def label(cls, result) -> str:
