@@ -21,8 +21,7 @@ from dataclasses import dataclass
 from .errors import ContactError
 
 #: Resident bytes per unknown of a run, factors included: run C-coulomb, fe
-#: P2, h = 0.02 (2.4e5 unknowns) peaks at 1.0 GB (issue 23, after the factor
-#: leak was fixed): 4.2 kB; rounded up for the N log N growth of the factors.
+#: P2, h = 0.02 (2.4e5 unknowns) peaks at 1.0 GB: 4.2 kB; rounded up for the N log N growth of the factors.
 BYTES_PER_UNKNOWN = 6_000
 
 #: Fields per method: fe keeps one per body on the whole mesh.

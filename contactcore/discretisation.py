@@ -171,7 +171,7 @@ class Reuse:
     is enforced: an exact law's system holds Nitsche's operators), the load path
     (increments, ``follow_path``), the profiles and the names.  A study of
     k_N, k_T or μ then meshes, evaluates shape functions and assembles once
-    per discretisation (issue 24).
+    per discretisation.
 
     Keyed by a digest of everything else — the (dimensionless) scene
     without those, the discretisation's options but its communicator, and

@@ -26,10 +26,11 @@ singular (a body sliding away at the slip limit) is a failure, not a
 converged runaway.  Before any solve the springs must leave the bulk
 digits in their rows (:func:`contactcore.health.check_springs`) and the
 supports, pins and springs must hold every rigid-body mode
-(:func:`contactcore.health.check_restraint`).  ``J`` is not
-symmetric while points slip, so every method factorises it with a general
-LU.  The tangent of a piecewise-linear law changes only when a point
-changes status: a solve whose tangent is one of the last factorised
+(:func:`contactcore.health.check_restraint`).  ``J`` is symmetric but
+while Coulomb points slip: every method factorises it by MUMPS's LDLᵀ while
+it is symmetric, by LU otherwise (:class:`contactcore.linear_solver.Tangent`).
+The tangent of a piecewise-linear law changes only when a point changes
+status: a solve whose tangent is one of the last factorised
 (:data:`~contactcore.tolerances.FACTORISATIONS_KEPT`) reuses that
 factorisation, often for whole load paths, and the system refills the
 matrices it allocated once.  Every status decision is taken so that round-off cannot move it

@@ -236,36 +236,21 @@ class Scales:
         return out
 
 
-class _Mapped:
-    """Fields read through a change of units: ``u(x) = a u_f(P(x))``,
-    ``σ(x) = b σ_f(P(x))``."""
-
-    def __init__(self, fields, points, u: float, s: float):
-        self._fields, self._points, self._u, self._s = fields, points, u, s
-
-    def displacement(self, points, bodies) -> np.ndarray:
-        return self._u * self._fields.displacement(self._points(points), bodies)
-
-    def stress(self, points, bodies) -> np.ndarray:
-        return self._s * self._fields.stress(self._points(points), bodies)
-
-
-class ScaledFields(_Mapped):
+class ScaledFields:
     """A Result's fields: ``inner`` (the method's, over ``scales``'
     dimensionless scene) read in the user's units: ``u(x) = U u'(x')``,
     ``σ(x) = Σ σ'(x')``, ``x' = (x − o)/L``."""
 
     def __init__(self, inner, scales: Scales):
-        super().__init__(inner, scales.to_dimensionless, scales.displacement, scales.stress)
         self.inner, self.scales = inner, scales
         # the wrapper protocol of contactcore.result.method_fields
         self.base, self.origin, self.length_scale = inner, scales.origin, scales.length
 
+    def displacement(self, points, bodies) -> np.ndarray:
+        return self.scales.displacement * self.inner.displacement(self.scales.to_dimensionless(points), bodies)
 
-def dimensionless_view(fields, scales: Scales) -> _Mapped:
-    """The reverse of :class:`ScaledFields`: fields in the user's units (an
-    exact solution) read over the dimensionless scene."""
-    return _Mapped(fields, scales.to_user, 1 / scales.displacement, 1 / scales.stress)
+    def stress(self, points, bodies) -> np.ndarray:
+        return self.scales.stress * self.inner.stress(self.scales.to_dimensionless(points), bodies)
 
 
 def _option_in(name: str, value, scales: Scales):

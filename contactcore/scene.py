@@ -240,9 +240,9 @@ class Scene:
 
     def body_of(self, points, side: str = "plus") -> np.ndarray:
         """0 (−) or 1 (+) for each point: by the sign of φ, ``side`` within
-        ON_INTERFACE of Γ, a distance (a level set's φ is scaled by
-        |∇φ|: with φ = 1e-9 (r² − R²), a whole rod was 'on Γ', read from
-        the + body; found by a helper's audit)."""
+        ON_INTERFACE of Γ, a distance: a level set's φ is scaled by |∇φ|,
+        or with φ = 1e-9 (r² − R²) a whole rod would be 'on Γ', read from
+        the + body."""
         phi = self.interface.phi(points)
         on = np.abs(self.interface.signed_distance(points)) <= tol.ON_INTERFACE * self.length_scale
         return np.where(on, BODIES.index(side), (phi > 0).astype(int))

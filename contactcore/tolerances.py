@@ -47,7 +47,7 @@ NODE_ON_INTERFACE = 1e-14
 #: centroid (constant there, or superconvergent); in a cut cell the body's
 #: part has its centroid up to 0.7 h from Γ (a fitted mesh's cells next to
 #: Γ: about h/3), and in a thin part the cell's gradient is fitted to that
-#: part alone.  Where the stress varies steeply across Γ (issue 22: scene A
+#: part alone.  Where the stress varies steeply across Γ (scene A
 #: with Γ inclined 21.5°, each block bending on its soft tangential spring,
 #: σxy is 15.3e3 on Γ and 19.7e3 0.8 h off it) the cell's own field missed
 #: on Γ by up to 0.29 (quads) and 0.31 (triangles) of the profile's scale at
@@ -121,12 +121,10 @@ LOCKING_WARN = 1e4
 FALSE_TN_WARN = 2.0
 
 #: XFEM slivers: which nodes are enriched is xdolfinx.xfem.space.MIN_CUT_FRACTION
-#: (with its measured effect; issue 22 replaced the warning SLIVER_LEAK_WARN,
-#: which put the perturbation at ten times a shape function's value across
-#: Γ and under-stated it by orders of magnitude).
+#: (with its measured effect).
 
 #: XFEM evaluates a body's points only in cells where that body's part
-#: reaches at least this fraction of the cell's diameter from Γ (issue 22);
+#: reaches at least this fraction of the cell's diameter from Γ;
 #: a point in a thinner part (a sliver, whose polynomial is fitted to the
 #: sliver alone) is evaluated in the nearest cell that resolves the body.
 #: Measured over 24 inclined Γ in scene A, h = 0.025, worst sample against
@@ -146,7 +144,7 @@ SLIVER_EVAL_DEPTH = 0.1
 #: at 0.05, where xfem P2 agrees with fe; C's 0.18; A's 0).
 THIN_BODY_CUT_SHARE = 0.5
 
-# ----- nonlinear interface laws and Newton (issue 6) -------------------------
+# ----- nonlinear interface laws and Newton ------------------------------------
 
 #: Coulomb's stick test ``|t_trial| <= mu p (1 + STICK_ROUNDOFF)``: a point
 #: exactly at the slip limit (a converged slip point re-evaluated, or stick
@@ -208,7 +206,7 @@ NEWTON_RTOL = 1e-8
 #: while points whose gap is pure round-off change status at every solve
 #: (a rigid shift of both supports under unilateral contact, Γ closed at
 #: zero pressure: residual history 1e-15 at every iteration, never
-#: "settled"; a helper's audit).  Far below any physical correction: a
+#: "settled").  Far below any physical correction: a
 #: wrong stick/slip split is corrected by slips of the order of the
 #: displacements (a soft layer under a stiff one: 0.25 of them).
 STEP_ROUNDOFF = 1e-12
@@ -236,7 +234,7 @@ FACTORISATIONS_KEPT = 2
 #: between the methods; each costs one system's matrices and factorisations.
 SYSTEMS_KEPT = 3
 
-# ----- units and placement (issue 23) -----------------------------------------
+# ----- units and placement -----------------------------------------------------
 
 #: Every method solves the scene made dimensionless (contactcore.scaling):
 #: x' = (x − o)/L.  The scene's points (corner, Γ, pins, profile ends) are
@@ -250,12 +248,12 @@ SYSTEMS_KEPT = 3
 #: of ~1e4 L the inputs carry fewer digits than the step resolves.
 DIMENSIONLESS_GRID = 2.0 ** -36
 
-# --- Figures (verification/plots.py, issue 18) ---------------------------
+# --- Figures (verification/plots.py) ---------------------------------------
 #: A panel's y range never spans less than this fraction of its quantity's
 #: scale (the largest |value| of any curve of the quantity): a difference
 #: panel of methods that agree to round-off, or a nearly constant curve,
-#: is drawn flat at this resolution instead of zoomed onto noise (issue 18:
-#: a ±3 Pa wobble on 24 kPa filled B5's panel).  1e-3 is finer than any
+#: is drawn flat at this resolution instead of zoomed onto noise (a ±3 Pa
+#: wobble on 24 kPa would fill B5's panel).  1e-3 is finer than any
 #: agreement bound the drivers report (the tests' bounds are 1e-2 and up).
 PLOT_MIN_Y_SPAN = 1e-3
 
@@ -269,7 +267,7 @@ PLOT_MIN_Y_SPAN = 1e-3
 #: most 1e-11 of max |A|, far below RESIDUAL_FAIL.
 SYMMETRIC_TO_ROUNDOFF = 1e-13
 
-# ----- solve health (issue 14): one policy for every method ------------------
+# ----- solve health: one policy for every method ------------------------------
 
 #: A solve (linear, or a Newton step's) succeeds only if its relative residual
 #: rho = ||b - A x||_inf / max(||b||_inf, F) (F the internal forces of a Newton
@@ -285,7 +283,7 @@ SYMMETRIC_TO_ROUNDOFF = 1e-13
 #: free).  Plane strain, nu = 0.4999999 (lambda/mu = 5e6): 2.3e-6 (fe),
 #: 1.8e-6 (xfem).  The patch (h = 0.1): up to 5.2e-7 for a <= 1e8, 1.5e-5..
 #: 4.3e-5 at a = 1e10 (k_N), 1.4e-6..2.5e-6 at E+/E- = 1e8.  Singular
-#: systems give 0.09 to 1.0 (issue 14) while their backward error is 1e-16
+#: systems give 0.09 to 1.0 while their backward error is 1e-16
 #: or less, so the backward error cannot decide.  1e-5 accepts every solve
 #: measured good, including the locking-prone nu above, and refuses every
 #: singular or nearly free one (>= 1e-4); springs beyond ~1e10 E/h and
@@ -338,8 +336,7 @@ SPRING_ENTRY_MAX = 4.5e10
 #: points) for dmax 1.25 / 1.5 / 2 / 3 / 4: circular supports 2.4e-4 /
 #: 3.3e-5 / 1.9e-5 / 3.3e-5 / 2.5e-5, rectangular 1.9e-4 / 7.5e-5 / 1.8e-5
 #: / 6.8e-5 / 1.9e-4: ten times the default's at 1.25 and at 4 (rectangular),
-#: within 4x of it from 1.5 to 3.  Stresses degrade sooner (a helper's
-#: audit): scene A, h = 0.05, median error of A1's σxy against fe P2 at
+#: within 4x of it from 1.5 to 3.  Stresses degrade sooner: scene A, h = 0.05, median error of A1's σxy against fe P2 at
 #: h = 0.025, linear basis, dmax 1.5 / 1.6 / 1.7 / 1.8 / 1.9 / 2: 7.4e-2 /
 #: 5.4e-2 / 3.0e-2 / 1.8e-2 / 6.8e-3 / 7.2e-4 (ten times the default's at
 #: 1.9, a hundred at 1.5); quadratic basis, dmax 2.4 / 2.7 / 2.85 / 3:
@@ -348,8 +345,8 @@ DMAX_WARN_RANGE = {1: (0.95, 1.5), 2: (0.75, 1.5)}
 
 #: EFGM warns when a node's support radius is below this fraction of the
 #: background cells (the median node spacing): a cluster of nodes finer than
-#: the cells is under-integrated by the cells' Gauss rule.  Measured (a
-#: helper's audit): scene A, a 21 × 21 grid plus a cluster spaced 0.01 (the
+#: the cells is under-integrated by the cells' Gauss rule.  Measured on
+#: scene A: a 21 × 21 grid plus a cluster spaced 0.01 (the
 #: grid's 0.05), largest stress error in the cluster against fe P2, over
 #: 1e5 Pa: 9.5e-4 for the grid alone, 8.6e-2 with the cluster (default
 #: Gauss rule), 3.3e-2 with 12 × 12 points, 9.4e-3 with 24 × 24.  A grid at
@@ -358,8 +355,8 @@ SUPPORT_CELL_WARN = 1.0
 
 #: A fitted mesh (fe) warns when its circular Γ has fewer segments than
 #: this: fe P1 on scene B with R = 0.02 (gmsh's 7 segments at h = 0.05 and
-#: 0.025 alike) carried 0.90 of the torque's mean t_T at both h (a helper's
-#: fourth audit; xfem 0.9999996, fe P2 0.9987); a 16-gon is 0.6 % shorter
+#: 0.025 alike) carried 0.90 of the torque's mean t_T at both h (xfem
+#: 0.9999996, fe P2 0.9987); a 16-gon is 0.6 % shorter
 #: than its circle, a 7-gon 3.3 %.
 CIRCLE_SEGMENTS_WARN = 16
 
@@ -367,8 +364,7 @@ CIRCLE_SEGMENTS_WARN = 16
 
 #: A run warns when its h leaves fewer cells than this across the domain's
 #: smallest dimension: a profile is then sampled from a handful of
-#: polynomials (issue 23: h = 10 on the unit square gave σxx 0.02 Pa for
-#: 4e4 Pa; h above the dimension itself is refused).
+#: polynomials (h = 10 on the unit square gives σxx 0.02 Pa for 4e4 Pa; h above the dimension itself is refused).
 MIN_CELLS_ACROSS = 4
 
 #: A circle (rod or disc) meshed by gmsh must have a radius of at least this

@@ -1,4 +1,4 @@
-"""EFGM spread over the ranks of an MPI communicator (issue 16, item 3).
+"""EFGM spread over the ranks of an MPI communicator.
 
 Under ``mpirun -n N`` every rank builds the same node set, supports,
 enrichment and quadrature rules (geometry only, the same on each), then

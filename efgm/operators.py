@@ -34,11 +34,11 @@ from .shape import CHUNK, MLS, ShapeValues, matmul, parallel_map
 #: each body keeps its own field.  An enriched function lives only in the
 #: lens between Γ and the edge of the support, where the weight is at most
 #: w(1 − δ) ≈ 2δ³ of its peak: its unknown is set by that lens alone, and
-#: the thinner the lens the worse (issue 22: a lens h/32 deep, δ = 0.015,
-#: put σxy on Γ 35 % off).  Measured over 24 seeded inclined placements of
+#: the thinner the lens the worse (a lens h/32 deep, δ = 0.015, puts σxy
+#: on Γ 35 % off).  Measured over 24 seeded inclined placements of
 #: scene A (tests/inclined_efgm.py), worst sample of any profile against
 #: fe P2 at h/2, linear / quadratic basis at h = 0.05: enriching every node
-#: whose support holds a point across Γ (the old 1e-9 rule) 4.0 / 2.8;
+#: whose support holds a point across Γ (δ = 1e-9) 4.0 / 2.8;
 #: with visibility, δ = 0.1: 0.16 / 0.12, 0.2: 0.12 / 0.13, 0.25: 0.11 /
 #: 0.091, 0.4: 0.12 / 0.11 (the rest is resolution near Γ's ends: the
 #: same placement at h = 0.025 is 0.019).  δ = 0 leaves free unknowns.

@@ -120,8 +120,7 @@ def _shifted(y):
 #: - the top pulled up off the fixed bottom, unilateral (Γ opens by it);
 #: - both edges moved by one vector, unilateral or coulomb: Γ stays closed
 #:   at zero pressure, its gaps pure round-off, so its points change status
-#:   at every solve (refused once by a Newton that waited for a settled
-#:   status; a helper's audit);
+#:   at every solve (a Newton that waits for a settled status refuses it);
 #: - both edges clamped, a side traction ramped, reversed and brought back
 #:   to zero along the path (refused by every method: "relative residual
 #:   1.00e+00" against forces of round-off).
@@ -254,12 +253,12 @@ def test_output_for_every_law(tmp_path, disc, law):
     assert "interface.pvd" in written and len(steps) == (scene.increments if scene.law.has_history else 1)
     last = meshio.read(tmp_path / sorted(n for n in written if n.startswith("interface_"))[-1])
     for k, col in (("gN", steps[-1].jump[:, 0]), ("tT", steps[-1].traction[:, 1])):
-        assert np.allclose(last.point_data[k], col, rtol=0, atol=1e-12 * max(np.abs(col).max(), 1e-300))
+        assert np.allclose(last.point_data[k], col, rtol=0, atol=tol.FIELD_FILE_RTOL * max(np.abs(col).max(), np.finfo(float).tiny))
     if disc.name != "efgm":
         body = meshio.read(tmp_path / "plus.vtu")
         inside = scene.body_of(body.points[:, :2], "plus") == 1
         u = result.fields.displacement(body.points[inside, :2], np.ones(inside.sum(), int))
-        assert np.allclose(body.point_data["u"][inside, :2], u, rtol=0, atol=1e-9 * np.abs(u).max())
+        assert np.allclose(body.point_data["u"][inside, :2], u, rtol=0, atol=tol.SAMPLE_ROUNDING_RTOL * np.abs(u).max())
 
 
 def test_progress_is_reported_per_increment_of_a_followed_path():

@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 from contactcore import CircleInterface, Disc, LAWS, LineInterface, Rectangle, load_scene, make_law
+import tolerances as tol
 
 
 def test_core_imports_no_dolfinx_nor_gmsh():
@@ -38,7 +39,7 @@ def test_normals_and_tangents():
     (Disc((0.0, 0.0), 1.0), LineInterface((0.0, 0.0), (1.0, 0.0)), np.pi / 2),
 ])
 def test_minus_area(domain, line, expected):
-    assert line.minus_area(domain) == pytest.approx(expected, rel=1e-12)
+    assert line.minus_area(domain) == pytest.approx(expected, rel=tol.MESH_SUMS)
 
 
 def test_points_on_gamma_take_the_requested_side():

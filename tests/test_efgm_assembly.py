@@ -75,11 +75,11 @@ def test_blocks_to_csr_sums_dense_blocks():
         keep = d >= 0
         np.add.at(dense, (d[keep][:, None], d[keep][None, :]), b[np.ix_(keep, keep)])  # a dof may repeat
     K = blocks_to_csr((9, 9), dofs, blocks)
-    assert np.allclose(K.toarray(), dense, rtol=0, atol=1e-14 * np.abs(dense).max())
+    assert np.allclose(K.toarray(), dense, rtol=0, atol=tol.SAME_SUMS * np.abs(dense).max())
     parts = [blocks_to_csr((9, 9), dofs[i:i + 7], blocks[i:i + 7]) for i in range(0, 20, 7)]
     total = sum_csr((9, 9), parts)
     assert total.has_sorted_indices and np.allclose(total.toarray(), dense, rtol=0,
-                                                    atol=1e-14 * np.abs(dense).max())
+                                                    atol=tol.SAME_SUMS * np.abs(dense).max())
     assert sum_csr((9, 9), []).nnz == 0 and isinstance(sum_csr((9, 9), []), sp.csr_matrix)
 
 

@@ -1,8 +1,8 @@
-"""EFGM under mpirun (issue 16, item 3): its cells, Γ's points and rows
-split over the ranks give the serial system and the serial run's files.
-Each parity case is a real ``mpirun`` of the command line
-(``tests/test_mpi.py``'s helpers); the system itself is compared, gathered,
-in a probe run under mpirun."""
+"""EFGM under mpirun: its cells, Γ's points and rows split over the ranks
+give the serial system and the serial run's files.  Each parity case is a
+real ``mpirun`` of the command line (``tests/test_mpi.py``'s helpers; scene
+A on two ranks is its test_every_method_on_two_ranks_gives_the_serial_profiles);
+the system itself is compared, gathered, in a probe run under mpirun."""
 import json
 
 import pytest
@@ -12,11 +12,6 @@ from test_mpi import _errors, _parity, mpirun
 
 #: h of every case: coarse, so that a case takes a few seconds.
 H = 0.1
-
-
-def test_efgm_on_two_ranks_gives_the_serial_profiles(tmp_path):
-    """Scene A (linear law): profiles within PARALLEL_PARITY of the serial run's."""
-    _parity(tmp_path, "A", 2, 1, H, methods=("efgm",))
 
 
 @pytest.mark.slow
@@ -148,4 +143,4 @@ def test_shapes_benchmark_splits_its_points_over_the_ranks(tmp_path):
         ("linear", "2", "1", "3000"), ("quadratic", "2", "1", "3000")]
     for row in rows:
         assert max(float(row[k]) for k in ("unity", "reproduction")) <= tol.SHAPE_ROUNDOFF
-        assert max(float(row[k]) for k in ("gradient_unity", "gradient_reproduction")) <= tol.SHAPE_ROUNDOFF * 10
+        assert max(float(row[k]) for k in ("gradient_unity", "gradient_reproduction")) <= tol.SHAPE_GRADIENT_ROUNDOFF

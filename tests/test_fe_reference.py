@@ -149,8 +149,8 @@ def test_interface_operator_equals_dolfinx_assembly(degree, angle):
 
 def test_a_circle_drawn_with_few_segments_is_warned():
     """A rod of R = 0.02 at h = 0.05: gmsh draws Γ with 7 segments at any h
-    above 2πR/7, so fe P1's interface forces stay 10 % off as h is refined
-    (a helper's fourth audit): the run says so; degree 2 (curved cells) and
+    above 2πR/7, so fe P1's interface forces stay 10 % off as h is refined:
+    the run says so; degree 2 (curved cells) and
     scene B's own rod do not warn."""
     from contactcore import CircleInterface, load_scene
     small = load_scene("B").with_changes(interface=CircleInterface((0.0, 0.0), 0.02))

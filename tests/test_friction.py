@@ -20,7 +20,7 @@ METHODS = ["fe", "xfem", "efgm"]
 
 # ----- the laws ---------------------------------------------------------------
 
-def _fd_tangent(law, g, state, eps=1e-9):
+def _fd_tangent(law, g, state, eps=tol.FD_STEP):
     """∂t/∂g by central differences, one point at a time."""
     out = np.zeros((len(g), 2, 2))
     for j in range(2):
@@ -40,7 +40,7 @@ def test_coulomb_return_map_and_consistent_tangent():
     assert np.allclose(r.traction, [[0, 0], [-2, 0.4], [-2, 1.0], [-2, -1.0]])
     # open: s follows g_T; stick: s unchanged; slip: k_T (g_T - s) = t_T
     assert np.allclose(r.state, [0.7, 0.0, 2.0, -2.0])
-    assert np.allclose(r.tangent, _fd_tangent(law, g, s), atol=1e-6)
+    assert np.allclose(r.tangent, _fd_tangent(law, g, s), atol=tol.FD_TANGENT)
     assert r.tangent[2, 1, 0] != r.tangent[2, 0, 1]  # slipping: not symmetric
 
 
@@ -58,7 +58,7 @@ def test_unilateral_opens_in_tension_and_matches_linear_when_closed():
     r = uni.evaluate(g)
     assert list(r.status) == [STICK, OPEN]
     assert np.allclose(r.traction[0], lin.evaluate(g[:1]).traction[0]) and np.all(r.traction[1] == 0)
-    assert np.allclose(r.tangent, _fd_tangent(uni, g, None), atol=1e-6)
+    assert np.allclose(r.tangent, _fd_tangent(uni, g, None), atol=tol.FD_TANGENT)
 
 
 @pytest.mark.parametrize("params,field", [
@@ -232,9 +232,9 @@ def test_a_soft_layer_under_a_stiff_one_answers_right_or_refuses(method, layered
 def test_a_rigidly_shifted_block_has_the_unshifted_answer(method, layered):
     """The layered closed form with both edges moved by tol.RIGID_SHIFT
     more (x): t_T and g_T are the closed form's at every increment.  EFGM
-    imposes supports by multiplier rows whose values, E·S, once counted
-    among the forces Newton's residual was judged against: it accepted
-    stick/slip splits 0.30 of μp off (a helper's audit)."""
+    imposes supports by multiplier rows whose values, E·S, are data, not
+    forces: judged among the forces, Newton's residual would accept
+    stick/slip splits 0.30 of μp off."""
     from contactcore import Support
 
     top = layered.scene.supports[1]
@@ -250,7 +250,8 @@ def test_the_closed_form_matches_its_scene_inputs(layered):
     increment (the file was written from it)."""
     for k, st in enumerate(layered.history(), 1):
         loads, _ = layered.scene.factors(k)
-        assert np.isclose(loads[2] * layered.scene.loads[2].value[1], st.tau, rtol=1e-12, atol=1e-6)
+        assert np.isclose(loads[2] * layered.scene.loads[2].value[1], st.tau, rtol=tol.SCENE_FILE_RTOL,
+                          atol=tol.SCENE_FILE_ATOL)
 
 
 def _profiles(scene, method, h):

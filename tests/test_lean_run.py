@@ -38,8 +38,8 @@ def _run(method, scene, h=0.2):
 @pytest.mark.parametrize("method", ["fe", "xfem", "efgm"])
 def test_a_law_without_history_is_solved_once(method, factorisations):
     """Scene A, unilateral law, proportional load over 20 increments: at most
-    3 linear solves (Newton from the unloaded state at the final load; 20
-    before issue 24: factorisations no longer tell, since a path with an
+    3 linear solves (Newton from the unloaded state at the final load, not
+    one per increment; factorisations would not tell, since a path with an
     unchanged tangent reuses its factorisation), the factorisations counted
     at the solver as reported."""
     scene = _unilateral_A()

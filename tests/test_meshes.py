@@ -11,6 +11,7 @@ import meshes
 from contactcore import load_scene
 from verification.closed_forms import pressurised_rod
 from xdolfinx.fitted_mesh import fitted_mesh
+import tolerances as tol
 
 
 def _measure(fm, integral, tag):
@@ -33,7 +34,7 @@ def test_tags_areas_and_lengths(order, rel):
     assert _measure(fm, "dx", meshes.BODY["plus"]) == pytest.approx(6.0 - np.pi * R ** 2, rel=rel)
     assert _measure(fm, "dS", meshes.INTERFACE) == pytest.approx(2 * np.pi * R, rel=rel)
     for name, length in (("left", 3.0), ("right", 3.0), ("bottom", 2.0), ("top", 2.0)):
-        assert _measure(fm, "ds", meshes.BOUNDARY[name]) == pytest.approx(length, rel=1e-12)
+        assert _measure(fm, "ds", meshes.BOUNDARY[name]) == pytest.approx(length, rel=tol.MESH_SUMS)
 
 
 def test_inclined_line_and_disc_domain():
@@ -47,10 +48,10 @@ def test_inclined_line_and_disc_domain():
         patch.scene.interface.minus_area(patch.scene.domain), rel=1e-12)
     rod = pressurised_rod().scene
     fm = fitted_mesh(rod, 0.1, order=2)
-    assert _measure(fm, "ds", meshes.BOUNDARY["outer"]) == pytest.approx(2 * np.pi, rel=1e-5)
+    assert _measure(fm, "ds", meshes.BOUNDARY["outer"]) == pytest.approx(2 * np.pi, rel=tol.CURVED_RIM_LENGTH)
     x = fm.mesh.geometry.x[:, :2]
     for pin in rod.pins:  # pins are mesh vertices
-        assert np.min(np.linalg.norm(x - np.asarray(pin.point), axis=1)) < 1e-12
+        assert np.min(np.linalg.norm(x - np.asarray(pin.point), axis=1)) <= tol.PIN_AT_VERTEX
 
 
 def test_grading_refines_towards_gamma():

@@ -7,6 +7,7 @@ import pytest
 from contactcore import tolerances as ctol
 from contactcore.collective import SERIAL
 from contactcore.recovery import PatchRecovery
+import tolerances as tol
 
 N = 8  # cells per side
 
@@ -44,7 +45,7 @@ def test_a_quadratic_field_is_reproduced_exactly(field):
     _, centroids = _grid()
     points = centroids[cells] + rng.uniform(-0.5, 0.5, (200, 2))
     got = recovery.at(rows[cells], points)
-    assert np.max(np.abs(got - field(points))) <= 1e-10 * np.max(np.abs(field(points)))
+    assert np.max(np.abs(got - field(points))) <= tol.RECOVERY_EXACT * np.max(np.abs(field(points)))
 
 
 def test_a_patch_too_small_for_a_line_gives_nan():
@@ -66,7 +67,7 @@ def test_a_body_sees_only_its_own_cells():
         recovery, rows = _recovery(field, mine)
         cells = np.flatnonzero(mine)
         got = recovery.at(rows[cells], centroids[cells])
-        assert np.max(np.abs(got - field(centroids[cells]))) <= 1e-10 * np.max(np.abs(field(centroids[cells])))
+        assert np.max(np.abs(got - field(centroids[cells]))) <= tol.RECOVERY_EXACT * np.max(np.abs(field(centroids[cells])))
 
 
 def test_the_patch_is_the_rings_around_a_cell():

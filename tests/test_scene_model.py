@@ -13,6 +13,7 @@ from contactcore import (CircleInterface, LineInterface, Rectangle, SceneError, 
                          scene_from_dict, scene_text)
 from contactcore.profiles import sample_points
 from contactcore.scene import Torque, Traction
+import tolerances as tol
 
 
 def test_builtin_scenes_are_the_papers_three_and_the_friction_cases():
@@ -55,7 +56,7 @@ def test_profile_sampling_follows_scenes_md():
     s = load_scene("B")
     seg, pts, param = sample_points(s, s.profiles[0])
     assert len(pts) == 101 and param == "arclength"
-    assert np.isclose(pts[0, 0], -1.0 + 2e-9) and np.isclose(pts[-1, 0], 1.0 - 2e-9, rtol=0, atol=1e-15)
+    assert np.isclose(pts[0, 0], -1.0 + 2e-9) and np.isclose(pts[-1, 0], 1.0 - 2e-9, rtol=0, atol=tol.COORDINATE_ROUNDOFF)
     theta, pts, param = sample_points(s, s.profiles[4])
     assert param == "angle" and theta[0] == 0.0 and np.isclose(theta[-1], 2 * np.pi * (1 - 1e-9))
     assert np.allclose(np.hypot(pts[:, 0], pts[:, 1]), 0.25)
@@ -193,8 +194,8 @@ def test_inclined_line_is_accepted_and_normalised(scene_dict):
     s = scene_from_dict(data)
     assert math.isclose(math.hypot(*s.interface.normal), 1.0)
     a, b = s.interface.chord(s.domain)
-    assert np.allclose(s.interface.phi([a, b]), 0.0, atol=1e-15)
-    assert np.allclose(s.domain.distance_to_boundary([a, b]), 0.0, atol=1e-15)
+    assert np.allclose(s.interface.phi([a, b]), 0.0, atol=tol.COORDINATE_ROUNDOFF)
+    assert np.allclose(s.domain.distance_to_boundary([a, b]), 0.0, atol=tol.COORDINATE_ROUNDOFF)
 
 
 def test_invalid_toml_is_named(tmp_path):

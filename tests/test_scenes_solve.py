@@ -11,7 +11,7 @@ from xdolfinx import conforming
 def _profiles(name, h, degree=1):
     scene = load_scene(name)
     result = conforming.solve(scene, h, degree=degree)
-    assert result.dofs > 0 and result.solver.backward_error < 1e-12
+    assert result.dofs > 0 and result.solver.backward_error < tol.BACKWARD_STABLE_SCENES
     return scene, result, {p.id: p.columns for p in sample_profiles(scene, result.fields, result.interface)}
 
 

@@ -82,7 +82,7 @@ def assert_same_profiles(method, name, length=1.0, shift=(0.0, 0.0), stress=(1.0
     scene, other = solved(method, name, length, shift, stress, stiffness)
     for p0, p in zip(sample_profiles(base_scene, base.fields, base.interface),
                      sample_profiles(scene, other.fields, other.interface)):
-        assert np.allclose(p.columns["x"], length * p0.columns["x"] + shift[0], rtol=1e-12, atol=0)
+        assert np.allclose(p.columns["x"], length * p0.columns["x"] + shift[0], rtol=ttol.PLACEMENT_RTOL, atol=0)
         for q in p0.columns:
             if q in ("s", "x", "y"):
                 continue
@@ -142,9 +142,9 @@ def test_discretisation_in_user_units():
     """The same mesh at every scale, and h reported in the user's units."""
     (_, base), (_, um) = solved("fe", "A"), solved("fe", "A", 1e-6)
     assert um.discretisation["cells"] == base.discretisation["cells"]
-    assert um.discretisation["h"] == pytest.approx(1e-6 * H, rel=1e-12)
-    assert np.allclose(um.interface.points, 1e-6 * base.interface.points, rtol=0, atol=1e-18)
-    assert np.allclose(um.interface.final.traction, base.interface.final.traction, rtol=1e-9)
+    assert um.discretisation["h"] == pytest.approx(1e-6 * H, rel=ttol.PLACEMENT_RTOL)
+    assert np.allclose(um.interface.points, 1e-6 * base.interface.points, rtol=ttol.PLACEMENT_RTOL, atol=0)
+    assert np.allclose(um.interface.final.traction, base.interface.final.traction, rtol=ttol.UNITS_TRACTION)
 
 
 def test_field_mesh_in_user_units():
@@ -153,8 +153,8 @@ def test_field_mesh_in_user_units():
     scene, res = solved("fe", "A", shift=(1e3, -7e2))
     body = body_mesh(res.fields, 1)
     x = body.points[:, :2]
-    assert np.allclose([x[:, 0].min(), x[:, 1].min()], [1e3, -7e2 + 0.5], atol=1e-9)
-    assert np.allclose(x.max(axis=0), [1e3 + 1, -7e2 + 1], atol=1e-9)
+    assert np.allclose([x[:, 0].min(), x[:, 1].min()], [1e3, -7e2 + 0.5], atol=ttol.SHIFTED_COORDINATES)
+    assert np.allclose(x.max(axis=0), [1e3 + 1, -7e2 + 1], atol=ttol.SHIFTED_COORDINATES)
     assert np.allclose(body.u, res.fields.displacement(x, np.ones(len(x), int)))
 
 
@@ -164,9 +164,9 @@ def test_dimensionless_scene_is_the_same_at_every_scale():
     for b in (in_units(a, 1e-6), in_units(a, 1e6, (3e6, 1e6)), in_units(a, stress=(1.0, 7.0))):
         da, db = Scales.of(a).scene(a), Scales.of(b).scene(b)
         assert da.domain == db.domain == Rectangle((0.0, 0.0), (2 / 3, 1.0))
-        assert np.allclose(db.interface.centre, da.interface.centre, rtol=1e-14)
-        assert db.law.kN == pytest.approx(da.law.kN, rel=1e-14)
-        assert db.loads[0].value == pytest.approx(da.loads[0].value, rel=1e-14)
+        assert np.allclose(db.interface.centre, da.interface.centre, rtol=ttol.DIMENSIONLESS_ROUNDOFF)
+        assert db.law.kN == pytest.approx(da.law.kN, rel=ttol.DIMENSIONLESS_ROUNDOFF)
+        assert db.loads[0].value == pytest.approx(da.loads[0].value, rel=ttol.DIMENSIONLESS_ROUNDOFF)
         assert db.materials["plus"].E == 1.0
 
 

@@ -50,15 +50,16 @@ def test_twisted_rod_is_the_exact_solution():
     r, d = 0.2, 1e-5
     srt = lambda r, body: case.stress(np.array([[r, 0.0]]), np.array([body]))[0, 2]  # σ_rθ = σxy on the x axis
     div = (srt(r + d, 0) - srt(r - d, 0)) / (2 * d) + 2 * srt(r, 0) / r
-    assert abs(div + torque / (np.pi * a ** 4 / 2) * r) <= 1e-6 * abs(div)
-    assert abs(case.displacement(np.array([[b, 0.0]]), np.array([1]))).max() <= 1e-15
+    assert abs(div + torque / (np.pi * a ** 4 / 2) * r) <= tol.CLOSED_FORM_EQUILIBRIUM * abs(div)
+    assert abs(case.displacement(np.array([[b, 0.0]]), np.array([1]))).max() <= tol.CLOSED_FORM_CONDITIONS * abs(case.displacement(np.array([[a, 0.0]]), np.array([1]))).max()
     jump = (case.displacement(np.array([[a, 0.0]]), np.array([1])) - case.displacement(np.array([[a, 0.0]]),
                                                                                        np.array([0])))[0, 1]
-    assert abs(srt(a, 1) - kT * jump) <= 1e-9 * abs(srt(a, 1)) and abs(srt(a, 0) - srt(a, 1)) <= 1e-9 * abs(srt(a, 0))
+    assert abs(srt(a, 1) - kT * jump) <= tol.CLOSED_FORM_CONDITIONS * abs(srt(a, 1))
+    assert abs(srt(a, 0) - srt(a, 1)) <= tol.CLOSED_FORM_CONDITIONS * abs(srt(a, 0))
 
 
 def test_the_closed_table_gives_the_last_step_beside_the_fitted_rate():
-    """EFGM's twisted-rod errors (a helper's audit): the fitted slope reads
+    """EFGM's twisted-rod errors: the fitted slope reads
     3.11 against an expected 3, the steps 4.55, 2.70, 2.21; the table's
     last step says 2.21. A ladder at round-off or with a refused rung has
     no step rate either."""
@@ -133,9 +134,9 @@ def test_study_goes_on_after_a_failed_point(tmp_path):
 
 @pytest.mark.parametrize("first", ["angle", "offset"])
 def test_a_study_point_is_the_same_whatever_the_order_of_its_parameters(first):
-    """A parameter that moves Γ, given before another, used to fail the
-    point: the partly changed scene was checked with the scene's own
-    profiles, which no longer lay on Γ (a helper's fourth audit)."""
+    """A parameter that moves Γ, given before another, gives the same
+    point: the partly changed scene is not checked against the scene's own
+    profiles, which need not lie on the moved Γ."""
     from verification.study import scene_at
     value = {"angle": 20.0, "offset": 0.1}[first]
     a = scene_at(load_scene("A"), {first: value, "kT": 1e7})

@@ -1,13 +1,10 @@
-"""XFEM's unknowns (issue 24, item 3): the standard ones of dolfinx's vector
+"""XFEM's unknowns: the standard ones of dolfinx's vector
 space and two per enriched node, nothing fixed for being unused, and one
 numbering of the enriched blocks shared by the matrix, the interface
 operator and the fields.
 
-That the answers did not change is checked by the patch and cross-method
-tests of tests/test_xfem.py, test_xfem_inclined.py and test_xfem_nodes.py;
-against the former 4-per-node layout, the bulk matrix, loads and interface
-operator on the free unknowns were bit-identical (permuted), measured on
-scenes A, B, C (issue 24 report)."""
+The answers themselves are checked by the patch and cross-method tests of
+tests/test_xfem.py, test_xfem_inclined.py and test_xfem_nodes.py."""
 import numpy as np
 import pytest
 from dolfinx import geometry

@@ -21,8 +21,8 @@ from xdolfinx import conforming, xfem
 H = 0.025
 #: the issue's geometry, then 23 seeded draws (the EFGM tests' list)
 PLACEMENTS = [(20.0, 0.4)] + seeded_inclined(23)
-#: by default: the issue's geometry, and the draws that were worst before
-#: the fix (index 3: P2 quads 2.5 %; 21: P2 triangles 71x; 12: P2
+#: by default: the issue's geometry, and the draws that are hardest for the
+#: enrichment and sliver rules (index 3: P2 quads 2.5 %; 21: P2 triangles 71x; 12: P2
 #: triangles 85 %, a node whose gradient reached across a corner h/2500 deep;
 #: 16: P1 quads 0.75), and the worst P1 draws with the stress recovered (9:
 #: triangles 0.124; 5: quads 0.076) and read from the cell's own field

@@ -6,7 +6,7 @@ A body's points that fall in a sliver of a cut cell (Γ passes a node at
 on Γ and off it, must then agree with fe P2 at h/2.  Scene A with a straight
 Γ along a node row (and so along the cells' edges) and 1e-12 h, 1e-6 h off
 it is checked too on quads, P2: 0.020 on the row, 0.045 at 1e-6 h below it
-(0.12-0.16 before issue 22's sliver evaluation, 4e4 before issue 19's; P1
+(0.12-0.16 with a sliver's points evaluated in the sliver's own cell; P1
 quads give 0.23-0.26 and triangles 0.08-0.67 in σxx on y = 1, away from Γ:
 the coarse cells' own error at h = 0.05).  The pressurised rod's
 rate with nodes on Γ is checked by tests/test_xfem.py (R = 0.4 is a multiple

@@ -43,6 +43,8 @@ FALSE_TN = {1: 3e-2, 2: 2e-2}
 #: Shape functions: partition of unity and linear reproduction, values and
 #: gradients, hold to round-off: measured ≤ 8e-14 on grids and perturbed sets.
 SHAPE_ROUNDOFF = 1e-12
+#: Their gradients scale as 1/h (h = 0.1 on the grids tested): ten times more.
+SHAPE_GRADIENT_ROUNDOFF = 10 * SHAPE_ROUNDOFF
 
 #: EFGM interface patch test.  MLS functions are rational, so Gauss
 #: quadrature leaves an error: measured with 6×6 points (the linear basis's
@@ -53,10 +55,10 @@ SHAPE_ROUNDOFF = 1e-12
 #: the quadrature's and not the method's: by GAIN per doubling, over two
 #: doublings (6 → 24, 100x) for the linear basis and one (8 → 16, 2.5x;
 #: measured 3.6x–14x in u, 2.9x–18x in σ) for the quadratic one, whose 8×8
-#: rule is already closer to converged.  Two doublings for linear: since
-#: issue 22's enrichment (a node enriched only when its support crosses Γ by
-#: a quarter of its reach) the 6-point error is smaller (30°: 1.8e-5 in u,
-#: 8.8e-4 in σ, against 3.3e-5 and 2.2e-2 before), so the first doubling
+#: rule is already closer to converged.  Two doublings for linear: with its
+#: enrichment (a node enriched only when its support crosses Γ by a quarter
+#: of its reach) the 6-point error is small (30°: 1.8e-5 in u, 8.8e-4 in
+#: σ, against 3.3e-5 and 2.2e-2 enriching every node that reaches Γ), so the first doubling
 #: gains less (7.3x in u, 4.5x in σ) while the error keeps falling: 6 / 12 /
 #: 18 / 24 points give u 1.8e-5 / 2.5e-6 / 1.3e-7 / 8.0e-8 (230x), σ 8.8e-4
 #: / 2.0e-4 / 1.5e-5 / 5.0e-6 (175x); at −65°: 350x and 600x.  The dilation
@@ -97,8 +99,7 @@ EFGM_DILATION_SIGMA = 1e-1
 #:   xfem P2 interface ≤ 1.1e-4, interior ≤ 1.7e-2, edge ≤ 1.4e-2;
 #:   efgm    interface ≤ 3e-4, interior ≤ 1.1e-2, edge ≤ 4.3e-2 (collocated
 #:           supports and corners dominate).
-#: (xfem P1 above: before issue 22 recovered its stress, contactcore.recovery;
-#: since, measured: interior ≤ 4.8e-2 (B), edge ≤ 8.1e-2 (B2), interface ≤
+#: (xfem P1 with its stress recovered, contactcore.recovery, measured: interior ≤ 4.8e-2 (B), edge ≤ 8.1e-2 (B2), interface ≤
 #: 8.8e-3 (C4): the bounds still hold, tests/test_agreement.py.)
 #: Bounds are about 2x those: a sign or factor error is O(1).  "zero" is
 #: scene B's t_N and g_N against the scale of t_T and g_T (FALSE_TN).
@@ -212,9 +213,9 @@ SAMPLE_ROUNDING_RTOL = 1e-9
 # ----- PETSc objects and solvers (test_petsc.py) -----------------------------
 
 #: Growth of resident memory allowed over 30 MUMPS factor-and-solve cycles of
-#: the 4 900-unknown Laplacian, after one warm-up solve.  The factor handle
-#: that outlived its KSP (the bug of issue 23) leaked 2.4 MB a cycle, 71 MB
-#: over the cycles (measured with the old linear_solver); fixed: < 0.1 MB.
+#: the 4 900-unknown Laplacian, after one warm-up solve.  A factor handle
+#: that outlives its KSP leaks 2.4 MB a cycle, 71 MB over the cycles
+#: (measured); released in order: < 0.1 MB.
 #: 8 MB is about three leaked factors: room for the allocator, not for a leak.
 MEMORY_CYCLE_GROWTH_MB = 8.0
 
@@ -259,8 +260,9 @@ XFEM_NODE_AGREE = {1: 0.16, 2: 0.05}
 #: recovered (contactcore.recovery, tolerances.RECOVERY_RINGS): quads 0.076, triangles 0.124
 #: (σxy on Γ, in cut cells whose part is thin); read from the cell's own
 #: field it was 0.29 and 0.31 (fe P1 at the same h: 0.18), the cut part's
-#: centroid up to 0.7 h off Γ where σ varies steeply across it.  Before
-#: issue 22's sliver fixes: quads P1 0.75, triangles P2 71x.
+#: centroid up to 0.7 h off Γ where σ varies steeply across it.  Without
+#: the sliver rules (MIN_CUT_FRACTION, SLIVER_EVAL_DEPTH): quads P1 0.75,
+#: triangles P2 71x.
 XFEM_INCLINED_AGREE = {("quad", 1): 0.15, ("triangle", 1): 0.15, ("quad", 2): 0.02, ("triangle", 2): 0.02}
 #: The same measure on two off-centre rods in scene C, at the issue's (and
 #: the inclined Γ's) h = 0.025 against fe P2 at h/2: measured (rod 1 / rod
@@ -421,3 +423,129 @@ EFFECTIVITY_OUTSIDE = {
 #: 1, 2, 12: xfem P2 ≤ 0.07 %, xfem P1 ≤ 2.5 % (second difference 4.6 %),
 #: efgm P1 ≤ 0.35 %, efgm P2 1.9–3.9 % (above its bound).
 NITSCHE_CUT_AGREE = {1: 0.15, 2: 0.02}
+
+# ----- exact computations: their round-off, and the tests' own arithmetic ----
+# (ε = 2.2e-16, double precision; each bound leaves a margin of 10-1000x over
+# the arithmetic it bounds, and stays far below any modelling error)
+
+#: The same entries summed in another order (blocks scattered into CSR
+#: against numpy's add.at into a dense matrix): each entry a sum of a few
+#: terms, off by a few ε of the largest entry.
+SAME_SUMS = 1e-14
+
+#: Quantities of order 1 computed in a few operations (a profile's end
+#: points, a chord's ends on φ = 0 and on the boundary): a few ε.
+COORDINATE_ROUNDOFF = 1e-15
+
+#: A scene mapped to its dimensionless form from other units: one division
+#: per quantity, a few ε relative.
+DIMENSIONLESS_ROUNDOFF = 1e-14
+
+#: XFEM's kernels with no node enriched against dolfinx's assembly of the
+#: same form: the cut cells' sub-cell rules integrate the same polynomials
+#: exactly, so the matrices differ by the round-off of summing over up to a
+#: few dozen sub-cell points per cell, of ‖K‖.
+KERNELS_VS_DOLFINX = 1e-13
+
+#: Areas and lengths summed over the cells of a mesh (100-2000 cells: a few
+#: hundred ε of the total).
+MESH_SUMS = 1e-12
+
+#: The length of a disc's rim (radius 1) meshed with second-order cells at
+#: h = 0.1: each curved edge is the circle's quadratic interpolant, whose
+#: length is off by O(h⁴) ≈ 1e-4 of an edge's and less once summed with
+#: alternating signs; 1e-5 of 2π holds it and fails a straight rim (0.2 %).
+CURVED_RIM_LENGTH = 1e-5
+
+#: The backward error ‖b − A x‖/(‖A‖‖x‖ + ‖b‖) of a direct solve (MUMPS,
+#: SuperLU) of the small systems of these tests: a backward-stable
+#: factorisation gives a few ε; above 1e-14 something other than round-off
+#: (a lost pivot, a wrong option) spoiled the solve.
+BACKWARD_STABLE = 1e-14
+
+#: The same measure for the scenes' fe systems (1e3-1e5 unknowns): ε times
+#: a growth factor of the order of the rows' fill.
+BACKWARD_STABLE_SCENES = 1e-12
+
+#: The 36-unknown Laplacian (condition ≈ 20) solved by a direct solver:
+#: its residual A x − b is a few ε of ‖b‖ = 1.
+SMALL_SOLVE_RESIDUAL = 1e-12
+
+#: The constructed null-space case of test_health: x is shifted by 1e20
+#: along the null space, so its backward error is at most ε ‖b‖/(‖A‖‖x‖) ≈
+#: 1e-36 (below NULL_SPACE_BACKWARD) while its relative residual is of
+#: order 1 (above NULL_SPACE_RESIDUAL): the backward error cannot tell.
+NULL_SPACE_BACKWARD = 1e-16
+NULL_SPACE_RESIDUAL = 0.1
+
+#: The residual a converged linear run reports (scene A, h = 0.2, one
+#: solve): round-off of the solve, far below the health policy's
+#: RESIDUAL_FAIL (1e-5), so a run that passed near the policy's limit shows.
+CONVERGED_RUN_RESIDUAL = 1e-6
+
+#: fe P1 at h = 0.2 against its P2 reference at h = 0.1 (scene A): an O(h)
+#: error of a few per cent of the scale; above this floor, the efficiency
+#: table measured an error, not a zero.
+COARSE_ERROR_FLOOR = 1e-3
+
+#: The stress of XFEM's interface patch against the closed form, relative:
+#: the gradient of the round-off that XFEM_PATCH bounds in u, amplified by
+#: 1/h (h = 0.1).
+XFEM_PATCH_STRESS = 10 * XFEM_PATCH
+
+#: XFEM's patch error in u where Γ leaves a sliver of a cell (fraction f of
+#: it) may grow with f (a node left unenriched carries its own side's value
+#: across the sliver, MIN_CUT_FRACTION): at most this many times f.
+SLIVER_ERROR_PER_FRACTION = 100.0
+
+#: The condition estimate with a sliver of any fraction against the mesh
+#: with Γ through the cells' middle: the enrichment rule keeps slivers'
+#: unknowns out, so it stays within this factor.
+SLIVER_CONDITION_GROWTH = 3.0
+
+#: An MLS basis reproduces the patch's linear field exactly: what is left is
+#: the round-off of solving the moment matrices (condition up to ~1e9 near
+#: a support's edge), of the field's scale.
+MLS_REPRODUCTION = 1e-6
+
+#: Zienkiewicz-Zhu's patch recovery reproduces a quadratic exactly: its
+#: least squares (normal equations, condition ~1e4 on the unit grids here)
+#: leave a few thousand ε of the field's scale.
+RECOVERY_EXACT = 1e-10
+
+#: Central differences of an interface law with step FD_STEP (relative to
+#: the jumps, of order 1): exact for a piecewise-linear law away from its
+#: kinks, up to the round-off ε |t| / FD_STEP ≈ 1e-7.
+FD_STEP = 1e-9
+FD_TANGENT = 1e-6
+
+#: The layered closed form's τ at each increment (μ p or the elastic
+#: trial, computed) against the side tractions its scene file states
+#: (±3e5 Pa times the path's factor): equal up to the arithmetic's
+#: round-off, and within 1e-6 Pa of a zero traction.
+SCENE_FILE_RTOL, SCENE_FILE_ATOL = 1e-12, 1e-6
+
+#: The closed forms' own checks: equilibrium by central differences of step
+#: 1e-5 r (truncation (1e-5)² ≈ 1e-10, round-off ε/1e-5 ≈ 2e-11 of σ);
+#: boundary and interface conditions, which the formulas meet exactly, to
+#: a few hundred ε.
+CLOSED_FORM_EQUILIBRIUM = 1e-6
+CLOSED_FORM_CONDITIONS = 1e-9
+
+#: A profile's abscissa and a mesh's spacing mapped to the user's units
+#: (x = o + L x'): a few ε relative.
+PLACEMENT_RTOL = 1e-12
+
+#: Mesh coordinates shifted by o ≈ 1e3 (scene A moved to (1e3, −7e2)): ε of
+#: the shift, 2e-13, with room for the dimensionless grid's rounding.
+SHIFTED_COORDINATES = 1e-9
+
+#: Tractions of one dimensionless solve read in micrometres: the same
+#: matrices and solve, mapped back by S; 1e-9 leaves room for the solver's
+#: round-off under a different right-hand side scaling.
+UNITS_TRACTION = 1e-9
+
+#: A pin embedded by gmsh is a mesh vertex at the pin's coordinates
+#: (embedding copies the point); dolfinx's geometry keeps them to the
+#: round-off of order-1 coordinates.
+PIN_AT_VERTEX = 1e-12

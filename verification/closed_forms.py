@@ -224,8 +224,8 @@ def twisted_rod(*, a: float = 0.4, b: float = 1.0, torque: float = 1e4, kN: floa
 
 @dataclass
 class QuadraticLayers:
-    """Two layers whose displacement is quadratic in each (issue 7's
-    degree-2 reproduction test).
+    """Two layers whose displacement is quadratic in each (a test that
+    degree 2 reproduces a quadratic field).
 
     On ``[0, 1]²`` with Γ at ``y = y_Γ`` (n = e_y, − below), one component
     ``j`` of u depends on y alone: the shear ``u = (w(y), 0)`` held by

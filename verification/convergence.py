@@ -56,8 +56,7 @@ def rate_of(hs, errors) -> float | str:
 def last_rate_of(hs, errors) -> float | str:
     """The slope between the two finest rungs, as :func:`rate_of` says
     otherwise: the fitted slope hides a rate that falls toward a floor (EFGM
-    on the twisted rod: fitted 3.11, its steps 4.55, 2.70, 2.21; a helper's
-    audit)."""
+    on the twisted rod: fitted 3.11, its steps 4.55, 2.70, 2.21)."""
     rate = rate_of(hs, errors)
     if isinstance(rate, str):
         return rate

@@ -12,8 +12,7 @@ repeated and its fastest repeat kept (:func:`verification.timing.fastest`).
 The reference and the rungs run in this process when their memory
 estimates (:mod:`contactcore.budget`), summed as if none were ever returned
 to the system, fit in the machine; otherwise each runs in a fresh process,
-whose memory goes back to the system when it ends (before the PETSc factor
-leak was fixed, one process running the full report grew past 17 GB).  The
+whose memory goes back to the system when it ends.  The
 log says which, and why (:func:`spawn_each`).  The rungs run on
 :mod:`verification.pool` (``--workers K``, by default one per core, or an
 mpi4py.futures pool): rungs measured beside each other share the cores and

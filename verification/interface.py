@@ -1,5 +1,5 @@
 """The interface's history, written and drawn: contact status, tractions and
-Newton iterations per increment (issue 6).
+Newton iterations per increment.
 
 ``DIR/<method>/increments.csv``  one row per converged (sub-)increment:
     iterations, final relative residual, open/stick/slip counts, mean and

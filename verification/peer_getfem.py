@@ -1,4 +1,4 @@
-"""GetFEM's level-set XFEM, the peer of issue 7's benchmark (not a method of ours).
+"""GetFEM's level-set XFEM, the peer of the benchmark (not a method of ours).
 
 GetFEM 5.4 (Debian's ``python3-getfem``) is what a user would otherwise pick
 for level-set XFEM, so the benchmark (``python -m verification benchmark``)

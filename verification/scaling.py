@@ -1,5 +1,5 @@
 """``python -m verification scaling``: strong scaling of one solve over
-mpirun's ranks (issue 15's benchmark).
+mpirun's ranks.
 
 For each rank count K in turn, ``mpirun -n K python -m verification timing
 ...`` runs the same ladder (its warm-up at the coarsest h, then each h),

@@ -1,5 +1,5 @@
 """``python -m verification shapes``: EFGM's shape functions with gradients,
-points per second (issue 16's benchmark).
+points per second.
 
 The node set is an ``n × n`` grid on the unit square, whose supports
 (``dmax · c_I``, :func:`efgm.nodes.support_radii`) are larger along the

@@ -62,7 +62,7 @@ DIAGONAL_PINS = ((0.3, 0.1), (0.7, 0.1))  # below a Γ along the diagonal y = x
 #: Spring factors α of k = α·E/h, contrasts E⁺/E⁻, sliver fractions f.
 PENALTY_FACTORS = tuple(float(f"1e{k}") for k in range(-3, 9))
 CONTRASTS = tuple(float(f"1e{k}") for k in range(-4, 5))
-#: The extremes of issue 14 on the (cheap, exact) patch: springs 1e-12..1e12
+#: The extremes of the solve-health policy on the (cheap, exact) patch: springs 1e-12..1e12
 #: E/h and contrasts 1e±12, each accurate, warned or refused with a reason.
 EXTREME_PENALTY_FACTORS = (1e-12, 1e-9, 1e-6) + PENALTY_FACTORS + (1e10, 1e12)
 EXTREME_CONTRASTS = (1e-12, 1e-8) + CONTRASTS + (1e8, 1e12)

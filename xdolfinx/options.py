@@ -21,7 +21,7 @@ class FE(Discretisation):
     """The conforming reference (:mod:`xdolfinx.conforming`): P``degree``
     triangles on a mesh that follows Γ; ``geometry_order`` defaults to the
     degree (second-order cells on a curved Γ); ``grading`` refines toward
-    Γ (:class:`meshes.Grading`); ``petsc_options`` override the MUMPS LU
+    Γ (:class:`meshes.Grading`); ``petsc_options`` override the MUMPS
     defaults; the condition estimate runs only with ``estimate_condition``;
     ``comm`` defaults to ``MPI.COMM_WORLD``."""
 
