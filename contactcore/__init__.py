@@ -7,7 +7,8 @@ neither dolfinx nor gmsh (numpy only).  One submodule,
 imports petsc4py and is never imported by this package itself.
 """
 from .errors import ContactError, DiscretisationError, SceneError, SolverError
-from .laws import LAWS, CoulombLaw, LinearLaw, UnilateralLaw, make_law
+from .enforcement import make_law
+from .laws import LAWS, CoulombLaw, LinearLaw, UnilateralLaw
 from .profiles import ProfileData, evaluate_quantities, sample_profile, sample_profiles
 from .result import Result, SolverReport, Timings
 from .scene import (BODIES, BodyForce, InterfaceProfile, LineProfile, Material, Pin, Pressure, Scene, Support,

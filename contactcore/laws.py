@@ -249,32 +249,3 @@ class CoulombLaw(_Law):
 LAWS = {law.name: law for law in (LinearLaw, UnilateralLaw, CoulombLaw)}
 
 InterfaceLaw = LinearLaw | UnilateralLaw | CoulombLaw
-
-#: How a scene's ``[interface.law]`` may be enforced (``enforcement``).
-ENFORCEMENTS = ("penalty", "exact")
-
-
-def make_law(params: dict, path: str = "interface.law"):
-    """The law named by ``params["type"]`` built from the other entries,
-    enforced as ``params["enforcement"]`` says (penalty by default; exact
-    laws and ``bonded``: :mod:`contactcore.exact`)."""
-    from . import exact  # it builds on these laws
-    if not isinstance(params, dict):
-        raise SceneError(path, "must be a table with a 'type' and the law's parameters")
-    known = [*LAWS, *exact.BONDED]
-    kind = params.get("type")
-    if kind is None:
-        raise SceneError(f"{path}.type", f"missing (one of: {', '.join(known)})")
-    if kind not in known:
-        raise SceneError(f"{path}.type", f"unknown interface law {kind!r} (known: {', '.join(known)})")
-    enforcement = params.get("enforcement", exact.default_enforcement(kind))
-    if enforcement not in ENFORCEMENTS:
-        raise SceneError(f"{path}.enforcement", f"must be one of {', '.join(ENFORCEMENTS)} (got {enforcement!r})")
-    params = {k: v for k, v in params.items() if k != "enforcement"}
-    if enforcement == "exact" or kind in exact.BONDED:
-        return exact.make_law(kind, enforcement, params, path)
-    if "stabilisation" in params:
-        raise SceneError(f"{path}.stabilisation", 'applies to enforcement = "exact" only (the penalty\'s springs '
-                         "are k_N, k_T)")
-    return LAWS[kind].from_params(params, path)
-

@@ -383,7 +383,7 @@ def _refusal(scene, system: ContactSystem, exc: SolverError) -> SolverError:
     if cause:
         return SolverError(f"scene {scene.name}: {cause}\n  ({health.headline(str(exc))}); lower ν or use plane "
                            "stress")
-    weights = getattr(system, "collective", SERIAL).gather(system.interface.weights)
+    weights = system.collective.gather(system.interface.weights)
     return SolverError(f"{exc}; {health.failure_hint(scene, weights)}")
 
 

@@ -25,7 +25,8 @@ from .elasticity import voigt_matrix
 from .errors import SceneError
 from .geometry import CircleInterface, Disc, Domain, Interface, LevelSetInterface, LineInterface, Rectangle
 from .exact import default_enforcement
-from .laws import InterfaceLaw, make_law
+from .enforcement import make_law
+from .laws import InterfaceLaw
 
 BODIES = tuple(b.label for b in Body)
 COMPONENTS = ("xy", "x", "y")

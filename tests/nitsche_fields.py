@@ -13,7 +13,7 @@ from __future__ import annotations
 import numpy as np
 
 from contactcore.discretisation import Resolution
-from contactcore.laws import make_law
+from contactcore.enforcement import make_law
 from contactcore.result import Timings
 
 

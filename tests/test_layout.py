@@ -1,8 +1,8 @@
 """The code's layout as a newcomer meets it: the import map points down
 (verification -> xdolfinx, efgm, meshes -> contactcore) with no circle, each
-file of xdolfinx holds one idea in a size one can read, the shared core
-reads what a ContactSystem declares, and every command-line option says
-what it does."""
+file of xdolfinx holds one idea in a size one can read, and the shared
+core reads what a ContactSystem declares (that every command-line option
+has a help line is tests/test_glance.py's)."""
 import ast
 import re
 from pathlib import Path
@@ -100,9 +100,3 @@ def test_the_core_reads_what_a_contact_system_declares():
              for m in re.finditer(r"getattr\((built\.)?system\b[^)]*\)", p.read_text())]
     assert found == []
 
-
-def test_every_command_line_option_says_what_it_does():
-    from verification.__main__ import _commands
-    silent = [(name, a.flags) for name, command in _commands().items() for a in command.args
-              if not a.options.get("help")]
-    assert silent == []
