@@ -169,9 +169,18 @@ DECISION_BAND = 1e-6
 #: times (to 1/256) until Armijo's rule ``‖R(u + αδu)‖₂ <= (1 − ARMIJO α)‖R(u)‖₂``
 #: holds.  ARMIJO = 1e-4 is the usual sufficient decrease (Nocedal & Wright,
 #: Numerical Optimization, §3.1); full steps are kept until a cycle, so the
-#: iterations of a path that does not cycle do not change.
+#: iterations of a path that does not cycle do not change.  A full step
+#: that passes is doubled while the merit keeps falling, at most
+#: LINE_SEARCH_EXPANSIONS times (to 1024): where every closed point of a
+#: body held by friction alone slips, its rotation has no stiffness and
+#: Newton solves with the stick stiffness there instead
+#: (contactcore.exact.NitscheInterface.regularised), a slope far steeper
+#: than the true one, whose full steps each covered ~4 % of the way (exact
+#: C-coulomb, fe P1, h = 0.1: 25 iterations without converging; with the
+#: doubling, the increment converges).
 LINE_SEARCH_HALVINGS = 8
 ARMIJO = 1e-4
+LINE_SEARCH_EXPANSIONS = 10
 
 #: Symmetric Nitsche's stabilisation (contactcore.exact): γ = β γ₀ at each
 #: point of Γ, γ₀ = 2|Γ^e| / Σ_k (|Ω_k^e|/E_k) from the method (~2E/h on
