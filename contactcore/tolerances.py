@@ -310,7 +310,7 @@ RIGID_MODE_FREE = 1e-14
 #: RMS over σxx, σyy, σxy on y = 0.25 of the difference to fe P2, relative to
 #: fe P2's RMS, for ν = 0.3 / 0.45 / 0.49 / 0.499 / 0.4999 / 0.49999:
 #: fe P1 0.046 / 0.11 / 0.47 / 2.8 / 6.8 / 8.3; EFGM (linear basis) 0.006 /
-#: 0.037 / 0.12 / 0.87 / 5.5 / 21.  Issue 14: at ν = 0.4999999 fe P1 differs
+#: 0.037 / 0.12 / 0.87 / 5.5 / 21.  At ν = 0.4999999 fe P1 differs
 #: from P2 by 6-9 %.  From 0.49 on P1 is ten times further from P2 than at
 #: ν = 0.3.  Closer to 0.5 λ/μ also amplifies round-off: fe at ν = 0.4999999
 #: has a relative residual of 2.3e-6 at h = 0.2 and 1.75e-5 (refused) at

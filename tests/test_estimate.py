@@ -68,7 +68,7 @@ def test_the_full_effectivity_table(case, key):
             continue
         known = tol.EFFECTIVITY_OUTSIDE.get((case, *key, r["profile"], r["quantity"]))
         if known is not None:
-            assert r["effectivity"] == pytest.approx(known, rel=0.25), r
+            assert r["effectivity"] == pytest.approx(known, rel=tol.EFFECTIVITY_OUTSIDE_DRIFT), r
         else:
             assert tol.EFFECTIVITY[0] <= r["effectivity"] <= tol.EFFECTIVITY[1], r
 
