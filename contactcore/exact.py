@@ -198,13 +198,20 @@ class NitscheInterface:
     and added to the tangent where it falls, like ``Gᵀ W D G``."""
 
     def __init__(self, operator, beta: float):
-        self.operator = operator
+        self.operator, self.beta = operator, beta
         self.gamma = beta * np.asarray(operator.stabilisation, float)
         inverse = sp.diags(np.repeat(1.0 / self.gamma, 2)) if len(self.gamma) else sp.csr_matrix((0, 0))
         self.augmented = (operator.G + inverse @ operator.S).tocsr()  # G̃
         self._scaled = replace(operator, G=self.augmented)  # forces, stiffness and pattern on G̃
+        theta = tol.NITSCHE_THETA
+        self.test = (operator.G + theta * (inverse @ operator.S)).tocsr()  # G + θ Γ⁻¹S
+        self._tested = replace(operator, G=self.test)
         WS = sp.diags(np.repeat(operator.weights / self.gamma, 2)) @ operator.S if len(self.gamma) else operator.S
-        self.correction = (-(operator.S.T @ WS)).tocsr()  # C, local numbering
+        self.correction = (-theta * (operator.S.T @ WS)).tocsr()  # C, local numbering
+
+    def softened(self, factor: float) -> "NitscheInterface":
+        """The same interface at ``factor`` times its stabilisation β."""
+        return NitscheInterface(self.operator, factor * self.beta)
 
     def __getattr__(self, name):  # points, weights, exchange, size: the method's
         return getattr(self.operator, name)
@@ -227,23 +234,27 @@ class NitscheInterface:
         local = u if self.exchange is None else self.exchange.forward(u)
         bulk = self.correction @ local
         bulk = bulk if self.exchange is None else self.exchange.reverse(bulk)
-        return self._scaled.forces(traction) + bulk
+        return self._tested.forces(traction) + bulk
 
     def stiffness(self, tangent: np.ndarray) -> sp.csr_matrix:
-        return (self._scaled.stiffness(tangent) + self.correction).tocsr()
+        return (self._scaled.stiffness(tangent, self.test) + self.correction).tocsr()
 
     def pattern(self) -> sp.csr_matrix:
         return self._scaled.pattern()
 
-    def regularised(self, tangent: np.ndarray) -> np.ndarray:
-        """The law's ``tangent`` with the stick stiffness γ in ``∂t_T/∂y_T``
-        of its slipping points (closed, ``∂t_T/∂y_T = 0``).  Where every
-        point of a body held by Γ alone slips, the exact tangent leaves it
-        free to turn (its residual is flat along that motion): Newton takes
-        one step on this one there, then goes on with the law's."""
+    def regularised(self, tangent: np.ndarray, secant: np.ndarray) -> np.ndarray:
+        """The law's ``tangent`` with the ``secant`` stiffness
+        ``|t_T| / |y_T − s|`` in ``∂t_T/∂y_T`` of its slipping points.
+        Where every closed point of a body held by Γ alone slips, the exact
+        tangent leaves it free to turn: its moment is flat in the rotation
+        until a point's trial re-enters the stick window.  The secant step
+        (Kačanov's iteration for a monotone law) moves the rotation towards
+        that window by as much as the slipping tractions ask, where the
+        stick stiffness γ, far steeper, crept; Newton goes on with the
+        law's tangent once a point sticks."""
         out = np.array(tangent, float, copy=True)
-        slipping = (out[:, 0, 0] != 0.0) & (out[:, 1, 1] == 0.0)
-        out[slipping, 1, 1] = self.gamma[slipping]
+        slipping = secant > 0
+        out[slipping, 1, 1] = secant[slipping]
         return out
 
 

@@ -31,6 +31,11 @@ class LawResponse:
     tangent: np.ndarray
     state: np.ndarray | None
     status: np.ndarray  # (m,) OPEN, STICK or SLIP
+    #: (m,) the secant tangential stiffness ``|t_T| / |g_T − s|`` of the
+    #: slipping points (0 elsewhere), a stiffness their tangent lacks
+    #: (:meth:`contactcore.exact.NitscheInterface.regularised`); None for a
+    #: law without slip
+    secant: np.ndarray | None = None
 
 
 def _positive(params: dict, key: str, path: str) -> float:
@@ -242,7 +247,10 @@ class CoulombLaw(_Law):
         tangent[:, 1, 0] = np.where(slip, -self.mu * self.kN * direction, 0.0)
         new_state = np.where(stick, s, g[:, 1] - tT / self.kT)
         status = np.where(stick, STICK, np.where(slip, SLIP, OPEN)).astype(np.int8)
-        return LawResponse(np.column_stack([tN, tT]), tangent, new_state, status)
+        # a slipping point's |t*| exceeds μp >= 0, so it is never 0 there
+        secant = np.divide(np.broadcast_to(self.kT * limit, limit.shape), np.abs(trial),
+                           out=np.zeros(len(g)), where=slip)
+        return LawResponse(np.column_stack([tN, tT]), tangent, new_state, status, secant)
 
 
 #: Every penalty law by the name a scene file gives it.

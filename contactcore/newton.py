@@ -119,15 +119,16 @@ class InterfaceOperator:
         local = self.G.T @ (self.weights[:, None] * traction).ravel()
         return local if self.exchange is None else self.exchange.reverse(local)
 
-    def stiffness(self, tangent: np.ndarray) -> sp.csr_matrix:
-        """``Gᵀ W D G`` for the tangents ``D`` (m, 2, 2) of the points."""
+    def stiffness(self, tangent: np.ndarray, test: sp.csr_matrix | None = None) -> sp.csr_matrix:
+        """``Gᵀ W D G`` for the tangents ``D`` (m, 2, 2) of the points
+        (``Tᵀ W D G`` with another ``test`` operator ``T``)."""
         m = self.size
         rows = 2 * np.arange(m)[:, None, None] + np.arange(2)[None, :, None]
         cols = 2 * np.arange(m)[:, None, None] + np.arange(2)[None, None, :]
         WD = sp.csr_matrix(((self.weights[:, None, None] * tangent).ravel(),
                             (np.broadcast_to(rows, tangent.shape).ravel(),
                              np.broadcast_to(cols, tangent.shape).ravel())), shape=(2 * m, 2 * m))
-        return (self.G.T @ WD @ self.G).tocsr()
+        return ((self.G if test is None else test).T @ WD @ self.G).tocsr()
 
     def pattern(self) -> sp.csr_matrix:
         """Every entry any ``Gᵀ W D G`` can reach (values meaningless):
@@ -213,6 +214,10 @@ class _Newton:
         self.u = np.zeros(system.size)
         self.state = self.law.initial_state(self.itf.size)
         self.status = np.full(self.itf.size, STICK, np.int8)  # an unloaded interface is closed and sticks
+        # the converged (factors, u) the predictor extrapolates from, the last
+        # two; the unloaded state is one where every factor is zero (u = 0 solves it)
+        unloaded = _flat(scene.factors(0))
+        self._converged_at = [(unloaded, self.u.copy())] if not unloaded.any() else []
         self.report = SolverReport(solver="", solves=0, iterations=[])
         self.path = InterfacePath(self.itf.points, self.itf.weights)
         self.ranks = system.collective  # every decision is taken on all ranks alike
@@ -239,19 +244,61 @@ class _Newton:
         return float(np.max(np.abs(self.system.internal(prescribed)[self.free]), initial=0.0))
 
     def step(self, k: float) -> None:
-        """Converge the step to increment ``k`` from the committed state, or
-        raise SolverError with the residual history."""
+        """Converge the step to increment ``k`` from the committed state and
+        commit it, or raise SolverError with the residual history.  An exact
+        law whose step fails is continued in its stabilisation
+        (:meth:`_continued`)."""
+        try:
+            converged = self._iterate(k)
+        except SolverOptionError:
+            raise
+        except SolverError:
+            if not hasattr(self.itf, "softened"):
+                raise
+            converged = self._continued(k, 1.0)
+        self._commit(k, *converged)
+
+    def _continued(self, k: float, factor: float):
+        """The step to ``k`` at ``factor`` times the stabilisation, started
+        from its solution at a tenth of it (solved the same way, down to
+        CONTINUATION_FLOOR): a stiff γ narrows every point's stick window to
+        2μp/γ, and Newton from the committed state cannot find it, while the
+        softer problem's answer differs from the stiffer one's by the
+        stabilisation's small effect only (Nitsche is consistent), so it
+        starts Newton next to the answer with the right status map."""
+        target, softer = self.itf, factor / tol.CONTINUATION_STEP
+        try:
+            self._use(target.softened(softer))
+            try:
+                start = self._iterate(k)
+            except SolverError:
+                if softer / tol.CONTINUATION_STEP < tol.CONTINUATION_FLOOR:
+                    raise
+                start = self._continued(k, softer)
+        finally:
+            self._use(target)
+        self._use(target.softened(factor) if factor != 1.0 else target)
+        try:
+            return self._iterate(k, start=(start[1], start[2].status))
+        finally:
+            self._use(target)
+
+    def _use(self, interface) -> None:
+        """Newton on ``interface`` from here on; the factorisations kept
+        were of another matrix."""
+        self.itf, self._factorised = interface, []
+
+    def _iterate(self, k: float, start=None):
+        """Newton's iterations to increment ``k`` from the predicted state,
+        or from ``start`` (``(u, statuses)``): the factors, ``u``, the law's
+        response, the iterations and the residual history; SolverError with
+        the history if they do not converge."""
         loads, supports = self.scene.factors(k)
         b = self.system.external(loads, supports)
-        u = self.u.copy()
+        u, previous = self._predicted(_flat((loads, supports))) if start is None else (start[0].copy(), start[1])
         u[self.system.fixed] = self.system.fixed_values(supports)
         lift = self._lift(supports)
         history, tangent, start, du, u0 = [], None, 0.0, None, u.copy()
-        # the elastic predictor: a point that slipped is tried as sticking
-        # first (its margin is ~0 at the converged state, so the band keeps
-        # this choice), as the return map of Wriggers (2006, §5.2) does
-        previous = np.where(self.status == SLIP, STICK, self.status)
-        seen, damped = [], False
         for it in range(1, tol.NEWTON_MAX_ITERATIONS + 1):
             response = self.itf.respond(self.law, u, self.state, previous, self.ranks)
             previous = response.status
@@ -271,22 +318,39 @@ class _Newton:
                 raise SolverError(f"the residual is not finite; residual history {_fmt(history)}")
             if it > 1 and self._converged(R, forces, tangent, response, du, u - u0):
                 health.check_residual(history[-1], "the settled Newton step")
-                self._commit(k, (loads, supports), u, response, it - 1, history)
-                return
-            # a status map met before (not the last one: that is settled) is
-            # a cycle: from here on every correction is damped by a line search
-            damped = damped or any(self.ranks.all(np.array_equal(t, response.tangent)) for t in seen[:-1])
-            seen.append(response.tangent)
-            du, rep, tangent = self._solve(response.tangent, -R, scale)
+                return (loads, supports), u, response, it - 1, history
+            du, rep, tangent = self._solve(response.tangent, -R, scale, response.secant)
             _merge(self.report, rep)
-            if damped:
-                alpha = self._line_search(u, du, b, R, response.status)
+            if not self.law.is_linear:  # a linear law is solved in one step
+                secant = not np.array_equal(tangent, response.tangent)
+                alpha = self._line_search(u, du, b, R, response.status, secant)
                 du = alpha * du
                 tangent = tangent if alpha == 1.0 else None  # a partial step settles nothing
             u = u + du
-        raise SolverError(f"Newton did not converge in {tol.NEWTON_MAX_ITERATIONS} iterations"
-                          + (" (its contact states cycled; damped steps did not settle them)" if damped else "")
-                          + f"; relative residual history {_fmt(history)}")
+        raise SolverError(f"Newton did not converge in {tol.NEWTON_MAX_ITERATIONS} iterations; "
+                          f"relative residual history {_fmt(history)}")
+
+    def _predicted(self, factors: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """The step's first iterate and the statuses it starts from.  Along
+        a straight load path (the factors' step a positive multiple ``c`` of
+        the last converged one) the secant predictor ``u₁ + c (u₁ − u₀)``
+        from the last two converged states, with their statuses (Crisfield,
+        *Non-linear finite element analysis of solids and structures*, 1991,
+        §9.3): a linear response — proportional loading of every law here
+        while no point changes status — is then predicted exactly.
+        Elsewhere (the first step, a kink or reversal of the path) the
+        committed state and the elastic predictor: a point that slipped is
+        tried as sticking (its margin is ~0 at the converged state, so the
+        band keeps this choice), the return map of Wriggers (2006, §5.2)."""
+        elastic = (self.u.copy(), np.where(self.status == SLIP, STICK, self.status))
+        if len(self._converged_at) < 2:
+            return elastic
+        (f0, u0), (f1, u1) = self._converged_at
+        last, step = f1 - f0, factors - f1
+        c = float(step @ last) / float(last @ last) if last.any() else 0.0
+        if c <= 0 or np.linalg.norm(step - c * last) > tol.PATH_STRAIGHT * np.linalg.norm(step):
+            return elastic
+        return u1 + c * (u1 - u0), self.status
 
     def _converged(self, R, forces: float, tangent, response, du, moved) -> bool:
         """Whether the step has converged: the equilibrium rows' residual
@@ -309,7 +373,7 @@ class _Newton:
         """``‖R‖₂`` over the free rows of every rank."""
         return float(np.sqrt(self.ranks.sum(float(np.sum(R[self.free] ** 2)))))
 
-    def _line_search(self, u, du, b, R, status) -> float:
+    def _line_search(self, u, du, b, R, status, secant: bool = False) -> float:
         """The largest ``α = 2⁻ʲ`` (j <= LINE_SEARCH_HALVINGS) whose step
         ``u + α δu`` decreases the merit ``‖R‖₂`` by Armijo's rule
         ``‖R(u + α δu)‖ <= (1 − ARMIJO α) ‖R(u)‖`` — the globalised
@@ -317,7 +381,10 @@ class _Newton:
         ``vinewtonrsls``: ``δu = −J⁻¹R`` is a descent direction of ``½‖R‖²``
         for any generalised Jacobian ``J`` of the semismooth residual, so a
         small enough step always decreases it and breaks a cycle between
-        status maps.  The smallest step if none does.  A full step that
+        status maps.  The smallest step if none does.  A ``secant`` step
+        (a body free to turn, :meth:`_solve`) is taken whole where it only
+        keeps the merit: along that rotation the merit is flat until a
+        point re-enters its stick window, which is where the step goes.  A full step that
         passes is doubled while the merit keeps falling (at most
         LINE_SEARCH_EXPANSIONS times): a regularised tangent, stiffer than
         the law's, asks for longer steps than it gives."""
@@ -331,7 +398,7 @@ class _Newton:
         alpha = 1.0
         for _ in range(tol.LINE_SEARCH_HALVINGS):
             value = along(alpha)
-            if value <= (1.0 - tol.ARMIJO * alpha) * merit:
+            if value <= (1.0 - tol.ARMIJO * alpha) * merit or (secant and alpha == 1.0 and value <= merit):
                 break
             alpha /= 2
         else:
@@ -345,13 +412,13 @@ class _Newton:
             alpha, value = 2 * alpha, longer
         return alpha
 
-    def _solve(self, tangent: np.ndarray, rhs: np.ndarray, scale: float):
+    def _solve(self, tangent: np.ndarray, rhs: np.ndarray, scale: float, secant=None):
         """``J δu = rhs`` with the law's ``tangent`` at the points: with the
         factorisation kept for that tangent if there is one, else refilled
         into the slot used longest ago (:data:`~contactcore.tolerances.FACTORISATIONS_KEPT`).
         Also returns the tangent solved with: the law's, or where that is
-        singular an exact law's regularised one (not the law's: Newton is
-        then not settled by it)."""
+        singular an exact law's regularised one with the slipping points'
+        ``secant`` stiffness (not the law's: Newton is then not settled by it)."""
         for i, (slot, kept) in enumerate(self._factorised):
             if self.ranks.all(np.array_equal(kept, tangent)):
                 self._factorised.append(self._factorised.pop(i))
@@ -364,17 +431,18 @@ class _Newton:
             du, report = self.system.solve(self.itf.stiffness(tangent), rhs, force_scale=scale, slot=slot)
         except SolverError:
             # an exact law's slip tangent leaves a body held by friction
-            # alone free to turn: one step on the stick tangent there
+            # alone free to turn: one secant step there
             # (:meth:`contactcore.exact.NitscheInterface.regularised`)
-            if not hasattr(self.itf, "regularised"):
+            if not hasattr(self.itf, "regularised") or secant is None:
                 raise
-            tangent = self.itf.regularised(tangent)
+            tangent = self.itf.regularised(tangent, secant)
             du, report = self.system.solve(self.itf.stiffness(tangent), rhs, force_scale=scale, slot=slot)
         self._factorised.append((slot, tangent))
         return du, report, tangent
 
     def _commit(self, k, factors, u, response, iterations, history) -> None:
         self.u, self.state, self.status = u, response.state, response.status
+        self._converged_at = (self._converged_at + [(_flat(factors), u.copy())])[-2:]
         g = self.itf.jumps(u)
         self.path.steps.append(Increment(k, factors, iterations, history, g, response.traction, response.status))
         self.report.iterations.append(iterations)
@@ -423,6 +491,11 @@ def _no_equilibrium(scene, n: int, depth: int, failures: list[str]) -> SolverErr
                         "use more increments")
     error.details = "\n".join(failures)
     return error
+
+
+def _flat(factors) -> np.ndarray:
+    """The loads' and supports' factors of a step as one vector."""
+    return np.array([*factors[0], *factors[1]], float)
 
 
 def _fmt(values) -> str:

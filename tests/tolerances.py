@@ -419,9 +419,10 @@ EFFECTIVITY_OUTSIDE = {
 #: the largest |t_N| (the issue's 2 % at degree 2, 15 % at degree 1); the
 #: same bound on the second difference of that error from point to point
 #: (an error alternating with amplitude a has 4a), so that no oscillation
-#: hides under it.  Measured 2026-11-26 at h = 0.025, β = 20, on placements
-#: 1, 2, 12: xfem P2 ≤ 0.07 %, xfem P1 ≤ 2.5 % (second difference 4.6 %),
-#: efgm P1 ≤ 0.35 %, efgm P2 1.9–3.9 % (above its bound).
+#: hides under it.  Measured 2026-11-26 at h = 0.025 with the default
+#: skew-symmetric Nitsche (β = 3) over all 24 placements: every method and
+#: degree within its bound but xfem P2 at placement 0's opening point
+#: (4.6 %, tests/test_nitsche_cuts.py's OPENING).
 NITSCHE_CUT_AGREE = {1: 0.15, 2: 0.02}
 
 # ----- exact computations: their round-off, and the tests' own arithmetic ----
