@@ -290,10 +290,11 @@ class EnergyEstimate:
         return {"eta": self.eta, "norm": self.norm, "relative": self.relative, "exclude": self.exclude}
 
 
-def energy_estimate(scene: Scene, fields, h: float, exclude: float = 0.0) -> EnergyEstimate:
+def energy_estimate(scene: Scene, fields, h: float, exclude: float = 0.0, gauss: int = tol.ENERGY_GAUSS
+                    ) -> EnergyEstimate:
     """The Zienkiewicz–Zhu estimate of one run (module doc) on background
-    cells of the run's size ``h``."""
-    er = energy_rule(scene, h, exclude)
+    cells of the run's size ``h``, ``gauss`` points per direction."""
+    er = energy_rule(scene, h, exclude, gauss)
     sigma = fields.stress(er.rule.points, er.rule.bodies)
     star = recovered_stress(scene, er, sigma)
     return EnergyEstimate(energy_norm(scene, er, star - sigma), energy_norm(scene, er, sigma), exclude)
@@ -306,13 +307,16 @@ class Estimate:
     """Everything estimated about the finest of a method's runs at ``hs``
     (coarse to fine): per profile and quantity (:class:`QuantityEstimate`),
     in energy (:class:`EnergyEstimate`), the status along Γ compared
-    between the two finest runs (a law with history), and warnings."""
+    between the two finest runs (a law with history), warnings, and the
+    finest run's profiles as sampled (``sampled``, in the scene's order:
+    what a driver writes, not sampled again)."""
 
     hs: tuple
     profiles: dict[str, dict[str, QuantityEstimate]]
     energy: EnergyEstimate | None
     status: dict | None = None
     warnings: list[str] = field(default_factory=list)
+    sampled: list[ProfileData] = field(default_factory=list)
 
     def error_columns(self, pid: str) -> dict[str, np.ndarray]:
         """``{q + "_err": per-sample error}`` of profile ``pid``."""
@@ -356,7 +360,7 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
         status = status_change(scene, results[-2].interface, results[-1].interface)
         warnings += status_warning(status)
     zz = energy_estimate(scene, results[-1].fields, hs[-1], exclude) if energy else None
-    return Estimate(hs, profiles, zz, status, warnings)
+    return Estimate(hs, profiles, zz, status, warnings, levels[-1])
 
 
 def estimate(scene: Scene, discretisation, h: float, levels: int = 2, *, exclude: float = 0.0, reuse=None,

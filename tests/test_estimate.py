@@ -95,6 +95,17 @@ def test_run_estimate_writes_the_errors(tmp_path):
                 assert record["max"] == pytest.approx(max(columns[f"{q}_err"]))
                 assert record["order"] == est.theoretical_order(q, 1, name)
     assert json.loads((out / "run.json").read_text())["estimate"] == 2
+    alone = tmp_path / "reference_alone"
+    run("A", ["fe"], alone, h=0.1, degree=2, draw=False)
+    dofs = json.loads((alone / "fe" / "summary.json").read_text())["dofs"]
+    assert f"| fe (reference) | 2 | {dofs} |" in text  # the reference is solved at the answer's h/2
+
+
+def test_run_estimate_starts_from_the_scenes_own_h(tmp_path):
+    """No --h: the estimate runs at the scene's h and h/2 (B: 0.05, 0.025)."""
+    run("B", ["efgm"], tmp_path / "r", estimate=2, draw=False)
+    summary = json.loads((tmp_path / "r" / "efgm" / "summary.json").read_text())
+    assert summary["estimate"]["h"] == pytest.approx([0.05, 0.025])
 
 
 def test_run_estimate_refuses_the_paper_grids(tmp_path):

@@ -5,8 +5,9 @@ perfect estimate, below 1 an optimistic one.  For the Richardson estimate
 (:mod:`contactcore.estimate`) it is taken per profile quantity as the RMS
 of the estimated error over the RMS of the true error of the finer run
 (the closed form sampled by the same code as the method); for the
-Zienkiewicz–Zhu estimate as ``η / ‖σ − σ_h‖_E``, both on the same Gauss
-points, away from singular points (:func:`verification.agreement.default_exclusion`).
+Zienkiewicz–Zhu estimate as ``η / ‖σ − σ_h‖_E``, on the same background
+cells (the truth with more Gauss points, :data:`TRUE_GAUSS`), away from
+singular points (:func:`verification.agreement.default_exclusion`).
 A quantity whose true error is at round-off (:data:`ROUNDOFF` of its
 largest exact value), or whose exact value is zero, has no effectivity: its
 row says so.
@@ -33,6 +34,11 @@ from .sweeps import PATCH_PINS
 #: |value| is round-off (the patch tests' level, tests/tolerances.py
 #: PATCH_ROUNDOFF): there is no discretisation error to estimate.
 ROUNDOFF = 1e-8
+
+#: Gauss points per direction of the true energy error ``‖σ − σ_h‖_E``:
+#: more than the estimate's own rule (contactcore.tolerances.ENERGY_GAUSS),
+#: so that the truth is not integrated as coarsely as the estimate.
+TRUE_GAUSS = 4
 
 BULK = ("ux", "uy", "sxx", "syy", "sxy")
 GAMMA = ("gN", "gT", "tN", "tT")
@@ -116,8 +122,9 @@ def profile_rows(estimate: est.Estimate, got: dict, exact: dict) -> list[dict]:
 
 
 def energy_row(scene, result, estimate: est.Estimate, exact, exclude: float) -> dict:
-    """The ZZ estimate against ``‖σ − σ_h‖_E`` on the same Gauss points."""
-    er = est.energy_rule(scene, estimate.hs[-1], exclude)
+    """The ZZ estimate against ``‖σ − σ_h‖_E`` on the same background
+    cells, :data:`TRUE_GAUSS` points per direction."""
+    er = est.energy_rule(scene, estimate.hs[-1], exclude, TRUE_GAUSS)
     sigma = result.fields.stress(er.rule.points, er.rule.bodies)
     true = est.energy_norm(scene, er, exact.stress(er.rule.points, er.rule.bodies) - sigma)
     norm = est.energy_norm(scene, er, sigma)
