@@ -385,33 +385,60 @@ EXACT_INDEPENDENCE = 1e-10
 #: (the issue's [0.5, 2]): an estimate off by more than 2x in either
 #: direction does not tell a user whether to refine.  Measured at the two
 #: finest rungs of the rate tests (verification.effectivity), 2026-11-26:
-#: fe P1 pressurised rod 0.84-1.51 (energy 0.96); xfem P2 pressurised rod
-#: 0.89-1.45 (energy 1.09); efgm P1 layered slip 0.67-0.98 (energy 0.73).
+#: fe P1 pressurised rod 0.84-1.51 (energy 0.94); xfem P2 pressurised rod
+#: 0.89-1.45 (energy 1.07); efgm P1 layered slip 0.67-0.98 (energy 0.73).
 EFFECTIVITY = (0.5, 2.0)
 
-#: Where the full table (slow) falls outside EFFECTIVITY, measured
-#: 2026-11-26, with the reason.  EFGM's error on these cases is mostly the
-#: Gauss quadrature of its rational shape functions, which a fixed rule
-#: leaves at the same relative size at every h (the floor of
-#: EFGM_RATE_GAUSS): Richardson sees only the part that converges and
-#: underestimates (patch P2, quadratic layers), or its P1 rates exceed
-#: theory at these h (rods: overestimates 2.0-2.3).  xfem P1's stress is
-#: already recovered (contactcore.recovery), so ZZ's second recovery moves
-#: it less than its error (energy 0.41 on the twisted rod).  Case, method,
-#: degree, profile, quantity -> measured effectivity.
+#: Why an entry of the full effectivity table (slow) lies outside
+#: EFFECTIVITY.  EFGM's error on these cases is mostly the Gauss quadrature
+#: of its rational shape functions, which a fixed rule leaves at the same
+#: relative size at every h (the floor of EFGM_RATE_GAUSS): Richardson sees
+#: only the part that converges, and underestimates.
+EFGM_QUADRATURE_FLOOR = "EFGM's quadrature error does not converge with h: Richardson does not see it"
+#: EFGM P1 on the rods converges faster than degree + 1 (gaps, tractions) or
+#: degree (stresses) at these h, so the theoretical order overestimates.
+EFGM_P1_FASTER = "EFGM P1 converges faster than its theoretical order at h = 0.05 -> 0.025"
+#: xfem P1's stress is recovered (contactcore.recovery) and taken to
+#: converge as degree + 1; on the pressurised rod's σyy it is a little
+#: faster still at these h.
+XFEM_P1_RECOVERED = "xfem P1's recovered stress converges faster than degree + 1 at h = 0.1 -> 0.05"
+#: xfem P1's stress is already a patch recovery: ZZ's second recovery moves
+#: it less than its error.
+XFEM_P1_RECOVERED_ZZ = "xfem P1's stress is already recovered: ZZ's recovery moves it less than its error"
+
+#: The entries of the full effectivity table (tests/test_estimate.py,
+#: slow; verification.effectivity) outside EFFECTIVITY: case, method,
+#: degree, profile, quantity -> (measured effectivity, reason).  Measured
+#: 2026-11-26 (the energy estimate on 2×2 Gauss points per cell, its truth
+#: on 4×4); the test holds each within EFFECTIVITY_OUTSIDE_DRIFT of its value.
 EFFECTIVITY_OUTSIDE = {
-    ("patch", "efgm", 2, "line", "ux"): 0.296, ("patch", "efgm", 2, "line", "uy"): 0.322,
-    ("patch", "efgm", 2, "line", "sxx"): 0.380, ("patch", "efgm", 2, "line", "syy"): 0.440,
-    ("pressurised_rod", "xfem", 1, "radial", "syy"): 2.069,
-    ("pressurised_rod", "efgm", 1, "gamma", "gN"): 2.300, ("pressurised_rod", "efgm", 1, "gamma", "tN"): 2.300,
-    ("pressurised_rod", "efgm", 1, "radial", "syy"): 2.183,
-    ("twisted_rod", "efgm", 1, "gamma", "gT"): 2.016, ("twisted_rod", "efgm", 1, "gamma", "tT"): 2.016,
-    ("twisted_rod", "efgm", 1, "radial", "sxy"): 2.312, ("twisted_rod", "xfem", 1, "energy", "‖σ‖_E"): 0.407,
-    ("quadratic_layers", "efgm", 1, "gamma", "gT"): 0.116, ("quadratic_layers", "efgm", 1, "gamma", "tT"): 0.116,
-    ("quadratic_layers", "efgm", 1, "vertical", "ux"): 0.374,
-    ("quadratic_layers", "efgm", 2, "gamma", "gT"): 0.447, ("quadratic_layers", "efgm", 2, "gamma", "tT"): 0.447,
-    ("quadratic_layers", "efgm", 2, "vertical", "ux"): 0.419, ("layered_slip", "efgm", 2, "L2", "uy"): 0.488,
+    ("patch", "efgm", 2, "line", "ux"): (0.296, EFGM_QUADRATURE_FLOOR),
+    ("patch", "efgm", 2, "line", "uy"): (0.322, EFGM_QUADRATURE_FLOOR),
+    ("patch", "efgm", 2, "line", "sxx"): (0.380, EFGM_QUADRATURE_FLOOR),
+    ("patch", "efgm", 2, "line", "syy"): (0.440, EFGM_QUADRATURE_FLOOR),
+    ("pressurised_rod", "xfem", 1, "radial", "syy"): (2.069, XFEM_P1_RECOVERED),
+    ("pressurised_rod", "efgm", 1, "gamma", "gN"): (2.300, EFGM_P1_FASTER),
+    ("pressurised_rod", "efgm", 1, "gamma", "tN"): (2.300, EFGM_P1_FASTER),
+    ("pressurised_rod", "efgm", 1, "radial", "syy"): (2.183, EFGM_P1_FASTER),
+    ("twisted_rod", "efgm", 1, "gamma", "gT"): (2.016, EFGM_P1_FASTER),
+    ("twisted_rod", "efgm", 1, "gamma", "tT"): (2.016, EFGM_P1_FASTER),
+    ("twisted_rod", "efgm", 1, "radial", "sxy"): (2.312, EFGM_P1_FASTER),
+    ("twisted_rod", "xfem", 1, "energy", "‖σ‖_E"): (0.402, XFEM_P1_RECOVERED_ZZ),
+    ("quadratic_layers", "efgm", 1, "gamma", "gT"): (0.116, EFGM_QUADRATURE_FLOOR),
+    ("quadratic_layers", "efgm", 1, "gamma", "tT"): (0.116, EFGM_QUADRATURE_FLOOR),
+    ("quadratic_layers", "efgm", 1, "vertical", "ux"): (0.374, EFGM_QUADRATURE_FLOOR),
+    ("quadratic_layers", "efgm", 2, "gamma", "gT"): (0.447, EFGM_QUADRATURE_FLOOR),
+    ("quadratic_layers", "efgm", 2, "gamma", "tT"): (0.447, EFGM_QUADRATURE_FLOOR),
+    ("quadratic_layers", "efgm", 2, "vertical", "ux"): (0.419, EFGM_QUADRATURE_FLOOR),
+    ("layered_slip", "efgm", 2, "L2", "uy"): (0.488, EFGM_QUADRATURE_FLOOR),
 }
+
+#: How far (relative) a listed exception may move from its measured value
+#: before the test says the table changed: the runs are deterministic, so
+#: this only covers another BLAS kernel's round-off and small changes of a
+#: method that do not change its error's nature; a move beyond it means the
+#: entry must be measured again (and may have come inside EFFECTIVITY).
+EFFECTIVITY_OUTSIDE_DRIFT = 0.25
 
 #: Scene A with the unilateral law enforced exactly and Γ inclined (the
 #: placements of tests/placements.py): xfem's and efgm's t_N at Γ's points
