@@ -13,6 +13,10 @@ from verification import files
 from verification.effectivity import CASES, VARIANTS, effectivity
 from verification.run import run
 
+#: The paper scenes' effectivity setting (the issue's): runs h = 0.05 ->
+#: 0.025 against fe P2 at h = 0.00625.
+SCENE_H, SCENE_REF_H = 0.05, 0.00625
+
 
 def test_richardson_is_exact_for_an_error_that_is_a_power_of_h():
     """q_h = q + C h^p: with the right order the finer run's error is
@@ -73,6 +77,26 @@ def test_the_full_effectivity_table(case, key):
             assert not tol.EFFECTIVITY[0] <= r["effectivity"] <= tol.EFFECTIVITY[1], (r, "now inside: unlist it")
         else:
             assert tol.EFFECTIVITY[0] <= r["effectivity"] <= tol.EFFECTIVITY[1], r
+
+
+@pytest.mark.slow
+def test_the_effectivity_table_of_scene_a():
+    """Scene A against fe P2 at h = 0.00625 (verification.effectivity,
+    ``python -m verification effectivity --scene A``): every method and
+    profile quantity in tol.EFFECTIVITY but for the measured exceptions of
+    tol.SCENE_A_EFFECTIVITY_OUTSIDE, each where it was measured."""
+    from contactcore import load_scene
+    from verification.effectivity import SCENE_VARIANTS, scene_truth, scene_rows
+    scene = load_scene("A")
+    truth = scene_truth(scene, SCENE_REF_H)
+    for key in SCENE_VARIANTS:
+        for r in scene_rows(scene, key, SCENE_H, truth):
+            known = tol.SCENE_A_EFFECTIVITY_OUTSIDE.get((*key, r["profile"], r["quantity"]))
+            if known is not None:
+                assert r["effectivity"] == pytest.approx(known[0], rel=tol.EFFECTIVITY_OUTSIDE_DRIFT), (r, known[1])
+                assert not tol.EFFECTIVITY[0] <= r["effectivity"] <= tol.EFFECTIVITY[1], (r, "now inside: unlist it")
+            else:
+                assert tol.EFFECTIVITY[0] <= r["effectivity"] <= tol.EFFECTIVITY[1], r
 
 
 def test_run_estimate_writes_the_errors(tmp_path):
