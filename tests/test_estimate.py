@@ -32,6 +32,19 @@ def test_richardson_is_exact_for_an_error_that_is_a_power_of_h():
     assert np.allclose(est.richardson(levels[:2], theory=2, coarse=True).error, lead * 0.1 ** 2)
 
 
+def test_the_order_is_observed_away_from_singular_samples():
+    """A sample converging at a singularity's rate h^0.5 would set the
+    observed order; with it left out (``kept``) the smooth samples' order
+    2 is seen, and the error is still estimated at every sample."""
+    s = np.linspace(0.0, 1.0, 11)
+    kept = s < 0.95
+    levels = [np.sin(s) + h ** 2 + np.where(kept, 0.0, h ** 0.5) for h in (0.1, 0.05, 0.025)]
+    assert est.richardson(levels, theory=2).order < 1.0
+    e = est.richardson(levels, theory=2, kept=kept)
+    assert e.order == pytest.approx(2.0) and len(e.error) == len(s)
+    assert np.allclose(e.error[kept], 0.025 ** 2)
+
+
 def test_an_observed_order_far_from_theory_warns():
     s = np.linspace(0.0, 1.0, 11)
     levels = [1.0 + h ** 1 * np.ones_like(s) for h in (0.1, 0.05, 0.025)]

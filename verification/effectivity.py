@@ -178,8 +178,9 @@ def scene_rows(scene, key: tuple, h: float, truth: dict[str, ProfileData], level
     relative to the quantity's largest |value| there."""
     disc = methods.discretisation(key[0])(degree=key[1])
     results = [solve(scene, disc, hk) for hk in est.levels_of(h, levels)]
-    estimate = est.estimate_runs(scene, results, energy=False)
-    got, exclude, rows = {p.id: p for p in estimate.sampled}, default_exclusion(scene), []
+    exclude = default_exclusion(scene)
+    estimate = est.estimate_runs(scene, results, exclude, energy=False)
+    got, rows = {p.id: p for p in estimate.sampled}, []
     for pid, qs in estimate.profiles.items():
         keep = kept_samples(scene, truth[pid], exclude)
         for q, e in qs.items():
