@@ -408,9 +408,9 @@ ENERGY_GAUSS = 2
 #: quadratic where the smooth stress is still quadratic to O(h³); two (5×5)
 #: leave a fit error of the order of a P2 stress's own error.  Measured
 #: effectivity η/‖σ − σ_h‖_E on the closed forms (verification.effectivity):
-#: one ring 0.73-1.67 for fe, xfem P2 and efgm (xfem P1, whose stress is
-#: already recovered: 0.41-0.64); two rings 0.96-0.99 for fe P1 but 4.4-4.8
-#: for fe and xfem P2.
+#: one ring 0.73-1.77 for fe, xfem P2 and efgm (xfem P1, whose stress is
+#: already recovered: 0.40-0.61; 2×2 Gauss points, the truth on 4×4); two
+#: rings (3×3 points) 0.96-0.99 for fe P1 but 4.4-4.8 for fe and xfem P2.
 ENERGY_RINGS = 1
 
 #: Where an estimate is trusted, the true error lies within this factor of
