@@ -143,10 +143,14 @@ def test_run_estimate_writes_the_errors(tmp_path):
 
 
 def test_run_estimate_starts_from_the_scenes_own_h(tmp_path):
-    """No --h: the estimate runs at the scene's h and h/2 (B: 0.05, 0.025)."""
-    run("B", ["efgm"], tmp_path / "r", estimate=2, draw=False)
+    """No --h: the estimate runs at the scene's h and h/2."""
+    from contactcore import load_scene
+    run(load_scene("A").with_changes(h=0.2), ["efgm"], tmp_path / "r", estimate=2, draw=False)
     summary = json.loads((tmp_path / "r" / "efgm" / "summary.json").read_text())
-    assert summary["estimate"]["h"] == pytest.approx([0.05, 0.025])
+    assert summary["estimate"]["h"] == pytest.approx([0.2, 0.1])
+    from contactcore import ContactError
+    with pytest.raises(ContactError, match="no default h"):
+        run(load_scene("A").with_changes(h=None), ["efgm"], tmp_path / "none", estimate=2, draw=False)
 
 
 def test_run_estimate_refuses_the_paper_grids(tmp_path):
