@@ -269,21 +269,7 @@ class _Newton:
             history.append(norm / scale if scale > 0 else norm)
             if not np.isfinite(norm):
                 raise SolverError(f"the residual is not finite; residual history {_fmt(history)}")
-            # converged: the equilibrium rows' residual small against their own
-            # forces (not against ``scale``: the data of a stiff body, E δ/h,
-            # can dwarf the forces of a soft one, and a wrong stick/slip split
-            # passed; tests/test_friction.py, a soft layer under a stiff one);
-            # or the law's tangent is the one the last solve used (a
-            # piecewise-linear law is then solved exactly, up to that solve's
-            # round-off); or the last correction moved no digit of what the
-            # step moved u by (points whose gap is round-off change status at
-            # every solve and change nothing: a rigid shift under unilateral
-            # contact).  Each is then held to the round-off check against ``scale``.
-            balance = self.ranks.max(float(np.max(np.abs(R[self.balance]), initial=0.0)))
-            settled = tangent is not None and self.ranks.all(np.array_equal(tangent, response.tangent))
-            still = du is not None and self.ranks.max(float(np.max(np.abs(du), initial=0.0))) <= (
-                tol.STEP_ROUNDOFF * self.ranks.max(float(np.max(np.abs(u - u0), initial=0.0))))
-            if it > 1 and (balance <= tol.NEWTON_RTOL * forces or settled or still):
+            if it > 1 and self._converged(R, forces, tangent, response, du, u - u0):
                 health.check_residual(history[-1], "the settled Newton step")
                 self._commit(k, (loads, supports), u, response, it - 1, history)
                 return
@@ -294,11 +280,30 @@ class _Newton:
             du, rep, tangent = self._solve(response.tangent, -R, scale)
             _merge(self.report, rep)
             if damped:
-                du = du * self._line_search(u, du, b, R, response.status)
+                alpha = self._line_search(u, du, b, R, response.status)
+                du = alpha * du
+                tangent = tangent if alpha == 1.0 else None  # a partial step settles nothing
             u = u + du
         raise SolverError(f"Newton did not converge in {tol.NEWTON_MAX_ITERATIONS} iterations"
                           + (" (its contact states cycled; damped steps did not settle them)" if damped else "")
                           + f"; relative residual history {_fmt(history)}")
+
+    def _converged(self, R, forces: float, tangent, response, du, moved) -> bool:
+        """Whether the step has converged: the equilibrium rows' residual
+        small against their own forces (not against the round-off scale:
+        the data of a stiff body, E δ/h, can dwarf the forces of a soft one,
+        and a wrong stick/slip split passed); or the law's tangent is the one
+        the last full solve used (a piecewise-linear law is then solved
+        exactly, up to that solve's round-off); or the last correction
+        ``du`` moved no digit of what the step ``moved`` u by (points whose
+        gap is round-off change status at every solve and change nothing:
+        a rigid shift under unilateral contact).  The caller then holds it
+        to the round-off check against the step's scale."""
+        balance = self.ranks.max(float(np.max(np.abs(R[self.balance]), initial=0.0)))
+        settled = tangent is not None and self.ranks.all(np.array_equal(tangent, response.tangent))
+        still = du is not None and self.ranks.max(float(np.max(np.abs(du), initial=0.0))) <= (
+            tol.STEP_ROUNDOFF * self.ranks.max(float(np.max(np.abs(moved), initial=0.0))))
+        return balance <= tol.NEWTON_RTOL * forces or settled or still
 
     def _merit(self, R: np.ndarray) -> float:
         """``‖R‖₂`` over the free rows of every rank."""
@@ -312,15 +317,32 @@ class _Newton:
         ``vinewtonrsls``: ``δu = −J⁻¹R`` is a descent direction of ``½‖R‖²``
         for any generalised Jacobian ``J`` of the semismooth residual, so a
         small enough step always decreases it and breaks a cycle between
-        status maps.  The smallest step if none does."""
+        status maps.  The smallest step if none does.  A full step that
+        passes is doubled while the merit keeps falling (at most
+        LINE_SEARCH_EXPANSIONS times): a regularised tangent, stiffer than
+        the law's, asks for longer steps than it gives."""
         merit = self._merit(R)
+
+        def along(alpha):
+            trial = u + alpha * du
+            return self._merit(self._residual(trial, b, self.itf.respond(self.law, trial, self.state, status,
+                                                                          self.ranks))[0])
+
         alpha = 1.0
         for _ in range(tol.LINE_SEARCH_HALVINGS):
-            trial = u + alpha * du
-            R_trial, _, _ = self._residual(trial, b, self.itf.respond(self.law, trial, self.state, status, self.ranks))
-            if self._merit(R_trial) <= (1.0 - tol.ARMIJO * alpha) * merit:
-                return alpha
+            value = along(alpha)
+            if value <= (1.0 - tol.ARMIJO * alpha) * merit:
+                break
             alpha /= 2
+        else:
+            return alpha
+        if alpha < 1.0:
+            return alpha
+        for _ in range(tol.LINE_SEARCH_EXPANSIONS):
+            longer = along(2 * alpha)
+            if longer >= value:
+                break
+            alpha, value = 2 * alpha, longer
         return alpha
 
     def _solve(self, tangent: np.ndarray, rhs: np.ndarray, scale: float):

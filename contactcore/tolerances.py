@@ -169,9 +169,18 @@ DECISION_BAND = 1e-6
 #: times (to 1/256) until Armijo's rule ``‖R(u + αδu)‖₂ <= (1 − ARMIJO α)‖R(u)‖₂``
 #: holds.  ARMIJO = 1e-4 is the usual sufficient decrease (Nocedal & Wright,
 #: Numerical Optimization, §3.1); full steps are kept until a cycle, so the
-#: iterations of a path that does not cycle do not change.
+#: iterations of a path that does not cycle do not change.  A full step
+#: that passes is doubled while the merit keeps falling, at most
+#: LINE_SEARCH_EXPANSIONS times (to 1024): where every closed point of a
+#: body held by friction alone slips, its rotation has no stiffness and
+#: Newton solves with the stick stiffness there instead
+#: (contactcore.exact.NitscheInterface.regularised), a slope far steeper
+#: than the true one, whose full steps each covered ~4 % of the way (exact
+#: C-coulomb, fe P1, h = 0.1: 25 iterations without converging; with the
+#: doubling, the increment converges).
 LINE_SEARCH_HALVINGS = 8
 ARMIJO = 1e-4
+LINE_SEARCH_EXPANSIONS = 10
 
 #: Symmetric Nitsche's stabilisation (contactcore.exact): γ = β γ₀ at each
 #: point of Γ, γ₀ = 2|Γ^e| / Σ_k (|Ω_k^e|/E_k) from the method (~2E/h on
@@ -301,7 +310,7 @@ RIGID_MODE_FREE = 1e-14
 #: RMS over σxx, σyy, σxy on y = 0.25 of the difference to fe P2, relative to
 #: fe P2's RMS, for ν = 0.3 / 0.45 / 0.49 / 0.499 / 0.4999 / 0.49999:
 #: fe P1 0.046 / 0.11 / 0.47 / 2.8 / 6.8 / 8.3; EFGM (linear basis) 0.006 /
-#: 0.037 / 0.12 / 0.87 / 5.5 / 21.  Issue 14: at ν = 0.4999999 fe P1 differs
+#: 0.037 / 0.12 / 0.87 / 5.5 / 21.  At ν = 0.4999999 fe P1 differs
 #: from P2 by 6-9 %.  From 0.49 on P1 is ten times further from P2 than at
 #: ν = 0.3.  Closer to 0.5 λ/μ also amplifies round-off: fe at ν = 0.4999999
 #: has a relative residual of 2.3e-6 at h = 0.2 and 1.75e-5 (refused) at

@@ -19,6 +19,8 @@ from contactcore.geometry import CircleInterface, LineInterface
 from contactcore.scene import LineProfile
 from verification.agreement import kept_samples
 
+import tolerances as tol
+
 #: Samples nearer than this fraction of the domain's shorter side to a
 #: corner or to an end of Γ are left out (issue 22: 0.1 on scene A).
 EXCLUDE_FRACTION = 0.1
@@ -73,7 +75,7 @@ def one_sided_gaps(fields, scene, x: float, angle: float, h: float) -> tuple[flo
     at h/8, h/4 and 3h/8 off Γ: both differences over |σ| 1e-6 off Γ."""
     n = np.asarray(scene.interface.normal)
     on = np.array([[x, scene.interface.point[1] + x * np.tan(np.radians(angle))]])
-    assert abs(scene.interface.phi(on)[0]) < 1e-12
+    assert abs(scene.interface.phi(on)[0]) < tol.ON_GAMMA_PHI
     offs = np.array([0.0, 1e-6, h / 8, h / 4, 3 * h / 8])
     sig = fields.stress(on + offs[:, None] * n, np.ones(len(offs), int))
     scale = np.linalg.norm(sig[1])

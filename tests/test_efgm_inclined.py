@@ -47,8 +47,8 @@ def _worst(scene, h, basis):
 
 @pytest.mark.parametrize("basis", BASES)
 def test_stress_on_gamma_is_its_one_sided_limit(basis):
-    """Issue 22's point, x = 0.8325 on Γ turned 20° at h = 0.025, where a
-    node's support used to cross Γ by h/32: σ on Γ equals σ 1e-6 off Γ on
+    """The point x = 0.8325 on Γ turned 20° at h = 0.025, where a node's
+    support crosses Γ by only h/32: σ on Γ equals σ 1e-6 off Γ on
     the + side, and the quadratic extrapolation to Γ of σ at h/8, h/4 and
     3h/8 off Γ (the thin lens that held the error lay within h/32)."""
     scene, h = inclined_A(20.0, 0.4), 0.025

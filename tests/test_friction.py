@@ -121,7 +121,7 @@ class _OneSpring(ContactSystem):
         return self.K * u
 
     def solve(self, Ki, rhs, force_scale=0.0, slot=0):
-        if abs(self.load - self.last) > self.max_step + 1e-12:
+        if abs(self.load - self.last) > self.max_step + tol.LOAD_STEP_ROUNDOFF:
             raise SolverError("step too long")
         self.last = self.load
         if Ki is not None:  # else this slot's last matrix
@@ -182,7 +182,7 @@ def test_layered_closed_form_in_every_method(method, layered):
         on_limit = abs(st.tau) >= (1 - bound) * layered.mu * st.p
         if not on_limit or st.status == "slip":
             assert np.all(step.status == (STICK if st.status == "stick" else SLIP)), step.step
-        assert abs(w @ step.traction[:, 1] - st.tau) <= bound * layered.mu * st.p + 1e-9, step.step
+        assert abs(w @ step.traction[:, 1] - st.tau) <= bound * layered.mu * st.p + tol.MEAN_TRACTION_FLOOR_PA, step.step
         gT = st.tau / layered.kT + st.slip
         assert abs(w @ step.jump[:, 1] - gT) <= bound * layered.mu * st.p / layered.kT, step.step
     pts = np.column_stack([np.full(41, 0.37), np.linspace(0.01, 0.99, 41)])
@@ -204,7 +204,7 @@ def _assert_closed_form_path(result, case, bound: float) -> None:
     w = result.interface.weights / result.interface.weights.sum()
     g_exact = np.array([st.tau / case.kT + st.slip for st in exact])
     for step, st, g in zip(steps, exact, g_exact):
-        assert abs(w @ step.traction[:, 1] - st.tau) <= bound * case.mu * st.p + 1e-9, step.step
+        assert abs(w @ step.traction[:, 1] - st.tau) <= bound * case.mu * st.p + tol.MEAN_TRACTION_FLOOR_PA, step.step
         assert abs(w @ step.jump[:, 1] - g) <= bound * np.max(np.abs(g_exact)), step.step
 
 

@@ -100,3 +100,58 @@ def test_the_core_reads_what_a_contact_system_declares():
              for m in re.finditer(r"getattr\((built\.)?system\b[^)]*\)", p.read_text())]
     assert found == []
 
+
+
+#: The keywords that carry a tolerance in pytest.approx, numpy's allclose /
+#: isclose / assert_allclose and math.isclose, and the calls that take them.
+TOLERANCE_KEYWORDS = {"rel", "abs", "atol", "rtol", "rel_tol", "abs_tol"}
+CLOSENESS_CALLS = {"approx", "allclose", "isclose", "assert_allclose"}
+ORDERINGS = (ast.Lt, ast.LtE, ast.Gt, ast.GtE)
+
+
+def _bare_float(node) -> bool:
+    """Whether ``node``'s arithmetic holds a float literal that is neither 0
+    nor a whole number (``1e-9``, ``-0.25``, ``bound * x + 1e-9``); a call's
+    arguments are not looked into."""
+    if isinstance(node, ast.Constant) and isinstance(node.value, float):
+        return node.value != int(node.value)
+    if isinstance(node, ast.UnaryOp):
+        return _bare_float(node.operand)
+    if isinstance(node, ast.BinOp):
+        return _bare_float(node.left) or _bare_float(node.right)
+    return False
+
+
+def _call_name(call: ast.Call) -> str:
+    return call.func.attr if isinstance(call.func, ast.Attribute) else getattr(call.func, "id", "")
+
+
+def _inline_tolerances(tree) -> list[int]:
+    """Lines where an assert orders against a bare float, or a closeness
+    call gets one as its tolerance (keyword, or allclose's 3rd/4th argument)."""
+    lines = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Assert):
+            lines += [o.lineno for c in ast.walk(node.test)
+                      if isinstance(c, ast.Compare) and any(isinstance(op, ORDERINGS) for op in c.ops)
+                      for o in (c.left, *c.comparators) if _bare_float(o)]
+        elif isinstance(node, ast.Call) and _call_name(node) in CLOSENESS_CALLS:
+            given = [k.value for k in node.keywords if k.arg in TOLERANCE_KEYWORDS]
+            given += node.args[2:4] if _call_name(node) != "approx" else []
+            lines += [v.lineno for v in given if _bare_float(v)]
+    return sorted(set(lines))
+
+
+def test_the_inline_tolerance_check_sees_each_form():
+    src = ("assert err <= 1e-9\nassert abs(a - b) < bound * x + 1e-9\nassert a == pytest.approx(b, rel=0.25)\n"
+           "assert np.allclose(a, b, atol=1e-15)\nassert np.allclose(a, b, 1e-8)\n"
+           "assert err <= tol.X\nassert n >= 2\nassert a == pytest.approx(0.3)\nassert np.allclose(a, b, atol=0.0)\n")
+    assert _inline_tolerances(ast.parse(src)) == [1, 2, 3, 4, 5]
+
+
+@pytest.mark.parametrize("path", sorted(p for p in (ROOT / "tests").glob("*.py") if p.name != "tolerances.py"),
+                         ids=lambda p: p.name)
+def test_every_test_tolerance_is_named_in_tests_tolerances(path):
+    """A bound a test compares against is a constant of tests/tolerances.py
+    with its reason, not a literal in the test."""
+    assert _inline_tolerances(ast.parse(path.read_text())) == []

@@ -99,7 +99,7 @@ def test_run_writes_the_path_of_a_linear_law_that_follows_it(tmp_path):
     with open(tmp_path / "outTrue" / "fe" / "increments.csv") as fh:
         rows = list(csv.DictReader(fh))
     assert [float(r["step"]) for r in rows] == list(range(1, 21))
-    assert float(rows[-1]["mean_tT"]) == pytest.approx(2 * float(rows[9]["mean_tT"]), rel=1e-9)  # linear in the load
+    assert float(rows[-1]["mean_tT"]) == pytest.approx(2 * float(rows[9]["mean_tT"]), rel=tol.LINEAR_IN_LOAD)
 
 
 def test_follow_path_must_be_a_boolean():

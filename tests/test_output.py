@@ -177,7 +177,7 @@ def test_profile_figure_differences_span_and_layout():
     for ax, span in ((overlay, scale / kpa), (diff, percent)):
         assert ax.yaxis.get_major_formatter().get_offset() == ""
         low, high = ax.get_ylim()
-        assert high - low >= PLOT_MIN_Y_SPAN * span * (1 - 1e-9)  # (round-off of mid ± span/2)
+        assert high - low >= PLOT_MIN_Y_SPAN * span * (1 - tol.PLOT_SPAN_ROUNDOFF)
     lines = {line.get_label(): line.get_ydata() for line in diff.get_lines() if not line.get_label().startswith("_")}
     assert set(lines) == {"xfem (p1)", "efgm (p1)"}
     assert np.allclose(lines["xfem (p1)"], percent * (1.0 + s) / ref_size)

@@ -65,8 +65,8 @@ def test_the_closed_table_gives_the_last_step_beside_the_fitted_rate():
     no step rate either."""
     from verification.convergence import last_rate_of, rate_of
     hs, errors = [0.2, 0.1, 0.05, 0.025], [3.07e-3, 1.31e-4, 2.02e-5, 4.36e-6]
-    assert rate_of(hs, errors) == pytest.approx(3.11, abs=0.01)
-    assert last_rate_of(hs, errors) == pytest.approx(2.21, abs=0.01)
+    assert rate_of(hs, errors) == pytest.approx(3.11, abs=tol.QUOTED_RATE)
+    assert last_rate_of(hs, errors) == pytest.approx(2.21, abs=tol.QUOTED_RATE)
     assert last_rate_of(hs, [1e-12] * 4) == "round-off" and last_rate_of(hs, errors[:3]) == ""
 
 

@@ -146,7 +146,7 @@ STRIP = 0.005
 def test_a_body_no_cell_resolves_is_refused_then_resolved_when_refined(degree):
     """A + body thinner than tol.SLIVER_EVAL_DEPTH of every cell it lies in
     (a strip of 0.1 h at h = 0.05) has no cell to evaluate its fields in:
-    refused by name (its fields used to read zero, exit 0). At h = 0.025
+    refused by name, not answered with fields that read zero. At h = 0.025
     the strip is 0.14 of a cell's diameter: solved, and its displacement
     agrees with fe's."""
     scene = load_scene("A").with_changes(interface=LineInterface((0.0, 1.0 - STRIP), (0.0, 1.0)), profiles=())
