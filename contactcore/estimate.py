@@ -15,8 +15,10 @@ it.  With a third run at ``h/4`` the order is observed,
 
     p = log₂ (‖q_{h/2} − q_h‖ / ‖q_{h/4} − q_{h/2}‖)        (RMS over the samples),
 
-clipped to :data:`~contactcore.tolerances.ORDER_RANGE`, and the estimate is
-the finest run's.  With two runs the method's theoretical order for the
+over the samples away from singular points (a singularity's differences
+shrink at its own rate), clipped to
+:data:`~contactcore.tolerances.ORDER_RANGE`, and the estimate is the
+finest run's.  With two runs the method's theoretical order for the
 quantity is used (:func:`theoretical_order`): ``k + 1`` for a displacement
 and a gap (the L2 rate of degree k), and for a traction on Γ, which the law
 computes from the gaps (``t = k_N g_N`` …) not from the bulk stress; ``k``
@@ -152,26 +154,34 @@ def observed_order(coarse: np.ndarray, mid: np.ndarray, fine: np.ndarray, ratio:
     return float(np.clip(p, *tol.ORDER_RANGE))
 
 
-def richardson(values: list[np.ndarray], theory: int, ratio: float = 2.0, coarse: bool = False) -> QuantityEstimate:
+def richardson(values: list[np.ndarray], theory: int, ratio: float = 2.0, coarse: bool = False,
+               kept: np.ndarray | None = None) -> QuantityEstimate:
     """The estimate of one quantity from its samples at h, h/2 (and h/4),
     coarse to fine (module doc): the finest run's error, or with
     ``coarse`` the coarsest run's (``(q_{h/2} − q_h) r^p / (r^p − 1)``,
-    two levels only)."""
-    p = observed_order(*values[-3:], ratio=ratio) if len(values) >= 3 else None
+    two levels only).  The order is observed on the ``kept`` samples (all
+    by default): near a singular point the differences shrink at the
+    singularity's rate, not the smooth solution's, and would set it."""
+    kept = slice(None) if kept is None or not np.any(kept) else kept
+    p = observed_order(*(v[kept] for v in values[-3:]), ratio=ratio) if len(values) >= 3 else None
     order = float(theory) if p is None else p
     diff = np.abs(values[-1] - values[-2])
     factor = ratio ** order / (ratio ** order - 1) if coarse else 1 / (ratio ** order - 1)
     return QuantityEstimate(diff * factor, order, p is not None, theory)
 
 
-def profile_estimates(levels: list[list[ProfileData]], degree: int, method: str = "", coarse: bool = False
-                      ) -> dict[str, dict[str, QuantityEstimate]]:
+def profile_estimates(levels: list[list[ProfileData]], degree: int, method: str = "", coarse: bool = False,
+                      scene: Scene | None = None, exclude: float = 0.0) -> dict[str, dict[str, QuantityEstimate]]:
     """``{profile id: {quantity: estimate}}`` from the profiles of each run,
-    coarse to fine (each a list in the scene's order)."""
+    coarse to fine (each a list in the scene's order); an observed order
+    from the samples at least ``exclude`` from the ``scene``'s singular
+    points."""
     out = {}
     for profs in zip(*levels):
-        pid = profs[-1].id
-        out[pid] = {q: richardson([p.columns[q] for p in profs], theoretical_order(q, degree, method), coarse=coarse)
+        pid, cols = profs[-1].id, profs[-1].columns
+        kept = far_from_singular(scene, np.column_stack([cols["x"], cols["y"]]), exclude) if scene else None
+        out[pid] = {q: richardson([p.columns[q] for p in profs], theoretical_order(q, degree, method), coarse=coarse,
+                                  kept=kept)
                     for q in profs[-1].names[3:]}
     return out
 
@@ -290,10 +300,11 @@ class EnergyEstimate:
         return {"eta": self.eta, "norm": self.norm, "relative": self.relative, "exclude": self.exclude}
 
 
-def energy_estimate(scene: Scene, fields, h: float, exclude: float = 0.0) -> EnergyEstimate:
+def energy_estimate(scene: Scene, fields, h: float, exclude: float = 0.0, gauss: int = tol.ENERGY_GAUSS
+                    ) -> EnergyEstimate:
     """The Zienkiewicz–Zhu estimate of one run (module doc) on background
-    cells of the run's size ``h``."""
-    er = energy_rule(scene, h, exclude)
+    cells of the run's size ``h``, ``gauss`` points per direction."""
+    er = energy_rule(scene, h, exclude, gauss)
     sigma = fields.stress(er.rule.points, er.rule.bodies)
     star = recovered_stress(scene, er, sigma)
     return EnergyEstimate(energy_norm(scene, er, star - sigma), energy_norm(scene, er, sigma), exclude)
@@ -306,13 +317,16 @@ class Estimate:
     """Everything estimated about the finest of a method's runs at ``hs``
     (coarse to fine): per profile and quantity (:class:`QuantityEstimate`),
     in energy (:class:`EnergyEstimate`), the status along Γ compared
-    between the two finest runs (a law with history), and warnings."""
+    between the two finest runs (a law with history), warnings, and the
+    finest run's profiles as sampled (``sampled``, in the scene's order:
+    what a driver writes, not sampled again)."""
 
     hs: tuple
     profiles: dict[str, dict[str, QuantityEstimate]]
     energy: EnergyEstimate | None
     status: dict | None = None
     warnings: list[str] = field(default_factory=list)
+    sampled: list[ProfileData] = field(default_factory=list)
 
     def error_columns(self, pid: str) -> dict[str, np.ndarray]:
         """``{q + "_err": per-sample error}`` of profile ``pid``."""
@@ -346,17 +360,19 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
                   coarse: bool = False) -> Estimate:
     """The :class:`Estimate` of the finest of ``results`` (one method at
     h, h/2 (, h/4), coarse to fine), or with ``coarse`` of the coarser of
-    two (its profiles' errors; the energy estimate still the finest run's)."""
+    two (its profiles' errors; the energy estimate still the finest run's);
+    the energy and an observed order leave out what lies within
+    ``exclude`` of a singular point."""
     hs = tuple(float(r.discretisation["h"]) for r in results)
     levels = [sample_profiles(scene, r.fields, r.interface) for r in results]
-    profiles = profile_estimates(levels, results[-1].degree, results[-1].method, coarse=coarse)
+    profiles = profile_estimates(levels, results[-1].degree, results[-1].method, coarse, scene, exclude)
     warnings = order_warnings(profiles)
     status = None
     if scene.law.has_history or not scene.law.is_linear:
         status = status_change(scene, results[-2].interface, results[-1].interface)
         warnings += status_warning(status)
     zz = energy_estimate(scene, results[-1].fields, hs[-1], exclude) if energy else None
-    return Estimate(hs, profiles, zz, status, warnings)
+    return Estimate(hs, profiles, zz, status, warnings, levels[-1])
 
 
 def estimate(scene: Scene, discretisation, h: float, levels: int = 2, *, exclude: float = 0.0, reuse=None,

@@ -5,8 +5,9 @@ perfect estimate, below 1 an optimistic one.  For the Richardson estimate
 (:mod:`contactcore.estimate`) it is taken per profile quantity as the RMS
 of the estimated error over the RMS of the true error of the finer run
 (the closed form sampled by the same code as the method); for the
-Zienkiewicz–Zhu estimate as ``η / ‖σ − σ_h‖_E``, both on the same Gauss
-points, away from singular points (:func:`verification.agreement.default_exclusion`).
+Zienkiewicz–Zhu estimate as ``η / ‖σ − σ_h‖_E``, on the same background
+cells (the truth with more Gauss points, :data:`TRUE_GAUSS`), away from
+singular points (:func:`verification.agreement.default_exclusion`).
 A quantity whose true error is at round-off (:data:`ROUNDOFF` of its
 largest exact value), or whose exact value is zero, has no effectivity: its
 row says so.
@@ -15,8 +16,15 @@ Cases: the interface patch, the pressurised and the twisted rod, the
 quadratic layers (shear) and the layered Coulomb slip, each with profiles
 through Γ and the bulk; every method and degree at the two finest rungs of
 its rate test (``LADDERS``).
+
+The paper's scenes (:func:`scene_table`, ``python -m verification
+effectivity``) have no closed form: there the truth is fe P2 at a fine
+``ref_h``, and both RMS are over the samples away from singular points
+(:func:`verification.agreement.kept_samples`).
 """
 from __future__ import annotations
+
+from pathlib import Path
 
 import numpy as np
 
@@ -25,7 +33,8 @@ from contactcore import estimate as est
 from contactcore.discretisation import solve
 
 from . import methods
-from .agreement import default_exclusion
+from . import files
+from .agreement import default_exclusion, kept_samples
 from .closed_forms import interface_patch, layered_slip, pressurised_rod, quadratic_layers, twisted_rod
 from .sweeps import PATCH_PINS
 
@@ -33,6 +42,11 @@ from .sweeps import PATCH_PINS
 #: |value| is round-off (the patch tests' level, tests/tolerances.py
 #: PATCH_ROUNDOFF): there is no discretisation error to estimate.
 ROUNDOFF = 1e-8
+
+#: Gauss points per direction of the true energy error ``‖σ − σ_h‖_E``:
+#: more than the estimate's own rule (contactcore.tolerances.ENERGY_GAUSS),
+#: so that the truth is not integrated as coarsely as the estimate.
+TRUE_GAUSS = 4
 
 BULK = ("ux", "uy", "sxx", "syy", "sxy")
 GAMMA = ("gN", "gT", "tN", "tT")
@@ -116,8 +130,9 @@ def profile_rows(estimate: est.Estimate, got: dict, exact: dict) -> list[dict]:
 
 
 def energy_row(scene, result, estimate: est.Estimate, exact, exclude: float) -> dict:
-    """The ZZ estimate against ``‖σ − σ_h‖_E`` on the same Gauss points."""
-    er = est.energy_rule(scene, estimate.hs[-1], exclude)
+    """The ZZ estimate against ``‖σ − σ_h‖_E`` on the same background
+    cells, :data:`TRUE_GAUSS` points per direction."""
+    er = est.energy_rule(scene, estimate.hs[-1], exclude, TRUE_GAUSS)
     sigma = result.fields.stress(er.rule.points, er.rule.bodies)
     true = est.energy_norm(scene, er, exact.stress(er.rule.points, er.rule.bodies) - sigma)
     norm = est.energy_norm(scene, er, sigma)
@@ -141,3 +156,61 @@ def effectivity(case_name: str, key: tuple) -> list[dict]:
     rows = profile_rows(estimate, got, exact_profiles(case)) + [energy_row(case.scene, results[-1], estimate,
                                                                            field_exact, exclude)]
     return [{"case": case_name, "method": key[0], "degree": key[1], "h": fine, **r} for r in rows]
+
+
+#: The (method, degree) pairs of the paper scenes' table: every method at
+#: degree 1, the mesh methods at degree 2 (EFGM P2 is the quadrature-floored
+#: variant of the closed forms, left out).
+SCENE_VARIANTS = (("fe", 1), ("fe", 2), ("xfem", 1), ("xfem", 2), ("efgm", 1))
+
+
+def scene_truth(scene, ref_h: float) -> dict[str, ProfileData]:
+    """The truth of a scene without a closed form: fe P2 at ``ref_h``, sampled."""
+    ref = solve(scene, methods.discretisation("fe")(degree=2), ref_h)
+    return {p.id: p for p in sample_profiles(scene, ref.fields, ref.interface)}
+
+
+def scene_rows(scene, key: tuple, h: float, truth: dict[str, ProfileData], levels: int = 2) -> list[dict]:
+    """One row per profile quantity of ``scene`` for one (method, degree)
+    estimated from ``levels`` runs from ``h`` down: the RMS of the
+    estimate and of the true error (against ``truth``) of the finest run,
+    over the samples away from singular points, and the true error
+    relative to the quantity's largest |value| there."""
+    disc = methods.discretisation(key[0])(degree=key[1])
+    results = [solve(scene, disc, hk) for hk in est.levels_of(h, levels)]
+    exclude = default_exclusion(scene)
+    estimate = est.estimate_runs(scene, results, exclude, energy=False)
+    got, rows = {p.id: p for p in estimate.sampled}, []
+    for pid, qs in estimate.profiles.items():
+        keep = kept_samples(scene, truth[pid], exclude)
+        for q, e in qs.items():
+            want = truth[pid].columns[q][keep]
+            true = est.rms(got[pid].columns[q][keep] - want)
+            rows.append({"scene": scene.name, "method": key[0], "degree": key[1], "h": estimate.hs[-1],
+                         "profile": pid, "quantity": q, "order": e.order, "estimate": est.rms(e.error[keep]),
+                         "true": true, "relative": true / np.max(np.abs(want)),
+                         "effectivity": est.rms(e.error[keep]) / true if true > 0 else None})
+    return rows
+
+
+def scene_table(scene_names, h: float, ref_h: float, out: Path, levels: int = 2, argv=()) -> str:
+    """The effectivity of every :data:`SCENE_VARIANTS` pair on each scene
+    (truth: fe P2 at ``ref_h``), written to ``out/effectivity.csv`` and
+    ``out/effectivity.md``; returns the Markdown."""
+    from contactcore import load_scene
+    rows = []
+    for name in scene_names:
+        scene = load_scene(name)
+        truth = scene_truth(scene, ref_h)
+        for key in SCENE_VARIANTS:
+            rows += scene_rows(scene, key, h, truth, levels)
+    columns = ["scene", "method", "degree", "h", "profile", "quantity", "order", "estimate", "true", "relative",
+               "effectivity"]
+    text = (f"# Effectivity on the paper's scenes\n\nTruth: fe P2 at h = {ref_h}; runs at "
+            f"{', '.join(f'{hk:g}' for hk in est.levels_of(h, levels))}, the finest estimated; RMS over the "
+            f"samples away from singular points.\n\n" + files.markdown_table(rows, columns[:-3] + columns[-1:]))
+    files.write_csv(out / "effectivity.csv", rows, columns)
+    files.write_text(out / "effectivity.md", text)
+    files.write_json(out / "run.json", {**files.provenance(list(argv)), "scenes": list(scene_names), "h": h,
+                                        "ref_h": ref_h, "levels": levels})
+    return text

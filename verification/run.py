@@ -145,9 +145,10 @@ def reference_label(reference: tuple[str, int] | None) -> str | None:
 
 
 def _solve_reference(scene, reference, h, paper, petsc_options, out: Path, profiles: dict, summaries: list) -> None:
-    """Solve the ``reference`` run (method, degree) at the runs' ``h`` when
-    it is not one of them, write its profiles under ``out/reference`` and
-    add them to ``profiles`` and its summary to ``summaries``."""
+    """Solve the ``reference`` run (method, degree) at ``h`` (the finest
+    run's, where an estimate solved several) when it is not one of them,
+    write its profiles under ``out/reference`` and add them to
+    ``profiles`` and its summary to ``summaries``."""
     name, degree = reference
     log.info("scene %s: solving the reference, %s (degree %d)", scene.name, name, degree)
     solve, on_comm = pool.solver(name) if pool.under_mpi_pool() else (methods.solver(name), {})
@@ -188,6 +189,8 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
     compared = reference is not None and len(chosen) > 1  # a reference only where methods are compared
     _check(scene, chosen, h, degree, paper, allow_large, estimate, reference if compared else None,
            nodes=nodes_file, **given)
+    h = _estimated_h(scene, h) if estimate else h
+    finest = h / 2 ** (estimate - 1) if estimate else h  # the answer's h, where a reference is solved
     nodes = read_nodes(nodes_file) if nodes_file else None
     out = Path(out)
     profiles, summaries, paths, estimated = {}, [], {}, {}
@@ -196,7 +199,7 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
         summaries.append(_write_method(out, scene, name, result, est, fields, draw, profiles, paths, estimated))
     ref = reference_label(reference)
     if compared and profiles and ref not in {label for by_label in profiles.values() for label in by_label}:
-        _solve_reference(scene, reference, h, paper, petsc_options or None, out, profiles, summaries)
+        _solve_reference(scene, reference, finest, paper, petsc_options or None, out, profiles, summaries)
     text = _write_summary(out, scene, summaries, profiles, paths, estimated, ref, draw)
     files.write_text(out / "scene.toml", scene_text(scene_name))
     files.write_json(out / "run.json", {**files.provenance(list(argv)),
@@ -218,7 +221,7 @@ def _check(scene: Scene, chosen: list[str], h, degree: int, paper: bool, allow_l
     domain, an estimate on the paper's fixed grids, and (unless ``paper``
     or ``allow_large``) a run too large for the machine: each method at
     the finest h it solves, the ``reference`` (method, degree; None when
-    nothing is compared) at ``h``.  Warn about an ``h`` that leaves few
+    nothing is compared) there too.  Warn about an ``h`` that leaves few
     cells across the domain (not for the paper's grids)."""
     methods.check_options(chosen, **given)
     methods.check_launch(chosen + ([reference[0]] if reference else []), pool.distributed())
@@ -234,7 +237,15 @@ def _check(scene: Scene, chosen: list[str], h, degree: int, paper: bool, allow_l
         for name in chosen:
             check_budget(scene, (h or scene.h or span) / 2 ** ((estimate or 1) - 1), degree, name)
         if reference:
-            check_budget(scene, h or scene.h or span, reference[1], reference[0])
+            check_budget(scene, (h or scene.h or span) / 2 ** ((estimate or 1) - 1), reference[1], reference[0])
+
+
+def _estimated_h(scene: Scene, h) -> float:
+    """The coarsest h of an estimate: ``h``, or the scene's own."""
+    h = scene.h if h is None else h
+    if h is None:
+        raise ContactError(f"--estimate: scene {scene.name} gives no default h; give --h")
+    return h
 
 
 def _solve(scene: Scene, name: str, h, degree: int, paper: bool, estimate, options: dict):
@@ -261,7 +272,7 @@ def _write_method(out: Path, scene: Scene, name: str, result, est, fields: bool,
     label.  Returns its summary."""
     label = f"{name} (p{result.degree})"
     summary = result.summary()
-    sampled = sample_profiles(scene, result.fields, result.interface)
+    sampled = est.sampled if est is not None else sample_profiles(scene, result.fields, result.interface)
     if est is not None:
         summary["estimate"] = _estimate_record(est, sampled)
         estimated[label] = ({p.id: p for p in sampled}, {p.id: est.error_columns(p.id) for p in sampled})
