@@ -3,14 +3,15 @@ in one process (:func:`to_petsc`), or split in contiguous rows over the
 ranks of an mpi4py communicator (:func:`ownership`, :func:`owned_rows`,
 :func:`distributed_aij`) with the ghost exchange of the unknowns
 (:class:`ScatterExchange`), on PETSc alone, so EFGM runs under mpirun
-without dolfinx.  Imports petsc4py: EFGM imports this module only when it
-solves by PETSc (:mod:`efgm.petsc_solver`, :mod:`efgm.distributed`).
+without dolfinx.  petsc4py is imported inside the functions that use it,
+so :func:`ownership` and :func:`owned_rows` (numpy alone) need none: EFGM
+runs with numpy and scipy alone unless it solves by PETSc
+(:mod:`efgm.petsc_solver`, :mod:`efgm.distributed`).
 """
 from __future__ import annotations
 
 import numpy as np
 import scipy.sparse as sp
-from petsc4py import PETSc
 
 from contactcore.assembly import sum_csr
 from contactcore.exchange import Exchange
@@ -23,6 +24,7 @@ def to_petsc(A: sp.spmatrix) -> PETSc.Mat:
     ``MatCreateSeqAIJWithArrays``; petsc4py keeps them alive with the
     matrix): no insertion row by row.  Measured on EFGM's matrix of scene C
     at h = 0.0125 (7.2e6 entries): 0.011 s against 0.15 s through ``createAIJ``."""
+    from petsc4py import PETSc
     A = sp.csr_matrix(A)
     A.sort_indices()
     return PETSc.Mat().createAIJWithArrays(size=A.shape, csr=(A.indptr.astype(PETSc.IntType),
@@ -60,6 +62,7 @@ def distributed_aij(owned: sp.csr_matrix, starts: np.ndarray, comm) -> PETSc.Mat
     ``starts[rank + 1]`` are ``owned`` (global columns, :func:`owned_rows`),
     columns split as the rows: preallocated exactly from that CSR, explicit
     zeros kept (a pattern to refill)."""
+    from petsc4py import PETSc
     owned = sp.csr_matrix(owned)
     owned.sort_indices()
     n, N = owned.shape[0], owned.shape[1]
@@ -80,6 +83,7 @@ class ScatterExchange(Exchange):
     The caller destroys it (:meth:`destroy`)."""
 
     def __init__(self, comm, starts: np.ndarray, ghosts: np.ndarray):
+        from petsc4py import PETSc
         rank = comm.rank
         first, last = int(starts[rank]), int(starts[rank + 1])
         self.indices = np.concatenate([np.arange(first, last), np.asarray(ghosts, np.int64)])
@@ -91,11 +95,13 @@ class ScatterExchange(Exchange):
         self._map = PETSc.LGMap().create(self.indices.astype(PETSc.IntType), comm=comm)
 
     def forward(self, owned: np.ndarray) -> np.ndarray:
+        from petsc4py import PETSc
         self._global.setArray(np.ascontiguousarray(owned, float))
         self._scatter.scatter(self._global, self._local, PETSc.InsertMode.INSERT_VALUES, PETSc.ScatterMode.FORWARD)
         return self._local.getArray(readonly=True).copy()
 
     def reverse(self, local: np.ndarray) -> np.ndarray:
+        from petsc4py import PETSc
         self._local.setArray(np.ascontiguousarray(local, float))
         self._global.set(0.0)
         self._scatter.scatter(self._local, self._global, PETSc.InsertMode.ADD_VALUES, PETSc.ScatterMode.REVERSE)
