@@ -195,7 +195,7 @@ class Reuse:
                    if f.name != "comm"}
         try:
             blob = pickle.dumps((type(discretisation).__name__, options, bare, resolution,
-                                 getattr(scene.law, "enforcement", "penalty")))
+                                 scene.law.enforcement))
         except (pickle.PicklingError, TypeError, AttributeError):
             return None
         return hashlib.sha256(blob).digest()

@@ -182,7 +182,7 @@ def make_law(kind: str, enforcement: str, params: dict, path: str):
 
 
 def is_exact(law) -> bool:
-    return getattr(law, "enforcement", "penalty") == "exact"
+    return law.enforcement == "exact"
 
 
 # ----- the interface operator of Nitsche's method ----------------------------
@@ -196,6 +196,8 @@ class NitscheInterface:
     columns of ``G``, ``S`` are the local numbering of ``exchange``, so
     ``C`` is applied as ``exchange.reverse(Sᵀ (W Γ⁻¹ S exchange.forward(u)))``,
     and added to the tangent where it falls, like ``Gᵀ W D G``."""
+
+    exact = True
 
     def __init__(self, operator, beta: float):
         self.operator, self.beta = operator, beta
@@ -266,7 +268,7 @@ def enforced(law, operator):
 
 def check(law, operator, method: str) -> None:
     """Refuse exact enforcement by a method whose operator lacks ``S`` or γ₀."""
-    if is_exact(law) and (getattr(operator, "S", None) is None or getattr(operator, "stabilisation", None) is None):
+    if is_exact(law) and (operator.S is None or operator.stabilisation is None):
         raise DiscretisationError(f"{method}: exact enforcement (the '{law.name}' law) needs the method's consistent "
                                   "traction on Γ and its stabilisation, which it does not provide yet; use "
                                   "enforcement = \"penalty\"")

@@ -52,6 +52,7 @@ from __future__ import annotations
 
 from abc import ABC, abstractmethod
 from dataclasses import dataclass
+from typing import ClassVar
 
 import numpy as np
 import scipy.sparse as sp
@@ -73,6 +74,8 @@ class InterfaceOperator:
     Γ, their weights, and ``G`` (2m × n) with rows ``2p, 2p+1`` giving
     ``g_N, g_T`` of point p from the unknowns."""
 
+    #: whether Newton reads it for an exact law (contactcore.exact.NitscheInterface)
+    exact: ClassVar[bool] = False
     G: sp.csr_matrix
     weights: np.ndarray
     points: np.ndarray
@@ -108,6 +111,12 @@ class InterfaceOperator:
     def internal(self, u: np.ndarray, traction: np.ndarray) -> np.ndarray:
         """The interface's forces at ``u`` with the tractions ``t``: ``Gᵀ W t``."""
         return self.forces(traction)
+
+    def regularised(self, tangent: np.ndarray, secant: np.ndarray):
+        """A tangent for a singular solve: None, a penalty law's singular
+        solve is a failure (exact laws:
+        :meth:`contactcore.exact.NitscheInterface.regularised`)."""
+        return None
 
     def jumps(self, u: np.ndarray) -> np.ndarray:
         """``[g_N, g_T]`` (m, 2) of the unknowns ``u`` (owned values)."""
@@ -253,7 +262,7 @@ class _Newton:
         except SolverOptionError:
             raise
         except SolverError:
-            if not hasattr(self.itf, "softened"):
+            if not self.itf.exact:  # a penalty law has no stabilisation to continue in
                 raise
             converged = self._continued(k, 1.0)
         self._commit(k, *converged)
@@ -433,9 +442,10 @@ class _Newton:
             # an exact law's slip tangent leaves a body held by friction
             # alone free to turn: one secant step there
             # (:meth:`contactcore.exact.NitscheInterface.regularised`)
-            if not hasattr(self.itf, "regularised") or secant is None:
+            regularised = None if secant is None else self.itf.regularised(tangent, secant)
+            if regularised is None:
                 raise
-            tangent = self.itf.regularised(tangent, secant)
+            tangent = regularised
             du, report = self.system.solve(self.itf.stiffness(tangent), rhs, force_scale=scale, slot=slot)
         self._factorised.append((slot, tangent))
         return du, report, tangent
