@@ -155,7 +155,7 @@ def test_quick_report_runs_the_whole_chain(tmp_path):
     assert main(["report", str(tmp_path), "--quick"]) == 0
     text = (tmp_path / "report.md").read_text()
     for heading in ("## The paper's figures", "## Closed forms", "## Error against run time, scene C",
-                    "## Stiff and extreme cases", "## Study: scene B, radius"):
+                    "## Stiff and extreme cases", "## Study: scene B, radius", "## Penalty against exact"):
         assert heading in text
     for fig in ("fig08_A1", "fig18_B4", "fig23_C2", "extra_C4"):
         assert (tmp_path / "paper" / "figures" / f"{fig}.png").exists()

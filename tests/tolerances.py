@@ -660,3 +660,9 @@ QUOTED_RATE = 0.01
 #: sliver's one-sided limit): more than half of them, or the G x vs fields
 #: comparison tests too few points to mean anything (tests/test_xfem_dofs.py).
 MOST_POINTS_HELD = 0.5
+
+#: One solve repeated in one process (``run --against-exact``'s and a
+#: test's own, tests/test_against_exact.py): the same matrices, MUMPS
+#: ordering and Newton decisions, so the same profiles up to the summation
+#: order of threaded BLAS kernels (measured: equal, 0).
+REPEATED_SOLVE = 1e-12

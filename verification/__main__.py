@@ -2,7 +2,7 @@
 
     python -m verification run SCENE_OR_TOML --method fe|xfem|efgm|all [--degree 1|2] [--cell quad|triangle|gmsh]
         [--h H] [--paper] [--fields] [--petsc-option KEY=VALUE ...] [--dmax D] [--basis linear|quadratic]
-        [--nodes FILE] --out DIR
+        [--nodes FILE] [--estimate [2|3]] [--reference METHOD:DEGREE] [--against-exact] --out DIR
     python -m verification paper [--scene A B C] [--ref-h H] --out DIR
     python -m verification closed [--case patch pressurised_rod twisted_rod] [--method ...] [--degree 1 2] --out DIR
     python -m verification efficiency SCENE --method fe efgm --degree 1 2 --h H1 H2 ... --ref-h H --out DIR
@@ -142,6 +142,10 @@ def _commands() -> dict[str, Command]:
             arg("--reference", type=_reference, default="fe:2", metavar="METHOD:DEGREE",
                 help="the run the Δ panels and summary.md's agreement table compare with, solved at the same "
                      "h if not among the methods (default fe:2; 'none': fe at its highest degree run)"),
+            arg("--against-exact", action="store_true",
+                help="a unilateral or coulomb law enforced by its springs: also solve each method with the law "
+                     "enforced exactly (Nitsche) at the same discretisation, and say in summary.md and each "
+                     "summary.json how far the penalty answer is from it"),
             out), _run, "spread"),
         "paper": Command("the paper's figures and an agreement table against a refined reference", (
             scenes, arg("--ref-h", type=float, help="cell size of the P2 reference (default: a quarter of the "
@@ -219,7 +223,7 @@ def _run(args, argv) -> None:
     run(args.scene, args.method, args.out, h=args.h, degree=args.degree, paper=args.paper, fields=args.fields,
         petsc_options=dict(args.petsc_option), dmax=args.dmax, nodes_file=args.nodes, cell=args.cell,
         basis=args.basis, allow_large=args.allow_large, draw=args.draw, estimate=args.estimate,
-        reference=args.reference, argv=argv)
+        reference=args.reference, against_exact=args.against_exact, argv=argv)
 
 
 def _paper(args, argv) -> None:

@@ -146,15 +146,19 @@ def _compared(scene: Scene, label: str, pid: str, q: str, got: ProfileData, ref:
                      int(keep.sum()), len(keep))
 
 
-def profile_agreements(scene: Scene, label: str, got: dict, ref: dict, exclude: float) -> list[Agreement]:
+def profile_agreements(scene: Scene, label: str, got: dict, ref: dict, exclude: float,
+                       scales: dict | None = None) -> list[Agreement]:
     """Every quantity of every profile of ``got`` (id -> ProfileData)
-    against ``ref``, as :class:`Agreement` rows of method ``label``."""
+    against ``ref``, as :class:`Agreement` rows of method ``label``;
+    ``scales`` ((profile id, quantity) -> per-sample values) measures a
+    quantity against those values instead of its own (or its companion's)."""
     profiles = {p.id: p for p in scene.profiles}
     rows = []
     for pid, prof in got.items():
         for q in prof.names[3:]:
             companion = COMPANIONS.get((pid, q))
             scale = ref[companion[0]].columns[companion[1]] if companion else None
+            scale = (scales or {}).get((pid, q), scale)
             kind = "zero" if companion else quantity_class(scene, profiles[pid], q)
             row = _compared(scene, label, pid, q, prof, ref[pid], exclude, scale)
             rows.append(Agreement(**{**row.__dict__, "kind": kind}))

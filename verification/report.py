@@ -5,7 +5,8 @@ Runs, each into its own folder under DIR, the paper's figures
 error against run time on scenes A, B and C (:mod:`~verification.efficiency`),
 the stiff and extreme sweeps (:mod:`~verification.sweeps`, the coulomb law's
 among them), the friction scenes with every method (Newton iterations per
-increment, status along Γ, :mod:`~verification.run`) and one parameter
+increment, status along Γ, :mod:`~verification.run`; C-coulomb's
+penalty answer against the exact one, :mod:`~verification.against_exact`) and one parameter
 study per scene (:mod:`~verification.study`), then gathers their sections
 into ``DIR/report.md`` with the wall time of each part.  ``--quick`` runs
 every part on short ladders (a smoke test of the whole chain, minutes not
@@ -48,6 +49,7 @@ class Plan:
     paper_ref_h: float | None
     studies: tuple  # (scene, param, values, degree)
     friction: tuple = ("layered-slip", "A-cyclic", "C-coulomb")  # scenes run with every method
+    against_exact: tuple = ("C-coulomb",)  # friction scenes also solved exactly, penalty against exact
 
 
 FULL = Plan(ladders=LADDERS, reference_h=REFERENCE_H, variants=VARIANTS, closed_cases=tuple(CASES),
@@ -61,19 +63,22 @@ QUICK = Plan(ladders={"C": {1: (0.2,)}},
              reference_h={"C": 0.1}, variants=(("fe", 1), ("xfem", 1)),
              closed_cases=("patch",), closed_variants=(("fe", 1), ("xfem", 1), ("efgm", 1)),
              sweeps=("cut",), paper_ref_h=0.1,
-             studies=(("B", "radius", (0.2, 0.3), 1),), friction=("layered-slip",))
+             studies=(("B", "radius", (0.2, 0.3), 1),), friction=("layered-slip",), against_exact=("layered-slip",))
 
 
-def _friction(scene: str, out: Path) -> str:
+def _friction(scene: str, out: Path, against_exact: tuple = ()) -> str:
     """A friction scene with every method, into ``out/<scene>``: status,
-    response and the Newton iterations per increment (:mod:`verification.interface`)."""
-    text = run(scene, ["all"], out / scene)
+    response and the Newton iterations per increment (:mod:`verification.interface`);
+    for a scene in ``against_exact``, how far its penalty answer is from
+    the exact one (:mod:`verification.against_exact`)."""
+    text = run(scene, ["all"], out / scene, against_exact=scene in against_exact)
     return files.relink("#" + text + "\n![response](plots/response.png)\n", scene)
 
 
-def _frictions(scenes, workers):
+def _frictions(scenes, against_exact, workers):
     """The part that runs the friction scenes, one case each on the pool."""
-    return lambda out: "\n\n".join(pool.map_cases(functools.partial(_friction, out=out), scenes, workers))
+    return lambda out: "\n\n".join(pool.map_cases(functools.partial(_friction, out=out, against_exact=against_exact),
+                                                   scenes, workers))
 
 
 def report(out: Path, quick: bool = False, workers: int | None = None, argv=()) -> Path:
@@ -96,7 +101,7 @@ def report(out: Path, quick: bool = False, workers: int | None = None, argv=()) 
              lambda d, s=scene: efficiency(s, plan.variants, plan.ladders[s], plan.reference_h[s],
                                            default_exclusion(load_scene(s)), d, workers=workers))
     part("sweeps", "sweeps", lambda d: run_sweeps(d, plan.sweeps, workers=workers))
-    part("friction " + ", ".join(plan.friction), "friction", _frictions(plan.friction, workers))
+    part("friction " + ", ".join(plan.friction), "friction", _frictions(plan.friction, plan.against_exact, workers))
     for scene, param, values, degree in plan.studies:
         folder = f"study/{scene}-{param}"
         part(f"study {scene} {param}", folder,

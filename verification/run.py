@@ -17,6 +17,13 @@ Writes, under ``--out DIR``::
     (a nonlinear law, :mod:`verification.interface`:)
     DIR/<method>/increments.csv, interface.csv
     DIR/plots/status_<method>.png, response.png; Newton iterations in summary.md
+    (with --against-exact, a unilateral or coulomb law enforced by its springs,
+    :mod:`verification.against_exact`: each method also solved with the law
+    enforced exactly at the same discretisation, into DIR/<method>/exact/
+    (summary.json, profiles/, increments.csv, interface.csv), each profile
+    penalty against exact in DIR/plots/exact_<method>_<ID>.png; how far apart
+    they are in summary.md's "Penalty against exact" and under
+    ``"against_exact"`` in DIR/<method>/summary.json)
 """
 from __future__ import annotations
 
@@ -32,6 +39,7 @@ from contactcore import tolerances as tol
 from contactcore.budget import check_budget
 from contactcore.scene import check_resolution, smallest_dimension
 
+from . import against_exact as exact_gap
 from . import agreement, files, interface, methods, plots, pool
 from .agreement import default_exclusion, within_estimates
 
@@ -171,7 +179,7 @@ def _progress(name: str):
 
 def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, paper=False,
         fields=False, petsc_options=None, dmax=None, nodes_file=None, cell=None, basis=None, allow_large=False,
-        draw=True, estimate=None, reference=DEFAULT_REFERENCE, argv=()) -> str:
+        draw=True, estimate=None, reference=DEFAULT_REFERENCE, against_exact=False, argv=()) -> str:
     """Solve ``scene_name`` (a scene, a built-in name or a TOML file),
     sample the scene's profiles, write everything; return the Markdown
     section (``summary.md``'s text).  Before any work (:func:`_check`):
@@ -182,8 +190,12 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
     unless ``draw`` (matplotlib is then never imported).  Two runs or more
     are compared with ``reference`` (method, degree; None: fe at its
     highest degree among them), solved at the same h if it is not one of
-    them."""
+    them.  With ``against_exact`` (a unilateral or coulomb law enforced by
+    its springs, else refused here) each method is solved again with the
+    law enforced exactly, at the h of its answer, and compared
+    (:func:`_against_exact`)."""
     scene = load_scene(scene_name)
+    twin = exact_gap.exact_twin(scene) if against_exact else None
     chosen = methods.expand(method_names)
     given = dict(petsc_options=petsc_options or None, dmax=dmax, cell=cell, basis=basis)
     compared = reference is not None and len(chosen) > 1  # a reference only where methods are compared
@@ -193,14 +205,18 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
     finest = h / 2 ** (estimate - 1) if estimate else h  # the answer's h, where a reference is solved
     nodes = read_nodes(nodes_file) if nodes_file else None
     out = Path(out)
-    profiles, summaries, paths, estimated = {}, [], {}, {}
+    profiles, summaries, paths, estimated, gaps = {}, [], {}, {}, {}
     for name in chosen:
-        result, est = _solve(scene, name, h, degree, paper, estimate, methods.options_for(name, nodes=nodes, **given))
-        summaries.append(_write_method(out, scene, name, result, est, fields, draw, profiles, paths, estimated))
+        options = methods.options_for(name, nodes=nodes, **given)
+        result, est = _solve(scene, name, h, degree, paper, estimate, options)
+        exact_row = (_against_exact(out, scene, twin, name, result, finest, degree, paper, options, draw, gaps)
+                     if twin is not None else None)
+        summaries.append(_write_method(out, scene, name, result, est, fields, draw, profiles, paths, estimated, gaps))
+        summaries += [exact_row] if exact_row else []
     ref = reference_label(reference)
     if compared and profiles and ref not in {label for by_label in profiles.values() for label in by_label}:
         _solve_reference(scene, reference, finest, paper, petsc_options or None, out, profiles, summaries)
-    text = _write_summary(out, scene, summaries, profiles, paths, estimated, ref, draw)
+    text = _write_summary(out, scene, summaries, profiles, paths, estimated, ref, draw, gaps)
     files.write_text(out / "scene.toml", scene_text(scene_name))
     files.write_json(out / "run.json", {**files.provenance(list(argv)),
                                         "scene": scene.name if isinstance(scene_name, Scene) else str(scene_name),
@@ -208,7 +224,7 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
                                         "paper": paper, "estimate": estimate,
                                         "petsc_options": petsc_options or {}, "dmax": dmax,
                                         "basis": basis, "nodes": str(nodes_file) if nodes_file else None,
-                                        "reference": ref,
+                                        "reference": ref, "against_exact": against_exact,
                                         "cell": next((s["discretisation"]["cell"] for s in summaries
                                                       if "cell" in s["discretisation"]), cell)})
     return text
@@ -248,30 +264,35 @@ def _estimated_h(scene: Scene, h) -> float:
     return h
 
 
-def _solve(scene: Scene, name: str, h, degree: int, paper: bool, estimate, options: dict):
+def _solve(scene: Scene, name: str, h, degree: int, paper: bool, estimate, options: dict, shown: str | None = None):
     """Method ``name``'s result (the finest, with ``estimate``) and its
-    estimate, logged: a worker of an mpi4py.futures pool solves on its own
-    communicator; mpirun's ranks share the world."""
-    log.info("scene %s: solving with %s (%s)", scene.name, name, f"{options['basis']} basis" if "basis" in options
+    estimate, logged (as ``shown``, default ``name``): a worker of an
+    mpi4py.futures pool solves on its own communicator; mpirun's ranks
+    share the world."""
+    shown = shown or name
+    log.info("scene %s: solving with %s (%s)", scene.name, shown, f"{options['basis']} basis" if "basis" in options
              else f"degree {degree}")
     solve, on_comm = pool.solver(name) if pool.under_mpi_pool() else (methods.solver(name), {})
     result, est = _solve_estimated(solve, scene, h, estimate, degree=degree, paper=paper,
-                                   progress=_progress(name), **options, **on_comm)
+                                   progress=_progress(shown), **options, **on_comm)
     for w in result.solver.warnings:
-        log.warning("%s: %s", name, w)
-    log.info("%s: %d DOFs, total %.2f s, residual %.1e", name, result.dofs, result.timings.total,
+        log.warning("%s: %s", shown, w)
+    log.info("%s: %d DOFs, total %.2f s, residual %.1e", shown, result.dofs, result.timings.total,
              result.solver.residual)
     return result, est
 
 
 def _write_method(out: Path, scene: Scene, name: str, result, est, fields: bool, draw: bool, profiles: dict,
-                  paths: dict, estimated: dict) -> dict:
+                  paths: dict, estimated: dict, gaps: dict) -> dict:
     """Method ``name``'s files (profiles with their estimated errors,
-    fields, summary, the response along the path); its profiles, path and
+    fields, summary with its distance from the exact answer if ``gaps``
+    has it, the response along the path); its profiles, path and
     estimate join ``profiles``, ``paths`` and ``estimated`` under its
     label.  Returns its summary."""
     label = f"{name} (p{result.degree})"
     summary = result.summary()
+    if label in gaps:
+        summary["against_exact"] = gaps[label]
     sampled = est.sampled if est is not None else sample_profiles(scene, result.fields, result.interface)
     if est is not None:
         summary["estimate"] = _estimate_record(est, sampled)
@@ -294,10 +315,38 @@ def _write_method(out: Path, scene: Scene, name: str, result, est, fields: bool,
     return summary
 
 
+def _against_exact(out: Path, scene: Scene, twin: Scene, name: str, result, h, degree: int, paper: bool,
+                   options: dict, draw: bool, gaps: dict) -> dict:
+    """Method ``name`` solved on ``twin`` (``scene`` with its law enforced
+    exactly) at ``h`` with the penalty run's ``options``; its profiles,
+    history and summary written under ``out/<name>/exact``, each profile's
+    penalty and exact curves drawn; how far ``result`` (the penalty run)
+    is from it (:func:`verification.against_exact.record`) joins ``gaps``
+    under the run's label and its summary.json.  Returns the exact run's
+    summary (a row of summary.md's table)."""
+    label, shown = f"{name} (p{result.degree})", f"{name} ({exact_gap.EXACT})"
+    log.info("scene %s: solving with %s again, the '%s' law enforced exactly", scene.name, name, scene.law.name)
+    exact, _ = _solve(twin, name, h, degree, paper, None, options, shown)
+    penalty, exact_profiles = agreement.sampled(scene, result), agreement.sampled(twin, exact)
+    for prof in exact_profiles.values():
+        files.write_profile_csv(out / name / "exact" / "profiles" / f"{prof.id}.csv", prof)
+    interface.write_history(out / name / "exact", twin, exact.interface)
+    rows = exact_gap.differences(scene, label, penalty, exact_profiles)
+    gaps[label] = exact_gap.record(scene, rows, exact_profiles, result.interface, exact.interface)
+    summary = {**exact.summary(), "method": shown}
+    files.write_json(out / name / "exact" / "summary.json", summary)
+    titles = {p.id: p.title for p in scene.profiles}
+    for pid in penalty if draw else ():
+        plots.plot_profile(out / "plots" / f"exact_{name}_{pid}.png", f"{titles[pid]}; {label}, penalty against exact",
+                           {label: penalty[pid], exact_gap.EXACT: exact_profiles[pid]}, exact_gap.EXACT)
+    return summary
+
+
 def _write_summary(out: Path, scene: Scene, summaries: list[dict], profiles: dict, paths: dict, estimated: dict,
-                   ref: str | None, draw: bool) -> str:
+                   ref: str | None, draw: bool, gaps: dict) -> str:
     """The plots of every profile (methods overlaid, Δ against ``ref``) and
-    of the response, and ``summary.md``; returns its text."""
+    of the response, and ``summary.md``; returns its text.  ``gaps``:
+    each method's penalty against exact (label -> record), if asked."""
     titles = {p.id: p.title for p in scene.profiles}
     for pid, runs in profiles.items() if draw else ():
         plots.plot_profile(out / "plots" / f"{pid}.png", titles[pid], runs, ref)
@@ -305,6 +354,8 @@ def _write_summary(out: Path, scene: Scene, summaries: list[dict], profiles: dic
             + agreement_section(scene, profiles, ref))
     if len(estimated) > 1:
         text += _estimates_section(scene, estimated)
+    if gaps:
+        text += exact_gap.section(scene, scene.law.name, gaps)
     if paths:
         if draw:
             interface.plot_response(out / "plots" / "response.png", scene, paths)

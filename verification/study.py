@@ -34,11 +34,12 @@ from pathlib import Path
 
 import numpy as np
 
-from contactcore import CircleInterface, ContactError, LineInterface, SceneError, load_scene, make_law, sample_profile
+from contactcore import CircleInterface, ContactError, LineInterface, SceneError, load_scene, sample_profile
 from contactcore.discretisation import Reuse
 from contactcore.scene import InterfaceProfile
 
 from . import files, methods, pool
+from .against_exact import exact_law
 from .outcomes import attempt, health
 
 log = logging.getLogger("verification")
@@ -69,8 +70,7 @@ def _enforcement(scene, value):
     if value != "exact":
         raise SceneError("--param enforcement", f"must be penalty or exact (got {value!r}); the scene's "
                          f"'{law.name}' law is enforced exactly and has no springs to fall back on")
-    params = {k: getattr(law, k) for k in law.parameters if k not in ("kN", "kT")}
-    return {"law": make_law({"type": law.name, "enforcement": "exact", **params}, "--param enforcement")}
+    return {"law": exact_law(law, "--param enforcement")}
 
 
 def _radius(scene, value: float):

@@ -1,0 +1,139 @@
+"""``run --against-exact`` (verification.against_exact): how far a penalty
+answer at the scene's springs is from the same law enforced exactly, and
+the one-line refusal of a scene with nothing to compare."""
+import json
+
+import numpy as np
+import pytest
+
+import tolerances as tol
+from contactcore import load_scene, make_law, sample_profiles, scene_text
+from contactcore.laws import STATUS_NAMES
+from verification import files, methods
+from verification import run as run_driver
+from verification.__main__ import main
+from verification.closed_forms import layered_slip
+
+#: C-coulomb's resolution here: fe P1's exact solve converges at 0.1 (at 0.2
+#: its first increment does not).
+H = 0.1
+#: Scene C's rectangle [0, 2] x [0, 3] (contactcore/scenes/C-coulomb.toml):
+#: its corners are the singular points, Γ (a circle) meets no edge.
+C_CORNERS = np.array([(0.0, 0.0), (2.0, 0.0), (2.0, 3.0), (0.0, 3.0)])
+C_EXCLUDE = 0.1 * np.hypot(2.0, 3.0)  # docs/verification.md: 0.1 of the diameter
+
+
+@pytest.fixture(scope="module")
+def coulomb_run(tmp_path_factory):
+    out = tmp_path_factory.mktemp("against_exact") / "out"
+    assert main(["run", "C-coulomb", "--method", "fe", "--h", str(H), "--against-exact", "--no-plots",
+                 "--out", str(out)]) == 0
+    return out
+
+
+def _record(out, method="fe") -> dict:
+    return json.loads((out / method / "summary.json").read_text())["against_exact"]
+
+
+def _columns(folder, pid) -> dict:
+    return {k: np.array(v) for k, v in files.read_profile_csv(folder / "profiles" / f"{pid}.csv").items()}
+
+
+def test_the_section_lists_every_profile_quantity_and_both_status_splits(coulomb_run):
+    text = (coulomb_run / "summary.md").read_text()
+    record = _record(coulomb_run)
+    scene = load_scene("C-coulomb")
+    assert "## Penalty against exact" in text and "| fe (exact) | 1 |" in text  # the exact run's row too
+    assert {pid: list(qs) for pid, qs in record["profiles"].items()} == {p.id: list(p.quantities)
+                                                                         for p in scene.profiles}
+    for pid, quantities in record["profiles"].items():
+        for q in quantities:
+            assert f"| fe (p1) | {pid} | {q} |" in text
+    for enforcement in ("penalty", "exact"):
+        assert f"| fe (p1) | {enforcement} |" in text
+    assert json.loads((coulomb_run / "run.json").read_text())["against_exact"] is True
+    assert (coulomb_run / "fe" / "exact" / "increments.csv").exists()
+
+
+def test_the_shares_are_the_difference_of_the_written_profiles(coulomb_run):
+    """Recomputed from the two runs' profile CSVs: Δ = penalty − exact over
+    the samples at least 0.1 L from a corner, max |Δ| over the largest
+    scale and RMS(Δ) over RMS(scale), the scale |g| or |t| on Γ."""
+    record = _record(coulomb_run)
+    for pid, quantities in record["profiles"].items():
+        pen, ex = _columns(coulomb_run / "fe", pid), _columns(coulomb_run / "fe" / "exact", pid)
+        xy = np.column_stack([ex["x"], ex["y"]])
+        keep = np.linalg.norm(xy[:, None] - C_CORNERS[None], axis=-1).min(axis=1) >= C_EXCLUDE
+        for q, got in quantities.items():
+            diff = (pen[q] - ex[q])[keep]
+            pair = {"g": ("gN", "gT"), "t": ("tN", "tT")}.get(q[0]) if pid == "C4" else None
+            scale = np.hypot(ex[pair[0]], ex[pair[1]])[keep] if pair else np.abs(ex[q][keep])
+            assert got["kept"] == keep.sum() and got["samples"] == len(keep)
+            assert got["worst"] == pytest.approx(np.abs(diff).max() / scale.max(), rel=tol.SAME_SUMS)
+            assert got["rms"] == pytest.approx(np.sqrt(np.mean(diff ** 2) / np.mean(scale ** 2)), rel=tol.SAME_SUMS)
+            assert got["largest_difference"] == pytest.approx(np.abs(diff).max(), rel=tol.SAME_SUMS)
+            assert got["scale"] == scale.max()
+
+
+def test_the_exact_answer_is_the_scene_solved_with_its_law_enforced_exactly(coulomb_run):
+    """The run's exact profiles and both status splits are those of direct
+    solves of C-coulomb, as it is and with its law built exactly by hand."""
+    scene = load_scene("C-coulomb")
+    twin = scene.with_changes(law=make_law({"type": "coulomb", "mu": scene.law.mu, "enforcement": "exact"}))
+    record = _record(coulomb_run)
+    for folder, s, enforcement in ((coulomb_run / "fe", scene, "penalty"),
+                                   (coulomb_run / "fe" / "exact", twin, "exact")):
+        result = methods.solver("fe")(s, H)
+        for prof in sample_profiles(s, result.fields, result.interface):
+            written = _columns(folder, prof.id)
+            for q in prof.names[3:]:
+                scale = np.abs(prof.columns[q]).max()
+                assert np.abs(written[q] - prof.columns[q]).max() <= tol.REPEATED_SOLVE * scale
+        final, w = result.interface.final, result.interface.weights
+        split = record["status"][enforcement]
+        for code, name in enumerate(STATUS_NAMES):
+            assert split[name] == np.sum(final.status == code)
+            assert split[f"{name}_share"] == pytest.approx(w[final.status == code].sum() / w.sum(), rel=tol.SAME_SUMS)
+
+
+@pytest.mark.parametrize("method", ["fe", "efgm"])
+def test_on_the_layered_closed_form_the_difference_is_the_springs_interpenetration(tmp_path, method):
+    """layered-slip, pressed by p and slipping all along Γ: both answers
+    carry t_N = −p and t_T = μp, so the whole difference is the penalty's
+    g_N = −p/k_N (the exact g_N is 0), and both slip everywhere."""
+    assert main(["run", "layered-slip", "--method", method, "--against-exact", "--no-plots",
+                 "--out", str(tmp_path / "out")]) == 0
+    record = _record(tmp_path / "out", method)
+    case = layered_slip()
+    u_tol, sigma_tol = tol.FRICTION_CLOSED_FORM[method]
+    gap = record["profiles"]["L1"]
+    assert gap["gN"]["largest_difference"] == pytest.approx(case.history()[-1].p / case.kN, rel=u_tol)
+    assert gap["tN"]["worst"] <= sigma_tol and gap["tT"]["worst"] <= sigma_tol
+    for enforcement in ("penalty", "exact"):
+        split = record["status"][enforcement]
+        assert split["open"] == split["stick"] == 0 and split["slip"] > 0
+
+
+def test_a_run_without_the_flag_solves_no_exact_answer(tmp_path, monkeypatch):
+    def refuse(*args, **kwargs):
+        raise AssertionError("an exact solve that was not asked for")
+    monkeypatch.setattr(run_driver, "_against_exact", refuse)
+    assert main(["run", "layered-slip", "--method", "fe", "--no-plots", "--out", str(tmp_path / "out")]) == 0
+    assert "against_exact" not in json.loads((tmp_path / "out" / "fe" / "summary.json").read_text())
+    assert "Penalty against exact" not in (tmp_path / "out" / "summary.md").read_text()
+    assert not (tmp_path / "out" / "fe" / "exact").exists()
+
+
+@pytest.mark.parametrize("scene, problem", [
+    ("C", "'linear' law is enforced by its springs only"),
+    ("exact", "'coulomb' law is already enforced exactly"),
+])
+def test_a_scene_with_nothing_to_compare_is_refused_in_one_line(tmp_path, capsys, scene, problem):
+    if scene == "exact":
+        scene = tmp_path / "C-coulomb-exact.toml"
+        scene.write_text(scene_text("C-coulomb").replace('type = "coulomb"', 'type = "coulomb"\nenforcement = "exact"'))
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--method", "fe", "--h", str(H), "--against-exact", "--out", str(out)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith("error: --against-exact: ") and problem in err[0]
+    assert not out.exists()

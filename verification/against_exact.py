@@ -1,0 +1,147 @@
+"""``run --against-exact``: how far a penalty answer is from the exact one.
+
+A ``unilateral`` or ``coulomb`` law enforced by its springs k_N, k_T
+answers for those springs: a closed point carries ``t_N = k_N g_N``, so Γ
+interpenetrates by ``|t_N|/k_N`` and a sticking point shears elastically by
+``|t_T|/k_T``.  The same law enforced exactly (Signorini contact and
+Coulomb friction without elastic slip, by Nitsche's method; Chouly, Hild &
+Renard, Math. Comp. 2015; docs/contact-enforcement.md) is the answer the
+springs approach as k → ∞.  Solving both with one method at one
+discretisation isolates the springs' share of the answer from the
+discretisation's.
+
+Per profile and quantity, Δ = penalty − exact is measured as
+:mod:`verification.agreement` measures a method against its reference,
+the exact answer the reference: the **worst sample**, max |Δ| over the kept
+samples as a share of the exact scale's max there, and the **RMS share**,
+RMS(Δ)/RMS(scale) over the same samples; samples near singular points are
+left out (:func:`verification.agreement.default_exclusion`).  The scale
+is the exact quantity itself, except on Γ: a jump component (g_N, g_T) is
+measured against the exact jump's magnitude |g| = √(g_N² + g_T²) and a
+traction component against |t|, because the exact g_N of a closed contact
+is zero (to round-off) and a share of its own size would have no meaning.
+The largest |Δ| and the scale are kept in the quantity's unit too.  The
+**status split** is the number of Γ's quadrature points open, sticking and
+slipping at the last increment, and the share of Γ's length (by
+quadrature weight) each covers.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from contactcore import ContactError, Scene
+from contactcore.enforcement import make_law
+from contactcore.exact import BONDED, EXACT_LAWS
+from contactcore.interface_path import InterfacePath
+from contactcore.laws import STATUS_NAMES
+
+from . import files
+from .agreement import Agreement, default_exclusion, kept_samples, percent, profile_agreements
+
+#: How the exact run is named in tables and figures.
+EXACT = "exact"
+
+
+def exact_law(law, field: str):
+    """``law`` (a penalty law) enforced exactly, its other parameters (μ)
+    kept and its springs dropped; a SceneError naming ``field`` for a law
+    that has no exact enforcement (``linear``)."""
+    params = {k: getattr(law, k) for k in law.parameters if k not in ("kN", "kT")}
+    return make_law({"type": law.name, "enforcement": EXACT, **params}, field)
+
+
+def exact_twin(scene: Scene, field: str = "--against-exact") -> Scene:
+    """``scene`` with its penalty law enforced exactly; a ContactError
+    naming ``field`` when there is nothing to compare: a law already
+    enforced exactly, or one that has no exact enforcement."""
+    law = scene.law
+    if law.enforcement == EXACT:
+        raise ContactError(f"{field}: scene {scene.name}'s '{law.name}' law is already enforced exactly, so there "
+                           "is no penalty answer to compare with it (enforce it by its springs, kN and kT)")
+    if law.name not in EXACT_LAWS:
+        raise ContactError(f"{field}: scene {scene.name}'s '{law.name}' law is enforced by its springs only, so "
+                           f"there is no exact answer to compare with (exact enforcement: "
+                           f"{', '.join(n for n in EXACT_LAWS if n not in BONDED)})")
+    return scene.with_changes(law=exact_law(law, f"{field}: interface.law"))
+
+
+def status_split(path: InterfacePath) -> dict:
+    """Open, sticking and slipping points of Γ at the last increment, and
+    the share of Γ's length (quadrature weight) of each."""
+    final, w = path.final, path.weights / path.weights.sum()
+    return {**final.counts(), **{f"{name}_share": float(w @ (final.status == code))
+                                 for code, name in enumerate(STATUS_NAMES)}}
+
+
+#: Γ's components and the vector each is measured against (module doc).
+VECTORS = {"gN": ("gN", "gT"), "gT": ("gN", "gT"), "tN": ("tN", "tT"), "tT": ("tN", "tT")}
+
+
+def scales(exact: dict) -> dict:
+    """``(profile id, quantity) -> per-sample |g| or |t|`` of the exact
+    answer, for each Γ component on a profile that holds both of its
+    vector's components (module doc)."""
+    return {(pid, q): np.hypot(prof.columns[a], prof.columns[b])
+            for pid, prof in exact.items() for q, (a, b) in VECTORS.items()
+            if {q, a, b} <= set(prof.names)}
+
+
+def differences(scene: Scene, label: str, penalty: dict, exact: dict) -> list[Agreement]:
+    """Every profile quantity of ``penalty`` against ``exact`` (id ->
+    ProfileData), as :class:`~verification.agreement.Agreement` rows of
+    ``label`` (module doc)."""
+    return profile_agreements(scene, label, penalty, exact, default_exclusion(scene), scales(exact))
+
+
+def exact_scale(scene: Scene, exact: dict, row: Agreement) -> float:
+    """The largest value of the scale ``row`` is measured against, over the kept samples."""
+    prof = exact[row.profile]
+    scale = scales(exact).get((row.profile, row.quantity), np.abs(prof.columns[row.quantity]))
+    return float(np.max(scale[kept_samples(scene, prof, default_exclusion(scene))], initial=0.0))
+
+
+def record(scene: Scene, rows: list[Agreement], exact: dict, penalty_path: InterfacePath,
+           exact_path: InterfacePath) -> dict:
+    """summary.json's ``"against_exact"``: per profile and quantity the
+    worst-sample and RMS shares, where the worst sample lies, the largest
+    |Δ| and the largest exact scale (in the quantity's unit); the status
+    split of each run and the distance from singular points inside which
+    samples were left out."""
+    by_profile = {}
+    for a in rows:
+        by_profile.setdefault(a.profile, {})[a.quantity] = {
+            "worst": a.worst, "rms": a.rms, "at": {"s": a.s, "x": a.x, "y": a.y},
+            "largest_difference": abs(a.value - a.reference), "scale": exact_scale(scene, exact, a),
+            "kept": a.kept, "samples": a.samples}
+    return {"exclude": default_exclusion(scene), "profiles": by_profile,
+            "status": {"penalty": status_split(penalty_path), "exact": status_split(exact_path)}}
+
+
+def section(scene: Scene, law_name: str, records: dict[str, dict]) -> str:
+    """summary.md's "Penalty against exact": the shares of every method
+    (label -> :func:`record`) and their status splits."""
+    exclude = next(iter(records.values()))["exclude"]
+    lines = ["\n## Penalty against exact\n",
+             f"Each method also solved scene {scene.name} with its '{law_name}' law enforced exactly (Nitsche; "
+             "k_N, k_T play no part) at the same discretisation. Per profile and quantity, Δ = penalty − exact: "
+             "the worst sample is max |Δ| as a share of the largest exact scale, the RMS share "
+             f"RMS(Δ) / RMS(scale), over the samples at least {exclude:.3g} from the scene's singular points. "
+             "The scale is the exact quantity itself, except on Γ: g_N and g_T are measured against the exact "
+             "jump's magnitude |g|, t_N and t_T against |t| (the exact g_N of a closed contact is zero). "
+             "The last two columns are in the quantity's unit.\n",
+             "| method | profile | quantity | worst sample | at s (x, y) | RMS | max \\|Δ\\| | max scale |",
+             "|---|---|---|---|---|---|---|---|"]
+    for label, rec in records.items():
+        for pid, quantities in rec["profiles"].items():
+            for q, d in quantities.items():
+                at = d["at"]
+                lines.append(f"| {label} | {pid} | {q} | {percent(d['worst'])} | {at['s']:.4g} ({at['x']:.4g}, "
+                             f"{at['y']:.4g}) | {percent(d['rms'])} | {files.cell(d['largest_difference'])} | "
+                             f"{files.cell(d['scale'])} |")
+    lines += ["", "Status on Γ at the last increment: quadrature points (share of Γ's length).", "",
+              "| method | enforcement | " + " | ".join(STATUS_NAMES) + " |", "|---|---|" + "---|" * len(STATUS_NAMES)]
+    for label, rec in records.items():
+        for enforcement, split in rec["status"].items():
+            lines.append(f"| {label} | {enforcement} | " + " | ".join(
+                f"{split[name]} ({percent(split[f'{name}_share'])})" for name in STATUS_NAMES) + " |")
+    return "\n".join(lines) + "\n"
