@@ -72,7 +72,7 @@ def test_the_shares_are_the_difference_of_the_written_profiles(coulomb_run):
             assert got["worst"] == pytest.approx(np.abs(diff).max() / scale.max(), rel=tol.SAME_SUMS)
             assert got["rms"] == pytest.approx(np.sqrt(np.mean(diff ** 2) / np.mean(scale ** 2)), rel=tol.SAME_SUMS)
             assert got["largest_difference"] == pytest.approx(np.abs(diff).max(), rel=tol.SAME_SUMS)
-            assert got["scale"] == scale.max()
+            assert got["scale"] == scale.max() and got["largest_exact"] == np.abs(ex[q][keep]).max()
 
 
 def test_the_exact_answer_is_the_scene_solved_with_its_law_enforced_exactly(coulomb_run):

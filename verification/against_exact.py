@@ -20,7 +20,7 @@ is the exact quantity itself, except on Γ: a jump component (g_N, g_T) is
 measured against the exact jump's magnitude |g| = √(g_N² + g_T²) and a
 traction component against |t|, because the exact g_N of a closed contact
 is zero (to round-off) and a share of its own size would have no meaning.
-The largest |Δ| and the scale are kept in the quantity's unit too.  The
+The largest |Δ|, |exact| and scale are kept in the quantity's unit too.  The
 **status split** is the number of Γ's quadrature points open, sticking and
 slipping at the last increment, and the share of Γ's length (by
 quadrature weight) each covers.
@@ -93,25 +93,29 @@ def differences(scene: Scene, label: str, penalty: dict, exact: dict) -> list[Ag
     return profile_agreements(scene, label, penalty, exact, default_exclusion(scene), scales(exact))
 
 
-def exact_scale(scene: Scene, exact: dict, row: Agreement) -> float:
-    """The largest value of the scale ``row`` is measured against, over the kept samples."""
+def largest(scene: Scene, exact: dict, row: Agreement) -> tuple[float, float]:
+    """The largest |exact| of ``row``'s quantity and of the scale it is
+    measured against, over the kept samples."""
     prof = exact[row.profile]
-    scale = scales(exact).get((row.profile, row.quantity), np.abs(prof.columns[row.quantity]))
-    return float(np.max(scale[kept_samples(scene, prof, default_exclusion(scene))], initial=0.0))
+    own = np.abs(prof.columns[row.quantity])
+    scale = scales(exact).get((row.profile, row.quantity), own)
+    keep = kept_samples(scene, prof, default_exclusion(scene))
+    return float(np.max(own[keep], initial=0.0)), float(np.max(scale[keep], initial=0.0))
 
 
 def record(scene: Scene, rows: list[Agreement], exact: dict, penalty_path: InterfacePath,
            exact_path: InterfacePath) -> dict:
     """summary.json's ``"against_exact"``: per profile and quantity the
     worst-sample and RMS shares, where the worst sample lies, the largest
-    |Δ| and the largest exact scale (in the quantity's unit); the status
+    |Δ|, |exact| and scale (in the quantity's unit); the status
     split of each run and the distance from singular points inside which
     samples were left out."""
     by_profile = {}
     for a in rows:
+        own, scale = largest(scene, exact, a)
         by_profile.setdefault(a.profile, {})[a.quantity] = {
             "worst": a.worst, "rms": a.rms, "at": {"s": a.s, "x": a.x, "y": a.y},
-            "largest_difference": abs(a.value - a.reference), "scale": exact_scale(scene, exact, a),
+            "largest_difference": abs(a.value - a.reference), "largest_exact": own, "scale": scale,
             "kept": a.kept, "samples": a.samples}
     return {"exclude": default_exclusion(scene), "profiles": by_profile,
             "status": {"penalty": status_split(penalty_path), "exact": status_split(exact_path)}}
@@ -128,16 +132,17 @@ def section(scene: Scene, law_name: str, records: dict[str, dict]) -> str:
              f"RMS(Δ) / RMS(scale), over the samples at least {exclude:.3g} from the scene's singular points. "
              "The scale is the exact quantity itself, except on Γ: g_N and g_T are measured against the exact "
              "jump's magnitude |g|, t_N and t_T against |t| (the exact g_N of a closed contact is zero). "
-             "The last two columns are in the quantity's unit.\n",
-             "| method | profile | quantity | worst sample | at s (x, y) | RMS | max \\|Δ\\| | max scale |",
-             "|---|---|---|---|---|---|---|---|"]
+             "The last three columns are in the quantity's unit.\n",
+             "| method | profile | quantity | worst sample | at s (x, y) | RMS | max \\|Δ\\| | max \\|exact\\| "
+             "| max scale |",
+             "|---|---|---|---|---|---|---|---|---|"]
     for label, rec in records.items():
         for pid, quantities in rec["profiles"].items():
             for q, d in quantities.items():
                 at = d["at"]
                 lines.append(f"| {label} | {pid} | {q} | {percent(d['worst'])} | {at['s']:.4g} ({at['x']:.4g}, "
                              f"{at['y']:.4g}) | {percent(d['rms'])} | {files.cell(d['largest_difference'])} | "
-                             f"{files.cell(d['scale'])} |")
+                             f"{files.cell(d['largest_exact'])} | {files.cell(d['scale'])} |")
     lines += ["", "Status on Γ at the last increment: quadrature points (share of Γ's length).", "",
               "| method | enforcement | " + " | ".join(STATUS_NAMES) + " |", "|---|---|" + "---|" * len(STATUS_NAMES)]
     for label, rec in records.items():
