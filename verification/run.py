@@ -325,7 +325,6 @@ def _against_exact(out: Path, scene: Scene, twin: Scene, name: str, result, h, d
     under the run's label and its summary.json.  Returns the exact run's
     summary (a row of summary.md's table)."""
     label, shown = f"{name} (p{result.degree})", f"{name} ({exact_gap.EXACT})"
-    log.info("scene %s: solving with %s again, the '%s' law enforced exactly", scene.name, name, scene.law.name)
     exact, _ = _solve(twin, name, h, degree, paper, None, options, shown)
     penalty, exact_profiles = agreement.sampled(scene, result), agreement.sampled(twin, exact)
     for prof in exact_profiles.values():
