@@ -64,7 +64,7 @@ from .errors import SolverError, SolverOptionError
 from .exact import enforced
 from .exchange import Exchange
 from .interface_path import Increment, InterfacePath, canonical_order
-from .laws import SLIP, STATUS_NAMES, STICK, Decision
+from .laws import OPEN, SLIP, STATUS_NAMES, STICK, Decision
 from .result import SolverReport
 
 
@@ -117,6 +117,10 @@ class InterfaceOperator:
         solve is a failure (exact laws:
         :meth:`contactcore.exact.NitscheInterface.regularised`)."""
         return None
+
+    def sides(self) -> tuple[sp.csr_matrix, sp.csr_matrix]:
+        """``(T, G)`` with the interface's stiffness ``Tᵀ W D G``: here ``(G, G)``."""
+        return self.G, self.G
 
     def jumps(self, u: np.ndarray) -> np.ndarray:
         """``[g_N, g_T]`` (m, 2) of the unknowns ``u`` (owned values)."""
@@ -208,6 +212,59 @@ def _merge(total: SolverReport, one: SolverReport) -> None:
     total.options = one.options
 
 
+#: How much a status holds a point (open < slip < stick), by status code.
+_CONSTRAINT = np.zeros(max(SLIP, STICK, OPEN) + 1, np.int8)
+_CONSTRAINT[[OPEN, SLIP, STICK]] = [0, 1, 2]
+
+
+class _Update:
+    """A kept factorisation ``M`` (of the points' tangent ``D₀``) corrected
+    to the tangent ``D`` that differs from ``D₀`` in a few rows: with
+    ``K_Γ = Tᵀ W D G`` (:meth:`InterfaceOperator.sides`),
+    ``J = M + U B``, ``U`` the columns ``Tᵀ e`` of the changed rows ``e``
+    (point p, row c) and ``B`` their rows ``w_p (D − D₀)_{c,:} G_p``, and by
+    Woodbury's identity (Golub & Van Loan, *Matrix Computations*, 4th ed.,
+    §2.1.4)
+
+        J⁻¹ b = x₀ − Z (I + B Z)⁻¹ B x₀,   x₀ = M⁻¹ b,  Z = M⁻¹ U:
+
+    one solve with ``M`` per use, and one per column of ``Z`` to make it
+    (kept per factorisation and row for the next corrections).  Each
+    solve is held to the health policy by its residual with ``J`` itself."""
+
+    def __init__(self, newton, slot: int, kept: np.ndarray, tangent: np.ndarray, changed: list[tuple[int, int]]):
+        self.slot, self.tangent = slot, tangent
+        test, trial = newton.itf.sides()
+        columns = newton._columns.setdefault(slot, {})
+        for p, c in changed:
+            if (p, c) not in columns:
+                columns[(p, c)] = newton.system.solve(None, test[2 * p + c].toarray().ravel(), slot=slot)[0]
+        self.Z = np.column_stack([columns[pc] for pc in changed]) if changed else np.zeros((newton.system.size, 0))
+        points, rows = (np.array([pc[i] for pc in changed], int) for i in (0, 1))
+        delta = newton.itf.weights[points, None] * (tangent - kept)[points, rows, :]
+        picked = sp.csr_matrix((delta.ravel(), (np.repeat(np.arange(len(changed)), 2),
+                                                (2 * points[:, None] + np.arange(2)).ravel())),
+                               shape=(len(changed), trial.shape[0]))
+        self.B = (picked @ trial).tocsr()
+        self.capacitance = np.eye(len(changed)) + self.B @ self.Z
+        self.J = None  # the bulk and interface operators, for the residual check
+
+    def solve(self, newton, rhs: np.ndarray, scale: float):
+        """``(δu, report)`` with ``J δu = rhs`` on the free rows; SolverError
+        if its residual fails the health policy."""
+        x, report = newton.system.solve(None, rhs, force_scale=scale, slot=self.slot)
+        try:
+            x = x - self.Z @ np.linalg.solve(self.capacitance, self.B @ x)
+        except np.linalg.LinAlgError:
+            raise SolverError("the corrected factorisation is singular") from None
+        if self.J is None:
+            self.J = newton.itf.stiffness(self.tangent)
+        r = (rhs - newton.system.internal(x) - self.J @ x)[newton.free]
+        report.residual = health.relative_residual(r, rhs[newton.free], scale)
+        health.check_residual(report.residual, "the corrected factorisation")
+        return x, report
+
+
 class _Newton:
     """Newton on one system and law, state committed only on convergence."""
 
@@ -231,6 +288,9 @@ class _Newton:
         self.path = InterfacePath(self.itf.points, self.itf.weights)
         self.ranks = system.collective  # every decision is taken on all ranks alike
         self._factorised = []  # (slot, interface tangent) of the system's factorisations, last used last
+        self._updates = []  # low-rank corrections of them (_Update), last made first
+        self._columns = {}  # slot -> {(point, row): M⁻¹ Tᵀe} the corrections share
+        self._singular = []  # status maps whose law tangent proved singular
 
     def _residual(self, u, b, response) -> tuple[np.ndarray, float, float]:
         """The residual, the forces its equilibrium rows are judged against
@@ -295,7 +355,7 @@ class _Newton:
     def _use(self, interface) -> None:
         """Newton on ``interface`` from here on; the factorisations kept
         were of another matrix."""
-        self.itf, self._factorised = interface, []
+        self.itf, self._factorised, self._updates, self._columns, self._singular = interface, [], [], {}, []
 
     def _iterate(self, k: float, start=None):
         """Newton's iterations to increment ``k`` from the predicted state,
@@ -328,7 +388,7 @@ class _Newton:
             if it > 1 and self._converged(R, forces, tangent, response, du, u - u0):
                 health.check_residual(history[-1], "the settled Newton step")
                 return (loads, supports), u, response, it - 1, history
-            du, rep, tangent = self._solve(response.tangent, -R, scale, response.secant)
+            du, rep, tangent = self._solve(response.tangent, -R, scale, response.secant, response.status)
             _merge(self.report, rep)
             if not self.law.is_linear:  # a linear law is solved in one step
                 secant = not np.array_equal(tangent, response.tangent)
@@ -421,23 +481,29 @@ class _Newton:
             alpha, value = 2 * alpha, longer
         return alpha
 
-    def _solve(self, tangent: np.ndarray, rhs: np.ndarray, scale: float, secant=None):
-        """``J δu = rhs`` with the law's ``tangent`` at the points: with the
-        factorisation kept for that tangent if there is one, else refilled
-        into the slot used longest ago (:data:`~contactcore.tolerances.FACTORISATIONS_KEPT`).
-        Also returns the tangent solved with: the law's, or where that is
-        singular an exact law's regularised one with the slipping points'
-        ``secant`` stiffness (not the law's: Newton is then not settled by it)."""
+    def _solve(self, tangent: np.ndarray, rhs: np.ndarray, scale: float, secant=None, status=None):
+        """``J δu = rhs`` with the law's ``tangent`` at the points (of the
+        ``status`` map): with the factorisation kept for that tangent, or the
+        low-rank correction of one (:meth:`_corrected`), if there is one;
+        else refilled into the slot used longest ago
+        (:data:`~contactcore.tolerances.FACTORISATIONS_KEPT`).  Also returns
+        the tangent solved with: the law's, or where that is singular an
+        exact law's regularised one with the slipping points' ``secant``
+        stiffness (not the law's: Newton is then not settled by it).  A map
+        that no point sticks or closes on more than on one whose tangent
+        proved singular (:meth:`_dominated`) is regularised at once."""
         for i, (slot, kept) in enumerate(self._factorised):
             if self.ranks.all(np.array_equal(kept, tangent)):
                 self._factorised.append(self._factorised.pop(i))
                 return (*self.system.solve(None, rhs, force_scale=scale, slot=slot), tangent)
-        used = {slot for slot, _ in self._factorised}
-        free = [s for s in range(tol.FACTORISATIONS_KEPT) if s not in used]
-        slot = free[0] if free else self._factorised.pop(0)[0]
-        self._factorised = [(s, t) for s, t in self._factorised if s != slot]  # until the solve succeeds
+        if secant is not None and self._dominated(status):
+            regularised = self.itf.regularised(tangent, secant)
+            return (*self._factorise(regularised, rhs, scale), regularised)
+        corrected = self._corrected(tangent, rhs, scale)
+        if corrected is not None:
+            return (*corrected, tangent)
         try:
-            du, report = self.system.solve(self.itf.stiffness(tangent), rhs, force_scale=scale, slot=slot)
+            return (*self._factorise(tangent, rhs, scale), tangent)
         except SolverError:
             # an exact law's slip tangent leaves a body held by friction
             # alone free to turn: one secant step there
@@ -445,10 +511,60 @@ class _Newton:
             regularised = None if secant is None else self.itf.regularised(tangent, secant)
             if regularised is None:
                 raise
-            tangent = regularised
-            du, report = self.system.solve(self.itf.stiffness(tangent), rhs, force_scale=scale, slot=slot)
+            self._singular.append(status)
+            return (*self._factorise(regularised, rhs, scale), regularised)
+
+    def _dominated(self, status) -> bool:
+        """Whether no point of the ``status`` map sticks where a map whose
+        tangent proved singular did not, and none is closed where it was
+        open.  That tangent's null mode is a body held by Γ alone turning
+        (or sliding) with no normal jump at its closed points and no jump at
+        its sticking ones (:meth:`contactcore.exact.NitscheInterface.regularised`):
+        every such map leaves it free too, so its tangent is singular
+        without a factorisation to tell."""
+        rank = _CONSTRAINT[status]
+        return any(self.ranks.all(bool(np.all(rank <= _CONSTRAINT[s]))) for s in self._singular)
+
+    def _factorise(self, tangent: np.ndarray, rhs: np.ndarray, scale: float):
+        """Factorise ``J`` with ``tangent`` into the slot free or used
+        longest ago, dropping what was kept of that slot, and solve."""
+        used = {slot for slot, _ in self._factorised}
+        free = [s for s in range(tol.FACTORISATIONS_KEPT) if s not in used]
+        slot = free[0] if free else self._factorised.pop(0)[0]
+        self._factorised = [(s, t) for s, t in self._factorised if s != slot]  # until the solve succeeds
+        self._updates = [u for u in self._updates if u.slot != slot]
+        self._columns.pop(slot, None)
+        du, report = self.system.solve(self.itf.stiffness(tangent), rhs, force_scale=scale, slot=slot)
         self._factorised.append((slot, tangent))
-        return du, report, tangent
+        return du, report
+
+    def _corrected(self, tangent: np.ndarray, rhs: np.ndarray, scale: float):
+        """``(δu, report)`` by a kept factorisation corrected to ``tangent``
+        (:class:`_Update`), or None where none is close enough: serial runs
+        only, a correction of at most LOW_RANK_COLUMNS rows of the points'
+        tangents of which at most LOW_RANK_NEW need a solve
+        (:mod:`contactcore.tolerances`), and a correction whose solve fails
+        its residual check (a singular tangent) is left to a factorisation."""
+        for update in self._updates:
+            if np.array_equal(update.tangent, tangent):
+                return update.solve(self, rhs, scale)
+        if self.ranks.parallel:
+            return None
+        best = None
+        for slot, kept in reversed(self._factorised):
+            changed = [tuple(pc) for pc in np.argwhere(np.any(tangent != kept, axis=2))]
+            new = sum(pc not in self._columns.get(slot, {}) for pc in changed)
+            if len(changed) <= tol.LOW_RANK_COLUMNS and new <= tol.LOW_RANK_NEW and (best is None or new < best[0]):
+                best = (new, slot, kept, changed)
+        if best is None:
+            return None
+        update = _Update(self, best[1], best[2], tangent, best[3])
+        try:
+            solved = update.solve(self, rhs, scale)
+        except SolverError:
+            return None
+        self._updates = [update, *self._updates][:tol.FACTORISATIONS_KEPT]
+        return solved
 
     def _commit(self, k, factors, u, response, iterations, history) -> None:
         self.u, self.state, self.status = u, response.state, response.status

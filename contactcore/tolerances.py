@@ -269,6 +269,19 @@ MAX_CUTBACKS = 6
 #: -> 2).  Each costs one factor's memory.
 FACTORISATIONS_KEPT = 2
 
+#: A tangent that differs from a kept factorisation's at a few points is
+#: solved with that factorisation and a low-rank correction (Woodbury's
+#: identity, contactcore.newton._Update): each row of a point's 2 × 2
+#: tangent that changed costs one solve with the kept factors, done once per
+#: factorisation and point.  At most LOW_RANK_NEW such solves per new tangent:
+#: a factorisation costs 6-8 solves on C-coulomb at h = 0.05 (fe P1 8.4 /
+#: 1.4 ms, xfem P2 54 / 7 ms, 2026-11-26; the ratio grows with the size),
+#: so the correction is cheaper whenever it is taken.  At most
+#: LOW_RANK_COLUMNS rows in all: the correction's dense work and its
+#: capacitance matrix stay small beside one solve.
+LOW_RANK_NEW = 4
+LOW_RANK_COLUMNS = 32
+
 #: Built systems a study keeps for reuse (contactcore.discretisation.Reuse):
 #: one per method of a ``--method all`` study, whose cases alternate
 #: between the methods; each costs one system's matrices and factorisations.
