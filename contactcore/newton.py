@@ -194,6 +194,16 @@ class ContactSystem(ABC):
         :data:`~contactcore.tolerances.FACTORISATIONS_KEPT`); with
         ``interface_tangent`` None, the slot's last factorisation is used."""
 
+    #: how many columns a low-rank correction of a factorisation may solve
+    #: for at once (:meth:`solve_columns`; :mod:`contactcore.tolerances`)
+    update_columns: ClassVar[int] = tol.LOW_RANK_NEW
+
+    def solve_columns(self, rhs: np.ndarray, slot: int) -> np.ndarray:
+        """``δU`` (n, q) for the q columns of ``rhs`` with the slot's last
+        factorisation (one process), as :meth:`solve` does them one by one."""
+        return np.column_stack([self.solve(None, column, slot=slot)[0] for column in rhs.T]) if rhs.shape[1] else \
+            np.zeros(rhs.shape)
+
     def close(self) -> None:
         """Release the matrices and factorisations the solves kept (none here)."""
 
@@ -228,35 +238,39 @@ class _Update:
 
         J⁻¹ b = x₀ − Z (I + B Z)⁻¹ B x₀,   x₀ = M⁻¹ b,  Z = M⁻¹ U:
 
-    one solve with ``M`` per use, and one per column of ``Z`` to make it
-    (kept per factorisation and row for the next corrections).  Each
-    solve is held to the health policy by its residual with ``J`` itself."""
+    one solve with ``M`` per use, and the columns of ``Z`` to make it, solved
+    as one block (:meth:`ContactSystem.solve_columns`) and kept in
+    ``columns`` (row ``e`` -> ``M⁻¹ Tᵀ e``, shared by every correction of
+    ``M``).  Each solve is held to the health policy by its residual with
+    ``J`` itself: a singular ``J`` fails it."""
 
     def __init__(self, newton, slot: int, kept: np.ndarray, tangent: np.ndarray, changed: list[tuple[int, int]]):
-        self.slot, self.tangent = slot, tangent
+        self.slot, self.tangent, self.rows = slot, tangent, changed
         test, trial = newton.itf.sides()
-        columns = newton._columns.setdefault(slot, {})
-        for p, c in changed:
-            if (p, c) not in columns:
-                columns[(p, c)] = newton.system.solve(None, test[2 * p + c].toarray().ravel(), slot=slot)[0]
-        self.Z = np.column_stack([columns[pc] for pc in changed]) if changed else np.zeros((newton.system.size, 0))
+        self.columns = newton._columns.setdefault(slot, {})
+        new = [pc for pc in changed if pc not in self.columns]
+        if new:
+            self.columns.update(zip(new, newton.system.solve_columns(
+                test[[2 * p + c for p, c in new]].toarray().T, slot).T))
         points, rows = (np.array([pc[i] for pc in changed], int) for i in (0, 1))
         delta = newton.itf.weights[points, None] * (tangent - kept)[points, rows, :]
         picked = sp.csr_matrix((delta.ravel(), (np.repeat(np.arange(len(changed)), 2),
                                                 (2 * points[:, None] + np.arange(2)).ravel())),
                                shape=(len(changed), trial.shape[0]))
         self.B = (picked @ trial).tocsr()
-        self.capacitance = np.eye(len(changed)) + self.B @ self.Z
-        self.J = None  # the bulk and interface operators, for the residual check
+        self.capacitance = np.eye(len(changed)) + np.column_stack([self.B @ self.columns[pc] for pc in changed])
+        self.J = None  # ``J``'s interface part, made at the first residual check
 
     def solve(self, newton, rhs: np.ndarray, scale: float):
         """``(δu, report)`` with ``J δu = rhs`` on the free rows; SolverError
         if its residual fails the health policy."""
         x, report = newton.system.solve(None, rhs, force_scale=scale, slot=self.slot)
         try:
-            x = x - self.Z @ np.linalg.solve(self.capacitance, self.B @ x)
+            w = np.linalg.solve(self.capacitance, self.B @ x)
         except np.linalg.LinAlgError:
             raise SolverError("the corrected factorisation is singular") from None
+        for wj, pc in zip(w, self.rows):
+            x -= wj * self.columns[pc]
         if self.J is None:
             self.J = newton.itf.stiffness(self.tangent)
         r = (rhs - newton.system.internal(x) - self.J @ x)[newton.free]
@@ -540,21 +554,28 @@ class _Newton:
 
     def _corrected(self, tangent: np.ndarray, rhs: np.ndarray, scale: float):
         """``(δu, report)`` by a kept factorisation corrected to ``tangent``
-        (:class:`_Update`), or None where none is close enough: serial runs
+        (:class:`_Update`), or None where none is close enough: one process
         only, a correction of at most LOW_RANK_COLUMNS rows of the points'
-        tangents of which at most LOW_RANK_NEW need a solve
-        (:mod:`contactcore.tolerances`), and a correction whose solve fails
-        its residual check (a singular tangent) is left to a factorisation."""
-        for update in self._updates:
-            if np.array_equal(update.tangent, tangent):
-                return update.solve(self, rhs, scale)
+        tangents (:mod:`contactcore.tolerances`) of which at most the
+        system's ``update_columns`` need a solve, the fewest of the kept
+        factorisations; a correction whose solve fails its residual check (a
+        singular tangent) is left to a factorisation."""
         if self.ranks.parallel:
             return None
+        for update in self._updates:
+            if np.array_equal(update.tangent, tangent):
+                try:
+                    return update.solve(self, rhs, scale)
+                except SolverError:
+                    self._updates.remove(update)
+                    return None
         best = None
         for slot, kept in reversed(self._factorised):
             changed = [tuple(pc) for pc in np.argwhere(np.any(tangent != kept, axis=2))]
-            new = sum(pc not in self._columns.get(slot, {}) for pc in changed)
-            if len(changed) <= tol.LOW_RANK_COLUMNS and new <= tol.LOW_RANK_NEW and (best is None or new < best[0]):
+            columns = self._columns.get(slot, {})
+            new = sum(pc not in columns for pc in changed)
+            if (len(changed) <= tol.LOW_RANK_COLUMNS and new <= self.system.update_columns
+                    and len(columns) + new <= tol.LOW_RANK_COLUMNS and (best is None or new < best[0])):
                 best = (new, slot, kept, changed)
         if best is None:
             return None

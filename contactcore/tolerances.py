@@ -269,18 +269,21 @@ MAX_CUTBACKS = 6
 #: -> 2).  Each costs one factor's memory.
 FACTORISATIONS_KEPT = 2
 
-#: A tangent that differs from a kept factorisation's at a few points is
-#: solved with that factorisation and a low-rank correction (Woodbury's
-#: identity, contactcore.newton._Update): each row of a point's 2 × 2
-#: tangent that changed costs one solve with the kept factors, done once per
-#: factorisation and point.  At most LOW_RANK_NEW such solves per new tangent:
-#: a factorisation costs 6-8 solves on C-coulomb at h = 0.05 (fe P1 8.4 /
-#: 1.4 ms, xfem P2 54 / 7 ms, 2026-11-26; the ratio grows with the size),
-#: so the correction is cheaper whenever it is taken.  At most
-#: LOW_RANK_COLUMNS rows in all: the correction's dense work and its
-#: capacitance matrix stay small beside one solve.
+#: A tangent that differs from a kept factorisation's in a few rows of
+#: its points' 2 × 2 tangents is solved with that factorisation and a
+#: low-rank correction (Woodbury's identity, contactcore.newton._Update):
+#: each changed row costs one solve with the kept factors, once per
+#: factorisation.  A factorisation costs 6-10 solves on C-coulomb at h =
+#: 0.05 (fe P1 8.4 against 1.4 ms, xfem P2 46-54 against 4.7-6 ms,
+#: 2026-11-26; the ratio grows with the size).  Solved one by one, at most
+#: LOW_RANK_NEW new rows per correction; MUMPS solves LOW_RANK_BLOCK of them
+#: as one block in a quarter of a factorisation's time (xfem P2: 32 columns
+#: in 24 ms).  At most LOW_RANK_COLUMNS rows per correction and kept per
+#: factorisation: 8 bytes each per unknown, 1 kB per unknown for two
+#: factorisations at most, within contactcore.budget's allowance.
 LOW_RANK_NEW = 4
-LOW_RANK_COLUMNS = 32
+LOW_RANK_BLOCK = 32
+LOW_RANK_COLUMNS = 64
 
 #: Built systems a study keeps for reuse (contactcore.discretisation.Reuse):
 #: one per method of a ``--method all`` study, whose cases alternate
