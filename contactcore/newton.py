@@ -305,6 +305,7 @@ class _Newton:
         self._updates = []  # low-rank corrections of them (_Update), last made first
         self._columns = {}  # slot -> {(point, row): M⁻¹ Tᵀe} the corrections share
         self._singular = []  # status maps whose law tangent proved singular
+        self._secant = None  # the step's secant stiffnesses of its slipping points (_regularised)
 
     def _residual(self, u, b, response) -> tuple[np.ndarray, float, float]:
         """The residual, the forces its equilibrium rows are judged against
@@ -382,6 +383,7 @@ class _Newton:
         u[self.system.fixed] = self.system.fixed_values(supports)
         lift = self._lift(supports)
         history, tangent, start, du, u0 = [], None, 0.0, None, u.copy()
+        self._secant = None  # each step its own secant
         for it in range(1, tol.NEWTON_MAX_ITERATIONS + 1):
             response = self.itf.respond(self.law, u, self.state, previous, self.ranks)
             previous = response.status
@@ -496,37 +498,52 @@ class _Newton:
         return alpha
 
     def _solve(self, tangent: np.ndarray, rhs: np.ndarray, scale: float, secant=None, status=None):
-        """``J δu = rhs`` with the law's ``tangent`` at the points (of the
-        ``status`` map): with the factorisation kept for that tangent, or the
-        low-rank correction of one (:meth:`_corrected`), if there is one;
-        else refilled into the slot used longest ago
-        (:data:`~contactcore.tolerances.FACTORISATIONS_KEPT`).  Also returns
-        the tangent solved with: the law's, or where that is singular an
-        exact law's regularised one with the slipping points' ``secant``
-        stiffness (not the law's: Newton is then not settled by it).  A map
-        that no point sticks or closes on more than on one whose tangent
-        proved singular (:meth:`_dominated`) is regularised at once."""
-        for i, (slot, kept) in enumerate(self._factorised):
-            if self.ranks.all(np.array_equal(kept, tangent)):
-                self._factorised.append(self._factorised.pop(i))
-                return (*self.system.solve(None, rhs, force_scale=scale, slot=slot), tangent)
+        """``J δu = rhs`` with the law's ``tangent`` at the points of the
+        ``status`` map (:meth:`_solved`).  Also returns the tangent solved
+        with: the law's, or where that is singular an exact law's
+        regularised one (:meth:`_regularised`; Newton is then not settled by
+        it).  A map that no point sticks or closes on more than on one whose
+        tangent proved singular (:meth:`_dominated`) is regularised at once."""
         if secant is not None and self._dominated(status):
-            regularised = self.itf.regularised(tangent, secant)
-            return (*self._factorise(regularised, rhs, scale), regularised)
-        corrected = self._corrected(tangent, rhs, scale)
-        if corrected is not None:
-            return (*corrected, tangent)
+            tangent = self._regularised(tangent, secant)
         try:
-            return (*self._factorise(tangent, rhs, scale), tangent)
+            return (*self._solved(tangent, rhs, scale), tangent)
         except SolverError:
             # an exact law's slip tangent leaves a body held by friction
             # alone free to turn: one secant step there
-            # (:meth:`contactcore.exact.NitscheInterface.regularised`)
-            regularised = None if secant is None else self.itf.regularised(tangent, secant)
+            regularised = None if secant is None or self._dominated(status) else self._regularised(tangent, secant)
             if regularised is None:
                 raise
             self._singular.append(status)
-            return (*self._factorise(regularised, rhs, scale), regularised)
+            return (*self._solved(regularised, rhs, scale), regularised)
+
+    def _regularised(self, tangent: np.ndarray, secant: np.ndarray):
+        """The exact law's tangent regularised by the slipping points'
+        ``secant`` stiffness (:meth:`contactcore.exact.NitscheInterface.regularised`;
+        None for a penalty law), each point's as the step first gave it (a
+        point that starts slipping later, its own): the secant steps of a
+        step then share one matrix but for the points whose status changed,
+        solved by a kept factorisation or a correction of it.  Kačanov's
+        iteration with its first secant: each step still turns the body
+        towards the stick window, which the line search's doubling reaches."""
+        if self._secant is not None:
+            secant = np.where(secant > 0, np.where(self._secant > 0, self._secant, secant), 0.0)
+        regularised = self.itf.regularised(tangent, secant)
+        if regularised is not None:
+            self._secant = secant
+        return regularised
+
+    def _solved(self, tangent: np.ndarray, rhs: np.ndarray, scale: float):
+        """``(δu, report)`` with the points' ``tangent``: by the
+        factorisation kept for it, or the low-rank correction of one
+        (:meth:`_corrected`), if there is one; else factorised into the slot
+        used longest ago (:data:`~contactcore.tolerances.FACTORISATIONS_KEPT`)."""
+        for i, (slot, kept) in enumerate(self._factorised):
+            if self.ranks.all(np.array_equal(kept, tangent)):
+                self._factorised.append(self._factorised.pop(i))
+                return self.system.solve(None, rhs, force_scale=scale, slot=slot)
+        corrected = self._corrected(tangent, rhs, scale)
+        return corrected if corrected is not None else self._factorise(tangent, rhs, scale)
 
     def _dominated(self, status) -> bool:
         """Whether no point of the ``status`` map sticks where a map whose

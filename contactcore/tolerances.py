@@ -281,7 +281,7 @@ FACTORISATIONS_KEPT = 2
 #: in 24 ms).  At most LOW_RANK_COLUMNS rows per correction and kept per
 #: factorisation: 8 bytes each per unknown, 1 kB per unknown for two
 #: factorisations at most, within contactcore.budget's allowance.
-LOW_RANK_NEW = 4
+LOW_RANK_NEW = 8
 LOW_RANK_BLOCK = 32
 LOW_RANK_COLUMNS = 64
 
