@@ -227,6 +227,22 @@ _CONSTRAINT = np.zeros(max(SLIP, STICK, OPEN) + 1, np.int8)
 _CONSTRAINT[[OPEN, SLIP, STICK]] = [0, 1, 2]
 
 
+class _Columns:
+    """The columns ``M⁻¹ Tᵀ e`` kept for one factorisation ``M``, by the
+    row ``e`` (point, row of its tangent) they were solved for, side by side
+    in the order solved (:class:`_Update`)."""
+
+    def __init__(self, size: int):
+        self.index, self.stack = {}, np.zeros((size, 0))
+
+    def __len__(self) -> int:
+        return len(self.index)
+
+    def add(self, rows: list[tuple[int, int]], columns: np.ndarray) -> None:
+        self.index.update(zip(rows, range(len(self.index), len(self.index) + len(rows))))
+        self.stack = np.hstack([self.stack, columns])
+
+
 class _Update:
     """A kept factorisation ``M`` (of the points' tangent ``D₀``) corrected
     to the tangent ``D`` that differs from ``D₀`` in a few rows: with
@@ -239,38 +255,39 @@ class _Update:
         J⁻¹ b = x₀ − Z (I + B Z)⁻¹ B x₀,   x₀ = M⁻¹ b,  Z = M⁻¹ U:
 
     one solve with ``M`` per use, and the columns of ``Z`` to make it, solved
-    as one block (:meth:`ContactSystem.solve_columns`) and kept in
-    ``columns`` (row ``e`` -> ``M⁻¹ Tᵀ e``, shared by every correction of
-    ``M``).  Each solve is held to the health policy by its residual with
-    ``J`` itself: a singular ``J`` fails it."""
+    as one block (:meth:`ContactSystem.solve_columns`) and kept for the
+    next corrections of ``M`` (:class:`_Columns`).  Each solve is held to
+    the health policy by its residual with ``J`` itself: a singular ``J``
+    fails it."""
 
     def __init__(self, newton, slot: int, kept: np.ndarray, tangent: np.ndarray, changed: list[tuple[int, int]]):
-        self.slot, self.tangent, self.rows = slot, tangent, changed
+        self.slot, self.tangent = slot, tangent
         test, trial = newton.itf.sides()
-        self.columns = newton._columns.setdefault(slot, {})
-        new = [pc for pc in changed if pc not in self.columns]
+        self.columns = newton._columns.setdefault(slot, _Columns(newton.system.size))
+        new = [pc for pc in changed if pc not in self.columns.index]
         if new:
-            self.columns.update(zip(new, newton.system.solve_columns(
-                test[[2 * p + c for p, c in new]].toarray().T, slot).T))
+            self.columns.add(new, newton.system.solve_columns(test[[2 * p + c for p, c in new]].toarray().T, slot))
+        self.used = len(self.columns)  # the columns it reads: the first ones, kept in place
+        self.at = np.array([self.columns.index[pc] for pc in changed], int)
         points, rows = (np.array([pc[i] for pc in changed], int) for i in (0, 1))
         delta = newton.itf.weights[points, None] * (tangent - kept)[points, rows, :]
         picked = sp.csr_matrix((delta.ravel(), (np.repeat(np.arange(len(changed)), 2),
                                                 (2 * points[:, None] + np.arange(2)).ravel())),
                                shape=(len(changed), trial.shape[0]))
         self.B = (picked @ trial).tocsr()
-        self.capacitance = np.eye(len(changed)) + np.column_stack([self.B @ self.columns[pc] for pc in changed])
+        self.capacitance = np.eye(len(changed)) + self.B @ self.columns.stack[:, self.at]
         self.J = None  # ``J``'s interface part, made at the first residual check
 
     def solve(self, newton, rhs: np.ndarray, scale: float):
         """``(δu, report)`` with ``J δu = rhs`` on the free rows; SolverError
         if its residual fails the health policy."""
         x, report = newton.system.solve(None, rhs, force_scale=scale, slot=self.slot)
+        w = np.zeros(self.used)
         try:
-            w = np.linalg.solve(self.capacitance, self.B @ x)
+            w[self.at] = np.linalg.solve(self.capacitance, self.B @ x)
         except np.linalg.LinAlgError:
             raise SolverError("the corrected factorisation is singular") from None
-        for wj, pc in zip(w, self.rows):
-            x -= wj * self.columns[pc]
+        x -= self.columns.stack[:, :self.used] @ w
         if self.J is None:
             self.J = newton.itf.stiffness(self.tangent)
         r = (rhs - newton.system.internal(x) - self.J @ x)[newton.free]
@@ -303,7 +320,7 @@ class _Newton:
         self.ranks = system.collective  # every decision is taken on all ranks alike
         self._factorised = []  # (slot, interface tangent) of the system's factorisations, last used last
         self._updates = []  # low-rank corrections of them (_Update), last made first
-        self._columns = {}  # slot -> {(point, row): M⁻¹ Tᵀe} the corrections share
+        self._columns = {}  # slot -> the _Columns its corrections share
         self._singular = []  # status maps whose law tangent proved singular
         self._secant = None  # the step's secant stiffnesses of its slipping points (_regularised)
 
@@ -589,8 +606,8 @@ class _Newton:
         best = None
         for slot, kept in reversed(self._factorised):
             changed = [tuple(pc) for pc in np.argwhere(np.any(tangent != kept, axis=2))]
-            columns = self._columns.get(slot, {})
-            new = sum(pc not in columns for pc in changed)
+            columns = self._columns.get(slot, _Columns(0))
+            new = sum(pc not in columns.index for pc in changed)
             if (len(changed) <= tol.LOW_RANK_COLUMNS and new <= self.system.update_columns
                     and len(columns) + new <= tol.LOW_RANK_COLUMNS and (best is None or new < best[0])):
                 best = (new, slot, kept, changed)
