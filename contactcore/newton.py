@@ -32,8 +32,10 @@ it is symmetric, by LU otherwise (:class:`contactcore.linear_solver.Tangent`).
 The tangent of a piecewise-linear law changes only when a point changes
 status: a solve whose tangent is one of the last factorised
 (:data:`~contactcore.tolerances.FACTORISATIONS_KEPT`) reuses that
-factorisation, often for whole load paths, and the system refills the
-matrices it allocated once.  Every status decision is taken so that round-off cannot move it
+factorisation, often for whole load paths, one whose tangent differs from
+one of theirs in a few points is solved by a low-rank correction of it
+(:class:`_Update`, one process), and the system refills the matrices it
+allocated once.  Every status decision is taken so that round-off cannot move it
 (:class:`~contactcore.laws.Decision`): a point whose margin (its gap, or
 ``μp − |t*|``) lies within DECISION_BAND of the margin's Γ-wide scale keeps
 the status of the previous iterate, and a step starts from the elastic
@@ -229,18 +231,25 @@ _CONSTRAINT[[OPEN, SLIP, STICK]] = [0, 1, 2]
 
 class _Columns:
     """The columns ``M⁻¹ Tᵀ e`` kept for one factorisation ``M``, by the
-    row ``e`` (point, row of its tangent) they were solved for, side by side
-    in the order solved (:class:`_Update`)."""
+    row ``e`` (point, row of its tangent) they were solved for, in the order
+    solved: ``rows[k]`` is column k (:class:`_Update`)."""
 
     def __init__(self, size: int):
-        self.index, self.stack = {}, np.zeros((size, 0))
+        self.index, self.rows = {}, np.zeros((0, size))
 
     def __len__(self) -> int:
         return len(self.index)
 
-    def add(self, rows: list[tuple[int, int]], columns: np.ndarray) -> None:
-        self.index.update(zip(rows, range(len(self.index), len(self.index) + len(rows))))
-        self.stack = np.hstack([self.stack, columns])
+    def add(self, keys: list[tuple[int, int]], columns: np.ndarray) -> None:
+        """Keep ``columns`` (n, q), the solutions for the rows ``keys``;
+        the storage grows by doubling, up to LOW_RANK_COLUMNS."""
+        count = len(self.index)
+        if count + len(keys) > len(self.rows):
+            grown = np.zeros((min(max(2 * (count + len(keys)), 8), tol.LOW_RANK_COLUMNS), self.rows.shape[1]))
+            grown[:count] = self.rows[:count]
+            self.rows = grown
+        self.rows[count:count + len(keys)] = columns.T
+        self.index.update(zip(keys, range(count, count + len(keys))))
 
 
 class _Update:
@@ -262,7 +271,7 @@ class _Update:
 
     def __init__(self, newton, slot: int, kept: np.ndarray, tangent: np.ndarray, changed: list[tuple[int, int]]):
         self.slot, self.tangent = slot, tangent
-        test, trial = newton.itf.sides()
+        test, self.trial = newton.itf.sides()
         self.columns = newton._columns.setdefault(slot, _Columns(newton.system.size))
         new = [pc for pc in changed if pc not in self.columns.index]
         if new:
@@ -273,10 +282,11 @@ class _Update:
         delta = newton.itf.weights[points, None] * (tangent - kept)[points, rows, :]
         picked = sp.csr_matrix((delta.ravel(), (np.repeat(np.arange(len(changed)), 2),
                                                 (2 * points[:, None] + np.arange(2)).ravel())),
-                               shape=(len(changed), trial.shape[0]))
-        self.B = (picked @ trial).tocsr()
-        self.capacitance = np.eye(len(changed)) + self.B @ self.columns.stack[:, self.at]
-        self.J = None  # ``J``'s interface part, made at the first residual check
+                               shape=(len(changed), self.trial.shape[0]))
+        self.B = (picked @ self.trial).tocsr()
+        reach = np.unique(self.B.indices)  # the unknowns B reads: B Z from those rows of Z only
+        BZ = self.B[:, reach].toarray() @ self.columns.rows[self.at][:, reach].T
+        self.capacitance = np.eye(len(changed)) + BZ
 
     def solve(self, newton, rhs: np.ndarray, scale: float):
         """``(δu, report)`` with ``J δu = rhs`` on the free rows; SolverError
@@ -287,10 +297,10 @@ class _Update:
             w[self.at] = np.linalg.solve(self.capacitance, self.B @ x)
         except np.linalg.LinAlgError:
             raise SolverError("the corrected factorisation is singular") from None
-        x -= self.columns.stack[:, :self.used] @ w
-        if self.J is None:
-            self.J = newton.itf.stiffness(self.tangent)
-        r = (rhs - newton.system.internal(x) - self.J @ x)[newton.free]
+        x -= self.columns.rows[:self.used].T @ w
+        jumps = (self.trial @ x).reshape(-1, 2)
+        Jx = newton.system.internal(x) + newton.itf.internal(x, np.einsum("pij,pj->pi", self.tangent, jumps))
+        r = (rhs - Jx)[newton.free]
         report.residual = health.relative_residual(r, rhs[newton.free], scale)
         health.check_residual(report.residual, "the corrected factorisation")
         return x, report
