@@ -411,10 +411,13 @@ class _Newton:
         lift = self._lift(supports)
         history, tangent, start, du, u0 = [], None, 0.0, None, u.copy()
         self._secant = None  # each step its own secant
+        evaluated = None  # the line search's response and residual at u
         for it in range(1, tol.NEWTON_MAX_ITERATIONS + 1):
-            response = self.itf.respond(self.law, u, self.state, previous, self.ranks)
+            if evaluated is None:
+                response = self.itf.respond(self.law, u, self.state, previous, self.ranks)
+                evaluated = response, self._residual(u, b, response)
+            response, (R, forces, data) = evaluated
             previous = response.status
-            R, forces, data = self._residual(u, b, response)
             norm = self.ranks.max(float(np.max(np.abs(R[self.free]), initial=0.0)))
             start = start or norm
             # the round-off scale of this step's solves: the forces, the data
@@ -435,9 +438,11 @@ class _Newton:
             _merge(self.report, rep)
             if not self.law.is_linear:  # a linear law is solved in one step
                 secant = not np.array_equal(tangent, response.tangent)
-                alpha = self._line_search(u, du, b, R, response.status, secant)
+                alpha, evaluated = self._line_search(u, du, b, R, response.status, secant)
                 du = alpha * du
                 tangent = tangent if alpha == 1.0 else None  # a partial step settles nothing
+            else:
+                evaluated = None
             u = u + du
         raise SolverError(f"Newton did not converge in {tol.NEWTON_MAX_ITERATIONS} iterations; "
                           f"relative residual history {_fmt(history)}")
@@ -485,7 +490,7 @@ class _Newton:
         """``‖R‖₂`` over the free rows of every rank."""
         return float(np.sqrt(self.ranks.sum(float(np.sum(R[self.free] ** 2)))))
 
-    def _line_search(self, u, du, b, R, status, secant: bool = False) -> float:
+    def _line_search(self, u, du, b, R, status, secant: bool = False):
         """The largest ``α = 2⁻ʲ`` (j <= LINE_SEARCH_HALVINGS) whose step
         ``u + α δu`` decreases the merit ``‖R‖₂`` by Armijo's rule
         ``‖R(u + α δu)‖ <= (1 − ARMIJO α) ‖R(u)‖`` — the globalised
@@ -499,13 +504,16 @@ class _Newton:
         point re-enters its stick window, which is where the step goes.  A full step that
         passes is doubled while the merit keeps falling (at most
         LINE_SEARCH_EXPANSIONS times): a regularised tangent, stiffer than
-        the law's, asks for longer steps than it gives."""
-        merit = self._merit(R)
+        the law's, asks for longer steps than it gives.  Also returns the
+        law's response and :meth:`_residual` at ``u + α δu`` where it was
+        evaluated (None elsewhere): the next iterate's, computed alike."""
+        merit, seen = self._merit(R), {}
 
         def along(alpha):
             trial = u + alpha * du
-            return self._merit(self._residual(trial, b, self.itf.respond(self.law, trial, self.state, status,
-                                                                          self.ranks))[0])
+            response = self.itf.respond(self.law, trial, self.state, status, self.ranks)
+            seen[alpha] = (response, self._residual(trial, b, response))
+            return self._merit(seen[alpha][1][0])
 
         alpha = 1.0
         for _ in range(tol.LINE_SEARCH_HALVINGS):
@@ -514,15 +522,15 @@ class _Newton:
                 break
             alpha /= 2
         else:
-            return alpha
+            return alpha, None
         if alpha < 1.0:
-            return alpha
+            return alpha, seen[alpha]
         for _ in range(tol.LINE_SEARCH_EXPANSIONS):
             longer = along(2 * alpha)
             if longer >= value:
                 break
             alpha, value = 2 * alpha, longer
-        return alpha
+        return alpha, seen[alpha]
 
     def _solve(self, tangent: np.ndarray, rhs: np.ndarray, scale: float, secant=None, status=None):
         """``J δu = rhs`` with the law's ``tangent`` at the points of the

@@ -273,16 +273,16 @@ FACTORISATIONS_KEPT = 2
 #: its points' 2 × 2 tangents is solved with that factorisation and a
 #: low-rank correction (Woodbury's identity, contactcore.newton._Update):
 #: each changed row costs one solve with the kept factors, once per
-#: factorisation.  A factorisation costs 6-10 solves on C-coulomb at h =
-#: 0.05 (fe P1 8.4 against 1.4 ms, xfem P2 46-54 against 4.7-6 ms,
-#: 2026-11-26; the ratio grows with the size).  Solved one by one, at most
-#: LOW_RANK_NEW new rows per correction; MUMPS solves LOW_RANK_BLOCK of them
-#: as one block in a quarter of a factorisation's time (xfem P2: 32 columns
-#: in 24 ms).  At most LOW_RANK_COLUMNS rows per correction and kept per
-#: factorisation: 8 bytes each per unknown, 1 kB per unknown for two
-#: factorisations at most, within contactcore.budget's allowance.
+#: factorisation.  A factorisation costs 6-17 solves on C-coulomb at h =
+#: 0.05 (fe P1 8.4 against 1.4 ms, xfem P2 46-54 against 4.7-6 ms, efgm P1
+#: 51 against 3 ms, 2026-11-26; the ratio grows with the size).  Solved one
+#: by one, at most LOW_RANK_NEW new rows per correction.  MUMPS solves them
+#: as one block (fe, xfem) for less than a factorisation up to
+#: LOW_RANK_COLUMNS (xfem P2: 16 columns in 13 ms, 32 in 24, 64 in ~45),
+#: the most a correction takes and a factorisation keeps: 8 bytes each per
+#: unknown, 1 kB per unknown for two factorisations at most, within
+#: contactcore.budget's allowance.
 LOW_RANK_NEW = 8
-LOW_RANK_BLOCK = 32
 LOW_RANK_COLUMNS = 64
 
 #: Built systems a study keeps for reuse (contactcore.discretisation.Reuse):

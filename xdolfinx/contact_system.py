@@ -36,7 +36,7 @@ class PETScSystem(ContactSystem):
     """``K`` (PETSc), loads, the prescribed unknowns (``constraints`` on
     dofs) and Γ (see module doc), distributed over ``comm`` (the mesh's)."""
 
-    update_columns = tol.LOW_RANK_BLOCK  # MUMPS solves them as one block
+    update_columns = tol.LOW_RANK_COLUMNS  # MUMPS solves them as one block
 
     def __init__(self, K, loads: list[np.ndarray], constraints: Constraints, interface: InterfaceOperator, *,
                  comm=None, petsc_options=None, estimate_condition: bool = False, what: str = "linear system"):
