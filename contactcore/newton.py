@@ -203,8 +203,10 @@ class ContactSystem(ABC):
     def solve_columns(self, rhs: np.ndarray, slot: int) -> np.ndarray:
         """``δU`` (n, q) for the q columns of ``rhs`` with the slot's last
         factorisation (one process), as :meth:`solve` does them one by one."""
-        return np.column_stack([self.solve(None, column, slot=slot)[0] for column in rhs.T]) if rhs.shape[1] else \
-            np.zeros(rhs.shape)
+        out = np.zeros(rhs.shape)
+        for j, column in enumerate(rhs.T):
+            out[:, j] = self.solve(None, column, slot=slot)[0]
+        return out
 
     def close(self) -> None:
         """Release the matrices and factorisations the solves kept (none here)."""

@@ -95,3 +95,16 @@ def test_corrections_give_the_factorised_answer(law, monkeypatch):
         assert np.array_equal(a.status, b.status)
         for x, y in ((a.traction, b.traction), (a.jump, b.jump)):
             assert np.max(np.abs(x - y)) <= tol.LOW_RANK_AGREEMENT * np.max(np.abs(y))
+
+
+def test_corrections_on_another_factorisation_package():
+    """SuperLU (no MUMPS block solve: the columns are solved one by one)
+    gives MUMPS's run: the same iterations and status maps, and tractions
+    within two direct solvers' agreement."""
+    superlu = methods.solver("fe")(SCENES["exact"](), H, degree=1, petsc_options={"pc_factor_mat_solver_type": "superlu"})
+    mumps, _ = _run("fe", "exact")
+    assert "superlu" in superlu.solver.solver
+    assert superlu.solver.iterations == mumps.solver.iterations
+    a, b = superlu.interface.final, mumps.interface.final
+    assert np.array_equal(a.status, b.status)
+    assert np.max(np.abs(a.traction - b.traction)) <= tol.SOLVER_AGREEMENT * np.max(np.abs(b.traction))
