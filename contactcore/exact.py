@@ -244,6 +244,10 @@ class NitscheInterface:
     def pattern(self) -> sp.csr_matrix:
         return self._scaled.pattern()
 
+    def sides(self) -> tuple[sp.csr_matrix, sp.csr_matrix]:
+        """``(G + θΓ⁻¹S, G̃)``: the stiffness is ``(G + θΓ⁻¹S)ᵀ W D G̃ + C``."""
+        return self.test, self.augmented
+
     def regularised(self, tangent: np.ndarray, secant: np.ndarray) -> np.ndarray:
         """The law's ``tangent`` with the ``secant`` stiffness
         ``|t_T| / |y_T − s|`` in ``∂t_T/∂y_T`` of its slipping points.

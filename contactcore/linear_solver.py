@@ -374,6 +374,35 @@ class Factorisation:
         health.check_residual(report.residual, self.what, report.backward_error)
         return report
 
+    def solve_columns(self, B: np.ndarray) -> np.ndarray:
+        """``A⁻¹ B`` for the columns of ``B`` (one process) with the last
+        factorisation: MUMPS's solve phase takes them as one block
+        (MatMatSolve: 16 columns of XFEM P2 on C-coulomb at h = 0.05 in 13
+        ms against 4.7 ms for one, 2026-11-26); another solver column by
+        column.  Unchecked: the caller judges what it builds from them."""
+        factor = _mumps_factor(self.ksp)
+        if factor is None:
+            b, x = self.A.createVecs()
+            try:
+                return np.column_stack([self._column(b, x, column) for column in B.T])
+            finally:
+                b.destroy()
+                x.destroy()
+        comm = self.A.getComm()
+        rhs = PETSc.Mat().createDense(B.shape, array=np.asfortranarray(B, dtype=PETSc.ScalarType), comm=comm)
+        out = rhs.duplicate()
+        try:
+            factor.matSolve(rhs, out)
+            return out.getDenseArray().copy()
+        finally:
+            for obj in (rhs, out, factor):
+                obj.destroy()
+
+    def _column(self, b, x, column: np.ndarray) -> np.ndarray:
+        b.setArray(column)
+        self.ksp.solve(b, x)
+        return x.getArray(readonly=True).copy()
+
     def destroy(self) -> None:
         if self.ksp is not None:
             self.ksp.destroy()
@@ -462,6 +491,15 @@ class Tangent:
         du = np.zeros(len(rhs))
         du[self.free] = x.getArray(readonly=True)
         return du, report
+
+    def solve_columns(self, rhs: np.ndarray, slot: int = 0) -> np.ndarray:
+        """``δU`` (n, q): ``J[free, free] δU = rhs[free]`` for the q columns
+        of ``rhs`` with ``slot``'s last factorisation, zero elsewhere (one
+        process; :meth:`Factorisation.solve_columns`)."""
+        out = np.zeros(rhs.shape)
+        if rhs.shape[1]:
+            out[self.free] = self._slots[slot][1].solve_columns(rhs[self.free])
+        return out
 
     def _fill(self, J, K_Gamma: sp.csr_matrix) -> None:
         """``J = K + K_Γ`` in place (``J``'s pattern holds both).  On

@@ -32,8 +32,10 @@ it is symmetric, by LU otherwise (:class:`contactcore.linear_solver.Tangent`).
 The tangent of a piecewise-linear law changes only when a point changes
 status: a solve whose tangent is one of the last factorised
 (:data:`~contactcore.tolerances.FACTORISATIONS_KEPT`) reuses that
-factorisation, often for whole load paths, and the system refills the
-matrices it allocated once.  Every status decision is taken so that round-off cannot move it
+factorisation, often for whole load paths, one whose tangent differs from
+one of theirs in a few points is solved by a low-rank correction of it
+(:class:`_Update`, one process), and the system refills the matrices it
+allocated once.  Every status decision is taken so that round-off cannot move it
 (:class:`~contactcore.laws.Decision`): a point whose margin (its gap, or
 ``μp − |t*|``) lies within DECISION_BAND of the margin's Γ-wide scale keeps
 the status of the previous iterate, and a step starts from the elastic
@@ -64,7 +66,7 @@ from .errors import SolverError, SolverOptionError
 from .exact import enforced
 from .exchange import Exchange
 from .interface_path import Increment, InterfacePath, canonical_order
-from .laws import SLIP, STATUS_NAMES, STICK, Decision
+from .laws import OPEN, SLIP, STATUS_NAMES, STICK, Decision
 from .result import SolverReport
 
 
@@ -117,6 +119,10 @@ class InterfaceOperator:
         solve is a failure (exact laws:
         :meth:`contactcore.exact.NitscheInterface.regularised`)."""
         return None
+
+    def sides(self) -> tuple[sp.csr_matrix, sp.csr_matrix]:
+        """``(T, G)`` with the interface's stiffness ``Tᵀ W D G``: here ``(G, G)``."""
+        return self.G, self.G
 
     def jumps(self, u: np.ndarray) -> np.ndarray:
         """``[g_N, g_T]`` (m, 2) of the unknowns ``u`` (owned values)."""
@@ -190,6 +196,18 @@ class ContactSystem(ABC):
         :data:`~contactcore.tolerances.FACTORISATIONS_KEPT`); with
         ``interface_tangent`` None, the slot's last factorisation is used."""
 
+    #: how many columns a low-rank correction of a factorisation may solve
+    #: for at once (:meth:`solve_columns`; :mod:`contactcore.tolerances`)
+    update_columns: ClassVar[int] = tol.LOW_RANK_NEW
+
+    def solve_columns(self, rhs: np.ndarray, slot: int) -> np.ndarray:
+        """``δU`` (n, q) for the q columns of ``rhs`` with the slot's last
+        factorisation (one process), as :meth:`solve` does them one by one."""
+        out = np.zeros(rhs.shape)
+        for j, column in enumerate(rhs.T):
+            out[:, j] = self.solve(None, column, slot=slot)[0]
+        return out
+
     def close(self) -> None:
         """Release the matrices and factorisations the solves kept (none here)."""
 
@@ -206,6 +224,88 @@ def _merge(total: SolverReport, one: SolverReport) -> None:
         total.condition = max(total.condition or 0.0, one.condition)
     total.warnings += [w for w in one.warnings if w not in total.warnings]
     total.options = one.options
+
+
+#: How much a status holds a point (open < slip < stick), by status code.
+_CONSTRAINT = np.zeros(max(SLIP, STICK, OPEN) + 1, np.int8)
+_CONSTRAINT[[OPEN, SLIP, STICK]] = [0, 1, 2]
+
+
+class _Columns:
+    """The columns ``M⁻¹ Tᵀ e`` kept for one factorisation ``M``, by the
+    row ``e`` (point, row of its tangent) they were solved for, in the order
+    solved: ``rows[k]`` is column k (:class:`_Update`)."""
+
+    def __init__(self, size: int):
+        self.index, self.rows = {}, np.zeros((0, size))
+
+    def __len__(self) -> int:
+        return len(self.index)
+
+    def add(self, keys: list[tuple[int, int]], columns: np.ndarray) -> None:
+        """Keep ``columns`` (n, q), the solutions for the rows ``keys``;
+        the storage grows by doubling, up to LOW_RANK_COLUMNS."""
+        count = len(self.index)
+        if count + len(keys) > len(self.rows):
+            grown = np.zeros((min(max(2 * (count + len(keys)), 8), tol.LOW_RANK_COLUMNS), self.rows.shape[1]))
+            grown[:count] = self.rows[:count]
+            self.rows = grown
+        self.rows[count:count + len(keys)] = columns.T
+        self.index.update(zip(keys, range(count, count + len(keys))))
+
+
+class _Update:
+    """A kept factorisation ``M`` (of the points' tangent ``D₀``) corrected
+    to the tangent ``D`` that differs from ``D₀`` in a few rows: with
+    ``K_Γ = Tᵀ W D G`` (:meth:`InterfaceOperator.sides`),
+    ``J = M + U B``, ``U`` the columns ``Tᵀ e`` of the changed rows ``e``
+    (point p, row c) and ``B`` their rows ``w_p (D − D₀)_{c,:} G_p``, and by
+    Woodbury's identity (Golub & Van Loan, *Matrix Computations*, 4th ed.,
+    §2.1.4)
+
+        J⁻¹ b = x₀ − Z (I + B Z)⁻¹ B x₀,   x₀ = M⁻¹ b,  Z = M⁻¹ U:
+
+    one solve with ``M`` per use, and the columns of ``Z`` to make it, solved
+    as one block (:meth:`ContactSystem.solve_columns`) and kept for the
+    next corrections of ``M`` (:class:`_Columns`).  Each solve is held to
+    the health policy by its residual with ``J`` itself: a singular ``J``
+    fails it."""
+
+    def __init__(self, newton, slot: int, kept: np.ndarray, tangent: np.ndarray, changed: list[tuple[int, int]]):
+        self.slot, self.tangent = slot, tangent
+        test, self.trial = newton.itf.sides()
+        self.columns = newton._columns.setdefault(slot, _Columns(newton.system.size))
+        new = [pc for pc in changed if pc not in self.columns.index]
+        if new:
+            self.columns.add(new, newton.system.solve_columns(test[[2 * p + c for p, c in new]].toarray().T, slot))
+        self.used = len(self.columns)  # the columns it reads: the first ones, kept in place
+        self.at = np.array([self.columns.index[pc] for pc in changed], int)
+        points, rows = (np.array([pc[i] for pc in changed], int) for i in (0, 1))
+        delta = newton.itf.weights[points, None] * (tangent - kept)[points, rows, :]
+        picked = sp.csr_matrix((delta.ravel(), (np.repeat(np.arange(len(changed)), 2),
+                                                (2 * points[:, None] + np.arange(2)).ravel())),
+                               shape=(len(changed), self.trial.shape[0]))
+        self.B = (picked @ self.trial).tocsr()
+        reach = np.unique(self.B.indices)  # the unknowns B reads: B Z from those rows of Z only
+        BZ = self.B[:, reach].toarray() @ self.columns.rows[self.at][:, reach].T
+        self.capacitance = np.eye(len(changed)) + BZ
+
+    def solve(self, newton, rhs: np.ndarray, scale: float):
+        """``(δu, report)`` with ``J δu = rhs`` on the free rows; SolverError
+        if its residual fails the health policy."""
+        x, report = newton.system.solve(None, rhs, force_scale=scale, slot=self.slot)
+        w = np.zeros(self.used)
+        try:
+            w[self.at] = np.linalg.solve(self.capacitance, self.B @ x)
+        except np.linalg.LinAlgError:
+            raise SolverError("the corrected factorisation is singular") from None
+        x -= self.columns.rows[:self.used].T @ w
+        jumps = (self.trial @ x).reshape(-1, 2)
+        Jx = newton.system.internal(x) + newton.itf.internal(x, np.einsum("pij,pj->pi", self.tangent, jumps))
+        r = (rhs - Jx)[newton.free]
+        report.residual = health.relative_residual(r, rhs[newton.free], scale)
+        health.check_residual(report.residual, "the corrected factorisation")
+        return x, report
 
 
 class _Newton:
@@ -231,6 +331,10 @@ class _Newton:
         self.path = InterfacePath(self.itf.points, self.itf.weights)
         self.ranks = system.collective  # every decision is taken on all ranks alike
         self._factorised = []  # (slot, interface tangent) of the system's factorisations, last used last
+        self._updates = []  # low-rank corrections of them (_Update), last made first
+        self._columns = {}  # slot -> the _Columns its corrections share
+        self._singular = []  # status maps whose law tangent proved singular
+        self._secant = None  # the step's secant stiffnesses of its slipping points (_regularised)
 
     def _residual(self, u, b, response) -> tuple[np.ndarray, float, float]:
         """The residual, the forces its equilibrium rows are judged against
@@ -295,7 +399,7 @@ class _Newton:
     def _use(self, interface) -> None:
         """Newton on ``interface`` from here on; the factorisations kept
         were of another matrix."""
-        self.itf, self._factorised = interface, []
+        self.itf, self._factorised, self._updates, self._columns, self._singular = interface, [], [], {}, []
 
     def _iterate(self, k: float, start=None):
         """Newton's iterations to increment ``k`` from the predicted state,
@@ -308,10 +412,14 @@ class _Newton:
         u[self.system.fixed] = self.system.fixed_values(supports)
         lift = self._lift(supports)
         history, tangent, start, du, u0 = [], None, 0.0, None, u.copy()
+        self._secant = None  # each step its own secant
+        evaluated = None  # the line search's response and residual at u
         for it in range(1, tol.NEWTON_MAX_ITERATIONS + 1):
-            response = self.itf.respond(self.law, u, self.state, previous, self.ranks)
+            if evaluated is None:
+                response = self.itf.respond(self.law, u, self.state, previous, self.ranks)
+                evaluated = response, self._residual(u, b, response)
+            response, (R, forces, data) = evaluated
             previous = response.status
-            R, forces, data = self._residual(u, b, response)
             norm = self.ranks.max(float(np.max(np.abs(R[self.free]), initial=0.0)))
             start = start or norm
             # the round-off scale of this step's solves: the forces, the data
@@ -328,13 +436,15 @@ class _Newton:
             if it > 1 and self._converged(R, forces, tangent, response, du, u - u0):
                 health.check_residual(history[-1], "the settled Newton step")
                 return (loads, supports), u, response, it - 1, history
-            du, rep, tangent = self._solve(response.tangent, -R, scale, response.secant)
+            du, rep, tangent = self._solve(response.tangent, -R, scale, response.secant, response.status)
             _merge(self.report, rep)
             if not self.law.is_linear:  # a linear law is solved in one step
                 secant = not np.array_equal(tangent, response.tangent)
-                alpha = self._line_search(u, du, b, R, response.status, secant)
+                alpha, evaluated = self._line_search(u, du, b, R, response.status, secant)
                 du = alpha * du
                 tangent = tangent if alpha == 1.0 else None  # a partial step settles nothing
+            else:
+                evaluated = None
             u = u + du
         raise SolverError(f"Newton did not converge in {tol.NEWTON_MAX_ITERATIONS} iterations; "
                           f"relative residual history {_fmt(history)}")
@@ -382,7 +492,7 @@ class _Newton:
         """``‖R‖₂`` over the free rows of every rank."""
         return float(np.sqrt(self.ranks.sum(float(np.sum(R[self.free] ** 2)))))
 
-    def _line_search(self, u, du, b, R, status, secant: bool = False) -> float:
+    def _line_search(self, u, du, b, R, status, secant: bool = False):
         """The largest ``α = 2⁻ʲ`` (j <= LINE_SEARCH_HALVINGS) whose step
         ``u + α δu`` decreases the merit ``‖R‖₂`` by Armijo's rule
         ``‖R(u + α δu)‖ <= (1 − ARMIJO α) ‖R(u)‖`` — the globalised
@@ -396,13 +506,16 @@ class _Newton:
         point re-enters its stick window, which is where the step goes.  A full step that
         passes is doubled while the merit keeps falling (at most
         LINE_SEARCH_EXPANSIONS times): a regularised tangent, stiffer than
-        the law's, asks for longer steps than it gives."""
-        merit = self._merit(R)
+        the law's, asks for longer steps than it gives.  Also returns the
+        law's response and :meth:`_residual` at ``u + α δu`` where it was
+        evaluated (None elsewhere): the next iterate's, computed alike."""
+        merit, seen = self._merit(R), {}
 
         def along(alpha):
             trial = u + alpha * du
-            return self._merit(self._residual(trial, b, self.itf.respond(self.law, trial, self.state, status,
-                                                                          self.ranks))[0])
+            response = self.itf.respond(self.law, trial, self.state, status, self.ranks)
+            seen[alpha] = (response, self._residual(trial, b, response))
+            return self._merit(seen[alpha][1][0])
 
         alpha = 1.0
         for _ in range(tol.LINE_SEARCH_HALVINGS):
@@ -411,44 +524,122 @@ class _Newton:
                 break
             alpha /= 2
         else:
-            return alpha
+            return alpha, None
         if alpha < 1.0:
-            return alpha
+            return alpha, seen[alpha]
         for _ in range(tol.LINE_SEARCH_EXPANSIONS):
             longer = along(2 * alpha)
             if longer >= value:
                 break
             alpha, value = 2 * alpha, longer
-        return alpha
+        return alpha, seen[alpha]
 
-    def _solve(self, tangent: np.ndarray, rhs: np.ndarray, scale: float, secant=None):
-        """``J δu = rhs`` with the law's ``tangent`` at the points: with the
-        factorisation kept for that tangent if there is one, else refilled
-        into the slot used longest ago (:data:`~contactcore.tolerances.FACTORISATIONS_KEPT`).
-        Also returns the tangent solved with: the law's, or where that is
-        singular an exact law's regularised one with the slipping points'
-        ``secant`` stiffness (not the law's: Newton is then not settled by it)."""
+    def _solve(self, tangent: np.ndarray, rhs: np.ndarray, scale: float, secant=None, status=None):
+        """``J δu = rhs`` with the law's ``tangent`` at the points of the
+        ``status`` map (:meth:`_solved`).  Also returns the tangent solved
+        with: the law's, or where that is singular an exact law's
+        regularised one (:meth:`_regularised`; Newton is then not settled by
+        it).  A map that no point sticks or closes on more than on one whose
+        tangent proved singular (:meth:`_dominated`) is regularised at once."""
+        if secant is not None and self._dominated(status):
+            tangent = self._regularised(tangent, secant)
+        try:
+            return (*self._solved(tangent, rhs, scale), tangent)
+        except SolverError:
+            # an exact law's slip tangent leaves a body held by friction
+            # alone free to turn: one secant step there
+            regularised = None if secant is None or self._dominated(status) else self._regularised(tangent, secant)
+            if regularised is None:
+                raise
+            self._singular.append(status)
+            return (*self._solved(regularised, rhs, scale), regularised)
+
+    def _regularised(self, tangent: np.ndarray, secant: np.ndarray):
+        """The exact law's tangent regularised by the slipping points'
+        ``secant`` stiffness (:meth:`contactcore.exact.NitscheInterface.regularised`;
+        None for a penalty law), each point's as the step first gave it (a
+        point that starts slipping later, its own): the secant steps of a
+        step then share one matrix but for the points whose status changed,
+        solved by a kept factorisation or a correction of it.  Kačanov's
+        iteration with its first secant: each step still turns the body
+        towards the stick window, which the line search's doubling reaches."""
+        if self._secant is not None:
+            secant = np.where(secant > 0, np.where(self._secant > 0, self._secant, secant), 0.0)
+        regularised = self.itf.regularised(tangent, secant)
+        if regularised is not None:
+            self._secant = secant
+        return regularised
+
+    def _solved(self, tangent: np.ndarray, rhs: np.ndarray, scale: float):
+        """``(δu, report)`` with the points' ``tangent``: by the
+        factorisation kept for it, or the low-rank correction of one
+        (:meth:`_corrected`), if there is one; else factorised into the slot
+        used longest ago (:data:`~contactcore.tolerances.FACTORISATIONS_KEPT`)."""
         for i, (slot, kept) in enumerate(self._factorised):
             if self.ranks.all(np.array_equal(kept, tangent)):
                 self._factorised.append(self._factorised.pop(i))
-                return (*self.system.solve(None, rhs, force_scale=scale, slot=slot), tangent)
+                return self.system.solve(None, rhs, force_scale=scale, slot=slot)
+        corrected = self._corrected(tangent, rhs, scale)
+        return corrected if corrected is not None else self._factorise(tangent, rhs, scale)
+
+    def _dominated(self, status) -> bool:
+        """Whether no point of the ``status`` map sticks where a map whose
+        tangent proved singular did not, and none is closed where it was
+        open.  That tangent's null mode is a body held by Γ alone turning
+        (or sliding) with no normal jump at its closed points and no jump at
+        its sticking ones (:meth:`contactcore.exact.NitscheInterface.regularised`):
+        every such map leaves it free too, so its tangent is singular
+        without a factorisation to tell."""
+        rank = _CONSTRAINT[status]
+        return any(self.ranks.all(bool(np.all(rank <= _CONSTRAINT[s]))) for s in self._singular)
+
+    def _factorise(self, tangent: np.ndarray, rhs: np.ndarray, scale: float):
+        """Factorise ``J`` with ``tangent`` into the slot free or used
+        longest ago, dropping what was kept of that slot, and solve."""
         used = {slot for slot, _ in self._factorised}
         free = [s for s in range(tol.FACTORISATIONS_KEPT) if s not in used]
         slot = free[0] if free else self._factorised.pop(0)[0]
         self._factorised = [(s, t) for s, t in self._factorised if s != slot]  # until the solve succeeds
-        try:
-            du, report = self.system.solve(self.itf.stiffness(tangent), rhs, force_scale=scale, slot=slot)
-        except SolverError:
-            # an exact law's slip tangent leaves a body held by friction
-            # alone free to turn: one secant step there
-            # (:meth:`contactcore.exact.NitscheInterface.regularised`)
-            regularised = None if secant is None else self.itf.regularised(tangent, secant)
-            if regularised is None:
-                raise
-            tangent = regularised
-            du, report = self.system.solve(self.itf.stiffness(tangent), rhs, force_scale=scale, slot=slot)
+        self._updates = [u for u in self._updates if u.slot != slot]
+        self._columns.pop(slot, None)
+        du, report = self.system.solve(self.itf.stiffness(tangent), rhs, force_scale=scale, slot=slot)
         self._factorised.append((slot, tangent))
-        return du, report, tangent
+        return du, report
+
+    def _corrected(self, tangent: np.ndarray, rhs: np.ndarray, scale: float):
+        """``(δu, report)`` by a kept factorisation corrected to ``tangent``
+        (:class:`_Update`), or None where none is close enough: one process
+        only, a correction of at most LOW_RANK_COLUMNS rows of the points'
+        tangents (:mod:`contactcore.tolerances`) of which at most the
+        system's ``update_columns`` need a solve, the fewest of the kept
+        factorisations; a correction whose solve fails its residual check (a
+        singular tangent) is left to a factorisation."""
+        if self.ranks.parallel:
+            return None
+        for update in self._updates:
+            if np.array_equal(update.tangent, tangent):
+                try:
+                    return update.solve(self, rhs, scale)
+                except SolverError:
+                    self._updates.remove(update)
+                    return None
+        best = None
+        for slot, kept in reversed(self._factorised):
+            changed = [tuple(pc) for pc in np.argwhere(np.any(tangent != kept, axis=2))]
+            columns = self._columns.get(slot, _Columns(0))
+            new = sum(pc not in columns.index for pc in changed)
+            if (len(changed) <= tol.LOW_RANK_COLUMNS and new <= self.system.update_columns
+                    and len(columns) + new <= tol.LOW_RANK_COLUMNS and (best is None or new < best[0])):
+                best = (new, slot, kept, changed)
+        if best is None:
+            return None
+        update = _Update(self, best[1], best[2], tangent, best[3])
+        try:
+            solved = update.solve(self, rhs, scale)
+        except SolverError:
+            return None
+        self._updates = [update, *self._updates][:tol.FACTORISATIONS_KEPT]
+        return solved
 
     def _commit(self, k, factors, u, response, iterations, history) -> None:
         self.u, self.state, self.status = u, response.state, response.status

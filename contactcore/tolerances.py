@@ -269,6 +269,22 @@ MAX_CUTBACKS = 6
 #: -> 2).  Each costs one factor's memory.
 FACTORISATIONS_KEPT = 2
 
+#: A tangent that differs from a kept factorisation's in a few rows of
+#: its points' 2 × 2 tangents is solved with that factorisation and a
+#: low-rank correction (Woodbury's identity, contactcore.newton._Update):
+#: each changed row costs one solve with the kept factors, once per
+#: factorisation.  A factorisation costs 6-17 solves on C-coulomb at h =
+#: 0.05 (fe P1 8.4 against 1.4 ms, xfem P2 46-54 against 4.7-6 ms, efgm P1
+#: 51 against 3 ms, 2026-11-26; the ratio grows with the size).  Solved one
+#: by one, at most LOW_RANK_NEW new rows per correction.  MUMPS solves them
+#: as one block (fe, xfem) for less than a factorisation up to
+#: LOW_RANK_COLUMNS (xfem P2: 16 columns in 13 ms, 32 in 24, 64 in ~45),
+#: the most a correction takes and a factorisation keeps: 8 bytes each per
+#: unknown, 1 kB per unknown for two factorisations at most, within
+#: contactcore.budget's allowance.
+LOW_RANK_NEW = 8
+LOW_RANK_COLUMNS = 64
+
 #: Built systems a study keeps for reuse (contactcore.discretisation.Reuse):
 #: one per method of a ``--method all`` study, whose cases alternate
 #: between the methods; each costs one system's matrices and factorisations.

@@ -224,6 +224,14 @@ MEMORY_CYCLE_GROWTH_MB = 8.0
 #: compared (EFGM scene A at h = 0.2: 5e4), so ≲ 1e-11 of the field's scale.
 SOLVER_AGREEMENT = 1e-10
 
+#: A solve by a low-rank correction of a kept factorisation (Woodbury's
+#: identity, contactcore.newton._Update) against a fresh factorisation of
+#: the same matrix: both backward stable up to the capacitance matrix's
+#: conditioning, so they differ by about cond · eps.  Measured on C-coulomb
+#: at h = 0.05 (tests/test_factorisations.py): at most 3e-11 of the
+#: interface tractions' and jumps' scale (2026-11-26).
+LOW_RANK_AGREEMENT = 1e-9
+
 # --------------------------------------------------------------------------
 # EFGM with Γ off the node rows (issue 22; tests/test_efgm_inclined.py)
 # --------------------------------------------------------------------------

@@ -23,6 +23,7 @@ from dolfinx import la
 
 from contactcore.collective import Collective
 from contactcore import linear_solver
+from contactcore import tolerances as tol
 from contactcore.constraints import Constraints
 from contactcore.exchange import Exchange
 from contactcore.newton import ContactSystem, InterfaceOperator
@@ -34,6 +35,8 @@ PETSC_PREFIX = "xdolfinx_"
 class PETScSystem(ContactSystem):
     """``K`` (PETSc), loads, the prescribed unknowns (``constraints`` on
     dofs) and Γ (see module doc), distributed over ``comm`` (the mesh's)."""
+
+    update_columns = tol.LOW_RANK_COLUMNS  # MUMPS solves them as one block
 
     def __init__(self, K, loads: list[np.ndarray], constraints: Constraints, interface: InterfaceOperator, *,
                  comm=None, petsc_options=None, estimate_condition: bool = False, what: str = "linear system"):
@@ -65,6 +68,9 @@ class PETScSystem(ContactSystem):
 
     def solve(self, interface_tangent, rhs: np.ndarray, force_scale: float = 0.0, slot: int = 0):
         return self._tangent.solve(interface_tangent, rhs, force_scale, slot)
+
+    def solve_columns(self, rhs: np.ndarray, slot: int) -> np.ndarray:
+        return self._tangent.solve_columns(rhs, slot)
 
     def close(self) -> None:
         self._tangent.close()

@@ -1,0 +1,110 @@
+"""What Newton pays in factorisations (contactcore.newton, docs/newton.md):
+a tangent a few point-rows away from a kept factorisation is solved by a
+low-rank correction of it, a status map dominated by one whose tangent
+proved singular is regularised without a factorisation, and the secant
+steps of one increment share their matrix.  Counts are deterministic and
+asserted; times are not."""
+import numpy as np
+import pytest
+
+import tolerances as tol
+from contactcore import load_scene, make_law, linear_solver, newton
+from contactcore import tolerances as core_tol
+from contactcore.errors import SolverError
+from verification import methods
+
+#: C-coulomb's own resolution, where its exact run was measured
+#: (docs/newton.md): after the first increment, points enter stick one at a time.
+H = 0.05
+
+
+def _exact(scene):
+    return scene.with_changes(law=make_law({"type": "coulomb", "mu": scene.law.mu, "enforcement": "exact"}))
+
+
+SCENES = {"penalty": lambda: load_scene("C-coulomb"), "exact": lambda: _exact(load_scene("C-coulomb"))}
+
+
+@pytest.fixture
+def counted(monkeypatch):
+    """Factorisations begun (MUMPS set-ups, failed ones included), and
+    Newton's factorised solves that failed (a singular tangent)."""
+    counts = {"factorisations": 0, "singular": 0}
+    factorise, newton_factorise = linear_solver.Factorisation.factorise, newton._Newton._factorise
+
+    def begun(self, A):
+        counts["factorisations"] += 1
+        return factorise(self, A)
+
+    def failing(self, *args):
+        try:
+            return newton_factorise(self, *args)
+        except SolverError:
+            counts["singular"] += 1
+            raise
+
+    monkeypatch.setattr(linear_solver.Factorisation, "factorise", begun)
+    monkeypatch.setattr(newton._Newton, "_factorise", failing)
+    return counts
+
+
+def _run(method, law, counts=None, degree=1):
+    """The run and the factorisations begun by the end of each increment."""
+    after = []
+    progress = None if counts is None else (lambda n, total, step: after.append(counts["factorisations"]))
+    return methods.solver(method)(SCENES[law](), H, degree=degree, progress=progress), after
+
+
+@pytest.mark.parametrize("method, law", [("fe", "penalty"), ("fe", "exact"), ("xfem", "exact"), ("efgm", "exact")])
+def test_only_the_first_increment_factorises(method, law, counted):
+    """Along C-coulomb's path each increment starts from the secant
+    predictor and a point at a time enters stick: 1-3 rows of the points'
+    tangents change, which a correction of a kept factorisation solves
+    (before the corrections: one factorisation per change, fe P1 exact 6
+    after the first increment)."""
+    result, after = _run(method, law, counted)
+    assert len(after) == 20 and after[-1] == after[0]
+    assert result.solver.factorisations <= after[0]
+
+
+@pytest.mark.parametrize("method", ["fe", "xfem"])
+def test_a_singular_map_is_factorised_once(method, counted):
+    """Exact C-coulomb's first increment reaches maps where every closed
+    point slips, the rod free to turn: the first such tangent fails its
+    factorised solve and is regularised; the maps it dominates (no point
+    closed or sticking where it was not) are regularised at once, and the
+    secant steps share one matrix: fewer factorisations than iterations
+    (before: more, fe P1 16 in a 14-iteration first increment, 7 of them
+    failed; xfem P1 12 in 10, 2 failed)."""
+    result, after = _run(method, "exact", counted)
+    assert counted["singular"] == 1
+    assert after[0] < result.solver.iterations[0]
+
+
+@pytest.mark.parametrize("law", ["penalty", "exact"])
+def test_corrections_give_the_factorised_answer(law, monkeypatch):
+    """The same run with every tangent factorised (no correction allowed):
+    the same iterations and interface history to round-off, with fewer
+    factorisations."""
+    corrected, _ = _run("fe", law)
+    monkeypatch.setattr(core_tol, "LOW_RANK_COLUMNS", 0)
+    factorised, _ = _run("fe", law)
+    assert corrected.solver.iterations == factorised.solver.iterations
+    assert corrected.solver.factorisations < factorised.solver.factorisations
+    for a, b in zip(corrected.interface.steps, factorised.interface.steps):
+        assert np.array_equal(a.status, b.status)
+        for x, y in ((a.traction, b.traction), (a.jump, b.jump)):
+            assert np.max(np.abs(x - y)) <= tol.LOW_RANK_AGREEMENT * np.max(np.abs(y))
+
+
+def test_corrections_on_another_factorisation_package():
+    """SuperLU (no MUMPS block solve: the columns are solved one by one)
+    gives MUMPS's run: the same iterations and status maps, and tractions
+    within two direct solvers' agreement."""
+    superlu = methods.solver("fe")(SCENES["exact"](), H, degree=1, petsc_options={"pc_factor_mat_solver_type": "superlu"})
+    mumps, _ = _run("fe", "exact")
+    assert "superlu" in superlu.solver.solver
+    assert superlu.solver.iterations == mumps.solver.iterations
+    a, b = superlu.interface.final, mumps.interface.final
+    assert np.array_equal(a.status, b.status)
+    assert np.max(np.abs(a.traction - b.traction)) <= tol.SOLVER_AGREEMENT * np.max(np.abs(b.traction))
