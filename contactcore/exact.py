@@ -1,17 +1,20 @@
-"""Exact enforcement of the interface laws: symmetric Nitsche.
+"""Exact enforcement of the interface laws: Nitsche's method.
 
 The penalty laws (:mod:`contactcore.laws`) set the answer by their springs
-k_N, k_T.  Enforced exactly, ``unilateral`` is Signorini's condition
-(``g_N <= 0``, ``t_N <= 0``, ``g_N t_N = 0``, no shear) and ``coulomb``
-Signorini's with Coulomb's friction (``|t_T| <= μ|t_N|``, no slip
-increment where it holds with ``<``); ``bonded`` is perfect bonding
-(``g = 0``), the limit k → ∞ of ``linear``.  No spring enters the answer.
+k_N, k_T.  Enforced exactly, each law is its springs' limit k → ∞:
+``unilateral`` is Signorini's condition (``g_N <= 0``, ``t_N <= 0``,
+``g_N t_N = 0``) with a closed point tied tangentially (``g_T = 0``, any
+``t_T``: the unilateral law's spring has no limit, docs/scenes.md) and an
+open one free; ``coulomb`` is Signorini's condition with Coulomb's friction
+(``|t_T| <= μ|t_N|``, no slip increment where it holds with ``<``;
+frictionless contact is μ = 0); ``bonded`` is perfect bonding (``g = 0``),
+the limit of ``linear``.  No spring enters the answer.
 
-Symmetric Nitsche (Chouly & Hild, SINUM 2013; Chouly, Hild & Renard,
-Math. Comp. 2015, for Coulomb), with the weighted average of Annavarapu,
-Hautefeuille & Dolbow (CMAME 2012, 2014).  In Γ's frame (``n`` from − to
-+, ``t = (n_y, −n_x)``) the method's interface operator gives, at its m
-points, the jump ``g = G u`` and the consistent traction
+Nitsche's method for contact and Coulomb friction (Chouly & Hild, SINUM
+2013; Chouly, Hild & Renard, Math. Comp. 2015), with the weighted average
+of Annavarapu, Hautefeuille & Dolbow (CMAME 2012, 2014).  In Γ's frame
+(``n`` from − to +, ``t = (n_y, −n_x)``) the method's interface operator
+gives, at its m points, the jump ``g = G u`` and the consistent traction
 ``τ = S u = (n·{σ}n, t·{σ}n)``, ``{σ} = w₋ σ(u⁻) + w₊ σ(u⁺)``
 (``w₋ + w₊ = 1``): integrating by parts, ``a(u, v) + ∫_Γ σn·[[v]] = ℓ(v)``,
 so ``τ`` is the traction ``t`` of the weak form ``a(u, v) + ∫_Γ t·g(v) = ℓ(v)``.
@@ -24,17 +27,20 @@ the augmented jump
 (so ``g = 0`` holds weakly), open with ``t = 0``; coulomb with
 ``t_N = min(γ y_N, 0)``, the trial ``t_T* = γ (y_T − s)``, ``s`` the jump
 ``g_T`` at the last converged increment, stick if ``|t_T*| <= μ p``, else
-slip; bonded ``t = γ y``.  The residual and tangent are
+slip; bonded ``t = γ y``.  With the test side ``G + θ Γ⁻¹ S`` (θ =
+:data:`~contactcore.tolerances.NITSCHE_THETA`: −1, the skew-symmetric
+variant, well posed for every γ > 0) the residual and tangent are
 
-    R(u) = A u − b + C u + G̃ᵀ W t(G̃ u, s),   J = A + C + G̃ᵀ W (∂t/∂y) G̃,
-    C = −Sᵀ W Γ⁻¹ S,
+    R(u) = A u − b + C u + (G + θΓ⁻¹S)ᵀ W t(G̃ u, s),
+    J = A + C + (G + θΓ⁻¹S)ᵀ W (∂t/∂y) G̃,      C = −θ Sᵀ W Γ⁻¹ S,
 
-the penalty's on ``G̃`` plus a constant symmetric bulk correction ``C``:
-Newton, its reuse of factorisations and every method's solver carry it
-unchanged.  ``γ = β γ₀`` per point, ``γ₀ = 2|Γ^e| / Σ_k (|Ω_k^e|/E_k)``
-from the method (:class:`~contactcore.newton.InterfaceOperator`'s
-``stabilisation``) and ``β`` the scene's ``stabilisation``
-(default :data:`~contactcore.tolerances.NITSCHE_STABILISATION`).
+the penalty's on ``G̃`` (tested by ``G + θΓ⁻¹S``) plus a constant bulk
+correction ``C``: Newton, its reuse of factorisations and every method's
+solver carry it unchanged.  ``γ = β γ₀`` per point,
+``γ₀ = 2|Γ^e| / Σ_k (|Ω_k^e|/E_k)`` from the method
+(:class:`~contactcore.newton.InterfaceOperator`'s ``stabilisation``) and
+``β`` the scene's ``stabilisation`` (default
+:data:`~contactcore.tolerances.NITSCHE_STABILISATION`).
 """
 from __future__ import annotations
 

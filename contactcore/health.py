@@ -120,6 +120,11 @@ def _springs(scene):
     return (("N", scene.law.kN, user.kN), ("T", scene.law.kT, user.kT))
 
 
+def _frictionless(scene) -> bool:
+    """A Coulomb law with μ = 0: every closed point slips, Γ holds no shear."""
+    return getattr(scene.law, "mu", None) == 0.0
+
+
 # ----- rigid-body modes -------------------------------------------------------
 
 _BODY_NAMES = ("−", "+")
@@ -179,7 +184,7 @@ def _restraint(scene, interface_points, interface_weights) -> tuple[np.ndarray, 
         cap = 1.0 / np.sum(w)
         # a law enforced exactly holds like the stiffest spring
         QN = (w[:, None] * gN).T @ gN * min(getattr(scene.law, "kN", np.inf) / E, cap)
-        QT = (w[:, None] * gT).T @ gT * min(getattr(scene.law, "kT", np.inf) / E, cap)
+        QT = (w[:, None] * gT).T @ gT * min(getattr(scene.law, "kT", np.inf) / E, cap) * (not _frictionless(scene))
     else:
         QN = QT = np.zeros((6, 6))
     return Q + QN + QT, QN, QT
@@ -219,7 +224,9 @@ def check_restraint(scene, interface_points, interface_weights) -> None:
     v = vec[:, free[0]]
     why = [f"k_{c} is {k_user:.3g}" for (c, _, k_user), Qc in zip(_springs(scene), (QN, QT))
            if 0 < np.trace(Qc) <= tol.RIGID_MODE_FREE]
-    why = " and ".join(why) + " (springs lost in round-off beside E)" if why else "no support or pin holds it"
+    why = " and ".join(why) + " (springs lost in round-off beside E)" if why else (
+        "no support or pin holds it, and Γ is frictionless (μ = 0): its contact carries no shear"
+        if _frictionless(scene) else "no support or pin holds it")
     raise SolverError(f"scene {scene.name}: {_describe(scene, v)}: {why} — {len(free)} rigid-body mode(s) "
                       "are not removed by the supports, pins and interface springs; add a support or pin")
 

@@ -52,6 +52,8 @@ steps solved.
 """
 from __future__ import annotations
 
+import re
+
 from abc import ABC, abstractmethod
 from dataclasses import dataclass
 from typing import ClassVar
@@ -684,12 +686,14 @@ def _no_equilibrium(scene, n: int, depth: int, failures: list[str]) -> SolverErr
     last cut-back's failure (up to its explanation); then what may cause it.
     Every cut-back's full message is kept in the error's ``details``."""
     where = f"scene {scene.name}: increment {n} of {scene.increments}"
-    last = f"failed after {depth} cut-backs (step 1/{2 ** depth}): {health.headline(failures[-1])}"
+    last = f"failed after {depth} cut-backs (step 1/{2 ** depth}): {_abridged(health.headline(failures[-1]))}"
     check = health.friction_demand(scene, float(n)) or health.material_cause(scene)
+    settle = ("Newton cannot settle the exact law's open/closed and stick/slip map: use more increments or "
+              "another stabilisation" if scene.law.enforcement == "exact" else
+              "the springs are too stiff to settle stick and slip: soften k_N, k_T or use more increments")
     error = SolverError(f"{where}: {check}\n  ({last})" if check else
                         f"{where} {last}\n  either the load has no equilibrium (shear above μp, a body held only "
-                        "by open points) or the springs are too stiff to settle stick and slip: soften k_N, k_T or "
-                        "use more increments")
+                        f"by open points) or {settle}")
     error.details = "\n".join(failures)
     return error
 
@@ -697,6 +701,17 @@ def _no_equilibrium(scene, n: int, depth: int, failures: list[str]) -> SolverErr
 def _flat(factors) -> np.ndarray:
     """The loads' and supports' factors of a step as one vector."""
     return np.array([*factors[0], *factors[1]], float)
+
+
+def _abridged(message: str, keep: int = 3) -> str:
+    """``message`` with each residual history longer than ``2·keep``
+    values cut to its first and last ``keep`` (the whole is in ``details``)."""
+    def cut(match):
+        values = match.group(1).split(", ")
+        if len(values) <= 2 * keep:
+            return match.group(0)
+        return f"[{', '.join(values[:keep])}, … {len(values) - 2 * keep} more …, {', '.join(values[-keep:])}]"
+    return re.sub(r"\[([0-9.e+\-]+(?:, [0-9.e+\-]+)+)\]", cut, message)
 
 
 def _fmt(values) -> str:

@@ -1,9 +1,10 @@
-"""Exact enforcement (symmetric Nitsche, contactcore.exact): the scene
-keys, the bonded patch test (S reproduces the traction of a linear
+"""Exact enforcement (skew-symmetric Nitsche, contactcore.exact): the
+scene keys, the bonded patch test (S reproduces the traction of a linear
 field), the layered closed form with exact stick at every increment, a
-unilateral closed form pulled apart and pressed, and the independence
-of the answer from k_N, k_T.  Methods whose interface operator does not
-yet carry Nitsche's S and γ₀ are skipped with that reason."""
+unilateral closed form pulled apart and pressed, the independence of the
+answer from k_N, k_T, and the sign of every point's traction where Γ
+clips a cell's corner (XFEM's γ₀ floor).  Every method carries S and γ₀:
+a refusal fails."""
 import numpy as np
 import pytest
 
@@ -178,3 +179,44 @@ def test_an_exact_law_ignores_the_springs(key, name, law):
         answers.append(_profiles(scene.with_changes(law=exact), disc, 0.1))
     for q, v in answers[0].items():
         assert np.abs(v - answers[1][q]).max() <= tol.EXACT_INDEPENDENCE * max(np.abs(v).max(), 1e-300), q
+
+
+# ----- where Γ clips a cell's corner ---------------------------------------------
+
+def _soft_rod():
+    """C-coulomb with the rod 1000 times softer: Γ is tangent to the grid
+    line x = 0.55 at θ = ±180°, where its pieces in the cells are ~1e-6 long."""
+    import dataclasses
+    scene = load_scene("C-coulomb")
+    rod = dataclasses.replace(scene.materials["minus"], E=scene.materials["minus"].E * 1e-3)
+    return scene.with_changes(materials={**scene.materials, "minus": rod},
+                              law=make_law({"type": "coulomb", "mu": 0.2, "enforcement": "exact"}))
+
+
+def _clipped_A():
+    """Scene A with Γ at 17.85° through y = 0.52 (a seeded placement): the
+    piece next to Γ's left end clips a cell's corner."""
+    from placements import inclined_A
+    return inclined_A(17.8461, 0.5195).with_changes(law=make_law({"type": "unilateral", "enforcement": "exact"}))
+
+
+@pytest.mark.parametrize("case", [_soft_rod, _clipped_A], ids=["soft-rod", "clipped-A"])
+@pytest.mark.parametrize("degree", [1, 2])
+def test_a_closed_point_carries_no_tension(case, degree):
+    """t_N = γ min(y_N, 0) at a closed point.  Before XFEM's γ₀ had a
+    floor (NITSCHE_PIECE_FLOOR) a corner clip's γ₀ → 0 let τ/γ₀ decide its
+    status: the clipped A had a closed point in tension at +1.2 % of
+    max |t| (xfem P1 and P2)."""
+    final = _solve(case(), XFEM(degree=degree), 0.05).interface.final
+    closed = final.status != OPEN
+    assert final.traction[closed, 0].max(initial=0.0) <= tol.CLOSED_TENSION * np.abs(final.traction).max()
+
+
+@pytest.mark.parametrize("degree", [1, 2])
+def test_a_point_open_by_the_gap_is_open(degree):
+    """On the soft rod, where Γ opens over half its length, a closed point's
+    gap is Nitsche's weak one (±0.4 % of the largest); before the γ₀ floor a
+    clipped point at θ = ±180° was closed and slipping with 40 % of it."""
+    final = _solve(_soft_rod(), XFEM(degree=degree), 0.05).interface.final
+    closed = final.status != OPEN
+    assert not np.any(closed & (final.jump[:, 0] > tol.OPEN_GAP_SHARE * np.abs(final.jump[:, 0]).max()))

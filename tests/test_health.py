@@ -242,3 +242,31 @@ def test_efgm_solver_survives_tiny_dense_systems():
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120,
                          cwd=Path(__file__).resolve().parent.parent)
     assert out.returncode == 0 and "solved" in out.stdout, out.stdout + out.stderr
+
+
+def test_a_body_held_by_frictionless_contact_alone_is_refused_before_any_solve():
+    """C-coulomb with μ = 0: the rod, held by Γ alone, can turn in its hole
+    (frictionless contact carries no shear).  Refused by the restraint
+    check, naming the motion and why, for either enforcement (before: a
+    singular factorisation and advice to soften the springs)."""
+    from contactcore.enforcement import make_law
+    for params in ({"enforcement": "exact"}, {"kN": 1e10, "kT": 1e8}):
+        scene = load_scene("C-coulomb").with_changes(law=make_law({"type": "coulomb", "mu": 0.0, **params}))
+        with pytest.raises(SolverError, match=r"body − can rotate: .*frictionless \(μ = 0\)"):
+            health.check_restraint(scene, np.array([[1.45, 1.5], [0.55, 1.5], [1.0, 1.95], [1.0, 1.05]]),
+                                   np.full(4, 0.7))
+
+
+def test_an_exact_law_that_does_not_settle_is_not_told_to_soften_springs():
+    """The no-equilibrium message of an exact law (which has no springs)
+    names what it can change; a long residual history is cut to its ends
+    in the message and kept whole in ``details``."""
+    from contactcore.enforcement import make_law
+    from contactcore.newton import _no_equilibrium
+    scene = load_scene("C-coulomb").with_changes(law=make_law({"type": "coulomb", "mu": 0.2, "enforcement": "exact"}))
+    history = ", ".join(f"{v:.2e}" for v in np.linspace(1.0, 0.5, 25))
+    failure = f"step 0 → 1: Newton did not converge in 25 iterations; relative residual history [{history}]"
+    error = _no_equilibrium(scene, 1, 6, [failure])
+    lines = str(error).splitlines()
+    assert len(lines) == 2 and "k_N" not in str(error) and "stabilisation" in lines[-1]
+    assert "19 more" in lines[0] and history in error.details

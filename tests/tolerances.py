@@ -674,3 +674,16 @@ MOST_POINTS_HELD = 0.5
 #: ordering and Newton decisions, so the same profiles up to the summation
 #: order of threaded BLAS kernels (measured: equal, 0).
 REPEATED_SOLVE = 1e-12
+
+
+#: A closed point's t_N = γ min(y_N, 0) <= 0; within Newton's round-off band
+#: (DECISION_BAND = 1e-5 of the largest |y_N|) a closed point may keep a
+#: y_N of that size, so its t_N stays below 1e-4 of the largest |t|
+#: (before XFEM's γ₀ floor: +1.2e-2 on the clipped scene A).
+CLOSED_TENSION = 1e-4
+
+#: A point whose gap exceeds this share of Γ's largest |g_N| is open: a
+#: closed point's gap is Nitsche's weak g = y − τ/γ, within ±0.4 % of the
+#: largest open gap on the soft rod (xfem P1, h = 0.05); before the γ₀
+#: floor a clipped point was closed with 40 % of it.
+OPEN_GAP_SHARE = 5e-2

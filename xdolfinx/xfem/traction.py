@@ -6,11 +6,12 @@ Hautefeuille and Dolbow, CMAME 2012).
 The cell of a Γ point is the mesh cell whose Γ rule holds it, ``Ω_kᵉ``
 the part of that cell on side k (the cut-cell rule's weights summed; a
 cell that Γ only touches along an edge is wholly on one side, the other
-part empty) and ``Γᵉ`` Γ's piece in it.  Where Γ only passes through a
-corner of the cell the piece has no length and its points no weight:
-they enter no integral, and ``|Γᵉ|`` is taken as the cell's diameter so
-that ``γ₀ > 0`` there (the exact law divides by it) and their traction,
-reported along Γ, is of the kind of their neighbours'.  Body k's stress at a point of cell
+part empty) and ``Γᵉ`` Γ's piece in it, its length taken as at least
+:data:`~contactcore.tolerances.NITSCHE_PIECE_FLOOR` of the cell's
+diameter: where Γ clips a corner of the cell (or only passes through it)
+the piece's length goes to 0 while the cell's far part keeps its area,
+and ``γ₀`` with it; the exact law divides by it, and the point's status
+would follow its stress alone.  Body k's stress at a point of cell
 ``c`` is the polynomial of its side there,
 ``σ_k = D_k B_k u_c`` with ``B_k`` the strain matrix of the cell's block
 layout (u, then the shifted Heaviside ``(H_k − H_J)`` a, per node).  A
@@ -30,6 +31,7 @@ import dataclasses
 import numpy as np
 
 from contactcore import BODIES
+from contactcore import tolerances as tol
 from contactcore.assembly import Triplets
 from contactcore.bodies import Body
 from contactcore.newton import InterfaceOperator
@@ -53,7 +55,7 @@ def cell_traction(space, c: int, D: np.ndarray, moduli: np.ndarray):
     pts, w, normals = space.cut.gamma_rules[c]
     P = len(w)
     areas = np.broadcast_to(cell_parts(space, c), (P, 2))
-    length = np.sum(w) if np.sum(w) > 0 else space.cut.cell_size[c]  # a piece through a corner: no length
+    length = max(np.sum(w), tol.NITSCHE_PIECE_FLOOR * space.cut.cell_size[c])  # a corner clip: γ₀ bounded
     weights, gamma = nitsche_weights(areas, moduli, np.full(P, length))
     maps = traction_maps(normals, D, weights)
     blocks, strains = side_strains(space, c, pts)  # (B₋, B₊), each (P, 3, 4n)
