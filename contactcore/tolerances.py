@@ -233,7 +233,7 @@ NITSCHE_PIECE_FLOOR = 0.5
 #: ``stabilisation``.  With θ = −1 any β > 0 is stable; what β sets is how
 #: Newton settles the status map (measured 2026-11-26, h = 0.05 and
 #: 0.025): a larger γ narrows Coulomb's stick window (exact C-coulomb
-#: converges at β = 0.1-10 in fe, xfem and efgm P1, fails in xfem at 30), a
+#: converges at β = 0.1-30 in fe, xfem and efgm P1), a
 #: smaller one lets a point at the edge of the contact zone flip between
 #: open and closed (scene A unilateral on inclined cuts: placements 0, 14,
 #: 22 of tests/placements.py fail at β = 0.3-1, converge at 3 and 10).
