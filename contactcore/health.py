@@ -184,7 +184,9 @@ def _restraint(scene, interface_points, interface_weights) -> tuple[np.ndarray, 
         cap = 1.0 / np.sum(w)
         # a law enforced exactly holds like the stiffest spring
         QN = (w[:, None] * gN).T @ gN * min(getattr(scene.law, "kN", np.inf) / E, cap)
-        QT = (w[:, None] * gT).T @ gT * min(getattr(scene.law, "kT", np.inf) / E, cap) * (not _frictionless(scene))
+        # frictionless contact (μ = 0) carries no shear: no tangential hold
+        kT = 0.0 if _frictionless(scene) else min(getattr(scene.law, "kT", np.inf) / E, cap)
+        QT = (w[:, None] * gT).T @ gT * kT
     else:
         QN = QT = np.zeros((6, 6))
     return Q + QN + QT, QN, QT

@@ -93,12 +93,13 @@ def differences(scene: Scene, label: str, penalty: dict, exact: dict) -> list[Ag
     return profile_agreements(scene, label, penalty, exact, default_exclusion(scene), scales(exact))
 
 
-def largest(scene: Scene, exact: dict, row: Agreement) -> tuple[float, float]:
+def largest(scene: Scene, exact: dict, row: Agreement, vector_scales: dict) -> tuple[float, float]:
     """The largest |exact| of ``row``'s quantity and of the scale it is
-    measured against, over the kept samples."""
+    measured against (``vector_scales``: :func:`scales` of ``exact``),
+    over the kept samples."""
     prof = exact[row.profile]
     own = np.abs(prof.columns[row.quantity])
-    scale = scales(exact).get((row.profile, row.quantity), own)
+    scale = vector_scales.get((row.profile, row.quantity), own)
     keep = kept_samples(scene, prof, default_exclusion(scene))
     return float(np.max(own[keep], initial=0.0)), float(np.max(scale[keep], initial=0.0))
 
@@ -110,9 +111,9 @@ def record(scene: Scene, rows: list[Agreement], exact: dict, penalty_path: Inter
     |Δ|, |exact| and scale (in the quantity's unit); the status
     split of each run and the distance from singular points inside which
     samples were left out."""
-    by_profile = {}
+    by_profile, vector_scales = {}, scales(exact)
     for a in rows:
-        own, scale = largest(scene, exact, a)
+        own, scale = largest(scene, exact, a, vector_scales)
         by_profile.setdefault(a.profile, {})[a.quantity] = {
             "worst": a.worst, "rms": a.rms, "at": {"s": a.s, "x": a.x, "y": a.y},
             "largest_difference": abs(a.value - a.reference), "largest_exact": own, "scale": scale,
