@@ -37,12 +37,15 @@ class Increment:
 
 @dataclass
 class InterfacePath:
-    """The interface's history: points, weights and every converged step."""
+    """The interface's history: points, weights and every converged step;
+    ``pieces`` (m, 2), where the method gives them, each point's piece of Γ
+    named by its centre (:func:`piece_centres`)."""
 
     points: np.ndarray
     weights: np.ndarray
     steps: list[Increment] = field(default_factory=list)
     state: np.ndarray | None = None
+    pieces: np.ndarray | None = None
 
     @property
     def final(self) -> Increment:
@@ -59,7 +62,8 @@ class InterfacePath:
         order = canonical_order(interface, points)
         return InterfacePath(points[order], ranks.gather(self.weights)[order],
                              [st.gathered(ranks, order) for st in self.steps],
-                             None if self.state is None else ranks.gather(self.state)[order])
+                             None if self.state is None else ranks.gather(self.state)[order],
+                             None if self.pieces is None else ranks.gather(self.pieces)[order])
 
     def state_at(self, interface, points: np.ndarray) -> np.ndarray | None:
         """The law's history at other points of Γ, interpolated linearly
@@ -78,6 +82,45 @@ class InterfacePath:
             out = np.column_stack([np.interp(b, a[order], c, period=period) for c in columns.T])
             return out.reshape((len(b),) + np.shape(values)[1:])
         return np.asarray(values)[cKDTree(self.points).query(points)[1]]
+
+
+    def piece_means(self, interface, points: np.ndarray, values: np.ndarray) -> np.ndarray:
+        """``values`` (m, ...) at the quadrature points, averaged over each
+        piece of Γ with the quadrature weights and read at other points of
+        Γ as :meth:`interpolated` reads them, between the pieces' centres.
+
+        A Lagrange multiplier's values at the points are not a converged
+        quantity where the points outnumber the trace's unknowns: a stiff
+        Nitsche parameter makes them alternate from point to point about
+        the right mean (docs/contact-enforcement.md).  Its mean over a piece
+        is what the bulk receives (``Gᵀ W t``, piece by piece) and converges
+        as the stress does.  A weighted mean is a convex combination, so an
+        admissible traction stays admissible: ``t_N <= 0`` and
+        ``|t_T| <= μ|t_N|`` hold for the mean where they hold at the points.
+        Without pieces, the points' own values (:meth:`interpolated`)."""
+        if self.pieces is None:
+            return self.interpolated(interface, points, values)
+        centres, which = np.unique(self.pieces, axis=0, return_inverse=True)
+        which = which.ravel()
+        values = np.asarray(values, float)
+        flat = values.reshape(len(which), -1)
+        total = np.bincount(which, self.weights, len(centres))
+        means = np.column_stack([np.bincount(which, self.weights * c, len(centres)) for c in flat.T]) / total[:, None]
+        at_centres = InterfacePath(centres, total)
+        return at_centres.interpolated(interface, points, means.reshape((len(centres),) + values.shape[1:]))
+
+
+def piece_centres(points: np.ndarray, weights: np.ndarray, sizes) -> np.ndarray:
+    """Each point's piece of Γ named by the piece's centre, the weighted mean
+    of its points (m, 2), for pieces of ``sizes`` consecutive points (a
+    facet's, a cut cell's, an integration segment's Gauss points).  A
+    centre is computed from the piece's points alone, so the same piece has
+    the same centre on any rank and in any numbering."""
+    points, weights = np.asarray(points, float).reshape(-1, 2), np.asarray(weights, float)
+    which = np.repeat(np.arange(len(sizes)), sizes)
+    total = np.bincount(which, weights, len(sizes))
+    centres = np.column_stack([np.bincount(which, weights * points[:, j], len(sizes)) for j in range(2)])
+    return (centres / np.where(total > 0, total, 1.0)[:, None])[which]
 
 
 def canonical_order(interface, points: np.ndarray) -> np.ndarray:

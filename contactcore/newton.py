@@ -98,6 +98,11 @@ class InterfaceOperator:
     #: piece ``Γ^e`` of Γ; the scene's β multiplies it.
     S: sp.csr_matrix | None = None
     stabilisation: np.ndarray | None = None
+    #: Each point's piece of Γ (m, 2), named by its centre
+    #: (:func:`~contactcore.interface_path.piece_centres`), or None: an
+    #: exact law's traction is reported as its mean over each piece
+    #: (:meth:`~contactcore.interface_path.InterfacePath.piece_means`).
+    pieces: np.ndarray | None = None
 
     @property
     def size(self) -> int:
@@ -330,7 +335,7 @@ class _Newton:
         unloaded = _flat(scene.factors(0))
         self._converged_at = [(unloaded, self.u.copy())] if not unloaded.any() else []
         self.report = SolverReport(solver="", solves=0, iterations=[])
-        self.path = InterfacePath(self.itf.points, self.itf.weights)
+        self.path = InterfacePath(self.itf.points, self.itf.weights, pieces=self.itf.pieces)
         self.ranks = system.collective  # every decision is taken on all ranks alike
         self._factorised = []  # (slot, interface tangent) of the system's factorisations, last used last
         self._updates = []  # low-rank corrections of them (_Update), last made first

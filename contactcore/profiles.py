@@ -73,7 +73,9 @@ def sample_points(scene: Scene, profile: Profile, n: int = tol.PROFILE_POINTS) -
 
 def interface_response(scene: Scene, fields: Fields, points: np.ndarray, path=None) -> dict[str, np.ndarray]:
     """``gN, gT, tN, tT`` at points of Γ from the jump of the computed field
-    (and the law's history on ``path``, for a law that has one)."""
+    (and the law's history on ``path``, for a law that has one); an exact
+    law's tractions are the solve's, averaged over each piece of Γ
+    (:meth:`~contactcore.interface_path.InterfacePath.piece_means`)."""
     m = len(points)
     jump = fields.displacement(points, np.ones(m, int)) - fields.displacement(points, np.zeros(m, int))
     n = scene.interface.normals(points)
@@ -82,7 +84,7 @@ def interface_response(scene: Scene, fields: Fields, points: np.ndarray, path=No
         if path is None or not path.steps:
             raise ValueError(f"the exact '{scene.law.name}' law's tractions come from the solve: pass the "
                              "Result's interface path")
-        t = path.interpolated(scene.interface, points, path.final.traction)
+        t = path.piece_means(scene.interface, points, path.final.traction)
         return {"gN": g[:, 0], "gT": g[:, 1], "tN": t[:, 0], "tT": t[:, 1]}
     state = None
     if scene.law.has_history:

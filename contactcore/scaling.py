@@ -205,7 +205,8 @@ class Scales:
         L, U = self.length, self.displacement
         steps = [self.step(st) for st in path.steps]
         return InterfacePath(self.to_user(path.points), L * path.weights, steps,
-                             None if path.state is None else U * path.state)
+                             None if path.state is None else U * path.state,
+                             None if path.pieces is None else self.to_user(path.pieces))
 
     def step(self, st):
         """One converged increment in the user's units: jumps (m, ×U),
@@ -223,7 +224,8 @@ class Scales:
         L, U = self.length, self.displacement
         steps = [replace(st, jump=st.jump / U, traction=st.traction / self.stress) for st in path.steps]
         return InterfacePath(self.to_dimensionless(path.points), path.weights / L, steps,
-                             None if path.state is None else path.state / U)
+                             None if path.state is None else path.state / U,
+                             None if path.pieces is None else self.to_dimensionless(path.pieces))
 
     def discretisation(self, record: dict) -> dict:
         """A method's discretisation record with its lengths (h, a grading's

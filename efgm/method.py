@@ -38,6 +38,7 @@ from contactcore import tolerances as tol
 from contactcore.constraints import Constraints
 from contactcore.newton import ContactSystem, InterfaceOperator
 from contactcore.geometry import tangent_of
+from contactcore.interface_path import piece_centres
 from contactcore.scene import Pressure, Traction, body_force
 
 from contactcore.exact import is_exact
@@ -250,8 +251,9 @@ def build(scene: Scene, options: EFGM, resolution: Resolution, timings: Timings)
         origin, step = lo.min(axis=0), hi[0] - lo[0]
         mine = distributed.cell_share(vol.points, origin, step, ranks)  # this rank's cells (all in serial)
         cells = Rule(vol.points[mine], vol.weights[mine], vol.bodies[mine]) if ranks.parallel else vol
+        pieces = piece_centres(gam_pts, gam_w, [n] * (len(gam_w) // n))  # interface_rule's segments
         share = ranks.share(len(gam_w))  # and Γ's points
-        gam_pts, gam_w, gam_n = gam_pts[share], gam_w[share], gam_n[share]
+        gam_pts, gam_w, gam_n, pieces = gam_pts[share], gam_w[share], gam_n[share], pieces[share]
         evaluated = (lambda c: distributed.owned_multipliers(ranks, approx.ndofs, c)) if ranks.parallel else None
         error = None
         try:  # what a rank evaluates alone may fail on it alone: every rank raises the error alike
@@ -270,7 +272,7 @@ def build(scene: Scene, options: EFGM, resolution: Resolution, timings: Timings)
             error = exc
         ranks.raise_any(error)
         scale, what = max(m.E for m in scene.materials.values()), f"scene {scene.name} (efgm)"
-        interface = InterfaceOperator(G.tocsr(), gam_w, gam_pts, S=S, stabilisation=gamma)
+        interface = InterfaceOperator(G.tocsr(), gam_w, gam_pts, S=S, stabilisation=gamma, pieces=pieces)
         if ranks.parallel:
             system = distributed.DistributedEFGMSystem(K, constraints, loads, interface, scale, ranks,
                                                        options.estimate_condition, what)

@@ -220,3 +220,39 @@ def test_a_point_open_by_the_gap_is_open(degree):
     final = _solve(_soft_rod(), XFEM(degree=degree), 0.05).interface.final
     closed = final.status != OPEN
     assert not np.any(closed & (final.jump[:, 0] > tol.OPEN_GAP_SHARE * np.abs(final.jump[:, 0]).max()))
+
+
+# ----- the traction a profile reports ------------------------------------------
+
+def _cone_path(seed: int = 7):
+    """Nine Gauss points in three pieces of the line y = 0.5 (unequal
+    weights), each traction inside Coulomb's cone (μ = 0.2)."""
+    from contactcore.interface_path import InterfacePath, Increment, piece_centres
+    rng = np.random.default_rng(seed)
+    x = np.sort(rng.uniform(0.0, 1.0, 9))
+    points, weights = np.column_stack([x, np.full(9, 0.5)]), rng.uniform(0.5, 1.5, 9)
+    tN = -rng.uniform(0.0, 1.0, 9)
+    traction = np.column_stack([tN, 0.2 * np.abs(tN) * rng.uniform(-1.0, 1.0, 9)])
+    step = Increment(1.0, (), 1, [], np.zeros((9, 2)), traction, np.zeros(9, np.int8))
+    return InterfacePath(points, weights, [step], pieces=piece_centres(points, weights, [3, 3, 3]))
+
+
+def test_piece_means_are_weighted_means_and_stay_in_the_cone():
+    """At each piece's centre the profile reads the weighted mean of its
+    points; between centres a convex combination of means, so every sample
+    of an admissible traction is admissible (t_N <= 0, |t_T| <= μ|t_N|);
+    the points' order (a gather's) changes nothing; a constant is kept."""
+    from contactcore.geometry import LineInterface
+    from contactcore.interface_path import InterfacePath
+    path, line = _cone_path(), LineInterface((0.0, 0.5), (0.0, 1.0))
+    t, w = path.final.traction, path.weights
+    centres = path.pieces[::3]
+    want = np.array([w[i:i + 3] @ t[i:i + 3] / w[i:i + 3].sum() for i in (0, 3, 6)])
+    assert np.allclose(path.piece_means(line, centres, t), want, rtol=0, atol=tol.PATCH_ROUNDOFF)
+    samples = np.column_stack([np.linspace(centres[0, 0], centres[-1, 0], 41), np.full(41, 0.5)])
+    read = path.piece_means(line, samples, t)
+    assert np.all(read[:, 0] <= 0) and np.all(np.abs(read[:, 1]) <= 0.2 * np.abs(read[:, 0]) * (1 + tol.PATCH_ROUNDOFF))
+    order = np.random.default_rng(1).permutation(9)
+    shuffled = InterfacePath(path.points[order], w[order], pieces=path.pieces[order])
+    assert np.allclose(shuffled.piece_means(line, samples, t[order]), read, rtol=0, atol=tol.PATCH_ROUNDOFF)
+    assert np.allclose(path.piece_means(line, samples, np.full((9, 2), -3.0)), -3.0, rtol=0, atol=tol.PATCH_ROUNDOFF)

@@ -48,6 +48,7 @@ from contactcore.constraints import Constraints
 from contactcore.cutcell import gauss01
 from contactcore.exact import is_exact
 from contactcore.geometry import polygon_area, tangent_of
+from contactcore.interface_path import piece_centres
 from contactcore.newton import InterfaceOperator
 from contactcore.scene import Pressure, Traction, body_force
 
@@ -156,9 +157,10 @@ def interface_operator(scene: Scene, fm: FittedMesh, V, degree: int, exchange: "
         if exact:
             stabilisation.append(_nitsche_rows(scene, ref, dofs, f, xi, x, frame, rows, weights[-1].sum(), traction))
     S = traction.to_csr() if exact else None
-    return InterfaceOperator(trip.to_csr(), _concatenate(weights, 0), _concatenate(points, 2),
-                             exchange if exchange.ranks.parallel else None, S=S,
-                             stabilisation=_concatenate(stabilisation, 0) if exact else None)
+    points, weights = _concatenate(points, 2), _concatenate(weights, 0)
+    return InterfaceOperator(trip.to_csr(), weights, points, exchange if exchange.ranks.parallel else None, S=S,
+                             stabilisation=_concatenate(stabilisation, 0) if exact else None,
+                             pieces=piece_centres(points, weights, [len(xi)] * len(facets)))
 
 
 class _Reference:

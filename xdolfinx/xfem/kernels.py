@@ -20,6 +20,7 @@ from contactcore.assembly import Triplets
 from contactcore.bodies import index_of_sign, sign_of_index
 from contactcore.cutcell import edge_crossings, gauss01
 from contactcore.geometry import tangent_of
+from contactcore.interface_path import piece_centres
 from contactcore.newton import InterfaceOperator
 from contactcore.scene import BodyForce, Torque, Traction, body_force
 
@@ -122,9 +123,11 @@ def interface_operator(space: EnrichedFunctionSpace) -> InterfaceOperator:
         weights.append(w)
         m += len(w)
     trip.shape = (2 * m, trip.shape[1])
-    return InterfaceOperator(trip.to_csr(), np.concatenate(weights) if weights else np.zeros(0),
-                             np.concatenate(points) if points else np.zeros((0, 2)),
-                             space.exchange if space.cells.ranks.parallel else None)
+    sizes = [len(w) for w in weights]  # each cut cell's points: one piece of Γ
+    points = np.concatenate(points) if points else np.zeros((0, 2))
+    weights = np.concatenate(weights) if weights else np.zeros(0)
+    return InterfaceOperator(trip.to_csr(), weights, points, space.exchange if space.cells.ranks.parallel else None,
+                             pieces=piece_centres(points, weights, sizes))
 
 
 def band_loads(space: EnrichedFunctionSpace, load):
