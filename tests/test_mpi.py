@@ -85,6 +85,20 @@ def test_parity(tmp_path, method, scene, degree, ranks):
     _parity(tmp_path, scene, ranks, degree, 0.1, methods=(method,))
 
 
+@pytest.mark.slow
+def test_exact_contact_on_two_ranks_gives_the_serial_answer(tmp_path):
+    """C-coulomb enforced exactly (Nitsche: its bulk correction through the
+    ghost exchange, EFGM's Γ points split between ranks, the traction's
+    piece means) in every method: the serial profiles, interface history
+    and open/stick/slip counts of every increment."""
+    from contactcore import make_law
+    scene = load_scene("C-coulomb")
+    scene = scene.with_changes(law=make_law({"type": "coulomb", "mu": scene.law.mu, "enforcement": "exact"}))
+    path = tmp_path / "C-coulomb-exact.toml"
+    path.write_text(scene_toml(scene))
+    _parity(tmp_path, path, 2, 1, 0.1, methods=("fe", "xfem", "efgm"))
+
+
 #: Scene A with Γ near its top, where some rank of a few is likely to own
 #: no Γ facet (dolfinx's graph partitioner decides; the test looks for one).
 NEAR_TOP = 0.9

@@ -388,6 +388,16 @@ EXACT_LIMIT_BAND = 1e-6
 #: profiles' scale (the answers are the same solve; round-off only).
 EXACT_INDEPENDENCE = 1e-10
 
+#: The mesh size at which β is moved 10 times either way against halving
+#: h (tests/test_exact.py; docs/contact-enforcement.md, "β against h"):
+#: C-coulomb's own h.
+BETA_H = 0.05
+
+#: Why fe P1 at β/10 moves C-coulomb more than halving h (measured
+#: 2026-11-26: C4 t_T 0.080 RMS share against 0.040).
+BETA_WEAK_FE_P1 = ("fe P1 at β/10: the stick zone between the two slip directions on C4 widens from one "
+                   "sample to four (a soft tangential constraint, 2μp/γ wide); C4 t_T moves 0.080 against 0.040")
+
 # --- error estimates (tests/test_estimate.py; contactcore.estimate) ---------
 
 #: The effectivity (estimate ÷ true error, RMS over a profile; η over
