@@ -219,6 +219,18 @@ class EFGMSystem(ContactSystem):
                                                   symmetric=SYMMETRIC, estimate_condition=self.estimate, what=self.what)
         return self._tangent.solve(interface_tangent, rhs, force_scale, slot)
 
+    @property
+    def update_columns(self) -> int:
+        """Columns a low-rank correction may solve for at once: MUMPS's block
+        solve takes LOW_RANK_COLUMNS for less than a factorisation; SuperLU
+        solves them one by one (contactcore.tolerances)."""
+        return tol.LOW_RANK_COLUMNS if hasattr(self._tangent, "solve_columns") else tol.LOW_RANK_NEW
+
+    def solve_columns(self, rhs: np.ndarray, slot: int) -> np.ndarray:
+        if hasattr(self._tangent, "solve_columns"):
+            return self._tangent.solve_columns(rhs, slot)
+        return super().solve_columns(rhs, slot)
+
     def close(self) -> None:
         if self._tangent is not None:
             self._tangent.close()

@@ -61,10 +61,11 @@ def test_only_the_first_increment_factorises(method, law, counted):
     predictor and a point at a time enters stick: 1-3 rows of the points'
     tangents change, which a correction of a kept factorisation solves
     (before the corrections: one factorisation per change, fe P1 exact 6
-    after the first increment)."""
+    after the first increment).  EFGM's first increment fills its
+    correction's block of columns (LATER_FACTORISATIONS)."""
     result, after = _run(method, law, counted)
-    assert len(after) == 20 and after[-1] == after[0]
-    assert result.solver.factorisations <= after[0]
+    assert len(after) == 20 and after[-1] - after[0] <= tol.LATER_FACTORISATIONS[method]
+    assert result.solver.factorisations <= after[-1]
 
 
 @pytest.mark.parametrize("method", ["fe", "xfem"])
