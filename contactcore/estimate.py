@@ -20,9 +20,10 @@ shrink at its own rate), clipped to
 :data:`~contactcore.tolerances.ORDER_RANGE`, and the estimate is the
 finest run's.  With two runs the method's theoretical order for the
 quantity is used (:func:`theoretical_order`): ``k + 1`` for a displacement
-and a gap (the L2 rate of degree k), and for a traction on Γ, which the law
-computes from the gaps (``t = k_N g_N`` …) not from the bulk stress; ``k``
-for a stress (the H1 rate).  An observed order further than
+and a gap (the L2 rate of degree k), and for a penalty law's traction on
+Γ, which the law computes from the gaps (``t = k_N g_N`` …) not from the
+bulk stress; ``k`` for a stress (the H1 rate); under an exact law, at most
+2 for the gaps and 1 for the traction where the law switches.  An observed order further than
 :data:`~contactcore.tolerances.ORDER_MISMATCH` from theory means the runs
 are not yet in the asymptotic range: the estimate carries a warning.
 
@@ -78,8 +79,26 @@ DISPLACEMENT_LIKE = ("ux", "uy", "gN", "gT", "tN", "tT")
 RECOVERED_STRESS = (("xfem", 1),)
 
 
-def theoretical_order(quantity: str, degree: int, method: str = "") -> int:
-    """The rate of a profile quantity for ``method`` of ``degree`` (module doc)."""
+#: Γ's quantities under an exact law (:mod:`contactcore.exact`).
+GAPS, TRACTIONS = ("gN", "gT"), ("tN", "tT")
+
+
+def theoretical_order(quantity: str, degree: int, method: str = "", law=None) -> int:
+    """The rate of a profile quantity for ``method`` of ``degree`` (module
+    doc).  Under an exact ``law`` the traction on Γ is Nitsche's multiplier,
+    a stress (rate ``degree``, not the gaps' ``degree + 1``).  Where that
+    law switches (open/closed, stick/slip: every exact law but ``bonded``)
+    the solution is no smoother than H^{5/2-ε} at the points where Γ's
+    status changes (Moussaoui & Khodja, Comm. PDE 17, 1992; Chouly, Hild &
+    Renard, Math. Comp. 84, 2015), which caps the gaps' rate at 2 and the
+    traction's at 1 in every degree: exact C-coulomb's profiles converge
+    at about these rates (docs/contact-enforcement.md, "Convergence")."""
+    if law is not None and getattr(law, "enforcement", "penalty") == "exact":
+        switches = not law.is_linear
+        if quantity in TRACTIONS:
+            return 1 if switches else degree
+        if quantity in GAPS and switches:
+            return min(degree + 1, 2)
     if quantity in DISPLACEMENT_LIKE or (method, degree) in RECOVERED_STRESS:
         return degree + 1
     return degree
@@ -180,8 +199,9 @@ def profile_estimates(levels: list[list[ProfileData]], degree: int, method: str 
     for profs in zip(*levels):
         pid, cols = profs[-1].id, profs[-1].columns
         kept = far_from_singular(scene, np.column_stack([cols["x"], cols["y"]]), exclude) if scene else None
-        out[pid] = {q: richardson([p.columns[q] for p in profs], theoretical_order(q, degree, method), coarse=coarse,
-                                  kept=kept)
+        law = scene.law if scene else None
+        out[pid] = {q: richardson([p.columns[q] for p in profs], theoretical_order(q, degree, method, law),
+                                  coarse=coarse, kept=kept)
                     for q in profs[-1].names[3:]}
     return out
 

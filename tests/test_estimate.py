@@ -170,3 +170,24 @@ def test_efficiency_without_a_reference_estimates_and_says_so(tmp_path):
         (row,) = list(csv.DictReader(fh))
     low, error, high = (float(row[k]) for k in ("error_low", "error", "error_high"))
     assert 0 < error and high / error == pytest.approx(error / low) == pytest.approx(core_tol.ESTIMATE_TRUST)
+
+
+def test_an_exact_law_caps_the_orders_on_gamma():
+    """Under an exact law that switches (unilateral, Coulomb) Γ's gaps are
+    estimated at order min(k + 1, 2) and its tractions at 1, in every
+    degree (the solution's regularity where Γ's status changes); under
+    ``bonded`` the traction is a stress (order k) and the gaps keep k + 1;
+    a penalty law's traction follows its gaps (k + 1); the bulk is
+    unchanged.  On exact C-coulomb (h = 0.05 -> 0.025 against fe P2 at
+    0.00833, docs/error-estimates.md) the capped orders give C4
+    effectivities 0.68-2.65 where k + 1 gave 0.14-0.88."""
+    from contactcore import load_scene, make_law
+    coulomb = make_law({"type": "coulomb", "mu": 0.2, "enforcement": "exact"})
+    bonded = make_law({"type": "bonded"})
+    penalty = load_scene("C-coulomb").law
+    for k in (1, 2):
+        assert [est.theoretical_order(q, k, "fe", coulomb) for q in ("gN", "gT", "tN", "tT")] == [min(k + 1, 2)] * 2 + [1] * 2
+        assert [est.theoretical_order(q, k, "fe", bonded) for q in ("gN", "tN")] == [k + 1, k]
+        assert [est.theoretical_order(q, k, "fe", penalty) for q in ("gN", "tN")] == [k + 1, k + 1]
+        assert est.theoretical_order("sxx", k, "fe", coulomb) == est.theoretical_order("sxx", k, "fe") == k
+        assert est.theoretical_order("ux", k, "efgm", coulomb) == k + 1
