@@ -188,6 +188,9 @@ LINE_SEARCH_HALVINGS = 8
 #: exact C-coulomb at h = 0.05 (2026-11-26): from the unloaded state, Newton
 #: converges in 10-13 iterations at β = 2 in fe, xfem and efgm P1 and fails
 #: at β = 20 in all three (a stick window 2μp/γ ten times narrower).
+#: Where that fails too, the step starts from its answer at
+#: CONTINUATION_STEP × β (fe P1 at h = 0.2: Newton at β = 3 settled where
+#: every closed point slips; from β = 30's answer it converged in 3).
 CONTINUATION_STEP = 10.0
 CONTINUATION_FLOOR = 1e-3
 

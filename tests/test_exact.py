@@ -227,15 +227,19 @@ def test_a_point_open_by_the_gap_is_open(degree):
 
 # ----- the traction a profile reports ------------------------------------------
 
+#: The friction coefficient of the synthetic path's cone.
+CONE_MU = 0.2
+
+
 def _cone_path(seed: int = 7):
     """Nine Gauss points in three pieces of the line y = 0.5 (unequal
-    weights), each traction inside Coulomb's cone (μ = 0.2)."""
+    weights), each traction inside Coulomb's cone (μ = CONE_MU)."""
     from contactcore.interface_path import InterfacePath, Increment, piece_centres
     rng = np.random.default_rng(seed)
     x = np.sort(rng.uniform(0.0, 1.0, 9))
     points, weights = np.column_stack([x, np.full(9, 0.5)]), rng.uniform(0.5, 1.5, 9)
     tN = -rng.uniform(0.0, 1.0, 9)
-    traction = np.column_stack([tN, 0.2 * np.abs(tN) * rng.uniform(-1.0, 1.0, 9)])
+    traction = np.column_stack([tN, CONE_MU * np.abs(tN) * rng.uniform(-1.0, 1.0, 9)])
     step = Increment(1.0, (), 1, [], np.zeros((9, 2)), traction, np.zeros(9, np.int8))
     return InterfacePath(points, weights, [step], pieces=piece_centres(points, weights, [3, 3, 3]))
 
@@ -254,7 +258,7 @@ def test_piece_means_are_weighted_means_and_stay_in_the_cone():
     assert np.allclose(path.piece_means(line, centres, t), want, rtol=0, atol=tol.PATCH_ROUNDOFF)
     samples = np.column_stack([np.linspace(centres[0, 0], centres[-1, 0], 41), np.full(41, 0.5)])
     read = path.piece_means(line, samples, t)
-    assert np.all(read[:, 0] <= 0) and np.all(np.abs(read[:, 1]) <= 0.2 * np.abs(read[:, 0]) * (1 + tol.PATCH_ROUNDOFF))
+    assert np.all(read[:, 0] <= 0) and np.all(np.abs(read[:, 1]) <= CONE_MU * np.abs(read[:, 0]) * (1 + tol.PATCH_ROUNDOFF))
     order = np.random.default_rng(1).permutation(9)
     shuffled = InterfacePath(path.points[order], w[order], pieces=path.pieces[order])
     assert np.allclose(shuffled.piece_means(line, samples, t[order]), read, rtol=0, atol=tol.PATCH_ROUNDOFF)
@@ -302,3 +306,18 @@ def test_the_stabilisation_moves_the_answer_less_than_halving_h(key, factor):
     reference = _coulomb_profiles(key, tol.BETA_H, beta)
     halved = _moved(reference, _coulomb_profiles(key, tol.BETA_H / 2, beta))
     assert _moved(reference, _coulomb_profiles(key, tol.BETA_H, factor * beta)) < halved
+
+
+def test_a_step_stuck_where_every_point_slips_starts_from_a_stiffer_answer():
+    """Exact C-coulomb, fe P1 at h = 0.2: Newton from the unloaded state
+    (and from β/10's answer) settles where every closed point slips and
+    none sticks, the rod free to turn, at a residual of 4.5e-3; started
+    from 10β's answer it converges.  The answer is admissible: no closed
+    point in tension, |t_T| <= μ|t_N| everywhere, and some points stick."""
+    scene = load_scene("C-coulomb")
+    scene = scene.with_changes(law=make_law({"type": "coulomb", "mu": scene.law.mu, "enforcement": "exact"}))
+    final = _solve(scene, FE(degree=1), 0.2).interface.final
+    t, scale = final.traction, np.abs(final.traction).max()
+    assert t[final.status != OPEN, 0].max(initial=0.0) <= tol.CLOSED_TENSION * scale
+    assert np.all(np.abs(t[:, 1]) <= scene.law.mu * np.abs(t[:, 0]) + tol.CLOSED_TENSION * scale)
+    assert np.any(final.status == STICK)
