@@ -725,6 +725,10 @@ def _no_equilibrium(scene, n: int, depth: int, failures: list[str]) -> SolverErr
     settle = ("Newton cannot settle the exact law's open/closed and stick/slip map: use more increments or "
               "another stabilisation" if scene.law.enforcement == "exact" else
               "the springs are too stiff to settle stick and slip: soften k_N, k_T or use more increments")
+    if scene.law.name == "unilateral":  # its tie drops t_T to 0 the moment a point opens
+        settle += ("; or no open/closed map is consistent: the unilateral law frees a closed point's tangential "
+                   "tie at once when it opens, where type = \"coulomb\" with a large mu lets t_T vanish with the "
+                   "pressure")
     error = SolverError(f"{where}: {check}\n  ({last})" if check else
                         f"{where} {last}\n  either the load has no equilibrium (shear above μp, a body held only "
                         f"by open points) or {settle}")

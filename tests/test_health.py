@@ -270,3 +270,24 @@ def test_an_exact_law_that_does_not_settle_is_not_told_to_soften_springs():
     lines = str(error).splitlines()
     assert len(lines) == 2 and "k_N" not in str(error) and "stabilisation" in lines[-1]
     assert "19 more" in lines[0] and history in error.details
+
+
+def test_a_unilateral_law_that_does_not_settle_is_pointed_to_coulomb():
+    """Scene C with the unilateral law, xfem P2 at h = 0.1 (exact): no
+    open/closed map settles, because the law drops a point's tangential
+    tie the moment it opens.  The two-line refusal names that and the law
+    that behaves (coulomb with a large μ, which solves the same case);
+    a Coulomb law's refusal does not mention it."""
+    from contactcore.enforcement import make_law
+    from xdolfinx.options import XFEM
+    from contactcore import discretisation
+    scene = load_scene("C").with_changes(law=make_law({"type": "unilateral", "enforcement": "exact"}))
+    with pytest.raises(SolverError) as error:
+        discretisation.solve(scene, XFEM(degree=2), 0.1)
+    lines = str(error.value).splitlines()
+    assert len(lines) == 2 and "tangential tie" in lines[-1] and 'type = "coulomb"' in lines[-1]
+    coulomb = scene.with_changes(law=make_law({"type": "coulomb", "mu": 10.0, "enforcement": "exact"}))
+    counts = discretisation.solve(coulomb, XFEM(degree=2), 0.1).interface.final.counts()
+    assert counts["stick"] > counts["slip"]  # converged, and tied nearly as the unilateral law would be
+    from contactcore.newton import _no_equilibrium
+    assert "tangential tie" not in str(_no_equilibrium(load_scene("C-coulomb"), 1, 6, ["Newton did not converge"]))
