@@ -83,7 +83,6 @@ class InterfacePath:
             return out.reshape((len(b),) + np.shape(values)[1:])
         return np.asarray(values)[cKDTree(self.points).query(points)[1]]
 
-
     def piece_means(self, interface, points: np.ndarray, values: np.ndarray) -> np.ndarray:
         """``values`` (m, ...) at the quadrature points, averaged over each
         piece of Γ with the quadrature weights and read at other points of
@@ -97,7 +96,9 @@ class InterfacePath:
         as the stress does.  A weighted mean is a convex combination, so an
         admissible traction stays admissible: ``t_N <= 0`` and
         ``|t_T| <= μ|t_N|`` hold for the mean where they hold at the points.
-        Without pieces, the points' own values (:meth:`interpolated`)."""
+        The price is resolution: a kink, or t_T's change of sign between
+        two slip directions, is spread over one piece.  Without pieces, the
+        points' own values (:meth:`interpolated`)."""
         if self.pieces is None:
             return self.interpolated(interface, points, values)
         centres, which = np.unique(self.pieces, axis=0, return_inverse=True)
