@@ -106,9 +106,11 @@ class InterfacePath:
         values = np.asarray(values, float)
         flat = values.reshape(len(which), -1)
         total = np.bincount(which, self.weights, len(centres))
-        means = np.column_stack([np.bincount(which, self.weights * c, len(centres)) for c in flat.T]) / total[:, None]
-        at_centres = InterfacePath(centres, total)
-        return at_centres.interpolated(interface, points, means.reshape((len(centres),) + values.shape[1:]))
+        means = np.column_stack([np.bincount(which, self.weights * c, len(centres)) for c in flat.T])
+        held = total > 0  # a piece of zero length carries nothing
+        means = means[held] / total[held, None]
+        at_centres = InterfacePath(centres[held], total[held])
+        return at_centres.interpolated(interface, points, means.reshape((int(held.sum()),) + values.shape[1:]))
 
 
 def piece_centres(points: np.ndarray, weights: np.ndarray, sizes) -> np.ndarray:
@@ -121,7 +123,10 @@ def piece_centres(points: np.ndarray, weights: np.ndarray, sizes) -> np.ndarray:
     which = np.repeat(np.arange(len(sizes)), sizes)
     total = np.bincount(which, weights, len(sizes))
     centres = np.column_stack([np.bincount(which, weights * points[:, j], len(sizes)) for j in range(2)])
-    return (centres / np.where(total > 0, total, 1.0)[:, None])[which]
+    plain = np.column_stack([np.bincount(which, points[:, j], len(sizes)) for j in range(2)])
+    plain /= np.maximum(np.asarray(sizes, float), 1.0)[:, None]
+    # a piece of zero length (Γ touching a cell at a corner) by its points' plain mean
+    return np.where(total[:, None] > 0, centres / np.where(total > 0, total, 1.0)[:, None], plain)[which]
 
 
 def canonical_order(interface, points: np.ndarray) -> np.ndarray:

@@ -292,7 +292,7 @@ FACTORISATIONS_KEPT = 2
 #: 0.05 (fe P1 8.4 against 1.4 ms, xfem P2 46-54 against 4.7-6 ms, efgm P1
 #: 51 against 3 ms, 2026-11-26; the ratio grows with the size).  Solved one
 #: by one, at most LOW_RANK_NEW new rows per correction.  MUMPS solves them
-#: as one block (fe, xfem) for less than a factorisation up to
+#: as one block (fe, xfem, EFGM on MUMPS) for less than a factorisation up to
 #: LOW_RANK_COLUMNS (xfem P2: 16 columns in 13 ms, 32 in 24, 64 in ~45),
 #: the most a correction takes and a factorisation keeps: 8 bytes each per
 #: unknown, 1 kB per unknown for two factorisations at most, within

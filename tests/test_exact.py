@@ -321,3 +321,23 @@ def test_a_step_stuck_where_every_point_slips_starts_from_a_stiffer_answer():
     assert t[final.status != OPEN, 0].max(initial=0.0) <= tol.CLOSED_TENSION * scale
     assert np.all(np.abs(t[:, 1]) <= scene.law.mu * np.abs(t[:, 0]) + tol.CLOSED_TENSION * scale)
     assert np.any(final.status == STICK)
+
+
+def test_a_piece_of_zero_length_carries_nothing():
+    """Γ through a mesh node touches a cell at a corner: that cell's piece
+    has points of zero weight.  It keeps its own centre (not the origin)
+    and is left out of the means, which stay finite and unchanged."""
+    from contactcore.geometry import LineInterface
+    from contactcore.interface_path import InterfacePath, Increment, piece_centres
+    path, line = _cone_path(), LineInterface((0.0, 0.5), (0.0, 1.0))
+    corner = np.array([[0.5, 0.5]] * 3)
+    points, weights = np.vstack([path.points, corner]), np.concatenate([path.weights, np.zeros(3)])
+    pieces = piece_centres(points, weights, [3, 3, 3, 3])
+    assert np.allclose(pieces[-3:], corner, rtol=0, atol=tol.PATCH_ROUNDOFF)
+    traction = np.vstack([path.final.traction, np.zeros((3, 2))])
+    step = Increment(1.0, (), 1, [], np.zeros((12, 2)), traction, np.zeros(12, np.int8))
+    grown = InterfacePath(points, weights, [step], pieces=pieces)
+    samples = np.column_stack([np.linspace(0.0, 1.0, 21), np.full(21, 0.5)])
+    read = grown.piece_means(line, samples, traction)
+    assert np.all(np.isfinite(read))
+    assert np.allclose(read, path.piece_means(line, samples, path.final.traction), rtol=0, atol=tol.PATCH_ROUNDOFF)
