@@ -195,11 +195,10 @@ def profile_estimates(levels: list[list[ProfileData]], degree: int, method: str 
     coarse to fine (each a list in the scene's order); an observed order
     from the samples at least ``exclude`` from the ``scene``'s singular
     points."""
-    out = {}
+    out, law = {}, scene.law if scene else None
     for profs in zip(*levels):
         pid, cols = profs[-1].id, profs[-1].columns
         kept = far_from_singular(scene, np.column_stack([cols["x"], cols["y"]]), exclude) if scene else None
-        law = scene.law if scene else None
         out[pid] = {q: richardson([p.columns[q] for p in profs], theoretical_order(q, degree, method, law),
                                   coarse=coarse, kept=kept)
                     for q in profs[-1].names[3:]}

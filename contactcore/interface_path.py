@@ -123,8 +123,8 @@ def piece_centres(points: np.ndarray, weights: np.ndarray, sizes) -> np.ndarray:
     which = np.repeat(np.arange(len(sizes)), sizes)
     total = np.bincount(which, weights, len(sizes))
     centres = np.column_stack([np.bincount(which, weights * points[:, j], len(sizes)) for j in range(2)])
-    plain = np.column_stack([np.bincount(which, points[:, j], len(sizes)) for j in range(2)])
-    plain /= np.maximum(np.asarray(sizes, float), 1.0)[:, None]
+    plain = np.column_stack([np.bincount(which, points[:, j], len(sizes)) for j in range(2)]) / \
+        np.maximum(np.asarray(sizes, float), 1.0)[:, None]  # (np.bincount of nothing is int: not in place)
     # a piece of zero length (Γ touching a cell at a corner) by its points' plain mean
     return np.where(total[:, None] > 0, centres / np.where(total > 0, total, 1.0)[:, None], plain)[which]
 

@@ -396,16 +396,7 @@ class _Newton:
         answer differs from this one's by the stabilisation's small effect
         (Nitsche is consistent) and starts Newton next to it with its
         sticking points (there: 3 iterations to 5 sticking points)."""
-        target = self.itf
-        try:
-            self._use(target.softened(tol.CONTINUATION_STEP))
-            start = self._iterate(k)
-        finally:
-            self._use(target)
-        try:
-            return self._iterate(k, start=(start[1], start[2].status))
-        finally:
-            self._use(target)
+        return self._at(k, 1.0, self._at(k, tol.CONTINUATION_STEP))
 
     def _continued(self, k: float, factor: float):
         """The step to ``k`` at ``factor`` times the stabilisation, started
@@ -415,20 +406,24 @@ class _Newton:
         softer problem's answer differs from the stiffer one's by the
         stabilisation's small effect only (Nitsche is consistent), so it
         starts Newton next to the answer with the right status map."""
-        target, softer = self.itf, factor / tol.CONTINUATION_STEP
+        softer = factor / tol.CONTINUATION_STEP
         try:
-            self._use(target.softened(softer))
-            try:
-                start = self._iterate(k)
-            except SolverError:
-                if softer / tol.CONTINUATION_STEP < tol.CONTINUATION_FLOOR:
-                    raise
-                start = self._continued(k, softer)
-        finally:
-            self._use(target)
+            start = self._at(k, softer)
+        except SolverError:
+            if softer / tol.CONTINUATION_STEP < tol.CONTINUATION_FLOOR:
+                raise
+            start = self._continued(k, softer)
+        return self._at(k, factor, start)
+
+    def _at(self, k: float, factor: float, start=None):
+        """The step to ``k`` at ``factor`` times the stabilisation of the
+        interface Newton is on, from the committed state or from ``start``
+        (another :meth:`_iterate`'s answer: its ``u`` and status map); that
+        interface is Newton's again afterwards, whatever the outcome."""
+        target = self.itf
         self._use(target.softened(factor) if factor != 1.0 else target)
         try:
-            return self._iterate(k, start=(start[1], start[2].status))
+            return self._iterate(k, start=None if start is None else (start[1], start[2].status))
         finally:
             self._use(target)
 

@@ -334,6 +334,7 @@ def test_a_piece_of_zero_length_carries_nothing():
     points, weights = np.vstack([path.points, corner]), np.concatenate([path.weights, np.zeros(3)])
     pieces = piece_centres(points, weights, [3, 3, 3, 3])
     assert np.allclose(pieces[-3:], corner, rtol=0, atol=tol.PATCH_ROUNDOFF)
+    assert piece_centres(np.zeros((0, 2)), np.zeros(0), []).shape == (0, 2)  # a rank holding none of Γ
     traction = np.vstack([path.final.traction, np.zeros((3, 2))])
     step = Increment(1.0, (), 1, [], np.zeros((12, 2)), traction, np.zeros(12, np.int8))
     grown = InterfacePath(points, weights, [step], pieces=pieces)
