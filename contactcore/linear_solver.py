@@ -326,6 +326,30 @@ class Factorisation:
                                      "or not for this solver")
         self.base = base
 
+    def columns_worth(self) -> tuple[float, float] | None:
+        """``(cost, memory)``: how many columns of a block solve
+        (:meth:`solve_columns`) cost what the last factorisation did, and
+        how many take as much memory as its factors; None for a solver
+        other than MUMPS.  From MUMPS's own counts, which depend on the
+        matrix's pattern alone: the factorisation's flops RINFOG(3) against
+        a solve's ``2 e`` per column for the ``e`` = INFOG(29) entries of LU
+        (``4 e`` for LDLᵀ, whose factor is stored once), and ``e / n``
+        columns of ``n`` unknowns.  Measured (C-coulomb, exact, 2026-11-26):
+        fe P1 at h = 0.05 41 by the flops against 43-70 timed, fe P1 at h =
+        0.025 77 against 31-44, efgm P1 at h = 0.025 276 against 202-221."""
+        factor = _mumps_factor(self.ksp)
+        if factor is None:
+            return None
+        try:
+            flops, entries = factor.getMumpsRinfog(3), factor.getMumpsInfog(29)
+        finally:
+            factor.destroy()
+        entries = entries if entries >= 0 else -entries * 1e6  # MUMPS gives millions as a negative count
+        if entries <= 0:
+            return None
+        per_column = (4.0 if self.ksp.getPC().getType() == "cholesky" else 2.0) * entries
+        return flops / per_column, entries / self.A.getSize()[0]
+
     def _set_up(self, A) -> bool:
         """KSP (made on first use) and factorisation of ``A``; whether the KSP is new."""
         first = self.ksp is None
@@ -500,6 +524,20 @@ class Tangent:
         if rhs.shape[1]:
             out[self.free] = self._slots[slot][1].solve_columns(rhs[self.free])
         return out
+
+    def column_budget(self, slot: int) -> int | None:
+        """How many columns a low-rank correction of ``slot``'s
+        factorisation may solve for as one block and keep
+        (:class:`contactcore.newton._Update`): as many as cost one
+        factorisation, in no more than LOW_RANK_MEMORY of its factors'
+        memory (:meth:`Factorisation.columns_worth`), within
+        [LOW_RANK_COLUMNS, LOW_RANK_COLUMNS_MAX]; None for a solver other
+        than MUMPS, which solves them one by one."""
+        worth = self._slots[slot][1].columns_worth()
+        if worth is None:
+            return None
+        cost, memory = worth
+        return int(min(max(min(cost, tol.LOW_RANK_MEMORY * memory), tol.LOW_RANK_COLUMNS), tol.LOW_RANK_COLUMNS_MAX))
 
     def _fill(self, J, K_Gamma: sp.csr_matrix) -> None:
         """``J = K + K_Γ`` in place (``J``'s pattern holds both).  On

@@ -203,9 +203,12 @@ class ContactSystem(ABC):
         :data:`~contactcore.tolerances.FACTORISATIONS_KEPT`); with
         ``interface_tangent`` None, the slot's last factorisation is used."""
 
-    #: how many columns a low-rank correction of a factorisation may solve
-    #: for at once (:meth:`solve_columns`; :mod:`contactcore.tolerances`)
-    update_columns: ClassVar[int] = tol.LOW_RANK_NEW
+    def correction_columns(self, slot: int) -> tuple[int, int]:
+        """``(new, kept)``: how many columns a low-rank correction of
+        ``slot``'s factorisation may solve for at once (:meth:`solve_columns`)
+        and how many it may keep and read in all.  Solved one by one here:
+        LOW_RANK_NEW and LOW_RANK_COLUMNS (:mod:`contactcore.tolerances`)."""
+        return tol.LOW_RANK_NEW, tol.LOW_RANK_COLUMNS
 
     def solve_columns(self, rhs: np.ndarray, slot: int) -> np.ndarray:
         """``δU`` (n, q) for the q columns of ``rhs`` with the slot's last
@@ -249,12 +252,12 @@ class _Columns:
     def __len__(self) -> int:
         return len(self.index)
 
-    def add(self, keys: list[tuple[int, int]], columns: np.ndarray) -> None:
+    def add(self, keys: list[tuple[int, int]], columns: np.ndarray, most: int) -> None:
         """Keep ``columns`` (n, q), the solutions for the rows ``keys``;
-        the storage grows by doubling, up to LOW_RANK_COLUMNS."""
+        the storage grows by doubling, up to ``most`` columns."""
         count = len(self.index)
         if count + len(keys) > len(self.rows):
-            grown = np.zeros((min(max(2 * (count + len(keys)), 8), tol.LOW_RANK_COLUMNS), self.rows.shape[1]))
+            grown = np.zeros((min(max(2 * (count + len(keys)), 8), most), self.rows.shape[1]))
             grown[:count] = self.rows[:count]
             self.rows = grown
         self.rows[count:count + len(keys)] = columns.T
@@ -284,7 +287,8 @@ class _Update:
         self.columns = newton._columns.setdefault(slot, _Columns(newton.system.size))
         new = [pc for pc in changed if pc not in self.columns.index]
         if new:
-            self.columns.add(new, newton.system.solve_columns(test[[2 * p + c for p, c in new]].toarray().T, slot))
+            self.columns.add(new, newton.system.solve_columns(test[[2 * p + c for p, c in new]].toarray().T, slot),
+                             newton.system.correction_columns(slot)[1])
         self.used = len(self.columns)  # the columns it reads: the first ones, kept in place
         self.at = np.array([self.columns.index[pc] for pc in changed], int)
         points, rows = (np.array([pc[i] for pc in changed], int) for i in (0, 1))
@@ -640,11 +644,12 @@ class _Newton:
     def _corrected(self, tangent: np.ndarray, rhs: np.ndarray, scale: float):
         """``(δu, report)`` by a kept factorisation corrected to ``tangent``
         (:class:`_Update`), or None where none is close enough: one process
-        only, a correction of at most LOW_RANK_COLUMNS rows of the points'
-        tangents (:mod:`contactcore.tolerances`) of which at most the
-        system's ``update_columns`` need a solve, the fewest of the kept
-        factorisations; a correction whose solve fails its residual check (a
-        singular tangent) is left to a factorisation."""
+        only, a correction within the system's
+        :meth:`~ContactSystem.correction_columns` of the factorisation (rows
+        of the points' tangents that need a solve, and kept in all), the
+        fewest new ones of the kept factorisations; a correction whose solve
+        fails its residual check (a singular tangent) is left to a
+        factorisation."""
         if self.ranks.parallel:
             return None
         for update in self._updates:
@@ -659,8 +664,9 @@ class _Newton:
             changed = [tuple(pc) for pc in np.argwhere(np.any(tangent != kept, axis=2))]
             columns = self._columns.get(slot, _Columns(0))
             new = sum(pc not in columns.index for pc in changed)
-            if (len(changed) <= tol.LOW_RANK_COLUMNS and new <= self.system.update_columns
-                    and len(columns) + new <= tol.LOW_RANK_COLUMNS and (best is None or new < best[0])):
+            most_new, most = self.system.correction_columns(slot)
+            if (len(changed) <= most and new <= most_new and len(columns) + new <= most
+                    and (best is None or new < best[0])):
                 best = (new, slot, kept, changed)
         if best is None:
             return None

@@ -299,6 +299,18 @@ FACTORISATIONS_KEPT = 2
 #: contactcore.budget's allowance.
 LOW_RANK_NEW = 8
 LOW_RANK_COLUMNS = 64
+#: On MUMPS the budget follows the factorisation's own cost
+#: (contactcore.linear_solver.Tangent.column_budget): the columns its flops
+#: would solve, in no more than LOW_RANK_MEMORY of its factors' memory (the
+#: factors dominate a run's memory, contactcore.budget), within
+#: [LOW_RANK_COLUMNS, LOW_RANK_COLUMNS_MAX].  EFGM's factorisations are
+#: worth 180-350 columns (wide supports fill its factors), fe's and xfem's
+#: 40-80 (the memory cap then holds them at 64); with the budget, exact
+#: C-coulomb's solve takes 0.66-0.87 of its time with 64 in EFGM
+#: (docs/newton.md, 2026-11-26).  The cap keeps two factorisations' columns within 16 kB
+#: per unknown whatever the counts say.
+LOW_RANK_MEMORY = 0.25
+LOW_RANK_COLUMNS_MAX = 1024
 
 #: Built systems a study keeps for reuse (contactcore.discretisation.Reuse):
 #: one per method of a ``--method all`` study, whose cases alternate

@@ -219,12 +219,12 @@ class EFGMSystem(ContactSystem):
                                                   symmetric=SYMMETRIC, estimate_condition=self.estimate, what=self.what)
         return self._tangent.solve(interface_tangent, rhs, force_scale, slot)
 
-    @property
-    def update_columns(self) -> int:
-        """Columns a low-rank correction may solve for at once: MUMPS's block
-        solve takes LOW_RANK_COLUMNS for less than a factorisation; SuperLU
-        solves them one by one (contactcore.tolerances)."""
-        return tol.LOW_RANK_COLUMNS if hasattr(self._tangent, "solve_columns") else tol.LOW_RANK_NEW
+    def correction_columns(self, slot: int) -> tuple[int, int]:
+        """MUMPS solves a correction's columns as one block, as many as cost
+        about one factorisation (:meth:`contactcore.linear_solver.Tangent.column_budget`);
+        SuperLU solves them one by one (:class:`~contactcore.newton.ContactSystem`'s)."""
+        budget = self._tangent.column_budget(slot) if hasattr(self._tangent, "column_budget") else None
+        return super().correction_columns(slot) if budget is None else (budget, budget)
 
     def solve_columns(self, rhs: np.ndarray, slot: int) -> np.ndarray:
         if hasattr(self._tangent, "solve_columns"):

@@ -388,14 +388,6 @@ EXACT_LIMIT_BAND = 1e-6
 #: profiles' scale (the answers are the same solve; round-off only).
 EXACT_INDEPENDENCE = 1e-10
 
-#: Factorisations after C-coulomb's first increment at h = 0.05
-#: (tests/test_factorisations.py): none for fe and xfem; one for EFGM,
-#: whose first increment's corrections, solved as one MUMPS block of up to
-#: LOW_RANK_COLUMNS, fill the block by the third increment (measured
-#: 2026-11-26: 4 factorisations in the first increment, 1 in the third, 5
-#: in all, against 8 when EFGM solved at most 8 columns one by one).
-LATER_FACTORISATIONS = {"fe": 0, "xfem": 0, "efgm": 1}
-
 #: The mesh size at which β is moved 10 times either way against halving
 #: h (tests/test_exact.py; docs/contact-enforcement.md, "β against h"):
 #: C-coulomb's own h.

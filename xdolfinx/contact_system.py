@@ -23,7 +23,6 @@ from dolfinx import la
 
 from contactcore.collective import Collective
 from contactcore import linear_solver
-from contactcore import tolerances as tol
 from contactcore.constraints import Constraints
 from contactcore.exchange import Exchange
 from contactcore.newton import ContactSystem, InterfaceOperator
@@ -36,7 +35,6 @@ class PETScSystem(ContactSystem):
     """``K`` (PETSc), loads, the prescribed unknowns (``constraints`` on
     dofs) and Γ (see module doc), distributed over ``comm`` (the mesh's)."""
 
-    update_columns = tol.LOW_RANK_COLUMNS  # MUMPS solves them as one block
 
     def __init__(self, K, loads: list[np.ndarray], constraints: Constraints, interface: InterfaceOperator, *,
                  comm=None, petsc_options=None, estimate_condition: bool = False, what: str = "linear system"):
@@ -68,6 +66,12 @@ class PETScSystem(ContactSystem):
 
     def solve(self, interface_tangent, rhs: np.ndarray, force_scale: float = 0.0, slot: int = 0):
         return self._tangent.solve(interface_tangent, rhs, force_scale, slot)
+
+    def correction_columns(self, slot: int) -> tuple[int, int]:
+        """MUMPS solves a correction's columns as one block, as many as cost
+        about one factorisation (:meth:`~contactcore.linear_solver.Tangent.column_budget`)."""
+        budget = self._tangent.column_budget(slot)
+        return super().correction_columns(slot) if budget is None else (budget, budget)
 
     def solve_columns(self, rhs: np.ndarray, slot: int) -> np.ndarray:
         return self._tangent.solve_columns(rhs, slot)
