@@ -23,7 +23,8 @@ quantity is used (:func:`theoretical_order`): ``k + 1`` for a displacement
 and a gap (the L2 rate of degree k), and for a penalty law's traction on
 Γ, which the law computes from the gaps (``t = k_N g_N`` …) not from the
 bulk stress; ``k`` for a stress (the H1 rate); under an exact law, at most
-2 for the gaps and 1 for the traction where the law switches.  An observed order further than
+2 for the gaps and 1 for the traction where Γ's status changes along it
+(:func:`switches`).  An observed order further than
 :data:`~contactcore.tolerances.ORDER_MISMATCH` from theory means the runs
 are not yet in the asymptotic range: the estimate carries a warning.
 
@@ -83,7 +84,7 @@ RECOVERED_STRESS = (("xfem", 1),)
 GAPS, TRACTIONS = ("gN", "gT"), ("tN", "tT")
 
 
-def theoretical_order(quantity: str, degree: int, method: str = "", law=None) -> int:
+def theoretical_order(quantity: str, degree: int, method: str = "", law=None, switching: bool | None = None) -> int:
     """The rate of a profile quantity for ``method`` of ``degree`` (module
     doc).  Under an exact ``law`` the traction on Γ is Nitsche's multiplier,
     a stress (rate ``degree``, not the gaps' ``degree + 1``).  Where that
@@ -92,9 +93,11 @@ def theoretical_order(quantity: str, degree: int, method: str = "", law=None) ->
     status changes (Moussaoui & Khodja, Comm. PDE 17, 1992; Chouly, Hild &
     Renard, Math. Comp. 84, 2015), which caps the gaps' rate at 2 and the
     traction's at 1 in every degree: exact C-coulomb's profiles converge
-    at about these rates (docs/contact-enforcement.md, "Convergence")."""
+    at about these rates (docs/contact-enforcement.md, "Convergence").
+    ``switching`` False says that the runs' status never changed along Γ
+    (:func:`switches`): no such point, the bonded law's rates."""
     if law is not None and getattr(law, "enforcement", "penalty") == "exact":
-        switches = not law.is_linear
+        switches = not law.is_linear and switching is not False
         if quantity in TRACTIONS:
             return 1 if switches else degree
         if quantity in GAPS and switches:
@@ -190,16 +193,17 @@ def richardson(values: list[np.ndarray], theory: int, ratio: float = 2.0, coarse
 
 
 def profile_estimates(levels: list[list[ProfileData]], degree: int, method: str = "", coarse: bool = False,
-                      scene: Scene | None = None, exclude: float = 0.0) -> dict[str, dict[str, QuantityEstimate]]:
+                      scene: Scene | None = None, exclude: float = 0.0,
+                      switching: bool | None = None) -> dict[str, dict[str, QuantityEstimate]]:
     """``{profile id: {quantity: estimate}}`` from the profiles of each run,
     coarse to fine (each a list in the scene's order); an observed order
     from the samples at least ``exclude`` from the ``scene``'s singular
-    points."""
+    points; ``switching`` as :func:`theoretical_order` takes it."""
     out, law = {}, scene.law if scene else None
     for profs in zip(*levels):
         pid, cols = profs[-1].id, profs[-1].columns
         kept = far_from_singular(scene, np.column_stack([cols["x"], cols["y"]]), exclude) if scene else None
-        out[pid] = {q: richardson([p.columns[q] for p in profs], theoretical_order(q, degree, method, law),
+        out[pid] = {q: richardson([p.columns[q] for p in profs], theoretical_order(q, degree, method, law, switching),
                                   coarse=coarse, kept=kept)
                     for q in profs[-1].names[3:]}
     return out
@@ -215,6 +219,20 @@ def order_warnings(estimates: dict[str, dict[str, QuantityEstimate]]) -> list[st
 
 
 # ----- the status along Γ -----------------------------------------------------
+
+def switches(paths) -> bool:
+    """Whether Γ's status (open, stick, slip) took more than one value in
+    any increment of the runs' interface ``paths``.  Where it never did
+    (scene A under the exact unilateral law: closed and tied everywhere),
+    no point of Γ separates two statuses, now or in the history that set
+    a Coulomb slip, so nothing limits the solution's smoothness there
+    (:func:`theoretical_order`)."""
+    seen = set()
+    for path in paths:
+        for step in path.steps:
+            seen.update(np.unique(step.status).tolist())
+    return len(seen) > 1
+
 
 def status_along(scene: Scene, path) -> np.ndarray:
     """The final increment's status (index into ``STATUS_NAMES``) at the
@@ -384,7 +402,8 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     ``exclude`` of a singular point."""
     hs = tuple(float(r.discretisation["h"]) for r in results)
     levels = [sample_profiles(scene, r.fields, r.interface) for r in results]
-    profiles = profile_estimates(levels, results[-1].degree, results[-1].method, coarse, scene, exclude)
+    switching = None if scene.law.is_linear else switches([r.interface for r in results])
+    profiles = profile_estimates(levels, results[-1].degree, results[-1].method, coarse, scene, exclude, switching)
     warnings = order_warnings(profiles)
     status = None
     if scene.law.has_history or not scene.law.is_linear:

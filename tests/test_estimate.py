@@ -191,3 +191,31 @@ def test_an_exact_law_caps_the_orders_on_gamma():
         assert [est.theoretical_order(q, k, "fe", penalty) for q in ("gN", "tN")] == [k + 1, k + 1]
         assert est.theoretical_order("sxx", k, "fe", coulomb) == est.theoretical_order("sxx", k, "fe") == k
         assert est.theoretical_order("ux", k, "efgm", coulomb) == k + 1
+
+
+def test_a_status_that_never_changes_along_gamma_lifts_the_cap():
+    """Where Γ's status never changes along it, in any increment of any run
+    (scene A under the exact unilateral law: closed and tied everywhere),
+    no point limits the solution's smoothness, and the gaps are estimated
+    at k + 1 as under ``bonded``.  Measured on A5 (h = 0.05 -> 0.025
+    against fe P2 at h = 0.00625, 2026-11-26): the degree-2 gaps'
+    effectivities were 2.4-3.8 with the cap (order 2) and are 1.0-1.6
+    at order 3 (fe, xfem, efgm P2); degree 1 keeps order 2 either way."""
+    from types import SimpleNamespace as NS
+    from contactcore import load_scene, make_law
+    from verification import methods
+
+    def path(*statuses):
+        return NS(steps=[NS(status=np.array(s, np.int8)) for s in statuses])
+    assert not est.switches([path([1, 1, 1], [1, 1, 1]), path([1, 1])])
+    assert est.switches([path([1, 1, 1], [1, 2, 1])])  # slipped once, then stuck: the slip kinks
+    assert est.switches([path([1, 1]), path([0, 0])])  # open at h/2, closed at h
+    unilateral = make_law({"type": "unilateral", "enforcement": "exact"})
+    assert [est.theoretical_order(q, 2, "fe", unilateral, switching=False) for q in ("gN", "tN")] == [3, 2]
+    assert [est.theoretical_order(q, 2, "fe", unilateral, switching=True) for q in ("gN", "tN")] == [2, 1]
+
+    scene = load_scene("A").with_changes(law=unilateral)
+    runs = [methods.solver("fe")(scene, h, degree=2) for h in (0.1, 0.05)]
+    estimate = est.estimate_runs(scene, runs, energy=False)
+    assert not est.switches([r.interface for r in runs])
+    assert {q: estimate.profiles["A5"][q].order for q in ("gN", "gT")} == {"gN": 3.0, "gT": 3.0}

@@ -6,7 +6,7 @@
     python -m verification paper [--scene A B C] [--ref-h H] --out DIR
     python -m verification closed [--case patch pressurised_rod twisted_rod] [--method ...] [--degree 1 2] --out DIR
     python -m verification efficiency SCENE --method fe efgm --degree 1 2 --h H1 H2 ... --ref-h H --out DIR
-    python -m verification effectivity [--scene A B C] [--h 0.05] [--ref-h 0.00625] [--levels 2|3] --out DIR
+    python -m verification effectivity [--scene A B C | SCENE_OR_TOML ...] [--h 0.05] [--ref-h 0.00625] [--levels 2|3] --out DIR
     python -m verification sweeps [--sweep NAME ...] [--method ...] [--degree 1] --out DIR
     python -m verification study SCENE --param NAME --values V1 V2 ... [--param NAME2 --values ...] [--method ...]
         [--degree 1] [--h H] --out DIR
@@ -160,8 +160,9 @@ def _commands() -> dict[str, Command]:
                 help="element size of the P2 reference (default: none, the errors are estimated)"),
             arg("--exclude", type=float, help="distance from corners and Γ's ends left out (default 0.1 L)"),
             out, workers(os.cpu_count())), _efficiency),
-        "effectivity": Command("the error estimates against fe P2 at a fine h on the paper's scenes", (
-            scenes, arg("--h", type=float, default=0.05, help="the coarsest run (default 0.05)"),
+        "effectivity": Command("the error estimates against fe P2 at a fine h, on the paper's scenes or others", (
+            arg("--scene", nargs="+", default=["A", "B", "C"],
+                help="built-in scene names or scene TOML files (default: the paper's A B C)"), arg("--h", type=float, default=0.05, help="the coarsest run (default 0.05)"),
             arg("--ref-h", type=float, default=0.00625, help="cell size of the fe P2 truth (default 0.00625)"),
             arg("--levels", type=int, default=2, choices=(2, 3), help="runs h, h/2 (3: and h/4); default 2"),
             out), _effectivity),

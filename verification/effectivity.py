@@ -195,7 +195,7 @@ def scene_rows(scene, key: tuple, h: float, truth: dict[str, ProfileData], level
 
 def scene_table(scene_names, h: float, ref_h: float, out: Path, levels: int = 2, argv=()) -> str:
     """The effectivity of every :data:`SCENE_VARIANTS` pair on each scene
-    (truth: fe P2 at ``ref_h``), written to ``out/effectivity.csv`` and
+    (a built-in name or a TOML file; truth: fe P2 at ``ref_h``), written to ``out/effectivity.csv`` and
     ``out/effectivity.md``; returns the Markdown."""
     from contactcore import load_scene
     rows = []
@@ -206,7 +206,7 @@ def scene_table(scene_names, h: float, ref_h: float, out: Path, levels: int = 2,
             rows += scene_rows(scene, key, h, truth, levels)
     columns = ["scene", "method", "degree", "h", "profile", "quantity", "order", "estimate", "true", "relative",
                "effectivity"]
-    text = (f"# Effectivity on the paper's scenes\n\nTruth: fe P2 at h = {ref_h}; runs at "
+    text = (f"# Effectivity against fe P2\n\nTruth: fe P2 at h = {ref_h}; runs at "
             f"{', '.join(f'{hk:g}' for hk in est.levels_of(h, levels))}, the finest estimated; RMS over the "
             f"samples away from singular points.\n\n" + files.markdown_table(rows, columns[:-3] + columns[-1:]))
     files.write_csv(out / "effectivity.csv", rows, columns)
