@@ -14,8 +14,9 @@ from verification import run as run_driver
 from verification.__main__ import main
 from verification.closed_forms import layered_slip
 
-#: C-coulomb's resolution here: fe P1's exact solve converges at 0.1 (at 0.2
-#: its first increment does not).
+#: C-coulomb's resolution here: every method's exact solve converges at 0.1
+#: from the committed state (at 0.2, fe P1's first increment needs Newton's
+#: restart from 10β, docs/newton.md).
 H = 0.1
 #: Scene C's rectangle [0, 2] x [0, 3] (contactcore/scenes/C-coulomb.toml):
 #: its corners are the singular points, Γ (a circle) meets no edge.
