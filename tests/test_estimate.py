@@ -180,7 +180,7 @@ def test_an_exact_law_caps_the_orders_on_gamma():
     a penalty law's traction follows its gaps (k + 1); the bulk is
     unchanged.  On exact C-coulomb (h = 0.05 -> 0.025 against fe P2 at
     0.00833, docs/error-estimates.md) the capped orders give C4
-    effectivities 0.68-2.65 where k + 1 gave 0.14-0.88."""
+    effectivities 0.70-2.68 where k + 1 gave 0.14-0.89."""
     from contactcore import load_scene, make_law
     coulomb = make_law({"type": "coulomb", "mu": 0.2, "enforcement": "exact"})
     bonded = make_law({"type": "bonded"})
