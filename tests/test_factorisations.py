@@ -111,3 +111,26 @@ def test_corrections_on_another_factorisation_package():
     a, b = superlu.interface.final, mumps.interface.final
     assert np.array_equal(a.status, b.status)
     assert np.max(np.abs(a.traction - b.traction)) <= tol.SOLVER_AGREEMENT * np.max(np.abs(b.traction))
+
+
+@pytest.mark.parametrize("method, wide", [("fe", False), ("efgm", True)])
+def test_a_factorisation_keeps_the_columns_it_is_worth(method, wide, monkeypatch):
+    """Each MUMPS factorisation's correction budget is read from its own
+    counts: the columns its flops would solve, in at most a quarter of its
+    factors' memory, never below LOW_RANK_COLUMNS.  fe's factors (90-140
+    entries per unknown) hold it at 64; EFGM's wide supports (600-1200)
+    give more, which spares it the factorisation a full block of 64 cost
+    (test_only_the_first_increment_factorises)."""
+    seen = []
+    budget = linear_solver.Tangent.column_budget
+
+    def spy(self, slot):
+        seen.append((budget(self, slot), self._slots[slot][1].columns_worth()))
+        return seen[-1][0]
+    monkeypatch.setattr(linear_solver.Tangent, "column_budget", spy)
+    _run(method, "exact")
+    assert seen
+    for got, (cost, memory) in seen:
+        assert core_tol.LOW_RANK_COLUMNS <= got <= core_tol.LOW_RANK_COLUMNS_MAX
+        assert got == core_tol.LOW_RANK_COLUMNS or got <= min(cost, core_tol.LOW_RANK_MEMORY * memory)
+    assert any(got > core_tol.LOW_RANK_COLUMNS for got, _ in seen) == wide
