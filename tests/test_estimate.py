@@ -219,3 +219,14 @@ def test_a_status_that_never_changes_along_gamma_lifts_the_cap():
     estimate = est.estimate_runs(scene, runs, energy=False)
     assert not est.switches([r.interface for r in runs])
     assert {q: estimate.profiles["A5"][q].order for q in ("gN", "gT")} == {"gN": 3.0, "gT": 3.0}
+
+
+def test_effectivity_takes_a_scene_file_and_refuses_an_unknown_scene(tmp_path, capsys):
+    """`effectivity --scene` takes built-in names or TOML files (docs/
+    error-estimates.md: scene A under the exact unilateral law); a name
+    that is neither is refused in one line, with no result folder."""
+    from verification.__main__ import main
+    out = tmp_path / "bad"
+    assert main(["effectivity", "--scene", "nosuch", "--out", str(out)]) == 2
+    assert "'nosuch' is neither a built-in scene" in capsys.readouterr().err
+    assert not out.exists()
