@@ -62,6 +62,7 @@ import numpy as np
 from . import tolerances as tol
 from .geometry import LineInterface, Rectangle
 from .interface_path import along
+from .laws import SLIP
 from .profiles import ProfileData, sample_points, sample_profiles
 from .quadrature import background_cells, volume_rule
 from .recovery import PatchRecovery
@@ -221,16 +222,19 @@ def order_warnings(estimates: dict[str, dict[str, QuantityEstimate]]) -> list[st
 # ----- the status along Γ -----------------------------------------------------
 
 def switches(paths) -> bool:
-    """Whether Γ's status (open, stick, slip) took more than one value in
-    any increment of the runs' interface ``paths``.  Where it never did
-    (scene A under the exact unilateral law: closed and tied everywhere),
-    no point of Γ separates two statuses, now or in the history that set
-    a Coulomb slip, so nothing limits the solution's smoothness there
-    (:func:`theoretical_order`)."""
+    """Whether Γ's status (open, stick, slip forwards, slip backwards: the
+    sign of t_T) took more than one value over all increments of the runs'
+    interface ``paths``.  Where it never did (scene A under the exact
+    unilateral law: closed and tied everywhere), no point of Γ separates
+    two statuses, now or in the history that set a Coulomb slip, so nothing
+    limits the solution's smoothness there (:func:`theoretical_order`).
+    Slip in both directions is a switch: t_T jumps between ±μp."""
     seen = set()
     for path in paths:
         for step in path.steps:
-            seen.update(np.unique(step.status).tolist())
+            status = np.asarray(step.status)
+            backwards = (status == SLIP) & (np.asarray(step.traction)[:, 1] < 0)
+            seen.update(np.unique(np.where(backwards, -1, status)).tolist())
     return len(seen) > 1
 
 

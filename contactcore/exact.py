@@ -122,7 +122,8 @@ class _ExactLaw:
 
     def evaluate(self, y: np.ndarray, state, stiffness: np.ndarray, decision=None) -> LawResponse:
         """The penalty law :meth:`at` ``stiffness`` at the augmented jumps
-        ``y`` (module doc); the state is the caller's to set."""
+        ``y`` (module doc), its state included: for Coulomb, the slip
+        ``s`` kept while a point sticks, ``y_T − t_T/γ`` once it slips or opens."""
         return self.at(stiffness).evaluate(y, state, decision)
 
     def _spring_values(self, k: np.ndarray) -> dict:

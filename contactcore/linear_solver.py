@@ -330,8 +330,11 @@ class Factorisation:
         """``(cost, memory)``: how many columns of a block solve
         (:meth:`solve_columns`) cost what the last factorisation did, and
         how many take as much memory as its factors; None for a solver
-        other than MUMPS.  From MUMPS's own counts, which depend on the
-        matrix's pattern alone: the factorisation's flops RINFOG(3) against
+        other than MUMPS.  From MUMPS's own counts, which follow the
+        matrix's pattern, the ordering (ICNTL(7)) and LU's delayed pivots,
+        not the BLAS in use; a different count moves which solves are
+        corrected, not the answer (each correction is held to the
+        factorised solve's residual test): the factorisation's flops RINFOG(3) against
         a solve's ``2 e`` per column for the ``e`` = INFOG(29) entries of LU
         (``4 e`` for LDLᵀ, whose factor is stored once), and ``e / n``
         columns of ``n`` unknowns.  Measured (C-coulomb, exact, 2026-11-26):

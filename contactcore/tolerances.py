@@ -291,12 +291,11 @@ FACTORISATIONS_KEPT = 2
 #: factorisation.  A factorisation costs 6-17 solves on C-coulomb at h =
 #: 0.05 (fe P1 8.4 against 1.4 ms, xfem P2 46-54 against 4.7-6 ms, efgm P1
 #: 51 against 3 ms, 2026-11-26; the ratio grows with the size).  Solved one
-#: by one, at most LOW_RANK_NEW new rows per correction.  MUMPS solves them
-#: as one block (fe, xfem, EFGM on MUMPS) for less than a factorisation up to
-#: LOW_RANK_COLUMNS (xfem P2: 16 columns in 13 ms, 32 in 24, 64 in ~45),
-#: the most a correction takes and a factorisation keeps: 8 bytes each per
-#: unknown, 1 kB per unknown for two factorisations at most, within
-#: contactcore.budget's allowance.
+#: by one (SuperLU), at most LOW_RANK_NEW new rows per correction and
+#: LOW_RANK_COLUMNS kept.  MUMPS solves them as one block (fe, xfem, EFGM
+#: on MUMPS; xfem P2: 16 columns in 13 ms, 32 in 24, 64 in ~45), and there
+#: LOW_RANK_COLUMNS is the floor of each factorisation's budget (below).
+#: A column takes 8 bytes per unknown: 64 of them, 0.5 kB per unknown.
 LOW_RANK_NEW = 8
 LOW_RANK_COLUMNS = 64
 #: On MUMPS the budget follows the factorisation's own cost
@@ -307,8 +306,12 @@ LOW_RANK_COLUMNS = 64
 #: worth 180-350 columns (wide supports fill its factors), fe's and xfem's
 #: 40-80 (the memory cap then holds them at 64); with the budget, exact
 #: C-coulomb's solve takes 0.66-0.87 of its time with 64 in EFGM
-#: (docs/newton.md, 2026-11-26).  The cap keeps two factorisations' columns within 16 kB
-#: per unknown whatever the counts say.
+#: (docs/newton.md, 2026-11-26).  Memory: two factorisations' columns take
+#: at most half of one factorisation's factors (EFGM, whose factors hold
+#: 600-1200 entries per unknown: up to 2.3 kB per unknown per factorisation,
+#: beside the factors' 4.8-9.6 kB), never more than 16 kB per unknown; fe's and
+#: xfem's 0.5 kB per unknown at the floor, within contactcore.budget's
+#: BYTES_PER_UNKNOWN.
 LOW_RANK_MEMORY = 0.25
 LOW_RANK_COLUMNS_MAX = 1024
 

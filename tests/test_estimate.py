@@ -205,11 +205,15 @@ def test_a_status_that_never_changes_along_gamma_lifts_the_cap():
     from contactcore import load_scene, make_law
     from verification import methods
 
-    def path(*statuses):
-        return NS(steps=[NS(status=np.array(s, np.int8)) for s in statuses])
+    def path(*statuses, shear=1.0):
+        return NS(steps=[NS(status=np.array(s, np.int8), traction=np.column_stack([-np.ones(len(s)),
+                                                                                 shear * np.ones(len(s))]))
+                         for s in statuses])
     assert not est.switches([path([1, 1, 1], [1, 1, 1]), path([1, 1])])
     assert est.switches([path([1, 1, 1], [1, 2, 1])])  # slipped once, then stuck: the slip kinks
     assert est.switches([path([1, 1]), path([0, 0])])  # open at h/2, closed at h
+    assert not est.switches([path([2, 2]), path([2, 2, 2])])  # one slip direction
+    assert est.switches([path([2, 2]), path([2, 2], shear=-1.0)])  # t_T jumps from +μp to −μp
     unilateral = make_law({"type": "unilateral", "enforcement": "exact"})
     assert [est.theoretical_order(q, 2, "fe", unilateral, switching=False) for q in ("gN", "tN")] == [3, 2]
     assert [est.theoretical_order(q, 2, "fe", unilateral, switching=True) for q in ("gN", "tN")] == [2, 1]
@@ -221,12 +225,26 @@ def test_a_status_that_never_changes_along_gamma_lifts_the_cap():
     assert {q: estimate.profiles["A5"][q].order for q in ("gN", "gT")} == {"gN": 3.0, "gT": 3.0}
 
 
-def test_effectivity_takes_a_scene_file_and_refuses_an_unknown_scene(tmp_path, capsys):
+def test_effectivity_takes_a_scene_file_and_refuses_an_unknown_scene(tmp_path, capsys, monkeypatch):
     """`effectivity --scene` takes built-in names or TOML files (docs/
-    error-estimates.md: scene A under the exact unilateral law); a name
-    that is neither is refused in one line, with no result folder."""
+    error-estimates.md: scene A under the exact unilateral law), read
+    before any solve; a name that is neither is refused in one line, with
+    no result folder.  (The solves are stubbed: the table's rows are
+    tested above.)"""
+    from contactcore import load_scene
+    from contactcore.scene import scene_text
+    from verification import effectivity as eff
     from verification.__main__ import main
+    solved = []
+    monkeypatch.setattr(eff, "scene_truth", lambda scene, ref_h: solved.append(scene.name) or {})
+    monkeypatch.setattr(eff, "scene_rows", lambda scene, key, h, truth, levels: [])
+    toml = tmp_path / "A-copy.toml"
+    toml.write_text(scene_text("A").replace('name = "A"', 'name = "A-copy"'))
+    assert load_scene(toml).name == "A-copy"
+    assert main(["effectivity", "--scene", str(toml), "--out", str(tmp_path / "good"), "-q"]) == 0
+    assert solved == ["A-copy"] and (tmp_path / "good" / "effectivity.md").exists()
     out = tmp_path / "bad"
-    assert main(["effectivity", "--scene", "nosuch", "--out", str(out)]) == 2
-    assert "'nosuch' is neither a built-in scene" in capsys.readouterr().err
-    assert not out.exists()
+    assert main(["effectivity", "--scene", "A", "nosuch", "--out", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert "'nosuch' is neither a built-in scene" in err and len(err.strip().splitlines()) == 1
+    assert solved == ["A-copy"] and not out.exists()  # A was not solved before nosuch was refused

@@ -14,7 +14,7 @@ import tolerances as tol
 from contactcore import SceneError, Support, load_scene, make_law, sample_profiles
 from contactcore import discretisation
 from contactcore.exact import Bonded, ExactCoulomb, ExactUnilateral
-from contactcore.laws import OPEN, STICK
+from contactcore.laws import OPEN, SLIP, STICK
 from contactcore.scene import Pressure
 from contactcore.tolerances import NITSCHE_STABILISATION
 from efgm.options import EFGM
@@ -182,6 +182,25 @@ def test_an_exact_law_ignores_the_springs(key, name, law):
         answers.append(_profiles(scene.with_changes(law=exact), disc, 0.1))
     for q, v in answers[0].items():
         assert np.abs(v - answers[1][q]).max() <= tol.EXACT_INDEPENDENCE * max(np.abs(v).max(), 1e-300), q
+
+
+def test_the_slip_state_is_anchored_where_the_stick_began():
+    """Nitsche's Coulomb state at three points (τ = 0, so y = g; γ = 1,
+    μ = 0.5): a sticking point keeps its slip s, a slipping one takes
+    y_T − t_T/γ, an open one y_T — the penalty law's update at k_T = γ,
+    not the jump g_T (which restarts a stick's tie at every increment and
+    made a proportional load's answer depend on its increments)."""
+    import scipy.sparse as sp
+    from contactcore.exact import NitscheInterface
+    from contactcore.newton import InterfaceOperator
+    # rows (g_N, g_T) of points 0, 1, 2 on unknowns u: 0, 1 closed (u0 = −1), 2 open (u4 = 0.3)
+    G = sp.csr_matrix(np.eye(5)[[0, 1, 0, 2, 4, 3]])
+    operator = InterfaceOperator(G, np.ones(3), np.zeros((3, 2)), S=sp.csr_matrix((6, 5)), stabilisation=np.ones(3))
+    u = np.array([-1.0, 0.1, 5.0, 0.3, 0.3])
+    response = NitscheInterface(operator, 1.0).respond(ExactCoulomb(stabilisation=1.0, mu=0.5), u,
+                                                       np.array([0.05, 0.0, 0.0]))
+    assert response.status.tolist() == [STICK, SLIP, OPEN]
+    np.testing.assert_allclose(response.state, [0.05, 5.0 - 0.5, 0.3], rtol=0, atol=1e-15)
 
 
 @pytest.mark.parametrize("key", [("fe", 1), ("xfem", 1), ("efgm", 1)], ids=IDS)

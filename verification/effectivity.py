@@ -198,9 +198,8 @@ def scene_table(scene_names, h: float, ref_h: float, out: Path, levels: int = 2,
     (a built-in name or a TOML file; truth: fe P2 at ``ref_h``), written to ``out/effectivity.csv`` and
     ``out/effectivity.md``; returns the Markdown."""
     from contactcore import load_scene
-    rows = []
-    for name in scene_names:
-        scene = load_scene(name)
+    rows, scenes = [], [load_scene(name) for name in scene_names]  # every scene read before any solve
+    for scene in scenes:
         truth = scene_truth(scene, ref_h)
         for key in SCENE_VARIANTS:
             rows += scene_rows(scene, key, h, truth, levels)
