@@ -28,15 +28,12 @@ the augmented jump
 ``t_N = min(γ y_N, 0)``, the trial ``t_T* = γ (y_T − s)``, stick if
 ``|t_T*| <= μ p``, else slip, and ``s`` the penalty law's slip at
 ``k_T = γ``: kept while the point sticks, ``y_T − t_T/γ`` once it slips
-or opens.  ``s`` anchors the tie of a sticking point where it began to
-stick, so the tie is one elastic spring over the whole stick, as the
-penalty's is.  (``s`` = the jump ``g_T`` at the last converged increment
-restarts it every increment: a stick of slip increment below
-``(μp − |τ_T|)/γ`` then passes each increment, and the answer moved with
-the number of increments of a proportional load, exact C-coulomb's t_T
-by 5 % of its scale from 20 to 80 increments at h = 0.05, more than
-halving h.)  Both are consistent: at the exact solution ``t = τ``, so
-``y_T − t_T/γ = g_T``.  Bonded ``t = γ y``.  With the test side ``G + θ Γ⁻¹ S`` (θ =
+or opens: the tie of a sticking point is anchored where its stick began,
+one elastic spring over the whole stick, so a proportional load's answer
+does not depend on its increments (``s`` = the last increment's jump
+``g_T`` made it; docs/contact-enforcement.md, "The slip state").  It is
+consistent: at the exact solution ``t = τ``, so ``y_T − t_T/γ = g_T``.
+Bonded ``t = γ y``.  With the test side ``G + θ Γ⁻¹ S`` (θ =
 :data:`~contactcore.tolerances.NITSCHE_THETA`: −1, the skew-symmetric
 variant, well posed for every γ > 0) the residual and tangent are
 

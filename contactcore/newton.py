@@ -203,12 +203,20 @@ class ContactSystem(ABC):
         :data:`~contactcore.tolerances.FACTORISATIONS_KEPT`); with
         ``interface_tangent`` None, the slot's last factorisation is used."""
 
+    def column_budget(self, slot: int) -> int | None:
+        """How many columns of ``slot``'s factorisation one block solve may
+        take and a correction keep, or None where they are solved one by one
+        (here; a MUMPS system gives :meth:`~contactcore.linear_solver.Tangent.column_budget`)."""
+        return None
+
     def correction_columns(self, slot: int) -> tuple[int, int]:
         """``(new, kept)``: how many columns a low-rank correction of
         ``slot``'s factorisation may solve for at once (:meth:`solve_columns`)
-        and how many it may keep and read in all.  Solved one by one here:
-        LOW_RANK_NEW and LOW_RANK_COLUMNS (:mod:`contactcore.tolerances`)."""
-        return tol.LOW_RANK_NEW, tol.LOW_RANK_COLUMNS
+        and how many it may keep and read in all: the :meth:`column_budget`
+        for both, or solved one by one LOW_RANK_NEW and LOW_RANK_COLUMNS
+        (:mod:`contactcore.tolerances`)."""
+        budget = self.column_budget(slot)
+        return (tol.LOW_RANK_NEW, tol.LOW_RANK_COLUMNS) if budget is None else (budget, budget)
 
     def solve_columns(self, rhs: np.ndarray, slot: int) -> np.ndarray:
         """``δU`` (n, q) for the q columns of ``rhs`` with the slot's last
@@ -277,18 +285,20 @@ class _Update:
 
     one solve with ``M`` per use, and the columns of ``Z`` to make it, solved
     as one block (:meth:`ContactSystem.solve_columns`) and kept for the
-    next corrections of ``M`` (:class:`_Columns`).  Each solve is held to
+    next corrections of ``M`` (:class:`_Columns`), at most ``most`` of them
+    (:meth:`ContactSystem.correction_columns`).  Each solve is held to
     the health policy by its residual with ``J`` itself: a singular ``J``
     fails it."""
 
-    def __init__(self, newton, slot: int, kept: np.ndarray, tangent: np.ndarray, changed: list[tuple[int, int]]):
+    def __init__(self, newton, slot: int, kept: np.ndarray, tangent: np.ndarray, changed: list[tuple[int, int]],
+                 most: int):
         self.slot, self.tangent = slot, tangent
         test, self.trial = newton.itf.sides()
         self.columns = newton._columns.setdefault(slot, _Columns(newton.system.size))
         new = [pc for pc in changed if pc not in self.columns.index]
         if new:
             self.columns.add(new, newton.system.solve_columns(test[[2 * p + c for p, c in new]].toarray().T, slot),
-                             newton.system.correction_columns(slot)[1])
+                             most)
         self.used = len(self.columns)  # the columns it reads: the first ones, kept in place
         self.at = np.array([self.columns.index[pc] for pc in changed], int)
         points, rows = (np.array([pc[i] for pc in changed], int) for i in (0, 1))
@@ -667,10 +677,11 @@ class _Newton:
             most_new, most = self.system.correction_columns(slot)
             if (len(changed) <= most and new <= most_new and len(columns) + new <= most
                     and (best is None or new < best[0])):
-                best = (new, slot, kept, changed)
+                best = (new, slot, kept, changed, most)
         if best is None:
             return None
-        update = _Update(self, best[1], best[2], tangent, best[3])
+        _, slot, kept, changed, most = best
+        update = _Update(self, slot, kept, tangent, changed, most)
         try:
             solved = update.solve(self, rhs, scale)
         except SolverError:

@@ -219,12 +219,11 @@ class EFGMSystem(ContactSystem):
                                                   symmetric=SYMMETRIC, estimate_condition=self.estimate, what=self.what)
         return self._tangent.solve(interface_tangent, rhs, force_scale, slot)
 
-    def correction_columns(self, slot: int) -> tuple[int, int]:
+    def column_budget(self, slot: int) -> int | None:
         """MUMPS solves a correction's columns as one block, as many as cost
         about one factorisation (:meth:`contactcore.linear_solver.Tangent.column_budget`);
-        SuperLU solves them one by one (:class:`~contactcore.newton.ContactSystem`'s)."""
-        budget = self._tangent.column_budget(slot) if hasattr(self._tangent, "column_budget") else None
-        return super().correction_columns(slot) if budget is None else (budget, budget)
+        SuperLU solves them one by one (None)."""
+        return self._tangent.column_budget(slot) if hasattr(self._tangent, "column_budget") else None
 
     def solve_columns(self, rhs: np.ndarray, slot: int) -> np.ndarray:
         if hasattr(self._tangent, "solve_columns"):

@@ -162,7 +162,8 @@ def _commands() -> dict[str, Command]:
             out, workers(os.cpu_count())), _efficiency),
         "effectivity": Command("the error estimates against fe P2 at a fine h, on the paper's scenes or others", (
             arg("--scene", nargs="+", default=["A", "B", "C"],
-                help="built-in scene names or scene TOML files (default: the paper's A B C)"), arg("--h", type=float, default=0.05, help="the coarsest run (default 0.05)"),
+                help="built-in scene names or scene TOML files (default: the paper's A B C)"),
+            arg("--h", type=float, default=0.05, help="the coarsest run (default 0.05)"),
             arg("--ref-h", type=float, default=0.00625, help="cell size of the fe P2 truth (default 0.00625)"),
             arg("--levels", type=int, default=2, choices=(2, 3), help="runs h, h/2 (3: and h/4); default 2"),
             out), _effectivity),

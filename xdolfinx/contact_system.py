@@ -67,11 +67,10 @@ class PETScSystem(ContactSystem):
     def solve(self, interface_tangent, rhs: np.ndarray, force_scale: float = 0.0, slot: int = 0):
         return self._tangent.solve(interface_tangent, rhs, force_scale, slot)
 
-    def correction_columns(self, slot: int) -> tuple[int, int]:
+    def column_budget(self, slot: int) -> int | None:
         """MUMPS solves a correction's columns as one block, as many as cost
         about one factorisation (:meth:`~contactcore.linear_solver.Tangent.column_budget`)."""
-        budget = self._tangent.column_budget(slot)
-        return super().correction_columns(slot) if budget is None else (budget, budget)
+        return self._tangent.column_budget(slot)
 
     def solve_columns(self, rhs: np.ndarray, slot: int) -> np.ndarray:
         return self._tangent.solve_columns(rhs, slot)
