@@ -347,6 +347,37 @@ def test_the_stabilisation_moves_the_answer_less_than_halving_h(key, factor):
     assert _moved(reference, _coulomb_profiles(key, tol.BETA_H, factor * beta)) < halved
 
 
+@functools.lru_cache(maxsize=None)
+def _a3(key, h, beta):
+    """Scene A with the unilateral law enforced exactly at stabilisation
+    ``beta``: A3 (σxx on Γ) and the samples away from singular points."""
+    from contactcore.estimate import far_from_singular
+    from verification.agreement import default_exclusion
+    base = load_scene("A")
+    scene = base.with_changes(law=make_law({"type": "unilateral", "enforcement": "exact", "stabilisation": beta}))
+    res = _solve(scene, METHODS[key][0], h)
+    a3 = {p.id: p for p in sample_profiles(scene, res.fields, res.interface)}["A3"].columns
+    return a3["sxx"], far_from_singular(base, np.column_stack([a3["x"], a3["y"]]), default_exclusion(base))
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("key", [("fe", 2), ("xfem", 1), ("efgm", 2)], ids=IDS)
+def test_every_stabilisation_converges_to_one_answer(key):
+    """Where β (10× either way) moves scene A's A3 more than h → h/2 does
+    (docs/contact-enforcement.md, "β sets the error's size, not the
+    answer"): at β/10, β and 10β the error against fe P2's exact answer at
+    h/8 falls by at least BETA_ERROR_FALLS from h to h/2, and at one h the
+    three errors lie within BETA_ERROR_SPREAD of each other: β sets the
+    error's size, and every β converges to the same answer."""
+    beta = NITSCHE_STABILISATION
+    truth, keep = _a3(("fe", 2), tol.BETA_H / 8, beta)
+    scale = np.abs(truth[keep]).max()
+    errors = np.array([[np.sqrt(np.mean((_a3(key, h, factor * beta)[0] - truth)[keep] ** 2)) / scale
+                        for factor in (0.1, 1.0, 10.0)] for h in (tol.BETA_H, tol.BETA_H / 2)])
+    assert np.all(errors[0] >= tol.BETA_ERROR_FALLS * errors[1]), errors
+    assert np.all(errors.max(axis=1) <= tol.BETA_ERROR_SPREAD * errors.min(axis=1)), errors
+
+
 def test_a_step_stuck_where_every_point_slips_starts_from_a_stiffer_answer():
     """Exact C-coulomb, fe P1 at h = 0.2: Newton from the unloaded state
     (and from β/10's answer) settles where every closed point slips and

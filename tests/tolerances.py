@@ -406,6 +406,18 @@ PROPORTIONAL_PATH = 1e-9
 #: C-coulomb's own h.
 BETA_H = 0.05
 
+#: Scene A's A3 (σxx on Γ, exact unilateral) at β/10, β and 10β against
+#: fe P2's exact answer at BETA_H/8 (tests/test_exact.py): halving h from
+#: BETA_H must cut each β's error by at least BETA_ERROR_FALLS (first
+#: order; measured 3.5-4.1 for fe P2, 3.0-4.4 for xfem P1, 3.0-4.0 for efgm
+#: P2), and at one h the largest of the three errors must lie within
+#: BETA_ERROR_SPREAD times the least (measured 2.32 and 2.00 for fe P2,
+#: 1.40 and 1.97 for xfem P1, 1.61 and 1.48 for efgm P2, at h = 0.05 and
+#: 0.025; 2026-11-26, docs/contact-enforcement.md, "β sets the error's
+#: size, not the answer").
+BETA_ERROR_FALLS = 2.0
+BETA_ERROR_SPREAD = 3.0
+
 # --- error estimates (tests/test_estimate.py; contactcore.estimate) ---------
 
 #: The effectivity (estimate ÷ true error, RMS over a profile; η over
