@@ -7,9 +7,12 @@ import logging
 import numpy as np
 import pytest
 
-from contactcore import ContactError, ProfileData, load_scene
-from verification.agreement import (agreements, assert_methods_agree, compare, default_exclusion, percent,
-                                    relative_rms, table, variant)
+from pathlib import Path
+
+from contactcore import ContactError, ProfileData, load_scene, make_law
+from contactcore.scaling import Scales
+from verification.agreement import (EXACT_GAP_FLOOR, agreements, assert_methods_agree, compare, default_exclusion,
+                                    measured_against, percent, relative_rms, table, variant)
 from xdolfinx.quiet import quiet_compiler
 
 #: A coarse resolution: the helper's logic, not the methods' accuracy, is under test.
@@ -123,3 +126,26 @@ def test_run_writes_the_helpers_agreement_figures(tmp_path):
         method, degree = a.method.split(" p")
         assert (f"| {method} (p{degree}) | {a.profile} | {a.quantity} | {a.kind} | {percent(a.worst)} | {a.s:.4g} "
                 f"({a.x:.4g}, {a.y:.4g}) | {percent(a.rms)} |") in written
+
+
+def test_an_exact_laws_closed_gap_is_measured_against_the_displacement():
+    """The README's wedge with μ = 0.5 enforced exactly: Γ closed and
+    sticking everywhere, so the exact gaps are zero and each method's are
+    its enforcement's residue.  Against their own size they differ by
+    O(1) (6.9e3 % at h = 0.05, 2026-11-26); against the floor of a tenth of
+    the displacement scale they agree no worse than the tractions (at
+    h = 0.2: 1.9 and 2.1 % against 2.1 and 4.6 %).  A penalty
+    law's gaps (t/k, the answer) keep their own measure."""
+    wedge = load_scene(Path(__file__).resolve().parent.parent / "examples" / "wedge.toml")
+    exact = wedge.with_changes(law=make_law({"type": "coulomb", "mu": wedge.law.mu, "enforcement": "exact"}))
+    result = compare(exact, ["xfem:1"], COARSE_H)
+    rows = {a.quantity: a for a in result.rows}
+    floor = EXACT_GAP_FLOOR * Scales.of(exact).displacement
+    assert result.gap_floor == floor and f"sqrt(g² + {floor:.3g}²) m" in result.markdown()
+    assert max(rows["gN"].worst, rows["gT"].worst) <= max(rows["tN"].worst, rows["tT"].worst)
+    for q in ("gN", "gT"):
+        assert abs(rows[q].value - rows[q].reference) > abs(rows[q].reference)   # O(1) of the residue itself
+    gaps = np.array([1e-9, -2e-9])
+    assert np.array_equal(measured_against(wedge, "gN", gaps), gaps)
+    assert np.array_equal(measured_against(exact, "tN", gaps), gaps)
+    assert np.array_equal(measured_against(exact, "gT", gaps), np.hypot(gaps, floor))

@@ -13,7 +13,10 @@ out: there the stresses have boundary layers or singularities that no
 method resolves at these resolutions, so a pointwise difference there
 measures resolution, not agreement.  A quantity whose exact value is zero
 (scene B's t_N) has no relative measure; it is compared against the scale of
-another quantity instead (``COMPANIONS``).
+another quantity instead (``COMPANIONS``).  Under an exactly enforced law
+the gaps g_N, g_T of a closed, sticking Γ are zero but for the
+enforcement's residue, so a gap is measured against its own values floored
+by a share of the scene's displacement scale (:func:`measured_against`).
 
 :func:`compare` solves a scene with several methods and a reference and
 returns the :class:`AgreementTable`; :func:`assert_methods_agree` is the
@@ -27,6 +30,8 @@ import numpy as np
 
 from contactcore import ContactError, ProfileData, Scene, load_scene, sample_profiles
 from contactcore.estimate import far_from_singular, rms, singular_regions
+from contactcore.exact import is_exact
+from contactcore.scaling import Scales
 
 
 #: Samples closer than this fraction of the scene's diameter L to a singular
@@ -34,6 +39,30 @@ from contactcore.estimate import far_from_singular, rms, singular_regions
 #: C, about three cells of the paper's grids (0.053, 0.1 and 0.1 m), where
 #: the corners' boundary layers live.
 EXCLUDE_FRACTION = 0.1
+
+
+#: An exactly enforced law's gap is measured against its own values floored
+#: by this share of the scene's displacement scale U = L τ/E
+#: (:class:`contactcore.scaling.Scales`).  Where Γ is closed (g_N) and
+#: sticking (g_T) the exact gap is zero, and the run's is the enforcement's
+#: residue (Nitsche's τ/γ: 1.7e-12 m on scene A, U = 5e-7 m; 1.9e-9 m on
+#: the README's wedge with μ = 0.5, U = 5e-6 m; fe P2 at h = 0.05,
+#: 2026-11-26), whose share of its own size has no meaning: the wedge's
+#: methods differed by 6.9e3 % of it.  A tenth of U leaves a gap that Γ
+#: opens or slips by its own measure where it is larger (C-coulomb's
+#: largest g_N, g_T: 0.16 and 0.27 U).  The penalty's gaps are t/k, the
+#: answer itself, and keep their own measure.
+EXACT_GAP_FLOOR = 0.1
+
+
+def measured_against(scene: Scene, quantity: str, values: np.ndarray) -> np.ndarray:
+    """The per-sample values a profile quantity is measured against: its
+    own ``values``, but an exactly enforced law's gap ``sqrt(g² + (f U)²)``,
+    ``f`` = :data:`EXACT_GAP_FLOOR` (see there)."""
+    values = np.asarray(values, float)
+    if quantity in ("gN", "gT") and is_exact(scene.law):
+        return np.hypot(values, EXACT_GAP_FLOOR * Scales.of(scene).displacement)
+    return values
 
 
 def default_exclusion(scene: Scene) -> float:
@@ -74,7 +103,7 @@ def relative_rms(scene: Scene, got: ProfileData, ref: ProfileData, quantity: str
     ``scale`` (default: the reference quantity itself)."""
     keep = kept_samples(scene, ref, exclude)
     diff = got.columns[quantity][keep] - ref.columns[quantity][keep]
-    base = ref.columns[quantity][keep] if scale is None else np.asarray(scale)
+    base = measured_against(scene, quantity, ref.columns[quantity][keep]) if scale is None else np.asarray(scale)
     return float(np.sqrt(np.mean(diff ** 2)) / np.sqrt(np.mean(base ** 2)))
 
 
@@ -101,7 +130,8 @@ class Agreement:
 
     ``rms`` is RMS(got − ref)/RMS(scale) and ``worst`` max|got − ref|/max|scale|
     over the kept samples, ``scale`` the reference's own values (or its
-    companion's, class ``zero``); the worst sample lies at ``s`` (the
+    companion's, class ``zero``; an exact law's gaps floored,
+    :func:`measured_against`); the worst sample lies at ``s`` (the
     profile's parameter) and ``x, y``, where the method gives ``value`` and
     the reference ``reference``.  ``kept`` of ``samples`` were compared."""
 
@@ -131,7 +161,7 @@ def _compared(scene: Scene, label: str, pid: str, q: str, got: ProfileData, ref:
     """One profile quantity of ``got`` against ``ref`` (see :class:`Agreement`)."""
     keep = kept_samples(scene, ref, exclude)
     diff = got.columns[q][keep] - ref.columns[q][keep]
-    base = ref.columns[q][keep] if scale is None else np.asarray(scale)[keep]
+    base = measured_against(scene, q, ref.columns[q][keep]) if scale is None else np.asarray(scale)[keep]
     if not keep.any():
         nan = float("nan")
         return Agreement(label, pid, q, "", nan, nan, nan, nan, nan, nan, nan, 0, len(keep))
@@ -176,6 +206,7 @@ class AgreementTable:
     exclude: float
     regions: tuple[tuple[str, tuple[tuple[float, float], ...]], ...]
     rows: tuple[Agreement, ...]
+    gap_floor: float = 0.0  # an exact law's gaps' floor (measured_against), in m; 0 for a penalty law
 
     def worst(self, measure: str = "worst") -> Agreement:
         """The row with the largest ``measure`` (``"worst"`` or ``"rms"``)."""
@@ -191,7 +222,10 @@ class AgreementTable:
 
     def markdown(self) -> str:
         """The table in Markdown, worst sample and RMS in % of the reference's scale."""
-        lines = [f"Against {self.reference}; {self.excluded()}.", "",
+        floor = (f" Γ's gaps (an exactly enforced law: zero where Γ is closed and sticking) are measured "
+                 f"against sqrt(g² + {self.gap_floor:.3g}²) m, a tenth of the displacement scale."
+                 if self.gap_floor else "")
+        lines = [f"Against {self.reference}; {self.excluded()}.{floor}", "",
                  "| method | profile | quantity | class | worst sample | at s (x, y) | RMS |",
                  "|---|---|---|---|---|---|---|"]
         lines += [f"| {a.method} | {a.profile} | {a.quantity} | {a.kind} | {percent(a.worst)} | {a.s:.4g} "
@@ -206,7 +240,8 @@ def table(scene: Scene, runs: dict[str, dict], reference: str, exclude: float | 
     rows = [row for label, got in runs.items() if label != reference
             for row in profile_agreements(scene, label, got, runs[reference], exclude)]
     regions = tuple((name, tuple(map(tuple, pts.tolist()))) for name, pts in singular_regions(scene))
-    return AgreementTable(scene.name, reference, exclude, regions, tuple(rows))
+    floor = EXACT_GAP_FLOOR * Scales.of(scene).displacement if is_exact(scene.law) else 0.0
+    return AgreementTable(scene.name, reference, exclude, regions, tuple(rows), floor)
 
 
 def variant(spec) -> tuple[str, int]:

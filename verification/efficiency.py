@@ -43,7 +43,7 @@ from contactcore import tolerances as tol
 from contactcore.budget import MEMORY_SHARE, estimate, machine_memory
 
 from . import files, pool
-from .agreement import COMPANIONS, agreements, kept_samples
+from .agreement import COMPANIONS, agreements, kept_samples, measured_against
 from .plots import loglog_by_variant
 from .timing import REPEAT_BELOW, REPEATS, fastest
 
@@ -89,7 +89,7 @@ def worst_estimate(scene, got: dict, est, exclude: float) -> tuple[float, str]:
         keep = kept_samples(scene, got[pid], exclude)
         for q, e in qs.items():
             spid, sq = COMPANIONS.get((pid, q), (pid, q))
-            scale = float(np.sqrt(np.mean(got[spid].columns[sq][keep] ** 2)))
+            scale = float(np.sqrt(np.mean(measured_against(scene, sq, got[spid].columns[sq][keep]) ** 2)))
             if scale > 0:
                 rows.append((float(np.sqrt(np.mean(e.error[keep] ** 2))) / scale, f"{pid}:{q}"))
     return max(rows) if rows else (0.0, "")

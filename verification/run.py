@@ -41,7 +41,7 @@ from contactcore.scene import check_resolution, smallest_dimension
 
 from . import against_exact as exact_gap
 from . import agreement, files, interface, methods, plots, pool
-from .agreement import default_exclusion, within_estimates
+from .agreement import default_exclusion, measured_against, within_estimates
 
 log = logging.getLogger("verification")
 
@@ -115,13 +115,14 @@ def _solve_estimated(solve, scene, h, levels: int | None, **options):
     return results[-1], estimates.estimate_runs(scene, results, default_exclusion(scene))
 
 
-def _estimate_record(est, profiles: list) -> dict:
+def _estimate_record(scene, est, profiles: list) -> dict:
     """summary.json's ``"estimate"``: each quantity's max, RMS and order with
-    ``scale`` (the RMS of the quantity itself, what summary.md relates to)."""
+    ``scale`` (the RMS of the quantity itself, an exact law's gaps floored
+    as the agreement measures them: what summary.md relates to)."""
     record = est.summary()
     for prof in profiles:
         for q in record.get(prof.id, {}):
-            record[prof.id][q]["scale"] = float(np.sqrt(np.mean(prof.columns[q] ** 2)))
+            record[prof.id][q]["scale"] = float(np.sqrt(np.mean(measured_against(scene, q, prof.columns[q]) ** 2)))
     return record
 
 
@@ -295,7 +296,7 @@ def _write_method(out: Path, scene: Scene, name: str, result, est, fields: bool,
         summary["against_exact"] = gaps[label]
     sampled = est.sampled if est is not None else sample_profiles(scene, result.fields, result.interface)
     if est is not None:
-        summary["estimate"] = _estimate_record(est, sampled)
+        summary["estimate"] = _estimate_record(scene, est, sampled)
         estimated[label] = ({p.id: p for p in sampled}, {p.id: est.error_columns(p.id) for p in sampled})
     for prof in sampled:
         files.write_profile_csv(out / name / "profiles" / f"{prof.id}.csv", prof,
