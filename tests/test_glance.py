@@ -172,6 +172,23 @@ def test_study_varies_mu_and_the_increments(tmp_path):
     assert "--param increments: must be a whole number" in rows[1]["message"]
 
 
+@pytest.mark.parametrize("scene, hint", [
+    ("C-coulomb", "with --param enforcement, study the stabilisation apart, on the scene made exact"),
+    ("A", 'its limit k → ∞ is type = "bonded"')])
+def test_study_refuses_a_stabilisation_of_springs(tmp_path, capsys, scene, hint):
+    """Nitsche's β belongs to an exact law only: varied with the penalty
+    enforcement (alone, or in a product with --param enforcement) the study
+    ends before any solve with one line naming the parameter, and leaves
+    no folder."""
+    out = tmp_path / "study"
+    args = ["study", scene, "--param", "enforcement", "--values", "penalty", "exact", "--param", "stabilisation",
+            "--values", "1", "10", "--method", "fe", "--h", "0.2", "-q", "--out", str(out)]
+    assert verification_main.main(args if scene == "C-coulomb" else args[:2] + args[7:]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith('error: --param stabilisation: applies to enforcement = "exact" only') and hint in err
+    assert not out.exists()
+
+
 def test_study_plots_mark_failed_and_warned_points():
     """A ring on every warned point, a cross on the x axis at every failed one."""
     rows = [{"value": v, "method": "fe", "status": st, **dict.fromkeys(study.OUTPUTS, 1.0 + v)}

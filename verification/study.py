@@ -36,6 +36,7 @@ import numpy as np
 
 from contactcore import CircleInterface, ContactError, LineInterface, SceneError, load_scene, sample_profile
 from contactcore.discretisation import Reuse
+from contactcore.exact import EXACT_LAWS
 from contactcore.scene import InterfaceProfile
 
 from . import files, methods, pool
@@ -56,6 +57,11 @@ def _material(scene, body: str, key: str, value: float):
 
 
 def _law(scene, key: str, value: float):
+    if key == "stabilisation" and getattr(scene.law, "enforcement", "penalty") != "exact":
+        how = ("with --param enforcement, study the stabilisation apart, on the scene made exact"
+               if scene.law.name in EXACT_LAWS else 'its limit k → ∞ is type = "bonded"')
+        raise SceneError("--param stabilisation", f"applies to enforcement = \"exact\" only, and the scene's "
+                         f"'{scene.law.name}' law is enforced by its springs here ({how})")
     if key not in scene.law.parameters:
         raise SceneError(f"--param {key}", f"the '{scene.law.name}' law has no parameter {key}")
     return {"law": dataclasses.replace(scene.law, **{key: value})}
