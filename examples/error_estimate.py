@@ -20,17 +20,13 @@ from pathlib import Path
 import numpy as np
 
 from contactcore import load_scene, sample_profiles
-from contactcore.estimate import estimate, far_from_singular
+from contactcore.estimate import estimate, far_from_singular, rms
 from verification import methods
 from verification.agreement import default_exclusion
 from xdolfinx.options import FE
 
 HERE = Path(__file__).resolve().parent
 QUANTITIES = ("gN", "gT", "tN", "tT")
-
-
-def rms(values):
-    return float(np.sqrt(np.mean(np.square(values))))
 
 
 def main(h=None):

@@ -12,6 +12,7 @@ from contactcore.laws import STATUS_NAMES
 from verification import files, methods
 from verification import run as run_driver
 from verification.__main__ import main
+from verification.agreement import gap_floor
 from verification.closed_forms import layered_slip
 
 #: C-coulomb's resolution here: every method's exact solve converges at 0.1
@@ -59,8 +60,10 @@ def test_the_section_lists_every_profile_quantity_and_both_status_splits(coulomb
 def test_the_shares_are_the_difference_of_the_written_profiles(coulomb_run):
     """Recomputed from the two runs' profile CSVs: Δ = penalty − exact over
     the samples at least 0.1 L from a corner, max |Δ| over the largest
-    scale and RMS(Δ) over RMS(scale), the scale |g| or |t| on Γ."""
+    scale and RMS(Δ) over RMS(scale), the scale |g| (floored,
+    verification.agreement.gap_floor) or |t| on Γ."""
     record = _record(coulomb_run)
+    floor = {"g": gap_floor(load_scene("C-coulomb")), "t": 0.0}
     for pid, quantities in record["profiles"].items():
         pen, ex = _columns(coulomb_run / "fe", pid), _columns(coulomb_run / "fe" / "exact", pid)
         xy = np.column_stack([ex["x"], ex["y"]])
@@ -68,7 +71,7 @@ def test_the_shares_are_the_difference_of_the_written_profiles(coulomb_run):
         for q, got in quantities.items():
             diff = (pen[q] - ex[q])[keep]
             pair = {"g": ("gN", "gT"), "t": ("tN", "tT")}.get(q[0]) if pid == "C4" else None
-            scale = np.hypot(ex[pair[0]], ex[pair[1]])[keep] if pair else np.abs(ex[q][keep])
+            scale = np.hypot(np.hypot(ex[pair[0]], ex[pair[1]]), floor[q[0]])[keep] if pair else np.abs(ex[q][keep])
             assert got["kept"] == keep.sum() and got["samples"] == len(keep)
             assert got["worst"] == pytest.approx(np.abs(diff).max() / scale.max(), rel=tol.SAME_SUMS)
             assert got["rms"] == pytest.approx(np.sqrt(np.mean(diff ** 2) / np.mean(scale ** 2)), rel=tol.SAME_SUMS)

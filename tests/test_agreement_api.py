@@ -141,7 +141,7 @@ def test_an_exact_laws_closed_gap_is_measured_against_the_displacement():
     result = compare(exact, ["xfem:1"], COARSE_H)
     rows = {a.quantity: a for a in result.rows}
     floor = EXACT_GAP_FLOOR * Scales.of(exact).displacement
-    assert result.gap_floor == floor and f"sqrt(g² + {floor:.3g}²) m" in result.markdown()
+    assert result.gap_floor == floor and f"sqrt(g² + ({floor:.3g} m)²)" in result.markdown()
     assert max(rows["gN"].worst, rows["gT"].worst) <= max(rows["tN"].worst, rows["tT"].worst)
     for q in ("gN", "gT"):
         assert abs(rows[q].value - rows[q].reference) > abs(rows[q].reference)   # O(1) of the residue itself

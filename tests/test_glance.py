@@ -173,20 +173,33 @@ def test_study_varies_mu_and_the_increments(tmp_path):
 
 
 @pytest.mark.parametrize("scene, hint", [
-    ("C-coulomb", "with --param enforcement, study the stabilisation apart, on the scene made exact"),
+    ("C-coulomb", 'vary it where --param enforcement is exact, or on a scene with enforcement = "exact"'),
     ("A", 'its limit k → ∞ is type = "bonded"')])
 def test_study_refuses_a_stabilisation_of_springs(tmp_path, capsys, scene, hint):
-    """Nitsche's β belongs to an exact law only: varied with the penalty
-    enforcement (alone, or in a product with --param enforcement) the study
-    ends before any solve with one line naming the parameter, and leaves
-    no folder."""
+    """Nitsche's β belongs to an exact law only: varied on a law enforced
+    by its springs (its first point) the study ends before any solve with
+    one line naming the parameter, and leaves no folder."""
     out = tmp_path / "study"
-    args = ["study", scene, "--param", "enforcement", "--values", "penalty", "exact", "--param", "stabilisation",
-            "--values", "1", "10", "--method", "fe", "--h", "0.2", "-q", "--out", str(out)]
-    assert verification_main.main(args if scene == "C-coulomb" else args[:2] + args[7:]) == 2
+    args = ["study", scene, "--param", "stabilisation", "--values", "1", "10", "--method", "fe", "--h", "0.2", "-q",
+            "--out", str(out)]
+    assert verification_main.main(args) == 2
     err = capsys.readouterr().err
     assert err.startswith('error: --param stabilisation: applies to enforcement = "exact" only') and hint in err
     assert not out.exists()
+
+
+def test_study_sets_the_enforcement_before_the_stabilisation(tmp_path):
+    """In a product, whatever the order of the --param flags, β is set on
+    the law as enforced: every exact point runs with its β, and a penalty
+    point is a failed row naming why (the study goes on)."""
+    rows = _study(tmp_path, "C-coulomb", "--param", "stabilisation", "--values", "1", "10", "--param",
+                  "enforcement", "--values", "exact", "penalty")
+    exact = [r for r in rows if r["enforcement"] == "exact"]
+    assert [float(r["stabilisation"]) for r in exact] == [1, 10] and all(r["status"] != "failed" for r in exact)
+    assert exact[0]["max_tN"] != exact[1]["max_tN"]                          # β reached the law
+    penalty = [r for r in rows if r["enforcement"] == "penalty"]
+    assert len(penalty) == 2 and all(r["status"] == "failed" and "applies to enforcement" in r["message"]
+                                     for r in penalty)
 
 
 def test_study_plots_mark_failed_and_warned_points():

@@ -17,9 +17,12 @@ samples as a share of the exact scale's max there, and the **RMS share**,
 RMS(Δ)/RMS(scale) over the same samples; samples near singular points are
 left out (:func:`verification.agreement.default_exclusion`).  The scale
 is the exact quantity itself, except on Γ: a jump component (g_N, g_T) is
-measured against the exact jump's magnitude |g| = √(g_N² + g_T²) and a
+measured against the exact jump's magnitude |g| = √(g_N² + g_T²) floored
+as the agreement floors an exact law's gaps (√(|g|² + f²), f a tenth of
+the displacement scale: :func:`verification.agreement.gap_floor`), and a
 traction component against |t|, because the exact g_N of a closed contact
-is zero (to round-off) and a share of its own size would have no meaning.
+is zero (but for the enforcement's residue) and a share of its own size
+would have no meaning.
 The largest |Δ|, |exact| and scale are kept in the quantity's unit too.  The
 **status split** is the number of Γ's quadrature points open, sticking and
 slipping at the last increment, and the share of Γ's length (by
@@ -36,7 +39,7 @@ from contactcore.interface_path import InterfacePath
 from contactcore.laws import STATUS_NAMES
 
 from . import files
-from .agreement import Agreement, default_exclusion, kept_samples, percent, profile_agreements
+from .agreement import Agreement, default_exclusion, gap_floor, kept_samples, percent, profile_agreements
 
 #: How the exact run is named in tables and figures.
 EXACT = "exact"
@@ -77,11 +80,14 @@ def status_split(path: InterfacePath) -> dict:
 VECTORS = {"gN": ("gN", "gT"), "gT": ("gN", "gT"), "tN": ("tN", "tT"), "tT": ("tN", "tT")}
 
 
-def scales(exact: dict) -> dict:
+def scales(scene: Scene, exact: dict) -> dict:
     """``(profile id, quantity) -> per-sample |g| or |t|`` of the exact
     answer, for each Γ component on a profile that holds both of its
-    vector's components (module doc)."""
-    return {(pid, q): np.hypot(prof.columns[a], prof.columns[b])
+    vector's components, |g| floored as the agreement floors an exact law's
+    gaps (:func:`~verification.agreement.gap_floor` of ``scene``; module
+    doc)."""
+    floor = {"gN": gap_floor(scene), "gT": gap_floor(scene)}
+    return {(pid, q): np.hypot(np.hypot(prof.columns[a], prof.columns[b]), floor.get(q, 0.0))
             for pid, prof in exact.items() for q, (a, b) in VECTORS.items()
             if {q, a, b} <= set(prof.names)}
 
@@ -90,7 +96,7 @@ def differences(scene: Scene, label: str, penalty: dict, exact: dict) -> list[Ag
     """Every profile quantity of ``penalty`` against ``exact`` (id ->
     ProfileData), as :class:`~verification.agreement.Agreement` rows of
     ``label`` (module doc)."""
-    return profile_agreements(scene, label, penalty, exact, default_exclusion(scene), scales(exact))
+    return profile_agreements(scene, label, penalty, exact, default_exclusion(scene), scales(scene, exact))
 
 
 def largest(scene: Scene, exact: dict, row: Agreement, vector_scales: dict) -> tuple[float, float]:
@@ -111,7 +117,7 @@ def record(scene: Scene, rows: list[Agreement], exact: dict, penalty_path: Inter
     |Δ|, |exact| and scale (in the quantity's unit); the status
     split of each run and the distance from singular points inside which
     samples were left out."""
-    by_profile, vector_scales = {}, scales(exact)
+    by_profile, vector_scales = {}, scales(scene, exact)
     for a in rows:
         own, scale = largest(scene, exact, a, vector_scales)
         by_profile.setdefault(a.profile, {})[a.quantity] = {
@@ -132,7 +138,8 @@ def section(scene: Scene, law_name: str, records: dict[str, dict]) -> str:
              "the worst sample is max |Δ| as a share of the largest exact scale, the RMS share "
              f"RMS(Δ) / RMS(scale), over the samples at least {exclude:.3g} from the scene's singular points. "
              "The scale is the exact quantity itself, except on Γ: g_N and g_T are measured against the exact "
-             "jump's magnitude |g|, t_N and t_T against |t| (the exact g_N of a closed contact is zero). "
+             f"jump's magnitude |g| floored as √(|g|² + ({gap_floor(scene):.3g} m)²), a tenth of the "
+             "displacement scale, t_N and t_T against |t| (the exact g_N of a closed contact is zero). "
              "The last three columns are in the quantity's unit.\n",
              "| method | profile | quantity | worst sample | at s (x, y) | RMS | max \\|Δ\\| | max \\|exact\\| "
              "| max scale |",

@@ -55,14 +55,25 @@ EXCLUDE_FRACTION = 0.1
 EXACT_GAP_FLOOR = 0.1
 
 
+def gap_floor(scene: Scene) -> float:
+    """The floor of an exactly enforced law's gaps on ``scene``:
+    :data:`EXACT_GAP_FLOOR` times the displacement scale of its loads (m)."""
+    return EXACT_GAP_FLOOR * Scales.of(scene).displacement
+
+
+def floors(scene: Scene) -> dict[str, float]:
+    """Quantity -> the floor its values are measured against on ``scene``
+    (:func:`measured_against`): the gaps of an exactly enforced law; none
+    otherwise."""
+    return dict.fromkeys(("gN", "gT"), gap_floor(scene)) if is_exact(scene.law) else {}
+
+
 def measured_against(scene: Scene, quantity: str, values: np.ndarray) -> np.ndarray:
     """The per-sample values a profile quantity is measured against: its
-    own ``values``, but an exactly enforced law's gap ``sqrt(g² + (f U)²)``,
-    ``f`` = :data:`EXACT_GAP_FLOOR` (see there)."""
-    values = np.asarray(values, float)
-    if quantity in ("gN", "gT") and is_exact(scene.law):
-        return np.hypot(values, EXACT_GAP_FLOOR * Scales.of(scene).displacement)
-    return values
+    own ``values``, but an exactly enforced law's gap ``sqrt(g² + f²)``,
+    ``f`` = :func:`gap_floor` (see :data:`EXACT_GAP_FLOOR`)."""
+    floor = floors(scene).get(quantity)
+    return np.hypot(values, floor) if floor else np.asarray(values, float)
 
 
 def default_exclusion(scene: Scene) -> float:
@@ -187,7 +198,7 @@ def profile_agreements(scene: Scene, label: str, got: dict, ref: dict, exclude: 
     for pid, prof in got.items():
         for q in prof.names[3:]:
             companion = COMPANIONS.get((pid, q))
-            scale = ref[companion[0]].columns[companion[1]] if companion else None
+            scale = measured_against(scene, companion[1], ref[companion[0]].columns[companion[1]]) if companion else None
             scale = (scales or {}).get((pid, q), scale)
             kind = "zero" if companion else quantity_class(scene, profiles[pid], q)
             row = _compared(scene, label, pid, q, prof, ref[pid], exclude, scale)
@@ -223,7 +234,7 @@ class AgreementTable:
     def markdown(self) -> str:
         """The table in Markdown, worst sample and RMS in % of the reference's scale."""
         floor = (f" Γ's gaps (an exactly enforced law: zero where Γ is closed and sticking) are measured "
-                 f"against sqrt(g² + {self.gap_floor:.3g}²) m, a tenth of the displacement scale."
+                 f"against sqrt(g² + ({self.gap_floor:.3g} m)²), {EXACT_GAP_FLOOR:g} of the displacement scale."
                  if self.gap_floor else "")
         lines = [f"Against {self.reference}; {self.excluded()}.{floor}", "",
                  "| method | profile | quantity | class | worst sample | at s (x, y) | RMS |",
@@ -240,8 +251,7 @@ def table(scene: Scene, runs: dict[str, dict], reference: str, exclude: float | 
     rows = [row for label, got in runs.items() if label != reference
             for row in profile_agreements(scene, label, got, runs[reference], exclude)]
     regions = tuple((name, tuple(map(tuple, pts.tolist()))) for name, pts in singular_regions(scene))
-    floor = EXACT_GAP_FLOOR * Scales.of(scene).displacement if is_exact(scene.law) else 0.0
-    return AgreementTable(scene.name, reference, exclude, regions, tuple(rows), floor)
+    return AgreementTable(scene.name, reference, exclude, regions, tuple(rows), floors(scene).get("gN", 0.0))
 
 
 def variant(spec) -> tuple[str, int]:

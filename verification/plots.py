@@ -106,16 +106,19 @@ def legend_outside(ax, **kw) -> None:
     ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0, fontsize=8, **kw)
 
 
-def plot_profile(path: Path, title: str, runs: dict[str, ProfileData], reference: str | None = None) -> Path:
+def plot_profile(path: Path, title: str, runs: dict[str, ProfileData], reference: str | None = None,
+                 floors: dict[str, float] | None = None) -> Path:
     """Write :func:`profile_figure` as a PNG."""
-    return save(profile_figure(title, runs, reference), path)
+    return save(profile_figure(title, runs, reference, floors), path)
 
 
-def profile_figure(title: str, runs: dict[str, ProfileData], reference: str | None = None):
+def profile_figure(title: str, runs: dict[str, ProfileData], reference: str | None = None,
+                   floors: dict[str, float] | None = None):
     """One figure for a profile: per quantity, the methods overlaid and,
     under it, each method minus the ``reference`` curve (default
     :func:`reference_label`), relative to the largest |value| of the
-    reference (see module doc)."""
+    reference (see module doc), floored as ``floors`` say (quantity ->
+    floor: an exact law's gaps, :func:`verification.agreement.floors`)."""
     first = next(iter(runs.values()))
     quantities = [n for n in first.names if n not in ("s", "x", "y")]
     ref = reference if reference in runs else reference_label(list(runs))
@@ -135,7 +138,7 @@ def profile_figure(title: str, runs: dict[str, ProfileData], reference: str | No
         if k == 0:
             legend_outside(ax)
         if rows == 2:
-            _difference_panel(axes[rows * k + 1, 0], q, runs, ref)
+            _difference_panel(axes[rows * k + 1, 0], q, runs, ref, (floors or {}).get(q, 0.0))
     axes[-1, 0].set_xlabel(XLABEL.get(first.parameter, "s"))
     axes[0, 0].set_title(f"{first.id}: {title}", fontsize=10, wrap=True)
     _no_offsets(fig)
@@ -146,12 +149,13 @@ def profile_figure(title: str, runs: dict[str, ProfileData], reference: str | No
 PERCENT = 100.0
 
 
-def _difference_panel(ax, q: str, runs: dict[str, ProfileData], ref: str) -> None:
+def _difference_panel(ax, q: str, runs: dict[str, ProfileData], ref: str, floor: float = 0.0) -> None:
     """Each curve but the reference minus the reference, at its own samples,
     relative to the reference's largest |value| on the profile (a pointwise
-    ratio would blow up where the reference crosses zero), in percent."""
+    ratio would blow up where the reference crosses zero), or to
+    ``sqrt(max|value|² + floor²)``, in percent."""
     s_ref, v_ref = runs[ref].columns["s"], runs[ref].columns[q]
-    size = float(np.nanmax(np.abs(v_ref))) or 1.0
+    size = float(np.hypot(np.nanmax(np.abs(v_ref)), floor)) or 1.0
     for i, (label, prof) in enumerate(runs.items()):
         if label != ref:
             s = prof.columns["s"]
@@ -160,7 +164,8 @@ def _difference_panel(ax, q: str, runs: dict[str, ProfileData], ref: str) -> Non
     ax.grid(alpha=0.3)
     ax.set_ylabel(f"Δ{UNITS.get(q, q).split(' ')[0]} / max|ref| (%)")
     keep_span(ax, PERCENT)
-    ax.set_title(f"each minus {ref}, relative to its largest |{q}|", fontsize=8, loc="right")
+    floored = f", floored at {floor:.3g}" if floor else ""
+    ax.set_title(f"each minus {ref}, relative to its largest |{q}|{floored}", fontsize=8, loc="right")
 
 
 def _no_offsets(fig) -> None:

@@ -338,7 +338,8 @@ def _against_exact(out: Path, scene: Scene, twin: Scene, name: str, result, h, d
     titles = {p.id: p.title for p in scene.profiles}
     for pid in penalty if draw else ():
         plots.plot_profile(out / "plots" / f"exact_{name}_{pid}.png", f"{titles[pid]}; {label}, penalty against exact",
-                           {label: penalty[pid], exact_gap.EXACT: exact_profiles[pid]}, exact_gap.EXACT)
+                           {label: penalty[pid], exact_gap.EXACT: exact_profiles[pid]}, exact_gap.EXACT,
+                           agreement.floors(twin))
     return summary
 
 
@@ -349,7 +350,7 @@ def _write_summary(out: Path, scene: Scene, summaries: list[dict], profiles: dic
     each method's penalty against exact (label -> record), if asked."""
     titles = {p.id: p.title for p in scene.profiles}
     for pid, runs in profiles.items() if draw else ():
-        plots.plot_profile(out / "plots" / f"{pid}.png", titles[pid], runs, ref)
+        plots.plot_profile(out / "plots" / f"{pid}.png", titles[pid], runs, ref, agreement.floors(scene))
     text = (f"# Scene {scene.name}: {scene.title}\n\n" + _summary_table(summaries)
             + agreement_section(scene, profiles, ref))
     if len(estimated) > 1:

@@ -36,7 +36,7 @@ import numpy as np
 
 from contactcore import CircleInterface, ContactError, LineInterface, SceneError, load_scene, sample_profile
 from contactcore.discretisation import Reuse
-from contactcore.exact import EXACT_LAWS
+from contactcore.exact import EXACT_LAWS, is_exact
 from contactcore.scene import InterfaceProfile
 
 from . import files, methods, pool
@@ -57,8 +57,8 @@ def _material(scene, body: str, key: str, value: float):
 
 
 def _law(scene, key: str, value: float):
-    if key == "stabilisation" and getattr(scene.law, "enforcement", "penalty") != "exact":
-        how = ("with --param enforcement, study the stabilisation apart, on the scene made exact"
+    if key == "stabilisation" and not is_exact(scene.law):
+        how = ("vary it where --param enforcement is exact, or on a scene with enforcement = \"exact\""
                if scene.law.name in EXACT_LAWS else 'its limit k → ∞ is type = "bonded"')
         raise SceneError("--param stabilisation", f"applies to enforcement = \"exact\" only, and the scene's "
                          f"'{scene.law.name}' law is enforced by its springs here ({how})")
@@ -150,11 +150,13 @@ def _check(param: str) -> None:
 
 def scene_at(scene, point: dict):
     """``scene`` with each parameter of ``point`` (name -> value) set, in
-    order, sampled on Γ, validated.  Each step sees the Γ profile already:
-    the scene's own profiles may not fit a moved Γ (an angle first, then
-    another parameter, failed on scene A's profiles along y = 0.5)."""
+    order but the enforcement first (the law's μ and β are then set on the
+    law as enforced), sampled on Γ, validated.  Each step sees the Γ
+    profile already: the scene's own profiles may not fit a moved Γ (an
+    angle first, then another parameter, failed on scene A's profiles
+    along y = 0.5)."""
     changes = {}
-    for param, value in point.items():
+    for param, value in sorted(point.items(), key=lambda item: item[0] != "enforcement"):
         _check(param)
         change = PARAMETERS[param][1]
         if change:
