@@ -131,11 +131,17 @@ def test_a_run_without_the_flag_solves_no_exact_answer(tmp_path, monkeypatch):
 @pytest.mark.parametrize("scene, problem", [
     ("C", "'linear' law is enforced by its springs only"),
     ("exact", "'coulomb' law is already enforced exactly"),
+    ("bonded", "'bonded' law is already enforced exactly, so there is no penalty answer to compare with it "
+               "(type = \"linear\", with kN and kT, is its penalty counterpart)"),
 ])
 def test_a_scene_with_nothing_to_compare_is_refused_in_one_line(tmp_path, capsys, scene, problem):
     if scene == "exact":
         scene = tmp_path / "C-coulomb-exact.toml"
         scene.write_text(scene_text("C-coulomb").replace('type = "coulomb"', 'type = "coulomb"\nenforcement = "exact"'))
+    if scene == "bonded":
+        scene = tmp_path / "C-bonded.toml"
+        scene.write_text(scene_text("C").replace('type = "linear"', 'type = "bonded"').replace("kN = 1e10\n", "")
+                         .replace("kT = 1e8\n", ""))
     out = tmp_path / "out"
     assert main(["run", str(scene), "--method", "fe", "--h", str(H), "--against-exact", "--out", str(out)]) == 2
     err = capsys.readouterr().err.strip().splitlines()

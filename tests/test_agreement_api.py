@@ -89,6 +89,8 @@ def test_a_bad_method_is_named(spec, message):
 def test_an_option_no_method_takes_is_refused():
     with pytest.raises(ContactError, match="--dmax"):
         compare("A", ["xfem"], COARSE_H, dmax=3.0, reference="fe:1")
+    with pytest.raises(ContactError, match=r"^stabilisation: means nothing for fe, xfem \(no method takes it\)$"):
+        compare("A", ["xfem"], COARSE_H, stabilisation=10.0, reference="fe:1")   # a scene key, not an option
 
 
 def test_the_compilers_info_records_are_dropped_and_the_root_level_restored(capsys):
@@ -145,6 +147,8 @@ def test_an_exact_laws_closed_gap_is_measured_against_the_displacement():
     assert max(rows["gN"].worst, rows["gT"].worst) <= max(rows["tN"].worst, rows["tT"].worst)
     for q in ("gN", "gT"):
         assert abs(rows[q].value - rows[q].reference) > abs(rows[q].reference)   # O(1) of the residue itself
+        assert f"of the reference's largest sqrt({q}² + ({floor:.3g} m)²)" in rows[q].describe()
+    assert rows["tN"].floor == 0.0 and "of the reference's largest |tN|" in rows["tN"].describe()
     gaps = np.array([1e-9, -2e-9])
     assert np.array_equal(measured_against(wedge, "gN", gaps), gaps)
     assert np.array_equal(measured_against(exact, "tN", gaps), gaps)

@@ -135,6 +135,10 @@ def test_run_estimate_writes_the_errors(tmp_path):
                 record = estimate["A1"][q]
                 assert record["max"] == pytest.approx(max(columns[f"{q}_err"]))
                 assert record["order"] == est.theoretical_order(q, 1, name)
+                # summary.md's figure: over the samples at least 0.1 L from Γ's ends (A1 lies on Γ)
+                x, err = np.asarray(columns["x"]), np.asarray(columns[f"{q}_err"])
+                keep = np.minimum(x, 1.0 - x) >= 0.1 * np.sqrt(2.0)
+                assert record["kept_rms"] == pytest.approx(np.sqrt(np.mean(err[keep] ** 2)), rel=tol.SAME_SUMS)
     assert json.loads((out / "run.json").read_text())["estimate"] == 2
     alone = tmp_path / "reference_alone"
     run("A", ["fe"], alone, h=0.1, degree=2, draw=False)

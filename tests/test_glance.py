@@ -15,7 +15,7 @@ from pathlib import Path
 import pytest
 import tolerances as tol
 
-from contactcore import SolverError, health, load_scene, sample_profiles, scene_from_dict
+from contactcore import SceneError, SolverError, health, load_scene, make_law, sample_profiles, scene_from_dict
 from contactcore.laws import CoulombLaw
 from verification import __main__ as verification_main
 from verification import files, methods, plots, study
@@ -186,6 +186,27 @@ def test_study_refuses_a_stabilisation_of_springs(tmp_path, capsys, scene, hint)
     err = capsys.readouterr().err
     assert err.startswith('error: --param stabilisation: applies to enforcement = "exact" only') and hint in err
     assert not out.exists()
+
+
+@pytest.mark.parametrize("scene, values, message", [
+    ("C-coulomb", ["exakt", "exact"], "--param enforcement: must be penalty or exact (got 'exakt')"),
+    ("C", ["exact", "penalty"], "--param enforcement: interface.law.enforcement: the 'linear' law is enforced by "
+                                "its springs only"),
+])
+def test_study_refuses_an_enforcement_it_cannot_give(tmp_path, capsys, scene, values, message):
+    """An enforcement the scene's law cannot take, on the study's first
+    point: one line naming the parameter once, exit 2, no folder."""
+    out = tmp_path / "study"
+    assert verification_main.main(["study", scene, "--param", "enforcement", "--values", *values, "--method", "fe",
+                                   "--h", "0.2", "-q", "--out", str(out)]) == 2
+    assert capsys.readouterr().err.startswith(f"error: {message}") and not out.exists()
+
+
+def test_an_exact_law_has_no_penalty_to_fall_back_on():
+    """``bonded`` exists only exactly: its penalty counterpart is named."""
+    scene = load_scene("A").with_changes(law=make_law({"type": "bonded"}))
+    with pytest.raises(SceneError, match=r'no springs to fall back on \(type = "linear" with kN, kT is its penalty'):
+        study.scene_at(scene, {"enforcement": "penalty"})
 
 
 def test_study_sets_the_enforcement_before_the_stabilisation(tmp_path):

@@ -158,3 +158,24 @@ def test_a_method_that_does_not_spread_over_the_ranks_is_refused_under_mpirun(mo
     methods.check_launch(["fe", "xfem"], distributed=False)
     with pytest.raises(ContactError, match="^mpirun: xfem does not spread over mpirun's ranks"):
         methods.check_launch(["fe", "xfem"], distributed=True)
+
+
+def test_a_failed_solve_among_several_methods_is_named():
+    """Where several methods run, a failed solve names its method first
+    (``run --method all``: which one failed is the first thing to know),
+    keeping its details; alone, or a refused option (the input's fault),
+    it is raised as it is."""
+    from contactcore.errors import SolverError, SolverOptionError
+    from verification.run import _named
+
+    def fails(exc):
+        exc.details = "history"
+        raise exc
+
+    with pytest.raises(SolverError, match=r"^efgm: scene wedge: increment 1 of 10 failed$") as named:
+        _named(["fe", "xfem", "efgm"], "efgm", fails, SolverError("scene wedge: increment 1 of 10 failed"))
+    assert named.value.details == "history"
+    with pytest.raises(SolverError, match=r"^scene wedge"):
+        _named(["efgm"], "efgm", fails, SolverError("scene wedge: increment 1 of 10 failed"))
+    with pytest.raises(SolverOptionError, match=r"^petsc option"):
+        _named(["fe", "efgm"], "fe", fails, SolverOptionError("petsc option x: unknown"))

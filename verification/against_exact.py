@@ -59,8 +59,10 @@ def exact_twin(scene: Scene, field: str = "--against-exact") -> Scene:
     enforced exactly, or one that has no exact enforcement."""
     law = scene.law
     if law.enforcement == EXACT:
+        how = ('type = "linear", with kN and kT, is its penalty counterpart' if law.name in BONDED
+               else "enforce it by its springs, kN and kT")
         raise ContactError(f"{field}: scene {scene.name}'s '{law.name}' law is already enforced exactly, so there "
-                           "is no penalty answer to compare with it (enforce it by its springs, kN and kT)")
+                           f"is no penalty answer to compare with it ({how})")
     if law.name not in EXACT_LAWS:
         raise ContactError(f"{field}: scene {scene.name}'s '{law.name}' law is enforced by its springs only, so "
                            f"there is no exact answer to compare with (exact enforcement: "

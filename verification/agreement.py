@@ -159,12 +159,15 @@ class Agreement:
     reference: float
     kept: int
     samples: int
+    floor: float = 0.0  # the floor of the scale (an exact law's gap, measured_against), 0 if none
 
     def describe(self, against: str = "the reference") -> str:
         """One line naming the profile, the quantity, the worst sample and its values."""
+        scale = (f"sqrt({self.quantity}² + ({self.floor:.3g} m)²) (an exact law's gap, floored)" if self.floor
+                 else f"|{self.quantity}|")
         return (f"{self.method} against {against}: {self.profile} {self.quantity} at s = {self.s:.4g} "
                 f"(x = {self.x:.4g}, y = {self.y:.4g}): {self.value:.4g} against {self.reference:.4g}, a difference "
-                f"of {percent(self.worst)} of the reference's largest |{self.quantity}| (RMS {percent(self.rms)})")
+                f"of {percent(self.worst)} of the reference's largest {scale} (RMS {percent(self.rms)})")
 
 
 def _compared(scene: Scene, label: str, pid: str, q: str, got: ProfileData, ref: ProfileData,
@@ -184,7 +187,7 @@ def _compared(scene: Scene, label: str, pid: str, q: str, got: ProfileData, ref:
                                                       else np.asarray(scale)[keep]),
                      worst, float(ref.columns["s"][where]), float(ref.columns["x"][where]),
                      float(ref.columns["y"][where]), float(got.columns[q][where]), float(ref.columns[q][where]),
-                     int(keep.sum()), len(keep))
+                     int(keep.sum()), len(keep), floors(scene).get(q, 0.0) if scale is None else 0.0)
 
 
 def profile_agreements(scene: Scene, label: str, got: dict, ref: dict, exclude: float,

@@ -63,8 +63,8 @@ def check_options(names: list[str], **given) -> None:
     for option, value in given.items():
         if value is not None and not any(takes(n, option) for n in names):
             takers = [m for m in METHODS if takes(m, option)]
-            raise ContactError(f"{FLAGS[option]}: means nothing for {', '.join(names)} "
-                               f"(only {', '.join(takers)} take it)")
+            raise ContactError(f"{FLAGS.get(option, option)}: means nothing for {', '.join(names)} "
+                               + (f"(only {', '.join(takers)} take it)" if takers else "(no method takes it)"))
 
 
 def check_launch(names: list[str], distributed: bool) -> None:

@@ -34,6 +34,7 @@ from pathlib import Path
 import numpy as np
 
 from contactcore import ContactError, Scene, load_scene, sample_profiles, scene_text
+from contactcore.errors import SolverError, SolverOptionError
 from contactcore import estimate as estimates
 from contactcore import tolerances as tol
 from contactcore.budget import check_budget
@@ -41,7 +42,7 @@ from contactcore.scene import check_resolution, smallest_dimension
 
 from . import against_exact as exact_gap
 from . import agreement, files, interface, methods, plots, pool
-from .agreement import default_exclusion, measured_against, within_estimates
+from .agreement import default_exclusion, kept_samples, measured_against, within_estimates
 
 log = logging.getLogger("verification")
 
@@ -61,7 +62,7 @@ def read_nodes(path) -> np.ndarray:
 
 def _summary_table(summaries: list[dict]) -> str:
     estimated = any("estimate" in s for s in summaries)
-    extra = " estimated error (worst RMS) | energy (ZZ, relative) |" if estimated else ""
+    extra = " estimated error (worst relative RMS, away from singular points) | energy (ZZ, relative) |" if estimated else ""
     lines = ["| method | degree | DOFs | mesh (s) | assembly (s) | solve (s) | total (s) |" + extra
              + " residual | condition |", "|---|---|---|---|---|---|---|" + "---|---|" * estimated + "---|---|"]
     for s in summaries:
@@ -93,14 +94,15 @@ def agreement_section(scene: Scene, profiles: dict, reference: str | None = None
 
 def _estimate_cells(summary: dict) -> str:
     """The estimated-error cells of a method's row: the profile quantity
-    with the largest RMS error relative to its RMS value, and the ZZ
-    energy estimate relative to the energy norm."""
+    with the largest RMS error relative to its RMS value, both over the
+    samples away from singular points (as the agreement tables measure),
+    and the ZZ energy estimate relative to the energy norm."""
     est = summary.get("estimate")
     if est is None:
         return " — | — |"
-    where, worst = max(((f"{pid}:{q}", e["rms"] / e["scale"]) for pid, qs in est.items()
+    where, worst = max(((f"{pid}:{q}", e["kept_rms"] / e["kept_scale"]) for pid, qs in est.items()
                         if isinstance(qs, dict) and pid not in ("energy", "status")
-                        for q, e in qs.items() if e.get("scale")), key=lambda r: r[1], default=("—", 0.0))
+                        for q, e in qs.items() if e.get("kept_scale")), key=lambda r: r[1], default=("—", 0.0))
     energy = est["energy"]["relative"] if est.get("energy") else float("nan")
     return f" {worst:.2e} ({where}) | {energy:.2e} |"
 
@@ -116,13 +118,19 @@ def _solve_estimated(solve, scene, h, levels: int | None, **options):
 
 
 def _estimate_record(scene, est, profiles: list) -> dict:
-    """summary.json's ``"estimate"``: each quantity's max, RMS and order with
-    ``scale`` (the RMS of the quantity itself, an exact law's gaps floored
-    as the agreement measures them: what summary.md relates to)."""
+    """summary.json's ``"estimate"``: each quantity's max, RMS and order over
+    every sample with ``scale`` (the RMS of the quantity itself, an exact
+    law's gaps floored as the agreement floors them), and ``kept_rms``,
+    ``kept_scale`` the same over the samples away from singular points
+    (:func:`~verification.agreement.kept_samples`): what summary.md relates."""
     record = est.summary()
     for prof in profiles:
+        keep = kept_samples(scene, prof, default_exclusion(scene))
         for q in record.get(prof.id, {}):
-            record[prof.id][q]["scale"] = float(np.sqrt(np.mean(measured_against(scene, q, prof.columns[q]) ** 2)))
+            scale = measured_against(scene, q, prof.columns[q])
+            error = est.profiles[prof.id][q].error
+            record[prof.id][q].update(scale=estimates.rms(scale), kept_rms=estimates.rms(error[keep]),
+                                      kept_scale=estimates.rms(scale[keep]))
     return record
 
 
@@ -209,7 +217,7 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
     profiles, summaries, paths, estimated, gaps = {}, [], {}, {}, {}
     for name in chosen:
         options = methods.options_for(name, nodes=nodes, **given)
-        result, est = _solve(scene, name, h, degree, paper, estimate, options)
+        result, est = _named(chosen, name, _solve, scene, name, h, degree, paper, estimate, options)
         exact_row = (_against_exact(out, scene, twin, name, result, finest, degree, paper, options, draw, gaps)
                      if twin is not None else None)
         summaries.append(_write_method(out, scene, name, result, est, fields, draw, profiles, paths, estimated, gaps))
@@ -263,6 +271,22 @@ def _estimated_h(scene: Scene, h) -> float:
     if h is None:
         raise ContactError(f"--estimate: scene {scene.name} gives no default h; give --h")
     return h
+
+
+def _named(chosen: list[str], name: str, solve, *args):
+    """``solve(*args)``; where several methods are ``chosen``, a solve that
+    fails (not a refused option, the input's fault) names the method
+    ``name`` first: which of them failed is the first thing to know."""
+    try:
+        return solve(*args)
+    except SolverOptionError:
+        raise
+    except SolverError as exc:
+        if len(chosen) < 2:
+            raise
+        named = SolverError(f"{name}: {exc}")
+        named.details = getattr(exc, "details", "")
+        raise named from None
 
 
 def _solve(scene: Scene, name: str, h, degree: int, paper: bool, estimate, options: dict, shown: str | None = None):

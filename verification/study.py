@@ -71,12 +71,16 @@ def _enforcement(scene, value):
     """The scene's law enforced ``value``-ly: ``exact`` drops its springs
     (:mod:`contactcore.exact`); ``penalty`` needs the scene's own springs."""
     law = scene.law
-    if value == getattr(law, "enforcement", "penalty"):
+    if value not in ("penalty", "exact"):
+        raise SceneError("--param enforcement", f"must be penalty or exact (got {value!r})")
+    if value == law.enforcement:
         return {"law": law}
-    if value != "exact":
-        raise SceneError("--param enforcement", f"must be penalty or exact (got {value!r}); the scene's "
-                         f"'{law.name}' law is enforced exactly and has no springs to fall back on")
-    return {"law": exact_law(law, "--param enforcement")}
+    if value == "penalty":
+        how = ('type = "linear" with kN, kT is its penalty counterpart' if law.name not in EXACT_LAWS
+               or law.name == "bonded" else "give the scene's law kN, kT and enforce it by them")
+        raise SceneError("--param enforcement", f"penalty: the scene's '{law.name}' law is enforced exactly and "
+                         f"has no springs to fall back on ({how})")
+    return {"law": exact_law(law, "--param enforcement: interface.law")}
 
 
 def _radius(scene, value: float):
