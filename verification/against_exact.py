@@ -39,7 +39,7 @@ from contactcore.interface_path import InterfacePath
 from contactcore.laws import STATUS_NAMES
 
 from . import files
-from .agreement import Agreement, default_exclusion, gap_floor, kept_samples, percent, profile_agreements
+from .agreement import Agreement, default_exclusion, gap_floor, gap_floors, kept_samples, percent, profile_agreements
 
 #: How the exact run is named in tables and figures.
 EXACT = "exact"
@@ -53,16 +53,22 @@ def exact_law(law, field: str):
     return make_law({"type": law.name, "enforcement": EXACT, **params}, field)
 
 
+def penalty_counterpart(law) -> str:
+    """How a law enforced exactly gets a penalty answer, in words:
+    ``bonded`` through the ``linear`` law's springs, the others through
+    their own."""
+    return ('type = "linear", with kN and kT, is its penalty counterpart' if law.name in BONDED
+            else "enforce it by its springs, kN and kT")
+
+
 def exact_twin(scene: Scene, field: str = "--against-exact") -> Scene:
     """``scene`` with its penalty law enforced exactly; a ContactError
     naming ``field`` when there is nothing to compare: a law already
     enforced exactly, or one that has no exact enforcement."""
     law = scene.law
     if law.enforcement == EXACT:
-        how = ('type = "linear", with kN and kT, is its penalty counterpart' if law.name in BONDED
-               else "enforce it by its springs, kN and kT")
         raise ContactError(f"{field}: scene {scene.name}'s '{law.name}' law is already enforced exactly, so there "
-                           f"is no penalty answer to compare with it ({how})")
+                           f"is no penalty answer to compare with it ({penalty_counterpart(law)})")
     if law.name not in EXACT_LAWS:
         raise ContactError(f"{field}: scene {scene.name}'s '{law.name}' law is enforced by its springs only, so "
                            f"there is no exact answer to compare with (exact enforcement: "
@@ -88,7 +94,7 @@ def scales(scene: Scene, exact: dict) -> dict:
     vector's components, |g| floored as the agreement floors an exact law's
     gaps (:func:`~verification.agreement.gap_floor` of ``scene``; module
     doc)."""
-    floor = {"gN": gap_floor(scene), "gT": gap_floor(scene)}
+    floor = gap_floors(scene)
     return {(pid, q): np.hypot(np.hypot(prof.columns[a], prof.columns[b]), floor.get(q, 0.0))
             for pid, prof in exact.items() for q, (a, b) in VECTORS.items()
             if {q, a, b} <= set(prof.names)}

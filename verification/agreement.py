@@ -61,11 +61,18 @@ def gap_floor(scene: Scene) -> float:
     return EXACT_GAP_FLOOR * Scales.of(scene).displacement
 
 
+def gap_floors(scene: Scene) -> dict[str, float]:
+    """``{"gN": f, "gT": f}``, ``f`` = :func:`gap_floor` of ``scene``: the
+    floors of its law's gaps enforced exactly (``run --against-exact``
+    measures a penalty run against that)."""
+    return dict.fromkeys(("gN", "gT"), gap_floor(scene))
+
+
 def floors(scene: Scene) -> dict[str, float]:
     """Quantity -> the floor its values are measured against on ``scene``
     (:func:`measured_against`): the gaps of an exactly enforced law; none
     otherwise."""
-    return dict.fromkeys(("gN", "gT"), gap_floor(scene)) if is_exact(scene.law) else {}
+    return gap_floors(scene) if is_exact(scene.law) else {}
 
 
 def measured_against(scene: Scene, quantity: str, values: np.ndarray) -> np.ndarray:

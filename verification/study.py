@@ -36,11 +36,12 @@ import numpy as np
 
 from contactcore import CircleInterface, ContactError, LineInterface, SceneError, load_scene, sample_profile
 from contactcore.discretisation import Reuse
+from contactcore.enforcement import ENFORCEMENTS
 from contactcore.exact import EXACT_LAWS, is_exact
 from contactcore.scene import InterfaceProfile
 
 from . import files, methods, pool
-from .against_exact import exact_law
+from .against_exact import exact_law, penalty_counterpart
 from .outcomes import attempt, health
 
 log = logging.getLogger("verification")
@@ -71,15 +72,13 @@ def _enforcement(scene, value):
     """The scene's law enforced ``value``-ly: ``exact`` drops its springs
     (:mod:`contactcore.exact`); ``penalty`` needs the scene's own springs."""
     law = scene.law
-    if value not in ("penalty", "exact"):
-        raise SceneError("--param enforcement", f"must be penalty or exact (got {value!r})")
+    if value not in ENFORCEMENTS:
+        raise SceneError("--param enforcement", f"must be {' or '.join(ENFORCEMENTS)} (got {value!r})")
     if value == law.enforcement:
         return {"law": law}
     if value == "penalty":
-        how = ('type = "linear" with kN, kT is its penalty counterpart' if law.name not in EXACT_LAWS
-               or law.name == "bonded" else "give the scene's law kN, kT and enforce it by them")
         raise SceneError("--param enforcement", f"penalty: the scene's '{law.name}' law is enforced exactly and "
-                         f"has no springs to fall back on ({how})")
+                         f"has no springs to fall back on ({penalty_counterpart(law)})")
     return {"law": exact_law(law, "--param enforcement: interface.law")}
 
 
