@@ -54,7 +54,10 @@ class PatchRecovery:
         self.incidence = sp.csr_matrix((np.ones(keys.size), (np.repeat(np.arange(len(keys)), keys.shape[1]),
                                                              inverse.ravel())), shape=(len(keys), len(nodes)))
         self.sample, self.centroids, self.areas, self.sigma = sample, centroids, areas, sigma
-        self.rings, self._fits = rings, {}
+        self.rings = rings
+        self._fitted = np.zeros(len(keys), bool)
+        self._origin, self._length = np.zeros((len(keys), 2)), np.ones(len(keys))
+        self._coef = np.full((len(keys), 6, 3), np.nan)
 
     @classmethod
     def gather(cls, ranks, keys, sample, centroids, areas, sigma) -> tuple["PatchRecovery", np.ndarray]:
@@ -80,18 +83,17 @@ class PatchRecovery:
     def at(self, cells: np.ndarray, points: np.ndarray) -> np.ndarray:
         """Voigt σ* (P, 3) at ``points`` of the cells (rows) ``cells``; NaN
         where the patch fits no line (the caller reads the cell's own field)."""
-        todo = np.setdiff1d(np.unique(cells), np.fromiter(self._fits, dtype=np.int64, count=len(self._fits)))
+        todo = np.unique(cells[~self._fitted[cells]])
         for start in range(0, len(todo), FIT_BATCH):
-            self._fits.update(self._fit(todo[start:start + FIT_BATCH]))
-        origin, length, coef = (np.array([self._fits[c][k] for c in cells]).reshape(len(cells), *shape)
-                                for k, shape in ((0, (2,)), (1, ()), (2, (6, 3))))
-        return np.einsum("pi,pic->pc", quadratic_basis((points - origin) / length[:, None], 6), coef)
+            self._fit(todo[start:start + FIT_BATCH])
+        d = (points - self._origin[cells]) / self._length[cells, None]
+        return np.einsum("pi,pic->pc", quadratic_basis(d, 6), self._coef[cells])
 
-    def _fit(self, targets: np.ndarray) -> dict:
-        """``{cell: (origin, length, coefficients (6, 3))}`` for ``targets``
-        (NaN where the patch fits no line), all at once: each patch's samples
-        padded to the longest patch with zero weight, and solved by SVD
-        (batched)."""
+    def _fit(self, targets: np.ndarray) -> None:
+        """Fit the patches of the cells ``targets`` (their origin, length and
+        coefficients (6, 3); NaN where the patch fits no line), all at once:
+        each patch's samples padded to the longest patch with zero weight,
+        and solved by SVD (batched)."""
         index, centroids, areas, sig = self.sample, self.centroids, self.areas, self.sigma
         sub = self.patches(targets)
         rows = np.repeat(np.arange(len(targets)), np.diff(sub.indptr))
@@ -101,7 +103,9 @@ class PatchRecovery:
         count = np.bincount(rows, minlength=len(targets))
         pos = np.arange(len(rows)) - np.repeat(np.cumsum(count) - count, count)
         largest = np.zeros(len(targets))
-        np.maximum.at(largest, rows, areas[member])
+        some = count > 0
+        if some.any():
+            largest[some] = np.maximum.reduceat(areas[member], (np.cumsum(count) - count)[some])
         origin, length = centroids[index[targets]], np.sqrt(largest)
         weight = np.sqrt(areas[member] / largest[rows])
         d = (centroids[member] - origin[rows]) / length[rows, None]
@@ -116,7 +120,8 @@ class PatchRecovery:
                 continue
             U, S, Vt = np.linalg.svd(A[todo, :, :terms], full_matrices=False)
             full = np.sum(S > S[:, :1] * max(count.max(), terms) * np.finfo(float).eps, axis=1) == terms
-            solved = np.einsum("tji,tj,tkj,tkc->tic", Vt, 1 / np.where(S > 0, S, 1.0), U, Y[todo], optimize=True)
+            solved = np.swapaxes(Vt, 1, 2) @ ((np.swapaxes(U, 1, 2) @ Y[todo]) / np.where(S > 0, S, 1.0)[:, :, None])
             coef[todo[full]] = 0.0
             coef[todo[full], :terms] = solved[full]
-        return {int(c): (origin[n], length[n], coef[n]) for n, c in enumerate(targets)}
+        self._fitted[targets] = True
+        self._origin[targets], self._length[targets], self._coef[targets] = origin, length, coef
