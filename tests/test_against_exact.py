@@ -7,12 +7,13 @@ import numpy as np
 import pytest
 
 import tolerances as tol
+from contactcore import estimate as est
 from contactcore import load_scene, make_law, sample_profiles, scene_text
 from contactcore.laws import STATUS_NAMES
 from verification import files, methods
 from verification import run as run_driver
 from verification.__main__ import main
-from verification.agreement import gap_floor
+from verification.agreement import default_exclusion, gap_floor, percent
 from verification.closed_forms import layered_slip
 
 #: C-coulomb's resolution here: every method's exact solve converges at 0.1
@@ -77,6 +78,26 @@ def test_the_shares_are_the_difference_of_the_written_profiles(coulomb_run):
             assert got["rms"] == pytest.approx(np.sqrt(np.mean(diff ** 2) / np.mean(scale ** 2)), rel=tol.SAME_SUMS)
             assert got["largest_difference"] == pytest.approx(np.abs(diff).max(), rel=tol.SAME_SUMS)
             assert got["scale"] == scale.max() and got["largest_exact"] == np.abs(ex[q][keep]).max()
+            own = np.hypot(ex[q], floor[q[0]] if pair else 0.0)[keep]  # its own size, a gap floored
+            assert got["own_size"] == own.max()
+            assert got["worst_own"] == pytest.approx(np.abs(diff).max() / own.max(), rel=tol.SAME_SUMS)
+
+
+def test_the_share_of_its_own_size_shows_the_penalty_missing_t_t(coulomb_run):
+    """C-coulomb's penalty t_T, at k_T = 1e8 Pa/m, is a few hundred Pa where
+    the exact t_T reaches 6.7e4 Pa, a fifth of |t|: as a share of |t| the
+    miss reads a fifth, as a share of t_T's own size at least
+    1 − max|t_T penalty| / max|t_T exact| (the triangle inequality at the
+    exact's largest sample), and summary.md shows both."""
+    record = _record(coulomb_run)["profiles"]["C4"]["tT"]
+    pen, ex = _columns(coulomb_run / "fe", "C4"), _columns(coulomb_run / "fe" / "exact", "C4")
+    xy = np.column_stack([ex["x"], ex["y"]])
+    keep = np.linalg.norm(xy[:, None] - C_CORNERS[None], axis=-1).min(axis=1) >= C_EXCLUDE
+    bound = 1.0 - np.abs(pen["tT"][keep]).max() / np.abs(ex["tT"][keep]).max()
+    assert record["worst_own"] >= bound > record["worst"]
+    text = (coulomb_run / "summary.md").read_text()
+    assert "| of its own size |" in text
+    assert f"| fe (p1) | C4 | tT | {percent(record['worst'])} | {percent(record['worst_own'])} |" in text
 
 
 def test_the_exact_answer_is_the_scene_solved_with_its_law_enforced_exactly(coulomb_run):
@@ -147,3 +168,27 @@ def test_a_scene_with_nothing_to_compare_is_refused_in_one_line(tmp_path, capsys
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and err[0].startswith("error: --against-exact: ") and problem in err[0]
     assert not out.exists()
+
+
+def test_with_an_estimate_the_exact_run_is_estimated_as_the_penalty_run(tmp_path):
+    """``--estimate --against-exact``: the exact run is solved at h and h/2
+    too, its estimate (summary.json, q_err columns, summary.md's row) that
+    of direct exact solves at those h, and the penalty run at h/2 is
+    compared with the exact run at h/2."""
+    out = tmp_path / "out"
+    assert main(["run", "C-coulomb", "--method", "fe", "--h", str(H), "--estimate", "2", "--against-exact",
+                 "--no-plots", "--out", str(out)]) == 0
+    scene = load_scene("C-coulomb")
+    twin = scene.with_changes(law=make_law({"type": "coulomb", "mu": scene.law.mu, "enforcement": "exact"}))
+    summary = json.loads((out / "fe" / "exact" / "summary.json").read_text())
+    assert summary["estimate"]["h"] == pytest.approx([H, H / 2])
+    assert summary["discretisation"]["h"] == pytest.approx(H / 2)
+    assert json.loads((out / "fe" / "summary.json").read_text())["discretisation"]["h"] == pytest.approx(H / 2)
+    runs = [methods.solver("fe")(twin, h) for h in (H, H / 2)]
+    direct = est.estimate_runs(twin, runs, default_exclusion(twin))
+    written = _columns(out / "fe" / "exact", "C4")
+    for q, e in direct.profiles["C4"].items():
+        assert np.abs(written[f"{q}_err"] - e.error).max() <= tol.REPEATED_SOLVE * np.abs(written[q]).max()
+    worst = summary["estimate"]["worst"]
+    row = next(line for line in (out / "summary.md").read_text().splitlines() if line.startswith("| fe (exact) |"))
+    assert f"| {worst['relative']:.2e} ({worst['at']}) |" in row and run_driver.NOT_ESTIMATED_MARK not in row

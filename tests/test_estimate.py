@@ -11,7 +11,7 @@ from contactcore import estimate as est
 from contactcore import tolerances as core_tol
 from verification import files
 from verification.effectivity import CASES, VARIANTS, effectivity
-from verification.run import run
+from verification.run import NOT_ESTIMATED, NOT_ESTIMATED_MARK, run
 
 #: The paper scenes' effectivity setting (the issue's): runs h = 0.05 ->
 #: 0.025 against fe P2 at h = 0.00625.
@@ -144,6 +144,39 @@ def test_run_estimate_writes_the_errors(tmp_path):
     run("A", ["fe"], alone, h=0.1, degree=2, draw=False)
     dofs = json.loads((alone / "fe" / "summary.json").read_text())["dofs"]
     assert f"| fe (reference) | 2 | {dofs} |" in text  # the reference is solved at the answer's h/2
+    reference_row = next(line for line in text.splitlines() if line.startswith("| fe (reference) |"))
+    assert reference_row.count(f"—{NOT_ESTIMATED_MARK}") == 2 and NOT_ESTIMATED in text  # why it has no estimate
+
+
+def test_run_and_efficiency_name_the_same_worst_estimate_on_scene_b(tmp_path):
+    """summary.json's and summary.md's estimated error is the efficiency's:
+    the same two runs of scene B (h, h/2, the coarse run estimated as
+    ``efficiency`` does) give the same worst quantity and value, B6's t_N
+    and g_N (zero: the rod neither opens nor presses) measured against
+    their companions B5's t_T and g_T, not against their own residue; and
+    ``run --estimate`` writes its own worst into summary.md."""
+    from contactcore import load_scene
+    from verification import methods
+    from verification.agreement import COMPANIONS, default_exclusion, sampled
+    from verification.efficiency import _estimated
+    from verification.run import _estimate_cells, _estimate_record
+    scene, h = load_scene("B"), 0.2
+    exclude, solve = default_exclusion(scene), methods.solver("fe")
+    coarse, fine = (solve(scene, hk, degree=1, estimate_condition=False) for hk in (h, h / 2))
+    row = _estimated(scene, solve, coarse, h, 1, exclude)
+    estimate = est.estimate_runs(scene, [coarse, fine], exclude, energy=False, coarse=True)
+    record = _estimate_record(scene, estimate, list(sampled(scene, coarse).values()))
+    assert record["worst"] == {"relative": row["estimate"], "at": row["estimate_worst"]}
+    for (pid, q), (cpid, cq) in COMPANIONS.items():
+        assert record[pid][q]["kept_scale"] == record[cpid][cq]["kept_scale"] > 0
+    out = tmp_path / "run"
+    text = run(scene, ["fe"], out, h=h, estimate=2, draw=False)
+    summary = json.loads((out / "fe" / "summary.json").read_text())["estimate"]
+    ratios = {f"{pid}:{q}": e["kept_rms"] / e["kept_scale"] for pid, qs in summary.items()
+              if pid.startswith("B") for q, e in qs.items()}
+    worst = max(ratios, key=ratios.get)
+    assert summary["worst"] == {"relative": ratios[worst], "at": worst} and not worst.startswith("B6")
+    assert _estimate_cells({"estimate": summary}) in text
 
 
 def test_run_estimate_starts_from_the_scenes_own_h(tmp_path):

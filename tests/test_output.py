@@ -201,3 +201,19 @@ def test_response_figure_counts_increments(tmp_path, coulomb_toml):
     for ax in fig.axes:
         assert all(float(t).is_integer() for t in ax.get_xticks())  # increments are counted
     plots.pyplot().close(fig)
+
+
+@pytest.mark.parametrize("title, shown", [
+    ("", "gamma"),
+    ("  ", "gamma"),
+    ("tangential traction on Γ", "gamma: tangential traction on Γ"),
+    (("", "fe (p1), penalty against exact"), "gamma: fe (p1), penalty against exact"),
+    (("traction on Γ", "fe (p1), penalty against exact"), "gamma: traction on Γ; fe (p1), penalty against exact"),
+])
+def test_a_profile_figure_is_titled_by_its_id_without_dangling_separators(title, shown):
+    """A profile without a title is titled by its id alone, not "gamma: "
+    nor "gamma: ; ..." (run's penalty-against-exact figures add a part)."""
+    s = np.linspace(0.0, 1.0, 5)
+    fig = plots.profile_figure(title, {"fe (p1)": _profile("gamma", s, tT=s)})
+    assert fig.axes[0].get_title() == shown
+    plots.pyplot().close(fig)

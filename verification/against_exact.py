@@ -21,9 +21,13 @@ measured against the exact jump's magnitude |g| = √(g_N² + g_T²) floored
 as the agreement floors an exact law's gaps (√(|g|² + f²), f a tenth of
 the displacement scale: :func:`verification.agreement.gap_floor`), and a
 traction component against |t|, because the exact g_N of a closed contact
-is zero (but for the enforcement's residue) and a share of its own size
-would have no meaning.
-The largest |Δ|, |exact| and scale are kept in the quantity's unit too.  The
+is zero (but for the enforcement's residue).  A share of the vector hides
+how much of a small component the penalty misses (C-coulomb's t_T, a fifth
+of |t|, missed almost whole), so the **share of its own size** is kept
+beside it: max |Δ| over the component's own largest exact |value|, a gap
+floored as above.
+The largest |Δ|, |exact|, own size and scale are kept in the quantity's
+unit too.  The
 **status split** is the number of Γ's quadrature points open, sticking and
 slipping at the last increment, and the share of Γ's length (by
 quadrature weight) each covers.
@@ -107,31 +111,41 @@ def differences(scene: Scene, label: str, penalty: dict, exact: dict) -> list[Ag
     return profile_agreements(scene, label, penalty, exact, default_exclusion(scene), scales(scene, exact))
 
 
-def largest(scene: Scene, exact: dict, row: Agreement, vector_scales: dict) -> tuple[float, float]:
-    """The largest |exact| of ``row``'s quantity and of the scale it is
-    measured against (``vector_scales``: :func:`scales` of ``exact``),
-    over the kept samples."""
+def largest(scene: Scene, exact: dict, row: Agreement, vector_scales: dict) -> tuple[float, float, float]:
+    """The largest |exact| of ``row``'s quantity, of its own size (a gap
+    floored as :func:`scales` floors |g|) and of the scale it is measured
+    against (``vector_scales``: :func:`scales` of ``exact``), over the kept
+    samples."""
     prof = exact[row.profile]
     own = np.abs(prof.columns[row.quantity])
+    size = np.hypot(own, gap_floors(scene).get(row.quantity, 0.0))
     scale = vector_scales.get((row.profile, row.quantity), own)
     keep = kept_samples(scene, prof, default_exclusion(scene))
-    return float(np.max(own[keep], initial=0.0)), float(np.max(scale[keep], initial=0.0))
+    return tuple(float(np.max(v[keep], initial=0.0)) for v in (own, size, scale))
+
+
+def share(difference: float, size: float) -> float:
+    """``difference / size``; 0 where both are 0, infinite where only the
+    size is (an exact zero the penalty misses)."""
+    return difference / size if size > 0 else (0.0 if difference == 0 else float("inf"))
 
 
 def record(scene: Scene, rows: list[Agreement], exact: dict, penalty_path: InterfacePath,
            exact_path: InterfacePath) -> dict:
     """summary.json's ``"against_exact"``: per profile and quantity the
-    worst-sample and RMS shares, where the worst sample lies, the largest
-    |Δ|, |exact| and scale (in the quantity's unit); the status
+    worst-sample share, the share of its own size (``worst_own``) and the
+    RMS share, where the worst sample lies, the largest |Δ|, |exact|, own
+    size and scale (in the quantity's unit); the status
     split of each run and the distance from singular points inside which
     samples were left out."""
     by_profile, vector_scales = {}, scales(scene, exact)
     for a in rows:
-        own, scale = largest(scene, exact, a, vector_scales)
+        own, size, scale = largest(scene, exact, a, vector_scales)
+        difference = abs(a.value - a.reference)
         by_profile.setdefault(a.profile, {})[a.quantity] = {
-            "worst": a.worst, "rms": a.rms, "at": {"s": a.s, "x": a.x, "y": a.y},
-            "largest_difference": abs(a.value - a.reference), "largest_exact": own, "scale": scale,
-            "kept": a.kept, "samples": a.samples}
+            "worst": a.worst, "worst_own": share(difference, size), "rms": a.rms,
+            "at": {"s": a.s, "x": a.x, "y": a.y}, "largest_difference": difference, "largest_exact": own,
+            "own_size": size, "scale": scale, "kept": a.kept, "samples": a.samples}
     return {"exclude": default_exclusion(scene), "profiles": by_profile,
             "status": {"penalty": status_split(penalty_path), "exact": status_split(exact_path)}}
 
@@ -148,16 +162,19 @@ def section(scene: Scene, law_name: str, records: dict[str, dict]) -> str:
              "The scale is the exact quantity itself, except on Γ: g_N and g_T are measured against the exact "
              f"jump's magnitude |g| floored as √(|g|² + ({gap_floor(scene):.3g} m)²), a tenth of the "
              "displacement scale, t_N and t_T against |t| (the exact g_N of a closed contact is zero). "
-             "The last three columns are in the quantity's unit.\n",
-             "| method | profile | quantity | worst sample | at s (x, y) | RMS | max \\|Δ\\| | max \\|exact\\| "
-             "| max scale |",
-             "|---|---|---|---|---|---|---|---|---|"]
+             "Beside it, max |Δ| as a share of the component's own largest exact |value| (a gap floored as "
+             "above): what a vector's share hides of a small component. The last three columns are in the "
+             "quantity's unit.\n",
+             "| method | profile | quantity | worst sample | of its own size | at s (x, y) | RMS | max \\|Δ\\| "
+             "| max \\|exact\\| | max scale |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
     for label, rec in records.items():
         for pid, quantities in rec["profiles"].items():
             for q, d in quantities.items():
                 at = d["at"]
-                lines.append(f"| {label} | {pid} | {q} | {percent(d['worst'])} | {at['s']:.4g} ({at['x']:.4g}, "
-                             f"{at['y']:.4g}) | {percent(d['rms'])} | {files.cell(d['largest_difference'])} | "
+                lines.append(f"| {label} | {pid} | {q} | {percent(d['worst'])} | {percent(d['worst_own'])} | "
+                             f"{at['s']:.4g} ({at['x']:.4g}, {at['y']:.4g}) | {percent(d['rms'])} | "
+                             f"{files.cell(d['largest_difference'])} | "
                              f"{files.cell(d['largest_exact'])} | {files.cell(d['scale'])} |")
     lines += ["", "Status on Γ at the last increment: quadrature points (share of Γ's length).", "",
               "| method | enforcement | " + " | ".join(STATUS_NAMES) + " |", "|---|---|" + "---|" * len(STATUS_NAMES)]

@@ -137,6 +137,33 @@ def agreements(scene: Scene, got: dict, ref: dict, exclude: float) -> list[tuple
     return [(a.profile, a.quantity, a.kind, a.rms) for a in profile_agreements(scene, "", got, ref, exclude)]
 
 
+def estimated_shares(scene: Scene, profiles: dict, est, exclude: float) -> dict[tuple[str, str], tuple[float, float]]:
+    """``(profile id, quantity) -> (RMS of the estimated error, RMS of its
+    scale)`` over the samples of ``profiles`` (id -> ProfileData, the runs
+    ``est`` estimated, a :class:`contactcore.estimate.Estimate`) at least
+    ``exclude`` from the singular points: the scale is the quantity's own
+    values (:func:`measured_against`) or, for a zero quantity, its
+    companion's (:data:`COMPANIONS`), as :func:`profile_agreements`
+    measures a true error."""
+    shares = {}
+    for pid, qs in est.profiles.items():
+        keep = kept_samples(scene, profiles[pid], exclude)
+        for q, e in qs.items():
+            spid, sq = COMPANIONS.get((pid, q), (pid, q))
+            scale = measured_against(scene, sq, profiles[spid].columns[sq][keep])
+            shares[pid, q] = rms(e.error[keep]), rms(scale)
+    return shares
+
+
+def worst_estimate(scene: Scene, profiles: dict, est, exclude: float) -> tuple[float, str]:
+    """The largest estimated relative RMS error over every profile and
+    quantity of :func:`estimated_shares` and where (``"B5:tT"``); ``(0,
+    "")`` when no quantity has a scale."""
+    rows = [(error / scale, f"{pid}:{q}") for (pid, q), (error, scale)
+            in estimated_shares(scene, profiles, est, exclude).items() if scale > 0]
+    return max(rows) if rows else (0.0, "")
+
+
 def percent(fraction: float) -> str:
     """A relative difference in per cent, to three significant digits."""
     return f"{100 * fraction:.3g} %"

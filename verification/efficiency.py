@@ -35,15 +35,13 @@ import functools
 import logging
 from pathlib import Path
 
-import numpy as np
-
 from contactcore import estimate as estimates
 from contactcore import load_scene, sample_profiles
 from contactcore import tolerances as tol
 from contactcore.budget import MEMORY_SHARE, estimate, machine_memory
 
 from . import files, pool
-from .agreement import COMPANIONS, agreements, kept_samples, measured_against
+from .agreement import agreements, worst_estimate
 from .plots import loglog_by_variant
 from .timing import REPEAT_BELOW, REPEATS, fastest
 
@@ -78,21 +76,6 @@ def worst_error(scene, got: dict, ref: dict, exclude: float) -> tuple[float, str
     """The largest relative RMS difference over every profile and quantity."""
     pid, q, _, err = max(agreements(scene, got, ref, exclude), key=lambda row: row[3])
     return err, f"{pid}:{q}"
-
-
-def worst_estimate(scene, got: dict, est, exclude: float) -> tuple[float, str]:
-    """The largest estimated relative RMS error over every profile and
-    quantity, measured as :func:`worst_error` measures the true one (the
-    kept samples; a zero quantity against its companion's scale)."""
-    rows = []
-    for pid, qs in est.profiles.items():
-        keep = kept_samples(scene, got[pid], exclude)
-        for q, e in qs.items():
-            spid, sq = COMPANIONS.get((pid, q), (pid, q))
-            scale = float(np.sqrt(np.mean(measured_against(scene, sq, got[spid].columns[sq][keep]) ** 2)))
-            if scale > 0:
-                rows.append((float(np.sqrt(np.mean(e.error[keep] ** 2))) / scale, f"{pid}:{q}"))
-    return max(rows) if rows else (0.0, "")
 
 
 #: The errors a user asks the advisor about (worst relative RMS profile error).

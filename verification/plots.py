@@ -106,16 +106,25 @@ def legend_outside(ax, **kw) -> None:
     ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0, fontsize=8, **kw)
 
 
-def plot_profile(path: Path, title: str, runs: dict[str, ProfileData], reference: str | None = None,
+def plot_profile(path: Path, title: str | tuple[str, ...], runs: dict[str, ProfileData], reference: str | None = None,
                  floors: dict[str, float] | None = None) -> Path:
     """Write :func:`profile_figure` as a PNG."""
     return save(profile_figure(title, runs, reference, floors), path)
 
 
-def profile_figure(title: str, runs: dict[str, ProfileData], reference: str | None = None,
+def heading(pid: str, *parts: str) -> str:
+    """A profile figure's title: the profile's id, then its non-blank
+    ``parts`` (its title, what is compared) joined by "; " after a colon;
+    the id alone when every part is blank (a profile without a title)."""
+    said = "; ".join(p.strip() for p in parts if p and p.strip())
+    return f"{pid}: {said}" if said else pid
+
+
+def profile_figure(title: str | tuple[str, ...], runs: dict[str, ProfileData], reference: str | None = None,
                    floors: dict[str, float] | None = None):
-    """One figure for a profile: per quantity, the methods overlaid and,
-    under it, each method minus the ``reference`` curve (default
+    """One figure for a profile, titled :func:`heading` of its id and
+    ``title`` (a string, or the parts of one): per quantity, the methods
+    overlaid and, under it, each method minus the ``reference`` curve (default
     :func:`reference_label`), relative to the largest |value| of the
     reference (see module doc), floored as ``floors`` say (quantity ->
     floor: an exact law's gaps, :func:`verification.agreement.floors`)."""
@@ -140,7 +149,8 @@ def profile_figure(title: str, runs: dict[str, ProfileData], reference: str | No
         if rows == 2:
             _difference_panel(axes[rows * k + 1, 0], q, runs, ref, (floors or {}).get(q, 0.0))
     axes[-1, 0].set_xlabel(XLABEL.get(first.parameter, "s"))
-    axes[0, 0].set_title(f"{first.id}: {title}", fontsize=10, wrap=True)
+    parts = (title,) if isinstance(title, str) else title
+    axes[0, 0].set_title(heading(first.id, *parts), fontsize=10, wrap=True)
     _no_offsets(fig)
     return fig
 

@@ -42,7 +42,7 @@ from contactcore.scene import check_resolution, smallest_dimension
 
 from . import against_exact as exact_gap
 from . import agreement, files, interface, methods, plots, pool
-from .agreement import default_exclusion, kept_samples, measured_against, within_estimates
+from .agreement import default_exclusion, measured_against, within_estimates
 
 log = logging.getLogger("verification")
 
@@ -71,9 +71,19 @@ def _summary_table(summaries: list[dict]) -> str:
         lines.append(f"| {s['method']} | {s['degree']} | {s['dofs']} | {t['mesh']:.3f} | {t['assembly']:.3f} | "
                      f"{t['solve']:.3f} | {t['total']:.3f} |{_estimate_cells(s) if estimated else ''} "
                      f"{sv['residual']:.1e} | {cond} |")
+    footnote = [NOT_ESTIMATED] if estimated and any("estimate" not in s for s in summaries) else []
     warnings = [f"- {s['method']}: {w}" for s in summaries
                 for w in s["solver"]["warnings"] + s.get("estimate", {}).get("warnings", [])]
-    return "\n".join(lines + ([""] + ["Warnings:"] + warnings if warnings else [])) + "\n"
+    return "\n".join(lines + footnote + ([""] + ["Warnings:"] + warnings if warnings else [])) + "\n"
+
+
+#: The mark of a row's estimate cells where its run was not estimated, and
+#: the footnote under the table saying why: the only run of an estimate
+#: solved at one h is the reference of the comparisons (the penalty runs
+#: and their exact twins are solved at every h).
+NOT_ESTIMATED_MARK = "†"
+NOT_ESTIMATED = (f"\n{NOT_ESTIMATED_MARK} not estimated: the reference the runs are compared with is solved once, "
+                 "at the answer's h (the finest), so it has no coarser run to estimate from.")
 
 
 def agreement_section(scene: Scene, profiles: dict, reference: str | None = None) -> str:
@@ -93,18 +103,16 @@ def agreement_section(scene: Scene, profiles: dict, reference: str | None = None
 
 
 def _estimate_cells(summary: dict) -> str:
-    """The estimated-error cells of a method's row: the profile quantity
-    with the largest RMS error relative to its RMS value, both over the
-    samples away from singular points (as the agreement tables measure),
-    and the ZZ energy estimate relative to the energy norm."""
+    """The estimated-error cells of a method's row: the worst estimated
+    relative RMS error and where (``"worst"`` of :func:`_estimate_record`),
+    and the ZZ energy estimate relative to the energy norm; a footnote
+    mark where the run was not estimated (:data:`NOT_ESTIMATED`)."""
     est = summary.get("estimate")
     if est is None:
-        return " — | — |"
-    where, worst = max(((f"{pid}:{q}", e["kept_rms"] / e["kept_scale"]) for pid, qs in est.items()
-                        if isinstance(qs, dict) and pid not in ("energy", "status")
-                        for q, e in qs.items() if e.get("kept_scale")), key=lambda r: r[1], default=("—", 0.0))
+        return f" —{NOT_ESTIMATED_MARK} | —{NOT_ESTIMATED_MARK} |"
+    worst = est["worst"]
     energy = est["energy"]["relative"] if est.get("energy") else float("nan")
-    return f" {worst:.2e} ({where}) | {energy:.2e} |"
+    return f" {worst['relative']:.2e} ({worst['at'] or '—'}) | {energy:.2e} |"
 
 
 def _solve_estimated(solve, scene, h, levels: int | None, **options):
@@ -121,16 +129,19 @@ def _estimate_record(scene, est, profiles: list) -> dict:
     """summary.json's ``"estimate"``: each quantity's max, RMS and order over
     every sample with ``scale`` (the RMS of the quantity itself, an exact
     law's gaps floored as the agreement floors them), and ``kept_rms``,
-    ``kept_scale`` the same over the samples away from singular points
-    (:func:`~verification.agreement.kept_samples`): what summary.md relates."""
-    record = est.summary()
-    for prof in profiles:
-        keep = kept_samples(scene, prof, default_exclusion(scene))
-        for q in record.get(prof.id, {}):
-            scale = measured_against(scene, q, prof.columns[q])
-            error = est.profiles[prof.id][q].error
-            record[prof.id][q].update(scale=estimates.rms(scale), kept_rms=estimates.rms(error[keep]),
-                                      kept_scale=estimates.rms(scale[keep]))
+    ``kept_scale`` the same over the samples away from singular points, a
+    zero quantity's scale its companion's
+    (:func:`~verification.agreement.estimated_shares`); ``"worst"``, the
+    largest ``kept_rms / kept_scale`` and where
+    (:func:`~verification.agreement.worst_estimate`, as ``efficiency``
+    takes it): what summary.md shows."""
+    record, exclude = est.summary(), default_exclusion(scene)
+    by_id = {p.id: p for p in profiles}
+    for (pid, q), (kept_rms, kept_scale) in agreement.estimated_shares(scene, by_id, est, exclude).items():
+        scale = estimates.rms(measured_against(scene, q, by_id[pid].columns[q]))
+        record[pid][q].update(scale=scale, kept_rms=kept_rms, kept_scale=kept_scale)
+    relative, where = agreement.worst_estimate(scene, by_id, est, exclude)
+    record["worst"] = {"relative": relative, "at": where}
     return record
 
 
@@ -218,7 +229,7 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
     for name in chosen:
         options = methods.options_for(name, nodes=nodes, **given)
         result, est = _named(chosen, name, _solve, scene, name, h, degree, paper, estimate, options)
-        exact_row = (_against_exact(out, scene, twin, name, result, finest, degree, paper, options, draw, gaps)
+        exact_row = (_against_exact(out, scene, twin, name, result, h, degree, paper, estimate, options, draw, gaps)
                      if twin is not None else None)
         summaries.append(_write_method(out, scene, name, result, est, fields, draw, profiles, paths, estimated, gaps))
         summaries += [exact_row] if exact_row else []
@@ -315,16 +326,12 @@ def _write_method(out: Path, scene: Scene, name: str, result, est, fields: bool,
     estimate join ``profiles``, ``paths`` and ``estimated`` under its
     label.  Returns its summary."""
     label = f"{name} (p{result.degree})"
-    summary = result.summary()
+    summary, sampled = _written_profiles(out / name, scene, result, est)
     if label in gaps:
         summary["against_exact"] = gaps[label]
-    sampled = est.sampled if est is not None else sample_profiles(scene, result.fields, result.interface)
     if est is not None:
-        summary["estimate"] = _estimate_record(scene, est, sampled)
         estimated[label] = ({p.id: p for p in sampled}, {p.id: est.error_columns(p.id) for p in sampled})
     for prof in sampled:
-        files.write_profile_csv(out / name / "profiles" / f"{prof.id}.csv", prof,
-                                est.error_columns(prof.id) if est is not None else None)
         profiles.setdefault(prof.id, {})[label] = prof
     if fields:
         from . import fields_out  # meshio, only for field files
@@ -340,28 +347,45 @@ def _write_method(out: Path, scene: Scene, name: str, result, est, fields: bool,
     return summary
 
 
+def _written_profiles(folder: Path, scene: Scene, result, est) -> tuple[dict, list]:
+    """``result``'s profiles of ``scene`` written under ``folder/profiles``,
+    with their estimated errors if ``est`` (else None) has them; returns
+    its summary (with ``"estimate"``, :func:`_estimate_record`) and the
+    profiles."""
+    summary = result.summary()
+    sampled = est.sampled if est is not None else sample_profiles(scene, result.fields, result.interface)
+    if est is not None:
+        summary["estimate"] = _estimate_record(scene, est, sampled)
+    for prof in sampled:
+        files.write_profile_csv(folder / "profiles" / f"{prof.id}.csv", prof,
+                                est.error_columns(prof.id) if est is not None else None)
+    return summary, sampled
+
+
 def _against_exact(out: Path, scene: Scene, twin: Scene, name: str, result, h, degree: int, paper: bool,
-                   options: dict, draw: bool, gaps: dict) -> dict:
+                   estimate, options: dict, draw: bool, gaps: dict) -> dict:
     """Method ``name`` solved on ``twin`` (``scene`` with its law enforced
-    exactly) at ``h`` with the penalty run's ``options``; its profiles,
-    history and summary written under ``out/<name>/exact``, each profile's
-    penalty and exact curves drawn; how far ``result`` (the penalty run)
-    is from it (:func:`verification.against_exact.record`) joins ``gaps``
-    under the run's label and its summary.json.  Returns the exact run's
-    summary (a row of summary.md's table)."""
+    exactly) at ``h`` with the penalty run's ``options`` and, with
+    ``estimate``, at h/2 (, h/4) and estimated, as the penalty run was:
+    the finest run is compared with the penalty run, which was solved
+    there.  Its profiles (with their estimated errors), history and
+    summary are written under ``out/<name>/exact``, each profile's penalty
+    and exact curves drawn; how far ``result`` (the penalty run) is from
+    it (:func:`verification.against_exact.record`) joins ``gaps`` under
+    the run's label and its summary.json.  Returns the exact run's summary
+    (a row of summary.md's table)."""
     label, shown = f"{name} (p{result.degree})", f"{name} ({exact_gap.EXACT})"
-    exact, _ = _solve(twin, name, h, degree, paper, None, options, shown)
-    penalty, exact_profiles = agreement.sampled(scene, result), agreement.sampled(twin, exact)
-    for prof in exact_profiles.values():
-        files.write_profile_csv(out / name / "exact" / "profiles" / f"{prof.id}.csv", prof)
+    exact, est = _solve(twin, name, h, degree, paper, estimate, options, shown)
+    summary, sampled = _written_profiles(out / name / "exact", twin, exact, est)
+    penalty, exact_profiles = agreement.sampled(scene, result), {p.id: p for p in sampled}
     interface.write_history(out / name / "exact", twin, exact.interface)
     rows = exact_gap.differences(scene, label, penalty, exact_profiles)
     gaps[label] = exact_gap.record(scene, rows, exact_profiles, result.interface, exact.interface)
-    summary = {**exact.summary(), "method": shown}
+    summary["method"] = shown
     files.write_json(out / name / "exact" / "summary.json", summary)
     titles = {p.id: p.title for p in scene.profiles}
     for pid in penalty if draw else ():
-        plots.plot_profile(out / "plots" / f"exact_{name}_{pid}.png", f"{titles[pid]}; {label}, penalty against exact",
+        plots.plot_profile(out / "plots" / f"exact_{name}_{pid}.png", (titles[pid], f"{label}, penalty against exact"),
                            {label: penalty[pid], exact_gap.EXACT: exact_profiles[pid]}, exact_gap.EXACT,
                            agreement.floors(twin))
     return summary
