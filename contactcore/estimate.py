@@ -381,14 +381,6 @@ class Estimate:
                     "status": self.status, "warnings": list(self.warnings)})
         return out
 
-    def worst(self, scales: dict[str, dict[str, float]] | None = None) -> tuple[str, float]:
-        """The largest RMS error over every profile and quantity, relative to
-        ``scales[pid][q]`` where given (``"pid:q"``, value)."""
-        rows = [(f"{pid}:{q}", e.rms / (scales[pid][q] if scales else 1.0))
-                for pid, qs in self.profiles.items() for q, e in qs.items()
-                if not scales or scales[pid][q] > 0]
-        return max(rows, key=lambda r: r[1]) if rows else ("", 0.0)
-
 
 def levels_of(h: float, levels: int) -> list[float]:
     """``h, h/2`` (and ``h/4``), coarse to fine."""

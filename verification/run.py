@@ -399,7 +399,7 @@ def _write_summary(out: Path, scene: Scene, summaries: list[dict], profiles: dic
     titles = {p.id: p.title for p in scene.profiles}
     for pid, runs in profiles.items() if draw else ():
         plots.plot_profile(out / "plots" / f"{pid}.png", titles[pid], runs, ref, agreement.floors(scene))
-    text = (f"# Scene {scene.name}: {scene.title}\n\n" + _summary_table(summaries)
+    text = (f"# Scene {plots.heading(scene.name, scene.title)}\n\n" + _summary_table(summaries)
             + agreement_section(scene, profiles, ref))
     if len(estimated) > 1:
         text += _estimates_section(scene, estimated)
