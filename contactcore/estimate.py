@@ -24,9 +24,18 @@ and a gap (the L2 rate of degree k), and for a penalty law's traction on
 Γ, which the law computes from the gaps (``t = k_N g_N`` …) not from the
 bulk stress; ``k`` for a stress (the H1 rate); under an exact law, at most
 2 for the gaps and 1 for the traction where Γ's status changes along it
-(:func:`switches`).  An observed order further than
-:data:`~contactcore.tolerances.ORDER_MISMATCH` from theory means the runs
-are not yet in the asymptotic range: the estimate carries a warning.
+(:func:`switches`).  A degree-1 stress read at a point converges at its
+order ``p`` where the point is generic in its cell and at ``p + 1`` where
+it superconverges (the cell's centroid, a uniform grid aligned with the
+profile: Zienkiewicz & Zhu, IJNME 33, 1992; Wahlbin, *Superconvergence in
+Galerkin finite element methods*, 1995), and which holds at a sample is
+not known from two runs: the estimate takes the order between whose
+Richardson factor ``1/(2^q − 1)`` is the geometric mean of the two
+(:func:`balanced_order`), so its effectivity lies within
+``[(1/3)^½, 3^½]`` for ``p = 1`` (``[(3/7)^½, (7/3)^½]`` for ``p = 2``)
+whichever holds (:func:`order_range`).  An observed order further than
+:data:`~contactcore.tolerances.ORDER_MISMATCH` from that range means the
+runs are not yet in the asymptotic range: the estimate carries a warning.
 
 For a law with history (unilateral, Coulomb) the profiles are the final
 increment's, and the status along Γ (open, stick, slip) of the two runs is
@@ -108,6 +117,33 @@ def theoretical_order(quantity: str, degree: int, method: str = "", law=None, sw
     return degree
 
 
+#: Bulk stresses, and the degrees whose stress read at a point converges
+#: at its theoretical order or one faster (module doc): the estimate's
+#: order lies between (:func:`order_range`).  Measured at the theoretical
+#: order, the Richardson effectivity of these stresses was 0.96-8.8 on
+#: the paper's scenes and 0.98-2.31 on the closed forms (2026-11-27,
+#: docs/error-estimates.md), of the degree-2 stresses 0.9-1.45.
+STRESSES, SUPERCONVERGENT_DEGREES = ("sxx", "syy", "sxy"), (1,)
+
+
+def order_range(quantity: str, degree: int, method: str = "", law=None,
+                switching: bool | None = None) -> tuple[int, int]:
+    """The orders theory allows a profile quantity: ``(p, p)`` with ``p``
+    the :func:`theoretical_order`, ``(p, p + 1)`` for a stress of a degree
+    in :data:`SUPERCONVERGENT_DEGREES` (module doc)."""
+    p = theoretical_order(quantity, degree, method, law, switching)
+    return (p, p + 1) if quantity in STRESSES and degree in SUPERCONVERGENT_DEGREES else (p, p)
+
+
+def balanced_order(low: int, high: int, ratio: float = 2.0) -> float:
+    """The order ``q`` whose Richardson factor is the geometric mean of
+    those of ``low`` and ``high``: ``r^q − 1 = ((r^low − 1)(r^high − 1))^½``
+    (``r`` the refinement ratio).  If the error converges at either, the
+    estimate at ``q`` is off by at most ``((r^high − 1)/(r^low − 1))^½``,
+    up or down; ``low`` itself where the two are equal."""
+    return float(np.log1p(np.sqrt((ratio ** low - 1) * (ratio ** high - 1))) / np.log(ratio))
+
+
 def singular_regions(scene: Scene) -> list[tuple[str, np.ndarray]]:
     """The singular points, named: ``("corners", points)`` of a rectangular
     domain and ``("ends of Γ", points)`` where a straight Γ meets the outer
@@ -145,12 +181,13 @@ def rms(x: np.ndarray) -> float:
 class QuantityEstimate:
     """The finest run's estimated error of one quantity on one profile:
     ``error`` (per sample, ≥ 0, in the quantity's units), the ``order`` used,
-    and whether it was ``observed`` (three runs) or theoretical."""
+    whether it was ``observed`` (three runs) or taken from the orders
+    ``theory`` allows (:func:`order_range`)."""
 
     error: np.ndarray
     order: float
     observed: bool
-    theory: int
+    theory: tuple[int, int]
 
     @property
     def max(self) -> float:
@@ -177,17 +214,19 @@ def observed_order(coarse: np.ndarray, mid: np.ndarray, fine: np.ndarray, ratio:
     return float(np.clip(p, *tol.ORDER_RANGE))
 
 
-def richardson(values: list[np.ndarray], theory: int, ratio: float = 2.0, coarse: bool = False,
+def richardson(values: list[np.ndarray], theory: tuple[int, int], ratio: float = 2.0, coarse: bool = False,
                kept: np.ndarray | None = None) -> QuantityEstimate:
     """The estimate of one quantity from its samples at h, h/2 (and h/4),
     coarse to fine (module doc): the finest run's error, or with
     ``coarse`` the coarsest run's (``(q_{h/2} − q_h) r^p / (r^p − 1)``,
     two levels only).  The order is observed on the ``kept`` samples (all
     by default): near a singular point the differences shrink at the
-    singularity's rate, not the smooth solution's, and would set it."""
+    singularity's rate, not the smooth solution's, and would set it.
+    Without a third run it is the :func:`balanced_order` of the orders
+    ``theory`` allows (:func:`order_range`)."""
     kept = slice(None) if kept is None or not np.any(kept) else kept
     p = observed_order(*(v[kept] for v in values[-3:]), ratio=ratio) if len(values) >= 3 else None
-    order = float(theory) if p is None else p
+    order = balanced_order(*theory, ratio=ratio) if p is None else p
     diff = np.abs(values[-1] - values[-2])
     factor = ratio ** order / (ratio ** order - 1) if coarse else 1 / (ratio ** order - 1)
     return QuantityEstimate(diff * factor, order, p is not None, theory)
@@ -204,7 +243,7 @@ def profile_estimates(levels: list[list[ProfileData]], degree: int, method: str 
     for profs in zip(*levels):
         pid, cols = profs[-1].id, profs[-1].columns
         kept = far_from_singular(scene, np.column_stack([cols["x"], cols["y"]]), exclude) if scene else None
-        out[pid] = {q: richardson([p.columns[q] for p in profs], theoretical_order(q, degree, method, law, switching),
+        out[pid] = {q: richardson([p.columns[q] for p in profs], order_range(q, degree, method, law, switching),
                                   coarse=coarse, kept=kept)
                     for q in profs[-1].names[3:]}
     return out
@@ -212,11 +251,13 @@ def profile_estimates(levels: list[list[ProfileData]], degree: int, method: str 
 
 def order_warnings(estimates: dict[str, dict[str, QuantityEstimate]]) -> list[str]:
     """One line per quantity whose observed order is further than
-    :data:`~contactcore.tolerances.ORDER_MISMATCH` from theory."""
-    return [f"{pid}:{q}: observed order {e.order:.2f} against {e.theory} in theory: the runs are not in the "
-            f"asymptotic range, the estimate is not to be trusted"
+    :data:`~contactcore.tolerances.ORDER_MISMATCH` from the orders theory
+    allows."""
+    said = lambda t: f"{t[0]}" if t[0] == t[1] else f"{t[0]}-{t[1]}"  # noqa: E731
+    return [f"{pid}:{q}: observed order {e.order:.2f} against {said(e.theory)} in theory: the runs are not in "
+            f"the asymptotic range, the estimate is not to be trusted"
             for pid, qs in estimates.items() for q, e in qs.items()
-            if e.observed and abs(e.order - e.theory) > tol.ORDER_MISMATCH]
+            if e.observed and not e.theory[0] - tol.ORDER_MISMATCH <= e.order <= e.theory[1] + tol.ORDER_MISMATCH]
 
 
 # ----- the status along Γ -----------------------------------------------------
