@@ -72,13 +72,30 @@ def default_enforcement(kind: str) -> str:
 
 
 def _stabilisation(params: dict, path: str) -> float:
-    """The scene's ``stabilisation`` β (dimensionless, > 0), or the default."""
+    """The scene's ``stabilisation`` β, or the default."""
     if "stabilisation" not in params:
         return tol.NITSCHE_STABILISATION
-    value = params["stabilisation"]
+    return checked_stabilisation(params["stabilisation"], f"{path}.stabilisation")
+
+
+#: Why a β outside NITSCHE_STABILISATION_RANGE is refused, above it and below.
+_STIFF = ("a larger β locks cut cells like a stiff penalty (t_T up to 65 % off β = 3's at h = 0.05) or fails Newton's "
+          "first increment")
+_SOFT = "a smaller β leaves the contact a soft spring (t_T up to 77 % off β = 3's at h = 0.05)"
+
+
+def checked_stabilisation(value, field: str) -> float:
+    """β as given (dimensionless, a multiple of the method's E/h), or a
+    SceneError naming ``field``: a finite number > 0 within
+    :data:`~contactcore.tolerances.NITSCHE_STABILISATION_RANGE`, outside
+    which an answer at the mesh's h was measured to move with β (a large γ
+    locks cut cells like a stiff penalty, a small one is a soft spring)."""
     if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) or value <= 0:
-        raise SceneError(f"{path}.stabilisation", f"must be a finite number > 0, a multiple of the method's "
-                         f"E/h (got {value!r})")
+        raise SceneError(field, f"must be a finite number > 0, a multiple of the method's E/h (got {value!r})")
+    low, high = tol.NITSCHE_STABILISATION_RANGE
+    if not low <= value <= high:
+        why = _STIFF if value > high else _SOFT
+        raise SceneError(field, f"must lie within {low:g}..{high:g} (got {value:g}): {why}")
     return float(value)
 
 

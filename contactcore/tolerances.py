@@ -242,6 +242,25 @@ NITSCHE_PIECE_FLOOR = 0.5
 #: 22 of tests/placements.py fail at β = 0.3-1, converge at 3 and 10).
 NITSCHE_STABILISATION = 3.0
 
+#: The β a scene may give: NITSCHE_STABILISATION_RANGE = (β/10, 10β) of the
+#: default, inclusive.  Nitsche's answer does not depend on β as h → 0, but
+#: at one h a large γ is a stiff penalty that locks XFEM's cut cells and
+#: leaves Newton a stick window 2μp/γ too narrow, and a small one leaves
+#: the contact a soft spring.  Measured 2026-11-27 at h = 0.05 on exact
+#: C-coulomb (C4) and the README's wedge made exact (its Γ profile), fe,
+#: xfem, efgm P1 and P2 against β = 3, the largest difference of t_N, t_T
+#: over the samples away from singular points as a share of the β = 3
+#: answer's largest value (docs/contact-enforcement.md, "Which β a scene
+#: may give"): every β of the range measured (0.3, 10, 30) is within 9.2 %
+#: worst sample and 1.9 % RMS, while h → h/2 moves C4's t_T by 24-38 %
+#: (RMS 3.0-5.7 %).  Above it, β = 100 fails C-coulomb's first increment
+#: in fe P1, P2 and xfem P1, and the wedge's xfem P1 t_T locks: 18 % at
+#: β = 100, 34 % at 300, 65 % at 1e6 (efgm fails from 1e4).  Below it,
+#: β = 0.1 is 11-16 % off (C4 t_T, P1), 0.01 19-24 %, and at 1e-9 fe P1
+#: still converges to t_N 31 % and t_T 77 % off, interpenetrating 50 times
+#: as far (1.2e-7 m against 2.4e-9 m).
+NITSCHE_STABILISATION_RANGE = (NITSCHE_STABILISATION / 10, NITSCHE_STABILISATION * 10)
+
 #: Newton on one load increment has converged when the residual of the free
 #: equations satisfies ||R||_inf <= NEWTON_RTOL * F, F the larger of the
 #: external and internal nodal forces (infinity norms).  A piecewise-linear

@@ -66,6 +66,37 @@ def test_exact_laws_read_from_tables():
     assert make_law({"type": "bonded"}) == Bonded(tol_default())
 
 
+@pytest.mark.parametrize("beta, why", [(1e6, "locks cut cells"), (31.0, "locks cut cells"),
+                                       (0.1, "soft spring"), (1e-9, "soft spring")])
+def test_a_stabilisation_outside_its_range_is_refused(beta, why):
+    """β outside NITSCHE_STABILISATION_RANGE moves the answer at one h
+    (tolerances.py): refused in one line naming the key, the value, the
+    bound and why; its ends, the β/10 and 10β the β tests use, are taken."""
+    from contactcore.tolerances import NITSCHE_STABILISATION_RANGE
+    low, high = NITSCHE_STABILISATION_RANGE
+    with pytest.raises(SceneError) as refused:
+        make_law({"type": "coulomb", "enforcement": "exact", "mu": 0.2, "stabilisation": beta})
+    message = str(refused.value)
+    assert message.startswith(f"interface.law.stabilisation: must lie within {low:g}..{high:g} (got {beta:g}): ")
+    assert why in message and "\n" not in message
+    for edge in (0.1 * tol_default(), 10 * tol_default()):
+        assert make_law({"type": "unilateral", "enforcement": "exact", "stabilisation": edge}).stabilisation == edge
+
+
+def test_the_cli_refuses_a_stiff_stabilisation_in_one_line(tmp_path, capsys):
+    """``run`` on a scene file with β = 1e6: exit 2, one line, no folder."""
+    from contactcore import scene_text
+    from verification.__main__ import main
+    scene = tmp_path / "C-coulomb-stiff.toml"
+    scene.write_text(scene_text("C-coulomb").replace('type = "coulomb"', 'type = "coulomb"\nenforcement = "exact"'
+                                                     '\nstabilisation = 1e6'))
+    out = tmp_path / "out"
+    assert main(["run", str(scene), "--method", "fe", "--h", "0.2", "--no-plots", "--out", str(out)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith("error: ") and "stabilisation: must lie within" in err[0], err
+    assert "1e+06" in err[0] and not out.exists()
+
+
 def tol_default():
     from contactcore.tolerances import NITSCHE_STABILISATION
     return NITSCHE_STABILISATION

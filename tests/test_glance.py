@@ -188,6 +188,38 @@ def test_study_refuses_a_stabilisation_of_springs(tmp_path, capsys, scene, hint)
     assert not out.exists()
 
 
+EXACT_C = ("C-coulomb", {'type = "coulomb"': 'type = "coulomb"\nenforcement = "exact"'})
+
+
+@pytest.mark.parametrize("param, edit, hint", [
+    ("kN", EXACT_C, "vary kN where --param enforcement is penalty"),
+    ("kT", EXACT_C, "vary kT where --param enforcement is penalty"),
+    ("kN", ("C", {'type = "linear"': 'type = "bonded"', "kN = 1e10\n": "", "kT = 1e8\n": ""}),
+     'type = "linear", with kN and kT, is its penalty counterpart'),
+    ("stabilisation", EXACT_C, "must lie within"),
+])
+def test_study_refuses_springs_of_an_exact_law(tmp_path, capsys, param, edit, hint):
+    """Under exact enforcement k_N, k_T play no part, and β outside its
+    range is refused as a scene's is: varied on such a law (the study's
+    first point) the study ends before any solve with one line naming the
+    parameter, and leaves no folder."""
+    from contactcore import scene_text
+    base, replacements = edit
+    text = scene_text(base)
+    for old, new in replacements.items():
+        text = text.replace(old, new)
+    scene = tmp_path / "exact.toml"
+    scene.write_text(text)
+    out = tmp_path / "study"
+    args = ["study", str(scene), "--param", param, "--values", "1e9", "1e11", "--method", "fe", "--h", "0.2", "-q",
+            "--out", str(out)]
+    assert verification_main.main(args) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith(f"error: --param {param}: ") and hint in err[0], err
+    assert param == "stabilisation" or 'plays no part under enforcement = "exact"' in err[0]
+    assert not out.exists()
+
+
 @pytest.mark.parametrize("scene, values, message", [
     ("C-coulomb", ["exakt", "exact"], "--param enforcement: must be penalty or exact (got 'exakt')"),
     ("C", ["exact", "penalty"], "--param enforcement: interface.law.enforcement: the 'linear' law is enforced by "
@@ -222,6 +254,22 @@ def test_study_sets_the_enforcement_before_the_stabilisation(tmp_path):
     penalty = [r for r in rows if r["enforcement"] == "penalty"]
     assert len(penalty) == 2 and all(r["status"] == "failed" and "applies to enforcement" in r["message"]
                                      for r in penalty)
+
+
+def test_study_leaves_the_springs_aside_at_its_exact_points(tmp_path):
+    """--param enforcement × --param kN (or kT): the penalty points take
+    each spring, the exact points leave it aside and say so; their answer
+    is the same at every spring, which moves the penalty's."""
+    for spring in ("kN", "kT"):
+        rows = _study(tmp_path, "C-coulomb", "--param", "enforcement", "--values", "penalty", "exact", "--param",
+                      spring, "--values", "1e9", "1e10")
+        penalty = [r for r in rows if r["enforcement"] == "penalty"]
+        exact = [r for r in rows if r["enforcement"] == "exact"]
+        assert all(r["status"] != "failed" for r in rows) and len(exact) == 2
+        assert all(r["message"].startswith(f'{spring} not applied: it plays no part under enforcement = "exact"')
+                   for r in exact) and not any("not applied" in r["message"] for r in penalty)
+        assert len({tuple(r[q] for q in study.OUTPUTS) for r in exact}) == 1
+        assert penalty[0]["max_tN"] != penalty[1]["max_tN"] or penalty[0]["max_tT"] != penalty[1]["max_tT"]
 
 
 def test_study_plots_mark_failed_and_warned_points():

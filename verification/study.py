@@ -5,7 +5,8 @@
 
 Parameters (:data:`PARAMETERS`): the mesh size ``h``; the law's springs
 ``kN``, ``kT`` and friction ``mu``; how the law is enforced, ``enforcement``
-(penalty or exact), and an exact law's ``stabilisation`` β; ``load``, a factor on every load;
+(penalty or exact), and an exact law's ``stabilisation`` β (within
+``NITSCHE_STABILISATION_RANGE``); ``load``, a factor on every load;
 the number of ``increments``; the materials ``E_minus``, ``nu_minus``, ``E_plus``, ``nu_plus``;
 and the geometry of Γ — ``radius`` of a circular Γ, ``offset`` of a straight
 Γ along its normal, ``angle`` of a straight Γ (degrees from the x axis,
@@ -22,7 +23,10 @@ in case order as their results arrive; a point that fails
 (bad value, refused solve) is recorded with its message and the study goes
 on.  Writes ``DIR/study.csv``, ``DIR/study.md`` and one plot per parameter,
 the others as series, warned points ringed and failed ones crossed on the x axis: ``DIR/study.png`` for one parameter,
-``DIR/study_<param>.png`` for several.
+``DIR/study_<param>.png`` for several.  ``kN``, ``kT`` play no part under
+exact enforcement: varied on an exact law they are refused, and where the
+study also varies ``enforcement`` its exact points leave them aside (the
+row's message says so) while its penalty points take them.
 """
 from __future__ import annotations
 
@@ -37,7 +41,7 @@ import numpy as np
 from contactcore import CircleInterface, ContactError, LineInterface, SceneError, load_scene, sample_profile
 from contactcore.discretisation import Reuse
 from contactcore.enforcement import ENFORCEMENTS
-from contactcore.exact import EXACT_LAWS, is_exact
+from contactcore.exact import BONDED, EXACT_LAWS, checked_stabilisation, is_exact
 from contactcore.scene import InterfaceProfile
 
 from . import files, methods, pool
@@ -57,12 +61,23 @@ def _material(scene, body: str, key: str, value: float):
     return {"materials": mats}
 
 
+#: The penalty's springs: an exact law has none.
+SPRINGS = ("kN", "kT")
+
+
 def _law(scene, key: str, value: float):
     if key == "stabilisation" and not is_exact(scene.law):
         how = ("vary it where --param enforcement is exact, or on a scene with enforcement = \"exact\""
                if scene.law.name in EXACT_LAWS else 'its limit k → ∞ is type = "bonded"')
         raise SceneError("--param stabilisation", f"applies to enforcement = \"exact\" only, and the scene's "
                          f"'{scene.law.name}' law is enforced by its springs here ({how})")
+    if key == "stabilisation":
+        value = checked_stabilisation(value, "--param stabilisation")
+    if key in SPRINGS and is_exact(scene.law):
+        how = (penalty_counterpart(scene.law) if scene.law.name in BONDED
+               else f"vary {key} where --param enforcement is penalty")
+        raise SceneError(f"--param {key}", f"plays no part under enforcement = \"exact\" (Nitsche's β is --param "
+                         f"stabilisation; {how})")
     if key not in scene.law.parameters:
         raise SceneError(f"--param {key}", f"the '{scene.law.name}' law has no parameter {key}")
     return {"law": dataclasses.replace(scene.law, **{key: value})}
@@ -162,9 +177,16 @@ def scene_at(scene, point: dict):
     for param, value in sorted(point.items(), key=lambda item: item[0] != "enforcement"):
         _check(param)
         change = PARAMETERS[param][1]
-        if change:
+        if change and param not in springs_left_aside(point, changes.get("law", scene.law)):
             changes.update(change(scene.with_changes(profiles=(GAMMA,), **changes), value))
     return scene.with_changes(profiles=(GAMMA,), **changes)
+
+
+def springs_left_aside(point: dict, law) -> list[str]:
+    """The springs ``point`` gives that its ``law`` leaves aside: where the
+    point also sets the enforcement and it is exact, k_N and k_T play no
+    part, and the penalty points of the same study use them."""
+    return [p for p in SPRINGS if p in point] if "enforcement" in point and is_exact(law) else []
 
 
 def _outputs(scene, result) -> dict:
@@ -217,7 +239,9 @@ def solve_case(case: Case) -> dict:
     if tried.refused:
         return {**row, "status": "failed", "message": tried.message}
     status = "warned" if tried.result.solver.warnings else "ok"
-    return {**row, "status": status, "message": "; ".join(tried.result.solver.warnings),
+    aside = [f"{p} not applied: it plays no part under enforcement = \"exact\""
+             for p in springs_left_aside(point, scene.law)]
+    return {**row, "status": status, "message": "; ".join([*aside, *tried.result.solver.warnings]),
             **_outputs(scene, tried.result)}
 
 
