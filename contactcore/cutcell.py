@@ -26,7 +26,7 @@ import numpy as np
 from contactcore import DiscretisationError
 from contactcore import tolerances as tol
 from contactcore.bodies import sign_of
-from contactcore.geometry import CircleInterface, LevelSetInterface, LineInterface, polygon_area
+from contactcore.geometry import CircleInterface, LevelSetInterface, LineInterface, clip_halfplane, polygon_area
 
 #: Quad-tree splits of a cell before giving up on a cut that stays complicated.
 MAX_DEPTH = 6
@@ -239,10 +239,37 @@ def cut_polygon(itf, vertices: np.ndarray, n: int, depth: int = 0) -> list[tuple
         result = _two_regions(itf, walk, crossings, n, size2)
         if result is not None:
             return result
+    if depth >= MAX_DEPTH and len(crossings) == 2 and not small_circle:
+        chord = _chord_regions(itf, vertices, walk[crossings[0]][0], walk[crossings[1]][0], n)
+        if chord is not None:
+            return chord
     if depth >= MAX_DEPTH:
         raise DiscretisationError(f"the cell with corners {np.round(vertices, 6).tolist()} is cut by Γ in a way "
                                   f"that {MAX_DEPTH} subdivisions do not simplify; refine")
     return [part for piece in _split(vertices) for part in cut_polygon(itf, piece, n, depth + 1)]
+
+
+def _chord_regions(itf, vertices: np.ndarray, p: np.ndarray, q: np.ndarray, n: int):
+    """The two regions of a piece at the finest split that Γ crosses at
+    ``p`` and ``q`` but that no corner sees whole (Γ touching a side of the
+    piece between its crossings: a circle tangent to a grid line, which
+    every split keeps), with Γ taken as its chord ``p → q``: convex pieces.
+    The area moved, between arc and chord, is at most ``|q − p|³ κ / 12``,
+    ``|q − p|`` no longer than the piece: ``2^-MAX_DEPTH`` of the cell.
+    None for a chord of no length."""
+    t = q - p
+    if not np.any(t):
+        return None
+    m = np.array([t[1], -t[0]]) / np.hypot(*t)
+    far = vertices[np.argmax(np.abs((vertices - p) @ m))]  # on Γ's side of the chord, as the chord cuts
+    if ((far - p) @ m) * itf.phi(far[None])[0] < 0:
+        m = -m
+    out = []
+    for side, normal in ((-1, m), (1, -m)):
+        piece = clip_halfplane(vertices, LineInterface(tuple(p), tuple(normal)))
+        if polygon_area(piece) > 0:
+            out.append((side, *polygon_rule(piece, n)))
+    return out
 
 
 def _two_regions(itf, walk, crossings, n, size2):

@@ -175,7 +175,7 @@ class LineInterface:
     def minus_area(self, domain: Domain) -> float:
         """Area of the − side of the domain (exact for both domain types)."""
         if isinstance(domain, Rectangle):
-            return polygon_area(_clip_halfplane(domain.corners, self))
+            return polygon_area(clip_halfplane(domain.corners, self))
         R = domain.radius
         d = float(self.phi([domain.centre])[0])  # signed distance of the centre
         d = np.clip(d, -R, R)
@@ -255,7 +255,7 @@ def _bounding_box(domain: Domain) -> tuple[np.ndarray, np.ndarray]:
 Interface = LineInterface | CircleInterface | LevelSetInterface
 
 
-def _clip_halfplane(poly: np.ndarray, line: LineInterface) -> np.ndarray:
+def clip_halfplane(poly: np.ndarray, line: LineInterface) -> np.ndarray:
     """Sutherland–Hodgman clip of a convex polygon to the side ``φ <= 0``."""
     phi = line.phi(poly)
     out = []

@@ -367,6 +367,25 @@ def test_ellipse_geometry_is_integrated():
     assert abs(length - perimeter) <= tol.GENERAL_LENGTH * perimeter
 
 
+def test_a_circle_tangent_to_a_grid_line_is_integrated():
+    """Γ a circle whose lowest point (0.42, 0.4) lies inside an edge of a
+    0.1 grid: every split keeps that edge, so the finest pieces take Γ as
+    its chord (contactcore.cutcell); the disc's area is still found, to
+    tol.TANGENT_AREA."""
+    from contactcore.cutcell import cut_polygon
+
+    circle = CircleInterface((0.42, 0.6), 0.2)
+    area = 0.0
+    for i in range(10):
+        for j in range(10):
+            lo = np.array([0.1 * i, 0.1 * j])
+            cell = np.array([lo, lo + [0.1, 0], lo + 0.1, lo + [0, 0.1]])
+            parts = cut_polygon(circle, cell, 4)
+            assert sum(w.sum() for _, _, w in parts) == pytest.approx(0.01, rel=tol.MESH_SUMS)
+            area += sum(w.sum() for side, _, w in parts if side < 0)
+    assert abs(area - np.pi * 0.2 ** 2) <= tol.TANGENT_AREA * np.pi * 0.2 ** 2
+
+
 def test_general_level_set_is_for_xfem_only():
     from contactcore import SceneError
     from efgm import method

@@ -138,6 +138,12 @@ NEAR_SUPPORT_JUMP = 2e-5
 #: area / perimeter) with 4 points on 0.1 cells; 5.3e-8 between XFEM with a
 #: callable circle and with the built-in one on scene C.  Bounds 10x-20x.
 GENERAL_AREA = 1e-6
+
+#: A circle tangent to a grid line inside an edge: the finest split's
+#: pieces take Γ as its chord (contactcore.cutcell), losing at most
+#: |q − p|³ κ / 12 each; measured 2.5e-8 of the disc's area (radius 0.2,
+#: 0.1 cells, lowest point inside an edge), bound 8x.
+TANGENT_AREA = 2e-7
 GENERAL_LENGTH = 1e-5
 GENERAL_VS_CIRCLE = 1e-6
 
