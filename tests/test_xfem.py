@@ -17,7 +17,7 @@ from contactcore.bodies import Body
 from contactcore.profiles import interface_response
 from contactcore.tolerances import ACCURATE_FLOOR
 from contactcore.elasticity import voigt_matrix
-from verification.closed_forms import interface_patch, quadratic_layers
+from verification.closed_forms import interface_patch, pressurised_rod, quadratic_layers
 from verification.norms import max_errors
 from verification.sweeps import horizontal_patch
 from xdolfinx import conforming, xfem
@@ -384,6 +384,19 @@ def test_a_circle_tangent_to_a_grid_line_is_integrated():
             assert sum(w.sum() for _, _, w in parts) == pytest.approx(0.01, rel=tol.MESH_SUMS)
             area += sum(w.sum() for side, _, w in parts if side < 0)
     assert abs(area - np.pi * 0.2 ** 2) <= tol.TANGENT_AREA * np.pi * 0.2 ** 2
+
+
+def test_a_straight_gamma_in_a_disc_is_refused_for_every_h():
+    """A straight Γ across a disc domain always meets its rim, whose cells
+    are curved at degree 2, which xfem's cut cells cannot follow: the
+    refusal says so, not "refine h"; xfem P1 and fe solve the same scene."""
+    scene = dataclasses.replace(pressurised_rod().scene, interface=LineInterface((0.0, 0.1), (0.0, 1.0))).validated()
+    for h in (0.2, 0.1):
+        with pytest.raises(DiscretisationError, match="not supported at degree 2 at any h") as caught:
+            xfem.solve(scene, h, degree=2)
+        assert "refine" not in str(caught.value)
+    for solved in (xfem.solve(scene, 0.2, degree=1), conforming.solve(scene, 0.2, degree=2)):
+        assert solved.solver.residual < tol.CONVERGED_RUN_RESIDUAL
 
 
 def test_general_level_set_is_for_xfem_only():

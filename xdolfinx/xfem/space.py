@@ -19,6 +19,7 @@ from petsc4py import PETSc
 from contactcore import DiscretisationError
 from contactcore import tolerances as tol
 from contactcore.bodies import Body, index_of_sign
+from contactcore.geometry import Disc
 
 from ..contact_system import GhostExchange
 from .cells import CellBasis
@@ -110,8 +111,7 @@ class EnrichedFunctionSpace:
         self.band = (np.flatnonzero(np.any(self.enriched[cells.cell_dofs], axis=1)) if band is None
                      else np.asarray(band, np.int64))
         if not cells.ranks.all(not cells.curved[self.band].any()):
-            raise DiscretisationError("xfem: Γ reaches a curved cell of the rim (its cut-cell quadrature assumes "
-                                      "straight cells there); refine h")
+            raise DiscretisationError(_curved_band_message(cut.scene, self.degree))
         for body in Body:
             self._check_resolved(body)
         #: enriched nodes this rank sees (owned and ghosts)
@@ -207,3 +207,29 @@ class EnrichedFunctionSpace:
         A.setLGMap(lgmap, lgmap)
         lgmap.destroy()
         return A
+
+
+#: Points of a disc's rim at which Γ's side is read: Γ meets the rim
+#: where it changes (a Γ narrower than 2π R / RIM_SAMPLES could pass
+#: between two, and is then told to refine).
+RIM_SAMPLES = 3600
+
+
+def _curved_band_message(scene, degree: int) -> str:
+    """Why xfem of ``degree`` refuses enriched cells on a disc's curved rim
+    (a degree-2 mesh's rim cells are curved): its cut-cell quadrature
+    assumes straight cells there.  Where Γ meets the rim, no h can help;
+    otherwise Γ only comes near it."""
+    near = ("xfem: Γ reaches a curved cell of the rim (its cut-cell quadrature assumes straight cells there); "
+            "refine h")
+    if not isinstance(scene.domain, Disc):
+        return near
+    centre, radius = np.asarray(scene.domain.centre, float), float(scene.domain.radius)
+    angle = np.linspace(0.0, 2 * np.pi, RIM_SAMPLES, endpoint=False)
+    rim = centre + radius * np.column_stack([np.cos(angle), np.sin(angle)])
+    side = np.sign(scene.interface.phi(rim))
+    if side.min() < 0 < side.max():
+        return (f"xfem: Γ meets the disc's rim, where a degree-{degree} mesh's cells are curved and xfem's "
+                "cut-cell quadrature assumes straight cells where Γ cuts: a Γ that reaches a curved boundary is "
+                f"not supported at degree {degree} at any h (xfem P1, fe and efgm solve it)")
+    return near
