@@ -374,16 +374,17 @@ def test_a_circle_tangent_to_a_grid_line_is_integrated():
     tol.TANGENT_AREA."""
     from contactcore.cutcell import cut_polygon
 
-    circle = CircleInterface((0.42, 0.6), 0.2)
+    step, radius = 0.1, 0.2
+    circle = CircleInterface((0.42, 0.6), radius)
     area = 0.0
     for i in range(10):
         for j in range(10):
-            lo = np.array([0.1 * i, 0.1 * j])
-            cell = np.array([lo, lo + [0.1, 0], lo + 0.1, lo + [0, 0.1]])
+            lo = step * np.array([i, j])
+            cell = np.array([lo, lo + [step, 0], lo + step, lo + [0, step]])
             parts = cut_polygon(circle, cell, 4)
-            assert sum(w.sum() for _, _, w in parts) == pytest.approx(0.01, rel=tol.MESH_SUMS)
+            assert sum(w.sum() for _, _, w in parts) == pytest.approx(step ** 2, rel=tol.MESH_SUMS)
             area += sum(w.sum() for side, _, w in parts if side < 0)
-    assert abs(area - np.pi * 0.2 ** 2) <= tol.TANGENT_AREA * np.pi * 0.2 ** 2
+    assert abs(area - np.pi * radius ** 2) <= tol.TANGENT_AREA * np.pi * radius ** 2
 
 
 def test_a_straight_gamma_in_a_disc_is_refused_for_every_h():
