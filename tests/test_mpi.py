@@ -2,6 +2,7 @@
 serial run's numbers; errors end in one line on every rank count,
 and no rank hangs.  Each case is a real ``mpirun`` of the command line."""
 import csv
+import json
 import os
 import shutil
 import subprocess
@@ -97,6 +98,33 @@ def test_exact_contact_on_two_ranks_gives_the_serial_answer(tmp_path):
     path = tmp_path / "C-coulomb-exact.toml"
     path.write_text(scene_toml(scene))
     _parity(tmp_path, path, 2, 1, 0.1, methods=("fe", "xfem", "efgm"))
+
+
+@pytest.mark.slow
+def test_an_estimate_on_two_ranks_gives_the_serial_estimate(tmp_path):
+    """``run --estimate`` (runs at h and h/2, Richardson per sample, ZZ in
+    energy) in every method: each profile and its estimated errors are the
+    serial run's.  An estimated error is a difference of two runs, so the
+    ranks' round-off in it is measured against the quantity it estimates:
+    against its own largest value it reached 2e-7 (xfem, A5's gaps, whose
+    two runs differ little)."""
+    args = ["run", "A", "--method", "fe", "xfem", "efgm", "--h", "0.2", "--estimate", "--no-plots"]
+    serial, parallel = tmp_path / "serial", tmp_path / "parallel"
+    assert main(args + ["--out", str(serial), "--quiet"]) == 0
+    out = mpirun(2, "-m", "verification", *args, "--out", parallel)
+    assert out.returncode == 0, out.stderr
+    for m in ("fe", "xfem", "efgm"):
+        for f in sorted((serial / m / "profiles").glob("*.csv")):
+            a, b = _table(f), _table(parallel / f.relative_to(serial))
+            assert a.keys() == b.keys()
+            for q in a:
+                x, y = np.array(a[q], float), np.array(b[q], float)
+                scale = np.max(np.abs(np.array(a[q.removesuffix("_err")], float)))
+                assert np.max(np.abs(x - y)) <= tol.PARALLEL_PARITY * scale, (f, q)
+    for m in ("fe", "xfem", "efgm"):
+        eta = [json.loads((run / m / "summary.json").read_text())["estimate"]["energy"]["eta"]
+               for run in (serial, parallel)]
+        assert eta[1] == pytest.approx(eta[0], rel=tol.PARALLEL_PARITY), m
 
 
 #: Scene A with Γ near its top, where some rank of a few is likely to own
