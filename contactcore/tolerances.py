@@ -256,7 +256,7 @@ NITSCHE_STABILISATION = 3.0
 #: (RMS 3.0-5.7 %).  Above it, β = 100 fails C-coulomb's first increment
 #: in fe P1, P2 and xfem P1, and the wedge's xfem P1 t_T locks: 18 % at
 #: β = 100, 34 % at 300, 65 % at 1e6 (efgm fails from 1e4).  Below it,
-#: β = 0.1 is 11-16 % off (C4 t_T, P1), 0.01 19-24 %, and at 1e-9 fe P1
+#: β = 0.1 is 11-16 % off (C4 t_T, P1), 1e-3 22-25 %, and at 1e-9 fe P1
 #: still converges to t_N 31 % and t_T 77 % off, interpenetrating 50 times
 #: as far (1.2e-7 m against 2.4e-9 m).
 NITSCHE_STABILISATION_RANGE = (NITSCHE_STABILISATION / 10, NITSCHE_STABILISATION * 10)
