@@ -164,6 +164,12 @@ def worst_estimate(scene: Scene, profiles: dict, est, exclude: float) -> tuple[f
     return max(rows) if rows else (0.0, "")
 
 
+def share(difference: float, size: float) -> float:
+    """``difference / size``; 0 where both are 0, infinite where only the
+    size is (a zero the compared run misses)."""
+    return difference / size if size > 0 else (0.0 if difference == 0 else float("inf"))
+
+
 def percent(fraction: float) -> str:
     """A relative difference in per cent, to three significant digits."""
     return f"{100 * fraction:.3g} %"
@@ -215,8 +221,7 @@ def _compared(scene: Scene, label: str, pid: str, q: str, got: ProfileData, ref:
         return Agreement(label, pid, q, "", nan, nan, nan, nan, nan, nan, nan, 0, len(keep))
     i = int(np.argmax(np.abs(diff)))
     where = np.flatnonzero(keep)[i]
-    peak = float(np.max(np.abs(base)))
-    worst = float(abs(diff[i]) / peak) if peak > 0 else (0.0 if diff[i] == 0 else float("inf"))
+    worst = share(float(abs(diff[i])), float(np.max(np.abs(base))))
     return Agreement(label, pid, q, "", relative_rms(scene, got, ref, q, exclude, scale=None if scale is None
                                                       else np.asarray(scale)[keep]),
                      worst, float(ref.columns["s"][where]), float(ref.columns["x"][where]),
