@@ -488,8 +488,9 @@ MESH_MIN_FEATURE = 1e-2
 #: rate, and the factor (1/31) would hide an error.
 ORDER_RANGE = (0.5, 5.0)
 
-#: An observed order further than this from the theoretical one (degree + 1
-#: for displacements, gaps and the law's tractions, degree for stresses)
+#: An observed order further than this from the orders theory allows
+#: (degree + 1 for displacements, gaps and the law's tractions, degree for
+#: stresses, and one more for a degree-1 stress: estimate.order_range)
 #: says the runs are not in the asymptotic range: a whole order off
 #: changes the Richardson factor by 2x or more (p = 2 → 1: 1/3 → 1).
 ORDER_MISMATCH = 1.0
