@@ -198,6 +198,28 @@ def test_run_and_efficiency_name_the_same_worst_estimate_on_scene_b(tmp_path):
     assert _estimate_cells({"estimate": summary}) in text
 
 
+def test_a_users_profile_named_b6_is_measured_against_its_own_values(tmp_path):
+    """COMPANIONS name scene B's profiles: a scene of the user's whose Γ
+    profile is named B6, with no B5, has its t_N and g_N measured against
+    their own values, in the agreement and the estimate alike (not looked
+    up in a B5 it does not have)."""
+    from contactcore import load_scene, scene_text
+    from verification import methods
+    from verification.agreement import agreements, default_exclusion, estimated_shares, kept_samples, measured_against
+    from verification.agreement import sampled
+    path = tmp_path / "wedge-b6.toml"
+    path.write_text(scene_text("examples/wedge.toml").replace('id = "gamma"', 'id = "B6"'))
+    scene = load_scene(path)
+    exclude, solve = default_exclusion(scene), methods.solver("fe")
+    runs = [solve(scene, h) for h in (0.2, 0.1)]
+    profiles = sampled(scene, runs[-1])
+    assert not any(kind == "zero" for *_, kind, _ in agreements(scene, profiles, profiles, exclude))
+    shares = estimated_shares(scene, profiles, est.estimate_runs(scene, runs, exclude), exclude)
+    keep = kept_samples(scene, profiles["B6"], exclude)
+    for q in ("tN", "gN"):
+        assert shares["B6", q][1] == est.rms(measured_against(scene, q, profiles["B6"].columns[q][keep])) > 0
+
+
 def test_run_estimate_starts_from_the_scenes_own_h(tmp_path):
     """No --h: the estimate runs at the scene's h and h/2."""
     from contactcore import load_scene

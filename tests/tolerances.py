@@ -433,7 +433,7 @@ BETA_ERROR_SPREAD = 3.0
 #: finest rungs of the rate tests (verification.effectivity), 2026-11-27
 #: (a degree-1 stress at the balanced order of contactcore.estimate):
 #: fe P1 pressurised rod 0.84-0.91 (energy 0.94); xfem P2 pressurised rod
-#: 0.89-1.45 (energy 1.07); efgm P1 layered slip 0.57-0.91 (energy 0.73).
+#: 0.89-1.45 (energy 1.06); efgm P1 layered slip 0.57-0.91 (energy 0.73).
 EFFECTIVITY = (0.5, 2.0)
 
 #: Why an entry of the full effectivity table (slow) lies outside

@@ -43,7 +43,8 @@ from contactcore.interface_path import InterfacePath
 from contactcore.laws import STATUS_NAMES
 
 from . import files
-from .agreement import Agreement, default_exclusion, gap_floor, gap_floors, kept_samples, percent, profile_agreements
+from .agreement import (Agreement, default_exclusion, gap_floor, gap_floors, kept_samples, percent, profile_agreements,
+                        share)
 
 #: How the exact run is named in tables and figures.
 EXACT = "exact"
@@ -122,12 +123,6 @@ def largest(scene: Scene, exact: dict, row: Agreement, vector_scales: dict) -> t
     scale = vector_scales.get((row.profile, row.quantity), own)
     keep = kept_samples(scene, prof, default_exclusion(scene))
     return tuple(float(np.max(v[keep], initial=0.0)) for v in (own, size, scale))
-
-
-def share(difference: float, size: float) -> float:
-    """``difference / size``; 0 where both are 0, infinite where only the
-    size is (an exact zero the penalty misses)."""
-    return difference / size if size > 0 else (0.0 if difference == 0 else float("inf"))
 
 
 def record(scene: Scene, rows: list[Agreement], exact: dict, penalty_path: InterfacePath,

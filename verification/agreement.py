@@ -130,6 +130,14 @@ def relative_rms(scene: Scene, got: ProfileData, ref: ProfileData, quantity: str
 COMPANIONS = {("B6", "tN"): ("B5", "tT"), ("B6", "gN"): ("B5", "gT")}
 
 
+def companion(pid: str, q: str, profiles: dict) -> tuple[str, str] | None:
+    """The :data:`COMPANIONS` entry of ``pid``'s ``q`` where ``profiles``
+    (id -> ProfileData) holds it, else None: a scene of the user's that
+    names a profile B6 and none B5 is measured against its own values."""
+    pair = COMPANIONS.get((pid, q))
+    return pair if pair and pair[0] in profiles and pair[1] in profiles[pair[0]].columns else None
+
+
 def agreements(scene: Scene, got: dict, ref: dict, exclude: float) -> list[tuple[str, str, str, float]]:
     """``(profile id, quantity, class, relative RMS)`` for every quantity of
     every profile; the class is ``zero`` for a quantity measured against its
@@ -149,7 +157,7 @@ def estimated_shares(scene: Scene, profiles: dict, est, exclude: float) -> dict[
     for pid, qs in est.profiles.items():
         keep = kept_samples(scene, profiles[pid], exclude)
         for q, e in qs.items():
-            spid, sq = COMPANIONS.get((pid, q), (pid, q))
+            spid, sq = companion(pid, q, profiles) or (pid, q)
             scale = measured_against(scene, sq, profiles[spid].columns[sq][keep])
             shares[pid, q] = rms(e.error[keep]), rms(scale)
     return shares
@@ -162,6 +170,12 @@ def worst_estimate(scene: Scene, profiles: dict, est, exclude: float) -> tuple[f
     rows = [(error / scale, f"{pid}:{q}") for (pid, q), (error, scale)
             in estimated_shares(scene, profiles, est, exclude).items() if scale > 0]
     return max(rows) if rows else (0.0, "")
+
+
+def share(difference: float, size: float) -> float:
+    """``difference / size``; 0 where both are 0, infinite where only the
+    size is (a zero the compared run misses)."""
+    return difference / size if size > 0 else (0.0 if difference == 0 else float("inf"))
 
 
 def percent(fraction: float) -> str:
@@ -215,8 +229,7 @@ def _compared(scene: Scene, label: str, pid: str, q: str, got: ProfileData, ref:
         return Agreement(label, pid, q, "", nan, nan, nan, nan, nan, nan, nan, 0, len(keep))
     i = int(np.argmax(np.abs(diff)))
     where = np.flatnonzero(keep)[i]
-    peak = float(np.max(np.abs(base)))
-    worst = float(abs(diff[i]) / peak) if peak > 0 else (0.0 if diff[i] == 0 else float("inf"))
+    worst = share(float(abs(diff[i])), float(np.max(np.abs(base))))
     return Agreement(label, pid, q, "", relative_rms(scene, got, ref, q, exclude, scale=None if scale is None
                                                       else np.asarray(scale)[keep]),
                      worst, float(ref.columns["s"][where]), float(ref.columns["x"][where]),
@@ -234,10 +247,10 @@ def profile_agreements(scene: Scene, label: str, got: dict, ref: dict, exclude: 
     rows = []
     for pid, prof in got.items():
         for q in prof.names[3:]:
-            companion = COMPANIONS.get((pid, q))
-            scale = measured_against(scene, companion[1], ref[companion[0]].columns[companion[1]]) if companion else None
+            pair = companion(pid, q, ref)
+            scale = measured_against(scene, pair[1], ref[pair[0]].columns[pair[1]]) if pair else None
             scale = (scales or {}).get((pid, q), scale)
-            kind = "zero" if companion else quantity_class(scene, profiles[pid], q)
+            kind = "zero" if pair else quantity_class(scene, profiles[pid], q)
             row = _compared(scene, label, pid, q, prof, ref[pid], exclude, scale)
             rows.append(Agreement(**{**row.__dict__, "kind": kind}))
     return rows
