@@ -256,13 +256,17 @@ def _chord_regions(itf, vertices: np.ndarray, p: np.ndarray, q: np.ndarray, n: i
     every split keeps), with Γ taken as its chord ``p → q``: convex pieces.
     The area moved, between arc and chord, is at most ``|q − p|³ κ / 12``,
     ``|q − p|`` no longer than the piece: ``2^-MAX_DEPTH`` of the cell.
-    None for a chord of no length."""
+    None for a chord of no length or a piece whose corners all lie on Γ."""
     t = q - p
     if not np.any(t):
         return None
     m = np.array([t[1], -t[0]]) / np.hypot(*t)
-    far = vertices[np.argmax(np.abs((vertices - p) @ m))]  # on Γ's side of the chord, as the chord cuts
-    if ((far - p) @ m) * itf.phi(far[None])[0] < 0:
+    phi = itf.phi(vertices)
+    reach = np.where(phi != 0, np.abs((vertices - p) @ m), -1.0)
+    far = int(np.argmax(reach))  # the corner off Γ farthest from the chord: on Γ's side as on the chord's
+    if reach[far] < 0:
+        return None
+    if ((vertices[far] - p) @ m) * phi[far] < 0:
         m = -m
     out = []
     for side, normal in ((-1, m), (1, -m)):

@@ -249,12 +249,17 @@ def profile_estimates(levels: list[list[ProfileData]], degree: int, method: str 
     return out
 
 
+def _orders(theory: tuple[int, int]) -> str:
+    """``"2"``, or ``"1-2"`` for a range."""
+    low, high = theory
+    return f"{low}" if low == high else f"{low}-{high}"
+
+
 def order_warnings(estimates: dict[str, dict[str, QuantityEstimate]]) -> list[str]:
     """One line per quantity whose observed order is further than
     :data:`~contactcore.tolerances.ORDER_MISMATCH` from the orders theory
     allows."""
-    said = lambda t: f"{t[0]}" if t[0] == t[1] else f"{t[0]}-{t[1]}"  # noqa: E731
-    return [f"{pid}:{q}: observed order {e.order:.2f} against {said(e.theory)} in theory: the runs are not in "
+    return [f"{pid}:{q}: observed order {e.order:.2f} against {_orders(e.theory)} in theory: the runs are not in "
             f"the asymptotic range, the estimate is not to be trusted"
             for pid, qs in estimates.items() for q, e in qs.items()
             if e.observed and not e.theory[0] - tol.ORDER_MISMATCH <= e.order <= e.theory[1] + tol.ORDER_MISMATCH]

@@ -414,6 +414,13 @@ def check_resolution(scene: Scene, h, field: str = "--h") -> float:
     return float(h)
 
 
+#: Names a profile may not take: they sit beside the profiles' ids in a
+#: run's estimate record (summary.json's ``"estimate"``: the ZZ estimate,
+#: the runs' h, Γ's status, the warnings and the worst estimated error),
+#: where a profile of that name would be overwritten.
+RESERVED_PROFILE_IDS = ("energy", "h", "status", "warnings", "worst")
+
+
 def _check_profiles(scene: Scene) -> None:
     seen = set()
     L = scene.length_scale
@@ -421,6 +428,9 @@ def _check_profiles(scene: Scene) -> None:
         path = f"profiles[{i}]"
         if not prof.id or prof.id in seen:
             raise SceneError(f"{path}.id", f"must be a unique, non-empty name (got {prof.id!r})")
+        if prof.id in RESERVED_PROFILE_IDS:
+            raise SceneError(f"{path}.id", f"{prof.id!r} is reserved (a run's estimate record keeps "
+                             f"{', '.join(RESERVED_PROFILE_IDS)} beside the profiles); choose another name")
         check_file_name(prof.id, f"{path}.id")
         seen.add(prof.id)
         if not prof.quantities:

@@ -153,3 +153,15 @@ def test_an_exact_laws_closed_gap_is_measured_against_the_displacement():
     assert np.array_equal(measured_against(wedge, "gN", gaps), gaps)
     assert np.array_equal(measured_against(exact, "tN", gaps), gaps)
     assert np.array_equal(measured_against(exact, "gT", gaps), np.hypot(gaps, floor))
+
+
+def test_the_worst_is_named_by_order_not_by_round_off():
+    """A penalty law's t = k g gives g_T and t_T shares equal but for
+    round-off: the worst is then the first of them in the scene's order,
+    whichever round-off made larger; a real difference still wins."""
+    from verification.agreement import WORST_TIE, first_largest
+
+    rows = [("G:gT", 0.5), ("G:tT", 0.5 * (1 + WORST_TIE / 10)), ("H:ux", 0.1)]
+    assert first_largest(rows, key=lambda r: r[1])[0] == "G:gT"
+    rows[1] = ("G:tT", 0.5 * (1 + 10 * WORST_TIE))
+    assert first_largest(rows, key=lambda r: r[1])[0] == "G:tT"

@@ -110,6 +110,7 @@ BAD_INPUTS = [
     ("A", "profiles.3.quantities", ["gN"], "profiles[3].quantities", "on the interface"),
     ("A", "profiles.0.quantities", ["vonmises"], "profiles[0].quantities", "unknown quantity"),
     ("A", "profiles.1.id", "A1", "profiles[1].id", "unique"),
+    ("A", "profiles.1.id", "worst", "profiles[1].id", "reserved"),
     ("A", "profiles.0.side", "middle", "profiles[0].side", "unknown body"),
     ("A", "loads.0.boundary", "outer", "loads[0].boundary", "no boundary named 'outer'"),
     ("A", "loads.0.type", "wind", "loads[0].type", "must be one of"),

@@ -163,13 +163,29 @@ def estimated_shares(scene: Scene, profiles: dict, est, exclude: float) -> dict[
     return shares
 
 
+#: Relative measures within this of each other name the same worst: a
+#: penalty law's t = k g makes g_T's and t_T's shares equal but for
+#: round-off (they differed in the 15th digit), and the name must not
+#: follow it.
+WORST_TIE = 1e-9
+
+
+def first_largest(items, key):
+    """The first of ``items`` (in their order) whose ``key`` (≥ 0) lies
+    within :data:`WORST_TIE` of the largest."""
+    items = list(items)
+    top = max(key(i) for i in items)
+    return next(i for i in items if key(i) >= top * (1 - WORST_TIE))
+
+
 def worst_estimate(scene: Scene, profiles: dict, est, exclude: float) -> tuple[float, str]:
     """The largest estimated relative RMS error over every profile and
-    quantity of :func:`estimated_shares` and where (``"B5:tT"``); ``(0,
-    "")`` when no quantity has a scale."""
+    quantity of :func:`estimated_shares` and where (``"B5:tT"``; the first
+    in the scene's order of those within :data:`WORST_TIE`); ``(0, "")``
+    when no quantity has a scale."""
     rows = [(error / scale, f"{pid}:{q}") for (pid, q), (error, scale)
             in estimated_shares(scene, profiles, est, exclude).items() if scale > 0]
-    return max(rows) if rows else (0.0, "")
+    return first_largest(rows, key=lambda row: row[0]) if rows else (0.0, "")
 
 
 def share(difference: float, size: float) -> float:
@@ -270,8 +286,9 @@ class AgreementTable:
     gap_floor: float = 0.0  # an exact law's gaps' floor (measured_against), in m; 0 for a penalty law
 
     def worst(self, measure: str = "worst") -> Agreement:
-        """The row with the largest ``measure`` (``"worst"`` or ``"rms"``)."""
-        return max(self.rows, key=lambda a: getattr(a, measure))
+        """The row with the largest ``measure`` (``"worst"`` or ``"rms"``;
+        the first of those within :data:`WORST_TIE`)."""
+        return first_largest(self.rows, key=lambda a: getattr(a, measure))
 
     def excluded(self) -> str:
         """Which samples were left out, in words."""

@@ -41,7 +41,7 @@ from contactcore import tolerances as tol
 from contactcore.budget import MEMORY_SHARE, estimate, machine_memory
 
 from . import files, pool
-from .agreement import agreements, worst_estimate
+from .agreement import agreements, first_largest, worst_estimate
 from .plots import loglog_by_variant
 from .timing import REPEAT_BELOW, REPEATS, fastest
 
@@ -73,8 +73,9 @@ BENCHMARK_LADDERS = {s: {**lad, ("efgm", 2): lad[2][:3]} for s, lad in LADDERS.i
 
 
 def worst_error(scene, got: dict, ref: dict, exclude: float) -> tuple[float, str]:
-    """The largest relative RMS difference over every profile and quantity."""
-    pid, q, _, err = max(agreements(scene, got, ref, exclude), key=lambda row: row[3])
+    """The largest relative RMS difference over every profile and quantity
+    (the first of those within :data:`~verification.agreement.WORST_TIE`)."""
+    pid, q, _, err = first_largest(agreements(scene, got, ref, exclude), key=lambda row: row[3])
     return err, f"{pid}:{q}"
 
 
