@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 
 import tolerances as tol
+from contactcore import load_scene
 from contactcore import estimate as est
 from contactcore import tolerances as core_tol
 from verification import files
@@ -326,3 +327,20 @@ def test_effectivity_takes_a_scene_file_and_refuses_an_unknown_scene(tmp_path, c
     err = capsys.readouterr().err
     assert "'nosuch' is neither a built-in scene" in err and len(err.strip().splitlines()) == 1
     assert solved == ["A-copy"] and not out.exists()  # A was not solved before nosuch was refused
+
+
+def test_two_run_estimates_at_order_three_warn_of_corner_pollution():
+    """Degree-2 displacements and gaps from two runs are estimated at order
+    3, which corners' singularities often deny: a rectangle (scene A) says
+    so and names them; a disc with a circular Γ (no singular point), a
+    lower order or an observed one does not."""
+    from verification.closed_forms import pressurised_rod
+
+    def quantity(order, observed=False):
+        return est.QuantityEstimate(np.zeros(3), float(order), observed, (order, order))
+
+    profiles = {"A5": {"gN": quantity(3), "gT": quantity(3)}, "A1": {"sxy": quantity(2)}}
+    (warning,) = est.pollution_warning(load_scene("A"), profiles)
+    assert warning.startswith("A5:gN, A5:gT: estimated at order 3") and "--estimate 3" in warning
+    assert est.pollution_warning(pressurised_rod().scene, profiles) == []
+    assert est.pollution_warning(load_scene("A"), {"A5": {"gN": quantity(2), "gT": quantity(3, True)}}) == []
