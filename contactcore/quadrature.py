@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from contactcore import DiscretisationError, Scene
+from contactcore import Scene
 from contactcore.cutcell import Rule, curve_rule, cut_cell, edge_crossings, tensor_cells
 from contactcore.geometry import CircleInterface, Disc, Rectangle
 
@@ -46,6 +46,46 @@ def _outer_circle(scene: Scene) -> CircleInterface | None:
     return CircleInterface(dom.centre, dom.radius) if isinstance(dom, Disc) else None
 
 
+#: Quad-tree splits of a background cell that both Γ and a disc's rim
+#: cross (where a straight Γ leaves the disc), until each piece is crossed
+#: by one of them; a piece still crossed by both after the last split reads
+#: each Gauss point's body from its side of Γ, an error in area of at most
+#: the piece, 4^-RIM_SPLITS of the cell (the − body of a straight Γ across
+#: a disc: 3e-10 of its area at 10 cells across, measured 2026-11-27).
+RIM_SPLITS = 10
+
+
+def _gamma_cell(scene: Scene, lo: np.ndarray, hi: np.ndarray, n: int) -> list[Rule]:
+    """A cell inside the domain that Γ may cross: its pieces on each side."""
+    return [Rule(p, wt, np.full(len(wt), int(s > 0))) for s, p, wt in cut_cell(scene.interface, lo, hi, n)]
+
+
+def _quarters(lo: np.ndarray, mid: np.ndarray, hi: np.ndarray):
+    """The four quarters (lower, upper corners) of the cell [lo, hi] about ``mid``."""
+    corners = [(lo, mid), ((mid[0], lo[1]), (hi[0], mid[1])), (mid, hi), ((lo[0], mid[1]), (mid[0], hi[1]))]
+    return [(np.asarray(a, float), np.asarray(b, float)) for a, b in corners]
+
+
+def _rim_cell(scene: Scene, outer, lo: np.ndarray, hi: np.ndarray, n: int, near_gamma: bool,
+              depth: int = 0) -> list[Rule]:
+    """A cell that a disc's rim crosses: its part inside the rim, each Gauss
+    point's body from its side of Γ; where Γ comes within the cell too
+    (``near_gamma``), split in four (up to :data:`RIM_SPLITS` times) and
+    each quarter taken as the rim's, Γ's or neither's."""
+    if not near_gamma or depth >= RIM_SPLITS:
+        return [Rule(p, wt, (scene.interface.phi(p) >= 0).astype(int))
+                for s, p, wt in cut_cell(outer, lo, hi, n) if s < 0]
+    mid, out = (lo + hi) / 2, []
+    for a, b in _quarters(lo, mid, hi):
+        centre, half = (a + b) / 2, np.linalg.norm(b - a) / 2
+        rim = outer.phi(centre[None])[0]
+        if rim <= -half:
+            out += _gamma_cell(scene, a, b, n)
+        elif rim < half:
+            out += _rim_cell(scene, outer, a, b, n, abs(scene.interface.phi(centre[None])[0]) < half, depth + 1)
+    return out
+
+
 def volume_rule(scene: Scene, h: float, n: int) -> Rule:
     """Gauss points of the domain with the body of each, Γ followed exactly."""
     lo, hi = background_cells(scene, h)
@@ -59,16 +99,9 @@ def volume_rule(scene: Scene, h: float, n: int) -> Rule:
     rules = [Rule(pts, w, body)]
     for c in np.flatnonzero(~plain):
         if near_rim[c]:
-            parts = [(s, p, wt) for s, p, wt in cut_cell(outer, lo[c], hi[c], n) if s < 0]
-            for _, p, wt in parts:
-                b = (scene.interface.phi(p) >= 0).astype(int)
-                if near_gamma[c] and len(np.unique(b[wt > 0])) > 1:
-                    raise DiscretisationError("a background cell is cut by both Γ and the outer boundary; "
-                                              "refine h")
-                rules.append(Rule(p, wt, b))
+            rules += _rim_cell(scene, outer, lo[c], hi[c], n, near_gamma[c])
         else:
-            rules += [Rule(p, wt, np.full(len(wt), int(s > 0))) for s, p, wt in cut_cell(scene.interface, lo[c],
-                                                                                        hi[c], n)]
+            rules += _gamma_cell(scene, lo[c], hi[c], n)
     rule = Rule.concatenate(rules)
     keep = rule.weights > 0
     return Rule(rule.points[keep], rule.weights[keep], rule.bodies[keep])

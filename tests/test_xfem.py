@@ -400,6 +400,25 @@ def test_a_straight_gamma_in_a_disc_is_refused_for_every_h():
         assert solved.solver.residual < tol.CONVERGED_RUN_RESIDUAL
 
 
+def test_a_straight_gamma_across_a_disc_is_integrated_and_solved_by_efgm():
+    """Where a straight Γ leaves a disc, background cells are crossed by Γ
+    and the rim: split until each piece is crossed by one (contactcore.
+    quadrature.RIM_SPLITS), the disc's area and the − body's segment are
+    found to tol.DISC_SPLIT_AREA at any h, and efgm, which reads its
+    quadrature from there, solves the scene."""
+    from contactcore.quadrature import volume_rule
+    from efgm import method
+
+    scene = dataclasses.replace(pressurised_rod().scene, interface=LineInterface((0.1, 0.1), tuple(np.array([0.3, 1.0]) / np.hypot(0.3, 1.0)))).validated()
+    disc = scene.domain
+    for h in (0.2, 0.1):
+        rule = volume_rule(scene, h, 3)
+        assert rule.weights.sum() == pytest.approx(np.pi * disc.radius ** 2, rel=tol.DISC_SPLIT_AREA)
+        minus = rule.weights[rule.bodies == 0].sum()
+        assert minus == pytest.approx(scene.interface.minus_area(disc), rel=tol.DISC_SPLIT_AREA)
+    assert method.solve(scene, 0.2).solver.residual < tol.CONVERGED_RUN_RESIDUAL
+
+
 def test_general_level_set_is_for_xfem_only():
     from contactcore import SceneError
     from efgm import method

@@ -144,6 +144,12 @@ GENERAL_AREA = 1e-6
 #: |q − p|³ κ / 12 each; measured 2.5e-8 of the disc's area (radius 0.2,
 #: 0.1 cells, lowest point inside an edge), bound 8x.
 TANGENT_AREA = 2e-7
+
+#: A straight Γ across a disc: the background cells that Γ and the rim both
+#: cross are split ten times (contactcore.quadrature.RIM_SPLITS); the disc's
+#: and the − segment's areas measured to 3e-10 (a disc of 10 cells across),
+#: 1e-12 at 80.  Bound 30x.
+DISC_SPLIT_AREA = 1e-8
 GENERAL_LENGTH = 1e-5
 GENERAL_VS_CIRCLE = 1e-6
 
