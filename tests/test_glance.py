@@ -314,4 +314,6 @@ def test_the_reference_is_chosen_with_reference(tmp_path):
 def test_a_bad_reference_is_refused_by_the_parser(capsys):
     with pytest.raises(SystemExit) as ended:
         verification_main.main(["run", "A", "--reference", "fe:3", "--out", "unused"])
-    assert ended.value.code == 2 and "expected METHOD:DEGREE" in capsys.readouterr().err
+    err = capsys.readouterr().err.strip().splitlines()
+    assert ended.value.code == 2 and len(err) == 1 and err[0].startswith("error: run: "), err
+    assert "expected METHOD:DEGREE" in err[0]

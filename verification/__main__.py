@@ -202,11 +202,21 @@ def _commands() -> dict[str, Command]:
     }
 
 
+class OneLineParser(argparse.ArgumentParser):
+    """argparse, whose refusal of a command line ends as every other bad
+    input does: one line ``error: COMMAND: problem``, exit status 2 (not
+    the usage block; ``--help`` shows it)."""
+
+    def error(self, message: str):
+        command = self.prog.removeprefix("python -m verification").strip()
+        self.exit(2, f"error: {command + ': ' if command else ''}{message}\n")
+
+
 def _parser(commands: dict[str, Command] | None = None) -> argparse.ArgumentParser:
     """The argparse parser of the command table (:func:`_commands` by default)."""
     commands = _commands() if commands is None else commands
-    parser = argparse.ArgumentParser(prog="python -m verification")
-    common = argparse.ArgumentParser(add_help=False)
+    parser = OneLineParser(prog="python -m verification")
+    common = OneLineParser(add_help=False)
     talk = common.add_mutually_exclusive_group()
     talk.add_argument("-q", "--quiet", action="store_const", dest="verbosity", const=-1, default=0,
                       help="errors and warnings only")
