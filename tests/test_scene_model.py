@@ -12,7 +12,7 @@ import pytest
 from contactcore import (CircleInterface, LineInterface, Rectangle, SceneError, builtin_scenes, load_scene,
                          scene_from_dict, scene_text)
 from contactcore.profiles import sample_points
-from contactcore.scene import Torque, Traction
+from contactcore.scene import InterfaceProfile, Torque, Traction
 import tolerances as tol
 
 
@@ -245,3 +245,14 @@ def test_a_level_set_scene_has_no_toml_form():
                                                                        lambda x: 0 * x + [0.0, 1.0]))
     with pytest.raises(SceneError, match="interface: a general level set"):
         scene_toml(level_set)
+
+
+@pytest.mark.parametrize("name,along", [("examples/wedge.toml", "arclength"), ("C", "angle")])
+def test_an_interface_profile_takes_the_parameter_its_gamma_has(scene_dict, name, along):
+    """Without ``parameter``, s along a straight Γ is its arc length and
+    along a circle its polar angle (an angle on a line would be refused)."""
+    data = scene_dict(name)
+    for prof in data["profiles"]:
+        prof.pop("parameter", None)
+    scene = scene_from_dict(data)
+    assert [p.parameter for p in scene.profiles if isinstance(p, InterfaceProfile)] == [along]
