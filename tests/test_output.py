@@ -217,3 +217,11 @@ def test_a_profile_figure_is_titled_by_its_id_without_dangling_separators(title,
     fig = plots.profile_figure(title, {"fe (p1)": _profile("gamma", s, tT=s)})
     assert fig.axes[0].get_title() == shown
     plots.pyplot().close(fig)
+
+
+def test_a_table_cell_with_a_pipe_or_a_line_break_keeps_its_row():
+    """A failed point's two-line solver message in study.md's table."""
+    from verification.files import markdown_table
+    table = markdown_table([{"status": "failed", "message": "residual 1e-2 | too large\n  either the load"}],
+                           ["status", "message"])
+    assert table.splitlines()[2] == "| failed | residual 1e-2 \\| too large either the load |"

@@ -198,8 +198,9 @@ def cell(value) -> str:
 
 
 def md_escape(text) -> str:
-    """``text`` safe inside a Markdown table cell: its pipes escaped."""
-    return str(text).replace("|", "\\|")
+    """``text`` safe inside a Markdown table cell: its pipes escaped, its
+    lines joined (a line break would end the row)."""
+    return " ".join(str(text).replace("|", "\\|").split())
 
 
 def markdown_table(rows: list[dict], columns: list[str], headers: list[str] | None = None) -> str:
