@@ -315,20 +315,24 @@ def status_along(scene: Scene, path) -> np.ndarray:
     return path.final.status[nearest]
 
 
-def status_change(scene: Scene, coarse_path, fine_path) -> dict:
-    """The final status of two runs compared along Γ: the share of Γ in
-    each status per run, and the samples whose status differs."""
+def status_change(scene: Scene, coarse_path, fine_path, hs: tuple[float, float] | None = None) -> dict:
+    """The final status of two runs (at ``hs``, coarse and fine) compared
+    along Γ: the share of Γ in each status per run, and the samples whose
+    status differs."""
     from .laws import STATUS_NAMES
     s0, s1 = status_along(scene, coarse_path), status_along(scene, fine_path)
     shares = lambda s: {n: float(np.mean(s == i)) for i, n in enumerate(STATUS_NAMES)}  # noqa: E731
-    return {"coarse": shares(s0), "fine": shares(s1), "differ": int(np.sum(s0 != s1)), "samples": len(s0)}
+    return {"coarse": shares(s0), "fine": shares(s1), "differ": int(np.sum(s0 != s1)), "samples": len(s0),
+            "h": list(hs) if hs else None}
 
 
 def status_warning(change: dict) -> list[str]:
+    """A line when the two compared runs' status differs somewhere along Γ."""
     if not change or change["differ"] == 0:
         return []
     show = lambda s: ", ".join(f"{v:.0%} {k}" for k, v in s.items())  # noqa: E731
-    return [f"the status along Γ differs between h and h/2 at {change['differ']} of {change['samples']} samples "
+    runs = f"h = {change['h'][0]:g} and {change['h'][1]:g}" if change.get("h") else "the two finest runs"
+    return [f"the status along Γ differs between {runs} at {change['differ']} of {change['samples']} samples "
             f"({show(change['coarse'])} → {show(change['fine'])}): the estimate is not asymptotic there"]
 
 
@@ -470,7 +474,7 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     warnings = order_warnings(profiles) + pollution_warning(scene, profiles)
     status = None
     if scene.law.has_history or not scene.law.is_linear:
-        status = status_change(scene, results[-2].interface, results[-1].interface)
+        status = status_change(scene, results[-2].interface, results[-1].interface, hs[-2:])
         warnings += status_warning(status)
     zz = energy_estimate(scene, results[-1].fields, hs[-1], exclude) if energy else None
     return Estimate(hs, profiles, zz, status, warnings, levels[-1])

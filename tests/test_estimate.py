@@ -344,3 +344,13 @@ def test_two_run_estimates_at_order_three_warn_of_corner_pollution():
     assert warning.startswith("A5:gN, A5:gT: estimated at order 3") and "--estimate 3" in warning
     assert est.pollution_warning(pressurised_rod().scene, profiles) == []
     assert est.pollution_warning(load_scene("A"), {"A5": {"gN": quantity(2), "gT": quantity(3, True)}}) == []
+
+
+def test_a_changed_status_names_the_runs_it_compares():
+    """With three runs the status is compared between the two finest: the
+    warning names their h, not "h and h/2"."""
+    change = {"coarse": {"open": 0.5, "stick": 0.5}, "fine": {"open": 0.4, "stick": 0.6}, "differ": 3,
+              "samples": 101, "h": [0.05, 0.025]}
+    (warning,) = est.status_warning(change)
+    assert warning.startswith("the status along Γ differs between h = 0.05 and 0.025 at 3 of 101 samples")
+    assert est.status_warning({**change, "differ": 0}) == []
