@@ -179,10 +179,10 @@ class CutIntegration:
         whose area lies in cut cells (:meth:`cut_share`): a body thinner
         than about two cells, resolved across its thickness by one cell's
         polynomial."""
-        return [f"xfem: {share:.0%} of body {body.label}'s area lies in cells that Γ cuts: across its thickness "
-                "its field is one cell's polynomial, and its tractions on Γ converge slowly (a 2.9° wedge against a "
-                "clamped edge, 79 % in cut cells: mean t_N 23 % below fe's); refine h until the share falls below "
-                f"{tol.THIN_BODY_CUT_SHARE:.0%}, or use fe"
+        return [f"{share:.0%} of body {body.label}'s area lies in cells that Γ cuts: the body is about two cells "
+                "across or less, its field there one cell's polynomial, and its tractions on Γ converge slowly (a "
+                "thin wedge with 79 % in cut cells had its mean t_N 23 % below fe's); refine h until the share falls "
+                f"below {tol.THIN_BODY_CUT_SHARE:.0%}, or use fe"
                 for body in Body for share in [self.cut_share(body)] if share > tol.THIN_BODY_CUT_SHARE]
 
 
