@@ -381,16 +381,17 @@ def _check_loads(scene: Scene) -> None:
 
 
 #: A name that becomes a file name (a scene's, a profile's id): letters,
-#: digits, '-', '_' and '.', not leading with '.' — nothing that can leave
-#: the result folder ('/', '..') or hide a file.
-FILE_NAME = re.compile(r"[A-Za-z0-9_-][A-Za-z0-9_.-]*")
+#: digits, '-', '_' and '.', starting with a letter, a digit or '_' —
+#: nothing that can leave the result folder ('/', '..'), hide a file
+#: ('.') or read as a command's option ('-').
+FILE_NAME = re.compile(r"[A-Za-z0-9_][A-Za-z0-9_.-]*")
 
 
 def check_file_name(value, field: str) -> None:
     """Raise :class:`SceneError` unless ``value`` is a safe file name."""
     if not isinstance(value, str) or not FILE_NAME.fullmatch(value):
-        raise SceneError(field, f"must be a file-safe name: letters, digits, '-', '_', '.' not leading "
-                         f"(got {value!r})")
+        raise SceneError(field, f"must be a file-safe name: letters, digits, '-', '_', '.', starting with a "
+                         f"letter, a digit or '_' (got {value!r})")
 
 
 def smallest_dimension(domain) -> float:
