@@ -160,6 +160,8 @@ def test_run_estimate_writes_the_errors(tmp_path):
                 keep = np.minimum(x, 1.0 - x) >= 0.1 * np.sqrt(2.0)
                 assert record["kept_rms"] == pytest.approx(np.sqrt(np.mean(err[keep] ** 2)), rel=tol.SAME_SUMS)
     assert json.loads((out / "run.json").read_text())["estimate"] == 2
+    units = json.loads(files.write_units(out).read_text())
+    assert units["xfem/profiles/A1.csv"]["sxy_err"] == units["xfem/profiles/A1.csv"]["sxy"] == "Pa"
     alone = tmp_path / "reference_alone"
     run("A", ["fe"], alone, h=0.1, degree=2, draw=False)
     dofs = json.loads((alone / "fe" / "summary.json").read_text())["dofs"]

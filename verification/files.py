@@ -247,14 +247,26 @@ COLUMN_UNITS = {
 }
 
 
+#: The suffix of an estimated error's column (``q_err``, in q's unit).
+ERROR_SUFFIX = "_err"
+
+
+def column_unit(column: str) -> str | None:
+    """A CSV column's unit: :data:`COLUMN_UNITS`'s, an estimated error's
+    its quantity's; ``s`` reads ``m or rad`` (arc length, or polar angle on
+    a circular Γ); None for a column without one."""
+    if column == "s":
+        return "m or rad"
+    return COLUMN_UNITS.get(column.removesuffix(ERROR_SUFFIX))
+
+
 def write_units(folder: Path) -> Path:
     """``folder/units.json``: for every CSV under ``folder`` (by its path
-    relative to it), the unit of each of its columns that has one; ``s``
-    reads ``m or rad``: arc length, or polar angle on a circular Γ."""
+    relative to it), the unit of each of its columns that has one
+    (:func:`column_unit`)."""
     units = {}
     for path in sorted(Path(folder).rglob("*.csv")):
         with open(path, newline="") as fh:
             header = next(csv.reader(fh), [])
-        units[path.relative_to(folder).as_posix()] = {c: ("m or rad" if c == "s" else COLUMN_UNITS[c])
-                                                      for c in header if c == "s" or c in COLUMN_UNITS}
+        units[path.relative_to(folder).as_posix()] = {c: column_unit(c) for c in header if column_unit(c)}
     return write_json(Path(folder) / UNITS_FILE, units)
