@@ -72,9 +72,19 @@ def _summary_table(summaries: list[dict]) -> str:
                      f"{t['solve']:.3f} | {t['total']:.3f} |{_estimate_cells(s) if estimated else ''} "
                      f"{sv['residual']:.1e} | {cond} |")
     footnote = [NOT_ESTIMATED] if estimated and any("estimate" not in s for s in summaries) else []
+    footnote += _ladder_note(summaries) if estimated else []
     warnings = [f"- {s['method']}: {w}" for s in summaries
                 for w in s["solver"]["warnings"] + s.get("estimate", {}).get("warnings", [])]
     return "\n".join(lines + footnote + ([""] + ["Warnings:"] + warnings if warnings else [])) + "\n"
+
+
+def _ladder_note(summaries: list[dict]) -> list[str]:
+    """Under an estimated table: the runs' h, which of them the figures
+    are, and how each estimate is made."""
+    ladder = next(s["estimate"]["h"] for s in summaries if "estimate" in s)
+    return [f"\nEstimated from runs at h = {', '.join(f'{h:g}' for h in ladder)}: every figure here is the run at "
+            f"{ladder[-1]:g}. A quantity's error is Richardson's at the order in summary.json (a degree-1 stress "
+            "between its two orders), the energy's Zienkiewicz–Zhu's (docs/error-estimates.md)."]
 
 
 #: The mark of a row's estimate cells where its run was not estimated, and
