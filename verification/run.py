@@ -131,7 +131,10 @@ def _solve_estimated(solve, scene, h, levels: int | None, **options):
     without ``levels``)."""
     if not levels:
         return solve(scene, h, **options), None
-    results = [solve(scene, hk, **options) for hk in estimates.levels_of(h, levels)]
+    results, ladder = [], estimates.levels_of(h, levels)
+    for k, hk in enumerate(ladder, 1):
+        log.info("the estimate's run %d of %d, at h = %g%s", k, len(ladder), hk, " (the answer)" * (k == len(ladder)))
+        results.append(solve(scene, hk, **options))
     return results[-1], estimates.estimate_runs(scene, results, default_exclusion(scene))
 
 
