@@ -192,3 +192,18 @@ def test_with_an_estimate_the_exact_run_is_estimated_as_the_penalty_run(tmp_path
     worst = summary["estimate"]["worst"]
     row = next(line for line in (out / "summary.md").read_text().splitlines() if line.startswith("| fe (exact) |"))
     assert f"| {worst['relative']:.2e} ({worst['at']}) |" in row and run_driver.NOT_ESTIMATED_MARK not in row
+
+
+def test_a_gamma_component_without_its_partner_is_measured_against_its_own_size():
+    """A line profile along Γ holding g_N and t_T but not g_T, t_N: each is
+    measured against its own |value|, the gap floored as on an interface
+    profile (it was measured against its unfloored self: 1e6 %)."""
+    from contactcore.profiles import ProfileData
+    from verification.against_exact import scales
+
+    scene = load_scene("C-coulomb")
+    gN, tT = np.array([0.0, 1e-9, -2e-9]), np.array([1.0, -2.0, 3.0])
+    prof = ProfileData("L", "arclength", {"s": np.arange(3.0), "x": np.zeros(3), "y": np.zeros(3), "gN": gN,
+                                          "tT": tT})
+    got = scales(scene, {"L": prof})
+    assert np.allclose(got["L", "gN"], np.hypot(gN, gap_floor(scene))) and np.allclose(got["L", "tT"], np.abs(tT))

@@ -21,7 +21,9 @@ measured against the exact jump's magnitude |g| = √(g_N² + g_T²) floored
 as the agreement floors an exact law's gaps (√(|g|² + f²), f a tenth of
 the displacement scale: :func:`verification.agreement.gap_floor`), and a
 traction component against |t|, because the exact g_N of a closed contact
-is zero (but for the enforcement's residue).  A share of the vector hides
+is zero (but for the enforcement's residue); a profile that holds one
+component of a vector alone measures it against its own |value|, a gap
+floored alike.  A share of the vector hides
 how much of a small component the penalty misses (C-coulomb's t_T, a fifth
 of |t|, missed almost whole), so the **share of its own size** is kept
 beside it: max |Δ| over the component's own largest exact |value|, a gap
@@ -95,14 +97,18 @@ VECTORS = {"gN": ("gN", "gT"), "gT": ("gN", "gT"), "tN": ("tN", "tT"), "tT": ("t
 
 def scales(scene: Scene, exact: dict) -> dict:
     """``(profile id, quantity) -> per-sample |g| or |t|`` of the exact
-    answer, for each Γ component on a profile that holds both of its
-    vector's components, |g| floored as the agreement floors an exact law's
-    gaps (:func:`~verification.agreement.gap_floor` of ``scene``; module
-    doc)."""
-    floor = gap_floors(scene)
-    return {(pid, q): np.hypot(np.hypot(prof.columns[a], prof.columns[b]), floor.get(q, 0.0))
-            for pid, prof in exact.items() for q, (a, b) in VECTORS.items()
-            if {q, a, b} <= set(prof.names)}
+    answer for each Γ component a profile holds (its own |value| where the
+    profile lacks the vector's other component), a gap floored as the
+    agreement floors an exact law's gaps
+    (:func:`~verification.agreement.gap_floor` of ``scene``; module doc)."""
+    floor, out = gap_floors(scene), {}
+    for pid, prof in exact.items():
+        for q, (a, b) in VECTORS.items():
+            if q in prof.names:
+                size = (np.hypot(prof.columns[a], prof.columns[b]) if {a, b} <= set(prof.names)
+                        else np.abs(prof.columns[q]))
+                out[pid, q] = np.hypot(size, floor.get(q, 0.0))
+    return out
 
 
 def differences(scene: Scene, label: str, penalty: dict, exact: dict) -> list[Agreement]:
@@ -156,7 +162,8 @@ def section(scene: Scene, law_name: str, records: dict[str, dict]) -> str:
              f"RMS(Δ) / RMS(scale), over the samples at least {exclude:.3g} from the scene's singular points. "
              "The scale is the exact quantity itself, except on Γ: g_N and g_T are measured against the exact "
              f"jump's magnitude |g| floored as √(|g|² + ({gap_floor(scene):.3g} m)²), a tenth of the "
-             "displacement scale, t_N and t_T against |t| (the exact g_N of a closed contact is zero). "
+             "displacement scale, t_N and t_T against |t| (the exact g_N of a closed contact is zero); a profile "
+             "holding one component of a vector alone, against its own |value|, a gap floored alike. "
              "Beside it, max |Δ| as a share of the component's own largest exact |value| (a gap floored as "
              "above): what a vector's share hides of a small component. The last three columns are in the "
              "quantity's unit.\n",
