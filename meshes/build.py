@@ -241,7 +241,8 @@ def polygon_warnings(scene: Scene, h: float) -> list[str]:
     if segments >= tol.CIRCLE_SEGMENTS_WARN:
         return []
     short = 1 - math.sin(math.pi / segments) / (math.pi / segments)
+    stays = (f" and stay so until h < 2πR/{GMSH_MIN_CIRCLE_POINTS} = {2 * math.pi / GMSH_MIN_CIRCLE_POINTS:.3g} R "
+             f"(gmsh's fewest segments)" if segments == GMSH_MIN_CIRCLE_POINTS else "")
     return [f"the circle Γ is meshed with about {segments} straight segments at h = {h / itf.radius:.3g} R, a "
-            f"polygon {short:.1%} shorter than Γ: the interface forces stay about that far off until h < "
-            f"2πR/{GMSH_MIN_CIRCLE_POINTS} = {2 * math.pi / GMSH_MIN_CIRCLE_POINTS:.3g} R; refine h below "
-            f"{2 * math.pi / tol.CIRCLE_SEGMENTS_WARN:.3g} R, or use degree 2 (curved cells)"]
+            f"polygon {short:.1%} shorter than Γ: the interface forces are about that far off{stays}; refine h "
+            f"below {2 * math.pi / tol.CIRCLE_SEGMENTS_WARN:.3g} R, or use degree 2 (curved cells)"]

@@ -155,6 +155,9 @@ def test_a_circle_drawn_with_few_segments_is_warned():
     from contactcore import CircleInterface, load_scene
     small = load_scene("B").with_changes(interface=CircleInterface((0.0, 0.0), 0.02))
     said = [w for w in conforming.solve(small, 0.05, degree=1).solver.warnings if "straight segments" in w]
-    assert len(said) == 1 and "about 7 straight segments" in said[0], said
+    assert len(said) == 1 and "about 7 straight segments" in said[0] and "stay so until h < 2πR/7" in said[0], said
+    from meshes.build import polygon_warnings
+    (between,) = polygon_warnings(small.with_changes(interface=CircleInterface((0.0, 0.0), 0.1)), 0.05)
+    assert "about 13 straight segments" in between and "stay so" not in between, between
     assert not any("straight segments" in w for w in conforming.solve(small, 0.05, degree=2).solver.warnings)
     assert not any("straight segments" in w for w in conforming.solve(load_scene("B"), 0.05, degree=1).solver.warnings)
