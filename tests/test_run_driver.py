@@ -69,6 +69,15 @@ def test_interrupted_write_leaves_nothing_under_the_final_name(tmp_path):
     assert target.read_text() == "whole" and list(tmp_path.iterdir()) == [target]
 
 
+def test_efficiency_refuses_a_reference_coarser_than_its_ladder(tmp_path, capsys):
+    assert main(["efficiency", "A", "--method", "fe", "--h", "0.2", "0.1", "--ref-h", "0.5",
+                 "--out", str(tmp_path / "eff")]) == 2
+    assert capsys.readouterr().err.strip() == ("error: --ref-h: 0.5 is coarser than the ladder's finest h, 0.1: the "
+                                               "reference stands for the exact answer, so it must be at least as "
+                                               "fine as every rung")
+    assert not (tmp_path / "eff").exists()
+
+
 def test_efficiency_table_and_plot(tmp_path):
     """Error against run time: one row per run; the error of the reference's
     own discretisation is round-off, a coarser one's is not."""

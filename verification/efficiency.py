@@ -36,7 +36,7 @@ import logging
 from pathlib import Path
 
 from contactcore import estimate as estimates
-from contactcore import load_scene, sample_profiles
+from contactcore import SceneError, load_scene, sample_profiles
 from contactcore import tolerances as tol
 from contactcore.budget import MEMORY_SHARE, estimate, machine_memory
 
@@ -159,6 +159,10 @@ def efficiency(scene_name: str, variants, ladders: dict, ref_h: float | None, ex
     ``ref_h`` it must be."""
     scene = load_scene(scene_name)
     rungs, rows = _rungs(variants, ladders), []
+    finest = min(h for _, _, h, _ in rungs)
+    if ref_h is not None and ref_h > finest:
+        raise SceneError("--ref-h", f"{ref_h:g} is coarser than the ladder's finest h, {finest:g}: the "
+                         "reference stands for the exact answer, so it must be at least as fine as every rung")
     fresh = spawn_each(scene, rungs, ref_h, estimated)
     ref = ref_dofs = None
     if ref_h is not None:
