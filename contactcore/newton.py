@@ -706,6 +706,8 @@ class _Newton:
             try:
                 self.step(k)
                 start = k
+            except SolverOptionError:
+                raise  # a refused solver option: no smaller step helps
             except SolverError as exc:
                 failures.append(f"step {start:g} → {k:g}: {exc}")
                 if depth >= tol.MAX_CUTBACKS:

@@ -91,6 +91,9 @@ def test_a_bad_option_in_a_whole_solve_keeps_its_type_and_no_hint():
     with pytest.raises(PETScOptionError, match="mat_mumps_icntl_14=abc") as info:
         discretisation.solve(load_scene("A"), FE(petsc_options={"mat_mumps_icntl_14": "abc"}), 0.5)
     assert "rigid-body" not in str(info.value)
+    with pytest.raises(PETScOptionError, match="pc_type") as info:  # a law with history: no cut-back tried
+        discretisation.solve(load_scene("C-coulomb"), FE(petsc_options={"pc_type": "bogus"}), 0.5)
+    assert "cut-back" not in str(info.value) and "\n" not in str(info.value)
 
 
 def test_options_petsc_never_read_are_warned_about():
