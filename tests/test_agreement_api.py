@@ -165,3 +165,23 @@ def test_the_worst_is_named_by_order_not_by_round_off():
     assert first_largest(rows, key=lambda r: r[1])[0] == "G:gT"
     rows[1] = ("G:tT", 0.5 * (1 + 10 * WORST_TIE))
     assert first_largest(rows, key=lambda r: r[1])[0] == "G:tT"
+
+
+def test_a_quantity_zero_in_the_reference_is_measured_against_a_floor_a_user_gives():
+    """σxy of a uniform pressure is zero: the reference's is round-off, and
+    a method 1e-9 Pa off then differs by 1e5 % of it; with floors={"sxy":
+    1e3} (Pa) it is measured against sqrt(σxy² + (1e3 Pa)²), and the
+    failure message names that scale.  A bad floor is refused by name."""
+    scene = load_scene("A")
+    scene = scene.with_changes(profiles=tuple(p for p in scene.profiles if p.id == "A1"))
+    s = np.linspace(0.0, 1.0, 101)
+    prof = lambda v: ProfileData("A1", "arclength", {"s": s, "x": s, "y": np.full_like(s, 0.5), "sxy": v})  # noqa: E731
+    ref, mine, floor = 1e-14, 1e-9, 1e3
+    runs = {"ref": {"A1": prof(np.full_like(s, ref))}, "mine": {"A1": prof(np.full_like(s, mine))}}
+    [bare] = table(scene, runs, "ref").rows
+    [floored] = table(scene, runs, "ref", floors={"sxy": floor}).rows
+    assert bare.worst == pytest.approx((mine - ref) / ref) and floored.worst == pytest.approx((mine - ref) / floor)
+    assert "largest sqrt(sxy² + (1e+03 Pa)²) (floored)" in floored.describe()
+    for bad, why in (({"vonmises": 1.0}, "unknown quantity"), ({"sxy": -1.0}, "finite number ≥ 0")):
+        with pytest.raises(ContactError, match=f"floors: .*{why}"):
+            table(scene, runs, "ref", floors=bad)

@@ -75,6 +75,11 @@ def floors(scene: Scene) -> dict[str, float]:
     return gap_floors(scene) if is_exact(scene.law) else {}
 
 
+def measured_floor(scene: Scene, quantity: str) -> float:
+    """The floor :func:`measured_against` gives ``quantity`` on ``scene`` (0 if none)."""
+    return floors(scene).get(quantity, 0.0)
+
+
 def measured_against(scene: Scene, quantity: str, values: np.ndarray) -> np.ndarray:
     """The per-sample values a profile quantity is measured against: its
     own ``values``, but an exactly enforced law's gap ``sqrt(g² + f²)``,
@@ -227,8 +232,9 @@ class Agreement:
 
     def describe(self, against: str = "the reference") -> str:
         """One line naming the profile, the quantity, the worst sample and its values."""
-        scale = (f"sqrt({self.quantity}² + ({self.floor:.3g} m)²) (an exact law's gap, floored)" if self.floor
-                 else f"|{self.quantity}|")
+        from .files import COLUMN_UNITS
+        scale = (f"sqrt({self.quantity}² + ({self.floor:.3g} {COLUMN_UNITS[self.quantity]})²) (floored)"
+                 if self.floor else f"|{self.quantity}|")
         return (f"{self.method} against {against}: {self.profile} {self.quantity} at s = {self.s:.4g} "
                 f"(x = {self.x:.4g}, y = {self.y:.4g}): {self.value:.4g} against {self.reference:.4g}, a difference "
                 f"of {percent(self.worst)} of the reference's largest {scale} (RMS {percent(self.rms)})")
@@ -311,14 +317,38 @@ class AgreementTable:
         return "\n".join(lines) + "\n"
 
 
-def table(scene: Scene, runs: dict[str, dict], reference: str, exclude: float | None = None) -> AgreementTable:
+def user_floors(floors: dict | None) -> dict[str, float]:
+    """``floors`` (quantity -> a value in its unit, ≥ 0) checked: a
+    ContactError names a quantity that does not exist or a bad value."""
+    from contactcore.scene import QUANTITIES
+    checked = {}
+    for q, value in (floors or {}).items():
+        if q not in QUANTITIES:
+            raise ContactError(f"floors: unknown quantity {q!r} (known: {', '.join(QUANTITIES)})")
+        if isinstance(value, bool) or not isinstance(value, (int, float)) or not np.isfinite(value) or value < 0:
+            raise ContactError(f"floors: {q} must be a finite number ≥ 0 in its unit (got {value!r})")
+        checked[q] = float(value)
+    return checked
+
+
+def table(scene: Scene, runs: dict[str, dict], reference: str, exclude: float | None = None,
+          floors: dict | None = None) -> AgreementTable:
     """The :class:`AgreementTable` of sampled profiles ``runs`` (label ->
-    id -> ProfileData), ``runs[reference]`` the reference."""
+    id -> ProfileData), ``runs[reference]`` the reference.  ``floors``
+    (quantity -> value in its unit) measures a quantity against
+    ``sqrt(q_ref² + floor²)``: the size below which a difference does not
+    count, for a quantity that is zero in the reference (a patch test's
+    σxy), where its own round-off would be its scale."""
     exclude = default_exclusion(scene) if exclude is None else exclude
-    rows = [row for label, got in runs.items() if label != reference
-            for row in profile_agreements(scene, label, got, runs[reference], exclude)]
+    ref, given = runs[reference], user_floors(floors)
+    floor = {(pid, q): max(given[q], measured_floor(scene, q)) for pid, prof in ref.items()
+             for q in prof.names[3:] if q in given and not companion(pid, q, ref)}
+    scales = {key: np.hypot(ref[key[0]].columns[key[1]], f) for key, f in floor.items()}
+    rows = [Agreement(**{**row.__dict__, "floor": floor.get((row.profile, row.quantity), row.floor)})
+            for label, got in runs.items() if label != reference
+            for row in profile_agreements(scene, label, got, ref, exclude, scales)]
     regions = tuple((name, tuple(map(tuple, pts.tolist()))) for name, pts in singular_regions(scene))
-    return AgreementTable(scene.name, reference, exclude, regions, tuple(rows), floors(scene).get("gN", 0.0))
+    return AgreementTable(scene.name, reference, exclude, regions, tuple(rows), measured_floor(scene, "gN"))
 
 
 def variant(spec) -> tuple[str, int]:
@@ -347,14 +377,16 @@ def sampled(scene: Scene, result) -> dict:
 
 
 def compare(scene, methods, h: float | None = None, *, reference="fe:2", exclude: float | None = None,
-            **options) -> AgreementTable:
+            floors: dict | None = None, **options) -> AgreementTable:
     """Solve ``scene`` (a Scene, a shipped scene's name or a TOML path) with
     each of ``methods`` (``"fe"``, ``"xfem:2"``, ``("efgm", 2)``, ...) and
     with ``reference`` at resolution ``h`` (default: the scene's), sample its
     profiles, and return the :class:`AgreementTable` of the methods against
-    the reference.  ``options`` (``cell="triangle"``, ``dmax=3``, ...) go to
-    the methods that take them; one that none takes is refused."""
+    the reference (``floors``: see :func:`table`).  ``options``
+    (``cell="triangle"``, ``dmax=3``, ...) go to the methods that take
+    them; one that none takes is refused."""
     from . import methods as known
+    user_floors(floors)  # a bad floor ends here, before any solve
     scene = load_scene(scene)
     variants = [variant(m) for m in methods]
     ref = variant(reference)
@@ -364,18 +396,20 @@ def compare(scene, methods, h: float | None = None, *, reference="fe:2", exclude
     for name, degree in dict.fromkeys([ref, *variants]):
         result = known.solver(name)(scene, h, degree=degree, **known.options_for(name, **options))
         runs[label(name, degree)] = sampled(scene, result)
-    return table(scene, runs, label(*ref), exclude)
+    return table(scene, runs, label(*ref), exclude, floors)
 
 
 def assert_methods_agree(scene, methods, h: float | None = None, rtol: float = 0.05, *, reference="fe:2",
-                         measure: str = "worst", exclude: float | None = None, **options) -> AgreementTable:
+                         measure: str = "worst", exclude: float | None = None, floors: dict | None = None,
+                         **options) -> AgreementTable:
     """Assert that every method agrees with ``reference`` on every profile
     and quantity of ``scene`` to ``rtol``, measured as ``measure``: the worst
     sample (``"worst"``, the default) or the RMS (``"rms"``), relative to the
     reference's scale (see :func:`compare`).  The AssertionError names the
     worst offender first (method, profile, quantity, the sample and both
-    values), then the others; the table is returned when all agree."""
-    result = compare(scene, methods, h, reference=reference, exclude=exclude, **options)
+    values), then the others; the table is returned when all agree.
+    ``floors`` (quantity -> value in its unit): see :func:`table`."""
+    result = compare(scene, methods, h, reference=reference, exclude=exclude, floors=floors, **options)
     failed = sorted((a for a in result.rows if not getattr(a, measure) <= rtol),
                     key=lambda a: -getattr(a, measure))
     if failed:
