@@ -424,6 +424,11 @@ def energy_estimate(scene: Scene, fields, h: float, exclude: float = 0.0, gauss:
 
 # ----- one estimate of a run ---------------------------------------------------
 
+#: The suffix of an estimated error's column beside its quantity
+#: (``q_err``, in q's unit).
+ERROR_SUFFIX = "_err"
+
+
 @dataclass
 class Estimate:
     """Everything estimated about the finest of a method's runs at ``hs``
@@ -441,8 +446,8 @@ class Estimate:
     sampled: list[ProfileData] = field(default_factory=list)
 
     def error_columns(self, pid: str) -> dict[str, np.ndarray]:
-        """``{q + "_err": per-sample error}`` of profile ``pid``."""
-        return {f"{q}_err": e.error for q, e in self.profiles.get(pid, {}).items()}
+        """``{q + ERROR_SUFFIX: per-sample error}`` of profile ``pid``."""
+        return {f"{q}{ERROR_SUFFIX}": e.error for q, e in self.profiles.get(pid, {}).items()}
 
     def summary(self) -> dict:
         """JSON-ready: ``{PROFILE: {QUANTITY: {max, rms, order, observed}}}``

@@ -55,6 +55,19 @@ def _outer_circle(scene: Scene) -> CircleInterface | None:
 RIM_SPLITS = 10
 
 
+def _centre_value(level_set, lo: np.ndarray, hi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Each cell's (lower ``lo``, upper ``hi`` corners, (C, 2)) level-set
+    value at its centre and its half-diagonal: the cell may meet the curve
+    where |value| < half, lies on its − side where value ≤ −half."""
+    return level_set.phi((lo + hi) / 2), np.linalg.norm(hi - lo, axis=1) / 2
+
+
+def _near(level_set, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
+    """Whether each cell may meet the level set's curve (:func:`_centre_value`)."""
+    value, half = _centre_value(level_set, lo, hi)
+    return np.abs(value) < half
+
+
 def _gamma_cell(scene: Scene, lo: np.ndarray, hi: np.ndarray, n: int) -> list[Rule]:
     """A cell inside the domain that Γ may cross: its pieces on each side."""
     return [Rule(p, wt, np.full(len(wt), int(s > 0))) for s, p, wt in cut_cell(scene.interface, lo, hi, n)]
@@ -75,24 +88,23 @@ def _rim_cell(scene: Scene, outer, lo: np.ndarray, hi: np.ndarray, n: int, near_
     if not near_gamma or depth >= RIM_SPLITS:
         return [Rule(p, wt, (scene.interface.phi(p) >= 0).astype(int))
                 for s, p, wt in cut_cell(outer, lo, hi, n) if s < 0]
-    mid, out = (lo + hi) / 2, []
-    for a, b in _quarters(lo, mid, hi):
-        centre, half = (a + b) / 2, np.linalg.norm(b - a) / 2
-        rim = outer.phi(centre[None])[0]
+    out = []
+    for a, b in _quarters(lo, (lo + hi) / 2, hi):
+        (rim,), (half,) = _centre_value(outer, a[None], b[None])
         if rim <= -half:
             out += _gamma_cell(scene, a, b, n)
         elif rim < half:
-            out += _rim_cell(scene, outer, a, b, n, abs(scene.interface.phi(centre[None])[0]) < half, depth + 1)
+            out += _rim_cell(scene, outer, a, b, n, _near(scene.interface, a[None], b[None])[0], depth + 1)
     return out
 
 
 def volume_rule(scene: Scene, h: float, n: int) -> Rule:
     """Gauss points of the domain with the body of each, Γ followed exactly."""
     lo, hi = background_cells(scene, h)
-    centre, half = (lo + hi) / 2, np.linalg.norm(hi - lo, axis=1) / 2
-    near_gamma = np.abs(scene.interface.phi(centre)) < half
+    centre = (lo + hi) / 2
+    near_gamma = _near(scene.interface, lo, hi)
     outer = _outer_circle(scene)
-    near_rim = np.abs(outer.phi(centre)) < half if outer else np.zeros(len(lo), bool)
+    near_rim = _near(outer, lo, hi) if outer else np.zeros(len(lo), bool)
     plain = ~near_gamma & ~near_rim
     pts, w = tensor_cells(lo[plain], hi[plain], n)
     body = np.repeat((scene.interface.phi(centre[plain]) >= 0).astype(int), n * n)

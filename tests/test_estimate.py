@@ -148,6 +148,8 @@ def test_run_estimate_writes_the_errors(tmp_path):
         assert summary["discretisation"]["h"] == pytest.approx(0.1)
         estimate = summary["estimate"]
         assert estimate["h"] == pytest.approx([0.2, 0.1]) and estimate["energy"]["eta"] > 0
+        from contactcore.scene import RESERVED_PROFILE_IDS  # no profile id may take a key beside the profiles
+        assert set(estimate) - {p.id for p in load_scene("A").profiles} == set(RESERVED_PROFILE_IDS)
         columns = files.read_profile_csv(out / name / "profiles" / "A1.csv")
         names = list(columns)
         for q in names[3:]:

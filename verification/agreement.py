@@ -29,7 +29,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from contactcore import ContactError, ProfileData, Scene, load_scene, sample_profiles
-from contactcore.estimate import far_from_singular, rms, singular_regions
+from contactcore.estimate import ERROR_SUFFIX, far_from_singular, rms, singular_regions
 from contactcore.exact import is_exact
 from contactcore.scaling import Scales
 
@@ -84,7 +84,7 @@ def measured_against(scene: Scene, quantity: str, values: np.ndarray) -> np.ndar
     """The per-sample values a profile quantity is measured against: its
     own ``values``, but an exactly enforced law's gap ``sqrt(g² + f²)``,
     ``f`` = :func:`gap_floor` (see :data:`EXACT_GAP_FLOOR`)."""
-    floor = floors(scene).get(quantity)
+    floor = measured_floor(scene, quantity)
     return np.hypot(values, floor) if floor else np.asarray(values, float)
 
 
@@ -256,7 +256,7 @@ def _compared(scene: Scene, label: str, pid: str, q: str, got: ProfileData, ref:
                                                       else np.asarray(scale)[keep]),
                      worst, float(ref.columns["s"][where]), float(ref.columns["x"][where]),
                      float(ref.columns["y"][where]), float(got.columns[q][where]), float(ref.columns[q][where]),
-                     int(keep.sum()), len(keep), floors(scene).get(q, 0.0) if scale is None else 0.0)
+                     int(keep.sum()), len(keep), measured_floor(scene, q) if scale is None else 0.0)
 
 
 def profile_agreements(scene: Scene, label: str, got: dict, ref: dict, exclude: float,
@@ -434,7 +434,7 @@ def within_estimates(scene: Scene, a: dict, err_a: dict, b: dict, err_b: dict, e
         keep = kept_samples(scene, prof, exclude)
         for q in prof.names[3:]:
             diff = (prof.columns[q] - b[pid].columns[q])[keep]
-            bound = (err_a[pid][f"{q}_err"] + err_b[pid][f"{q}_err"])[keep]
+            bound = (err_a[pid][f"{q}{ERROR_SUFFIX}"] + err_b[pid][f"{q}{ERROR_SUFFIX}"])[keep]
             ratio = rms(diff) / max(rms(bound), np.finfo(float).tiny)
             rows.append((pid, q, ratio, ratio > 1.0))
     return rows

@@ -19,6 +19,7 @@ from contextlib import contextmanager
 from pathlib import Path
 
 from contactcore import ContactError, ProfileData
+from contactcore.estimate import ERROR_SUFFIX
 
 #: The file that marks a folder as a result folder of this tool (every
 #: command writes it last): only such a folder is replaced by a new run.
@@ -128,7 +129,7 @@ def write_profile_csv(path: Path, profile: ProfileData, errors: dict | None = No
     ``errors`` (``{q + "_err": per-sample error}``) each beside its quantity."""
     buf = io.StringIO()
     writer = csv.writer(buf, lineterminator="\n")
-    names = [c for n in profile.names for c in (n, f"{n}_err") if c == n or c in (errors or {})]
+    names = [c for n in profile.names for c in (n, f"{n}{ERROR_SUFFIX}") if c == n or c in (errors or {})]
     writer.writerow(names)
     cols = [profile.columns[n] if n in profile.columns else errors[n] for n in names]
     for row in zip(*cols):
@@ -245,10 +246,6 @@ COLUMN_UNITS = {
     "angle": "degree",
     "points_per_s": "1/s",
 }
-
-
-#: The suffix of an estimated error's column (``q_err``, in q's unit).
-ERROR_SUFFIX = "_err"
 
 
 def column_unit(column: str) -> str | None:

@@ -19,7 +19,7 @@ from petsc4py import PETSc
 from contactcore import DiscretisationError
 from contactcore import tolerances as tol
 from contactcore.bodies import Body, index_of_sign
-from contactcore.geometry import Disc
+from contactcore.geometry import Disc, LineInterface
 
 from ..contact_system import GhostExchange
 from .cells import CellBasis
@@ -209,27 +209,14 @@ class EnrichedFunctionSpace:
         return A
 
 
-#: Points of a disc's rim at which Γ's side is read: Γ meets the rim
-#: where it changes (a Γ narrower than 2π R / RIM_SAMPLES could pass
-#: between two, and is then told to refine).
-RIM_SAMPLES = 3600
-
-
 def _curved_band_message(scene, degree: int) -> str:
     """Why xfem of ``degree`` refuses enriched cells on a disc's curved rim
     (a degree-2 mesh's rim cells are curved): its cut-cell quadrature
-    assumes straight cells there.  Where Γ meets the rim, no h can help;
-    otherwise Γ only comes near it."""
-    near = ("xfem: Γ reaches a curved cell of the rim (its cut-cell quadrature assumes straight cells there); "
-            "refine h")
-    if not isinstance(scene.domain, Disc):
-        return near
-    centre, radius = np.asarray(scene.domain.centre, float), float(scene.domain.radius)
-    angle = np.linspace(0.0, 2 * np.pi, RIM_SAMPLES, endpoint=False)
-    rim = centre + radius * np.column_stack([np.cos(angle), np.sin(angle)])
-    side = np.sign(scene.interface.phi(rim))
-    if side.min() < 0 < side.max():
+    assumes straight cells there.  A straight Γ meets a disc's rim (a
+    valid scene's line crosses its domain; a circle lies strictly inside),
+    and no h can help; otherwise Γ only comes near it."""
+    if isinstance(scene.domain, Disc) and isinstance(scene.interface, LineInterface):
         return (f"xfem: Γ meets the disc's rim, where a degree-{degree} mesh's cells are curved and xfem's "
                 "cut-cell quadrature assumes straight cells where Γ cuts: a Γ that reaches a curved boundary is "
                 f"not supported at degree {degree} at any h (xfem P1, fe and efgm solve it)")
-    return near
+    return "xfem: Γ reaches a curved cell of the rim (its cut-cell quadrature assumes straight cells there); refine h"
