@@ -165,41 +165,54 @@ def _errors(out) -> list[str]:
     return [line for line in out.stderr.splitlines() if line.startswith("error:")]
 
 
-def test_bad_input_under_mpirun_is_one_line(tmp_path):
+def _bad_scenes(tmp_path) -> dict:
+    """The scene files of the refusal cases, by name."""
+    files = {}
+
+    def write(name, text):
+        files[name] = tmp_path / f"{name}.toml"
+        files[name].write_text(text)
+
+    write("bad", scene_toml(load_scene("A")).replace("E = 2e+11", "E = -1.0", 1))
+    write("slip", scene_toml(interface_patch(30.0).scene).replace('type = "linear"', 'type = "coulomb"\nmu = 0.2'))
+    # scene A with μ = 0.2: its shear 2.5e4 Pa exceeds μp = 2e4 Pa (no equilibrium); its mesh holds xfem's nodes
+    write("slip_a", scene_toml(load_scene("A")).replace('type = "linear"', 'type = "coulomb"\nmu = 0.2'))
+    # two supports of the bottom that disagree: found by the ranks that own its unknowns, raised on all
+    write("clash", scene_toml(load_scene("A").with_changes(
+        supports=(Support("bottom", "xy"), Support("bottom", "x", (1e-3, 0.0))))))
+    # Γ 0.005 below the top: at h = 0.05 no cell resolves the + strip
+    write("strip", scene_toml(load_scene("A").with_changes(interface=LineInterface((0.0, 0.995), (0.0, 1.0)),
+                                                           profiles=())))
+    return files
+
+
+_slow = pytest.mark.slow
+
+
+@pytest.mark.parametrize("args, message", [
+    (["run", "bad", "--method", "fe"], "materials.minus.E"),
+    (["run", "slip", "--method", "fe", "--h", "0.1"], "shear/normal = 0.333 of body +, above μ = 0.2"),
+    pytest.param(["run", "slip_a", "--method", "xfem", "--h", "0.1"], "shear/normal = 0.25 of body +, above μ = 0.2",
+                 marks=_slow),
+    pytest.param(["run", "clash", "--method", "fe", "--h", "0.1"], "supports[1]: prescribes", marks=_slow),
+    (["run", "clash", "--method", "xfem", "--h", "0.1"], "supports[1]: prescribes"),
+    pytest.param(["run", "strip", "--method", "xfem", "--h", "0.05"], "no cell resolves body plus", marks=_slow),
+    pytest.param(["study", "A", "--param", "kN", "--values", "1e9"], "spreads its cases over a pool", marks=_slow),
+    (["scaling", "A", "--h", "0.2"], "launches mpirun itself"),
+], ids=["scene", "fe-no-equilibrium", "xfem-no-equilibrium", "fe-supports", "xfem-supports", "unresolved",
+        "study", "scaling"])
+def test_bad_input_under_mpirun_is_one_line(tmp_path, args, message):
     """A scene error (every rank meets it while reading), a solver error
     (friction that cannot carry the patch's shear: Newton's decisions are
     collective, so every rank gives up together) in fe and in xfem, and a
     command that does not run on mpirun's ranks: one line each, exit 2, nothing written, no rank left
-    waiting (the timeout would fail the test)."""
-    bad = tmp_path / "bad.toml"
-    bad.write_text(scene_toml(load_scene("A")).replace("E = 2e+11", "E = -1.0", 1))
-    patch = interface_patch(30.0).scene
-    slip = tmp_path / "slip.toml"
-    slip.write_text(scene_toml(patch).replace('type = "linear"', 'type = "coulomb"\nmu = 0.2'))
-    # scene A with μ = 0.2: its shear 2.5e4 Pa exceeds μp = 2e4 Pa (no equilibrium); its mesh holds xfem's nodes
-    slip_a = tmp_path / "slip_a.toml"
-    slip_a.write_text(scene_toml(load_scene("A")).replace('type = "linear"', 'type = "coulomb"\nmu = 0.2'))
-    # two supports of the bottom that disagree: found by the ranks that own its unknowns, raised on all
-    clash = tmp_path / "clash.toml"
-    clash.write_text(scene_toml(load_scene("A").with_changes(
-        supports=(Support("bottom", "xy"), Support("bottom", "x", (1e-3, 0.0))))))
-    # Γ 0.005 below the top: at h = 0.05 no cell resolves the + strip
-    strip = tmp_path / "strip.toml"
-    strip.write_text(scene_toml(load_scene("A").with_changes(interface=LineInterface((0.0, 0.995), (0.0, 1.0)),
-                                                             profiles=())))
-    for args, message in (
-            (["run", bad, "--method", "fe"], "materials.minus.E"),
-            (["run", slip, "--method", "fe", "--h", "0.1"], "shear/normal = 0.333 of body +, above μ = 0.2"),
-            (["run", slip_a, "--method", "xfem", "--h", "0.1"], "shear/normal = 0.25 of body +, above μ = 0.2"),
-            (["run", clash, "--method", "fe", "--h", "0.1"], "supports[1]: prescribes"),
-            (["run", clash, "--method", "xfem", "--h", "0.1"], "supports[1]: prescribes"),
-            (["run", strip, "--method", "xfem", "--h", "0.05"], "no cell resolves body plus"),
-            (["study", "A", "--param", "kN", "--values", "1e9"], "spreads its cases over a pool"),
-            (["scaling", "A", "--h", "0.2"], "launches mpirun itself"),
-):
-        out = mpirun(2, "-m", "verification", *args, "--out", tmp_path / "o", timeout=120)
-        assert out.returncode == 2 and len(_errors(out)) == 1 and message in _errors(out)[0], out.stderr
-        assert not (tmp_path / "o").exists()
+    waiting (the timeout would fail the test).  One case of each kind runs
+    in the default suite (each is a 3 s mpirun), the others in the slow stage."""
+    files = _bad_scenes(tmp_path)
+    args = [files.get(a, a) for a in args]
+    out = mpirun(2, "-m", "verification", *args, "--out", tmp_path / "o", timeout=120)
+    assert out.returncode == 2 and len(_errors(out)) == 1 and message in _errors(out)[0], out.stderr
+    assert not (tmp_path / "o").exists()
 
 
 @pytest.mark.slow
