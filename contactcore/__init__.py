@@ -12,7 +12,8 @@ from .laws import LAWS, CoulombLaw, LinearLaw, UnilateralLaw
 from .profiles import ProfileData, evaluate_quantities, sample_profile, sample_profiles
 from .result import Result, SolverReport, Timings
 from .scene import (BODIES, BodyForce, InterfaceProfile, LineProfile, Material, Pin, Pressure, Scene, Support,
-                    Torque, Traction, builtin_scenes, load_scene, scene_from_dict, scene_text)
+                    Torque, Traction)
+from .scene_files import builtin_scenes, load_scene, scene_from_dict, scene_text
 from .geometry import CircleInterface, Disc, LevelSetInterface, LineInterface, Rectangle
 
 __all__ = [

@@ -3,7 +3,7 @@
 A method is a :class:`Discretisation`: a frozen dataclass of its typed
 options (``FE(degree=2)``, ``XFEM(degree=1, cell="quad")``,
 ``EFGM(basis="quadratic")``) that knows how to :meth:`~Discretisation.build`
-the algebraic :class:`~contactcore.newton.ContactSystem` of a scene at a
+the algebraic :class:`~contactcore.system.ContactSystem` of a scene at a
 :class:`Resolution`, and the fields of a solution of it (a :class:`Built`).
 Everything else is the same for all of them and lives here, once:
 
@@ -41,7 +41,8 @@ from . import exact
 from . import tolerances as tol
 from .errors import DiscretisationError
 from .geometry import LevelSetInterface, Rectangle
-from .newton import ContactSystem, solve_increments
+from .newton import solve_increments
+from .system import ContactSystem
 from .result import Result, Timings
 from .scaling import dimensionless
 

@@ -44,7 +44,7 @@ the penalty's on ``G̃`` (tested by ``G + θΓ⁻¹S``) plus a constant bulk
 correction ``C``: Newton, its reuse of factorisations and every method's
 solver carry it unchanged.  ``γ = β γ₀`` per point,
 ``γ₀ = 2|Γ^e| / Σ_k (|Ω_k^e|/E_k)`` from the method
-(:class:`~contactcore.newton.InterfaceOperator`'s ``stabilisation``) and
+(:class:`~contactcore.system.InterfaceOperator`'s ``stabilisation``) and
 ``β`` the scene's ``stabilisation`` (default
 :data:`~contactcore.tolerances.NITSCHE_STABILISATION`).
 """
@@ -220,7 +220,7 @@ def is_exact(law) -> bool:
 # ----- the interface operator of Nitsche's method ----------------------------
 
 class NitscheInterface:
-    """A method's :class:`~contactcore.newton.InterfaceOperator` (with its
+    """A method's :class:`~contactcore.system.InterfaceOperator` (with its
     ``S`` and ``stabilisation`` γ₀) read by Newton for an exact law of
     stabilisation ``β`` (module doc): ``jumps`` the actual jumps ``G u``,
     the law evaluated at ``G̃ u`` with ``γ = β γ₀``, the forces

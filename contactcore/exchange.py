@@ -1,5 +1,5 @@
 """The ghost exchange of a distributed system's unknowns: the one interface
-through which the shared core (:class:`~contactcore.newton.InterfaceOperator`)
+through which the shared core (:class:`~contactcore.system.InterfaceOperator`)
 moves values between a rank's owned unknowns and the local ones it reads.
 
 Under mpirun each rank owns a contiguous block of the unknowns and also

@@ -1,21 +1,16 @@
 """The scene model: one description of a problem that feeds every method.
 
 A scene is built in code from the dataclasses below or read from a TOML file
-(:func:`load_scene`, schema in docs/scenes.md).  Reading validates every field;
-an error is a :class:`SceneError` whose message starts with the field's
-dotted path.  Conventions (signs, normals, profiles) are those of
-``docs/scenes.md``.
+(:func:`contactcore.scene_files.load_scene`, schema in docs/scenes.md), and
+holds to the rules of :func:`validate` either way: an error is a
+:class:`SceneError` whose message starts with the field's dotted path.
+Conventions (signs, normals, profiles) are those of ``docs/scenes.md``.
 """
 from __future__ import annotations
 
-import dataclasses
-import json
 import math
 import re
-import tomllib
 from dataclasses import dataclass, field, replace
-from importlib import resources
-from pathlib import Path
 
 import numpy as np
 
@@ -23,9 +18,7 @@ from . import tolerances as tol
 from .bodies import Body
 from .elasticity import voigt_matrix
 from .errors import SceneError
-from .geometry import CircleInterface, Disc, Domain, Interface, LevelSetInterface, LineInterface, Rectangle
-from .exact import default_enforcement
-from .enforcement import make_law
+from .geometry import CircleInterface, Domain, Interface, LevelSetInterface, LineInterface, Rectangle
 from .laws import InterfaceLaw
 
 BODIES = tuple(b.label for b in Body)
@@ -267,16 +260,16 @@ def body_force(scene: "Scene", load: BodyForce | Torque, x, y):
 # validation of a Scene (built in code or read from a file)
 # --------------------------------------------------------------------------
 
-def _finite(value, path: str) -> float:
+def finite(value, path: str) -> float:
     if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
         raise SceneError(path, f"must be a finite number (got {value!r})")
     return float(value)
 
 
 def _check_material(mat: Material, plane: str, path: str) -> None:
-    if _finite(mat.E, f"{path}.E") <= 0:
+    if finite(mat.E, f"{path}.E") <= 0:
         raise SceneError(f"{path}.E", f"Young's modulus must be > 0 (got {mat.E!r})")
-    nu = _finite(mat.nu, f"{path}.nu")
+    nu = finite(mat.nu, f"{path}.nu")
     if not -1.0 < nu < 0.5:
         raise SceneError(f"{path}.nu", f"Poisson's ratio must lie in (-1, 0.5) for plane {plane} (got {nu!r})")
 
@@ -284,12 +277,12 @@ def _check_material(mat: Material, plane: str, path: str) -> None:
 def _check_domain(domain: Domain) -> None:
     if isinstance(domain, Rectangle):
         for k, v in zip("xy", domain.size):
-            if _finite(v, f"domain.size.{k}") <= 0:
+            if finite(v, f"domain.size.{k}") <= 0:
                 raise SceneError("domain.size", f"the rectangle's sides must be > 0 (got {list(domain.size)})")
         for k, v in zip("xy", domain.corner):
-            _finite(v, f"domain.corner.{k}")
+            finite(v, f"domain.corner.{k}")
     else:
-        if _finite(domain.radius, "domain.radius") <= 0:
+        if finite(domain.radius, "domain.radius") <= 0:
             raise SceneError("domain.radius", f"must be > 0 (got {domain.radius!r})")
 
 
@@ -312,7 +305,7 @@ def _check_interface(scene: Scene) -> None:
         if min(a_minus, dom.area - a_minus) <= tol.MIN_BODY_AREA_FRACTION * dom.area:
             raise SceneError("interface", "the level set does not change sign in the domain: Γ misses it")
     else:
-        if _finite(itf.radius, "interface.radius") <= 0:
+        if finite(itf.radius, "interface.radius") <= 0:
             raise SceneError("interface.radius", f"must be > 0 (got {itf.radius!r})")
         clearance = float(dom.distance_to_boundary([itf.centre])[0]) - itf.radius
         if clearance <= tol.GEOMETRY * L:
@@ -323,7 +316,7 @@ def _check_interface(scene: Scene) -> None:
 
 def _check_point_inside(scene: Scene, point, path: str) -> None:
     for k, v in zip("xy", point):
-        _finite(v, f"{path}.{k}")
+        finite(v, f"{path}.{k}")
     if not scene.domain.contains([point], tol.GEOMETRY * scene.length_scale)[0]:
         raise SceneError(path, f"the point {list(point)} lies outside the domain")
 
@@ -356,7 +349,7 @@ def _check_path(scene: Scene, keys, path: str) -> None:
         if isinstance(k, bool) or not isinstance(k, int) or not previous < k <= scene.increments:
             raise SceneError(where, f"the increment must be an integer in {previous + 1} … {scene.increments} "
                              f"(increasing, at most 'increments'); got {k!r}")
-        _finite(f, f"{where}[1]")
+        finite(f, f"{where}[1]")
         previous = k
 
 
@@ -369,15 +362,15 @@ def _check_loads(scene: Scene) -> None:
         else:
             _check_body(load.body, f"{path}.body")
         if isinstance(load, Pressure):
-            _finite(load.value, f"{path}.value")
+            finite(load.value, f"{path}.value")
         elif isinstance(load, Torque):
-            _finite(load.torque, f"{path}.torque")
+            finite(load.torque, f"{path}.torque")
             if not isinstance(scene.interface, CircleInterface) or load.body != "minus":
                 raise SceneError(f"{path}.body", "a torque acts on the disc inside a circular interface: "
                                  "it needs a circle interface and body = 'minus'")
         else:
             for k, v in zip("xy", load.value):
-                _finite(v, f"{path}.value.{k}")
+                finite(v, f"{path}.value.{k}")
 
 
 #: A name that becomes a file name (a scene's, a profile's id): letters,
@@ -485,7 +478,7 @@ def validate(scene: Scene) -> None:
         _check_boundary(scene, sup.boundary, f"supports[{i}].boundary")
         _check_fix(sup.fix, f"supports[{i}].fix")
         for k, v in zip("xy", sup.value):
-            _finite(v, f"supports[{i}].value.{k}")
+            finite(v, f"supports[{i}].value.{k}")
             if v != 0 and k not in sup.fix:
                 raise SceneError(f"supports[{i}].value", f"gives u_{k} = {v:g}, but fix = {sup.fix!r} does not "
                                  f"hold u_{k}: add {k} to fix, or give 0")
@@ -495,302 +488,3 @@ def validate(scene: Scene) -> None:
         _check_fix(pin.fix, f"pins[{i}].fix")
     _check_loads(scene)
     _check_profiles(scene)
-
-
-# --------------------------------------------------------------------------
-# reading a TOML file
-# --------------------------------------------------------------------------
-
-class _Table:
-    """A TOML table being read: typed access by key, unknown keys rejected."""
-
-    def __init__(self, data, path: str):
-        if not isinstance(data, dict):
-            raise SceneError(path or "scene", "must be a table")
-        self.data, self.path, self.used = data, path, set()
-
-    def _key(self, key: str) -> str:
-        return f"{self.path}.{key}" if self.path else key
-
-    def get(self, key: str, kind: str, default=..., choices=None):
-        """The value of ``key`` checked against ``kind``: number, int, str,
-        vector (two numbers), numbers, strings, bool, table, tables."""
-        self.used.add(key)
-        path = self._key(key)
-        if key not in self.data:
-            if default is ...:
-                raise SceneError(path, "missing")
-            return default
-        value = self.data[key]
-        if kind == "number":
-            value = _finite(value, path)
-        elif kind == "int":
-            if isinstance(value, bool) or not isinstance(value, int):
-                raise SceneError(path, f"must be an integer (got {value!r})")
-        elif kind == "bool":
-            if not isinstance(value, bool):
-                raise SceneError(path, f"must be true or false (got {value!r})")
-        elif kind == "str":
-            if not isinstance(value, str):
-                raise SceneError(path, f"must be a string (got {value!r})")
-        elif kind == "vector":
-            if not isinstance(value, list) or len(value) != 2:
-                raise SceneError(path, f"must be a list of two numbers (got {value!r})")
-            value = tuple(_finite(v, f"{path}[{i}]") for i, v in enumerate(value))
-        elif kind == "ints":
-            if not isinstance(value, list) or len(value) != 2 or not all(
-                    isinstance(v, int) and not isinstance(v, bool) and v > 0 for v in value):
-                raise SceneError(path, f"must be a list of two positive integers (got {value!r})")
-            value = tuple(value)
-        elif kind == "strings":
-            if not isinstance(value, list) or not all(isinstance(v, str) for v in value):
-                raise SceneError(path, f"must be a list of strings (got {value!r})")
-            value = tuple(value)
-        elif kind == "table":
-            value = _Table(value, path)
-        elif kind == "path":
-            if not isinstance(value, list) or not value:
-                raise SceneError(path, f"must be a non-empty list of [increment, factor] pairs (got {value!r})")
-            value = tuple(tuple(v) if isinstance(v, list) else v for v in value)
-        elif kind == "tables":
-            if not isinstance(value, list):
-                raise SceneError(path, "must be an array of tables ([[...]] in TOML)")
-            value = [_Table(v, f"{path}[{i}]") for i, v in enumerate(value)]
-        if choices is not None and value not in choices:
-            raise SceneError(path, f"must be one of {', '.join(map(str, choices))} (got {value!r})")
-        return value
-
-    def done(self) -> None:
-        """Reject any key that was not read: a typo must not pass silently."""
-        unknown = sorted(set(self.data) - self.used)
-        if unknown:
-            raise SceneError(self._key(unknown[0]), "unknown key")
-
-
-def _read_domain(t: _Table) -> Domain:
-    kind = t.get("type", "str", choices=("rectangle", "disc"))
-    if kind == "rectangle":
-        domain = Rectangle(t.get("corner", "vector", (0.0, 0.0)), t.get("size", "vector"))
-    else:
-        domain = Disc(t.get("centre", "vector"), t.get("radius", "number"))
-    t.done()
-    return domain
-
-
-def _read_interface(t: _Table) -> tuple[Interface, InterfaceLaw]:
-    kind = t.get("type", "str", choices=("line", "circle"))
-    if kind == "line":
-        normal = t.get("normal", "vector")
-        length = math.hypot(*normal)
-        if length == 0.0:
-            raise SceneError(f"{t.path}.normal", "must be a non-zero vector")
-        itf = LineInterface(t.get("point", "vector"), (normal[0] / length, normal[1] / length))
-    else:
-        itf = CircleInterface(t.get("centre", "vector"), t.get("radius", "number"))
-    law_table = t.get("law", "table")
-    law_table.used = set(law_table.data)  # the law checks its own keys
-    law = make_law(law_table.data, law_table.path)
-    t.done()
-    return itf, law
-
-
-def _read_materials(t: _Table) -> dict[str, Material]:
-    mats = {}
-    for body in BODIES:
-        m = t.get(body, "table")
-        mats[body] = Material(m.get("E", "number"), m.get("nu", "number"))
-        m.done()
-    t.done()
-    return mats
-
-
-def _read_support(t: _Table) -> Support:
-    s = Support(t.get("boundary", "str"), t.get("fix", "str", "xy"), t.get("value", "vector", (0.0, 0.0)),
-                t.get("path", "path", ()))
-    t.done()
-    return s
-
-
-def _read_pin(t: _Table) -> Pin:
-    p = Pin(t.get("point", "vector"), t.get("fix", "str", "xy"))
-    t.done()
-    return p
-
-
-def _read_load(t: _Table) -> Load:
-    kind = t.get("type", "str", choices=("traction", "pressure", "body_force", "torque"))
-    path = t.get("path", "path", ())
-    if kind == "traction":
-        load = Traction(t.get("boundary", "str"), t.get("value", "vector"), path)
-    elif kind == "pressure":
-        load = Pressure(t.get("boundary", "str"), t.get("value", "number"), path)
-    elif kind == "body_force":
-        load = BodyForce(t.get("body", "str"), t.get("value", "vector"), path)
-    else:
-        load = Torque(t.get("body", "str", "minus"), t.get("torque", "number"), path)
-    t.done()
-    return load
-
-
-def _read_profile(t: _Table, interface: Interface) -> Profile:
-    kind = t.get("type", "str", choices=("line", "interface"))
-    common = dict(id=t.get("id", "str"), quantities=t.get("quantities", "strings"),
-                  side=t.get("side", "str", "plus"), title=t.get("title", "str", ""))
-    if kind == "line":
-        prof = LineProfile(start=t.get("start", "vector"), end=t.get("end", "vector"), **common)
-    else:
-        along = "angle" if isinstance(interface, CircleInterface) else "arclength"  # the default s along Γ
-        prof = InterfaceProfile(parameter=t.get("parameter", "str", along), **common)
-    t.done()
-    return prof
-
-
-def scene_from_dict(data: dict) -> Scene:
-    """Build and validate a scene from the parsed contents of a TOML file."""
-    t = _Table(data, "")
-    interface, law = _read_interface(t.get("interface", "table"))
-    paper = {}
-    paper_t = t.get("paper", "table", None)
-    if paper_t is not None:
-        paper = {k: paper_t.get(k, "ints", None) for k in ("xfem_cells", "efgm_nodes")}
-        paper = {k: v for k, v in paper.items() if v is not None}
-        paper_t.done()
-    scene = Scene(
-        name=t.get("name", "str"),
-        title=t.get("title", "str", ""),
-        plane=t.get("plane", "str", "stress"),
-        h=t.get("h", "number", None),
-        increments=t.get("increments", "int", 1),
-        follow_path=t.get("follow_path", "bool", False),
-        domain=_read_domain(t.get("domain", "table")),
-        interface=interface,
-        law=law,
-        materials=_read_materials(t.get("materials", "table")),
-        supports=tuple(_read_support(s) for s in t.get("supports", "tables", [])),
-        pins=tuple(_read_pin(p) for p in t.get("pins", "tables", [])),
-        loads=tuple(_read_load(x) for x in t.get("loads", "tables", [])),
-        profiles=tuple(_read_profile(p, interface) for p in t.get("profiles", "tables", [])),
-        paper=paper,
-    )
-    t.done()
-    return scene.validated()
-
-
-# ----- writing a scene back as TOML -------------------------------------------
-
-_LOAD_TYPES = {Traction: "traction", Pressure: "pressure", BodyForce: "body_force", Torque: "torque"}
-
-
-def scene_to_dict(scene: Scene) -> dict:
-    """The TOML tables of ``scene``: :func:`scene_from_dict` of the result is
-    ``scene`` again (every built-in scene round-trips, tests/test_scene_model.py)."""
-    itf = scene.interface
-    if isinstance(itf, LevelSetInterface):
-        raise SceneError("interface", "a general level set (Python callables) has no TOML form")
-    data = {"name": scene.name, "title": scene.title, "plane": scene.plane, "increments": scene.increments,
-            "follow_path": scene.follow_path}
-    if scene.h is not None:
-        data["h"] = scene.h
-    if scene.paper:
-        data["paper"] = {k: list(v) for k, v in scene.paper.items()}
-    dom = scene.domain
-    data["domain"] = ({"type": "rectangle", "corner": list(dom.corner), "size": list(dom.size)}
-                      if isinstance(dom, Rectangle) else {"type": "disc", "centre": list(dom.centre),
-                                                          "radius": dom.radius})
-    data["interface"] = ({"type": "line", "point": list(itf.point), "normal": list(itf.normal)}
-                         if isinstance(itf, LineInterface) else {"type": "circle", "centre": list(itf.centre),
-                                                                 "radius": itf.radius})
-    data["interface"]["law"] = {"type": scene.law.name, **{k: getattr(scene.law, k) for k in scene.law.parameters}}
-    if scene.law.enforcement != default_enforcement(scene.law.name):
-        data["interface"]["law"]["enforcement"] = scene.law.enforcement
-    data["materials"] = {b: {"E": scene.materials[b].E, "nu": scene.materials[b].nu} for b in BODIES}
-    data["supports"] = [_fields(s) for s in scene.supports]
-    data["pins"] = [_fields(p) for p in scene.pins]
-    data["loads"] = [{"type": _LOAD_TYPES[type(x)], **_fields(x)} for x in scene.loads]
-    data["profiles"] = [{"type": "line" if isinstance(p, LineProfile) else "interface", **_fields(p)}
-                        for p in scene.profiles]
-    return {k: v for k, v in data.items() if v != []}
-
-
-def _fields(item) -> dict:
-    """A scene item's fields as TOML values (tuples as lists, empty paths left out)."""
-    out = {}
-    for f in dataclasses.fields(item):
-        value = getattr(item, f.name)
-        if f.name == "path" and not value:
-            continue
-        out[f.name] = [list(v) if isinstance(v, tuple) else v for v in value] if isinstance(value, tuple) else value
-    return out
-
-
-def _toml_value(value) -> str:
-    if isinstance(value, bool):
-        return "true" if value else "false"
-    if isinstance(value, int):
-        return str(value)
-    if isinstance(value, float):  # the shortest text that reads back exactly, always a TOML float
-        text = next(t for t in (f"{value:.{p}g}" for p in range(1, 18)) if float(t) == value)
-        return text if any(c in text for c in ".e") else text + ".0"
-    if isinstance(value, str):
-        return json.dumps(value, ensure_ascii=False)
-    return "[" + ", ".join(_toml_value(v) for v in value) + "]"
-
-
-def _toml_table(name: str, table: dict, array: bool = False) -> list[str]:
-    """``table`` under the header ``name`` (``[[name]]`` for an array
-    element), its scalar keys first, then its sub-tables."""
-    lines = ([f"[[{name}]]" if array else f"[{name}]"] if name else [])
-    tables = []
-    for key, value in table.items():
-        if isinstance(value, dict):
-            tables.append((key, value, False))
-        elif isinstance(value, list) and value and isinstance(value[0], dict):
-            tables += [(key, v, True) for v in value]
-        else:
-            lines.append(f"{key} = {_toml_value(value)}")
-    for key, value, is_array in tables:
-        lines += [""] + _toml_table(f"{name}.{key}" if name else key, value, is_array)
-    return lines
-
-
-def scene_toml(scene: Scene) -> str:
-    """``scene`` as the TOML text :func:`load_scene` reads back."""
-    return "\n".join(_toml_table("", scene_to_dict(scene))) + "\n"
-
-
-def builtin_scenes() -> list[str]:
-    """Names of the scenes shipped with the package (the paper's A, B, C)."""
-    return sorted(p.name[:-5] for p in resources.files("contactcore.scenes").iterdir() if p.name.endswith(".toml"))
-
-
-def scene_text(name_or_path: str | Path | Scene) -> str:
-    """The TOML text of a built-in scene name, of a file path, or of a
-    :class:`Scene` (:func:`scene_toml`)."""
-    if isinstance(name_or_path, Scene):
-        return scene_toml(name_or_path)
-    if str(name_or_path) in builtin_scenes():
-        return resources.files("contactcore.scenes").joinpath(f"{name_or_path}.toml").read_text()
-    path = Path(name_or_path)
-    if not path.is_file():
-        raise SceneError("scene", f"{str(name_or_path)!r} is neither a built-in scene "
-                         f"({', '.join(builtin_scenes())}) nor a readable file")
-    try:
-        return path.read_text(encoding="utf-8")
-    except UnicodeDecodeError as exc:
-        raise SceneError("scene", f"{path} is not UTF-8 text (byte {exc.start}: {exc.reason})") from None
-    except OSError as exc:
-        raise SceneError("scene", f"cannot read {path}: {exc.strerror}") from None
-
-
-def load_scene(name_or_path: str | Path | Scene) -> Scene:
-    """Read and validate a scene: a built-in name (``A``) or a TOML path; a
-    :class:`Scene` (built in Python) is returned as it is, so every driver
-    takes a scene or a name."""
-    if isinstance(name_or_path, Scene):
-        return name_or_path.validated()
-    text = scene_text(name_or_path)
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise SceneError("scene", f"not valid TOML: {exc}") from None
-    return scene_from_dict(data)

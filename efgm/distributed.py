@@ -42,7 +42,7 @@ import scipy.sparse as sp
 from contactcore.assembly import pattern_union
 from contactcore.collective import Collective, launched_size
 from contactcore.constraints import Constraints
-from contactcore.newton import ContactSystem, InterfaceOperator
+from contactcore.system import ContactSystem, InterfaceOperator
 
 from . import petsc_solver
 from .operators import SYMMETRIC
@@ -93,7 +93,7 @@ def owned_multipliers(ranks: Collective, ndofs: int, count: int) -> np.ndarray:
 class DistributedEFGMSystem(ContactSystem):
     """The saddle point ``[[K, s Cᵀ], [s C, 0]]`` of
     :class:`efgm.method.EFGMSystem`, its rows split over ``ranks`` (module
-    doc): a :class:`~contactcore.newton.ContactSystem` on this rank's owned
+    doc): a :class:`~contactcore.system.ContactSystem` on this rank's owned
     rows.  ``K`` holds this rank's cells only, ``constraints`` the rows this
     rank owns (the others zero), ``loads`` this rank's share of each load
     (global numbering), ``interface`` its Γ points with global columns."""

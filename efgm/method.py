@@ -36,7 +36,7 @@ from contactcore.collective import SERIAL, Collective
 from contactcore.discretisation import Built, Resolution, make
 from contactcore import tolerances as tol
 from contactcore.constraints import Constraints
-from contactcore.newton import ContactSystem, InterfaceOperator
+from contactcore.system import ContactSystem, InterfaceOperator
 from contactcore.geometry import tangent_of
 from contactcore.interface_path import piece_centres
 from contactcore.scene import Pressure, Traction, body_force
@@ -179,7 +179,7 @@ def _load_vectors(scene: Scene, approx: Approximation, body_vectors: np.ndarray,
 
 class EFGMSystem(ContactSystem):
     """The saddle-point system ``[[K, s Cᵀ], [s C, 0]]`` as a
-    :class:`~contactcore.newton.ContactSystem`: every unknown is free (the
+    :class:`~contactcore.system.ContactSystem`: every unknown is free (the
     supports are multiplier rows of the ``constraints``' operator, scaled by
     ``s`` = the largest E)."""
 

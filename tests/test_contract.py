@@ -280,7 +280,7 @@ def test_every_system_and_exchange_declares_its_contract():
     """What Newton solves is a ContactSystem and what moves values between
     ranks an Exchange, stated by each class, not implied by its attributes."""
     from contactcore.exchange import Exchange
-    from contactcore.newton import ContactSystem
+    from contactcore.system import ContactSystem
     from efgm.distributed import DistributedEFGMSystem
     from efgm.method import EFGMSystem
     from efgm.petsc_matrices import ScatterExchange
@@ -291,7 +291,7 @@ def test_every_system_and_exchange_declares_its_contract():
 
 def test_a_contact_system_must_implement_newtons_calls_and_defaults_to_serial():
     from contactcore.collective import SERIAL
-    from contactcore.newton import ContactSystem
+    from contactcore.system import ContactSystem
 
     class Partial(ContactSystem):
         def internal(self, u):

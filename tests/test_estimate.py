@@ -316,7 +316,7 @@ def test_effectivity_takes_a_scene_file_and_refuses_an_unknown_scene(tmp_path, c
     no result folder.  (The solves are stubbed: the table's rows are
     tested above.)"""
     from contactcore import load_scene
-    from contactcore.scene import scene_text
+    from contactcore.scene_files import scene_text
     from verification import effectivity as eff
     from verification.__main__ import main
     solved = []

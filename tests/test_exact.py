@@ -103,7 +103,7 @@ def tol_default():
 
 
 def test_exact_scene_round_trips_through_toml():
-    from contactcore.scene import scene_from_dict, scene_to_dict
+    from contactcore.scene_files import scene_from_dict, scene_to_dict
     scene = load_scene("A").with_changes(law=ExactUnilateral(7.0))
     assert scene_from_dict(scene_to_dict(scene)).law == scene.law
 
@@ -223,7 +223,7 @@ def test_the_slip_state_is_anchored_where_the_stick_began():
     made a proportional load's answer depend on its increments)."""
     import scipy.sparse as sp
     from contactcore.exact import NitscheInterface
-    from contactcore.newton import InterfaceOperator
+    from contactcore.system import InterfaceOperator
     # rows (g_N, g_T) of points 0, 1, 2 on unknowns u: 0, 1 closed (u0 = −1), 2 open (u4 = 0.3)
     G = sp.csr_matrix(np.eye(5)[[0, 1, 0, 2, 4, 3]])
     operator = InterfaceOperator(G, np.ones(3), np.zeros((3, 2)), S=sp.csr_matrix((6, 5)), stabilisation=np.ones(3))

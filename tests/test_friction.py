@@ -10,7 +10,8 @@ import pytest
 import tolerances as tol
 from contactcore import Pin, SceneError, SolverError, load_scene, make_law, sample_profiles, scene_from_dict
 from contactcore.laws import OPEN, SLIP, STICK, CoulombLaw, LinearLaw, UnilateralLaw
-from contactcore.newton import ContactSystem, InterfaceOperator, solve_increments
+from contactcore.newton import solve_increments
+from contactcore.system import ContactSystem, InterfaceOperator
 from contactcore.result import SolverReport
 from verification import methods
 from verification.closed_forms import layered_slip

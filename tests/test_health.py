@@ -15,7 +15,8 @@ import scipy.sparse as sp
 from contactcore import Pin, SolverError, SolverReport, load_scene, scene_text
 from contactcore import health
 from contactcore.laws import LinearLaw
-from contactcore.newton import ContactSystem, InterfaceOperator, solve_increments
+from contactcore.newton import solve_increments
+from contactcore.system import ContactSystem, InterfaceOperator
 from contactcore.tolerances import RESIDUAL_FAIL, SPRING_ENTRY_MAX
 from verification import methods
 from verification.__main__ import main

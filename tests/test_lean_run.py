@@ -88,7 +88,7 @@ def test_run_writes_the_path_of_a_linear_law_that_follows_it(tmp_path):
     with history; without it, no path files (one solve)."""
     import csv
 
-    from contactcore.scene import scene_toml
+    from contactcore.scene_files import scene_toml
     from verification.__main__ import main
     for follow in (True, False):
         path = tmp_path / f"A{follow}.toml"

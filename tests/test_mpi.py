@@ -14,7 +14,7 @@ import pytest
 
 import tolerances as tol
 from contactcore import LineInterface, Support, load_scene
-from contactcore.scene import scene_toml
+from contactcore.scene_files import scene_toml
 from verification.closed_forms import interface_patch
 from verification.__main__ import main
 

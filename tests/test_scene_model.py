@@ -232,7 +232,7 @@ def test_cli_rejects_bad_scene_without_traceback(tmp_path):
 def test_a_scene_written_as_toml_reads_back_equal(name):
     """scene_toml is the inverse of the reader on every built-in scene, and
     load_scene takes a Scene as it is (drivers take a scene or a name)."""
-    from contactcore.scene import scene_toml
+    from contactcore.scene_files import scene_toml
     scene = load_scene(name)
     assert scene_from_dict(tomllib.loads(scene_toml(scene))) == scene
     assert load_scene(scene) == scene
@@ -240,7 +240,7 @@ def test_a_scene_written_as_toml_reads_back_equal(name):
 
 def test_a_level_set_scene_has_no_toml_form():
     from contactcore import LevelSetInterface
-    from contactcore.scene import scene_toml
+    from contactcore.scene_files import scene_toml
     scene = load_scene("A")
     level_set = dataclasses.replace(scene, interface=LevelSetInterface(lambda x: x[:, 1] - 0.5,
                                                                        lambda x: 0 * x + [0.0, 1.0]))

@@ -49,7 +49,7 @@ from contactcore.cutcell import gauss01
 from contactcore.exact import is_exact
 from contactcore.geometry import polygon_area, tangent_of
 from contactcore.interface_path import piece_centres
-from contactcore.newton import InterfaceOperator
+from contactcore.system import InterfaceOperator
 from contactcore.scene import Pressure, Traction, body_force
 
 from .contact_system import GhostExchange, PETScSystem
@@ -219,7 +219,7 @@ class _Reference:
 def _nitsche_rows(scene: Scene, ref: _Reference, dofs, f: int, xi: np.ndarray, x: np.ndarray, frame: np.ndarray,
                   rows, length: float, S: Triplets) -> np.ndarray:
     """Facet ``f``'s rows of ``S``, added to ``S``, and its γ₀ at its points
-    ``x`` (parameters ``xi``; :class:`~contactcore.newton.InterfaceOperator`).  Each body's
+    ``x`` (parameters ``xi``; :class:`~contactcore.system.InterfaceOperator`).  Each body's
     field is read in the cell on its own side of the facet (it is zero
     beyond its body), its stress by the body's Voigt matrix ``D``:
     ``τ = frame · σ(u) n``, weighted ``w_k = (|Ω_k|/E_k) / Σ_j |Ω_j|/E_j``

@@ -2,7 +2,7 @@
 
 The conforming reference and XFEM both end with a PETSc matrix ``K`` of the
 bulk (no supports applied), one load vector per load, the prescribed
-unknowns and an :class:`~contactcore.newton.InterfaceOperator`.  This class
+unknowns and an :class:`~contactcore.system.InterfaceOperator`.  This class
 hands them to :func:`contactcore.newton.solve_increments`: prescribed
 unknowns are eliminated (only the free rows are factorised, by MUMPS's
 LDLᵀ while the interface tangent is symmetric, as ``K`` is by its weak
@@ -25,7 +25,7 @@ from contactcore.collective import Collective
 from contactcore import linear_solver
 from contactcore.constraints import Constraints
 from contactcore.exchange import Exchange
-from contactcore.newton import ContactSystem, InterfaceOperator
+from contactcore.system import ContactSystem, InterfaceOperator
 
 #: The options prefix of the dolfinx methods' factorisations in PETSc's options database.
 PETSC_PREFIX = "xdolfinx_"

@@ -21,7 +21,7 @@ from contactcore.bodies import index_of_sign, sign_of_index
 from contactcore.cutcell import edge_crossings, gauss01
 from contactcore.geometry import tangent_of
 from contactcore.interface_path import piece_centres
-from contactcore.newton import InterfaceOperator
+from contactcore.system import InterfaceOperator
 from contactcore.scene import BodyForce, Torque, Traction, body_force
 
 from .space import EnrichedFunctionSpace

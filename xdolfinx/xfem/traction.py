@@ -34,7 +34,7 @@ from contactcore import BODIES
 from contactcore import tolerances as tol
 from contactcore.assembly import Triplets
 from contactcore.bodies import Body
-from contactcore.newton import InterfaceOperator
+from contactcore.system import InterfaceOperator
 from contactcore.exact import is_exact
 from contactcore.traction import nitsche_weights, traction_maps
 
