@@ -531,7 +531,7 @@ class Tangent:
     def column_budget(self, slot: int) -> int | None:
         """How many columns a low-rank correction of ``slot``'s
         factorisation may solve for as one block and keep
-        (:class:`contactcore.newton._Update`): as many as cost one
+        (:class:`contactcore.factorisations._Update`): as many as cost one
         factorisation, in no more than LOW_RANK_MEMORY of its factors'
         memory (:meth:`Factorisation.columns_worth`), within
         [LOW_RANK_COLUMNS, LOW_RANK_COLUMNS_MAX]; None for a solver other

@@ -34,7 +34,7 @@ status: a solve whose tangent is one of the last factorised
 (:data:`~contactcore.tolerances.FACTORISATIONS_KEPT`) reuses that
 factorisation, often for whole load paths, one whose tangent differs from
 one of theirs in a few points is solved by a low-rank correction of it
-(:class:`_Update`, one process), and the system refills the matrices it
+(:mod:`contactcore.factorisations`, one process), and the system refills the matrices it
 allocated once.  Every status decision is taken so that round-off cannot move it
 (:class:`~contactcore.laws.Decision`): a point whose margin (its gap, or
 ``μp − |t*|``) lies within DECISION_BAND of the margin's Γ-wide scale keeps
@@ -56,12 +56,12 @@ from __future__ import annotations
 import re
 
 import numpy as np
-import scipy.sparse as sp
 
 from . import health
 from . import tolerances as tol
 from .errors import SolverError, SolverOptionError
 from .exact import enforced
+from .factorisations import KeptFactorisations
 from .interface_path import Increment, InterfacePath, canonical_order
 from .laws import OPEN, SLIP, STICK
 from .result import SolverReport
@@ -82,86 +82,6 @@ def _merge(total: SolverReport, one: SolverReport) -> None:
 #: How much a status holds a point (open < slip < stick), by status code.
 _CONSTRAINT = np.zeros(max(SLIP, STICK, OPEN) + 1, np.int8)
 _CONSTRAINT[[OPEN, SLIP, STICK]] = [0, 1, 2]
-
-
-class _Columns:
-    """The columns ``M⁻¹ Tᵀ e`` kept for one factorisation ``M``, by the
-    row ``e`` (point, row of its tangent) they were solved for, in the order
-    solved: ``rows[k]`` is column k (:class:`_Update`)."""
-
-    def __init__(self, size: int):
-        self.index, self.rows = {}, np.zeros((0, size))
-
-    def __len__(self) -> int:
-        return len(self.index)
-
-    def add(self, keys: list[tuple[int, int]], columns: np.ndarray, most: int) -> None:
-        """Keep ``columns`` (n, q), the solutions for the rows ``keys``;
-        the storage grows by doubling, up to ``most`` columns."""
-        count = len(self.index)
-        if count + len(keys) > len(self.rows):
-            grown = np.zeros((min(max(2 * (count + len(keys)), 8), most), self.rows.shape[1]))
-            grown[:count] = self.rows[:count]
-            self.rows = grown
-        self.rows[count:count + len(keys)] = columns.T
-        self.index.update(zip(keys, range(count, count + len(keys))))
-
-
-class _Update:
-    """A kept factorisation ``M`` (of the points' tangent ``D₀``) corrected
-    to the tangent ``D`` that differs from ``D₀`` in a few rows: with
-    ``K_Γ = Tᵀ W D G`` (:meth:`InterfaceOperator.sides`),
-    ``J = M + U B``, ``U`` the columns ``Tᵀ e`` of the changed rows ``e``
-    (point p, row c) and ``B`` their rows ``w_p (D − D₀)_{c,:} G_p``, and by
-    Woodbury's identity (Golub & Van Loan, *Matrix Computations*, 4th ed.,
-    §2.1.4)
-
-        J⁻¹ b = x₀ − Z (I + B Z)⁻¹ B x₀,   x₀ = M⁻¹ b,  Z = M⁻¹ U:
-
-    one solve with ``M`` per use, and the columns of ``Z`` to make it, solved
-    as one block (:meth:`ContactSystem.solve_columns`) and kept for the
-    next corrections of ``M`` (:class:`_Columns`), at most ``most`` of them
-    (:meth:`ContactSystem.correction_columns`).  Each solve is held to
-    the health policy by its residual with ``J`` itself: a singular ``J``
-    fails it."""
-
-    def __init__(self, newton, slot: int, kept: np.ndarray, tangent: np.ndarray, changed: list[tuple[int, int]],
-                 most: int):
-        self.slot, self.tangent = slot, tangent
-        test, self.trial = newton.itf.sides()
-        self.columns = newton._columns.setdefault(slot, _Columns(newton.system.size))
-        new = [pc for pc in changed if pc not in self.columns.index]
-        if new:
-            self.columns.add(new, newton.system.solve_columns(test[[2 * p + c for p, c in new]].toarray().T, slot),
-                             most)
-        self.used = len(self.columns)  # the columns it reads: the first ones, kept in place
-        self.at = np.array([self.columns.index[pc] for pc in changed], int)
-        points, rows = (np.array([pc[i] for pc in changed], int) for i in (0, 1))
-        delta = newton.itf.weights[points, None] * (tangent - kept)[points, rows, :]
-        picked = sp.csr_matrix((delta.ravel(), (np.repeat(np.arange(len(changed)), 2),
-                                                (2 * points[:, None] + np.arange(2)).ravel())),
-                               shape=(len(changed), self.trial.shape[0]))
-        self.B = (picked @ self.trial).tocsr()
-        reach = np.unique(self.B.indices)  # the unknowns B reads: B Z from those rows of Z only
-        BZ = self.B[:, reach].toarray() @ self.columns.rows[self.at][:, reach].T
-        self.capacitance = np.eye(len(changed)) + BZ
-
-    def solve(self, newton, rhs: np.ndarray, scale: float):
-        """``(δu, report)`` with ``J δu = rhs`` on the free rows; SolverError
-        if its residual fails the health policy."""
-        x, report = newton.system.solve(None, rhs, force_scale=scale, slot=self.slot)
-        w = np.zeros(self.used)
-        try:
-            w[self.at] = np.linalg.solve(self.capacitance, self.B @ x)
-        except np.linalg.LinAlgError:
-            raise SolverError("the corrected factorisation is singular") from None
-        x -= self.columns.rows[:self.used].T @ w
-        jumps = (self.trial @ x).reshape(-1, 2)
-        Jx = newton.system.internal(x) + newton.itf.internal(x, np.einsum("pij,pj->pi", self.tangent, jumps))
-        r = (rhs - Jx)[newton.free]
-        report.residual = health.relative_residual(r, rhs[newton.free], scale)
-        health.check_residual(report.residual, "the corrected factorisation")
-        return x, report
 
 
 class _Newton:
@@ -186,9 +106,7 @@ class _Newton:
         self.report = SolverReport(solver="", solves=0, iterations=[])
         self.path = InterfacePath(self.itf.points, self.itf.weights, pieces=self.itf.pieces)
         self.ranks = system.collective  # every decision is taken on all ranks alike
-        self._factorised = []  # (slot, interface tangent) of the system's factorisations, last used last
-        self._updates = []  # low-rank corrections of them (_Update), last made first
-        self._columns = {}  # slot -> the _Columns its corrections share
+        self.factorisations = KeptFactorisations(system, self.itf, self.free, self.ranks)
         self._singular = []  # status maps whose law tangent proved singular
         self._secant = None  # the step's secant stiffnesses of its slipping points (_regularised)
 
@@ -279,7 +197,8 @@ class _Newton:
     def _use(self, interface) -> None:
         """Newton on ``interface`` from here on; the factorisations kept
         were of another matrix."""
-        self.itf, self._factorised, self._updates, self._columns, self._singular = interface, [], [], {}, []
+        self.itf, self._singular = interface, []
+        self.factorisations = KeptFactorisations(self.system, interface, self.free, self.ranks)
 
     def _iterate(self, k: float, start=None):
         """Newton's iterations to increment ``k`` from the predicted state,
@@ -416,7 +335,7 @@ class _Newton:
 
     def _solve(self, tangent: np.ndarray, rhs: np.ndarray, scale: float, secant=None, status=None):
         """``J δu = rhs`` with the law's ``tangent`` at the points of the
-        ``status`` map (:meth:`_solved`).  Also returns the tangent solved
+        ``status`` map (:meth:`KeptFactorisations.solve`).  Also returns the tangent solved
         with: the law's, or where that is singular an exact law's
         regularised one (:meth:`_regularised`; Newton is then not settled by
         it).  A map that no point sticks or closes on more than on one whose
@@ -424,7 +343,7 @@ class _Newton:
         if secant is not None and self._dominated(status):
             tangent = self._regularised(tangent, secant)
         try:
-            return (*self._solved(tangent, rhs, scale), tangent)
+            return (*self.factorisations.solve(tangent, rhs, scale), tangent)
         except SolverError:
             # an exact law's slip tangent leaves a body held by friction
             # alone free to turn: one secant step there
@@ -432,7 +351,7 @@ class _Newton:
             if regularised is None:
                 raise
             self._singular.append(status)
-            return (*self._solved(regularised, rhs, scale), regularised)
+            return (*self.factorisations.solve(regularised, rhs, scale), regularised)
 
     def _regularised(self, tangent: np.ndarray, secant: np.ndarray):
         """The exact law's tangent regularised by the slipping points'
@@ -450,18 +369,6 @@ class _Newton:
             self._secant = secant
         return regularised
 
-    def _solved(self, tangent: np.ndarray, rhs: np.ndarray, scale: float):
-        """``(δu, report)`` with the points' ``tangent``: by the
-        factorisation kept for it, or the low-rank correction of one
-        (:meth:`_corrected`), if there is one; else factorised into the slot
-        used longest ago (:data:`~contactcore.tolerances.FACTORISATIONS_KEPT`)."""
-        for i, (slot, kept) in enumerate(self._factorised):
-            if self.ranks.all(np.array_equal(kept, tangent)):
-                self._factorised.append(self._factorised.pop(i))
-                return self.system.solve(None, rhs, force_scale=scale, slot=slot)
-        corrected = self._corrected(tangent, rhs, scale)
-        return corrected if corrected is not None else self._factorise(tangent, rhs, scale)
-
     def _dominated(self, status) -> bool:
         """Whether no point of the ``status`` map sticks where a map whose
         tangent proved singular did not, and none is closed where it was
@@ -472,57 +379,6 @@ class _Newton:
         without a factorisation to tell."""
         rank = _CONSTRAINT[status]
         return any(self.ranks.all(bool(np.all(rank <= _CONSTRAINT[s]))) for s in self._singular)
-
-    def _factorise(self, tangent: np.ndarray, rhs: np.ndarray, scale: float):
-        """Factorise ``J`` with ``tangent`` into the slot free or used
-        longest ago, dropping what was kept of that slot, and solve."""
-        used = {slot for slot, _ in self._factorised}
-        free = [s for s in range(tol.FACTORISATIONS_KEPT) if s not in used]
-        slot = free[0] if free else self._factorised.pop(0)[0]
-        self._factorised = [(s, t) for s, t in self._factorised if s != slot]  # until the solve succeeds
-        self._updates = [u for u in self._updates if u.slot != slot]
-        self._columns.pop(slot, None)
-        du, report = self.system.solve(self.itf.stiffness(tangent), rhs, force_scale=scale, slot=slot)
-        self._factorised.append((slot, tangent))
-        return du, report
-
-    def _corrected(self, tangent: np.ndarray, rhs: np.ndarray, scale: float):
-        """``(δu, report)`` by a kept factorisation corrected to ``tangent``
-        (:class:`_Update`), or None where none is close enough: one process
-        only, a correction within the system's
-        :meth:`~ContactSystem.correction_columns` of the factorisation (rows
-        of the points' tangents that need a solve, and kept in all), the
-        fewest new ones of the kept factorisations; a correction whose solve
-        fails its residual check (a singular tangent) is left to a
-        factorisation."""
-        if self.ranks.parallel:
-            return None
-        for update in self._updates:
-            if np.array_equal(update.tangent, tangent):
-                try:
-                    return update.solve(self, rhs, scale)
-                except SolverError:
-                    self._updates.remove(update)
-                    return None
-        best = None
-        for slot, kept in reversed(self._factorised):
-            changed = [tuple(pc) for pc in np.argwhere(np.any(tangent != kept, axis=2))]
-            columns = self._columns.get(slot, _Columns(0))
-            new = sum(pc not in columns.index for pc in changed)
-            most_new, most = self.system.correction_columns(slot)
-            if (len(changed) <= most and new <= most_new and len(columns) + new <= most
-                    and (best is None or new < best[0])):
-                best = (new, slot, kept, changed, most)
-        if best is None:
-            return None
-        _, slot, kept, changed, most = best
-        update = _Update(self, slot, kept, tangent, changed, most)
-        try:
-            solved = update.solve(self, rhs, scale)
-        except SolverError:
-            return None
-        self._updates = [update, *self._updates][:tol.FACTORISATIONS_KEPT]
-        return solved
 
     def _commit(self, k, factors, u, response, iterations, history) -> None:
         self.u, self.state, self.status = u, response.state, response.status

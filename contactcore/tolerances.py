@@ -305,7 +305,7 @@ FACTORISATIONS_KEPT = 2
 
 #: A tangent that differs from a kept factorisation's in a few rows of
 #: its points' 2 × 2 tangents is solved with that factorisation and a
-#: low-rank correction (Woodbury's identity, contactcore.newton._Update):
+#: low-rank correction (Woodbury's identity, contactcore.factorisations._Update):
 #: each changed row costs one solve with the kept factors, once per
 #: factorisation.  A factorisation costs 6-17 solves on C-coulomb at h =
 #: 0.05 (fe P1 8.4 against 1.4 ms, xfem P2 46-54 against 4.7-6 ms, efgm P1

@@ -1,4 +1,4 @@
-"""What Newton pays in factorisations (contactcore.newton, docs/newton.md):
+"""What Newton pays in factorisations (contactcore.factorisations, docs/newton.md):
 a tangent a few point-rows away from a kept factorisation is solved by a
 low-rank correction of it, a status map dominated by one whose tangent
 proved singular is regularised without a factorisation, and the secant
@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 import tolerances as tol
-from contactcore import load_scene, make_law, linear_solver, newton
+from contactcore import factorisations, load_scene, make_law, linear_solver
 from contactcore import tolerances as core_tol
 from contactcore.errors import SolverError
 from verification import methods
@@ -30,7 +30,7 @@ def counted(monkeypatch):
     """Factorisations begun (MUMPS set-ups, failed ones included), and
     Newton's factorised solves that failed (a singular tangent)."""
     counts = {"factorisations": 0, "singular": 0}
-    factorise, newton_factorise = linear_solver.Factorisation.factorise, newton._Newton._factorise
+    factorise, newton_factorise = linear_solver.Factorisation.factorise, factorisations.KeptFactorisations._factorise
 
     def begun(self, A):
         counts["factorisations"] += 1
@@ -44,7 +44,7 @@ def counted(monkeypatch):
             raise
 
     monkeypatch.setattr(linear_solver.Factorisation, "factorise", begun)
-    monkeypatch.setattr(newton._Newton, "_factorise", failing)
+    monkeypatch.setattr(factorisations.KeptFactorisations, "_factorise", failing)
     return counts
 
 

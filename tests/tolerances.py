@@ -237,7 +237,7 @@ MEMORY_CYCLE_GROWTH_MB = 8.0
 SOLVER_AGREEMENT = 1e-10
 
 #: A solve by a low-rank correction of a kept factorisation (Woodbury's
-#: identity, contactcore.newton._Update) against a fresh factorisation of
+#: identity, contactcore.factorisations._Update) against a fresh factorisation of
 #: the same matrix: both backward stable up to the capacitance matrix's
 #: conditioning, so they differ by about cond · eps.  Measured on C-coulomb
 #: at h = 0.05 (tests/test_factorisations.py): at most 3e-11 of the

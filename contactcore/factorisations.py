@@ -1,0 +1,185 @@
+"""The factorisations Newton keeps, and their low-rank corrections.
+
+The tangent ``J = A + Gᵀ W D G`` of a piecewise-linear law changes only
+where a point of Γ changes status, so most of a load path's solves can reuse
+a factorisation made before.  :class:`KeptFactorisations` answers
+``J δu = r`` for the points' tangent ``D``:
+
+* by the factorisation kept for ``D`` itself (up to
+  :data:`~contactcore.tolerances.FACTORISATIONS_KEPT` of them, in the
+  system's slots, the one used longest ago replaced first);
+* or, on one process, by a kept factorisation corrected to ``D`` where the
+  two differ in a few rows (:class:`_Update`, Woodbury's identity), with the
+  columns it needs solved as one block and kept for the next corrections
+  (:class:`_Columns`);
+* or by a new factorisation.
+
+Every solve is held to the health policy (:mod:`contactcore.health`) by its
+residual with ``J`` itself, so a correction of a singular ``J`` fails as a
+factorisation of it would.  docs/newton.md, "What a run pays in
+factorisations", gives the counts this saves.
+"""
+from __future__ import annotations
+
+import numpy as np
+import scipy.sparse as sp
+
+from . import health
+from . import tolerances as tol
+from .errors import SolverError
+
+
+class _Columns:
+    """The columns ``M⁻¹ Tᵀ e`` kept for one factorisation ``M``, by the
+    row ``e`` (point, row of its tangent) they were solved for, in the order
+    solved: ``rows[k]`` is column k (:class:`_Update`)."""
+
+    def __init__(self, size: int):
+        self.index, self.rows = {}, np.zeros((0, size))
+
+    def __len__(self) -> int:
+        return len(self.index)
+
+    def add(self, keys: list[tuple[int, int]], columns: np.ndarray, most: int) -> None:
+        """Keep ``columns`` (n, q), the solutions for the rows ``keys``;
+        the storage grows by doubling, up to ``most`` columns."""
+        count = len(self.index)
+        if count + len(keys) > len(self.rows):
+            grown = np.zeros((min(max(2 * (count + len(keys)), 8), most), self.rows.shape[1]))
+            grown[:count] = self.rows[:count]
+            self.rows = grown
+        self.rows[count:count + len(keys)] = columns.T
+        self.index.update(zip(keys, range(count, count + len(keys))))
+
+
+class _Update:
+    """A kept factorisation ``M`` (of the points' tangent ``D₀``) corrected
+    to the tangent ``D`` that differs from ``D₀`` in a few rows: with
+    ``K_Γ = Tᵀ W D G`` (:meth:`~contactcore.system.InterfaceOperator.sides`),
+    ``J = M + U B``, ``U`` the columns ``Tᵀ e`` of the changed rows ``e``
+    (point p, row c) and ``B`` their rows ``w_p (D − D₀)_{c,:} G_p``, and by
+    Woodbury's identity (Golub & Van Loan, *Matrix Computations*, 4th ed.,
+    §2.1.4)
+
+        J⁻¹ b = x₀ − Z (I + B Z)⁻¹ B x₀,   x₀ = M⁻¹ b,  Z = M⁻¹ U:
+
+    one solve with ``M`` per use, and the columns of ``Z`` to make it, solved
+    as one block (:meth:`~contactcore.system.ContactSystem.solve_columns`) and kept for the
+    next corrections of ``M`` (:class:`_Columns`), at most ``most`` of them
+    (:meth:`~contactcore.system.ContactSystem.correction_columns`).  Each solve is held to
+    the health policy by its residual with ``J`` itself: a singular ``J``
+    fails it."""
+
+    def __init__(self, kept_by, slot: int, kept: np.ndarray, tangent: np.ndarray, changed: list[tuple[int, int]],
+                 most: int):
+        self.slot, self.tangent = slot, tangent
+        test, self.trial = kept_by.interface.sides()
+        self.columns = kept_by.columns.setdefault(slot, _Columns(kept_by.system.size))
+        new = [pc for pc in changed if pc not in self.columns.index]
+        if new:
+            self.columns.add(new, kept_by.system.solve_columns(test[[2 * p + c for p, c in new]].toarray().T, slot),
+                             most)
+        self.used = len(self.columns)  # the columns it reads: the first ones, kept in place
+        self.at = np.array([self.columns.index[pc] for pc in changed], int)
+        points, rows = (np.array([pc[i] for pc in changed], int) for i in (0, 1))
+        delta = kept_by.interface.weights[points, None] * (tangent - kept)[points, rows, :]
+        picked = sp.csr_matrix((delta.ravel(), (np.repeat(np.arange(len(changed)), 2),
+                                                (2 * points[:, None] + np.arange(2)).ravel())),
+                               shape=(len(changed), self.trial.shape[0]))
+        self.B = (picked @ self.trial).tocsr()
+        reach = np.unique(self.B.indices)  # the unknowns B reads: B Z from those rows of Z only
+        BZ = self.B[:, reach].toarray() @ self.columns.rows[self.at][:, reach].T
+        self.capacitance = np.eye(len(changed)) + BZ
+
+    def solve(self, kept_by, rhs: np.ndarray, scale: float):
+        """``(δu, report)`` with ``J δu = rhs`` on the free rows; SolverError
+        if its residual fails the health policy."""
+        x, report = kept_by.system.solve(None, rhs, force_scale=scale, slot=self.slot)
+        w = np.zeros(self.used)
+        try:
+            w[self.at] = np.linalg.solve(self.capacitance, self.B @ x)
+        except np.linalg.LinAlgError:
+            raise SolverError("the corrected factorisation is singular") from None
+        x -= self.columns.rows[:self.used].T @ w
+        jumps = (self.trial @ x).reshape(-1, 2)
+        Jx = kept_by.system.internal(x) + kept_by.interface.internal(x, np.einsum("pij,pj->pi", self.tangent, jumps))
+        r = (rhs - Jx)[kept_by.free]
+        report.residual = health.relative_residual(r, rhs[kept_by.free], scale)
+        health.check_residual(report.residual, "the corrected factorisation")
+        return x, report
+
+
+class KeptFactorisations:
+    """The factorisations of one system's tangent kept for one interface
+    (:class:`~contactcore.system.InterfaceOperator` or an exact law's
+    :class:`~contactcore.exact.NitscheInterface`): a new interface, or a
+    softened one, starts a new set."""
+
+    def __init__(self, system, interface, free: np.ndarray, ranks):
+        self.system, self.interface, self.free, self.ranks = system, interface, free, ranks
+        self.kept = []  # (slot, interface tangent) of the system's factorisations, last used last
+        self.updates = []  # low-rank corrections of them (_Update), last made first
+        self.columns = {}  # slot -> the _Columns its corrections share
+
+    def solve(self, tangent: np.ndarray, rhs: np.ndarray, scale: float):
+        """``(δu, report)`` with the points' ``tangent``: by the
+        factorisation kept for it, or the low-rank correction of one
+        (:meth:`_corrected`), if there is one; else factorised into the slot
+        used longest ago (:data:`~contactcore.tolerances.FACTORISATIONS_KEPT`)."""
+        for i, (slot, kept) in enumerate(self.kept):
+            if self.ranks.all(np.array_equal(kept, tangent)):
+                self.kept.append(self.kept.pop(i))
+                return self.system.solve(None, rhs, force_scale=scale, slot=slot)
+        corrected = self._corrected(tangent, rhs, scale)
+        return corrected if corrected is not None else self._factorise(tangent, rhs, scale)
+
+    def _factorise(self, tangent: np.ndarray, rhs: np.ndarray, scale: float):
+        """Factorise ``J`` with ``tangent`` into the slot free or used
+        longest ago, dropping what was kept of that slot, and solve."""
+        used = {slot for slot, _ in self.kept}
+        free = [s for s in range(tol.FACTORISATIONS_KEPT) if s not in used]
+        slot = free[0] if free else self.kept.pop(0)[0]
+        self.kept = [(s, t) for s, t in self.kept if s != slot]  # until the solve succeeds
+        self.updates = [u for u in self.updates if u.slot != slot]
+        self.columns.pop(slot, None)
+        du, report = self.system.solve(self.interface.stiffness(tangent), rhs, force_scale=scale, slot=slot)
+        self.kept.append((slot, tangent))
+        return du, report
+
+    def _corrected(self, tangent: np.ndarray, rhs: np.ndarray, scale: float):
+        """``(δu, report)`` by a kept factorisation corrected to ``tangent``
+        (:class:`_Update`), or None where none is close enough: one process
+        only, a correction within the system's
+        :meth:`~contactcore.system.ContactSystem.correction_columns` of the factorisation (rows
+        of the points' tangents that need a solve, and kept in all), the
+        fewest new ones of the kept factorisations; a correction whose solve
+        fails its residual check (a singular tangent) is left to a
+        factorisation."""
+        if self.ranks.parallel:
+            return None
+        for update in self.updates:
+            if np.array_equal(update.tangent, tangent):
+                try:
+                    return update.solve(self, rhs, scale)
+                except SolverError:
+                    self.updates.remove(update)
+                    return None
+        best = None
+        for slot, kept in reversed(self.kept):
+            changed = [tuple(pc) for pc in np.argwhere(np.any(tangent != kept, axis=2))]
+            columns = self.columns.get(slot, _Columns(0))
+            new = sum(pc not in columns.index for pc in changed)
+            most_new, most = self.system.correction_columns(slot)
+            if (len(changed) <= most and new <= most_new and len(columns) + new <= most
+                    and (best is None or new < best[0])):
+                best = (new, slot, kept, changed, most)
+        if best is None:
+            return None
+        _, slot, kept, changed, most = best
+        update = _Update(self, slot, kept, tangent, changed, most)
+        try:
+            solved = update.solve(self, rhs, scale)
+        except SolverError:
+            return None
+        self.updates = [update, *self.updates][:tol.FACTORISATIONS_KEPT]
+        return solved
