@@ -59,7 +59,32 @@ def _shifted():
                                         Support("top", "x", (1.0, 0.0), path)))
 
 
+def _exact_coulomb():
+    from contactcore import load_scene, make_law
+
+    scene = load_scene("C-coulomb")
+    return scene.with_changes(law=make_law({"type": "coulomb", "mu": scene.law.mu, "enforcement": "exact"}))
+
+
+def _exact_stiff_layer():
+    from verification.closed_forms import layered_slip
+
+    base = layered_slip()
+    return layered_slip(E=(tol.EXACT_STIFF_LAYER * base.E[0], base.E[1]), exact=True).scene
+
+
+def _exact_inclined():
+    from contactcore import make_law
+    from placements import inclined_A
+
+    return inclined_A(*tol.EXACT_INCLINED_PLACEMENT).with_changes(
+        law=make_law({"type": "unilateral", "enforcement": "exact"}))
+
+
 #: The stiff friction cases, by name: (scene factory, h or None for the scene's).
+#: The last three enforce the law exactly (Nitsche): a rod held by friction
+#: alone, a layer 1000x stiffer than its neighbour, and an inclined Γ that
+#: opens part of the way.
 CASES = {
     "soft-layer": (lambda: _layered(E_minus_factor=tol.SOFT_LAYER), None),
     "contrast-1e-6": (lambda: _layered(E_minus_factor=1e-6), None),
@@ -67,6 +92,9 @@ CASES = {
     "shifted": (_shifted, None),
     "C-coulomb-10x": (lambda: _scaled_springs(10.0), tol.ROUNDOFF_C_H),
     "C-coulomb-100x": (lambda: _scaled_springs(100.0), tol.ROUNDOFF_C_H),
+    "C-coulomb-exact": (_exact_coulomb, tol.ROUNDOFF_C_H),
+    "stiff-layer-exact": (_exact_stiff_layer, None),
+    "inclined-exact": (_exact_inclined, tol.ROUNDOFF_C_H),
 }
 
 

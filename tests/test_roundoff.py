@@ -4,8 +4,9 @@ and increment, and give the same tractions and jumps to
 ROUNDOFF_PROFILES[case] of their scale (tests/roundoff.py).  The default stage
 runs the case that once split by BLAS kernel (a soft layer under a stiff
 one, xfem P1: 17/13 stick/slip under Haswell's kernels at the first
-unloading increment, where Nehalem's gave an answer) and C-coulomb at 10x
-its springs; the slow stage runs the whole matrix."""
+unloading increment, where Nehalem's gave an answer), C-coulomb at 10x
+its springs and C-coulomb enforced exactly; the slow stage runs the whole
+matrix, penalty and exact cases."""
 import pytest
 
 import roundoff
@@ -21,7 +22,7 @@ def _assert_alike(reference: dict, perturbed: dict, case: str, what: str) -> Non
 
 
 def test_stiff_cases_decide_alike_under_two_blas_kernels(tmp_path):
-    probes = [("soft-layer", "xfem"), ("C-coulomb-10x", "xfem")]
+    probes = [("soft-layer", "xfem"), ("C-coulomb-10x", "xfem"), ("C-coulomb-exact", "xfem")]
     haswell = roundoff.in_child(probes, "coretype=Haswell", tmp_path)
     nehalem = roundoff.in_child(probes, "coretype=Nehalem", tmp_path)
     for case, method in probes:

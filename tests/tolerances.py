@@ -358,9 +358,23 @@ EFGM_DISTRIBUTED_ASSEMBLY = 1e-13
 #: (+ soft: efgm, whose multiplier system answers where it once refused);
 #: the block shifted 1e6 times its deformation 3.3e-8; the soft layer
 #: (contrast 1e-8) 1.8e-6 — its closed form holds only to
-#: SOFT_LAYER_CLOSED_FORM.  Each bound is 5-10x its case's worst.
+#: SOFT_LAYER_CLOSED_FORM.  The exact-law cases (measured 2026-11-27, fe,
+#: xfem, efgm × Haswell, Nehalem, Sandybridge, orderings 0/2 or the
+#: shuffle, the load change; every status map identical): C-coulomb 1.6e-12,
+#: the inclined Γ 2.5e-12 (the load change itself moves both by 1e-12), the
+#: 1000x stiffer layer 7.1e-10 (efgm's tractions; fe 2.4e-14, xfem 1.6e-11).
+#: Each bound is 5-10x its case's worst.
 ROUNDOFF_PROFILES = {"C-coulomb-10x": 1e-8, "C-coulomb-100x": 1e-8, "contrast-1e-6": 1e-7,
-                     "contrast+1e-6": 5e-6, "shifted": 2e-7, "soft-layer": 1e-5}
+                     "contrast+1e-6": 5e-6, "shifted": 2e-7, "soft-layer": 1e-5,
+                     "C-coulomb-exact": 1e-11, "inclined-exact": 2e-11, "stiff-layer-exact": 5e-9}
+
+#: The exact-law round-off cases: the lower layer of the layered-slip closed
+#: form this much stiffer (the contrast where EFGM needed the most Newton
+#: iterations, docs/contact-enforcement.md "Known limits"), and scene A's Γ
+#: inclined through this placement (angle in degrees, height), where the
+#: exact unilateral law opens Γ over part of its length (tests/test_exact.py).
+EXACT_STIFF_LAYER = 1000.0
+EXACT_INCLINED_PLACEMENT = (17.8461, 0.5195)
 
 #: The relative change of every load and prescribed value in the ``load``
 #: perturbation: far above round-off (1e-16), far below the band.
