@@ -83,7 +83,7 @@ def test_the_quick_report_runs_on_an_mpi4py_futures_pool(tmp_path):
     env["PYTHONPATH"] = str(ROOT)
     out = subprocess.run([shutil.which("mpiexec"), "--allow-run-as-root", "--oversubscribe", "-n", "3",
                           sys.executable, "-m", "mpi4py.futures", "-m", "verification", "report",
-                          str(tmp_path / "r"), "--quick"], env=env, cwd=ROOT, capture_output=True, text=True,
+                          "--out", str(tmp_path / "r"), "--quick"], env=env, cwd=ROOT, capture_output=True, text=True,
                          timeout=600)
     assert out.returncode == 0, out.stderr
     text = (tmp_path / "r" / "report.md").read_text()

@@ -152,7 +152,7 @@ def test_study_rejects_a_parameter_that_does_not_apply(tmp_path, capsys):
 
 def test_quick_report_runs_the_whole_chain(tmp_path):
     """paper, closed forms, efficiency, sweeps and a study, into one file."""
-    assert main(["report", str(tmp_path), "--quick"]) == 0
+    assert main(["report", "--out", str(tmp_path), "--quick"]) == 0
     text = (tmp_path / "report.md").read_text()
     for heading in ("## The paper's figures", "## Closed forms", "## Error against run time, scene C",
                     "## Stiff and extreme cases", "## Study: scene B, radius", "## Penalty against exact"):

@@ -10,7 +10,7 @@
     python -m verification sweeps [--sweep NAME ...] [--method ...] [--degree 1] --out DIR
     python -m verification study SCENE --param NAME --values V1 V2 ... [--param NAME2 --values ...] [--method ...]
         [--degree 1] [--h H] --out DIR
-    python -m verification report DIR [--quick]
+    python -m verification report [--quick] --out DIR
     python -m verification benchmark [--scene A B C] --out DIR      (needs python3-getfem)
     python -m verification timing SCENE [SCENE ...] --method fe --degree 1 2 --h H1 H2 ... --out DIR
     python -m verification shapes [--basis linear quadratic] [--grid 101] [--points 200000] [--repeats 5] --out DIR
@@ -179,8 +179,7 @@ def _commands() -> dict[str, Command]:
             method, degree, arg("--h", type=float, help="resolution (default: the scene's h)"), cell, out,
             workers()), _study),
         "report": Command("every verification, gathered into DIR/report.md", (
-            arg("out", type=Path, help="result folder"),
-            arg("--quick", action="store_true", help="short ladders: a smoke test of the whole chain"),
+            out, arg("--quick", action="store_true", help="short ladders: a smoke test of the whole chain"),
             workers()), _report),
         "benchmark": Command("error against run time beside GetFEM's level-set XFEM", (
             scenes, out, workers(os.cpu_count())), _benchmark),

@@ -1,0 +1,32 @@
+"""The command line's own rules, checked before any solve: one way to name
+the result folder, one ``--workers`` default, help that explains its
+choices, and refusals in one line with exit status 2."""
+import argparse
+
+import pytest
+
+from verification.__main__ import _parser, main
+
+
+def _subparsers(parser: argparse.ArgumentParser):
+    for action in parser._actions:  # argparse keeps its subcommands on the subparsers action only
+        if isinstance(action, argparse._SubParsersAction):
+            yield from action.choices.items()
+
+
+def _refused(argv, capsys) -> str:
+    """The one line with which the parser refuses ``argv`` (exit status 2)."""
+    with pytest.raises(SystemExit) as ended:
+        main(argv)
+    err = capsys.readouterr().err.strip().splitlines()
+    assert ended.value.code == 2 and len(err) == 1, err
+    return err[0]
+
+
+def test_every_command_takes_its_folder_as_out(capsys):
+    """``--out DIR`` on every command, ``report`` too; a bare folder is refused."""
+    for name, sub in _subparsers(_parser()):
+        outs = [a for a in sub._actions if a.dest == "out"]
+        assert [a.option_strings for a in outs] == [["--out"]], name
+    assert _parser().parse_args(["report", "--out", "R", "--quick"]).out.name == "R"
+    assert _refused(["report", "R", "--quick"], capsys).startswith("error: report: ")
