@@ -30,3 +30,13 @@ def test_every_command_takes_its_folder_as_out(capsys):
         assert [a.option_strings for a in outs] == [["--out"]], name
     assert _parser().parse_args(["report", "--out", "R", "--quick"]).out.name == "R"
     assert _refused(["report", "R", "--quick"], capsys).startswith("error: report: ")
+
+
+def test_every_command_that_takes_workers_has_one_default_and_one_help():
+    """``--workers``: the same default (:data:`~verification.pool.DEFAULT_WORKERS`)
+    and the same help line wherever it is taken."""
+    from verification.pool import DEFAULT_WORKERS
+    found = {name: a for name, sub in _subparsers(_parser()) for a in sub._actions if a.dest == "workers"}
+    assert set(found) == {"study", "sweeps", "efficiency", "paper", "benchmark", "report"}
+    assert {a.default for a in found.values()} == {DEFAULT_WORKERS} == {1}
+    assert len({a.help for a in found.values()}) == 1 and f"default {DEFAULT_WORKERS}" in found["study"].help

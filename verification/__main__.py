@@ -17,8 +17,9 @@
     python -m verification scaling SCENE --method xfem --degree 2 --h H ... --ranks 1 2 --out DIR   (launches mpirun)
 
 ``study``, ``sweeps``, ``efficiency``, ``paper``, ``benchmark`` and ``report`` take
-``--workers K`` (their cases on K local processes, :mod:`verification.pool`),
-or run under ``mpiexec -n K python -m mpi4py.futures -m verification ...``.
+``--workers K`` (their cases on K local processes, :mod:`verification.pool`;
+by default :data:`~verification.pool.DEFAULT_WORKERS`, one after another in
+this process), or run under ``mpiexec -n K python -m mpi4py.futures -m verification ...``.
 
 Bad input ends with one line ``error: <field>: <problem>`` and exit status 2;
 Ctrl-C with one line ``interrupted`` and exit status 130 (128 + SIGINT).
@@ -28,7 +29,6 @@ from __future__ import annotations
 import argparse
 import logging
 import math
-import os
 import sys
 import tempfile
 from dataclasses import dataclass
@@ -40,7 +40,7 @@ from contactcore import ContactError, load_scene
 from xdolfinx.options import XFEM_CELLS
 
 from . import files, methods
-from .pool import LOG_FORMAT
+from .pool import DEFAULT_WORKERS, LOG_FORMAT
 
 log = logging.getLogger("verification")
 
@@ -116,9 +116,9 @@ def _commands() -> dict[str, Command]:
     out = arg("--out", type=Path, required=True,
               help="result folder (built aside, put in place only if the run succeeds)")
 
-    def workers(default=None) -> Arg:
-        return arg("--workers", type=int, default=default, metavar="K",
-                   help=f"run the independent cases on K processes (default {default or 1})")
+    workers = arg("--workers", type=int, default=DEFAULT_WORKERS, metavar="K",
+                  help=f"run the independent cases on K local processes (default {DEFAULT_WORKERS}: one after "
+                       "another in this process); under mpiexec -n K python -m mpi4py.futures, on its K − 1 workers")
 
     return {
         "run": Command("solve one scene with one or more methods", (
@@ -149,7 +149,7 @@ def _commands() -> dict[str, Command]:
             out), _run, "spread"),
         "paper": Command("the paper's figures and an agreement table against a refined reference", (
             scenes, arg("--ref-h", type=float, help="cell size of the P2 reference (default: a quarter of the "
-                                                    "scene's h)"), out, workers()), _paper),
+                                                    "scene's h)"), out, workers), _paper),
         "closed": Command("closed-form cases on refinement ladders, with observed rates", (
             arg("--case", nargs="+", default=list(CASES), choices=list(CASES), help="the cases (default: all)"),
             method, arg("--degree", nargs="+", type=int, default=[1, 2], choices=(1, 2),
@@ -159,7 +159,7 @@ def _commands() -> dict[str, Command]:
             arg("--ref-h", type=float,
                 help="element size of the P2 reference (default: none, the errors are estimated)"),
             arg("--exclude", type=float, help="distance from corners and Γ's ends left out (default 0.1 L)"),
-            out, workers(os.cpu_count())), _efficiency),
+            out, workers), _efficiency),
         "effectivity": Command("the error estimates against fe P2 at a fine h, on the paper's scenes or others", (
             arg("--scene", nargs="+", default=["A", "B", "C"],
                 help="built-in scene names or scene TOML files (default: the paper's A B C)"),
@@ -169,7 +169,7 @@ def _commands() -> dict[str, Command]:
             out), _effectivity),
         "sweeps": Command("stiff and extreme cases: error, condition and outcome", (
             arg("--sweep", nargs="+", choices=[s.name for s in sweeps()], help="the sweeps (default: all)"),
-            method, degree, out, workers()), _sweeps),
+            method, degree, out, workers), _sweeps),
         "study": Command("inputs varied over their product (geometry through gmsh, h, springs, materials)", (
             arg("scene", help="built-in scene name or a scene TOML file"),
             arg("--param", required=True, choices=list(PARAMETERS), action="append",
@@ -177,12 +177,12 @@ def _commands() -> dict[str, Command]:
             arg("--values", nargs="+", type=_number_or_word, required=True, action="append",
                 help="the values of the --param just before"),
             method, degree, arg("--h", type=float, help="resolution (default: the scene's h)"), cell, out,
-            workers()), _study),
+            workers), _study),
         "report": Command("every verification, gathered into DIR/report.md", (
             out, arg("--quick", action="store_true", help="short ladders: a smoke test of the whole chain"),
-            workers()), _report),
+            workers), _report),
         "benchmark": Command("error against run time beside GetFEM's level-set XFEM", (
-            scenes, out, workers(os.cpu_count())), _benchmark),
+            scenes, out, workers), _benchmark),
         "timing": Command("wall time against DOFs on a ladder of resolutions", (
             arg("scene", nargs="+", help="one or more scenes, measured in one run (e.g. C C-coulomb)"),
             method, degrees, ladder, out), _timing, "spread"),
