@@ -6,6 +6,8 @@ import argparse
 import pytest
 
 from verification.__main__ import _parser, main
+from verification.study import PARAMETERS
+from verification.sweeps import sweeps
 
 
 def _subparsers(parser: argparse.ArgumentParser):
@@ -40,3 +42,19 @@ def test_every_command_that_takes_workers_has_one_default_and_one_help():
     assert set(found) == {"study", "sweeps", "efficiency", "paper", "benchmark", "report"}
     assert {a.default for a in found.values()} == {DEFAULT_WORKERS} == {1}
     assert len({a.help for a in found.values()}) == 1 and f"default {DEFAULT_WORKERS}" in found["study"].help
+
+
+@pytest.mark.parametrize("command, option, expected", [
+    ("sweeps", "--sweep NAME", {s.name: s.what for s in sweeps()}),
+    ("study", "--param NAME", {p: what for p, (what, _) in PARAMETERS.items()}),
+])
+def test_help_explains_each_choice_in_one_line(capsys, command, option, expected):
+    """``sweeps --help`` and ``study --help`` list every sweep or parameter
+    on a line of its own, with what it is."""
+    with pytest.raises(SystemExit) as ended:
+        main([command, "--help"])
+    text = capsys.readouterr().out
+    assert ended.value.code == 0 and f"\n{option}:\n" in text
+    lines = text.split(f"\n{option}:\n")[1].splitlines()
+    assert [line.split()[0] for line in lines] == list(expected)
+    assert all(line.endswith(f"  {what}") for line, what in zip(lines, expected.values()))

@@ -81,12 +81,14 @@ class Command:
     (``run(args, argv)``), and how it meets mpirun's ranks (``ranks``): it
     spreads its solves over them (``"spread"``), spreads its cases over a
     pool instead (``"pool"``: refused under mpirun), or launches mpirun
-    itself (``"launcher"``: refused under mpirun)."""
+    itself (``"launcher"``: refused under mpirun).  ``epilog`` follows the
+    options in ``--help``, line by line (:func:`explained`)."""
 
     help: str
     args: tuple[Arg, ...]
     run: Callable[[argparse.Namespace, list], None]
     ranks: str = "pool"
+    epilog: str = ""  # below the options in --help, as written (the choices explained)
 
 
 #: What each ``Command.ranks`` says when the command is started under mpirun with several ranks.
@@ -95,6 +97,12 @@ UNDER_MPIRUN = {
             "under mpiexec -n K python -m mpi4py.futures -m verification",
     "launcher": "mpirun: '{}' launches mpirun itself, once per rank count: run it without mpirun",
 }
+
+
+def explained(option: str, choices: dict[str, str]) -> str:
+    """``--help``'s list of an option's choices, one line each: the name, then what it is."""
+    width = max(map(len, choices))
+    return f"{option}:\n" + "\n".join(f"  {name:<{width}}  {what}" for name, what in choices.items())
 
 
 def _commands() -> dict[str, Command]:
@@ -168,16 +176,18 @@ def _commands() -> dict[str, Command]:
             arg("--levels", type=int, default=2, choices=(2, 3), help="runs h, h/2 (3: and h/4); default 2"),
             out), _effectivity),
         "sweeps": Command("stiff and extreme cases: error, condition and outcome", (
-            arg("--sweep", nargs="+", choices=[s.name for s in sweeps()], help="the sweeps (default: all)"),
-            method, degree, out, workers), _sweeps),
+            arg("--sweep", nargs="+", choices=[s.name for s in sweeps()], metavar="NAME",
+                help="the sweeps (default: all; each explained below)"),
+            method, degree, out, workers), _sweeps,
+            epilog=explained("--sweep NAME", {s.name: s.what for s in sweeps()})),
         "study": Command("inputs varied over their product (geometry through gmsh, h, springs, materials)", (
             arg("scene", help="built-in scene name or a scene TOML file"),
-            arg("--param", required=True, choices=list(PARAMETERS), action="append",
-                help="repeat --param NAME --values ... for a Cartesian product"),
+            arg("--param", required=True, choices=list(PARAMETERS), action="append", metavar="NAME",
+                help="repeat --param NAME --values ... for a Cartesian product (each NAME explained below)"),
             arg("--values", nargs="+", type=_number_or_word, required=True, action="append",
                 help="the values of the --param just before"),
             method, degree, arg("--h", type=float, help="resolution (default: the scene's h)"), cell, out,
-            workers), _study),
+            workers), _study, epilog=explained("--param NAME", {p: what for p, (what, _) in PARAMETERS.items()})),
         "report": Command("every verification, gathered into DIR/report.md", (
             out, arg("--quick", action="store_true", help="short ladders: a smoke test of the whole chain"),
             workers), _report),
@@ -223,7 +233,8 @@ def _parser(commands: dict[str, Command] | None = None) -> argparse.ArgumentPars
                       help="also the debug messages of this tool")
     sub = parser.add_subparsers(dest="command", required=True)
     for name, command in commands.items():
-        p = sub.add_parser(name, parents=[common], help=command.help)
+        p = sub.add_parser(name, parents=[common], help=command.help, epilog=command.epilog or None,
+                           formatter_class=argparse.RawDescriptionHelpFormatter)
         for a in command.args:
             p.add_argument(*a.flags, **a.options)
     return parser
