@@ -2,6 +2,7 @@
 the result folder, one ``--workers`` default, help that explains its
 choices, and refusals in one line with exit status 2."""
 import argparse
+import json
 
 import pytest
 
@@ -58,3 +59,23 @@ def test_help_explains_each_choice_in_one_line(capsys, command, option, expected
     lines = text.split(f"\n{option}:\n")[1].splitlines()
     assert [line.split()[0] for line in lines] == list(expected)
     assert all(line.endswith(f"  {what}") for line, what in zip(lines, expected.values()))
+
+
+def test_units_json_gives_each_csvs_s_its_own_unit(tmp_path):
+    """``s`` is an arc length (m) or a polar angle (rad), per CSV, resolved
+    from the scene of its result folder (no solve: the CSVs are headers).
+    Scene B: B1 a line (m), B5 on the circle against the angle (rad), Γ's
+    interface.csv an angle; scene A, nested beside it: a straight Γ, every
+    s an arc length."""
+    from contactcore import scene_text
+    from verification import files
+    for folder, scene, csvs in ((tmp_path, "B", ("fe/profiles/B1.csv", "fe/profiles/B5.csv", "fe/interface.csv")),
+                                (tmp_path / "a", "A", ("fe/profiles/A1.csv", "fe/interface.csv"))):
+        files.write_text(folder / files.SCENE_FILE, scene_text(scene))
+        for name in csvs:
+            files.write_text(folder / name, "step,s,x,y,gN\n" if "interface" in name else "s,x,y,tN\n")
+    units = json.loads(files.write_units(tmp_path).read_text())
+    assert {name: u["s"] for name, u in units.items()} == {
+        "fe/profiles/B1.csv": "m", "fe/profiles/B5.csv": "rad", "fe/interface.csv": "rad",
+        "a/fe/profiles/A1.csv": "m", "a/fe/interface.csv": "m"}
+    assert units["fe/profiles/B5.csv"] == {"s": "rad", "x": "m", "y": "m", "tN": "Pa"}

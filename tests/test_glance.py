@@ -132,7 +132,7 @@ def test_a_run_folder_names_every_csv_columns_unit(tmp_path):
     assert verification_main.main(["run", "A", "--method", "fe", "--h", "0.2", "--no-plots", "-q",
                                    "--out", str(out)]) == 0
     units = json.loads((out / files.UNITS_FILE).read_text())
-    assert units["fe/profiles/A2.csv"] == {"s": "m or rad", "x": "m", "y": "m", "syy": "Pa"}
+    assert units["fe/profiles/A2.csv"] == {"s": "m", "x": "m", "y": "m", "syy": "Pa"}  # a line profile: arc length
     assert units["fe/profiles/A5.csv"]["gN"] == "m"
     assert (out / "fe/profiles/A2.csv").read_text().splitlines()[0] == "s,x,y,syy"
 

@@ -3,6 +3,7 @@ the stiff and extreme cases (no silently wrong answer), the warnings that
 make a stiff case 'warned', parameter studies that survive a failed point,
 and the whole report chain."""
 import csv
+import json
 
 import numpy as np
 import pytest
@@ -10,7 +11,7 @@ import pytest
 import tolerances as tol
 from contactcore import LinearLaw, load_scene, sample_profile
 from contactcore.scene import InterfaceProfile
-from verification import methods
+from verification import files, methods
 from verification.__main__ import main
 from verification.closed_forms import pressurised_rod, twisted_rod
 from verification.norms import observed_rate
@@ -163,6 +164,11 @@ def test_quick_report_runs_the_whole_chain(tmp_path):
     with open(tmp_path / "paper" / "agreement.csv") as fh:
         rows = list(csv.DictReader(fh))
     assert len({(r["scene"], r["method"]) for r in rows}) == 9  # three methods on each of A, B and C
+    units = json.loads((tmp_path / files.UNITS_FILE).read_text())
+    assert units["paper/B/fe/profiles/B5.csv"]["s"] == "rad" and units["paper/B/fe/profiles/B1.csv"]["s"] == "m"
+    with_s = [p.relative_to(tmp_path).as_posix() for p in tmp_path.rglob("*.csv")
+              if "s" in p.read_text().partition("\n")[0].split(",")]
+    assert len(with_s) > 9 and all(units[name]["s"] in ("m", "rad") for name in with_s)  # every s resolved
     assert not list(tmp_path.rglob(".*"))  # no temporary file left behind
 
 

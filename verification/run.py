@@ -250,7 +250,7 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
     if compared and profiles and ref not in {label for by_label in profiles.values() for label in by_label}:
         _solve_reference(scene, reference, finest, paper, petsc_options or None, out, profiles, summaries)
     text = _write_summary(out, scene, summaries, profiles, paths, estimated, ref, draw, gaps)
-    files.write_text(out / "scene.toml", scene_text(scene_name))
+    files.write_text(out / files.SCENE_FILE, scene_text(scene_name))
     files.write_json(out / "run.json", {**files.provenance(list(argv)),
                                         "scene": scene.name if isinstance(scene_name, Scene) else str(scene_name),
                                         "methods": chosen, "h": h, "degree": degree,
