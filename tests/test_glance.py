@@ -244,16 +244,20 @@ def test_an_exact_law_has_no_penalty_to_fall_back_on():
 
 def test_study_sets_the_enforcement_before_the_stabilisation(tmp_path):
     """In a product, whatever the order of the --param flags, β is set on
-    the law as enforced: every exact point runs with its β, and a penalty
-    point is a failed row naming why (the study goes on)."""
+    the law as enforced: every exact point runs with its β, and the penalty
+    points leave it aside and say so (as the exact points do k_N, k_T):
+    their answer is the same at every β."""
     rows = _study(tmp_path, "C-coulomb", "--param", "stabilisation", "--values", "1", "10", "--param",
                   "enforcement", "--values", "exact", "penalty")
+    assert all(r["status"] != "failed" for r in rows)
     exact = [r for r in rows if r["enforcement"] == "exact"]
-    assert [float(r["stabilisation"]) for r in exact] == [1, 10] and all(r["status"] != "failed" for r in exact)
+    assert [float(r["stabilisation"]) for r in exact] == [1, 10] and not any("not applied" in r["message"]
+                                                                             for r in exact)
     assert exact[0]["max_tN"] != exact[1]["max_tN"]                          # β reached the law
     penalty = [r for r in rows if r["enforcement"] == "penalty"]
-    assert len(penalty) == 2 and all(r["status"] == "failed" and "applies to enforcement" in r["message"]
-                                     for r in penalty)
+    assert len(penalty) == 2 and all(r["message"].startswith('stabilisation not applied: it plays no part under '
+                                                             'enforcement = "penalty"') for r in penalty)
+    assert len({tuple(r[q] for q in study.OUTPUTS) for r in penalty}) == 1
 
 
 def test_study_leaves_the_springs_aside_at_its_exact_points(tmp_path):

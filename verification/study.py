@@ -24,9 +24,10 @@ in case order as their results arrive; a point that fails
 on.  Writes ``DIR/study.csv``, ``DIR/study.md`` and one plot per parameter,
 the others as series, warned points ringed and failed ones crossed on the x axis: ``DIR/study.png`` for one parameter,
 ``DIR/study_<param>.png`` for several.  ``kN``, ``kT`` play no part under
-exact enforcement: varied on an exact law they are refused, and where the
-study also varies ``enforcement`` its exact points leave them aside (the
-row's message says so) while its penalty points take them.
+exact enforcement, and ``stabilisation`` none under penalty: varied on a
+law enforced the other way they are refused, and where the study also
+varies ``enforcement`` the points enforced the other way leave them aside
+(the row's message says so) while the others take them.
 """
 from __future__ import annotations
 
@@ -63,6 +64,9 @@ def _material(scene, body: str, key: str, value: float):
 
 #: The penalty's springs: an exact law has none.
 SPRINGS = ("kN", "kT")
+#: The parameters that play no part under each enforcement: a penalty law's
+#: springs where it is enforced exactly, Nitsche's β where by its springs.
+UNUSED_UNDER = {"exact": SPRINGS, "penalty": ("stabilisation",)}
 
 
 def _law(scene, key: str, value: float):
@@ -177,16 +181,17 @@ def scene_at(scene, point: dict):
     for param, value in sorted(point.items(), key=lambda item: item[0] != "enforcement"):
         _check(param)
         change = PARAMETERS[param][1]
-        if change and param not in springs_left_aside(point, changes.get("law", scene.law)):
+        if change and param not in left_aside(point, changes.get("law", scene.law)):
             changes.update(change(scene.with_changes(profiles=(GAMMA,), **changes), value))
     return scene.with_changes(profiles=(GAMMA,), **changes)
 
 
-def springs_left_aside(point: dict, law) -> list[str]:
-    """The springs ``point`` gives that its ``law`` leaves aside: where the
-    point also sets the enforcement and it is exact, k_N and k_T play no
-    part, and the penalty points of the same study use them."""
-    return [p for p in SPRINGS if p in point] if "enforcement" in point and is_exact(law) else []
+def left_aside(point: dict, law) -> list[str]:
+    """The parameters ``point`` gives that its ``law``, as enforced, leaves
+    aside (:data:`UNUSED_UNDER`): where the point also sets the enforcement,
+    k_N and k_T play no part at its exact points and β none at its penalty
+    ones; the study's points enforced the other way use them."""
+    return [p for p in UNUSED_UNDER[law.enforcement] if p in point] if "enforcement" in point else []
 
 
 def _outputs(scene, result) -> dict:
@@ -239,8 +244,8 @@ def solve_case(case: Case) -> dict:
     if tried.refused:
         return {**row, "status": "failed", "message": tried.message}
     status = "warned" if tried.result.solver.warnings else "ok"
-    aside = [f"{p} not applied: it plays no part under enforcement = \"exact\""
-             for p in springs_left_aside(point, scene.law)]
+    aside = [f"{p} not applied: it plays no part under enforcement = \"{scene.law.enforcement}\""
+             for p in left_aside(point, scene.law)]
     return {**row, "status": status, "message": "; ".join([*aside, *tried.result.solver.warnings]),
             **_outputs(scene, tried.result)}
 
