@@ -79,3 +79,46 @@ def test_units_json_gives_each_csvs_s_its_own_unit(tmp_path):
         "fe/profiles/B1.csv": "m", "fe/profiles/B5.csv": "rad", "fe/interface.csv": "rad",
         "a/fe/profiles/A1.csv": "m", "a/fe/interface.csv": "m"}
     assert units["fe/profiles/B5.csv"] == {"s": "rad", "x": "m", "y": "m", "tN": "Pa"}
+
+
+@pytest.mark.parametrize("args, message", [
+    (["B", "--param", "radius", "--values", "0.2", "1.5"],
+     "--param radius = 1.5: interface: the circle is not strictly inside the domain"),
+    (["C", "--param", "kN", "--values", "1e9", "1e10", "--param", "radius", "--values", "0.2", "1.5"],
+     "--param kN = 1e+09, radius = 1.5: interface: the circle is not strictly inside the domain"),
+    (["C-coulomb", "--param", "mu", "--values", "0.2", "0.5", "--param", "increments", "--values", "2", "2.5"],
+     "--param increments: must be a whole number >= 1 (got 2.5)"),
+    (["C-coulomb", "--param", "enforcement", "--values", "exact", "--param", "stabilisation", "--values", "2", "200"],
+     "--param stabilisation: must lie within 0.3..30 (got 200)"),
+    (["C-coulomb", "--param", "enforcement", "--values", "exact", "--param", "stabilisation", "--values", "200", "2"],
+     "--param stabilisation: must lie within 0.3..30 (got 200)"),
+    (["A", "--param", "h", "--values", "0.1", "5"], "--param h: 5 exceeds the domain's smallest dimension 1"),
+    (["A", "--param", "E_plus", "--values", "1e9", "-1"], "--param E_plus = -1: materials.plus.E: Young's modulus"),
+])
+def test_study_refuses_a_bad_point_anywhere_before_any_solve(tmp_path, capsys, monkeypatch, args, message):
+    """Every point's scene is built and validated first: a bad value, first
+    or later in its list, refuses the whole study in one line naming it,
+    exit status 2, nothing solved and no folder."""
+    from verification import pool
+
+    def no_solve(*_, **__):
+        raise AssertionError("a case was solved")
+
+    monkeypatch.setattr(pool, "map_cases", no_solve)
+    out = tmp_path / "study"
+    assert main(["study", *args, "--method", "fe", "--h", "0.2", "-q", "--out", str(out)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith(f"error: {message}"), err
+    assert not out.exists()
+
+
+def test_a_penalty_point_leaves_the_stabilisation_aside_whatever_comes_first():
+    """β beside --param enforcement: a penalty point (first or not) keeps
+    its law and leaves β aside, as an exact point does k_N."""
+    from contactcore import load_scene
+    from verification.study import left_aside, scene_at
+    base = load_scene("C-coulomb")
+    penalty = {"enforcement": "penalty", "stabilisation": 2.0}
+    assert scene_at(base, penalty).law == base.law and left_aside(penalty, base.law) == ["stabilisation"]
+    exact = scene_at(base, {"enforcement": "exact", "stabilisation": 2.0, "kN": 1e9})
+    assert exact.law.stabilisation == 2.0 and left_aside({"enforcement": "exact", "kN": 1e9}, exact.law) == ["kN"]
