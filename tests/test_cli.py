@@ -122,3 +122,61 @@ def test_a_penalty_point_leaves_the_stabilisation_aside_whatever_comes_first():
     assert scene_at(base, penalty).law == base.law and left_aside(penalty, base.law) == ["stabilisation"]
     exact = scene_at(base, {"enforcement": "exact", "stabilisation": 2.0, "kN": 1e9})
     assert exact.law.stabilisation == 2.0 and left_aside({"enforcement": "exact", "kN": 1e9}, exact.law) == ["kN"]
+
+
+@pytest.mark.parametrize("floor, message", [
+    (["--floor", "foo=1"], "error: run: argument --floor: expected Q=VALUE with Q one of sxx, syy, sxy"),
+    (["--floor", "sxy"], "error: run: argument --floor: expected Q=VALUE"),
+    (["--floor", "sxy=abc"], "error: run: argument --floor: sxy: the floor must be a number (got 'abc')"),
+    (["--floor", "sxy=0"], "error: run: argument --floor: sxy: the floor must be a finite number > 0 in sxy's unit"),
+    (["--floor", "sxy=-1e3"], "error: run: argument --floor: sxy: the floor must be a finite number > 0"),
+    (["--floor", "sxy=inf"], "error: run: argument --floor: sxy: the floor must be a finite number > 0"),
+])
+def test_run_refuses_a_bad_floor_in_one_line(capsys, tmp_path, floor, message):
+    assert _refused(["run", "A", "--method", "fe", "xfem", *floor, "--out", str(tmp_path / "r")],
+                    capsys).startswith(message)
+    assert not (tmp_path / "r").exists()
+
+
+@pytest.mark.parametrize("args, message", [
+    (["A", "--method", "fe", "--floor", "sxy=1e3"], "error: --floor: floors measure the agreement between methods, "
+                                                    "and one method runs here"),
+    (["C", "--method", "fe", "xfem", "--floor", "sxx=1e3"], "error: --floor: sxx: no profile of scene C samples it"),
+    (["A", "--method", "fe", "xfem", "--floor", "sxy=1e3", "--floor", "sxy=2"],
+     "error: --floor: sxy given twice (1000 and 2)"),
+])
+def test_run_refuses_a_floor_that_cannot_apply_before_any_solve(capsys, tmp_path, monkeypatch, args, message):
+    from verification import methods
+
+    def no_solve(*_, **__):
+        raise AssertionError("a method was solved")
+
+    monkeypatch.setattr(methods, "solver", no_solve)
+    assert main(["run", *args, "--out", str(tmp_path / "r")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith(message), err
+    assert not (tmp_path / "r").exists()
+
+
+def test_run_measures_a_quantity_against_its_floor(tmp_path):
+    """``run --floor sxy=1e3``: summary.md's table is the agreement table of
+    the written profiles with that floor (not the one without), says so,
+    and run.json records it."""
+    import numpy as np
+
+    from contactcore import ProfileData, load_scene
+    from verification import agreement, files
+    out = tmp_path / "r"
+    assert main(["run", "A", "--method", "efgm", "xfem", "--h", "0.2", "--reference", "xfem:1", "--no-plots", "-q",
+                 "--floor", "sxy=1e3", "--out", str(out)]) == 0
+    scene = load_scene("A")
+    runs = {f"{m} (p1)": {p.id: ProfileData(p.id, "arclength", {k: np.asarray(v) for k, v in files.read_profile_csv(
+        out / m / "profiles" / f"{p.id}.csv").items()}) for p in scene.profiles} for m in ("efgm", "xfem")}
+    floored, bare = (agreement.table(scene, runs, "xfem (p1)", floors=f).rows for f in ({"sxy": 1e3}, None))
+    summary = (out / "summary.md").read_text()
+    assert "sxy is measured against sqrt(sxy² + (1e+03 Pa)²) (a floor given)" in summary
+    for with_floor, without in zip(floored, bare):
+        row = f"| {with_floor.method} | {with_floor.profile} | {with_floor.quantity} | {with_floor.kind} | "
+        assert row + agreement.percent(with_floor.worst) + " |" in summary
+        assert (with_floor.worst < without.worst) == (with_floor.quantity == "sxy")
+    assert json.loads((out / "run.json").read_text())["floors"] == {"sxy": 1e3}

@@ -2,7 +2,8 @@
 
     python -m verification run SCENE_OR_TOML --method fe|xfem|efgm|all [--degree 1|2] [--cell quad|triangle|gmsh]
         [--h H] [--paper] [--fields] [--petsc-option KEY=VALUE ...] [--dmax D] [--basis linear|quadratic]
-        [--nodes FILE] [--estimate [2|3]] [--reference METHOD:DEGREE] [--against-exact] --out DIR
+        [--nodes FILE] [--estimate [2|3]] [--reference METHOD:DEGREE] [--against-exact] [--floor Q=VALUE ...]
+        --out DIR
     python -m verification paper [--scene A B C] [--ref-h H] --out DIR
     python -m verification closed [--case patch pressurised_rod twisted_rod] [--method ...] [--degree 1 2] --out DIR
     python -m verification efficiency SCENE --method fe efgm --degree 1 2 --h H1 H2 ... --ref-h H --out DIR
@@ -50,6 +51,32 @@ def _petsc_option(text: str) -> tuple[str, str]:
     if not sep or not key:
         raise argparse.ArgumentTypeError(f"expected KEY=VALUE, got {text!r}")
     return key.lstrip("-"), value
+
+
+def _floor(text: str) -> tuple[str, float]:
+    """``--floor Q=VALUE``: a profile quantity and its floor, a finite number > 0 in its unit."""
+    from contactcore.scene import QUANTITIES
+    name, sep, value = text.partition("=")
+    if not sep or name not in QUANTITIES:
+        raise argparse.ArgumentTypeError(f"expected Q=VALUE with Q one of {', '.join(QUANTITIES)} (got {text!r})")
+    try:
+        floor = float(value)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{name}: the floor must be a number (got {value!r})") from None
+    if not (math.isfinite(floor) and floor > 0):
+        raise argparse.ArgumentTypeError(f"{name}: the floor must be a finite number > 0 in {name}'s unit "
+                                         f"(got {value})")
+    return name, floor
+
+
+def _floors(pairs: list[tuple[str, float]]) -> dict[str, float]:
+    """The ``--floor`` pairs as a dict; a quantity given twice is refused."""
+    floors = {}
+    for name, value in pairs:
+        if name in floors:
+            raise ContactError(f"--floor: {name} given twice ({floors[name]:g} and {value:g})")
+        floors[name] = value
+    return floors
 
 
 def _reference(text: str) -> tuple[str, int] | None:
@@ -154,6 +181,10 @@ def _commands() -> dict[str, Command]:
                 help="a unilateral or coulomb law enforced by its springs: also solve each method with the law "
                      "enforced exactly (Nitsche) at the same discretisation, and say in summary.md and each "
                      "summary.json how far the penalty answer is from it"),
+            arg("--floor", type=_floor, action="append", default=[], metavar="Q=VALUE",
+                help="measure quantity Q in the agreement table and the Δ panels against sqrt(Q_ref² + VALUE²), "
+                     "VALUE > 0 in Q's unit (e.g. sxy=1e3 in Pa): for a quantity zero in the reference, whose "
+                     "round-off would else be its scale; repeat for several"),
             out), _run, "spread"),
         "paper": Command("the paper's figures and an agreement table against a refined reference", (
             scenes, arg("--ref-h", type=float, help="cell size of the P2 reference (default: a quarter of the "
@@ -245,7 +276,7 @@ def _run(args, argv) -> None:
     run(args.scene, args.method, args.out, h=args.h, degree=args.degree, paper=args.paper, fields=args.fields,
         petsc_options=dict(args.petsc_option), dmax=args.dmax, nodes_file=args.nodes, cell=args.cell,
         basis=args.basis, allow_large=args.allow_large, draw=args.draw, estimate=args.estimate,
-        reference=args.reference, against_exact=args.against_exact, argv=argv)
+        reference=args.reference, against_exact=args.against_exact, floors=_floors(args.floor), argv=argv)
 
 
 def _paper(args, argv) -> None:
