@@ -427,18 +427,35 @@ def _no_equilibrium(scene, n: int, depth: int, failures: list[str]) -> SolverErr
     where = f"scene {scene.name}: increment {n} of {scene.increments}"
     last = f"failed after {depth} cut-backs (step 1/{2 ** depth}): {_abridged(health.headline(failures[-1]))}"
     check = health.friction_demand(scene, float(n)) or health.material_cause(scene)
-    settle = ("Newton cannot settle the exact law's open/closed and stick/slip map: use more increments or "
-              "another stabilisation" if scene.law.enforcement == "exact" else
-              "the springs are too stiff to settle stick and slip: soften k_N, k_T or use more increments")
+    settle = _unsettled(scene.law)
     if scene.law.name == "unilateral":  # its tie drops t_T to 0 the moment a point opens
         settle += ("; or no open/closed map is consistent: the unilateral law frees a closed point's tangential "
                    "tie at once when it opens, where type = \"coulomb\" with a large mu lets t_T vanish with the "
                    "pressure")
-    error = SolverError(f"{where}: {check}\n  ({last})" if check else
-                        f"{where} {last}\n  either the load has no equilibrium (shear above μp, a body held only "
-                        f"by open points) or {settle}")
+    error = SolverError(f"{where}: {check}\n  ({last})" if check else f"{where} {last}\n  {settle}")
     error.details = "\n".join(failures)
     return error
+
+
+def _unsettled(law) -> str:
+    """Why an increment may not converge under ``law``, naming only the
+    remedies that apply to it: softer springs where the law is enforced by
+    k_N, k_T, another β where it is enforced exactly (Nitsche), more
+    increments only for a nonlinear law (a linear law's step is one solve
+    whatever its size), the friction limit μp only for a coulomb law."""
+    exact = law.enforcement == "exact"
+    if law.is_linear:
+        return ("a linear law's step is one linear solve, failed whatever its size (more increments do not help): "
+                + ("another stabilisation, or a rigid-body mode nearly free" if exact else
+                   "springs far stiffer or softer than the bulk (k_N, k_T against E/h), or a rigid-body mode "
+                   "nearly free"))
+    friction = law.name == "coulomb"
+    held = ("shear above μp, " if friction else "") + "a body held only by open points"
+    status = "open/closed and stick/slip" if friction else "open/closed"
+    remedy = (f"Newton cannot settle the exact law's {status} map: use more increments or another stabilisation"
+              if exact else f"the springs are too stiff to settle the {status} map: soften k_N, k_T or use more "
+              "increments")
+    return f"either the load has no equilibrium ({held}) or {remedy}"
 
 
 def _flat(factors) -> np.ndarray:

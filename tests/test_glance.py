@@ -132,7 +132,7 @@ def test_a_run_folder_names_every_csv_columns_unit(tmp_path):
     assert verification_main.main(["run", "A", "--method", "fe", "--h", "0.2", "--no-plots", "-q",
                                    "--out", str(out)]) == 0
     units = json.loads((out / files.UNITS_FILE).read_text())
-    assert units["fe/profiles/A2.csv"] == {"s": "m or rad", "x": "m", "y": "m", "syy": "Pa"}
+    assert units["fe/profiles/A2.csv"] == {"s": "m", "x": "m", "y": "m", "syy": "Pa"}  # a line profile: arc length
     assert units["fe/profiles/A5.csv"]["gN"] == "m"
     assert (out / "fe/profiles/A2.csv").read_text().splitlines()[0] == "s,x,y,syy"
 
@@ -163,13 +163,14 @@ def test_study_varies_the_load(tmp_path):
 
 
 def test_study_varies_mu_and_the_increments(tmp_path):
-    """C-coulomb (μ = 0.2): μ reaches the law; increments must be whole, a
-    fraction is a failed point with its message, the study goes on."""
+    """C-coulomb (μ = 0.2): μ and the increments reach the scene (a
+    fractional count is refused before any solve: tests/test_cli.py)."""
     rows = _study(tmp_path, "C-coulomb", "--param", "mu", "--values", "0.2", "0.5", "--param", "increments",
-                  "--values", "2", "2.5")
-    assert [(float(r["mu"]), float(r["increments"])) for r in rows] == [(0.2, 2), (0.2, 2.5), (0.5, 2), (0.5, 2.5)]
-    assert [r["status"] != "failed" for r in rows] == [True, False, True, False]
-    assert "--param increments: must be a whole number" in rows[1]["message"]
+                  "--values", "2")
+    assert [(float(r["mu"]), float(r["increments"])) for r in rows] == [(0.2, 2), (0.5, 2)]
+    assert all(r["status"] != "failed" for r in rows)
+    scenes = [study.scene_at(load_scene("C-coulomb"), {"mu": mu, "increments": 2.0}) for mu in (0.2, 0.5)]
+    assert [(s.law.mu, s.increments) for s in scenes] == [(0.2, 2), (0.5, 2)]
 
 
 @pytest.mark.parametrize("scene, hint", [
@@ -244,16 +245,20 @@ def test_an_exact_law_has_no_penalty_to_fall_back_on():
 
 def test_study_sets_the_enforcement_before_the_stabilisation(tmp_path):
     """In a product, whatever the order of the --param flags, β is set on
-    the law as enforced: every exact point runs with its β, and a penalty
-    point is a failed row naming why (the study goes on)."""
+    the law as enforced: every exact point runs with its β, and the penalty
+    points leave it aside and say so (as the exact points do k_N, k_T):
+    their answer is the same at every β."""
     rows = _study(tmp_path, "C-coulomb", "--param", "stabilisation", "--values", "1", "10", "--param",
                   "enforcement", "--values", "exact", "penalty")
+    assert all(r["status"] != "failed" for r in rows)
     exact = [r for r in rows if r["enforcement"] == "exact"]
-    assert [float(r["stabilisation"]) for r in exact] == [1, 10] and all(r["status"] != "failed" for r in exact)
+    assert [float(r["stabilisation"]) for r in exact] == [1, 10] and not any("not applied" in r["message"]
+                                                                             for r in exact)
     assert exact[0]["max_tN"] != exact[1]["max_tN"]                          # β reached the law
     penalty = [r for r in rows if r["enforcement"] == "penalty"]
-    assert len(penalty) == 2 and all(r["status"] == "failed" and "applies to enforcement" in r["message"]
-                                     for r in penalty)
+    assert len(penalty) == 2 and all(r["message"].startswith('stabilisation not applied: it plays no part under '
+                                                             'enforcement = "penalty"') for r in penalty)
+    assert len({tuple(r[q] for q in study.OUTPUTS) for r in penalty}) == 1
 
 
 def test_study_leaves_the_springs_aside_at_its_exact_points(tmp_path):

@@ -3,6 +3,7 @@ the stiff and extreme cases (no silently wrong answer), the warnings that
 make a stiff case 'warned', parameter studies that survive a failed point,
 and the whole report chain."""
 import csv
+import json
 
 import numpy as np
 import pytest
@@ -10,7 +11,7 @@ import pytest
 import tolerances as tol
 from contactcore import LinearLaw, load_scene, sample_profile
 from contactcore.scene import InterfaceProfile
-from verification import methods
+from verification import files, methods
 from verification.__main__ import main
 from verification.closed_forms import pressurised_rod, twisted_rod
 from verification.norms import observed_rate
@@ -116,20 +117,24 @@ def test_scene_b_at_the_paper_resolution_warns_of_false_normal_traction():
 
 
 def test_study_goes_on_after_a_failed_point(tmp_path):
-    """Γ's radius through gmsh: 0.2 and 0.3 solve, 1.5 misses the domain and
-    is reported; the study ends normally with a table and a plot."""
-    assert main(["study", "B", "--param", "radius", "--values", "0.2", "1.5", "0.3", "--method", "fe", "efgm",
-                 "--h", "0.05", "--out", str(tmp_path)]) == 0
+    """Γ's radius through gmsh, 0.2 and 0.3, each with k_N = 1e10 and 1e25:
+    k_N = 1e25 is a valid scene whose solve is refused (its spring rows
+    would lose the bulk to round-off), a failed row with its message; the
+    study goes on and ends normally with a table and a plot per parameter."""
+    assert main(["study", "B", "--param", "radius", "--values", "0.2", "0.3", "--param", "kN", "--values", "1e10",
+                 "1e25", "--method", "fe", "efgm", "--h", "0.05", "--out", str(tmp_path)]) == 0
     with open(tmp_path / "study.csv") as fh:
         rows = list(csv.DictReader(fh))
-    assert [(r["value"], r["status"]) for r in rows] == [
-        ("0.2", "ok"), ("0.2", "ok"), ("1.5", "failed"), ("1.5", "failed"), ("0.3", "ok"), ("0.3", "ok")]
-    assert "interface" in rows[2]["message"]
+    assert [(r["radius"], float(r["kN"]), r["status"]) for r in rows] == [
+        (radius, kN, status) for radius in ("0.2", "0.3") for kN, status in ((1e10, "ok"), (1e25, "failed"))
+        for _ in ("fe", "efgm")]
+    assert all("too stiff for double precision" in r["message"] for r in rows if r["status"] == "failed")
     # a larger rod under the same torque: a smaller mean shear, T/(2πR²)
-    means = {(r["value"], r["method"]): float(r["mean_tT"]) for r in rows if r["status"] == "ok"}
+    means = {(r["radius"], r["method"]): float(r["mean_tT"]) for r in rows if r["status"] == "ok"}
     for m in ("fe", "efgm"):
         assert means[("0.3", m)] / means[("0.2", m)] == pytest.approx((0.2 / 0.3) ** 2, rel=tol.TORQUE_BALANCE[1])
-    assert (tmp_path / "study.png").read_bytes()[:4] == b"\x89PNG"
+    for param in ("radius", "kN"):
+        assert (tmp_path / f"study_{param}.png").read_bytes()[:4] == b"\x89PNG"
 
 
 @pytest.mark.parametrize("first", ["angle", "offset"])
@@ -152,7 +157,7 @@ def test_study_rejects_a_parameter_that_does_not_apply(tmp_path, capsys):
 
 def test_quick_report_runs_the_whole_chain(tmp_path):
     """paper, closed forms, efficiency, sweeps and a study, into one file."""
-    assert main(["report", str(tmp_path), "--quick"]) == 0
+    assert main(["report", "--out", str(tmp_path), "--quick"]) == 0
     text = (tmp_path / "report.md").read_text()
     for heading in ("## The paper's figures", "## Closed forms", "## Error against run time, scene C",
                     "## Stiff and extreme cases", "## Study: scene B, radius", "## Penalty against exact"):
@@ -163,6 +168,11 @@ def test_quick_report_runs_the_whole_chain(tmp_path):
     with open(tmp_path / "paper" / "agreement.csv") as fh:
         rows = list(csv.DictReader(fh))
     assert len({(r["scene"], r["method"]) for r in rows}) == 9  # three methods on each of A, B and C
+    units = json.loads((tmp_path / files.UNITS_FILE).read_text())
+    assert units["paper/B/fe/profiles/B5.csv"]["s"] == "rad" and units["paper/B/fe/profiles/B1.csv"]["s"] == "m"
+    with_s = [p.relative_to(tmp_path).as_posix() for p in tmp_path.rglob("*.csv")
+              if "s" in p.read_text().partition("\n")[0].split(",")]
+    assert len(with_s) > 9 and all(units[name]["s"] in ("m", "rad") for name in with_s)  # every s resolved
     assert not list(tmp_path.rglob(".*"))  # no temporary file left behind
 
 

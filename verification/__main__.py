@@ -2,7 +2,8 @@
 
     python -m verification run SCENE_OR_TOML --method fe|xfem|efgm|all [--degree 1|2] [--cell quad|triangle|gmsh]
         [--h H] [--paper] [--fields] [--petsc-option KEY=VALUE ...] [--dmax D] [--basis linear|quadratic]
-        [--nodes FILE] [--estimate [2|3]] [--reference METHOD:DEGREE] [--against-exact] --out DIR
+        [--nodes FILE] [--estimate [2|3]] [--reference METHOD:DEGREE] [--against-exact] [--floor Q=VALUE ...]
+        --out DIR
     python -m verification paper [--scene A B C] [--ref-h H] --out DIR
     python -m verification closed [--case patch pressurised_rod twisted_rod] [--method ...] [--degree 1 2] --out DIR
     python -m verification efficiency SCENE --method fe efgm --degree 1 2 --h H1 H2 ... --ref-h H --out DIR
@@ -10,15 +11,16 @@
     python -m verification sweeps [--sweep NAME ...] [--method ...] [--degree 1] --out DIR
     python -m verification study SCENE --param NAME --values V1 V2 ... [--param NAME2 --values ...] [--method ...]
         [--degree 1] [--h H] --out DIR
-    python -m verification report DIR [--quick]
+    python -m verification report [--quick] --out DIR
     python -m verification benchmark [--scene A B C] --out DIR      (needs python3-getfem)
     python -m verification timing SCENE [SCENE ...] --method fe --degree 1 2 --h H1 H2 ... --out DIR
     python -m verification shapes [--basis linear quadratic] [--grid 101] [--points 200000] [--repeats 5] --out DIR
     python -m verification scaling SCENE --method xfem --degree 2 --h H ... --ranks 1 2 --out DIR   (launches mpirun)
 
 ``study``, ``sweeps``, ``efficiency``, ``paper``, ``benchmark`` and ``report`` take
-``--workers K`` (their cases on K local processes, :mod:`verification.pool`),
-or run under ``mpiexec -n K python -m mpi4py.futures -m verification ...``.
+``--workers K`` (their cases on K local processes, :mod:`verification.pool`;
+by default :data:`~verification.pool.DEFAULT_WORKERS`, one after another in
+this process), or run under ``mpiexec -n K python -m mpi4py.futures -m verification ...``.
 
 Bad input ends with one line ``error: <field>: <problem>`` and exit status 2;
 Ctrl-C with one line ``interrupted`` and exit status 130 (128 + SIGINT).
@@ -28,7 +30,6 @@ from __future__ import annotations
 import argparse
 import logging
 import math
-import os
 import sys
 import tempfile
 from dataclasses import dataclass
@@ -40,7 +41,7 @@ from contactcore import ContactError, load_scene
 from xdolfinx.options import XFEM_CELLS
 
 from . import files, methods
-from .pool import LOG_FORMAT
+from .pool import DEFAULT_WORKERS, LOG_FORMAT
 
 log = logging.getLogger("verification")
 
@@ -50,6 +51,32 @@ def _petsc_option(text: str) -> tuple[str, str]:
     if not sep or not key:
         raise argparse.ArgumentTypeError(f"expected KEY=VALUE, got {text!r}")
     return key.lstrip("-"), value
+
+
+def _floor(text: str) -> tuple[str, float]:
+    """``--floor Q=VALUE``: a profile quantity and its floor, a finite number > 0 in its unit."""
+    from contactcore.scene import QUANTITIES
+    name, sep, value = text.partition("=")
+    if not sep or name not in QUANTITIES:
+        raise argparse.ArgumentTypeError(f"expected Q=VALUE with Q one of {', '.join(QUANTITIES)} (got {text!r})")
+    try:
+        floor = float(value)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{name}: the floor must be a number (got {value!r})") from None
+    if not (math.isfinite(floor) and floor > 0):
+        raise argparse.ArgumentTypeError(f"{name}: the floor must be a finite number > 0 in {name}'s unit "
+                                         f"(got {value})")
+    return name, floor
+
+
+def _floors(pairs: list[tuple[str, float]]) -> dict[str, float]:
+    """The ``--floor`` pairs as a dict; a quantity given twice is refused."""
+    floors = {}
+    for name, value in pairs:
+        if name in floors:
+            raise ContactError(f"--floor: {name} given twice ({floors[name]:g} and {value:g})")
+        floors[name] = value
+    return floors
 
 
 def _reference(text: str) -> tuple[str, int] | None:
@@ -81,12 +108,14 @@ class Command:
     (``run(args, argv)``), and how it meets mpirun's ranks (``ranks``): it
     spreads its solves over them (``"spread"``), spreads its cases over a
     pool instead (``"pool"``: refused under mpirun), or launches mpirun
-    itself (``"launcher"``: refused under mpirun)."""
+    itself (``"launcher"``: refused under mpirun).  ``epilog`` follows the
+    options in ``--help``, line by line (:func:`explained`)."""
 
     help: str
     args: tuple[Arg, ...]
     run: Callable[[argparse.Namespace, list], None]
     ranks: str = "pool"
+    epilog: str = ""  # below the options in --help, as written (the choices explained)
 
 
 #: What each ``Command.ranks`` says when the command is started under mpirun with several ranks.
@@ -95,6 +124,12 @@ UNDER_MPIRUN = {
             "under mpiexec -n K python -m mpi4py.futures -m verification",
     "launcher": "mpirun: '{}' launches mpirun itself, once per rank count: run it without mpirun",
 }
+
+
+def explained(option: str, choices: dict[str, str]) -> str:
+    """``--help``'s list of an option's choices, one line each: the name, then what it is."""
+    width = max(map(len, choices))
+    return f"{option}:\n" + "\n".join(f"  {name:<{width}}  {what}" for name, what in choices.items())
 
 
 def _commands() -> dict[str, Command]:
@@ -116,9 +151,9 @@ def _commands() -> dict[str, Command]:
     out = arg("--out", type=Path, required=True,
               help="result folder (built aside, put in place only if the run succeeds)")
 
-    def workers(default=None) -> Arg:
-        return arg("--workers", type=int, default=default, metavar="K",
-                   help=f"run the independent cases on K processes (default {default or 1})")
+    workers = arg("--workers", type=int, default=DEFAULT_WORKERS, metavar="K",
+                  help=f"run the independent cases on K local processes (default {DEFAULT_WORKERS}: one after "
+                       "another in this process); under mpiexec -n K python -m mpi4py.futures, on its K − 1 workers")
 
     return {
         "run": Command("solve one scene with one or more methods", (
@@ -146,10 +181,14 @@ def _commands() -> dict[str, Command]:
                 help="a unilateral or coulomb law enforced by its springs: also solve each method with the law "
                      "enforced exactly (Nitsche) at the same discretisation, and say in summary.md and each "
                      "summary.json how far the penalty answer is from it"),
+            arg("--floor", type=_floor, action="append", default=[], metavar="Q=VALUE",
+                help="measure quantity Q in the agreement table and the Δ panels against sqrt(Q_ref² + VALUE²), "
+                     "VALUE > 0 in Q's unit (e.g. sxy=1e3 in Pa): for a quantity zero in the reference, whose "
+                     "round-off would else be its scale; repeat for several"),
             out), _run, "spread"),
         "paper": Command("the paper's figures and an agreement table against a refined reference", (
             scenes, arg("--ref-h", type=float, help="cell size of the P2 reference (default: a quarter of the "
-                                                    "scene's h)"), out, workers()), _paper),
+                                                    "scene's h)"), out, workers), _paper),
         "closed": Command("closed-form cases on refinement ladders, with observed rates", (
             arg("--case", nargs="+", default=list(CASES), choices=list(CASES), help="the cases (default: all)"),
             method, arg("--degree", nargs="+", type=int, default=[1, 2], choices=(1, 2),
@@ -159,7 +198,7 @@ def _commands() -> dict[str, Command]:
             arg("--ref-h", type=float,
                 help="element size of the P2 reference (default: none, the errors are estimated)"),
             arg("--exclude", type=float, help="distance from corners and Γ's ends left out (default 0.1 L)"),
-            out, workers(os.cpu_count())), _efficiency),
+            out, workers), _efficiency),
         "effectivity": Command("the error estimates against fe P2 at a fine h, on the paper's scenes or others", (
             arg("--scene", nargs="+", default=["A", "B", "C"],
                 help="built-in scene names or scene TOML files (default: the paper's A B C)"),
@@ -168,22 +207,23 @@ def _commands() -> dict[str, Command]:
             arg("--levels", type=int, default=2, choices=(2, 3), help="runs h, h/2 (3: and h/4); default 2"),
             out), _effectivity),
         "sweeps": Command("stiff and extreme cases: error, condition and outcome", (
-            arg("--sweep", nargs="+", choices=[s.name for s in sweeps()], help="the sweeps (default: all)"),
-            method, degree, out, workers()), _sweeps),
+            arg("--sweep", nargs="+", choices=[s.name for s in sweeps()], metavar="NAME",
+                help="the sweeps (default: all; each explained below)"),
+            method, degree, out, workers), _sweeps,
+            epilog=explained("--sweep NAME", {s.name: s.what for s in sweeps()})),
         "study": Command("inputs varied over their product (geometry through gmsh, h, springs, materials)", (
             arg("scene", help="built-in scene name or a scene TOML file"),
-            arg("--param", required=True, choices=list(PARAMETERS), action="append",
-                help="repeat --param NAME --values ... for a Cartesian product"),
+            arg("--param", required=True, choices=list(PARAMETERS), action="append", metavar="NAME",
+                help="repeat --param NAME --values ... for a Cartesian product (each NAME explained below)"),
             arg("--values", nargs="+", type=_number_or_word, required=True, action="append",
                 help="the values of the --param just before"),
             method, degree, arg("--h", type=float, help="resolution (default: the scene's h)"), cell, out,
-            workers()), _study),
+            workers), _study, epilog=explained("--param NAME", {p: what for p, (what, _) in PARAMETERS.items()})),
         "report": Command("every verification, gathered into DIR/report.md", (
-            arg("out", type=Path, help="result folder"),
-            arg("--quick", action="store_true", help="short ladders: a smoke test of the whole chain"),
-            workers()), _report),
+            out, arg("--quick", action="store_true", help="short ladders: a smoke test of the whole chain"),
+            workers), _report),
         "benchmark": Command("error against run time beside GetFEM's level-set XFEM", (
-            scenes, out, workers(os.cpu_count())), _benchmark),
+            scenes, out, workers), _benchmark),
         "timing": Command("wall time against DOFs on a ladder of resolutions", (
             arg("scene", nargs="+", help="one or more scenes, measured in one run (e.g. C C-coulomb)"),
             method, degrees, ladder, out), _timing, "spread"),
@@ -224,7 +264,8 @@ def _parser(commands: dict[str, Command] | None = None) -> argparse.ArgumentPars
                       help="also the debug messages of this tool")
     sub = parser.add_subparsers(dest="command", required=True)
     for name, command in commands.items():
-        p = sub.add_parser(name, parents=[common], help=command.help)
+        p = sub.add_parser(name, parents=[common], help=command.help, epilog=command.epilog or None,
+                           formatter_class=argparse.RawDescriptionHelpFormatter)
         for a in command.args:
             p.add_argument(*a.flags, **a.options)
     return parser
@@ -235,7 +276,7 @@ def _run(args, argv) -> None:
     run(args.scene, args.method, args.out, h=args.h, degree=args.degree, paper=args.paper, fields=args.fields,
         petsc_options=dict(args.petsc_option), dmax=args.dmax, nodes_file=args.nodes, cell=args.cell,
         basis=args.basis, allow_large=args.allow_large, draw=args.draw, estimate=args.estimate,
-        reference=args.reference, against_exact=args.against_exact, argv=argv)
+        reference=args.reference, against_exact=args.against_exact, floors=_floors(args.floor), argv=argv)
 
 
 def _paper(args, argv) -> None:

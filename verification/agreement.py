@@ -68,11 +68,13 @@ def gap_floors(scene: Scene) -> dict[str, float]:
     return dict.fromkeys(("gN", "gT"), gap_floor(scene))
 
 
-def floors(scene: Scene) -> dict[str, float]:
+def floors(scene: Scene, given: dict | None = None) -> dict[str, float]:
     """Quantity -> the floor its values are measured against on ``scene``
-    (:func:`measured_against`): the gaps of an exactly enforced law; none
-    otherwise."""
-    return gap_floors(scene) if is_exact(scene.law) else {}
+    (:func:`measured_against`): the gaps of an exactly enforced law, none
+    otherwise; with ``given`` (quantity -> value in its unit,
+    :func:`user_floors`) the larger of the two where both name one."""
+    own, user = (gap_floors(scene) if is_exact(scene.law) else {}), user_floors(given)
+    return {q: max(own.get(q, 0.0), user.get(q, 0.0)) for q in {**own, **user}}
 
 
 def measured_floor(scene: Scene, quantity: str) -> float:
@@ -290,6 +292,7 @@ class AgreementTable:
     regions: tuple[tuple[str, tuple[tuple[float, float], ...]], ...]
     rows: tuple[Agreement, ...]
     gap_floor: float = 0.0  # an exact law's gaps' floor (measured_against), in m; 0 for a penalty law
+    floors: tuple[tuple[str, float], ...] = ()  # the floors given (quantity, value in its unit): table's floors
 
     def worst(self, measure: str = "worst") -> Agreement:
         """The row with the largest ``measure`` (``"worst"`` or ``"rms"``;
@@ -306,9 +309,12 @@ class AgreementTable:
 
     def markdown(self) -> str:
         """The table in Markdown, worst sample and RMS in % of the reference's scale."""
+        from .files import COLUMN_UNITS
         floor = (f" Γ's gaps (an exactly enforced law: zero where Γ is closed and sticking) are measured "
                  f"against sqrt(g² + ({self.gap_floor:.3g} m)²), {EXACT_GAP_FLOOR:g} of the displacement scale."
                  if self.gap_floor else "")
+        floor += "".join(f" {q} is measured against sqrt({q}² + ({v:.3g} {COLUMN_UNITS[q]})²) (a floor given)."
+                         for q, v in self.floors)
         lines = [f"Against {self.reference}; {self.excluded()}.{floor}", "",
                  "| method | profile | quantity | class | worst sample | at s (x, y) | RMS |",
                  "|---|---|---|---|---|---|---|"]
@@ -348,7 +354,8 @@ def table(scene: Scene, runs: dict[str, dict], reference: str, exclude: float | 
             for label, got in runs.items() if label != reference
             for row in profile_agreements(scene, label, got, ref, exclude, scales)]
     regions = tuple((name, tuple(map(tuple, pts.tolist()))) for name, pts in singular_regions(scene))
-    return AgreementTable(scene.name, reference, exclude, regions, tuple(rows), measured_floor(scene, "gN"))
+    return AgreementTable(scene.name, reference, exclude, regions, tuple(rows), measured_floor(scene, "gN"),
+                          tuple(given.items()))
 
 
 def variant(spec) -> tuple[str, int]:

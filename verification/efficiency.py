@@ -14,7 +14,7 @@ estimates (:mod:`contactcore.budget`), summed as if none were ever returned
 to the system, fit in the machine; otherwise each runs in a fresh process,
 whose memory goes back to the system when it ends.  The
 log says which, and why (:func:`spawn_each`).  The rungs run on
-:mod:`verification.pool` (``--workers K``, by default one per core, or an
+:mod:`verification.pool` (``--workers K``, by default one at a time, or an
 mpi4py.futures pool): rungs measured beside each other share the cores and
 the memory bandwidth, so the table says how many workers measured it.  Writes
 ``DIR/efficiency.csv``, ``DIR/efficiency.md`` (the table and a sentence

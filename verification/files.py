@@ -18,7 +18,8 @@ import tempfile
 from contextlib import contextmanager
 from pathlib import Path
 
-from contactcore import ContactError, ProfileData
+from contactcore import CircleInterface, ContactError, ProfileData, load_scene
+from contactcore.profiles import sample_points
 from contactcore.estimate import ERROR_SUFFIX
 
 #: The file that marks a folder as a result folder of this tool (every
@@ -232,10 +233,9 @@ def relink(markdown: str, folder: str) -> str:
 UNITS_FILE = "units.json"
 _STRESS, _LENGTH = "Pa", "m"
 #: The unit of a CSV column, in the scene's units (docs/scenes.md, "Units":
-#: Pa is the scene's stress unit F/ℓ², m its length unit ℓ).  ``s`` is an
-#: arc length, or a polar angle in rad on a circular Γ (see the profile's
-#: ``parameter``).  Columns not named (counts, statuses, names, ratios)
-#: have no unit.
+#: Pa is the scene's stress unit F/ℓ², m its length unit ℓ).  ``s`` is not
+#: here: its unit is its CSV's (:func:`s_units`).  Columns not named
+#: (counts, statuses, names, ratios) have no unit.
 COLUMN_UNITS = {
     **dict.fromkeys(("sxx", "syy", "sxy", "tN", "tT", "mean_tN", "mean_tT", "rms_tN", "rms_tT", "max_tN", "max_tT",
                      "E_minus", "E_plus"), _STRESS),
@@ -250,20 +250,50 @@ COLUMN_UNITS = {
 
 def column_unit(column: str) -> str | None:
     """A CSV column's unit: :data:`COLUMN_UNITS`'s, an estimated error's
-    its quantity's; ``s`` reads ``m or rad`` (arc length, or polar angle on
-    a circular Γ); None for a column without one."""
-    if column == "s":
-        return "m or rad"
+    its quantity's; None for a column without one (and for ``s``, whose
+    unit is its CSV's: :func:`s_units`)."""
     return COLUMN_UNITS.get(column.removesuffix(ERROR_SUFFIX))
+
+
+#: The result folder's copy of the scene it solved (``run``, ``paper``).
+SCENE_FILE = "scene.toml"
+#: The unit of an ``s`` column by what it measures along its line: an arc
+#: length (in the scene's length unit) or a polar angle about Γ's centre.
+PARAMETER_UNITS = {"arclength": _LENGTH, "angle": "rad"}
+
+
+def s_units(folder: Path) -> dict[str, str]:
+    """The unit of the ``s`` column of each CSV that has one in a scene's
+    result folder under ``folder`` (one holding :data:`SCENE_FILE`; the
+    nearest above the CSV), by the CSV's path relative to ``folder``: a
+    profile's (``profiles/<ID>.csv``) by its parameter, resolved as its
+    samples were (:func:`contactcore.profiles.sample_points`: a line
+    profile's is an arc length, an interface profile's a polar angle only on
+    a circle and if it asks for one); Γ's own (``interface.csv``,
+    :func:`contactcore.interface_path.along`) a polar angle on a circle,
+    else an arc length."""
+    units = {}
+    for toml in sorted(Path(folder).rglob(SCENE_FILE), key=lambda p: len(p.parts)):  # the nearest last
+        scene = load_scene(toml)
+        along = PARAMETER_UNITS["angle" if isinstance(scene.interface, CircleInterface) else "arclength"]
+        by_id = {p.id: PARAMETER_UNITS[sample_points(scene, p, 2)[2]] for p in scene.profiles}
+        for path in toml.parent.rglob("*.csv"):
+            unit = by_id.get(path.stem) if path.parent.name == "profiles" else (
+                along if path.name == "interface.csv" else None)
+            if unit:
+                units[path.relative_to(folder).as_posix()] = unit
+    return units
 
 
 def write_units(folder: Path) -> Path:
     """``folder/units.json``: for every CSV under ``folder`` (by its path
     relative to it), the unit of each of its columns that has one
-    (:func:`column_unit`)."""
-    units = {}
+    (:func:`column_unit`; ``s``'s from :func:`s_units`)."""
+    units, along = {}, s_units(folder)
     for path in sorted(Path(folder).rglob("*.csv")):
         with open(path, newline="") as fh:
             header = next(csv.reader(fh), [])
-        units[path.relative_to(folder).as_posix()] = {c: column_unit(c) for c in header if column_unit(c)}
+        name = path.relative_to(folder).as_posix()
+        found = {c: along.get(name) if c == "s" else column_unit(c) for c in header}
+        units[name] = {c: unit for c, unit in found.items() if unit}
     return write_json(Path(folder) / UNITS_FILE, units)

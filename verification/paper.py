@@ -9,6 +9,7 @@ h unless ``--ref-h`` says otherwise).  Writes::
     DIR/figures/figNN_<ID>.png    each paper figure (Figs. 8–11, 15–18, 22–23), methods overlaid
     DIR/figures/extra_<ID>.png    the extra profiles of docs/scenes.md (A5, B5, B6, C3, C4)
     DIR/<scene>/<method>/profiles/<ID>.csv, DIR/<scene>/<method>/summary.json
+    DIR/<scene>/scene.toml        the scene as read
     DIR/agreement.csv, DIR/paper.md
 
 The agreement table gives, for each profile, quantity and method, the RMS
@@ -28,7 +29,7 @@ import logging
 import re
 from pathlib import Path
 
-from contactcore import load_scene, sample_profiles
+from contactcore import load_scene, sample_profiles, scene_text
 
 from . import files, methods, plots, pool
 from .agreement import agreements, default_exclusion
@@ -75,6 +76,7 @@ def reproduce_scene(scene_name: str, out: Path, ref_h: float | None = None) -> t
         result, got = _solve(scene, name, out / scene.name / name, name, paper=True)
         runs[name] = (_label(name, result), got)
         warnings += [f"scene {scene.name}, {name}: {w}" for w in result.solver.warnings]
+    files.write_text(out / scene.name / files.SCENE_FILE, scene_text(scene_name))
     exclude = default_exclusion(scene)
     rows = []
     for name, (label, got) in runs.items():

@@ -7,8 +7,8 @@ module only picks the executor, it schedules nothing itself:
 
 * ``--workers K`` (K > 1): a local :class:`~concurrent.futures.ProcessPoolExecutor`
   of K spawned processes (spawned, not forked: no inherited MPI or PETSc state);
-* no ``--workers`` or K = 1: the cases run one after another in this process
-  (:class:`Serial`), exactly as before the pool existed;
+* no ``--workers`` (:data:`DEFAULT_WORKERS`: 1), or K = 1: the cases run
+  one after another in this process (:class:`Serial`);
 * under ``mpiexec -n K python -m mpi4py.futures -m verification ...``: the
   K − 1 MPI workers that ``mpi4py.futures`` set up, through its
   :class:`~mpi4py.futures.MPIPoolExecutor` (``--workers`` is then ignored:
@@ -32,6 +32,13 @@ from concurrent.futures import Executor, Future, ProcessPoolExecutor
 from contactcore.collective import launched_size
 
 from . import methods
+
+#: The cases run at once when ``--workers`` is not given, by every command
+#: that takes it: one, in this process.  Cases beside each other share the
+#: cores, the memory bandwidth and the memory, so their timings and the
+#: peak memory depend on how many run at once; one at a time is the
+#: measure every table can be compared with.
+DEFAULT_WORKERS = 1
 
 
 class Serial(Executor):

@@ -1,4 +1,4 @@
-"""``python -m verification report DIR [--quick]``: every verification, one file.
+"""``python -m verification report [--quick] --out DIR``: every verification, one file.
 
 Runs, each into its own folder under DIR, the paper's figures
 (:mod:`~verification.paper`), the closed forms (:mod:`~verification.convergence`),

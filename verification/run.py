@@ -96,12 +96,13 @@ NOT_ESTIMATED = (f"\n{NOT_ESTIMATED_MARK} not estimated: the reference the runs 
                  "at the answer's h (the finest), so it has no coarser run to estimate from.")
 
 
-def agreement_section(scene: Scene, profiles: dict, reference: str | None = None) -> str:
+def agreement_section(scene: Scene, profiles: dict, reference: str | None = None, floors: dict | None = None) -> str:
     """``summary.md``'s agreement of every run with the reference of the
     plots' difference panels (``reference``, else fe at its highest degree,
     else the first run): :func:`verification.agreement.table` of
-    ``profiles`` (id -> label -> ProfileData), the figures
-    :func:`~verification.agreement.compare` gives."""
+    ``profiles`` (id -> label -> ProfileData) with ``floors`` (quantity ->
+    value in its unit), the figures :func:`~verification.agreement.compare`
+    gives."""
     runs = {}
     for pid, by_label in profiles.items():
         for label, prof in by_label.items():
@@ -109,7 +110,7 @@ def agreement_section(scene: Scene, profiles: dict, reference: str | None = None
     if len(runs) < 2:
         return ""
     reference = reference if reference in runs else plots.reference_label(list(runs))
-    return "\n## Agreement with the reference\n\n" + agreement.table(scene, runs, reference).markdown()
+    return "\n## Agreement with the reference\n\n" + agreement.table(scene, runs, reference, floors=floors).markdown()
 
 
 def _estimate_cells(summary: dict) -> str:
@@ -212,7 +213,7 @@ def _progress(name: str):
 
 def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, paper=False,
         fields=False, petsc_options=None, dmax=None, nodes_file=None, cell=None, basis=None, allow_large=False,
-        draw=True, estimate=None, reference=DEFAULT_REFERENCE, against_exact=False, argv=()) -> str:
+        draw=True, estimate=None, reference=DEFAULT_REFERENCE, against_exact=False, floors=None, argv=()) -> str:
     """Solve ``scene_name`` (a scene, a built-in name or a TOML file),
     sample the scene's profiles, write everything; return the Markdown
     section (``summary.md``'s text).  Before any work (:func:`_check`):
@@ -223,7 +224,9 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
     unless ``draw`` (matplotlib is then never imported).  Two runs or more
     are compared with ``reference`` (method, degree; None: fe at its
     highest degree among them), solved at the same h if it is not one of
-    them.  With ``against_exact`` (a unilateral or coulomb law enforced by
+    them, each quantity named in ``floors`` (quantity -> value in its unit,
+    :func:`verification.agreement.table`) measured against its floor.  With
+    ``against_exact`` (a unilateral or coulomb law enforced by
     its springs, else refused here) each method is solved again with the
     law enforced exactly, at the h of its answer, and compared
     (:func:`_against_exact`)."""
@@ -234,6 +237,7 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
     compared = reference is not None and len(chosen) > 1  # a reference only where methods are compared
     _check(scene, chosen, h, degree, paper, allow_large, estimate, reference if compared else None,
            nodes=nodes_file, **given)
+    _check_floors(scene, chosen, floors)
     h = _estimated_h(scene, h) if estimate else h
     finest = h / 2 ** (estimate - 1) if estimate else h  # the answer's h, where a reference is solved
     nodes = read_nodes(nodes_file) if nodes_file else None
@@ -249,15 +253,15 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
     ref = reference_label(reference)
     if compared and profiles and ref not in {label for by_label in profiles.values() for label in by_label}:
         _solve_reference(scene, reference, finest, paper, petsc_options or None, out, profiles, summaries)
-    text = _write_summary(out, scene, summaries, profiles, paths, estimated, ref, draw, gaps)
-    files.write_text(out / "scene.toml", scene_text(scene_name))
+    text = _write_summary(out, scene, summaries, profiles, paths, estimated, ref, draw, gaps, floors)
+    files.write_text(out / files.SCENE_FILE, scene_text(scene_name))
     files.write_json(out / "run.json", {**files.provenance(list(argv)),
                                         "scene": scene.name if isinstance(scene_name, Scene) else str(scene_name),
                                         "methods": chosen, "h": h, "degree": degree,
                                         "paper": paper, "estimate": estimate,
                                         "petsc_options": petsc_options or {}, "dmax": dmax,
                                         "basis": basis, "nodes": str(nodes_file) if nodes_file else None,
-                                        "reference": ref, "against_exact": against_exact,
+                                        "reference": ref, "against_exact": against_exact, "floors": floors or {},
                                         "cell": next((s["discretisation"]["cell"] for s in summaries
                                                       if "cell" in s["discretisation"]), cell)})
     return text
@@ -287,6 +291,23 @@ def _check(scene: Scene, chosen: list[str], h, degree: int, paper: bool, allow_l
             check_budget(scene, (h or scene.h or span) / 2 ** ((estimate or 1) - 1), degree, name)
         if reference:
             check_budget(scene, (h or scene.h or span) / 2 ** ((estimate or 1) - 1), reference[1], reference[0])
+
+
+def _check_floors(scene: Scene, chosen: list[str], floors: dict | None) -> None:
+    """Refuse, before any work, floors (:func:`verification.agreement.user_floors`)
+    where nothing is compared (one method), or for a quantity that no
+    profile of the scene samples."""
+    if not floors:
+        return
+    agreement.user_floors(floors)
+    if len(chosen) < 2:
+        raise ContactError("--floor: floors measure the agreement between methods, and one method runs here: "
+                           "give --method with two or more")
+    sampled = {q for p in scene.profiles for q in p.quantities}
+    for q in floors:
+        if q not in sampled:
+            raise ContactError(f"--floor: {q}: no profile of scene {scene.name} samples it (they sample "
+                               f"{', '.join(sorted(sampled))})")
 
 
 def _estimated_h(scene: Scene, h) -> float:
@@ -405,15 +426,16 @@ def _against_exact(out: Path, scene: Scene, twin: Scene, name: str, result, h, d
 
 
 def _write_summary(out: Path, scene: Scene, summaries: list[dict], profiles: dict, paths: dict, estimated: dict,
-                   ref: str | None, draw: bool, gaps: dict) -> str:
-    """The plots of every profile (methods overlaid, Δ against ``ref``) and
-    of the response, and ``summary.md``; returns its text.  ``gaps``:
-    each method's penalty against exact (label -> record), if asked."""
+                   ref: str | None, draw: bool, gaps: dict, floors: dict | None = None) -> str:
+    """The plots of every profile (methods overlaid, Δ against ``ref``,
+    floored as the agreement is: ``floors``) and of the response, and
+    ``summary.md``; returns its text.  ``gaps``: each method's penalty
+    against exact (label -> record), if asked."""
     titles = {p.id: p.title for p in scene.profiles}
     for pid, runs in profiles.items() if draw else ():
-        plots.plot_profile(out / "plots" / f"{pid}.png", titles[pid], runs, ref, agreement.floors(scene))
+        plots.plot_profile(out / "plots" / f"{pid}.png", titles[pid], runs, ref, agreement.floors(scene, floors))
     text = (f"# Scene {plots.heading(scene.name, scene.title)}\n\n" + _summary_table(summaries)
-            + agreement_section(scene, profiles, ref))
+            + agreement_section(scene, profiles, ref, floors))
     if len(estimated) > 1:
         text += _estimates_section(scene, estimated)
     if gaps:

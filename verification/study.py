@@ -17,16 +17,19 @@ so the conforming method meshes it afresh through gmsh (and XFEM with
 ``--cell gmsh`` too); the scene's own profiles may no longer lie on the moved
 Γ, so the study samples Γ itself: for each point it records DOFs, wall
 time, solver health, and the largest |g_N|, |g_T|, |t_N|, |t_T| on Γ with
-the mean t_N and t_T.  The cases run on :mod:`verification.pool` (``--workers K``
+the mean t_N and t_T.  Every point's scene is built and validated before
+any solve (:func:`check_points`): a bad value (a radius that leaves the
+domain, a fractional increment count, β outside its range) refuses the
+whole study in one line naming it.  The cases run on :mod:`verification.pool` (``--workers K``
 or an mpi4py.futures pool), each in a process of its own; they are logged
-in case order as their results arrive; a point that fails
-(bad value, refused solve) is recorded with its message and the study goes
-on.  Writes ``DIR/study.csv``, ``DIR/study.md`` and one plot per parameter,
+in case order as their results arrive; a point whose solve is refused or
+does not converge is recorded with its message and the study goes on.  Writes ``DIR/study.csv``, ``DIR/study.md`` and one plot per parameter,
 the others as series, warned points ringed and failed ones crossed on the x axis: ``DIR/study.png`` for one parameter,
 ``DIR/study_<param>.png`` for several.  ``kN``, ``kT`` play no part under
-exact enforcement: varied on an exact law they are refused, and where the
-study also varies ``enforcement`` its exact points leave them aside (the
-row's message says so) while its penalty points take them.
+exact enforcement, and ``stabilisation`` none under penalty: varied on a
+law enforced the other way they are refused, and where the study also
+varies ``enforcement`` the points enforced the other way leave them aside
+(the row's message says so) while the others take them.
 """
 from __future__ import annotations
 
@@ -38,11 +41,11 @@ from pathlib import Path
 
 import numpy as np
 
-from contactcore import CircleInterface, ContactError, LineInterface, SceneError, load_scene, sample_profile
+from contactcore import CircleInterface, LineInterface, SceneError, load_scene, sample_profile
 from contactcore.discretisation import Reuse
 from contactcore.enforcement import ENFORCEMENTS
 from contactcore.exact import BONDED, EXACT_LAWS, checked_stabilisation, is_exact
-from contactcore.scene import InterfaceProfile
+from contactcore.scene import InterfaceProfile, check_resolution
 
 from . import files, methods, pool
 from .against_exact import exact_law, penalty_counterpart
@@ -63,6 +66,9 @@ def _material(scene, body: str, key: str, value: float):
 
 #: The penalty's springs: an exact law has none.
 SPRINGS = ("kN", "kT")
+#: The parameters that play no part under each enforcement: a penalty law's
+#: springs where it is enforced exactly, Nitsche's β where by its springs.
+UNUSED_UNDER = {"exact": SPRINGS, "penalty": ("stabilisation",)}
 
 
 def _law(scene, key: str, value: float):
@@ -135,6 +141,12 @@ def _load(scene, value: float):
     return {"loads": tuple(_scaled(ld, value) for ld in scene.loads)}
 
 
+def _resolution(scene, value: float):
+    """``h`` is the solve's, not the scene's: only checked here."""
+    check_resolution(scene, value, "--param h")
+    return {}
+
+
 def _increments(scene, value: float):
     if value != int(value) or value < 1:
         raise SceneError("--param increments", f"must be a whole number >= 1 (got {value:g})")
@@ -143,7 +155,7 @@ def _increments(scene, value: float):
 
 #: What each parameter changes in a scene: name -> (description, changes(scene, value) -> dict).
 PARAMETERS = {
-    "h": ("cell size or node spacing (m)", None),
+    "h": ("cell size or node spacing (m)", _resolution),
     "kN": ("normal spring k_N (Pa/m)", lambda s, v: _law(s, "kN", v)),
     "kT": ("tangential spring k_T (Pa/m)", lambda s, v: _law(s, "kT", v)),
     "enforcement": ("how the law is enforced: penalty (its springs) or exact (Nitsche)", _enforcement),
@@ -177,16 +189,17 @@ def scene_at(scene, point: dict):
     for param, value in sorted(point.items(), key=lambda item: item[0] != "enforcement"):
         _check(param)
         change = PARAMETERS[param][1]
-        if change and param not in springs_left_aside(point, changes.get("law", scene.law)):
+        if param not in left_aside(point, changes.get("law", scene.law)):
             changes.update(change(scene.with_changes(profiles=(GAMMA,), **changes), value))
     return scene.with_changes(profiles=(GAMMA,), **changes)
 
 
-def springs_left_aside(point: dict, law) -> list[str]:
-    """The springs ``point`` gives that its ``law`` leaves aside: where the
-    point also sets the enforcement and it is exact, k_N and k_T play no
-    part, and the penalty points of the same study use them."""
-    return [p for p in SPRINGS if p in point] if "enforcement" in point and is_exact(law) else []
+def left_aside(point: dict, law) -> list[str]:
+    """The parameters ``point`` gives that its ``law``, as enforced, leaves
+    aside (:data:`UNUSED_UNDER`): where the point also sets the enforcement,
+    k_N and k_T play no part at its exact points and β none at its penalty
+    ones; the study's points enforced the other way use them."""
+    return [p for p in UNUSED_UNDER[law.enforcement] if p in point] if "enforcement" in point else []
 
 
 def _outputs(scene, result) -> dict:
@@ -224,14 +237,12 @@ _REUSE = Reuse()
 
 
 def solve_case(case: Case) -> dict:
-    """The row of one case, solved in this process on its own communicator;
-    a failure (bad value, refused solve) is a row with its message."""
+    """The row of one case (its scene valid: :func:`check_points`), solved
+    in this process on its own communicator; a refused solve is a row with
+    its message."""
     point = dict(case.point)
     row = {"method": case.method, "degree": case.degree}
-    try:
-        scene = scene_at(load_scene(case.scene), point)
-    except ContactError as exc:
-        return {**row, "status": "failed", "message": str(exc)}
+    scene = scene_at(load_scene(case.scene), point)
     solve, comm = pool.solver(case.method)
     options = {**methods.options_for(case.method, cell=case.cell), **comm}
     tried = attempt(solve, scene, point.get("h", case.h), degree=case.degree, reuse=_REUSE, **options)
@@ -239,8 +250,8 @@ def solve_case(case: Case) -> dict:
     if tried.refused:
         return {**row, "status": "failed", "message": tried.message}
     status = "warned" if tried.result.solver.warnings else "ok"
-    aside = [f"{p} not applied: it plays no part under enforcement = \"exact\""
-             for p in springs_left_aside(point, scene.law)]
+    aside = [f"{p} not applied: it plays no part under enforcement = \"{scene.law.enforcement}\""
+             for p in left_aside(point, scene.law)]
     return {**row, "status": status, "message": "; ".join([*aside, *tried.result.solver.warnings]),
             **_outputs(scene, tried.result)}
 
@@ -255,9 +266,11 @@ def study(scene_name: str, params: list[tuple[str, list[float]]], method_names: 
     if len(set(names)) != len(names):
         raise SceneError("--param", f"each parameter may be given once (got {', '.join(names)})")
     base = load_scene(scene_name)
-    scene_at(base, {p: values[0] for p, values in params})  # an inapplicable parameter ends here, before any solve
+    if h is not None:
+        check_resolution(base, h)
     labels = point_columns(names)
     points = list(itertools.product(*(values for _, values in params)))
+    check_points(base, names, points)
     cases = [Case(scene_name, tuple(zip(names, pt)), m, degree, h, cell) for pt in points
              for m in methods.expand(method_names)]
     rows = []
@@ -283,6 +296,22 @@ def study(scene_name: str, params: list[tuple[str, list[float]]], method_names: 
                                         "methods": methods.expand(method_names), "degree": degree, "h": h,
                                         "workers": pool.workers_label(workers)})
     return text
+
+
+def check_points(base, names: list[str], points: list[tuple]) -> None:
+    """Every point's scene built and validated (:func:`scene_at`; no
+    mesh, no solve), in study order: the first that cannot be ends the
+    study with a SceneError naming it, by the parameter and value where
+    the message does not already (a scene's own field, such as
+    ``interface``, names neither)."""
+    for point in points:
+        try:
+            scene_at(base, dict(zip(names, point)))
+        except SceneError as exc:
+            if exc.field.startswith("--param"):
+                raise
+            where = ", ".join(f"{p} = {_shown(v)}" for p, v in zip(names, point))
+            raise SceneError(f"--param {where}", str(exc)) from None
 
 
 def _shown(value) -> str:

@@ -1,0 +1,182 @@
+"""The command line's own rules, checked before any solve: one way to name
+the result folder, one ``--workers`` default, help that explains its
+choices, and refusals in one line with exit status 2."""
+import argparse
+import json
+
+import pytest
+
+from verification.__main__ import _parser, main
+from verification.study import PARAMETERS
+from verification.sweeps import sweeps
+
+
+def _subparsers(parser: argparse.ArgumentParser):
+    for action in parser._actions:  # argparse keeps its subcommands on the subparsers action only
+        if isinstance(action, argparse._SubParsersAction):
+            yield from action.choices.items()
+
+
+def _refused(argv, capsys) -> str:
+    """The one line with which the parser refuses ``argv`` (exit status 2)."""
+    with pytest.raises(SystemExit) as ended:
+        main(argv)
+    err = capsys.readouterr().err.strip().splitlines()
+    assert ended.value.code == 2 and len(err) == 1, err
+    return err[0]
+
+
+def test_every_command_takes_its_folder_as_out(capsys):
+    """``--out DIR`` on every command, ``report`` too; a bare folder is refused."""
+    for name, sub in _subparsers(_parser()):
+        outs = [a for a in sub._actions if a.dest == "out"]
+        assert [a.option_strings for a in outs] == [["--out"]], name
+    assert _parser().parse_args(["report", "--out", "R", "--quick"]).out.name == "R"
+    assert _refused(["report", "R", "--quick"], capsys).startswith("error: report: ")
+
+
+def test_every_command_that_takes_workers_has_one_default_and_one_help():
+    """``--workers``: the same default (:data:`~verification.pool.DEFAULT_WORKERS`)
+    and the same help line wherever it is taken."""
+    from verification.pool import DEFAULT_WORKERS
+    found = {name: a for name, sub in _subparsers(_parser()) for a in sub._actions if a.dest == "workers"}
+    assert set(found) == {"study", "sweeps", "efficiency", "paper", "benchmark", "report"}
+    assert {a.default for a in found.values()} == {DEFAULT_WORKERS} == {1}
+    assert len({a.help for a in found.values()}) == 1 and f"default {DEFAULT_WORKERS}" in found["study"].help
+
+
+@pytest.mark.parametrize("command, option, expected", [
+    ("sweeps", "--sweep NAME", {s.name: s.what for s in sweeps()}),
+    ("study", "--param NAME", {p: what for p, (what, _) in PARAMETERS.items()}),
+])
+def test_help_explains_each_choice_in_one_line(capsys, command, option, expected):
+    """``sweeps --help`` and ``study --help`` list every sweep or parameter
+    on a line of its own, with what it is."""
+    with pytest.raises(SystemExit) as ended:
+        main([command, "--help"])
+    text = capsys.readouterr().out
+    assert ended.value.code == 0 and f"\n{option}:\n" in text
+    lines = text.split(f"\n{option}:\n")[1].splitlines()
+    assert [line.split()[0] for line in lines] == list(expected)
+    assert all(line.endswith(f"  {what}") for line, what in zip(lines, expected.values()))
+
+
+def test_units_json_gives_each_csvs_s_its_own_unit(tmp_path):
+    """``s`` is an arc length (m) or a polar angle (rad), per CSV, resolved
+    from the scene of its result folder (no solve: the CSVs are headers).
+    Scene B: B1 a line (m), B5 on the circle against the angle (rad), Γ's
+    interface.csv an angle; scene A, nested beside it: a straight Γ, every
+    s an arc length."""
+    from contactcore import scene_text
+    from verification import files
+    for folder, scene, csvs in ((tmp_path, "B", ("fe/profiles/B1.csv", "fe/profiles/B5.csv", "fe/interface.csv")),
+                                (tmp_path / "a", "A", ("fe/profiles/A1.csv", "fe/interface.csv"))):
+        files.write_text(folder / files.SCENE_FILE, scene_text(scene))
+        for name in csvs:
+            files.write_text(folder / name, "step,s,x,y,gN\n" if "interface" in name else "s,x,y,tN\n")
+    units = json.loads(files.write_units(tmp_path).read_text())
+    assert {name: u["s"] for name, u in units.items()} == {
+        "fe/profiles/B1.csv": "m", "fe/profiles/B5.csv": "rad", "fe/interface.csv": "rad",
+        "a/fe/profiles/A1.csv": "m", "a/fe/interface.csv": "m"}
+    assert units["fe/profiles/B5.csv"] == {"s": "rad", "x": "m", "y": "m", "tN": "Pa"}
+
+
+@pytest.mark.parametrize("args, message", [
+    (["B", "--param", "radius", "--values", "0.2", "1.5"],
+     "--param radius = 1.5: interface: the circle is not strictly inside the domain"),
+    (["C", "--param", "kN", "--values", "1e9", "1e10", "--param", "radius", "--values", "0.2", "1.5"],
+     "--param kN = 1e+09, radius = 1.5: interface: the circle is not strictly inside the domain"),
+    (["C-coulomb", "--param", "mu", "--values", "0.2", "0.5", "--param", "increments", "--values", "2", "2.5"],
+     "--param increments: must be a whole number >= 1 (got 2.5)"),
+    (["C-coulomb", "--param", "enforcement", "--values", "exact", "--param", "stabilisation", "--values", "2", "200"],
+     "--param stabilisation: must lie within 0.3..30 (got 200)"),
+    (["C-coulomb", "--param", "enforcement", "--values", "exact", "--param", "stabilisation", "--values", "200", "2"],
+     "--param stabilisation: must lie within 0.3..30 (got 200)"),
+    (["A", "--param", "h", "--values", "0.1", "5"], "--param h: 5 exceeds the domain's smallest dimension 1"),
+    (["A", "--param", "E_plus", "--values", "1e9", "-1"], "--param E_plus = -1: materials.plus.E: Young's modulus"),
+])
+def test_study_refuses_a_bad_point_anywhere_before_any_solve(tmp_path, capsys, monkeypatch, args, message):
+    """Every point's scene is built and validated first: a bad value, first
+    or later in its list, refuses the whole study in one line naming it,
+    exit status 2, nothing solved and no folder."""
+    from verification import pool
+
+    def no_solve(*_, **__):
+        raise AssertionError("a case was solved")
+
+    monkeypatch.setattr(pool, "map_cases", no_solve)
+    out = tmp_path / "study"
+    assert main(["study", *args, "--method", "fe", "--h", "0.2", "-q", "--out", str(out)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith(f"error: {message}"), err
+    assert not out.exists()
+
+
+def test_a_penalty_point_leaves_the_stabilisation_aside_whatever_comes_first():
+    """β beside --param enforcement: a penalty point (first or not) keeps
+    its law and leaves β aside, as an exact point does k_N."""
+    from contactcore import load_scene
+    from verification.study import left_aside, scene_at
+    base = load_scene("C-coulomb")
+    penalty = {"enforcement": "penalty", "stabilisation": 2.0}
+    assert scene_at(base, penalty).law == base.law and left_aside(penalty, base.law) == ["stabilisation"]
+    exact = scene_at(base, {"enforcement": "exact", "stabilisation": 2.0, "kN": 1e9})
+    assert exact.law.stabilisation == 2.0 and left_aside({"enforcement": "exact", "kN": 1e9}, exact.law) == ["kN"]
+
+
+@pytest.mark.parametrize("floor, message", [
+    (["--floor", "foo=1"], "error: run: argument --floor: expected Q=VALUE with Q one of sxx, syy, sxy"),
+    (["--floor", "sxy"], "error: run: argument --floor: expected Q=VALUE"),
+    (["--floor", "sxy=abc"], "error: run: argument --floor: sxy: the floor must be a number (got 'abc')"),
+    (["--floor", "sxy=0"], "error: run: argument --floor: sxy: the floor must be a finite number > 0 in sxy's unit"),
+    (["--floor", "sxy=-1e3"], "error: run: argument --floor: sxy: the floor must be a finite number > 0"),
+    (["--floor", "sxy=inf"], "error: run: argument --floor: sxy: the floor must be a finite number > 0"),
+])
+def test_run_refuses_a_bad_floor_in_one_line(capsys, tmp_path, floor, message):
+    assert _refused(["run", "A", "--method", "fe", "xfem", *floor, "--out", str(tmp_path / "r")],
+                    capsys).startswith(message)
+    assert not (tmp_path / "r").exists()
+
+
+@pytest.mark.parametrize("args, message", [
+    (["A", "--method", "fe", "--floor", "sxy=1e3"], "error: --floor: floors measure the agreement between methods, "
+                                                    "and one method runs here"),
+    (["C", "--method", "fe", "xfem", "--floor", "sxx=1e3"], "error: --floor: sxx: no profile of scene C samples it"),
+    (["A", "--method", "fe", "xfem", "--floor", "sxy=1e3", "--floor", "sxy=2"],
+     "error: --floor: sxy given twice (1000 and 2)"),
+])
+def test_run_refuses_a_floor_that_cannot_apply_before_any_solve(capsys, tmp_path, monkeypatch, args, message):
+    from verification import methods
+
+    def no_solve(*_, **__):
+        raise AssertionError("a method was solved")
+
+    monkeypatch.setattr(methods, "solver", no_solve)
+    assert main(["run", *args, "--out", str(tmp_path / "r")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith(message), err
+    assert not (tmp_path / "r").exists()
+
+
+def test_run_measures_a_quantity_against_its_floor(tmp_path):
+    """``run --floor sxy=1e3``: summary.md's table is the agreement table of
+    the written profiles with that floor (not the one without), says so,
+    and run.json records it."""
+    import numpy as np
+
+    from contactcore import ProfileData, load_scene
+    from verification import agreement, files
+    out = tmp_path / "r"
+    assert main(["run", "A", "--method", "efgm", "xfem", "--h", "0.2", "--reference", "xfem:1", "--no-plots", "-q",
+                 "--floor", "sxy=1e3", "--out", str(out)]) == 0
+    scene = load_scene("A")
+    runs = {f"{m} (p1)": {p.id: ProfileData(p.id, "arclength", {k: np.asarray(v) for k, v in files.read_profile_csv(
+        out / m / "profiles" / f"{p.id}.csv").items()}) for p in scene.profiles} for m in ("efgm", "xfem")}
+    floored, bare = (agreement.table(scene, runs, "xfem (p1)", floors=f).rows for f in ({"sxy": 1e3}, None))
+    summary = (out / "summary.md").read_text()
+    assert "sxy is measured against sqrt(sxy² + (1e+03 Pa)²) (a floor given)" in summary
+    for with_floor, without in zip(floored, bare):
+        row = f"| {with_floor.method} | {with_floor.profile} | {with_floor.quantity} | {with_floor.kind} | "
+        assert row + agreement.percent(with_floor.worst) + " |" in summary
+        assert (with_floor.worst < without.worst) == (with_floor.quantity == "sxy")
+    assert json.loads((out / "run.json").read_text())["floors"] == {"sxy": 1e3}
