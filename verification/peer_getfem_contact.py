@@ -61,7 +61,7 @@ from contactcore.result import SolverReport
 from contactcore.scene import Traction
 from meshes.build import build_model, gmsh_session
 from meshes.tags import BODY, INTERFACE
-from verification.peer_getfem import getfem_module
+from verification.peer_getfem import NUDGE, GetFEMFields, getfem_module
 
 METHOD = "getfem-contact"
 
@@ -70,27 +70,25 @@ METHOD = "getfem-contact"
 MULTIPLIER_DEGREE = 1
 
 #: Alart–Curnier's augmentation r, a multiple of the larger Young's modulus
-#: (GetFEM's documentation: "close to the Young modulus").  It sets how
-#: Newton finds the status, not the answer (GetFEM's Newton stops at the
-#: same multipliers for any r > 0 once the status has settled).
+#: (GetFEM's documentation: "close to the Young modulus").  It moves the
+#: discrete answer little (10 E: C-coulomb's C4 t_T by 0.69 % RMS at
+#: h = 0.05) and decides whether Newton finds the status map: at E/3 and
+#: E/10 it did not on C-coulomb's first increment (docs/peer-contact.md).
 AUGMENTATION = 1.0
 
 #: μ standing for "no limit" in the tied law (``unilateral``): a closed
 #: point would have to carry a shear 1e6 times its pressure to slip.
 TIE_FRICTION = 1e6
 
-#: Gauss–Legendre points per Γ facet for the interface record (exact for
-#: the mean of λ·(curved facet's speed) at degree 2 geometry to round-off).
+#: Gauss–Legendre points per Γ facet for the interface record: exact for a
+#: degree-7 polynomial in the facet's parameter, where λ is linear and a
+#: degree-2 facet's speed on a circle varies by O(θ²) over its angle θ.
 FACET_POINTS = 4
 
 #: Newton's test: the residual in force units against the loads
 #: (:func:`_residual`), and the iterations it may take.
 NEWTON_RESIDUAL = 1e-10
 NEWTON_ITERATIONS = 100
-
-#: A point on Γ is evaluated this far inside its own body (a share of the
-#: scene's size): far below any discretisation error.
-NUDGE = 1e-9
 
 #: Relative tolerance of a face's position on a named edge or on Γ.
 FACE_MATCH = 1e-6
@@ -274,45 +272,38 @@ def _facet_points(facets: np.ndarray, degree: int) -> tuple[np.ndarray, np.ndarr
     return pts.reshape(-1, 2), weights.ravel(), np.full(len(facets), FACET_POINTS)
 
 
-class GetFEMContactFields:
-    """Displacement and stress of each body from its own GetFEM mesh."""
+class GetFEMContactFields(GetFEMFields):
+    """Displacement and stress of each body from its own GetFEM mesh (the
+    XFEM peer's fields, :class:`~verification.peer_getfem.GetFEMFields`,
+    with one mesh and one variable per body instead of one side each)."""
+
+    #: The parent's expressions in a body's own variable ``{u}``.
+    _OWN = {"u": "{u}", "Grad_u": "Grad_{u}"}
 
     def __init__(self, md, bodies: _Bodies, scene: Scene):
-        self.md, self.bodies, self.scene = md, bodies, scene
-        self.D = scene.voigt_matrices()
+        super().__init__(md, None, scene, (bodies,))
+        self.bodies = bodies
 
-    def _nudged(self, points, bodies) -> np.ndarray:
-        """Points on Γ moved by NUDGE into their own body."""
-        itf, L = self.scene.interface, self.scene.length_scale
+    def _eval(self, expr: str, points, bodies, width: int) -> np.ndarray:
+        """``expr`` of each point's body, a point on Γ moved by NUDGE into
+        it; a point just outside its body's curved mesh (an O(h⁴) sliver of
+        the circle) takes the nearest cell's extension."""
+        itf, L, bodies = self.scene.interface, self.scene.length_scale, np.asarray(bodies)
         points = np.asarray(points, float)[:, :2].copy()
         on = np.abs(itf.phi(points)) <= NUDGE * L
-        points[on] += (NUDGE * L * (2 * np.asarray(bodies)[on] - 1))[:, None] * itf.normals(points[on])
-        return points
-
-    def eval(self, expr: str, points, bodies, width: int) -> np.ndarray:
-        """``expr`` of each point's body (``{u}`` stands for its displacement);
-        a point just outside its body's curved mesh (an O(h³) sliver of the
-        circle) takes the nearest cell's extension."""
-        bodies = np.asarray(bodies)
-        points = self._nudged(points, bodies)
+        points[on] += (NUDGE * L * (2 * bodies[on] - 1))[:, None] * itf.normals(points[on])
         out = np.zeros((len(points), width))
         for b, body in enumerate(BODY):
             sel = np.flatnonzero(bodies == b)
             if len(sel):
-                var = _Bodies.VARS[body]
-                vals = self.md.interpolation(expr.format(u=var), points[sel].T.copy(), self.bodies.mesh[body],
-                                             -1, 2)
+                own = self._OWN.get(expr, expr).format(u=_Bodies.VARS[body])
+                vals = self.md.interpolation(own, points[sel].T.copy(), self.bodies.mesh[body], -1, 2)
                 out[sel] = np.asarray(vals).reshape(len(sel), width)
         return out
 
-    def displacement(self, points, bodies) -> np.ndarray:
-        return self.eval("{u}", points, bodies, 2)
-
-    def stress(self, points, bodies) -> np.ndarray:
-        """σ = D ε from ``Grad_u`` (column-major: ∂u_i/∂x_j at i + 2j)."""
-        g = self.eval("Grad_{u}", points, bodies, 4)
-        voigt = np.column_stack([g[:, 0], g[:, 3], g[:, 1] + g[:, 2]])
-        return np.einsum("pij,pj->pi", self.D[np.asarray(bodies)], voigt)
+    def multiplier(self, points) -> np.ndarray:
+        """λ (m, 2), the traction on the − body, at points of Γ."""
+        return self._eval("lambda", points, np.zeros(len(points), int), 2)
 
 
 class _Gamma:
@@ -333,8 +324,7 @@ class _Gamma:
 
     def traction(self, fields: GetFEMContactFields) -> np.ndarray:
         """(t_N, t_T) = (λ·n, λ·t), λ read on the − side."""
-        lam = fields.eval("lambda", self.points, self.zeros, 2)
-        return np.einsum("pij,pj->pi", self.frame, lam)
+        return np.einsum("pij,pj->pi", self.frame, fields.multiplier(self.points))
 
     @staticmethod
     def status(t: np.ndarray, g: np.ndarray, dg: np.ndarray, r: float, mu: float) -> np.ndarray:
