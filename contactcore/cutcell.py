@@ -216,6 +216,17 @@ def polygon_rule(vertices: np.ndarray, n: int):
     return np.concatenate(pts), np.concatenate(wts)
 
 
+def _touches_only(crossings: list[np.ndarray], vertices: np.ndarray) -> bool:
+    """Whether Γ only touches the polygon: two crossings closer than
+    :data:`~contactcore.tolerances.GAMMA_PIECE_MIN` of its diameter (Γ
+    through a corner, the crossings on its two edges there apart by
+    round-off), which make no piece of Γ and no region."""
+    if len(crossings) != 2:
+        return False
+    size = float(np.linalg.norm(vertices.max(axis=0) - vertices.min(axis=0)))
+    return float(np.linalg.norm(crossings[1] - crossings[0])) <= tol.GAMMA_PIECE_MIN * size
+
+
 def cut_polygon(itf, vertices: np.ndarray, n: int, depth: int = 0) -> list[tuple[int, np.ndarray, np.ndarray]]:
     """``[(side, points, weights)]`` for a convex polygon (counter-clockwise)
     and level set ``itf``: one entry per region on one side of Γ."""
@@ -233,8 +244,9 @@ def cut_polygon(itf, vertices: np.ndarray, n: int, depth: int = 0) -> list[tuple
     # longer than π (the short-arc construction would then be wrong): split
     small_circle = (isinstance(itf, CircleInterface) and np.all((lo <= itf.centre) & (itf.centre <= hi))
                     and itf.radius < np.linalg.norm(hi - lo))
-    if not crossings and not small_circle:
-        return [(int(sides[0]), *polygon_rule(vertices, n))]
+    if not small_circle and (not crossings or _touches_only([walk[i][0] for i in crossings], vertices)):
+        far = int(np.argmax(np.abs(itf.phi(vertices))))  # the side of the corners off Γ
+        return [(int(sides[far]), *polygon_rule(vertices, n))]
     if len(crossings) == 2 and not small_circle:
         result = _two_regions(itf, walk, crossings, n, size2)
         if result is not None:
@@ -343,7 +355,7 @@ def interface_rule_in(itf, vertices: np.ndarray, n: int, depth: int = 0):
     lo, hi = vertices.min(axis=0), vertices.max(axis=0)
     small_circle = (isinstance(itf, CircleInterface) and np.all((lo <= itf.centre) & (itf.centre <= hi))
                     and itf.radius < np.linalg.norm(hi - lo))
-    if not crossings and not small_circle:
+    if not small_circle and (not crossings or _touches_only(crossings, vertices)):
         return np.zeros((0, 2)), np.zeros(0), np.zeros((0, 2))
     if len(crossings) == 2 and not small_circle:
         curve, tangent = _gamma_curve(itf, crossings[0], crossings[1])

@@ -230,6 +230,18 @@ NITSCHE_THETA = -1.0
 #: its side and its diameter, which the floor leaves alone.
 NITSCHE_PIECE_FLOOR = 0.5
 
+#: A piece of Γ in a cell (or a piece of one) shorter than this share of
+#: the cell's diameter is no piece: Γ only touches the cell at a corner,
+#: and its two crossings differ by round-off (a line through a mesh vertex
+#: came out as a piece of length 4e-17 h, whose three points carried the
+#: law's garbage traction into the profile's piece means).  The cell is
+#: then whole on the side of its corners off Γ.  Crossings are found to a
+#: few ulps of the cell (a bisection to 2^-52 of an edge on a general
+#: level set), so 1e-10 is 1e5 times that round-off, and what is dropped
+#: (a piece of at most 1e-10 h and a sliver of area 1e-20 h²) is far
+#: below any integration error.
+GAMMA_PIECE_MIN = 1e-10
+
 #: Nitsche's stabilisation β: γ = β γ₀ at each point of Γ, γ₀ = 2|Γ^e| /
 #: Σ_k (|Ω_k^e|/E_k) from the method (~2E/h on fe's cells; Annavarapu,
 #: Hautefeuille & Dolbow 2012), unless the scene's [interface.law] gives
