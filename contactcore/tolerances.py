@@ -242,6 +242,14 @@ NITSCHE_PIECE_FLOOR = 0.5
 #: below any integration error.
 GAMMA_PIECE_MIN = 1e-10
 
+#: EFGM's Nitsche weights take a Γ point within this share of a background
+#: cell's side from a grid line as on it: its parts are the cells on both
+#: sides (efgm.traction).  A Γ along a grid line (a vertical Γ at x = 0.3,
+#: cells of 0.1) has its points a few ulps off the line, to one side or the
+#: other as round-off falls; 1e-10 is 1e5 times that, and far below any
+#: Gauss point's distance from a line it does not lie on.
+ON_CELL_EDGE = 1e-10
+
 #: Nitsche's stabilisation β: γ = β γ₀ at each point of Γ, γ₀ = 2|Γ^e| /
 #: Σ_k (|Ω_k^e|/E_k) from the method (~2E/h on fe's cells; Annavarapu,
 #: Hautefeuille & Dolbow 2012), unless the scene's [interface.law] gives
