@@ -227,26 +227,66 @@ def _touches_only(crossings: list[np.ndarray], vertices: np.ndarray) -> bool:
     return float(np.linalg.norm(crossings[1] - crossings[0])) <= tol.GAMMA_PIECE_MIN * size
 
 
-def cut_polygon(itf, vertices: np.ndarray, n: int, depth: int = 0) -> list[tuple[int, np.ndarray, np.ndarray]]:
-    """``[(side, points, weights)]`` for a convex polygon (counter-clockwise)
-    and level set ``itf``: one entry per region on one side of Γ."""
+def _walk(itf, vertices: np.ndarray):
+    """The polygon's boundary counter-clockwise with Γ's crossings,
+    ``[(point, is_corner, side_after)]``, the places of the crossings in
+    it, and whether Γ is a circle that may lie inside the polygon or cut it
+    along an arc longer than π (the short-arc construction would then be
+    wrong: the polygon is split)."""
     sides = sign_of(itf.phi(vertices))
-    walk = []  # the boundary, counter-clockwise: (point, is_corner, side_after)
+    walk = []
     for i in range(len(vertices)):
         a, b = vertices[i], vertices[(i + 1) % len(vertices)]
         walk.append((a, True, sides[i]))
         for t in edge_crossings(itf, a, b):
             walk.append((a + t * (b - a), False, None))
     crossings = [i for i, w in enumerate(walk) if not w[1]]
-    size2 = polygon_area(vertices)
     lo, hi = vertices.min(axis=0), vertices.max(axis=0)
-    # a circle smaller than the cell may lie inside it, or cut it along an arc
-    # longer than π (the short-arc construction would then be wrong): split
     small_circle = (isinstance(itf, CircleInterface) and np.all((lo <= itf.centre) & (itf.centre <= hi))
                     and itf.radius < np.linalg.norm(hi - lo))
-    if not small_circle and (not crossings or _touches_only([walk[i][0] for i in crossings], vertices)):
-        far = int(np.argmax(np.abs(itf.phi(vertices))))  # the side of the corners off Γ
-        return [(int(sides[far]), *polygon_rule(vertices, n))]
+    return walk, crossings, small_circle
+
+
+#: Gauss points per direction of the fans that measure a region's area
+#: for :func:`_sliver` (a cap's area to a few digits is all it needs).
+SLIVER_GAUSS = 2
+
+
+def _sliver(regions, vertices: np.ndarray) -> bool:
+    """Whether one of a polygon's two regions has no area to speak of,
+    below ``(GAMMA_PIECE_MIN · diameter)²``: Γ touching the polygon, by
+    round-off on one side of a corner or the other (a circle tangent to an
+    edge at a corner cuts off a cap of round-off depth whose chord is
+    √(R·round-off) long)."""
+    size = float(np.linalg.norm(vertices.max(axis=0) - vertices.min(axis=0)))
+    return min(float(np.sum(w)) for _, _, w in regions) <= (tol.GAMMA_PIECE_MIN * size) ** 2
+
+
+def _sliver_cut(itf, vertices: np.ndarray, walk, places) -> bool:
+    """Whether the two regions that Γ's two crossings ``places`` of the
+    ``walk`` make of a polygon include a :func:`_sliver`: the one test of
+    :func:`cut_polygon` and :func:`interface_rule_in`, so that Γ has a
+    piece in a cell exactly where the cell has two regions."""
+    regions = _two_regions(itf, walk, places, SLIVER_GAUSS, polygon_area(vertices))
+    return regions is not None and _sliver(regions, vertices)
+
+
+def _whole(itf, vertices: np.ndarray, n: int):
+    """The polygon as one region on the side of its corner farthest from Γ."""
+    far = int(np.argmax(np.abs(itf.phi(vertices))))
+    return [(int(sign_of(itf.phi(vertices[far:far + 1]))[0]), *polygon_rule(vertices, n))]
+
+
+def cut_polygon(itf, vertices: np.ndarray, n: int, depth: int = 0) -> list[tuple[int, np.ndarray, np.ndarray]]:
+    """``[(side, points, weights)]`` for a convex polygon (counter-clockwise)
+    and level set ``itf``: one entry per region on one side of Γ; one
+    region where Γ only touches the polygon (:func:`_touches_only`,
+    :func:`_sliver`)."""
+    walk, crossings, small_circle = _walk(itf, vertices)
+    size2 = polygon_area(vertices)
+    if not small_circle and (not crossings or _touches_only([walk[i][0] for i in crossings], vertices)
+                             or len(crossings) == 2 and _sliver_cut(itf, vertices, walk, crossings)):
+        return _whole(itf, vertices, n)
     if len(crossings) == 2 and not small_circle:
         result = _two_regions(itf, walk, crossings, n, size2)
         if result is not None:
@@ -348,14 +388,10 @@ def interface_rule_in(itf, vertices: np.ndarray, n: int, depth: int = 0):
     """Gauss points of Γ inside a convex polygon: points, weights (arc
     length) and the level set's unit normals, following the same splits as
     :func:`cut_polygon` so that cells and Γ are integrated alike."""
-    crossings = []
-    for i in range(len(vertices)):
-        a, b = vertices[i], vertices[(i + 1) % len(vertices)]
-        crossings += [a + t * (b - a) for t in edge_crossings(itf, a, b)]
-    lo, hi = vertices.min(axis=0), vertices.max(axis=0)
-    small_circle = (isinstance(itf, CircleInterface) and np.all((lo <= itf.centre) & (itf.centre <= hi))
-                    and itf.radius < np.linalg.norm(hi - lo))
-    if not small_circle and (not crossings or _touches_only(crossings, vertices)):
+    walk, places, small_circle = _walk(itf, vertices)
+    crossings = [walk[i][0] for i in places]
+    if not small_circle and (not crossings or _touches_only(crossings, vertices)
+                             or len(crossings) == 2 and _sliver_cut(itf, vertices, walk, places)):
         return np.zeros((0, 2)), np.zeros(0), np.zeros((0, 2))
     if len(crossings) == 2 and not small_circle:
         curve, tangent = _gamma_curve(itf, crossings[0], crossings[1])
