@@ -252,14 +252,17 @@ def _walk(itf, vertices: np.ndarray):
 SLIVER_GAUSS = 2
 
 
-def _sliver(regions, vertices: np.ndarray) -> bool:
-    """Whether one of a polygon's two regions has no area to speak of,
-    below ``(GAMMA_PIECE_MIN · diameter)²``: Γ touching the polygon, by
-    round-off on one side of a corner or the other (a circle tangent to an
-    edge at a corner cuts off a cap of round-off depth whose chord is
-    √(R·round-off) long)."""
+def _sliver(regions, chord: float, vertices: np.ndarray) -> bool:
+    """Whether Γ only touches the polygon although it crosses two edges:
+    one of the two regions thinner than ``GAMMA_PIECE_MIN · diameter``
+    (its area over Γ's ``chord`` across it) along a chord shorter than
+    ``TOUCH_CHORD · diameter`` — a circle tangent to an edge at a corner,
+    on one side of it or the other by round-off, cuts off a cap of
+    round-off depth whose chord is √(R·round-off) long.  Γ along a whole
+    edge (a region of no area, its chord the edge) stays a cut."""
     size = float(np.linalg.norm(vertices.max(axis=0) - vertices.min(axis=0)))
-    return min(float(np.sum(w)) for _, _, w in regions) <= (tol.GAMMA_PIECE_MIN * size) ** 2
+    thinnest = min(float(np.sum(w)) for _, _, w in regions)
+    return chord <= tol.TOUCH_CHORD * size and thinnest <= tol.GAMMA_PIECE_MIN * size * chord
 
 
 def _sliver_cut(itf, vertices: np.ndarray, walk, places) -> bool:
@@ -268,7 +271,8 @@ def _sliver_cut(itf, vertices: np.ndarray, walk, places) -> bool:
     :func:`cut_polygon` and :func:`interface_rule_in`, so that Γ has a
     piece in a cell exactly where the cell has two regions."""
     regions = _two_regions(itf, walk, places, SLIVER_GAUSS, polygon_area(vertices))
-    return regions is not None and _sliver(regions, vertices)
+    chord = float(np.linalg.norm(walk[places[1]][0] - walk[places[0]][0]))
+    return regions is not None and _sliver(regions, chord, vertices)
 
 
 def _whole(itf, vertices: np.ndarray, n: int):

@@ -242,6 +242,16 @@ NITSCHE_PIECE_FLOOR = 0.5
 #: below any integration error.
 GAMMA_PIECE_MIN = 1e-10
 
+#: A cut whose chord across a cell is shorter than this share of the cell's
+#: diameter, and which leaves a region thinner than GAMMA_PIECE_MIN of it
+#: beside Γ, is a touch too (contactcore.cutcell._sliver): a circle tangent
+#: to a cell's edge at a corner (radius 0.4 about (1, 1), cells of 0.1)
+#: dips below it by round-off δ and cuts a cap with chord 2√(2Rδ), 1.5e-7
+#: of the cell there, weights 1.5e-9 h at xfem's points; with δ up to
+#: 1e-12 h and R up to 1e4 h the chord stays below 3e-4 h.  Γ along a
+#: whole edge (a region of no area, chord the edge) stays a cut.
+TOUCH_CHORD = 1e-3
+
 #: EFGM's Nitsche weights take a Γ point within this share of a background
 #: cell's side from a grid line as on it: its parts are the cells on both
 #: sides (efgm.traction).  A Γ along a grid line (a vertical Γ at x = 0.3,

@@ -81,9 +81,10 @@ def test_traction_patch_test(method, degree, options, gamma):
     assert np.all(itf.stabilisation > 0)
 
 
-def _closed_form(theta: float) -> tuple[float, float]:
-    """w₋ and γ₀ of a cell of side H whose − part is θH² (module doc)."""
-    compliance = np.array([theta, 1 - theta]) * H ** 2 / np.array(MODULI)
+def _closed_form(theta: float, plus: float | None = None) -> tuple[float, float]:
+    """w₋ and γ₀ of a cell of side H whose − part is θH² (module doc), its
+    + part ``plus``·H² (1 − θ unless given: two cells taken as one)."""
+    compliance = np.array([theta, 1 - theta if plus is None else plus]) * H ** 2 / np.array(MODULI)
     return compliance[0] / compliance.sum(), 2 * H / compliance.sum()
 
 
@@ -92,10 +93,11 @@ def _closed_form(theta: float) -> tuple[float, float]:
 def test_weights_and_stabilisation_on_a_horizontal_gamma(method, degree, options, theta):
     """Γ θ up a row of cells (xfem's cut cells, efgm's background cells):
     ``w₋`` and ``γ₀`` in closed form; θ = 1 puts Γ on the cells' edges,
-    whose points belong to the cell below (wholly −)."""
+    whose points belong in xfem to the cell below (wholly −), in efgm to
+    the cells on both sides (wholly − and wholly +)."""
     itf, tau, sides = _split(method, degree, options, _horizontal(0.5 + (theta - 1) * H))
     w, rest = _weights(tau, sides)
-    w_minus, gamma = _closed_form(theta)
+    w_minus, gamma = _closed_form(theta, 1.0 if method == "efgm" and theta == 1.0 else None)
     assert rest <= tol.PATCH_ROUNDOFF
     assert np.max(np.abs(w - w_minus)) <= tol.PATCH_ROUNDOFF
     assert np.max(np.abs(itf.stabilisation / gamma - 1)) <= tol.PATCH_ROUNDOFF
