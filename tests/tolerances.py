@@ -764,3 +764,30 @@ PEER_CONTACT_C = {"rms": {("C1", "sxy"): 1.5 * 9.58e-5, ("C2", "syy"): 1.5 * 2.5
                           ("C4", "tN"): 1.5 * 7.64e-4, ("C4", "tT"): 1.5 * 3.25e-2, ("C4", "gN"): 1.5 * 6.75e-4,
                           ("C4", "gT"): 1.5 * 1.49e-3},
                   "open": 1.5 * 1.5e-2}
+
+
+#: The Γ-through-vertices tests (tests/test_gamma_degenerate.py).  Cut
+#: rules' lengths and areas against closed forms: Gauss rules exact for a
+#: straight Γ, round-off of sums over 100–200 cells; a circle's arcs
+#: integrated by fans of 3 points per direction (GAUSS): measured 2e-16
+#: and 4e-9 (2026-11-27).
+CUT_RULE_ROUNDOFF = 1e-12
+CUT_RULE_CIRCLE = 1e-7
+
+#: The mean over Γ of a profile's piece-mean traction against the load it
+#: carries: piece means interpolated between piece centres and sampled at
+#: 101 points lose the ends' half pieces; measured 1e-9 (xfem P1) and 2e-5
+#: (efgm P2) on the user's bonded Γ through a vertex (2026-11-27), where
+#: one garbage piece had made it 4 % off in t_N and 60 % in t_T.
+PROFILE_MEAN_EQUILIBRIUM = 1e-3
+
+#: A Γ through vertices, or on a line of EFGM nodes, agrees with fe P2 at
+#: h/2 within this factor of the same Γ moved off them (measured
+#: 2026-11-27, h = 0.1).  xfem, RMS of t_N, t_T through the vertices / the
+#: worst of a quarter cell below and above: P1 quads 0.12 / 0.21,
+#: triangles 0.26 / 0.37, P2 0.076 / 0.048 on either cell (pieces of
+#: whole cells resolve Γ's singular ends more coarsely), where the garbage
+#: piece had made it 1.9, 1.6, 0.22, 0.33.  efgm, worst sample of g_N, t_N
+#: on a node line / the worst of three placements off them: 0.27 / 0.20
+#: (P1 exact), at most 0.85 of it otherwise; γ₀ = 0 had given no answer.
+VERTEX_VS_OFF_VERTEX = 2.0
