@@ -118,11 +118,13 @@ class LineProfile:
 
 @dataclass(frozen=True)
 class InterfaceProfile:
-    """Quantities sampled along Γ against the polar angle or the arc length."""
+    """Quantities sampled along Γ against the polar angle or the arc length;
+    ``parameter`` None takes Γ's own, as a scene file does: the angle on a
+    circle, the arc length otherwise (the :class:`Scene` resolves it)."""
 
     id: str
     quantities: tuple[str, ...]
-    parameter: str = "angle"
+    parameter: str | None = None
     side: str = "plus"
     title: str = ""
 
@@ -156,6 +158,14 @@ class Scene:
     #: The scene as the user gave it, when this one is its dimensionless
     #: form (contactcore.scaling): messages name the user's values.
     source: "Scene | None" = field(default=None, compare=False, repr=False)
+
+    def __post_init__(self):
+        """An interface profile without its parameter takes Γ's own
+        (:class:`InterfaceProfile`)."""
+        along = "angle" if isinstance(self.interface, CircleInterface) else "arclength"
+        object.__setattr__(self, "profiles", tuple(
+            replace(p, parameter=along) if isinstance(p, InterfaceProfile) and p.parameter is None else p
+            for p in self.profiles))
 
     @property
     def user(self) -> "Scene":
