@@ -208,3 +208,12 @@ def test_a_failed_solve_names_the_run_that_failed(tmp_path, capsys, monkeypatch,
     errors = [line for line in capsys.readouterr().err.splitlines() if line.startswith("error:")]
     assert errors == [named]
     assert not (tmp_path / "o").exists()
+
+
+def test_an_empty_out_and_a_value_given_twice_are_refused(tmp_path, capsys):
+    """``--out ""`` names no folder (it was taken as the current one); a
+    study value given twice would solve the same point twice."""
+    assert _refused(["run", "A", "--out", ""], capsys) == \
+        "error: run: argument --out: must name a folder (got an empty path)"
+    assert main(["study", "A", "--param", "kN", "--values", "1e10", "1e10", "--out", str(tmp_path / "s")]) == 2
+    assert capsys.readouterr().err.strip() == "error: --values: kN: each value may be given once (1e+10 given twice)"

@@ -131,7 +131,7 @@ def test_an_out_the_system_will_not_create_is_one_line(capsys):
     """/proc accepts no folder, though root may write: one line, exit 2
     (a FileNotFoundError traceback before)."""
     _refused(capsys, ["run", "A", "--method", "fe", "--h", "0.2", "--no-plots", "--out", "/proc/jameel-out"],
-             r"error: /proc/jameel-out cannot be created")
+             r"error: --out: /proc/jameel-out cannot be created")
 
 
 def test_a_scene_error_survives_pickling():

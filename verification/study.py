@@ -269,6 +269,10 @@ def study(scene_name: str, params: list[tuple[str, list[float]]], method_names: 
     names = [p for p, _ in params]
     if len(set(names)) != len(names):
         raise SceneError("--param", f"each parameter may be given once (got {', '.join(names)})")
+    for name, values in params:
+        twice = sorted({f"{v:g}" if isinstance(v, float) else str(v) for v in values if values.count(v) > 1})
+        if twice:
+            raise SceneError("--values", f"{name}: each value may be given once ({', '.join(twice)} given twice)")
     base = load_scene(scene_name)
     if h is not None:
         check_resolution(base, h)
