@@ -411,6 +411,20 @@ RESIDUAL_FAIL = 1e-5
 #: spring that weak is lost in round-off beside the bulk stiffness ~E.
 RIGID_MODE_FREE = 1e-14
 
+#: Where Newton's status map leaves a body free (Γ open around a body that
+#: no support or pin holds: contactcore.health.lets_go), its open points
+#: are tied in the tangent, never in the residual, by this fraction of
+#: their closed stiffness (k_N, k_T; Nitsche's γ): the step moves that body
+#: with the one it faces, and the answer is the law's.  A tie also holds
+#: the deformation of what it touches, so Newton converges by the factor
+#: ~tie/(tie + bulk) per iteration, slowly where a cut cell leaves a thin
+#: part of a body (measured 2026-11-26, a disc 100 times stiffer than its
+#: plate, pulled or pinched by it, unilateral and Coulomb, exact and
+#: penalty, fe, xfem P1, P2 and efgm at h = 0.05: every outcome the same
+#: from 1e-4 to 1e-8; at 1e-3 xfem P2 and at 1e-2 xfem P1 ran out of
+#: iterations on the pulled disc).  The middle of that range.
+FREE_BODY_TIE = 1e-6
+
 #: Volumetric locking in plane strain: warned above this Poisson's ratio
 #: (λ/μ = 2ν/(1-2ν) = 49).  Measured on scene A in plane strain at h = 0.05,
 #: RMS over σxx, σyy, σxy on y = 0.25 of the difference to fe P2, relative to
