@@ -419,10 +419,11 @@ RIGID_MODE_FREE = 1e-14
 #: the deformation of what it touches, so Newton converges by the factor
 #: ~tie/(tie + bulk) per iteration, slowly where a cut cell leaves a thin
 #: part of a body (measured 2026-11-26, a disc 100 times stiffer than its
-#: plate, pulled or pinched by it, unilateral and Coulomb, exact and
-#: penalty, fe, xfem P1, P2 and efgm at h = 0.05: every outcome the same
-#: from 1e-4 to 1e-8; at 1e-3 xfem P2 and at 1e-2 xfem P1 ran out of
-#: iterations on the pulled disc).  The middle of that range.
+#: plate, pulled, pressed or pinched by it, unilateral and Coulomb, exact
+#: and penalty, fe, xfem and efgm P1 and P2 at h = 0.05: every outcome the
+#: same from 1e-4 to 1e-8; at 1e-3 xfem P2 ran out of iterations on the
+#: pulled disc in 20 increments, at 1e-2 xfem P1, P2 and efgm P2 in one).
+#: The middle of that range.
 FREE_BODY_TIE = 1e-6
 
 #: Volumetric locking in plane strain: warned above this Poisson's ratio

@@ -16,7 +16,7 @@ import tolerances as tol
 from contactcore import health
 from contactcore.geometry import tangent_of
 from contactcore.laws import OPEN, STICK
-from contactcore.scene import scene_toml
+from contactcore.scene_files import scene_toml
 from verification import methods
 from verification.__main__ import main
 
