@@ -258,11 +258,19 @@ def _orders(theory: tuple[int, int]) -> str:
 def order_warnings(estimates: dict[str, dict[str, QuantityEstimate]]) -> list[str]:
     """One line per quantity whose observed order is further than
     :data:`~contactcore.tolerances.ORDER_MISMATCH` from the orders theory
-    allows."""
-    return [f"{pid}:{q}: observed order {e.order:.2f} against {_orders(e.theory)} in theory: the runs are not in "
-            f"the asymptotic range, the estimate is not to be trusted"
+    allows, or was clipped to an end of
+    :data:`~contactcore.tolerances.ORDER_RANGE` (the differences do not
+    shrink like a power of h at all)."""
+    return [f"{pid}:{q}: observed order {e.order:.2f}{_clipped(e.order)} against {_orders(e.theory)} in theory: "
+            f"the runs are not in the asymptotic range, the estimate is not to be trusted"
             for pid, qs in estimates.items() for q, e in qs.items()
-            if e.observed and not e.theory[0] - tol.ORDER_MISMATCH <= e.order <= e.theory[1] + tol.ORDER_MISMATCH]
+            if e.observed and (_clipped(e.order) or not e.theory[0] - tol.ORDER_MISMATCH <= e.order
+                               <= e.theory[1] + tol.ORDER_MISMATCH)]
+
+
+def _clipped(order: float) -> str:
+    """``" (clipped)"`` where an observed order sits at an end of ORDER_RANGE."""
+    return " (clipped)" if order <= tol.ORDER_RANGE[0] or order >= tol.ORDER_RANGE[1] else ""
 
 
 #: The least order at which a corner's pollution shows: the degree-2

@@ -2,7 +2,7 @@
 
 The penalty laws (:mod:`contactcore.laws`) set the answer by their springs
 k_N, k_T.  Enforced exactly, each law is its springs' limit k → ∞:
-``unilateral`` is Signorini's condition (``g_N <= 0``, ``t_N <= 0``,
+``unilateral`` is Signorini's condition (``g_N >= 0``, ``t_N <= 0``,
 ``g_N t_N = 0``) with a closed point tied tangentially (``g_T = 0``, any
 ``t_T``: the unilateral law's spring has no limit, docs/scenes.md) and an
 open one free; ``coulomb`` is Signorini's condition with Coulomb's friction

@@ -11,9 +11,12 @@ The unit normal ``n = ∇φ/|∇φ|`` points from − into +; the tangent is
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
+
+from .errors import SceneError
 
 Point = tuple[float, float]
 
@@ -127,10 +130,18 @@ Domain = Rectangle | Disc
 
 @dataclass(frozen=True)
 class LineInterface:
-    """Straight Γ through ``point`` with unit ``normal`` (from − into +)."""
+    """Straight Γ through ``point`` with ``normal`` (from − into +), made a
+    unit vector as a scene file's is."""
 
     point: Point
     normal: Point
+
+    def __post_init__(self):
+        length = math.hypot(*self.normal)
+        if not 0.0 < length < math.inf:
+            raise SceneError("interface.normal", f"must be a finite non-zero vector (got {self.normal!r})")
+        if length != 1.0:
+            object.__setattr__(self, "normal", (self.normal[0] / length, self.normal[1] / length))
 
     def phi(self, x) -> np.ndarray:
         p = _as_points(x)

@@ -15,6 +15,10 @@ bulk is lost in their rows, and :func:`check_restraint` asks whether the support
 and interface springs remove the six rigid-body modes of the two bodies; a
 mode held by less than ``RIGID_MODE_FREE·E`` (springs lost in round-off, a
 missing support) is refused with the body and the missing support named.
+During Newton, :func:`lets_go` asks the same of each status map's closed
+points (a body that Γ has let go makes the tangent singular), and
+:func:`check_held` refuses a converged answer that leaves a body free:
+its position is not determined.
 :func:`material_warnings` warns about volumetric locking near ν = 0.5.
 """
 from __future__ import annotations
@@ -24,6 +28,7 @@ import numpy as np
 from . import tolerances as tol
 from .errors import SolverError
 from .geometry import Disc, LineInterface, Rectangle, tangent_of
+from .laws import OPEN
 
 #: Sample points per support boundary in the rigid-mode check (three
 #: non-collinear points suffice; more make the check independent of them).
@@ -156,10 +161,12 @@ def _boundary_points(domain, name: str) -> np.ndarray:
     return c[i] + s[:, None] * (c[j] - c[i])
 
 
-def _restraint(scene, interface_points, interface_weights) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def _restraint(scene, interface_points, interface_weights, holding=None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """``Q`` (6×6): the stiffness of the supports (E per held component),
     pins and springs (``Σ w k g gᵀ``) against the rigid modes, relative to
-    the stiffer modulus; and the spring parts ``Q_N``, ``Q_T`` alone."""
+    the stiffer modulus; and the spring parts ``Q_N``, ``Q_T`` alone.
+    ``holding`` (m,) bool: the points of Γ whose springs hold (every point
+    if None; an open point of a unilateral law holds nothing)."""
     E = max(m.E for m in scene.materials.values())
     dom = scene.domain
     centre = np.asarray(dom.centre, float) if isinstance(dom, Disc) else np.mean(dom.corners, axis=0)
@@ -182,6 +189,7 @@ def _restraint(scene, interface_points, interface_weights) -> tuple[np.ndarray, 
         # a spring stiffer than E per |Γ| holds like a support; capping it
         # there keeps the eigenvalues of Q within double precision
         cap = 1.0 / np.sum(w)
+        w = w if holding is None else np.where(holding, w, 0.0)
         # a law enforced exactly holds like the stiffest spring
         QN = (w[:, None] * gN).T @ gN * min(getattr(scene.law, "kN", np.inf) / E, cap)
         # frictionless contact (μ = 0) carries no shear: no tangential hold
@@ -213,24 +221,83 @@ def _describe(scene, v: np.ndarray) -> str:
     return f"{who} can translate along ({d[0]:.2g}, {d[1]:.2g})"
 
 
+def _free_modes(Q: np.ndarray) -> np.ndarray:
+    """(6, f): the rigid-body modes ``Q`` holds by at most RIGID_MODE_FREE."""
+    lam, vec = np.linalg.eigh(Q)
+    return vec[:, lam <= tol.RIGID_MODE_FREE]
+
+
 def check_restraint(scene, interface_points, interface_weights) -> None:
     """Refuse a scene whose supports, pins and springs leave a rigid-body
     mode free: an eigenvalue of the restraint ``Q`` (relative to E) below
     ``RIGID_MODE_FREE``.  The message names the body, the motion and why
     (a negligible spring, or no support)."""
     Q, QN, QT = _restraint(scene, interface_points, interface_weights)
-    lam, vec = np.linalg.eigh(Q)
-    free = np.flatnonzero(lam <= tol.RIGID_MODE_FREE)
-    if not len(free):
+    free = _free_modes(Q)
+    if not free.shape[1]:
         return
-    v = vec[:, free[0]]
+    v = free[:, 0]
     why = [f"k_{c} is {k_user:.3g}" for (c, _, k_user), Qc in zip(_springs(scene), (QN, QT))
            if 0 < np.trace(Qc) <= tol.RIGID_MODE_FREE]
     why = " and ".join(why) + " (springs lost in round-off beside E)" if why else (
         "no support or pin holds it, and Γ is frictionless (μ = 0): its contact carries no shear"
         if _frictionless(scene) else "no support or pin holds it")
-    raise SolverError(f"scene {scene.name}: {_describe(scene, v)}: {why} — {len(free)} rigid-body mode(s) "
+    raise SolverError(f"scene {scene.name}: {_describe(scene, v)}: {why} — {free.shape[1]} rigid-body mode(s) "
                       "are not removed by the supports, pins and interface springs; add a support or pin")
+
+
+class FreeBody(SolverError):
+    """Newton converged where Γ no longer holds a body that nothing else
+    holds (:func:`check_held`): the answer exists but does not fix that
+    body's position, so no smaller step or other stabilisation helps."""
+
+
+def _let_go(scene, interface_points, interface_weights, status) -> np.ndarray:
+    """(6, f): the rigid-body modes that the supports, pins and the points
+    of Γ not open in ``status`` (m,) leave free (:func:`_restraint`,
+    :func:`_free_modes`).
+
+    At an open point the law's tangent ``D`` is zero.  A rigid motion ``r``
+    of one body strains nothing (``A r = 0``) and has no consistent
+    traction (``S r = 0``, so ``C r = 0`` and ``G̃ r = G r``), so the
+    tangent ``J = A + C + Tᵀ W D G̃`` (the penalty's ``A + Gᵀ W D G``) gives
+    ``J r = 0`` wherever ``G r`` vanishes at every closed point: ``J`` is
+    singular in exact arithmetic, and only round-off decides whether a
+    factorisation says so (MUMPS's null pivots) or returns a rigid motion
+    of round-off size.  This reads the status map and the geometry only,
+    so it does not follow round-off.  A slipping point counts as holding
+    tangentially: a body held by slipping points alone is left to Newton's
+    secant step (:meth:`contactcore.exact.NitscheInterface.regularised`)
+    under an exact law, and to the factorisation's own check under a
+    penalty law."""
+    holding = np.asarray(status) != OPEN
+    if holding.all():
+        return np.zeros((6, 0))
+    return _free_modes(_restraint(scene, interface_points, interface_weights, holding)[0])
+
+
+def lets_go(scene, interface_points, interface_weights, status) -> bool:
+    """Whether the status map ``status`` leaves a rigid-body mode free
+    (:func:`_let_go`): its tangent is singular."""
+    return bool(_let_go(scene, interface_points, interface_weights, status).shape[1])
+
+
+def check_held(scene, interface_points, interface_weights, status, where: str) -> None:
+    """Refuse a converged answer whose status map ``status`` leaves a
+    rigid-body mode free (:func:`_let_go`): a small motion in that mode
+    keeps every open point open and every closed point's jump, so it
+    solves the same equations, and the body's position is not determined.
+    ``where`` (the scene and increment) starts the one-line
+    :class:`FreeBody` error."""
+    free = _let_go(scene, interface_points, interface_weights, status)
+    if not free.shape[1]:
+        return
+    closed = int(np.count_nonzero(np.asarray(status) != OPEN))
+    held = f"only {closed} of {len(status)} points of Γ stay closed" if closed else "Γ is open at every point"
+    more = f" ({free.shape[1]} rigid-body modes are free)" if free.shape[1] > 1 else ""
+    raise FreeBody(f"{where}: {_describe(scene, free[:, 0])}{more}: no support or pin holds it and {held}, so its "
+                   "position is not determined; hold it with a support or pin, or with springs that carry tension "
+                   "(type = \"linear\")")
 
 
 # ----- materials --------------------------------------------------------------

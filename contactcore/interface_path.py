@@ -54,6 +54,12 @@ class InterfacePath:
     def iterations(self) -> list[int]:
         return [s.iterations for s in self.steps]
 
+    def means(self, step: Increment) -> np.ndarray:
+        """``(t_N, t_T, g_N, g_T)`` of ``step`` averaged over Γ, weighted by
+        the quadrature: ``∫ q ds / |Γ|``."""
+        w = self.weights / self.weights.sum()
+        return w @ np.column_stack([step.traction, step.jump])
+
     def gathered(self, ranks, interface) -> "InterfacePath":
         """Every rank's points on every rank, ordered along Γ (polar angle
         or arc length, else x then y): the same path, in the same order,

@@ -107,6 +107,7 @@ class _Newton:
         self.path = InterfacePath(self.itf.points, self.itf.weights, pieces=self.itf.pieces)
         self.ranks = system.collective  # every decision is taken on all ranks alike
         self.factorisations = KeptFactorisations(system, self.itf, self.free, self.ranks)
+        self._gamma = self.ranks.gather(self.itf.points), self.ranks.gather(self.itf.weights)  # lets_go, check_held
         self._singular = []  # status maps whose law tangent proved singular
         self._secant = None  # the step's secant stiffnesses of its slipping points (_regularised)
 
@@ -138,7 +139,7 @@ class _Newton:
         (:meth:`_from_stiffer`)."""
         try:
             converged = self._iterate(k)
-        except SolverOptionError:
+        except (SolverOptionError, health.FreeBody):
             raise
         except SolverError:
             if not self.itf.exact:  # a penalty law has no stabilisation to continue in
@@ -234,6 +235,8 @@ class _Newton:
                 raise SolverError(f"the residual is not finite; residual history {_fmt(history)}")
             if it > 1 and self._converged(R, forces, tangent, response, du, u - u0):
                 health.check_residual(history[-1], "the settled Newton step")
+                health.check_held(self.scene, *self._gamma, self.ranks.gather(response.status),
+                                  f"scene {self.scene.name}: increment {k:g} of {self.scene.increments}")
                 return (loads, supports), u, response, it - 1, history
             du, rep, tangent = self._solve(response.tangent, -R, scale, response.secant, response.status)
             _merge(self.report, rep)
@@ -339,7 +342,10 @@ class _Newton:
         with: the law's, or where that is singular an exact law's
         regularised one (:meth:`_regularised`; Newton is then not settled by
         it).  A map that no point sticks or closes on more than on one whose
-        tangent proved singular (:meth:`_dominated`) is regularised at once."""
+        tangent proved singular (:meth:`_dominated`) is regularised at once;
+        one whose closed points leave a body free is tied (:meth:`_tied`)."""
+        if health.lets_go(self.scene, *self._gamma, self.ranks.gather(status)):
+            tangent = self._tied(tangent, status)
         if secant is not None and self._dominated(status):
             tangent = self._regularised(tangent, secant)
         try:
@@ -352,6 +358,20 @@ class _Newton:
                 raise
             self._singular.append(status)
             return (*self.factorisations.solve(regularised, rhs, scale), regularised)
+
+    def _tied(self, tangent: np.ndarray, status: np.ndarray) -> np.ndarray:
+        """The law's tangent with each open point tied by FREE_BODY_TIE
+        times its closed stiffness (the springs ``k_N``, ``k_T``; Nitsche's
+        ``γ``), in the tangent only: where Γ let go of a body that nothing
+        else holds (:func:`~contactcore.health.lets_go`) its rigid motion
+        follows the body it faces instead of round-off, and the residual,
+        so the answer, is the law's.  An answer that still leaves it free is
+        refused (:func:`~contactcore.health.check_held`)."""
+        springs = self.law.at(self.itf.gamma) if self.itf.exact else self.law
+        out, gone = np.array(tangent, float, copy=True), status == OPEN
+        for c, k in enumerate((springs.kN, springs.kT)):
+            out[gone, c, c] = tol.FREE_BODY_TIE * np.broadcast_to(k, gone.shape)[gone]
+        return out
 
     def _regularised(self, tangent: np.ndarray, secant: np.ndarray):
         """The exact law's tangent regularised by the slipping points'
@@ -397,8 +417,8 @@ class _Newton:
             try:
                 self.step(k)
                 start = k
-            except SolverOptionError:
-                raise  # a refused solver option: no smaller step helps
+            except (SolverOptionError, health.FreeBody):
+                raise  # a refused solver option or a free body: no smaller step helps
             except SolverError as exc:
                 failures.append(f"step {start:g} → {k:g}: {exc}")
                 if depth >= tol.MAX_CUTBACKS:
@@ -487,7 +507,7 @@ def _final_state(scene, system: ContactSystem, newton: _Newton, progress=None) -
     try:
         newton.step(float(scene.increments))
         return newton
-    except SolverOptionError:
+    except (SolverOptionError, health.FreeBody):
         raise
     except SolverError as exc:
         if scene.law.is_linear:

@@ -118,11 +118,13 @@ class LineProfile:
 
 @dataclass(frozen=True)
 class InterfaceProfile:
-    """Quantities sampled along Γ against the polar angle or the arc length."""
+    """Quantities sampled along Γ against the polar angle or the arc length;
+    ``parameter`` None takes Γ's own, as a scene file does: the angle on a
+    circle, the arc length otherwise (the :class:`Scene` resolves it)."""
 
     id: str
     quantities: tuple[str, ...]
-    parameter: str = "angle"
+    parameter: str | None = None
     side: str = "plus"
     title: str = ""
 
@@ -156,6 +158,14 @@ class Scene:
     #: The scene as the user gave it, when this one is its dimensionless
     #: form (contactcore.scaling): messages name the user's values.
     source: "Scene | None" = field(default=None, compare=False, repr=False)
+
+    def __post_init__(self):
+        """An interface profile without its parameter takes Γ's own
+        (:class:`InterfaceProfile`)."""
+        along = "angle" if isinstance(self.interface, CircleInterface) else "arclength"
+        object.__setattr__(self, "profiles", tuple(
+            replace(p, parameter=along) if isinstance(p, InterfaceProfile) and p.parameter is None else p
+            for p in self.profiles))
 
     @property
     def user(self) -> "Scene":
@@ -272,6 +282,18 @@ def _check_material(mat: Material, plane: str, path: str) -> None:
     nu = finite(mat.nu, f"{path}.nu")
     if not -1.0 < nu < 0.5:
         raise SceneError(f"{path}.nu", f"Poisson's ratio must lie in (-1, 0.5) for plane {plane} (got {nu!r})")
+
+
+def _check_contrast(materials: dict[str, Material]) -> None:
+    """The softer body's modulus at least MODULUS_CONTRAST of the stiffer's
+    (:data:`~contactcore.tolerances.MODULUS_CONTRAST`: below it no solve
+    keeps a digit of the softer body)."""
+    soft, stiff = sorted(BODIES, key=lambda b: materials[b].E)
+    ratio = materials[soft].E / materials[stiff].E
+    if ratio < tol.MODULUS_CONTRAST:
+        raise SceneError(f"materials.{soft}.E", f"{materials[soft].E:g} is {ratio:.1e} of the {stiff} body's "
+                         f"{materials[stiff].E:g}, below {tol.MODULUS_CONTRAST:g}: the solves would keep no digit "
+                         "of the softer body (docs/scenes.md, 'Units')")
 
 
 def _check_domain(domain: Domain) -> None:
@@ -468,6 +490,7 @@ def validate(scene: Scene) -> None:
         if body not in scene.materials:
             raise SceneError(f"materials.{body}", "missing")
         _check_material(scene.materials[body], scene.plane, f"materials.{body}")
+    _check_contrast(scene.materials)
     if isinstance(scene.increments, bool) or not isinstance(scene.increments, int) or scene.increments < 1:
         raise SceneError("increments", f"must be an integer >= 1 (got {scene.increments!r})")
     if not isinstance(scene.follow_path, bool):

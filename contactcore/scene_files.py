@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import dataclasses
 import json
-import math
 import tomllib
 from importlib import resources
 from pathlib import Path
@@ -105,11 +104,7 @@ def _read_domain(t: _Table) -> Domain:
 def _read_interface(t: _Table) -> tuple[Interface, InterfaceLaw]:
     kind = t.get("type", "str", choices=("line", "circle"))
     if kind == "line":
-        normal = t.get("normal", "vector")
-        length = math.hypot(*normal)
-        if length == 0.0:
-            raise SceneError(f"{t.path}.normal", "must be a non-zero vector")
-        itf = LineInterface(t.get("point", "vector"), (normal[0] / length, normal[1] / length))
+        itf = LineInterface(t.get("point", "vector"), t.get("normal", "vector"))  # the normal made a unit vector
     else:
         itf = CircleInterface(t.get("centre", "vector"), t.get("radius", "number"))
     law_table = t.get("law", "table")

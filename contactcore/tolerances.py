@@ -383,6 +383,16 @@ SYSTEMS_KEPT = 3
 #: of ~1e4 L the inputs carry fewer digits than the step resolves.
 DIMENSIONLESS_GRID = 2.0 ** -36
 
+#: The least ratio of the two bodies' Young's moduli a scene may give.  The
+#: softer body's displacements are 1/contrast times the stiffer's, and the
+#: tangent's condition number grows with them: measured 2026-11-27, scene A
+#: at h = 0.1 with its − body made softer, linear and exact unilateral laws,
+#: fe, xfem and efgm P1: every run solves at 1e-8; at 1e-10 every one is
+#: refused by the residual check (1e-4 of the forces, backward error 1e-16),
+#: at 1e-14 and below MUMPS finds null pivots, and at 1e-300 the moduli
+#: underflow once made dimensionless.  Below this ratio no h helps.
+MODULUS_CONTRAST = 1e-10
+
 # --- Figures (verification/plots.py) ---------------------------------------
 #: A panel's y range never spans less than this fraction of its quantity's
 #: scale (the largest |value| of any curve of the quantity): a difference
@@ -430,6 +440,21 @@ RESIDUAL_FAIL = 1e-5
 #: at most RIGID_MODE_FREE E: MUMPS's null-pivot threshold (NULL_PIVOT); a
 #: spring that weak is lost in round-off beside the bulk stiffness ~E.
 RIGID_MODE_FREE = 1e-14
+
+#: Where Newton's status map leaves a body free (Γ open around a body that
+#: no support or pin holds: contactcore.health.lets_go), its open points
+#: are tied in the tangent, never in the residual, by this fraction of
+#: their closed stiffness (k_N, k_T; Nitsche's γ): the step moves that body
+#: with the one it faces, and the answer is the law's.  A tie also holds
+#: the deformation of what it touches, so Newton converges by the factor
+#: ~tie/(tie + bulk) per iteration, slowly where a cut cell leaves a thin
+#: part of a body (measured 2026-11-26, a disc 100 times stiffer than its
+#: plate, pulled, pressed or pinched by it, unilateral and Coulomb, exact
+#: and penalty, fe, xfem and efgm P1 and P2 at h = 0.05: every outcome the
+#: same from 1e-4 to 1e-8; at 1e-3 xfem P2 ran out of iterations on the
+#: pulled disc in 20 increments, at 1e-2 xfem P1, P2 and efgm P2 in one).
+#: The middle of that range.
+FREE_BODY_TIE = 1e-6
 
 #: Volumetric locking in plane strain: warned above this Poisson's ratio
 #: (λ/μ = 2ν/(1-2ν) = 49).  Measured on scene A in plane strain at h = 0.05,

@@ -81,10 +81,17 @@ def _exact_inclined():
         law=make_law({"type": "unilateral", "enforcement": "exact"}))
 
 
+def _disc(pulled: bool):
+    import free_disc
+
+    return free_disc.disc(pulled)
+
+
 #: The stiff friction cases, by name: (scene factory, h or None for the scene's).
-#: The last three enforce the law exactly (Nitsche): a rod held by friction
-#: alone, a layer 1000x stiffer than its neighbour, and an inclined Γ that
-#: opens part of the way.
+#: Three enforce the law exactly (Nitsche): a rod held by friction alone, a
+#: layer 1000x stiffer than its neighbour, and an inclined Γ that opens part
+#: of the way; the last two are a disc held by Γ alone (tests/free_disc.py),
+#: pulled (refused) and pressed (solved).
 CASES = {
     "soft-layer": (lambda: _layered(E_minus_factor=tol.SOFT_LAYER), None),
     "contrast-1e-6": (lambda: _layered(E_minus_factor=1e-6), None),
@@ -95,6 +102,8 @@ CASES = {
     "C-coulomb-exact": (_exact_coulomb, tol.ROUNDOFF_C_H),
     "stiff-layer-exact": (_exact_stiff_layer, None),
     "inclined-exact": (_exact_inclined, tol.ROUNDOFF_C_H),
+    "disc-pulled": (lambda: _disc(True), tol.ROUNDOFF_DISC_H),
+    "disc-pressed": (lambda: _disc(False), tol.ROUNDOFF_DISC_H),
 }
 
 

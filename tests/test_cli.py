@@ -180,3 +180,40 @@ def test_run_measures_a_quantity_against_its_floor(tmp_path):
         assert row + agreement.percent(with_floor.worst) + " |" in summary
         assert (with_floor.worst < without.worst) == (with_floor.quantity == "sxy")
     assert json.loads((out / "run.json").read_text())["floors"] == {"sxy": 1e3}
+
+
+@pytest.mark.parametrize("argv, failing, named", [
+    (["run", "A", "--method", "fe", "xfem", "--h", "0.2"], lambda degree, h: degree == 2,
+     "error: fe (the reference, degree 2): scene A: no answer"),
+    (["run", "A", "--method", "fe", "--h", "0.2", "--estimate"], lambda degree, h: h < 0.2,
+     "error: the estimate's run at h = 0.1: scene A: no answer"),
+])
+def test_a_failed_solve_names_the_run_that_failed(tmp_path, capsys, monkeypatch, argv, failing, named):
+    """The reference a run compares with, and each run of an estimate,
+    are solves the user did not name: one that fails says which it was."""
+    from contactcore import SolverError
+    from verification import methods
+    chosen = methods.solver
+
+    def solver(name):
+        solve = chosen(name)
+
+        def patched(scene, h, degree=1, **options):
+            if failing(degree, h):
+                raise SolverError(f"scene {scene.name}: no answer")
+            return solve(scene, h, degree=degree, **options)
+        return patched
+    monkeypatch.setattr(methods, "solver", solver)
+    assert main(argv + ["--no-plots", "--out", str(tmp_path / "o")]) == 2
+    errors = [line for line in capsys.readouterr().err.splitlines() if line.startswith("error:")]
+    assert errors == [named]
+    assert not (tmp_path / "o").exists()
+
+
+def test_an_empty_out_and_a_value_given_twice_are_refused(tmp_path, capsys):
+    """``--out ""`` names no folder (it was taken as the current one); a
+    study value given twice would solve the same point twice."""
+    assert _refused(["run", "A", "--out", ""], capsys) == \
+        "error: run: argument --out: must name a folder (got an empty path)"
+    assert main(["study", "A", "--param", "kN", "--values", "1e10", "1e10", "--out", str(tmp_path / "s")]) == 2
+    assert capsys.readouterr().err.strip() == "error: --values: kN: each value may be given once (1e+10 given twice)"

@@ -74,6 +74,17 @@ def test_an_observed_order_far_from_theory_warns():
     assert "P:ux" in warning and "asymptotic" in warning
 
 
+def test_a_clipped_order_warns_even_within_theorys_reach():
+    """Differences that do not shrink (order clipped to ORDER_RANGE's 0.5)
+    warn, though 0.5 lies within ORDER_MISMATCH of a degree-1 stress's
+    range 1-2."""
+    levels = [1.0 + 0.01 * np.ones(5), 1.0 + 0.02 * np.ones(5), 1.0 + 0.03 * np.ones(5)]
+    e = est.richardson(levels, theory=(1, 2))
+    assert e.order == core_tol.ORDER_RANGE[0] and e.theory[0] - core_tol.ORDER_MISMATCH <= e.order
+    (warning,) = est.order_warnings({"P": {"sxx": e}})
+    assert "(clipped)" in warning
+
+
 def test_the_observed_order_is_clipped_and_round_off_shows_none():
     base = np.ones(5)
     assert est.observed_order(base + 1.0, base + 1e-3, base + 1e-12) == core_tol.ORDER_RANGE[1]

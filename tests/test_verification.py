@@ -180,3 +180,18 @@ def test_quick_report_runs_the_whole_chain(tmp_path):
 def test_every_sweep_has_no_silently_wrong_answer():
     for sweep in sweeps():
         assert not [r for r in run_sweep(sweep) if r["outcome"] == "wrong"], sweep.name
+
+
+def test_the_studys_mean_traction_is_the_load_over_gamma(tmp_path, method="xfem"):
+    """study.csv's mean t_N, t_T are Γ's means weighted by the quadrature
+    (as increments.csv's): on scene A, whose + block is held by Γ alone
+    under the top's traction (2.5e4, −1e5) Pa across the whole width, they
+    are that traction by equilibrium; the samples' plain mean was not.  One
+    method: the means are the shared InterfacePath's (measured 5e-12 in
+    fe, 2e-12 in xfem, 8e-13 in efgm)."""
+    assert main(["study", "A", "--param", "load", "--values", "1", "--method", method, "--h", "0.2",
+                 "-q", "--out", str(tmp_path)]) == 0
+    with open(tmp_path / "study.csv") as fh:
+        (row,) = list(csv.DictReader(fh))
+    assert float(row["mean_tN"]) == pytest.approx(-1.0e5, rel=tol.GAMMA_MEAN_BALANCE)
+    assert float(row["mean_tT"]) == pytest.approx(2.5e4, rel=tol.GAMMA_MEAN_BALANCE)

@@ -46,6 +46,14 @@ from .pool import DEFAULT_WORKERS, LOG_FORMAT
 log = logging.getLogger("verification")
 
 
+def _folder(text: str) -> Path:
+    """A result folder's path: an empty one names no folder (Path("") is
+    the current folder)."""
+    if not text.strip():
+        raise argparse.ArgumentTypeError("must name a folder (got an empty path)")
+    return Path(text)
+
+
 def _petsc_option(text: str) -> tuple[str, str]:
     key, sep, value = text.partition("=")
     if not sep or not key:
@@ -148,7 +156,7 @@ def _commands() -> dict[str, Command]:
     cell = arg("--cell", choices=XFEM_CELLS, help="XFEM background cells (default quad)")
     scenes = arg("--scene", nargs="+", default=["A", "B", "C"], choices=["A", "B", "C"],
                  help="the paper's scenes (default: A B C)")
-    out = arg("--out", type=Path, required=True,
+    out = arg("--out", type=_folder, required=True,
               help="result folder (built aside, put in place only if the run succeeds)")
 
     workers = arg("--workers", type=int, default=DEFAULT_WORKERS, metavar="K",

@@ -105,8 +105,12 @@ def result_folder(path: Path):
     in place of ``path`` (an earlier run's folder is replaced whole) only if
     the block succeeds: a failed or interrupted run leaves nothing under the
     final name."""
-    with atomic_folder(check_out(path)) as tmp:
-        yield tmp
+    try:
+        with atomic_folder(check_out(path)) as tmp:
+            yield tmp
+    except OutFolderError as exc:
+        message = str(exc)
+        raise OutFolderError(message if message.startswith("--out: ") else f"--out: {message}") from None
 
 
 def write_text(path: Path, text: str) -> Path:

@@ -36,8 +36,7 @@ def increment_rows(path: InterfacePath) -> list[dict]:
     w = path.weights / path.weights.sum()
     rows = []
     for s in path.steps:
-        values = np.column_stack([s.traction, s.jump])
-        means, rms = w @ values, np.sqrt(w @ s.traction ** 2)
+        means, rms = path.means(s), np.sqrt(w @ s.traction ** 2)
         rows.append({"step": s.step, "iterations": s.iterations, "residual": s.residuals[-1], **s.counts(),
                      **dict(zip(("mean_tN", "mean_tT", "mean_gN", "mean_gT"), map(float, means))),
                      "rms_tN": float(rms[0]), "rms_tT": float(rms[1]),

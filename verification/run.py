@@ -135,7 +135,7 @@ def _solve_estimated(solve, scene, h, levels: int | None, **options):
     results, ladder = [], estimates.levels_of(h, levels)
     for k, hk in enumerate(ladder, 1):
         log.info("the estimate's run %d of %d, at h = %g%s", k, len(ladder), hk, " (the answer)" * (k == len(ladder)))
-        results.append(solve(scene, hk, **options))
+        results.append(_prefixed(f"the estimate's run at h = {hk:g}", solve, scene, hk, **options))
     return results[-1], estimates.estimate_runs(scene, results, default_exclusion(scene))
 
 
@@ -194,8 +194,8 @@ def _solve_reference(scene, reference, h, paper, petsc_options, out: Path, profi
     name, degree = reference
     log.info("scene %s: solving the reference, %s (degree %d)", scene.name, name, degree)
     solve, on_comm = pool.solver(name) if pool.under_mpi_pool() else (methods.solver(name), {})
-    result = solve(scene, h, degree=degree, paper=paper, **methods.options_for(name, petsc_options=petsc_options),
-                   **on_comm)
+    result = _prefixed(f"{name} (the reference, degree {degree})", solve, scene, h, degree=degree, paper=paper,
+                       **methods.options_for(name, petsc_options=petsc_options), **on_comm)
     summaries.append({**result.summary(), "method": f"{name} (reference)"})
     for prof in sample_profiles(scene, result.fields, result.interface):
         files.write_profile_csv(out / "reference" / "profiles" / f"{prof.id}.csv", prof)
@@ -320,16 +320,21 @@ def _estimated_h(scene: Scene, h) -> float:
 
 def _named(chosen: list[str], name: str, solve, *args):
     """``solve(*args)``; where several methods are ``chosen``, a solve that
-    fails (not a refused option, the input's fault) names the method
-    ``name`` first: which of them failed is the first thing to know."""
+    fails names the method ``name`` first (:func:`_prefixed`): which of
+    them failed is the first thing to know."""
+    return _prefixed(name, solve, *args) if len(chosen) > 1 else solve(*args)
+
+
+def _prefixed(what: str, solve, *args, **kwargs):
+    """``solve(*args, **kwargs)``; a solve that fails (not a refused
+    option, the input's fault) is raised again with ``what`` first: the
+    method, the reference, or the estimate's run that failed."""
     try:
-        return solve(*args)
+        return solve(*args, **kwargs)
     except SolverOptionError:
         raise
     except SolverError as exc:
-        if len(chosen) < 2:
-            raise
-        named = SolverError(f"{name}: {exc}")
+        named = SolverError(f"{what}: {exc}")
         named.details = getattr(exc, "details", "")
         raise named from None
 

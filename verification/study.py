@@ -203,10 +203,14 @@ def left_aside(point: dict, law) -> list[str]:
 
 
 def _outputs(scene, result) -> dict:
+    """The largest |g|, |t| over Γ's samples, and the mean t over Γ weighted
+    by the quadrature (increments.csv's means)."""
     prof = sample_profile(scene, result.fields, GAMMA, result.interface).columns
+    path = result.interface
+    mean_tN, mean_tT = path.means(path.final)[:2]
     return {"max_gN": float(np.max(np.abs(prof["gN"]))), "max_gT": float(np.max(np.abs(prof["gT"]))),
             "max_tN": float(np.max(np.abs(prof["tN"]))), "max_tT": float(np.max(np.abs(prof["tT"]))),
-            "mean_tN": float(np.mean(prof["tN"])), "mean_tT": float(np.mean(prof["tT"]))}
+            "mean_tN": float(mean_tN), "mean_tT": float(mean_tT)}
 
 
 STATS = ["method", "degree", "status", "dofs", "total", "condition", "backward_error", *OUTPUTS, "message"]
@@ -265,6 +269,10 @@ def study(scene_name: str, params: list[tuple[str, list[float]]], method_names: 
     names = [p for p, _ in params]
     if len(set(names)) != len(names):
         raise SceneError("--param", f"each parameter may be given once (got {', '.join(names)})")
+    for name, values in params:
+        twice = sorted({f"{v:g}" if isinstance(v, float) else str(v) for v in values if values.count(v) > 1})
+        if twice:
+            raise SceneError("--values", f"{name}: each value may be given once ({', '.join(twice)} given twice)")
     base = load_scene(scene_name)
     if h is not None:
         check_resolution(base, h)

@@ -42,7 +42,7 @@ from contactcore import BODIES, DiscretisationError, Result, Scene, Timings
 from contactcore import discretisation
 from contactcore.discretisation import Built, Resolution, make
 from contactcore import tolerances as tol
-from .elasticity import sigma
+from .elasticity import sigma, vanishes
 from contactcore.assembly import Triplets
 from contactcore.constraints import Constraints
 from contactcore.cutcell import gauss01
@@ -93,7 +93,7 @@ def _body_indicator(fm: FittedMesh):
 
 def linear_forms(scene: Scene, fm: FittedMesh, V) -> list:
     """One form per load (traction, pressure, body force or torque), at its
-    full value."""
+    full value (a load of value zero: a form that :func:`~xdolfinx.elasticity.vanishes`)."""
     v = ufl.TestFunction(V)
     vs = ufl.split(v)
     dx = ufl.Measure("dx", domain=fm.mesh, subdomain_data=fm.cell_tags)
@@ -103,14 +103,13 @@ def linear_forms(scene: Scene, fm: FittedMesh, V) -> list:
     v_owner = chi * vs[0] + (1.0 - chi) * vs[1]  # trace of the body that owns the boundary facet
     forms = []
     for load in scene.loads:
-        L = ufl.inner(ufl.as_vector([0.0, 0.0]), vs[0]) * dx
         if isinstance(load, Traction):
-            L += ufl.dot(ufl.as_vector(list(load.value)), v_owner) * ds(meshes.BOUNDARY[load.boundary])
+            L = ufl.dot(ufl.as_vector(list(load.value)), v_owner) * ds(meshes.BOUNDARY[load.boundary])
         elif isinstance(load, Pressure):
-            L += -load.value * ufl.dot(ufl.FacetNormal(fm.mesh), v_owner) * ds(meshes.BOUNDARY[load.boundary])
+            L = -load.value * ufl.dot(ufl.FacetNormal(fm.mesh), v_owner) * ds(meshes.BOUNDARY[load.boundary])
         else:
             b = ufl.as_vector(body_force(scene, load, x[0], x[1]))
-            L += ufl.dot(b, vs[BODIES.index(load.body)]) * dx(meshes.BODY[load.body])
+            L = ufl.dot(b, vs[BODIES.index(load.body)]) * dx(meshes.BODY[load.body])
         forms.append(L)
     return forms
 
@@ -358,6 +357,9 @@ def build(scene: Scene, options: FE, resolution: Resolution, timings: Timings) -
         K.assemble()
         loads = []
         for L in linear_forms(scene, fm, V):
+            if vanishes(L):  # a load of value zero
+                loads.append(np.zeros(V.dofmap.index_map.size_local * V.dofmap.index_map_bs))
+                continue
             vec = fem_petsc.assemble_vector(fem.form(L, jit_params=jit))
             vec.ghostUpdate(addv=PETSc.InsertMode.ADD, mode=PETSc.ScatterMode.REVERSE)
             loads.append(vec.getArray().copy())

@@ -15,7 +15,7 @@ from contactcore import BODIES
 from contactcore import tolerances as tol
 from contactcore.scene import Pressure, Traction, body_force
 
-from ..elasticity import sigma
+from ..elasticity import sigma, vanishes
 from .kernels import band_kernels, band_loads
 from .space import EnrichedFunctionSpace
 
@@ -62,7 +62,8 @@ def tags(space: EnrichedFunctionSpace):
 
 def forms(space: EnrichedFunctionSpace, cell_tags, facet_tags):
     """Bulk stiffness and one linear form per load for the cells outside the
-    band (UFL), on the standard part V."""
+    band (UFL), on the standard part V; None for a load of value zero,
+    whose form UFL folds away."""
     import meshes
 
     scene, msh, V = space.scene, space.msh, space.V
@@ -74,14 +75,13 @@ def forms(space: EnrichedFunctionSpace, cell_tags, facet_tags):
     x = ufl.SpatialCoordinate(msh)
     linear = []
     for load in scene.loads:
-        L = ufl.inner(ufl.as_vector([0.0, 0.0]), v) * dx
         if isinstance(load, Traction):
-            L += ufl.dot(ufl.as_vector(list(load.value)), v) * ds(meshes.BOUNDARY[load.boundary])
+            L = ufl.dot(ufl.as_vector(list(load.value)), v) * ds(meshes.BOUNDARY[load.boundary])
         elif isinstance(load, Pressure):
-            L += -load.value * ufl.dot(ufl.FacetNormal(msh), v) * ds(meshes.BOUNDARY[load.boundary])
+            L = -load.value * ufl.dot(ufl.FacetNormal(msh), v) * ds(meshes.BOUNDARY[load.boundary])
         else:
-            L += ufl.dot(ufl.as_vector(body_force(scene, load, x[0], x[1])), v) * dx(_TAG_UNCUT[load.body])
-        linear.append(fem.form(L))
+            L = ufl.dot(ufl.as_vector(body_force(scene, load, x[0], x[1])), v) * dx(_TAG_UNCUT[load.body])
+        linear.append(None if vanishes(L) else fem.form(L))
     return fem.form(a), linear
 
 
@@ -95,6 +95,8 @@ def load_vector(space: EnrichedFunctionSpace, L, load) -> np.ndarray:
         keep = np.repeat(blocks >= 0, 2)
         np.add.at(local, index[keep], f[keep])
     out = space.exchange.reverse(local)
+    if L is None:  # a load of value zero
+        return out
     b = fem_petsc.assemble_vector(L)
     b.ghostUpdate(addv=PETSc.InsertMode.ADD, mode=PETSc.ScatterMode.REVERSE)
     out[:b.getLocalSize()] += b.getArray()
