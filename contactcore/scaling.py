@@ -38,6 +38,7 @@ from __future__ import annotations
 import dataclasses
 import functools
 import math
+import sys
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -52,9 +53,12 @@ from .scene import (DISPLACEMENT_QUANTITIES, STRESS_QUANTITIES, BodyForce, LineP
 
 
 def _scaled(value: float, unit: float, path: str) -> float:
-    """``value / unit``, refused if it leaves the floating-point range."""
+    """``value / unit``, refused if it leaves the floating-point range: not
+    finite, or a non-zero value made zero or subnormal (below
+    ``sys.float_info.min``, where its digits are lost: E = 1e-300 beside
+    7e10 ended in NaN)."""
     out = float(value) / unit if math.isfinite(unit) and unit > 0 else math.nan
-    if not math.isfinite(out) or (value != 0 and out == 0):
+    if not math.isfinite(out) or (value != 0 and abs(out) < sys.float_info.min):
         raise SceneError(path, f"{value!r} is out of floating-point range once made dimensionless "
                          f"(over {unit:.3g}); choose units closer to the problem's scale (docs/scenes.md, 'Units')")
     return out

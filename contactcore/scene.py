@@ -284,18 +284,6 @@ def _check_material(mat: Material, plane: str, path: str) -> None:
         raise SceneError(f"{path}.nu", f"Poisson's ratio must lie in (-1, 0.5) for plane {plane} (got {nu!r})")
 
 
-def _check_contrast(materials: dict[str, Material]) -> None:
-    """The softer body's modulus at least MODULUS_CONTRAST of the stiffer's
-    (:data:`~contactcore.tolerances.MODULUS_CONTRAST`: below it no solve
-    keeps a digit of the softer body)."""
-    soft, stiff = sorted(BODIES, key=lambda b: materials[b].E)
-    ratio = materials[soft].E / materials[stiff].E
-    if ratio < tol.MODULUS_CONTRAST:
-        raise SceneError(f"materials.{soft}.E", f"{materials[soft].E:g} is {ratio:.1e} of the {stiff} body's "
-                         f"{materials[stiff].E:g}, below {tol.MODULUS_CONTRAST:g}: the solves would keep no digit "
-                         "of the softer body (docs/scenes.md, 'Units')")
-
-
 def _check_domain(domain: Domain) -> None:
     if isinstance(domain, Rectangle):
         for k, v in zip("xy", domain.size):
@@ -490,7 +478,6 @@ def validate(scene: Scene) -> None:
         if body not in scene.materials:
             raise SceneError(f"materials.{body}", "missing")
         _check_material(scene.materials[body], scene.plane, f"materials.{body}")
-    _check_contrast(scene.materials)
     if isinstance(scene.increments, bool) or not isinstance(scene.increments, int) or scene.increments < 1:
         raise SceneError("increments", f"must be an integer >= 1 (got {scene.increments!r})")
     if not isinstance(scene.follow_path, bool):

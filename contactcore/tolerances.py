@@ -383,16 +383,6 @@ SYSTEMS_KEPT = 3
 #: of ~1e4 L the inputs carry fewer digits than the step resolves.
 DIMENSIONLESS_GRID = 2.0 ** -36
 
-#: The least ratio of the two bodies' Young's moduli a scene may give.  The
-#: softer body's displacements are 1/contrast times the stiffer's, and the
-#: tangent's condition number grows with them: measured 2026-11-27, scene A
-#: at h = 0.1 with its − body made softer, linear and exact unilateral laws,
-#: fe, xfem and efgm P1: every run solves at 1e-8; at 1e-10 every one is
-#: refused by the residual check (1e-4 of the forces, backward error 1e-16),
-#: at 1e-14 and below MUMPS finds null pivots, and at 1e-300 the moduli
-#: underflow once made dimensionless.  Below this ratio no h helps.
-MODULUS_CONTRAST = 1e-10
-
 # --- Figures (verification/plots.py) ---------------------------------------
 #: A panel's y range never spans less than this fraction of its quantity's
 #: scale (the largest |value| of any curve of the quantity): a difference

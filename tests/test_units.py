@@ -203,3 +203,15 @@ def test_non_finite_profile_is_refused():
     with pytest.raises(SolverError, match=r"^profile A5: gN: 101 of 101"):
         sample_profile(scene, fields, scene.profiles[4])
     sample_profile(scene, fields, scene.profiles[0])  # σxy is finite: no error
+
+
+def test_a_modulus_made_subnormal_is_out_of_range():
+    """E = 1e-300 beside the other body's 2e11: once divided by the larger
+    modulus it is subnormal (1e-311, its digits lost) and ended in NaN with
+    advice about the load; it is refused as out of floating-point range."""
+    from contactcore import SceneError
+    from verification import methods
+    scene = load_scene("A")
+    scene = scene.with_changes(materials={**scene.materials, "minus": replace(scene.materials["minus"], E=1e-300)})
+    with pytest.raises(SceneError, match=r"^materials\.minus\.E: 1e-300 is out of floating-point range"):
+        methods.solver("xfem")(scene, 0.2, degree=1)
