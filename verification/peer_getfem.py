@@ -73,16 +73,23 @@ def getfem_module():
     return getfem
 
 
-def _check(scene: Scene, degree: int) -> None:
-    """The peer covers the paper's scenes: a rectangle, a line or circle Γ,
-    the linear law, clamped edges, edge tractions and torques."""
-    if degree not in (1, 2):
-        raise DiscretisationError(f"getfem: degree must be 1 or 2 (got {degree})")
+def geometry_problems(scene: Scene) -> list[str]:
+    """What of the scene's geometry a GetFEM peer cannot model: it meshes a
+    rectangle with a straight or circular Γ."""
     problems = []
     if not isinstance(scene.domain, Rectangle):
         problems.append("the domain must be a rectangle")
     if not isinstance(scene.interface, (LineInterface, CircleInterface)):
         problems.append("Γ must be a line or a circle")
+    return problems
+
+
+def _check(scene: Scene, degree: int) -> None:
+    """The peer covers the paper's scenes: a rectangle, a line or circle Γ,
+    the linear law, clamped edges, edge tractions and torques."""
+    if degree not in (1, 2):
+        raise DiscretisationError(f"getfem: degree must be 1 or 2 (got {degree})")
+    problems = geometry_problems(scene)
     if not scene.law.is_linear:
         problems.append("the interface law must be linear")
     if scene.pins or any(s.fix != "xy" or any(s.value) or s.path for s in scene.supports):

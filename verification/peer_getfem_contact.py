@@ -54,14 +54,14 @@ import numpy as np
 from contactcore import DiscretisationError, Result, Scene, Timings
 from contactcore.elasticity import lame
 from contactcore.exact import is_exact
-from contactcore.geometry import CircleInterface, LineInterface, Rectangle, tangent_of
+from contactcore.geometry import CircleInterface, tangent_of
 from contactcore.interface_path import Increment, InterfacePath, piece_centres
 from contactcore.laws import OPEN, SLIP, STICK
 from contactcore.result import SolverReport
 from contactcore.scene import Traction
 from meshes.build import build_model, gmsh_session
 from meshes.tags import BODY, INTERFACE
-from verification.peer_getfem import NUDGE, GetFEMFields, getfem_module
+from verification.peer_getfem import NUDGE, GetFEMFields, geometry_problems, getfem_module
 
 METHOD = "getfem-contact"
 
@@ -115,11 +115,7 @@ def _check(scene: Scene, degree: int, paper: bool) -> None:
         raise DiscretisationError(f"{METHOD}: degree must be 1 or 2 (got {degree})")
     if paper:
         raise DiscretisationError(f"{METHOD}: the paper's grids are structured; this peer meshes Γ: give h")
-    problems = []
-    if not isinstance(scene.domain, Rectangle):
-        problems.append("the domain must be a rectangle")
-    if not isinstance(scene.interface, (LineInterface, CircleInterface)):
-        problems.append("Γ must be a line or a circle")
+    problems = geometry_problems(scene)
     if not is_exact(scene.law) or scene.law.name not in ("unilateral", "coulomb"):
         problems.append(f"the interface law must be unilateral or coulomb with enforcement = \"exact\" (got "
                         f"{scene.law.enforcement} '{scene.law.name}')")
