@@ -834,3 +834,7 @@ VERTEX_VS_OFF_VERTEX = 2.0
 #: 2026-11-26: 0.13 with short pieces merged into their neighbours, 0.96
 #: (samples up to 3.6 times t_T) without; the same Γ off the vertices 0.135.
 CLIPPED_CORNER_RMS = 0.25
+
+#: The same profile's largest |t_T| over fe P2's: 1.21 merged, 3.62 without
+#: (2026-11-26, as CLIPPED_CORNER_RMS).
+CLIPPED_CORNER_PEAK = 1.5
