@@ -9,6 +9,7 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 from scipy.spatial import cKDTree
 
+from . import tolerances as tol
 from .geometry import CircleInterface, LineInterface, tangent_of
 from .laws import STATUS_NAMES
 
@@ -114,9 +115,64 @@ class InterfacePath:
         total = np.bincount(which, self.weights, len(centres))
         means = np.column_stack([np.bincount(which, self.weights * c, len(centres)) for c in flat.T])
         held = total > 0  # a piece of zero length carries nothing
-        means = means[held] / total[held, None]
-        at_centres = InterfacePath(centres[held], total[held])
-        return at_centres.interpolated(interface, points, means.reshape((int(held.sum()),) + values.shape[1:]))
+        centres, total, means = merged_pieces(interface, centres[held], total[held], means[held] / total[held, None])
+        at_centres = InterfacePath(centres, total)
+        return at_centres.interpolated(interface, points, means.reshape((len(total),) + values.shape[1:]))
+
+
+def merged_pieces(interface, centres: np.ndarray, lengths: np.ndarray, means: np.ndarray):
+    """Pieces of Γ as reported: ``(centres, lengths, means)`` with every
+    short piece merged into its nearest pieces along Γ that are not short.
+
+    A piece is short when it is shorter than ``PIECE_MERGE_SHARE`` of the
+    longer of its two neighbours along Γ (:func:`along`, periodic on a
+    circle): Γ clips a cell's corner, and the mean of the law's traction
+    over so short a piece is poorly determined (the few enriched unknowns
+    there see little of it).  Its length is shared between the nearest
+    non-short piece before and after it, half each (all to the one there
+    is at Γ's end), and each receiving piece reports the length-weighted
+    mean over itself and its shares:
+    ``t̄_j = (L_j t_j + Σ_s ½L_s t_s) / (L_j + Σ_s ½L_s)``, centred at the
+    same weighted mean of the centres.  ``Σ L t`` (the force across Γ) is
+    unchanged, a mean stays a convex combination (admissible where the
+    pieces are), and a short piece never receives, so merges do not chain.
+    On a general level set (no order along Γ) the pieces are kept."""
+    if not isinstance(interface, (CircleInterface, LineInterface)) or len(lengths) < 2:
+        return centres, lengths, means
+    order = np.argsort(along(interface, centres), kind="stable")
+    centres, lengths, means = centres[order], lengths[order], means[order]
+    periodic = isinstance(interface, CircleInterface)
+    neighbour = np.maximum(np.roll(lengths, 1), np.roll(lengths, -1))
+    if not periodic:
+        neighbour[0], neighbour[-1] = lengths[1], lengths[-2]
+    short = lengths < tol.PIECE_MERGE_SHARE * neighbour
+    kept = np.flatnonzero(~short)
+    source, target, share = _shares(np.flatnonzero(short), kept, periodic)
+    own, given = np.where(short, 0.0, lengths), share * lengths[source]
+    weight = own + np.bincount(target, given, len(own))
+
+    def pooled(v):  # the length-weighted mean over each piece and its shares
+        return ((own * v + np.bincount(target, given * v[source], len(own))) / np.where(short, 1.0, weight))[kept]
+    return (np.column_stack([pooled(c) for c in centres.T]), weight[kept],
+            np.column_stack([pooled(c) for c in np.asarray(means).reshape(len(own), -1).T]))
+
+
+def _shares(short: np.ndarray, kept: np.ndarray, periodic: bool):
+    """``(source, target, share)``: each short piece's share of its length
+    given to the nearest kept piece before and after it along Γ (indices in
+    the order along Γ; around the circle when ``periodic``)."""
+    k = np.searchsorted(kept, short)
+    before, after = k - 1, k
+    if periodic:
+        pairs = [(short, kept[before % len(kept)]), (short, kept[after % len(kept)])]
+        share = [np.full(len(short), 0.5)] * 2
+    else:
+        has_before, has_after = before >= 0, after < len(kept)
+        both = has_before & has_after
+        pairs = [(short[has_before], kept[before[has_before]]), (short[has_after], kept[after[has_after]])]
+        share = [np.where(both, 0.5, 1.0)[has_before], np.where(both, 0.5, 1.0)[has_after]]
+    return (np.concatenate([p[0] for p in pairs]).astype(int), np.concatenate([p[1] for p in pairs]).astype(int),
+            np.concatenate(share))
 
 
 def piece_centres(points: np.ndarray, weights: np.ndarray, sizes) -> np.ndarray:

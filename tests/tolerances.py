@@ -827,3 +827,14 @@ PROFILE_MEAN_EQUILIBRIUM = 1e-3
 #: on a node line / the worst of three placements off them: 0.27 / 0.20
 #: (P1 exact), at most 0.85 of it otherwise; γ₀ = 0 had given no answer.
 VERTEX_VS_OFF_VERTEX = 2.0
+
+#: RMS of xfem P1's t_T on Γ (quads, h = 0.1) against fe P2 at h/2, over
+#: t_T's scale, for the bonded inclined Γ passing 0.0039 h below a row of
+#: vertices (clipped corners: pieces 0.008 of the longest).  Measured
+#: 2026-11-26: 0.13 with short pieces merged into their neighbours, 0.96
+#: (samples up to 3.6 times t_T) without; the same Γ off the vertices 0.135.
+CLIPPED_CORNER_RMS = 0.25
+
+#: The same profile's largest |t_T| over fe P2's: 1.21 merged, 3.62 without
+#: (2026-11-26, as CLIPPED_CORNER_RMS).
+CLIPPED_CORNER_PEAK = 1.5
