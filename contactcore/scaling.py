@@ -52,13 +52,14 @@ from .scene import (DISPLACEMENT_QUANTITIES, STRESS_QUANTITIES, BodyForce, LineP
                     check_resolution)
 
 
-def _scaled(value: float, unit: float, path: str) -> float:
+def _scaled(value: float, unit: float, path: str, least: float = 0.0) -> float:
     """``value / unit``, refused if it leaves the floating-point range: not
-    finite, or a non-zero value made zero or subnormal (below
-    ``sys.float_info.min``, where its digits are lost: E = 1e-300 beside
-    7e10 ended in NaN)."""
+    finite, or a non-zero value made zero, or below ``least`` (a modulus:
+    ``sys.float_info.min``, below which it is subnormal and its digits are
+    lost: E = 1e-300 beside 7e10 ended in NaN; a spring or load that small
+    is left to the health checks, which name what it fails to hold)."""
     out = float(value) / unit if math.isfinite(unit) and unit > 0 else math.nan
-    if not math.isfinite(out) or (value != 0 and abs(out) < sys.float_info.min):
+    if not math.isfinite(out) or (value != 0 and (out == 0 or abs(out) < least)):
         raise SceneError(path, f"{value!r} is out of floating-point range once made dimensionless "
                          f"(over {unit:.3g}); choose units closer to the problem's scale (docs/scenes.md, 'Units')")
     return out
@@ -191,7 +192,8 @@ class Scales:
                                     for k in ("kN", "kT") if hasattr(scene.law, k)})  # none if exact
         return replace(
             scene, domain=self._domain(scene.domain), interface=self._interface(scene.interface), law=law,
-            materials={b: replace(m, E=_scaled(m.E, S, f"materials.{b}.E")) for b, m in scene.materials.items()},
+            materials={b: replace(m, E=_scaled(m.E, S, f"materials.{b}.E", sys.float_info.min))
+                       for b, m in scene.materials.items()},
             supports=tuple(replace(s, value=tuple(_scaled(v, U, f"supports[{i}].value") for v in s.value))
                            for i, s in enumerate(scene.supports)),
             pins=tuple(replace(p, point=self._point(p.point, f"pins[{i}].point")) for i, p in enumerate(scene.pins)),
