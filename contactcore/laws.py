@@ -61,7 +61,9 @@ class Decision:
     ``previous`` is each point's status at the previous iterate (at a
     step's first iterate, the last converged one).  A switch whose margin —
     ``−g_N`` for closed/open, ``μp − |t*|`` for stick/slip — lies within
-    ``DECISION_BAND`` of its scale keeps the previous status: the traction
+    ``DECISION_BAND`` of its scale keeps the previous status (the scale
+    never below ``DECISION_FLOOR`` of the scene's units: with no load every
+    gap is round-off, and so would its largest be): the traction
     of either branch differs there by at most that band, far above the
     round-off that a BLAS kernel, a MUMPS ordering or a renumbering leaves
     in the margin, so every machine takes the same decision.  The scales
@@ -77,7 +79,7 @@ class Decision:
     def reduced(cls, law, g: np.ndarray, state, previous: np.ndarray, ranks) -> "Decision":
         """The decision of ``law`` at the jumps ``g``, its scales reduced
         over ``ranks`` (a :class:`~contactcore.collective.Collective`)."""
-        gap, traction = (ranks.max(float(v)) for v in law.decision_scales(g, state))
+        gap, traction = (max(ranks.max(float(v)), tol.DECISION_FLOOR) for v in law.decision_scales(g, state))
         return cls(previous, gap, traction)
 
     def switch(self, margin: np.ndarray, scale: float, was: np.ndarray) -> np.ndarray:
