@@ -129,7 +129,7 @@ def relative_rms(scene: Scene, got: ProfileData, ref: ProfileData, quantity: str
     keep = kept_samples(scene, ref, exclude)
     diff = got.columns[quantity][keep] - ref.columns[quantity][keep]
     base = measured_against(scene, quantity, ref.columns[quantity][keep]) if scale is None else np.asarray(scale)
-    return float(np.sqrt(np.mean(diff ** 2)) / np.sqrt(np.mean(base ** 2)))
+    return share(float(np.sqrt(np.mean(diff ** 2))), float(np.sqrt(np.mean(base ** 2))))
 
 
 #: Quantities whose exact value is zero, measured against the scale of a
