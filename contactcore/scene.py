@@ -299,8 +299,6 @@ def _check_domain(domain: Domain) -> None:
 def _check_interface(scene: Scene) -> None:
     itf, dom, L = scene.interface, scene.domain, scene.length_scale
     if isinstance(itf, LineInterface):
-        if abs(math.hypot(*itf.normal) - 1.0) > 1e-12:
-            raise SceneError("interface.normal", "must be a unit vector (give any non-zero vector in a file)")
         if itf.chord(dom) is None:
             raise SceneError("interface", "the line misses the domain")
         a_minus = itf.minus_area(dom)
