@@ -267,8 +267,9 @@ def _let_go(scene, interface_points, interface_weights, status) -> np.ndarray:
     of round-off size.  This reads the status map and the geometry only,
     not the factorisation; the map itself is decided within Newton's
     round-off band (:class:`~contactcore.laws.Decision`), which a load
-    path held at exactly zero still defeats (DECISION_FLOOR's note).  A slipping point counts as holding
-    tangentially: a body held by slipping points alone is left to Newton's
+    path held at exactly zero still defeats (DECISION_FLOOR's note).  A
+    slipping point counts as holding tangentially: a body held by slipping
+    points alone is left to Newton's
     secant step (:meth:`contactcore.exact.NitscheInterface.regularised`)
     under an exact law, and to the factorisation's own check under a
     penalty law."""

@@ -96,10 +96,11 @@ class _Newton:
         self.constraint = np.zeros(system.size, bool)
         self.constraint[np.asarray(system.constraint_rows, int)] = True
         self.balance = self.free[~self.constraint[self.free]]
-        # the scene's own force scale: its loads at full value on the
-        # equilibrium rows (a floor of every step's round-off scale)
+        # the least force scale of any step: RESIDUAL_FLOOR of the scene's
+        # loads at full value on the equilibrium rows
         full = system.external(tuple(1.0 for _ in scene.loads), tuple(1.0 for _ in scene.supports))
-        self._full = system.collective.max(float(np.max(np.abs(full[self.balance]), initial=0.0)))
+        self._least_force = tol.RESIDUAL_FLOOR * system.collective.max(
+            float(np.max(np.abs(full[self.balance]), initial=0.0)))
         self.u = np.zeros(system.size)
         self.state = self.law.initial_state(self.itf.size)
         self.status = np.full(self.itf.size, STICK, np.int8)  # an unloaded interface is closed and sticks
@@ -235,11 +236,11 @@ class _Newton:
             # round-off look like a residual of order 1; and a load held at
             # zero has nothing but round-off, so RESIDUAL_FLOOR of the
             # scene's full loads is the least scale.
-            scale = max(forces, data, lift, start, tol.RESIDUAL_FLOOR * self._full)
+            scale = max(forces, data, lift, start, self._least_force)
             history.append(norm / scale if scale > 0 else norm)
             if not np.isfinite(norm):
                 raise SolverError(f"the residual is not finite; residual history {_fmt(history)}")
-            if it > 1 and self._converged(R, max(forces, tol.RESIDUAL_FLOOR * self._full), tangent, response, du, u - u0):
+            if it > 1 and self._converged(R, max(forces, self._least_force), tangent, response, du, u - u0):
                 health.check_residual(history[-1], "the settled Newton step")
                 health.check_held(self.scene, *self._gamma, self.ranks.gather(response.status),
                                   f"scene {self.scene.name}: increment {k:g} of {self.scene.increments}")

@@ -152,15 +152,14 @@ def _read_load(t: _Table) -> Load:
     return load
 
 
-def _read_profile(t: _Table, interface: Interface) -> Profile:
+def _read_profile(t: _Table) -> Profile:
     kind = t.get("type", "str", choices=("line", "interface"))
     common = dict(id=t.get("id", "str"), quantities=t.get("quantities", "strings"),
                   side=t.get("side", "str", "plus"), title=t.get("title", "str", ""))
     if kind == "line":
         prof = LineProfile(start=t.get("start", "vector"), end=t.get("end", "vector"), **common)
     else:
-        along = "angle" if isinstance(interface, CircleInterface) else "arclength"  # the default s along Γ
-        prof = InterfaceProfile(parameter=t.get("parameter", "str", along), **common)
+        prof = InterfaceProfile(parameter=t.get("parameter", "str", None), **common)  # None: Γ's own (Scene)
     t.done()
     return prof
 
@@ -189,7 +188,7 @@ def scene_from_dict(data: dict) -> Scene:
         supports=tuple(_read_support(s) for s in t.get("supports", "tables", [])),
         pins=tuple(_read_pin(p) for p in t.get("pins", "tables", [])),
         loads=tuple(_read_load(x) for x in t.get("loads", "tables", [])),
-        profiles=tuple(_read_profile(p, interface) for p in t.get("profiles", "tables", [])),
+        profiles=tuple(_read_profile(p) for p in t.get("profiles", "tables", [])),
         paper=paper,
     )
     t.done()
