@@ -127,15 +127,130 @@ STRESSES, SUPERCONVERGENT_DEGREES = ("sxx", "syy", "sxy"), (1,)
 
 
 def order_range(quantity: str, degree: int, method: str = "", law=None,
-                switching: bool | None = None) -> tuple[int, int]:
+                switching: bool | None = None, pollution: float = np.inf) -> tuple[float, float]:
     """The orders theory allows a profile quantity: ``(p, p)`` with ``p``
     the :func:`theoretical_order`, ``(p, p + 1)`` for a stress of a degree
-    in :data:`SUPERCONVERGENT_DEGREES` (module doc)."""
+    in :data:`SUPERCONVERGENT_DEGREES` (module doc), ``(pollution, p)``
+    for a displacement, a gap or a penalty law's traction whose ``p``
+    exceeds the scene's :func:`pollution_order`."""
     p = theoretical_order(quantity, degree, method, law, switching)
-    return (p, p + 1) if quantity in STRESSES and degree in SUPERCONVERGENT_DEGREES else (p, p)
+    if quantity in STRESSES and degree in SUPERCONVERGENT_DEGREES:
+        return (p, p + 1)
+    polluted = quantity in DISPLACEMENT_LIKE and not (quantity in TRACTIONS and _exact(law))
+    return (pollution, p) if polluted and pollution < p else (p, p)
 
 
-def balanced_order(low: int, high: int, ratio: float = 2.0) -> float:
+def _exact(law) -> bool:
+    """Whether ``law`` is enforced exactly (:mod:`contactcore.exact`)."""
+    return law is not None and getattr(law, "enforcement", "penalty") == "exact"
+
+
+# ----- pollution from singular points -----------------------------------------
+
+def kolosov(nu: float, plane: str) -> float:
+    """Kolosov's constant ``κ``: ``3 − 4ν`` in plane strain, ``(3 − ν)/(1 + ν)`` in plane stress."""
+    return 3.0 - 4.0 * nu if plane == "strain" else (3.0 - nu) / (1.0 + nu)
+
+
+def clamped_free_exponent(alpha: float, kappa: float) -> float:
+    """The least ``Re λ > 0`` of an elastic wedge of angle ``alpha`` with
+    one face clamped and the other free (``u ~ r^λ``, ``σ ~ r^(λ−1)``):
+    a root of Williams' eigen-equation
+
+        κ sin²(λα) = (κ + 1)²/4 − λ² sin²α
+
+    (Williams, J. Appl. Mech. 19, 1952; the 4×4 determinant of the
+    wedge's Kolosov–Muskhelishvili potentials has the same roots).  A
+    right angle gives 0.758 in plane stress and 0.711 in plane strain at
+    ν = 0.3, the half-plane (α = π) ½ ± iε.  Complex roots are found by
+    Newton's method from a grid of starts in ``0 < Re λ < 2``."""
+    s2 = np.sin(alpha) ** 2
+    f = lambda lam: kappa * np.sin(lam * alpha) ** 2 - (kappa + 1) ** 2 / 4 + lam ** 2 * s2  # noqa: E731
+    df = lambda lam: kappa * alpha * np.sin(2 * lam * alpha) + 2 * lam * s2  # noqa: E731
+    lam = (np.linspace(0.05, 2.0, 40)[:, None] + 1j * np.array([0.0, 0.3, 1.0])[None]).ravel()
+    with np.errstate(all="ignore"):
+        for _ in range(WEDGE_NEWTON_STEPS):
+            lam = lam - f(lam) / np.where(df(lam) == 0, 1.0, df(lam))
+        found = np.isfinite(lam) & (np.abs(f(lam)) <= tol.WEDGE_ROOT) & (lam.real > tol.WEDGE_ROOT)
+    return float(np.min(lam.real[found]))
+
+
+#: Newton steps of :func:`clamped_free_exponent` from each start (its
+#: roots converge quadratically within about ten from the nearest start).
+WEDGE_NEWTON_STEPS = 60
+
+
+def _edge_supports(scene: Scene) -> dict[str, str]:
+    """``{edge: "clamped" | "roller"}`` of a rectangle's supported edges
+    (both components held, or one); an edge not named is free or loaded."""
+    out = {}
+    for s in scene.supports:
+        kind = "clamped" if set(s.fix) == {"x", "y"} else "roller"
+        out[s.boundary] = "clamped" if "clamped" in (kind, out.get(s.boundary)) else kind
+    return out
+
+
+def corner_exponents(scene: Scene) -> list[float]:
+    """``λ`` of each corner of a rectangular domain where a clamped edge
+    meets a free (or loaded) one: a clamped–free right angle
+    (:func:`clamped_free_exponent`, the κ of the body holding the
+    corner).  A corner between two clamped edges, or with a roller
+    (whose reflection makes it a half-plane: integer exponents, a smooth
+    solution), or between two free edges (λ > 1 below π) is left out: its
+    ``2λ`` is 3 or more, no pollution at degree ≤ 2."""
+    if not isinstance(scene.domain, Rectangle):
+        return []
+    kinds, out = _edge_supports(scene), []
+    for corner in scene.domain.corners:
+        edges = [kinds.get(e, "free") for e in scene.domain.boundary_of(corner, tol.GEOMETRY * scene.length_scale)]
+        if sorted(edges) == ["clamped", "free"]:
+            body = "minus" if scene.interface.phi([corner])[0] < 0 else "plus"
+            out.append(clamped_free_exponent(np.pi / 2, kolosov(scene.materials[body].nu, scene.plane)))
+    return out
+
+
+def interface_end_exponents(scene: Scene) -> list[float]:
+    """``λ`` of each end of a straight Γ (where it meets a rectangle's
+    edge) under a penalty law.  On a clamped edge each body is a
+    clamped–free wedge of the angle Γ makes with the edge (the springs'
+    traction is a load of lower order): :func:`clamped_free_exponent`,
+    the least over both bodies and both angles.  On a free, loaded or
+    roller edge the springs' traction at the end does not vanish, while
+    the edge prescribes its own there: no stress constant near the
+    vertex takes both, and ``σ ~ log r``, ``u ~ r log r`` (the corner
+    paradox: Sinclair, Appl. Mech. Rev. 57, 2004), ``λ = 1``.  Under an
+    exactly enforced law Γ's end is a bonded bimaterial edge (Bogy's
+    exponents, none for equal materials), not taken here."""
+    if not (isinstance(scene.interface, LineInterface) and isinstance(scene.domain, Rectangle)) or _exact(scene.law):
+        return []
+    ends = scene.interface.chord(scene.domain)
+    kinds, out = _edge_supports(scene), []
+    t = np.array([-scene.interface.normal[1], scene.interface.normal[0]])
+    kappas = [kolosov(scene.materials[b].nu, scene.plane) for b in ("minus", "plus")]
+    for end in () if ends is None else ends:
+        edges = scene.domain.boundary_of(end, tol.GEOMETRY * scene.length_scale)
+        if "clamped" not in [kinds.get(e, "free") for e in edges]:
+            out.append(1.0)
+            continue
+        alpha = float(np.arccos(min(abs(t[0] if set(edges) & {"bottom", "top"} else t[1]), 1.0)))
+        out.append(min(clamped_free_exponent(a, k) for a in (alpha, np.pi - alpha) for k in kappas))
+    return out
+
+
+def pollution_order(scene: Scene | None) -> float:
+    """``2 λ_min`` over the scene's singular points (:func:`corner_exponents`,
+    :func:`interface_end_exponents`), inf where there are none: away from
+    a singularity ``r^λ`` the error of a displacement converges no faster
+    than ``h^{2λ}`` (pollution: Nitsche & Schatz, Math. Comp. 28, 1974;
+    Wahlbin, *Local behavior in finite element methods*, 1991), though
+    only once the singular term outweighs the smooth one, which depends
+    on its coefficient: the orders lie in ``[min(p, 2λ), p]``
+    (:func:`order_range`)."""
+    lams = corner_exponents(scene) + interface_end_exponents(scene) if scene is not None else []
+    return 2 * min(lams) if lams else np.inf
+
+
+def balanced_order(low: float, high: float, ratio: float = 2.0) -> float:
     """The order ``q`` whose Richardson factor is the geometric mean of
     those of ``low`` and ``high``: ``r^q − 1 = ((r^low − 1)(r^high − 1))^½``
     (``r`` the refinement ratio).  If the error converges at either, the
@@ -187,7 +302,7 @@ class QuantityEstimate:
     error: np.ndarray
     order: float
     observed: bool
-    theory: tuple[int, int]
+    theory: tuple[float, float]
 
     @property
     def max(self) -> float:
@@ -214,7 +329,7 @@ def observed_order(coarse: np.ndarray, mid: np.ndarray, fine: np.ndarray, ratio:
     return float(np.clip(p, *tol.ORDER_RANGE))
 
 
-def richardson(values: list[np.ndarray], theory: tuple[int, int], ratio: float = 2.0, coarse: bool = False,
+def richardson(values: list[np.ndarray], theory: tuple[float, float], ratio: float = 2.0, coarse: bool = False,
                kept: np.ndarray | None = None) -> QuantityEstimate:
     """The estimate of one quantity from its samples at h, h/2 (and h/4),
     coarse to fine (module doc): the finest run's error, or with
@@ -238,21 +353,23 @@ def profile_estimates(levels: list[list[ProfileData]], degree: int, method: str 
     """``{profile id: {quantity: estimate}}`` from the profiles of each run,
     coarse to fine (each a list in the scene's order); an observed order
     from the samples at least ``exclude`` from the ``scene``'s singular
-    points; ``switching`` as :func:`theoretical_order` takes it."""
-    out, law = {}, scene.law if scene else None
+    points; ``switching`` as :func:`theoretical_order` takes it; the
+    ``scene``'s :func:`pollution_order` widens the orders of its
+    displacements, gaps and penalty tractions (:func:`order_range`)."""
+    out, law, pollution = {}, scene.law if scene else None, pollution_order(scene)
     for profs in zip(*levels):
         pid, cols = profs[-1].id, profs[-1].columns
         kept = far_from_singular(scene, np.column_stack([cols["x"], cols["y"]]), exclude) if scene else None
-        out[pid] = {q: richardson([p.columns[q] for p in profs], order_range(q, degree, method, law, switching),
-                                  coarse=coarse, kept=kept)
+        out[pid] = {q: richardson([p.columns[q] for p in profs], order_range(q, degree, method, law, switching,
+                                                                                 pollution), coarse=coarse, kept=kept)
                     for q in profs[-1].names[3:]}
     return out
 
 
-def _orders(theory: tuple[int, int]) -> str:
+def _orders(theory: tuple[float, float]) -> str:
     """``"2"``, or ``"1-2"`` for a range."""
     low, high = theory
-    return f"{low}" if low == high else f"{low}-{high}"
+    return f"{low:.3g}" if low == high else f"{low:.3g}-{high:.3g}"
 
 
 def order_warnings(estimates: dict[str, dict[str, QuantityEstimate]]) -> list[str]:
@@ -276,22 +393,27 @@ def _clipped(order: float) -> str:
 #: The least order at which a corner's pollution shows: the degree-2
 #: displacement and gaps (order 3) converged at 1.5-1.9 away from the
 #: singular points of nine scenes the estimate was not tuned on, their
-#: two-run estimates 0.15-0.46 of the error (docs/error-estimates.md).
+#: two-run estimates at order 3 0.15-0.46 of the error
+#: (docs/error-estimates.md).  :func:`pollution_order` takes the
+#: clamped-free corners and Γ's ends under a penalty law; what is left at
+#: this order lies on a domain whose singular points it does not take.
 POLLUTED_ORDER = 3
 
 
 def pollution_warning(scene: Scene, profiles: dict[str, dict[str, QuantityEstimate]]) -> list[str]:
     """A line when quantities are estimated from two runs at an order of
-    :data:`POLLUTED_ORDER` or more on a domain with singular points: the
-    corners' singularities slow them everywhere (pollution), and the
-    estimate may be several times too small."""
+    :data:`POLLUTED_ORDER` or more on a domain with singular points that
+    :func:`pollution_order` does not take (corners between two clamped or
+    two free edges, the end of an exactly enforced Γ): if one of them
+    slows them everywhere after all, the estimate may be several times
+    too small."""
     names = [f"{pid}:{q}" for pid, qs in profiles.items() for q, e in qs.items()
              if not e.observed and e.order >= POLLUTED_ORDER]
     if not names or not len(singular_points(scene)):
         return []
-    return [f"{', '.join(names)}: estimated at order {POLLUTED_ORDER} from two runs, but the domain's singular "
-            f"points (corners, Γ's ends) often slow such quantities to 1.5-2 everywhere, and the estimate is then "
-            f"2-7 times too small: --estimate 3 observes the order"]
+    return [f"{', '.join(names)}: estimated at order {POLLUTED_ORDER} from two runs, but the domain has singular "
+            f"points (corners, Γ's ends) which, where they slow such quantities to 1.5-2 everywhere, make the "
+            f"estimate 2-7 times too small: --estimate 3 observes the order"]
 
 
 # ----- the status along Γ -----------------------------------------------------

@@ -576,6 +576,12 @@ ORDER_RANGE = (0.5, 5.0)
 #: changes the Richardson factor by 2x or more (p = 2 → 1: 1/3 → 1).
 ORDER_MISMATCH = 1.0
 
+#: A root of the wedge's eigen-equation (estimate.clamped_free_exponent):
+#: |residual| below this, and Re λ above it (λ ~ 0.5-2, the residual's
+#: terms ~ 1-10, so 1e-10 is far above Newton's round-off, 1e-15, and far
+#: below any exponent that matters).
+WEDGE_ROOT = 1e-10
+
 #: A difference between two runs below this fraction of the quantity's
 #: largest |value| is round-off (the systems lose up to 8 digits, condition
 #: estimates ~1e8: tests/tolerances.py PATCH_ROUNDOFF): it shows no order.

@@ -317,7 +317,9 @@ def test_a_status_that_never_changes_along_gamma_lifts_the_cap():
     runs = [methods.solver("fe")(scene, h, degree=2) for h in (0.1, 0.05)]
     estimate = est.estimate_runs(scene, runs, energy=False)
     assert not est.switches([r.interface for r in runs])
-    assert {q: estimate.profiles["A5"][q].order for q in ("gN", "gT")} == {"gN": 3.0, "gT": 3.0}
+    polluted = est.pollution_order(scene)  # A's clamped-free corners (its exact Γ's ends are not taken)
+    assert {q: estimate.profiles["A5"][q].theory for q in ("gN", "gT")} == {"gN": (polluted, 3), "gT": (polluted, 3)}
+    assert estimate.profiles["A5"]["gN"].order == pytest.approx(est.balanced_order(polluted, 3))
 
 
 def test_effectivity_takes_a_scene_file_and_refuses_an_unknown_scene(tmp_path, capsys, monkeypatch):
@@ -346,18 +348,22 @@ def test_effectivity_takes_a_scene_file_and_refuses_an_unknown_scene(tmp_path, c
 
 
 def test_two_run_estimates_at_order_three_warn_of_corner_pollution():
-    """Degree-2 displacements and gaps from two runs are estimated at order
-    3, which corners' singularities often deny: a rectangle (scene A) says
-    so and names them; a disc with a circular Γ (no singular point), a
-    lower order or an observed one does not."""
+    """Degree-2 displacements and gaps estimated from two runs at order 3
+    on a rectangle whose corners the pollution order does not take
+    (scene B: every edge clamped) are named in a warning; a disc with a
+    circular Γ (no singular point), a lower order or an observed one is
+    not.  On A the rule takes the corners: its degree-2 gaps are not
+    estimated at 3 at all."""
     from verification.closed_forms import pressurised_rod
 
     def quantity(order, observed=False):
         return est.QuantityEstimate(np.zeros(3), float(order), observed, (order, order))
 
     profiles = {"A5": {"gN": quantity(3), "gT": quantity(3)}, "A1": {"sxy": quantity(2)}}
-    (warning,) = est.pollution_warning(load_scene("A"), profiles)
+    (warning,) = est.pollution_warning(load_scene("B"), profiles)
     assert warning.startswith("A5:gN, A5:gT: estimated at order 3") and "--estimate 3" in warning
+    assert est.order_range("gN", 2, "fe", pollution=est.pollution_order(load_scene("A")))[0] < 2
+    assert est.order_range("gN", 2, "fe", pollution=est.pollution_order(load_scene("B"))) == (3, 3)
     assert est.pollution_warning(pressurised_rod().scene, profiles) == []
     assert est.pollution_warning(load_scene("A"), {"A5": {"gN": quantity(2), "gT": quantity(3, True)}}) == []
 
@@ -370,3 +376,60 @@ def test_a_changed_status_names_the_runs_it_compares():
     (warning,) = est.status_warning(change)
     assert warning.startswith("the status along Γ differs between h = 0.05 and 0.025 at 3 of 101 samples")
     assert est.status_warning({**change, "differ": 0}) == []
+
+
+def _kolosov_determinant(lam: float, alpha: float, kappa: float) -> float:
+    """The 4×4 determinant of a clamped (θ = 0) – free (θ = α) wedge in
+    Kolosov–Muskhelishvili potentials ``φ = A z^λ``, ``ψ = B z^λ`` (real
+    λ): clamped ``κφ − z conj(φ') − conj(ψ) = 0``, free ``φ + z conj(φ')
+    + conj(ψ) = 0`` (Muskhelishvili 1953, §§ 32-41), in the real and
+    imaginary parts of A and B.  Independent of the eigen-equation the
+    estimate solves."""
+    rows = []
+    for theta, k, s in ((0.0, kappa, -1.0), (alpha, 1.0, 1.0)):
+        e1, e2, e3 = np.exp(1j * lam * theta), np.exp(1j * (2 - lam) * theta), np.exp(-1j * lam * theta)
+        cols = [k * e1 + s * lam * e2, 1j * k * e1 - 1j * s * lam * e2, s * e3, -1j * s * e3]
+        rows += [[c.real for c in cols], [c.imag for c in cols]]
+    return float(np.linalg.det(np.array(rows)))
+
+
+@pytest.mark.parametrize("alpha, nu, plane", [(np.pi / 2, 0.3, "strain"), (np.pi / 2, 0.3, "stress"),
+                                              (np.pi / 2, 0.45, "strain"), (0.75 * np.pi, 0.3, "strain")])
+def test_the_clamped_free_exponent_is_a_root_of_the_wedge_determinant(alpha, nu, plane):
+    """Williams' clamped-free exponent: the wedge's determinant changes
+    sign across it, none lower does (0.711 for a right angle in plane
+    strain at ν = 0.3, Williams 1952), and the half-plane's is ½."""
+    kappa = est.kolosov(nu, plane)
+    lam = est.clamped_free_exponent(alpha, kappa)
+    step = 1e-6
+    assert _kolosov_determinant(lam - step, alpha, kappa) * _kolosov_determinant(lam + step, alpha, kappa) < 0
+    below = [_kolosov_determinant(x, alpha, kappa) for x in np.linspace(0.05, lam - step, 400)]
+    assert np.all(np.sign(below) == np.sign(below[0]))
+    if (alpha, nu, plane) == (np.pi / 2, 0.3, "strain"):
+        assert lam == pytest.approx(0.7112, abs=1e-4)
+    assert est.clamped_free_exponent(np.pi, kappa) == pytest.approx(0.5)
+
+
+def test_the_pollution_order_comes_from_the_scenes_singular_points():
+    """2λ_min: A's clamped-free corners (0.758 in plane stress) and its
+    penalty Γ's ends on free sides (λ = 1); C's corners alone; none on B
+    (every edge clamped), on a disc, at a corner with a roller, or at the
+    end of an exactly enforced Γ; an end on a clamped edge is a
+    clamped-free wedge of Γ's angle."""
+    from contactcore import Support, make_law
+    from verification.closed_forms import pressurised_rod
+    a = load_scene("A")
+    right = est.clamped_free_exponent(np.pi / 2, est.kolosov(0.3, "stress"))
+    assert est.corner_exponents(a) == pytest.approx([right, right]) and est.interface_end_exponents(a) == [1.0, 1.0]
+    assert est.pollution_order(a) == pytest.approx(2 * right) == est.pollution_order(load_scene("C"))
+    assert est.pollution_order(load_scene("B")) == np.inf == est.pollution_order(pressurised_rod().scene)
+    roller = a.with_changes(supports=(Support("bottom"), Support("left", fix="x")))
+    assert len(est.corner_exponents(roller)) == 1  # (1, 0): clamped meets free; (0, 0): clamped meets a roller
+    assert est.interface_end_exponents(a.with_changes(law=make_law({"type": "bonded", "enforcement": "exact"}))) == []
+    side = est.interface_end_exponents(a.with_changes(supports=(Support("left"),)))
+    assert side == pytest.approx([right, 1.0])  # (0, 0.5) on the clamped left side, (1, 0.5) on the free right
+    assert est.order_range("ux", 1, "fe", pollution=2 * right) == (2 * right, 2)
+    assert est.order_range("tN", 2, "fe", pollution=2 * right) == (2 * right, 3)
+    assert est.order_range("tN", 2, "fe", make_law({"type": "bonded", "enforcement": "exact"}), pollution=1.5) == (2, 2)
+    assert est.order_range("sxx", 2, "fe", pollution=1.5) == (2, 2)
+    assert est.order_range("sxx", 1, "xfem", pollution=1.5) == (2, 3)
