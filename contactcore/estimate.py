@@ -24,13 +24,19 @@ and a gap (the L2 rate of degree k), and for a penalty law's traction on
 Γ, which the law computes from the gaps (``t = k_N g_N`` …) not from the
 bulk stress; ``k`` for a stress (the H1 rate); under an exact law, at most
 2 for the gaps and 1 for the traction where Γ's status changes along it
-(:func:`switches`).  A degree-1 stress read at a point converges at its
+(:func:`switches`).  Away from a singular point of exponent ``λ``
+(``u ~ r^λ``: a clamped-free corner, the end of a penalty Γ) a
+displacement's error converges no faster than ``h^{2λ}`` once the
+singular term outweighs the smooth one (pollution: Nitsche & Schatz,
+Math. Comp. 28, 1974), which depends on its coefficient: a displacement,
+gap or penalty traction takes the orders ``[min(p, 2λ), p]``
+(:func:`pollution_order`).  A degree-1 stress read at a point converges at its
 order ``p`` where the point is generic in its cell and at ``p + 1`` where
 it superconverges (the cell's centroid, a uniform grid aligned with the
 profile: Zienkiewicz & Zhu, IJNME 33, 1992; Wahlbin, *Superconvergence in
 Galerkin finite element methods*, 1995), and which holds at a sample is
-not known from two runs: the estimate takes the order between whose
-Richardson factor ``1/(2^q − 1)`` is the geometric mean of the two
+not known from two runs.  For such a range the estimate takes the
+order between whose Richardson factor ``1/(2^q − 1)`` is the geometric mean of the two
 (:func:`balanced_order`), so its effectivity lies within
 ``[(1/3)^½, 3^½]`` for ``p = 1`` (``[(3/7)^½, (7/3)^½]`` for ``p = 2``)
 whichever holds (:func:`order_range`).  An observed order further than

@@ -571,7 +571,8 @@ ORDER_RANGE = (0.5, 5.0)
 
 #: An observed order further than this from the orders theory allows
 #: (degree + 1 for displacements, gaps and the law's tractions, degree for
-#: stresses, and one more for a degree-1 stress: estimate.order_range)
+#: stresses, one more for a degree-1 stress, down to 2λ near a singular
+#: point: estimate.order_range)
 #: says the runs are not in the asymptotic range: a whole order off
 #: changes the Richardson factor by 2x or more (p = 2 → 1: 1/3 → 1).
 ORDER_MISMATCH = 1.0
