@@ -406,7 +406,7 @@ def test_the_clamped_free_exponent_is_a_root_of_the_wedge_determinant(alpha, nu,
     below = [_kolosov_determinant(x, alpha, kappa) for x in np.linspace(0.05, lam - step, 400)]
     assert np.all(np.sign(below) == np.sign(below[0]))
     if (alpha, nu, plane) == (np.pi / 2, 0.3, "strain"):
-        assert lam == pytest.approx(0.7112, abs=1e-4)
+        assert lam == pytest.approx(0.7112, abs=tol.QUOTED_EXPONENT)
     assert est.clamped_free_exponent(np.pi, kappa) == pytest.approx(0.5)
 
 
