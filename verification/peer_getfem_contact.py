@@ -31,9 +31,11 @@ The model, in GetFEM's own terms:
   without a previous displacement and with μ = :data:`TIE_FRICTION`: a
   closed point's total tangential jump is held at zero.  A point that
   slips all the same is refused by name (the tie did not hold);
-* clamped edges by multipliers of degree k, edge tractions as source
-  terms, each increment's load factors :meth:`Scene.factors`, GetFEM's
-  Newton with MUMPS.
+* edges held by multipliers of degree k (both components, or one at a
+  prescribed displacement, as the layered-slip closed form's top), edge
+  tractions and pressures as source terms, each increment's factors of
+  the loads and supports (:meth:`Scene.factors`), GetFEM's Newton with
+  MUMPS.
 
 Sign conventions (docs/scenes.md): λ is the traction on the − body, so
 ``t_N = λ·n`` (< 0 in compression) and ``t_T = λ·t``, ``t = (n_y, −n_x)``;
@@ -52,7 +54,7 @@ from pathlib import Path
 
 import numpy as np
 
-from contactcore import DiscretisationError, Result, Scene, Timings
+from contactcore import ContactError, DiscretisationError, Result, Scene, Timings
 from contactcore.elasticity import lame
 from contactcore.enforcement import make_law
 from contactcore.exact import is_exact
@@ -462,9 +464,10 @@ WEDGE = Path(__file__).resolve().parent.parent / "examples" / "wedge.toml"
 #: placement, rounded).
 INCLINED_A = (17.8, 0.52)
 
-#: The wedge's slipping variant: μ and the top's traction (Pa), whose
-#: tangential share on Γ (0.094 of the normal) slips Γ's ends but not all
-#: of it.
+#: The wedge's slipping variant: μ and the top's traction (Pa).  Its mean
+#: shear on Γ is 0.094 of the pressure, below μ, so the block holds; Γ
+#: slips from x ≈ 0.04 to 0.75 and sticks at its right end (fe P2, h =
+#: 0.0125: 73 % of Γ slipping).
 WEDGE_SLIP = (0.15, (3e5, -1e6))
 
 #: Γ sampled on the scenes whose own profiles do not follow it.
@@ -578,24 +581,29 @@ def path_means(result: Result) -> np.ndarray:
     return np.array([np.concatenate([w @ step.traction, w @ step.jump]) for step in path.steps])
 
 
-def study(name: str, hs, degree: int = 2, methods=("fe",)) -> tuple[dict, dict]:
+def study(name: str, hs, degree: int = 2, methods=("fe",)) -> tuple[dict, dict, dict]:
     """Scene ``name`` of :data:`STUDIES`, each of our ``methods`` and GetFEM
-    at each h: the :func:`differences` (``(method, h) -> rows``), and each
-    run's :func:`status_split` with its time in seconds (``(h, method |
-    "peer") -> split``)."""
+    at each h: the :func:`differences` from GetFEM (``(method, h) ->
+    rows``); each run's :func:`status_split` with its time in seconds
+    (``(h, method | "peer") -> split``); and each code's own move from one
+    h to the next, its answer at the coarser h against the finer
+    (``(method | "peer", finer h) -> rows``), the measure of its own
+    discretisation error that a difference from GetFEM is judged by."""
     from contactcore import sample_profiles
     from verification import methods as ours
     scene = exact_scene(name)
-    rows, splits = {}, {}
+    rows, splits, moves, profiles = {}, {}, {}, {}
     for h in hs:
-        profiles = {}
         for label, solver in (*((m, ours.solver(m)) for m in methods), ("peer", solve)):
             result = solver(scene, h, degree=degree)
-            profiles[label] = {p.id: p for p in sample_profiles(scene, result.fields, result.interface)}
+            profiles[label, h] = {p.id: p for p in sample_profiles(scene, result.fields, result.interface)}
             splits[h, label] = {**status_split(result), "seconds": result.timings.total}
         for m in methods:
-            rows[m, h] = differences(scene, profiles["peer"], profiles[m])
-    return rows, splits
+            rows[m, h] = differences(scene, profiles["peer", h], profiles[m, h])
+    for coarse, fine in zip(hs, hs[1:]):
+        for label in (*methods, "peer"):
+            moves[label, fine] = differences(scene, profiles[label, coarse], profiles[label, fine])
+    return rows, splits, moves
 
 
 def _share(s: dict) -> str:
@@ -603,23 +611,35 @@ def _share(s: dict) -> str:
             f"{s['max_tN']:.4g} Pa ({s['seconds']:.3g} s)")
 
 
-def markdown(rows: dict, splits: dict) -> str:
+def _table(columns: dict) -> list[str]:
+    """One row per profile quantity, one column per entry of ``columns``
+    (heading -> :func:`differences` rows): worst (RMS) in %."""
+    first = next(iter(columns.values()))
+    lines = ["| profile, quantity | " + " | ".join(columns) + " |", "|---|" + "---|" * len(columns)]
+    for i, row in enumerate(first):
+        lines.append(f"| {row.profile} {row.quantity} | "
+                     + " | ".join(f"{100 * c[i].worst:.3g} ({100 * c[i].rms:.3g})" for c in columns.values()) + " |")
+    return lines
+
+
+def markdown(rows: dict, splits: dict, moves: dict) -> str:
     """The study's tables, per method of ours: per profile quantity the
-    worst sample and (in brackets) the RMS, in % of ours' largest value, one
-    column per h; then Γ's open/stick/slip shares, largest |t_N| and time of
-    each run."""
+    worst sample and (in brackets) the RMS difference from GetFEM, in % of
+    ours' largest value, one column per h; Γ's open/stick/slip shares,
+    largest |t_N| and time of each run; and the method's and GetFEM's own
+    moves from each h to the next (in % of the finer answer's largest)."""
     out = []
     for method in dict.fromkeys(m for m, _ in rows):
         hs = [h for m, h in rows if m == method]
-        lines = [f"{method} against GetFEM", "", "| profile, quantity | " + " | ".join(f"h = {h:g}" for h in hs)
-                 + " |", "|---|" + "---|" * len(hs)]
-        for i, first in enumerate(rows[method, hs[0]]):
-            cells = (rows[method, h][i] for h in hs)
-            lines.append(f"| {first.profile} {first.quantity} | "
-                         + " | ".join(f"{100 * c.worst:.3g} ({100 * c.rms:.3g})" for c in cells) + " |")
-        lines += ["", f"| h | {method}: open / stick / slip, max abs t_N | GetFEM: open / stick / slip, max abs t_N |",
-                  "|---|---|---|"]
+        lines = [f"{method} against GetFEM", "", *_table({f"h = {h:g}": rows[method, h] for h in hs}), "",
+                 f"| h | {method}: open / stick / slip, max abs t_N | GetFEM: open / stick / slip, max abs t_N |",
+                 "|---|---|---|"]
         lines += [f"| {h:g} | {_share(splits[h, method])} | {_share(splits[h, 'peer'])} |" for h in hs]
+        steps = list(zip(hs, hs[1:]))
+        if steps:
+            lines += ["", f"{method}'s and GetFEM's own moves", "",
+                      *_table({f"{who} h = {a:g} → {b:g}": moves[label, b]
+                               for label, who in ((method, method), ("peer", "GetFEM")) for a, b in steps})]
         out.append("\n".join(lines) + "\n")
     return "\n".join(out)
 
@@ -637,11 +657,11 @@ def main(argv=None) -> int:
                         help="our methods compared with GetFEM")
     args = parser.parse_args(argv)
     try:
-        rows, splits = study(args.scene, args.h, args.degree, tuple(args.methods))
-    except DiscretisationError as exc:
+        tables = study(args.scene, args.h, args.degree, tuple(args.methods))
+    except ContactError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
-    print(markdown(rows, splits), end="")
+    print(markdown(*tables), end="")
     return 0
 
 
