@@ -58,7 +58,7 @@ NUDGE = 1e-9
 LINEAR_SOLVER = "mumps"
 
 #: Outward normals of the rectangle's named edges (GetFEM tags faces by them).
-_EDGES = {"bottom": (0, -1), "top": (0, 1), "left": (-1, 0), "right": (1, 0)}
+EDGE_NORMALS = {"bottom": (0, -1), "top": (0, 1), "left": (-1, 0), "right": (1, 0)}
 
 
 def getfem_module():
@@ -101,8 +101,8 @@ def _check(scene: Scene, degree: int) -> None:
 
 
 #: GetFEM region numbers: one per named edge, then the union of the clamped ones.
-_EDGE_REGION = {name: k for k, name in enumerate(_EDGES, start=1)}
-_CLAMPED_REGION = len(_EDGES) + 1
+_EDGE_REGION = {name: k for k, name in enumerate(EDGE_NORMALS, start=1)}
+_CLAMPED_REGION = len(EDGE_NORMALS) + 1
 
 
 def _edge_faces(m) -> dict[str, np.ndarray]:
@@ -110,7 +110,7 @@ def _edge_faces(m) -> dict[str, np.ndarray]:
     faces = m.outer_faces()
     normals = m.normal_of_faces(faces)
     return {name: faces[:, np.all(np.abs(normals - np.array(n)[:, None]) < 1e-9, axis=0)]
-            for name, n in _EDGES.items()}
+            for name, n in EDGE_NORMALS.items()}
 
 
 class GetFEMFields:

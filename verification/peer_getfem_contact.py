@@ -31,9 +31,11 @@ The model, in GetFEM's own terms:
   without a previous displacement and with μ = :data:`TIE_FRICTION`: a
   closed point's total tangential jump is held at zero.  A point that
   slips all the same is refused by name (the tie did not hold);
-* clamped edges by multipliers of degree k, edge tractions as source
-  terms, each increment's load factors :meth:`Scene.factors`, GetFEM's
-  Newton with MUMPS.
+* edges held by multipliers of degree k (both components, or one at a
+  prescribed displacement, as the layered-slip closed form's top), edge
+  tractions and pressures as source terms, each increment's factors of
+  the loads and supports (:meth:`Scene.factors`), GetFEM's Newton with
+  MUMPS.
 
 Sign conventions (docs/scenes.md): λ is the traction on the − body, so
 ``t_N = λ·n`` (< 0 in compression) and ``t_T = λ·t``, ``t = (n_y, −n_x)``;
@@ -48,20 +50,22 @@ from __future__ import annotations
 import sys
 import time
 from dataclasses import dataclass
+from pathlib import Path
 
 import numpy as np
 
-from contactcore import DiscretisationError, Result, Scene, Timings
+from contactcore import ContactError, DiscretisationError, Result, Scene, Timings
 from contactcore.elasticity import lame
+from contactcore.enforcement import make_law
 from contactcore.exact import is_exact
-from contactcore.geometry import CircleInterface, tangent_of
+from contactcore.geometry import CircleInterface, LineInterface, tangent_of
 from contactcore.interface_path import Increment, InterfacePath, piece_centres
 from contactcore.laws import OPEN, SLIP, STICK
 from contactcore.result import SolverReport
-from contactcore.scene import Traction
+from contactcore.scene import InterfaceProfile, Pressure, Traction
 from meshes.build import build_model, gmsh_session
 from meshes.tags import BODY, INTERFACE
-from verification.peer_getfem import NUDGE, GetFEMFields, geometry_problems, getfem_module
+from verification.peer_getfem import EDGE_NORMALS, NUDGE, GetFEMFields, geometry_problems, getfem_module
 
 METHOD = "getfem-contact"
 
@@ -110,7 +114,8 @@ _EDGES = {"left": 11, "right": 12, "bottom": 13, "top": 14}
 
 def _check(scene: Scene, degree: int, paper: bool) -> None:
     """The peer covers exact unilateral or Coulomb contact on a rectangle
-    with a straight or circular Γ, clamped edges and edge tractions."""
+    with a straight or circular Γ, edges held in x, y or both (at zero or a
+    prescribed displacement) and edge tractions or pressures."""
     if degree not in (1, 2):
         raise DiscretisationError(f"{METHOD}: degree must be 1 or 2 (got {degree})")
     if paper:
@@ -119,10 +124,10 @@ def _check(scene: Scene, degree: int, paper: bool) -> None:
     if not is_exact(scene.law) or scene.law.name not in ("unilateral", "coulomb"):
         problems.append(f"the interface law must be unilateral or coulomb with enforcement = \"exact\" (got "
                         f"{scene.law.enforcement} '{scene.law.name}')")
-    if scene.pins or any(s.fix != "xy" or any(s.value) for s in scene.supports):
-        problems.append("supports must clamp whole edges (no pins, no prescribed values)")
-    if any(not isinstance(ld, Traction) for ld in scene.loads):
-        problems.append("loads must be edge tractions")
+    if scene.pins:
+        problems.append("supports must hold whole edges (no pins)")
+    if any(not isinstance(ld, (Traction, Pressure)) for ld in scene.loads):
+        problems.append("loads must be edge tractions or pressures")
     if problems:
         raise DiscretisationError(f"{METHOD}: scene {scene.name} is outside the peer's reach: "
                                   + "; ".join(problems))
@@ -203,7 +208,7 @@ class _Bodies:
         base = gf.MeshFem(m1, 2)
         base.set_fem(gf.Fem(f"FEM_PK(2,{MULTIPLIER_DEGREE})"))
         self.mflambda = gf.MeshFem("partial", base, base.basic_dof_on_region(_GAMMA))
-        self._keep = base  # GetFEM frees an object with its last Python reference
+        self.keep = [base]  # GetFEM frees an object with its last Python reference
 
     def dofs(self) -> int:
         return int(sum(mf.nbdof() for mf in self.mfu.values()) + self.mflambda.nbdof())
@@ -219,9 +224,9 @@ def _bricks(gf, md, scene: Scene, bodies: _Bodies, degree: int) -> None:
         md.add_initialized_data(f"lambda_{var}", [lam])
         md.add_initialized_data(f"mu_{var}", [mu])
         md.add_isotropic_linearized_elasticity_brick(bodies.mim[body], var, f"lambda_{var}", f"mu_{var}")
-        clamped = sorted({s.boundary for s in scene.supports} & set(bodies.edges[body]))
-        for name in clamped:
-            md.add_Dirichlet_condition_with_multipliers(bodies.mim[body], var, degree, bodies.edges[body][name])
+        for i, support in enumerate(scene.supports):
+            if support.boundary in bodies.edges[body]:
+                _support(gf, md, bodies, body, i, support, degree)
         for i, load in enumerate(scene.loads):
             if load.boundary in bodies.edges[body]:
                 md.add_initialized_data(f"T{i}_{var}", [0.0, 0.0])
@@ -241,13 +246,46 @@ def _bricks(gf, md, scene: Scene, bodies: _Bodies, degree: int) -> None:
             bodies.mim["minus"], "u1", "u2", "lambda", "r", "friction", _GAMMA, _GAMMA, 1)
 
 
+def _support(gf, md, bodies: _Bodies, body: str, i: int, support, degree: int) -> None:
+    """Support i on one body's part of its edge, by multipliers of degree k:
+    both components held (GetFEM's Dirichlet brick), or one, ``u_c = d``
+    weakly, ``∫ m v_c + ∫ q (u_c − d) = 0`` for every multiplier q of a
+    scalar field on the edge; its value ``D{i}_{var}`` set per increment
+    (:func:`_set_loads`)."""
+    var, region, mim = _Bodies.VARS[body], bodies.edges[body][support.boundary], bodies.mim[body]
+    data = f"D{i}_{var}"
+    if support.fix == "xy":
+        md.add_initialized_data(data, [0.0, 0.0])
+        md.add_Dirichlet_condition_with_multipliers(mim, var, degree, region, data)
+        return
+    c, mult = "xy".index(support.fix) + 1, f"m{i}_{var}"
+    mf = gf.MeshFem(bodies.mesh[body], 1)
+    mf.set_fem(gf.Fem(f"FEM_PK(2,{degree})"))
+    bodies.keep.append(mf)
+    md.add_filtered_fem_variable(mult, mf, region)
+    md.add_initialized_data(data, [0.0])
+    md.add_linear_term(mim, f"{mult}*Test_{var}({c}) + Test_{mult}*{var}({c})", region)
+    md.add_source_term(mim, f"{data}*Test_{mult}", region)
+
+
+def _edge_traction(load) -> np.ndarray:
+    """A load's traction on its edge: a pressure p is ``−p n_out``."""
+    if isinstance(load, Pressure):
+        return -load.value * np.asarray(EDGE_NORMALS[load.boundary], float)
+    return np.asarray(load.value, float)
+
+
 def _set_loads(md, scene: Scene, bodies: _Bodies, k: int) -> None:
-    """Each edge traction at increment k's factor."""
-    factors, _ = scene.factors(k)
-    for i, (load, f) in enumerate(zip(scene.loads, factors)):
-        for body, var in _Bodies.VARS.items():
+    """Each edge traction and each support's displacement at increment k's
+    factor."""
+    factors, held = scene.factors(k)
+    for body, var in _Bodies.VARS.items():
+        for i, (load, f) in enumerate(zip(scene.loads, factors)):
             if load.boundary in bodies.edges[body]:
-                md.set_variable(f"T{i}_{var}", f * np.asarray(load.value, float))
+                md.set_variable(f"T{i}_{var}", f * _edge_traction(load))
+        for i, (support, f) in enumerate(zip(scene.supports, held)):
+            if support.boundary in bodies.edges[body]:
+                md.set_variable(f"D{i}_{var}", [f * support.value["xy".index(c)] for c in support.fix])
 
 
 # ----- Γ's points ----------------------------------------------------------------
@@ -418,19 +456,81 @@ def _newton(md, scene: Scene, k: int, r: float) -> tuple[int, list[float]]:
 
 # ----- the comparison with our exact answer ----------------------------------------
 
-#: The exact laws of the study: scene A's blocks tied where Γ is closed, and
-#: C-coulomb's own Coulomb law, both enforced exactly.
-STUDY_LAWS = {"A": {"type": "unilateral", "enforcement": "exact"},
-              "C-coulomb": {"type": "coulomb", "mu": 0.2, "enforcement": "exact"}}
+#: The README's wedge (a block pressed onto a plane inclined at 11.3°).
+WEDGE = Path(__file__).resolve().parent.parent / "examples" / "wedge.toml"
+
+#: Scene A's Γ turned this many degrees through (0.5, this height): the tied
+#: unilateral law opens it over part of its length (tests/test_exact.py's
+#: placement, rounded).
+INCLINED_A = (17.8, 0.52)
+
+#: The wedge's slipping variant: μ and the top's traction (Pa).  Its mean
+#: shear on Γ is 0.094 of the pressure, below μ, so the block holds; Γ
+#: slips from x ≈ 0.04 to 0.75 and sticks at its right end (fe P2, h =
+#: 0.0125: 73 % of Γ slipping).
+WEDGE_SLIP = (0.15, (3e5, -1e6))
+
+#: Γ sampled on the scenes whose own profiles do not follow it.
+_GAMMA_PROFILE = InterfaceProfile("gamma", ("gN", "gT", "tN", "tT"), parameter="arclength")
+
+
+def _shipped(name: str, law: dict):
+    def build() -> Scene:
+        from contactcore import load_scene
+        return load_scene(name).with_changes(law=make_law(law))
+    return build
+
+
+def _layered_slip() -> Scene:
+    """The layered-slip closed form with its law exact (stick, slip, stick,
+    reversed slip; :func:`verification.closed_forms.layered_slip`)."""
+    from verification.closed_forms import layered_slip
+    return layered_slip(exact=True).scene
+
+
+def _inclined_A() -> Scene:
+    """Scene A, tied unilateral, Γ turned :data:`INCLINED_A`: profiles along
+    Γ (t, g) and A4 (σxx along y = 1, as shipped)."""
+    from contactcore import load_scene
+    angle, height = np.radians(INCLINED_A[0]), INCLINED_A[1]
+    base = load_scene("A")
+    itf = LineInterface((0.5, height), (-float(np.sin(angle)), float(np.cos(angle))))
+    profiles = (_GAMMA_PROFILE, *(p for p in base.profiles if p.id == "A4"))
+    return base.with_changes(name=f"A-inclined{INCLINED_A[0]:g}", interface=itf, profiles=profiles,
+                             law=make_law({"type": "unilateral", "enforcement": "exact"}))
+
+
+def _wedge(slipping: bool) -> Scene:
+    """The README's wedge with its Coulomb law exact; ``slipping``: with μ and
+    the top's traction of :data:`WEDGE_SLIP`."""
+    from contactcore import load_scene
+    wedge = load_scene(WEDGE)
+    if not slipping:
+        return wedge.with_changes(law=make_law({"type": "coulomb", "mu": wedge.law.mu, "enforcement": "exact"}))
+    mu, top = WEDGE_SLIP
+    return wedge.with_changes(name="wedge-slip", law=make_law({"type": "coulomb", "mu": mu, "enforcement": "exact"}),
+                              loads=(Traction("top", top),))
+
+
+#: The study's scenes, each with an exact law: scene A and its inclined Γ
+#: tied where closed (``unilateral``), C-coulomb with its own μ = 0.2, the
+#: layered-slip closed form, the README's wedge (μ = 0.5, sticking) and its
+#: slipping variant.  Scene B is not among them: under its torque alone Γ
+#: carries no pressure, so Coulomb's friction holds nothing and the rod has
+#: no equilibrium (docs/peer-contact.md).
+STUDIES = {"A": _shipped("A", {"type": "unilateral", "enforcement": "exact"}),
+           "C-coulomb": _shipped("C-coulomb", {"type": "coulomb", "mu": 0.2, "enforcement": "exact"}),
+           "layered-slip": _layered_slip,
+           "A-inclined": _inclined_A,
+           "wedge": lambda: _wedge(False),
+           "wedge-slip": lambda: _wedge(True)}
 
 
 def exact_scene(name: str) -> Scene:
-    """A shipped scene with the study's exact law (:data:`STUDY_LAWS`)."""
-    from contactcore import load_scene
-    from contactcore.enforcement import make_law
-    if name not in STUDY_LAWS:
-        raise DiscretisationError(f"{METHOD}: no study law for scene {name!r} (known: {', '.join(STUDY_LAWS)})")
-    return load_scene(name).with_changes(law=make_law(STUDY_LAWS[name]))
+    """A scene of the study (:data:`STUDIES`), its law exact."""
+    if name not in STUDIES:
+        raise DiscretisationError(f"{METHOD}: no study scene {name!r} (known: {', '.join(STUDIES)})")
+    return STUDIES[name]()
 
 
 @dataclass(frozen=True)
@@ -473,58 +573,95 @@ def status_split(result: Result) -> dict[str, float]:
     return {**split, "max_tN": float(np.max(np.abs(path.final.traction[:, 0])))}
 
 
-def study(name: str, hs, degree: int = 2) -> tuple[dict, dict]:
-    """Scene ``name`` with its study law, ours (fe) and GetFEM's at each h:
-    the :func:`differences` per h, and each run's :func:`status_split`
-    (``(h, "ours" | "peer") -> split``)."""
+def path_means(result: Result) -> np.ndarray:
+    """Γ's means per increment (n, 4): t_N, t_T, g_N and g_T, each weighted
+    by the quadrature (the layered-slip closed form's uniform state)."""
+    path = result.interface
+    w = path.weights / path.weights.sum()
+    return np.array([np.concatenate([w @ step.traction, w @ step.jump]) for step in path.steps])
+
+
+def study(name: str, hs, degree: int = 2, methods=("fe",)) -> tuple[dict, dict, dict]:
+    """Scene ``name`` of :data:`STUDIES`, each of our ``methods`` and GetFEM
+    at each h: the :func:`differences` from GetFEM (``(method, h) ->
+    rows``); each run's :func:`status_split` with its time in seconds
+    (``(h, method | "peer") -> split``); and each code's own move from one
+    h to the next, its answer at the coarser h against the finer
+    (``(method | "peer", finer h) -> rows``), the measure of its own
+    discretisation error that a difference from GetFEM is judged by."""
     from contactcore import sample_profiles
-    from verification import methods
+    from verification import methods as ours
     scene = exact_scene(name)
-    rows, splits = {}, {}
+    rows, splits, moves, profiles = {}, {}, {}, {}
     for h in hs:
-        profiles = {}
-        for label, solver in (("ours", methods.solver("fe")), ("peer", solve)):
+        for label, solver in (*((m, ours.solver(m)) for m in methods), ("peer", solve)):
             result = solver(scene, h, degree=degree)
-            profiles[label] = {p.id: p for p in sample_profiles(scene, result.fields, result.interface)}
-            splits[h, label] = status_split(result)
-        rows[h] = differences(scene, profiles["peer"], profiles["ours"])
-    return rows, splits
+            profiles[label, h] = {p.id: p for p in sample_profiles(scene, result.fields, result.interface)}
+            splits[h, label] = {**status_split(result), "seconds": result.timings.total}
+        for m in methods:
+            rows[m, h] = differences(scene, profiles["peer", h], profiles[m, h])
+    for coarse, fine in zip(hs, hs[1:]):
+        for label in (*methods, "peer"):
+            moves[label, fine] = differences(scene, profiles[label, coarse], profiles[label, fine])
+    return rows, splits, moves
 
 
-def markdown(rows: dict, splits: dict) -> str:
-    """The study's two tables: per profile quantity the worst sample and (in
-    brackets) the RMS, in % of ours' largest value, one column per h; then
-    Γ's open/stick/slip shares and largest |t_N| of each run."""
-    hs = list(rows)
-    lines = ["| profile, quantity | " + " | ".join(f"h = {h:g}" for h in hs) + " |", "|---|" + "---|" * len(hs)]
-    for i, first in enumerate(rows[hs[0]]):
-        lines.append(f"| {first.profile} {first.quantity} | "
-                     + " | ".join(f"{100 * rows[h][i].worst:.3g} ({100 * rows[h][i].rms:.3g})" for h in hs) + " |")
-    lines += ["", "| h | ours: open / stick / slip, max abs t_N | GetFEM: open / stick / slip, max abs t_N |",
-              "|---|---|---|"]
-    for h in hs:
-        cells = [f"{100 * s['open']:.1f} % / {100 * s['stick']:.2f} % / {100 * s['slip']:.1f} %, "
-                 f"{s['max_tN']:.4g} Pa" for s in (splits[h, "ours"], splits[h, "peer"])]
-        lines.append(f"| {h:g} | {cells[0]} | {cells[1]} |")
-    return "\n".join(lines) + "\n"
+def _share(s: dict) -> str:
+    return (f"{100 * s['open']:.1f} % / {100 * s['stick']:.2f} % / {100 * s['slip']:.1f} %, "
+            f"{s['max_tN']:.4g} Pa ({s['seconds']:.3g} s)")
+
+
+def _table(columns: dict) -> list[str]:
+    """One row per profile quantity, one column per entry of ``columns``
+    (heading -> :func:`differences` rows): worst (RMS) in %."""
+    first = next(iter(columns.values()))
+    lines = ["| profile, quantity | " + " | ".join(columns) + " |", "|---|" + "---|" * len(columns)]
+    for i, row in enumerate(first):
+        lines.append(f"| {row.profile} {row.quantity} | "
+                     + " | ".join(f"{100 * c[i].worst:.3g} ({100 * c[i].rms:.3g})" for c in columns.values()) + " |")
+    return lines
+
+
+def markdown(rows: dict, splits: dict, moves: dict) -> str:
+    """The study's tables, per method of ours: per profile quantity the
+    worst sample and (in brackets) the RMS difference from GetFEM, in % of
+    ours' largest value, one column per h; Γ's open/stick/slip shares,
+    largest |t_N| and time of each run; and the method's and GetFEM's own
+    moves from each h to the next (in % of the finer answer's largest)."""
+    out = []
+    for method in dict.fromkeys(m for m, _ in rows):
+        hs = [h for m, h in rows if m == method]
+        lines = [f"{method} against GetFEM", "", *_table({f"h = {h:g}": rows[method, h] for h in hs}), "",
+                 f"| h | {method}: open / stick / slip, max abs t_N | GetFEM: open / stick / slip, max abs t_N |",
+                 "|---|---|---|"]
+        lines += [f"| {h:g} | {_share(splits[h, method])} | {_share(splits[h, 'peer'])} |" for h in hs]
+        steps = list(zip(hs, hs[1:]))
+        if steps:
+            lines += ["", f"{method}'s and GetFEM's own moves", "",
+                      *_table({f"{who} h = {a:g} → {b:g}": moves[label, b]
+                               for label, who in ((method, method), ("peer", "GetFEM")) for a, b in steps})]
+        out.append("\n".join(lines) + "\n")
+    return "\n".join(out)
 
 
 def main(argv=None) -> int:
-    """``python -m verification.peer_getfem_contact SCENE [--h H ...]``:
-    print the study's tables (docs/peer-contact.md)."""
+    """``python -m verification.peer_getfem_contact SCENE [--h H ...]
+    [--methods M ...]``: print the study's tables (docs/peer-contact.md)."""
     import argparse
     parser = argparse.ArgumentParser(prog="python -m verification.peer_getfem_contact",
-                                     description="GetFEM's Alart–Curnier contact against our exact fe answer")
-    parser.add_argument("scene", choices=sorted(STUDY_LAWS), help="the scene, with its study law")
+                                     description="GetFEM's Alart–Curnier contact against our exact answers")
+    parser.add_argument("scene", choices=sorted(STUDIES), help="the scene, with its study law")
     parser.add_argument("--h", type=float, nargs="+", default=[0.05, 0.025], help="mesh sizes")
-    parser.add_argument("--degree", type=int, default=2, choices=(1, 2), help="degree of both methods")
+    parser.add_argument("--degree", type=int, default=2, choices=(1, 2), help="degree of every method")
+    parser.add_argument("--methods", nargs="+", default=["fe"], choices=("fe", "xfem", "efgm"),
+                        help="our methods compared with GetFEM")
     args = parser.parse_args(argv)
     try:
-        rows, splits = study(args.scene, args.h, args.degree)
-    except DiscretisationError as exc:
+        tables = study(args.scene, args.h, args.degree, tuple(args.methods))
+    except ContactError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
-    print(markdown(rows, splits), end="")
+    print(markdown(*tables), end="")
     return 0
 
 
