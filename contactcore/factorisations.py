@@ -77,7 +77,7 @@ class _Update:
         self.columns = kept_by.columns.setdefault(slot, _Columns(kept_by.system.size))
         new = [pc for pc in changed if pc not in self.columns.index]
         if new:
-            self.columns.add(new, kept_by.system.solve_columns(test[[2 * p + c for p, c in new]].toarray().T, slot),
+            self.columns.add(new, kept_by.system.solve_columns(test[[2 * p + c for p, c in new]].T, slot),
                              most)
         self.used = len(self.columns)  # the columns it reads: the first ones, kept in place
         self.at = np.array([self.columns.index[pc] for pc in changed], int)
@@ -88,7 +88,7 @@ class _Update:
                                shape=(len(changed), self.trial.shape[0]))
         self.B = (picked @ self.trial).tocsr()
         reach = np.unique(self.B.indices)  # the unknowns B reads: B Z from those rows of Z only
-        BZ = self.B[:, reach].toarray() @ self.columns.rows[self.at][:, reach].T
+        BZ = self.B[:, reach].toarray() @ self.columns.rows[self.at[:, None], reach].T
         self.capacitance = np.eye(len(changed)) + BZ
 
     def solve(self, kept_by, rhs: np.ndarray, scale: float):
