@@ -524,8 +524,8 @@ class Tangent:
         of ``rhs`` with ``slot``'s last factorisation, zero elsewhere (one
         process; :meth:`Factorisation.solve_columns`)."""
         out = np.zeros(rhs.shape, order="F")  # column by column, as solved and kept
-        if rhs.shape[1]:
-            out[self.free] = self._slots[slot][1].solve_columns(rhs[self.free])
+        if rhs.shape[1]:  # rows gathered and scattered along the columns, which are contiguous
+            out.T[:, self.free] = self._slots[slot][1].solve_columns(np.asfortranarray(rhs).T[:, self.free].T).T
         return out
 
     def column_budget(self, slot: int) -> int | None:
