@@ -88,7 +88,7 @@ class _Update:
                                shape=(len(changed), self.trial.shape[0]))
         self.B = (picked @ self.trial).tocsr()
         reach = np.unique(self.B.indices)  # the unknowns B reads: B Z from those rows of Z only
-        BZ = self.B[:, reach].toarray() @ self.columns.rows[self.at][:, reach].T
+        BZ = self.B[:, reach].toarray() @ self.columns.rows[self.at[:, None], reach].T
         self.capacitance = np.eye(len(changed)) + BZ
 
     def solve(self, kept_by, rhs: np.ndarray, scale: float):

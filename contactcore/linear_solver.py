@@ -420,7 +420,7 @@ class Factorisation:
         out = rhs.duplicate()
         try:
             factor.matSolve(rhs, out)
-            return out.getDenseArray().copy()
+            return out.getDenseArray().copy(order="K")  # column-major, as PETSc holds it
         finally:
             for obj in (rhs, out, factor):
                 obj.destroy()
@@ -523,9 +523,9 @@ class Tangent:
         """``δU`` (n, q): ``J[free, free] δU = rhs[free]`` for the q columns
         of ``rhs`` with ``slot``'s last factorisation, zero elsewhere (one
         process; :meth:`Factorisation.solve_columns`)."""
-        out = np.zeros(rhs.shape)
-        if rhs.shape[1]:
-            out[self.free] = self._slots[slot][1].solve_columns(rhs[self.free])
+        out = np.zeros(rhs.shape, order="F")  # column by column, as solved and kept
+        if rhs.shape[1]:  # rows gathered and scattered along the columns, which are contiguous
+            out.T[:, self.free] = self._slots[slot][1].solve_columns(np.asfortranarray(rhs).T[:, self.free].T).T
         return out
 
     def column_budget(self, slot: int) -> int | None:

@@ -249,7 +249,7 @@ class _Newton:
             _merge(self.report, rep)
             if not self.law.is_linear:  # a linear law is solved in one step
                 secant = not np.array_equal(tangent, response.tangent)
-                alpha, evaluated = self._line_search(u, du, b, R, response.status, secant)
+                alpha, evaluated = self._line_search(u, du, b, R, response.status, secant, tangent)
                 du = alpha * du
                 tangent = tangent if alpha == 1.0 else None  # a partial step settles nothing
             else:
@@ -292,7 +292,7 @@ class _Newton:
         a rigid shift under unilateral contact).  The caller then holds it
         to the round-off check against the step's scale."""
         balance = self.ranks.max(float(np.max(np.abs(R[self.balance]), initial=0.0)))
-        settled = tangent is not None and self.ranks.all(np.array_equal(tangent, response.tangent))
+        settled = self._settles(tangent, response)
         still = du is not None and self.ranks.max(float(np.max(np.abs(du), initial=0.0))) <= (
             tol.STEP_ROUNDOFF * self.ranks.max(float(np.max(np.abs(moved), initial=0.0))))
         return balance <= tol.NEWTON_RTOL * forces or settled or still
@@ -301,7 +301,13 @@ class _Newton:
         """``‖R‖₂`` over the free rows of every rank."""
         return float(np.sqrt(self.ranks.sum(float(np.sum(R[self.free] ** 2)))))
 
-    def _line_search(self, u, du, b, R, status, secant: bool = False):
+    def _settles(self, tangent, response) -> bool:
+        """Whether the law's tangent at ``response`` is the ``tangent`` the
+        last full step was solved with (None: none, or a partial step), on
+        every rank: the step then solved its status map's linear problem."""
+        return tangent is not None and self.ranks.all(np.array_equal(tangent, response.tangent))
+
+    def _line_search(self, u, du, b, R, status, secant: bool = False, tangent=None):
         """The largest ``α = 2⁻ʲ`` (j <= LINE_SEARCH_HALVINGS) whose step
         ``u + α δu`` decreases the merit ``‖R‖₂`` by Armijo's rule
         ``‖R(u + α δu)‖ <= (1 − ARMIJO α) ‖R(u)‖`` — the globalised
@@ -315,7 +321,10 @@ class _Newton:
         point re-enters its stick window, which is where the step goes.  A full step that
         passes is doubled while the merit keeps falling (at most
         LINE_SEARCH_EXPANSIONS times): a regularised tangent, stiffer than
-        the law's, asks for longer steps than it gives.  Also returns the
+        the law's, asks for longer steps than it gives; not one that
+        :meth:`_settles` the ``tangent`` it was solved with: that step
+        solved its map's linear problem, Newton stops there, and a longer
+        one could only win by round-off.  Also returns the
         law's response and :meth:`_residual` at ``u + α δu`` where it was
         evaluated (None elsewhere): the next iterate's, computed alike."""
         merit, seen = self._merit(R), {}
@@ -334,7 +343,7 @@ class _Newton:
             alpha /= 2
         else:
             return alpha, None
-        if alpha < 1.0:
+        if alpha < 1.0 or self._settles(tangent, seen[alpha][0]):
             return alpha, seen[alpha]
         for _ in range(tol.LINE_SEARCH_EXPANSIONS):
             longer = along(2 * alpha)
