@@ -188,19 +188,19 @@ WEDGE_NEWTON_STEPS = 60
 
 def _edge_supports(scene: Scene) -> dict[str, str]:
     """``{edge: "clamped" | "roller"}`` of a rectangle's supported edges
-    (both components held, or one); an edge not named is free or loaded."""
-    out = {}
+    (both components held, by one support or by several, or one); an edge
+    not named is free or loaded."""
+    held: dict[str, set] = {}
     for s in scene.supports:
-        kind = "clamped" if set(s.fix) == {"x", "y"} else "roller"
-        out[s.boundary] = "clamped" if "clamped" in (kind, out.get(s.boundary)) else kind
-    return out
+        held.setdefault(s.boundary, set()).update(s.fix)
+    return {edge: "clamped" if fix == {"x", "y"} else "roller" for edge, fix in held.items()}
 
 
 def corner_exponents(scene: Scene) -> list[float]:
     """``λ`` of each corner of a rectangular domain where a clamped edge
     meets a free (or loaded) one: a clamped–free right angle
     (:func:`clamped_free_exponent`, the κ of the body holding the
-    corner).  Left out: a corner between two clamped edges (2λ = 2.98 in
+    corner, the least of both bodies' where Γ passes through it).  Left out: a corner between two clamped edges (2λ = 2.98 in
     plane stress, 2.84 in plane strain at ν = 0.3: degree 2's Richardson
     factor changes by 12 % at most), one with a roller (reflected across
     it, a half-plane: integer exponents, a smooth solution), and a
@@ -211,9 +211,18 @@ def corner_exponents(scene: Scene) -> list[float]:
     for corner in scene.domain.corners:
         edges = [kinds.get(e, "free") for e in scene.domain.boundary_of(corner, tol.GEOMETRY * scene.length_scale)]
         if sorted(edges) == ["clamped", "free"]:
-            body = "minus" if scene.interface.phi([corner])[0] < 0 else "plus"
-            out.append(clamped_free_exponent(np.pi / 2, kolosov(scene.materials[body].nu, scene.plane)))
+            out.append(min(clamped_free_exponent(np.pi / 2, kolosov(scene.materials[b].nu, scene.plane))
+                           for b in _bodies_at(scene, corner)))
     return out
+
+
+def _bodies_at(scene: Scene, point) -> tuple[str, ...]:
+    """The bodies holding ``point``: both where it lies on Γ (within
+    GEOMETRY of the scene's length), so that no sign of round-off picks one."""
+    d = scene.interface.signed_distance([point])[0]
+    if abs(d) <= tol.GEOMETRY * scene.length_scale:
+        return ("minus", "plus")
+    return ("minus",) if d < 0 else ("plus",)
 
 
 def interface_end_exponents(scene: Scene) -> list[float]:
