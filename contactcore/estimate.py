@@ -200,9 +200,11 @@ def corner_exponents(scene: Scene) -> list[float]:
     """``λ`` of each corner of a rectangular domain where a clamped edge
     meets a free (or loaded) one: a clamped–free right angle
     (:func:`clamped_free_exponent`, the κ of the body holding the
-    corner, the least of both bodies' where Γ passes through it).  Left out: a corner between two clamped edges (2λ = 2.98 in
-    plane stress, 2.84 in plane strain at ν = 0.3: degree 2's Richardson
-    factor changes by 12 % at most), one with a roller (reflected across
+    corner, the least of both bodies' where Γ passes through it).  Left
+    out: a corner between two clamped edges (2λ = 2.98 in plane stress,
+    2.84 in plane strain at ν = 0.3: degree 2's Richardson factor changes
+    by 2 % and 14 %; but 2.32 at ν = 0.45 in plane strain, a factor 1.75,
+    which :func:`pollution_warning` names), one with a roller (reflected across
     it, a half-plane: integer exponents, a smooth solution), and a
     convex one between two free edges (no stress singularity)."""
     if not isinstance(scene.domain, Rectangle):
@@ -232,9 +234,11 @@ def interface_end_exponents(scene: Scene) -> list[float]:
     traction is a load of lower order): :func:`clamped_free_exponent`,
     the least over both bodies and both angles.  On a free, loaded or
     roller edge the springs' traction at the end does not vanish, while
-    the edge prescribes its own there: no stress constant near the
-    vertex takes both, and ``σ ~ log r``, ``u ~ r log r`` (the corner
-    paradox: Sinclair, Appl. Mech. Rev. 57, 2004), ``λ = 1``.  Under an
+    the edge prescribes its own there: no uniform stress near the
+    vertex takes both, so the stress there, bounded, depends on the
+    direction (the wedge's ``r² θ`` Airy term) and ``u ~ r log r``
+    (Sinclair, Appl. Mech. Rev. 57, 2004; the stress is ``~ log r`` only
+    where that term fails too, a wedge of 180° or 257°), ``λ = 1``.  Under an
     exactly enforced law Γ's end is a bonded bimaterial edge (Bogy's
     exponents, none for equal materials), not taken here."""
     if not (isinstance(scene.interface, LineInterface) and isinstance(scene.domain, Rectangle)) or _exact(scene.law):
