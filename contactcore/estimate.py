@@ -169,7 +169,11 @@ def clamped_free_exponent(alpha: float, kappa: float) -> float:
     wedge's Kolosov–Muskhelishvili potentials has the same roots).  A
     right angle gives 0.758 in plane stress and 0.711 in plane strain at
     ν = 0.3, the half-plane (α = π) ½ ± iε.  Complex roots are found by
-    Newton's method from a grid of starts in ``0 < Re λ < 2``."""
+    Newton's method from a grid of starts in ``0 < Re λ < 2``.  A real
+    integer root is left out: its Airy function ``r^(λ+1) F(θ)``, F of
+    ``(λ ± 1)θ``, is a polynomial, its field smooth (at ν = 0, κ = 3, a
+    right angle has λ = 1, ``u = (0, c y)`` clamped at y = 0 and free at
+    x = 0; its singular exponent is 1.352)."""
     s2 = np.sin(alpha) ** 2
     f = lambda lam: kappa * np.sin(lam * alpha) ** 2 - (kappa + 1) ** 2 / 4 + lam ** 2 * s2  # noqa: E731
     df = lambda lam: kappa * alpha * np.sin(2 * lam * alpha) + 2 * lam * s2  # noqa: E731
@@ -177,7 +181,8 @@ def clamped_free_exponent(alpha: float, kappa: float) -> float:
     with np.errstate(all="ignore"):
         for _ in range(WEDGE_NEWTON_STEPS):
             lam = lam - f(lam) / np.where(df(lam) == 0, 1.0, df(lam))
-        found = np.isfinite(lam) & (np.abs(f(lam)) <= tol.WEDGE_ROOT) & (lam.real > tol.WEDGE_ROOT)
+        polynomial = (np.abs(lam.imag) <= tol.WEDGE_ROOT) & (np.abs(lam.real - np.round(lam.real)) <= tol.WEDGE_ROOT)
+        found = np.isfinite(lam) & (np.abs(f(lam)) <= tol.WEDGE_ROOT) & (lam.real > tol.WEDGE_ROOT) & ~polynomial
     return float(np.min(lam.real[found]))
 
 

@@ -462,3 +462,18 @@ def test_a_corner_on_gamma_takes_both_bodies_whatever_the_sign_of_round_off():
         signs.add(float(np.sign(scene.interface.phi([(0.0, 0.0)])[0])))
         assert min(est.corner_exponents(scene)) == pytest.approx(soft), angle
     assert signs == {-1.0, 0.0, 1.0}
+
+
+def test_a_polynomial_root_of_the_wedge_is_not_its_exponent():
+    """At ν = 0 (κ = 3) λ = 1 solves a right angle's eigen-equation, but
+    its field u = (0, c y) is linear, smooth: the exponent is the next
+    root, where the wedge's determinant changes sign (1.352; below it the
+    determinant changes sign at λ = 1 alone)."""
+    kappa, step = est.kolosov(0.0, "strain"), 1e-6
+    lam = est.clamped_free_exponent(np.pi / 2, kappa)
+    assert _kolosov_determinant(lam - step, np.pi / 2, kappa) * _kolosov_determinant(lam + step, np.pi / 2, kappa) < 0
+    xs = np.linspace(0.05, lam - step, 401)
+    signs = np.sign([_kolosov_determinant(x, np.pi / 2, kappa) for x in xs])
+    changes = xs[:-1][signs[:-1] != signs[1:]]
+    assert len(changes) == 1 and changes[0] < 1.0 < changes[0] + (xs[1] - xs[0])
+    assert est.clamped_free_exponent(np.pi / 2, kappa) == est.clamped_free_exponent(np.pi / 2, est.kolosov(0.0, "stress"))
