@@ -429,7 +429,8 @@ def pollution_warning(scene: Scene, profiles: dict[str, dict[str, QuantityEstima
     """A line when quantities are estimated from two runs at an order of
     :data:`POLLUTED_ORDER` or more on a domain with singular points that
     :func:`pollution_order` does not take (corners between two clamped or
-    two free edges, the end of an exactly enforced Γ): if one of them
+    two free edges, the end of an exactly enforced Γ, a straight Γ's ends
+    on a disc): if one of them
     slows them everywhere after all, the estimate may be several times
     too small."""
     names = [f"{pid}:{q}" for pid, qs in profiles.items() for q, e in qs.items()
