@@ -169,7 +169,11 @@ def clamped_free_exponent(alpha: float, kappa: float) -> float:
     wedge's Kolosov–Muskhelishvili potentials has the same roots).  A
     right angle gives 0.758 in plane stress and 0.711 in plane strain at
     ν = 0.3, the half-plane (α = π) ½ ± iε.  Complex roots are found by
-    Newton's method from a grid of starts in ``0 < Re λ < 2``."""
+    Newton's method from a grid of starts in ``0 < Re λ < 2``.  A real
+    integer root is left out: its Airy function ``r^(λ+1) F(θ)``, F of
+    ``(λ ± 1)θ``, is a polynomial, its field smooth (at ν = 0, κ = 3, a
+    right angle has λ = 1, ``u = (0, c y)`` clamped at y = 0 and free at
+    x = 0; its singular exponent is 1.352)."""
     s2 = np.sin(alpha) ** 2
     f = lambda lam: kappa * np.sin(lam * alpha) ** 2 - (kappa + 1) ** 2 / 4 + lam ** 2 * s2  # noqa: E731
     df = lambda lam: kappa * alpha * np.sin(2 * lam * alpha) + 2 * lam * s2  # noqa: E731
@@ -177,7 +181,8 @@ def clamped_free_exponent(alpha: float, kappa: float) -> float:
     with np.errstate(all="ignore"):
         for _ in range(WEDGE_NEWTON_STEPS):
             lam = lam - f(lam) / np.where(df(lam) == 0, 1.0, df(lam))
-        found = np.isfinite(lam) & (np.abs(f(lam)) <= tol.WEDGE_ROOT) & (lam.real > tol.WEDGE_ROOT)
+        polynomial = (np.abs(lam.imag) <= tol.WEDGE_ROOT) & (np.abs(lam.real - np.round(lam.real)) <= tol.WEDGE_ROOT)
+        found = np.isfinite(lam) & (np.abs(f(lam)) <= tol.WEDGE_ROOT) & (lam.real > tol.WEDGE_ROOT) & ~polynomial
     return float(np.min(lam.real[found]))
 
 
@@ -188,21 +193,23 @@ WEDGE_NEWTON_STEPS = 60
 
 def _edge_supports(scene: Scene) -> dict[str, str]:
     """``{edge: "clamped" | "roller"}`` of a rectangle's supported edges
-    (both components held, or one); an edge not named is free or loaded."""
-    out = {}
+    (both components held, by one support or by several, or one); an edge
+    not named is free or loaded."""
+    held: dict[str, set] = {}
     for s in scene.supports:
-        kind = "clamped" if set(s.fix) == {"x", "y"} else "roller"
-        out[s.boundary] = "clamped" if "clamped" in (kind, out.get(s.boundary)) else kind
-    return out
+        held.setdefault(s.boundary, set()).update(s.fix)
+    return {edge: "clamped" if fix == {"x", "y"} else "roller" for edge, fix in held.items()}
 
 
 def corner_exponents(scene: Scene) -> list[float]:
     """``λ`` of each corner of a rectangular domain where a clamped edge
     meets a free (or loaded) one: a clamped–free right angle
     (:func:`clamped_free_exponent`, the κ of the body holding the
-    corner).  Left out: a corner between two clamped edges (2λ = 2.98 in
-    plane stress, 2.84 in plane strain at ν = 0.3: degree 2's Richardson
-    factor changes by 12 % at most), one with a roller (reflected across
+    corner, the least of both bodies' where Γ passes through it).  Left
+    out: a corner between two clamped edges (2λ = 2.98 in plane stress,
+    2.84 in plane strain at ν = 0.3: degree 2's Richardson factor changes
+    by 2 % and 14 %; but 2.32 at ν = 0.45 in plane strain, a factor 1.75,
+    which :func:`pollution_warning` names), one with a roller (reflected across
     it, a half-plane: integer exponents, a smooth solution), and a
     convex one between two free edges (no stress singularity)."""
     if not isinstance(scene.domain, Rectangle):
@@ -211,9 +218,18 @@ def corner_exponents(scene: Scene) -> list[float]:
     for corner in scene.domain.corners:
         edges = [kinds.get(e, "free") for e in scene.domain.boundary_of(corner, tol.GEOMETRY * scene.length_scale)]
         if sorted(edges) == ["clamped", "free"]:
-            body = "minus" if scene.interface.phi([corner])[0] < 0 else "plus"
-            out.append(clamped_free_exponent(np.pi / 2, kolosov(scene.materials[body].nu, scene.plane)))
+            out.append(min(clamped_free_exponent(np.pi / 2, kolosov(scene.materials[b].nu, scene.plane))
+                           for b in _bodies_at(scene, corner)))
     return out
+
+
+def _bodies_at(scene: Scene, point) -> tuple[str, ...]:
+    """The bodies holding ``point``: both where it lies on Γ (within
+    GEOMETRY of the scene's length), so that no sign of round-off picks one."""
+    d = scene.interface.signed_distance([point])[0]
+    if abs(d) <= tol.GEOMETRY * scene.length_scale:
+        return ("minus", "plus")
+    return ("minus",) if d < 0 else ("plus",)
 
 
 def interface_end_exponents(scene: Scene) -> list[float]:
@@ -223,9 +239,11 @@ def interface_end_exponents(scene: Scene) -> list[float]:
     traction is a load of lower order): :func:`clamped_free_exponent`,
     the least over both bodies and both angles.  On a free, loaded or
     roller edge the springs' traction at the end does not vanish, while
-    the edge prescribes its own there: no stress constant near the
-    vertex takes both, and ``σ ~ log r``, ``u ~ r log r`` (the corner
-    paradox: Sinclair, Appl. Mech. Rev. 57, 2004), ``λ = 1``.  Under an
+    the edge prescribes its own there: no uniform stress near the
+    vertex takes both, so the stress there, bounded, depends on the
+    direction (the wedge's ``r² θ`` Airy term) and ``u ~ r log r``
+    (Sinclair, Appl. Mech. Rev. 57, 2004; the stress is ``~ log r`` only
+    where that term fails too, a wedge of 180° or 257°), ``λ = 1``.  Under an
     exactly enforced law Γ's end is a bonded bimaterial edge (Bogy's
     exponents, none for equal materials), not taken here."""
     if not (isinstance(scene.interface, LineInterface) and isinstance(scene.domain, Rectangle)) or _exact(scene.law):
@@ -411,7 +429,8 @@ def pollution_warning(scene: Scene, profiles: dict[str, dict[str, QuantityEstima
     """A line when quantities are estimated from two runs at an order of
     :data:`POLLUTED_ORDER` or more on a domain with singular points that
     :func:`pollution_order` does not take (corners between two clamped or
-    two free edges, the end of an exactly enforced Γ): if one of them
+    two free edges, the end of an exactly enforced Γ, a straight Γ's ends
+    on a disc): if one of them
     slows them everywhere after all, the estimate may be several times
     too small."""
     names = [f"{pid}:{q}" for pid, qs in profiles.items() for q, e in qs.items()

@@ -578,9 +578,10 @@ ORDER_RANGE = (0.5, 5.0)
 ORDER_MISMATCH = 1.0
 
 #: A root of the wedge's eigen-equation (estimate.clamped_free_exponent):
-#: |residual| below this, and Re λ above it (λ ~ 0.5-2, the residual's
+#: |residual| below this, Re λ above it, and a real root this close to an
+#: integer is one (a polynomial field).  λ ~ 0.5-2 and the residual's
 #: terms ~ 1-10, so 1e-10 is far above Newton's round-off, 1e-15, and far
-#: below any exponent that matters).
+#: below any exponent that matters.
 WEDGE_ROOT = 1e-10
 
 #: A difference between two runs below this fraction of the quantity's

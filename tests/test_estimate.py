@@ -433,3 +433,47 @@ def test_the_pollution_order_comes_from_the_scenes_singular_points():
     assert est.order_range("tN", 2, "fe", make_law({"type": "bonded", "enforcement": "exact"}), pollution=1.5) == (2, 2)
     assert est.order_range("sxx", 2, "fe", pollution=1.5) == (2, 2)
     assert est.order_range("sxx", 1, "xfem", pollution=1.5) == (2, 3)
+
+
+def test_an_edge_held_by_two_supports_is_clamped():
+    """A bottom held in x by one support and in y by another is clamped:
+    its corners with the free sides are clamped–free, as for fix = "xy"."""
+    from contactcore import Support
+    a = load_scene("A")
+    split = a.with_changes(supports=(Support("bottom", fix="x"), Support("bottom", fix="y")))
+    assert est.corner_exponents(split) == est.corner_exponents(a) != []
+    assert est.pollution_order(split) == est.pollution_order(a)
+
+
+def test_a_corner_on_gamma_takes_both_bodies_whatever_the_sign_of_round_off():
+    """Γ through the clamped–free corner (0, 0) of A, given through points
+    whose φ at the corner is +round-off, −round-off or 0: the corner takes
+    the least exponent of both bodies (here the softer ν = 0.45 one's)."""
+    from contactcore.geometry import LineInterface
+    from contactcore.scene import Material
+    a = load_scene("A")
+    a = a.with_changes(profiles=tuple(p for p in a.profiles if p.id != "A5"),
+                       materials={"minus": Material(2e11, 0.3), "plus": Material(2e11, 0.45)})
+    soft = est.clamped_free_exponent(np.pi / 2, est.kolosov(0.45, "stress"))
+    signs = set()
+    for angle in (0.37, 0.74, 1.11):  # φ(0, 0) = -1.4e-17, +2.8e-17, 0 for these lines through the corner
+        n, t = (-np.sin(angle), np.cos(angle)), (np.cos(angle), np.sin(angle))
+        scene = a.with_changes(interface=LineInterface((0.3 * t[0], 0.3 * t[1]), n))
+        signs.add(float(np.sign(scene.interface.phi([(0.0, 0.0)])[0])))
+        assert min(est.corner_exponents(scene)) == pytest.approx(soft), angle
+    assert signs == {-1.0, 0.0, 1.0}
+
+
+def test_a_polynomial_root_of_the_wedge_is_not_its_exponent():
+    """At ν = 0 (κ = 3) λ = 1 solves a right angle's eigen-equation, but
+    its field u = (0, c y) is linear, smooth: the exponent is the next
+    root, where the wedge's determinant changes sign (1.352; below it the
+    determinant changes sign at λ = 1 alone)."""
+    kappa, step = est.kolosov(0.0, "strain"), 1e-6
+    lam = est.clamped_free_exponent(np.pi / 2, kappa)
+    assert _kolosov_determinant(lam - step, np.pi / 2, kappa) * _kolosov_determinant(lam + step, np.pi / 2, kappa) < 0
+    xs = np.linspace(0.05, lam - step, 401)
+    signs = np.sign([_kolosov_determinant(x, np.pi / 2, kappa) for x in xs])
+    changes = xs[:-1][signs[:-1] != signs[1:]]
+    assert len(changes) == 1 and changes[0] < 1.0 < changes[0] + (xs[1] - xs[0])
+    assert est.clamped_free_exponent(np.pi / 2, kappa) == est.clamped_free_exponent(np.pi / 2, est.kolosov(0.0, "stress"))
