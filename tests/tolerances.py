@@ -179,6 +179,17 @@ FRICTION_CLOSED_FORM = {"fe": (1e-8, 1e-8), "xfem": (1e-8, 1e-8), "efgm": (EFGM_
 SOFT_LAYER = 1e-8
 SOFT_LAYER_CLOSED_FORM = 1e-5
 
+#: The layered closed form with its − layer softened until the springs are
+#: α = k_N h/E₋ (up to contactcore.tolerances.EFGM_FRICTION_SPRINGS, above
+#: which efgm refuses a Coulomb law): efgm's mean t_T stays within its patch
+#: test's bound of μp (measured 2026-11-27 at h = 0.1: 2.4e-5 at α = 1,
+#: 6.1e-5 at 100, 5.8e-5 at 300), but its mean g_T, whose stick part τ/k_T
+#: is 2e-3 of the path's largest |g_T| (the slip), follows the points'
+#: oscillating jumps: 4.8e-5, 1.3e-4, 2.5e-4, 3.4e-4, 3.6e-4, 3.6e-4, 3.5e-4
+#: of that largest value at α = 1, 3, 10, 30, 100, 300, 500 (the + layer
+#: soft: 5.5e-5 at 300), worst where every point reaches μp.
+EFGM_STIFF_SPRINGS_GT = 1e-3
+
 #: The layered closed form with the whole block shifted rigidly by
 #: RIGID_SHIFT (m), about 1e6 times the top's largest displacement: the
 #: answer's t_T and g_T are the unshifted ones.  Round-off grows with the
