@@ -77,7 +77,7 @@ class _Update:
         self.columns = kept_by.columns.setdefault(slot, _Columns(kept_by.system.size))
         new = [pc for pc in changed if pc not in self.columns.index]
         if new:
-            self.columns.add(new, kept_by.system.solve_columns(test[[2 * p + c for p, c in new]].toarray().T, slot),
+            self.columns.add(new, kept_by.system.solve_columns(test[[2 * p + c for p, c in new]].T, slot),
                              most)
         self.used = len(self.columns)  # the columns it reads: the first ones, kept in place
         self.at = np.array([self.columns.index[pc] for pc in changed], int)

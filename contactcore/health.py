@@ -20,6 +20,8 @@ points (a body that Γ has let go makes the tangent singular), and
 :func:`check_held` refuses a converged answer that leaves a body free:
 its position is not determined.
 :func:`material_warnings` warns about volumetric locking near ν = 0.5.
+A method may refuse more before its solve: :func:`check_friction_springs`
+(EFGM) penalty Coulomb springs that dwarf the softer body.
 """
 from __future__ import annotations
 
@@ -114,6 +116,22 @@ def check_springs(scene, weights) -> None:
                               f"entries k w = {k * w / E:.1e} E exceed {tol.SPRING_ENTRY_MAX:.1e} E, beyond which "
                               f"the bulk stiffness in the interface rows is lost to round-off (no accurate solve "
                               f"exists); use k_{c} <= {tol.SPRING_ENTRY_MAX * E / w * k_user / k:.2e} Pa/m")
+
+
+def check_friction_springs(scene, h: float, limit: float, method: str) -> None:
+    """Refuse a penalty Coulomb law whose springs exceed ``limit`` times
+    the softer body's ``E/h`` (``α = k h / E``): ``method``'s tractions at
+    Γ's points oscillate there, and its stick/slip decisions with them
+    (the measurements are in contactcore.tolerances, EFGM_FRICTION_SPRINGS)."""
+    if getattr(scene.law, "name", None) != "coulomb" or not hasattr(scene.law, "kN"):
+        return
+    alpha = scene.law.stiffness_scale * h / min(m.E for m in scene.materials.values())
+    if alpha > limit:
+        c, _, k_user = max(_springs(scene), key=lambda spring: spring[1])
+        raise SolverError(f"interface.law.k{c}: {k_user:.3g} Pa/m is {alpha:.1e} times the softer body's E/h, "
+                          f"above the {limit:.0e} {method} carries under Coulomb friction: its tractions at Γ's "
+                          f"points oscillate from point to point and the stick/slip decisions follow the "
+                          f"oscillation; use k_{c} <= {k_user * limit / alpha:.2e} Pa/m, or fe or xfem")
 
 
 def _springs(scene):

@@ -174,11 +174,11 @@ class ContactSystem(ABC):
         budget = self.column_budget(slot)
         return (tol.LOW_RANK_NEW, tol.LOW_RANK_COLUMNS) if budget is None else (budget, budget)
 
-    def solve_columns(self, rhs: np.ndarray, slot: int) -> np.ndarray:
-        """``δU`` (n, q) for the q columns of ``rhs`` with the slot's last
-        factorisation (one process), as :meth:`solve` does them one by one."""
+    def solve_columns(self, rhs: sp.spmatrix, slot: int) -> np.ndarray:
+        """``δU`` (n, q) for the q sparse columns of ``rhs`` with the slot's
+        last factorisation (one process), as :meth:`solve` does them one by one."""
         out = np.zeros(rhs.shape)
-        for j, column in enumerate(rhs.T):
+        for j, column in enumerate(rhs.T.toarray()):
             out[:, j] = self.solve(None, column, slot=slot)[0]
         return out
 

@@ -511,6 +511,30 @@ SPRING_HINT_RANGE = 1e-6
 #: 1e11 E/h; the sweeps' refusals by residual start at 1e10 E/h.
 SPRING_ENTRY_MAX = 4.5e10
 
+#: Coulomb springs under EFGM: ``α = k h / E``, k the stiffer spring, E the
+#: softer body's modulus, h the node spacing.  EFGM's tractions at Γ's
+#: quadrature points oscillate from point to point once the springs dwarf
+#: the softer body (the stiff-interface instability of an enriched
+#: approximation, Béchet, Moës & Wohlmuth, IJNME 78 (2009) 931–954; with a
+#: straight Γ between node rows, its jump space has fewer modes than Γ has
+#: points), by an amount set by α alone.  Measured 2026-11-27 on the
+#: layered closed form (t_N uniform, t_T zero at full pressure), efgm P1 at
+#: h = 0.1, the spread of t_N over Γ's 60 points at full pressure, the −
+#: layer soft: 2.3 % of p at α = 1e2, 4.8 % at 3e2, 8.0 % at 1e3, 13 % at
+#: 1e4, 31 % at 5e5, 44 % at 5e7 (the same at every contrast and spring
+#: giving that α); t_T's spread 1.1e-2, 6.5e-2, 0.30, 1.5, 2.0 μp at α = 1e2,
+#: 1e3, 1e4, 5e5, 5e7, where 24 of 60 points slip under pressure alone; the
+#: + layer soft: t_N 0.5, 2.9, 6.0, 20 % at α = 1e2, 1e3, 1e4, 1e7; at
+#: h = 0.05 (− soft) 0.6, 3.2, 7.4, 19 % at α = 1e2, 1e3, 1e4, 1e6.
+#: Coulomb's stick/slip decisions then follow the oscillation: Newton cycled
+#: between status maps and gave up at α = 1e4 (+ soft), 5e5 and above
+#: (− soft), at a sub-step that moved with round-off (EFGM's node order,
+#: the correction solves' right-hand side) at α = 5e7.  EFGM refuses a
+#: penalty Coulomb law above EFGM_FRICTION_SPRINGS, 10x below the least α
+#: that failed, where the points' t_N spreads by at most 8 % of p; the
+#: shipped scenes have α <= 1 (layered-slip at h = 0.1).
+EFGM_FRICTION_SPRINGS = 1e3
+
 # ----- EFGM support dilation ---------------------------------------------------
 
 #: EFGM warns when its support dilation dmax leaves this range, in

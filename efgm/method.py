@@ -225,7 +225,7 @@ class EFGMSystem(ContactSystem):
         SuperLU solves them one by one (None)."""
         return self._tangent.column_budget(slot) if hasattr(self._tangent, "column_budget") else None
 
-    def solve_columns(self, rhs: np.ndarray, slot: int) -> np.ndarray:
+    def solve_columns(self, rhs: sp.spmatrix, slot: int) -> np.ndarray:
         if hasattr(self._tangent, "solve_columns"):
             return self._tangent.solve_columns(rhs, slot)
         return super().solve_columns(rhs, slot)

@@ -8,6 +8,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import ClassVar
 
+from contactcore import health
+from contactcore import tolerances as tol
 from contactcore.discretisation import Discretisation, Resolution, check_choice, check_degree
 
 #: The MLS bases by name (``--basis``) and their degree.
@@ -63,6 +65,15 @@ class EFGM(Discretisation):
         if self.nodes is not None:
             return Resolution(None)
         return super().resolution(scene, h, paper)
+
+    def check_built(self, scene, built) -> None:
+        """Springs that leave the bulk no digits are refused as for every
+        method, first (:func:`contactcore.health.check_springs`); then
+        penalty Coulomb springs that dwarf the softer body at this node
+        spacing (:func:`contactcore.health.check_friction_springs`)."""
+        system = built.system
+        health.check_springs(scene, system.collective.gather(system.interface.weights))
+        health.check_friction_springs(scene, built.h, tol.EFGM_FRICTION_SPRINGS, self.name)
 
     @classmethod
     def label(cls, result) -> str:

@@ -49,6 +49,19 @@ def _layered(E_minus_factor: float = 1.0, E_plus_factor: float = 1.0):
     return layered_slip(E=(E_minus_factor * base.E[0], E_plus_factor * base.E[1])).scene
 
 
+def _efgm_springs_limit():
+    """The layered closed form with its − layer softened until the springs
+    are half the most EFGM carries under Coulomb friction (α = k_N h/E₋ =
+    EFGM_FRICTION_SPRINGS / 2 at the scene's h), where its tractions
+    oscillate most among the cases it answers."""
+    from contactcore import tolerances as core_tol
+    from verification.closed_forms import layered_slip
+
+    base = layered_slip()
+    scene = base.scene
+    return _layered(E_minus_factor=scene.law.kN * scene.h / (0.5 * core_tol.EFGM_FRICTION_SPRINGS * base.E[0]))
+
+
 def _shifted():
     from contactcore import Support
 
@@ -88,12 +101,16 @@ def _disc(pulled: bool):
 
 
 #: The stiff friction cases, by name: (scene factory, h or None for the scene's).
+#: The soft layers are beyond the springs efgm carries under Coulomb
+#: friction (it refuses them before any solve); "efgm-springs-limit" is
+#: within, at half the limit.
 #: Three enforce the law exactly (Nitsche): a rod held by friction alone, a
 #: layer 1000x stiffer than its neighbour, and an inclined Γ that opens part
 #: of the way; the last two are a disc held by Γ alone (tests/free_disc.py),
 #: pulled (refused) and pressed (solved).
 CASES = {
     "soft-layer": (lambda: _layered(E_minus_factor=tol.SOFT_LAYER), None),
+    "efgm-springs-limit": (_efgm_springs_limit, None),
     "contrast-1e-6": (lambda: _layered(E_minus_factor=1e-6), None),
     "contrast+1e-6": (lambda: _layered(E_plus_factor=1e-6), None),
     "shifted": (_shifted, None),

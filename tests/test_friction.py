@@ -2,12 +2,14 @@
 Newton with cut-back, and the three methods against a closed form and
 against each other."""
 import dataclasses
+import re
 
 import numpy as np
 import scipy.sparse as sp
 import pytest
 
 import tolerances as tol
+from contactcore import tolerances as core_tol
 from contactcore import Pin, SceneError, SolverError, load_scene, make_law, sample_profiles, scene_from_dict
 from contactcore.laws import OPEN, SLIP, STICK, CoulombLaw, LinearLaw, UnilateralLaw
 from contactcore.newton import solve_increments
@@ -195,10 +197,11 @@ def test_layered_closed_form_in_every_method(method, layered):
     assert err_s <= bound_sigma * exact[-1].p
 
 
-def _assert_closed_form_path(result, case, bound: float) -> None:
+def _assert_closed_form_path(result, case, bound: float, bound_g: float | None = None) -> None:
     """At every increment (cut-backs add others, skipped), the mean t_T
-    within ``bound`` of μp and the mean g_T within ``bound`` of the path's
-    largest |g_T| (its slip, which can dwarf μp/k_T)."""
+    within ``bound`` of μp and the mean g_T within ``bound_g`` (default
+    ``bound``) of the path's largest |g_T| (its slip, which can dwarf μp/k_T)."""
+    bound_g = bound if bound_g is None else bound_g
     exact = case.history()
     steps = [s for s in result.interface.steps if float(s.step).is_integer()]
     assert len(steps) == len(exact)
@@ -206,7 +209,7 @@ def _assert_closed_form_path(result, case, bound: float) -> None:
     g_exact = np.array([st.tau / case.kT + st.slip for st in exact])
     for step, st, g in zip(steps, exact, g_exact):
         assert abs(w @ step.traction[:, 1] - st.tau) <= bound * case.mu * st.p + tol.MEAN_TRACTION_FLOOR_PA, step.step
-        assert abs(w @ step.jump[:, 1] - g) <= bound * np.max(np.abs(g_exact)), step.step
+        assert abs(w @ step.jump[:, 1] - g) <= bound_g * np.max(np.abs(g_exact)), step.step
 
 
 @pytest.mark.parametrize("method", METHODS)
@@ -218,15 +221,34 @@ def test_a_soft_layer_under_a_stiff_one_answers_right_or_refuses(method, layered
     stick/slip split against it and accepted 2 sticking points of 30 where
     all slip: fe and xfem P1 exited 0 with t_T 0.25 μp off and g_T lost.
     fe and xfem must now match the closed form at every increment; EFGM
-    may refuse (its Newton cycles at the first increment), never answer
-    wrong."""
+    refuses before any solve: its springs are 5e7 times the soft layer's
+    E/h, where its tractions oscillate from point to point."""
     case = layered_slip(E=(tol.SOFT_LAYER * layered.E[0], layered.E[1]))
-    try:
-        result = methods.solver(method)(case.scene, estimate_condition=False)
-    except SolverError:
-        assert method == "efgm"
+    if method == "efgm":
+        refusal = r"interface\.law\.kN: 1e\+12 Pa/m is 5\.0e\+07 times the softer body's E/h"
+        with pytest.raises(SolverError, match=refusal):
+            methods.solver(method)(case.scene, estimate_condition=False)
         return
+    result = methods.solver(method)(case.scene, estimate_condition=False)
     _assert_closed_form_path(result, case, max(tol.SOFT_LAYER_CLOSED_FORM, tol.FRICTION_CLOSED_FORM[method][0]))
+
+
+@pytest.mark.parametrize("share", [0.5, 2.0])
+def test_efgm_answers_coulomb_springs_below_its_limit_and_refuses_them_above(share, layered):
+    """The layered closed form with its − layer softened until the springs
+    are ``share`` times EFGM_FRICTION_SPRINGS times its E/h (α = k_N h/E₋
+    at h = 0.1): below the limit efgm follows the closed form, t_T to its
+    patch test's bound, g_T to EFGM_STIFF_SPRINGS_GT; above it refuses
+    before any solve and names the largest spring it carries (k_N / share)."""
+    h, kN = layered.scene.h, layered.scene.law.kN
+    case = layered_slip(E=(kN * h / (share * core_tol.EFGM_FRICTION_SPRINGS), layered.E[1]))
+    if share > 1:
+        refusal = r"above the 1e\+03 efgm carries .* use k_N <= " + re.escape(f"{kN / share:.2e} Pa/m")
+        with pytest.raises(SolverError, match=refusal):
+            methods.solver("efgm")(case.scene, estimate_condition=False)
+        return
+    result = methods.solver("efgm")(case.scene, estimate_condition=False)
+    _assert_closed_form_path(result, case, tol.FRICTION_CLOSED_FORM["efgm"][0], tol.EFGM_STIFF_SPRINGS_GT)
 
 
 @pytest.mark.parametrize("method", METHODS)

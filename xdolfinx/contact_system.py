@@ -18,6 +18,7 @@ reduced over the ranks (:attr:`collective`).
 from __future__ import annotations
 
 import numpy as np
+import scipy.sparse as sp
 
 from dolfinx import la
 
@@ -72,7 +73,7 @@ class PETScSystem(ContactSystem):
         about one factorisation (:meth:`~contactcore.linear_solver.Tangent.column_budget`)."""
         return self._tangent.column_budget(slot)
 
-    def solve_columns(self, rhs: np.ndarray, slot: int) -> np.ndarray:
+    def solve_columns(self, rhs: sp.spmatrix, slot: int) -> np.ndarray:
         return self._tangent.solve_columns(rhs, slot)
 
     def close(self) -> None:
