@@ -132,9 +132,10 @@ def _projected_curve(itf, p: np.ndarray, q: np.ndarray):
     def solve(t):
         base = p + t[:, None] * d
         s = np.zeros(len(t))
-        for _ in range(PROJECTIONS):
-            x = base + s[:, None] * m
-            s -= itf.phi(x) / (np.asarray(itf.grad_fn(x)) @ m)
+        with np.errstate(divide="ignore", invalid="ignore"):  # ∇φ ⟂ m: not finite, and refused by the caller
+            for _ in range(PROJECTIONS):
+                x = base + s[:, None] * m
+                s -= itf.phi(x) / (np.asarray(itf.grad_fn(x)) @ m)
         return base + s[:, None] * m
 
     def tangent(t):

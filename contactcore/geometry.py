@@ -255,7 +255,8 @@ class LevelSetInterface:
         """The distance to Γ, signed as φ, to first order: ``φ/|∇φ|`` (a
         φ scaled by any factor gives the same)."""
         p = _as_points(x)
-        return self.phi(p) / np.linalg.norm(np.asarray(self.grad_fn(p), float).reshape(-1, 2), axis=1)
+        with np.errstate(divide="ignore"):  # |∇φ| = 0 (a centre of φ = r² − R²): infinitely far, to first order
+            return self.phi(p) / np.linalg.norm(np.asarray(self.grad_fn(p), float).reshape(-1, 2), axis=1)
 
     def minus_area(self, domain: Domain, samples: int = 400) -> float:
         """The − side's area, estimated on a grid of samples² points."""

@@ -13,7 +13,7 @@ import tolerances as tol
 
 def test_floating_body_is_refused_with_a_clear_message():
     scene = load_scene("A").with_changes(supports=())
-    with pytest.raises(SolverError, match="bodies − and \+ together can .*: no support or pin holds it"):
+    with pytest.raises(SolverError, match=r"bodies − and \+ together can .*: no support or pin holds it"):
         conforming.solve(scene, 0.2)
 
 
