@@ -322,7 +322,9 @@ class QuantityEstimate:
     """The finest run's estimated error of one quantity on one profile:
     ``error`` (per sample, ≥ 0, in the quantity's units), the ``order`` used,
     whether it was ``observed`` (three runs) or taken from the orders
-    ``theory`` allows (:func:`order_range`)."""
+    ``theory`` allows (:func:`order_range`; recorded as ``"orders"``, so
+    that a user sees why a two-run order is, say, 2.205: the balanced
+    order of ``[1.52, 3]``)."""
 
     error: np.ndarray
     order: float
@@ -338,7 +340,8 @@ class QuantityEstimate:
         return rms(self.error)
 
     def record(self) -> dict:
-        return {"max": self.max, "rms": self.rms, "order": self.order, "observed": self.observed}
+        return {"max": self.max, "rms": self.rms, "order": self.order, "observed": self.observed,
+                "orders": [float(t) for t in self.theory]}
 
 
 def observed_order(coarse: np.ndarray, mid: np.ndarray, fine: np.ndarray, ratio: float = 2.0) -> float | None:

@@ -168,11 +168,16 @@ def test_run_estimate_writes_the_errors(tmp_path):
                 assert names[names.index(q) + 1] == f"{q}_err"
                 record = estimate["A1"][q]
                 assert record["max"] == pytest.approx(max(columns[f"{q}_err"]))
-                assert record["order"] == pytest.approx(est.balanced_order(*est.order_range(q, 1, name)))
+                orders = est.order_range(q, 1, name, load_scene("A").law, pollution=est.pollution_order(load_scene("A")))
+                assert record["orders"] == pytest.approx(list(orders))
+                assert record["order"] == pytest.approx(est.balanced_order(*orders))
                 # summary.md's figure: over the samples at least 0.1 L from Γ's ends (A1 lies on Γ)
                 x, err = np.asarray(columns["x"]), np.asarray(columns[f"{q}_err"])
                 keep = np.minimum(x, 1.0 - x) >= 0.1 * np.sqrt(2.0)
                 assert record["kept_rms"] == pytest.approx(np.sqrt(np.mean(err[keep] ** 2)), rel=tol.SAME_SUMS)
+        for q, record in estimate["A5"].items():  # Γ's gaps and tractions: the orders the scene allows them
+            orders = est.order_range(q, 1, name, load_scene("A").law, pollution=est.pollution_order(load_scene("A")))
+            assert record["orders"] == pytest.approx(list(orders)) and record["order"] >= orders[0]
     assert json.loads((out / "run.json").read_text())["estimate"] == 2
     units = json.loads(files.write_units(out).read_text())
     assert units["xfem/profiles/A1.csv"]["sxy_err"] == units["xfem/profiles/A1.csv"]["sxy"] == "Pa"
