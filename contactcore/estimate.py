@@ -234,32 +234,49 @@ def _bodies_at(scene: Scene, point) -> tuple[str, ...]:
 
 def interface_end_exponents(scene: Scene) -> list[float]:
     """``λ`` of each end of a straight Γ (where it meets a rectangle's
-    edge) under a penalty law.  On a clamped edge each body is a
-    clamped–free wedge of the angle Γ makes with the edge (the springs'
-    traction is a load of lower order): :func:`clamped_free_exponent`,
-    the least over both bodies and both angles.  On a free, loaded or
-    roller edge the springs' traction at the end does not vanish, while
-    the edge prescribes its own there: no uniform stress near the
-    vertex takes both, so the stress there, bounded, depends on the
-    direction (the wedge's ``r² θ`` Airy term) and ``u ~ r log r``
-    (Sinclair, Appl. Mech. Rev. 57, 2004; the stress is ``~ log r`` only
-    where that term fails too, a wedge of 180° or 257°), ``λ = 1``.  Under an
-    exactly enforced law Γ's end is a bonded bimaterial edge (Bogy's
-    exponents, none for equal materials), not taken here."""
+    boundary) under a penalty law: the least over the wedges Γ makes
+    with the edges at that end (:func:`_wedges_at`; two on an edge, of
+    angles α and π − α, one per edge at a corner, of angles β and
+    π/2 − β).  A wedge on a clamped edge is a clamped–free wedge of its
+    angle (the springs' traction is a load of lower order):
+    :func:`clamped_free_exponent`, the least over both bodies.  On a
+    free, loaded or roller edge the springs' traction at the end does
+    not vanish, while the edge prescribes its own there: no uniform
+    stress near the vertex takes both, so the stress there, bounded,
+    depends on the direction (the wedge's ``r² θ`` Airy term) and
+    ``u ~ r log r`` (Sinclair, Appl. Mech. Rev. 57, 2004; the stress is
+    ``~ log r`` only where that term fails too, a wedge of 180° or
+    257°), ``λ = 1``.  Under an exactly enforced law Γ's end is a bonded
+    bimaterial edge (Bogy's exponents, none for equal materials), not
+    taken here."""
     if not (isinstance(scene.interface, LineInterface) and isinstance(scene.domain, Rectangle)) or _exact(scene.law):
         return []
     ends = scene.interface.chord(scene.domain)
     kinds, out = _edge_supports(scene), []
-    t = np.array([-scene.interface.normal[1], scene.interface.normal[0]])
     kappas = [kolosov(scene.materials[b].nu, scene.plane) for b in ("minus", "plus")]
-    for end in () if ends is None else ends:
-        edges = scene.domain.boundary_of(end, tol.GEOMETRY * scene.length_scale)
-        if "clamped" not in [kinds.get(e, "free") for e in edges]:
-            out.append(1.0)
-            continue
-        alpha = float(np.arccos(min(abs(t[0] if set(edges) & {"bottom", "top"} else t[1]), 1.0)))
-        out.append(min(clamped_free_exponent(a, k) for a in (alpha, np.pi - alpha) for k in kappas))
+    for end, other in (() if ends is None else (ends, ends[::-1])):
+        out.append(min(min(clamped_free_exponent(angle, k) for k in kappas) if kinds.get(edge) == "clamped" else 1.0
+                       for edge, angle in _wedges_at(scene, end, other)))
     return out
+
+
+#: The direction along each edge of a rectangle.
+EDGE_DIRECTIONS = {"left": (0.0, 1.0), "right": (0.0, 1.0), "bottom": (1.0, 0.0), "top": (1.0, 0.0)}
+
+
+def _wedges_at(scene: Scene, end, other) -> list[tuple[str, float]]:
+    """``(edge, angle)`` of each wedge between Γ, leaving ``end`` towards
+    ``other``, and an edge at ``end``, along that edge's directions that
+    stay on the rectangle: α and π − α at a point inside an edge, one
+    angle per edge at a corner (their sum π/2)."""
+    tol_ = tol.GEOMETRY * scene.length_scale
+    d = (other - end) / np.linalg.norm(other - end)
+    wedges = []
+    for edge in scene.domain.boundary_of(end, tol_):
+        for e in (np.array(EDGE_DIRECTIONS[edge]), -np.array(EDGE_DIRECTIONS[edge])):
+            if scene.domain.contains([end + tol.WEDGE_PROBE * scene.length_scale * e], tol_)[0]:
+                wedges.append((edge, float(np.arccos(np.clip(d @ e, -1.0, 1.0)))))
+    return wedges
 
 
 def pollution_order(scene: Scene | None) -> float:

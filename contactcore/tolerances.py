@@ -608,6 +608,12 @@ ORDER_MISMATCH = 1.0
 #: below any exponent that matters.
 WEDGE_ROOT = 1e-10
 
+#: A step along an edge from an end of Γ, as a fraction of the scene's
+#: size, that tells which of the edge's two directions stay on the
+#: rectangle (estimate._wedges_at): far above the GEOMETRY tolerance
+#: that puts the end on the edge (1e-9), far below any edge's length.
+WEDGE_PROBE = 1e-6
+
 #: A difference between two runs below this fraction of the quantity's
 #: largest |value| is round-off (the systems lose up to 8 digits, condition
 #: estimates ~1e8: tests/tolerances.py PATCH_ROUNDOFF): it shows no order.

@@ -469,6 +469,27 @@ def test_a_corner_on_gamma_takes_both_bodies_whatever_the_sign_of_round_off():
     assert signs == {-1.0, 0.0, 1.0}
 
 
+def test_an_end_of_gamma_at_a_corner_splits_the_right_angle():
+    """Γ through A's corner (0, 0) at β = 0.3 rad to the bottom: its end
+    there makes wedges of β with the bottom and π/2 − β with the left
+    side (no wedge of π − β exists at a corner); the clamped edge's
+    wedge is clamped–free, a free edge's takes λ = 1.  The other end, on
+    the free right side, λ = 1."""
+    from contactcore import Support
+    from contactcore.geometry import LineInterface
+    a = load_scene("A")
+    beta = 0.3
+    a = a.with_changes(profiles=tuple(p for p in a.profiles if p.id != "A5"),
+                       interface=LineInterface((0.5, 0.5 * np.tan(beta)), (-np.sin(beta), np.cos(beta))))
+    wedge = lambda angle: est.clamped_free_exponent(angle, est.kolosov(0.3, "stress"))  # noqa: E731
+    for supports, at_corner in (((Support("bottom"), Support("left")), min(wedge(beta), wedge(np.pi / 2 - beta))),
+                                ((Support("left"),), min(wedge(np.pi / 2 - beta), 1.0)),
+                                ((Support("bottom"),), min(wedge(beta), 1.0))):
+        ends = est.interface_end_exponents(a.with_changes(supports=supports))
+        assert sorted(ends) == pytest.approx(sorted([at_corner, 1.0])), supports
+    assert wedge(np.pi / 2 - beta) < 1.0 < wedge(beta) and wedge(np.pi - beta) < wedge(np.pi / 2 - beta)
+
+
 def test_a_polynomial_root_of_the_wedge_is_not_its_exponent():
     """At ν = 0 (κ = 3) λ = 1 solves a right angle's eigen-equation, but
     its field u = (0, c y) is linear, smooth: the exponent is the next
