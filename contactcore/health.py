@@ -31,6 +31,7 @@ from . import tolerances as tol
 from .errors import SolverError
 from .geometry import Disc, LineInterface, Rectangle, tangent_of
 from .laws import OPEN
+from .scaling import Scales
 
 #: Sample points per support boundary in the rigid-mode check (three
 #: non-collinear points suffice; more make the check independent of them).
@@ -122,16 +123,29 @@ def check_friction_springs(scene, h: float, limit: float, method: str) -> None:
     """Refuse a penalty Coulomb law whose springs exceed ``limit`` times
     the softer body's ``E/h`` (``α = k h / E``): ``method``'s tractions at
     Γ's points oscillate there, and its stick/slip decisions with them
-    (the measurements are in contactcore.tolerances, EFGM_FRICTION_SPRINGS)."""
+    (the measurements are in contactcore.tolerances, EFGM_FRICTION_SPRINGS).
+    Springs at the limit to round-off (``α`` is formed from the scene
+    made dimensionless) are carried, and the largest spring the message
+    offers is rounded down, so that it is carried too."""
     if getattr(scene.law, "name", None) != "coulomb" or not hasattr(scene.law, "kN"):
         return
     alpha = scene.law.stiffness_scale * h / min(m.E for m in scene.materials.values())
-    if alpha > limit:
+    if alpha > limit * (1 + tol.LIMIT_ROUNDOFF):
         c, _, k_user = max(_springs(scene), key=lambda spring: spring[1])
-        raise SolverError(f"interface.law.k{c}: {k_user:.3g} Pa/m is {alpha:.1e} times the softer body's E/h, "
+        h_user = h * Scales.of(scene.user).length
+        raise SolverError(f"interface.law.k{c}: {k_user:.3g} Pa/m is {alpha:.1e} times the softer body's E/h "
+                          f"(h = {h_user:.3g}, {method}'s spacing), "
                           f"above the {limit:.0e} {method} carries under Coulomb friction: its tractions at Γ's "
                           f"points oscillate from point to point and the stick/slip decisions follow the "
-                          f"oscillation; use k_{c} <= {k_user * limit / alpha:.2e} Pa/m, or fe or xfem")
+                          f"oscillation; use k_{c} <= {_rounded_down(k_user * limit / alpha):.2e} Pa/m, or fe or xfem")
+
+
+def _rounded_down(x: float, digits: int = 3) -> float:
+    """``x > 0`` rounded down to ``digits`` significant digits (a limit
+    quoted so that the quoted value stays within it), its round-off
+    within :data:`~contactcore.tolerances.LIMIT_ROUNDOFF` rounded up."""
+    unit = 10.0 ** (np.floor(np.log10(x)) - digits + 1)
+    return float(np.floor(x / unit * (1 + tol.LIMIT_ROUNDOFF)) * unit)
 
 
 def _springs(scene):

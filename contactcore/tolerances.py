@@ -535,6 +535,14 @@ SPRING_ENTRY_MAX = 4.5e10
 #: shipped scenes have α <= 1 (layered-slip at h = 0.1).
 EFGM_FRICTION_SPRINGS = 1e3
 
+#: A ratio compared with a limit (health.check_friction_springs' α) is
+#: formed from the scene made dimensionless (k L/S, h/L, E/S): a few ulps
+#: off the user's own figures.  Within this fraction of the limit it is at
+#: the limit, so that a spring equal to the limit the refusal quotes
+#: (rounded down to 3 digits, also within this fraction) is carried in
+#: every unit system.
+LIMIT_ROUNDOFF = 1e-10
+
 # ----- EFGM support dilation ---------------------------------------------------
 
 #: EFGM warns when its support dilation dmax leaves this range, in

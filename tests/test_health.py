@@ -292,3 +292,33 @@ def test_a_unilateral_law_that_does_not_settle_is_pointed_to_coulomb():
     assert counts["stick"] > counts["slip"]  # converged, and tied nearly as the unilateral law would be
     from contactcore.newton import _no_equilibrium
     assert "tangential tie" not in str(_no_equilibrium(load_scene("C-coulomb"), 1, 6, ["Newton did not converge"]))
+
+
+def test_coulomb_springs_at_the_limit_efgm_quotes_are_carried():
+    """efgm's Coulomb spring limit, α = k h/E₋ <= EFGM_FRICTION_SPRINGS,
+    checked on scene A made dimensionless, at the spacing of efgm's
+    grid, as efgm sees them: springs
+    exactly at the limit (k_N = 2e15 Pa/m at h = 0.1, E = 2e11 Pa, α of
+    1000 plus round-off) are carried; above it the refusal quotes the
+    largest spring carried, rounded down (the soft body's E/h·1e3 =
+    2.4691e15 quoted 2.46e+15, not 2.47e+15), and that spring is carried."""
+    from contactcore import Material, make_law
+    from contactcore.scaling import Scales
+    from contactcore.tolerances import EFGM_FRICTION_SPRINGS
+    from efgm.nodes import grid_nodes
+
+    def check(kN, E, E_plus=2e11):
+        a = load_scene("A")
+        scene = a.with_changes(law=make_law({"type": "coulomb", "kN": kN, "kT": kN / 100, "mu": 0.3}),
+                               materials={"minus": Material(E, 0.3), "plus": Material(E_plus, 0.3)}).validated()
+        scales = Scales.of(scene)
+        dimensionless = scales.scene(scene)
+        h = grid_nodes(dimensionless, 0.1 / scales.length).h
+        health.check_friction_springs(dimensionless, h, EFGM_FRICTION_SPRINGS, "efgm")
+
+    check(EFGM_FRICTION_SPRINGS * 2e11 / 0.1, 2e11)
+    with pytest.raises(SolverError, match=r"use k_N <= (\S+) Pa/m") as refused:
+        check(3e15, 2.4691e11, 3e11)
+    quoted = float(re.search(r"use k_N <= (\S+) Pa/m", str(refused.value)).group(1))
+    assert quoted == 2.46e15
+    check(quoted, 2.4691e11, 3e11)
