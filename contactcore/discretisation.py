@@ -166,7 +166,8 @@ def resolution(scene, h: float | None, paper: bool, grid: str) -> Resolution:
         return Resolution(min(s / n for s, n in zip(size, counts)), tuple(counts))
     h = scene.h if h is None else h
     if h is None or not h > 0:
-        raise DiscretisationError(f"the resolution h must be > 0 (got {h}); the scene gives no default")
+        raise DiscretisationError(f"the resolution h must be > 0 (got {h})" if h is not None else
+                                  "no resolution h: give one, the scene gives no default")
     return Resolution(float(h))
 
 

@@ -7,13 +7,14 @@ GetFEM is one clear error, and its numerics that do not call GetFEM (Γ's
 facet quadrature, the status test, the comparison) are checked by hand.
 The slow stage solves scenes A and C-coulomb with GetFEM and with fe P2
 and asserts the agreement measured in docs/peer-contact.md."""
+import re
 import subprocess
 import sys
 
 import numpy as np
 import pytest
 
-from contactcore import DiscretisationError, ProfileData, load_scene
+from contactcore import DiscretisationError, ProfileData, SceneError, load_scene
 from contactcore.enforcement import make_law
 from contactcore.laws import OPEN, SLIP, STICK
 from contactcore.scene import Pin, Pressure, Traction
@@ -57,6 +58,29 @@ def test_a_scene_outside_its_reach_is_refused_by_name(scene, problem, monkeypatc
 def test_a_bad_resolution_is_refused(options, problem):
     with pytest.raises(DiscretisationError, match=problem):
         peer.solve(peer.exact_scene("A"), 0.1, **options)
+
+
+@pytest.mark.parametrize("h,problem", [(0.0, "h: must be a finite number > 0 \\(got 0.0\\)"),
+                                       (2.0, "h: 2 exceeds the domain's smallest dimension 1")])
+def test_a_bad_h_is_refused_not_replaced_by_the_scenes(h, problem, monkeypatch):
+    monkeypatch.setitem(sys.modules, "getfem", None)  # refused before GetFEM is asked for
+    with pytest.raises(SceneError, match=problem):
+        peer.solve(peer.exact_scene("A"), h)
+
+
+@pytest.mark.parametrize("h,problem", [
+    ("0", "--h: must be a finite number > 0 \\(got 0.0\\)"),
+    ("1e-9", "--h 1e-09 with fe \\(degree 2, 20 increments\\): about .* GB usable on this machine"),
+    ("0.001", "--h 0.001 with getfem-contact \\(degree 2, 20 increments\\)")])
+def test_the_study_refuses_an_h_before_any_mesh(h, problem, capsys, monkeypatch):
+    """The study checks every h before any solve: one line, exit 2 (an h
+    of 1e-9 meshed until the machine killed it); the peer's own size
+    (efgm's run at h = 0.001 fits, GetFEM's P2 meshes do not)."""
+    monkeypatch.setattr(peer, "_Bodies", None)  # no mesh is made
+    methods = ["efgm"] if h == "0.001" else ["fe"]
+    assert peer.main(["A", "--h", "0.1", h, "--methods", *methods]) == 2
+    err = capsys.readouterr().err.splitlines()
+    assert len(err) == 1 and re.match(f"error: {problem}", err[0]), err
 
 
 def test_a_missing_getfem_is_one_clear_error(monkeypatch):

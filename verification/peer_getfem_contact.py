@@ -62,7 +62,8 @@ from contactcore.geometry import CircleInterface, LineInterface, tangent_of
 from contactcore.interface_path import Increment, InterfacePath, piece_centres
 from contactcore.laws import OPEN, SLIP, STICK
 from contactcore.result import SolverReport
-from contactcore.scene import InterfaceProfile, Pressure, Traction
+from contactcore.budget import check_budget
+from contactcore.scene import InterfaceProfile, Pressure, Traction, check_resolution
 from meshes.build import build_model, gmsh_session
 from meshes.tags import BODY, INTERFACE
 from verification.peer_getfem import EDGE_NORMALS, NUDGE, GetFEMFields, geometry_problems, getfem_module
@@ -402,8 +403,8 @@ def solve(scene: Scene, h: float | None = None, *, degree: int = 2, paper: bool 
     the scene's increments (``estimate_condition`` is accepted for the
     common entry point; GetFEM gives no estimate)."""
     _check(scene, degree, paper)
+    h = check_resolution(scene, scene.h if h is None else h, "h")
     gf = getfem_module()
-    h = float(h or scene.h)
     start, timings = time.perf_counter(), Timings()
     with timings.measure("mesh"):
         bodies = _Bodies(gf, scene, h, degree)
@@ -581,17 +582,20 @@ def path_means(result: Result) -> np.ndarray:
     return np.array([np.concatenate([w @ step.traction, w @ step.jump]) for step in path.steps])
 
 
-def study(name: str, hs, degree: int = 2, methods=("fe",)) -> tuple[dict, dict, dict]:
+def study(name: str, hs, degree: int = 2, methods=("fe",), allow_large: bool = False) -> tuple[dict, dict, dict]:
     """Scene ``name`` of :data:`STUDIES`, each of our ``methods`` and GetFEM
     at each h: the :func:`differences` from GetFEM (``(method, h) ->
     rows``); each run's :func:`status_split` with its time in seconds
     (``(h, method | "peer") -> split``); and each code's own move from one
     h to the next, its answer at the coarser h against the finer
     (``(method | "peer", finer h) -> rows``), the measure of its own
-    discretisation error that a difference from GetFEM is judged by."""
+    discretisation error that a difference from GetFEM is judged by.
+    Every h is checked first (:func:`check_sizes`; its memory unless
+    ``allow_large``)."""
     from contactcore import sample_profiles
     from verification import methods as ours
     scene = exact_scene(name)
+    check_sizes(scene, hs, degree, methods, allow_large)
     rows, splits, moves, profiles = {}, {}, {}, {}
     for h in hs:
         for label, solver in (*((m, ours.solver(m)) for m in methods), ("peer", solve)):
@@ -604,6 +608,18 @@ def study(name: str, hs, degree: int = 2, methods=("fe",)) -> tuple[dict, dict, 
         for label in (*methods, "peer"):
             moves[label, fine] = differences(scene, profiles[label, coarse], profiles[label, fine])
     return rows, splits, moves
+
+
+def check_sizes(scene: Scene, hs, degree: int, methods, allow_large: bool = False) -> None:
+    """Every h a resolution of ``scene`` (:func:`contactcore.scene.check_resolution`)
+    whose runs fit this machine (:func:`contactcore.budget.check_budget`,
+    GetFEM's two bodies' meshes one field over the domain; not checked if
+    ``allow_large``), before any mesh: a ContactError naming the first
+    that is not."""
+    for h in hs:
+        check_resolution(scene, h)
+        for method in () if allow_large else (*methods, METHOD):
+            check_budget(scene, h, degree, method)
 
 
 def _share(s: dict) -> str:
@@ -655,9 +671,11 @@ def main(argv=None) -> int:
     parser.add_argument("--degree", type=int, default=2, choices=(1, 2), help="degree of every method")
     parser.add_argument("--methods", nargs="+", default=["fe"], choices=("fe", "xfem", "efgm"),
                         help="our methods compared with GetFEM")
+    parser.add_argument("--allow-large", action="store_true",
+                        help="run even when the estimated memory exceeds what this machine has")
     args = parser.parse_args(argv)
     try:
-        tables = study(args.scene, args.h, args.degree, tuple(args.methods))
+        tables = study(args.scene, args.h, args.degree, tuple(args.methods), args.allow_large)
     except ContactError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
