@@ -137,7 +137,8 @@ def check_friction_springs(scene, h: float, limit: float, method: str) -> None:
                           f"(h = {h_user:.3g}, {method}'s spacing), "
                           f"above the {limit:.0e} {method} carries under Coulomb friction: its tractions at Γ's "
                           f"points oscillate from point to point and the stick/slip decisions follow the "
-                          f"oscillation; use k_{c} <= {_rounded_down(k_user * limit / alpha):.2e} Pa/m, or fe or xfem")
+                          f"oscillation; use k_{c} <= {_rounded_down(k_user * limit / alpha):.2e} Pa/m, a spacing h <= "
+                          f"{_rounded_down(h_user * limit / alpha):.2e}, or fe or xfem")
 
 
 def _rounded_down(x: float, digits: int = 3) -> float:
