@@ -276,9 +276,10 @@ class _Constraints:
             self._add(allb[~np.isin(allb, mine)], 0.0, -1)
         for i, sup in enumerate(scene.supports):
             facets = fm.facets_tagged(meshes.BOUNDARY[sup.boundary])
-            for b in range(2):
+            for b, name in enumerate(BODIES):
+                held = self._facets_of(facets, name)
                 for j in _components(sup.fix):
-                    self._fix(b, j, fem.locate_dofs_topological, (tdim - 1, facets), sup.value[j], i)
+                    self._fix(b, j, fem.locate_dofs_topological, (tdim - 1, held), sup.value[j], i)
         for i, pin in enumerate(scene.pins):
             b = int(scene.body_of([pin.point])[0])
             p = np.asarray(pin.point)
@@ -288,6 +289,22 @@ class _Constraints:
                                   (lambda x, p=p: np.hypot(x[0] - p[0], x[1] - p[1]) <= near,), 0.0, -1)
                 if exchange.ranks.sum(found) == 0:
                     raise DiscretisationError(f"pins[{i}]: no mesh node at {list(pin.point)}")
+
+    def _facets_of(self, facets: np.ndarray, body: str) -> np.ndarray:
+        """The boundary ``facets`` of the ``body``'s own cells: a support
+        holds a body along the part of the edge it lies on, not at a
+        vertex where Γ meets the edge and the body only touches it (a
+        point constraint, which has no capacity in 2D elasticity: fe's
+        answer pinned there drifts towards the unpinned one as log h).
+        A rank holds every cell of its facets (owned or ghost)."""
+        topology = self.fm.mesh.topology
+        tdim = topology.dim
+        topology.create_connectivity(tdim - 1, tdim)
+        f2c = topology.connectivity(tdim - 1, tdim)
+        ncells = topology.index_map(tdim).size_local + topology.index_map(tdim).num_ghosts
+        mine = np.zeros(ncells, bool)
+        mine[self.fm.cells_of(body)] = True
+        return np.array([f for f in facets if mine[f2c.links(f)].any()], dtype=np.int32)
 
     def _owned(self, local_dofs) -> np.ndarray:
         """The owned dofs that some rank found among its local ``local_dofs``."""
