@@ -163,18 +163,22 @@ def test_a_circle_drawn_with_few_segments_is_warned():
     assert not any("straight segments" in w for w in conforming.solve(load_scene("B"), 0.05, degree=1).solver.warnings)
 
 
-def test_a_body_that_touches_a_clamped_edge_at_a_point_is_not_held_there(tmp_path):
+
+def test_a_body_that_touches_a_clamped_edge_at_a_point_is_not_held_there(scene_dict):
     """Γ from the clamped left edge's lower corner at 30°: the − body meets
     that edge only at the corner, so the support does not hold it (a point
     constraint has no capacity in 2D); it hangs on Γ's springs.  fe once
     pinned its node there: Γ's slip 3.75e-6 m against xfem's 1.83e-4 m at
     h = 0.1.  Now fe and xfem agree (measured 4.6e-4 of the largest slip)."""
-    from contactcore import discretisation, load_scene, sample_profiles
+    from contactcore import discretisation, sample_profiles, scene_from_dict
     from xdolfinx.options import FE, XFEM
 
-    path = tmp_path / "corner.toml"
-    path.write_text(CORNER_SCENE)
-    scene = load_scene(path)
+    data = scene_dict("A")
+    data["interface"].update(point=[0.0, 0.0], normal=[-0.5, np.sqrt(3.0) / 2])
+    data["supports"] = [{"boundary": "left", "fix": "xy"}]
+    data["loads"] = [{"type": "traction", "boundary": "right", "value": [1.0e5, -1.0e5]}]
+    data["profiles"] = [{"id": "G", "type": "interface", "quantities": ["gT"]}]
+    scene = scene_from_dict(data)
 
     def slip(options):
         result = discretisation.solve(scene, options, 0.1)
@@ -182,37 +186,3 @@ def test_a_body_that_touches_a_clamped_edge_at_a_point_is_not_held_there(tmp_pat
 
     fe, xfem = slip(FE(degree=1)), slip(XFEM(degree=1))
     assert np.max(np.abs(fe - xfem)) <= tol.CORNER_SUPPORT_AGREE * np.max(np.abs(xfem))
-
-
-CORNER_SCENE = """
-name = "corner"
-increments = 1
-[domain]
-type = "rectangle"
-size = [1.0, 1.0]
-[interface]
-type = "line"
-point = [0.0, 0.0]
-normal = [-0.5, 0.8660254037844386]
-[interface.law]
-type = "linear"
-kN = 1e10
-kT = 1e8
-[materials.minus]
-E = 2e11
-nu = 0.3
-[materials.plus]
-E = 2e11
-nu = 0.3
-[[supports]]
-boundary = "left"
-fix = "xy"
-[[loads]]
-type = "traction"
-boundary = "right"
-value = [1.0e5, -1.0e5]
-[[profiles]]
-id = "G"
-type = "interface"
-quantities = ["gT"]
-"""
