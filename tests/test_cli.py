@@ -94,6 +94,7 @@ def test_units_json_gives_each_csvs_s_its_own_unit(tmp_path):
      "--param stabilisation: must lie within 0.3..30 (got 200)"),
     (["A", "--param", "h", "--values", "0.1", "5"], "--param h: 5 exceeds the domain's smallest dimension 1"),
     (["A", "--param", "E_plus", "--values", "1e9", "-1"], "--param E_plus = -1: materials.plus.E: Young's modulus"),
+    (["A", "--param", "h", "--values", "0.1", "1e-5"], "--param h = 1e-05: h 1e-05 with fe (degree 1, 20 increments)"),
 ])
 def test_study_refuses_a_bad_point_anywhere_before_any_solve(tmp_path, capsys, monkeypatch, args, message):
     """Every point's scene is built and validated first: a bad value, first

@@ -163,6 +163,9 @@ def _commands() -> dict[str, Command]:
                   help=f"run the independent cases on K local processes (default {DEFAULT_WORKERS}: one after "
                        "another in this process); under mpiexec -n K python -m mpi4py.futures, on its K − 1 workers")
 
+    allow_large = arg("--allow-large", action="store_true",
+                      help="run even when the estimated memory exceeds what this machine has")
+
     return {
         "run": Command("solve one scene with one or more methods", (
             arg("scene", help="built-in scene name (A, B, C, ...) or a scene TOML file"), method, degree,
@@ -178,8 +181,7 @@ def _commands() -> dict[str, Command]:
                 help="EFGM's MLS basis (default: linear for --degree 1, quadratic for --degree 2)"),
             arg("--nodes", type=Path, help="EFGM node set: a text file of x y rows (default: a grid)"),
             arg("--no-plots", dest="draw", action="store_false", help="write no figures"),
-            arg("--allow-large", action="store_true",
-                help="run even when the estimated memory exceeds what this machine has"),
+            allow_large,
             arg("--estimate", type=int, nargs="?", const=2, choices=(2, 3), metavar="{2,3}",
                 help="also solve at h/2 (3: and h/4), write the finest run with its estimated errors"),
             arg("--reference", type=_reference, default="fe:2", metavar="METHOD:DEGREE",
@@ -226,7 +228,7 @@ def _commands() -> dict[str, Command]:
             arg("--values", nargs="+", type=_number_or_word, required=True, action="append",
                 help="the values of the --param just before"),
             method, degree, arg("--h", type=float, help="resolution (default: the scene's h)"), cell, out,
-            workers), _study, epilog=explained("--param NAME", {p: what for p, (what, _) in PARAMETERS.items()})),
+            workers, allow_large), _study, epilog=explained("--param NAME", {p: what for p, (what, _) in PARAMETERS.items()})),
         "report": Command("every verification, gathered into DIR/report.md", (
             out, arg("--quick", action="store_true", help="short ladders: a smoke test of the whole chain"),
             workers), _report),
@@ -332,7 +334,7 @@ def _sweeps(args, argv) -> None:
 def _study(args, argv) -> None:
     from .study import study
     study(args.scene, _study_params(args), args.method, args.out, degree=args.degree, h=args.h,
-          cell=args.cell, workers=args.workers, argv=argv)
+          cell=args.cell, workers=args.workers, allow_large=args.allow_large, argv=argv)
 
 
 def _report(args, argv) -> None:

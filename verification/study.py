@@ -42,6 +42,7 @@ from pathlib import Path
 import numpy as np
 
 from contactcore import CircleInterface, LineInterface, SceneError, load_scene, sample_profile
+from contactcore.budget import check_budget
 from contactcore.discretisation import Reuse
 from contactcore.enforcement import ENFORCEMENTS
 from contactcore.exact import BONDED, EXACT_LAWS, checked_stabilisation, is_exact
@@ -262,10 +263,12 @@ def solve_case(case: Case) -> dict:
 
 def study(scene_name: str, params: list[tuple[str, list[float]]], method_names: list[str], out: Path, *,
           degree: int = 1, h: float | None = None, cell: str | None = None, workers: int | None = None,
-          argv=()) -> str:
+          allow_large: bool = False, argv=()) -> str:
     """Run the study over the Cartesian product of ``params`` ((name, values)
     pairs; the last varies fastest) on :mod:`verification.pool`, and write
-    its table and plots; return the Markdown section."""
+    its table and plots; return the Markdown section.  Every point is
+    checked first (:func:`check_points`), and unless ``allow_large`` each
+    point's solve against this machine's memory (:func:`check_sizes`)."""
     names = [p for p, _ in params]
     if len(set(names)) != len(names):
         raise SceneError("--param", f"each parameter may be given once (got {', '.join(names)})")
@@ -279,6 +282,8 @@ def study(scene_name: str, params: list[tuple[str, list[float]]], method_names: 
     labels = point_columns(names)
     points = list(itertools.product(*(values for _, values in params)))
     check_points(base, names, points)
+    if not allow_large:
+        check_sizes(base, names, points, methods.expand(method_names), degree, h)
     cases = [Case(scene_name, tuple(zip(names, pt)), m, degree, h, cell) for pt in points
              for m in methods.expand(method_names)]
     rows = []
@@ -320,6 +325,22 @@ def check_points(base, names: list[str], points: list[tuple]) -> None:
                 raise
             where = ", ".join(f"{p} = {_shown(v)}" for p, v in zip(names, point))
             raise SceneError(f"--param {where}", str(exc)) from None
+
+
+def check_sizes(base, names: list[str], points: list[tuple], method_names: list[str], degree: int, h) -> None:
+    """Every point's solve, with every method, within this machine's
+    memory (:func:`contactcore.budget.check_budget`), before any solve:
+    the first that is not ends the study with a TooLargeError naming it
+    (``--param h --values 1e-9`` would otherwise mesh until the system
+    stops the process)."""
+    for point in points:
+        scene, given = scene_at(base, dict(zip(names, point))), dict(zip(names, point))
+        at = given.get("h", h if h is not None else scene.h)
+        if at is None:
+            continue  # refused by the solve itself, as a failed row, naming the missing h
+        for name in method_names:
+            where = ", ".join(f"{p} = {_shown(v)}" for p, v in zip(names, point))
+            check_budget(scene, at, degree, name, field=f"--param {where}: h")
 
 
 def _shown(value) -> str:
