@@ -67,12 +67,8 @@ class EFGM(Discretisation):
         return super().resolution(scene, h, paper)
 
     def check_built(self, scene, built) -> None:
-        """Springs that leave the bulk no digits are refused as for every
-        method, first (:func:`contactcore.health.check_springs`); then
-        penalty Coulomb springs that dwarf the softer body at this node
+        """Penalty Coulomb springs that dwarf the softer body at this node
         spacing (:func:`contactcore.health.check_friction_springs`)."""
-        system = built.system
-        health.check_springs(scene, system.collective.gather(system.interface.weights))
         health.check_friction_springs(scene, built.h, tol.EFGM_FRICTION_SPRINGS, self.name)
 
     @classmethod

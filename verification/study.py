@@ -281,9 +281,9 @@ def study(scene_name: str, params: list[tuple[str, list[float]]], method_names: 
         check_resolution(base, h)
     labels = point_columns(names)
     points = list(itertools.product(*(values for _, values in params)))
-    check_points(base, names, points)
+    scenes = check_points(base, names, points)
     if not allow_large:
-        check_sizes(base, names, points, methods.expand(method_names), degree, h)
+        check_sizes(scenes, names, points, methods.expand(method_names), degree, h)
     cases = [Case(scene_name, tuple(zip(names, pt)), m, degree, h, cell) for pt in points
              for m in methods.expand(method_names)]
     rows = []
@@ -311,36 +311,42 @@ def study(scene_name: str, params: list[tuple[str, list[float]]], method_names: 
     return text
 
 
-def check_points(base, names: list[str], points: list[tuple]) -> None:
+def check_points(base, names: list[str], points: list[tuple]) -> list:
     """Every point's scene built and validated (:func:`scene_at`; no
     mesh, no solve), in study order: the first that cannot be ends the
     study with a SceneError naming it, by the parameter and value where
     the message does not already (a scene's own field, such as
-    ``interface``, names neither)."""
+    ``interface``, names neither).  Returns the scenes."""
+    scenes = []
     for point in points:
         try:
-            scene_at(base, dict(zip(names, point)))
+            scenes.append(scene_at(base, dict(zip(names, point))))
         except SceneError as exc:
             if exc.field.startswith("--param"):
                 raise
-            where = ", ".join(f"{p} = {_shown(v)}" for p, v in zip(names, point))
-            raise SceneError(f"--param {where}", str(exc)) from None
+            raise SceneError(f"--param {_where(names, point)}", str(exc)) from None
+    return scenes
 
 
-def check_sizes(base, names: list[str], points: list[tuple], method_names: list[str], degree: int, h) -> None:
-    """Every point's solve, with every method, within this machine's
-    memory (:func:`contactcore.budget.check_budget`), before any solve:
-    the first that is not ends the study with a TooLargeError naming it
-    (``--param h --values 1e-9`` would otherwise mesh until the system
-    stops the process)."""
-    for point in points:
-        scene, given = scene_at(base, dict(zip(names, point))), dict(zip(names, point))
-        at = given.get("h", h if h is not None else scene.h)
+def check_sizes(scenes: list, names: list[str], points: list[tuple], method_names: list[str], degree: int,
+                h) -> None:
+    """Every point's solve (its scene of :func:`check_points`), with every
+    method, within this machine's memory
+    (:func:`contactcore.budget.check_budget`), before any solve: the first
+    that is not ends the study with a TooLargeError naming it (``--param h
+    --values 1e-9`` would otherwise mesh until the system stops the
+    process)."""
+    for scene, point in zip(scenes, points):
+        at = dict(zip(names, point)).get("h", h if h is not None else scene.h)
         if at is None:
             continue  # refused by the solve itself, as a failed row, naming the missing h
         for name in method_names:
-            where = ", ".join(f"{p} = {_shown(v)}" for p, v in zip(names, point))
-            check_budget(scene, at, degree, name, field=f"--param {where}: h")
+            check_budget(scene, at, degree, name, field=f"--param {_where(names, point)}: h")
+
+
+def _where(names: list[str], point: tuple) -> str:
+    """A point as the messages name it: ``kN = 1e+09, radius = 0.2``."""
+    return ", ".join(f"{p} = {_shown(v)}" for p, v in zip(names, point))
 
 
 def _shown(value) -> str:
