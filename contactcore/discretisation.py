@@ -109,9 +109,10 @@ class Discretisation:
             raise DiscretisationError(f"{self.name}: a general level set Γ is supported by xfem only "
                                       "(its mesh ignores Γ)")
 
-    def check_built(self, scene, built: Built) -> None:
-        """Refuse a scene that this method's ``built`` system cannot carry
-        (what :meth:`check` cannot know before the spacing): nothing here."""
+    def check_resolution(self, scene, resolution: Resolution) -> None:
+        """Refuse a scene that this method cannot carry at ``resolution``
+        (what :meth:`check` cannot know before the spacing), before anything
+        is built: nothing here."""
 
     def resolution(self, scene, h: float | None, paper: bool) -> Resolution:
         """This discretisation's resolution of ``scene`` by the one rule
@@ -240,11 +241,11 @@ def solve(scene, discretisation: Discretisation, h: float | None = None, *, pape
     discretisation.check(scene)
     start, timings = time.perf_counter(), Timings()
     resolution = discretisation.resolution(scene, h, paper)
+    discretisation.check_resolution(scene, resolution)
     built = (reuse.build(scene, discretisation, resolution, timings) if reuse is not None
              else discretisation.build(scene, resolution, timings))
     try:
         exact.check(scene.law, built.system.interface, discretisation.name)
-        discretisation.check_built(scene, built)
         with timings.measure("solve"):
             x, path, report = solve_increments(scene, built.system, progress)
     finally:

@@ -44,7 +44,7 @@ from contactcore.scene import Pressure, Traction, body_force
 from contactcore.exact import is_exact
 
 from . import distributed, sparse_solver, traction
-from .nodes import NodeSet, check_nodes, grid_nodes, support_radii
+from .nodes import NodeSet, node_set, support_radii
 from .operators import SYMMETRIC, Approximation, block_diagonal, find_enrichment
 from .options import BASES, EFGM  # noqa: F401 (BASES re-exported: the bases by name)
 from contactcore.cutcell import Rule
@@ -69,13 +69,6 @@ GAUSS_POINTS = {1: 6, 2: 8}
 #: spline a linear basis needs about 12 nodes in a support (dmax = 2.0 on a
 #: grid), a quadratic one about 28 (dmax = 3.0).
 DMAX = {1: 2.0, 2: 3.0}
-
-
-def _node_set(scene: Scene, resolution: Resolution) -> NodeSet:
-    """The paper's grid of nodes, or a grid of spacing h."""
-    if resolution.counts is not None:
-        return grid_nodes(scene, counts=resolution.counts)
-    return grid_nodes(scene, resolution.h)
 
 
 # ----- the discrete system --------------------------------------------------
@@ -249,7 +242,7 @@ def build(scene: Scene, options: EFGM, resolution: Resolution, timings: Timings)
     dmax = DMAX[degree] if options.dmax is None else options.dmax
     ranks = Collective(distributed.communicator(options.comm))  # serial unless mpirun gave several ranks
     with timings.measure("mesh"):
-        ns = check_nodes(scene, options.nodes) if options.nodes is not None else _node_set(scene, resolution)
+        ns = node_set(scene, resolution, options.nodes)
         radii = support_radii(ns, dmax, options.support == "rectangular")
         vol = volume_rule(scene, ns.h, n)
         gam_pts, gam_w, gam_n = interface_rule(scene, ns.h, n)

@@ -24,6 +24,16 @@ class NodeSet:
     h: float
 
 
+def node_set(scene: Scene, resolution, nodes: np.ndarray | None = None) -> NodeSet:
+    """A solve's nodes: the user's ``nodes`` (checked), else the paper's
+    grid (``resolution.counts``), else a grid of spacing ``resolution.h``."""
+    if nodes is not None:
+        return check_nodes(scene, nodes)
+    if resolution.counts is not None:
+        return grid_nodes(scene, counts=resolution.counts)
+    return grid_nodes(scene, resolution.h)
+
+
 def grid_nodes(scene: Scene, h: float | None = None, counts: tuple[int, int] | None = None) -> NodeSet:
     """A regular grid: ``counts`` nodes per direction, or spacing ≈ h."""
     dom = scene.domain

@@ -66,10 +66,13 @@ class EFGM(Discretisation):
             return Resolution(None)
         return super().resolution(scene, h, paper)
 
-    def check_built(self, scene, built) -> None:
-        """Penalty Coulomb springs that dwarf the softer body at this node
-        spacing (:func:`contactcore.health.check_friction_springs`)."""
-        health.check_friction_springs(scene, built.h, tol.EFGM_FRICTION_SPRINGS, self.name)
+    def check_resolution(self, scene, resolution) -> None:
+        """Penalty Coulomb springs that dwarf the softer body at the node
+        spacing of ``resolution`` (:func:`contactcore.health.check_friction_springs`)."""
+        from efgm.nodes import node_set
+
+        health.check_friction_springs(scene, node_set(scene, resolution, self.nodes).h,
+                                      tol.EFGM_FRICTION_SPRINGS, self.name)
 
     @classmethod
     def label(cls, result) -> str:

@@ -152,18 +152,18 @@ def _renumbered(perturbation: str):
         return
     import efgm.method as efgm_method
 
-    grid = efgm_method._node_set
+    grid = efgm_method.node_set
 
-    def shuffled(scene, resolution):
-        nodes = grid(scene, resolution)
+    def shuffled(scene, resolution, given=None):
+        nodes = grid(scene, resolution, given)
         order = np.random.default_rng(tol.ROUNDOFF_SEED).permutation(len(nodes.x))
         return dataclasses.replace(nodes, x=nodes.x[order])
 
-    efgm_method._node_set = shuffled
+    efgm_method.node_set = shuffled
     try:
         yield
     finally:
-        efgm_method._node_set = grid
+        efgm_method.node_set = grid
 
 
 def fingerprint(case: str, method: str, perturbation: str = "none") -> dict:

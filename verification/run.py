@@ -241,6 +241,9 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
     h = _estimated_h(scene, h) if estimate else h
     finest = h / 2 ** (estimate - 1) if estimate else h  # the answer's h, where a reference is solved
     nodes = read_nodes(nodes_file) if nodes_file else None
+    methods.check_solvable(chosen, scene, h, degree, paper, nodes=nodes, **given)
+    if compared:
+        methods.check_solvable([reference[0]], scene, finest, reference[1], paper, petsc_options=petsc_options or None)
     out = Path(out)
     profiles, summaries, paths, estimated, gaps = {}, [], {}, {}, {}
     for name in chosen:
