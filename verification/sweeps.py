@@ -23,7 +23,9 @@ a bug).  The sweeps:
   against ``k_N/k_T`` from 1 to 1e4, relative to max |t_T|;
 * ``kN_coulomb``, ``kT_coulomb``: the ``kN``/``kT`` sweeps repeated with the
   ``coulomb`` law, on the layered closed form (pressure, stick, slip,
-  reversal: 20 Newton-solved increments), error in the final displacement.
+  reversal: 20 Newton-solved increments), error in the final displacement;
+  here α is taken with the softer material's E, as the methods' limits on
+  Coulomb springs are.
 
 Writes ``DIR/sweeps.csv``, ``DIR/sweeps.md`` (one table per sweep and the
 range each method handles) and ``DIR/<sweep>.png``.
@@ -136,10 +138,12 @@ def _springs(build, which: str, h: float = H, factors=PENALTY_FACTORS):
 
 
 def _friction_springs(which: str):
-    """The layered closed form with one spring k = α E/h, at its last increment."""
+    """The layered closed form with one spring k = α E₋/h, at its last
+    increment: E₋ the softer material's modulus, the α by which a method
+    refuses Coulomb springs (:func:`contactcore.health.check_friction_springs`)."""
     cases = []
     for alpha in PENALTY_FACTORS:
-        k = alpha * _stiffest(layered_slip().scene) / H
+        k = alpha * min(m.E for m in layered_slip().scene.materials.values()) / H
         c = layered_slip(**{which: k})
         cases.append(Case(alpha, c.scene, c.fields(c.history()[-1])))
     return cases
@@ -213,9 +217,9 @@ def sweeps() -> list[Sweep]:
               methods=("efgm",), nominal=0.0, logx=False),
         Sweep("false_tN", "k_N/k_T", "scene B: false t_N / max |t_T| (exact t_N = 0)", _stiffness_ratios,
               bound=tol.FALSE_TN_ACCEPTABLE),
-        Sweep("kN_coulomb", "α (k_N = α E/h)", "normal spring, coulomb law, layered closed form (20 increments)",
+        Sweep("kN_coulomb", "α (k_N = α E₋/h, E₋ the softer)", "normal spring, coulomb law, layered closed form (20 increments)",
               lambda: _friction_springs("kN"), nominal=1.0),
-        Sweep("kT_coulomb", "α (k_T = α E/h)", "tangential spring, coulomb law, layered closed form "
+        Sweep("kT_coulomb", "α (k_T = α E₋/h, E₋ the softer)", "tangential spring, coulomb law, layered closed form "
               "(20 increments)", lambda: _friction_springs("kT"), nominal=1.0),
     ]
 
