@@ -129,12 +129,14 @@ class _Newton:
 
     def _lift(self, supports) -> float:
         """The largest force on a free unknown of the prescribed
-        displacements at the ``supports``' factors, every other unknown at zero."""
+        displacements at the ``supports``' factors, every other unknown at
+        zero, over the ranks: each takes part in ``internal`` (a collective)
+        unless none holds a prescribed value."""
         prescribed = np.zeros(self.system.size)
         prescribed[self.system.fixed] = self.system.fixed_values(supports)
-        if not prescribed.any():
+        if self.ranks.all(not prescribed.any()):
             return 0.0
-        return float(np.max(np.abs(self.system.internal(prescribed)[self.free]), initial=0.0))
+        return self.ranks.max(float(np.max(np.abs(self.system.internal(prescribed)[self.free]), initial=0.0)))
 
     def step(self, k: float) -> None:
         """Converge the step to increment ``k`` from the committed state and
