@@ -218,8 +218,8 @@ class Scene:
         their measurements are in contactcore.tolerances):
 
         * springs stiff enough to lock the jump of an unfitted method on a
-          curved Γ (not ``fitted``): ``k h / E > LOCKING_WARN``, E the stiffer
-          modulus;
+          curved Γ (not ``fitted``): ``k h / E > LOCKING_WARN``, E the softer
+          modulus (the body whose deformation the springs over-constrain);
         * a normal traction ``t_N = k_N g_N`` that amplifies the
           discretisation error of ``g_N`` on a circle of radius R:
           ``(k_N/k_T)(h/2R)² > FALSE_TN_WARN`` (docs/scenes.md, scene B).
@@ -228,9 +228,9 @@ class Scene:
         law, itf = self.law, self.interface
         if not hasattr(law, "kN"):  # enforced exactly: no springs
             return warnings
-        alpha = law.stiffness_scale * h / max(m.E for m in self.materials.values())
+        alpha = law.stiffness_scale * h / min(m.E for m in self.materials.values())
         if not fitted and not isinstance(itf, LineInterface) and alpha > tol.LOCKING_WARN:
-            warnings.append(f"interface springs of {alpha:.1e}·E/h (above {tol.LOCKING_WARN:.0e}·E/h) on a curved "
+            warnings.append(f"interface springs of {alpha:.1e}·E/h, E the softer body's (above {tol.LOCKING_WARN:.0e}·E/h), on a curved "
                             "Γ that cuts the discretisation: penalty locking may raise the error tenfold and lower "
                             "the convergence rate; soften the springs or refine")
         if isinstance(itf, CircleInterface):
