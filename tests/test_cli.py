@@ -212,7 +212,8 @@ def test_run_measures_a_quantity_against_its_floor(tmp_path):
 
 @pytest.mark.parametrize("argv, failing, named", [
     (["run", "A", "--method", "fe", "xfem", "--h", "0.2"], lambda degree, h: degree == 2,
-     "error: fe (the reference, degree 2): scene A: no answer"),
+     "error: fe (the reference, degree 2): scene A: no answer; the methods asked for solved: compare them "
+     "without a reference with --reference none, or with another, --reference METHOD:DEGREE"),
     (["run", "A", "--method", "fe", "--h", "0.2", "--estimate"], lambda degree, h: h < 0.2,
      "error: the estimate's run at h = 0.1: scene A: no answer"),
 ])

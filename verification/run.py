@@ -194,8 +194,16 @@ def _solve_reference(scene, reference, h, paper, petsc_options, out: Path, profi
     name, degree = reference
     log.info("scene %s: solving the reference, %s (degree %d)", scene.name, name, degree)
     solve, on_comm = pool.solver(name) if pool.under_mpi_pool() else (methods.solver(name), {})
-    result = _prefixed(f"{name} (the reference, degree {degree})", solve, scene, h, degree=degree, paper=paper,
-                       **methods.options_for(name, petsc_options=petsc_options), **on_comm)
+    try:
+        result = _prefixed(f"{name} (the reference, degree {degree})", solve, scene, h, degree=degree, paper=paper,
+                           **methods.options_for(name, petsc_options=petsc_options), **on_comm)
+    except SolverOptionError:
+        raise
+    except SolverError as exc:
+        hinted = SolverError(f"{exc}; the methods asked for solved: compare them without a reference with "
+                             "--reference none, or with another, --reference METHOD:DEGREE")
+        hinted.details = getattr(exc, "details", "")
+        raise hinted from None
     summaries.append({**result.summary(), "method": f"{name} (reference)"})
     for prof in sample_profiles(scene, result.fields, result.interface):
         files.write_profile_csv(out / "reference" / "profiles" / f"{prof.id}.csv", prof)
