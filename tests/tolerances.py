@@ -567,7 +567,7 @@ NITSCHE_CUT_AGREE = {1: 0.15, 2: 0.02}
 #: resolution, set by where the change falls in each mesh's cells, not the
 #: method's stability on the cut: fe P2 itself at h = 0.025 is up to 2.7 %
 #: off fe P2 at h/2 there (placement 0 moved by ±2, ±4, ±8 mm; 0.3–2.7 %),
-#: and the reference is up to 3.0 % off fe P2 at h/4.  Points within this
+#: and the reference is up to 3.05 % off fe P2 at h/4.  Points within this
 #: many cells (of the tested h) of a change are held to
 #: NITSCHE_OPENING_AGREE instead: the cell that holds the change and the
 #: next, where every P2 method's error is largest (measured 2026-11-27
