@@ -28,7 +28,8 @@ PLACEMENTS = [(20.0, 0.4)] + seeded_inclined(23)
 METHODS = {"xfem-quad-P1": XFEM(degree=1, cell="quad"), "xfem-quad-P2": XFEM(degree=2, cell="quad"),
            "xfem-triangle-P1": XFEM(degree=1, cell="triangle"), "xfem-triangle-P2": XFEM(degree=2, cell="triangle"),
            "efgm-P1": EFGM(degree=1), "efgm-P2": EFGM(degree=2)}
-#: Γ's ends are left out as in the inclined-Γ tests (tests/placements.py).
+#: A tenth of Γ's span at either end is left out, as the inclined-Γ tests
+#: leave out the samples near Γ's ends (tests/placements.py).
 END_FRACTION = 0.1
 
 
