@@ -220,6 +220,7 @@ class _Newton:
         lift = self._lift(supports)
         history, tangent, start, du, u0 = [], None, 0.0, None, u.copy()
         self._secant = None  # each step its own secant
+        self.factorisations.begin_step()
         evaluated = None  # the line search's response and residual at u
         for it in range(1, tol.NEWTON_MAX_ITERATIONS + 1):
             if evaluated is None:
@@ -364,18 +365,19 @@ class _Newton:
         one whose closed points leave a body free is tied (:meth:`_tied`)."""
         if health.lets_go(self.scene, *self._gamma, self.ranks.gather(status)):
             tangent = self._tied(tangent, status)
-        if secant is not None and self._dominated(status):
+        dominated = secant is not None and self._dominated(status)
+        if dominated:
             tangent = self._regularised(tangent, secant)
         try:
-            return (*self.factorisations.solve(tangent, rhs, scale), tangent)
+            return (*self.factorisations.solve(tangent, rhs, scale, detour=dominated), tangent)
         except SolverError:
             # an exact law's slip tangent leaves a body held by friction
             # alone free to turn: one secant step there
-            regularised = None if secant is None or self._dominated(status) else self._regularised(tangent, secant)
+            regularised = None if secant is None or dominated else self._regularised(tangent, secant)
             if regularised is None:
                 raise
             self._singular.append(status)
-            return (*self.factorisations.solve(regularised, rhs, scale), regularised)
+            return (*self.factorisations.solve(regularised, rhs, scale, detour=True), regularised)
 
     def _tied(self, tangent: np.ndarray, status: np.ndarray) -> np.ndarray:
         """The law's tangent with each open point tied by FREE_BODY_TIE
