@@ -194,20 +194,29 @@ def _solve_reference(scene, reference, h, paper, petsc_options, out: Path, profi
     name, degree = reference
     log.info("scene %s: solving the reference, %s (degree %d)", scene.name, name, degree)
     solve, on_comm = pool.solver(name) if pool.under_mpi_pool() else (methods.solver(name), {})
-    try:
-        result = _prefixed(f"{name} (the reference, degree {degree})", solve, scene, h, degree=degree, paper=paper,
-                           **methods.options_for(name, petsc_options=petsc_options), **on_comm)
-    except SolverOptionError:
-        raise
-    except SolverError as exc:
-        hinted = SolverError(f"{exc}; the methods asked for solved: compare them without a reference with "
-                             "--reference none, or with another, --reference METHOD:DEGREE")
-        hinted.details = getattr(exc, "details", "")
-        raise hinted from None
+    result = _as_reference(reference, "the methods asked for solved: compare them", solve, scene, h, degree=degree,
+                           paper=paper, **methods.options_for(name, petsc_options=petsc_options), **on_comm)
     summaries.append({**result.summary(), "method": f"{name} (reference)"})
     for prof in sample_profiles(scene, result.fields, result.interface):
         files.write_profile_csv(out / "reference" / "profiles" / f"{prof.id}.csv", prof)
         profiles.setdefault(prof.id, {})[reference_label(reference)] = prof
+
+
+def _as_reference(reference, what: str, call, *args, **kwargs):
+    """``call(*args, **kwargs)`` for the ``reference`` (method, degree); its
+    failure (not a refused option) named as the reference's
+    (:func:`_prefixed`) and followed by ``what`` to do: ``what`` without a
+    reference, ``--reference none``, or with another."""
+    name, degree = reference
+    try:
+        return _prefixed(f"{name} (the reference, degree {degree})", call, *args, **kwargs)
+    except SolverOptionError:
+        raise
+    except SolverError as exc:
+        hinted = SolverError(f"{exc}; {what} without a reference with --reference none, or with another, "
+                             "--reference METHOD:DEGREE")
+        hinted.details = getattr(exc, "details", "")
+        raise hinted from None
 
 
 def _progress(name: str):
@@ -251,7 +260,8 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
     nodes = read_nodes(nodes_file) if nodes_file else None
     methods.check_solvable(chosen, scene, h, degree, paper, nodes=nodes, **given)
     if compared:
-        methods.check_solvable([reference[0]], scene, finest, reference[1], paper, petsc_options=petsc_options or None)
+        _as_reference(reference, "compare the methods", methods.check_solvable, [reference[0]], scene, finest,
+                      reference[1], paper, petsc_options=petsc_options or None)
     out = Path(out)
     profiles, summaries, paths, estimated, gaps = {}, [], {}, {}, {}
     for name in chosen:
