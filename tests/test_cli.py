@@ -220,6 +220,18 @@ def test_a_refusal_before_any_solve_reads_as_the_solves_own(capsys, tmp_path):
     assert not (tmp_path / "r").exists()
 
 
+def test_run_refuses_an_estimate_on_fixed_nodes(capsys, tmp_path):
+    """``--nodes`` fix efgm's nodes at every h: an estimate's runs would be
+    one run repeated, its error estimated as zero; refused in one line."""
+    nodes = tmp_path / "nodes.txt"
+    nodes.write_text("\n".join(f"{x / 10:g} {y / 10:g}" for x in range(11) for y in range(11)))
+    assert main(["run", "A", "--method", "efgm", "--nodes", str(nodes), "--estimate",
+                 "--out", str(tmp_path / "r")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith("error: --estimate: the nodes of --nodes are fixed"), err
+    assert not (tmp_path / "r").exists()
+
+
 def test_run_measures_a_quantity_against_its_floor(tmp_path):
     """``run --floor sxy=1e3``: summary.md's table is the agreement table of
     the written profiles with that floor (not the one without), says so,

@@ -292,7 +292,7 @@ def _check(scene: Scene, chosen: list[str], h, degree: int, paper: bool, allow_l
            reference, **given) -> None:
     """Refuse, before any work, an option no chosen method takes, a method
     that cannot run under this launch, an ``h`` that does not fit the
-    domain, an estimate on the paper's fixed grids, and (unless ``paper``
+    domain, an estimate on the paper's fixed grids or on fixed ``nodes``, and (unless ``paper``
     or ``allow_large``) a run too large for the machine: each method at
     the finest h it solves, the ``reference`` (method, degree; None when
     nothing is compared) there too.  Warn about an ``h`` that leaves few
@@ -303,6 +303,9 @@ def _check(scene: Scene, chosen: list[str], h, degree: int, paper: bool, allow_l
         check_resolution(scene, h)
     if estimate and paper:
         raise ContactError("--estimate: the paper's grids are fixed, there is no h/2 to solve at; give --h instead")
+    if estimate and given.get("nodes"):
+        raise ContactError("--estimate: the nodes of --nodes are fixed, there is no h/2 to solve at (every run would "
+                           "be the same, its error estimated as zero); leave out --nodes or --estimate")
     span = smallest_dimension(scene.domain)
     if (h or scene.h or 0.0) > span / tol.MIN_CELLS_ACROSS and not paper:
         log.warning("h = %g leaves fewer than %d cells across the domain's smallest dimension (%g): the profiles "
