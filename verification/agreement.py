@@ -62,7 +62,7 @@ def displacement_scale(scene: Scene) -> float:
     U, taken with the softer modulus; a stiff disc in a 100× softer block
     moves with the block, 100 times the stiff body's L τ/E, while a
     prescribed displacement is the same whichever body is softer)."""
-    soft = min(m.E for m in scene.materials.values())
+    soft = scene.softer_modulus
     return Scales.of(scene.with_changes(materials={b: replace(m, E=soft) for b, m in scene.materials.items()})
                      ).displacement
 
