@@ -119,26 +119,27 @@ def check_springs(scene, weights) -> None:
                               f"exists); use k_{c} <= {tol.SPRING_ENTRY_MAX * E / w * k_user / k:.2e} Pa/m")
 
 
-def check_friction_springs(scene, h: float, limit: float, method: str) -> None:
-    """Refuse a penalty Coulomb law whose springs exceed ``limit`` times
-    the softer body's ``E/h`` (``α = k h / E``): ``method``'s tractions at
-    Γ's points oscillate there, and its stick/slip decisions with them
-    (the measurements are in contactcore.tolerances, EFGM_FRICTION_SPRINGS).
-    Springs at the limit to round-off (``α`` is formed from the scene
-    made dimensionless) are carried, and the largest spring the message
-    offers is rounded down, so that it is carried too."""
+def check_friction_springs(scene, h: float, limits: dict, method: str) -> None:
+    """Refuse a penalty Coulomb law whose spring ``k_c`` (c = N, T)
+    exceeds ``limits[c]`` times the softer body's ``E/h`` (``α = k_c h /
+    E``): ``method``'s tractions at Γ's points oscillate there, and its
+    stick/slip decisions with them (the measurements are in
+    contactcore.tolerances, EFGM_FRICTION_SPRINGS).  Springs at the limit
+    to round-off (``α`` is formed from the scene made dimensionless) are
+    carried, and the largest spring the message offers is rounded down, so
+    that it is carried too."""
     if getattr(scene.law, "name", None) != "coulomb" or not hasattr(scene.law, "kN"):
         return
-    alpha = scene.law.stiffness_scale * h / scene.softer_modulus
-    if alpha > limit * (1 + tol.LIMIT_ROUNDOFF):
-        c, _, k_user = max(_springs(scene), key=lambda spring: spring[1])
-        h_user = h * Scales.of(scene.user).length
-        raise SolverError(f"interface.law.k{c}: {k_user:.3g} Pa/m is {alpha:.1e} times the softer body's E/h "
-                          f"(h = {h_user:.3g}, {method}'s spacing), "
-                          f"above the {limit:.0e} {method} carries under Coulomb friction: its tractions at Γ's "
-                          f"points oscillate from point to point and the stick/slip decisions follow the "
-                          f"oscillation; use k_{c} <= {_rounded_down(k_user * limit / alpha):.2e} Pa/m, a spacing h <= "
-                          f"{_rounded_down(h_user * limit / alpha):.2e}, or fe or xfem")
+    for c, k, k_user in _springs(scene):
+        alpha, limit = k * h / scene.softer_modulus, limits[c]
+        if alpha > limit * (1 + tol.LIMIT_ROUNDOFF):
+            h_user = h * Scales.of(scene.user).length
+            raise SolverError(f"interface.law.k{c}: {k_user:.3g} Pa/m is {alpha:.1e} times the softer body's E/h "
+                              f"(h = {h_user:.3g}, {method}'s spacing), above the {limit:.0e} {method} carries for "
+                              f"k_{c} under Coulomb friction: its tractions at Γ's points oscillate from point to "
+                              f"point and the stick/slip decisions follow the oscillation; use k_{c} <= "
+                              f"{_rounded_down(k_user * limit / alpha):.2e} Pa/m, a spacing h <= "
+                              f"{_rounded_down(h_user * limit / alpha):.2e}, or fe or xfem")
 
 
 def _rounded_down(x: float, digits: int = 3) -> float:

@@ -59,7 +59,7 @@ def _efgm_springs_limit():
 
     base = layered_slip()
     scene = base.scene
-    return _layered(E_minus_factor=scene.law.kN * scene.h / (0.5 * core_tol.EFGM_FRICTION_SPRINGS * base.E[0]))
+    return _layered(E_minus_factor=scene.law.kN * scene.h / (0.5 * core_tol.EFGM_FRICTION_SPRINGS["N"] * base.E[0]))
 
 
 def _shifted():

@@ -164,7 +164,7 @@ def test_run_refuses_a_floor_that_cannot_apply_before_any_solve(capsys, tmp_path
 def test_run_refuses_a_scene_one_method_refuses_before_any_method_solves(capsys, tmp_path, monkeypatch):
     """``run --method all`` on the layered closed form with its springs at
     twice the Coulomb springs efgm carries (α = k_N h/E₋ =
-    2·EFGM_FRICTION_SPRINGS at the scene's h): efgm's refusal comes before
+    2·EFGM_FRICTION_SPRINGS["N"] at the scene's h): efgm's refusal comes before
     fe or xfem solves, in one line, exit status 2 and no folder."""
     from contactcore import load_scene
     from contactcore.scenes import __path__ as shipped
@@ -175,14 +175,14 @@ def test_run_refuses_a_scene_one_method_refuses_before_any_method_solves(capsys,
         raise AssertionError("a method was solved")
 
     base = load_scene("layered-slip")
-    kN = 2 * EFGM_FRICTION_SPRINGS * min(m.E for m in base.user.materials.values()) / base.user.h
+    kN = 2 * EFGM_FRICTION_SPRINGS["N"] * min(m.E for m in base.user.materials.values()) / base.user.h
     text = (Path(shipped[0]) / "layered-slip.toml").read_text()
     scene = tmp_path / "stiff.toml"
     scene.write_text(re.sub(r"(?m)^kN = .*$", f"kN = {kN:g}", text, count=1))
     monkeypatch.setattr(methods, "solver", no_solve)
     assert main(["run", str(scene), "--method", "all", "--out", str(tmp_path / "r")]) == 2
     err = capsys.readouterr().err.strip().splitlines()
-    assert len(err) == 1 and "efgm carries under Coulomb friction" in err[0], err
+    assert len(err) == 1 and "efgm carries for k_N under Coulomb friction" in err[0], err
     assert not (tmp_path / "r").exists()
 
 
@@ -194,7 +194,7 @@ def _stiff_c_coulomb(tmp_path) -> Path:
 
     text = (Path(shipped[0]) / "C-coulomb.toml").read_text()
     scene = tmp_path / "stiff-c.toml"
-    scene.write_text(re.sub(r"(?m)^kN = .*$", f"kN = {2.5 * EFGM_FRICTION_SPRINGS * 2e11 / 0.1:g}", text, count=1))
+    scene.write_text(re.sub(r"(?m)^kN = .*$", f"kN = {2.5 * EFGM_FRICTION_SPRINGS['N'] * 2e11 / 0.1:g}", text, count=1))
     return scene
 
 

@@ -241,7 +241,7 @@ def test_efgm_answers_coulomb_springs_below_its_limit_and_refuses_them_above(sha
     patch test's bound, g_T to EFGM_STIFF_SPRINGS_GT; above it refuses
     before any solve and names the largest spring it carries (k_N / share)."""
     h, kN = layered.scene.h, layered.scene.law.kN
-    case = layered_slip(E=(kN * h / (share * core_tol.EFGM_FRICTION_SPRINGS), layered.E[1]))
+    case = layered_slip(E=(kN * h / (share * core_tol.EFGM_FRICTION_SPRINGS["N"]), layered.E[1]))
     if share > 1:
         refusal = r"above the 1e\+03 efgm carries .* use k_N <= " + re.escape(f"{kN / share:.2e} Pa/m")
         with pytest.raises(SolverError, match=refusal):
@@ -249,6 +249,18 @@ def test_efgm_answers_coulomb_springs_below_its_limit_and_refuses_them_above(sha
         return
     result = methods.solver("efgm")(case.scene, estimate_condition=False)
     _assert_closed_form_path(result, case, tol.FRICTION_CLOSED_FORM["efgm"][0], tol.EFGM_STIFF_SPRINGS_GT)
+
+
+def test_efgm_refuses_a_tangential_spring_above_its_own_limit(layered):
+    """k_T alone at twice EFGM_FRICTION_SPRINGS["T"] of the − layer's E/h
+    (k_N unchanged, far below its own limit) is refused before any solve,
+    naming k_T and the largest k_T carried: a stiff k_T alone made Newton
+    fail at α_T = 1e3, below the k_N limit."""
+    h, E = layered.scene.h, layered.scene.softer_modulus
+    kT = 2 * core_tol.EFGM_FRICTION_SPRINGS["T"] * E / h
+    refusal = r"interface\.law\.kT: .* use k_T <= " + re.escape(f"{kT / 2:.2e} Pa/m")
+    with pytest.raises(SolverError, match=refusal):
+        methods.solver("efgm")(layered_slip(kT=kT).scene, estimate_condition=False)
 
 
 @pytest.mark.parametrize("method", METHODS)

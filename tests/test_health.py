@@ -316,7 +316,7 @@ def test_coulomb_springs_at_the_limit_efgm_quotes_are_carried():
         h = grid_nodes(dimensionless, 0.1 / scales.length).h
         health.check_friction_springs(dimensionless, h, EFGM_FRICTION_SPRINGS, "efgm")
 
-    check(EFGM_FRICTION_SPRINGS * 2e11 / 0.1, 2e11)
+    check(EFGM_FRICTION_SPRINGS["N"] * 2e11 / 0.1, 2e11)
     with pytest.raises(SolverError, match=r"use k_N <= (\S+) Pa/m") as refused:
         check(3e15, 2.4691e11, 3e11)
     quoted = float(re.search(r"use k_N <= (\S+) Pa/m", str(refused.value)).group(1))

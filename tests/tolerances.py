@@ -370,7 +370,7 @@ EFGM_DISTRIBUTED_ASSEMBLY = 1e-13
 #: layer (contrast 1e-8) 1.8e-6 — its closed form holds only to
 #: SOFT_LAYER_CLOSED_FORM.  efgm refuses those three contrasts before any
 #: solve (springs 5e5–5e7 times the softer body's E/h, above
-#: contactcore.tolerances.EFGM_FRICTION_SPRINGS), alike under every
+#: contactcore.tolerances.EFGM_FRICTION_SPRINGS["N"]), alike under every
 #: perturbation; the − layer softened to half that limit (α = 500,
 #: measured 2026-11-27, Haswell, Nehalem, Sandybridge, orderings 0/2 or 5
 #: shuffle seeds, the load change; status maps identical): fe 8.7e-12,
