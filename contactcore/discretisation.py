@@ -109,7 +109,7 @@ class Discretisation:
             raise DiscretisationError(f"{self.name}: a general level set Γ is supported by xfem only "
                                       "(its mesh ignores Γ)")
 
-    def check_resolution(self, scene, resolution: Resolution) -> None:
+    def check_spacing(self, scene, resolution: Resolution) -> None:
         """Refuse a scene that this method cannot carry at ``resolution``
         (what :meth:`check` cannot know before the spacing), before anything
         is built: nothing here."""
@@ -232,11 +232,11 @@ class Reuse:
 def _refused(scene, discretisation: Discretisation, h: float | None, paper: bool) -> Resolution:
     """The ``discretisation``'s resolution of the dimensionless ``scene``,
     after its refusals of it there (:meth:`Discretisation.check`,
-    :meth:`Discretisation.check_resolution`): what a solve refuses before
+    :meth:`Discretisation.check_spacing`): what a solve refuses before
     anything is built."""
     discretisation.check(scene)
     resolution = discretisation.resolution(scene, h, paper)
-    discretisation.check_resolution(scene, resolution)
+    discretisation.check_spacing(scene, resolution)
     return resolution
 
 

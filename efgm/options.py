@@ -66,7 +66,7 @@ class EFGM(Discretisation):
             return Resolution(None)
         return super().resolution(scene, h, paper)
 
-    def check_resolution(self, scene, resolution) -> None:
+    def check_spacing(self, scene, resolution) -> None:
         """Penalty Coulomb springs that dwarf the softer body at the node
         spacing of ``resolution`` (:func:`contactcore.health.check_friction_springs`)."""
         from efgm.nodes import node_set
