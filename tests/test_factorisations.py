@@ -70,16 +70,15 @@ def test_only_the_first_increment_factorises(method, law, counted):
 
 
 @pytest.mark.parametrize("method", ["fe", "xfem"])
-def test_a_singular_map_is_factorised_once(method, counted):
+def test_a_map_free_to_turn_is_not_factorised(method, counted):
     """Exact C-coulomb's first increment reaches maps where every closed
-    point slips, the rod free to turn: the first such tangent fails its
-    factorised solve and is regularised; the maps it dominates (no point
-    closed or sticking where it was not) are regularised at once, and the
-    secant steps share one matrix: fewer factorisations than iterations
-    (before: more, fe P1 16 in a 14-iteration first increment, 7 of them
-    failed; xfem P1 12 in 10, 2 failed)."""
+    point slips, the rod free to turn: the map and Γ's geometry say so
+    (``health.slips_free``), so no factorisation of such a tangent is
+    tried and fails (whether MUMPS's pivots call it singular is
+    round-off's choice: one did, fe P1 and xfem P1), and the secant steps
+    share one matrix: fewer factorisations than iterations."""
     result, after = _run(method, "exact", counted)
-    assert counted["singular"] == 1
+    assert counted["singular"] == 0
     assert after[0] < result.solver.iterations[0]
 
 
