@@ -164,14 +164,12 @@ class _Newton:
     def _from_stiffer(self, k: float):
         """The step to ``k`` started from its solution at CONTINUATION_STEP
         times the stabilisation, where the softer continuation failed.
-        Newton from the committed state can settle on a map where every
-        closed point slips and none sticks: the body held by Γ alone turns
-        freely, the secant step's merit is flat, and no step leaves the map
-        (exact C-coulomb, fe P1 at h = 0.2: a residual of 4.5e-3 at β = 3,
-        and at β/10).  The stiffer problem's Newton takes other maps; its
-        answer differs from this one's by the stabilisation's small effect
-        (Nitsche is consistent) and starts Newton next to it with its
-        sticking points (there: 3 iterations to 5 sticking points)."""
+        Newton from the committed state can settle where no step leaves
+        its map (a body held by Γ alone whose closed points all slip, its
+        secant step's merit flat).  The stiffer problem's Newton takes other
+        maps; its answer differs from this one's by the stabilisation's
+        small effect (Nitsche is consistent) and starts Newton next to it
+        with its sticking points."""
         return self._at(k, 1.0, self._at(k, tol.CONTINUATION_STEP))
 
     def _continued(self, k: float, factor: float):

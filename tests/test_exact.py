@@ -409,12 +409,13 @@ def test_every_stabilisation_converges_to_one_answer(key):
     assert np.all(errors.max(axis=1) <= tol.BETA_ERROR_SPREAD * errors.min(axis=1)), errors
 
 
-def test_a_step_stuck_where_every_point_slips_starts_from_a_stiffer_answer():
+def test_a_step_through_maps_where_every_point_slips_converges():
     """Exact C-coulomb, fe P1 at h = 0.2: Newton from the unloaded state
-    (and from β/10's answer) settles where every closed point slips and
-    none sticks, the rod free to turn, at a residual of 4.5e-3; started
-    from 10β's answer it converges.  The answer is admissible: no closed
-    point in tension, |t_T| <= μ|t_N| everywhere, and some points stick."""
+    reaches maps where every closed point slips and none sticks, the rod
+    free to turn (before the pinned step: it settled there at a residual
+    of 4.5e-3, at β = 3 and β/10, and converged from 10β's answer).  The
+    answer is admissible: no closed point in tension, |t_T| <= μ|t_N|
+    everywhere, and some points stick."""
     scene = load_scene("C-coulomb")
     scene = scene.with_changes(law=make_law({"type": "coulomb", "mu": scene.law.mu, "enforcement": "exact"}))
     final = _solve(scene, FE(degree=1), 0.2).interface.final
