@@ -7,12 +7,15 @@ a factorisation made before.  :class:`KeptFactorisations` answers
 
 * by the factorisation kept for ``D`` itself (up to
   :data:`~contactcore.tolerances.FACTORISATIONS_KEPT` of them, in the
-  system's slots, the one used longest ago replaced first);
+  system's slots);
 * or, on one process, by a kept factorisation corrected to ``D`` where the
   two differ in a few rows (:class:`_Update`, Woodbury's identity), with the
   columns it needs solved as one block and kept for the next corrections
-  (:class:`_Columns`);
-* or by a new factorisation.
+  (:class:`_Columns`; a full set keeps only the rows ``D`` needs);
+* or by a new factorisation, into the slot of one made in the same Newton
+  step that ``D`` has moved past a correction's reach of (MUMPS then redoes
+  its numeric factorisation only, in the memory it has), else a free slot,
+  else the one used longest ago.
 
 Every solve is held to the health policy (:mod:`contactcore.health`) by its
 residual with ``J`` itself, so a correction of a singular ``J`` fails as a
@@ -50,6 +53,14 @@ class _Columns:
             self.rows = grown
         self.rows[count:count + len(keys)] = columns.T
         self.index.update(zip(keys, range(count, count + len(keys))))
+
+    def kept_for(self, keys: list[tuple[int, int]]) -> "_Columns":
+        """The columns of the rows ``keys`` only, in their order here."""
+        kept = sorted((self.index[k], k) for k in keys if k in self.index)
+        out = _Columns(self.rows.shape[1])
+        out.index = {k: i for i, (_, k) in enumerate(kept)}
+        out.rows = self.rows[[i for i, _ in kept]]
+        return out
 
 
 class _Update:
@@ -109,6 +120,11 @@ class _Update:
         return x, report
 
 
+def _changed_rows(kept: np.ndarray, tangent: np.ndarray) -> int:
+    """How many rows of the points' 2 × 2 tangents differ."""
+    return int(np.count_nonzero(np.any(tangent != kept, axis=2)))
+
+
 class KeptFactorisations:
     """The factorisations of one system's tangent kept for one interface
     (:class:`~contactcore.system.InterfaceOperator` or an exact law's
@@ -120,30 +136,51 @@ class KeptFactorisations:
         self.kept = []  # (slot, interface tangent) of the system's factorisations, last used last
         self.updates = []  # low-rank corrections of them (_Update), last made first
         self.columns = {}  # slot -> the _Columns its corrections share
+        self.this_step = set()  # the slots factorised since the step began (begin_step)
 
-    def solve(self, tangent: np.ndarray, rhs: np.ndarray, scale: float):
+    def solve(self, tangent: np.ndarray, rhs: np.ndarray, scale: float, detour: bool = False):
         """``(δu, report)`` with the points' ``tangent``: by the
         factorisation kept for it, or the low-rank correction of one
-        (:meth:`_corrected`), if there is one; else factorised into the slot
-        used longest ago (:data:`~contactcore.tolerances.FACTORISATIONS_KEPT`)."""
+        (:meth:`_corrected`), if there is one; else factorised into its
+        :meth:`_slot`.  A ``detour`` (a regularised tangent, which Newton
+        leaves for the law's own) takes no factorisation of the step's maps."""
         for i, (slot, kept) in enumerate(self.kept):
             if self.ranks.all(np.array_equal(kept, tangent)):
                 self.kept.append(self.kept.pop(i))
                 return self.system.solve(None, rhs, force_scale=scale, slot=slot)
         corrected = self._corrected(tangent, rhs, scale)
-        return corrected if corrected is not None else self._factorise(tangent, rhs, scale)
+        return corrected if corrected is not None else self._factorise(tangent, rhs, scale, detour)
 
-    def _factorise(self, tangent: np.ndarray, rhs: np.ndarray, scale: float):
-        """Factorise ``J`` with ``tangent`` into the slot free or used
-        longest ago, dropping what was kept of that slot, and solve."""
+    def begin_step(self) -> None:
+        """A new Newton step: the factorisations kept so far are of maps
+        a load path may return to (:meth:`_slot`)."""
+        self.this_step = set()
+
+    def _slot(self, tangent: np.ndarray, detour: bool) -> int:
+        """The slot a factorisation of ``tangent`` goes into: one factorised
+        in this step whose tangent differs from ``tangent`` in more rows than
+        a correction of it may (the status map moved past it, as it does
+        from the first iterate's map, every point sticking), refilled with
+        the same nonzero pattern, so that MUMPS redoes only its numeric
+        factorisation; else a free slot; else the one used longest ago."""
+        for slot, kept in ([] if detour else self.kept):
+            if slot in self.this_step and (self.ranks.sum(_changed_rows(kept, tangent))
+                                           > self.system.correction_columns(slot)[1]):
+                return slot
         used = {slot for slot, _ in self.kept}
         free = [s for s in range(tol.FACTORISATIONS_KEPT) if s not in used]
-        slot = free[0] if free else self.kept.pop(0)[0]
+        return free[0] if free else self.kept[0][0]
+
+    def _factorise(self, tangent: np.ndarray, rhs: np.ndarray, scale: float, detour: bool):
+        """Factorise ``J`` with ``tangent`` into its :meth:`_slot`, dropping
+        what was kept of that slot, and solve."""
+        slot = self._slot(tangent, detour)
         self.kept = [(s, t) for s, t in self.kept if s != slot]  # until the solve succeeds
         self.updates = [u for u in self.updates if u.slot != slot]
         self.columns.pop(slot, None)
         du, report = self.system.solve(self.interface.stiffness(tangent), rhs, force_scale=scale, slot=slot)
         self.kept.append((slot, tangent))
+        self.this_step.add(slot)
         return du, report
 
     def _corrected(self, tangent: np.ndarray, rhs: np.ndarray, scale: float):
@@ -170,12 +207,13 @@ class KeptFactorisations:
             columns = self.columns.get(slot, _Columns(0))
             new = sum(pc not in columns.index for pc in changed)
             most_new, most = self.system.correction_columns(slot)
-            if (len(changed) <= most and new <= most_new and len(columns) + new <= most
-                    and (best is None or new < best[0])):
+            if len(changed) <= most and new <= most_new and (best is None or new < best[0]):
                 best = (new, slot, kept, changed, most)
         if best is None:
             return None
-        _, slot, kept, changed, most = best
+        new, slot, kept, changed, most = best
+        if len(self.columns.get(slot, ())) + new > most:
+            self._drop_columns(slot, changed)
         update = _Update(self, slot, kept, tangent, changed, most)
         try:
             solved = update.solve(self, rhs, scale)
@@ -183,3 +221,11 @@ class KeptFactorisations:
             return None
         self.updates = [update, *self.updates][:tol.FACTORISATIONS_KEPT]
         return solved
+
+    def _drop_columns(self, slot: int, changed: list[tuple[int, int]]) -> None:
+        """Keep of ``slot``'s columns those of the rows ``changed`` only, and
+        none of its corrections (they read the columns by place): a budget
+        full of rows that have changed back, or that this tangent shares
+        with the factorised one, no longer costs a factorisation."""
+        self.columns[slot] = self.columns[slot].kept_for(changed)
+        self.updates = [u for u in self.updates if u.slot != slot]

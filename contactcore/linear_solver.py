@@ -219,8 +219,13 @@ def _mumps_status(ksp) -> tuple[int, int]:
         factor.destroy()
 
 
+class NullPivots(SolverError):
+    """A factorisation that completed and found the matrix singular: its
+    MUMPS analysis stands for the next matrix of the same pattern."""
+
+
 def _null_pivots(ksp, what: str) -> None:
-    """A clear error if MUMPS found null pivots in its factorisation."""
+    """A clear error (:class:`NullPivots`) if MUMPS found null pivots in its factorisation."""
     factor = _mumps_factor(ksp)
     if factor is None:
         return
@@ -229,7 +234,7 @@ def _null_pivots(ksp, what: str) -> None:
     finally:
         factor.destroy()
     if nulls > 0:
-        raise SolverError(f"{what} is singular to working precision: MUMPS found {nulls} null pivot(s) — "
+        raise NullPivots(f"{what} is singular to working precision: MUMPS found {nulls} null pivot(s) — "
                           "a rigid-body mode is not removed by the supports and pins, or a penalty is "
                           "so stiff that the bulk stiffness is lost in round-off")
 
@@ -591,6 +596,10 @@ class Tangent:
                                           prefix=self.prefix)
         try:
             factorisation.factorise(block)
+        except NullPivots:
+            # refilled next (no solve reads it): MUMPS's analysis and memory are reused
+            self._slots[slot] = [block, factorisation, symmetric]
+            raise
         except SolverError:
             factorisation.destroy()
             if block is not self._J:

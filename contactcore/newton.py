@@ -219,6 +219,7 @@ class _Newton:
         lift = self._lift(supports)
         history, tangent, start, du, u0 = [], None, 0.0, None, u.copy()
         self._secant, self._free_maps = None, 0  # each step its own secant and its maps that slip free
+        self.factorisations.begin_step()
         evaluated = None  # the line search's response and residual at u
         for it in range(1, tol.NEWTON_MAX_ITERATIONS + 1):
             if evaluated is None:
@@ -383,18 +384,19 @@ class _Newton:
             tangent = self._tied(tangent, status)
         free = secant is not None and health.slips_free(self.scene, *self._gamma, gathered)
         self._free_maps += free
-        if free or (secant is not None and self._dominated(status)):
+        detour = free or (secant is not None and self._dominated(status))
+        if detour:
             tangent = self._regularised(tangent, secant)
         try:
-            return (*self.factorisations.solve(tangent, rhs, scale), tangent)
+            return (*self.factorisations.solve(tangent, rhs, scale, detour=detour), tangent)
         except SolverError:
-            # an exact law's slip tangent leaves a body held by friction
+            # a Coulomb law's slip tangent leaves a body held by friction
             # alone free to turn: one secant step there
-            regularised = None if secant is None or self._dominated(status) else self._regularised(tangent, secant)
+            regularised = None if secant is None or detour else self._regularised(tangent, secant)
             if regularised is None:
                 raise
             self._singular.append(status)
-            return (*self.factorisations.solve(regularised, rhs, scale), regularised)
+            return (*self.factorisations.solve(regularised, rhs, scale, detour=True), regularised)
 
     def _pinned(self, response) -> np.ndarray:
         """The law's tangent at ``response`` with one slipping point made to

@@ -220,6 +220,10 @@ class Scene:
         * springs stiff enough to lock the jump of an unfitted method on a
           curved Γ (not ``fitted``): ``k h / E > LOCKING_WARN``, E the softer
           modulus (the body whose deformation the springs over-constrain);
+        * springs stiff enough that Γ's profile tractions ``t = k g``, the
+          law at each sample's jump, amplify the jump's discretisation
+          error, in every method: ``k h / E > PROFILE_TRACTION_WARN`` on a
+          curved Γ, E the softer modulus;
         * a normal traction ``t_N = k_N g_N`` that amplifies the
           discretisation error of ``g_N`` on a circle of radius R:
           ``(k_N/k_T)(h/2R)² > FALSE_TN_WARN`` (docs/scenes.md, scene B).
@@ -230,9 +234,16 @@ class Scene:
             return warnings
         alpha = law.stiffness_scale * h / min(m.E for m in self.materials.values())
         if not fitted and not isinstance(itf, LineInterface) and alpha > tol.LOCKING_WARN:
-            warnings.append(f"interface springs of {alpha:.1e}·E/h, E the softer body's (above {tol.LOCKING_WARN:.0e}·E/h), on a curved "
-                            "Γ that cuts the discretisation: penalty locking may raise the error tenfold and lower "
-                            "the convergence rate; soften the springs or refine")
+            warnings.append(f"interface springs of {alpha:.1e}·E/h, E the softer body's (above "
+                            f"{tol.LOCKING_WARN:.0e}·E/h), on a curved Γ that cuts the discretisation: penalty "
+                            "locking may raise the error tenfold and lower the convergence rate; soften the springs "
+                            "or refine")
+        if not isinstance(itf, LineInterface) and alpha > tol.PROFILE_TRACTION_WARN:
+            warnings.append(f"interface springs of {alpha:.2g}·E/h, E the softer body's, on a curved Γ (above "
+                            f"{tol.PROFILE_TRACTION_WARN:g}·E/h): Γ's profile tractions t = k g multiply the jump's "
+                            "discretisation error between Γ's points by that factor and may be off by tens of per "
+                            "cent; the solve's own tractions at Γ's points are in interface.csv (Result.interface); "
+                            "soften the springs, refine, or enforce the law exactly")
         if isinstance(itf, CircleInterface):
             amplification = law.kN / law.kT * (h / (2 * itf.radius)) ** 2
             if amplification > tol.FALSE_TN_WARN:

@@ -503,3 +503,36 @@ def test_a_polynomial_root_of_the_wedge_is_not_its_exponent():
     changes = xs[:-1][signs[:-1] != signs[1:]]
     assert len(changes) == 1 and changes[0] < 1.0 < changes[0] + (xs[1] - xs[0])
     assert est.clamped_free_exponent(np.pi / 2, kappa) == est.clamped_free_exponent(np.pi / 2, est.kolosov(0.0, "stress"))
+
+
+def test_efgm_p2s_clamped_edge_misses_zero_by_h_to_the_corners_lambda():
+    """Why EFGM P2's bulk displacements take 2λ (est.COLLOCATED):
+    it collocates u = 0 at the nodes of A's clamped bottom, and next to
+    the clamped–free corners, where u ~ r^λ, its trace misses zero
+    between the nodes by O(h^λ), λ Williams' exponent (0.758): measured
+    at h = 0.1 → 0.05, the largest |u| on the edge falls at λ.  That
+    defect feeds the corner's singular term, so the two-run estimate
+    takes 2λ for ux, uy and [2λ, 2] for the stresses; fe P2 keeps
+    [2λ, 3].  A rectangle whose supported edges end at regular corners
+    (B, clamped all round) gives 2 (a defect O(h) at the ends), a disc
+    with a clamped rim (the twisted rod: no end) the smooth 3."""
+    from contactcore.discretisation import solve
+    from efgm.options import EFGM
+    from verification.closed_forms import twisted_rod
+    a = load_scene("A")
+    lam = est.corner_exponents(a)[0]
+    edge = np.column_stack([np.linspace(0.0, 1.0, 1001), np.zeros(1001)])
+    bodies = (a.interface.signed_distance(edge) > 0).astype(int)
+    miss = [np.max(np.abs(solve(a, EFGM(degree=2), h).fields.displacement(edge, bodies))) for h in (0.1, 0.05)]
+    assert np.log2(miss[0] / miss[1]) == pytest.approx(lam, abs=tol.CORNER_DEFECT_RATE)
+    corners, pollution = est.collocation_order(a), est.pollution_order(a)
+    assert corners == pytest.approx(2 * lam)
+    assert est.order_range("ux", 2, "efgm", a.law, pollution=pollution, collocation=corners) == (corners, corners)
+    assert est.order_range("sxx", 2, "efgm", a.law, pollution=pollution, collocation=corners) == (corners, 2)
+    assert est.order_range("gN", 2, "efgm", a.law, pollution=pollution, collocation=corners) == (pollution, 3)
+    assert est.order_range("ux", 2, "fe", a.law, pollution=pollution, collocation=corners) == (pollution, 3)
+    assert est.order_range("ux", 1, "efgm", a.law, pollution=pollution, collocation=corners) == (pollution, 2)
+    b, rod = load_scene("B"), twisted_rod().scene
+    assert est.order_range("ux", 2, "efgm", b.law, pollution=est.pollution_order(b),
+                           collocation=est.collocation_order(b)) == (2, 2)
+    assert est.collocation_order(rod) == np.inf and rod.supports

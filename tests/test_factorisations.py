@@ -27,9 +27,10 @@ SCENES = {"penalty": lambda: load_scene("C-coulomb"), "exact": lambda: _exact(lo
 
 @pytest.fixture
 def counted(monkeypatch):
-    """Factorisations begun (MUMPS set-ups, failed ones included), and
-    Newton's factorised solves that failed (a singular tangent)."""
-    counts = {"factorisations": 0, "singular": 0}
+    """Factorisations begun (MUMPS set-ups, failed ones included),
+    Newton's factorised solves that failed (a singular tangent), and those
+    of a regularised detour."""
+    counts = {"factorisations": 0, "singular": 0, "detours": 0}
     factorise, newton_factorise = linear_solver.Factorisation.factorise, factorisations.KeptFactorisations._factorise
 
     def begun(self, A):
@@ -37,6 +38,7 @@ def counted(monkeypatch):
         return factorise(self, A)
 
     def failing(self, *args):
+        counts["detours"] += bool(args[-1])  # (tangent, rhs, scale, detour)
         try:
             return newton_factorise(self, *args)
         except SolverError:
@@ -133,3 +135,48 @@ def test_a_factorisation_keeps_the_columns_it_is_worth(method, wide, monkeypatch
         worth = min(cost, core_tol.LOW_RANK_MEMORY * memory)
         assert got == int(min(max(worth, core_tol.LOW_RANK_COLUMNS), core_tol.LOW_RANK_COLUMNS_MAX))
     assert any(got > core_tol.LOW_RANK_COLUMNS for got, _ in seen) == wide
+
+
+@pytest.mark.parametrize("method, degree", [("fe", 1), ("fe", 2), ("xfem", 1), ("efgm", 1)])
+def test_a_map_left_behind_is_refilled_not_analysed_again(method, degree, counted, monkeypatch):
+    """Exact C-coulomb's first increment leaves each factorised map for one
+    past a correction's reach of it (from every point sticking: 187-1500
+    rows): the next factorisation refills that map's slot, and MUMPS's
+    analysis is made once per run, twice where a regularised detour (a map
+    free to turn, or a singular tangent that failed) was factorised in the
+    other slot (before: a second slot analysed anew, 2-3 analyses)."""
+    analyses = []
+    made = linear_solver.Factorisation.__init__
+
+    def analysed(self, *args, **kwargs):
+        analyses.append(1)
+        made(self, *args, **kwargs)
+    monkeypatch.setattr(linear_solver.Factorisation, "__init__", analysed)
+    _run(method, "exact", counted, degree=degree)
+    assert counted["factorisations"] > 2
+    assert len(analyses) == 1 + (counted["detours"] > 0)
+
+
+def test_a_full_set_of_columns_keeps_those_the_tangent_needs(monkeypatch):
+    """EFGM's exact first increment with a budget of 96 columns: its
+    corrections fill it (93 columns) with rows of which the next tangent
+    needs fewer: it keeps those and corrects instead of factorising (before:
+    a factorisation), with the factorised answer."""
+    dropped = []
+    drop = factorisations.KeptFactorisations._drop_columns
+
+    def spy(self, slot, changed):
+        dropped.append(len(self.columns[slot]))
+        drop(self, slot, changed)
+    monkeypatch.setattr(factorisations.KeptFactorisations, "_drop_columns", spy)
+    monkeypatch.setattr(core_tol, "LOW_RANK_COLUMNS_MAX", 96)
+    corrected, _ = _run("efgm", "exact")
+    assert dropped
+    monkeypatch.setattr(core_tol, "LOW_RANK_COLUMNS", 0)
+    monkeypatch.setattr(core_tol, "LOW_RANK_COLUMNS_MAX", 0)
+    factorised, _ = _run("efgm", "exact")
+    assert corrected.solver.iterations == factorised.solver.iterations
+    for a, b in zip(corrected.interface.steps, factorised.interface.steps):
+        assert np.array_equal(a.status, b.status)
+        for x, y in ((a.traction, b.traction), (a.jump, b.jump)):
+            assert np.max(np.abs(x - y)) <= tol.LOW_RANK_AGREEMENT * np.max(np.abs(y))

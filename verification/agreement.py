@@ -42,8 +42,8 @@ EXCLUDE_FRACTION = 0.1
 
 
 #: An exactly enforced law's gap is measured against its own values floored
-#: by this share of the scene's displacement scale U = L τ/E
-#: (:class:`contactcore.scaling.Scales`).  Where Γ is closed (g_N) and
+#: by this share of the scene's displacement scale U = L τ/E, E the softer
+#: body's modulus (:func:`displacement_scale`).  Where Γ is closed (g_N) and
 #: sticking (g_T) the exact gap is zero, and the run's is the enforcement's
 #: residue (Nitsche's τ/γ: 1.7e-12 m on scene A, U = 5e-7 m; 1.9e-9 m on
 #: the README's wedge with μ = 0.5, U = 5e-6 m; fe P2 at h = 0.05,
@@ -55,10 +55,20 @@ EXCLUDE_FRACTION = 0.1
 EXACT_GAP_FLOOR = 0.1
 
 
+def displacement_scale(scene: Scene) -> float:
+    """``U = L τ/E`` (m), the displacement the loads cause in the softer
+    body: :class:`contactcore.scaling.Scales`' U, taken with the stiffer
+    modulus, times the contrast (a stiff disc in a 100× softer block moves
+    with the block, 100 times the stiff U)."""
+    moduli = [m.E for m in scene.materials.values()]
+    return Scales.of(scene).displacement * max(moduli) / min(moduli)
+
+
 def gap_floor(scene: Scene) -> float:
     """The floor of an exactly enforced law's gaps on ``scene``:
-    :data:`EXACT_GAP_FLOOR` times the displacement scale of its loads (m)."""
-    return EXACT_GAP_FLOOR * Scales.of(scene).displacement
+    :data:`EXACT_GAP_FLOOR` times the displacement scale of its loads (m,
+    :func:`displacement_scale`)."""
+    return EXACT_GAP_FLOOR * displacement_scale(scene)
 
 
 def gap_floors(scene: Scene) -> dict[str, float]:
