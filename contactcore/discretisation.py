@@ -44,7 +44,7 @@ from .geometry import LevelSetInterface, Rectangle
 from .newton import solve_increments
 from .system import ContactSystem
 from .result import Result, Timings
-from .scaling import dimensionless
+from .scaling import dimensionless, dimensionless_inputs
 
 
 @dataclass(frozen=True)
@@ -229,6 +229,26 @@ class Reuse:
             self._kept.popitem()[1].system.close()
 
 
+def _refused(scene, discretisation: Discretisation, h: float | None, paper: bool) -> Resolution:
+    """The ``discretisation``'s resolution of the dimensionless ``scene``,
+    after its refusals of it there (:meth:`Discretisation.check`,
+    :meth:`Discretisation.check_resolution`): what a solve refuses before
+    anything is built."""
+    discretisation.check(scene)
+    resolution = discretisation.resolution(scene, h, paper)
+    discretisation.check_resolution(scene, resolution)
+    return resolution
+
+
+def check_solvable(scene, discretisation: Discretisation, h: float | None = None, *, paper: bool = False) -> None:
+    """Refuse the user's ``scene`` as :func:`solve` with these arguments
+    would before building anything, in the same words: its checks taken on
+    the dimensionless scene, options and ``h`` the solve sees
+    (:func:`contactcore.scaling.dimensionless_inputs`)."""
+    _, scene, discretisation, h = dimensionless_inputs(scene, discretisation, h)
+    _refused(scene, discretisation, h, paper)
+
+
 @dimensionless
 def solve(scene, discretisation: Discretisation, h: float | None = None, *, paper: bool = False,
           progress=None, reuse: Reuse | None = None) -> Result:
@@ -238,10 +258,8 @@ def solve(scene, discretisation: Discretisation, h: float | None = None, *, pape
     ``reuse`` a :class:`Reuse` that may hold this system already (the
     record then says ``"reused": true`` and the mesh and assembly times
     are zero: nothing was built)."""
-    discretisation.check(scene)
     start, timings = time.perf_counter(), Timings()
-    resolution = discretisation.resolution(scene, h, paper)
-    discretisation.check_resolution(scene, resolution)
+    resolution = _refused(scene, discretisation, h, paper)
     built = (reuse.build(scene, discretisation, resolution, timings) if reuse is not None
              else discretisation.build(scene, resolution, timings))
     try:

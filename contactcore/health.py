@@ -129,7 +129,7 @@ def check_friction_springs(scene, h: float, limit: float, method: str) -> None:
     offers is rounded down, so that it is carried too."""
     if getattr(scene.law, "name", None) != "coulomb" or not hasattr(scene.law, "kN"):
         return
-    alpha = scene.law.stiffness_scale * h / min(m.E for m in scene.materials.values())
+    alpha = scene.law.stiffness_scale * h / scene.softer_modulus
     if alpha > limit * (1 + tol.LIMIT_ROUNDOFF):
         c, _, k_user = max(_springs(scene), key=lambda spring: spring[1])
         h_user = h * Scales.of(scene.user).length

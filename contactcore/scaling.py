@@ -275,6 +275,20 @@ def _option_in(name: str, value, scales: Scales):
     return value
 
 
+def dimensionless_inputs(scene: Scene, discretisation, h: float | None):
+    """``(scales, scene, discretisation, h)``: the scales of the user's
+    ``scene`` and the scene, the discretisation's options and ``h`` a solve
+    sees, made dimensionless.  An ``h`` that is not > 0 is passed on
+    unchanged, for the method to refuse in the user's numbers."""
+    scales = Scales.of(scene)
+    if h is not None and h > 0:  # in the user's numbers, whatever the driver (run checks it too)
+        check_resolution(scene, h, "h")
+    h_in = h / scales.length if h is not None and h > 0 else h
+    given = {f.name: getattr(discretisation, f.name) for f in dataclasses.fields(discretisation)}
+    inner = replace(discretisation, **{k: _option_in(k, v, scales) for k, v in given.items()})
+    return scales, scales.scene(scene), inner, h_in
+
+
 def dimensionless(solve):
     """Decorate the one ``solve(scene, discretisation, h=None, **options)
     -> Result`` (:mod:`contactcore.discretisation`) so that it solves the
@@ -288,16 +302,11 @@ def dimensionless(solve):
     """
     @functools.wraps(solve)
     def solve_dimensionless(scene: Scene, discretisation, h: float | None = None, **options):
-        scales = Scales.of(scene)
-        if h is not None and h > 0:  # in the user's numbers, whatever the driver (run checks it too)
-            check_resolution(scene, h, "h")
-        h_in = h / scales.length if h is not None and h > 0 else h
-        given = {f.name: getattr(discretisation, f.name) for f in dataclasses.fields(discretisation)}
-        inner = replace(discretisation, **{k: _option_in(k, v, scales) for k, v in given.items()})
+        scales, scaled, inner, h_in = dimensionless_inputs(scene, discretisation, h)
         progress = options.get("progress")
         if progress is not None:
             options = {**options, "progress": lambda n, total, st: progress(n, total, scales.step(st))}
-        result = solve(scales.scene(scene), inner, h_in, **options)
+        result = solve(scaled, inner, h_in, **options)
         return replace(result, scene=scene, fields=ScaledFields(result.fields, scales),
                        interface=scales.path(result.interface),
                        discretisation=scales.discretisation(result.discretisation))

@@ -222,8 +222,8 @@ class Scene:
           modulus (the body whose deformation the springs over-constrain);
         * springs stiff enough that Γ's profile tractions ``t = k g``, the
           law at each sample's jump, amplify the jump's discretisation
-          error, in every method: ``k h / E > PROFILE_TRACTION_WARN`` on a
-          curved Γ, E the softer modulus;
+          error, in every method: ``k_N h / E`` or ``k_T h / E`` above its
+          PROFILE_TRACTION_WARN on a curved Γ, E the softer modulus;
         * a normal traction ``t_N = k_N g_N`` that amplifies the
           discretisation error of ``g_N`` on a circle of radius R:
           ``(k_N/k_T)(h/2R)² > FALSE_TN_WARN`` (docs/scenes.md, scene B).
@@ -232,18 +232,21 @@ class Scene:
         law, itf = self.law, self.interface
         if not hasattr(law, "kN"):  # enforced exactly: no springs
             return warnings
-        alpha = law.stiffness_scale * h / min(m.E for m in self.materials.values())
+        soft = self.softer_modulus
+        alpha = law.stiffness_scale * h / soft
         if not fitted and not isinstance(itf, LineInterface) and alpha > tol.LOCKING_WARN:
             warnings.append(f"interface springs of {alpha:.1e}·E/h, E the softer body's (above "
                             f"{tol.LOCKING_WARN:.0e}·E/h), on a curved Γ that cuts the discretisation: penalty "
                             "locking may raise the error tenfold and lower the convergence rate; soften the springs "
                             "or refine")
-        if not isinstance(itf, LineInterface) and alpha > tol.PROFILE_TRACTION_WARN:
-            warnings.append(f"interface springs of {alpha:.2g}·E/h, E the softer body's, on a curved Γ (above "
-                            f"{tol.PROFILE_TRACTION_WARN:g}·E/h): Γ's profile tractions t = k g multiply the jump's "
-                            "discretisation error between Γ's points by that factor and may be off by tens of per "
-                            "cent; the solve's own tractions at Γ's points are in interface.csv (Result.interface); "
-                            "soften the springs, refine, or enforce the law exactly")
+        stiff = [f"k_{c} h/E = {k * h / soft:.2g} (above {tol.PROFILE_TRACTION_WARN[c]:g})"
+                 for c, k in (("N", law.kN), ("T", law.kT)) if k * h / soft > tol.PROFILE_TRACTION_WARN[c]]
+        if stiff and not isinstance(itf, LineInterface):
+            warnings.append(f"interface springs of {' and '.join(stiff)}, E the softer body's, on a curved Γ: Γ's "
+                            "profile tractions t = k g multiply the jump's discretisation error between Γ's points "
+                            "by that factor and may be off by tens of per cent; the solve's own tractions at Γ's "
+                            "points are in interface.csv (Result.interface); soften the springs, refine, or enforce "
+                            "the law exactly")
         if isinstance(itf, CircleInterface):
             amplification = law.kN / law.kT * (h / (2 * itf.radius)) ** 2
             if amplification > tol.FALSE_TN_WARN:
@@ -252,6 +255,12 @@ class Scene:
                                 f"{amplification:.3g} > {tol.FALSE_TN_WARN:g}); a false t_N of the order of t_T may "
                                 "appear: refine (it falls as h²) or lower k_N/k_T")
         return warnings
+
+    @property
+    def softer_modulus(self) -> float:
+        """The softer body's Young's modulus: the body whose deformation
+        a stiff interface spring over-constrains."""
+        return min(m.E for m in self.materials.values())
 
     def body_of(self, points, side: str = "plus") -> np.ndarray:
         """0 (−) or 1 (+) for each point: by the sign of φ, ``side`` within

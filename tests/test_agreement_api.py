@@ -5,6 +5,7 @@ JIT compile."""
 import logging
 
 import numpy as np
+import tolerances as tol
 import pytest
 
 from pathlib import Path
@@ -210,8 +211,21 @@ def test_an_exact_gaps_floor_is_the_softer_bodys_displacement_scale():
     from contactcore import scene_from_dict
     scene = scene_from_dict(SOFT_BLOCK)
     result = compare(scene, ["fe:1"], COARSE_H)
-    stiff, soft = (m.E for m in scene.materials.values())
     assert result.gap_floor == EXACT_GAP_FLOOR * displacement_scale(scene)
-    assert displacement_scale(scene) == Scales.of(scene).displacement * stiff / soft
+    # L = 2 m, τ = |b| L = 2e6 Pa (the disc's weight), the block's E = 2e9 Pa
+    assert displacement_scale(scene) == pytest.approx(2.0 * 2e6 / 2e9, rel=tol.DIMENSIONLESS_ROUNDOFF)
     rows = {a.quantity: a for a in result.rows}
     assert max(rows["gN"].worst, rows["gT"].worst) <= max(rows["tN"].worst, rows["tT"].worst)
+
+
+def test_a_prescribed_displacement_is_its_own_scale_whichever_body_is_softer():
+    """A-cyclic's top follows 1 mm, its load 1e5 Pa: with its upper block
+    100x softer (E = 2e9 Pa, L τ/E = 5e-5 m) the exact gaps' floor is a
+    tenth of the 1 mm, not of 100 mm (the stiff body's scale, 1 mm, times
+    the contrast): a floor of 10 mm would hide every gap of the run."""
+    from dataclasses import replace
+    scene = load_scene("A-cyclic")
+    soft = scene.with_changes(materials={**scene.materials, "plus": replace(scene.materials["plus"], E=2e9)})
+    assert displacement_scale(soft) == displacement_scale(scene) == 1e-3
+    assert displacement_scale(soft.with_changes(supports=())) == pytest.approx(1.0 * 1e5 / 2e9,
+                                                                               rel=tol.DIMENSIONLESS_ROUNDOFF)

@@ -186,6 +186,52 @@ def test_run_refuses_a_scene_one_method_refuses_before_any_method_solves(capsys,
     assert not (tmp_path / "r").exists()
 
 
+def _stiff_c_coulomb(tmp_path) -> Path:
+    """C-coulomb (L = 3 m) with k_N at 2.5 times the Coulomb springs efgm
+    carries on the paper's 21 x 31 nodes (h = 0.1)."""
+    from contactcore.scenes import __path__ as shipped
+    from contactcore.tolerances import EFGM_FRICTION_SPRINGS
+
+    text = (Path(shipped[0]) / "C-coulomb.toml").read_text()
+    scene = tmp_path / "stiff-c.toml"
+    scene.write_text(re.sub(r"(?m)^kN = .*$", f"kN = {2.5 * EFGM_FRICTION_SPRINGS * 2e11 / 0.1:g}", text, count=1))
+    return scene
+
+
+def test_a_refusal_before_any_solve_reads_as_the_solves_own(capsys, tmp_path):
+    """The refusal ``run`` takes before any method solves is the solve's
+    own, in the user's units: on a scene 3 m across, efgm's spacing h =
+    0.1 and the largest spacing it carries 0.04 (not 0.3 and 0.12), the
+    reference's refusal named as the reference's, with --reference none."""
+    from contactcore import load_scene
+    from contactcore.errors import SolverError
+    from verification import methods
+
+    path = _stiff_c_coulomb(tmp_path)
+    with pytest.raises(SolverError) as solved:
+        methods.solver("efgm")(load_scene(path), None, degree=1, paper=True)
+    assert "(h = 0.1, efgm's spacing)" in str(solved.value) and "h <= 4.00e-02" in str(solved.value)
+    assert main(["run", str(path), "--method", "efgm", "--paper", "--out", str(tmp_path / "r")]) == 2
+    assert capsys.readouterr().err.strip() == f"error: {solved.value}"
+    assert main(["run", str(path), "--method", "fe", "xfem", "--reference", "efgm:1", "--paper",
+                 "--out", str(tmp_path / "r")]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err.startswith(f"error: efgm (the reference, degree 1): {solved.value}; ") and "--reference none" in err
+    assert not (tmp_path / "r").exists()
+
+
+def test_run_refuses_an_estimate_on_fixed_nodes(capsys, tmp_path):
+    """``--nodes`` fix efgm's nodes at every h: an estimate's runs would be
+    one run repeated, its error estimated as zero; refused in one line."""
+    nodes = tmp_path / "nodes.txt"
+    nodes.write_text("\n".join(f"{x / 10:g} {y / 10:g}" for x in range(11) for y in range(11)))
+    assert main(["run", "A", "--method", "efgm", "--nodes", str(nodes), "--estimate",
+                 "--out", str(tmp_path / "r")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith("error: --estimate: the nodes of --nodes are fixed"), err
+    assert not (tmp_path / "r").exists()
+
+
 def test_run_measures_a_quantity_against_its_floor(tmp_path):
     """``run --floor sxy=1e3``: summary.md's table is the agreement table of
     the written profiles with that floor (not the one without), says so,

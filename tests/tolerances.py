@@ -615,8 +615,12 @@ NITSCHE_OPENING_ZONE = 2.0
 #: clips a cell's corner next to the change (against fe P2 at h = 0.00625;
 #: the point lay inside Γ's end margin).  Of the 24 placements, 0, 6 and
 #: 21 have kept points in the zone (Γ opens 0.009, 0.042 and 0.022 before
-#: the first kept point).  Degree 1 keeps its bound; degree 2 gets 10 %.
-NITSCHE_OPENING_AGREE = {1: 0.15, 2: 0.10}
+#: the first kept point; there, 2026-11-27, at most 2.4 % at degree 2 and
+#: 5.8 % at degree 1).  Degree 1 keeps its bound; degree 2 gets what a
+#: method resolving the kink as well as fe P2 does could show against
+#: this reference: the reference's own 3.05 % there plus fe P2's 2.7 % at
+#: h, 6 %.
+NITSCHE_OPENING_AGREE = {1: 0.15, 2: 0.06}
 
 # ----- exact computations: their round-off, and the tests' own arithmetic ----
 # (ε = 2.2e-16, double precision; each bound leaves a margin of 10-1000x over

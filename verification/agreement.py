@@ -24,7 +24,7 @@ pytest helper built on it (docs/api.md).
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -56,12 +56,15 @@ EXACT_GAP_FLOOR = 0.1
 
 
 def displacement_scale(scene: Scene) -> float:
-    """``U = L τ/E`` (m), the displacement the loads cause in the softer
-    body: :class:`contactcore.scaling.Scales`' U, taken with the stiffer
-    modulus, times the contrast (a stiff disc in a 100× softer block moves
-    with the block, 100 times the stiff U)."""
-    moduli = [m.E for m in scene.materials.values()]
-    return Scales.of(scene).displacement * max(moduli) / min(moduli)
+    """``U = max(L τ/E, |ū|)`` (m), E the softer body's modulus: the
+    displacement the loads cause in the softer body, or the largest
+    prescribed displacement ū if larger (:class:`contactcore.scaling.Scales`'
+    U, taken with the softer modulus; a stiff disc in a 100× softer block
+    moves with the block, 100 times the stiff body's L τ/E, while a
+    prescribed displacement is the same whichever body is softer)."""
+    soft = scene.softer_modulus
+    return Scales.of(scene.with_changes(materials={b: replace(m, E=soft) for b, m in scene.materials.items()})
+                     ).displacement
 
 
 def gap_floor(scene: Scene) -> float:

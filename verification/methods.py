@@ -16,7 +16,7 @@ import importlib
 import inspect
 
 from contactcore import ContactError
-from contactcore.discretisation import make, option_names
+from contactcore.discretisation import check_solvable as solvable, make, option_names
 
 #: Method name -> its options class, as ``module:Class``, in the order plots list them.
 METHODS = {
@@ -78,13 +78,11 @@ def check_launch(names: list[str], distributed: bool) -> None:
 def check_solvable(names: list[str], scene, h, degree: int, paper: bool, **given) -> None:
     """Refuse, before any method solves, a scene that one of the methods
     ``names`` refuses at its resolution (its options from ``given``, None
-    not given): its :meth:`~contactcore.discretisation.Discretisation.check`
-    and ``check_resolution``, the checks its solve makes first, so that a
-    run of several methods does not solve some and then stop at another."""
+    not given): the checks its solve makes first
+    (:func:`contactcore.discretisation.check_solvable`), so that a run of
+    several methods does not solve some and then stop at another."""
     for name in names:
-        method = make(discretisation(name), degree=degree, **options_for(name, **given))
-        method.check(scene)
-        method.check_resolution(scene, method.resolution(scene, h, paper))
+        solvable(scene, make(discretisation(name), degree=degree, **options_for(name, **given)), h, paper=paper)
 
 
 def expand(names: list[str]) -> list[str]:

@@ -194,20 +194,29 @@ def _solve_reference(scene, reference, h, paper, petsc_options, out: Path, profi
     name, degree = reference
     log.info("scene %s: solving the reference, %s (degree %d)", scene.name, name, degree)
     solve, on_comm = pool.solver(name) if pool.under_mpi_pool() else (methods.solver(name), {})
-    try:
-        result = _prefixed(f"{name} (the reference, degree {degree})", solve, scene, h, degree=degree, paper=paper,
-                           **methods.options_for(name, petsc_options=petsc_options), **on_comm)
-    except SolverOptionError:
-        raise
-    except SolverError as exc:
-        hinted = SolverError(f"{exc}; the methods asked for solved: compare them without a reference with "
-                             "--reference none, or with another, --reference METHOD:DEGREE")
-        hinted.details = getattr(exc, "details", "")
-        raise hinted from None
+    result = _as_reference(reference, "the methods asked for solved: compare them", solve, scene, h, degree=degree,
+                           paper=paper, **methods.options_for(name, petsc_options=petsc_options), **on_comm)
     summaries.append({**result.summary(), "method": f"{name} (reference)"})
     for prof in sample_profiles(scene, result.fields, result.interface):
         files.write_profile_csv(out / "reference" / "profiles" / f"{prof.id}.csv", prof)
         profiles.setdefault(prof.id, {})[reference_label(reference)] = prof
+
+
+def _as_reference(reference, what: str, call, *args, **kwargs):
+    """``call(*args, **kwargs)`` for the ``reference`` (method, degree); its
+    failure (not a refused option) named as the reference's
+    (:func:`_prefixed`) and followed by ``what`` to do: ``what`` without a
+    reference, ``--reference none``, or with another."""
+    name, degree = reference
+    try:
+        return _prefixed(f"{name} (the reference, degree {degree})", call, *args, **kwargs)
+    except SolverOptionError:
+        raise
+    except SolverError as exc:
+        hinted = SolverError(f"{exc}; {what} without a reference with --reference none, or with another, "
+                             "--reference METHOD:DEGREE")
+        hinted.details = getattr(exc, "details", "")
+        raise hinted from None
 
 
 def _progress(name: str):
@@ -251,7 +260,8 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
     nodes = read_nodes(nodes_file) if nodes_file else None
     methods.check_solvable(chosen, scene, h, degree, paper, nodes=nodes, **given)
     if compared:
-        methods.check_solvable([reference[0]], scene, finest, reference[1], paper, petsc_options=petsc_options or None)
+        _as_reference(reference, "compare the methods", methods.check_solvable, [reference[0]], scene, finest,
+                      reference[1], paper, petsc_options=petsc_options or None)
     out = Path(out)
     profiles, summaries, paths, estimated, gaps = {}, [], {}, {}, {}
     for name in chosen:
@@ -282,7 +292,7 @@ def _check(scene: Scene, chosen: list[str], h, degree: int, paper: bool, allow_l
            reference, **given) -> None:
     """Refuse, before any work, an option no chosen method takes, a method
     that cannot run under this launch, an ``h`` that does not fit the
-    domain, an estimate on the paper's fixed grids, and (unless ``paper``
+    domain, an estimate on the paper's fixed grids or on fixed ``nodes``, and (unless ``paper``
     or ``allow_large``) a run too large for the machine: each method at
     the finest h it solves, the ``reference`` (method, degree; None when
     nothing is compared) there too.  Warn about an ``h`` that leaves few
@@ -293,6 +303,9 @@ def _check(scene: Scene, chosen: list[str], h, degree: int, paper: bool, allow_l
         check_resolution(scene, h)
     if estimate and paper:
         raise ContactError("--estimate: the paper's grids are fixed, there is no h/2 to solve at; give --h instead")
+    if estimate and given.get("nodes"):
+        raise ContactError("--estimate: the nodes of --nodes are fixed, there is no h/2 to solve at (every run would "
+                           "be the same, its error estimated as zero); leave out --nodes or --estimate")
     span = smallest_dimension(scene.domain)
     if (h or scene.h or 0.0) > span / tol.MIN_CELLS_ACROSS and not paper:
         log.warning("h = %g leaves fewer than %d cells across the domain's smallest dimension (%g): the profiles "

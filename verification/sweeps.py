@@ -143,7 +143,7 @@ def _friction_springs(which: str):
     refuses Coulomb springs (:func:`contactcore.health.check_friction_springs`)."""
     cases = []
     for alpha in PENALTY_FACTORS:
-        k = alpha * min(m.E for m in layered_slip().scene.materials.values()) / H
+        k = alpha * layered_slip().scene.softer_modulus / H
         c = layered_slip(**{which: k})
         cases.append(Case(alpha, c.scene, c.fields(c.history()[-1])))
     return cases
