@@ -252,7 +252,7 @@ class _Newton:
             if not self.law.is_linear:  # a linear law is solved in one step
                 secant = not np.array_equal(tangent, response.tangent)
                 alpha, evaluated = self._line_search(u, du, b, R, response.status, secant, tangent)
-                if secant and evaluated is None and response.secant is not None:  # the secant step is no descent
+                if secant and evaluated is None and self._slipping(response):  # the secant step is no descent
                     du, rep, tangent = self._solve(self._pinned(response), -R, scale, status=response.status)
                     _merge(self.report, rep)
                     alpha, evaluated = self._line_search(u, du, b, R, response.status, False, tangent)
@@ -398,6 +398,10 @@ class _Newton:
             self._singular.append(status)
             return (*self.factorisations.solve(regularised, rhs, scale, detour=True), regularised)
 
+    def _slipping(self, response) -> bool:
+        """Whether a Coulomb point slips at ``response``, on any rank."""
+        return response.secant is not None and self.ranks.max(float(np.any(response.status == SLIP))) > 0
+
     def _pinned(self, response) -> np.ndarray:
         """The law's tangent at ``response`` with one slipping point made to
         stick (``∂t/∂g = diag(k, k)``, ``k`` its ``γ`` or the law's
@@ -473,9 +477,9 @@ class _Newton:
         law here is positively homogeneous there (``t(c y) = c t(y)`` for
         ``c > 0`` at ``s = 0``, and Nitsche's ``y = G̃ u`` is linear), so a
         halved step is the same problem scaled, and Newton repeats its
-        iterates (s4c-strain-coulomb-circle, xfem P1 at h = 0.05: the same
-        residual history at each of six cut-backs): more increments do not
-        help."""
+        iterates (the squeezed disc of tests/free_disc.py, xfem P1 at
+        h = 0.05: the same residual history at each of six cut-backs): more
+        increments do not help."""
         history = self.state is None or not np.any(self.state)
         f0, f1, half = (_flat(self.scene.factors(x)) for x in (start, k, (start + k) / 2))
         if f0.any() or self.u.any() or not history:
