@@ -60,7 +60,7 @@ import scipy.sparse as sp
 from . import tolerances as tol
 from .errors import DiscretisationError, SceneError
 from .collective import SERIAL
-from .laws import STICK, CoulombLaw, Decision, LawResponse, LinearLaw, UnilateralLaw, _friction, _positive
+from .laws import STICK, CoulombLaw, Decision, LawResponse, LinearLaw, UnilateralLaw, _friction, _positive, secant_tangent
 
 #: Laws that exist only enforced exactly (no springs).
 BONDED = ("bonded",)
@@ -288,10 +288,7 @@ class NitscheInterface:
         that window by as much as the slipping tractions ask, where the
         stick stiffness γ, far steeper, crept; Newton goes on with the
         law's tangent once a point sticks."""
-        out = np.array(tangent, float, copy=True)
-        slipping = secant > 0
-        out[slipping, 1, 1] = secant[slipping]
-        return out
+        return secant_tangent(tangent, secant)
 
 
 def enforced(law, operator):

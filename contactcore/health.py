@@ -30,7 +30,7 @@ import numpy as np
 from . import tolerances as tol
 from .errors import SolverError
 from .geometry import Disc, LineInterface, Rectangle, tangent_of
-from .laws import OPEN
+from .laws import OPEN, STICK
 from .scaling import Scales
 
 #: Sample points per support boundary in the rigid-mode check (three
@@ -195,12 +195,15 @@ def _boundary_points(domain, name: str) -> np.ndarray:
     return c[i] + s[:, None] * (c[j] - c[i])
 
 
-def _restraint(scene, interface_points, interface_weights, holding=None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def _restraint(scene, interface_points, interface_weights, holding=None,
+               gripping=None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """``Q`` (6×6): the stiffness of the supports (E per held component),
     pins and springs (``Σ w k g gᵀ``) against the rigid modes, relative to
     the stiffer modulus; and the spring parts ``Q_N``, ``Q_T`` alone.
     ``holding`` (m,) bool: the points of Γ whose springs hold (every point
-    if None; an open point of a unilateral law holds nothing)."""
+    if None; an open point of a unilateral law holds nothing); ``gripping``
+    the points among them that hold tangentially too (``holding`` if None;
+    a slipping point's tangent has no ``∂t_T/∂g_T``)."""
     E = max(m.E for m in scene.materials.values())
     dom = scene.domain
     centre = np.asarray(dom.centre, float) if isinstance(dom, Disc) else np.mean(dom.corners, axis=0)
@@ -223,12 +226,13 @@ def _restraint(scene, interface_points, interface_weights, holding=None) -> tupl
         # a spring stiffer than E per |Γ| holds like a support; capping it
         # there keeps the eigenvalues of Q within double precision
         cap = 1.0 / np.sum(w)
-        w = w if holding is None else np.where(holding, w, 0.0)
+        wN = w if holding is None else np.where(holding, w, 0.0)
+        wT = wN if gripping is None else np.where(gripping, w, 0.0)
         # a law enforced exactly holds like the stiffest spring
-        QN = (w[:, None] * gN).T @ gN * min(getattr(scene.law, "kN", np.inf) / E, cap)
+        QN = (wN[:, None] * gN).T @ gN * min(getattr(scene.law, "kN", np.inf) / E, cap)
         # frictionless contact (μ = 0) carries no shear: no tangential hold
         kT = 0.0 if _frictionless(scene) else min(getattr(scene.law, "kT", np.inf) / E, cap)
-        QT = (w[:, None] * gT).T @ gT * kT
+        QT = (wT[:, None] * gT).T @ gT * kT
     else:
         QN = QT = np.zeros((6, 6))
     return Q + QN + QT, QN, QT
@@ -317,6 +321,22 @@ def lets_go(scene, interface_points, interface_weights, status) -> bool:
     """Whether the status map ``status`` leaves a rigid-body mode free
     (:func:`_let_go`): its tangent is singular."""
     return bool(_let_go(scene, interface_points, interface_weights, status).shape[1])
+
+
+def slips_free(scene, interface_points, interface_weights, status) -> bool:
+    """Whether the status map ``status`` leaves a rigid-body mode free once
+    its slipping points hold normally only (:func:`_restraint`): a Coulomb
+    point's slip tangent has no ``∂t_T/∂g_T``, so a rigid motion ``r`` of a
+    body held by Γ alone with no normal jump at any closed point and no
+    jump at any sticking one has ``J r = 0`` — a disc turning in its hole,
+    a rod sliding along a straight Γ, with every closed point slipping.
+    Like :func:`lets_go` this reads the map and the geometry (Γ's own
+    normals), never a factorisation, whose null pivots round-off decides."""
+    status = np.asarray(status)
+    if (status == STICK).all():
+        return False
+    Q = _restraint(scene, interface_points, interface_weights, status != OPEN, status == STICK)[0]
+    return bool(_free_modes(Q).shape[1])
 
 
 def check_held(scene, interface_points, interface_weights, status, where: str) -> None:

@@ -255,6 +255,20 @@ class CoulombLaw(_Law):
         return LawResponse(np.column_stack([tN, tT]), tangent, new_state, status, secant)
 
 
+def secant_tangent(tangent: np.ndarray, secant: np.ndarray) -> np.ndarray:
+    """``tangent`` (m, 2, 2) with each slipping point's ``secant``
+    stiffness ``|t_T| / |g_T − s|`` (:attr:`LawResponse.secant`, 0 where
+    the point does not slip) in place of its ``∂t_T/∂g_T = 0``: where every
+    closed point of a body held by Γ alone slips, the slip tangent leaves
+    the body free to turn (or slide), and this step (Kačanov's iteration
+    for a monotone law) moves it towards a stick window instead
+    (:meth:`contactcore.exact.NitscheInterface.regularised`)."""
+    out = np.array(tangent, float, copy=True)
+    slipping = secant > 0
+    out[slipping, 1, 1] = secant[slipping]
+    return out
+
+
 #: Every penalty law by the name a scene file gives it.
 LAWS = {law.name: law for law in (LinearLaw, UnilateralLaw, CoulombLaw)}
 

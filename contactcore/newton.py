@@ -115,6 +115,7 @@ class _Newton:
         self._gamma = self.ranks.gather(self.itf.points), self.ranks.gather(self.itf.weights)  # lets_go, check_held
         self._singular = []  # status maps whose law tangent proved singular
         self._secant = None  # the step's secant stiffnesses of its slipping points (_regularised)
+        self._free_maps = 0  # the step's solves on maps that health.slips_free
 
     def _residual(self, u, b, response) -> tuple[np.ndarray, float, float]:
         """The residual, the forces its equilibrium rows are judged against
@@ -163,14 +164,12 @@ class _Newton:
     def _from_stiffer(self, k: float):
         """The step to ``k`` started from its solution at CONTINUATION_STEP
         times the stabilisation, where the softer continuation failed.
-        Newton from the committed state can settle on a map where every
-        closed point slips and none sticks: the body held by Γ alone turns
-        freely, the secant step's merit is flat, and no step leaves the map
-        (exact C-coulomb, fe P1 at h = 0.2: a residual of 4.5e-3 at β = 3,
-        and at β/10).  The stiffer problem's Newton takes other maps; its
-        answer differs from this one's by the stabilisation's small effect
-        (Nitsche is consistent) and starts Newton next to it with its
-        sticking points (there: 3 iterations to 5 sticking points)."""
+        Newton from the committed state can settle where no step leaves
+        its map (a body held by Γ alone whose closed points all slip, its
+        secant step's merit flat).  The stiffer problem's Newton takes other
+        maps; its answer differs from this one's by the stabilisation's
+        small effect (Nitsche is consistent) and starts Newton next to it
+        with its sticking points."""
         return self._at(k, 1.0, self._at(k, tol.CONTINUATION_STEP))
 
     def _continued(self, k: float, factor: float):
@@ -219,7 +218,7 @@ class _Newton:
         u[self.system.fixed] = self.system.fixed_values(supports)
         lift = self._lift(supports)
         history, tangent, start, du, u0 = [], None, 0.0, None, u.copy()
-        self._secant = None  # each step its own secant
+        self._secant, self._free_maps = None, 0  # each step its own secant and its maps that slip free
         self.factorisations.begin_step()
         evaluated = None  # the line search's response and residual at u
         for it in range(1, tol.NEWTON_MAX_ITERATIONS + 1):
@@ -253,12 +252,18 @@ class _Newton:
             if not self.law.is_linear:  # a linear law is solved in one step
                 secant = not np.array_equal(tangent, response.tangent)
                 alpha, evaluated = self._line_search(u, du, b, R, response.status, secant, tangent)
+                if secant and evaluated is None and self._slipping(response):  # the secant step is no descent
+                    du, rep, tangent = self._solve(self._pinned(response), -R, scale, status=response.status)
+                    _merge(self.report, rep)
+                    alpha, evaluated = self._line_search(u, du, b, R, response.status, False, tangent)
                 du = alpha * du
                 tangent = tangent if alpha == 1.0 else None  # a partial step settles nothing
             else:
                 evaluated = None
             u = u + du
-        raise SolverError(f"Newton did not converge in {tol.NEWTON_MAX_ITERATIONS} iterations; "
+        free = (f" ({self._free_maps} of them on maps whose slipping points alone held a body that nothing else "
+                "holds, free to turn or slide until a point sticks)" if self._free_maps else "")
+        raise SolverError(f"Newton did not converge in {tol.NEWTON_MAX_ITERATIONS} iterations{free}; "
                           f"relative residual history {_fmt(history)}")
 
     def _predicted(self, factors: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -318,7 +323,10 @@ class _Newton:
         ``vinewtonrsls``: ``δu = −J⁻¹R`` is a descent direction of ``½‖R‖²``
         for any generalised Jacobian ``J`` of the semismooth residual, so a
         small enough step always decreases it and breaks a cycle between
-        status maps.  The smallest step if none does.  A ``secant`` step
+        status maps.  If none does, a law step is taken whole (the merit has
+        a kink there that is no zero, and smaller steps only cycle about it),
+        a secant step at its smallest with no response (the caller then
+        pins a point, :meth:`_pinned`).  A ``secant`` step
         (a body free to turn, :meth:`_solve`) is taken whole where it only
         keeps the merit: along that rotation the merit is flat until a
         point re-enters its stick window, which is where the step goes.  A full step that
@@ -345,7 +353,11 @@ class _Newton:
                 break
             alpha /= 2
         else:
-            return alpha, None
+            # a law step that no halving lets descend stands at a kink of
+            # the merit that is not a zero (a point whose stick and slip
+            # each send Newton to the other): taken whole, it leaves the
+            # cycle; a secant step is then pinned instead (_pinned)
+            return (alpha, None) if secant else (1.0, seen[1.0])
         if alpha < 1.0 or self._settles(tangent, seen[alpha][0]):
             return alpha, seen[alpha]
         for _ in range(tol.LINE_SEARCH_EXPANSIONS):
@@ -358,26 +370,57 @@ class _Newton:
     def _solve(self, tangent: np.ndarray, rhs: np.ndarray, scale: float, secant=None, status=None):
         """``J δu = rhs`` with the law's ``tangent`` at the points of the
         ``status`` map (:meth:`KeptFactorisations.solve`).  Also returns the tangent solved
-        with: the law's, or where that is singular an exact law's
+        with: the law's, or where that is singular a Coulomb law's
         regularised one (:meth:`_regularised`; Newton is then not settled by
-        it).  A map that no point sticks or closes on more than on one whose
-        tangent proved singular (:meth:`_dominated`) is regularised at once;
-        one whose closed points leave a body free is tied (:meth:`_tied`)."""
-        if health.lets_go(self.scene, *self._gamma, self.ranks.gather(status)):
+        it).  A map whose slipping points leave a body free to turn or slide
+        (:func:`~contactcore.health.slips_free`, from the map and Γ's
+        geometry, never from a factorisation's pivots, which round-off
+        decides) is regularised at once, and so is one that no point sticks
+        or closes on more than on one whose tangent proved singular
+        (:meth:`_dominated`); one whose closed points leave a body free is
+        tied (:meth:`_tied`)."""
+        gathered = self.ranks.gather(status)
+        if health.lets_go(self.scene, *self._gamma, gathered):
             tangent = self._tied(tangent, status)
-        dominated = secant is not None and self._dominated(status)
-        if dominated:
+        free = secant is not None and health.slips_free(self.scene, *self._gamma, gathered)
+        self._free_maps += free
+        detour = free or (secant is not None and self._dominated(status))
+        if detour:
             tangent = self._regularised(tangent, secant)
         try:
-            return (*self.factorisations.solve(tangent, rhs, scale, detour=dominated), tangent)
+            return (*self.factorisations.solve(tangent, rhs, scale, detour=detour), tangent)
         except SolverError:
-            # an exact law's slip tangent leaves a body held by friction
+            # a Coulomb law's slip tangent leaves a body held by friction
             # alone free to turn: one secant step there
-            regularised = None if secant is None or dominated else self._regularised(tangent, secant)
+            regularised = None if secant is None or detour else self._regularised(tangent, secant)
             if regularised is None:
                 raise
             self._singular.append(status)
             return (*self.factorisations.solve(regularised, rhs, scale, detour=True), regularised)
+
+    def _slipping(self, response) -> bool:
+        """Whether a Coulomb point slips at ``response``, on any rank."""
+        return response.secant is not None and self.ranks.max(float(np.any(response.status == SLIP))) > 0
+
+    def _pinned(self, response) -> np.ndarray:
+        """The law's tangent at ``response`` with one slipping point made to
+        stick (``∂t/∂g = diag(k, k)``, ``k`` its ``γ`` or the law's
+        ``k_T``), for a map whose secant step does not decrease the merit:
+        the step then solves the neighbouring map where that point sticks,
+        which holds the body's rotation by its tie (a primal-dual
+        active-set guess, Hintermüller, Ito & Kunisch, SIAM J. Optim. 2002).
+        The point is the one nearest its stick window (the largest
+        ``secant/k = μp/|t*|``); of points within DECISION_BAND of that the
+        first by their coordinates (x, then y), so that neither round-off
+        nor numbering chooses between mirror points of a symmetric scene."""
+        k = self.itf.gamma if self.itf.exact else np.full(self.itf.size, self.law.kT)
+        ratio = self.ranks.gather(np.where(response.status == SLIP, response.secant / k, -1.0))
+        points = self._gamma[0]
+        near = points[ratio >= np.max(ratio, initial=-1.0) - tol.DECISION_BAND]
+        pin = np.all(self.itf.points == near[np.lexsort(near.T[::-1])[0]], axis=1)
+        out = np.array(response.tangent, float, copy=True)
+        out[pin] = k[pin, None, None] * np.eye(2)
+        return out
 
     def _tied(self, tangent: np.ndarray, status: np.ndarray) -> np.ndarray:
         """The law's tangent with each open point tied by FREE_BODY_TIE
@@ -394,9 +437,9 @@ class _Newton:
         return out
 
     def _regularised(self, tangent: np.ndarray, secant: np.ndarray):
-        """The exact law's tangent regularised by the slipping points'
-        ``secant`` stiffness (:meth:`contactcore.exact.NitscheInterface.regularised`;
-        None for a penalty law), each point's as the step first gave it (a
+        """The Coulomb law's tangent regularised by the slipping points'
+        ``secant`` stiffness (:func:`contactcore.laws.secant_tangent`, exact
+        or penalty), each point's as the step first gave it (a
         point that starts slipping later, its own): the secant steps of a
         step then share one matrix but for the points whose status changed,
         solved by a kept factorisation or a correction of it.  Kačanov's
@@ -428,9 +471,24 @@ class _Newton:
         self.report.iterations.append(iterations)
         self.report.residual = history[-1]
 
+    def _from_rest(self, start: float, k: float) -> bool:
+        """Whether the step ``start → k`` starts from rest (``u = 0``, no
+        load, the law's history untouched) along a straight load path: every
+        law here is positively homogeneous there (``t(c y) = c t(y)`` for
+        ``c > 0`` at ``s = 0``, and Nitsche's ``y = G̃ u`` is linear), so a
+        halved step is the same problem scaled, and Newton repeats its
+        iterates (the squeezed disc of tests/free_disc.py, xfem P1 at
+        h = 0.05: the same residual history at each of six cut-backs): more
+        increments do not help."""
+        history = self.state is None or not np.any(self.state)
+        f0, f1, half = (_flat(self.scene.factors(x)) for x in (start, k, (start + k) / 2))
+        if f0.any() or self.u.any() or not history:
+            return False
+        return bool(np.linalg.norm(half - f1 / 2) <= tol.PATH_STRAIGHT * np.linalg.norm(f1))
+
     def increment(self, n: int) -> None:
         """Increment ``n`` (from ``n − 1``), halving it on failure."""
-        pending, failures = [(float(n), 0)], []
+        pending, failures, rest = [(float(n), 0)], [], False
         start = float(n - 1)
         while pending:
             k, depth = pending.pop(0)
@@ -441,8 +499,9 @@ class _Newton:
                 raise  # a refused solver option or a free body: no smaller step helps
             except SolverError as exc:
                 failures.append(f"step {start:g} → {k:g}: {exc}")
+                rest = rest if depth else self._from_rest(start, k)
                 if depth >= tol.MAX_CUTBACKS:
-                    raise _no_equilibrium(self.scene, n, depth, failures) from None
+                    raise _no_equilibrium(self.scene, n, depth, failures, rest) from None
                 mid = (start + k) / 2
                 pending[:0] = [(mid, depth + 1), (k, depth + 1)]
 
@@ -459,15 +518,17 @@ def _refusal(scene, system: ContactSystem, exc: SolverError) -> SolverError:
     return SolverError(f"{exc}; {health.failure_hint(scene, weights)}")
 
 
-def _no_equilibrium(scene, n: int, depth: int, failures: list[str]) -> SolverError:
+def _no_equilibrium(scene, n: int, depth: int, failures: list[str], from_rest: bool = False) -> SolverError:
     """Two lines, the failed check first: the friction cone on Γ if the
     loads leave it (:func:`~contactcore.health.friction_demand`), else the
     last cut-back's failure (up to its explanation); then what may cause it.
-    Every cut-back's full message is kept in the error's ``details``."""
+    More increments are not offered for an increment that starts
+    ``from_rest`` (:meth:`_Newton._from_rest`).  Every cut-back's full
+    message is kept in the error's ``details``."""
     where = f"scene {scene.name}: increment {n} of {scene.increments}"
     last = f"failed after {depth} cut-backs (step 1/{2 ** depth}): {_abridged(health.headline(failures[-1]))}"
     check = health.friction_demand(scene, float(n)) or health.material_cause(scene)
-    settle = _unsettled(scene.law)
+    settle = _unsettled(scene.law, from_rest)
     if scene.law.name == "unilateral":  # its tie drops t_T to 0 the moment a point opens
         settle += ("; or no open/closed map is consistent: the unilateral law frees a closed point's tangential "
                    "tie at once when it opens, where type = \"coulomb\" with a large mu lets t_T vanish with the "
@@ -477,12 +538,13 @@ def _no_equilibrium(scene, n: int, depth: int, failures: list[str]) -> SolverErr
     return error
 
 
-def _unsettled(law) -> str:
+def _unsettled(law, from_rest: bool = False) -> str:
     """Why an increment may not converge under ``law``, naming only the
     remedies that apply to it: softer springs where the law is enforced by
     k_N, k_T, another β where it is enforced exactly (Nitsche), more
     increments only for a nonlinear law (a linear law's step is one solve
-    whatever its size), the friction limit μp only for a coulomb law."""
+    whatever its size) and not ``from_rest`` (:meth:`_Newton._from_rest`),
+    the friction limit μp only for a coulomb law."""
     exact = law.enforcement == "exact"
     if law.is_linear:
         return ("a linear law's step is one linear solve, failed whatever its size (more increments do not help): "
@@ -492,10 +554,12 @@ def _unsettled(law) -> str:
     friction = law.name == "coulomb"
     held = ("shear above μp, " if friction else "") + "a body held only by open points"
     status = "open/closed and stick/slip" if friction else "open/closed"
-    remedy = (f"Newton cannot settle the exact law's {status} map: use more increments or another stabilisation"
-              if exact else f"the springs are too stiff to settle the {status} map: soften k_N, k_T or use more "
-              "increments")
-    return f"either the load has no equilibrium ({held}) or {remedy}"
+    more = "" if from_rest else " or use more increments"
+    remedy = (f"Newton cannot settle the exact law's {status} map: use another stabilisation{more}"
+              if exact else f"the springs are too stiff to settle the {status} map: soften k_N, k_T{more}")
+    rest = ("; more increments do not help: from rest along a straight load path a smaller step is the same "
+            "problem scaled" if from_rest else "")
+    return f"either the load has no equilibrium ({held}) or {remedy}{rest}"
 
 
 def _flat(factors) -> np.ndarray:

@@ -24,7 +24,7 @@ import scipy.sparse as sp
 from . import tolerances as tol
 from .collective import SERIAL, Collective
 from .exchange import Exchange
-from .laws import Decision
+from .laws import Decision, secant_tangent
 from .result import SolverReport
 
 
@@ -78,10 +78,10 @@ class InterfaceOperator:
         return self.forces(traction)
 
     def regularised(self, tangent: np.ndarray, secant: np.ndarray):
-        """A tangent for a singular solve: None, a penalty law's singular
-        solve is a failure (exact laws:
-        :meth:`contactcore.exact.NitscheInterface.regularised`)."""
-        return None
+        """A tangent for a map whose slip leaves a body free: the slipping
+        points' ``secant`` stiffness in it (:func:`~contactcore.laws.secant_tangent`,
+        as for the exact laws: :meth:`contactcore.exact.NitscheInterface.regularised`)."""
+        return secant_tangent(tangent, secant)
 
     def sides(self) -> tuple[sp.csr_matrix, sp.csr_matrix]:
         """``(T, G)`` with the interface's stiffness ``Tᵀ W D G``: here ``(G, G)``."""

@@ -240,8 +240,10 @@ LINE_SEARCH_HALVINGS = 8
 #: converges in 10-13 iterations at β = 2 in fe, xfem and efgm P1 and fails
 #: at β = 20 in all three (a stick window 2μp/γ ten times narrower).
 #: Where that fails too, the step starts from its answer at
-#: CONTINUATION_STEP × β (fe P1 at h = 0.2: Newton at β = 3 settled where
-#: every closed point slips; from β = 30's answer it converged in 3).
+#: CONTINUATION_STEP × β (fe P1 at h = 0.2, 2026-11-26: Newton at β = 3
+#: settled where every closed point slips; from β = 30's answer it
+#: converged in 3; since a secant step that does not descend pins a point,
+#: docs/newton.md, Newton at β = 3 converges there in 17).
 CONTINUATION_STEP = 10.0
 CONTINUATION_FLOOR = 1e-3
 

@@ -27,3 +27,30 @@ def disc(pulled: bool, law: str = "exact"):
         name=f"disc-{'pulled' if pulled else 'pressed'}-{law}", increments=1,
         materials={"minus": Material(E=2e13, nu=0.3), "plus": Material(E=2e11, nu=0.3)},
         law=make_law(LAWS[law]), loads=tuple(Pressure(side, sign * PRESSURE) for side in ("left", "right", "top")))
+
+
+#: The squeezed disc's friction coefficient and loads: the block pulled up
+#: on its top (Pa) and pressed on its left and right sides (Pa).
+SQUEEZE_MU, SQUEEZE_PULL, SQUEEZE_PRESSURE = 0.5, 2e5, 1e6
+
+
+def squeezed(enforcement: str = "exact"):
+    """A steel disc (E = 2e11 Pa, radius 0.4) held by Γ alone in a 2 × 2
+    plane-strain block 20 times softer with ν = 0.45, fixed at its bottom,
+    pulled up on its top and squeezed from the sides: the poles open, the
+    sides hold the disc by Coulomb friction (μ = 0.5, exact or on springs
+    k = 1e12 Pa/m), and Newton's maps pass through ones whose closed points
+    all slip, the disc free to turn (docs/contact-enforcement.md, "Known
+    limits")."""
+    from contactcore.scene_files import scene_from_dict
+
+    law = {"type": "coulomb", "mu": SQUEEZE_MU, "kN": 1e12, "kT": 1e12, "enforcement": enforcement}
+    return scene_from_dict({
+        "name": f"disc-squeezed-{enforcement}", "plane": "strain", "h": 0.1,
+        "domain": {"type": "rectangle", "size": [2.0, 2.0]},
+        "interface": {"type": "circle", "centre": [1.0, 1.0], "radius": 0.4, "law": law},
+        "materials": {"minus": {"E": 2e11, "nu": 0.3}, "plus": {"E": 1e10, "nu": 0.45}},
+        "supports": [{"boundary": "bottom", "fix": "xy"}],
+        "loads": [{"type": "traction", "boundary": "top", "value": [0.0, SQUEEZE_PULL]},
+                  {"type": "pressure", "boundary": "left", "value": SQUEEZE_PRESSURE},
+                  {"type": "pressure", "boundary": "right", "value": SQUEEZE_PRESSURE}]})

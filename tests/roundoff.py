@@ -100,14 +100,23 @@ def _disc(pulled: bool):
     return free_disc.disc(pulled)
 
 
+def _squeezed(enforcement: str):
+    import free_disc
+
+    return free_disc.squeezed(enforcement)
+
+
 #: The stiff friction cases, by name: (scene factory, h or None for the scene's).
 #: The soft layers are beyond the springs efgm carries under Coulomb
 #: friction (it refuses them before any solve); "efgm-springs-limit" is
 #: within, at half the limit.
 #: Three enforce the law exactly (Nitsche): a rod held by friction alone, a
 #: layer 1000x stiffer than its neighbour, and an inclined Γ that opens part
-#: of the way; the last two are a disc held by Γ alone (tests/free_disc.py),
-#: pulled (refused) and pressed (solved).
+#: of the way; then a disc held by Γ alone (tests/free_disc.py), pulled
+#: (refused) and pressed (solved), and squeezed from its sides, exact and on
+#: springs, where Newton passes maps that leave it free to turn, pins a
+#: point nearest its stick window and takes a whole step out of a cycle
+#: (xfem on springs refuses it).
 CASES = {
     "soft-layer": (lambda: _layered(E_minus_factor=tol.SOFT_LAYER), None),
     "efgm-springs-limit": (_efgm_springs_limit, None),
@@ -121,6 +130,8 @@ CASES = {
     "inclined-exact": (_exact_inclined, tol.ROUNDOFF_C_H),
     "disc-pulled": (lambda: _disc(True), tol.ROUNDOFF_DISC_H),
     "disc-pressed": (lambda: _disc(False), tol.ROUNDOFF_DISC_H),
+    "disc-squeezed-exact": (lambda: _squeezed("exact"), tol.ROUNDOFF_SQUEEZED_H),
+    "disc-squeezed-penalty": (lambda: _squeezed("penalty"), tol.ROUNDOFF_SQUEEZED_H),
 }
 
 
