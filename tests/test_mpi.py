@@ -222,6 +222,17 @@ def test_bad_input_under_mpirun_is_one_line(tmp_path, args, message):
     assert not (tmp_path / "o").exists()
 
 
+def test_a_bad_out_under_mpirun_is_refused_on_every_rank(tmp_path):
+    """``--out`` naming a file: rank 0, which alone writes, refuses it, and
+    the other rank learns so before any solve (it waited for ever in the
+    mesh's first collective)."""
+    taken = tmp_path / "a-file"
+    taken.write_text("mine\n")
+    out = mpirun(2, "-m", "verification", "run", "A", "--method", "fe", "--h", "0.2", "--out", taken, timeout=120)
+    assert out.returncode == 2 and _errors(out) == [f"error: --out: {taken} is a file"], out.stderr
+    assert taken.read_text() == "mine\n"
+
+
 @pytest.mark.slow
 def test_field_files_under_mpirun_are_the_serial_ones(tmp_path):
     """``--fields`` on 2 ranks: each body's VTU (every rank's cells, in an

@@ -404,6 +404,27 @@ def _check_sizes(args) -> None:
                 raise ContactError(f"--{name.replace('_', '-')}: must be a finite number > 0 (got {h})")
 
 
+def _check_out(args, rank: int, distributed: bool) -> None:
+    """Refuse a bad ``--out`` on every rank alike (:func:`files.check_out`):
+    rank 0, which alone writes, checks it and the other ranks learn its
+    verdict, so that none goes on into a solve, whose collectives would
+    wait for ever on the rank that stopped."""
+    out = getattr(args, "out", None)
+    if out is None:
+        return
+    refusal = None
+    if rank == 0:
+        try:
+            files.check_out(out)
+        except files.OutFolderError as exc:
+            refusal = str(exc)
+    if distributed:
+        from mpi4py import MPI
+        refusal = MPI.COMM_WORLD.bcast(refusal, root=0)
+    if refusal is not None:
+        raise files.OutFolderError(refusal)
+
+
 def _check_ranks_list(args) -> None:
     if any(k < 1 for k in getattr(args, "ranks", None) or ()):
         raise ContactError(f"--ranks: every rank count must be at least 1 (got {args.ranks})")
@@ -479,6 +500,7 @@ def main(argv=None) -> int:
         _check_workers(args)
         _check_counts(args)
         _check_ranks_list(args)
+        _check_out(args, rank, distributed())
         if getattr(args, "out", None) is None:
             command.run(args, argv)
         elif rank > 0:  # every rank computes (the solves are collective), rank 0 alone writes
