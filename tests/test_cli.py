@@ -292,3 +292,26 @@ def test_an_empty_out_and_a_value_given_twice_are_refused(tmp_path, capsys):
         "error: run: argument --out: must name a folder (got an empty path)"
     assert main(["study", "A", "--param", "kN", "--values", "1e10", "1e10", "--out", str(tmp_path / "s")]) == 2
     assert capsys.readouterr().err.strip() == "error: --values: kN: each value may be given once (1e+10 given twice)"
+
+
+@pytest.mark.parametrize("exclude, message", [
+    ("100", "error: --exclude: 100 leaves out every sample of profile A1"),
+    ("nan", "error: --exclude: must be a finite distance >= 0 (got nan)"),
+    ("-1", "error: --exclude: must be a finite distance >= 0 (got -1)"),
+])
+def test_efficiency_refuses_an_exclusion_that_leaves_nothing_to_measure(tmp_path, capsys, monkeypatch, exclude,
+                                                                        message):
+    """An --exclude that leaves every sample of a profile out read an error
+    of 0 for every rung; refused before any solve, in one line."""
+    from verification import pool
+
+    def no_solve(*_, **__):
+        raise AssertionError("a case was solved")
+
+    monkeypatch.setattr(pool, "map_cases", no_solve)
+    out = tmp_path / "e"
+    assert main(["efficiency", "A", "--method", "fe", "--degree", "1", "--h", "0.2", "--exclude", exclude,
+                 "--out", str(out)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith(message), err
+    assert not out.exists()
