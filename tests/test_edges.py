@@ -80,6 +80,25 @@ def test_a_rerun_replaces_the_earlier_run_whole(tmp_path):
     assert not [p for p in tmp_path.iterdir() if p.name.startswith(".")]  # no temporary folder left
 
 
+def test_an_interrupted_replacement_keeps_the_earlier_run(tmp_path, monkeypatch):
+    """Stopped between moving the earlier folder aside and putting the new
+    one in place, the earlier run is back under its name, whole."""
+    out = tmp_path / "out"
+    assert main(["run", "A", "--method", "efgm", "--h", "0.2", "--out", str(out)]) == 0
+    before = sorted(p.relative_to(out) for p in out.rglob("*"))
+    replace = os.replace
+
+    def interrupted(src, dst):
+        if os.path.basename(src).startswith(".out.") and not os.path.basename(src).startswith(".out.earlier."):
+            raise KeyboardInterrupt
+        replace(src, dst)
+
+    monkeypatch.setattr(files.os, "replace", interrupted)
+    assert main(["run", "A", "--method", "efgm", "--h", "0.2", "--out", str(out)]) == 130
+    assert sorted(p.relative_to(out) for p in out.rglob("*")) == before
+    assert not [p for p in tmp_path.iterdir() if p.name.startswith(".")]
+
+
 def test_a_failed_run_leaves_nothing_under_the_final_name(tmp_path, scene_dict, capsys):
     data = scene_dict("A")
     del data["supports"]  # a floating body: refused before any solve

@@ -61,7 +61,10 @@ def atomic_path(path: Path, suffix: str = ""):
 
 @contextmanager
 def atomic_folder(path: Path):
-    """A temporary folder beside ``path`` that replaces it if the block succeeds."""
+    """A temporary folder beside ``path`` that replaces it if the block
+    succeeds.  An earlier folder at ``path`` is moved aside (renamed, not
+    deleted) until the new one is in place, and put back if the block is
+    interrupted in between: at every moment ``path`` holds one whole run."""
     path = Path(path)
     try:
         path.parent.mkdir(parents=True, exist_ok=True)
@@ -69,12 +72,19 @@ def atomic_folder(path: Path):
     except OSError as exc:  # a place the system will not let us write (/proc, /sys, a read-only mount)
         raise OutFolderError(f"{path} cannot be created ({exc.strerror or exc})") from None
     _follow_umask(str(tmp), 0o777)
+    earlier = None
     try:
         yield tmp
         if path.exists():
-            shutil.rmtree(path)
+            earlier = Path(tempfile.mkdtemp(prefix=f".{path.name}.earlier.", dir=path.parent))
+            os.replace(path, earlier)  # onto an empty folder: one rename
         os.replace(tmp, path)
     finally:
+        if earlier is not None and earlier.exists():
+            if path.exists():
+                shutil.rmtree(earlier)
+            else:
+                os.replace(earlier, path)
         if tmp.exists():
             shutil.rmtree(tmp)
 
