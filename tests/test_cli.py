@@ -315,3 +315,11 @@ def test_efficiency_refuses_an_exclusion_that_leaves_nothing_to_measure(tmp_path
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and err[0].startswith(message), err
     assert not out.exists()
+
+
+def test_run_refuses_an_h_beside_the_papers_grids(tmp_path, capsys):
+    """--paper fixes each method's grid: an --h beside it was ignored without a word."""
+    assert main(["run", "A", "--paper", "--h", "0.1", "--out", str(tmp_path / "r")]) == 2
+    assert capsys.readouterr().err.strip().splitlines() == [
+        "error: --h 0.1: the paper's grids fix the resolution (--paper); give one of the two"]
+    assert not (tmp_path / "r").exists()

@@ -303,6 +303,8 @@ def _check(scene: Scene, chosen: list[str], h, degree: int, paper: bool, allow_l
         check_resolution(scene, h)
     if estimate and paper:
         raise ContactError("--estimate: the paper's grids are fixed, there is no h/2 to solve at; give --h instead")
+    if paper and h is not None:
+        raise ContactError(f"--h {h:g}: the paper's grids fix the resolution (--paper); give one of the two")
     if estimate and given.get("nodes"):
         raise ContactError("--estimate: the nodes of --nodes are fixed, there is no h/2 to solve at (every run would "
                            "be the same, its error estimated as zero); leave out --nodes or --estimate")
