@@ -238,8 +238,8 @@ def test_study_refuses_an_enforcement_it_cannot_give(tmp_path, capsys, scene, va
 def test_an_exact_law_has_no_penalty_to_fall_back_on():
     """``bonded`` exists only exactly: its penalty counterpart is named."""
     scene = load_scene("A").with_changes(law=make_law({"type": "bonded"}))
-    with pytest.raises(SceneError, match=r'no springs to fall back on \(type = "linear", with kN and kT, is its '
-                                         r'penalty counterpart\)'):
+    with pytest.raises(SceneError, match=r'no springs to fall back on \(an exact law keeps none, even those its '
+                                         r'file gives; type = "linear", with kN and kT, is its penalty counterpart\)'):
         study.scene_at(scene, {"enforcement": "penalty"})
 
 

@@ -65,7 +65,7 @@ def penalty_counterpart(law) -> str:
     ``bonded`` through the ``linear`` law's springs, the others through
     their own."""
     return ('type = "linear", with kN and kT, is its penalty counterpart' if law.name in BONDED
-            else "enforce it by its springs, kN and kT")
+            else 'give the file enforcement = "penalty" with kN and kT')
 
 
 def exact_twin(scene: Scene, field: str = "--against-exact") -> Scene:

@@ -100,7 +100,8 @@ def _enforcement(scene, value):
         return {"law": law}
     if value == "penalty":
         raise SceneError("--param enforcement", f"penalty: the scene's '{law.name}' law is enforced exactly and "
-                         f"has no springs to fall back on ({penalty_counterpart(law)})")
+                         f"has no springs to fall back on (an exact law keeps none, even those its file gives; "
+                         f"{penalty_counterpart(law)})")
     return {"law": exact_law(law, "--param enforcement: interface.law")}
 
 
