@@ -323,3 +323,12 @@ def test_run_refuses_an_h_beside_the_papers_grids(tmp_path, capsys):
     assert capsys.readouterr().err.strip().splitlines() == [
         "error: --h 0.1: the paper's grids fix the resolution (--paper); give one of the two"]
     assert not (tmp_path / "r").exists()
+
+
+def test_effectivity_refuses_a_truth_no_finer_than_its_runs(tmp_path, capsys):
+    """A truth at h = 0.2 for runs at 0.1 and 0.05 was solved and used."""
+    assert main(["effectivity", "--scene", "A", "--h", "0.1", "--ref-h", "0.2", "--out", str(tmp_path / "e")]) == 2
+    assert capsys.readouterr().err.strip().splitlines() == [
+        "error: --ref-h: 0.2 is not finer than the finest run's h, 0.05: the truth must be finer than every run "
+        "it measures"]
+    assert not (tmp_path / "e").exists()

@@ -197,7 +197,11 @@ def scene_table(scene_names, h: float, ref_h: float, out: Path, levels: int = 2,
     """The effectivity of every :data:`SCENE_VARIANTS` pair on each scene
     (a built-in name or a TOML file; truth: fe P2 at ``ref_h``), written to ``out/effectivity.csv`` and
     ``out/effectivity.md``; returns the Markdown."""
-    from contactcore import load_scene
+    from contactcore import SceneError, load_scene
+    finest = min(est.levels_of(h, levels))
+    if not ref_h < finest:
+        raise SceneError("--ref-h", f"{ref_h:g} is not finer than the finest run's h, {finest:g}: the truth "
+                         "must be finer than every run it measures")
     rows, scenes = [], [load_scene(name) for name in scene_names]  # every scene read before any solve
     for scene in scenes:
         truth = scene_truth(scene, ref_h)
