@@ -206,8 +206,9 @@ _slow = pytest.mark.slow
     pytest.param(["run", "strip", "--method", "xfem", "--h", "0.05"], "no cell resolves body plus", marks=_slow),
     pytest.param(["study", "A", "--param", "kN", "--values", "1e9"], "spreads its cases over a pool", marks=_slow),
     (["scaling", "A", "--h", "0.2"], "launches mpirun itself"),
+    pytest.param(["closed", "--case", "patch"], "solves its cases one after another in one process", marks=_slow),
 ], ids=["scene", "fe-no-equilibrium", "xfem-no-equilibrium", "fe-supports", "xfem-supports", "unresolved",
-        "study", "scaling"])
+        "study", "scaling", "closed"])
 def test_bad_input_under_mpirun_is_one_line(tmp_path, args, message):
     """A scene error (every rank meets it while reading), a solver error
     (friction that cannot carry the patch's shear: Newton's decisions are

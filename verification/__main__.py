@@ -115,8 +115,9 @@ class Command:
     """One command of the CLI: its help line, its arguments, what it runs
     (``run(args, argv)``), and how it meets mpirun's ranks (``ranks``): it
     spreads its solves over them (``"spread"``), spreads its cases over a
-    pool instead (``"pool"``: refused under mpirun), or launches mpirun
-    itself (``"launcher"``: refused under mpirun).  ``epilog`` follows the
+    pool instead (``"pool"``: refused under mpirun), solves them one after
+    another in one process (``"serial"``: refused under mpirun), or
+    launches mpirun itself (``"launcher"``: refused under mpirun).  ``epilog`` follows the
     options in ``--help``, line by line (:func:`explained`)."""
 
     help: str
@@ -131,6 +132,8 @@ UNDER_MPIRUN = {
     "pool": "mpirun: '{}' spreads its cases over a pool, not over mpirun's ranks: run it with --workers K, or "
             "under mpiexec -n K python -m mpi4py.futures -m verification",
     "launcher": "mpirun: '{}' launches mpirun itself, once per rank count: run it without mpirun",
+    "serial": "mpirun: '{}' solves its cases one after another in one process, not over mpirun's ranks: run it "
+              "without mpirun",
 }
 
 
@@ -202,7 +205,7 @@ def _commands() -> dict[str, Command]:
         "closed": Command("closed-form cases on refinement ladders, with observed rates", (
             arg("--case", nargs="+", default=list(CASES), choices=list(CASES), help="the cases (default: all)"),
             method, arg("--degree", nargs="+", type=int, default=[1, 2], choices=(1, 2),
-                        help="polynomial degrees (default 1 2)"), out), _closed),
+                        help="polynomial degrees (default 1 2)"), out), _closed, ranks="serial"),
         "efficiency": Command("error against run time, against a refined reference or estimated without one", (
             arg("scene", help="built-in scene name or a scene TOML file"), method, degrees, ladder,
             arg("--ref-h", type=float,
@@ -215,7 +218,7 @@ def _commands() -> dict[str, Command]:
             arg("--h", type=float, default=0.05, help="the coarsest run (default 0.05)"),
             arg("--ref-h", type=float, default=0.00625, help="cell size of the fe P2 truth (default 0.00625)"),
             arg("--levels", type=int, default=2, choices=(2, 3), help="runs h, h/2 (3: and h/4); default 2"),
-            out), _effectivity),
+            out), _effectivity, ranks="serial"),
         "sweeps": Command("stiff and extreme cases: error, condition and outcome", (
             arg("--sweep", nargs="+", choices=[s.name for s in sweeps()], metavar="NAME",
                 help="the sweeps (default: all; each explained below)"),
