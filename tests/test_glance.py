@@ -28,10 +28,10 @@ POOLED_STUDY = ["study", "A", "--param", "kN", "--values", "1e9", "1e10", "1e11"
                 "--degree", "2", "--h", "0.02", "--workers", "2"]
 
 
-def _interrupt(args: list[str], out: Path) -> subprocess.CompletedProcess:
+def _interrupt(args: list[str], out: Path, sig: int = signal.SIGINT) -> subprocess.CompletedProcess:
     """Start ``python -m verification ARGS --out OUT`` in a process group of
-    its own, wait for its first progress line, send SIGINT to the whole
-    group (as a terminal's Ctrl-C does: pool workers too), collect its end."""
+    its own, wait for its first progress line, send ``sig`` to the whole
+    group (as a terminal's Ctrl-C does SIGINT: pool workers too), collect its end."""
     proc = subprocess.Popen([sys.executable, "-m", "verification", *args, "--out", str(out)], cwd=ROOT,
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True)
     seen = []
@@ -39,7 +39,7 @@ def _interrupt(args: list[str], out: Path) -> subprocess.CompletedProcess:
         seen.append(line)
         if line.startswith("INFO verification:"):
             break
-    os.killpg(proc.pid, signal.SIGINT)
+    os.killpg(proc.pid, sig)
     stdout, rest = proc.communicate(timeout=120)
     return subprocess.CompletedProcess(proc.args, proc.returncode, stdout, "".join(seen) + rest)
 
@@ -51,6 +51,16 @@ def test_ctrl_c_ends_with_one_line_and_exit_130(args, tmp_path):
     assert "Traceback" not in done.stderr, done.stderr
     assert done.stderr.rstrip().splitlines()[-1] == "interrupted"
     assert not (tmp_path / "out").exists()  # an interrupted run leaves no result folder
+
+
+def test_sigterm_ends_like_ctrl_c_with_exit_143(tmp_path):
+    """SIGTERM (kill, timeout, a batch scheduler) mid-run: one line, exit
+    128 + 15, and neither the result folder nor the folder it was built in
+    left behind (the latter was)."""
+    done = _interrupt(LONG_RUN, tmp_path / "out", signal.SIGTERM)
+    assert done.returncode == 143, done.stderr
+    assert "Traceback" not in done.stderr and done.stderr.rstrip().splitlines()[-1] == "terminated"
+    assert list(tmp_path.iterdir()) == []
 
 
 #: The most lines a refusal may take on the user's screen.

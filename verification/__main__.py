@@ -30,8 +30,11 @@ from __future__ import annotations
 import argparse
 import logging
 import math
+import signal
 import sys
 import tempfile
+import threading
+from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable
@@ -485,6 +488,31 @@ def _abort_on(exc: BaseException) -> None:
 
 #: The exit status of a run ended by Ctrl-C: 128 + SIGINT, as a shell reports it.
 INTERRUPTED = 130
+#: ... and by SIGTERM (``kill``, ``timeout``, a batch scheduler): 128 + SIGTERM.
+TERMINATED = 143
+
+
+class Terminated(KeyboardInterrupt):
+    """SIGTERM, raised where the process is, so that it ends as Ctrl-C does:
+    the result folder discarded, the workers stopped, one line."""
+
+
+def _raise_terminated(signum, frame) -> None:
+    raise Terminated
+
+
+@contextmanager
+def _sigterm_ends_like_ctrl_c():
+    """SIGTERM raises :class:`Terminated` while the block runs (the handler
+    before it restored after; only the main thread may set one)."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    before = signal.signal(signal.SIGTERM, _raise_terminated)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, before)
 
 
 def main(argv=None) -> int:
@@ -496,36 +524,16 @@ def main(argv=None) -> int:
     rank = launched_rank()
     repeats = _configure_logging(args.verbosity if rank == 0 else -2)  # one log, rank 0's
     try:
-        if distributed():  # PETSc starts collectively: every rank now, before any method needs it
-            from petsc4py import PETSc  # noqa: F401
-        _check_ranks(args.command, command.ranks)
-        _check_sizes(args)
-        _check_workers(args)
-        _check_counts(args)
-        _check_ranks_list(args)
-        _check_out(args, rank, distributed())
-        if getattr(args, "out", None) is None:
-            command.run(args, argv)
-        elif rank > 0:  # every rank computes (the solves are collective), rank 0 alone writes
-            with tempfile.TemporaryDirectory() as scratch:
-                args.out = Path(scratch) / "out"
-                command.run(args, argv)
-        else:
-            with files.result_folder(args.out) as tmp:
-                final, args.out = args.out, tmp
-                command.run(args, argv)
-                if not (tmp / files.MANIFEST).exists():  # every result folder says what made it
-                    files.write_json(tmp / files.MANIFEST, files.provenance(list(argv)))
-                files.write_units(tmp)  # every CSV column's unit, beside the CSVs (their headers stay as read)
-            log.info("wrote %s", final)
+        with _sigterm_ends_like_ctrl_c():
+            _main(args, argv, command, rank)
     except ContactError as exc:
         if rank == 0:  # every rank meets the same error (Newton's decisions are collective): one line
             print(f"error: {exc}", file=sys.stderr)
         return 2
-    except KeyboardInterrupt:  # the result folder is already discarded; the workers stop with the pool
+    except KeyboardInterrupt as exc:  # the result folder is already discarded; the workers stop with the pool
         if rank == 0:
-            print("interrupted", file=sys.stderr)
-        return INTERRUPTED
+            print("terminated" if isinstance(exc, Terminated) else "interrupted", file=sys.stderr)
+        return TERMINATED if isinstance(exc, Terminated) else INTERRUPTED
     except Exception as exc:
         if distributed():
             _abort_on(exc)
@@ -534,6 +542,35 @@ def main(argv=None) -> int:
         for line in repeats.summary():
             print(line, file=sys.stderr)
     return 0
+
+
+def _main(args, argv, command: Command, rank: int) -> None:
+    """The checks every command makes, then the command, its result folder
+    built aside and put in place whole (rank 0's; the other ranks' in a
+    scratch folder)."""
+    from .pool import distributed
+    if distributed():  # PETSc starts collectively: every rank now, before any method needs it
+        from petsc4py import PETSc  # noqa: F401
+    _check_ranks(args.command, command.ranks)
+    _check_sizes(args)
+    _check_workers(args)
+    _check_counts(args)
+    _check_ranks_list(args)
+    _check_out(args, rank, distributed())
+    if getattr(args, "out", None) is None:
+        command.run(args, argv)
+    elif rank > 0:  # every rank computes (the solves are collective), rank 0 alone writes
+        with tempfile.TemporaryDirectory() as scratch:
+            args.out = Path(scratch) / "out"
+            command.run(args, argv)
+    else:
+        with files.result_folder(args.out) as tmp:
+            final, args.out = args.out, tmp
+            command.run(args, argv)
+            if not (tmp / files.MANIFEST).exists():  # every result folder says what made it
+                files.write_json(tmp / files.MANIFEST, files.provenance(list(argv)))
+            files.write_units(tmp)  # every CSV column's unit, beside the CSVs (their headers stay as read)
+        log.info("wrote %s", final)
 
 
 if __name__ == "__main__":
