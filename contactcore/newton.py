@@ -250,7 +250,9 @@ class _Newton:
             du, rep, tangent = self._solve(response.tangent, -R, scale, response.secant, response.status)
             _merge(self.report, rep)
             if not self.law.is_linear:  # a linear law is solved in one step
-                secant = not np.array_equal(tangent, response.tangent)
+                # a regularised step on any rank is one on every rank (a rank
+                # whose points do not slip holds the law's own tangent)
+                secant = not self.ranks.all(np.array_equal(tangent, response.tangent))
                 alpha, evaluated = self._line_search(u, du, b, R, response.status, secant, tangent)
                 if secant and evaluated is None and self._slipping(response):  # the secant step is no descent
                     du, rep, tangent = self._solve(self._pinned(response), -R, scale, status=response.status)
@@ -480,9 +482,9 @@ class _Newton:
         iterates (the squeezed disc of tests/free_disc.py, xfem P1 at
         h = 0.05: the same residual history at each of six cut-backs): more
         increments do not help."""
-        history = self.state is None or not np.any(self.state)
+        untouched = self.ranks.all((self.state is None or not np.any(self.state)) and not self.u.any())
         f0, f1, half = (_flat(self.scene.factors(x)) for x in (start, k, (start + k) / 2))
-        if f0.any() or self.u.any() or not history:
+        if f0.any() or not untouched:
             return False
         return bool(np.linalg.norm(half - f1 / 2) <= tol.PATH_STRAIGHT * np.linalg.norm(f1))
 
