@@ -60,7 +60,7 @@ import scipy.sparse as sp
 from . import tolerances as tol
 from .errors import DiscretisationError, SceneError
 from .collective import SERIAL
-from .laws import STICK, CoulombLaw, Decision, LawResponse, LinearLaw, UnilateralLaw, _friction, _positive, secant_tangent
+from .laws import STICK, CoulombLaw, Decision, LawResponse, LinearLaw, UnilateralLaw, _friction, _positive
 
 #: Laws that exist only enforced exactly (no springs).
 BONDED = ("bonded",)
@@ -277,18 +277,6 @@ class NitscheInterface:
     def sides(self) -> tuple[sp.csr_matrix, sp.csr_matrix]:
         """``(G + θΓ⁻¹S, G̃)``: the stiffness is ``(G + θΓ⁻¹S)ᵀ W D G̃ + C``."""
         return self.test, self.augmented
-
-    def regularised(self, tangent: np.ndarray, secant: np.ndarray) -> np.ndarray:
-        """The law's ``tangent`` with the ``secant`` stiffness
-        ``|t_T| / |y_T − s|`` in ``∂t_T/∂y_T`` of its slipping points.
-        Where every closed point of a body held by Γ alone slips, the exact
-        tangent leaves it free to turn: its moment is flat in the rotation
-        until a point's trial re-enters the stick window.  The secant step
-        (Kačanov's iteration for a monotone law) moves the rotation towards
-        that window by as much as the slipping tractions ask, where the
-        stick stiffness γ, far steeper, crept; Newton goes on with the
-        law's tangent once a point sticks."""
-        return secant_tangent(tangent, secant)
 
 
 def enforced(law, operator):

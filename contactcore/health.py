@@ -308,9 +308,8 @@ def _let_go(scene, interface_points, interface_weights, status) -> np.ndarray:
     path held at exactly zero still defeats (DECISION_FLOOR's note).  A
     slipping point counts as holding tangentially: a body held by slipping
     points alone is left to Newton's
-    secant step (:meth:`contactcore.exact.NitscheInterface.regularised`)
-    under an exact law, and to the factorisation's own check under a
-    penalty law."""
+    secant step (:func:`contactcore.laws.secant_tangent`), exact or
+    penalty (:func:`slips_free`)."""
     holding = np.asarray(status) != OPEN
     if holding.all():
         return np.zeros((6, 0))

@@ -33,7 +33,7 @@ class LawResponse:
     status: np.ndarray  # (m,) OPEN, STICK or SLIP
     #: (m,) the secant tangential stiffness ``|t_T| / |g_T − s|`` of the
     #: slipping points (0 elsewhere), a stiffness their tangent lacks
-    #: (:meth:`contactcore.exact.NitscheInterface.regularised`); None for a
+    #: (:func:`contactcore.laws.secant_tangent`); None for a
     #: law without slip
     secant: np.ndarray | None = None
 
@@ -260,9 +260,13 @@ def secant_tangent(tangent: np.ndarray, secant: np.ndarray) -> np.ndarray:
     stiffness ``|t_T| / |g_T − s|`` (:attr:`LawResponse.secant`, 0 where
     the point does not slip) in place of its ``∂t_T/∂g_T = 0``: where every
     closed point of a body held by Γ alone slips, the slip tangent leaves
-    the body free to turn (or slide), and this step (Kačanov's iteration
-    for a monotone law) moves it towards a stick window instead
-    (:meth:`contactcore.exact.NitscheInterface.regularised`)."""
+    the body free to turn (or slide): its moment is flat in the rotation
+    until a point's trial re-enters the stick window.  This step (Kačanov's
+    iteration for a monotone law), exact or penalty (for Nitsche, ``g``
+    is the augmented jump ``y``), moves the rotation towards that window by
+    as much as the slipping tractions ask, where the stick stiffness, far
+    steeper, crept; Newton goes on with the law's tangent once a point
+    sticks."""
     out = np.array(tangent, float, copy=True)
     slipping = secant > 0
     out[slipping, 1, 1] = secant[slipping]

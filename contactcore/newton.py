@@ -63,7 +63,7 @@ from .errors import SolverError, SolverOptionError
 from .exact import enforced
 from .factorisations import KeptFactorisations
 from .interface_path import Increment, InterfacePath, canonical_order
-from .laws import OPEN, SLIP, STICK
+from .laws import OPEN, SLIP, STICK, secant_tangent
 from .result import SolverReport
 from .system import ContactSystem
 
@@ -394,9 +394,9 @@ class _Newton:
         except SolverError:
             # a Coulomb law's slip tangent leaves a body held by friction
             # alone free to turn: one secant step there
-            regularised = None if secant is None or detour else self._regularised(tangent, secant)
-            if regularised is None:
+            if secant is None or detour:
                 raise
+            regularised = self._regularised(tangent, secant)
             self._singular.append(status)
             return (*self.factorisations.solve(regularised, rhs, scale, detour=True), regularised)
 
@@ -449,17 +449,15 @@ class _Newton:
         towards the stick window, which the line search's doubling reaches."""
         if self._secant is not None:
             secant = np.where(secant > 0, np.where(self._secant > 0, self._secant, secant), 0.0)
-        regularised = self.itf.regularised(tangent, secant)
-        if regularised is not None:
-            self._secant = secant
-        return regularised
+        self._secant = secant
+        return secant_tangent(tangent, secant)
 
     def _dominated(self, status) -> bool:
         """Whether no point of the ``status`` map sticks where a map whose
         tangent proved singular did not, and none is closed where it was
         open.  That tangent's null mode is a body held by Γ alone turning
         (or sliding) with no normal jump at its closed points and no jump at
-        its sticking ones (:meth:`contactcore.exact.NitscheInterface.regularised`):
+        its sticking ones (:func:`contactcore.laws.secant_tangent`):
         every such map leaves it free too, so its tangent is singular
         without a factorisation to tell."""
         rank = _CONSTRAINT[status]

@@ -232,16 +232,16 @@ class Scene:
         law, itf = self.law, self.interface
         if not hasattr(law, "kN"):  # enforced exactly: no springs
             return warnings
-        soft = self.softer_modulus
+        soft, curved = self.softer_modulus, not isinstance(itf, LineInterface)
         alpha = law.stiffness_scale * h / soft
-        if not fitted and not isinstance(itf, LineInterface) and alpha > tol.LOCKING_WARN:
+        if not fitted and curved and alpha > tol.LOCKING_WARN:
             warnings.append(f"interface springs of {alpha:.1e}·E/h, E the softer body's (above "
                             f"{tol.LOCKING_WARN:.0e}·E/h), on a curved Γ that cuts the discretisation: penalty "
                             "locking may raise the error tenfold and lower the convergence rate; soften the springs "
                             "or refine")
         stiff = [f"k_{c} h/E = {k * h / soft:.2g} (above {tol.PROFILE_TRACTION_WARN[c]:g})"
                  for c, k in (("N", law.kN), ("T", law.kT)) if k * h / soft > tol.PROFILE_TRACTION_WARN[c]]
-        if stiff and not isinstance(itf, LineInterface):
+        if stiff and curved:
             warnings.append(f"interface springs of {' and '.join(stiff)}, E the softer body's, on a curved Γ: Γ's "
                             "profile tractions t = k g multiply the jump's discretisation error between Γ's points "
                             "by that factor and may be off by tens of per cent; the solve's own tractions at Γ's "

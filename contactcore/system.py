@@ -24,7 +24,7 @@ import scipy.sparse as sp
 from . import tolerances as tol
 from .collective import SERIAL, Collective
 from .exchange import Exchange
-from .laws import Decision, secant_tangent
+from .laws import Decision
 from .result import SolverReport
 
 
@@ -76,12 +76,6 @@ class InterfaceOperator:
     def internal(self, u: np.ndarray, traction: np.ndarray) -> np.ndarray:
         """The interface's forces at ``u`` with the tractions ``t``: ``Gᵀ W t``."""
         return self.forces(traction)
-
-    def regularised(self, tangent: np.ndarray, secant: np.ndarray):
-        """A tangent for a map whose slip leaves a body free: the slipping
-        points' ``secant`` stiffness in it (:func:`~contactcore.laws.secant_tangent`,
-        as for the exact laws: :meth:`contactcore.exact.NitscheInterface.regularised`)."""
-        return secant_tangent(tangent, secant)
 
     def sides(self) -> tuple[sp.csr_matrix, sp.csr_matrix]:
         """``(T, G)`` with the interface's stiffness ``Tᵀ W D G``: here ``(G, G)``."""

@@ -227,7 +227,7 @@ RESIDUAL_FLOOR = 1e-8
 #: LINE_SEARCH_EXPANSIONS times (to 1024): where every closed point of a
 #: body held by friction alone slips, its rotation has no stiffness and
 #: Newton solves with the stick stiffness there instead
-#: (contactcore.exact.NitscheInterface.regularised), a slope far steeper
+#: (contactcore.laws.secant_tangent), a slope far steeper
 #: than the true one, whose full steps each covered ~4 % of the way (exact
 #: C-coulomb, fe P1, h = 0.1: 25 iterations without converging; with the
 #: doubling, the increment converges).

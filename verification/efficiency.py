@@ -37,7 +37,6 @@ import math
 from pathlib import Path
 
 from contactcore import estimate as estimates
-from contactcore.estimate import far_from_singular
 from contactcore.profiles import sample_points
 from contactcore import SceneError, load_scene, sample_profiles
 from contactcore import tolerances as tol
@@ -209,7 +208,7 @@ def _check_exclusion(scene, exclude: float) -> None:
         raise SceneError("--exclude", f"must be a finite distance >= 0 (got {exclude:g})")
     for profile in scene.profiles:
         _, points, _ = sample_points(scene, profile)
-        if not far_from_singular(scene, points, exclude).any():
+        if not estimates.far_from_singular(scene, points, exclude).any():
             raise SceneError("--exclude", f"{exclude:g} leaves out every sample of profile {profile.id}: "
                              f"give less (the default is {default_exclusion(scene):.3g})")
 
