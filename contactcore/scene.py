@@ -131,6 +131,25 @@ class InterfaceProfile:
 
 Profile = LineProfile | InterfaceProfile
 
+#: The longest unit name a scene may give (docs/scenes.md, "Units"): a
+#: label such as "mm", "MPa" or "N/mm²", not a sentence.
+MAX_UNIT_NAME = 16
+
+
+@dataclass(frozen=True)
+class Units:
+    """The names of a scene's length and stress units: labels only.
+
+    A scene may be given in any consistent set of units (docs/scenes.md,
+    "Units"): lengths in ℓ, forces in F, stresses F/ℓ².  The numbers are
+    never converted; these names label the results (plots, tables,
+    ``units.json``): a spring stiffness in ``stress/length``, a
+    displacement or a gap in ``length``.
+    """
+
+    length: str = "m"
+    stress: str = "Pa"
+
 
 @dataclass(frozen=True)
 class Scene:
@@ -155,6 +174,8 @@ class Scene:
     h: float | None = None
     paper: dict[str, tuple[int, int]] = field(default_factory=dict)
     title: str = ""
+    #: The names of the units the scene's numbers are in (labels only).
+    units: Units = Units()
     #: The scene as the user gave it, when this one is its dimensionless
     #: form (contactcore.scaling): messages name the user's values.
     source: "Scene | None" = field(default=None, compare=False, repr=False)
@@ -294,6 +315,19 @@ def finite(value, path: str) -> float:
     if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
         raise SceneError(path, f"must be a finite number (got {value!r})")
     return float(value)
+
+
+def _check_units(units: Units) -> None:
+    """Each unit name a non-empty printable string (no newline) of at most
+    :data:`MAX_UNIT_NAME` characters."""
+    if not isinstance(units, Units):
+        raise SceneError("units", f"must be a Units(length=..., stress=...) (got {units!r})")
+    for key in ("length", "stress"):
+        value = getattr(units, key)
+        if not isinstance(value, str) or not value.strip() or not value.isprintable() \
+                or len(value) > MAX_UNIT_NAME:
+            raise SceneError(f"units.{key}", f"must be a unit's name: a non-empty string of at most "
+                             f"{MAX_UNIT_NAME} characters on one line (got {value!r})")
 
 
 def _check_material(mat: Material, plane: str, path: str) -> None:
@@ -488,6 +522,7 @@ def validate(scene: Scene) -> None:
     check_file_name(scene.name, "name")
     if scene.plane not in ("stress", "strain"):
         raise SceneError("plane", f"must be 'stress' or 'strain' (got {scene.plane!r})")
+    _check_units(scene.units)
     _check_domain(scene.domain)
     _check_interface(scene)
     if scene.law is not None:  # a law built in code meets the file's rules (a negative k_N was refused late, as a rigid mode)

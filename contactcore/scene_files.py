@@ -21,7 +21,7 @@ from .exact import default_enforcement
 from .enforcement import make_law
 from .laws import InterfaceLaw
 from .scene import (BODIES, BodyForce, InterfaceProfile, LineProfile, Load, Material, Pin, Pressure, Profile, Scene, Support,
-                    Torque, Traction, finite)
+                    Torque, Traction, Units, finite)
 
 
 
@@ -124,6 +124,16 @@ def _read_materials(t: _Table) -> dict[str, Material]:
     return mats
 
 
+def _read_units(t: _Table | None) -> Units:
+    """The ``[units]`` table's names (labels only), each defaulting to SI's;
+    :func:`contactcore.scene.validate` checks them."""
+    if t is None:
+        return Units()
+    units = Units(**{f.name: t.get(f.name, "str", f.default) for f in dataclasses.fields(Units)})
+    t.done()
+    return units
+
+
 def _read_support(t: _Table) -> Support:
     s = Support(t.get("boundary", "str"), t.get("fix", "str", "xy"), t.get("value", "vector", (0.0, 0.0)),
                 t.get("path", "path", ()))
@@ -190,6 +200,7 @@ def scene_from_dict(data: dict) -> Scene:
         loads=tuple(_read_load(x) for x in t.get("loads", "tables", [])),
         profiles=tuple(_read_profile(p) for p in t.get("profiles", "tables", [])),
         paper=paper,
+        units=_read_units(t.get("units", "table", None)),
     )
     t.done()
     return scene.validated()
@@ -212,6 +223,8 @@ def scene_to_dict(scene: Scene) -> dict:
         data["h"] = scene.h
     if scene.paper:
         data["paper"] = {k: list(v) for k, v in scene.paper.items()}
+    if scene.units != Units():
+        data["units"] = dataclasses.asdict(scene.units)
     dom = scene.domain
     data["domain"] = ({"type": "rectangle", "corner": list(dom.corner), "size": list(dom.size)}
                       if isinstance(dom, Rectangle) else {"type": "disc", "centre": list(dom.centre),

@@ -1,5 +1,6 @@
 """Field files (``run --fields``, issue 18): every file opens with meshio,
 and what it holds is the run's own fields and interface state."""
+import json
 import re
 import xml.etree.ElementTree as ET
 
@@ -8,6 +9,7 @@ import numpy as np
 import pytest
 
 from contactcore import BODIES, ProfileData, evaluate_quantities, load_scene, scene_text
+from contactcore.scene import Units
 from contactcore.tolerances import PLOT_MIN_Y_SPAN
 from tests.tolerances import FIELD_FILE_RTOL, SAMPLE_ROUNDING_RTOL
 from verification import fields_out, interface, methods, plots
@@ -225,3 +227,77 @@ def test_a_table_cell_with_a_pipe_or_a_line_break_keeps_its_row():
     table = markdown_table([{"status": "failed", "message": "residual 1e-2 | too large\n  either the load"}],
                            ["status", "message"])
     assert table.splitlines()[2] == "| failed | residual 1e-2 \\| too large either the load |"
+
+
+#: A scene's own units (docs/scenes.md, "Units"): labels only.
+MM_MPA = Units(length="mm", stress="MPa")
+
+
+@pytest.fixture(scope="module")
+def a_in_mpa(tmp_path_factory):
+    """Scene A's numbers labelled mm and MPa (never converted: its
+    stresses, about 1e5, read as MPa), its path followed in two increments."""
+    text = re.sub(r"(?m)^increments = \d+", "increments = 2\nfollow_path = true", scene_text("A"))  # a history
+    text = text.replace("[domain]", '[units]\nlength = "mm"\nstress = "MPa"\n\n[domain]', 1)
+    path = tmp_path_factory.mktemp("scene") / "A-mpa.toml"
+    path.write_text(text)
+    return path
+
+
+@pytest.mark.parametrize("scale", [500.0, 1.75e5, 2e6, 3e9])
+def test_a_scene_not_in_pa_is_drawn_as_given_in_its_units(scale):
+    """The k/M/G prefixes are an SI scene's only: a stress in MPa is shown
+    unscaled and labelled MPa at any size, a length in the scene's unit."""
+    assert plots.axis_unit("sxx", scale, MM_MPA) == (1.0, "σxx (MPa)")
+    assert plots.axis_unit("gN", scale, MM_MPA) == (1.0, "g_N (mm)")
+    assert plots.axis_unit("sxx", 2e6) == (1e6, "σxx (MPa)")  # an SI scene's, as before
+    s = np.linspace(0.0, 1.0, 11)
+    fig = plots.profile_figure("t_T", {"fe (p2)": _profile("G", s, tT=scale * (1 + s)),
+                                       "xfem (p1)": _profile("G", s, tT=scale * (1 + s) + 1.0)}, units=MM_MPA)
+    overlay, diff = fig.axes[0], fig.axes[1]
+    assert [overlay.get_ylabel(), diff.get_ylabel(), diff.get_xlabel()] == [
+        "t_T (MPa)", "Δt_T / max|ref| (%)", "s (mm)"]
+    assert np.array_equal(overlay.get_lines()[0].get_ydata(), scale * (1 + s))
+    plots.pyplot().close(fig)
+
+
+def test_a_run_in_mm_and_mpa_names_its_units_in_every_file(tmp_path, a_in_mpa):
+    """units.json, summary.md's floors and the agreement's message name the
+    scene's mm and MPa, never m or Pa."""
+    from verification import agreement, files
+    out = tmp_path / "run"
+    assert main(["run", str(a_in_mpa), "--method", "fe", "xfem", "--h", "0.2", "--no-plots", "-q",
+                 "--floor", "sxx=0.01", "--out", str(out)]) == 0
+    units = json.loads((out / files.UNITS_FILE).read_text())
+    assert units["fe/profiles/A2.csv"] == {"s": "mm", "x": "mm", "y": "mm", "syy": "MPa"}
+    assert units["fe/profiles/A5.csv"]["gN"] == "mm" and units["fe/interface.csv"]["tN"] == "MPa"
+    assert units["fe/increments.csv"]["rms_tT"] == "MPa" and units["fe/interface.csv"]["gT"] == "mm"
+    assert not [(f, c) for f, cols in units.items() for c, u in cols.items() if u in ("m", "Pa", "Pa/m")]
+    summary = (out / "summary.md").read_text()
+    assert "sxx is measured against sqrt(sxx² + (0.01 MPa)²) (a floor given)" in summary
+    row = agreement.Agreement("xfem p1", "A1", "sxx", "stress", 0.1, 0.2, 0.5, 0.5, 0.5, 1.0, 2.0, 5, 5,
+                              floor=0.01, units=MM_MPA)
+    assert "largest sqrt(sxx² + (0.01 MPa)²) (floored)" in row.describe()
+
+
+def test_the_interface_and_study_plots_name_the_scenes_units(a_in_mpa):
+    """The response figure (a straight Γ: with its loop), the status plot
+    and a study's labels in the scene's units; the study's help in any
+    scene's words."""
+    from verification import study
+    scene = load_scene(a_in_mpa)
+    result = methods.solver("fe")(scene, 0.25)
+    fig = interface.response_figure(scene, {"fe (p1)": result.interface})
+    labels = {ax.get_ylabel(): ax.get_xlabel() for ax in fig.axes}
+    assert labels["mean t_T on Γ (MPa)"] == "mean slip g_T on Γ (mm)" and "RMS t_N on Γ (MPa)" in labels
+    plots.pyplot().close(fig)
+    status = []
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(interface, "save", lambda fig, out: status.append(fig))
+        interface.plot_status(None, scene, "fe (p1)", result.interface)
+    assert status[0].axes[0].get_xlabel() == "position along Γ (mm)"
+    plots.pyplot().close("all")
+    assert study.described("kN", MM_MPA) == "normal spring k_N (MPa/mm)"
+    assert study.described("radius", MM_MPA) == "radius of a circular Γ (mm)"
+    assert study.PARAMETERS["kN"][0] == "normal spring k_N (stress/length)"
+    assert "h (cell size or node spacing (mm))" in study.markdown("A", ["h"], [], MM_MPA)

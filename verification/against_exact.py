@@ -161,9 +161,9 @@ def section(scene: Scene, law_name: str, records: dict[str, dict]) -> str:
              "the worst sample is max |Δ| as a share of the largest exact scale, the RMS share "
              f"RMS(Δ) / RMS(scale), over the samples at least {exclude:.3g} from the scene's singular points. "
              "The scale is the exact quantity itself, except on Γ: g_N and g_T are measured against the exact "
-             f"jump's magnitude |g| floored as √(|g|² + ({gap_floor(scene):.3g} m)²), a tenth of the "
-             "displacement scale, t_N and t_T against |t| (the exact g_N of a closed contact is zero); a profile "
-             "holding one component of a vector alone, against its own |value|, a gap floored alike. "
+             f"jump's magnitude |g| floored as √(|g|² + ({gap_floor(scene):.3g} {scene.units.length})²), a tenth "
+             "of the displacement scale, t_N and t_T against |t| (the exact g_N of a closed contact is zero); "
+             "a profile holding one component of a vector alone, against its own |value|, a gap floored alike. "
              "Beside it, max |Δ| as a share of the component's own largest exact |value| (a gap floored as "
              "above): what a vector's share hides of a small component. The last three columns are in the "
              "quantity's unit.\n",

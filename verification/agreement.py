@@ -29,7 +29,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from contactcore import ContactError, ProfileData, Scene, load_scene, sample_profiles
-from contactcore.scene import DISPLACEMENT_QUANTITIES, STRESS_QUANTITIES
+from contactcore.scene import DISPLACEMENT_QUANTITIES, STRESS_QUANTITIES, Units
 from contactcore.estimate import ERROR_SUFFIX, far_from_singular, rms, singular_regions
 from contactcore.exact import is_exact
 from contactcore.scaling import Scales
@@ -272,12 +272,14 @@ class Agreement:
     kept: int
     samples: int
     floor: float = 0.0  # the floor of the scale (an exact law's gap, measured_against), 0 if none
+    units: Units = Units()  # the names of the scene's units, which the floor is in
 
     def describe(self, against: str = "the reference") -> str:
         """One line naming the profile, the quantity, the worst sample and its values."""
-        from .files import COLUMN_UNITS
-        scale = (f"sqrt({self.quantity}² + ({self.floor:.3g} {COLUMN_UNITS[self.quantity]})²) (floored)"
-                 if self.floor else f"|{self.quantity}|")
+        from .files import column_unit
+        unit = column_unit(self.quantity, self.units)
+        scale = (f"sqrt({self.quantity}² + ({self.floor:.3g} {unit})²) (floored)" if self.floor
+                 else f"|{self.quantity}|")
         return (f"{self.method} against {against}: {self.profile} {self.quantity} at s = {self.s:.4g} "
                 f"(x = {self.x:.4g}, y = {self.y:.4g}): {self.value:.4g} against {self.reference:.4g}, a difference "
                 f"of {percent(self.worst)} of the reference's largest {scale} (RMS {percent(self.rms)})")
@@ -291,7 +293,7 @@ def _compared(scene: Scene, label: str, pid: str, q: str, got: ProfileData, ref:
     base = measured_against(scene, q, ref.columns[q][keep]) if scale is None else np.asarray(scale)[keep]
     if not keep.any():
         nan = float("nan")
-        return Agreement(label, pid, q, "", nan, nan, nan, nan, nan, nan, nan, 0, len(keep))
+        return Agreement(label, pid, q, "", nan, nan, nan, nan, nan, nan, nan, 0, len(keep), units=scene.units)
     i = int(np.argmax(np.abs(diff)))
     where = np.flatnonzero(keep)[i]
     worst = share(float(abs(diff[i])), float(np.max(np.abs(base))))
@@ -299,7 +301,7 @@ def _compared(scene: Scene, label: str, pid: str, q: str, got: ProfileData, ref:
                                                       else np.asarray(scale)[keep]),
                      worst, float(ref.columns["s"][where]), float(ref.columns["x"][where]),
                      float(ref.columns["y"][where]), float(got.columns[q][where]), float(ref.columns[q][where]),
-                     int(keep.sum()), len(keep), measured_floor(scene, q) if scale is None else 0.0)
+                     int(keep.sum()), len(keep), measured_floor(scene, q) if scale is None else 0.0, scene.units)
 
 
 def profile_agreements(scene: Scene, label: str, got: dict, ref: dict, exclude: float,
@@ -332,8 +334,9 @@ class AgreementTable:
     exclude: float
     regions: tuple[tuple[str, tuple[tuple[float, float], ...]], ...]
     rows: tuple[Agreement, ...]
-    gap_floor: float = 0.0  # an exact law's gaps' floor (measured_against), in m; 0 for a penalty law
+    gap_floor: float = 0.0  # an exact law's gaps' floor (measured_against), in length; 0 for a penalty law
     floors: tuple[tuple[str, float], ...] = ()  # the floors given (quantity, value in its unit): table's floors
+    units: Units = Units()  # the names of the scene's units, which the floors are in
 
     def worst(self, measure: str = "worst") -> Agreement:
         """The row with the largest ``measure`` (``"worst"`` or ``"rms"``;
@@ -350,12 +353,12 @@ class AgreementTable:
 
     def markdown(self) -> str:
         """The table in Markdown, worst sample and RMS in % of the reference's scale."""
-        from .files import COLUMN_UNITS
+        from .files import column_unit
         floor = (f" Γ's gaps (an exactly enforced law: zero where Γ is closed and sticking) are measured "
-                 f"against sqrt(g² + ({self.gap_floor:.3g} m)²), {EXACT_GAP_FLOOR:g} of the displacement scale."
-                 if self.gap_floor else "")
-        floor += "".join(f" {q} is measured against sqrt({q}² + ({v:.3g} {COLUMN_UNITS[q]})²) (a floor given)."
-                         for q, v in self.floors)
+                 f"against sqrt(g² + ({self.gap_floor:.3g} {self.units.length})²), {EXACT_GAP_FLOOR:g} of the "
+                 "displacement scale." if self.gap_floor else "")
+        floor += "".join(f" {q} is measured against sqrt({q}² + ({v:.3g} {column_unit(q, self.units)})²) "
+                         "(a floor given)." for q, v in self.floors)
         lines = [f"Against {self.reference}; {self.excluded()}.{floor}", "",
                  "| method | profile | quantity | class | worst sample | at s (x, y) | RMS |",
                  "|---|---|---|---|---|---|---|"]
@@ -396,7 +399,7 @@ def table(scene: Scene, runs: dict[str, dict], reference: str, exclude: float | 
             for row in profile_agreements(scene, label, got, ref, exclude, scales)]
     regions = tuple((name, tuple(map(tuple, pts.tolist()))) for name, pts in singular_regions(scene))
     return AgreementTable(scene.name, reference, exclude, regions, tuple(rows), measured_floor(scene, "gN"),
-                          tuple(given.items()))
+                          tuple(given.items()), scene.units)
 
 
 def variant(spec) -> tuple[str, int]:

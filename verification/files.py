@@ -20,6 +20,7 @@ from pathlib import Path
 
 from contactcore import CircleInterface, ContactError, ProfileData, load_scene
 from contactcore.profiles import sample_points
+from contactcore.scene import Units
 from contactcore.estimate import ERROR_SUFFIX
 
 #: The file that marks a folder as a result folder of this tool (every
@@ -245,69 +246,88 @@ def relink(markdown: str, folder: str) -> str:
 
 #: The sidecar of every result folder that names each CSV column's unit.
 UNITS_FILE = "units.json"
-_STRESS, _LENGTH = "Pa", "m"
-#: The unit of a CSV column, in the scene's units (docs/scenes.md, "Units":
-#: Pa is the scene's stress unit F/ℓ², m its length unit ℓ).  ``s`` is not
-#: here: its unit is its CSV's (:func:`s_units`).  Columns not named
-#: (counts, statuses, names, ratios) have no unit.
-COLUMN_UNITS = {
-    **dict.fromkeys(("sxx", "syy", "sxy", "tN", "tT", "mean_tN", "mean_tT", "rms_tN", "rms_tT", "max_tN", "max_tT",
-                     "E_minus", "E_plus"), _STRESS),
-    **dict.fromkeys(("x", "y", "ux", "uy", "gN", "gT", "mean_gN", "mean_gT", "max_gN", "max_gT", "h", "exclude",
-                     "radius", "offset"), _LENGTH),
-    **dict.fromkeys(("kN", "kT"), f"{_STRESS}/{_LENGTH}"),
-    **dict.fromkeys(("total", "mesh", "assembly", "solve", "median_s"), "s"),
-    "angle": "degree",
-    "points_per_s": "1/s",
-}
+#: The columns in the scene's stress unit, in its length unit and in
+#: stress per length (a spring's stiffness); docs/scenes.md, "Units".
+STRESS_COLUMNS = ("sxx", "syy", "sxy", "tN", "tT", "mean_tN", "mean_tT", "rms_tN", "rms_tT", "max_tN", "max_tT",
+                  "E_minus", "E_plus")
+LENGTH_COLUMNS = ("x", "y", "ux", "uy", "gN", "gT", "mean_gN", "mean_gT", "max_gN", "max_gT", "h", "exclude",
+                  "radius", "offset")
+SPRING_COLUMNS = ("kN", "kT")
+#: The columns whose unit is the same in every scene's.
+FIXED_UNITS = {**dict.fromkeys(("total", "mesh", "assembly", "solve", "median_s"), "s"), "angle": "degree",
+               "points_per_s": "1/s"}
 
 
-def column_unit(column: str) -> str | None:
-    """A CSV column's unit: :data:`COLUMN_UNITS`'s, an estimated error's
-    its quantity's; None for a column without one (and for ``s``, whose
-    unit is its CSV's: :func:`s_units`)."""
-    return COLUMN_UNITS.get(column.removesuffix(ERROR_SUFFIX))
+def column_units(units: Units = Units()) -> dict[str, str]:
+    """The unit of each CSV column that has one, in the scene's ``units``
+    (:class:`contactcore.scene.Units`: the names of its length unit ℓ and
+    stress unit F/ℓ², labels only).  ``s`` is not here: its unit is its
+    CSV's (:func:`s_units`).  Columns not named (counts, statuses, names,
+    ratios) have no unit."""
+    return {**dict.fromkeys(STRESS_COLUMNS, units.stress), **dict.fromkeys(LENGTH_COLUMNS, units.length),
+            **dict.fromkeys(SPRING_COLUMNS, f"{units.stress}/{units.length}"), **FIXED_UNITS}
 
 
-#: The result folder's copy of the scene it solved (``run``, ``paper``).
+def column_unit(column: str, units: Units = Units()) -> str | None:
+    """A CSV column's unit in the scene's ``units`` (:func:`column_units`),
+    an estimated error's its quantity's; None for a column without one
+    (and for ``s``, whose unit is its CSV's: :func:`s_units`)."""
+    return column_units(units).get(column.removesuffix(ERROR_SUFFIX))
+
+
+def labelled(text: str, column: str, units: Units = Units()) -> str:
+    """``text`` followed by the unit of ``column`` in the scene's ``units``
+    (:func:`column_unit`) if it has one: an axis's or a table's label."""
+    unit = column_unit(column, units)
+    return f"{text} ({unit})" if unit else text
+
+
+#: The result folder's copy of the scene it solved (``run``, ``paper``, ``study``).
 SCENE_FILE = "scene.toml"
-#: The unit of an ``s`` column by what it measures along its line: an arc
-#: length (in the scene's length unit) or a polar angle about Γ's centre.
-PARAMETER_UNITS = {"arclength": _LENGTH, "angle": "rad"}
 
 
-def s_units(folder: Path) -> dict[str, str]:
-    """The unit of the ``s`` column of each CSV that has one in a scene's
-    result folder under ``folder`` (one holding :data:`SCENE_FILE`; the
-    nearest above the CSV), by the CSV's path relative to ``folder``: a
-    profile's (``profiles/<ID>.csv``) by its parameter, resolved as its
-    samples were (:func:`contactcore.profiles.sample_points`: a line
-    profile's is an arc length, an interface profile's a polar angle only on
-    a circle and if it asks for one); Γ's own (``interface.csv``,
+def parameter_unit(parameter: str, units: Units = Units()) -> str:
+    """The unit of an ``s`` column by what it measures along its line: an
+    arc length (in the scene's length unit) or a polar angle about Γ's
+    centre (rad)."""
+    return units.length if parameter == "arclength" else "rad"
+
+
+def scene_units(folder: Path) -> dict[str, tuple[Units, str | None]]:
+    """The scene's :class:`~contactcore.scene.Units` of each CSV in a
+    scene's result folder under ``folder`` (one holding :data:`SCENE_FILE`;
+    the nearest above the CSV) and the unit of its ``s`` column if it has
+    one, by the CSV's path relative to ``folder``: a profile's
+    (``profiles/<ID>.csv``) by its parameter, resolved as its samples were
+    (:func:`contactcore.profiles.sample_points`: a line profile's is an arc
+    length, an interface profile's a polar angle only on a circle and if it
+    asks for one); Γ's own (``interface.csv``,
     :func:`contactcore.interface_path.along`) a polar angle on a circle,
     else an arc length."""
-    units = {}
+    found = {}
     for toml in sorted(Path(folder).rglob(SCENE_FILE), key=lambda p: len(p.parts)):  # the nearest last
         scene = load_scene(toml)
-        along = PARAMETER_UNITS["angle" if isinstance(scene.interface, CircleInterface) else "arclength"]
-        by_id = {p.id: PARAMETER_UNITS[sample_points(scene, p, 2)[2]] for p in scene.profiles}
+        along = parameter_unit("angle" if isinstance(scene.interface, CircleInterface) else "arclength",
+                               scene.units)
+        by_id = {p.id: parameter_unit(sample_points(scene, p, 2)[2], scene.units) for p in scene.profiles}
         for path in toml.parent.rglob("*.csv"):
-            unit = by_id.get(path.stem) if path.parent.name == "profiles" else (
+            s = by_id.get(path.stem) if path.parent.name == "profiles" else (
                 along if path.name == "interface.csv" else None)
-            if unit:
-                units[path.relative_to(folder).as_posix()] = unit
-    return units
+            found[path.relative_to(folder).as_posix()] = (scene.units, s)
+    return found
 
 
 def write_units(folder: Path) -> Path:
     """``folder/units.json``: for every CSV under ``folder`` (by its path
     relative to it), the unit of each of its columns that has one
-    (:func:`column_unit`; ``s``'s from :func:`s_units`)."""
-    units, along = {}, s_units(folder)
+    (:func:`column_unit` in the units of its scene, SI's outside a scene's
+    folder; ``s``'s from :func:`scene_units`)."""
+    units, scenes = {}, scene_units(folder)
     for path in sorted(Path(folder).rglob("*.csv")):
         with open(path, newline="") as fh:
             header = next(csv.reader(fh), [])
         name = path.relative_to(folder).as_posix()
-        found = {c: along.get(name) if c == "s" else column_unit(c) for c in header}
+        own, s = scenes.get(name, (Units(), None))
+        found = {c: s if c == "s" else column_unit(c, own) for c in header}
         units[name] = {c: unit for c, unit in found.items() if unit}
     return write_json(Path(folder) / UNITS_FILE, units)

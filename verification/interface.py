@@ -74,7 +74,8 @@ def plot_status(out: Path, scene, label: str, path: InterfacePath) -> Path:
         ys = [np.full(len(x), step.step) for x, step in zip(xs, path.steps)]
         if any(len(x) for x in xs):
             ax.scatter(np.concatenate(xs), np.concatenate(ys), s=6, c=colour, label=name, marker="s")
-    ax.set_xlabel("polar angle θ (rad)" if hasattr(scene.interface, "radius") else "position along Γ (m)")
+    ax.set_xlabel("polar angle θ (rad)" if hasattr(scene.interface, "radius")
+                  else f"position along Γ ({files.parameter_unit('arclength', scene.units)})")
     ax.set_ylabel("increment")
     _integer_steps(ax.yaxis)
     ax.set_title(f"scene {scene.name}, {label}: contact status on Γ", fontsize=10)
@@ -82,8 +83,9 @@ def plot_status(out: Path, scene, label: str, path: InterfacePath) -> Path:
     return save(fig, out)
 
 
-#: Panels of the response figure against the increment: (column, label, scale key).
-RESPONSE_PANELS = (("rms_tN", "RMS t_N on Γ (Pa)", "traction"), ("rms_tT", "RMS t_T on Γ (Pa)", "traction"),
+#: Panels of the response figure against the increment: (column, label, scale
+#: key); a label's unit is its column's in the scene's units (:func:`files.labelled`).
+RESPONSE_PANELS = (("rms_tN", "RMS t_N on Γ", "traction"), ("rms_tT", "RMS t_T on Γ", "traction"),
                    ("open_fraction", "open fraction of Γ", "fraction"),
                    ("slip_fraction", "slipping fraction of Γ", "fraction"))
 
@@ -109,7 +111,7 @@ def response_figure(scene, paths: dict[str, InterfacePath]):
             axes["loop"].plot([r["mean_gT"] for r in rs], [r["mean_tT"] for r in rs], **style(label, i))
     for key, ylabel, kind in RESPONSE_PANELS:
         axes[key].set_xlabel("increment")
-        axes[key].set_ylabel(ylabel)
+        axes[key].set_ylabel(files.labelled(ylabel, key, scene.units))
         _integer_steps(axes[key].xaxis)
         axes[key].grid(alpha=0.3)
         if kind == "fraction":
@@ -117,8 +119,8 @@ def response_figure(scene, paths: dict[str, InterfacePath]):
         else:
             keep_span(axes[key], traction)
     if loop:
-        axes["loop"].set_xlabel("mean slip g_T on Γ (m)")
-        axes["loop"].set_ylabel("mean t_T on Γ (Pa)")
+        axes["loop"].set_xlabel(files.labelled("mean slip g_T on Γ", "mean_gT", scene.units))
+        axes["loop"].set_ylabel(files.labelled("mean t_T on Γ", "mean_tT", scene.units))
         axes["loop"].grid(alpha=0.3)
         keep_span(axes["loop"], traction)
     legend_outside(axes["loop" if loop else "rms_tT"])

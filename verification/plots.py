@@ -5,7 +5,8 @@ marker, so coincident curves stay distinguishable; under each overlay a
 panel shows each method minus the reference (the run's ``--reference``,
 else fe at its highest degree, or the first curve) relative to the
 reference's largest |value|, in percent; the overlays are in the
-quantity's units, stresses in kPa, MPa or GPa as fits (:func:`axis_unit`).
+quantity's unit in the scene's units (docs/scenes.md, "Units"), stresses
+of an SI scene in kPa, MPa or GPa as fits (:func:`axis_unit`).
 Legends sit outside the axes,
 tick labels never carry an offset, and no panel zooms below
 :data:`~contactcore.tolerances.PLOT_MIN_Y_SPAN` of its quantity's scale.
@@ -19,9 +20,10 @@ from pathlib import Path
 import numpy as np
 
 from contactcore import ProfileData
+from contactcore.scene import Units
 from contactcore.tolerances import PLOT_MIN_Y_SPAN
 
-from .files import atomic_path
+from .files import STRESS_COLUMNS, atomic_path, column_unit, parameter_unit
 
 
 @functools.cache
@@ -34,23 +36,33 @@ def pyplot():
     import matplotlib.pyplot as plt
     return plt
 
-UNITS = {"sxx": "σxx (Pa)", "syy": "σyy (Pa)", "sxy": "σxy (Pa)", "tN": "t_N (Pa)", "tT": "t_T (Pa)",
-         "gN": "g_N (m)", "gT": "g_T (m)", "ux": "u_x (m)", "uy": "u_y (m)"}
-#: The stress units of a plot's axis, from the largest: the first whose
+#: Each quantity's symbol on a plot; its unit is the scene's (:func:`axis_unit`).
+SYMBOLS = {"sxx": "σxx", "syy": "σyy", "sxy": "σxy", "tN": "t_N", "tT": "t_T", "gN": "g_N", "gT": "g_T", "ux": "u_x",
+           "uy": "u_y"}
+#: The stress units of an SI scene's axis, from the largest: the first whose
 #: factor is at most the largest |value| shown (Pa below 1 kPa).
 STRESS_PREFIXES = ((1e9, "GPa"), (1e6, "MPa"), (1e3, "kPa"), (1.0, "Pa"))
 
 
-def axis_unit(q: str, scale: float) -> tuple[float, str]:
+def axis_unit(q: str, scale: float, units: Units = Units()) -> tuple[float, str]:
     """``(factor, label)`` of quantity ``q``'s axis when its largest |value|
-    is ``scale``: a stress in kPa, MPa or GPa as fits (values divided by
-    ``factor``), any other quantity as :data:`UNITS` has it."""
-    label = UNITS.get(q, q)
-    if not label.endswith("(Pa)"):
-        return 1.0, label
-    factor, unit = next(((f, u) for f, u in STRESS_PREFIXES if scale >= f), STRESS_PREFIXES[-1])
-    return factor, label.replace("(Pa)", f"({unit})")
-XLABEL = {"arclength": "s (m)", "angle": "θ (rad)"}
+    is ``scale``, in the scene's ``units``: a stress of a scene in Pa in kPa,
+    MPa or GPa as fits (values divided by ``factor``), a stress in any other
+    unit and any other quantity as given, labelled with its
+    :func:`~verification.files.column_unit`."""
+    if q not in SYMBOLS:
+        return 1.0, q
+    factor, unit = 1.0, column_unit(q, units)
+    if q in STRESS_COLUMNS and units.stress == STRESS_PREFIXES[-1][1]:
+        factor, unit = next(((f, u) for f, u in STRESS_PREFIXES if scale >= f), STRESS_PREFIXES[-1])
+    return factor, f"{SYMBOLS[q]} ({unit})"
+
+
+def xlabel(parameter: str, units: Units = Units()) -> str:
+    """The label of a profile's ``s`` axis: an arc length in the scene's
+    length unit, or a polar angle."""
+    return f"{'θ' if parameter == 'angle' else 's'} ({parameter_unit(parameter, units)})"
+
 
 #: Colour, line style and markers (by degree 1, 2, 3) of each method: no two
 #: (method, degree) share a marker, so coincident curves show each one's.
@@ -107,9 +119,9 @@ def legend_outside(ax, **kw) -> None:
 
 
 def plot_profile(path: Path, title: str | tuple[str, ...], runs: dict[str, ProfileData], reference: str | None = None,
-                 floors: dict[str, float] | None = None) -> Path:
+                 floors: dict[str, float] | None = None, units: Units = Units()) -> Path:
     """Write :func:`profile_figure` as a PNG."""
-    return save(profile_figure(title, runs, reference, floors), path)
+    return save(profile_figure(title, runs, reference, floors, units), path)
 
 
 def heading(pid: str, *parts: str) -> str:
@@ -121,13 +133,14 @@ def heading(pid: str, *parts: str) -> str:
 
 
 def profile_figure(title: str | tuple[str, ...], runs: dict[str, ProfileData], reference: str | None = None,
-                   floors: dict[str, float] | None = None):
+                   floors: dict[str, float] | None = None, units: Units = Units()):
     """One figure for a profile, titled :func:`heading` of its id and
     ``title`` (a string, or the parts of one): per quantity, the methods
     overlaid and, under it, each method minus the ``reference`` curve (default
     :func:`reference_label`), relative to the largest |value| of the
     reference (see module doc), floored as ``floors`` say (quantity ->
-    floor: an exact law's gaps, :func:`verification.agreement.floors`)."""
+    floor: an exact law's gaps, :func:`verification.agreement.floors`);
+    the axes labelled in the scene's ``units``."""
     first = next(iter(runs.values()))
     quantities = [n for n in first.names if n not in ("s", "x", "y")]
     ref = reference if reference in runs else reference_label(list(runs))
@@ -138,7 +151,7 @@ def profile_figure(title: str | tuple[str, ...], runs: dict[str, ProfileData], r
     for k, q in enumerate(quantities):
         ax = axes[rows * k, 0]
         scale = max(float(np.nanmax(np.abs(p.columns[q]))) for p in runs.values())
-        factor, unit = axis_unit(q, scale)
+        factor, unit = axis_unit(q, scale, units)
         for i, (label, prof) in enumerate(runs.items()):
             ax.plot(prof.columns["s"], prof.columns[q] / factor, **style(label, i, len(prof.columns["s"])))
         ax.set_ylabel(unit)
@@ -148,7 +161,7 @@ def profile_figure(title: str | tuple[str, ...], runs: dict[str, ProfileData], r
             legend_outside(ax)
         if rows == 2:
             _difference_panel(axes[rows * k + 1, 0], q, runs, ref, (floors or {}).get(q, 0.0))
-    axes[-1, 0].set_xlabel(XLABEL.get(first.parameter, "s"))
+    axes[-1, 0].set_xlabel(xlabel(first.parameter, units))
     parts = (title,) if isinstance(title, str) else title
     axes[0, 0].set_title(heading(first.id, *parts), fontsize=10, wrap=True)
     _no_offsets(fig)
@@ -172,7 +185,7 @@ def _difference_panel(ax, q: str, runs: dict[str, ProfileData], ref: str, floor:
             ax.plot(s, PERCENT * (prof.columns[q] - np.interp(s, s_ref, v_ref)) / size, **style(label, i, len(s)))
     ax.axhline(0.0, color="black", lw=0.6)
     ax.grid(alpha=0.3)
-    ax.set_ylabel(f"Δ{UNITS.get(q, q).split(' ')[0]} / max|ref| (%)")
+    ax.set_ylabel(f"Δ{SYMBOLS.get(q, q)} / max|ref| (%)")
     keep_span(ax, PERCENT)
     floored = f", floored at {floor:.3g}" if floor else ""
     ax.set_title(f"each minus {ref}, relative to its largest |{q}|{floored}", fontsize=8, loc="right")

@@ -457,7 +457,7 @@ def _against_exact(out: Path, scene: Scene, twin: Scene, name: str, result, h, d
     for pid in penalty if draw else ():
         plots.plot_profile(out / "plots" / f"exact_{name}_{pid}.png", (titles[pid], f"{label}, penalty against exact"),
                            {label: penalty[pid], exact_gap.EXACT: exact_profiles[pid]}, exact_gap.EXACT,
-                           agreement.floors(twin))
+                           agreement.floors(twin), scene.units)
     return summary
 
 
@@ -469,7 +469,8 @@ def _write_summary(out: Path, scene: Scene, summaries: list[dict], profiles: dic
     against exact (label -> record), if asked."""
     titles = {p.id: p.title for p in scene.profiles}
     for pid, runs in profiles.items() if draw else ():
-        plots.plot_profile(out / "plots" / f"{pid}.png", titles[pid], runs, ref, agreement.floors(scene, floors))
+        plots.plot_profile(out / "plots" / f"{pid}.png", titles[pid], runs, ref, agreement.floors(scene, floors),
+                           scene.units)
     text = (f"# Scene {plots.heading(scene.name, scene.title)}\n\n" + _summary_table(summaries)
             + agreement_section(scene, profiles, ref, floors))
     if len(estimated) > 1:

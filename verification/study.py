@@ -41,12 +41,12 @@ from pathlib import Path
 
 import numpy as np
 
-from contactcore import CircleInterface, LineInterface, SceneError, load_scene, sample_profile
+from contactcore import CircleInterface, LineInterface, SceneError, load_scene, sample_profile, scene_text
 from contactcore.budget import check_budget
 from contactcore.discretisation import Reuse
 from contactcore.enforcement import ENFORCEMENTS
 from contactcore.exact import BONDED, EXACT_LAWS, checked_stabilisation, is_exact
-from contactcore.scene import InterfaceProfile, check_resolution
+from contactcore.scene import InterfaceProfile, Units, check_resolution
 
 from . import files, methods, pool
 from .against_exact import exact_law, penalty_counterpart
@@ -155,24 +155,39 @@ def _increments(scene, value: float):
     return {"increments": int(value)}
 
 
-#: What each parameter changes in a scene: name -> (description, changes(scene, value) -> dict).
-PARAMETERS = {
-    "h": ("cell size or node spacing (m)", _resolution),
-    "kN": ("normal spring k_N (Pa/m)", lambda s, v: _law(s, "kN", v)),
-    "kT": ("tangential spring k_T (Pa/m)", lambda s, v: _law(s, "kT", v)),
+#: What each parameter is, without its unit, and what it changes in a scene:
+#: name -> (description, changes(scene, value) -> dict).
+CHANGES = {
+    "h": ("cell size or node spacing", _resolution),
+    "kN": ("normal spring k_N", lambda s, v: _law(s, "kN", v)),
+    "kT": ("tangential spring k_T", lambda s, v: _law(s, "kT", v)),
     "enforcement": ("how the law is enforced: penalty (its springs) or exact (Nitsche)", _enforcement),
     "stabilisation": ("Nitsche's β of an exact law (× the method's E/h)", lambda s, v: _law(s, "stabilisation", v)),
     "mu": ("friction coefficient μ of a coulomb law", lambda s, v: _law(s, "mu", v)),
     "load": ("factor on every load", _load),
     "increments": ("load increments", _increments),
-    "E_minus": ("Young's modulus of the − body (Pa)", lambda s, v: _material(s, "minus", "E", v)),
+    "E_minus": ("Young's modulus of the − body", lambda s, v: _material(s, "minus", "E", v)),
     "nu_minus": ("Poisson's ratio of the − body", lambda s, v: _material(s, "minus", "nu", v)),
-    "E_plus": ("Young's modulus of the + body (Pa)", lambda s, v: _material(s, "plus", "E", v)),
+    "E_plus": ("Young's modulus of the + body", lambda s, v: _material(s, "plus", "E", v)),
     "nu_plus": ("Poisson's ratio of the + body", lambda s, v: _material(s, "plus", "nu", v)),
-    "radius": ("radius of a circular Γ (m)", _radius),
-    "offset": ("shift of a straight Γ along its normal (m)", _offset),
-    "angle": ("angle of a straight Γ to the x axis (degrees)", _angle),
+    "radius": ("radius of a circular Γ", _radius),
+    "offset": ("shift of a straight Γ along its normal", _offset),
+    "angle": ("angle of a straight Γ to the x axis", _angle),
 }
+#: The units of a scene as the help names them: any consistent set
+#: (docs/scenes.md, "Units"); a study's tables and plots name its scene's.
+ANY_UNITS = Units(length="length", stress="stress")
+
+
+def described(param: str, units: Units = ANY_UNITS) -> str:
+    """What ``param`` is, with its unit in the scene's ``units``
+    (:func:`verification.files.labelled`) if it has one."""
+    return files.labelled(CHANGES[param][0], param, units)
+
+
+#: What each parameter changes in a scene: name -> (description with its
+#: unit in any scene's words, changes(scene, value) -> dict).
+PARAMETERS = {param: (described(param), change) for param, (_, change) in CHANGES.items()}
 
 
 def _check(param: str) -> None:
@@ -302,9 +317,10 @@ def study(scene_name: str, params: list[tuple[str, list[float]]], method_names: 
     out = Path(out)
     files.write_csv(out / "study.csv", rows, [*labels, *STATS])
     for param, label in zip(names, labels):
-        _plot(out / _plot_name(names, param), base.name, param, label, [lb for lb in labels if lb != label], rows)
-    text = markdown(base.name, names, rows)
+        _plot(out / _plot_name(names, param), base, param, label, [lb for lb in labels if lb != label], rows)
+    text = markdown(base.name, names, rows, base.units)
     files.write_text(out / "study.md", text)
+    files.write_text(out / files.SCENE_FILE, scene_text(scene_name))  # the units of study.csv's columns
     files.write_json(out / "run.json", {**files.provenance(list(argv)), "scene": base.name,
                                         "params": {p: list(v) for p, v in params},
                                         "methods": methods.expand(method_names), "degree": degree, "h": h,
@@ -359,10 +375,10 @@ def _plot_name(names: list[str], param: str) -> str:
     return "study.png" if len(names) == 1 else f"study_{param}.png"
 
 
-def markdown(scene_name: str, names: list[str], rows: list[dict]) -> str:
-    """The study's section: its plots and its table."""
+def markdown(scene_name: str, names: list[str], rows: list[dict], units: Units = Units()) -> str:
+    """The study's section: its plots and its table, in the scene's ``units``."""
     failed = [r for r in rows if r["status"] == "failed"]
-    what = " × ".join(f"{p} ({PARAMETERS[p][0]})" for p in names)
+    what = " × ".join(f"{p} ({described(p, units)})" for p in names)
     labels = point_columns(names)
     return (f"## Study: scene {scene_name}, {what}\n\n"
             + "".join(f"![study {p}]({_plot_name(names, p)})\n" for p in names) + "\n"
@@ -398,9 +414,10 @@ def _mark(ax, column: str, q: str, factor: float, rows: list[dict], colour) -> N
                 label="_" if "failed" in seen else "failed")
 
 
-def _plot(path: Path, scene_name: str, param: str, column: str, others: list[str], rows: list[dict]) -> None:
+def _plot(path: Path, scene, param: str, column: str, others: list[str], rows: list[dict]) -> None:
     """The response on Γ against ``param`` (the table's ``column``); one
-    series per method and values of the ``others`` columns."""
+    series per method and values of the ``others`` columns; the axes in
+    the ``scene``'s units."""
     from .plots import axis_unit, pyplot, save
 
     fig, axes = pyplot().subplots(2, 2, figsize=(9, 6.5), squeeze=False)
@@ -409,17 +426,19 @@ def _plot(path: Path, scene_name: str, param: str, column: str, others: list[str
     logx = numbers and min(values) > 0 and max(values) / min(values) > 100
     series = dict.fromkeys((r["method"], *(r[o] for o in others)) for r in rows)
     for ax, q in zip(axes.ravel(), ("gN", "gT", "tN", "tT")):
-        factor, unit = axis_unit(q, max((abs(r[f"max_{q}"]) for r in rows if r["status"] != "failed"), default=0.0))
+        factor, unit = axis_unit(q, max((abs(r[f"max_{q}"]) for r in rows if r["status"] != "failed"), default=0.0),
+                                 scene.units)
         for key in series:
             chosen = [r for r in rows if (r["method"], *(r[o] for o in others)) == key]
             line = _series(ax, column, q, factor, chosen,
                            ", ".join([key[0], *(f"{o} = {_shown(v)}" for o, v in zip(others, key[1:]))]))
             _mark(ax, column, q, factor, chosen, line)
-        ax.set_ylabel("max |" + unit.split(" ")[0] + "| " + unit.split(" ")[1])
-        ax.set_xlabel(param)
+        symbol, _, shown = unit.partition(" ")
+        ax.set_ylabel(f"max |{symbol}| {shown}")
+        ax.set_xlabel(files.labelled(param, param, scene.units))
         if logx:
             ax.set_xscale("log")
         ax.grid(alpha=0.3)
         ax.legend(fontsize=7)
-    fig.suptitle(f"Scene {scene_name}: interface response against {param}")
+    fig.suptitle(f"Scene {scene.name}: interface response against {param}")
     save(fig, path)
