@@ -279,71 +279,22 @@ def test_python_dataclasses_default_as_a_file_does():
         a.with_changes(profiles=(InterfaceProfile("g", ("tN",), parameter="angle"),))
 
 
-#: A scene in mm, N and MPa (the layered-slip closed form, docs/scenes.md,
-#: scaled by 1000 in length and 1e-6 in stress), naming its units.
-MM_SCENE = """name = "layered-mm"
-h = 1.0
-
-[units]
-length = "mm"
-stress = "MPa"
-
-[domain]
-type = "rectangle"
-size = [10.0, 10.0]
-
-[interface]
-type = "line"
-point = [0.0, 5.0]
-normal = [0.0, 1.0]
-
-[interface.law]
-type = "coulomb"
-kN = 1e3
-kT = 1e2
-mu = 0.3
-
-[materials.minus]
-E = 2e5
-nu = 0.0
-[materials.plus]
-E = 1e5
-nu = 0.0
-
-[[supports]]
-boundary = "bottom"
-fix = "xy"
-
-[[loads]]
-type = "traction"
-boundary = "top"
-value = [0.3, -1.0]
-
-[[profiles]]
-id = "L1"
-type = "line"
-start = [0.0, 5.0]
-end = [10.0, 5.0]
-quantities = ["tN", "tT", "gN", "gT"]
-"""
-
-
-def test_a_scene_in_its_own_units_names_them_and_round_trips():
+def test_a_scene_in_its_own_units_names_them_and_round_trips(scene_dict):
     """``[units]`` is read, written back and read again equal; the
     dimensionless scene a method solves keeps them for the drivers
     (``Scene.user``); a scene without it is SI and writes no ``[units]``."""
     from contactcore.scaling import Scales
     from contactcore.scene import Units
     from contactcore.scene_files import scene_toml
-    scene = scene_from_dict(tomllib.loads(MM_SCENE))
+    scene = scene_from_dict({**scene_dict("layered-slip"), "units": {"length": "mm", "stress": "MPa"}})
     assert scene.units == Units(length="mm", stress="MPa")
     text = scene_toml(scene)
     assert '[units]\nlength = "mm"\nstress = "MPa"\n' in text
     assert scene_from_dict(tomllib.loads(text)) == scene
     assert Scales.of(scene).scene(scene).user.units == scene.units
-    only_stress = scene_from_dict({**tomllib.loads(MM_SCENE), "units": {"stress": "MPa"}})
+    only_stress = scene_from_dict({**scene_dict("layered-slip"), "units": {"stress": "MPa"}})
     assert only_stress.units == Units(length="m", stress="MPa")
-    si = load_scene("A")
+    si = load_scene("layered-slip")
     assert si.units == Units() == Units(length="m", stress="Pa") and "units" not in scene_toml(si)
 
 
@@ -355,9 +306,8 @@ def test_a_scene_in_its_own_units_names_them_and_round_trips():
     ("stress", 1e6, "must be a string (got 1000000.0)"),
     ("force", "N", "unknown key"),
 ])
-def test_a_bad_unit_is_refused_in_one_line_naming_its_key(key, value, words):
-    data = {**tomllib.loads(MM_SCENE), "units": {key: value}}
+def test_a_bad_unit_is_refused_in_one_line_naming_its_key(scene_dict, key, value, words):
     with pytest.raises(SceneError) as err:
-        scene_from_dict(data)
+        scene_from_dict({**scene_dict("A"), "units": {key: value}})
     assert err.value.field == f"units.{key}" and words in str(err.value)
     assert "\n" not in str(err.value)
