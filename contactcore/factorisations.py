@@ -12,6 +12,9 @@ a factorisation made before.  :class:`KeptFactorisations` answers
   two differ in a few rows (:class:`_Update`, Woodbury's identity), with the
   columns it needs solved as one block and kept for the next corrections
   (:class:`_Columns`; a full set keeps only the rows ``D`` needs);
+* or by a correction of a new factorisation of a map Newton is heading
+  for (:meth:`KeptFactorisations._ahead`), where that map is within a
+  correction of ``D``;
 * or by a new factorisation, into the slot of one made in the same Newton
   step that ``D`` has moved past a correction's reach of (MUMPS then redoes
   its numeric factorisation only, in the memory it has), else a free slot,
@@ -157,14 +160,16 @@ class KeptFactorisations:
         return corrected if corrected is not None else self._factorise(tangent, rhs, scale, detour)
 
     def _ahead(self, tangent: np.ndarray, rhs: np.ndarray, scale: float, ahead):
-        """``(δu, report)`` by a factorisation of the first tangent of
-        ``ahead`` (Newton's guesses of the maps it is heading for) within
-        AHEAD_SHARE of a correction's budget of ``tangent``, corrected to
-        ``tangent``; None where none is, or on several processes.  A
-        factorisation only needs to be near the maps that will be solved
-        with it, not one of them: a status search that moves the map a few
-        points per iteration (the exact law's first increment) stays within
-        a correction of a map further along for longer than of the one it
+        """``(δu, report)`` by a new factorisation of the first tangent of
+        ``ahead`` (the maps Newton is heading for) within AHEAD_SHARE of the
+        new columns a correction of the refilled slot may solve
+        (:meth:`~contactcore.system.ContactSystem.correction_columns`) of
+        ``tangent``, corrected to ``tangent``; None where none is, on
+        several processes, or before a factorisation has given the slot a
+        budget.  A factorisation need only be near the maps solved with it,
+        not one of them: a status search that moves the map a few points
+        per iteration (an exact law's first increment) stays within a
+        correction of a map further along for longer than of the one it
         stands at."""
         if self.ranks.parallel:
             return None
@@ -172,7 +177,7 @@ class KeptFactorisations:
             slot = self._slot(guess, False)
             if slot not in {s for s, _ in self.kept}:
                 return None  # no factorisation of this size yet, no budget to judge by
-            if 0 < _changed_rows(guess, tangent) <= tol.AHEAD_SHARE * self.system.correction_columns(slot)[1]:
+            if 0 < _changed_rows(guess, tangent) <= tol.AHEAD_SHARE * min(self.system.correction_columns(slot)):
                 break
         else:
             return None
