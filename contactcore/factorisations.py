@@ -12,6 +12,9 @@ a factorisation made before.  :class:`KeptFactorisations` answers
   two differ in a few rows (:class:`_Update`, Woodbury's identity), with the
   columns it needs solved as one block and kept for the next corrections
   (:class:`_Columns`; a full set keeps only the rows ``D`` needs);
+* or by a correction of a new factorisation of a map Newton is heading
+  for (:meth:`KeptFactorisations._ahead`), where that map is within a
+  correction of ``D``;
 * or by a new factorisation, into the slot of one made in the same Newton
   step that ``D`` has moved past a correction's reach of (MUMPS then redoes
   its numeric factorisation only, in the memory it has), else a free slot,
@@ -102,16 +105,17 @@ class _Update:
         BZ = self.B[:, reach].toarray() @ self.columns.rows[self.at[:, None], reach].T
         self.capacitance = np.eye(len(changed)) + BZ
 
-    def solve(self, kept_by, rhs: np.ndarray, scale: float):
+    def solve(self, kept_by, rhs: np.ndarray, scale: float, solved=None):
         """``(δu, report)`` with ``J δu = rhs`` on the free rows; SolverError
-        if its residual fails the health policy."""
-        x, report = kept_by.system.solve(None, rhs, force_scale=scale, slot=self.slot)
+        if its residual fails the health policy.  ``solved``: ``M⁻¹ rhs``
+        and its report, where known."""
+        x, report = kept_by.system.solve(None, rhs, force_scale=scale, slot=self.slot) if solved is None else solved
         w = np.zeros(self.used)
         try:
             w[self.at] = np.linalg.solve(self.capacitance, self.B @ x)
         except np.linalg.LinAlgError:
             raise SolverError("the corrected factorisation is singular") from None
-        x -= self.columns.rows[:self.used].T @ w
+        x = x - self.columns.rows[:self.used].T @ w
         jumps = (self.trial @ x).reshape(-1, 2)
         Jx = kept_by.system.internal(x) + kept_by.interface.internal(x, np.einsum("pij,pj->pi", self.tangent, jumps))
         r = (rhs - Jx)[kept_by.free]
@@ -138,18 +142,53 @@ class KeptFactorisations:
         self.columns = {}  # slot -> the _Columns its corrections share
         self.this_step = set()  # the slots factorised since the step began (begin_step)
 
-    def solve(self, tangent: np.ndarray, rhs: np.ndarray, scale: float, detour: bool = False):
+    def solve(self, tangent: np.ndarray, rhs: np.ndarray, scale: float, detour: bool = False, ahead=()):
         """``(δu, report)`` with the points' ``tangent``: by the
         factorisation kept for it, or the low-rank correction of one
-        (:meth:`_corrected`), if there is one; else factorised into its
-        :meth:`_slot`.  A ``detour`` (a regularised tangent, which Newton
-        leaves for the law's own) takes no factorisation of the step's maps."""
+        (:meth:`_corrected`), if there is one; else by a correction of a
+        new factorisation of a tangent Newton is heading for (``ahead``,
+        :meth:`_ahead`); else factorised into its :meth:`_slot`.  A
+        ``detour`` (a regularised tangent, which Newton leaves for the
+        law's own) takes no factorisation of the step's maps."""
         for i, (slot, kept) in enumerate(self.kept):
             if self.ranks.all(np.array_equal(kept, tangent)):
                 self.kept.append(self.kept.pop(i))
                 return self.system.solve(None, rhs, force_scale=scale, slot=slot)
         corrected = self._corrected(tangent, rhs, scale)
+        if corrected is None and not detour:
+            corrected = self._ahead(tangent, rhs, scale, ahead)
         return corrected if corrected is not None else self._factorise(tangent, rhs, scale, detour)
+
+    def _ahead(self, tangent: np.ndarray, rhs: np.ndarray, scale: float, ahead):
+        """``(δu, report)`` by a new factorisation of the first tangent of
+        ``ahead`` (the maps Newton is heading for) within AHEAD_SHARE of the
+        new columns a correction of the refilled slot may solve
+        (:meth:`~contactcore.system.ContactSystem.correction_columns`) of
+        ``tangent``, corrected to ``tangent``; None where none is, on
+        several processes, or before a factorisation has given the slot a
+        budget.  A factorisation need only be near the maps solved with it,
+        not one of them: a status search that moves the map a few points
+        per iteration (an exact law's first increment) stays within a
+        correction of a map further along for longer than of the one it
+        stands at."""
+        if self.ranks.parallel:
+            return None
+        for guess in ahead:
+            slot = self._slot(guess, False)
+            if slot not in {s for s, _ in self.kept}:
+                return None  # no factorisation of this size yet, no budget to judge by
+            if 0 < _changed_rows(guess, tangent) <= tol.AHEAD_SHARE * min(self.system.correction_columns(slot)):
+                break
+        else:
+            return None
+        try:
+            x0, report = self._factorise(guess, rhs, scale, False)
+        except SolverError:
+            return None
+        corrected = self._corrected(tangent, rhs, scale, (x0, report))
+        if corrected is not None and corrected[1] is not report:
+            corrected[1].factorisations += report.factorisations
+        return corrected
 
     def begin_step(self) -> None:
         """A new Newton step: the factorisations kept so far are of maps
@@ -183,7 +222,7 @@ class KeptFactorisations:
         self.this_step.add(slot)
         return du, report
 
-    def _corrected(self, tangent: np.ndarray, rhs: np.ndarray, scale: float):
+    def _corrected(self, tangent: np.ndarray, rhs: np.ndarray, scale: float, solved=None):
         """``(δu, report)`` by a kept factorisation corrected to ``tangent``
         (:class:`_Update`), or None where none is close enough: one process
         only, a correction within the system's
@@ -216,7 +255,7 @@ class KeptFactorisations:
             self._drop_columns(slot, changed)
         update = _Update(self, slot, kept, tangent, changed, most)
         try:
-            solved = update.solve(self, rhs, scale)
+            solved = update.solve(self, rhs, scale, solved if slot == self.kept[-1][0] else None)
         except SolverError:
             return None
         self.updates = [update, *self.updates][:tol.FACTORISATIONS_KEPT]

@@ -247,7 +247,8 @@ class _Newton:
                 health.check_held(self.scene, *self._gamma, self.ranks.gather(response.status),
                                   f"scene {self.scene.name}: increment {k:g} of {self.scene.increments}")
                 return (loads, supports), u, response, it - 1, history
-            du, rep, tangent = self._solve(response.tangent, -R, scale, response.secant, response.status)
+            ahead = () if du is None else self._ahead(u, du, response.status)
+            du, rep, tangent = self._solve(response.tangent, -R, scale, response.secant, response.status, ahead)
             _merge(self.report, rep)
             if not self.law.is_linear:  # a linear law is solved in one step
                 # a regularised step on any rank is one on every rank (a rank
@@ -369,7 +370,23 @@ class _Newton:
             alpha, value = 2 * alpha, longer
         return alpha, seen[alpha]
 
-    def _solve(self, tangent: np.ndarray, rhs: np.ndarray, scale: float, secant=None, status=None):
+    def _ahead(self, u, du, status):
+        """The maps Newton is heading for, farthest first: the law's
+        tangents at ``u + e δu`` for e in AHEAD_STEPS (``δu`` the last
+        step, decided from ``status`` within the band), each evaluated only
+        when asked for, none that lets a body go or slip free (its tangent
+        is singular).  A factorisation of one of them is corrected to the
+        tangent Newton solves (:meth:`KeptFactorisations.solve`): it changes
+        which matrix is factorised, not Newton's steps."""
+        for e in tol.AHEAD_STEPS:
+            response = self.itf.respond(self.law, u + e * du, self.state, status, self.ranks)
+            gathered = self.ranks.gather(response.status)
+            if health.lets_go(self.scene, *self._gamma, gathered) or (
+                    response.secant is not None and health.slips_free(self.scene, *self._gamma, gathered)):
+                continue
+            yield response.tangent
+
+    def _solve(self, tangent: np.ndarray, rhs: np.ndarray, scale: float, secant=None, status=None, ahead=()):
         """``J δu = rhs`` with the law's ``tangent`` at the points of the
         ``status`` map (:meth:`KeptFactorisations.solve`).  Also returns the tangent solved
         with: the law's, or where that is singular a Coulomb law's
@@ -381,7 +398,7 @@ class _Newton:
         or closes on more than on one whose tangent proved singular
         (:meth:`_dominated`); one whose closed points leave a body free is
         tied (:meth:`_tied`)."""
-        gathered = self.ranks.gather(status)
+        gathered, status_tangent = self.ranks.gather(status), tangent
         if health.lets_go(self.scene, *self._gamma, gathered):
             tangent = self._tied(tangent, status)
         free = secant is not None and health.slips_free(self.scene, *self._gamma, gathered)
@@ -389,8 +406,9 @@ class _Newton:
         detour = free or (secant is not None and self._dominated(status))
         if detour:
             tangent = self._regularised(tangent, secant)
+        ahead = () if detour or tangent is not status_tangent else ahead
         try:
-            return (*self.factorisations.solve(tangent, rhs, scale, detour=detour), tangent)
+            return (*self.factorisations.solve(tangent, rhs, scale, detour=detour, ahead=ahead), tangent)
         except SolverError:
             # a Coulomb law's slip tangent leaves a body held by friction
             # alone free to turn: one secant step there

@@ -431,6 +431,22 @@ LOW_RANK_COLUMNS = 64
 LOW_RANK_MEMORY = 0.25
 LOW_RANK_COLUMNS_MAX = 1024
 
+#: Where a tangent is past every kept factorisation's correction, Newton
+#: offers the maps it is heading for: the law's statuses at ``u + e δu``
+#: (``δu`` the last step) for each e of AHEAD_STEPS, the farthest first.
+#: The first within AHEAD_SHARE of the refilled slot's column budget of the
+#: tangent is factorised instead, and the tangent solved as its
+#: correction (contactcore.factorisations.KeptFactorisations._ahead).
+#: The exact law's first increment moves the status map a few points per
+#: iteration; a map a few steps ahead stays within a correction of the
+#: maps that follow for longer than the one Newton stands at (exact
+#: C-coulomb, 2026-11-27: xfem P2 at h = 0.025 6 -> 4 factorisations,
+#: efgm P1 at h = 0.0125 4 -> 3; docs/newton.md).  Chosen, not tuned:
+#: steps 1-3 ahead (the maps 3-4 iterations on were nearest the last
+#: ones), within the whole budget (half of it: xfem P2 5).
+AHEAD_STEPS = (3.0, 2.0, 1.0)
+AHEAD_SHARE = 1.0
+
 #: Built systems a study keeps for reuse (contactcore.discretisation.Reuse):
 #: one per method of a ``--method all`` study, whose cases alternate
 #: between the methods; each costs one system's matrices and factorisations.
