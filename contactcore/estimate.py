@@ -558,18 +558,23 @@ def feature_size(scene: Scene) -> float:
 
 
 def unsettled(scene: Scene, levels: list[list[ProfileData]], record: dict, method: str, degree: int,
-              exclude: float) -> dict[str, dict[str, float]]:
+              exclude: float) -> dict[str, dict[str, tuple[float, float]]]:
     """The quantities whose two-run estimate is not asymptotic, by cause,
     from the coarser run (``record``, its discretisation) of the pair
-    that makes it: ``{"reach": {PID:Q: ρ}, "coarse": {PID:Q: ρ}}`` with
-    ``ρ`` the quantity's :func:`stencil_radius` in that run.  ``reach``:
-    a sample kept (at least ``exclude`` from the singular points) lies
-    within :data:`~contactcore.tolerances.REACH_STENCILS` stencils of a
-    singular point, where that run's error is still the singular point's
-    own (the estimate there is too large).  ``coarse``: the stencil
-    exceeds 1/:data:`~contactcore.tolerances.FEATURE_STENCILS` of the
-    scene's :func:`feature_size`."""
-    sing, feature = singular_points(scene), feature_size(scene)
+    that makes it: ``{"reach": {PID:Q: (ρ, h_ok)}, "coarse": {...}}``
+    with ``ρ`` the quantity's :func:`stencil_radius` in that run and
+    ``h_ok`` the coarse run's h from which the cause is gone (ρ scales
+    with h).  ``reach``: a sample kept (at least ``exclude`` from the
+    singular points) lies within
+    :data:`~contactcore.tolerances.REACH_STENCILS` stencils of a singular
+    point, where that run's error is still the singular point's own.
+    ``coarse``: the stencil exceeds
+    1/:data:`~contactcore.tolerances.FEATURE_STENCILS` of the scene's
+    :func:`feature_size`.  A tie within
+    :data:`~contactcore.tolerances.GEOMETRY` (relative) is no cause: h =
+    0.05 with supports of 2h on a feature of 0.8 sits on the threshold,
+    and round-off must not decide it."""
+    sing, feature, h = singular_points(scene), feature_size(scene), float(record["h"])
     out = {"reach": {}, "coarse": {}}
     for prof in levels[-1]:
         xy = np.column_stack([prof.columns["x"], prof.columns["y"]])
@@ -578,27 +583,27 @@ def unsettled(scene: Scene, levels: list[list[ProfileData]], record: dict, metho
                 if len(sing) and np.any(kept) else np.inf)
         for q in prof.names[3:]:
             rho = stencil_radius(record, method, degree, q)
-            if near < tol.REACH_STENCILS * rho:
-                out["reach"][f"{prof.id}:{q}"] = rho
-            if rho * tol.FEATURE_STENCILS > feature:
-                out["coarse"][f"{prof.id}:{q}"] = rho
+            if near < tol.REACH_STENCILS * rho * (1 - tol.GEOMETRY):
+                out["reach"][f"{prof.id}:{q}"] = (rho, h * near / (tol.REACH_STENCILS * rho))
+            if rho * tol.FEATURE_STENCILS > feature * (1 + tol.GEOMETRY):
+                out["coarse"][f"{prof.id}:{q}"] = (rho, h * feature / (tol.FEATURE_STENCILS * rho))
     return out
 
 
-def unsettled_warnings(found: dict[str, dict[str, float]], h: float, feature: float) -> list[str]:
+def unsettled_warnings(found: dict[str, dict[str, tuple[float, float]]], h: float, feature: float) -> list[str]:
     """One line per cause of :func:`unsettled` and per stencil, naming the
-    quantities."""
+    quantities and the coarse h from which the cause is gone."""
     lines = []
-    for rho in sorted(set(found["reach"].values())):
-        names = ", ".join(k for k, v in found["reach"].items() if v == rho)
-        lines.append(f"{names}: samples kept within {tol.REACH_STENCILS * rho:.3g} of a singular point, the reach of "
-                     f"its own error in the run at h = {h:g} (two stencils of {rho:.3g}): that run is not asymptotic "
-                     f"there, and the estimate there is not to be trusted (mostly too large)")
-    for rho in sorted(set(found["coarse"].values())):
-        names = ", ".join(k for k, v in found["coarse"].items() if v == rho)
-        lines.append(f"{names}: the run at h = {h:g} has stencils (cells, supports, recovery patches) of {rho:.3g}, "
-                     f"more than 1/{tol.FEATURE_STENCILS:g} of the scene's smallest feature ({feature:.3g}): the runs "
-                     f"are not in the asymptotic range, the estimate is an indication only")
+    for cause, entries in found.items():
+        for rho in sorted({v[0] for v in entries.values()}):
+            names = [k for k, v in entries.items() if v[0] == rho]
+            h_ok = min(entries[k][1] for k in names)
+            why = (f"samples kept within {tol.REACH_STENCILS * rho:.3g} of a singular point, the reach of its own "
+                   f"error in the run at h = {h:g} (two stencils of {rho:.3g})" if cause == "reach" else
+                   f"the run at h = {h:g} has stencils (cells, supports, recovery patches) of {rho:.3g}, more than "
+                   f"1/{tol.FEATURE_STENCILS:g} of the scene's smallest feature ({feature:.3g})")
+            lines.append(f"{', '.join(names)}: {why}: the runs are not in the asymptotic range, the estimate is an "
+                         f"indication only (starting below h = {h_ok:.3g} avoids this)")
     return lines
 
 

@@ -589,3 +589,20 @@ def test_a_coarse_run_whose_stencil_reaches_a_singular_point_or_spans_a_feature_
     assert {cause for cause, names in found.items() if names} == causes
     lines = est.unsettled_warnings(found, h, est.feature_size(scene))
     assert len(lines) == len(causes) and all(line.startswith("L:sxx: ") for line in lines)
+    for cause in causes:  # the h from which the cause is gone: just below it, it is
+        (_, h_ok), = found[cause].values()
+        below = est.unsettled(scene, [_line_along_gamma(0.15)], {**record, "h": h_ok * (1 - tol.ACROSS_A_THRESHOLD)}, method, 1,
+                              exclude=0.1)
+        assert not below[cause] and f"h = {h_ok:.3g} avoids" in " ".join(lines)
+
+
+def test_a_stencil_exactly_at_a_threshold_is_no_cause_whatever_the_round_off():
+    """est.unsettled: supports of 2.5 × 0.05 on scene A (feature 1) are
+    1/FEATURE_STENCILS of it but for round-off, and a sample 0.25 from Γ's
+    ends is at their reach: neither fires, nor does either a relative
+    GEOMETRY/10 to the other side."""
+    scene = load_scene("A")
+    for nudge in (1 - core_tol.GEOMETRY / 10, 1.0, 1 + core_tol.GEOMETRY / 10):
+        record = {"h": 0.05 * nudge, "dmax": 2.5, "support": "circular"}
+        found = est.unsettled(scene, [_line_along_gamma(0.25)], record, "efgm", 1, exclude=0.1)
+        assert not found["coarse"] and not found["reach"], nudge

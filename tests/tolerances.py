@@ -565,6 +565,11 @@ QUOTED_EXPONENT = 1e-4
 #: at the smooth rate (2 or more) or at 2λ = 1.52.
 CORNER_DEFECT_RATE = 0.1
 
+#: A relative step that takes an h clearly across a threshold computed
+#: from it (estimate.unsettled's h from which a warning's cause is gone):
+#: far above round-off (1e-16), far below any step between two runs' h.
+ACROSS_A_THRESHOLD = 1e-6
+
 #: A measured effectivity outside EFFECTIVITY (EFFECTIVITY_OUTSIDE,
 #: SCENE_A_EFFECTIVITY_OUTSIDE) must stay where it was measured, within 25 %
 #: relative: the runs are deterministic and the figures recorded to three
