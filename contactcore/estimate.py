@@ -46,6 +46,15 @@ whichever holds (:func:`order_range`).  An observed order further than
 :data:`~contactcore.tolerances.ORDER_MISMATCH` from that range means the
 runs are not yet in the asymptotic range: the estimate carries a warning.
 
+Two runs are not asymptotic where the coarser one's stencil (a cell,
+EFGM's support, xfem P1's recovery patch: :func:`stencil_radius`) is not
+small against what it resolves: within two stencils of a singular point
+that run's error is still the singular point's own, and a stencil over
+1/:data:`~contactcore.tolerances.FEATURE_STENCILS` of the scene's smallest
+feature (:func:`feature_size`) resolves it pre-asymptotically.  Richardson
+cannot see either from two runs; the estimate names the quantities
+concerned in a warning (:func:`unsettled`).
+
 For a law with history (unilateral, Coulomb) the profiles are the final
 increment's, and the status along Γ (open, stick, slip) of the two runs is
 compared at :data:`~contactcore.tolerances.PROFILE_POINTS` points: where it
@@ -516,6 +525,88 @@ def pollution_warning(scene: Scene, profiles: dict[str, dict[str, QuantityEstima
             f"estimate 2-7 times too small: --estimate 3 observes the order"]
 
 
+# ----- runs that are not asymptotic: their stencils ---------------------------
+
+#: Meshfree methods, whose stencil is their supports (the run's record
+#: holds ``dmax`` and ``support``: :mod:`efgm.method`).
+MESHFREE = ("efgm",)
+
+
+def stencil_radius(record: dict, method: str, degree: int, quantity: str) -> float:
+    """The radius around a point within which lie the unknowns that set a
+    run's ``quantity`` there: a support of ``dmax · h`` for a meshfree
+    method (``√2`` times that to a rectangular support's corner), the
+    recovery patch of :data:`~contactcore.tolerances.RECOVERY_RINGS`
+    vertex rings around the point's cell for a recovered stress
+    (:data:`RECOVERED_STRESS`), and one cell, ``h``, otherwise."""
+    h = float(record["h"])
+    if method in MESHFREE:
+        return float(record["dmax"]) * h * (np.sqrt(2.0) if record.get("support") == "rectangular" else 1.0)
+    if quantity in STRESSES and (method, degree) in RECOVERED_STRESS:
+        return (tol.RECOVERY_RINGS + 1) * h
+    return h
+
+
+def feature_size(scene: Scene) -> float:
+    """The scene's smallest feature: the domain's smallest extent (a
+    rectangle's shorter side, a disc's diameter), or a circular Γ's
+    diameter where that is less."""
+    domain = scene.domain
+    size = float(min(domain.size)) if isinstance(domain, Rectangle) else domain.length_scale
+    radius = getattr(scene.interface, "radius", None)
+    return min(size, 2.0 * float(radius)) if radius is not None else size
+
+
+def unsettled(scene: Scene, levels: list[list[ProfileData]], record: dict, method: str, degree: int,
+              exclude: float) -> dict[str, dict[str, tuple[float, float]]]:
+    """The quantities whose two-run estimate is not asymptotic, by cause,
+    from the coarser run (``record``, its discretisation) of the pair
+    that makes it: ``{"reach": {PID:Q: (ρ, h_ok)}, "coarse": {...}}``
+    with ``ρ`` the quantity's :func:`stencil_radius` in that run and
+    ``h_ok`` the coarse run's h from which the cause is gone (ρ scales
+    with h).  ``reach``: a sample kept (at least ``exclude`` from the
+    singular points) lies within
+    :data:`~contactcore.tolerances.REACH_STENCILS` stencils of a singular
+    point, where that run's error is still the singular point's own.
+    ``coarse``: the stencil exceeds
+    1/:data:`~contactcore.tolerances.FEATURE_STENCILS` of the scene's
+    :func:`feature_size`.  A tie within
+    :data:`~contactcore.tolerances.GEOMETRY` (relative) is no cause: h =
+    0.05 with supports of 2h on a feature of 0.8 sits on the threshold,
+    and round-off must not decide it."""
+    sing, feature, h = singular_points(scene), feature_size(scene), float(record["h"])
+    out = {"reach": {}, "coarse": {}}
+    for prof in levels[-1]:
+        xy = np.column_stack([prof.columns["x"], prof.columns["y"]])
+        kept = far_from_singular(scene, xy, exclude)
+        near = (np.min(np.linalg.norm(xy[kept][:, None] - sing[None], axis=-1))
+                if len(sing) and np.any(kept) else np.inf)
+        for q in prof.names[3:]:
+            rho = stencil_radius(record, method, degree, q)
+            if near < tol.REACH_STENCILS * rho * (1 - tol.GEOMETRY):
+                out["reach"][f"{prof.id}:{q}"] = (rho, h * near / (tol.REACH_STENCILS * rho))
+            if rho * tol.FEATURE_STENCILS > feature * (1 + tol.GEOMETRY):
+                out["coarse"][f"{prof.id}:{q}"] = (rho, h * feature / (tol.FEATURE_STENCILS * rho))
+    return out
+
+
+def unsettled_warnings(found: dict[str, dict[str, tuple[float, float]]], h: float, feature: float) -> list[str]:
+    """One line per cause of :func:`unsettled` and per stencil, naming the
+    quantities and the coarse h from which the cause is gone."""
+    lines = []
+    for cause, entries in found.items():
+        for rho in sorted({v[0] for v in entries.values()}):
+            names = [k for k, v in entries.items() if v[0] == rho]
+            h_ok = min(entries[k][1] for k in names)
+            why = (f"samples kept within {tol.REACH_STENCILS * rho:.3g} of a singular point, the reach of its own "
+                   f"error in the run at h = {h:g} (two stencils of {rho:.3g})" if cause == "reach" else
+                   f"the run at h = {h:g} has stencils (cells, supports, recovery patches) of {rho:.3g}, more than "
+                   f"1/{tol.FEATURE_STENCILS:g} of the scene's smallest feature ({feature:.3g})")
+            lines.append(f"{', '.join(names)}: {why}: the runs are not in the asymptotic range, the estimate is an "
+                         f"indication only (starting below h = {h_ok:.3g} avoids this)")
+    return lines
+
+
 # ----- the status along Γ -----------------------------------------------------
 
 def switches(paths) -> bool:
@@ -664,9 +755,10 @@ class Estimate:
     """Everything estimated about the finest of a method's runs at ``hs``
     (coarse to fine): per profile and quantity (:class:`QuantityEstimate`),
     in energy (:class:`EnergyEstimate`), the status along Γ compared
-    between the two finest runs (a law with history), warnings, and the
+    between the two finest runs (a law with history), warnings, the
     finest run's profiles as sampled (``sampled``, in the scene's order:
-    what a driver writes, not sampled again)."""
+    what a driver writes, not sampled again), and the ``PID:Q`` whose
+    estimate a warning calls not asymptotic (:func:`unsettled`)."""
 
     hs: tuple
     profiles: dict[str, dict[str, QuantityEstimate]]
@@ -674,6 +766,7 @@ class Estimate:
     status: dict | None = None
     warnings: list[str] = field(default_factory=list)
     sampled: list[ProfileData] = field(default_factory=list)
+    unsettled: set[str] = field(default_factory=set)
 
     def error_columns(self, pid: str) -> dict[str, np.ndarray]:
         """``{q + ERROR_SUFFIX: per-sample error}`` of profile ``pid``."""
@@ -706,13 +799,15 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     levels = [sample_profiles(scene, r.fields, r.interface) for r in results]
     switching = None if scene.law.is_linear else switches([r.interface for r in results])
     profiles = profile_estimates(levels, results[-1].degree, results[-1].method, coarse, scene, exclude, switching)
-    warnings = order_warnings(profiles) + pollution_warning(scene, profiles)
+    found = unsettled(scene, levels, results[-2].discretisation, results[-1].method, results[-1].degree, exclude)
+    warnings = (order_warnings(profiles) + pollution_warning(scene, profiles)
+                + unsettled_warnings(found, hs[-2], feature_size(scene)))
     status = None
     if scene.law.has_history or not scene.law.is_linear:
         status = status_change(scene, results[-2].interface, results[-1].interface, hs[-2:])
         warnings += status_warning(status)
     zz = energy_estimate(scene, results[-1].fields, hs[-1], exclude) if energy else None
-    return Estimate(hs, profiles, zz, status, warnings, levels[-1])
+    return Estimate(hs, profiles, zz, status, warnings, levels[-1], {k for v in found.values() for k in v})
 
 
 def estimate(scene: Scene, discretisation, h: float, levels: int = 2, *, exclude: float = 0.0, reuse=None,

@@ -661,6 +661,33 @@ ORDER_RANGE = (0.5, 5.0)
 #: changes the Richardson factor by 2x or more (p = 2 → 1: 1/3 → 1).
 ORDER_MISMATCH = 1.0
 
+#: How far a singular point's local error reaches a run, in stencils
+#: (estimate.stencil_radius: the radius of the unknowns that set a value
+#: at a point): a sample's value combines the unknowns within one stencil,
+#: and each of those is set by the equations within one stencil of it, so
+#: the singular point's own error reaches two.  Measured on scene A along
+#: Γ (h = 0.05 against fe P2 at 0.00625, 2026-11-27; the kept samples
+#: start 0.141 from Γ's ends): EFGM P1's stress error at 0.14-0.19 from
+#: the ends is 7-20 times its error at h/2 there and 1.7 times beyond 0.29
+#: (two supports: 0.2); xfem P1's recovered σyy 30-110 times at 0.14-0.19
+#: and 1.7 at 0.24-0.29 (two patches: 0.3); fe P1's, whose reach (0.1)
+#: the kept samples lie beyond, 1.2-3.6 times near the ends and 2 away.
+REACH_STENCILS = 2.0
+
+#: A coarse run whose stencil (estimate.stencil_radius) exceeds this
+#: fraction of the scene's smallest feature (estimate.feature_size: the
+#: domain's smallest extent, a circular Γ's diameter) is pre-asymptotic.
+#: Measured 2026-11-27 (scenes A, B, C and four of a tester's scenes,
+#: h = 0.1 and 0.05 on A, B, C, 0.2 and 0.1 on the others, against fe P2
+#: at 0.00625 on A and 0.0125 elsewhere): EFGM P1's two-run effectivities
+#: lay above 2 on 46 of the 99 entries whose supports were 0.2-0.5 of
+#: the feature, none below 0.5; on 2 of the 11 at 0.10-0.11 (A and C at
+#: h = 0.05; the two within reach of Γ's ends, REACH_STENCILS).  14 of
+#: xfem P1's 16 entries below 0.5 had recovery patches of 0.2-0.75 of the
+#: feature.  1/8 lies between 0.11 and 0.2; a measured threshold, not a
+#: theorem: the warning tells a user the estimate is an indication only.
+FEATURE_STENCILS = 8.0
+
 #: A root of the wedge's eigen-equation (estimate.clamped_free_exponent):
 #: |residual| below this, Re λ above it, and a real root this close to an
 #: integer is one (a polynomial field).  λ ~ 0.5-2 and the residual's

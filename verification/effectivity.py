@@ -125,7 +125,8 @@ def profile_rows(estimate: est.Estimate, got: dict, exact: dict) -> list[dict]:
             scale = float(np.max(np.abs(want)))
             kind = "zero" if scale == 0 else "round-off" if true <= ROUNDOFF * scale else "error"
             rows.append({"profile": pid, "quantity": q, "estimate": e.rms, "true": true, "order": e.order,
-                         "kind": kind, "effectivity": e.rms / true if kind == "error" else None})
+                         "kind": kind, "effectivity": e.rms / true if kind == "error" else None,
+                         "warned": f"{pid}:{q}" in estimate.unsettled})
     return rows
 
 
@@ -174,8 +175,10 @@ def scene_rows(scene, key: tuple, h: float, truth: dict[str, ProfileData], level
     """One row per profile quantity of ``scene`` for one (method, degree)
     estimated from ``levels`` runs from ``h`` down: the RMS of the
     estimate and of the true error (against ``truth``) of the finest run,
-    over the samples away from singular points, and the true error
-    relative to the quantity's largest |value| there."""
+    over the samples away from singular points, the true error
+    relative to the quantity's largest |value| there, and whether the
+    estimate warned that it is not asymptotic (``warned``:
+    :func:`contactcore.estimate.unsettled`)."""
     disc = methods.discretisation(key[0])(degree=key[1])
     results = [solve(scene, disc, hk) for hk in est.levels_of(h, levels)]
     exclude = default_exclusion(scene)
@@ -189,7 +192,8 @@ def scene_rows(scene, key: tuple, h: float, truth: dict[str, ProfileData], level
             rows.append({"scene": scene.name, "method": key[0], "degree": key[1], "h": estimate.hs[-1],
                          "profile": pid, "quantity": q, "order": e.order, "estimate": est.rms(e.error[keep]),
                          "true": true, "relative": true / np.max(np.abs(want)),
-                         "effectivity": est.rms(e.error[keep]) / true if true > 0 else None})
+                         "effectivity": est.rms(e.error[keep]) / true if true > 0 else None,
+                         "warned": f"{pid}:{q}" in estimate.unsettled})
     return rows
 
 
@@ -208,10 +212,10 @@ def scene_table(scene_names, h: float, ref_h: float, out: Path, levels: int = 2,
         for key in SCENE_VARIANTS:
             rows += scene_rows(scene, key, h, truth, levels)
     columns = ["scene", "method", "degree", "h", "profile", "quantity", "order", "estimate", "true", "relative",
-               "effectivity"]
+               "effectivity", "warned"]
     text = (f"# Effectivity against fe P2\n\nTruth: fe P2 at h = {ref_h}; runs at "
             f"{', '.join(f'{hk:g}' for hk in est.levels_of(h, levels))}, the finest estimated; RMS over the "
-            f"samples away from singular points.\n\n" + files.markdown_table(rows, columns[:-3] + columns[-1:]))
+            f"samples away from singular points.\n\n" + files.markdown_table(rows, columns[:-4] + columns[-2:]))
     files.write_csv(out / "effectivity.csv", rows, columns)
     files.write_text(out / "effectivity.md", text)
     files.write_json(out / "run.json", {**files.provenance(list(argv)), "scenes": list(scene_names), "h": h,
