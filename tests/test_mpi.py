@@ -298,24 +298,28 @@ runpy.run_module("verification", run_name="__main__", alter_sys=True)
 """
 
 
-@pytest.mark.parametrize("options, files", [
-    (["--no-plots"], ["fe/summary.json", "fe/profiles/A1.csv"]),
-    pytest.param(["--fields"], ["plots/A1.png", "fe/fields/minus.vtu", "fe/fields/plus.vtu"], marks=_slow),
-], ids=["tables", "figures-and-fields"])
-def test_rank_0_alone_writes_under_mpirun(tmp_path, options, files):
-    """``run`` on 2 ranks: rank 1 creates no file or folder, neither a
-    scratch folder of its own (it wrote the whole run there, to be thrown
-    away) nor anything beside --out; rank 0 writes the whole result folder,
-    figures and field files too (VTU: the bodies gathered on every rank).
-    The tables in the default suite (a 3 s mpirun), with figures and field
-    files in the slow stage."""
+@pytest.mark.parametrize("command, files", [
+    (["run", "A", "--method", "fe", "--h", "0.2", "--no-plots"],
+     ["summary.md", "scene.toml", "fe/summary.json", "fe/profiles/A1.csv"]),
+    pytest.param(["run", "A", "--method", "fe", "--h", "0.2", "--fields"],
+                 ["summary.md", "plots/A1.png", "fe/fields/minus.vtu", "fe/fields/plus.vtu"], marks=_slow),
+    pytest.param(["timing", "A", "--method", "fe", "--h", "0.2"], ["timing.csv", "timing.md"], marks=_slow),
+    pytest.param(["shapes", "--grid", "11", "--points", "1000", "--repeats", "1"], ["shapes.csv", "shapes.md"],
+                 marks=_slow),
+], ids=["run-tables", "run-figures-and-fields", "timing", "shapes"])
+def test_rank_0_alone_writes_under_mpirun(tmp_path, command, files):
+    """The commands that spread over mpirun's ranks, on 2 ranks: rank 1
+    creates no file or folder, neither a scratch folder of its own (it
+    wrote the whole result there, to be thrown away) nor anything beside
+    --out; rank 0 writes the whole result folder, figures and field files
+    too (VTU: the bodies gathered on every rank).  ``run``'s tables in the
+    default suite (a 3 s mpirun), the rest in the slow stage."""
     out = tmp_path / "out"
-    done = mpirun(2, "-c", WRITES_OF_LATER_RANKS, tmp_path, "run", "A", "--method", "fe", "--h", "0.2", *options,
-                  "--out", out, timeout=120)
+    done = mpirun(2, "-c", WRITES_OF_LATER_RANKS, tmp_path, *command, "--out", out, timeout=120)
     assert done.returncode == 0, done.stderr
     assert "written by rank" not in done.stderr, done.stderr
     written = {p.relative_to(out).as_posix() for p in out.rglob("*")}
-    assert {"run.json", "units.json", "summary.md", "scene.toml", *files} <= written, written
+    assert {"run.json", "units.json", *files} <= written, written
     assert [p.name for p in tmp_path.iterdir()] == ["out"]
 
 
