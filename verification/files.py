@@ -93,6 +93,8 @@ def atomic_folder(path: Path, watched: bool = False):
     finally:
         build.settle()
         _BUILDING.remove(build)
+        if watched:
+            janitor.unwatch()
 
 
 def discard_unfinished() -> None:

@@ -60,6 +60,8 @@ SAID_WAIT = 0.5
 
 #: This process's ends of the pipes to and from its janitor, once one watches.
 _watching: tuple[int, int] | None = None
+#: Whether a janitor that no longer watches said the line.
+_said = False
 
 
 def watch(build: Build) -> None:
@@ -78,12 +80,25 @@ def watch(build: Build) -> None:
     signal.set_wakeup_fd(to_janitor)
 
 
+def unwatch() -> None:
+    """The build settled by this process itself: signals no longer go to
+    the janitor; it ends (the end of its pipe), and whether it said the
+    line (a signal came just before) is kept for :func:`told`."""
+    global _watching, _said
+    to_janitor, from_janitor = _watching
+    signal.set_wakeup_fd(-1)
+    os.close(to_janitor)
+    _said = os.read(from_janitor, 1) != b""  # its byte, or the end of the pipe as it ends
+    os.close(from_janitor)
+    _watching = None
+
+
 def told(signum: int) -> bool:
     """Tell this process's janitor that it was asked to end by ``signum``
     and wait (at most :data:`SAID_WAIT`) for its line, so that the line is
-    out before this process ends; whether a janitor watches."""
+    out before this process ends; whether a janitor says it (or said it)."""
     if _watching is None:
-        return False
+        return _said
     to_janitor, from_janitor = _watching
     os.write(to_janitor, bytes([signum]))
     select.select([from_janitor], [], [], SAID_WAIT)
