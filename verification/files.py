@@ -12,7 +12,6 @@ import json
 import os
 import platform
 import re
-import shutil
 import sys
 import tempfile
 from contextlib import contextmanager
@@ -23,7 +22,6 @@ from contactcore.profiles import sample_points
 from contactcore.estimate import ERROR_SUFFIX
 
 from . import janitor
-from .janitor import Build
 
 #: The file that marks a folder as a result folder of this tool (every
 #: command writes it last): only such a folder is replaced by a new run.
@@ -63,7 +61,7 @@ def atomic_path(path: Path, suffix: str = ""):
 
 
 #: The atomic folders being built in this process, innermost last.
-_BUILDING: list[Build] = []
+_BUILDING: list[janitor.Build] = []
 
 
 @contextmanager
@@ -81,7 +79,7 @@ def atomic_folder(path: Path, watched: bool = False):
     except OSError as exc:  # a place the system will not let us write (/proc, /sys, a read-only mount)
         raise OutFolderError(f"{path} cannot be created ({exc.strerror or exc})") from None
     _follow_umask(str(tmp), 0o777)
-    build = Build(path, tmp)
+    build = janitor.Build(path, tmp)
     _BUILDING.append(build)
     if watched:
         janitor.watch(build)
@@ -98,7 +96,7 @@ def atomic_folder(path: Path, watched: bool = False):
 
 
 def discard_unfinished() -> None:
-    """Settle every atomic folder under way (:meth:`Build.settle`),
+    """Settle every atomic folder under way (:meth:`verification.janitor.Build.settle`),
     innermost first, as if its block had been interrupted: for a process
     that ends at once, without unwinding (rank 0 under mpirun, whose ranks
     mpirun kills a second after it asks them to end)."""

@@ -58,8 +58,8 @@ class Build:
 #: well within the second mpirun leaves it.
 SAID_WAIT = 0.5
 
-#: This process's ends of the pipes to and from its janitor, once one watches.
-_watching: tuple[int, int] | None = None
+#: This process's janitor and its ends of the pipes to and from it, once one watches.
+_watching: tuple[subprocess.Popen, int, int] | None = None
 #: Whether a janitor that no longer watches said the line.
 _said = False
 
@@ -70,13 +70,13 @@ def watch(build: Build) -> None:
     global _watching
     signals, to_janitor = os.pipe()
     from_janitor, said = os.pipe()
-    subprocess.Popen([sys.executable, __file__, str(signals), str(said), str(build.path.absolute()),
-                      str(build.tmp.absolute())], pass_fds=(signals, said), stdin=subprocess.DEVNULL,
-                     start_new_session=True)
+    process = subprocess.Popen([sys.executable, __file__, str(signals), str(said), str(build.path.absolute()),
+                                str(build.tmp.absolute())], pass_fds=(signals, said), stdin=subprocess.DEVNULL,
+                               start_new_session=True)
     os.close(signals)
     os.close(said)
     os.set_blocking(to_janitor, False)
-    _watching = to_janitor, from_janitor
+    _watching = process, to_janitor, from_janitor
     signal.set_wakeup_fd(to_janitor)
 
 
@@ -85,11 +85,12 @@ def unwatch() -> None:
     the janitor; it ends (the end of its pipe), and whether it said the
     line (a signal came just before) is kept for :func:`told`."""
     global _watching, _said
-    to_janitor, from_janitor = _watching
+    process, to_janitor, from_janitor = _watching
     signal.set_wakeup_fd(-1)
     os.close(to_janitor)
     _said = os.read(from_janitor, 1) != b""  # its byte, or the end of the pipe as it ends
     os.close(from_janitor)
+    process.wait()
     _watching = None
 
 
@@ -99,7 +100,7 @@ def told(signum: int) -> bool:
     out before this process ends; whether a janitor says it (or said it)."""
     if _watching is None:
         return _said
-    to_janitor, from_janitor = _watching
+    _, to_janitor, from_janitor = _watching
     os.write(to_janitor, bytes([signum]))
     select.select([from_janitor], [], [], SAID_WAIT)
     return True
