@@ -207,3 +207,13 @@ def along(interface, points: np.ndarray) -> np.ndarray:
         return np.arctan2(d[:, 1], d[:, 0])
     t = tangent_of(np.asarray(interface.normal, float)[None])[0]
     return (np.asarray(points) - interface.point) @ t
+
+
+def along_from_entry(scene, points: np.ndarray) -> np.ndarray:
+    """The parameter the interface history files give Γ's points: a
+    straight Γ's arc length from where it enters the domain, along ``t``
+    (the profiles' ``s``), a circle's polar angle in (−π, π]."""
+    s = along(scene.interface, points)
+    if isinstance(scene.interface, LineInterface):
+        s = s - along(scene.interface, scene.interface.chord(scene.domain)[:1])[0]
+    return s

@@ -188,6 +188,44 @@ def test_a_quantity_zero_in_the_reference_is_measured_against_a_floor_a_user_giv
             table(scene, runs, "ref", floors=bad)
 
 
+def test_round_off_is_within_any_estimate_and_never_the_worst():
+    """A bonded patch's σxy is zero: two methods' σxy differ by round-off
+    (1e-14 Pa against σxx = 1e5 Pa) with estimates at round-off too.  That
+    is within their estimates (it read "beyond" at a ratio of 2–4), and
+    the run's worst estimated error is σxx's, not σxy's round-off over its
+    own round-off; a real σxy difference (1 Pa, estimates 1e-3 Pa) is
+    still beyond them, and a user's floor takes the place of round-off's."""
+    from contactcore.estimate import ERROR_SUFFIX
+    from verification.agreement import NEGLIGIBLE_SHARE, estimated_shares, within_estimates, worst_estimate
+
+    scene = load_scene("A")
+    scene = scene.with_changes(profiles=tuple(p for p in scene.profiles if p.id == "A1"))
+    s = np.linspace(0.0, 1.0, 101)
+    wobble = np.sin(37 * s)
+
+    def run(sxy, err_sxx, err_sxy):
+        prof = ProfileData("A1", "arclength", {"s": s, "x": s, "y": np.full_like(s, 0.5),
+                                               "sxx": np.full_like(s, 1e5), "sxy": sxy})
+        return {"A1": prof}, {"A1": {f"sxx{ERROR_SUFFIX}": np.full_like(s, err_sxx),
+                                     f"sxy{ERROR_SUFFIX}": np.full_like(s, err_sxy)}}
+
+    a, b = run(1e-14 * wobble, 1.0, 1e-15), run(-1e-14 * wobble, 1.0, 1e-15)
+    exclude = default_exclusion(scene)
+    verdicts = {q: beyond for _, q, _, beyond in within_estimates(scene, *a, *b, exclude)}
+    assert verdicts == {"sxx": False, "sxy": False}
+    real = run(1.0 + 0 * s, 1.0, 1e-3)
+    assert dict((q, beyond) for _, q, _, beyond in within_estimates(scene, *a, *real, exclude))["sxy"]
+    assert not dict((q, beyond) for _, q, _, beyond in within_estimates(scene, *a, *real, exclude,
+                                                                         floors={"sxy": 10.0}))["sxy"]
+
+    class Est:  # the estimate's per-sample errors, as contactcore.estimate.Estimate holds them
+        profiles = {"A1": {q: type("E", (), {"error": a[1]["A1"][f"{q}{ERROR_SUFFIX}"]})() for q in ("sxx", "sxy")}}
+
+    shares = estimated_shares(scene, a[0], Est, exclude)
+    assert shares["A1", "sxy"][1] == pytest.approx(NEGLIGIBLE_SHARE * 1e5)  # round-off of σxx's size
+    assert worst_estimate(scene, a[0], Est, exclude)[1] == "A1:sxx"
+
+
 #: A stiff disc (E = 2e11 Pa) bonded in a 100x softer block, under its own
 #: weight and a sheared, pressed top: the disc moves with the soft block.
 SOFT_BLOCK = {

@@ -47,3 +47,24 @@ def test_points_on_gamma_take_the_requested_side():
     pts = np.array([[0.2, 0.5], [0.2, 0.5 + 1e-6], [0.2, 0.5 - 1e-6]])
     assert scene.body_of(pts).tolist() == [1, 1, 0]
     assert scene.body_of(pts, side="minus").tolist() == [0, 1, 0]
+
+
+def test_the_history_files_parameter_is_the_profiles_arc_length_wherever_the_point_lies():
+    """interface.csv's and the interface VTU files' ``s`` on a straight Γ is
+    the arc length from where Γ enters the domain, as a profile's: the same
+    Γ given by a point at its middle (or beyond the domain) gives the same
+    ``s``, 0 at the entry and the chord's length at the exit."""
+    from contactcore.interface_path import along_from_entry
+    from contactcore.profiles import sample_points
+
+    from contactcore.scene import InterfaceProfile
+
+    scene = load_scene("A").with_changes(interface=LineInterface((0.0, 0.2), (-0.5, 1.0)),
+                                         profiles=(InterfaceProfile("G", ("gN",)),))
+    a, b = scene.interface.chord(scene.domain)
+    s_profile, points, _ = sample_points(scene, scene.profiles[0])
+    for point in (a, (a + b) / 2, b + 3.0 * (b - a)):
+        moved = scene.with_changes(interface=LineInterface(tuple(point), scene.interface.normal))
+        ends = along_from_entry(moved, np.array([a, b]))
+        assert ends[0] == pytest.approx(0.0, abs=tol.SHAPE_ROUNDOFF) and ends[1] == pytest.approx(np.linalg.norm(b - a))
+        assert np.allclose(along_from_entry(moved, points), s_profile, rtol=0.0, atol=tol.SHAPE_ROUNDOFF)

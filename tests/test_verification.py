@@ -155,8 +155,11 @@ def test_study_rejects_a_parameter_that_does_not_apply(tmp_path, capsys):
     assert not (tmp_path / "study.csv").exists()
 
 
+@pytest.mark.slow
 def test_quick_report_runs_the_whole_chain(tmp_path):
-    """paper, closed forms, efficiency, sweeps and a study, into one file."""
+    """paper, closed forms, efficiency, sweeps and a study, into one file
+    (17 s of CPU, the default suite's longest test: each piece has its own
+    default test, so the chain runs in the slow stage)."""
     assert main(["report", "--out", str(tmp_path), "--quick"]) == 0
     text = (tmp_path / "report.md").read_text()
     for heading in ("## The paper's figures", "## Closed forms", "## Error against run time, scene C",

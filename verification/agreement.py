@@ -29,6 +29,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from contactcore import ContactError, ProfileData, Scene, load_scene, sample_profiles
+from contactcore.scene import DISPLACEMENT_QUANTITIES, STRESS_QUANTITIES
 from contactcore.estimate import ERROR_SUFFIX, far_from_singular, rms, singular_regions
 from contactcore.exact import is_exact
 from contactcore.scaling import Scales
@@ -53,6 +54,29 @@ EXCLUDE_FRACTION = 0.1
 #: largest g_N, g_T: 0.16 and 0.27 U).  The penalty's gaps are t/k, the
 #: answer itself, and keep their own measure.
 EXACT_GAP_FLOOR = 0.1
+
+
+#: An estimated error, or two methods' difference, below this share of the
+#: largest value of its kind on the run's profiles (any stress or traction;
+#: any displacement or gap) is round-off: the systems lose up to 8 digits
+#: (condition estimates ~1e8, tests/tolerances.py PATCH_ROUNDOFF).  A
+#: quantity that is zero in the answer (σxy of a bonded patch) has no
+#: scale of its own: measured against its own round-off, fe's and xfem's
+#: 1e-14 agreement read as 100 % errors "beyond the estimates".
+NEGLIGIBLE_SHARE = 1e-8
+
+#: The kinds whose largest value floors a quantity's scale (:func:`negligible`).
+KINDS = (STRESS_QUANTITIES + ("tN", "tT"), DISPLACEMENT_QUANTITIES + ("gN", "gT"))
+
+
+def negligible(profiles: dict, quantity: str) -> float:
+    """:data:`NEGLIGIBLE_SHARE` of the largest |value| that any quantity of
+    ``quantity``'s kind (:data:`KINDS`) takes on ``profiles`` (id ->
+    ProfileData): the size below which its error is round-off."""
+    kind = next(k for k in KINDS if quantity in k)
+    sizes = [np.max(np.abs(p.columns[q])) for p in profiles.values() for q in p.names[3:] if q in kind
+             and len(p.columns[q])]
+    return NEGLIGIBLE_SHARE * max(sizes, default=0.0)
 
 
 def displacement_scale(scene: Scene) -> float:
@@ -165,20 +189,23 @@ def agreements(scene: Scene, got: dict, ref: dict, exclude: float) -> list[tuple
     return [(a.profile, a.quantity, a.kind, a.rms) for a in profile_agreements(scene, "", got, ref, exclude)]
 
 
-def estimated_shares(scene: Scene, profiles: dict, est, exclude: float) -> dict[tuple[str, str], tuple[float, float]]:
+def estimated_shares(scene: Scene, profiles: dict, est, exclude: float, floors: dict | None = None
+                     ) -> dict[tuple[str, str], tuple[float, float]]:
     """``(profile id, quantity) -> (RMS of the estimated error, RMS of its
     scale)`` over the samples of ``profiles`` (id -> ProfileData, the runs
     ``est`` estimated, a :class:`contactcore.estimate.Estimate`) at least
     ``exclude`` from the singular points: the scale is the quantity's own
     values (:func:`measured_against`) or, for a zero quantity, its
     companion's (:data:`COMPANIONS`), as :func:`profile_agreements`
-    measures a true error."""
-    shares = {}
+    measures a true error, floored by ``floors`` (quantity -> value in its
+    unit, :func:`user_floors`) and by :func:`negligible`."""
+    shares, given = {}, user_floors(floors)
     for pid, qs in est.profiles.items():
         keep = kept_samples(scene, profiles[pid], exclude)
         for q, e in qs.items():
             spid, sq = companion(pid, q, profiles) or (pid, q)
-            scale = measured_against(scene, sq, profiles[spid].columns[sq][keep])
+            floor = max(given.get(q, 0.0), negligible(profiles, q))
+            scale = np.hypot(measured_against(scene, sq, profiles[spid].columns[sq][keep]), floor)
             shares[pid, q] = rms(e.error[keep]), rms(scale)
     return shares
 
@@ -198,13 +225,14 @@ def first_largest(items, key):
     return next(i for i in items if key(i) >= top * (1 - WORST_TIE))
 
 
-def worst_estimate(scene: Scene, profiles: dict, est, exclude: float) -> tuple[float, str]:
+def worst_estimate(scene: Scene, profiles: dict, est, exclude: float, floors: dict | None = None
+                   ) -> tuple[float, str]:
     """The largest estimated relative RMS error over every profile and
-    quantity of :func:`estimated_shares` and where (``"B5:tT"``; the first
-    in the scene's order of those within :data:`WORST_TIE`); ``(0, "")``
-    when no quantity has a scale."""
+    quantity of :func:`estimated_shares` (with ``floors``) and where
+    (``"B5:tT"``; the first in the scene's order of those within
+    :data:`WORST_TIE`); ``(0, "")`` when no quantity has a scale."""
     rows = [(error / scale, f"{pid}:{q}") for (pid, q), (error, scale)
-            in estimated_shares(scene, profiles, est, exclude).items() if scale > 0]
+            in estimated_shares(scene, profiles, est, exclude, floors).items() if scale > 0]
     return first_largest(rows, key=lambda row: row[0]) if rows else (0.0, "")
 
 
@@ -440,21 +468,24 @@ def assert_methods_agree(scene, methods, h: float | None = None, rtol: float = 0
     return result
 
 
-def within_estimates(scene: Scene, a: dict, err_a: dict, b: dict, err_b: dict, exclude: float
-                     ) -> list[tuple[str, str, float, bool]]:
+def within_estimates(scene: Scene, a: dict, err_a: dict, b: dict, err_b: dict, exclude: float,
+                     floors: dict | None = None) -> list[tuple[str, str, float, bool]]:
     """Two methods' profiles (``{id: ProfileData}``) against their estimated
     errors (``{id: {quantity + "_err": per-sample error}}``,
     :meth:`contactcore.estimate.Estimate.error_columns`): per profile and
-    quantity, ``RMS(q_a − q_b) / RMS(e_a + e_b)`` over the kept samples
-    (RMS, not the worst sample: a pointwise estimate vanishes where the
-    runs at h and h/2 cross) and whether it exceeds 1 (they differ by more
-    than their estimated errors allow)."""
-    rows = []
+    quantity, ``RMS(q_a − q_b) / max(RMS(e_a + e_b), f)`` over the kept
+    samples (RMS, not the worst sample: a pointwise estimate vanishes where
+    the runs at h and h/2 cross), ``f`` the larger of the quantity's floor
+    in ``floors`` (:func:`user_floors`) and :func:`negligible` (a
+    difference at round-off is within any estimate), and whether it
+    exceeds 1 (they differ by more than their estimated errors allow)."""
+    rows, given = [], user_floors(floors)
     for pid, prof in a.items():
         keep = kept_samples(scene, prof, exclude)
         for q in prof.names[3:]:
             diff = (prof.columns[q] - b[pid].columns[q])[keep]
             bound = (err_a[pid][f"{q}{ERROR_SUFFIX}"] + err_b[pid][f"{q}{ERROR_SUFFIX}"])[keep]
-            ratio = rms(diff) / max(rms(bound), np.finfo(float).tiny)
+            floor = max(given.get(q, 0.0), negligible(a, q), negligible(b, q), np.finfo(float).tiny)
+            ratio = rms(diff) / max(rms(bound), floor)
             rows.append((pid, q, ratio, ratio > 1.0))
     return rows

@@ -24,7 +24,7 @@ import meshio
 import numpy as np
 
 from contactcore import BODIES
-from contactcore.interface_path import InterfacePath, along
+from contactcore.interface_path import InterfacePath, along_from_entry
 
 from . import files
 
@@ -48,7 +48,7 @@ def write_body(path: Path, body) -> None:
 
 def write_interface(folder: Path, scene, path: InterfacePath) -> list[tuple[float, str]]:
     """Γ's state at every step as VTU point clouds; ``(step, file name)``s."""
-    s = along(scene.interface, path.points)
+    s = along_from_entry(scene, path.points)
     vertices = [("vertex", np.arange(len(path.points))[:, None])]
     written = []
     for n, step in enumerate(path.steps):

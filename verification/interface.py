@@ -23,7 +23,7 @@ import numpy as np
 
 from contactcore import LineInterface
 from contactcore.laws import STATUS_NAMES
-from contactcore.interface_path import InterfacePath, along
+from contactcore.interface_path import InterfacePath, along_from_entry
 
 from . import files
 from .plots import keep_span, legend_outside, pyplot, save, style
@@ -49,7 +49,7 @@ def write_history(folder: Path, scene, path: InterfacePath) -> None:
     """``increments.csv`` and ``interface.csv`` of one method's run."""
     rows = increment_rows(path)
     files.write_csv(folder / "increments.csv", rows, list(rows[0]))
-    s = along(scene.interface, path.points)
+    s = along_from_entry(scene, path.points)
     points = []
     for step in path.steps:
         for i in range(len(s)):
@@ -67,7 +67,7 @@ def _integer_steps(axis) -> None:
 
 def plot_status(out: Path, scene, label: str, path: InterfacePath) -> Path:
     """Status of every Γ point (x: along Γ) at every step (y)."""
-    s = along(scene.interface, path.points)
+    s = along_from_entry(scene, path.points)
     fig, ax = pyplot().subplots(figsize=(8, 4), layout="constrained")
     for code, (name, colour) in enumerate(zip(STATUS_NAMES, STATUS_COLOURS)):
         xs = [s[step.status == code] for step in path.steps]

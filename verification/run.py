@@ -139,36 +139,39 @@ def _solve_estimated(solve, scene, h, levels: int | None, **options):
     return results[-1], estimates.estimate_runs(scene, results, default_exclusion(scene))
 
 
-def _estimate_record(scene, est, profiles: list) -> dict:
+def _estimate_record(scene, est, profiles: list, floors: dict | None = None) -> dict:
     """summary.json's ``"estimate"``: each quantity's max, RMS and order over
     every sample with ``scale`` (the RMS of the quantity itself, an exact
     law's gaps floored as the agreement floors them), and ``kept_rms``,
     ``kept_scale`` the same over the samples away from singular points, a
     zero quantity's scale its companion's
-    (:func:`~verification.agreement.estimated_shares`); ``"worst"``, the
+    (:func:`~verification.agreement.estimated_shares`: the kept scale
+    floored by ``floors`` and by round-off); ``"worst"``, the
     largest ``kept_rms / kept_scale`` and where
     (:func:`~verification.agreement.worst_estimate`, as ``efficiency``
     takes it): what summary.md shows."""
     record, exclude = est.summary(), default_exclusion(scene)
     by_id = {p.id: p for p in profiles}
-    for (pid, q), (kept_rms, kept_scale) in agreement.estimated_shares(scene, by_id, est, exclude).items():
+    for (pid, q), (kept_rms, kept_scale) in agreement.estimated_shares(scene, by_id, est, exclude, floors).items():
         scale = estimates.rms(measured_against(scene, q, by_id[pid].columns[q]))
         record[pid][q].update(scale=scale, kept_rms=kept_rms, kept_scale=kept_scale)
-    relative, where = agreement.worst_estimate(scene, by_id, est, exclude)
+    relative, where = agreement.worst_estimate(scene, by_id, est, exclude, floors)
     record["worst"] = {"relative": relative, "at": where}
     return record
 
 
-def _estimates_section(scene, runs: dict) -> str:
+def _estimates_section(scene, runs: dict, floors: dict | None = None) -> str:
     """Per pair of methods, the profile quantities on which they differ by
     more than the sum of their estimated errors (samples near singular
-    points left out, :mod:`verification.agreement`)."""
+    points left out, a difference below ``floors`` or round-off within any
+    estimate: :func:`verification.agreement.within_estimates`)."""
     names = list(runs)
     lines = ["| methods | profile | quantity | RMS Δ / RMS (e₁ + e₂) | beyond the estimates |",
              "|---|---|---|---|---|"]
     for i, a in enumerate(names):
         for b in names[i + 1:]:
-            for pid, q, ratio, beyond in within_estimates(scene, *runs[a], *runs[b], default_exclusion(scene)):
+            for pid, q, ratio, beyond in within_estimates(scene, *runs[a], *runs[b], default_exclusion(scene),
+                                                          floors):
                 lines.append(f"| {a} – {b} | {pid} | {q} | {ratio:.2f} | {'yes' if beyond else 'no'} |")
     return ("\n## Agreement within the estimated errors\n\nWhere two methods differ by more than the sum of "
             "their estimated errors, at least one estimate is too small: that difference is not resolution.\n\n"
@@ -272,7 +275,8 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
         result, est = _named(chosen, name, _solve, scene, name, h, degree, paper, estimate, options)
         exact_row = (_against_exact(out, scene, twin, name, result, h, degree, paper, estimate, options, draw, gaps)
                      if twin is not None else None)
-        summaries.append(_write_method(out, scene, name, result, est, fields, draw, profiles, paths, estimated, gaps))
+        summaries.append(_write_method(out, scene, name, result, est, fields, draw, profiles, paths, estimated, gaps,
+                                       floors))
         summaries += [exact_row] if exact_row else []
     ref = reference_label(reference)
     if compared and profiles and ref not in {label for by_label in profiles.values() for label in by_label}:
@@ -387,14 +391,15 @@ def _solve(scene: Scene, name: str, h, degree: int, paper: bool, estimate, optio
 
 
 def _write_method(out: Path, scene: Scene, name: str, result, est, fields: bool, draw: bool, profiles: dict,
-                  paths: dict, estimated: dict, gaps: dict) -> dict:
-    """Method ``name``'s files (profiles with their estimated errors,
+                  paths: dict, estimated: dict, gaps: dict, floors: dict | None = None) -> dict:
+    """Method ``name``'s files (profiles with their estimated errors, their
+    relative sizes floored by ``floors`` (:func:`_estimate_record`),
     fields, summary with its distance from the exact answer if ``gaps``
     has it, the response along the path); its profiles, path and
     estimate join ``profiles``, ``paths`` and ``estimated`` under its
     label.  Returns its summary."""
     label = f"{name} (p{result.degree})"
-    summary, sampled = _written_profiles(out / name, scene, result, est)
+    summary, sampled = _written_profiles(out / name, scene, result, est, floors)
     if label in gaps:
         summary["against_exact"] = gaps[label]
     if est is not None:
@@ -415,15 +420,15 @@ def _write_method(out: Path, scene: Scene, name: str, result, est, fields: bool,
     return summary
 
 
-def _written_profiles(folder: Path, scene: Scene, result, est) -> tuple[dict, list]:
+def _written_profiles(folder: Path, scene: Scene, result, est, floors: dict | None = None) -> tuple[dict, list]:
     """``result``'s profiles of ``scene`` written under ``folder/profiles``,
     with their estimated errors if ``est`` (else None) has them; returns
-    its summary (with ``"estimate"``, :func:`_estimate_record`) and the
-    profiles."""
+    its summary (with ``"estimate"``, :func:`_estimate_record` with
+    ``floors``) and the profiles."""
     summary = result.summary()
     sampled = est.sampled if est is not None else sample_profiles(scene, result.fields, result.interface)
     if est is not None:
-        summary["estimate"] = _estimate_record(scene, est, sampled)
+        summary["estimate"] = _estimate_record(scene, est, sampled, floors)
     for prof in sampled:
         files.write_profile_csv(folder / "profiles" / f"{prof.id}.csv", prof,
                                 est.error_columns(prof.id) if est is not None else None)
@@ -471,7 +476,7 @@ def _write_summary(out: Path, scene: Scene, summaries: list[dict], profiles: dic
     text = (f"# Scene {plots.heading(scene.name, scene.title)}\n\n" + _summary_table(summaries)
             + agreement_section(scene, profiles, ref, floors))
     if len(estimated) > 1:
-        text += _estimates_section(scene, estimated)
+        text += _estimates_section(scene, estimated, floors)
     if gaps:
         text += exact_gap.section(scene, scene.law.name, gaps)
     if paths:
