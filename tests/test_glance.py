@@ -332,3 +332,56 @@ def test_a_bad_reference_is_refused_by_the_parser(capsys):
     err = capsys.readouterr().err.strip().splitlines()
     assert ended.value.code == 2 and len(err) == 1 and err[0].startswith("error: run: "), err
     assert "expected METHOD:DEGREE" in err[0]
+
+
+@pytest.mark.parametrize("reached", ["building", "earlier-aside", "new-in-place"])
+def test_a_build_settles_whichever_step_it_reached(tmp_path, reached):
+    """A result folder under way (verification.janitor.Build), settled at
+    each step of putting it in place: the build folder is gone, and the
+    final name holds one whole run, the earlier one unless the new one was
+    in place."""
+    from verification.janitor import Build
+    path, tmp = tmp_path / "out", tmp_path / ".out.abc"
+    for folder, text in ((path, "earlier"), (tmp, "new")):
+        folder.mkdir()
+        (folder / "run.json").write_text(text)
+    build = Build(path, tmp)
+    if reached != "building":
+        os.replace(path, build.earlier)
+    if reached == "new-in-place":
+        os.replace(tmp, path)
+    build.settle()
+    assert [p.name for p in tmp_path.iterdir()] == ["out"]
+    assert (path / "run.json").read_text() == ("new" if reached == "new-in-place" else "earlier")
+
+
+#: A process that builds a watched result folder (as rank 0 under mpirun),
+#: handles SIGTERM in Python, then runs one call of compiled code that never
+#: returns (Python runs no handler inside it).
+STUCK_BUILDER = """
+import signal, sys
+from pathlib import Path
+from verification import files
+signal.signal(signal.SIGTERM, lambda *args: None)
+with files.atomic_folder(Path(sys.argv[1]), watched=True) as tmp:
+    (tmp / "half.csv").write_text("x\\n1\\n")
+    print("building", flush=True)
+    sum(range(2 ** 62))
+"""
+
+
+def test_a_janitor_speaks_and_settles_for_a_killed_process(tmp_path):
+    """What mpirun does to rank 0 busy in one long call: SIGTERM, which
+    Python cannot act on, then SIGKILL.  Its janitor says ``interrupted``
+    once when the SIGTERM arrives (through the process's stderr) and
+    removes the build folder when the process is gone."""
+    out = tmp_path / "out"
+    proc = subprocess.Popen([sys.executable, "-c", STUCK_BUILDER, str(out)], cwd=ROOT, text=True,
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    assert proc.stdout.readline() == "building\n"
+    os.kill(proc.pid, signal.SIGTERM)
+    line = proc.stderr.readline()  # the janitor's, the process still stuck
+    proc.kill()
+    rest = proc.communicate(timeout=60)[1]  # its end: the janitor, holding the same stderr, has ended too
+    assert line == "interrupted\n" and rest == ""
+    assert list(tmp_path.iterdir()) == []

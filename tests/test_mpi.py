@@ -5,6 +5,7 @@ import csv
 import json
 import os
 import shutil
+import signal
 import subprocess
 import sys
 from pathlib import Path
@@ -269,3 +270,141 @@ def test_scaling_runs_the_ladder_on_each_rank_count(tmp_path):
     assert rows["ranks"] == ["1", "2"] and rows["dofs"][0] == rows["dofs"][1]
     assert all(float(rows[f"speedup_{stage}"][0]) == 1.0 for stage in ("mesh", "assembly", "solve", "total"))
     assert (tmp_path / "s" / "ranks_2" / "timing.csv").exists()
+
+
+#: ``python -c`` that runs ``python -m verification ARGS`` after its first
+#: argument, a folder, and says on stderr every file or folder that a rank
+#: after the first creates or opens for writing below that folder or the
+#: temporary folder (Python's audit events: builtins.open, os.open,
+#: os.mkdir, tempfile's).
+WRITES_OF_LATER_RANKS = """
+import os, runpy, sys, tempfile
+rank = int(os.environ.get("OMPI_COMM_WORLD_RANK", "0"))
+watched = tuple(os.path.realpath(p) + os.sep for p in (sys.argv.pop(1), tempfile.gettempdir()))
+CREATING = os.O_WRONLY | os.O_RDWR | os.O_CREAT
+
+def written(event, args):
+    if event == "open" and not isinstance(args[0], int):
+        path, mode, flags = args
+        creates = any(c in mode for c in "wax+") if mode else bool((flags or 0) & CREATING)
+    else:
+        path, creates = args[0], event in ("os.mkdir", "tempfile.mkdtemp", "tempfile.mkstemp")
+    if creates and os.path.realpath(os.fsdecode(path)).startswith(watched):
+        print(f"written by rank {rank}: {os.fsdecode(path)}", file=sys.stderr, flush=True)
+
+if rank > 0:
+    sys.addaudithook(written)
+runpy.run_module("verification", run_name="__main__", alter_sys=True)
+"""
+
+
+@pytest.mark.parametrize("command, files", [
+    pytest.param(["run", "A", "--method", "fe", "--h", "0.2", "--no-plots"],
+                 ["summary.md", "scene.toml", "fe/summary.json", "fe/profiles/A1.csv"], marks=_slow),
+    pytest.param(["run", "A", "--method", "fe", "--h", "0.2", "--fields"],
+                 ["summary.md", "plots/A1.png", "fe/fields/minus.vtu", "fe/fields/plus.vtu"], marks=_slow),
+    pytest.param(["timing", "A", "--method", "fe", "--h", "0.2"], ["timing.csv", "timing.md"], marks=_slow),
+    (["shapes", "--grid", "11", "--points", "1000", "--repeats", "1"], ["shapes.csv", "shapes.md"]),
+], ids=["run-tables", "run-figures-and-fields", "timing", "shapes"])
+def test_rank_0_alone_writes_under_mpirun(tmp_path, command, files):
+    """The commands that spread over mpirun's ranks, on 2 ranks: rank 1
+    creates no file or folder, neither a scratch folder of its own (it
+    wrote the whole result there, to be thrown away) nor anything beside
+    --out; rank 0 writes the whole result folder, figures and field files
+    too (VTU: the bodies gathered on every rank).  ``shapes`` in the
+    default suite (it imports no dolfinx: a 3 s mpirun on a loaded
+    machine), the others in the slow stage (7 s and more)."""
+    out = tmp_path / "out"
+    done = mpirun(2, "-c", WRITES_OF_LATER_RANKS, tmp_path, *command, "--out", out, timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert "written by rank" not in done.stderr, done.stderr
+    written = {p.relative_to(out).as_posix() for p in out.rglob("*")}
+    assert {"run.json", "units.json", *files} <= written, written
+    assert [p.name for p in tmp_path.iterdir()] == ["out"]
+
+
+#: Long enough under mpirun -n 2 to be interrupted mid-solve (tens of seconds).
+LONG_MPI_RUN = ["-m", "verification", "run", "A", "--method", "fe", "xfem", "--degree", "2", "--h", "0.02",
+                "--no-plots"]
+#: ``python -c`` that runs ``python -m verification ARGS`` with rank 0's
+#: solve one call of compiled code that never ends (Python runs no signal
+#: handler inside it), as a long factorisation or the loading of a library
+#: is when mpirun passes on Ctrl-C: mpirun kills rank 0 before Python can
+#: act.
+STUCK_RANK_0 = """
+import os, runpy, sys
+if os.environ.get("OMPI_COMM_WORLD_RANK") == "0":
+    import verification.run
+
+    def stuck(*args, **kwargs):
+        print("solving with one call that never returns", file=sys.stderr, flush=True)
+        sum(range(2 ** 62))
+
+    verification.run._solve = stuck
+runpy.run_module("verification", run_name="__main__", alter_sys=True)
+"""
+STUCK_RUN = ["-c", STUCK_RANK_0, "run", "A", "--method", "fe", "--h", "0.2", "--no-plots"]
+
+
+def _interrupt_mpirun(args: list, out: Path, scratch: Path, sig: int) -> subprocess.CompletedProcess:
+    """``mpirun -n 2 python ARGS --out OUT`` in a session of its own, its
+    temporary files in ``scratch``: at its first solve, ``sig`` to its
+    process group, as a terminal's Ctrl-C (mpirun's ranks are each in a
+    group of their own: mpirun alone receives it and passes it on)."""
+    env = {k: v for k, v in os.environ.items() if not k.startswith(("OMPI_", "PMIX_", "PMI_"))}
+    proc = subprocess.Popen([shutil.which("mpirun"), "--allow-run-as-root", "-n", "2", sys.executable,
+                             *map(str, args), "--out", str(out)], cwd=ROOT, text=True, stdin=subprocess.DEVNULL,
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, env={**env, "TMPDIR": str(scratch)},
+                            start_new_session=True)
+    seen = []
+    for line in proc.stderr:
+        seen.append(line)
+        if "solving with" in line:
+            break
+    os.killpg(proc.pid, sig)
+    stdout, rest = proc.communicate(timeout=120)
+    return subprocess.CompletedProcess(proc.args, proc.returncode, stdout, "".join(seen) + rest)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("args, sig, earlier", [(LONG_MPI_RUN, signal.SIGINT, False),
+                                                (LONG_MPI_RUN, signal.SIGTERM, True),
+                                                (STUCK_RUN, signal.SIGINT, True)],
+                         ids=["ctrl-c", "sigterm-over-an-earlier-run", "ctrl-c-rank-0-in-one-long-call"])
+def test_an_interrupted_run_under_mpirun_ends_in_one_line_and_leaves_nothing(tmp_path, args, sig, earlier):
+    """Ctrl-C or SIGTERM to mpirun mid-solve (mpirun passes either on to
+    its ranks as SIGTERM and kills them a second later), also while rank 0
+    is in one long call of compiled code and is killed before Python can
+    act: one line ``interrupted``, a non-zero status, no traceback, no
+    scratch folder of any rank in the temporary folder, no half-built
+    result beside --out, and an earlier run's folder there as it was."""
+    scratch, parent = tmp_path / "tmp", tmp_path / "results"
+    scratch.mkdir()
+    parent.mkdir()
+    out = parent / "out"
+    if earlier:
+        assert main(["run", "A", "--method", "fe", "--h", "0.2", "--no-plots", "--quiet", "--out", str(out)]) == 0
+    before = {p.relative_to(parent): p.read_bytes() for p in parent.rglob("*") if p.is_file()}
+    done = _interrupt_mpirun(args, out, scratch, sig)
+    assert done.returncode != 0, done.stderr
+    assert "Traceback" not in done.stderr and done.stderr.rstrip().splitlines()[-1] == "interrupted", done.stderr
+    assert done.stderr.count("interrupted") == 1, done.stderr
+    assert [p for p in scratch.iterdir() if not p.name.startswith("ompi.")] == []  # Open MPI's own session folder
+    _settled(parent, ["out"] if earlier else [])
+    assert {p.relative_to(parent): p.read_bytes() for p in parent.rglob("*") if p.is_file()} == before
+
+
+#: How long a killed rank 0's janitor may take to settle its folder after
+#: mpirun has returned (it learns of the kill with mpirun; it takes
+#: milliseconds): generous on a machine shared by several test runs.
+JANITOR_SECONDS = 10.0
+
+
+def _settled(parent: Path, names: list[str]) -> None:
+    """Wait until ``parent`` holds ``names`` alone (no build folder, no
+    earlier run moved aside), at most :data:`JANITOR_SECONDS`."""
+    import time
+    deadline = time.monotonic() + JANITOR_SECONDS
+    while sorted(p.name for p in parent.iterdir()) != names and time.monotonic() < deadline:
+        time.sleep(0.05)
+    assert sorted(p.name for p in parent.iterdir()) == names

@@ -23,18 +23,21 @@ by default :data:`~verification.pool.DEFAULT_WORKERS`, one after another in
 this process), or run under ``mpiexec -n K python -m mpi4py.futures -m verification ...``.
 
 Bad input ends with one line ``error: <field>: <problem>`` and exit status 2;
-Ctrl-C with one line ``interrupted`` and exit status 130 (128 + SIGINT).
+Ctrl-C with one line ``interrupted`` and exit status 130 (128 + SIGINT),
+SIGTERM with ``terminated`` and 143; under mpirun either with
+``interrupted`` and mpirun's own status (:func:`_handlers`).  Under mpirun
+rank 0 alone writes the results; the other ranks compute alongside it.
 """
 from __future__ import annotations
 
 import argparse
 import logging
 import math
+import os
 import signal
 import sys
-import tempfile
 import threading
-from contextlib import contextmanager
+from contextlib import ExitStack, contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable
@@ -43,7 +46,7 @@ from contactcore import ContactError, load_scene
 
 from xdolfinx.options import XFEM_CELLS
 
-from . import files, methods
+from . import files, janitor, methods
 from .pool import DEFAULT_WORKERS, LOG_FORMAT
 
 log = logging.getLogger("verification")
@@ -410,25 +413,27 @@ def _check_sizes(args) -> None:
                 raise ContactError(f"--{name.replace('_', '-')}: must be a finite number > 0 (got {h})")
 
 
-def _check_out(args, rank: int, distributed: bool) -> None:
-    """Refuse a bad ``--out`` on every rank alike (:func:`files.check_out`):
-    rank 0, which alone writes, checks it and the other ranks learn its
-    verdict, so that none goes on into a solve, whose collectives would
-    wait for ever on the rank that stopped."""
-    out = getattr(args, "out", None)
-    if out is None:
-        return
-    refusal = None
-    if rank == 0:
-        try:
-            files.check_out(out)
-        except files.OutFolderError as exc:
-            refusal = str(exc)
-    if distributed:
-        from mpi4py import MPI
-        refusal = MPI.COMM_WORLD.bcast(refusal, root=0)
-    if refusal is not None:
-        raise files.OutFolderError(refusal)
+@contextmanager
+def _result_folder(out: Path, rank: int, distributed: bool):
+    """The folder the command writes into: on rank 0, which alone writes,
+    ``out`` built aside and put in place whole (:func:`files.result_folder`,
+    which refuses a bad ``out``); on mpirun's other ranks ``out`` itself, in
+    which they write nothing (:func:`files.writes_here`).  They learn rank
+    0's verdict on ``out`` first, so that none goes on into a solve whose
+    collectives would wait for ever on the rank that stopped."""
+    with ExitStack() as stack:
+        refusal = None
+        if rank == 0:
+            try:
+                out = stack.enter_context(files.result_folder(out, watched=distributed))
+            except files.OutFolderError as exc:
+                refusal = str(exc)
+        if distributed:
+            from mpi4py import MPI
+            refusal = MPI.COMM_WORLD.bcast(refusal, root=0)
+        if refusal is not None:
+            raise files.OutFolderError(refusal)
+        yield out
 
 
 def _check_ranks_list(args) -> None:
@@ -490,6 +495,8 @@ def _abort_on(exc: BaseException) -> None:
 INTERRUPTED = 130
 #: ... and by SIGTERM (``kill``, ``timeout``, a batch scheduler): 128 + SIGTERM.
 TERMINATED = 143
+#: The signals that end a command, SIGTERM as Ctrl-C ends it.
+ENDING = (signal.SIGINT, signal.SIGTERM)
 
 
 class Terminated(KeyboardInterrupt):
@@ -501,18 +508,46 @@ def _raise_terminated(signum, frame) -> None:
     raise Terminated
 
 
+def _end_now(signum, frame) -> None:
+    """Rank 0 under mpirun, asked to end: the result folder under way
+    discarded (:func:`files.discard_unfinished`), one line (its janitor's,
+    if one watches: :mod:`verification.janitor`), exit now, without
+    unwinding: the way out would meet collectives (a MUMPS factorisation's
+    end is one) that the other ranks never join."""
+    files.discard_unfinished()
+    if not janitor.told(signum):
+        print(janitor.INTERRUPTED_LINE, file=sys.stderr, flush=True)
+    sys.stdout.flush()
+    os._exit(INTERRUPTED)
+
+
+def _handlers(rank: int, distributed: bool) -> dict:
+    """How each of :data:`ENDING` ends the command.  In one process Ctrl-C
+    raises KeyboardInterrupt and SIGTERM :class:`Terminated`.  mpirun
+    passes on Ctrl-C and its own SIGTERM alike, to its ranks as SIGTERM,
+    and kills them a second later (Open MPI's ``odls_base_sigkill_timeout``):
+    rank 0 ends at once (:func:`_end_now`; its janitor puts its result
+    folder right if mpirun kills it first), and the other ranks ignore
+    both signals, so that they keep joining every collective rank 0 is in
+    until it has ended (they hold nothing to discard) and mpirun kills them."""
+    if not distributed:
+        return {signal.SIGTERM: _raise_terminated}
+    return dict.fromkeys(ENDING, _end_now if rank == 0 else signal.SIG_IGN)
+
+
 @contextmanager
-def _sigterm_ends_like_ctrl_c():
-    """SIGTERM raises :class:`Terminated` while the block runs (the handler
-    before it restored after; only the main thread may set one)."""
+def _signals_end_the_command(rank: int, distributed: bool):
+    """:func:`_handlers` while the block runs (the handlers before it
+    restored after; only the main thread may set one)."""
     if threading.current_thread() is not threading.main_thread():
         yield
         return
-    before = signal.signal(signal.SIGTERM, _raise_terminated)
+    before = {sig: signal.signal(sig, handler) for sig, handler in _handlers(rank, distributed).items()}
     try:
         yield
     finally:
-        signal.signal(signal.SIGTERM, before)
+        for sig, handler in before.items():
+            signal.signal(sig, handler)
 
 
 def main(argv=None) -> int:
@@ -524,7 +559,7 @@ def main(argv=None) -> int:
     rank = launched_rank()
     repeats = _configure_logging(args.verbosity if rank == 0 else -2)  # one log, rank 0's
     try:
-        with _sigterm_ends_like_ctrl_c():
+        with _signals_end_the_command(rank, distributed()):
             _main(args, argv, command, rank)
     except ContactError as exc:
         if rank == 0:  # every rank meets the same error (Newton's decisions are collective): one line
@@ -532,7 +567,7 @@ def main(argv=None) -> int:
         return 2
     except KeyboardInterrupt as exc:  # the result folder is already discarded; the workers stop with the pool
         if rank == 0:
-            print("terminated" if isinstance(exc, Terminated) else "interrupted", file=sys.stderr)
+            print("terminated" if isinstance(exc, Terminated) else janitor.INTERRUPTED_LINE, file=sys.stderr)
         return TERMINATED if isinstance(exc, Terminated) else INTERRUPTED
     except Exception as exc:
         if distributed():
@@ -546,8 +581,8 @@ def main(argv=None) -> int:
 
 def _main(args, argv, command: Command, rank: int) -> None:
     """The checks every command makes, then the command, its result folder
-    built aside and put in place whole (rank 0's; the other ranks' in a
-    scratch folder)."""
+    built aside and put in place whole (:func:`_result_folder`: rank 0
+    alone writes, the other ranks compute alongside)."""
     from .pool import distributed
     if distributed():  # PETSc starts collectively: every rank now, before any method needs it
         from petsc4py import PETSc  # noqa: F401
@@ -556,21 +591,18 @@ def _main(args, argv, command: Command, rank: int) -> None:
     _check_workers(args)
     _check_counts(args)
     _check_ranks_list(args)
-    _check_out(args, rank, distributed())
     if getattr(args, "out", None) is None:
         command.run(args, argv)
-    elif rank > 0:  # every rank computes (the solves are collective), rank 0 alone writes
-        with tempfile.TemporaryDirectory() as scratch:
-            args.out = Path(scratch) / "out"
-            command.run(args, argv)
-    else:
-        with files.result_folder(args.out) as tmp:
-            final, args.out = args.out, tmp
-            command.run(args, argv)
-            if not (tmp / files.MANIFEST).exists():  # every result folder says what made it
-                files.write_json(tmp / files.MANIFEST, files.provenance(list(argv)))
-            files.write_units(tmp)  # every CSV column's unit, beside the CSVs (their headers stay as read)
-        log.info("wrote %s", final)
+        return
+    final = args.out
+    with _result_folder(final, rank, distributed()) as folder:
+        args.out = folder
+        command.run(args, argv)
+        if rank == 0:
+            if not (folder / files.MANIFEST).exists():  # every result folder says what made it
+                files.write_json(folder / files.MANIFEST, files.provenance(list(argv)))
+            files.write_units(folder)  # every CSV column's unit, beside the CSVs (their headers stay as read)
+    log.info("wrote %s", final)
 
 
 if __name__ == "__main__":

@@ -69,13 +69,20 @@ def pvd_text(entries: list[tuple[float, str]]) -> str:
 
 def write_fields(folder: Path, result, mesh: bool) -> list[str]:
     """All field files of one Result (see module doc) in ``folder``, written
-    atomically as a whole; ``mesh``: write the bodies too.  The names written."""
-    with files.atomic_folder(folder) as tmp:
-        if mesh:
-            from xdolfinx.output import body_mesh  # imports dolfinx: only for a method with a mesh
+    atomically as a whole; ``mesh``: write the bodies too.  The names
+    written.  Under mpirun every rank builds the bodies (a collective call,
+    :func:`xdolfinx.output.body_mesh`) and rank 0 alone writes
+    (:func:`files.writes_here`; the others write nothing and return [])."""
+    bodies = []
+    if mesh:
+        from xdolfinx.output import body_mesh  # imports dolfinx: only for a method with a mesh
 
-            for b, name in enumerate(BODIES):
-                write_body(tmp / f"{name}.vtu", body_mesh(result.fields, b))
+        bodies = [body_mesh(result.fields, b) for b in range(len(BODIES))]
+    if not files.writes_here():
+        return []
+    with files.atomic_folder(folder) as tmp:
+        for name, body in zip(BODIES, bodies):
+            write_body(tmp / f"{name}.vtu", body)
         if result.interface is not None and result.interface.steps:
             entries = write_interface(tmp, result.scene, result.interface)
             (tmp / "interface.pvd").write_text(pvd_text(entries))

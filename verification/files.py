@@ -12,7 +12,6 @@ import json
 import os
 import platform
 import re
-import shutil
 import sys
 import tempfile
 from contextlib import contextmanager
@@ -22,6 +21,8 @@ from contactcore import CircleInterface, ContactError, ProfileData, load_scene
 from contactcore.profiles import sample_points
 from contactcore.scene import Units
 from contactcore.estimate import ERROR_SUFFIX
+
+from . import janitor
 
 #: The file that marks a folder as a result folder of this tool (every
 #: command writes it last): only such a folder is replaced by a new run.
@@ -60,12 +61,18 @@ def atomic_path(path: Path, suffix: str = ""):
             os.unlink(tmp)
 
 
+#: The atomic folders being built in this process, innermost last.
+_BUILDING: list[janitor.Build] = []
+
+
 @contextmanager
-def atomic_folder(path: Path):
+def atomic_folder(path: Path, watched: bool = False):
     """A temporary folder beside ``path`` that replaces it if the block
     succeeds.  An earlier folder at ``path`` is moved aside (renamed, not
     deleted) until the new one is in place, and put back if the block is
-    interrupted in between: at every moment ``path`` holds one whole run."""
+    interrupted in between: at every moment ``path`` holds one whole run.
+    ``watched``: a janitor puts it right if this process is killed before
+    it can (:func:`verification.janitor.watch`)."""
     path = Path(path)
     try:
         path.parent.mkdir(parents=True, exist_ok=True)
@@ -73,21 +80,29 @@ def atomic_folder(path: Path):
     except OSError as exc:  # a place the system will not let us write (/proc, /sys, a read-only mount)
         raise OutFolderError(f"{path} cannot be created ({exc.strerror or exc})") from None
     _follow_umask(str(tmp), 0o777)
-    earlier = None
+    build = janitor.Build(path, tmp)
+    _BUILDING.append(build)
+    if watched:
+        janitor.watch(build)
     try:
         yield tmp
         if path.exists():
-            earlier = Path(tempfile.mkdtemp(prefix=f".{path.name}.earlier.", dir=path.parent))
-            os.replace(path, earlier)  # onto an empty folder: one rename
+            os.replace(path, build.earlier)
         os.replace(tmp, path)
     finally:
-        if earlier is not None and earlier.exists():
-            if path.exists():
-                shutil.rmtree(earlier)
-            else:
-                os.replace(earlier, path)
-        if tmp.exists():
-            shutil.rmtree(tmp)
+        build.settle()
+        _BUILDING.remove(build)
+        if watched:
+            janitor.unwatch()
+
+
+def discard_unfinished() -> None:
+    """Settle every atomic folder under way (:meth:`verification.janitor.Build.settle`),
+    innermost first, as if its block had been interrupted: for a process
+    that ends at once, without unwinding (rank 0 under mpirun, whose ranks
+    mpirun kills a second after it asks them to end)."""
+    for build in reversed(_BUILDING):
+        build.settle()
 
 
 def check_out(path: Path) -> Path:
@@ -111,22 +126,34 @@ def check_out(path: Path) -> Path:
 
 
 @contextmanager
-def result_folder(path: Path):
+def result_folder(path: Path, watched: bool = False):
     """Build a run's results in a temporary folder beside ``path`` and put it
     in place of ``path`` (an earlier run's folder is replaced whole) only if
     the block succeeds: a failed or interrupted run leaves nothing under the
-    final name."""
+    final name (``watched``: :func:`atomic_folder`'s)."""
     try:
-        with atomic_folder(check_out(path)) as tmp:
+        with atomic_folder(check_out(path), watched) as tmp:
             yield tmp
     except OutFolderError as exc:
         message = str(exc)
         raise OutFolderError(message if message.startswith("--out: ") else f"--out: {message}") from None
 
 
+def writes_here() -> bool:
+    """Whether this process writes result files: every process but
+    mpirun's ranks after the first when they run one command together
+    (:func:`verification.pool.distributed`): they compute alongside rank 0,
+    which alone writes."""
+    from .pool import distributed, launched_rank
+    return launched_rank() == 0 or not distributed()
+
+
 def write_text(path: Path, text: str) -> Path:
-    with atomic_path(path) as tmp:
-        tmp.write_text(text)
+    """``text`` into ``path``, atomically; nothing where this process does
+    not write (:func:`writes_here`)."""
+    if writes_here():
+        with atomic_path(path) as tmp:
+            tmp.write_text(text)
     return Path(path)
 
 

@@ -241,7 +241,9 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
     the domain, and the run must fit the machine
     (:func:`contactcore.budget.check_budget`, unless ``allow_large``).  The
     scene as read is written last (as TOML), with ``run.json``; no figure
-    unless ``draw`` (matplotlib is then never imported).  Two runs or more
+    unless ``draw`` (matplotlib is then never imported), none on mpirun's
+    ranks after the first, which write nothing (:func:`files.writes_here`;
+    drawing takes no part in a collective).  Two runs or more
     are compared with ``reference`` (method, degree; None: fe at its
     highest degree among them), solved at the same h if it is not one of
     them, each quantity named in ``floors`` (quantity -> value in its unit,
@@ -252,6 +254,7 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
     (:func:`_against_exact`)."""
     scene = load_scene(scene_name)
     twin = exact_gap.exact_twin(scene) if against_exact else None
+    draw = draw and files.writes_here()
     chosen = methods.expand(method_names)
     given = dict(petsc_options=petsc_options or None, dmax=dmax, cell=cell, basis=basis)
     compared = reference is not None and len(chosen) > 1  # a reference only where methods are compared
