@@ -218,6 +218,27 @@ def test_quiet_keeps_warnings_and_repeats_are_collapsed(tmp_path, capsys):
     assert repeats.summary() == ['(the warning "the same warning…" repeated 29 more time(s))']
 
 
+def test_a_failed_command_ends_on_its_error_after_the_repeats(tmp_path, capsys, monkeypatch):
+    """A run that logged one message twice, then failed: the count of the
+    repeats comes before the error, which is the last line."""
+    import logging
+
+    from contactcore import ContactError
+    from verification import run as run_module
+    from verification.__main__ import main
+
+    def failing(*args, **kwargs):
+        for _ in range(2):
+            logging.getLogger("verification").info("the estimate's run 1 of 2")
+        raise ContactError("Newton did not converge")
+
+    monkeypatch.setattr(run_module, "run", failing)
+    assert main(["run", "A", "--method", "fe", "--h", "0.2", "--out", str(tmp_path / "out")]) == 2
+    lines = capsys.readouterr().err.strip().splitlines()
+    assert lines[-1] == "error: Newton did not converge" and "repeated 1 more time(s)" in lines[-2]
+    assert not (tmp_path / "out").exists()
+
+
 def test_run_json_names_the_code(tmp_path):
     import json
     out = tmp_path / "out"

@@ -562,21 +562,29 @@ def main(argv=None) -> int:
         with _signals_end_the_command(rank, distributed()):
             _main(args, argv, command, rank)
     except ContactError as exc:
+        _print_repeats(repeats)
         if rank == 0:  # every rank meets the same error (Newton's decisions are collective): one line
             print(f"error: {exc}", file=sys.stderr)
         return 2
     except KeyboardInterrupt as exc:  # the result folder is already discarded; the workers stop with the pool
+        _print_repeats(repeats)
         if rank == 0:
             print("terminated" if isinstance(exc, Terminated) else janitor.INTERRUPTED_LINE, file=sys.stderr)
         return TERMINATED if isinstance(exc, Terminated) else INTERRUPTED
     except Exception as exc:
+        _print_repeats(repeats)
         if distributed():
             _abort_on(exc)
         raise
-    finally:
-        for line in repeats.summary():
-            print(line, file=sys.stderr)
+    _print_repeats(repeats)
     return 0
+
+
+def _print_repeats(repeats: Repeats) -> None:
+    """The count of each repeated message, before the command's last line
+    (an error, ``interrupted``): a failed run ends on why it failed."""
+    for line in repeats.summary():
+        print(line, file=sys.stderr)
 
 
 def _main(args, argv, command: Command, rank: int) -> None:
