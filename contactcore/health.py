@@ -434,7 +434,7 @@ def tie_cause(scene, k: float) -> str:
     if scene.law.name != "unilateral":
         return ""
     ratios = [f"{shear / press:.3g} on body {name}" for name, shear, press in _demands(scene, k) if press > 0]
-    mu = f"mu well above the loads' shear/normal ({ratios[0]})" if ratios else "a large mu"
+    mu = f"mu a few times the loads' shear/normal ({ratios[0]})" if ratios else "a large mu"
     exact = scene.law.enforcement == "exact"
     futile = "more increments do not help" + (", another stabilisation seldom does" if exact else "")
     springs = "" if exact else "; softer springs also settle it, with another answer"
