@@ -530,7 +530,7 @@ def _no_equilibrium(scene, n: int, depth: int, failures: list[str], from_rest: b
     where = f"scene {scene.name}: increment {n} of {scene.increments}"
     last = f"failed after {depth} cut-backs (step 1/{2 ** depth}): {_abridged(health.headline(failures[-1]))}"
     check = (health.friction_demand(scene, float(n)) or health.material_cause(scene)
-             or health.tie_cause(scene, float(n)))
+             or health.tie_cause(scene, float(n), failures[-1], from_rest))
     error = SolverError(f"{where}: {check}\n  ({last})" if check else
                         f"{where} {last}\n  {_unsettled(scene.law, from_rest)}")
     error.details = "\n".join(failures)
@@ -542,22 +542,23 @@ def _unsettled(law, from_rest: bool = False) -> str:
     remedies that apply to it: softer springs where the law is enforced by
     k_N, k_T, another β where it is enforced exactly (Nitsche), more
     increments only for a nonlinear law (a linear law's step is one solve
-    whatever its size) and not ``from_rest`` (:meth:`_Newton._from_rest`).
-    The one nonlinear law that comes here is Coulomb's (a unilateral
-    law's failure is its tie's, :func:`~contactcore.health.tie_cause`)."""
+    whatever its size) and not ``from_rest`` (:meth:`_Newton._from_rest`),
+    the friction limit μp only for a coulomb law."""
     exact = law.enforcement == "exact"
     if law.is_linear:
         return ("a linear law's step is one linear solve, failed whatever its size (more increments do not help): "
                 + ("another stabilisation, or a rigid-body mode nearly free" if exact else
                    "springs far stiffer or softer than the bulk (k_N, k_T against E/h), or a rigid-body mode "
                    "nearly free"))
+    friction = law.name == "coulomb"
+    held = ("shear above μp, " if friction else "") + "a body held only by open points"
+    status = "open/closed and stick/slip" if friction else "open/closed"
     more = "" if from_rest else " or use more increments"
-    remedy = (f"Newton cannot settle the exact law's open/closed and stick/slip map: use another stabilisation{more}"
-              if exact else f"the springs are too stiff to settle the open/closed and stick/slip map: soften k_N, "
-              f"k_T{more}")
+    remedy = (f"Newton cannot settle the exact law's {status} map: use another stabilisation{more}"
+              if exact else f"the springs are too stiff to settle the {status} map: soften k_N, k_T{more}")
     rest = ("; more increments do not help: from rest along a straight load path a smaller step is the same "
             "problem scaled" if from_rest else "")
-    return f"either the load has no equilibrium (shear above μp, a body held only by open points) or {remedy}{rest}"
+    return f"either the load has no equilibrium ({held}) or {remedy}{rest}"
 
 
 def _flat(factors) -> np.ndarray:
