@@ -377,17 +377,33 @@ def material_warnings(scene) -> list[str]:
 # ----- friction -----------------------------------------------------------------
 
 def friction_demand(scene, k: float) -> str:
-    """The check a Coulomb failure turns on, or "": a body held by Γ alone
-    (no support or pin on it) under boundary tractions and pressures is in
-    equilibrium only if their resultant ``F`` presses it onto a straight Γ
-    with ``|F·t| <= μ |F·n|`` (Coulomb's cone, integrated over Γ; Wriggers
-    2006, §2.3).  ``F`` is the sum of ``factor(k)·traction·length`` over the
-    part of each loaded edge on that body (φ linear along it), ``t = −p n_out`` for a
-    pressure.  Only a rectangle cut by a line with no body force on the
-    body is judged here."""
-    mu = getattr(scene.law, "mu", None)
-    if mu is None or not isinstance(scene.interface, LineInterface) or not isinstance(scene.domain, Rectangle):
+    """The check a Coulomb or unilateral failure turns on, or "": a body
+    held by Γ alone (no support or pin on it) under boundary tractions and
+    pressures is in equilibrium only if their resultant ``F`` presses it
+    onto a straight Γ with ``|F·t| <= μ |F·n|`` (Coulomb's cone, integrated
+    over Γ; Wriggers 2006, §2.3).  The unilateral law ties a closed point
+    tangentially, μ = ∞: only the press is checked.  ``F`` is the sum of
+    ``factor(k)·traction·length`` over the part of each loaded edge on that
+    body (φ linear along it), ``t = −p n_out`` for a pressure.  Only a
+    rectangle cut by a line with no body force on the body is judged here."""
+    mu = float("inf") if scene.law.name == "unilateral" else getattr(scene.law, "mu", None)
+    if mu is None:
         return ""
+    for name, shear, press in _demands(scene, k):
+        if press <= 0:
+            return f"body {name} is held by Γ alone and the loads pull it off Γ: no equilibrium without a support"
+        if shear > mu * press:
+            return (f"on Γ the loads ask for shear/normal = {shear / press:.3g} of body {name}, above μ = {mu:g}: "
+                    "it slides off (no equilibrium); lower the shear load or raise μ")
+    return ""
+
+
+def _demands(scene, k: float):
+    """``(name, |F·t|, F·n pressing it onto Γ)`` of each body held by Γ
+    alone and loaded (:func:`friction_demand`), at increment ``k``; none
+    where Γ is not a line across a rectangle."""
+    if not isinstance(scene.interface, LineInterface) or not isinstance(scene.domain, Rectangle):
+        return
     n = np.asarray(scene.interface.normal, float)
     for b, name in enumerate(_BODY_NAMES):
         held = [_boundary_points(scene.domain, s.boundary) for s in scene.supports]
@@ -396,16 +412,44 @@ def friction_demand(scene, k: float) -> str:
                 getattr(ld, "body", None) == ("minus", "plus")[b] for ld in scene.loads):
             continue
         force = _boundary_resultant(scene, b, scene.factors(k)[0])
-        press = -force @ n if b == 1 else force @ n  # > 0: pressed onto Γ
-        if not force.any():
-            continue
-        if press <= 0:
-            return f"body {name} is held by Γ alone and the loads pull it off Γ: no equilibrium without a support"
-        shear = abs(force @ tangent_of(n[None])[0])
-        if shear > mu * press:
-            return (f"on Γ the loads ask for shear/normal = {shear / press:.3g} of body {name}, above μ = {mu:g}: "
-                    "it slides off (no equilibrium); lower the shear load or raise μ")
-    return ""
+        if force.any():
+            yield name, abs(force @ tangent_of(n[None])[0]), (-force @ n if b == 1 else force @ n)
+
+
+def tie_cause(scene, k: float, failure: str, from_rest: bool = False) -> str:
+    """Why a unilateral law's increment ``k`` failed, or "": another law,
+    or a ``failure`` (the last cut-back's message) that is not Newton
+    running out of iterations (a solve that failed is not the tie's).
+    The law ties a closed point (``t_T = k_T g_T``; exactly, ``g_T = 0``
+    with any ``t_T``) and frees it the moment it opens (``t_T = 0``):
+    ``t_T`` is not monotone in the jump.  Where Γ opens under shear, the
+    last closed points carry the tie's shear on almost no pressure (a
+    median 20 times their |t_N| on the points Newton flips); opening one
+    hands that shear to its neighbours, and shear across an interface of
+    two materials moves its normal gap (Dundurs' β, J. Appl. Mech. 1969;
+    a bonded edge makes the open faces overlap, Comninou, J. Appl. Mech.
+    1977), so a map consistent at every point need not exist, and is
+    found less often as h or the degree resolves the edge
+    (docs/contact-enforcement.md, "The unilateral law under shear").
+    Coulomb's ``|t_T| <= μ|t_N|`` lets the shear vanish with the pressure;
+    μ must exceed the loads' shear/normal on a body held by Γ alone.  An
+    increment ``from_rest`` along a straight path is the same problem at
+    any size (the law is positively homogeneous), so more increments do
+    not help it."""
+    if scene.law.name != "unilateral" or "Newton did not converge" not in failure:
+        return ""
+    ratios = [f"{shear / press:.3g} on body {name}" for name, shear, press in _demands(scene, k) if press > 0]
+    mu = f"mu a few times the loads' shear/normal ({ratios[0]})" if ratios else "a large mu"
+    exact = scene.law.enforcement == "exact"
+    more = ("more increments do not help: from rest a smaller step is the same problem scaled" if from_rest else
+            "more increments help only where a consistent map exists")
+    other = "another stabilisation seldom helps" if exact else "soften k_N, k_T to settle it, with their answer"
+    return ("Newton found no open/closed map of the unilateral law consistent at every point, and there may be "
+            "none: the law ties a closed point tangentially and frees it (t_T = 0) the moment it opens, so where "
+            "Γ opens under shear the last closed points carry the tie's shear on almost no pressure and opening "
+            f"one opens or closes its neighbours (a finer h or degree 2 fails more often; {more}; {other}); use "
+            f"type = \"coulomb\" with {mu}: |t_T| <= mu|t_N| lets the shear vanish with the pressure where Γ "
+            "opens")
 
 
 def _share(phi_a: float, phi_b: float, body: int) -> float:

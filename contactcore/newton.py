@@ -538,20 +538,19 @@ def _refusal(scene, system: ContactSystem, exc: SolverError) -> SolverError:
 
 def _no_equilibrium(scene, n: int, depth: int, failures: list[str], from_rest: bool = False) -> SolverError:
     """Two lines, the failed check first: the friction cone on Γ if the
-    loads leave it (:func:`~contactcore.health.friction_demand`), else the
-    last cut-back's failure (up to its explanation); then what may cause it.
+    loads leave it (:func:`~contactcore.health.friction_demand`), a nearly
+    incompressible material, the unilateral law's tie
+    (:func:`~contactcore.health.tie_cause`); else the last cut-back's
+    failure (up to its explanation), then what may cause it.
     More increments are not offered for an increment that starts
     ``from_rest`` (:meth:`_Newton._from_rest`).  Every cut-back's full
     message is kept in the error's ``details``."""
     where = f"scene {scene.name}: increment {n} of {scene.increments}"
     last = f"failed after {depth} cut-backs (step 1/{2 ** depth}): {_abridged(health.headline(failures[-1]))}"
-    check = health.friction_demand(scene, float(n)) or health.material_cause(scene)
-    settle = _unsettled(scene.law, from_rest)
-    if scene.law.name == "unilateral":  # its tie drops t_T to 0 the moment a point opens
-        settle += ("; or no open/closed map is consistent: the unilateral law frees a closed point's tangential "
-                   "tie at once when it opens, where type = \"coulomb\" with a large mu lets t_T vanish with the "
-                   "pressure")
-    error = SolverError(f"{where}: {check}\n  ({last})" if check else f"{where} {last}\n  {settle}")
+    check = (health.friction_demand(scene, float(n)) or health.material_cause(scene)
+             or health.tie_cause(scene, float(n), failures[-1], from_rest))
+    error = SolverError(f"{where}: {check}\n  ({last})" if check else
+                        f"{where} {last}\n  {_unsettled(scene.law, from_rest)}")
     error.details = "\n".join(failures)
     return error
 
