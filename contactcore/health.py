@@ -278,8 +278,8 @@ def check_restraint(scene, interface_points, interface_weights) -> None:
     why = [f"k_{c} is {k_user:.3g}" for (c, _, k_user), Qc in zip(_springs(scene), (QN, QT))
            if 0 < np.trace(Qc) <= tol.RIGID_MODE_FREE]
     why = " and ".join(why) + " (springs lost in round-off beside E)" if why else (
-        "no support or pin holds it, and Γ is frictionless (μ = 0): its contact carries no shear"
-        if _frictionless(scene) else "no support or pin holds it")
+        "no support or pin holds it that way, and Γ is frictionless (μ = 0): its contact carries no shear"
+        if _frictionless(scene) else "no support or pin holds it that way")
     raise SolverError(f"scene {scene.name}: {_describe(scene, v)}: {why} — {free.shape[1]} rigid-body mode(s) "
                       "are not removed by the supports, pins and interface springs; add a support or pin")
 
@@ -351,7 +351,7 @@ def check_held(scene, interface_points, interface_weights, status, where: str) -
     closed = int(np.count_nonzero(np.asarray(status) != OPEN))
     held = f"only {closed} of {len(status)} points of Γ stay closed" if closed else "Γ is open at every point"
     more = f" ({free.shape[1]} rigid-body modes are free)" if free.shape[1] > 1 else ""
-    raise FreeBody(f"{where}: {_describe(scene, free[:, 0])}{more}: no support or pin holds it and {held}, so its "
+    raise FreeBody(f"{where}: {_describe(scene, free[:, 0])}{more}: no support or pin holds it that way and {held}, so its "
                    "position is not determined; hold it with a support or pin, or with springs that carry tension "
                    "(type = \"linear\")")
 

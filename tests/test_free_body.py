@@ -27,7 +27,7 @@ METHODS = ("fe", "xfem", "efgm")
 H = 0.1
 
 #: The refusal's words, after "scene NAME: increment 1 of 1: ".
-REFUSAL = (r"body − can [^:]+ \(3 rigid-body modes are free\): no support or pin holds it and Γ is open at every "
+REFUSAL = (r"body − can [^:]+ \(3 rigid-body modes are free\): no support or pin holds it that way and Γ is open at every "
            r"point, so its position is not determined; hold it with a support or pin, or with springs that carry "
            r"tension \(type = \"linear\"\)$")
 
@@ -115,7 +115,7 @@ def test_a_status_map_lets_the_disc_go_by_its_closed_points(law):
     assert health.lets_go(scene, points, weights, status)
     status[0] = STICK
     assert health.lets_go(scene, points, weights, status)
-    with pytest.raises(health.FreeBody, match=r"^here: body − can rotate: no support or pin holds it and only 1 of "
+    with pytest.raises(health.FreeBody, match=r"^here: body − can rotate: no support or pin holds it that way and only 1 of "
                                               r"12 points of Γ stay closed"):
         health.check_held(scene, points, weights, status, "here")
     status[6] = STICK
