@@ -590,9 +590,11 @@ def unsettled(scene: Scene, levels: list[list[ProfileData]], record: dict, metho
     return out
 
 
-def unsettled_warnings(found: dict[str, dict[str, tuple[float, float]]], h: float, feature: float) -> list[str]:
+def unsettled_warnings(found: dict[str, dict[str, tuple[float, float]]], h: float, feature: float,
+                       length: str = "m") -> list[str]:
     """One line per cause of :func:`unsettled` and per stencil, naming the
-    quantities and the coarse h from which the cause is gone."""
+    quantities and the coarse h from which the cause is gone; its lengths
+    in the scene's unit named ``length`` (:class:`~contactcore.scene.Units`)."""
     lines = []
     for cause, entries in found.items():
         for rho in sorted({v[0] for v in entries.values()}):
@@ -603,7 +605,7 @@ def unsettled_warnings(found: dict[str, dict[str, tuple[float, float]]], h: floa
                    f"the run at h = {h:g} has stencils (cells, supports, recovery patches) of {rho:.3g}, more than "
                    f"1/{tol.FEATURE_STENCILS:g} of the scene's smallest feature ({feature:.3g})")
             lines.append(f"{', '.join(names)}: {why}: the runs are not in the asymptotic range, the estimate is an "
-                         f"indication only (starting below h = {h_ok:.3g} avoids this)")
+                         f"indication only (starting below h = {h_ok:.3g} avoids this; lengths in {length})")
     return lines
 
 
@@ -801,7 +803,7 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     profiles = profile_estimates(levels, results[-1].degree, results[-1].method, coarse, scene, exclude, switching)
     found = unsettled(scene, levels, results[-2].discretisation, results[-1].method, results[-1].degree, exclude)
     warnings = (order_warnings(profiles) + pollution_warning(scene, profiles)
-                + unsettled_warnings(found, hs[-2], feature_size(scene)))
+                + unsettled_warnings(found, hs[-2], feature_size(scene), scene.user.units.length))
     status = None
     if scene.law.has_history or not scene.law.is_linear:
         status = status_change(scene, results[-2].interface, results[-1].interface, hs[-2:])

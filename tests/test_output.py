@@ -301,3 +301,85 @@ def test_the_interface_and_study_plots_name_the_scenes_units(a_in_mpa):
     assert study.described("radius", MM_MPA) == "radius of a circular Γ (mm)"
     assert study.PARAMETERS["kN"][0] == "normal spring k_N (stress/length)"
     assert "h (cell size or node spacing (mm))" in study.markdown("A", ["h"], [], MM_MPA)
+
+
+def test_efficiency_names_a_mm_scenes_units(tmp_path, a_in_mpa):
+    """efficiency on a scene in mm: units.json gives h in mm (from the
+    scene's copy beside efficiency.csv), efficiency.md its exclusion in mm;
+    an SI scene's sentence still says m."""
+    from verification import efficiency, files
+    out = tmp_path / "eff"
+    assert main(["efficiency", str(a_in_mpa), "--method", "fe", "--degree", "1", "--h", "0.5", "0.25", "-q",
+                 "--out", str(out)]) == 0
+    assert json.loads((out / files.UNITS_FILE).read_text())["efficiency.csv"]["h"] == "mm"
+    text = (out / "efficiency.md").read_text()
+    assert "samples within 0.141 mm of corners" in text and " m of corners" not in text
+    assert "gets there soonest, in " in text and "then ." not in text  # one variant: no empty "then"
+    assert "samples within 0.141 m of corners" in efficiency._error_sentence(None, None, 0.141)
+
+
+def test_effectivity_gives_each_estimate_its_quantitys_unit(tmp_path, a_in_mpa):
+    """effectivity on a scene in mm and MPa: units.json gives h in mm, and
+    every row of effectivity.csv and .md names its quantity's unit (the
+    estimate column mixes stresses and gaps)."""
+    import csv
+    from verification import files
+    out = tmp_path / "effectivity"
+    assert main(["effectivity", "--scene", str(a_in_mpa), "--h", "0.25", "--ref-h", "0.1", "-q",
+                 "--out", str(out)]) == 0
+    assert json.loads((out / files.UNITS_FILE).read_text())["effectivity.csv"]["h"] == "mm"
+    with open(out / "effectivity.csv") as fh:
+        rows = list(csv.DictReader(fh))
+    assert {r["unit"] for r in rows} == {"MPa", "mm"}
+    assert all(r["unit"] == files.column_unit(r["quantity"], MM_MPA) for r in rows)
+    text = (out / "effectivity.md").read_text()
+    assert "Truth: fe P2 at h = 0.1 mm; runs at 0.25, 0.125 mm" in text
+    assert "| estimate | unit | effectivity |" in text and "| gN | " in text and " | mm | " in text
+
+
+def test_summary_and_estimate_warnings_give_lengths_in_the_scenes_unit(a_in_mpa):
+    """summary.md's exclusion sentence and the estimate's unsettled-run
+    warnings name the scene's length unit (m for an SI scene)."""
+    from contactcore import estimate as est
+    from verification.agreement import AgreementTable, default_exclusion
+    corners = (("corners", ((0.0, 0.0), (1.0, 0.0))),)
+    assert AgreementTable("A", "fe (p2)", 0.141, corners, (), units=MM_MPA).excluded().startswith(
+        "samples within 0.141 mm of these singular points were left out: corners (0, 0), (1, 0)")
+    assert "within 0.141 m of these" in AgreementTable("A", "fe (p2)", 0.141, corners, ()).excluded()
+    scene = load_scene(a_in_mpa)
+    runs = [methods.solver("fe")(scene, h) for h in (0.25, 0.125)]  # stencils reaching Γ's ends: unsettled
+    warnings = est.estimate_runs(scene, runs, default_exclusion(scene), energy=False).warnings
+    unsettled = [w for w in warnings if "asymptotic range, the estimate is an indication" in w]
+    assert unsettled and all(w.endswith("avoids this; lengths in mm)") for w in unsettled)
+
+
+def test_study_headers_and_difference_floors_name_their_units():
+    """study.md's outputs and a Δ panel's floor carry the scene's units."""
+    from verification import study
+    header = study.markdown("A", ["h"], [], MM_MPA).splitlines()[-2]
+    assert "| max \\|g_N\\| (mm) | max \\|g_T\\| (mm) | max \\|t_N\\| (MPa) |" in header
+    assert "| mean t_N (MPa) | mean t_T (MPa) | message |" in header
+    assert "| mean t_N (Pa) |" in study.markdown("A", ["h"], [])
+    s = np.linspace(0.0, 1.0, 11)
+    fig = plots.profile_figure("g", {"fe (p2)": _profile("G", s, gN=s), "xfem (p1)": _profile("G", s, gN=s + 0.01)},
+                               floors={"gN": 0.00476}, units=MM_MPA)
+    assert fig.axes[1].get_title(loc="right").endswith("floored at 0.00476 mm")
+    plots.pyplot().close(fig)
+
+
+def test_spring_messages_name_the_scenes_units(a_in_mpa):
+    """The springs' refusals and hints in MPa/mm (and h in mm) for a scene
+    in mm and MPa."""
+    from contactcore import health
+    from contactcore.errors import SolverError
+    from contactcore.laws import CoulombLaw, LinearLaw
+    scene = load_scene(a_in_mpa)
+    with pytest.raises(SolverError, match=r"kN: 1e\+300 MPa/mm is too stiff .* use k_N <= \S+ MPa/mm$"):
+        health.check_springs(scene.with_changes(law=LinearLaw(1e300, 1.0)), np.array([0.05]))
+    assert "kN = 1e-06 MPa/mm is very soft" in health.failure_hint(
+        scene.with_changes(law=LinearLaw(1e-6, 1e-6)), np.array([0.05]))
+    with pytest.raises(SolverError, match=r"MPa/mm is .* \(h = 0\.1 mm, efgm's spacing\).* MPa/mm, a spacing "
+                                          r"h <= \S+ mm, or fe or xfem"):
+        k = 1e5 * scene.softer_modulus  # k h / E = 1e4 at h = 0.1, ten times the limit given
+        health.check_friction_springs(scene.with_changes(law=CoulombLaw(k, k, 0.3)), 0.1, {"N": 1e3, "T": 1e3},
+                                      "efgm")

@@ -202,8 +202,8 @@ def _commands() -> dict[str, Command]:
                      "summary.json how far the penalty answer is from it"),
             arg("--floor", type=_floor, action="append", default=[], metavar="Q=VALUE",
                 help="measure quantity Q in the agreement table and the Δ panels against sqrt(Q_ref² + VALUE²), "
-                     "VALUE > 0 in Q's unit (e.g. sxy=1e3 in Pa): for a quantity zero in the reference, whose "
-                     "round-off would else be its scale; repeat for several"),
+                     "VALUE > 0 in Q's unit in the scene's [units] (e.g. sxy=1e3, in Pa for an SI scene): for a "
+                     "quantity zero in the reference, whose round-off would else be its scale; repeat for several"),
             out), _run, "spread"),
         "paper": Command("the paper's figures and an agreement table against a refined reference", (
             scenes, arg("--ref-h", type=float, help="cell size of the P2 reference (default: a quarter of the "

@@ -349,7 +349,8 @@ class AgreementTable:
             return "no sample was left out (the scene has no singular point)"
         where = "; ".join(f"{name} " + ", ".join(f"({x:.4g}, {y:.4g})" for x, y in pts)
                           for name, pts in self.regions)
-        return f"samples within {self.exclude:.3g} of these singular points were left out: {where}"
+        return (f"samples within {self.exclude:.3g} {self.units.length} of these singular points were left out: "
+                f"{where}")
 
     def markdown(self) -> str:
         """The table in Markdown, worst sample and RMS in % of the reference's scale."""

@@ -28,7 +28,7 @@ from pathlib import Path
 
 import numpy as np
 
-from contactcore import InterfaceProfile, LineProfile, ProfileData, sample_profiles
+from contactcore import InterfaceProfile, LineProfile, ProfileData, sample_profiles, scene_text
 from contactcore import estimate as est
 from contactcore.discretisation import solve
 
@@ -191,10 +191,18 @@ def scene_rows(scene, key: tuple, h: float, truth: dict[str, ProfileData], level
             true = est.rms(got[pid].columns[q][keep] - want)
             rows.append({"scene": scene.name, "method": key[0], "degree": key[1], "h": estimate.hs[-1],
                          "profile": pid, "quantity": q, "order": e.order, "estimate": est.rms(e.error[keep]),
-                         "true": true, "relative": true / np.max(np.abs(want)),
+                         "true": true, "unit": files.column_unit(q, scene.units) or "",
+                         "relative": true / np.max(np.abs(want)),
                          "effectivity": est.rms(e.error[keep]) / true if true > 0 else None,
                          "warned": f"{pid}:{q}" in estimate.unsettled})
     return rows
+
+
+def _length(scenes) -> str:
+    """The length unit all ``scenes`` share after a space (`` mm``), or
+    nothing if they do not share one."""
+    lengths = {scene.units.length for scene in scenes}
+    return f" {lengths.pop()}" if len(lengths) == 1 else ""
 
 
 def scene_table(scene_names, h: float, ref_h: float, out: Path, levels: int = 2, argv=()) -> str:
@@ -211,13 +219,17 @@ def scene_table(scene_names, h: float, ref_h: float, out: Path, levels: int = 2,
         truth = scene_truth(scene, ref_h)
         for key in SCENE_VARIANTS:
             rows += scene_rows(scene, key, h, truth, levels)
-    columns = ["scene", "method", "degree", "h", "profile", "quantity", "order", "estimate", "true", "relative",
-               "effectivity", "warned"]
-    text = (f"# Effectivity against fe P2\n\nTruth: fe P2 at h = {ref_h}; runs at "
-            f"{', '.join(f'{hk:g}' for hk in est.levels_of(h, levels))}, the finest estimated; RMS over the "
-            f"samples away from singular points.\n\n" + files.markdown_table(rows, columns[:-4] + columns[-2:]))
+    columns = ["scene", "method", "degree", "h", "profile", "quantity", "order", "estimate", "true", "unit",
+               "relative", "effectivity", "warned"]
+    text = (f"# Effectivity against fe P2\n\nTruth: fe P2 at h = {ref_h}{_length(scenes)}; runs at "
+            f"{', '.join(f'{hk:g}' for hk in est.levels_of(h, levels))}{_length(scenes)}, the finest estimated; "
+            f"RMS over the samples away from singular points; each row's estimate (and true error) in its "
+            f"quantity's unit.\n\n"
+            + files.markdown_table(rows, [*columns[:8], "unit", "effectivity", "warned"]))
     files.write_csv(out / "effectivity.csv", rows, columns)
     files.write_text(out / "effectivity.md", text)
+    if len(scenes) == 1:  # the units of effectivity.csv's columns (h's): several scenes' may differ
+        files.write_text(out / files.SCENE_FILE, scene_text(scene_names[0]))
     files.write_json(out / "run.json", {**files.provenance(list(argv)), "scenes": list(scene_names), "h": h,
                                         "ref_h": ref_h, "levels": levels})
     return text

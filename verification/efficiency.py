@@ -38,7 +38,7 @@ from pathlib import Path
 
 from contactcore import estimate as estimates
 from contactcore.profiles import sample_points
-from contactcore import SceneError, load_scene, sample_profiles
+from contactcore import SceneError, load_scene, sample_profiles, scene_text
 from contactcore import tolerances as tol
 from contactcore.budget import MEMORY_SHARE, estimate, machine_memory
 
@@ -112,7 +112,7 @@ def soonest(rows: list[dict]) -> str:
     first, *rest = order
     others = ", ".join(f"{m} p{d} {times[(m, d)]:.2f} s" for m, d in rest)
     return (f"At a worst-profile error of {target:.2e} (the best that every method reaches here), "
-            f"{first[0]} p{first[1]} gets there soonest, in {times[first]:.2f} s; then {others}.")
+            f"{first[0]} p{first[1]} gets there soonest, in {times[first]:.2f} s" + (f"; then {others}." if rest else "."))
 
 
 def _reference(scene_name: str, ref_h: float) -> tuple[dict, int, float]:
@@ -188,7 +188,8 @@ def efficiency(scene_name: str, variants, ladders: dict, ref_h: float | None, ex
                       bars=("error_low", "error_high") if ref is None else None)
     headers = ["method", "degree", "h", "DOFs", "mesh", "assembly", "solve", "total",
                "error" if ref is not None else "estimated error", "worst at"]
-    text = (f"## Error against run time, scene {scene.name}\n\n" + _error_sentence(ref_h, ref_dofs, exclude)
+    text = (f"## Error against run time, scene {scene.name}\n\n"
+            + _error_sentence(ref_h, ref_dofs, exclude, scene.units.length)
             + f" Times in s, after a warm-up solve; a run under {REPEAT_BELOW:g} s is the fastest of {REPEATS}; "
             f"measured by {measured_by} at once (rungs beside each other share the cores).\n\n"
             f"{soonest(rows)}\n\nWhich method to pick for a target error (the fastest measured rung that "
@@ -196,6 +197,7 @@ def efficiency(scene_name: str, variants, ladders: dict, ref_h: float | None, ex
             + files.markdown_table(rows, columns, headers + ["estimate", "estimate worst at", "effectivity"]
                                    [:len(columns) - len(COLUMNS)]))
     files.write_text(out / "efficiency.md", text)
+    files.write_text(out / files.SCENE_FILE, scene_text(scene_name))  # the units of efficiency.csv's columns
     files.write_json(out / "run.json", {**files.provenance(list(argv)), "workers": measured_by})
     return text
 
@@ -213,15 +215,16 @@ def _check_exclusion(scene, exclude: float) -> None:
                              f"give less (the default is {default_exclusion(scene):.3g})")
 
 
-def _error_sentence(ref_h: float | None, ref_dofs: int | None, exclude: float) -> str:
-    where = f"samples within {exclude:.3g} m of corners and of the ends of Γ left out."
+def _error_sentence(ref_h: float | None, ref_dofs: int | None, exclude: float, length: str = "m") -> str:
+    """How the table's error was measured, its lengths in the scene's unit named ``length``."""
+    where = f"samples within {exclude:.3g} {length} of corners and of the ends of Γ left out."
     if ref_h is None:
         return (f"No reference: the error is ESTIMATED (Richardson, each rung against a run at h/2 at the "
                 f"method's theoretical order, contactcore.estimate), the worst relative RMS over the profiles, "
                 f"{where} Error bars: a factor {tol.ESTIMATE_TRUST:g} either way, the range the estimate holds "
                 f"on the closed forms.")
-    return (f"Reference: fe P2, h = {ref_h:g} ({ref_dofs} DOFs). Error: worst relative RMS difference over the "
-            f"profiles, {where} Estimate: the same measure of the Richardson estimate (each rung against a run "
+    return (f"Reference: fe P2, h = {ref_h:g} {length} ({ref_dofs} DOFs). Error: worst relative RMS difference "
+            f"over the profiles, {where} Estimate: the same measure of the Richardson estimate (each rung against a run "
             f"at h/2); effectivity = estimate ÷ error.")
 
 

@@ -160,7 +160,7 @@ def profile_figure(title: str | tuple[str, ...], runs: dict[str, ProfileData], r
         if k == 0:
             legend_outside(ax)
         if rows == 2:
-            _difference_panel(axes[rows * k + 1, 0], q, runs, ref, (floors or {}).get(q, 0.0))
+            _difference_panel(axes[rows * k + 1, 0], q, runs, ref, (floors or {}).get(q, 0.0), units)
     axes[-1, 0].set_xlabel(xlabel(first.parameter, units))
     parts = (title,) if isinstance(title, str) else title
     axes[0, 0].set_title(heading(first.id, *parts), fontsize=10, wrap=True)
@@ -172,11 +172,13 @@ def profile_figure(title: str | tuple[str, ...], runs: dict[str, ProfileData], r
 PERCENT = 100.0
 
 
-def _difference_panel(ax, q: str, runs: dict[str, ProfileData], ref: str, floor: float = 0.0) -> None:
+def _difference_panel(ax, q: str, runs: dict[str, ProfileData], ref: str, floor: float = 0.0,
+                      units: Units = Units()) -> None:
     """Each curve but the reference minus the reference, at its own samples,
     relative to the reference's largest |value| on the profile (a pointwise
     ratio would blow up where the reference crosses zero), or to
-    ``sqrt(max|value|² + floor²)``, in percent."""
+    ``sqrt(max|value|² + floor²)``, in percent; the floor named in ``q``'s
+    unit in the scene's ``units``."""
     s_ref, v_ref = runs[ref].columns["s"], runs[ref].columns[q]
     size = float(np.hypot(np.nanmax(np.abs(v_ref)), floor)) or 1.0
     for i, (label, prof) in enumerate(runs.items()):
@@ -187,7 +189,7 @@ def _difference_panel(ax, q: str, runs: dict[str, ProfileData], ref: str, floor:
     ax.grid(alpha=0.3)
     ax.set_ylabel(f"Δ{SYMBOLS.get(q, q)} / max|ref| (%)")
     keep_span(ax, PERCENT)
-    floored = f", floored at {floor:.3g}" if floor else ""
+    floored = f", floored at {floor:.3g} {column_unit(q, units)}" if floor else ""
     ax.set_title(f"each minus {ref}, relative to its largest |{q}|{floored}", fontsize=8, loc="right")
 
 

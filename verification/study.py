@@ -57,6 +57,8 @@ log = logging.getLogger("verification")
 #: Γ sampled by the study (the scene's profiles may not survive a change of Γ).
 GAMMA = InterfaceProfile("gamma", ("gN", "gT", "tN", "tT"), parameter="arclength")
 OUTPUTS = ["max_gN", "max_gT", "max_tN", "max_tT", "mean_tN", "mean_tT"]
+#: study.md's headers of :data:`OUTPUTS` (each followed by its unit in the scene's).
+OUTPUT_HEADERS = ["max |g_N|", "max |g_T|", "max |t_N|", "max |t_T|", "mean t_N", "mean t_T"]
 
 
 def _material(scene, body: str, key: str, value: float):
@@ -383,8 +385,9 @@ def markdown(scene_name: str, names: list[str], rows: list[dict], units: Units =
     return (f"## Study: scene {scene_name}, {what}\n\n"
             + "".join(f"![study {p}]({_plot_name(names, p)})\n" for p in names) + "\n"
             + files.markdown_table(rows, [*labels, "method", "status", "dofs", "total", *OUTPUTS, "message"],
-                                   [*names, "method", "status", "DOFs", "total (s)", "max |g_N|", "max |g_T|",
-                                    "max |t_N|", "max |t_T|", "mean t_N", "mean t_T", "message"])
+                                   [*names, "method", "status", "DOFs", "total (s)",
+                                    *(files.labelled(text, q, units) for text, q in zip(OUTPUT_HEADERS, OUTPUTS)),
+                                    "message"])
             + (f"\n{len(failed)} of {len(rows)} points failed; the study went on.\n" if failed else ""))
 
 
