@@ -136,9 +136,9 @@ def check_friction_springs(scene, h: float, limits: dict, method: str) -> None:
         if alpha > limit * (1 + tol.LIMIT_ROUNDOFF):
             h_user, unit, length = h * Scales.of(scene.user).length, spring_unit(scene), scene.user.units.length
             raise SolverError(f"interface.law.k{c}: {k_user:.3g} {unit} is {alpha:.1e} times the softer body's E/h "
-                              f"(h = {h_user:.3g} {length}, {method}'s spacing), above the {limit:.0e} {method} carries "
-                              f"for k_{c} under Coulomb friction: its tractions at Γ's points oscillate from point "
-                              f"to point and the stick/slip decisions follow the oscillation; use k_{c} <= "
+                              f"(h = {h_user:.3g}, {method}'s spacing), above the {limit:.0e} {method} carries for "
+                              f"k_{c} under Coulomb friction: its tractions at Γ's points oscillate from point to "
+                              f"point and the stick/slip decisions follow the oscillation; use k_{c} <= "
                               f"{_rounded_down(k_user * limit / alpha):.2e} {unit}, a spacing h <= "
                               f"{_rounded_down(h_user * limit / alpha):.2e} {length}, or fe or xfem")
 

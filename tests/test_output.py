@@ -315,6 +315,7 @@ def test_efficiency_names_a_mm_scenes_units(tmp_path, a_in_mpa):
     text = (out / "efficiency.md").read_text()
     assert "samples within 0.141 mm of corners" in text and " m of corners" not in text
     assert "gets there soonest, in " in text and "then ." not in text  # one variant: no empty "then"
+    assert "| target error | method | degree | h (mm) |" in text and "| method | degree | h (mm) | DOFs |" in text
     assert "samples within 0.141 m of corners" in efficiency._error_sentence(None, None, 0.141)
 
 
@@ -368,8 +369,8 @@ def test_study_headers_and_difference_floors_name_their_units():
 
 
 def test_spring_messages_name_the_scenes_units(a_in_mpa):
-    """The springs' refusals and hints in MPa/mm (and h in mm) for a scene
-    in mm and MPa."""
+    """The springs' refusals and hints in MPa/mm (and the spacing they
+    offer in mm) for a scene in mm and MPa."""
     from contactcore import health
     from contactcore.errors import SolverError
     from contactcore.laws import CoulombLaw, LinearLaw
@@ -378,7 +379,7 @@ def test_spring_messages_name_the_scenes_units(a_in_mpa):
         health.check_springs(scene.with_changes(law=LinearLaw(1e300, 1.0)), np.array([0.05]))
     assert "kN = 1e-06 MPa/mm is very soft" in health.failure_hint(
         scene.with_changes(law=LinearLaw(1e-6, 1e-6)), np.array([0.05]))
-    with pytest.raises(SolverError, match=r"MPa/mm is .* \(h = 0\.1 mm, efgm's spacing\).* MPa/mm, a spacing "
+    with pytest.raises(SolverError, match=r"MPa/mm is .* \(h = 0\.1, efgm's spacing\).* MPa/mm, a spacing "
                                           r"h <= \S+ mm, or fe or xfem"):
         k = 1e5 * scene.softer_modulus  # k h / E = 1e4 at h = 0.1, ten times the limit given
         health.check_friction_springs(scene.with_changes(law=CoulombLaw(k, k, 0.3)), 0.1, {"N": 1e3, "T": 1e3},

@@ -41,6 +41,7 @@ from contactcore.profiles import sample_points
 from contactcore import SceneError, load_scene, sample_profiles, scene_text
 from contactcore import tolerances as tol
 from contactcore.budget import MEMORY_SHARE, estimate, machine_memory
+from contactcore.scene import Units
 
 from . import files, pool
 from .agreement import agreements, default_exclusion, first_largest, worst_estimate
@@ -85,10 +86,12 @@ def worst_error(scene, got: dict, ref: dict, exclude: float) -> tuple[float, str
 ADVISOR_TARGETS = (1e-2, 1e-3, 1e-4)
 
 
-def advisor(rows: list[dict], targets=ADVISOR_TARGETS) -> str:
+def advisor(rows: list[dict], targets=ADVISOR_TARGETS, units: Units = Units()) -> str:
     """A Markdown table: for each target error, the measured rung (method,
-    degree, h) that reached it in the least wall time, or that none did."""
-    lines = ["| target error | method | degree | h | DOFs | total (s) | error |", "|---|---|---|---|---|---|---|"]
+    degree, h in the scene's ``units``) that reached it in the least wall
+    time, or that none did."""
+    lines = [f"| target error | method | degree | {files.labelled('h', 'h', units)} | DOFs | total (s) | error |",
+             "|---|---|---|---|---|---|---|"]
     for target in targets:
         hits = [r for r in rows if r["error"] <= target]
         if not hits:
@@ -186,14 +189,14 @@ def efficiency(scene_name: str, variants, ladders: dict, ref_h: float | None, ex
                       "worst profile error (relative RMS)" + (", estimated" if ref is None else ""),
                       f"Scene {scene.name}: error against run time",
                       bars=("error_low", "error_high") if ref is None else None)
-    headers = ["method", "degree", "h", "DOFs", "mesh", "assembly", "solve", "total",
+    headers = ["method", "degree", files.labelled("h", "h", scene.units), "DOFs", "mesh", "assembly", "solve", "total",
                "error" if ref is not None else "estimated error", "worst at"]
     text = (f"## Error against run time, scene {scene.name}\n\n"
             + _error_sentence(ref_h, ref_dofs, exclude, scene.units.length)
             + f" Times in s, after a warm-up solve; a run under {REPEAT_BELOW:g} s is the fastest of {REPEATS}; "
             f"measured by {measured_by} at once (rungs beside each other share the cores).\n\n"
             f"{soonest(rows)}\n\nWhich method to pick for a target error (the fastest measured rung that "
-            f"reaches it):\n\n{advisor(rows)}\n![efficiency {scene.name}](efficiency.png)\n\n"
+            f"reaches it):\n\n{advisor(rows, units=scene.units)}\n![efficiency {scene.name}](efficiency.png)\n\n"
             + files.markdown_table(rows, columns, headers + ["estimate", "estimate worst at", "effectivity"]
                                    [:len(columns) - len(COLUMNS)]))
     files.write_text(out / "efficiency.md", text)
