@@ -317,6 +317,31 @@ def test_efficiency_refuses_an_exclusion_that_leaves_nothing_to_measure(tmp_path
     assert not out.exists()
 
 
+@pytest.mark.parametrize("argv, field", [
+    (["efficiency", "A", "--method", "fe", "--h", "0.2", "--ref-h", "1e-5"], "--ref-h 1e-05 with fe (degree 2"),
+    (["efficiency", "A", "--method", "fe", "--h", "1e-5"], "--h 1e-05 with fe (degree 1"),
+    (["effectivity", "--scene", "A", "--h", "0.2", "--ref-h", "1e-5"], "--ref-h 1e-05 with fe (degree 2"),
+    (["effectivity", "--scene", "A", "--h", "1e-5", "--ref-h", "1e-6"], "--ref-h 1e-06 with fe (degree 2"),
+])
+def test_efficiency_and_effectivity_refuse_a_solve_too_large_for_the_machine(tmp_path, capsys, monkeypatch, argv,
+                                                                            field):
+    """A reference or a rung past the machine's memory is refused before
+    any solve, as run refuses it (a scene in mm at effectivity's default
+    --ref-h 0.00625 started a 2.5e4 GB mesh that no signal stopped)."""
+    from verification import effectivity, pool
+
+    def no_solve(*_, **__):
+        raise AssertionError("a case was solved")
+
+    monkeypatch.setattr(pool, "map_cases", no_solve)
+    monkeypatch.setattr(effectivity, "solve", no_solve)
+    out = tmp_path / "e"
+    assert main([*argv, "--out", str(out)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith(f"error: {field}") and "--allow-large" in err[0], err
+    assert not out.exists()
+
+
 def test_run_refuses_an_h_beside_the_papers_grids(tmp_path, capsys):
     """--paper fixes each method's grid: an --h beside it was ignored without a word."""
     assert main(["run", "A", "--paper", "--h", "0.1", "--out", str(tmp_path / "r")]) == 2
