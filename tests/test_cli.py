@@ -143,6 +143,7 @@ def test_run_refuses_a_bad_floor_in_one_line(capsys, tmp_path, floor, message):
 
 @pytest.mark.parametrize("args, message", [
     (["A", "--method", "fe", "--floor", "sxy=1e3"], "error: --floor: floors measure the agreement between methods, "
+                                                    "an estimated error or a penalty answer against the exact one, "
                                                     "and one method runs here"),
     (["C", "--method", "fe", "xfem", "--floor", "sxx=1e3"], "error: --floor: sxx: no profile of scene C samples it"),
     (["A", "--method", "fe", "xfem", "--floor", "sxy=1e3", "--floor", "sxy=2"],
