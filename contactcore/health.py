@@ -256,6 +256,7 @@ def _describe(scene, v: np.ndarray) -> str:
             return f"{who} can slide along Γ"
         if abs(d @ nrm) > 0.99:
             return f"{who} can move normal to Γ"
+    d = np.round(d, 2) + 0.0  # the direction as shown: round-off of a motion along an axis is no component
     return f"{who} can translate along ({d[0]:.2g}, {d[1]:.2g})"
 
 
