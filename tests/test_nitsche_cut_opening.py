@@ -11,7 +11,8 @@ contradicts either status: with it and every point after
 it closed (the rest open), its augmented gap y_N is open beyond the
 decision band; with it open too, y_N is closed beyond the band.  No edge
 position is consistent, nor any pattern of the points about that one.
-Placement 0 (0.4) itself has one consistent edge, Newton's answer.  The
+Placement 0 (0.4) itself, and fe P2 at 0.398, have one consistent
+edge, Newton's answer.  The
 refusal names the tie, and Coulomb's law with μ a few times the loads'
 shear/normal that it names (0.104) solves the same case.
 """
@@ -27,7 +28,7 @@ from contactcore.tolerances import DECISION_BAND
 from efgm.options import EFGM
 from nitsche_fields import exact
 from placements import inclined_A
-from xdolfinx.options import XFEM
+from xdolfinx.options import FE, XFEM
 
 H = 0.0125
 ANGLE = 20.0
@@ -125,10 +126,12 @@ def test_a_moved_cut_has_no_consistent_open_closed_map(method, height, monkeypat
 
 
 @pytest.mark.slow
-def test_placement_0_has_one_consistent_edge(monkeypatch):
-    """The search sees a consistent map where there is one: placement 0,
-    which Newton solves, has one consistent edge position."""
-    edges, _ = _probe(exact(inclined_A(ANGLE, 0.4)), XFEM_QUAD_P2, monkeypatch, _edges_and_window)
+@pytest.mark.parametrize("method, height", [(XFEM_QUAD_P2, 0.4), (FE(degree=2), 0.398)], ids=["xfem-0.4", "fe-0.398"])
+def test_a_cut_newton_solves_has_one_consistent_edge(method, height, monkeypatch):
+    """The search sees a consistent map where there is one: placement 0
+    in xfem P2, and the moved one in fe P2, which Newton solves, have one
+    consistent edge position each."""
+    edges, _ = _probe(exact(inclined_A(ANGLE, height)), method, monkeypatch, _edges_and_window)
     assert sum(len(e) == 0 for e in edges) == 1
 
 
