@@ -70,14 +70,14 @@ def failure_hint(scene, weights) -> str:
     eps·k w/E; a body held by springs far below E/h is nearly free)."""
     E = max(m.E for m in scene.materials.values())
     w = float(np.max(weights)) if len(weights) else 0.0
-    out = []
+    out, unit = [], spring_unit(scene)
     for c, k, k_user in _springs(scene):
         ratio = k * w / E
         if ratio > 1 / tol.SPRING_HINT_RANGE:
-            out.append(f"interface.law.k{c} = {k_user:.3g} Pa/m is too stiff: k w = {ratio:.1e} E, its round-off "
+            out.append(f"interface.law.k{c} = {k_user:.3g} {unit} is too stiff: k w = {ratio:.1e} E, its round-off "
                        f"(~2e-16 k w/E) swamps the bulk — soften it")
         elif ratio < tol.SPRING_HINT_RANGE:
-            out.append(f"interface.law.k{c} = {k_user:.3g} Pa/m is very soft: k w = {ratio:.1e} E, a body held by it "
+            out.append(f"interface.law.k{c} = {k_user:.3g} {unit} is very soft: k w = {ratio:.1e} E, a body held by it "
                        "is nearly free — stiffen it or add a support")
     return "; ".join(out) or "a rigid-body mode may be nearly free"
 
@@ -113,10 +113,11 @@ def check_springs(scene, weights) -> None:
     w = float(np.max(weights)) if len(weights) else 0.0
     for c, k, k_user in _springs(scene):
         if k * w > tol.SPRING_ENTRY_MAX * E:
-            raise SolverError(f"interface.law.k{c}: {k_user:.3g} Pa/m is too stiff for double precision here: its "
+            unit = spring_unit(scene)
+            raise SolverError(f"interface.law.k{c}: {k_user:.3g} {unit} is too stiff for double precision here: its "
                               f"entries k w = {k * w / E:.1e} E exceed {tol.SPRING_ENTRY_MAX:.1e} E, beyond which "
                               f"the bulk stiffness in the interface rows is lost to round-off (no accurate solve "
-                              f"exists); use k_{c} <= {tol.SPRING_ENTRY_MAX * E / w * k_user / k:.2e} Pa/m")
+                              f"exists); use k_{c} <= {tol.SPRING_ENTRY_MAX * E / w * k_user / k:.2e} {unit}")
 
 
 def check_friction_springs(scene, h: float, limits: dict, method: str) -> None:
@@ -133,13 +134,13 @@ def check_friction_springs(scene, h: float, limits: dict, method: str) -> None:
     for c, k, k_user in _springs(scene):
         alpha, limit = k * h / scene.softer_modulus, limits[c]
         if alpha > limit * (1 + tol.LIMIT_ROUNDOFF):
-            h_user = h * Scales.of(scene.user).length
-            raise SolverError(f"interface.law.k{c}: {k_user:.3g} Pa/m is {alpha:.1e} times the softer body's E/h "
+            h_user, unit = h * Scales.of(scene.user).length, spring_unit(scene)
+            raise SolverError(f"interface.law.k{c}: {k_user:.3g} {unit} is {alpha:.1e} times the softer body's E/h "
                               f"(h = {h_user:.3g}, {method}'s spacing), above the {limit:.0e} {method} carries for "
                               f"k_{c} under Coulomb friction: its tractions at Γ's points oscillate from point to "
                               f"point and the stick/slip decisions follow the oscillation; use k_{c} <= "
-                              f"{_rounded_down(k_user * limit / alpha):.2e} Pa/m, a spacing h <= "
-                              f"{_rounded_down(h_user * limit / alpha):.2e}, or fe or xfem")
+                              f"{_rounded_down(k_user * limit / alpha):.2e} {unit}, a spacing h <= "
+                              f"{_rounded_down(h_user * limit / alpha):.2e} {scene.user.units.length}, or fe or xfem")
 
 
 def _rounded_down(x: float, digits: int = 3) -> float:
@@ -157,6 +158,13 @@ def _springs(scene):
         return ()
     user = scene.user.law
     return (("N", scene.law.kN, user.kN), ("T", scene.law.kT, user.kT))
+
+
+def spring_unit(scene) -> str:
+    """The unit a spring is named in: the scene's stress over its length
+    (:class:`contactcore.scene.Units`, labels only)."""
+    units = scene.user.units
+    return f"{units.stress}/{units.length}"
 
 
 def _frictionless(scene) -> bool:

@@ -325,3 +325,19 @@ def test_coulomb_springs_at_the_limit_efgm_quotes_are_carried():
     quoted = float(re.search(r"use k_N <= (\S+) Pa/m", str(refused.value)).group(1))
     assert quoted == 2.46e15
     check(quoted, 2.4691e11, 3e11)
+
+
+def test_the_spring_messages_name_the_scenes_units():
+    """Scene A labelled mm and MPa (docs/scenes.md, "Units"): the springs'
+    refusals and hints name them in MPa/mm (and h in mm), never Pa/m."""
+    from contactcore.laws import CoulombLaw
+    from contactcore.scene import Units
+    scene = load_scene("A").with_changes(units=Units(length="mm", stress="MPa"))
+    stiff = scene.with_changes(law=LinearLaw(1e300, scene.law.kT))
+    with pytest.raises(SolverError, match=r"kN: 1e\+300 MPa/mm is too stiff .* use k_N <= \S+ MPa/mm$"):
+        health.check_springs(stiff, np.array([0.05]))
+    soft = scene.with_changes(law=LinearLaw(1.0, 1.0))
+    assert "kN = 1 MPa/mm is very soft" in health.failure_hint(soft, np.array([0.05]))
+    coulomb = scene.with_changes(law=CoulombLaw(1e15, 1e15, 0.3))
+    with pytest.raises(SolverError, match=r"kN: 1e\+15 MPa/mm is .* use k_N <= \S+ MPa/mm, a spacing h <= \S+ mm,"):
+        health.check_friction_springs(coulomb, 0.1, {"N": 1.0, "T": 1.0}, "efgm")

@@ -301,3 +301,11 @@ def test_the_interface_and_study_plots_name_the_scenes_units(a_in_mpa):
     assert study.described("radius", MM_MPA) == "radius of a circular Γ (mm)"
     assert study.PARAMETERS["kN"][0] == "normal spring k_N (stress/length)"
     assert "h (cell size or node spacing (mm))" in study.markdown("A", ["h"], [], MM_MPA)
+
+
+def test_efficiency_names_the_excluded_distance_in_the_scenes_length():
+    """efficiency.md's sentence on the samples left out names the scene's
+    length unit (mm here), not m."""
+    from verification import efficiency
+    assert "samples within 0.1 mm of corners" in efficiency._error_sentence(None, None, 0.1, MM_MPA.length)
+    assert "samples within 0.1 mm of corners" in efficiency._error_sentence(0.01, 1000, 0.1, MM_MPA.length)

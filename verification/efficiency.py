@@ -188,7 +188,8 @@ def efficiency(scene_name: str, variants, ladders: dict, ref_h: float | None, ex
                       bars=("error_low", "error_high") if ref is None else None)
     headers = ["method", "degree", "h", "DOFs", "mesh", "assembly", "solve", "total",
                "error" if ref is not None else "estimated error", "worst at"]
-    text = (f"## Error against run time, scene {scene.name}\n\n" + _error_sentence(ref_h, ref_dofs, exclude)
+    text = (f"## Error against run time, scene {scene.name}\n\n"
+            + _error_sentence(ref_h, ref_dofs, exclude, scene.units.length)
             + f" Times in s, after a warm-up solve; a run under {REPEAT_BELOW:g} s is the fastest of {REPEATS}; "
             f"measured by {measured_by} at once (rungs beside each other share the cores).\n\n"
             f"{soonest(rows)}\n\nWhich method to pick for a target error (the fastest measured rung that "
@@ -213,8 +214,9 @@ def _check_exclusion(scene, exclude: float) -> None:
                              f"give less (the default is {default_exclusion(scene):.3g})")
 
 
-def _error_sentence(ref_h: float | None, ref_dofs: int | None, exclude: float) -> str:
-    where = f"samples within {exclude:.3g} m of corners and of the ends of Γ left out."
+def _error_sentence(ref_h: float | None, ref_dofs: int | None, exclude: float, length: str = "m") -> str:
+    """What efficiency.md's error measures, ``exclude`` in the scene's ``length`` unit."""
+    where = f"samples within {exclude:.3g} {length} of corners and of the ends of Γ left out."
     if ref_h is None:
         return (f"No reference: the error is ESTIMATED (Richardson, each rung against a run at h/2 at the "
                 f"method's theoretical order, contactcore.estimate), the worst relative RMS over the profiles, "
