@@ -385,3 +385,46 @@ def test_a_janitor_speaks_and_settles_for_a_killed_process(tmp_path):
     rest = proc.communicate(timeout=60)[1]  # its end: the janitor, holding the same stderr, has ended too
     assert line == "interrupted\n" and rest == ""
     assert list(tmp_path.iterdir()) == []
+
+
+def test_a_janitor_whose_readers_are_gone_still_settles(tmp_path):
+    """mpirun gone before the janitor speaks (its stderr's reader closed)
+    and its process gone (the pipe for its byte closed): the janitor cannot
+    say ``interrupted``, and still puts the earlier run back and removes
+    the build folder at its pipe's end."""
+    from verification.janitor import Build
+    path, tmp = tmp_path / "out", tmp_path / ".out.abc"
+    for folder, text in ((path, "earlier"), (tmp, "new")):
+        folder.mkdir()
+        (folder / "run.json").write_text(text)
+    build = Build(path, tmp)
+    os.replace(path, build.earlier)
+    signals, to_janitor = os.pipe()
+    from_janitor, said = os.pipe()
+    stderr_read, stderr_write = os.pipe()
+    os.close(stderr_read)
+    os.close(from_janitor)
+    proc = subprocess.Popen([sys.executable, str(ROOT / "verification" / "janitor.py"), str(signals), str(said),
+                             str(path), str(tmp)], pass_fds=(signals, said), stdin=subprocess.DEVNULL,
+                            stdout=subprocess.DEVNULL, stderr=stderr_write)
+    for fd in (signals, said, stderr_write):
+        os.close(fd)
+    os.write(to_janitor, bytes([signal.SIGTERM]))
+    os.close(to_janitor)
+    assert proc.wait(timeout=60) == 0
+    assert [p.name for p in tmp_path.iterdir()] == ["out"] and (path / "run.json").read_text() == "earlier"
+
+
+def test_a_janitor_that_cannot_start_leaves_no_build_folder(tmp_path, monkeypatch):
+    """Rank 0's janitor refused by the system (no process to be had): the
+    error goes on, and neither the build folder nor a record of it is left."""
+    from verification import files, janitor
+
+    def refused(*args, **kwargs):
+        raise BlockingIOError("Resource temporarily unavailable")
+
+    monkeypatch.setattr(janitor.subprocess, "Popen", refused)
+    with pytest.raises(BlockingIOError):
+        with files.atomic_folder(tmp_path / "out", watched=True):
+            pass
+    assert list(tmp_path.iterdir()) == [] and files._BUILDING == [] and not janitor.watching()

@@ -82,9 +82,9 @@ def atomic_folder(path: Path, watched: bool = False):
     _follow_umask(str(tmp), 0o777)
     build = janitor.Build(path, tmp)
     _BUILDING.append(build)
-    if watched:
-        janitor.watch(build)
     try:
+        if watched:
+            janitor.watch(build)
         yield tmp
         if path.exists():
             os.replace(path, build.earlier)
@@ -92,7 +92,7 @@ def atomic_folder(path: Path, watched: bool = False):
     finally:
         build.settle()
         _BUILDING.remove(build)
-        if watched:
+        if watched and janitor.watching():
             janitor.unwatch()
 
 
