@@ -399,7 +399,8 @@ def friction_demand(scene, k: float) -> str:
         return ""
     for name, shear, press in _demands(scene, k):
         if press <= 0:
-            return f"body {name} is held by Γ alone and the loads pull it off Γ: no equilibrium without a support"
+            how = "pull it off Γ" if press < 0 else "lie along Γ and do not press it onto Γ"
+            return f"body {name} is held by Γ alone and the loads {how}: no equilibrium without a support"
         if shear > mu * press:
             return (f"on Γ the loads ask for shear/normal = {shear / press:.3g} of body {name}, above μ = {mu:g}: "
                     "it slides off (no equilibrium); lower the shear load or raise μ")
@@ -408,8 +409,9 @@ def friction_demand(scene, k: float) -> str:
 
 def _demands(scene, k: float):
     """``(name, |F·t|, F·n pressing it onto Γ)`` of each body held by Γ
-    alone and loaded (:func:`friction_demand`), at increment ``k``; none
-    where Γ is not a line across a rectangle."""
+    alone and loaded (:func:`friction_demand`), at increment ``k``, F·n
+    within :data:`~contactcore.tolerances.ALONG_GAMMA` of |F| taken as 0
+    (F along Γ); none where Γ is not a line across a rectangle."""
     if not isinstance(scene.interface, LineInterface) or not isinstance(scene.domain, Rectangle):
         return
     n = np.asarray(scene.interface.normal, float)
@@ -421,7 +423,9 @@ def _demands(scene, k: float):
             continue
         force = _boundary_resultant(scene, b, scene.factors(k)[0])
         if force.any():
-            yield name, abs(force @ tangent_of(n[None])[0]), (-force @ n if b == 1 else force @ n)
+            press = -force @ n if b == 1 else force @ n
+            along = abs(press) <= tol.ALONG_GAMMA * np.linalg.norm(force)  # round-off's sign decides nothing
+            yield name, abs(force @ tangent_of(n[None])[0]), 0.0 if along else float(press)
 
 
 def tie_cause(scene, k: float, failure: str, from_rest: bool = False) -> str:
