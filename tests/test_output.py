@@ -303,9 +303,13 @@ def test_the_interface_and_study_plots_name_the_scenes_units(a_in_mpa):
     assert "h (cell size or node spacing (mm))" in study.markdown("A", ["h"], [], MM_MPA)
 
 
-def test_efficiency_names_the_excluded_distance_in_the_scenes_length():
-    """efficiency.md's sentence on the samples left out names the scene's
-    length unit (mm here), not m."""
-    from verification import efficiency
-    assert "samples within 0.1 mm of corners" in efficiency._error_sentence(None, None, 0.1, MM_MPA.length)
-    assert "samples within 0.1 mm of corners" in efficiency._error_sentence(0.01, 1000, 0.1, MM_MPA.length)
+def test_efficiency_names_the_scenes_units(tmp_path, a_in_mpa):
+    """efficiency on a scene in mm and MPa: units.json gives efficiency.csv's
+    h in mm (the scene is written beside it), and efficiency.md's sentence
+    on the samples left out names mm, not m."""
+    from verification import files
+    out = tmp_path / "eff"
+    assert main(["efficiency", str(a_in_mpa), "--method", "fe", "--degree", "1", "--h", "0.25", "--ref-h", "0.125",
+                 "-q", "--out", str(out)]) == 0
+    assert json.loads((out / files.UNITS_FILE).read_text())["efficiency.csv"]["h"] == "mm"
+    assert re.search(r"samples within \S+ mm of corners", (out / "efficiency.md").read_text())

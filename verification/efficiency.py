@@ -38,7 +38,7 @@ from pathlib import Path
 
 from contactcore import estimate as estimates
 from contactcore.profiles import sample_points
-from contactcore import SceneError, load_scene, sample_profiles
+from contactcore import SceneError, load_scene, sample_profiles, scene_text
 from contactcore import tolerances as tol
 from contactcore.budget import MEMORY_SHARE, estimate, machine_memory
 
@@ -197,6 +197,7 @@ def efficiency(scene_name: str, variants, ladders: dict, ref_h: float | None, ex
             + files.markdown_table(rows, columns, headers + ["estimate", "estimate worst at", "effectivity"]
                                    [:len(columns) - len(COLUMNS)]))
     files.write_text(out / "efficiency.md", text)
+    files.write_text(out / files.SCENE_FILE, scene_text(scene_name))  # the units of efficiency.csv's columns
     files.write_json(out / "run.json", {**files.provenance(list(argv)), "workers": measured_by})
     return text
 
