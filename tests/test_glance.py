@@ -428,3 +428,16 @@ def test_a_janitor_that_cannot_start_leaves_no_build_folder(tmp_path, monkeypatc
         with files.atomic_folder(tmp_path / "out", watched=True):
             pass
     assert list(tmp_path.iterdir()) == [] and files._BUILDING == [] and not janitor.watching()
+
+
+def test_a_process_whose_janitor_was_killed_says_the_line_itself(tmp_path):
+    """A janitor killed before its process is asked to end (someone's kill):
+    telling it is no error, and the process learns that no line was said,
+    so that it says it itself (verification.__main__._end_now)."""
+    from verification import files, janitor
+    with files.atomic_folder(tmp_path / "out", watched=True):
+        process = janitor._watching[0]
+        process.kill()
+        process.wait(timeout=60)
+        assert janitor.told(signal.SIGTERM) is False
+    assert [p.name for p in tmp_path.iterdir()] == ["out"] and not janitor.watching()

@@ -110,13 +110,25 @@ def unwatch() -> None:
 def told(signum: int) -> bool:
     """Tell this process's janitor that it was asked to end by ``signum``
     and wait (at most :data:`SAID_WAIT`) for its line, so that the line is
-    out before this process ends; whether a janitor says it (or said it)."""
+    out before this process ends; whether a janitor says it (or said it:
+    a janitor that is gone, killed by someone, may have)."""
     if _watching is None:
         return _said
     _, to_janitor, from_janitor = _watching
-    os.write(to_janitor, bytes([signum]))
+    try:
+        os.write(to_janitor, bytes([signum]))
+    except OSError:  # the janitor is gone: whether it said the line before it went
+        return _heard(from_janitor)
     select.select([from_janitor], [], [], SAID_WAIT)
     return True
+
+
+def _heard(from_janitor: int) -> bool:
+    """Whether the janitor's byte is waiting on pipe ``from_janitor`` (not
+    the pipe's end)."""
+    with suppress(OSError):
+        return bool(select.select([from_janitor], [], [], 0)[0]) and os.read(from_janitor, 1) != b""
+    return False
 
 
 def janitor(signals: int, said: int, build: Build) -> None:
