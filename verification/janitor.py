@@ -114,11 +114,11 @@ def told(signum: int) -> bool:
     a janitor that is gone, killed by someone, may have)."""
     if _watching is None:
         return _said
-    _, to_janitor, from_janitor = _watching
-    try:
-        os.write(to_janitor, bytes([signum]))
-    except OSError:  # the janitor is gone: whether it said the line before it went
+    process, to_janitor, from_janitor = _watching
+    if process.poll() is not None:  # gone: a write to its pipe would raise SIGPIPE, on which PETSc aborts
         return _heard(from_janitor)
+    with suppress(OSError):
+        os.write(to_janitor, bytes([signum]))
     select.select([from_janitor], [], [], SAID_WAIT)
     return True
 
