@@ -269,7 +269,8 @@ def solve(scene, discretisation: Discretisation, h: float | None = None, *, pape
     finally:
         if reuse is None or not reuse.owns(built):
             built.system.close()
-    report.warnings += scene.interface_warnings(built.h, fitted=built.fitted) + built.warnings
+    report.warnings += (scene.interface_warnings(built.h, fitted=built.fitted) + scene.ligament_warnings(built.h)
+                        + built.warnings)
     path = path.gathered(built.system.collective, scene.interface)
     fields = built.fields(x)
     timings.total = time.perf_counter() - start

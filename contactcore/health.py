@@ -264,6 +264,7 @@ def _describe(scene, v: np.ndarray) -> str:
             return f"{who} can slide along Γ"
         if abs(d @ nrm) > 0.99:
             return f"{who} can move normal to Γ"
+    d = np.round(d, 2) + 0.0  # the direction as shown: round-off of a motion along an axis is no component
     return f"{who} can translate along ({d[0]:.2g}, {d[1]:.2g})"
 
 
@@ -367,19 +368,19 @@ def check_held(scene, interface_points, interface_weights, status, where: str) -
 # ----- materials --------------------------------------------------------------
 
 def material_warnings(scene) -> list[str]:
-    """Volumetric locking: plane strain with ν above NU_LOCKING_WARN."""
+    """Volumetric locking: plane strain with ν above NU_LOCKING_WARN, in
+    one warning that names every such body."""
     if scene.plane != "strain":
         return []
-    out = []
-    for body, m in scene.materials.items():
-        if m.nu > tol.NU_LOCKING_WARN:
-            out.append(f"materials.{body}.nu = {m.nu:.10g} in plane strain (above {tol.NU_LOCKING_WARN:g}, "
-                       f"λ/μ = {2 * m.nu / (1 - 2 * m.nu):.1e}): every method here is displacement-based and may "
-                       "lock volumetrically, its stresses off by tens of percent or more, degree 1 the most but "
-                       "degree 2 too (scene "
-                       "A at ν = 0.4999, h = 0.05: the upper block's moment from σyy on Γ 18 % off in fe P2, 180 % "
-                       "in xfem P2, 120 % in EFGM's quadratic basis); tractions from the jumps are not affected")
-    return out
+    high = [(body, m.nu) for body, m in scene.materials.items() if m.nu > tol.NU_LOCKING_WARN]
+    if not high:
+        return []
+    named = " and ".join(f"materials.{body}.nu = {nu:.10g} (λ/μ = {2 * nu / (1 - 2 * nu):.1e})" for body, nu in high)
+    return [f"{named} in plane strain, above {tol.NU_LOCKING_WARN:g}: every method here is displacement-based and "
+            "may lock volumetrically, its stresses off by tens of percent or more, degree 1 the most but degree 2 "
+            "too (scene A at ν = 0.4999, h = 0.05: the upper block's moment from σyy on Γ 18 % off in fe P2, 180 % "
+            "in xfem P2, 120 % in EFGM's quadratic basis); Γ's tractions come from the same fields and may be off "
+            "as much (fe P1's t_N on a uniformly pressed Γ at ν = 0.499 ranged over 0.01–2.8 times the pressure)"]
 
 
 # ----- friction -----------------------------------------------------------------

@@ -40,6 +40,7 @@ from contactcore.system import ContactSystem, InterfaceOperator
 from contactcore.geometry import tangent_of
 from contactcore.interface_path import piece_centres
 from contactcore.scene import Pressure, Traction, body_force
+from contactcore.scaling import Scales
 
 from contactcore.exact import is_exact
 
@@ -248,7 +249,8 @@ def build(scene: Scene, options: EFGM, resolution: Resolution, timings: Timings)
         gam_pts, gam_w, gam_n = interface_rule(scene, ns.h, n)
     with timings.measure("assembly"):
         enrichment = find_enrichment(scene, ns.x, radii, vol.points, vol.bodies)
-        mls = MLS(ns.x, radii, degree=degree, weight=options.weight, dilation=dmax, seen_from=enrichment.seen_from)
+        mls = MLS(ns.x, radii, degree=degree, weight=options.weight, dilation=dmax, seen_from=enrichment.seen_from,
+                  to_user=Scales.of(scene.user).to_user if scene.source is not None else None)
         approx = Approximation(mls, enrichment)
         D = scene.voigt_matrices()
         lo, hi = background_cells(scene, ns.h)

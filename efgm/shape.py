@@ -217,10 +217,12 @@ class MLS:
     ``radii``: support radius of each node, shape (N,) for circular supports
     or (N, 2) for rectangular ones (half-widths in x and y).  ``seen_from``:
     (N, 2) bool, the bodies each node takes part in (module doc), or None.
+    ``to_user``: maps a point to the coordinates an error message gives
+    (the user's, where the nodes are those of a dimensionless scene), or None.
     """
 
     def __init__(self, nodes: np.ndarray, radii: np.ndarray, *, degree: int = 1, weight: str = "cubic",
-                 dilation: float | None = None, seen_from: np.ndarray | None = None):
+                 dilation: float | None = None, seen_from: np.ndarray | None = None, to_user=None):
         if degree not in (1, 2):
             raise DiscretisationError(f"efgm: the MLS basis degree must be 1 or 2 (got {degree})")
         if weight not in WEIGHTS:
@@ -232,6 +234,7 @@ class MLS:
         self._radii2 = None if self.rectangular else self.radii * self.radii  # support tests on squared distances
         self.degree, self.weight, self.dilation = degree, WEIGHTS[weight], dilation
         self.seen_from = None if seen_from is None else np.asarray(seen_from, bool)
+        self.to_user = to_user or (lambda p: np.asarray(p, float))
         self.m = basis_size(degree)
         self.tree = cKDTree(self.nodes)
         self.reach = float(np.max(self.radii))
@@ -539,7 +542,8 @@ class MLS:
                 need = f"dmax = {self.dilation:g} is too small here: about {self.dilation * grow:.2g} is needed"
             else:
                 need = f"enlarge the supports about {grow:.2g} times"
+            x, y = self.to_user(points[i])
             raise DiscretisationError(
-                f"efgm: the moment matrix at point ({points[i][0]:.6g}, {points[i][1]:.6g}) is singular: "
+                f"efgm: the moment matrix at point ({x:.6g}, {y:.6g}) is singular: "
                 f"{count} node(s) in its support, at least {self.m} not on one line are needed "
                 f"({int(bad.sum())} such point(s)); {need}")

@@ -10,10 +10,11 @@ import importlib
 
 from .tags import BODY, BOUNDARY, INTERFACE, NAMES
 
-_BUILDERS = ("GMSH_MIN_CIRCLE_POINTS", "Grading", "build_model", "gmsh_session", "polygon_warnings", "write_mesh")
+_BUILDERS = ("GMSH_MIN_CIRCLE_POINTS", "Grading", "build_model", "gmsh_session", "keeping_sigint", "polygon_warnings",
+             "write_mesh")
 
 __all__ = ["BODY", "BOUNDARY", "GMSH_MIN_CIRCLE_POINTS", "Grading", "INTERFACE", "NAMES", "build_model", "gmsh_session",
-           "polygon_warnings", "write_mesh"]
+           "keeping_sigint", "polygon_warnings", "write_mesh"]
 
 
 def __getattr__(name: str):

@@ -11,13 +11,33 @@ from __future__ import annotations
 
 import math
 import os
+import signal
 import tempfile
+import threading
 from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 
-import gmsh
 import numpy as np
+
+
+@contextmanager
+def keeping_sigint():
+    """Leave SIGINT's handler as it was: gmsh's module sets it to the
+    default (the process dies at Ctrl-C, without the command's clean-up or
+    its one line) when imported, and puts back the one it found then at
+    ``gmsh.finalize()``.  A signal during gmsh's own C code is then acted on
+    when that call returns.  Only the main thread may set a handler."""
+    before = signal.getsignal(signal.SIGINT)
+    try:
+        yield
+    finally:
+        if threading.current_thread() is threading.main_thread() and before is not None:
+            signal.signal(signal.SIGINT, before)
+
+
+with keeping_sigint():
+    import gmsh
 
 from contactcore import DiscretisationError, Scene
 from contactcore import tolerances as tol
@@ -57,7 +77,8 @@ def gmsh_session():
     finally:
         _session_depth -= 1
         if _session_depth == 0:
-            gmsh.finalize()
+            with keeping_sigint():
+                gmsh.finalize()
 
 
 def _add_outer(scene: Scene) -> int:

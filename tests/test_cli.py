@@ -143,6 +143,7 @@ def test_run_refuses_a_bad_floor_in_one_line(capsys, tmp_path, floor, message):
 
 @pytest.mark.parametrize("args, message", [
     (["A", "--method", "fe", "--floor", "sxy=1e3"], "error: --floor: floors measure the agreement between methods, "
+                                                    "an estimated error or a penalty answer against the exact one, "
                                                     "and one method runs here"),
     (["C", "--method", "fe", "xfem", "--floor", "sxx=1e3"], "error: --floor: sxx: no profile of scene C samples it"),
     (["A", "--method", "fe", "xfem", "--floor", "sxy=1e3", "--floor", "sxy=2"],
@@ -314,6 +315,31 @@ def test_efficiency_refuses_an_exclusion_that_leaves_nothing_to_measure(tmp_path
                  "--out", str(out)]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and err[0].startswith(message), err
+    assert not out.exists()
+
+
+@pytest.mark.parametrize("argv, field", [
+    (["efficiency", "A", "--method", "fe", "--h", "0.2", "--ref-h", "1e-5"], "--ref-h 1e-05 with fe (degree 2"),
+    (["efficiency", "A", "--method", "fe", "--h", "1e-5"], "--h 1e-05 with fe (degree 1"),
+    (["effectivity", "--scene", "A", "--h", "0.2", "--ref-h", "1e-5"], "--ref-h 1e-05 with fe (degree 2"),
+    (["effectivity", "--scene", "A", "--h", "1e-5", "--ref-h", "1e-6"], "--ref-h 1e-06 with fe (degree 2"),
+])
+def test_efficiency_and_effectivity_refuse_a_solve_too_large_for_the_machine(tmp_path, capsys, monkeypatch, argv,
+                                                                            field):
+    """A reference or a rung past the machine's memory is refused before
+    any solve, as run refuses it (a scene in mm at effectivity's default
+    --ref-h 0.00625 started a 2.5e4 GB mesh that no signal stopped)."""
+    from verification import effectivity, pool
+
+    def no_solve(*_, **__):
+        raise AssertionError("a case was solved")
+
+    monkeypatch.setattr(pool, "map_cases", no_solve)
+    monkeypatch.setattr(effectivity, "solve", no_solve)
+    out = tmp_path / "e"
+    assert main([*argv, "--out", str(out)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith(f"error: {field}") and "--allow-large" in err[0], err
     assert not out.exists()
 
 

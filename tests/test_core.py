@@ -68,3 +68,16 @@ def test_the_history_files_parameter_is_the_profiles_arc_length_wherever_the_poi
         ends = along_from_entry(moved, np.array([a, b]))
         assert ends[0] == pytest.approx(0.0, abs=tol.SHAPE_ROUNDOFF) and ends[1] == pytest.approx(np.linalg.norm(b - a))
         assert np.allclose(along_from_entry(moved, points), s_profile, rtol=0.0, atol=tol.SHAPE_ROUNDOFF)
+
+
+def test_a_ligament_thinner_than_h_between_a_circle_and_the_boundary_is_warned():
+    """A circular Γ 0.01 from the right edge of a unit square warns at
+    h = 0.05 (no cell spans the ligament) and not at h = 0.005; scenes B
+    and C, whose discs keep a cell from the edge at h = 0.2, do not warn;
+    nor does a straight Γ."""
+    base = load_scene("B")
+    near = base.with_changes(domain=Rectangle((0.0, 0.0), (1.0, 1.0)), interface=CircleInterface((0.7, 0.5), 0.29),
+                             profiles=())
+    assert "ligament" in " ".join(near.ligament_warnings(0.05)) and not near.ligament_warnings(0.005)
+    for name in ("B", "C", "A"):
+        assert not load_scene(name).ligament_warnings(0.2), name

@@ -204,3 +204,28 @@ def test_efgm_imports_neither_dolfinx_nor_gmsh():
             "print(bad); sys.exit(1 if bad else 0)")
     proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
     assert proc.returncode == 0, proc.stdout + proc.stderr
+
+
+def test_a_singular_moment_matrix_is_placed_in_the_users_coordinates():
+    """A disc 0.01 mm from the right edge of a 100 mm block: the ligament's
+    points see too few nodes, and the refusal gives the point as the user
+    placed it (x ≈ 100 mm), not in the dimensionless scene it was found in
+    (x ≈ 1)."""
+    import re
+
+    from contactcore.scene_files import scene_from_dict
+    from verification import methods
+
+    scene = scene_from_dict({
+        "name": "ligament", "plane": "strain", "h": 10.0,
+        "domain": {"type": "rectangle", "corner": [0.0, 0.0], "size": [100.0, 100.0]},
+        "interface": {"type": "circle", "centre": [80.0, 50.0], "radius": 19.99,
+                      "law": {"type": "coulomb", "kN": 1e5, "kT": 1e5, "mu": 0.3}},
+        "materials": {"minus": {"E": 2.1e5, "nu": 0.3}, "plus": {"E": 3e4, "nu": 0.2}},
+        "supports": [{"boundary": "bottom", "fix": "xy"}],
+        "loads": [{"type": "traction", "boundary": "top", "value": [2.0, -10.0]}],
+        "profiles": [{"id": "G", "type": "interface", "quantities": ["tN"]}]})
+    with pytest.raises(DiscretisationError, match="moment matrix at point") as refused:
+        methods.solver("efgm")(scene, 2.5)
+    x, y = map(float, re.search(r"at point \(([^,]+), ([^)]+)\)", str(refused.value)).groups())
+    assert 99.0 < x <= 100.0 and 0.0 <= y <= 100.0, str(refused.value)

@@ -177,7 +177,9 @@ def test_plane_strain_near_incompressible_warns_about_locking(method):
     scene = load_scene("A")
     nearly = {b: dataclasses.replace(m, nu=0.4999999) for b, m in scene.materials.items()}
     warned = methods.solver(method)(scene.with_changes(plane="strain", materials=nearly), 0.2).solver.warnings
-    assert any("lock volumetrically" in w and "degree 2" in w for w in warned), warned
+    [locking] = [w for w in warned if "lock volumetrically" in w]  # one warning, both bodies named in it
+    assert "degree 2" in locking and "materials.minus.nu" in locking and "materials.plus.nu" in locking
+    assert "tractions come from the same fields" in locking  # they were said not to be affected
     # plane stress does not lock; ν = 0.3 in plane strain does not either
     for quiet in (scene.with_changes(materials=nearly), scene.with_changes(plane="strain")):
         assert not any("lock" in w for w in methods.solver(method)(quiet, 0.2).solver.warnings)
@@ -341,3 +343,11 @@ def test_the_spring_messages_name_the_scenes_units():
     coulomb = scene.with_changes(law=CoulombLaw(1e15, 1e15, 0.3))
     with pytest.raises(SolverError, match=r"kN: 1e\+15 MPa/mm is .* use k_N <= \S+ MPa/mm, a spacing h <= \S+ mm,"):
         health.check_friction_springs(coulomb, 0.1, {"N": 1.0, "T": 1.0}, "efgm")
+
+
+def test_a_free_motions_direction_shows_no_round_off():
+    """A translation along x found with 3e-16 in y is shown as (-1, 0)."""
+    from contactcore.health import _describe
+
+    scene = load_scene("C")  # a circular Γ: a translation is named by its direction
+    assert _describe(scene, np.array([0.0, 0.0, 0.0, -1.0, 3.1e-16, 0.0])) == "body + can translate along (-1, 0)"

@@ -81,3 +81,23 @@ def test_cli_writes_only_where_asked(tmp_path):
     text = out.read_text()
     for name in ("body_minus", "body_plus", "interface", "boundary_top"):
         assert f'"{name}"' in text
+
+
+def test_gmsh_leaves_the_ctrl_c_handler_alone():
+    """gmsh's module sets SIGINT to the default when imported (a Ctrl-C
+    while meshing killed the run without its one line and left its build
+    folder behind) and restores the handler it found at finalize: the
+    command's handler stays in place through the import and a session."""
+    code = ("import signal\n"
+            "mine, later = (lambda *_: None), (lambda *_: None)\n"
+            "signal.signal(signal.SIGINT, mine)\n"
+            "from xdolfinx.fitted_mesh import gmshio\n"
+            "gmshio()  # dolfinx's gmsh I/O imports gmsh first on a fitted mesh's path\n"
+            "from meshes.build import gmsh_session\n"
+            "assert signal.getsignal(signal.SIGINT) is mine, 'the import set another handler'\n"
+            "signal.signal(signal.SIGINT, later)  # a command's, installed after the import\n"
+            "with gmsh_session():\n"
+            "    pass\n"
+            "assert signal.getsignal(signal.SIGINT) is later, 'finalize put back the one of the import'\n")
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr

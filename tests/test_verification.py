@@ -185,6 +185,24 @@ def test_every_sweep_has_no_silently_wrong_answer():
         assert not [r for r in run_sweep(sweep) if r["outcome"] == "wrong"], sweep.name
 
 
+def test_the_studys_largest_values_are_interface_csvs(tmp_path):
+    """study.csv's max |g|, |t| are those of run's interface.csv at the last
+    step (Γ's quadrature points, the solve's own), not a profile's: on a
+    curved Γ a profile evaluates a penalty law at its samples' jumps, which
+    a stiff spring amplifies (a disc near a block's edge read 67 MPa there
+    against 32 MPa at the points)."""
+    argv = ["--method", "fe", "--h", "0.2", "-q"]
+    assert main(["study", "C-coulomb", "--param", "load", "--values", "1", *argv, "--out", str(tmp_path / "s")]) == 0
+    assert main(["run", "C-coulomb", *argv, "--no-plots", "--out", str(tmp_path / "r")]) == 0
+    with open(tmp_path / "s" / "study.csv") as fh:
+        (row,) = list(csv.DictReader(fh))
+    with open(tmp_path / "r" / "fe" / "interface.csv") as fh:
+        points = list(csv.DictReader(fh))
+    last = [p for p in points if p["step"] == points[-1]["step"]]
+    for q in ("gN", "gT", "tN", "tT"):
+        assert float(row[f"max_{q}"]) == max(abs(float(p[q])) for p in last), q
+
+
 def test_the_studys_mean_traction_is_the_load_over_gamma(tmp_path, method="xfem"):
     """study.csv's mean t_N, t_T are Γ's means weighted by the quadrature
     (as increments.csv's): on scene A, whose + block is held by Γ alone

@@ -218,14 +218,14 @@ def _commands() -> dict[str, Command]:
             arg("--ref-h", type=float,
                 help="element size of the P2 reference (default: none, the errors are estimated)"),
             arg("--exclude", type=float, help="distance from corners and Γ's ends left out (default 0.1 L)"),
-            out, workers), _efficiency),
+            out, workers, allow_large), _efficiency),
         "effectivity": Command("the error estimates against fe P2 at a fine h, on the paper's scenes or others", (
             arg("--scene", nargs="+", default=["A", "B", "C"],
                 help="built-in scene names or scene TOML files (default: the paper's A B C)"),
             arg("--h", type=float, default=0.05, help="the coarsest run (default 0.05)"),
             arg("--ref-h", type=float, default=0.00625, help="cell size of the fe P2 truth (default 0.00625)"),
             arg("--levels", type=int, default=2, choices=(2, 3), help="runs h, h/2 (3: and h/4); default 2"),
-            out), _effectivity, ranks="serial"),
+            allow_large, out), _effectivity, ranks="serial"),
         "sweeps": Command("stiff and extreme cases: error, condition and outcome", (
             arg("--sweep", nargs="+", choices=[s.name for s in sweeps()], metavar="NAME",
                 help="the sweeps (default: all; each explained below)"),
@@ -328,12 +328,12 @@ def _efficiency(args, argv) -> None:
     exclude = args.exclude if args.exclude is not None else default_exclusion(load_scene(args.scene))
     variants = [(m, d) for m in methods.expand(args.method) for d in args.degree]
     efficiency(args.scene, variants, {d: args.h for d in args.degree}, args.ref_h, exclude, args.out,
-               workers=args.workers, estimated=True, argv=argv)
+               workers=args.workers, estimated=True, allow_large=args.allow_large, argv=argv)
 
 
 def _effectivity(args, argv) -> None:
     from .effectivity import scene_table
-    scene_table(args.scene, args.h, args.ref_h, args.out, args.levels, argv=argv)
+    scene_table(args.scene, args.h, args.ref_h, args.out, args.levels, args.allow_large, argv=argv)
 
 
 def _sweeps(args, argv) -> None:

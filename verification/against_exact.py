@@ -45,8 +45,8 @@ from contactcore.interface_path import InterfacePath
 from contactcore.laws import STATUS_NAMES
 
 from . import files
-from .agreement import (Agreement, default_exclusion, gap_floor, gap_floors, kept_samples, percent, profile_agreements,
-                        share)
+from .agreement import (Agreement, default_exclusion, gap_floor, gap_floors, kept_samples, negligible, percent,
+                        profile_agreements, share, user_floors)
 
 #: How the exact run is named in tables and figures.
 EXACT = "exact"
@@ -95,53 +95,63 @@ def status_split(path: InterfacePath) -> dict:
 VECTORS = {"gN": ("gN", "gT"), "gT": ("gN", "gT"), "tN": ("tN", "tT"), "tT": ("tN", "tT")}
 
 
-def scales(scene: Scene, exact: dict) -> dict:
-    """``(profile id, quantity) -> per-sample |g| or |t|`` of the exact
-    answer for each Γ component a profile holds (its own |value| where the
-    profile lacks the vector's other component), a gap floored as the
-    agreement floors an exact law's gaps
-    (:func:`~verification.agreement.gap_floor` of ``scene``; module doc)."""
-    floor, out = gap_floors(scene), {}
+def floor_of(scene: Scene, exact: dict, quantity: str, floors: dict | None = None) -> float:
+    """The floor of ``quantity``'s sizes: the larger of an exact law's gap
+    floor (:func:`~verification.agreement.gap_floors` of ``scene``), the
+    user's ``floors`` and round-off of its kind on ``exact``
+    (:func:`~verification.agreement.negligible`): a quantity zero in the
+    exact answer has no size of its own."""
+    return max(gap_floors(scene).get(quantity, 0.0), user_floors(floors).get(quantity, 0.0),
+               negligible(exact, quantity))
+
+
+def scales(scene: Scene, exact: dict, floors: dict | None = None) -> dict:
+    """``(profile id, quantity) -> per-sample scale`` of every quantity of
+    the exact answer: for each Γ component a profile holds, |g| or |t| (its
+    own |value| where the profile lacks the vector's other component), for
+    any other its own |value|; floored (:func:`floor_of`, module doc)."""
+    out = {}
     for pid, prof in exact.items():
-        for q, (a, b) in VECTORS.items():
-            if q in prof.names:
-                size = (np.hypot(prof.columns[a], prof.columns[b]) if {a, b} <= set(prof.names)
-                        else np.abs(prof.columns[q]))
-                out[pid, q] = np.hypot(size, floor.get(q, 0.0))
+        for q in prof.names[3:]:
+            a, b = VECTORS.get(q, (q, q))
+            size = (np.hypot(prof.columns[a], prof.columns[b]) if {a, b} <= set(prof.names) and a != b
+                    else np.abs(prof.columns[q]))
+            out[pid, q] = np.hypot(size, floor_of(scene, exact, q, floors))
     return out
 
 
-def differences(scene: Scene, label: str, penalty: dict, exact: dict) -> list[Agreement]:
+def differences(scene: Scene, label: str, penalty: dict, exact: dict, floors: dict | None = None) -> list[Agreement]:
     """Every profile quantity of ``penalty`` against ``exact`` (id ->
     ProfileData), as :class:`~verification.agreement.Agreement` rows of
-    ``label`` (module doc)."""
-    return profile_agreements(scene, label, penalty, exact, default_exclusion(scene), scales(scene, exact))
+    ``label`` (module doc), sizes floored by ``floors`` (:func:`scales`)."""
+    return profile_agreements(scene, label, penalty, exact, default_exclusion(scene), scales(scene, exact, floors))
 
 
-def largest(scene: Scene, exact: dict, row: Agreement, vector_scales: dict) -> tuple[float, float, float]:
-    """The largest |exact| of ``row``'s quantity, of its own size (a gap
-    floored as :func:`scales` floors |g|) and of the scale it is measured
-    against (``vector_scales``: :func:`scales` of ``exact``), over the kept
+def largest(scene: Scene, exact: dict, row: Agreement, vector_scales: dict, floors: dict | None = None
+            ) -> tuple[float, float, float]:
+    """The largest |exact| of ``row``'s quantity, of its own size (floored
+    as :func:`scales` floors it) and of the scale it is measured against
+    (``vector_scales``: :func:`scales` of ``exact``), over the kept
     samples."""
     prof = exact[row.profile]
     own = np.abs(prof.columns[row.quantity])
-    size = np.hypot(own, gap_floors(scene).get(row.quantity, 0.0))
+    size = np.hypot(own, floor_of(scene, exact, row.quantity, floors))
     scale = vector_scales.get((row.profile, row.quantity), own)
     keep = kept_samples(scene, prof, default_exclusion(scene))
     return tuple(float(np.max(v[keep], initial=0.0)) for v in (own, size, scale))
 
 
 def record(scene: Scene, rows: list[Agreement], exact: dict, penalty_path: InterfacePath,
-           exact_path: InterfacePath) -> dict:
+           exact_path: InterfacePath, floors: dict | None = None) -> dict:
     """summary.json's ``"against_exact"``: per profile and quantity the
     worst-sample share, the share of its own size (``worst_own``) and the
     RMS share, where the worst sample lies, the largest |Δ|, |exact|, own
     size and scale (in the quantity's unit); the status
     split of each run and the distance from singular points inside which
     samples were left out."""
-    by_profile, vector_scales = {}, scales(scene, exact)
+    by_profile, vector_scales = {}, scales(scene, exact, floors)
     for a in rows:
-        own, size, scale = largest(scene, exact, a, vector_scales)
+        own, size, scale = largest(scene, exact, a, vector_scales, floors)
         difference = abs(a.value - a.reference)
         by_profile.setdefault(a.profile, {})[a.quantity] = {
             "worst": a.worst, "worst_own": share(difference, size), "rms": a.rms,

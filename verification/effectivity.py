@@ -24,12 +24,14 @@ effectivity``) have no closed form: there the truth is fe P2 at a fine
 """
 from __future__ import annotations
 
+import itertools
 from pathlib import Path
 
 import numpy as np
 
 from contactcore import InterfaceProfile, LineProfile, ProfileData, sample_profiles
 from contactcore import estimate as est
+from contactcore.budget import check_budget
 from contactcore.discretisation import solve
 
 from . import methods
@@ -197,16 +199,31 @@ def scene_rows(scene, key: tuple, h: float, truth: dict[str, ProfileData], level
     return rows
 
 
-def scene_table(scene_names, h: float, ref_h: float, out: Path, levels: int = 2, argv=()) -> str:
+def check_budgets(scenes, h: float, ref_h: float, levels: int) -> None:
+    """Refuse, before any solve, a truth or a run that would not fit this
+    machine (:func:`contactcore.budget.check_budget`): ``--h`` and
+    ``--ref-h`` are in each scene's own length unit, so a scene in mm
+    at the defaults would mesh billions of cells."""
+    for scene in scenes:
+        check_budget(scene, ref_h, 2, "fe", field="--ref-h")
+        for (name, degree), hk in itertools.product(SCENE_VARIANTS, est.levels_of(h, levels)):
+            check_budget(scene, hk, degree, name)
+
+
+def scene_table(scene_names, h: float, ref_h: float, out: Path, levels: int = 2, allow_large: bool = False,
+                argv=()) -> str:
     """The effectivity of every :data:`SCENE_VARIANTS` pair on each scene
     (a built-in name or a TOML file; truth: fe P2 at ``ref_h``), written to ``out/effectivity.csv`` and
-    ``out/effectivity.md``; returns the Markdown."""
+    ``out/effectivity.md``; returns the Markdown.  Unless ``allow_large``,
+    every solve must fit the machine (:func:`check_budgets`)."""
     from contactcore import SceneError, load_scene
     finest = min(est.levels_of(h, levels))
     if not ref_h < finest:
         raise SceneError("--ref-h", f"{ref_h:g} is not finer than the finest run's h, {finest:g}: the truth "
                          "must be finer than every run it measures")
     rows, scenes = [], [load_scene(name) for name in scene_names]  # every scene read before any solve
+    if not allow_large:
+        check_budgets(scenes, h, ref_h, levels)
     for scene in scenes:
         truth = scene_truth(scene, ref_h)
         for key in SCENE_VARIANTS:

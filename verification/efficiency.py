@@ -40,7 +40,7 @@ from contactcore import estimate as estimates
 from contactcore.profiles import sample_points
 from contactcore import SceneError, load_scene, sample_profiles, scene_text
 from contactcore import tolerances as tol
-from contactcore.budget import MEMORY_SHARE, estimate, machine_memory
+from contactcore.budget import MEMORY_SHARE, check_budget, estimate, machine_memory
 
 from . import files, pool
 from .agreement import agreements, default_exclusion, first_largest, worst_estimate
@@ -123,6 +123,18 @@ def _reference(scene_name: str, ref_h: float) -> tuple[dict, int, float]:
     return {p.id: p for p in sample_profiles(scene, reference.fields, reference.interface)}, reference.dofs, reference.timings.total
 
 
+def check_budgets(scene, rungs, ref_h: float | None, estimated: bool) -> None:
+    """Refuse, before any solve, a rung (at its h, and at h/2 where
+    ``estimated``) or the reference that alone would not fit this machine
+    (:func:`contactcore.budget.check_budget`); :func:`spawn_each` then
+    decides whether the ones that fit share a process."""
+    if ref_h is not None:
+        check_budget(scene, ref_h, 2, "fe", field="--ref-h")
+    for name, degree, h, _ in rungs:
+        for at in (h, h / 2) if estimated else (h,):
+            check_budget(scene, at, degree, name)
+
+
 def spawn_each(scene, rungs, ref_h: float | None, estimated: bool = False) -> bool:
     """Whether the reference and the rungs need a fresh process each: only
     when all of them together (with ``estimated``, each rung's run at
@@ -153,12 +165,13 @@ def _rungs(variants, ladders: dict) -> list[tuple]:
 
 
 def efficiency(scene_name: str, variants, ladders: dict, ref_h: float | None, exclude: float, out: Path,
-               workers: int | None = None, estimated: bool = False, argv=()) -> str:
+               workers: int | None = None, estimated: bool = False, allow_large: bool = False, argv=()) -> str:
     """Run the ladders (``ladders[(method, degree)]`` if given, else
     ``ladders[degree]``: the h of that variant) on ``workers``
     processes, write the table and the plot; return the Markdown section.
     ``estimated``: each rung's error also estimated (module doc); without
-    ``ref_h`` it must be."""
+    ``ref_h`` it must be.  Unless ``allow_large``, every solve must fit
+    the machine (:func:`check_budgets`)."""
     scene = load_scene(scene_name)
     rungs, rows = _rungs(variants, ladders), []
     finest = min(h for _, _, h, _ in rungs)
@@ -166,6 +179,8 @@ def efficiency(scene_name: str, variants, ladders: dict, ref_h: float | None, ex
         raise SceneError("--ref-h", f"{ref_h:g} is coarser than the ladder's finest h, {finest:g}: the "
                          "reference stands for the exact answer, so it must be at least as fine as every rung")
     _check_exclusion(scene, exclude)
+    if not allow_large:
+        check_budgets(scene, rungs, ref_h, estimated or ref_h is None)
     fresh = spawn_each(scene, rungs, ref_h, estimated)
     ref = ref_dofs = None
     if ref_h is not None:

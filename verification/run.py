@@ -260,7 +260,7 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
     compared = reference is not None and len(chosen) > 1  # a reference only where methods are compared
     _check(scene, chosen, h, degree, paper, allow_large, estimate, reference if compared else None,
            nodes=nodes_file, **given)
-    _check_floors(scene, chosen, floors)
+    _check_floors(scene, chosen, floors, bool(estimate or against_exact))
     h = _estimated_h(scene, h) if estimate else h
     finest = h / 2 ** (estimate - 1) if estimate else h  # the answer's h, where a reference is solved
     nodes = read_nodes(nodes_file) if nodes_file else None
@@ -273,7 +273,8 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
     for name in chosen:
         options = methods.options_for(name, nodes=nodes, **given)
         result, est = _named(chosen, name, _solve, scene, name, h, degree, paper, estimate, options)
-        exact_row = (_against_exact(out, scene, twin, name, result, h, degree, paper, estimate, options, draw, gaps)
+        exact_row = (_against_exact(out, scene, twin, name, result, h, degree, paper, estimate, options, draw, gaps,
+                                    floors)
                      if twin is not None else None)
         summaries.append(_write_method(out, scene, name, result, est, fields, draw, profiles, paths, estimated, gaps,
                                        floors))
@@ -326,16 +327,18 @@ def _check(scene: Scene, chosen: list[str], h, degree: int, paper: bool, allow_l
             check_budget(scene, (h or scene.h or span) / 2 ** ((estimate or 1) - 1), reference[1], reference[0])
 
 
-def _check_floors(scene: Scene, chosen: list[str], floors: dict | None) -> None:
+def _check_floors(scene: Scene, chosen: list[str], floors: dict | None, measured: bool) -> None:
     """Refuse, before any work, floors (:func:`verification.agreement.user_floors`)
-    where nothing is compared (one method), or for a quantity that no
-    profile of the scene samples."""
+    where nothing uses them (one method, and no estimate or penalty
+    against exact, ``measured``), or for a quantity that no profile of the
+    scene samples."""
     if not floors:
         return
     agreement.user_floors(floors)
-    if len(chosen) < 2:
-        raise ContactError("--floor: floors measure the agreement between methods, and one method runs here: "
-                           "give --method with two or more")
+    if len(chosen) < 2 and not measured:
+        raise ContactError("--floor: floors measure the agreement between methods, an estimated error or a "
+                           "penalty answer against the exact one, and one method runs here without --estimate or "
+                           "--against-exact: give --method with two or more")
     sampled = {q for p in scene.profiles for q in p.quantities}
     for q in floors:
         if q not in sampled:
@@ -436,7 +439,7 @@ def _written_profiles(folder: Path, scene: Scene, result, est, floors: dict | No
 
 
 def _against_exact(out: Path, scene: Scene, twin: Scene, name: str, result, h, degree: int, paper: bool,
-                   estimate, options: dict, draw: bool, gaps: dict) -> dict:
+                   estimate, options: dict, draw: bool, gaps: dict, floors: dict | None = None) -> dict:
     """Method ``name`` solved on ``twin`` (``scene`` with its law enforced
     exactly) at ``h`` with the penalty run's ``options`` and, with
     ``estimate``, at h/2 (, h/4) and estimated, as the penalty run was:
@@ -444,16 +447,17 @@ def _against_exact(out: Path, scene: Scene, twin: Scene, name: str, result, h, d
     there.  Its profiles (with their estimated errors), history and
     summary are written under ``out/<name>/exact``, each profile's penalty
     and exact curves drawn; how far ``result`` (the penalty run) is from
-    it (:func:`verification.against_exact.record`) joins ``gaps`` under
-    the run's label and its summary.json.  Returns the exact run's summary
+    it (:func:`verification.against_exact.record`, sizes floored by
+    ``floors``) joins ``gaps`` under the run's label and its summary.json;
+    its estimate is floored alike.  Returns the exact run's summary
     (a row of summary.md's table)."""
     label, shown = f"{name} (p{result.degree})", f"{name} ({exact_gap.EXACT})"
     exact, est = _solve(twin, name, h, degree, paper, estimate, options, shown)
-    summary, sampled = _written_profiles(out / name / "exact", twin, exact, est)
+    summary, sampled = _written_profiles(out / name / "exact", twin, exact, est, floors)
     penalty, exact_profiles = agreement.sampled(scene, result), {p.id: p for p in sampled}
     interface.write_history(out / name / "exact", twin, exact.interface)
-    rows = exact_gap.differences(scene, label, penalty, exact_profiles)
-    gaps[label] = exact_gap.record(scene, rows, exact_profiles, result.interface, exact.interface)
+    rows = exact_gap.differences(scene, label, penalty, exact_profiles, floors)
+    gaps[label] = exact_gap.record(scene, rows, exact_profiles, result.interface, exact.interface, floors)
     summary["method"] = shown
     files.write_json(out / name / "exact" / "summary.json", summary)
     titles = {p.id: p.title for p in scene.profiles}

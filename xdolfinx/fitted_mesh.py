@@ -4,7 +4,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from dolfinx.io import gmshio
 from mpi4py import MPI
 
 import meshes
@@ -42,6 +41,15 @@ def fitted_mesh(scene: Scene, h: float, *, order: int = 1, grading: meshes.Gradi
     with meshes.gmsh_session() as model:
         if comm.rank == 0:
             meshes.build_model(scene, h, order=order, grading=grading)
-        msh, cell_tags, facet_tags = gmshio.model_to_mesh(model, comm, 0, gdim=2)
+        msh, cell_tags, facet_tags = gmshio().model_to_mesh(model, comm, 0, gdim=2)
     msh.topology.create_connectivity(1, 2)
     return FittedMesh(msh, cell_tags, facet_tags)
+
+
+def gmshio():
+    """dolfinx's gmsh I/O, imported with SIGINT's handler left as it was:
+    it imports gmsh, whose module sets the handler to the default
+    (:func:`meshes.keeping_sigint`)."""
+    with meshes.keeping_sigint():
+        from dolfinx.io import gmshio
+    return gmshio

@@ -34,12 +34,12 @@ def background_mesh(scene: Scene, h: float, cell: str, counts=None, comm=MPI.COM
     degree 2 at an O(h²) error)."""
     if background_cell(scene, cell) == "gmsh":
         import meshes
-        from dolfinx.io import gmshio
+        from xdolfinx.fitted_mesh import gmshio
 
         with meshes.gmsh_session() as model:
             if comm.rank == 0:
                 meshes.build_model(scene, h, order=order, fitted=False)
-            return gmshio.model_to_mesh(model, comm, 0, gdim=2)[0]
+            return gmshio().model_to_mesh(model, comm, 0, gdim=2)[0]
     (x0, y0), (a, b) = scene.domain.corner, scene.domain.size
     n = list(counts) if counts is not None else cell_counts(scene, h)
     kind = mesh.CellType.quadrilateral if cell == "quad" else mesh.CellType.triangle
