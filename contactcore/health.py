@@ -134,20 +134,13 @@ def check_friction_springs(scene, h: float, limits: dict, method: str) -> None:
     for c, k, k_user in _springs(scene):
         alpha, limit = k * h / scene.softer_modulus, limits[c]
         if alpha > limit * (1 + tol.LIMIT_ROUNDOFF):
-            h_user, unit, length = h * Scales.of(scene.user).length, spring_unit(scene), scene.user.units.length
+            h_user, unit = h * Scales.of(scene.user).length, spring_unit(scene)
             raise SolverError(f"interface.law.k{c}: {k_user:.3g} {unit} is {alpha:.1e} times the softer body's E/h "
                               f"(h = {h_user:.3g}, {method}'s spacing), above the {limit:.0e} {method} carries for "
                               f"k_{c} under Coulomb friction: its tractions at Γ's points oscillate from point to "
                               f"point and the stick/slip decisions follow the oscillation; use k_{c} <= "
                               f"{_rounded_down(k_user * limit / alpha):.2e} {unit}, a spacing h <= "
-                              f"{_rounded_down(h_user * limit / alpha):.2e} {length}, or fe or xfem")
-
-
-def spring_unit(scene) -> str:
-    """The unit of a spring stiffness (stress per length) in the names of
-    the user's :class:`~contactcore.scene.Units`: ``Pa/m`` in SI."""
-    units = scene.user.units
-    return f"{units.stress}/{units.length}"
+                              f"{_rounded_down(h_user * limit / alpha):.2e} {scene.user.units.length}, or fe or xfem")
 
 
 def _rounded_down(x: float, digits: int = 3) -> float:
@@ -165,6 +158,13 @@ def _springs(scene):
         return ()
     user = scene.user.law
     return (("N", scene.law.kN, user.kN), ("T", scene.law.kT, user.kT))
+
+
+def spring_unit(scene) -> str:
+    """The unit a spring is named in: the scene's stress over its length
+    (:class:`contactcore.scene.Units`, labels only)."""
+    units = scene.user.units
+    return f"{units.stress}/{units.length}"
 
 
 def _frictionless(scene) -> bool:
@@ -400,7 +400,8 @@ def friction_demand(scene, k: float) -> str:
         return ""
     for name, shear, press in _demands(scene, k):
         if press <= 0:
-            return f"body {name} is held by Γ alone and the loads pull it off Γ: no equilibrium without a support"
+            how = "pull it off Γ" if press < 0 else "lie along Γ and do not press it onto Γ"
+            return f"body {name} is held by Γ alone and the loads {how}: no equilibrium without a support"
         if shear > mu * press:
             return (f"on Γ the loads ask for shear/normal = {shear / press:.3g} of body {name}, above μ = {mu:g}: "
                     "it slides off (no equilibrium); lower the shear load or raise μ")
@@ -409,8 +410,9 @@ def friction_demand(scene, k: float) -> str:
 
 def _demands(scene, k: float):
     """``(name, |F·t|, F·n pressing it onto Γ)`` of each body held by Γ
-    alone and loaded (:func:`friction_demand`), at increment ``k``; none
-    where Γ is not a line across a rectangle."""
+    alone and loaded (:func:`friction_demand`), at increment ``k``, F·n
+    within :data:`~contactcore.tolerances.ALONG_GAMMA` of |F| taken as 0
+    (F along Γ); none where Γ is not a line across a rectangle."""
     if not isinstance(scene.interface, LineInterface) or not isinstance(scene.domain, Rectangle):
         return
     n = np.asarray(scene.interface.normal, float)
@@ -422,7 +424,9 @@ def _demands(scene, k: float):
             continue
         force = _boundary_resultant(scene, b, scene.factors(k)[0])
         if force.any():
-            yield name, abs(force @ tangent_of(n[None])[0]), (-force @ n if b == 1 else force @ n)
+            press = -force @ n if b == 1 else force @ n
+            along = abs(press) <= tol.ALONG_GAMMA * np.linalg.norm(force)  # round-off's sign decides nothing
+            yield name, abs(force @ tangent_of(n[None])[0]), 0.0 if along else float(press)
 
 
 def tie_cause(scene, k: float, failure: str, from_rest: bool = False) -> str:

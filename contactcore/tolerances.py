@@ -595,6 +595,15 @@ EFGM_FRICTION_SPRINGS = {"N": 1e3, "T": 1e2}
 #: every unit system.
 LIMIT_ROUNDOFF = 1e-10
 
+#: A body's load resultant F whose component normal to Γ is within this
+#: share of |F| lies along Γ (health.friction_demand): F·n of a load given
+#: along a tilted Γ is round-off, +7e-12, 0 or -7e-12 of a resultant of
+#: 2.5e5-1.9e6 (2026-11-27, Γ's normal (-a, b) and the load c (b, a) with
+#: 3-digit a, b), which would otherwise decide between "pull it off Γ" and
+#: a shear/normal of 3e16.  Far above that round-off (1e-16 relative), far
+#: below a load a user aims at Γ.
+ALONG_GAMMA = 1e-9
+
 # ----- EFGM support dilation ---------------------------------------------------
 
 #: EFGM warns when its support dilation dmax leaves this range, in

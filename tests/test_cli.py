@@ -358,3 +358,13 @@ def test_effectivity_refuses_a_truth_no_finer_than_its_runs(tmp_path, capsys):
         "error: --ref-h: 0.2 is not finer than the finest run's h, 0.05: the truth must be finer than every run "
         "it measures"]
     assert not (tmp_path / "e").exists()
+
+
+def test_the_floors_help_names_all_it_reaches(capsys):
+    """``run --help``'s --floor: it floors the estimates' verdicts too
+    (verification.agreement.within_estimates, estimated_shares), in the
+    scene's units."""
+    with pytest.raises(SystemExit):
+        main(["run", "--help"])
+    text = " ".join(capsys.readouterr().out.split())
+    assert "the agreement table, the Δ panels and the estimates' verdicts" in text and "the scene's units" in text

@@ -385,3 +385,76 @@ def test_a_janitor_speaks_and_settles_for_a_killed_process(tmp_path):
     rest = proc.communicate(timeout=60)[1]  # its end: the janitor, holding the same stderr, has ended too
     assert line == "interrupted\n" and rest == ""
     assert list(tmp_path.iterdir()) == []
+
+
+def test_a_janitor_whose_readers_are_gone_still_settles(tmp_path):
+    """mpirun gone before the janitor speaks (its stderr's reader closed)
+    and its process gone (the pipe for its byte closed): the janitor cannot
+    say ``interrupted``, and still puts the earlier run back and removes
+    the build folder at its pipe's end."""
+    from verification.janitor import Build
+    path, tmp = tmp_path / "out", tmp_path / ".out.abc"
+    for folder, text in ((path, "earlier"), (tmp, "new")):
+        folder.mkdir()
+        (folder / "run.json").write_text(text)
+    build = Build(path, tmp)
+    os.replace(path, build.earlier)
+    signals, to_janitor = os.pipe()
+    from_janitor, said = os.pipe()
+    stderr_read, stderr_write = os.pipe()
+    os.close(stderr_read)
+    os.close(from_janitor)
+    proc = subprocess.Popen([sys.executable, str(ROOT / "verification" / "janitor.py"), str(signals), str(said),
+                             str(path), str(tmp)], pass_fds=(signals, said), stdin=subprocess.DEVNULL,
+                            stdout=subprocess.DEVNULL, stderr=stderr_write)
+    for fd in (signals, said, stderr_write):
+        os.close(fd)
+    os.write(to_janitor, bytes([signal.SIGTERM]))
+    os.close(to_janitor)
+    assert proc.wait(timeout=60) == 0
+    assert [p.name for p in tmp_path.iterdir()] == ["out"] and (path / "run.json").read_text() == "earlier"
+
+
+def test_a_janitor_that_cannot_start_leaves_no_build_folder(tmp_path, monkeypatch):
+    """Rank 0's janitor refused by the system (no process to be had): the
+    error goes on, and neither the build folder nor a record of it is left."""
+    from verification import files, janitor
+
+    def refused(*args, **kwargs):
+        raise BlockingIOError("Resource temporarily unavailable")
+
+    monkeypatch.setattr(janitor.subprocess, "Popen", refused)
+    with pytest.raises(BlockingIOError):
+        with files.atomic_folder(tmp_path / "out", watched=True):
+            pass
+    assert list(tmp_path.iterdir()) == [] and files._BUILDING == [] and not janitor.watching()
+
+
+#: A process that builds a watched result folder with PETSc started (as
+#: rank 0 under mpirun: PETSc catches SIGPIPE and aborts on it), its janitor
+#: killed by someone, then asked to end: what ``janitor.told`` answers.
+KILLED_JANITOR = """
+import sys
+from pathlib import Path
+import petsc4py
+petsc4py.init()
+from petsc4py import PETSc
+from verification import files, janitor
+with files.atomic_folder(Path(sys.argv[1]), watched=True):
+    process = janitor._watching[0]
+    process.kill()
+    process.wait()
+    print("told", janitor.told(15), flush=True)
+print("watching", janitor.watching(), flush=True)
+"""
+
+
+def test_a_process_whose_janitor_was_killed_says_the_line_itself(tmp_path):
+    """A janitor killed before its process is asked to end (someone's kill):
+    telling it is no error (no SIGPIPE, on which PETSc aborts), and the
+    process learns that no line was said, so that it says it itself
+    (verification.__main__._end_now)."""
+    done = subprocess.run([sys.executable, "-c", KILLED_JANITOR, str(tmp_path / "out")], cwd=ROOT, text=True,
+                          capture_output=True, timeout=120)
+    assert done.returncode == 0 and done.stdout.split() == ["told", "False", "watching", "False"], done
+    assert [p.name for p in tmp_path.iterdir()] == ["out"]

@@ -177,3 +177,22 @@ def test_the_discrete_law_has_a_consistent_map_on_a_coarse_mesh_only(tmp_path, m
     for method, h in ((FE(degree=1), 0.025), (EFGM(degree=1), 0.05)):
         edges, patterns = _maps(scene, method, h, monkeypatch)
         assert min(edges) > 0 and min(patterns.values()) > 0, (method.name, h)
+
+
+@pytest.mark.parametrize("a, b, c", [(0.097, 1.224, 766100.0), (0.139, 1.048, 455000.0), (0.317, 0.801, 450900.0)])
+def test_a_load_along_a_tilted_gamma_is_judged_alike_whatever_the_round_off(tmp_path, a, b, c):
+    """The block on Γ tilted to the normal (−a, b), pushed along Γ by
+    c (b, a): F·n is round-off, of either sign or zero by a, b, c.  Either
+    law is told that the loads do not press the block onto Γ, never that
+    they pull it off, nor asked for a shear/normal of 1e16."""
+    from contactcore.laws import CoulombLaw
+    text = (TILTED.replace("normal = [0.0, 1.0]", f"normal = [{-a!r}, {b!r}]")
+            .replace("point = [0.0, 0.5]", "point = [1.0, 0.5]")
+            .replace("value = [2e5, -2e5]", f"value = [{b * c!r}, {a * c!r}]"))
+    path = tmp_path / "along.toml"
+    path.write_text(text)
+    scene = load_scene(path)
+    along = "body + is held by Γ alone and the loads lie along Γ and do not press it onto Γ: no equilibrium"
+    assert health.friction_demand(scene, 1.0).startswith(along)
+    assert health.friction_demand(scene.with_changes(law=CoulombLaw(1e10, 1e8, 0.5)), 1.0).startswith(along)
+    assert 'with a large mu' in health.tie_cause(scene, 1.0, "Newton did not converge in 25 iterations", True)

@@ -201,9 +201,10 @@ def _commands() -> dict[str, Command]:
                      "enforced exactly (Nitsche) at the same discretisation, and say in summary.md and each "
                      "summary.json how far the penalty answer is from it"),
             arg("--floor", type=_floor, action="append", default=[], metavar="Q=VALUE",
-                help="measure quantity Q in the agreement table and the Δ panels against sqrt(Q_ref² + VALUE²), "
-                     "VALUE > 0 in Q's unit in the scene's [units] (e.g. sxy=1e3, in Pa for an SI scene): for a "
-                     "quantity zero in the reference, whose round-off would else be its scale; repeat for several"),
+                help="measure quantity Q in the agreement table, the Δ panels and the estimates' verdicts "
+                     "against sqrt(Q_ref² + VALUE²), VALUE > 0 in Q's unit in the scene's units (e.g. sxy=1e3 in an "
+                     "SI scene's Pa): for a quantity zero in the reference, whose round-off would else be its "
+                     "scale; repeat for several"),
             out), _run, "spread"),
         "paper": Command("the paper's figures and an agreement table against a refined reference", (
             scenes, arg("--ref-h", type=float, help="cell size of the P2 reference (default: a quarter of the "

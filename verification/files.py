@@ -82,9 +82,9 @@ def atomic_folder(path: Path, watched: bool = False):
     _follow_umask(str(tmp), 0o777)
     build = janitor.Build(path, tmp)
     _BUILDING.append(build)
-    if watched:
-        janitor.watch(build)
     try:
+        if watched:
+            janitor.watch(build)
         yield tmp
         if path.exists():
             os.replace(path, build.earlier)
@@ -92,7 +92,7 @@ def atomic_folder(path: Path, watched: bool = False):
     finally:
         build.settle()
         _BUILDING.remove(build)
-        if watched:
+        if watched and janitor.watching():
             janitor.unwatch()
 
 
@@ -289,7 +289,7 @@ def column_units(units: Units = Units()) -> dict[str, str]:
     """The unit of each CSV column that has one, in the scene's ``units``
     (:class:`contactcore.scene.Units`: the names of its length unit ℓ and
     stress unit F/ℓ², labels only).  ``s`` is not here: its unit is its
-    CSV's (:func:`s_units`).  Columns not named (counts, statuses, names,
+    CSV's (:func:`scene_units`).  Columns not named (counts, statuses, names,
     ratios) have no unit."""
     return {**dict.fromkeys(STRESS_COLUMNS, units.stress), **dict.fromkeys(LENGTH_COLUMNS, units.length),
             **dict.fromkeys(SPRING_COLUMNS, f"{units.stress}/{units.length}"), **FIXED_UNITS}
@@ -298,7 +298,7 @@ def column_units(units: Units = Units()) -> dict[str, str]:
 def column_unit(column: str, units: Units = Units()) -> str | None:
     """A CSV column's unit in the scene's ``units`` (:func:`column_units`),
     an estimated error's its quantity's; None for a column without one
-    (and for ``s``, whose unit is its CSV's: :func:`s_units`)."""
+    (and for ``s``, whose unit is its CSV's: :func:`scene_units`)."""
     return column_units(units).get(column.removesuffix(ERROR_SUFFIX))
 
 

@@ -25,6 +25,7 @@ import shutil
 import signal
 import subprocess
 import sys
+from contextlib import suppress
 from pathlib import Path
 
 #: The line the command ends with when it is interrupted.
@@ -66,18 +67,30 @@ _said = False
 
 def watch(build: Build) -> None:
     """Start ``build``'s janitor (module doc) and send it every signal this
-    process handles in Python, as the signal arrives."""
+    process handles in Python, as the signal arrives; where it cannot be
+    started, the error, with no pipe left open."""
     global _watching
     signals, to_janitor = os.pipe()
     from_janitor, said = os.pipe()
-    process = subprocess.Popen([sys.executable, __file__, str(signals), str(said), str(build.path.absolute()),
-                                str(build.tmp.absolute())], pass_fds=(signals, said), stdin=subprocess.DEVNULL,
-                               start_new_session=True)
-    os.close(signals)
-    os.close(said)
+    try:
+        process = subprocess.Popen([sys.executable, __file__, str(signals), str(said), str(build.path.absolute()),
+                                    str(build.tmp.absolute())], pass_fds=(signals, said), stdin=subprocess.DEVNULL,
+                                   start_new_session=True)
+    except BaseException:
+        os.close(to_janitor)
+        os.close(from_janitor)
+        raise
+    finally:
+        os.close(signals)
+        os.close(said)
     os.set_blocking(to_janitor, False)
     _watching = process, to_janitor, from_janitor
     signal.set_wakeup_fd(to_janitor)
+
+
+def watching() -> bool:
+    """Whether a janitor watches this process's build (:func:`watch`)."""
+    return _watching is not None
 
 
 def unwatch() -> None:
@@ -97,26 +110,50 @@ def unwatch() -> None:
 def told(signum: int) -> bool:
     """Tell this process's janitor that it was asked to end by ``signum``
     and wait (at most :data:`SAID_WAIT`) for its line, so that the line is
-    out before this process ends; whether a janitor says it (or said it)."""
+    out before this process ends; whether a janitor says it (or said it:
+    a janitor that is gone, killed by someone, may have)."""
     if _watching is None:
         return _said
-    _, to_janitor, from_janitor = _watching
-    os.write(to_janitor, bytes([signum]))
+    process, to_janitor, from_janitor = _watching
+    if process.poll() is not None:  # gone: a write to its pipe would raise SIGPIPE, on which PETSc aborts
+        return _heard(from_janitor)
+    with suppress(OSError):
+        os.write(to_janitor, bytes([signum]))
     select.select([from_janitor], [], [], SAID_WAIT)
     return True
 
 
+def _heard(from_janitor: int) -> bool:
+    """Whether the janitor's byte is waiting on pipe ``from_janitor`` (not
+    the pipe's end)."""
+    with suppress(OSError):
+        return bool(select.select([from_janitor], [], [], 0)[0]) and os.read(from_janitor, 1) != b""
+    return False
+
+
 def janitor(signals: int, said: int, build: Build) -> None:
     """Read the signals from pipe ``signals``: at the first, one line (mpirun
-    forwards it while the rank lives), then a byte to pipe ``said``; at the
-    pipe's end (its writer's), settle ``build``."""
+    forwards it while the rank lives), then a byte to pipe ``said``
+    (:func:`_say`); at the pipe's end (its writer's), or whatever ends the
+    reading, settle ``build``."""
     first = True
-    while chunk := os.read(signals, 64):
-        if first:
-            print(INTERRUPTED_LINE, file=sys.stderr, flush=True)
-            os.write(said, b"\0")
-            first = False
-    build.settle()
+    try:
+        while os.read(signals, 64):
+            if first:
+                first = False
+                _say(said)
+    finally:
+        build.settle()
+
+
+def _say(said: int) -> None:
+    """The line, then a byte to pipe ``said``; either may find its reader
+    gone (mpirun ended, the process killed), which leaves the folder to
+    settle all the same."""
+    with suppress(OSError):
+        print(INTERRUPTED_LINE, file=sys.stderr, flush=True)
+    with suppress(OSError):
+        os.write(said, b"\0")
 
 
 if __name__ == "__main__":
