@@ -160,6 +160,11 @@ def _springs(scene):
     return (("N", scene.law.kN, user.kN), ("T", scene.law.kT, user.kT))
 
 
+#: How Newton's error begins when its iterations run out (contactcore.newton);
+#: :func:`tie_cause` reads a failure by it.
+NOT_CONVERGED = "Newton did not converge"
+
+
 def spring_unit(scene) -> str:
     """The unit a spring is named in: the scene's stress over its length
     (:class:`contactcore.scene.Units`, labels only)."""
@@ -449,7 +454,7 @@ def tie_cause(scene, k: float, failure: str, from_rest: bool = False) -> str:
     increment ``from_rest`` along a straight path is the same problem at
     any size (the law is positively homogeneous), so more increments do
     not help it."""
-    if scene.law.name != "unilateral" or "Newton did not converge" not in failure:
+    if scene.law.name != "unilateral" or NOT_CONVERGED not in failure:
         return ""
     ratios = [f"{shear / press:.3g} on body {name}" for name, shear, press in _demands(scene, k) if press > 0]
     mu = f"mu a few times the loads' shear/normal ({ratios[0]})" if ratios else "a large mu"

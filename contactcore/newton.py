@@ -266,7 +266,7 @@ class _Newton:
             u = u + du
         free = (f" ({self._free_maps} of them on maps whose slipping points alone held a body that nothing else "
                 "holds, free to turn or slide until a point sticks)" if self._free_maps else "")
-        raise SolverError(f"Newton did not converge in {tol.NEWTON_MAX_ITERATIONS} iterations{free}; "
+        raise SolverError(f"{health.NOT_CONVERGED} in {tol.NEWTON_MAX_ITERATIONS} iterations{free}; "
                           f"relative residual history {_fmt(history)}")
 
     def _predicted(self, factors: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
