@@ -63,6 +63,21 @@ def test_sigterm_ends_like_ctrl_c_with_exit_143(tmp_path):
     assert list(tmp_path.iterdir()) == []
 
 
+def test_a_log_read_through_a_closed_pipe_does_not_abort_the_run(tmp_path):
+    """``run … 2>&1 | head -1``: the reader goes after the first line, and
+    PETSc (started by fe) caught the next write's SIGPIPE and aborted the
+    run (status 59), leaving its build folder behind.  PETSc's handlers are
+    off under the command line: the run ends normally and writes its
+    result, and nothing else is left."""
+    proc = subprocess.Popen([sys.executable, "-m", "verification", "run", "A", "--method", "fe", "--h", "0.2",
+                             "--out", str(tmp_path / "out")], cwd=ROOT, stdout=subprocess.DEVNULL,
+                            stderr=subprocess.PIPE)
+    proc.stderr.readline()
+    proc.stderr.close()  # the reader has gone
+    assert proc.wait(timeout=120) == 0
+    assert [p.name for p in tmp_path.iterdir()] == ["out"] and (tmp_path / "out" / "summary.md").exists()
+
+
 #: The most lines a refusal may take on the user's screen.
 ERROR_LINES = 2
 

@@ -323,8 +323,11 @@ def test_rank_0_alone_writes_under_mpirun(tmp_path, command, files):
     assert [p.name for p in tmp_path.iterdir()] == ["out"]
 
 
-#: Long enough under mpirun -n 2 to be interrupted mid-solve (tens of seconds).
-LONG_MPI_RUN = ["-m", "verification", "run", "A", "--method", "fe", "xfem", "--degree", "2", "--h", "0.02",
+#: Long enough under mpirun -n 2 to be interrupted mid-solve: about 8 s of
+#: solving after its first "solving with" line on a quiet machine (10 s in
+#: all, 2026-11-27).  At h = 0.02 the whole solve took 0.6 s, less than
+#: mpirun takes to pass a signal on, and the run ended writing its result.
+LONG_MPI_RUN = ["-m", "verification", "run", "A", "--method", "fe", "xfem", "--degree", "2", "--h", "0.004",
                 "--no-plots"]
 #: ``python -c`` that runs ``python -m verification ARGS`` with rank 0's
 #: solve one call of compiled code that never ends (Python runs no signal

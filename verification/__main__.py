@@ -551,8 +551,25 @@ def _signals_end_the_command(rank: int, distributed: bool):
             signal.signal(sig, handler)
 
 
+#: PETSc's option that leaves every signal to the process (see :func:`_python_handles_signals`).
+NO_PETSC_SIGNALS = "-no_signal_handler"
+
+
+def _python_handles_signals() -> None:
+    """PETSc, once started, catches SIGPIPE (with SIGSEGV, SIGFPE, …) and
+    aborts with status 59: ``run … 2>&1 | head -1`` left its build folder
+    behind.  Its handlers are turned off before it starts (``PETSC_OPTIONS``,
+    which mpirun's ranks and a pool's workers inherit), so that Python's
+    own handling applies: a closed pipe is an error the log ignores, and
+    Ctrl-C and SIGTERM end the command in one line."""
+    given = os.environ.get("PETSC_OPTIONS", "")
+    if NO_PETSC_SIGNALS not in given.split():
+        os.environ["PETSC_OPTIONS"] = f"{given} {NO_PETSC_SIGNALS}".strip()
+
+
 def main(argv=None) -> int:
     argv = sys.argv[1:] if argv is None else argv
+    _python_handles_signals()
     commands = _commands()
     args = _parser(commands).parse_args(argv)
     command = commands[args.command]
