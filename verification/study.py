@@ -15,9 +15,9 @@ Cartesian product (the last parameter varies fastest), one row per point
 and method.  A geometry change is a new scene,
 so the conforming method meshes it afresh through gmsh (and XFEM with
 ``--cell gmsh`` too); the scene's own profiles may no longer lie on the moved
-Γ, so the study samples Γ itself: for each point it records DOFs, wall
-time, solver health, and the largest |g_N|, |g_T|, |t_N|, |t_T| on Γ with
-the mean t_N and t_T.  Every point's scene is built and validated before
+Γ, so the study reads Γ's own points: for each point it records DOFs, wall
+time, solver health, and the largest |g_N|, |g_T|, |t_N|, |t_T| over Γ's
+quadrature points with the mean t_N and t_T.  Every point's scene is built and validated before
 any solve (:func:`check_points`): a bad value (a radius that leaves the
 domain, a fractional increment count, β outside its range) refuses the
 whole study in one line naming it.  The cases run on :mod:`verification.pool` (``--workers K``
@@ -46,7 +46,7 @@ from contactcore.budget import check_budget
 from contactcore.discretisation import Reuse
 from contactcore.enforcement import ENFORCEMENTS
 from contactcore.exact import BONDED, EXACT_LAWS, checked_stabilisation, is_exact
-from contactcore.scene import InterfaceProfile, Units, check_resolution
+from contactcore.scene import Units, check_resolution
 
 from . import files, methods, pool
 from .against_exact import exact_law, penalty_counterpart
@@ -54,8 +54,6 @@ from .outcomes import attempt, health
 
 log = logging.getLogger("verification")
 
-#: Γ sampled by the study (the scene's profiles may not survive a change of Γ).
-GAMMA = InterfaceProfile("gamma", ("gN", "gT", "tN", "tT"), parameter="arclength")
 OUTPUTS = ["max_gN", "max_gT", "max_tN", "max_tT", "mean_tN", "mean_tT"]
 #: study.md's headers of :data:`OUTPUTS` (each followed by its unit in the scene's).
 OUTPUT_HEADERS = ["max |g_N|", "max |g_T|", "max |t_N|", "max |t_T|", "mean t_N", "mean t_T"]
@@ -200,17 +198,17 @@ def _check(param: str) -> None:
 def scene_at(scene, point: dict):
     """``scene`` with each parameter of ``point`` (name -> value) set, in
     order but the enforcement first (the law's μ and β are then set on the
-    law as enforced), sampled on Γ, validated.  Each step sees the Γ
-    profile already: the scene's own profiles may not fit a moved Γ (an
-    angle first, then another parameter, failed on scene A's profiles
-    along y = 0.5)."""
+    law as enforced), without profiles (the study records Γ's points,
+    :func:`_outputs`), validated.  Each step sees no profile already: the
+    scene's own profiles may not fit a moved Γ (an angle first, then
+    another parameter, failed on scene A's profiles along y = 0.5)."""
     changes = {}
     for param, value in sorted(point.items(), key=lambda item: item[0] != "enforcement"):
         _check(param)
         change = PARAMETERS[param][1]
         if param not in left_aside(point, changes.get("law", scene.law)):
-            changes.update(change(scene.with_changes(profiles=(GAMMA,), **changes), value))
-    return scene.with_changes(profiles=(GAMMA,), **changes)
+            changes.update(change(scene.with_changes(profiles=(), **changes), value))
+    return scene.with_changes(profiles=(), **changes)
 
 
 def left_aside(point: dict, law) -> list[str]:
