@@ -45,8 +45,8 @@ from contactcore.interface_path import InterfacePath
 from contactcore.laws import STATUS_NAMES
 
 from . import files
-from .agreement import (Agreement, default_exclusion, gap_floor, gap_floors, kept_samples, negligible, percent,
-                        profile_agreements, share, user_floors)
+from .agreement import (Agreement, default_exclusion, gap_floor, gap_floors, kept_samples, percent, profile_agreements,
+                        share, size_floor, user_floors)
 
 #: How the exact run is named in tables and figures.
 EXACT = "exact"
@@ -99,10 +99,9 @@ def floor_of(scene: Scene, exact: dict, quantity: str, floors: dict | None = Non
     """The floor of ``quantity``'s sizes: the larger of an exact law's gap
     floor (:func:`~verification.agreement.gap_floors` of ``scene``), the
     user's ``floors`` and round-off of its kind on ``exact``
-    (:func:`~verification.agreement.negligible`): a quantity zero in the
+    (:func:`~verification.agreement.size_floor`): a quantity zero in the
     exact answer has no size of its own."""
-    return max(gap_floors(scene).get(quantity, 0.0), user_floors(floors).get(quantity, 0.0),
-               negligible(exact, quantity))
+    return max(gap_floors(scene).get(quantity, 0.0), size_floor(quantity, user_floors(floors), exact))
 
 
 def scales(scene: Scene, exact: dict, floors: dict | None = None) -> dict:

@@ -79,6 +79,13 @@ def negligible(profiles: dict, quantity: str) -> float:
     return NEGLIGIBLE_SHARE * max(sizes, default=0.0)
 
 
+def size_floor(quantity: str, given: dict, *runs: dict) -> float:
+    """The size below which ``quantity`` does not count: the user's floor
+    in ``given`` (checked, :func:`user_floors`) or round-off of its kind
+    on any of ``runs`` (id -> ProfileData, :func:`negligible`), the larger."""
+    return max([given.get(quantity, 0.0), *(negligible(run, quantity) for run in runs)])
+
+
 def displacement_scale(scene: Scene) -> float:
     """``U = max(L τ/E, |ū|)`` (m), E the softer body's modulus: the
     displacement the loads cause in the softer body, or the largest
@@ -204,7 +211,7 @@ def estimated_shares(scene: Scene, profiles: dict, est, exclude: float, floors: 
         keep = kept_samples(scene, profiles[pid], exclude)
         for q, e in qs.items():
             spid, sq = companion(pid, q, profiles) or (pid, q)
-            floor = max(given.get(q, 0.0), negligible(profiles, q))
+            floor = size_floor(q, given, profiles)
             scale = np.hypot(measured_against(scene, sq, profiles[spid].columns[sq][keep]), floor)
             shares[pid, q] = rms(e.error[keep]), rms(scale)
     return shares
@@ -489,7 +496,7 @@ def within_estimates(scene: Scene, a: dict, err_a: dict, b: dict, err_b: dict, e
         for q in prof.names[3:]:
             diff = (prof.columns[q] - b[pid].columns[q])[keep]
             bound = (err_a[pid][f"{q}{ERROR_SUFFIX}"] + err_b[pid][f"{q}{ERROR_SUFFIX}"])[keep]
-            floor = max(given.get(q, 0.0), negligible(a, q), negligible(b, q), np.finfo(float).tiny)
+            floor = max(size_floor(q, given, a, b), np.finfo(float).tiny)
             ratio = rms(diff) / max(rms(bound), floor)
             rows.append((pid, q, ratio, ratio > 1.0))
     return rows
