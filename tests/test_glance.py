@@ -14,6 +14,7 @@ from pathlib import Path
 
 import pytest
 import tolerances as tol
+from terminal import with_ctrl_c
 
 from contactcore import SceneError, SolverError, health, load_scene, make_law, sample_profiles, scene_from_dict
 from contactcore.laws import CoulombLaw
@@ -33,7 +34,8 @@ def _interrupt(args: list[str], out: Path, sig: int = signal.SIGINT) -> subproce
     its own, wait for its first progress line, send ``sig`` to the whole
     group (as a terminal's Ctrl-C does SIGINT: pool workers too), collect its end."""
     proc = subprocess.Popen([sys.executable, "-m", "verification", *args, "--out", str(out)], cwd=ROOT,
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True)
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True,
+                            preexec_fn=with_ctrl_c)
     seen = []
     for line in proc.stderr:
         seen.append(line)

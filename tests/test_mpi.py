@@ -14,6 +14,7 @@ import numpy as np
 import pytest
 
 import tolerances as tol
+from terminal import with_ctrl_c
 from contactcore import LineInterface, Support, load_scene
 from contactcore.scene_files import scene_toml
 from verification.closed_forms import interface_patch
@@ -358,7 +359,7 @@ def _interrupt_mpirun(args: list, out: Path, scratch: Path, sig: int) -> subproc
     proc = subprocess.Popen([shutil.which("mpirun"), "--allow-run-as-root", "-n", "2", sys.executable,
                              *map(str, args), "--out", str(out)], cwd=ROOT, text=True, stdin=subprocess.DEVNULL,
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, env={**env, "TMPDIR": str(scratch)},
-                            start_new_session=True)
+                            start_new_session=True, preexec_fn=with_ctrl_c)
     seen = []
     for line in proc.stderr:
         seen.append(line)

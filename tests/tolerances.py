@@ -961,3 +961,10 @@ CLIPPED_CORNER_PEAK = 1.5
 #: largest, measured 4.6e-4 at h = 0.1 (2026-11-27); when fe held that
 #: body at the point the two differed by 0.98.  Ten times the measured.
 CORNER_SUPPORT_AGREE = 5e-3
+
+#: A profile's scale is hypot(its values, the round-off floor
+#: agreement.negligible sets, 1e-8 of them): that floor moves it by
+#: (1e-8)²/2 relative, below a double's last digit or at it, so a scale
+#: compared with the values' own RMS agrees to the last few digits, not
+#: bit for bit (it differed in the 16th digit on an AMD EPYC machine).
+FLOORED_SCALE = 1e-12
