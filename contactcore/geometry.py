@@ -4,7 +4,11 @@
 
 * straight line through ``p`` with unit normal ``n``: ``φ(x) = n·(x − p)``;
 * circle of centre ``c`` and radius ``R`` (the disc inside is the ``−`` body):
-  ``φ(x) = |x − c| − R``.
+  ``φ(x) = |x − c| − R``;
+* any level set (built in code): ``φ`` and ``∇φ`` given as callables.
+
+Whether Γ is straight is read from its geometry (``straight_in``), not from
+the class it was given as: a level set whose zero set is a line is straight.
 
 The unit normal ``n = ∇φ/|∇φ|`` points from − into +; the tangent is
 ``t = (n_y, −n_x)`` (docs/scenes.md).
@@ -16,6 +20,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from . import tolerances as tol
 from .errors import SceneError
 
 Point = tuple[float, float]
@@ -165,6 +170,10 @@ class LineInterface:
         """The distance to Γ, signed as φ: φ itself (a unit normal)."""
         return self.phi(x)
 
+    def straight_in(self, domain: Domain) -> bool:
+        """A line is straight."""
+        return True
+
     def chord(self, domain: Domain) -> np.ndarray | None:
         """The two end points of Γ ∩ domain, ordered along ``t``; None if it
         misses (equal points if it only touches a corner or a tangent).
@@ -225,12 +234,26 @@ class CircleInterface:
         """The distance to Γ, signed as φ: φ itself."""
         return self.phi(x)
 
+    def straight_in(self, domain: Domain) -> bool:
+        """A circle is curved."""
+        return False
+
     def points_at_angles(self, theta: np.ndarray) -> np.ndarray:
         return np.column_stack([self.centre[0] + self.radius * np.cos(theta),
                                 self.centre[1] + self.radius * np.sin(theta)])
 
     def minus_area(self, domain: Domain) -> float:
         return float(np.pi * self.radius ** 2)
+
+
+#: LevelSetInterface.points_in looks for Γ on this many lines each way across
+#: the domain's bounding box, sampled at this many intervals (a piece of Γ
+#: between two lines and two samples, 1/32 of the box across, is missed),
+#: and bisects each sign change this many times (2^-52 of an interval:
+#: round-off).
+GAMMA_SEARCH_LINES = 32
+GAMMA_SEARCH_SAMPLES = 64
+GAMMA_BISECTIONS = 52
 
 
 @dataclass(frozen=True)
@@ -257,6 +280,40 @@ class LevelSetInterface:
         p = _as_points(x)
         with np.errstate(divide="ignore"):  # |∇φ| = 0 (a centre of φ = r² − R²): infinitely far, to first order
             return self.phi(p) / np.linalg.norm(np.asarray(self.grad_fn(p), float).reshape(-1, 2), axis=1)
+
+    def points_in(self, domain: Domain) -> np.ndarray:
+        """Points of Γ inside ``domain`` (m, 2): where φ changes sign along
+        GAMMA_SEARCH_LINES lines each way across the domain's bounding box
+        (GAMMA_SEARCH_SAMPLES samples each), bisected to round-off."""
+        lo, hi = _bounding_box(domain)
+        u = lo[None] + (np.arange(GAMMA_SEARCH_LINES)[:, None] + 0.5) / GAMMA_SEARCH_LINES * (hi - lo)[None]
+        a = np.concatenate([np.column_stack([np.full(len(u), lo[0]), u[:, 1]]),
+                            np.column_stack([u[:, 0], np.full(len(u), lo[1])])])
+        b = np.concatenate([np.column_stack([np.full(len(u), hi[0]), u[:, 1]]),
+                            np.column_stack([u[:, 0], np.full(len(u), hi[1])])])
+        t = np.linspace(0.0, 1.0, GAMMA_SEARCH_SAMPLES + 1)
+        side = self.phi((a[:, None] + t[None, :, None] * (b - a)[:, None]).reshape(-1, 2)).reshape(len(a), -1) > 0
+        line, k = np.nonzero(side[:, :-1] != side[:, 1:])
+        a, d, before = a[line], (b - a)[line], side[line, k]
+        t_lo, t_hi = t[k], t[k + 1]
+        for _ in range(GAMMA_BISECTIONS):
+            mid = (t_lo + t_hi) / 2
+            same = (self.phi(a + mid[:, None] * d) > 0) == before
+            t_lo, t_hi = np.where(same, mid, t_lo), np.where(same, t_hi, mid)
+        x = a + t_hi[:, None] * d
+        return x[domain.contains(x)]
+
+    def straight_in(self, domain: Domain) -> bool:
+        """Whether Γ ∩ ``domain`` is straight: its unit normal is the same,
+        within STRAIGHT_NORMAL, at every point :meth:`points_in` finds (a
+        connected curve of constant normal is a segment; one φ cannot
+        keep its normal across two parallel lines, its sign alternates).
+        Fewer than two points found: Γ is too small to tell, curved."""
+        points = self.points_in(domain)
+        if len(points) < 2:
+            return False
+        n = self.normals(points)
+        return bool(np.all(np.isfinite(n)) and np.max(np.linalg.norm(n - n[0], axis=1)) <= tol.STRAIGHT_NORMAL)
 
     def minus_area(self, domain: Domain, samples: int = 400) -> float:
         """The − side's area, estimated on a grid of samples² points."""

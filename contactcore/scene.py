@@ -258,6 +258,10 @@ class Scene:
         before anyone trusts its interface tractions (the thresholds and
         their measurements are in contactcore.tolerances):
 
+        Γ is curved unless its geometry is straight (``straight_in``: a
+        line, or a level set whose normal is the same along Γ), whatever
+        class it was given as.
+
         * springs stiff enough to lock the jump of an unfitted method on a
           curved Γ (not ``fitted``): ``k h / E > LOCKING_WARN``, E the softer
           modulus (the body whose deformation the springs over-constrain);
@@ -273,7 +277,7 @@ class Scene:
         law, itf = self.law, self.interface
         if not hasattr(law, "kN"):  # enforced exactly: no springs
             return warnings
-        soft, curved = self.softer_modulus, not isinstance(itf, LineInterface)
+        soft, curved = self.softer_modulus, not itf.straight_in(self.domain)
         alpha = law.stiffness_scale * h / soft
         if not fitted and curved and alpha > tol.LOCKING_WARN:
             warnings.append(f"interface springs of {alpha:.1e}·E/h, E the softer body's (above "

@@ -64,6 +64,18 @@ NODE_ON_INTERFACE = 1e-14
 #: thinner than about four cells may see both of its sides in one patch.
 RECOVERY_RINGS = 2
 
+#: Γ is straight (contactcore.geometry: straight_in) when its unit normals
+#: at the points found along it differ by at most this (in length: the angle
+#: between them, in radians).  A Γ that turns by θ over its length ℓ departs
+#: from its chord by at most ℓ θ/8: at 1e-9 that is below GEOMETRY (the
+#: scene's own geometric tolerance), so a straight Γ given as a level set is
+#: a line in everything the scene can tell; a line's normals from an
+#: analytic ∇φ differ by round-off (~1e-16), 1e7 times less.  Curved Γ turn
+#: by far more: the circles in use by 2π, a Γ of curvature radius 1e6 L by
+#: 1e-6.  Straight Γ get the line's warnings (no penalty locking, no
+#: amplified profile tractions), curved ones the curve's.
+STRAIGHT_NORMAL = 1e-9
+
 #: The smaller of the two bodies must cover at least this fraction of the
 #: domain's area, otherwise the interface "only touches" the domain.
 MIN_BODY_AREA_FRACTION = 1e-8
@@ -172,6 +184,45 @@ SLIVER_EVAL_DEPTH = 0.1
 #: order); the shipped scenes stay below (B's rod 0.39 at h = 0.1 and 0.30
 #: at 0.05, where xfem P2 agrees with fe; C's 0.18; A's 0).
 THIN_BODY_CUT_SHARE = 0.5
+
+# ----- comparing methods' profiles (verification.agreement) -----------------
+
+#: Samples closer than this fraction of the scene's diameter L to a singular
+#: point are left out by default (verification.agreement.default_exclusion):
+#: 0.14, 0.28 and 0.36 m on scenes A, B and C, about three cells of the
+#: paper's grids (0.053, 0.1 and 0.1 m), where the corners' boundary layers
+#: live.  The tests' placements (tests/placements.py) take the same fraction
+#: of the domain's shorter side.
+EXCLUDE_FRACTION = 0.1
+
+#: An exactly enforced law's gap is measured against its own values floored
+#: by this share of the scene's displacement scale U = L τ/E, E the softer
+#: body's modulus (verification.agreement.displacement_scale).  Where Γ is
+#: closed (g_N) and sticking (g_T) the exact gap is zero, and the run's is
+#: the enforcement's residue (Nitsche's τ/γ: 1.7e-12 m on scene A,
+#: U = 5e-7 m; 1.9e-9 m on the README's wedge with μ = 0.5, U = 5e-6 m;
+#: fe P2 at h = 0.05, 2026-11-26), whose share of its own size has no
+#: meaning: the wedge's methods differed by 6.9e3 % of it.  A tenth of U
+#: leaves a gap that Γ opens or slips by its own measure where it is larger
+#: (C-coulomb's largest g_N, g_T: 0.16 and 0.27 U).  The penalty's gaps are
+#: t/k, the answer itself, and keep their own measure.
+EXACT_GAP_FLOOR = 0.1
+
+#: An estimated error, or two methods' difference, below this share of the
+#: largest value of its kind on the run's profiles (any stress or traction;
+#: any displacement or gap) is round-off (verification.agreement.negligible):
+#: the systems lose up to 8 digits (condition estimates ~1e8,
+#: tests/tolerances.py PATCH_ROUNDOFF).  A quantity that is zero in the
+#: answer (σxy of a bonded patch) has no scale of its own: measured against
+#: its own round-off, fe's and xfem's 1e-14 agreement read as 100 % errors
+#: "beyond the estimates".
+NEGLIGIBLE_SHARE = 1e-8
+
+#: Relative measures within this of each other name the same worst
+#: (verification.agreement.first_largest): a penalty law's t = k g makes
+#: g_T's and t_T's shares equal but for round-off (they differed in the
+#: 15th digit), and the name must not follow it.
+WORST_TIE = 1e-9
 
 # ----- nonlinear interface laws and Newton ------------------------------------
 

@@ -15,16 +15,12 @@ import dataclasses
 import numpy as np
 
 from contactcore import load_scene
+from contactcore.tolerances import EXCLUDE_FRACTION
 from contactcore.geometry import CircleInterface, LineInterface
 from contactcore.scene import LineProfile
 from verification.agreement import kept_samples
 
 import tolerances as tol
-
-#: Samples nearer than this fraction of the domain's shorter side to a
-#: corner or to an end of Γ are left out (issue 22: 0.1 on scene A).
-EXCLUDE_FRACTION = 0.1
-
 
 def inclined_A(angle: float, height: float):
     """Scene A with Γ through ``(0.5, height)`` at ``angle`` degrees to x."""
@@ -46,6 +42,8 @@ def circle_C(centre, radius: float):
 
 
 def exclusion(scene) -> float:
+    """Samples nearer than EXCLUDE_FRACTION of the domain's shorter side to a
+    corner or to an end of Γ are left out (issue 22: 0.1 on scene A)."""
     return EXCLUDE_FRACTION * float(min(scene.domain.size))
 
 

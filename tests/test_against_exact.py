@@ -10,6 +10,7 @@ import tolerances as tol
 from contactcore import estimate as est
 from contactcore import load_scene, make_law, sample_profiles, scene_text
 from contactcore.laws import STATUS_NAMES
+from contactcore.tolerances import EXCLUDE_FRACTION
 from verification import files, methods
 from verification import run as run_driver
 from verification.__main__ import main
@@ -23,7 +24,7 @@ H = 0.1
 #: Scene C's rectangle [0, 2] x [0, 3] (contactcore/scenes/C-coulomb.toml):
 #: its corners are the singular points, Γ (a circle) meets no edge.
 C_CORNERS = np.array([(0.0, 0.0), (2.0, 0.0), (2.0, 3.0), (0.0, 3.0)])
-C_EXCLUDE = 0.1 * np.hypot(2.0, 3.0)  # docs/verification.md: 0.1 of the diameter
+C_EXCLUDE = EXCLUDE_FRACTION * np.hypot(2.0, 3.0)  # docs/verification.md: a share of the diameter
 
 
 @pytest.fixture(scope="module")

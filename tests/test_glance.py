@@ -409,6 +409,7 @@ def test_a_janitor_whose_readers_are_gone_still_settles(tmp_path):
     and its process gone (the pipe for its byte closed): the janitor cannot
     say ``interrupted``, and still puts the earlier run back and removes
     the build folder at its pipe's end."""
+    from verification import janitor
     from verification.janitor import Build
     path, tmp = tmp_path / "out", tmp_path / ".out.abc"
     for folder, text in ((path, "earlier"), (tmp, "new")):
@@ -421,10 +422,11 @@ def test_a_janitor_whose_readers_are_gone_still_settles(tmp_path):
     stderr_read, stderr_write = os.pipe()
     os.close(stderr_read)
     os.close(from_janitor)
+    token = janitor._token()  # its process gone before taking it: the janitor takes it, and cannot say the line
     proc = subprocess.Popen([sys.executable, str(ROOT / "verification" / "janitor.py"), str(signals), str(said),
-                             str(path), str(tmp)], pass_fds=(signals, said), stdin=subprocess.DEVNULL,
-                            stdout=subprocess.DEVNULL, stderr=stderr_write)
-    for fd in (signals, said, stderr_write):
+                             str(token), str(path), str(tmp)], pass_fds=(signals, said, token),
+                            stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=stderr_write)
+    for fd in (signals, said, token, stderr_write):
         os.close(fd)
     os.write(to_janitor, bytes([signal.SIGTERM]))
     os.close(to_janitor)

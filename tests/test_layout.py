@@ -155,3 +155,28 @@ def test_every_test_tolerance_is_named_in_tests_tolerances(path):
     """A bound a test compares against is a constant of tests/tolerances.py
     with its reason, not a literal in the test."""
     assert _inline_tolerances(ast.parse(path.read_text())) == []
+
+
+def _assigned(path: Path) -> set[str]:
+    """The names a module assigns at its top level."""
+    return {x.id for n in ast.parse(path.read_text()).body if isinstance(n, (ast.Assign, ast.AnnAssign))
+            for t in (n.targets if isinstance(n, ast.Assign) else [n.target]) for x in ast.walk(t)
+            if isinstance(x, ast.Name)}
+
+
+def test_a_library_tolerance_is_defined_once_in_contactcore_tolerances():
+    """The comparison's tolerances are contactcore.tolerances' (with their
+    reasons), still importable from verification.agreement, and no other
+    module of the project or helper of the tests assigns a name that
+    contactcore/tolerances.py defines (a second copy drifts apart)."""
+    import contactcore.tolerances as lib
+    from verification import agreement
+
+    names = ("EXCLUDE_FRACTION", "EXACT_GAP_FLOOR", "NEGLIGIBLE_SHARE", "WORST_TIE")
+    assert set(names) <= _assigned(ROOT / "contactcore" / "tolerances.py")
+    assert [n for n in names if getattr(agreement, n) is not getattr(lib, n)] == []
+    defined = _assigned(ROOT / "contactcore" / "tolerances.py")
+    copies = sorted(f"{p.relative_to(ROOT)}:{name}" for package in (*LAYER, "tests")
+                    for p in (ROOT / package).rglob("*.py") if p.name != "tolerances.py"
+                    for name in _assigned(p) & defined)
+    assert copies == []

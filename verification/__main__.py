@@ -510,14 +510,15 @@ def _raise_terminated(signum, frame) -> None:
 
 
 def _end_now(signum, frame) -> None:
-    """Rank 0 under mpirun, asked to end: the result folder under way
-    discarded (:func:`files.discard_unfinished`), one line (its janitor's,
-    if one watches: :mod:`verification.janitor`), exit now, without
-    unwinding: the way out would meet collectives (a MUMPS factorisation's
-    end is one) that the other ranks never join."""
-    files.discard_unfinished()
+    """Rank 0 under mpirun, asked to end: one line (its own, or its
+    janitor's if the janitor took the token first: :func:`janitor.told`),
+    first, as mpirun forwards it only while this process lives; the result
+    folder under way discarded (:func:`files.discard_unfinished`); exit
+    now, without unwinding: the way out would meet collectives (a MUMPS
+    factorisation's end is one) that the other ranks never join."""
     if not janitor.told(signum):
         print(janitor.INTERRUPTED_LINE, file=sys.stderr, flush=True)
+    files.discard_unfinished()
     sys.stdout.flush()
     os._exit(INTERRUPTED)
 

@@ -33,37 +33,10 @@ from contactcore.scene import DISPLACEMENT_QUANTITIES, STRESS_QUANTITIES, Units
 from contactcore.estimate import ERROR_SUFFIX, far_from_singular, rms, singular_regions
 from contactcore.exact import is_exact
 from contactcore.scaling import Scales
+# The comparison's tolerances, with their reasons, are contactcore.tolerances'
+# and stay importable from here (tests and users import them from this module).
+from contactcore.tolerances import EXACT_GAP_FLOOR, EXCLUDE_FRACTION, NEGLIGIBLE_SHARE, WORST_TIE  # noqa: F401
 
-
-#: Samples closer than this fraction of the scene's diameter L to a singular
-#: point are left out by default: 0.14, 0.28 and 0.36 m on scenes A, B and
-#: C, about three cells of the paper's grids (0.053, 0.1 and 0.1 m), where
-#: the corners' boundary layers live.
-EXCLUDE_FRACTION = 0.1
-
-
-#: An exactly enforced law's gap is measured against its own values floored
-#: by this share of the scene's displacement scale U = L τ/E, E the softer
-#: body's modulus (:func:`displacement_scale`).  Where Γ is closed (g_N) and
-#: sticking (g_T) the exact gap is zero, and the run's is the enforcement's
-#: residue (Nitsche's τ/γ: 1.7e-12 m on scene A, U = 5e-7 m; 1.9e-9 m on
-#: the README's wedge with μ = 0.5, U = 5e-6 m; fe P2 at h = 0.05,
-#: 2026-11-26), whose share of its own size has no meaning: the wedge's
-#: methods differed by 6.9e3 % of it.  A tenth of U leaves a gap that Γ
-#: opens or slips by its own measure where it is larger (C-coulomb's
-#: largest g_N, g_T: 0.16 and 0.27 U).  The penalty's gaps are t/k, the
-#: answer itself, and keep their own measure.
-EXACT_GAP_FLOOR = 0.1
-
-
-#: An estimated error, or two methods' difference, below this share of the
-#: largest value of its kind on the run's profiles (any stress or traction;
-#: any displacement or gap) is round-off: the systems lose up to 8 digits
-#: (condition estimates ~1e8, tests/tolerances.py PATCH_ROUNDOFF).  A
-#: quantity that is zero in the answer (σxy of a bonded patch) has no
-#: scale of its own: measured against its own round-off, fe's and xfem's
-#: 1e-14 agreement read as 100 % errors "beyond the estimates".
-NEGLIGIBLE_SHARE = 1e-8
 
 #: The kinds whose largest value floors a quantity's scale (:func:`negligible`).
 KINDS = (STRESS_QUANTITIES + ("tN", "tT"), DISPLACEMENT_QUANTITIES + ("gN", "gT"))
@@ -215,13 +188,6 @@ def estimated_shares(scene: Scene, profiles: dict, est, exclude: float, floors: 
             scale = np.hypot(measured_against(scene, sq, profiles[spid].columns[sq][keep]), floor)
             shares[pid, q] = rms(e.error[keep]), rms(scale)
     return shares
-
-
-#: Relative measures within this of each other name the same worst: a
-#: penalty law's t = k g makes g_T's and t_T's shares equal but for
-#: round-off (they differed in the 15th digit), and the name must not
-#: follow it.
-WORST_TIE = 1e-9
 
 
 def first_largest(items, key):

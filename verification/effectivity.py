@@ -230,6 +230,7 @@ def scene_table(scene_names, h: float, ref_h: float, out: Path, levels: int = 2,
         raise SceneError("--ref-h", f"{ref_h:g} is not finer than the finest run's h, {finest:g}: the truth "
                          "must be finer than every run it measures")
     rows, scenes = [], [load_scene(name) for name in scene_names]  # every scene read before any solve
+    units = files.shared_units(scenes, "--scene")  # h's one unit in units.json
     if not allow_large:
         check_budgets(scenes, h, ref_h, levels)
     for scene in scenes:
@@ -245,8 +246,8 @@ def scene_table(scene_names, h: float, ref_h: float, out: Path, levels: int = 2,
             + files.markdown_table(rows, [*columns[:8], "unit", "effectivity", "warned"]))
     files.write_csv(out / "effectivity.csv", rows, columns)
     files.write_text(out / "effectivity.md", text)
-    if len(scenes) == 1:  # the units of effectivity.csv's columns (h's): several scenes' may differ
+    if len(scenes) == 1:  # the scene measured, as efficiency and study keep theirs
         files.write_text(out / files.SCENE_FILE, scene_text(scene_names[0]))
     files.write_json(out / "run.json", {**files.provenance(list(argv)), "scenes": list(scene_names), "h": h,
-                                        "ref_h": ref_h, "levels": levels})
+                                        "ref_h": ref_h, "levels": levels, **files.run_units(units)})
     return text

@@ -17,7 +17,7 @@ import tempfile
 from contextlib import contextmanager
 from pathlib import Path
 
-from contactcore import CircleInterface, ContactError, ProfileData, load_scene
+from contactcore import CircleInterface, ContactError, ProfileData, SceneError, load_scene
 from contactcore.profiles import sample_points
 from contactcore.scene import Units
 from contactcore.estimate import ERROR_SUFFIX
@@ -344,17 +344,59 @@ def scene_units(folder: Path) -> dict[str, tuple[Units, str | None]]:
     return found
 
 
+#: The key of ``run.json`` under which a table over several scenes
+#: (``timing``, ``effectivity``, ``scaling``) records the units its rows
+#: share (:func:`shared_units`), for :func:`write_units`.
+RUN_UNITS = "units"
+
+
+def shared_units(scenes, field: str) -> Units:
+    """The :class:`~contactcore.scene.Units` every one of ``scenes`` is in
+    (SI for none).  A table over several scenes (timing.csv,
+    effectivity.csv) has one unit per column (``units.json``), so scenes in
+    different units are refused before any solve, naming each scene's, as
+    an error of the option ``field`` that named them."""
+    found = {scene.units for scene in scenes}
+    if len(found) > 1:
+        said = ", ".join(f"{scene.name} in {scene.units.length} and {scene.units.stress}" for scene in scenes)
+        raise SceneError(field, f"the scenes are in different units ({said}): one table gives each column one "
+                         "unit (units.json), so run the scenes of each set of units separately")
+    return found.pop() if found else Units()
+
+
+def run_units(units: Units) -> dict:
+    """``run.json``'s entry for the units a table's rows share (:data:`RUN_UNITS`)."""
+    return {RUN_UNITS: {"length": units.length, "stress": units.stress}}
+
+
+def _recorded_units(folder: Path) -> dict[Path, Units]:
+    """The units each ``run.json`` under ``folder`` records for its folder's
+    tables (:func:`run_units`), by that folder."""
+    found = {}
+    for manifest in Path(folder).rglob(MANIFEST):
+        try:
+            given = json.loads(manifest.read_text()).get(RUN_UNITS)
+        except (OSError, ValueError, AttributeError):
+            continue
+        if isinstance(given, dict):
+            found[manifest.parent] = Units(**given)
+    return found
+
+
 def write_units(folder: Path) -> Path:
     """``folder/units.json``: for every CSV under ``folder`` (by its path
     relative to it), the unit of each of its columns that has one
-    (:func:`column_unit` in the units of its scene, SI's outside a scene's
-    folder; ``s``'s from :func:`scene_units`)."""
-    units, scenes = {}, scene_units(folder)
+    (:func:`column_unit` in the units of its scene; outside a scene's
+    folder, those the nearest ``run.json`` above it records for a table
+    over several scenes, :func:`run_units`, else SI's; ``s``'s from
+    :func:`scene_units`)."""
+    units, scenes, recorded = {}, scene_units(folder), _recorded_units(folder)
     for path in sorted(Path(folder).rglob("*.csv")):
         with open(path, newline="") as fh:
             header = next(csv.reader(fh), [])
         name = path.relative_to(folder).as_posix()
-        own, s = scenes.get(name, (Units(), None))
+        table = next((recorded[d] for d in path.parents if d in recorded), Units())
+        own, s = scenes.get(name, (table, None))
         found = {c: s if c == "s" else column_unit(c, own) for c in header}
         units[name] = {c: unit for c, unit in found.items() if unit}
     return write_json(Path(folder) / UNITS_FILE, units)

@@ -12,10 +12,13 @@ run its handler.  So rank 0 starts a janitor (:func:`watch`), a process of
 a session of its own, which mpirun does not signal.  Python's C signal
 handler writes each signal's number to a pipe to the janitor the moment
 the signal arrives, whatever rank 0 is doing (:func:`signal.set_wakeup_fd`):
-at the first the janitor says ``interrupted`` (through rank 0's stderr,
-which mpirun forwards while rank 0 lives); at the pipe's end (rank 0's,
-however it came) it settles the folder (:meth:`Build.settle`).  It
-imports nothing but the standard library, so that it starts at once.
+at the first, the line ``interrupted`` is said once, through rank 0's
+stderr, which mpirun forwards only while rank 0 lives, by whichever of
+the two takes the one byte of a token pipe first (a pipe's read is
+atomic): rank 0 itself when its handler runs (:func:`told`), the janitor
+when rank 0 is stuck in compiled code.  At the pipe's end (rank 0's,
+however it came) the janitor settles the folder (:meth:`Build.settle`).
+It imports nothing but the standard library, so that it starts at once.
 """
 from __future__ import annotations
 
@@ -55,12 +58,20 @@ class Build:
             shutil.rmtree(self.tmp)
 
 
-#: How long a rank 0 that ends by itself waits for its janitor's line:
-#: well within the second mpirun leaves it.
-SAID_WAIT = 0.5
+#: How long a rank 0 that ends by itself waits for the line of a janitor
+#: that took the token (:func:`told`): the janitor is running then, and
+#: says it in microseconds; mpirun kills rank 0 a second after its SIGTERM
+#: whatever this is, so the bound only ends the wait where no mpirun
+#: would (a janitor stopped, never answering).  It was the whole wait
+#: before the token: 0.5 s, and a janitor not scheduled within it (a
+#: loaded machine) said the line after rank 0 had gone, and mpirun, which
+#: forwards only a live rank's output, lost it (measured with the
+#: janitor delayed 0.7, 1.5 and 3 s: no ``interrupted``, 2026-11-27).
+SAID_WAIT = 5.0
 
-#: This process's janitor and its ends of the pipes to and from it, once one watches.
-_watching: tuple[subprocess.Popen, int, int] | None = None
+#: This process's janitor, its ends of the pipes to and from it, and its
+#: end of the token pipe, once one watches.
+_watching: tuple[subprocess.Popen, int, int, int] | None = None
 #: Whether a janitor that no longer watches said the line.
 _said = False
 
@@ -72,20 +83,39 @@ def watch(build: Build) -> None:
     global _watching
     signals, to_janitor = os.pipe()
     from_janitor, said = os.pipe()
+    token = _token()
     try:
-        process = subprocess.Popen([sys.executable, __file__, str(signals), str(said), str(build.path.absolute()),
-                                    str(build.tmp.absolute())], pass_fds=(signals, said), stdin=subprocess.DEVNULL,
-                                   start_new_session=True)
+        process = subprocess.Popen([sys.executable, __file__, str(signals), str(said), str(token),
+                                    str(build.path.absolute()), str(build.tmp.absolute())],
+                                   pass_fds=(signals, said, token), stdin=subprocess.DEVNULL, start_new_session=True)
     except BaseException:
         os.close(to_janitor)
         os.close(from_janitor)
+        os.close(token)
         raise
     finally:
         os.close(signals)
         os.close(said)
     os.set_blocking(to_janitor, False)
-    _watching = process, to_janitor, from_janitor
+    _watching = process, to_janitor, from_janitor, token
     signal.set_wakeup_fd(to_janitor)
+
+
+def _token() -> int:
+    """The read end of a pipe that holds one byte, its write end closed: of
+    the processes that read it, one gets the byte, the others its end."""
+    token, put = os.pipe()
+    os.write(put, b"\0")
+    os.close(put)
+    return token
+
+
+def _take(token: int) -> bool:
+    """Whether this process took the token's byte (pipe ``token``,
+    :func:`_token`): the right, and the duty, to say the line."""
+    with suppress(OSError):
+        return os.read(token, 1) != b""
+    return False
 
 
 def watching() -> bool:
@@ -98,9 +128,10 @@ def unwatch() -> None:
     the janitor; it ends (the end of its pipe), and whether it said the
     line (a signal came just before) is kept for :func:`told`."""
     global _watching, _said
-    process, to_janitor, from_janitor = _watching
+    process, to_janitor, from_janitor, token = _watching
     signal.set_wakeup_fd(-1)
     os.close(to_janitor)
+    os.close(token)
     _said = os.read(from_janitor, 1) != b""  # its byte, or the end of the pipe as it ends
     os.close(from_janitor)
     process.wait()
@@ -108,13 +139,18 @@ def unwatch() -> None:
 
 
 def told(signum: int) -> bool:
-    """Tell this process's janitor that it was asked to end by ``signum``
-    and wait (at most :data:`SAID_WAIT`) for its line, so that the line is
-    out before this process ends; whether a janitor says it (or said it:
-    a janitor that is gone, killed by someone, may have)."""
+    """Whether this process's janitor says the line for this process, asked
+    to end by ``signum`` (or said it: a janitor that no longer watches, or
+    one that is gone, killed by someone, may have): False if this process
+    took the token (:func:`_take`), and must say it itself, now, while
+    mpirun forwards its output.  A janitor that took it is waited for (at
+    most :data:`SAID_WAIT`), so that the line is out before this process
+    ends."""
     if _watching is None:
         return _said
-    process, to_janitor, from_janitor = _watching
+    process, to_janitor, from_janitor, token = _watching
+    if _take(token):
+        return False
     if process.poll() is not None:  # gone: a write to its pipe would raise SIGPIPE, on which PETSc aborts
         return _heard(from_janitor)
     with suppress(OSError):
@@ -131,17 +167,19 @@ def _heard(from_janitor: int) -> bool:
     return False
 
 
-def janitor(signals: int, said: int, build: Build) -> None:
-    """Read the signals from pipe ``signals``: at the first, one line (mpirun
-    forwards it while the rank lives), then a byte to pipe ``said``
-    (:func:`_say`); at the pipe's end (its writer's), or whatever ends the
-    reading, settle ``build``."""
+def janitor(signals: int, said: int, token: int, build: Build) -> None:
+    """Read the signals from pipe ``signals``: at the first, if this janitor
+    takes the token (pipe ``token``, :func:`_take`; else its process has,
+    and says the line itself), one line (mpirun forwards it while the rank
+    lives), then a byte to pipe ``said`` (:func:`_say`); at the pipe's end
+    (its writer's), or whatever ends the reading, settle ``build``."""
     first = True
     try:
         while os.read(signals, 64):
             if first:
                 first = False
-                _say(said)
+                if _take(token):
+                    _say(said)
     finally:
         build.settle()
 
@@ -157,4 +195,4 @@ def _say(said: int) -> None:
 
 
 if __name__ == "__main__":
-    janitor(int(sys.argv[1]), int(sys.argv[2]), Build(Path(sys.argv[3]), Path(sys.argv[4])))
+    janitor(int(sys.argv[1]), int(sys.argv[2]), int(sys.argv[3]), Build(Path(sys.argv[4]), Path(sys.argv[5])))

@@ -24,7 +24,7 @@ import subprocess
 import sys
 from pathlib import Path
 
-from contactcore import ContactError
+from contactcore import ContactError, load_scene
 
 from . import files
 from .timing import COLUMNS as TIMING_COLUMNS
@@ -96,7 +96,7 @@ def speedups(rows: list[dict]) -> list[dict]:
 def scaling(scene: str, method_names, degrees, hs, ranks, out: Path, argv=()) -> list[dict]:
     """The ladder on each rank count of ``ranks`` (module doc)."""
     out = Path(out)
-    rows = []
+    rows, units = [], load_scene(scene).units  # scaling.csv's h, in units.json (read before any run)
     for k in ranks:
         rows += [{"ranks": k, **row} for row in _timing_run(k, scene, method_names, degrees, hs, out / f"ranks_{k}")]
     rows = speedups(rows)
@@ -111,5 +111,5 @@ def scaling(scene: str, method_names, degrees, hs, ranks, out: Path, argv=()) ->
                                                             "mesh (s)", "assembly (s)", "solve (s)", "total (s)",
                                                             "speed-up mesh", "speed-up assembly", "speed-up solve",
                                                             "speed-up total"]))
-    files.write_json(out / "run.json", files.provenance(list(argv)))
+    files.write_json(out / "run.json", {**files.provenance(list(argv)), **files.run_units(units)})
     return rows

@@ -51,10 +51,14 @@ COLUMNS = ["scene", "method", "degree", "h", "dofs", "mesh", "assembly", "solve"
 def timing(scene_names: list[str], method_names: list[str], degrees: list[int], hs: list[float], out: Path,
            argv=()) -> list[dict]:
     """The ladder of every scene, method and degree, in this one process
-    (a linear scene beside its nonlinear variant compares like with like)."""
+    (a linear scene beside its nonlinear variant compares like with like).
+    Every scene is read before any solve; their ``h`` share one length unit
+    (:func:`files.shared_units`: scenes in different units are refused),
+    which ``run.json`` records for ``units.json``."""
     rows = []
-    for scene_name in [scene_names] if isinstance(scene_names, str) else scene_names:
-        scene = load_scene(scene_name)
+    scenes = [load_scene(name) for name in ([scene_names] if isinstance(scene_names, str) else scene_names)]
+    units = files.shared_units(scenes, "scene")
+    for scene in scenes:
         for name in methods.expand(method_names):
             solve = methods.solver(name)
             for degree in degrees:
@@ -72,7 +76,7 @@ def timing(scene_names: list[str], method_names: list[str], degrees: list[int], 
     out = Path(out)
     files.write_csv(out / "timing.csv", rows, COLUMNS)
     files.write_text(out / "timing.md", "# Wall time against DOFs\n\n" + files.markdown_table(
-        rows, COLUMNS[:-1], ["scene", "method", "degree", "h", "DOFs", "mesh (s)", "assembly (s)", "solve (s)",
-                             "total (s)", "solves", "factorisations"]))
-    files.write_json(out / "run.json", files.provenance(list(argv)))
+        rows, COLUMNS[:-1], ["scene", "method", "degree", files.labelled("h", "h", units), "DOFs", "mesh (s)",
+                             "assembly (s)", "solve (s)", "total (s)", "solves", "factorisations"]))
+    files.write_json(out / "run.json", {**files.provenance(list(argv)), **files.run_units(units)})
     return rows
