@@ -30,7 +30,10 @@ displacement's error converges no faster than ``h^{2λ}`` once the
 singular term outweighs the smooth one (pollution: Nitsche & Schatz,
 Math. Comp. 28, 1974), which depends on its coefficient: a displacement,
 gap or penalty traction takes the orders ``[min(p, 2λ), p]``
-(:func:`pollution_order`).  EFGM P2, whose supports are collocated at the
+(:func:`pollution_order`); with two runs of fe or xfem, the part of their
+difference at the scale of the coarse run's cells (:func:`cell_scale_part`),
+their local error, takes ``p`` and only the smooth rest, where the
+pollution lies, the range (:func:`profile_estimates`).  EFGM P2, whose supports are collocated at the
 nodes of a basis that does not interpolate, takes for its bulk
 displacements the order of its supports' defect itself, 2 or ``2λ``
 (:data:`COLLOCATED`, :func:`collocation_order`).  A degree-1 stress read at a point converges at its
