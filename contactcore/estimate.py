@@ -30,7 +30,10 @@ displacement's error converges no faster than ``h^{2λ}`` once the
 singular term outweighs the smooth one (pollution: Nitsche & Schatz,
 Math. Comp. 28, 1974), which depends on its coefficient: a displacement,
 gap or penalty traction takes the orders ``[min(p, 2λ), p]``
-(:func:`pollution_order`).  EFGM P2, whose supports are collocated at the
+(:func:`pollution_order`); with two runs of fe or xfem, the part of their
+difference at the scale of the coarse run's cells (:func:`cell_scale_part`),
+their local error, takes ``p`` and only the smooth rest, where the
+pollution lies, the range (:func:`profile_estimates`).  EFGM P2, whose supports are collocated at the
 nodes of a basis that does not interpolate, takes for its bulk
 displacements the order of its supports' defect itself, 2 or ``2λ``
 (:data:`COLLOCATED`, :func:`collocation_order`).  A degree-1 stress read at a point converges at its
@@ -400,12 +403,16 @@ class QuantityEstimate:
     whether it was ``observed`` (three runs) or taken from the orders
     ``theory`` allows (:func:`order_range`; recorded as ``"orders"``, so
     that a user sees why a two-run order is, say, 2.205: the balanced
-    order of ``[1.52, 3]``)."""
+    order of ``[1.52, 3]``).  ``cell_scale``, where the difference of
+    the runs was split (:func:`cell_scale_part`): the share (RMS) of its
+    part at the scale of the coarse run's cells, estimated at the upper
+    order of ``theory`` (recorded as ``"cell_scale"``)."""
 
     error: np.ndarray
     order: float
     observed: bool
     theory: tuple[float, float]
+    cell_scale: float | None = None
 
     @property
     def max(self) -> float:
@@ -416,8 +423,11 @@ class QuantityEstimate:
         return rms(self.error)
 
     def record(self) -> dict:
-        return {"max": self.max, "rms": self.rms, "order": self.order, "observed": self.observed,
-                "orders": [float(t) for t in self.theory]}
+        out = {"max": self.max, "rms": self.rms, "order": self.order, "observed": self.observed,
+               "orders": [float(t) for t in self.theory]}
+        if self.cell_scale is not None:
+            out["cell_scale"] = self.cell_scale
+        return out
 
 
 def observed_order(coarse: np.ndarray, mid: np.ndarray, fine: np.ndarray, ratio: float = 2.0) -> float | None:
@@ -433,8 +443,37 @@ def observed_order(coarse: np.ndarray, mid: np.ndarray, fine: np.ndarray, ratio:
     return float(np.clip(p, *tol.ORDER_RANGE))
 
 
+def cell_scale_part(values: np.ndarray, s: np.ndarray, groups: np.ndarray, width: float) -> np.ndarray:
+    """The part of ``values`` (samples at arc length ``s``) at the scale of
+    a run's cells: ``values`` minus their local linear regression with a
+    Gaussian kernel of standard deviation ``width`` (the coarse run's h),
+    fitted within each group of samples (``groups``: a label per sample,
+    −1 for none: contiguous samples away from singular points, in one
+    body); 0 outside the groups and in a group too short to fit a line
+    through its neighbours (:data:`CELL_SCALE_MIN_SAMPLES`)."""
+    out = np.zeros(len(values))
+    for g in np.unique(groups[groups >= 0]):
+        idx = np.flatnonzero(groups == g)
+        if len(idx) < CELL_SCALE_MIN_SAMPLES:
+            continue
+        si, vi = s[idx], values[idx]
+        w = np.exp(-0.5 * ((si[None, :] - si[:, None]) / width) ** 2)            # (target, sample)
+        d = si[None, :] - si[:, None]
+        s0, s1, s2 = w.sum(1), (w * d).sum(1), (w * d * d).sum(1)
+        t0, t1 = (w * vi[None, :]).sum(1), (w * d * vi[None, :]).sum(1)
+        det = s0 * s2 - s1 * s1
+        smooth = np.where(det > 0, (s2 * t0 - s1 * t1) / np.where(det > 0, det, 1.0), t0 / s0)
+        out[idx] = vi - smooth
+    return out
+
+
+#: The fewest samples in a group through which :func:`cell_scale_part`
+#: fits its local lines (fewer: the whole difference is taken as smooth).
+CELL_SCALE_MIN_SAMPLES = 5
+
+
 def richardson(values: list[np.ndarray], theory: tuple[float, float], ratio: float = 2.0, coarse: bool = False,
-               kept: np.ndarray | None = None) -> QuantityEstimate:
+               kept: np.ndarray | None = None, cells=None) -> QuantityEstimate:
     """The estimate of one quantity from its samples at h, h/2 (and h/4),
     coarse to fine (module doc): the finest run's error, or with
     ``coarse`` the coarsest run's (``(q_{h/2} − q_h) r^p / (r^p − 1)``,
@@ -442,18 +481,59 @@ def richardson(values: list[np.ndarray], theory: tuple[float, float], ratio: flo
     by default): near a singular point the differences shrink at the
     singularity's rate, not the smooth solution's, and would set it.
     Without a third run it is the :func:`balanced_order` of the orders
-    ``theory`` allows (:func:`order_range`)."""
+    ``theory`` allows (:func:`order_range`); with ``cells`` (a function
+    that returns a difference's part at the scale of the coarse run's
+    cells, :func:`cell_scale_part`), that part is estimated at the upper
+    order ``theory[1]`` and the rest at the balanced one: for a range
+    that pollution widened (:func:`profile_estimates`)."""
     kept = slice(None) if kept is None or not np.any(kept) else kept
     p = observed_order(*(v[kept] for v in values[-3:]), ratio=ratio) if len(values) >= 3 else None
     order = balanced_order(*theory, ratio=ratio) if p is None else p
-    diff = np.abs(values[-1] - values[-2])
-    factor = ratio ** order / (ratio ** order - 1) if coarse else 1 / (ratio ** order - 1)
-    return QuantityEstimate(diff * factor, order, p is not None, theory)
+    factor = lambda o: ratio ** o / (ratio ** o - 1) if coarse else 1 / (ratio ** o - 1)  # noqa: E731
+    signed = values[-1] - values[-2]
+    if p is not None or cells is None or theory[0] >= theory[1]:
+        return QuantityEstimate(np.abs(signed) * factor(order), order, p is not None, theory)
+    fine = cells(signed)
+    share = rms(fine[kept]) / rms(signed[kept]) if rms(signed[kept]) > 0 else 0.0
+    error = np.abs((signed - fine) * factor(order) + fine * factor(theory[1]))
+    return QuantityEstimate(error, order, False, theory, float(share))
+
+
+def polluted(quantity: str, degree: int, method: str = "", law=None, switching: bool | None = None,
+             pollution: float = np.inf) -> bool:
+    """Whether :func:`order_range` widened the quantity's orders for
+    pollution (a displacement, gap or penalty traction whose order
+    exceeds ``pollution``), in a method whose error at the scale of its
+    cells converges at that order (not :data:`MESHFREE`: EFGM's includes
+    its quadrature's, which does not converge)."""
+    p = theoretical_order(quantity, degree, method, law, switching)
+    return (quantity in DISPLACEMENT_LIKE and not (quantity in TRACTIONS and _exact(law)) and pollution < p
+            and method not in MESHFREE and (method, degree) not in COLLOCATED)
+
+
+def sample_groups(scene: Scene, xy: np.ndarray, kept: np.ndarray) -> np.ndarray:
+    """A label per sample of a profile (−1 for none): runs of consecutive
+    ``kept`` samples in one body (a line that crosses Γ is split there,
+    where its quantities kink or jump; samples on Γ are one group)."""
+    d = scene.interface.signed_distance(xy)
+    side = np.where(np.abs(d) <= tol.GEOMETRY * scene.length_scale, 0, np.sign(d))
+    if not np.any(side != 0):
+        side = np.ones(len(xy))
+    ok = kept & (side != 0)
+    labels, current, prev = np.full(len(xy), -1), -1, None
+    for i in range(len(xy)):
+        if not ok[i]:
+            prev = None
+            continue
+        if prev is None or side[i] != side[prev]:
+            current += 1
+        labels[i], prev = current, i
+    return labels
 
 
 def profile_estimates(levels: list[list[ProfileData]], degree: int, method: str = "", coarse: bool = False,
                       scene: Scene | None = None, exclude: float = 0.0,
-                      switching: bool | None = None) -> dict[str, dict[str, QuantityEstimate]]:
+                      switching: bool | None = None, h: float | None = None) -> dict[str, dict[str, QuantityEstimate]]:
     """``{profile id: {quantity: estimate}}`` from the profiles of each run,
     coarse to fine (each a list in the scene's order); an observed order
     from the samples at least ``exclude`` from the ``scene``'s singular
@@ -461,15 +541,28 @@ def profile_estimates(levels: list[list[ProfileData]], degree: int, method: str 
     ``scene``'s :func:`pollution_order` widens the orders of its
     displacements, gaps and penalty tractions, and its
     :func:`collocation_order` sets those of a :data:`COLLOCATED`
-    method's bulk (:func:`order_range`)."""
+    method's bulk (:func:`order_range`).  With the coarse run's ``h``,
+    a two-run estimate of a range that pollution widened (:func:`polluted`)
+    takes the difference's part at the scale of that run's cells
+    (:func:`cell_scale_part`, over :func:`sample_groups`) at the upper
+    order: away from a singular point its pollution solves the
+    homogeneous equations, smooth at that scale, so what varies cell by
+    cell is the runs' local error, which converges at the method's order."""
     out, law = {}, scene.law if scene else None
     pollution, collocation = pollution_order(scene), collocation_order(scene)
     for profs in zip(*levels):
         pid, cols = profs[-1].id, profs[-1].columns
-        kept = far_from_singular(scene, np.column_stack([cols["x"], cols["y"]]), exclude) if scene else None
+        xy = np.column_stack([cols["x"], cols["y"]])
+        kept = far_from_singular(scene, xy, exclude) if scene else None
+        cells = None
+        if scene is not None and h is not None:
+            s = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(xy, axis=0), axis=1))])
+            groups = sample_groups(scene, xy, kept)
+            cells = lambda v, s=s, groups=groups: cell_scale_part(v, s, groups, h)  # noqa: E731
         out[pid] = {q: richardson([p.columns[q] for p in profs],
                                   order_range(q, degree, method, law, switching, pollution, collocation),
-                                  coarse=coarse, kept=kept)
+                                  coarse=coarse, kept=kept,
+                                  cells=cells if polluted(q, degree, method, law, switching, pollution) else None)
                     for q in profs[-1].names[3:]}
     return out
 
@@ -800,7 +893,8 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     hs = tuple(float(r.discretisation["h"]) for r in results)
     levels = [sample_profiles(scene, r.fields, r.interface) for r in results]
     switching = None if scene.law.is_linear else switches([r.interface for r in results])
-    profiles = profile_estimates(levels, results[-1].degree, results[-1].method, coarse, scene, exclude, switching)
+    profiles = profile_estimates(levels, results[-1].degree, results[-1].method, coarse, scene, exclude, switching,
+                                 h=hs[-2])
     found = unsettled(scene, levels, results[-2].discretisation, results[-1].method, results[-1].degree, exclude)
     warnings = (order_warnings(profiles) + pollution_warning(scene, profiles)
                 + unsettled_warnings(found, hs[-2], feature_size(scene), scene.user.units.length))
