@@ -215,7 +215,9 @@ EXACT_GAP_FLOOR = 0.1
 #: tests/tolerances.py PATCH_ROUNDOFF).  A quantity that is zero in the
 #: answer (σxy of a bonded patch) has no scale of its own: measured against
 #: its own round-off, fe's and xfem's 1e-14 agreement read as 100 % errors
-#: "beyond the estimates".
+#: "beyond the estimates".  The same share marks a true error at round-off,
+#: with no discretisation error to fit a rate to (verification.convergence)
+#: or to estimate (verification.effectivity).
 NEGLIGIBLE_SHARE = 1e-8
 
 #: Relative measures within this of each other name the same worst

@@ -24,6 +24,8 @@ from pathlib import Path
 
 import numpy as np
 
+from contactcore import tolerances as tol
+
 from . import files, pool
 from .closed_forms import interface_patch, pressurised_rod, twisted_rod
 from .norms import fitted_rate, l2_error
@@ -40,9 +42,6 @@ CASES = {
     "twisted_rod": (twisted_rod, (0.2, 0.1, 0.05, 0.025)),
 }
 VARIANTS = (("fe", 1), ("fe", 2), ("xfem", 1), ("xfem", 2), ("efgm", 1))
-#: A patch error below this (relative L2) is round-off, not a rate to fit:
-#: the systems lose up to 8 digits (condition estimates ~1e8).
-ROUNDOFF = 1e-8
 
 
 def rate_of(hs, errors) -> float | str:
@@ -50,7 +49,7 @@ def rate_of(hs, errors) -> float | str:
     at round-off, "" when a rung was refused."""
     if len(errors) < len(hs):
         return ""
-    return "round-off" if max(errors) <= ROUNDOFF else fitted_rate(hs, errors)
+    return "round-off" if max(errors) <= tol.NEGLIGIBLE_SHARE else fitted_rate(hs, errors)
 
 
 def last_rate_of(hs, errors) -> float | str:

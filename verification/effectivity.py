@@ -8,7 +8,7 @@ of the estimated error over the RMS of the true error of the finer run
 Zienkiewicz–Zhu estimate as ``η / ‖σ − σ_h‖_E``, on the same background
 cells (the truth with more Gauss points, :data:`TRUE_GAUSS`), away from
 singular points (:func:`verification.agreement.default_exclusion`).
-A quantity whose true error is at round-off (:data:`ROUNDOFF` of its
+A quantity whose true error is at round-off (``NEGLIGIBLE_SHARE`` of its
 largest exact value), or whose exact value is zero, has no effectivity: its
 row says so.
 
@@ -31,6 +31,7 @@ import numpy as np
 
 from contactcore import InterfaceProfile, LineProfile, ProfileData, sample_profiles, scene_text
 from contactcore import estimate as est
+from contactcore import tolerances as tol
 from contactcore.budget import check_budget
 from contactcore.discretisation import solve
 
@@ -39,11 +40,6 @@ from . import files
 from .agreement import default_exclusion, kept_samples
 from .closed_forms import interface_patch, layered_slip, pressurised_rod, quadratic_layers, twisted_rod
 from .sweeps import PATCH_PINS
-
-#: A true RMS error below this fraction of the quantity's largest exact
-#: |value| is round-off (the patch tests' level, tests/tolerances.py
-#: PATCH_ROUNDOFF): there is no discretisation error to estimate.
-ROUNDOFF = 1e-8
 
 #: Gauss points per direction of the true energy error ``‖σ − σ_h‖_E``:
 #: more than the estimate's own rule (contactcore.tolerances.ENERGY_GAUSS),
@@ -125,7 +121,7 @@ def profile_rows(estimate: est.Estimate, got: dict, exact: dict) -> list[dict]:
             want = exact[pid].columns[q]
             true = float(np.sqrt(np.mean((got[pid].columns[q] - want) ** 2)))
             scale = float(np.max(np.abs(want)))
-            kind = "zero" if scale == 0 else "round-off" if true <= ROUNDOFF * scale else "error"
+            kind = "zero" if scale == 0 else "round-off" if true <= tol.NEGLIGIBLE_SHARE * scale else "error"
             rows.append({"profile": pid, "quantity": q, "estimate": e.rms, "true": true, "order": e.order,
                          "kind": kind, "effectivity": e.rms / true if kind == "error" else None,
                          "warned": f"{pid}:{q}" in estimate.unsettled})
@@ -140,7 +136,7 @@ def energy_row(scene, result, estimate: est.Estimate, exact, exclude: float) -> 
     true = est.energy_norm(scene, er, exact.stress(er.rule.points, er.rule.bodies) - sigma)
     norm = est.energy_norm(scene, er, sigma)
     eta = estimate.energy.eta
-    kind = "round-off" if true <= ROUNDOFF * norm else "error"
+    kind = "round-off" if true <= tol.NEGLIGIBLE_SHARE * norm else "error"
     return {"profile": "energy", "quantity": "‖σ‖_E", "estimate": eta, "true": true, "order": None, "kind": kind,
             "effectivity": eta / true if kind == "error" else None}
 
