@@ -67,16 +67,20 @@ def test_the_helper_passes_at_the_worst_difference_and_fails_just_below_it():
 
 
 def test_the_helpers_rms_is_the_relative_rms_of_the_drivers():
-    """The RMS the helper reports is `relative_rms` (the efficiency and
-    paper drivers' measure) of the same profiles, and `agreements` lists it."""
+    """The RMS the helper reports is `relative_rms` of the same profiles
+    against the reference's size of each quantity's group (`scale_of`: C4's
+    t_T against |t|), and `agreements` (the efficiency and paper drivers'
+    measure) lists it."""
     from verification import methods
-    from verification.agreement import sampled
+    from verification.agreement import kept_samples, sampled, scale_of
     scene = load_scene("C")
     got = sampled(scene, methods.solver("efgm")(scene, COARSE_H))
     ref = sampled(scene, methods.solver("fe")(scene, COARSE_H, degree=2))
     exclude = default_exclusion(scene)
     rows = table(scene, {"efgm p1": got, "fe p2": ref}, "fe p2").rows
-    assert [a.rms for a in rows] == [relative_rms(scene, got[a.profile], ref[a.profile], a.quantity, exclude)
+    keep = {pid: kept_samples(scene, prof, exclude) for pid, prof in ref.items()}
+    assert [a.rms for a in rows] == [relative_rms(scene, got[a.profile], ref[a.profile], a.quantity, exclude,
+                                                  scale_of(scene, a.profile, a.quantity, ref)[keep[a.profile]])
                                      for a in rows]
     assert [(a.profile, a.quantity, a.kind, a.rms) for a in rows] == agreements(scene, got, ref, exclude)
 

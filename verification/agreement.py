@@ -168,11 +168,11 @@ def quantity_class(scene: Scene, profile, quantity: str) -> str:
 def relative_rms(scene: Scene, got: ProfileData, ref: ProfileData, quantity: str, exclude: float,
                  scale: np.ndarray | None = None) -> float:
     """RMS of ``got − ref`` over the kept samples, relative to the RMS of
-    ``scale`` (default: the reference's size of the quantity's group on
-    this profile, :func:`scale_of`)."""
+    ``scale`` (default: the reference quantity itself; the table's measure
+    is its group's size, :func:`scale_of`)."""
     keep = kept_samples(scene, ref, exclude)
     diff = got.columns[quantity][keep] - ref.columns[quantity][keep]
-    base = scale_of(scene, ref.id, quantity, {ref.id: ref})[keep] if scale is None else np.asarray(scale)
+    base = measured_against(scene, quantity, ref.columns[quantity][keep]) if scale is None else np.asarray(scale)
     return share(float(np.sqrt(np.mean(diff ** 2))), float(np.sqrt(np.mean(base ** 2))))
 
 
