@@ -244,6 +244,38 @@ class Scales:
         return out
 
 
+def _at_peak(item):
+    """A load or support at the largest |factor| of its path (1: no path,
+    the ramp to the full value), its path left out."""
+    f = max((abs(v) for _, v in item.path), default=1.0)
+    if hasattr(item, "torque"):
+        return replace(item, torque=item.torque * f, path=())
+    value = tuple(v * f for v in item.value) if isinstance(item.value, tuple) else item.value * f
+    return replace(item, value=value, path=())
+
+
+@dataclass(frozen=True)
+class Sizes:
+    """The sizes of a scene's largest state from its data alone (its loads
+    and prescribed displacements at the largest factor of their paths, its
+    moduli and extent): what round-off is relative to when a run's own
+    values are all round-off (a Γ pulled open and stress-free:
+    ``verification.agreement.roundoff``, the ZZ estimate's floor)."""
+
+    displacement: float  # U = max(L τ/E_soft, |ū|): the displacement the loads cause in the softer body
+    stress: float  # Σ = max(τ, E_stiff |ū|/L): the largest load, or the stress a prescribed displacement causes
+    energy: float  # Σ (A/E_soft)^½: the energy norm (J^½ per unit thickness) of Σ over the domain's area A
+
+    @classmethod
+    def of(cls, scene: Scene) -> "Sizes":
+        peak = replace(scene, loads=tuple(map(_at_peak, scene.loads)),
+                       supports=tuple(map(_at_peak, scene.supports)))
+        soft = scene.softer_modulus
+        stress = Scales.of(peak).stress
+        displacement = Scales.of(replace(peak, materials={b: replace(m, E=soft) for b, m in
+                                                          peak.materials.items()})).displacement
+        return cls(displacement, stress, stress * math.sqrt(scene.domain.area / soft))
+
 class ScaledFields:
     """A Result's fields: ``inner`` (the method's, over ``scales``'
     dimensionless scene) read in the user's units: ``u(x) = U u'(x')``,

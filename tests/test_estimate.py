@@ -202,11 +202,11 @@ def test_run_and_efficiency_name_the_same_worst_estimate_on_scene_b(tmp_path):
     the same two runs of scene B (h, h/2, the coarse run estimated as
     ``efficiency`` does) give the same worst quantity and value, B6's t_N
     and g_N (zero: the rod neither opens nor presses) measured against
-    their companions B5's t_T and g_T, not against their own residue; and
-    ``run --estimate`` writes its own worst into summary.md."""
+    |t| and |g| with B5's t_T and g_T, as those are, not against their own
+    residue; and ``run --estimate`` writes its own worst into summary.md."""
     from contactcore import load_scene
     from verification import methods
-    from verification.agreement import COMPANIONS, default_exclusion, sampled
+    from verification.agreement import default_exclusion, sampled
     from verification.efficiency import _estimated
     from verification.run import _estimate_cells, _estimate_record
     scene, h = load_scene("B"), 0.2
@@ -216,7 +216,7 @@ def test_run_and_efficiency_name_the_same_worst_estimate_on_scene_b(tmp_path):
     estimate = est.estimate_runs(scene, [coarse, fine], exclude, energy=False, coarse=True)
     record = _estimate_record(scene, estimate, list(sampled(scene, coarse).values()))
     assert record["worst"] == {"relative": row["estimate"], "at": row["estimate_worst"]}
-    for (pid, q), (cpid, cq) in COMPANIONS.items():
+    for (pid, q), (cpid, cq) in {("B6", "tN"): ("B5", "tT"), ("B6", "gN"): ("B5", "gT")}.items():
         assert record[pid][q]["kept_scale"] == record[cpid][cq]["kept_scale"] > 0
     out = tmp_path / "run"
     text = run(scene, ["fe"], out, h=h, estimate=2, draw=False)
@@ -228,11 +228,11 @@ def test_run_and_efficiency_name_the_same_worst_estimate_on_scene_b(tmp_path):
     assert _estimate_cells({"estimate": summary}) in text
 
 
-def test_a_users_profile_named_b6_is_measured_against_its_own_values(tmp_path):
-    """COMPANIONS name scene B's profiles: a scene of the user's whose Γ
-    profile is named B6, with no B5, has its t_N and g_N measured against
-    their own values, in the agreement and the estimate alike (not looked
-    up in a B5 it does not have)."""
+def test_a_users_profile_named_b6_is_measured_by_kind_not_by_name(tmp_path):
+    """A scene of the user's whose Γ profile is named B6 is no scene B: its
+    t_N and g_N are not labelled zero, and are measured against |t| and |g|
+    of its own profile (as every Γ component is), in the agreement and the
+    estimate alike, not against B5's (it has none) or their own values."""
     from contactcore import load_scene, scene_text
     from verification import methods
     from verification.agreement import agreements, default_exclusion, estimated_shares, kept_samples, measured_against
@@ -246,8 +246,9 @@ def test_a_users_profile_named_b6_is_measured_against_its_own_values(tmp_path):
     assert not any(kind == "zero" for *_, kind, _ in agreements(scene, profiles, profiles, exclude))
     shares = estimated_shares(scene, profiles, est.estimate_runs(scene, runs, exclude), exclude)
     keep = kept_samples(scene, profiles["B6"], exclude)
-    for q in ("tN", "gN"):
-        own = est.rms(measured_against(scene, q, profiles["B6"].columns[q][keep]))
+    for q, other in (("tN", "tT"), ("gN", "gT")):
+        size = np.hypot(profiles["B6"].columns[q], profiles["B6"].columns[other])
+        own = est.rms(measured_against(scene, q, size[keep]))
         assert own > 0 and shares["B6", q][1] == pytest.approx(own, rel=tol.FLOORED_SCALE)
 
 

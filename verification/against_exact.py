@@ -98,10 +98,10 @@ VECTORS = {"gN": ("gN", "gT"), "gT": ("gN", "gT"), "tN": ("tN", "tT"), "tT": ("t
 def floor_of(scene: Scene, exact: dict, quantity: str, floors: dict | None = None) -> float:
     """The floor of ``quantity``'s sizes: the larger of an exact law's gap
     floor (:func:`~verification.agreement.gap_floors` of ``scene``), the
-    user's ``floors`` and round-off of its kind on ``exact``
-    (:func:`~verification.agreement.size_floor`): a quantity zero in the
-    exact answer has no size of its own."""
-    return max(gap_floors(scene).get(quantity, 0.0), size_floor(quantity, user_floors(floors), exact))
+    user's ``floors`` and round-off of its kind on ``exact`` or of the
+    scene's own scale (:func:`~verification.agreement.size_floor`): a
+    quantity zero in the exact answer has no size of its own."""
+    return max(gap_floors(scene).get(quantity, 0.0), size_floor(quantity, user_floors(floors), exact, scene=scene))
 
 
 def scales(scene: Scene, exact: dict, floors: dict | None = None) -> dict:

@@ -4,8 +4,8 @@ For one scene: a refined conforming reference (P2, curved cells, at
 ``--ref-h``), then each method and degree on a ladder of resolutions.  The
 error of a run is the worst, over the scene's profiles and quantities, of
 the relative RMS difference to the reference (:mod:`verification.agreement`:
-samples near corners and the ends of Γ left out, a quantity that is exactly
-zero measured against its companion).  Each run is timed by stage (mesh,
+samples near corners and the ends of Γ left out, each quantity measured
+against its vector's or tensor's size: t_T against |t|).  Each run is timed by stage (mesh,
 assembly, solve, total) after one warm-up solve per method and degree (the
 one-off JIT compilation is not a steady cost); a run under a second is
 repeated and its fastest repeat kept (:func:`verification.timing.fastest`).

@@ -102,8 +102,8 @@ def markdown(rows: list[dict], warnings: list[str]) -> str:
           "reference (fe P2). The table gives the RMS of each profile's difference to the reference, relative "
           "to the reference's RMS, over all samples and with the samples within `exclude` of a corner or of an "
           "end of Γ left out (there the exact stresses are singular or have boundary layers none of these "
-          "discretisations resolves). A quantity that is exactly zero (B6) is measured against the scale of its "
-          "companion (B5).", ""]
+          "discretisations resolves). Each quantity is measured against its vector's size: B6's t_N and g_N, exactly "
+          "zero, against |t| and |g| with B5's t_T and g_T.", ""]
     for scene_name in dict.fromkeys(r["scene"] for r in rows):
         for prof in load_scene(scene_name).profiles:
             md.append(f"![{prof.id}](figures/{figure_name(prof)}.png)")

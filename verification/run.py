@@ -143,8 +143,8 @@ def _estimate_record(scene, est, profiles: list, floors: dict | None = None) -> 
     """summary.json's ``"estimate"``: each quantity's max, RMS and order over
     every sample with ``scale`` (the RMS of the quantity itself, an exact
     law's gaps floored as the agreement floors them), and ``kept_rms``,
-    ``kept_scale`` the same over the samples away from singular points, a
-    zero quantity's scale its companion's
+    ``kept_scale`` the same over the samples away from singular points, the
+    scale the size of the quantity's group (|t| for t_T)
     (:func:`~verification.agreement.estimated_shares`: the kept scale
     floored by ``floors`` and by round-off); ``"worst"``, the
     largest ``kept_rms / kept_scale`` and where
