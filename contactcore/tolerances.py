@@ -592,6 +592,21 @@ FREE_BODY_TIE = 1e-6
 #: h = 0.05.
 NU_LOCKING_WARN = 0.49
 
+#: Small strain: every method solves linear kinematics, ε = sym ∇u, which
+#: omits Green's ½∇uᵀ∇u, of relative size ε/2 (and a rotation θ's θ²/2).
+#: Above an RMS principal strain of 1e-2 that neglected part passes 0.5 %
+#: of the strain, the textbook bound of the theory (metals yield near
+#: 1e-3, so an elastic answer beyond 1e-2 is a wrong modulus or load, e.g.
+#: E = 1e-3 MPa under 100 MPa: strain 8e4).  Measured 2026-11-27 (fe, the
+#: RMS of Scene.small_strain_warnings): scenes A, B, C at h = 0.05 6e-7,
+#: 6e-8, 9e-8; steel on aluminium under 100 MPa (grader2's mm wedge, h =
+#: 2.5 mm) 1.2e-3; its aluminium made E = 1e-3 MPa, 8e4.
+SMALL_STRAIN_LIMIT = 1e-2
+#: The strain is sampled at the centres of cells of L divided by this (L
+#: the domain's length scale), at most ~this² points whatever h: an RMS
+#: needs no finer sampling.
+SMALL_STRAIN_SAMPLES = 40
+
 #: A failed solve names a spring whose entry k w (w a quadrature weight) lies
 #: outside [SPRING_HINT_RANGE, 1/SPRING_HINT_RANGE]·E as its likely cause:
 #: RESIDUAL_FAIL's measurements fail from ~1e8..1e10 E/h (k w ~ 1e7..1e9 E)
