@@ -578,6 +578,20 @@ def _check_profiles(scene: Scene) -> None:
                                  "use line profiles")
 
 
+def _check_contrast(materials: dict) -> None:
+    """Refuse moduli so far apart (softer/stiffer below
+    :data:`~contactcore.tolerances.MODULUS_CONTRAST_MIN`) that the softer
+    body's stiffness is lost in the round-off of the stiffer's: the system
+    is singular at double precision, whatever the springs or the method."""
+    (soft, Es), (stiff, Eh) = sorted(((b, materials[b].E) for b in BODIES), key=lambda item: item[1])
+    if Es / Eh < tol.MODULUS_CONTRAST_MIN:  # finite and > 0 both: _check_material
+        raise SceneError(f"materials.{soft}.E", f"{Es:g} is {Es / Eh:.2g} of materials.{stiff}.E ({Eh:g}), below "
+                         f"the {tol.MODULUS_CONTRAST_MIN:g} double precision can solve: the softer body's "
+                         "stiffness is lost in the round-off of the stiffer's (every method's system is singular "
+                         "or fails its residual check); bring the moduli closer, e.g. treat the stiffer body as "
+                         "rigid with supports on Γ, or the softer as absent")
+
+
 def validate(scene: Scene) -> None:
     """Raise :class:`SceneError` at the first invalid field of ``scene``."""
     if not isinstance(scene.name, str) or not scene.name:
@@ -594,6 +608,7 @@ def validate(scene: Scene) -> None:
         if body not in scene.materials:
             raise SceneError(f"materials.{body}", "missing")
         _check_material(scene.materials[body], scene.plane, f"materials.{body}")
+    _check_contrast(scene.materials)
     if isinstance(scene.increments, bool) or not isinstance(scene.increments, int) or scene.increments < 1:
         raise SceneError("increments", f"must be an integer >= 1 (got {scene.increments!r})")
     if not isinstance(scene.follow_path, bool):

@@ -602,6 +602,23 @@ NU_LOCKING_WARN = 0.49
 #: 6e-8, 9e-8; steel on aluminium under 100 MPa (grader2's mm wedge, h =
 #: 2.5 mm) 1.2e-3; its aluminium made E = 1e-3 MPa, 8e4.
 SMALL_STRAIN_LIMIT = 1e-2
+
+#: The least ratio of the softer body's Young's modulus to the stiffer's a
+#: scene may have (refused below, at validation).  The softer body's
+#: stiffness is that fraction of the stiffer's, so LU's round-off, ε ≈
+#: 2.2e-16 of the largest entries, is ε/ratio of it: 2.2e-4 at 1e-12, 22
+#: times RESIDUAL_FAIL.  Measured 2026-11-27, E⁻ = ratio × E⁺, fe, xfem and
+#: efgm P1 (scene A at h = 0.25; grader2's Coulomb mm wedge at h = 10 mm,
+#: fe and xfem): solved at 1e-6 and 1e-8 (A: relative residual 1.5e-9 and
+#: 1.9e-7, growing as 1/ratio); every one refused by the residual check
+#: from 1e-10 (1.4e-5 to 5.4e-5), at 1e-12 with 1e-3 to 4e-3; singular to
+#: working precision (MUMPS null pivots) from 1e-14 (xfem, efgm) and 1e-16
+#: (every method) down to 1e-250, where the solve's message blamed the
+#: springs.  A's springs made as soft as its − body fail sooner (residual
+#: 2e-3 at 1e-9): the contrast is the cause, not the springs.  Refused at
+#: 1e-12, a hundredfold below the last ratio that solved, where no measured
+#: solve came within a hundred times of passing.
+MODULUS_CONTRAST_MIN = 1e-12
 #: The strain is sampled at the centres of cells of L divided by this (L
 #: the domain's length scale), at most ~this² points whatever h: an RMS
 #: needs no finer sampling.
