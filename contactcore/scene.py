@@ -284,10 +284,11 @@ class Scene:
             largest = np.abs(exx + eyy) / 2 + np.hypot((exx - eyy) / 2, gxy / 2)
             rms = strain_unit * float(np.sqrt(np.mean(largest ** 2)))
             if not rms <= tol.SMALL_STRAIN_LIMIT:
-                found.append(f"body {BODIES[b]} (E = {self.user.materials[BODIES[b]].E:.3g}) {rms:.2g}")
+                found.append(f"{rms:.2g} in body {BODIES[b]} (E = {self.user.materials[BODIES[b]].E:.3g} "
+                             f"{self.user.units.stress})")
         if not found:
             return []
-        return [f"strains far beyond small strain: the RMS of the largest principal strain is {'; '.join(found)}, "
+        return [f"strains far beyond small strain: the RMS of a body's largest principal strain is {' and '.join(found)}, "
                 f"above {tol.SMALL_STRAIN_LIMIT:g}: the small-strain (linear) theory every method solves does not "
                 "hold there (its strain omits Green's ½∇uᵀ∇u, which is ε/2 of it), so its displacements and "
                 "stresses mean nothing physical; check the moduli and loads (units?)"]
