@@ -98,6 +98,11 @@ class Scales:
         """The stress unit ``Σ = S U/L`` (Pa)."""
         return self.modulus * (self.displacement / self.length)
 
+    @property
+    def strain(self) -> float:
+        """The strain unit ``U/L``: a strain is ``(U/L) σ'/E'``."""
+        return self.displacement / self.length
+
     @staticmethod
     def extent(dom) -> tuple[tuple[float, float], float]:
         """The lower-left corner of the domain's bounding box and its larger side."""

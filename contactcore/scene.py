@@ -253,6 +253,46 @@ class Scene:
                 "resolves the ligament between them, so its stresses and Γ's tractions there are not resolved; "
                 "refine to an h below that gap"]
 
+    def small_strain_warnings(self, fields, h: float, strain_unit: float = 1.0) -> list[str]:
+        """The answer's strain too large for the small-strain theory every
+        method solves: the RMS over a body of its largest principal strain,
+        ``ε = strain_unit · D⁻¹σ`` (``strain_unit`` U/L on a dimensionless
+        scene, :mod:`contactcore.scaling`: σ'/E' is ε L/U) from ``fields``
+        (:class:`contactcore.result.Fields`) at
+        the centres of cells of size ``L/SMALL_STRAIN_SAMPLES`` clear of Γ
+        and of the boundary by half a cell's diagonal and by h/2 (inside one
+        body of any method's mesh of spacing ``h``),
+        above :data:`~contactcore.tolerances.SMALL_STRAIN_LIMIT`.  An RMS,
+        not a peak: a corner's stress singularity, integrable, does not
+        trigger it as h falls."""
+        from .quadrature import background_cells  # quadrature imports this module
+        lo, hi = background_cells(self, self.length_scale / tol.SMALL_STRAIN_SAMPLES)
+        centre = (lo + hi) / 2
+        clear = np.maximum(np.linalg.norm(hi - lo, axis=1) / 2, h / 2)
+        inside = ((self.domain.distance_to_boundary(centre) > clear)
+                  & (np.abs(self.interface.signed_distance(centre)) > clear))
+        centre = centre[inside]
+        bodies = (self.interface.phi(centre) >= 0).astype(int)
+        if not len(centre):
+            return []
+        stress = np.asarray(fields.stress(centre, bodies), float)
+        found = []
+        for b, D in zip(range(len(BODIES)), self.voigt_matrices()):
+            if not np.any(bodies == b):
+                continue
+            exx, eyy, gxy = np.linalg.solve(D, stress[bodies == b].T)
+            largest = np.abs(exx + eyy) / 2 + np.hypot((exx - eyy) / 2, gxy / 2)
+            rms = strain_unit * float(np.sqrt(np.mean(largest ** 2)))
+            if not rms <= tol.SMALL_STRAIN_LIMIT:
+                found.append(f"{rms:.2g} in body {BODIES[b]} (E = {self.user.materials[BODIES[b]].E:.3g} "
+                             f"{self.user.units.stress})")
+        if not found:
+            return []
+        return [f"strains far beyond small strain: the RMS of a body's largest principal strain is {' and '.join(found)}, "
+                f"above {tol.SMALL_STRAIN_LIMIT:g}: the small-strain (linear) theory every method solves does not "
+                "hold there (its strain omits Green's ½∇uᵀ∇u, which is ε/2 of it), so its displacements and "
+                "stresses mean nothing physical; check the moduli and loads (units?)"]
+
     def interface_warnings(self, h: float, fitted: bool = False) -> list[str]:
         """What a method of cell or node spacing ``h`` should warn about
         before anyone trusts its interface tractions (the thresholds and
@@ -539,6 +579,20 @@ def _check_profiles(scene: Scene) -> None:
                                  "use line profiles")
 
 
+def _check_contrast(materials: dict) -> None:
+    """Refuse moduli so far apart (softer/stiffer below
+    :data:`~contactcore.tolerances.MODULUS_CONTRAST_MIN`) that the softer
+    body's stiffness is lost in the round-off of the stiffer's: the system
+    is singular at double precision, whatever the springs or the method."""
+    (soft, Es), (stiff, Eh) = sorted(((b, materials[b].E) for b in BODIES), key=lambda item: item[1])
+    if Es / Eh < tol.MODULUS_CONTRAST_MIN:  # finite and > 0 both: _check_material
+        raise SceneError(f"materials.{soft}.E", f"{Es:g} is {Es / Eh:.2g} of materials.{stiff}.E ({Eh:g}), below "
+                         f"the {tol.MODULUS_CONTRAST_MIN:g} double precision can solve: the softer body's "
+                         "stiffness is lost in the round-off of the stiffer's (every method's system is singular "
+                         "or fails its residual check); bring the moduli closer, e.g. treat the stiffer body as "
+                         "rigid with supports on Γ, or the softer as absent")
+
+
 def validate(scene: Scene) -> None:
     """Raise :class:`SceneError` at the first invalid field of ``scene``."""
     if not isinstance(scene.name, str) or not scene.name:
@@ -555,6 +609,7 @@ def validate(scene: Scene) -> None:
         if body not in scene.materials:
             raise SceneError(f"materials.{body}", "missing")
         _check_material(scene.materials[body], scene.plane, f"materials.{body}")
+    _check_contrast(scene.materials)
     if isinstance(scene.increments, bool) or not isinstance(scene.increments, int) or scene.increments < 1:
         raise SceneError("increments", f"must be an integer >= 1 (got {scene.increments!r})")
     if not isinstance(scene.follow_path, bool):

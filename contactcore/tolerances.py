@@ -594,6 +594,38 @@ FREE_BODY_TIE = 1e-6
 #: h = 0.05.
 NU_LOCKING_WARN = 0.49
 
+#: Small strain: every method solves linear kinematics, ε = sym ∇u, which
+#: omits Green's ½∇uᵀ∇u, of relative size ε/2 (and a rotation θ's θ²/2).
+#: Above an RMS principal strain of 1e-2 that neglected part passes 0.5 %
+#: of the strain, the textbook bound of the theory (metals yield near
+#: 1e-3, so an elastic answer beyond 1e-2 is a wrong modulus or load, e.g.
+#: E = 1e-3 MPa under 100 MPa: strain 8e4).  Measured 2026-11-27 (fe, the
+#: RMS of Scene.small_strain_warnings): scenes A, B, C at h = 0.05 6e-7,
+#: 6e-8, 9e-8; steel on aluminium under 100 MPa (grader2's mm wedge, h =
+#: 2.5 mm) 1.2e-3; its aluminium made E = 1e-3 MPa, 8e4.
+SMALL_STRAIN_LIMIT = 1e-2
+
+#: The least ratio of the softer body's Young's modulus to the stiffer's a
+#: scene may have (refused below, at validation).  The softer body's
+#: stiffness is that fraction of the stiffer's, so LU's round-off, ε ≈
+#: 2.2e-16 of the largest entries, is ε/ratio of it: 2.2e-4 at 1e-12, 22
+#: times RESIDUAL_FAIL.  Measured 2026-11-27, E⁻ = ratio × E⁺, fe, xfem and
+#: efgm P1 (scene A at h = 0.25; grader2's Coulomb mm wedge at h = 10 mm,
+#: fe and xfem): solved at 1e-6 and 1e-8 (A: relative residual 1.5e-9 and
+#: 1.9e-7, growing as 1/ratio); every one refused by the residual check
+#: from 1e-10 (1.4e-5 to 5.4e-5), at 1e-12 with 1e-3 to 4e-3; singular to
+#: working precision (MUMPS null pivots) from 1e-14 (xfem, efgm) and 1e-16
+#: (every method) down to 1e-250, where the solve's message blamed the
+#: springs.  A's springs made as soft as its − body fail sooner (residual
+#: 2e-3 at 1e-9): the contrast is the cause, not the springs.  Refused at
+#: 1e-12, a hundredfold below the last ratio that solved, where no measured
+#: solve came within a hundred times of passing.
+MODULUS_CONTRAST_MIN = 1e-12
+#: The strain is sampled at the centres of cells of L divided by this (L
+#: the domain's length scale), at most ~this² points whatever h: an RMS
+#: needs no finer sampling.
+SMALL_STRAIN_SAMPLES = 40
+
 #: A failed solve names a spring whose entry k w (w a quadrature weight) lies
 #: outside [SPRING_HINT_RANGE, 1/SPRING_HINT_RANGE]·E as its likely cause:
 #: RESIDUAL_FAIL's measurements fail from ~1e8..1e10 E/h (k w ~ 1e7..1e9 E)

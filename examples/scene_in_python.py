@@ -47,7 +47,8 @@ def main(h=None):
     gamma = profiles["gamma"].columns
     opened = gamma["gN"] > 0
     side = np.abs(np.cos(gamma["s"])) > np.cos(np.radians(30))     # within 30° of θ = 0 or 180°
-    print(f"Γ open on {opened.mean():.0%} of its samples; on {opened[side].mean():.0%} of those at the rod's sides")
+    print(f"Γ open on {opened.mean():.0%} of its samples; of the samples at the rod's sides (within 30° of "
+          f"θ = 0 or 180°), {opened[side].mean():.0%} are open")
     print(f"largest |t_N| where open: {np.max(np.abs(gamma['tN'][opened])):.3g} Pa; "
           f"largest tension anywhere: {max(gamma['tN'].max(), 0.0):.3g} Pa; "
           f"largest pressure: {-gamma['tN'].min():.3g} Pa")

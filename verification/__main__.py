@@ -7,7 +7,7 @@
     python -m verification paper [--scene A B C] [--ref-h H] --out DIR
     python -m verification closed [--case patch pressurised_rod twisted_rod] [--method ...] [--degree 1 2] --out DIR
     python -m verification efficiency SCENE --method fe efgm --degree 1 2 --h H1 H2 ... --ref-h H --out DIR
-    python -m verification effectivity [--scene A B C | SCENE_OR_TOML ...] [--h 0.05] [--ref-h 0.00625] [--levels 2|3] --out DIR
+    python -m verification effectivity [--scene A B C | SCENE_OR_TOML ...] [--h H] [--ref-h H] [--levels 2|3] --out DIR
     python -m verification sweeps [--sweep NAME ...] [--method ...] [--degree 1] --out DIR
     python -m verification study SCENE --param NAME --values V1 V2 ... [--param NAME2 --values ...] [--method ...]
         [--degree 1] [--h H] --out DIR
@@ -222,8 +222,10 @@ def _commands() -> dict[str, Command]:
         "effectivity": Command("the error estimates against fe P2 at a fine h, on the paper's scenes or others", (
             arg("--scene", nargs="+", default=["A", "B", "C"],
                 help="built-in scene names or scene TOML files (default: the paper's A B C)"),
-            arg("--h", type=float, default=0.05, help="the coarsest run (default 0.05)"),
-            arg("--ref-h", type=float, default=0.00625, help="cell size of the fe P2 truth (default 0.00625)"),
+            arg("--h", type=float, help="the coarsest run, in each scene's length unit (default: the domain's "
+                                        "smaller side/20, 0.05 on scene A)"),
+            arg("--ref-h", type=float, help="cell size of the fe P2 truth (default: the finest run's h/4, 0.00625 "
+                                            "on scene A)"),
             arg("--levels", type=int, default=2, choices=(2, 3), help="runs h, h/2 (3: and h/4); default 2"),
             allow_large, out), _effectivity, ranks="serial"),
         "sweeps": Command("stiff and extreme cases: error, condition and outcome", (

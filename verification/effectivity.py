@@ -203,47 +203,104 @@ def _length(scenes) -> str:
     return f" {lengths.pop()}" if len(lengths) == 1 else ""
 
 
-def check_budgets(scenes, h: float, ref_h: float, levels: int) -> None:
+#: The coarsest run's default h: the domain's smaller side (a disc's
+#: diameter) over this, so that a scene in mm or km gets the same
+#: resolution as one in m (scene A, 1 m across: h = 0.05, the paper
+#: scenes' table in docs/error-estimates.md).
+DEFAULT_CELLS_ACROSS = 20
+#: The truth's default h: the finest run's h over this (scene A at the
+#: defaults: runs 0.05, 0.025, truth 0.00625 = 0.025/4).
+DEFAULT_TRUTH_REFINEMENT = 4
+
+
+def smaller_side(scene) -> float:
+    """The domain's smaller side, or a disc's diameter, in the scene's units."""
+    from contactcore.geometry import Rectangle
+    dom = scene.domain
+    return float(min(dom.size)) if isinstance(dom, Rectangle) else 2.0 * float(dom.radius)
+
+
+def resolutions(scene, h: float | None, ref_h: float | None, levels: int) -> tuple[float, str, float, str]:
+    """``(h, h's name, ref_h, ref_h's name)`` of ``scene``: ``--h`` and
+    ``--ref-h`` as given, or, not given, the defaults scaled to the scene
+    (:data:`DEFAULT_CELLS_ACROSS`, :data:`DEFAULT_TRUTH_REFINEMENT`), each
+    named by where it came from, so that a refusal never names an option
+    the user did not pass."""
+    h_name = "--h"
+    if h is None:
+        h = smaller_side(scene) / DEFAULT_CELLS_ACROSS
+        h_name = f"the default h (scene {scene.name}'s smaller side/{DEFAULT_CELLS_ACROSS}; give --h)"
+    ref_name = "--ref-h"
+    if ref_h is None:
+        ref_h = min(est.levels_of(h, levels)) / DEFAULT_TRUTH_REFINEMENT
+        ref_name = (f"the default truth h (scene {scene.name}'s finest run's h/{DEFAULT_TRUTH_REFINEMENT}; "
+                    "give --ref-h)")
+    return h, h_name, ref_h, ref_name
+
+
+def check_budgets(scenes, h: float | None, ref_h: float | None, levels: int) -> None:
     """Refuse, before any solve, a truth or a run that would not fit this
     machine (:func:`contactcore.budget.check_budget`): ``--h`` and
-    ``--ref-h`` are in each scene's own length unit, so a scene in mm
-    at the defaults would mesh billions of cells."""
+    ``--ref-h`` are in each scene's own length unit (their defaults
+    scaled to it, :func:`resolutions`)."""
     for scene in scenes:
-        check_budget(scene, ref_h, 2, "fe", field="--ref-h")
-        for (name, degree), hk in itertools.product(SCENE_VARIANTS, est.levels_of(h, levels)):
-            check_budget(scene, hk, degree, name)
+        h_s, h_name, ref_s, ref_name = resolutions(scene, h, ref_h, levels)
+        check_budget(scene, ref_s, 2, "fe", field=ref_name)
+        for (name, degree), hk in itertools.product(SCENE_VARIANTS, est.levels_of(h_s, levels)):
+            check_budget(scene, hk, degree, name, field=h_name)
 
 
-def scene_table(scene_names, h: float, ref_h: float, out: Path, levels: int = 2, allow_large: bool = False,
-                argv=()) -> str:
+def scene_table(scene_names, h: float | None, ref_h: float | None, out: Path, levels: int = 2,
+                allow_large: bool = False, argv=()) -> str:
     """The effectivity of every :data:`SCENE_VARIANTS` pair on each scene
     (a built-in name or a TOML file; truth: fe P2 at ``ref_h``), written to ``out/effectivity.csv`` and
-    ``out/effectivity.md``; returns the Markdown.  Unless ``allow_large``,
-    every solve must fit the machine (:func:`check_budgets`)."""
+    ``out/effectivity.md``; returns the Markdown.  ``h`` or ``ref_h``
+    None: each scene's default (:func:`resolutions`).  Unless
+    ``allow_large``, every solve must fit the machine (:func:`check_budgets`)."""
     from contactcore import SceneError, load_scene
-    finest = min(est.levels_of(h, levels))
-    if not ref_h < finest:
+    if h is not None and ref_h is not None and not ref_h < min(est.levels_of(h, levels)):
+        finest = min(est.levels_of(h, levels))
         raise SceneError("--ref-h", f"{ref_h:g} is not finer than the finest run's h, {finest:g}: the truth "
                          "must be finer than every run it measures")
     rows, scenes = [], [load_scene(name) for name in scene_names]  # every scene read before any solve
     units = files.shared_units(scenes, "--scene")  # h's one unit in units.json
+    chosen = {scene.name: resolutions(scene, h, ref_h, levels) for scene in scenes}
+    for scene in scenes:
+        h_s, _, ref_s, _ = chosen[scene.name]
+        finest = min(est.levels_of(h_s, levels))
+        if not ref_s < finest:  # --ref-h given, h the scene's default
+            raise SceneError("--ref-h", f"{ref_s:g} is not finer than scene {scene.name}'s finest run's h, "
+                             f"{finest:g} (its default --h {h_s:g}): the truth must be finer than every run it "
+                             "measures")
     if not allow_large:
         check_budgets(scenes, h, ref_h, levels)
     for scene in scenes:
-        truth = scene_truth(scene, ref_h)
+        h_s, _, ref_s, _ = chosen[scene.name]
+        truth = scene_truth(scene, ref_s)
         for key in SCENE_VARIANTS:
-            rows += scene_rows(scene, key, h, truth, levels)
+            rows += scene_rows(scene, key, h_s, truth, levels)
     columns = ["scene", "method", "degree", "h", "profile", "quantity", "order", "estimate", "true", "unit",
                "relative", "effectivity", "warned"]
-    text = (f"# Effectivity against fe P2\n\nTruth: fe P2 at h = {ref_h}{_length(scenes)}; runs at "
-            f"{', '.join(f'{hk:g}' for hk in est.levels_of(h, levels))}{_length(scenes)}, the finest estimated; "
+    shown = [*columns[:8], "unit", "effectivity", "warned"]
+    def setting(sc, truth: str) -> str:
+        h_s, _, ref_s, _ = chosen[sc.name]
+        return (f"{truth} fe P2 at h = {ref_s:g}{_length([sc])}; runs at "
+                f"{', '.join(f'{hk:g}' for hk in est.levels_of(h_s, levels))}{_length([sc])}")
+    if len({chosen[sc.name][::2] for sc in scenes}) == 1:
+        said = setting(scenes[0], "Truth:")
+    else:
+        said = "; ".join(setting(sc, f"{sc.name}: truth") for sc in scenes)
+
+    text = (f"# Effectivity against fe P2\n\n{said}, the finest estimated; "
             f"RMS over the samples away from singular points; each row's estimate (and true error) in its "
             f"quantity's unit.\n\n"
-            + files.markdown_table(rows, [*columns[:8], "unit", "effectivity", "warned"]))
+            + files.markdown_table(rows, shown, [files.labelled(c, c, units) if c == "h" else c for c in shown]))
     files.write_csv(out / "effectivity.csv", rows, columns)
     files.write_text(out / "effectivity.md", text)
     if len(scenes) == 1:  # the scene measured, as efficiency and study keep theirs
         files.write_text(out / files.SCENE_FILE, scene_text(scene_names[0]))
-    files.write_json(out / "run.json", {**files.provenance(list(argv)), "scenes": list(scene_names), "h": h,
-                                        "ref_h": ref_h, "levels": levels, **files.run_units(units)})
+    files.write_json(out / "run.json", {**files.provenance(list(argv)), "scenes": list(scene_names),
+                                        "h": {sc.name: chosen[sc.name][0] for sc in scenes},
+                                        "ref_h": {sc.name: chosen[sc.name][2] for sc in scenes},
+                                        "levels": levels, **files.run_units(units)})
     return text

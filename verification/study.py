@@ -391,9 +391,10 @@ def markdown(scene_name: str, names: list[str], rows: list[dict], units: Units =
             + (f"\n{len(failed)} of {len(rows)} points failed; the study went on.\n" if failed else ""))
 
 
-#: How a study plot marks a point that solved with warnings, and one that failed (drawn on the x axis).
+#: How a study plot marks a point that solved with warnings, and the value at which one failed (a
+#: vertical line across the panel, in the series' colour).
 WARNED_MARK = {"marker": "o", "ms": 11, "mfc": "none", "mec": "tab:red", "linestyle": "none"}
-FAILED_MARK = {"marker": "X", "ms": 9, "linestyle": "none", "clip_on": False}
+FAILED_MARK = {"linestyle": ":", "linewidth": 1.2, "alpha": 0.8, "label": "_"}
 
 
 def _series(ax, column: str, q: str, factor: float, rows: list[dict], label: str):
@@ -404,17 +405,27 @@ def _series(ax, column: str, q: str, factor: float, rows: list[dict], label: str
 
 
 def _mark(ax, column: str, q: str, factor: float, rows: list[dict], colour) -> None:
-    """Ring the warned points; put a cross on the x axis at each failed one
-    (it has no value to show), in the series' colour.  Each mark is in the
-    legend once per panel."""
+    """Ring the warned points (one "warned" entry in the legend per panel);
+    draw a dotted vertical line across the panel at each failed one, in the
+    series' colour: it has no value, so no mark at any height that could be
+    read as one (the series' legend entry names its failed values,
+    :func:`_failed_label`)."""
     seen = {h.get_label() for h in ax.get_lines()}
     warned = [(r[column], r[f"max_{q}"] / factor) for r in rows if r["status"] == "warned"]
-    failed = [r[column] for r in rows if r["status"] == "failed"]
     if warned:
         ax.plot(*zip(*warned), **WARNED_MARK, label="_" if "warned" in seen else "warned")
-    if failed:
-        ax.plot(failed, [0.0] * len(failed), transform=ax.get_xaxis_transform(), color=colour, **FAILED_MARK,
-                label="_" if "failed" in seen else "failed")
+    for x in (r[column] for r in rows if r["status"] == "failed"):
+        ax.axvline(x, color=colour, **FAILED_MARK)
+
+
+def _failed_label(label: str, column: str, rows: list[dict]) -> str:
+    """A series' legend entry: its label, and the values at which it failed."""
+    failed = [_shown(r[column]) for r in rows if r["status"] == "failed"]
+    if not failed:
+        return label
+    if len(failed) == len(rows):
+        return f"{label}: failed at every value (dotted)"
+    return f"{label}: failed at {', '.join(failed)} (dotted)"
 
 
 def _plot(path: Path, scene, param: str, column: str, others: list[str], rows: list[dict]) -> None:
@@ -433,8 +444,8 @@ def _plot(path: Path, scene, param: str, column: str, others: list[str], rows: l
                                  scene.units)
         for key in series:
             chosen = [r for r in rows if (r["method"], *(r[o] for o in others)) == key]
-            line = _series(ax, column, q, factor, chosen,
-                           ", ".join([key[0], *(f"{o} = {_shown(v)}" for o, v in zip(others, key[1:]))]))
+            line = _series(ax, column, q, factor, chosen, _failed_label(
+                ", ".join([key[0], *(f"{o} = {_shown(v)}" for o, v in zip(others, key[1:]))]), column, chosen))
             _mark(ax, column, q, factor, chosen, line)
         symbol, _, shown = unit.partition(" ")
         ax.set_ylabel(f"max |{symbol}| {shown}")

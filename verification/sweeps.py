@@ -255,17 +255,31 @@ def run_sweep(sweep: Sweep, degree: int = 1, method_names=None) -> list[dict]:
 
 
 def handled_range(rows: list[dict]) -> str:
-    """The values of one sweep and method, grouped by outcome."""
+    """The values of one sweep and method, grouped by outcome: each outcome's
+    values in runs of neighbours (in the sweep's order, by value when the
+    values are numbers) with no other outcome between them, a run of three
+    or more numbers as "first … last (n values)", shorter runs value by
+    value.  A range never spans another outcome's values: refused values on
+    both sides of the accurate ones read "1e-12, 1e+10, 1e+12", not
+    "1e-12 … 1e+12"."""
+    numeric = all(isinstance(r["value"], float) for r in rows)
+    ordered = sorted(rows, key=lambda r: r["value"]) if numeric else list(rows)
+    runs: list[tuple[str, list]] = []
+    for r in ordered:
+        if runs and runs[-1][0] == r["outcome"]:
+            runs[-1][1].append(r["value"])
+        else:
+            runs.append((r["outcome"], [r["value"]]))
     parts = []
     for outcome in ("accurate", "warned", "refused", "wrong"):
-        vals = [r["value"] for r in rows if r["outcome"] == outcome]
-        if not vals:
-            continue
-        if all(isinstance(v, float) for v in vals) and len(vals) > 2:
-            text = f"{files.cell(min(vals))} … {files.cell(max(vals))} ({len(vals)} values)"
-        else:
-            text = ", ".join(files.cell(v) for v in vals)
-        parts.append(f"{outcome}: {text}")
+        texts = []
+        for _, vals in (run for run in runs if run[0] == outcome):
+            if numeric and len(vals) > 2:
+                texts.append(f"{files.cell(vals[0])} … {files.cell(vals[-1])} ({len(vals)} values)")
+            else:
+                texts += [files.cell(v) for v in vals]
+        if texts:
+            parts.append(f"{outcome}: {', '.join(texts)}")
     return "; ".join(parts)
 
 

@@ -1,0 +1,32 @@
+"""sweeps.md's "range handled" (grader2 item 9): refused values on both
+sides of the accurate ones were written "refused: 1e-12 … 1e+12 (3
+values)", a range claiming the whole span refused."""
+from verification import files
+from verification.sweeps import handled_range
+
+
+def _rows(**outcomes) -> list[dict]:
+    rows = [{"value": v, "outcome": o} for o, vals in outcomes.items() for v in vals]
+    return sorted(rows, key=lambda r: r["value"])
+
+
+def test_a_range_never_spans_another_outcomes_values():
+    refused, accurate = (1e-12, 1e10, 1e12), (1e-9, 1e-6, 1e-3, 1.0, 1e3, 1e8)
+    text = handled_range(_rows(refused=refused, accurate=accurate))
+    assert f"{files.cell(1e-12)} … {files.cell(1e12)}" not in text, text
+    assert f"refused: {', '.join(files.cell(v) for v in refused)}" in text, text
+    assert f"accurate: {files.cell(1e-9)} … {files.cell(1e8)} (6 values)" in text, text
+
+
+def test_an_outcome_split_by_another_is_two_ranges():
+    low, high, between = (1e-12, 1e-11, 1e-10), (1e10, 1e11, 1e12), (1e-3, 1.0)
+    text = handled_range(_rows(refused=low + high, warned=between))
+    assert (f"refused: {files.cell(1e-12)} … {files.cell(1e-10)} (3 values), "
+            f"{files.cell(1e10)} … {files.cell(1e12)} (3 values)") in text, text
+    assert f"warned: {files.cell(1e-3)}, {files.cell(1.0)}" in text, text
+
+
+def test_names_keep_the_sweeps_order():
+    rows = [{"value": "b", "outcome": "accurate"}, {"value": "a", "outcome": "refused"},
+            {"value": "c", "outcome": "accurate"}]
+    assert handled_range(rows) == "accurate: b, c; refused: a"
