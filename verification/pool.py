@@ -24,6 +24,7 @@ from __future__ import annotations
 import contextlib
 import logging
 import multiprocessing
+import multiprocessing.context
 import os
 import signal
 import sys
@@ -48,9 +49,9 @@ class Serial(Executor):
         future = Future()
         try:
             future.set_result(fn(*args, **kwargs))
-        except BaseException as exc:  # handed back through the future, as a pool would
+        except Exception as exc:  # handed back through the future, as a pool would
             future.set_exception(exc)
-        return future
+        return future  # Ctrl-C is not: kept in a future, the cases after it would still run
 
 
 def launched_rank() -> int:
@@ -86,9 +87,33 @@ def executor(workers: int | None, fresh: bool = False) -> Executor:
         return MPIPoolExecutor()  # its static workers outlive one executor: no initializer (it breaks the next)
     if (workers or 1) == 1 and not fresh:
         return Serial()
-    return ProcessPoolExecutor(max_workers=workers or 1, mp_context=multiprocessing.get_context("spawn"),
+    return ProcessPoolExecutor(max_workers=workers or 1, mp_context=_SpawnDeaf(),
                                max_tasks_per_child=1 if fresh else None, initializer=worker_logging,
                                initargs=(level,))
+
+
+class _DeafProcess(multiprocessing.context.SpawnProcess):
+    """A spawned worker that starts with SIGINT blocked: a Ctrl-C that
+    reaches it while it starts up (the interpreter, then the imports of
+    ``__main__``'s modules, seconds under load) stays pending instead of
+    raising KeyboardInterrupt there, with a traceback, before
+    :func:`worker_logging` ignores it (which discards it).  The mask is
+    set on the spawning thread only for the spawn; a Ctrl-C meant for the
+    command meanwhile is delivered to it when the mask is put back."""
+
+    @staticmethod
+    def _Popen(process_obj):
+        before = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
+        try:
+            return multiprocessing.context.SpawnProcess._Popen(process_obj)
+        finally:
+            signal.pthread_sigmask(signal.SIG_SETMASK, before)
+
+
+class _SpawnDeaf(multiprocessing.context.SpawnContext):
+    """The spawn context, its processes :class:`_DeafProcess`."""
+
+    Process = _DeafProcess
 
 
 #: Every process's log line: level, logger, message.
@@ -100,7 +125,8 @@ def worker_logging(level: int) -> None:
     ``--verbose``) and format, on the worker's stderr.  A worker ignores
     Ctrl-C: the command that owns it stops it (:func:`map_cases`) and says
     ``interrupted`` once, without a traceback from every worker."""
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGINT, signal.SIG_IGN)  # a Ctrl-C pending since the start is discarded
+    signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT})  # blocked by _DeafProcess
     handler = logging.StreamHandler()
     handler.setFormatter(logging.Formatter(LOG_FORMAT))
     logger = logging.getLogger("verification")
@@ -140,23 +166,65 @@ def map_cases(function, cases, workers: int | None = None, fresh: bool = False):
     """``function(c) for c in cases`` on :func:`executor` (``workers``,
     ``fresh``): yields the results in the order of ``cases``, each as soon
     as it and those before it are done, so that the caller reports progress
-    as it goes (consume it whole: the pool closes at the end)."""
-    with _threads_per_worker(workers), executor(workers, fresh) as pool:
+    as it goes.
+
+    The cases are submitted one by one, not through ``pool.map``, which
+    cancels the futures left when it is interrupted (see :func:`_stop`).
+    The pool is shut down before the last result is handed over, and that
+    last ``yield`` lies outside every ``try`` and ``with``: a caller that
+    stops asking there (``zip(cases, map_cases(...))`` never asks past the
+    last case) leaves a generator whose closing, when it is collected, runs
+    no code.  Before, the pool's shutdown ran in that closing, and a Ctrl-C
+    arriving while it waited for the workers was an error "ignored" with a
+    traceback, the command going on to exit 0 with its output.  Ctrl-C, or
+    a caller that stops early, ends the workers at once (:func:`_stop`)."""
+    cases = list(cases)
+    if not cases:
+        return
+    with _threads_per_worker(workers):
+        pool = executor(workers, fresh)
         try:
-            yield from pool.map(function, cases)
-        except KeyboardInterrupt:
+            futures = [pool.submit(function, case) for case in cases]  # not map: it cancels them on Ctrl-C
+            for future in futures[:-1]:
+                yield future.result()
+            last = futures[-1].result()
+            pool.shutdown(wait=True)
+        except Exception:
+            _shut(pool)
+            raise
+        except BaseException:  # Ctrl-C (KeyboardInterrupt), SIGTERM, or the caller stopped early (GeneratorExit)
             _stop(pool)
             raise
+    yield last
+
+
+def _shut(pool: Executor) -> None:
+    """A case failed: wait for the cases under way, as leaving the pool
+    does, unless Ctrl-C comes meanwhile (then :func:`_stop`)."""
+    try:
+        pool.shutdown(wait=True)
+    except BaseException:
+        _stop(pool)
+        raise
 
 
 def _stop(pool: Executor) -> None:
-    """Ctrl-C: drop the cases not started and end a local pool's workers now
-    (they ignore SIGINT), so that leaving the pool does not wait for the
-    cases under way.  An MPI pool's workers belong to the launcher."""
-    pool.shutdown(wait=False, cancel_futures=True)
+    """Ctrl-C: end a local pool's workers now (they ignore SIGINT), so that
+    neither leaving the pool nor the interpreter's exit waits for the cases
+    under way; the cases not started fail with the broken pool, unseen.  The
+    workers are taken before the shutdown, which forgets them (taken after
+    it, none was ever ended, and the exit waited for the cases under way).
+    No future is cancelled: Python 3.11's pool, finding its workers gone,
+    sets an error on every pending future, and on a cancelled one that
+    raised InvalidStateError in its thread, with a traceback.  An MPI
+    pool's workers belong to the launcher."""
+    processes = list((getattr(pool, "_processes", None) or {}).values())  # no public handle before Python 3.14
     if isinstance(pool, ProcessPoolExecutor):
-        for process in list((pool._processes or {}).values()):  # no public handle before Python 3.14
+        for process in processes:
             process.terminate()
+        pool.shutdown(wait=False)
+    else:
+        pool.shutdown(wait=False, cancel_futures=True)
 
 
 def workers_label(workers: int | None) -> str:
