@@ -215,14 +215,17 @@ POOLED_STUDY = ["study", "A", "--param", "kN", "--values", "1e9", "1e10", "1e11"
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("delay", [0.1, 0.5, 1.0, 1.5, 2.0, 3.0, 5.0])
+@pytest.mark.parametrize("delay", [0.5, 1.0, 1.5, 2.0, 3.0, 5.0])
 def test_ctrl_c_at_any_moment_of_a_pooled_study(delay, tmp_path):
     """Ctrl-C (SIGINT to the process group, as a terminal sends it) at a
     fixed delay, not after the first progress line: while the command
     imports, while the workers start, while they solve.  Before: exit -2
     with a traceback (imports), a traceback per starting worker, the pool's
     thread's InvalidStateError, or (grader1, under load) exit 0 with the
-    output and a KeyboardInterrupt "ignored" in the pool's shutdown."""
+    output and a KeyboardInterrupt "ignored" in the pool's shutdown.  Not
+    before 0.5 s: in the interpreter's own start (its site module, 0.15-0.2 s
+    here under load 16) no code of ours runs yet, and Python prints "Fatal
+    Python error: init_import_site" with a traceback."""
     for _ in range(3):
         out = tmp_path / "out"
         proc = subprocess.Popen([sys.executable, "-m", "verification", *POOLED_STUDY, "--out", str(out)], cwd=ROOT,

@@ -92,6 +92,14 @@ def executor(workers: int | None, fresh: bool = False) -> Executor:
                                initargs=(level,))
 
 
+#: The workers spawned and not yet seen to end (their ``Popen``), kept before
+#: the Ctrl-C held back during the spawn is delivered: raised as the mask is
+#: put back, it lost the new worker before its pool knew it, and
+#: :func:`_stop` could not end it (it went on starting, and failed with a
+#: traceback on its pool's queues, closed meanwhile).
+_SPAWNED: list = []
+
+
 class _DeafProcess(multiprocessing.context.SpawnProcess):
     """A spawned worker that starts with SIGINT blocked: a Ctrl-C that
     reaches it while it starts up (the interpreter, then the imports of
@@ -105,7 +113,9 @@ class _DeafProcess(multiprocessing.context.SpawnProcess):
     def _Popen(process_obj):
         before = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
         try:
-            return multiprocessing.context.SpawnProcess._Popen(process_obj)
+            popen = multiprocessing.context.SpawnProcess._Popen(process_obj)
+            _SPAWNED[:] = [p for p in _SPAWNED if p.poll() is None] + [popen]
+            return popen
         finally:
             signal.pthread_sigmask(signal.SIG_SETMASK, before)
 
@@ -140,18 +150,31 @@ def worker_logging(level: int) -> None:
 THREAD_VARIABLES = ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS")
 
 
+#: Open MPI's option that starts a process's MPI alone (a "singleton")
+#: without its helper daemon (orted): a worker ended by Ctrl-C while its MPI
+#: started left that daemon writing "ORTE_ERROR_LOG: Broken pipe" lines
+#: after the command's last line (3 of 6 workers ended 0.02-0.3 s into
+#: their MPI start, none with it).  A local worker solves on COMM_SELF and
+#: spawns no processes, which is all an isolated singleton cannot do.
+ISOLATED_SINGLETON = "OMPI_MCA_ess_singleton_isolated"
+
+
 @contextlib.contextmanager
-def _threads_per_worker(workers: int | None):
-    """The environment that K > 1 local workers are spawned with: the cores
-    shared out, ``max(1, cores // K)`` threads each, unless the user sized
-    the thread pools already.  A serial run keeps every core busy (EFGM's
-    shape functions and assembly run on one numpy thread per core), so K
-    workers left at one pool of threads each would ask for K times the
-    cores and run each case up to K times slower."""
-    saved = {k: os.environ.get(k) for k in THREAD_VARIABLES}
+def _threads_per_worker(workers: int | None, fresh: bool = False):
+    """The environment that local workers are spawned with.  K > 1 workers:
+    the cores shared out, ``max(1, cores // K)`` threads each, unless the
+    user sized the thread pools already.  A serial run keeps every core
+    busy (EFGM's shape functions and assembly run on one numpy thread per
+    core), so K workers left at one pool of threads each would ask for K
+    times the cores and run each case up to K times slower.  Any local
+    worker (K > 1, or ``fresh``): an MPI of its own without Open MPI's
+    daemon (:data:`ISOLATED_SINGLETON`), unless the user set it."""
+    saved = {k: os.environ.get(k) for k in (*THREAD_VARIABLES, ISOLATED_SINGLETON)}
     if (workers or 1) > 1:
         for k in THREAD_VARIABLES:
             os.environ.setdefault(k, str(max(1, (os.cpu_count() or 1) // workers)))
+    if ((workers or 1) > 1 or fresh) and not under_mpi_pool():
+        os.environ.setdefault(ISOLATED_SINGLETON, "1")
     try:
         yield
     finally:
@@ -181,7 +204,7 @@ def map_cases(function, cases, workers: int | None = None, fresh: bool = False):
     cases = list(cases)
     if not cases:
         return
-    with _threads_per_worker(workers):
+    with _threads_per_worker(workers, fresh):
         pool = executor(workers, fresh)
         try:
             futures = [pool.submit(function, case) for case in cases]  # not map: it cancels them on Ctrl-C
@@ -222,6 +245,9 @@ def _stop(pool: Executor) -> None:
     if isinstance(pool, ProcessPoolExecutor):
         for process in processes:
             process.terminate()
+        for popen in _SPAWNED:  # and any whose spawn the Ctrl-C cut short
+            if popen.poll() is None:
+                popen.terminate()
         pool.shutdown(wait=False)
     else:
         pool.shutdown(wait=False, cancel_futures=True)
