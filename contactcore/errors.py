@@ -49,3 +49,18 @@ def require_finite(what: str, values) -> None:
     if bad.any():
         raise SolverError(f"{what}: {int(bad.sum())} of {bad.size} values are not finite (NaN or ∞), "
                           "so the answer is refused; the scene's magnitudes may exceed the floating-point range")
+
+
+def quoted(value: float, *bounds: float, least: int = 6) -> str:
+    """``value`` in the fewest significant digits (``least`` at least; 6 like ``:g``)
+    that keep it on its own side of each of ``bounds``: a value refused
+    for lying just outside a range is never quoted rounded onto or into it
+    (30.000001 against 30 reads "30.000001", not "30"); at 17 digits it is
+    the value itself."""
+    value = float(value)
+    for digits in range(least, 18):
+        text = f"{value:.{digits}g}"
+        shown = float(text)
+        if all((shown > b) == (value > b) and (shown < b) == (value < b) for b in map(float, bounds)):
+            return text
+    return repr(value)

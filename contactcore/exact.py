@@ -58,7 +58,7 @@ import numpy as np
 import scipy.sparse as sp
 
 from . import tolerances as tol
-from .errors import DiscretisationError, SceneError
+from .errors import DiscretisationError, SceneError, quoted
 from .collective import SERIAL
 from .laws import STICK, CoulombLaw, Decision, LawResponse, LinearLaw, UnilateralLaw, _friction, _positive
 
@@ -96,7 +96,7 @@ def checked_stabilisation(value, field: str) -> float:
     low, high = tol.NITSCHE_STABILISATION_RANGE
     if not low <= value <= high:
         why = _STIFF if value > high else _SOFT
-        raise SceneError(field, f"must lie within {low:g}..{high:g} (got {value:g}): {why}")
+        raise SceneError(field, f"must lie within {low:g}..{high:g} (got {quoted(value, low, high)}): {why}")
     return float(value)
 
 

@@ -398,12 +398,19 @@ def friction_demand(scene, k: float) -> str:
     over Γ; Wriggers 2006, §2.3).  The unilateral law ties a closed point
     tangentially, μ = ∞: only the press is checked.  ``F`` is the sum of
     ``factor(k)·traction·length`` over the part of each loaded edge on that
-    body (φ linear along it), ``t = −p n_out`` for a pressure.  Only a
-    rectangle cut by a line with no body force on the body is judged here."""
+    body (φ linear along it), ``t = −p n_out`` for a pressure.  A body whose
+    supports and pins hold some directions but leave it free to move off Γ
+    (an x-roller leaves a block above a horizontal Γ free in y) is refused
+    when the loads do positive work in such a motion (:func:`_pulled_off`):
+    Γ's contact pushes only, so it cannot hold them.  Only a rectangle cut
+    by a line with no body force on the body is judged here."""
     mu = float("inf") if scene.law.name == "unilateral" else getattr(scene.law, "mu", None)
     if mu is None:
         return ""
-    for name, shear, press in _demands(scene, k):
+    for name, shear, press, held in _demands(scene, k):
+        if held:
+            return (f"body {name}: {held}, and the loads pull it off Γ: no equilibrium, as contact only pushes; "
+                    "hold it that way with a support or pin, or with springs that carry tension (type = \"linear\")")
         if press <= 0:
             how = "pull it off Γ" if press < 0 else "lie along Γ and do not press it onto Γ"
             return f"body {name} is held by Γ alone and the loads {how}: no equilibrium without a support"
@@ -414,26 +421,80 @@ def friction_demand(scene, k: float) -> str:
 
 
 def _demands(scene, k: float):
-    """``(name, |F·t|, F·n pressing it onto Γ)`` of each body held by Γ
+    """``(name, |F·t|, F·n pressing it onto Γ, "")`` of each body held by Γ
     alone and loaded (:func:`friction_demand`), at increment ``k``, F·n
     within :data:`~contactcore.tolerances.ALONG_GAMMA` of |F| taken as 0
-    (F along Γ); none where Γ is not a line across a rectangle."""
+    (F along Γ); ``(name, 0, 0, how)`` of a body its supports and pins hold
+    in part, whose loads pull it off Γ in the motion ``how`` they leave
+    free (:func:`_pulled_off`); none where Γ is not a line across a
+    rectangle."""
     if not isinstance(scene.interface, LineInterface) or not isinstance(scene.domain, Rectangle):
         return
     n = np.asarray(scene.interface.normal, float)
+    supports = _restraint(scene, np.zeros((0, 2)), np.zeros(0))[0]
     for b, name in enumerate(_BODY_NAMES):
-        held = [_boundary_points(scene.domain, s.boundary) for s in scene.supports]
-        held += [np.asarray([p.point], float) for p in scene.pins]
-        if any((scene.body_of(p) == b).any() for p in held) or any(
-                getattr(ld, "body", None) == ("minus", "plus")[b] for ld in scene.loads):
+        if any(getattr(ld, "body", None) == ("minus", "plus")[b] for ld in scene.loads):
+            continue
+        free = _free_modes(supports[3 * b:3 * b + 3, 3 * b:3 * b + 3])
+        if not free.shape[1]:
+            continue
+        if free.shape[1] < 3:  # held in part by its supports and pins
+            how = _pulled_off(scene, b, supports[3 * b:3 * b + 3, 3 * b:3 * b + 3], k)
+            if how:
+                yield name, 0.0, 0.0, how
             continue
         force = _boundary_resultant(scene, b, scene.factors(k)[0])
         if force.any():
             press = -force @ n if b == 1 else force @ n
             along = abs(press) <= tol.ALONG_GAMMA * np.linalg.norm(force)  # round-off's sign decides nothing
-            yield name, abs(force @ tangent_of(n[None])[0]), 0.0 if along else float(press)
+            yield name, abs(force @ tangent_of(n[None])[0]), 0.0 if along else float(press), ""
 
 
+def _pulled_off(scene, body: int, Q: np.ndarray, k: float) -> str:
+    """How body ``body`` (0 −, 1 +) may move off Γ against its loads, or "":
+    a rigid motion ``r`` that its supports and pins leave free (``rᵀ Q r``
+    within RIGID_MODE_FREE of ``|r|²``, ``Q`` their 3×3 restraint of its
+    modes, :func:`_restraint`), that opens Γ everywhere without sliding
+    (g_N >= 0, g_T = 0 at every point of the straight Γ), and in which the
+    loads at increment ``k`` do positive work (beyond ALONG_GAMMA of
+    ``|G||r|``, ``G`` their work per mode).  Such motions are the
+    non-negative combinations of the turns about Γ's two ends that open
+    it; contact's tractions push (t_N <= 0) and do no work along g_T = 0,
+    so in that motion nothing balances the loads' work: no equilibrium,
+    under a unilateral or Coulomb law alike."""
+    itf, dom = scene.interface, scene.domain
+    ends = itf.chord(dom)
+    if ends is None:
+        return ""
+    ends = np.asarray(ends, float)
+    centre, L = np.mean(dom.corners, axis=0), scene.length_scale
+    n, sign = np.asarray(itf.normal, float), 1.0 if body == 1 else -1.0  # the jump is + minus −
+
+    def opening(p, q):
+        """The turn about ``p`` (unit) that opens Γ at its other end ``q``."""
+        dp = (p - centre) / L
+        r = np.array([dp[1], -dp[0], 1.0])
+        gap = sign * n @ (_mode_matrix(q, centre, L) @ r)
+        return r * np.sign(gap) / np.linalg.norm(r)
+
+    a, c = opening(ends[0], ends[1]), opening(ends[1], ends[0])
+    G = _load_work(scene, body, centre, L, scene.factors(k)[0])
+    if not G.any():
+        return ""
+    # q(α) = r(α)ᵀ Q r(α), r(α) = α a + (1 − α) c: convex; its free set is an interval about its minimum
+    d = a - c
+    A, B = d @ Q @ d, 2 * c @ Q @ d
+    candidates = {0.0, 1.0, float(np.clip(-B / (2 * A), 0.0, 1.0)) if A > 0 else 0.0}
+    for alpha in sorted(candidates):
+        r = alpha * a + (1 - alpha) * c
+        size = r @ r
+        if size > 0 and r @ Q @ r <= tol.RIGID_MODE_FREE * size and \
+                G @ r > tol.ALONG_GAMMA * np.linalg.norm(G) * np.sqrt(size):
+            if abs(r[2]) <= tol.ALONG_GAMMA * np.sqrt(size):
+                return "its supports and pins leave it free to move straight off Γ"
+            pivot = centre + L * np.array([-r[1], r[0]]) / r[2]
+            return f"its supports and pins leave it free to turn off Γ about ({pivot[0]:.4g}, {pivot[1]:.4g})"
+    return ""
 def tie_cause(scene, k: float, failure: str, from_rest: bool = False) -> str:
     """Why a unilateral law's increment ``k`` failed, or "": another law,
     or a ``failure`` (the last cut-back's message) that is not Newton
@@ -456,7 +517,7 @@ def tie_cause(scene, k: float, failure: str, from_rest: bool = False) -> str:
     not help it."""
     if scene.law.name != "unilateral" or NOT_CONVERGED not in failure:
         return ""
-    ratios = [f"{shear / press:.3g} on body {name}" for name, shear, press in _demands(scene, k) if press > 0]
+    ratios = [f"{shear / press:.3g} on body {name}" for name, shear, press, _ in _demands(scene, k) if press > 0]
     mu = f"mu a few times the loads' shear/normal ({ratios[0]})" if ratios else "a large mu"
     exact = scene.law.enforcement == "exact"
     more = ("more increments do not help: from rest a smaller step is the same problem scaled" if from_rest else
@@ -468,6 +529,48 @@ def tie_cause(scene, k: float, failure: str, from_rest: bool = False) -> str:
             f"one opens or closes its neighbours (a finer h or degree 2 fails more often; {more}; {other}); use "
             f"type = \"coulomb\" with {mu}: |t_T| <= mu|t_N| lets the shear vanish with the pressure where Γ "
             "opens")
+
+
+def _mode_matrix(x, centre, L) -> np.ndarray:
+    """(2, 3): the displacement at ``x`` of one body's rigid modes (x, y,
+    rotation), as :func:`_modes` has them."""
+    d = (np.asarray(x, float) - centre) / L
+    return np.array([[1.0, 0.0, -d[1]], [0.0, 1.0, d[0]]])
+
+
+def _load_work(scene, body: int, centre, L, factors) -> np.ndarray:
+    """(3,): the work of the tractions and pressures on ``body``'s part of
+    each loaded edge of the rectangle in its rigid modes (:func:`_modes`,
+    about ``centre``, lengths over ``L``): a uniform load's work in a
+    linear motion is its resultant's at the part's midpoint."""
+    from .scene import Pressure, Traction
+    c = scene.domain.corners
+    work = np.zeros(3)
+    for load, f in zip(scene.loads, factors):
+        if not isinstance(load, (Traction, Pressure)):
+            continue
+        i, j = {"bottom": (0, 1), "right": (1, 2), "top": (2, 3), "left": (3, 0)}[load.boundary]
+        lo, hi = _part(*scene.interface.phi(c[[i, j]]), body)
+        if hi <= lo:
+            continue
+        edge = c[j] - c[i]
+        out = np.array([edge[1], -edge[0]]) / np.linalg.norm(edge)  # corners counter-clockwise
+        t = np.asarray(load.value, float) if isinstance(load, Traction) else -load.value * out
+        mid = c[i] + 0.5 * (lo + hi) * edge
+        work += f * (hi - lo) * np.linalg.norm(edge) * (t @ _mode_matrix(mid, centre, L))
+    return work
+
+
+def _part(phi_a: float, phi_b: float, body: int) -> tuple[float, float]:
+    """The part ``[lo, hi]`` (of [0, 1] along an edge) on ``body``, φ
+    linear along it with ``phi_a``, ``phi_b`` at its ends (as :func:`_share`
+    measures it)."""
+    if (phi_a > 0) == (phi_b > 0):
+        on = (phi_a + phi_b > 0) == (body == 1)
+        return (0.0, 1.0) if on else (0.0, 0.0)
+    cut = phi_a / (phi_a - phi_b)
+    plus = (0.0, cut) if phi_a > 0 else (cut, 1.0)
+    return plus if body == 1 else ((cut, 1.0) if phi_a > 0 else (0.0, cut))
 
 
 def _share(phi_a: float, phi_b: float, body: int) -> float:

@@ -17,7 +17,7 @@ import numpy as np
 from . import tolerances as tol
 from .bodies import Body
 from .elasticity import voigt_matrix
-from .errors import SceneError
+from .errors import SceneError, quoted
 from .geometry import CircleInterface, Domain, Interface, LevelSetInterface, LineInterface, Rectangle
 from .laws import InterfaceLaw
 
@@ -424,7 +424,7 @@ def _check_interface(scene: Scene) -> None:
         if smaller <= tol.MIN_BODY_AREA_FRACTION:
             touches = smaller <= tol.GEOMETRY ** 2  # an area of round-off
             raise SceneError("interface", "the line only touches the domain: one body would be empty" if touches
-                             else f"the line cuts off a body of {smaller:.2g} of the domain's area, below the "
+                             else f"the line cuts off a body of {quoted(smaller, tol.MIN_BODY_AREA_FRACTION, least=2)} of the domain's area, below the "
                                   f"{tol.MIN_BODY_AREA_FRACTION:g} any method can resolve")
     elif isinstance(itf, LevelSetInterface):
         a_minus = itf.minus_area(dom)
@@ -526,10 +526,10 @@ def check_resolution(scene: Scene, h, field: str = "--h") -> float:
         raise SceneError(field, f"must be a finite number > 0 (got {h!r})")
     top = smallest_dimension(scene.domain)
     if h > top:
-        raise SceneError(field, f"{h:g} exceeds the domain's smallest dimension {top:g}: the mesh would be one "
+        raise SceneError(field, f"{quoted(h, top)} exceeds the domain's smallest dimension {top:g}: the mesh would be one "
                          "cell across")
     if h < tol.GEOMETRY * top:
-        raise SceneError(field, f"{h:g} is below the geometric tolerance, {tol.GEOMETRY:g} of the domain's "
+        raise SceneError(field, f"{quoted(h, tol.GEOMETRY * top)} is below the geometric tolerance, {tol.GEOMETRY:g} of the domain's "
                          f"smallest dimension {top:g}: no mesh or node set of it can be made or held")
     return float(h)
 

@@ -30,12 +30,30 @@ rank 0 alone writes the results; the other ranks compute alongside it.
 """
 from __future__ import annotations
 
-import argparse
-import logging
-import math
 import os
 import signal
 import sys
+
+
+def _interrupted_while_starting(signum, frame) -> None:
+    """Ctrl-C (or SIGTERM) before :func:`main` takes over: the imports
+    below take a second or more on a loaded machine, and nothing is under
+    way yet, so one line and the status of the signal, at once (a
+    KeyboardInterrupt there was a traceback and exit 1)."""
+    if all(os.environ.get(n, "0") == "0" for n in ("OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK")):  # one line
+        print("interrupted" if signum == signal.SIGINT else "terminated", file=sys.stderr, flush=True)
+    os._exit(128 + signum)
+
+
+#: The handlers the command line starts with, until :func:`main` takes over
+#: (a signal already ignored, as in a shell's background job, stays ignored).
+_STARTING = {sig: signal.signal(sig, _interrupted_while_starting)
+             for sig, default in ((signal.SIGINT, signal.default_int_handler), (signal.SIGTERM, signal.SIG_DFL))
+             if __name__ == "__main__" and signal.getsignal(sig) is default}
+
+import argparse
+import logging
+import math
 import threading
 from contextlib import ExitStack, contextmanager
 from dataclasses import dataclass
@@ -162,7 +180,8 @@ def _commands() -> dict[str, Command]:
     degree = arg("--degree", type=int, default=1, choices=(1, 2), help="polynomial degree (default 1)")
     degrees = arg("--degree", nargs="+", type=int, default=[1], choices=(1, 2), help="polynomial degrees (default 1)")
     ladder = arg("--h", nargs="+", type=float, required=True, help="the resolutions of the ladder, coarse to fine")
-    cell = arg("--cell", choices=XFEM_CELLS, help="XFEM background cells (default quad)")
+    cell = arg("--cell", choices=XFEM_CELLS, help="XFEM background cells (default quad on a rectangle; on a disc "
+                                                        "gmsh, the only choice there)")
     scenes = arg("--scene", nargs="+", default=["A", "B", "C"], choices=["A", "B", "C"],
                  help="the paper's scenes (default: A B C)")
     out = arg("--out", type=_folder, required=True,
@@ -454,6 +473,20 @@ def _check_counts(args) -> None:
             raise ContactError(f"--{name}: must be at least {least} (got {value})")
 
 
+def _check_cell(args) -> None:
+    """``--cell quad|triangle`` names structured cells, which fill a
+    rectangle only: a disc is meshed by gmsh alone (docs/methods/xfem.md),
+    so asking for them there is refused rather than silently replaced."""
+    cell = getattr(args, "cell", None)
+    if cell is None or cell == "gmsh" or getattr(args, "scene", None) is None:
+        return
+    from contactcore.geometry import Disc
+    scene = load_scene(args.scene)
+    if isinstance(scene.domain, Disc):
+        raise ContactError(f"--cell {cell}: the domain of scene {scene.name} is a disc, which only gmsh meshes "
+                           f"(structured {cell} cells fill a rectangle); use --cell gmsh or leave --cell out")
+
+
 def _check_workers(args) -> None:
     workers = getattr(args, "workers", None)
     if workers is not None and workers < 1:
@@ -580,8 +613,10 @@ def main(argv=None) -> int:
     rank = launched_rank()
     repeats = _configure_logging(args.verbosity if rank == 0 else -2)  # one log, rank 0's
     try:
+        _take_over_signals()
         with _signals_end_the_command(rank, distributed()):
             _main(args, argv, command, rank)
+        _print_repeats(repeats)
     except ContactError as exc:
         _print_repeats(repeats)
         if rank == 0:  # every rank meets the same error (Newton's decisions are collective): one line
@@ -597,8 +632,16 @@ def main(argv=None) -> int:
         if distributed():
             _abort_on(exc)
         raise
-    _print_repeats(repeats)
     return 0
+
+
+def _take_over_signals() -> None:
+    """From here on Ctrl-C raises KeyboardInterrupt, which :func:`main`
+    turns into its one line once the result folder under way is discarded
+    (the start-up's handlers, :data:`_STARTING`, put back as Python has them)."""
+    for sig, handler in _STARTING.items():
+        if signal.getsignal(sig) is _interrupted_while_starting:
+            signal.signal(sig, handler)
 
 
 def _print_repeats(repeats: Repeats) -> None:
@@ -619,6 +662,7 @@ def _main(args, argv, command: Command, rank: int) -> None:
     _check_sizes(args)
     _check_workers(args)
     _check_counts(args)
+    _check_cell(args)
     _check_ranks_list(args)
     if getattr(args, "out", None) is None:
         command.run(args, argv)
@@ -635,4 +679,8 @@ def _main(args, argv, command: Command, rank: int) -> None:
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    status = main()
+    # the command has ended (its line said, its folder in place or discarded): a late Ctrl-C while the
+    # interpreter joins the pool's threads at exit would only be a traceback "ignored" there
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    sys.exit(status)

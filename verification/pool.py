@@ -24,6 +24,7 @@ from __future__ import annotations
 import contextlib
 import logging
 import multiprocessing
+import multiprocessing.context
 import os
 import signal
 import sys
@@ -48,9 +49,9 @@ class Serial(Executor):
         future = Future()
         try:
             future.set_result(fn(*args, **kwargs))
-        except BaseException as exc:  # handed back through the future, as a pool would
+        except Exception as exc:  # handed back through the future, as a pool would
             future.set_exception(exc)
-        return future
+        return future  # Ctrl-C is not: kept in a future, the cases after it would still run
 
 
 def launched_rank() -> int:
@@ -86,9 +87,43 @@ def executor(workers: int | None, fresh: bool = False) -> Executor:
         return MPIPoolExecutor()  # its static workers outlive one executor: no initializer (it breaks the next)
     if (workers or 1) == 1 and not fresh:
         return Serial()
-    return ProcessPoolExecutor(max_workers=workers or 1, mp_context=multiprocessing.get_context("spawn"),
+    return ProcessPoolExecutor(max_workers=workers or 1, mp_context=_SpawnDeaf(),
                                max_tasks_per_child=1 if fresh else None, initializer=worker_logging,
                                initargs=(level,))
+
+
+#: The workers spawned and not yet seen to end (their ``Popen``), kept before
+#: the Ctrl-C held back during the spawn is delivered: raised as the mask is
+#: put back, it lost the new worker before its pool knew it, and
+#: :func:`_stop` could not end it (it went on starting, and failed with a
+#: traceback on its pool's queues, closed meanwhile).
+_SPAWNED: list = []
+
+
+class _DeafProcess(multiprocessing.context.SpawnProcess):
+    """A spawned worker that starts with SIGINT blocked: a Ctrl-C that
+    reaches it while it starts up (the interpreter, then the imports of
+    ``__main__``'s modules, seconds under load) stays pending instead of
+    raising KeyboardInterrupt there, with a traceback, before
+    :func:`worker_logging` ignores it (which discards it).  The mask is
+    set on the spawning thread only for the spawn; a Ctrl-C meant for the
+    command meanwhile is delivered to it when the mask is put back."""
+
+    @staticmethod
+    def _Popen(process_obj):
+        before = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
+        try:
+            popen = multiprocessing.context.SpawnProcess._Popen(process_obj)
+            _SPAWNED[:] = [p for p in _SPAWNED if p.poll() is None] + [popen]
+            return popen
+        finally:
+            signal.pthread_sigmask(signal.SIG_SETMASK, before)
+
+
+class _SpawnDeaf(multiprocessing.context.SpawnContext):
+    """The spawn context, its processes :class:`_DeafProcess`."""
+
+    Process = _DeafProcess
 
 
 #: Every process's log line: level, logger, message.
@@ -100,7 +135,8 @@ def worker_logging(level: int) -> None:
     ``--verbose``) and format, on the worker's stderr.  A worker ignores
     Ctrl-C: the command that owns it stops it (:func:`map_cases`) and says
     ``interrupted`` once, without a traceback from every worker."""
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGINT, signal.SIG_IGN)  # a Ctrl-C pending since the start is discarded
+    signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT})  # blocked by _DeafProcess
     handler = logging.StreamHandler()
     handler.setFormatter(logging.Formatter(LOG_FORMAT))
     logger = logging.getLogger("verification")
@@ -114,18 +150,31 @@ def worker_logging(level: int) -> None:
 THREAD_VARIABLES = ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS")
 
 
+#: Open MPI's option that starts a process's MPI alone (a "singleton")
+#: without its helper daemon (orted): a worker ended by Ctrl-C while its MPI
+#: started left that daemon writing "ORTE_ERROR_LOG: Broken pipe" lines
+#: after the command's last line (3 of 6 workers ended 0.02-0.3 s into
+#: their MPI start, none with it).  A local worker solves on COMM_SELF and
+#: spawns no processes, which is all an isolated singleton cannot do.
+ISOLATED_SINGLETON = "OMPI_MCA_ess_singleton_isolated"
+
+
 @contextlib.contextmanager
-def _threads_per_worker(workers: int | None):
-    """The environment that K > 1 local workers are spawned with: the cores
-    shared out, ``max(1, cores // K)`` threads each, unless the user sized
-    the thread pools already.  A serial run keeps every core busy (EFGM's
-    shape functions and assembly run on one numpy thread per core), so K
-    workers left at one pool of threads each would ask for K times the
-    cores and run each case up to K times slower."""
-    saved = {k: os.environ.get(k) for k in THREAD_VARIABLES}
+def _threads_per_worker(workers: int | None, fresh: bool = False):
+    """The environment that local workers are spawned with.  K > 1 workers:
+    the cores shared out, ``max(1, cores // K)`` threads each, unless the
+    user sized the thread pools already.  A serial run keeps every core
+    busy (EFGM's shape functions and assembly run on one numpy thread per
+    core), so K workers left at one pool of threads each would ask for K
+    times the cores and run each case up to K times slower.  Any local
+    worker (K > 1, or ``fresh``): an MPI of its own without Open MPI's
+    daemon (:data:`ISOLATED_SINGLETON`), unless the user set it."""
+    saved = {k: os.environ.get(k) for k in (*THREAD_VARIABLES, ISOLATED_SINGLETON)}
     if (workers or 1) > 1:
         for k in THREAD_VARIABLES:
             os.environ.setdefault(k, str(max(1, (os.cpu_count() or 1) // workers)))
+    if ((workers or 1) > 1 or fresh) and not under_mpi_pool():
+        os.environ.setdefault(ISOLATED_SINGLETON, "1")
     try:
         yield
     finally:
@@ -140,23 +189,68 @@ def map_cases(function, cases, workers: int | None = None, fresh: bool = False):
     """``function(c) for c in cases`` on :func:`executor` (``workers``,
     ``fresh``): yields the results in the order of ``cases``, each as soon
     as it and those before it are done, so that the caller reports progress
-    as it goes (consume it whole: the pool closes at the end)."""
-    with _threads_per_worker(workers), executor(workers, fresh) as pool:
+    as it goes.
+
+    The cases are submitted one by one, not through ``pool.map``, which
+    cancels the futures left when it is interrupted (see :func:`_stop`).
+    The pool is shut down before the last result is handed over, and that
+    last ``yield`` lies outside every ``try`` and ``with``: a caller that
+    stops asking there (``zip(cases, map_cases(...))`` never asks past the
+    last case) leaves a generator whose closing, when it is collected, runs
+    no code.  Before, the pool's shutdown ran in that closing, and a Ctrl-C
+    arriving while it waited for the workers was an error "ignored" with a
+    traceback, the command going on to exit 0 with its output.  Ctrl-C, or
+    a caller that stops early, ends the workers at once (:func:`_stop`)."""
+    cases = list(cases)
+    if not cases:
+        return
+    with _threads_per_worker(workers, fresh):
+        pool = executor(workers, fresh)
         try:
-            yield from pool.map(function, cases)
-        except KeyboardInterrupt:
+            futures = [pool.submit(function, case) for case in cases]  # not map: it cancels them on Ctrl-C
+            for future in futures[:-1]:
+                yield future.result()
+            last = futures[-1].result()
+            pool.shutdown(wait=True)
+        except Exception:
+            _shut(pool)
+            raise
+        except BaseException:  # Ctrl-C (KeyboardInterrupt), SIGTERM, or the caller stopped early (GeneratorExit)
             _stop(pool)
             raise
+    yield last
+
+
+def _shut(pool: Executor) -> None:
+    """A case failed: wait for the cases under way, as leaving the pool
+    does, unless Ctrl-C comes meanwhile (then :func:`_stop`)."""
+    try:
+        pool.shutdown(wait=True)
+    except BaseException:
+        _stop(pool)
+        raise
 
 
 def _stop(pool: Executor) -> None:
-    """Ctrl-C: drop the cases not started and end a local pool's workers now
-    (they ignore SIGINT), so that leaving the pool does not wait for the
-    cases under way.  An MPI pool's workers belong to the launcher."""
-    pool.shutdown(wait=False, cancel_futures=True)
+    """Ctrl-C: end a local pool's workers now (they ignore SIGINT), so that
+    neither leaving the pool nor the interpreter's exit waits for the cases
+    under way; the cases not started fail with the broken pool, unseen.  The
+    workers are taken before the shutdown, which forgets them (taken after
+    it, none was ever ended, and the exit waited for the cases under way).
+    No future is cancelled: Python 3.11's pool, finding its workers gone,
+    sets an error on every pending future, and on a cancelled one that
+    raised InvalidStateError in its thread, with a traceback.  An MPI
+    pool's workers belong to the launcher."""
+    processes = list((getattr(pool, "_processes", None) or {}).values())  # no public handle before Python 3.14
     if isinstance(pool, ProcessPoolExecutor):
-        for process in list((pool._processes or {}).values()):  # no public handle before Python 3.14
+        for process in processes:
             process.terminate()
+        for popen in _SPAWNED:  # and any whose spawn the Ctrl-C cut short
+            if popen.poll() is None:
+                popen.terminate()
+        pool.shutdown(wait=False)
+    else:
+        pool.shutdown(wait=False, cancel_futures=True)
 
 
 def workers_label(workers: int | None) -> str:
