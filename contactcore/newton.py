@@ -218,10 +218,13 @@ class _Newton:
         u[self.system.fixed] = self.system.fixed_values(supports)
         lift = self._lift(supports)
         history, tangent, start, du, u0 = [], None, 0.0, None, u.copy()
+        judged = []  # the figure the convergence test judges: the equilibrium rows' residual over their forces
+        maps, stalled = set(), 0  # the status maps met in this step; iterations since a new one (_budget)
+        most = tol.NEWTON_MAX_ITERATIONS + tol.NEWTON_STATUS_CHANGES * len(self._gamma[1])
         self._secant, self._free_maps = None, 0  # each step its own secant and its maps that slip free
         self.factorisations.begin_step()
         evaluated = None  # the line search's response and residual at u
-        for it in range(1, tol.NEWTON_MAX_ITERATIONS + 1):
+        for it in range(1, most + 1):
             if evaluated is None:
                 response = self.itf.respond(self.law, u, self.state, previous, self.ranks)
                 evaluated = response, self._residual(u, b, response)
@@ -242,11 +245,16 @@ class _Newton:
             history.append(norm / scale if scale > 0 else norm)
             if not np.isfinite(norm):
                 raise SolverError(f"the residual is not finite; residual history {_fmt(history)}")
+            judged.append(self._balance(R) / max(forces, self._least_force))
             if it > 1 and self._converged(R, max(forces, self._least_force), tangent, response, du, u - u0):
                 health.check_residual(history[-1], "the settled Newton step")
                 health.check_held(self.scene, *self._gamma, self.ranks.gather(response.status),
                                   f"scene {self.scene.name}: increment {k:g} of {self.scene.increments}")
                 return (loads, supports), u, response, it - 1, history
+            new = self._new_map(maps, response.status) and norm <= start
+            stalled = 0 if new else stalled + 1
+            if stalled >= tol.NEWTON_MAX_ITERATIONS:
+                break
             ahead = () if du is None else self._ahead(u, du, response.status)
             du, rep, tangent = self._solve(response.tangent, -R, scale, response.secant, response.status, ahead)
             _merge(self.report, rep)
@@ -266,8 +274,29 @@ class _Newton:
             u = u + du
         free = (f" ({self._free_maps} of them on maps whose slipping points alone held a body that nothing else "
                 "holds, free to turn or slide until a point sticks)" if self._free_maps else "")
-        raise SolverError(f"{health.NOT_CONVERGED} in {tol.NEWTON_MAX_ITERATIONS} iterations{free}; "
-                          f"relative residual history {_fmt(history)}")
+        why = (f"the last {stalled} met no new status map" if stalled >= tol.NEWTON_MAX_ITERATIONS else
+               "each meeting a new status map")
+        raise SolverError(f"{health.NOT_CONVERGED} in {it} iterations ({why}){free}; equilibrium residual over "
+                          f"its forces {_fmt(judged)}, converged at <= {tol.NEWTON_RTOL:.0e}")
+
+    def _balance(self, R) -> float:
+        """The largest residual of the equilibrium rows, over every rank."""
+        return self.ranks.max(float(np.max(np.abs(R[self.balance]), initial=0.0)))
+
+    def _new_map(self, maps: set, status) -> bool:
+        """Whether the status map ``status`` (every rank's) is one not met
+        before in the step, which is then added to ``maps``.  A step's
+        iterations are limited by those that meet no new map
+        (NEWTON_MAX_ITERATIONS in a row): a semismooth Newton that meets new
+        maps, its residual below the step's first, is searching a finite
+        set of maps (points at a tie of the law sliding from stick to slip
+        a few per iteration: docs/newton.md, "A tie"), where one that cycles
+        meets the same maps again."""
+        key = self.ranks.gather(np.asarray(status, np.int8)).tobytes()
+        if key in maps:
+            return False
+        maps.add(key)
+        return True
 
     def _predicted(self, factors: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """The step's first iterate and the statuses it starts from.  Along
@@ -302,7 +331,7 @@ class _Newton:
         gap is round-off change status at every solve and change nothing:
         a rigid shift under unilateral contact).  The caller then holds it
         to the round-off check against the step's scale."""
-        balance = self.ranks.max(float(np.max(np.abs(R[self.balance]), initial=0.0)))
+        balance = self._balance(R)
         settled = self._settles(tangent, response)
         still = du is not None and self.ranks.max(float(np.max(np.abs(du), initial=0.0))) <= (
             tol.STEP_ROUNDOFF * self.ranks.max(float(np.max(np.abs(moved), initial=0.0))))
