@@ -219,12 +219,13 @@ class _Newton:
         lift = self._lift(supports)
         history, tangent, start, du, u0 = [], None, 0.0, None, u.copy()
         judged = []  # the figure the convergence test judges: the equilibrium rows' residual over their forces
-        maps, stalled = set(), 0  # the status maps met in this step; iterations since a new one (_budget)
-        most = tol.NEWTON_MAX_ITERATIONS + tol.NEWTON_STATUS_CHANGES * len(self._gamma[1])
+        held, budget = None, tol.NEWTON_MAX_ITERATIONS  # the statuses each point held in the step (_progress)
         self._secant, self._free_maps = None, 0  # each step its own secant and its maps that slip free
         self.factorisations.begin_step()
         evaluated = None  # the line search's response and residual at u
-        for it in range(1, most + 1):
+        it = 0
+        while it < budget:
+            it += 1
             if evaluated is None:
                 response = self.itf.respond(self.law, u, self.state, previous, self.ranks)
                 evaluated = response, self._residual(u, b, response)
@@ -251,10 +252,8 @@ class _Newton:
                 health.check_held(self.scene, *self._gamma, self.ranks.gather(response.status),
                                   f"scene {self.scene.name}: increment {k:g} of {self.scene.increments}")
                 return (loads, supports), u, response, it - 1, history
-            new = self._new_map(maps, response.status) and norm <= start
-            stalled = 0 if new else stalled + 1
-            if stalled >= tol.NEWTON_MAX_ITERATIONS:
-                break
+            held, progress = self._progress(held, response.status)
+            budget += tol.NEWTON_PROGRESS_ITERATIONS * progress
             ahead = () if du is None else self._ahead(u, du, response.status)
             du, rep, tangent = self._solve(response.tangent, -R, scale, response.secant, response.status, ahead)
             _merge(self.report, rep)
@@ -274,29 +273,27 @@ class _Newton:
             u = u + du
         free = (f" ({self._free_maps} of them on maps whose slipping points alone held a body that nothing else "
                 "holds, free to turn or slide until a point sticks)" if self._free_maps else "")
-        why = (f"the last {stalled} met no new status map" if stalled >= tol.NEWTON_MAX_ITERATIONS else
-               "each meeting a new status map")
-        raise SolverError(f"{health.NOT_CONVERGED} in {it} iterations ({why}){free}; equilibrium residual over "
+        raise SolverError(f"{health.NOT_CONVERGED} in {it} iterations{free}; equilibrium residual over "
                           f"its forces {_fmt(judged)}, converged at <= {tol.NEWTON_RTOL:.0e}")
 
     def _balance(self, R) -> float:
         """The largest residual of the equilibrium rows, over every rank."""
         return self.ranks.max(float(np.max(np.abs(R[self.balance]), initial=0.0)))
 
-    def _new_map(self, maps: set, status) -> bool:
-        """Whether the status map ``status`` (every rank's) is one not met
-        before in the step, which is then added to ``maps``.  A step's
-        iterations are limited by those that meet no new map
-        (NEWTON_MAX_ITERATIONS in a row): a semismooth Newton that meets new
-        maps, its residual below the step's first, is searching a finite
-        set of maps (points at a tie of the law sliding from stick to slip
-        a few per iteration: docs/newton.md, "A tie"), where one that cycles
-        meets the same maps again."""
-        key = self.ranks.gather(np.asarray(status, np.int8)).tobytes()
-        if key in maps:
-            return False
-        maps.add(key)
-        return True
+    def _progress(self, held, status):
+        """The statuses each point has ``held`` in the step (a bit per
+        status) with ``status`` added, and whether ``status`` moved a point,
+        on any rank, to a status it had not held in the step.  Each such
+        iteration adds NEWTON_PROGRESS_ITERATIONS to the step's budget: a
+        point can do so at most twice (open, stick, slip), so the budget
+        stays finite, while a semismooth Newton that moves points at a tie
+        of the law from stick to slip a few per iteration (docs/newton.md,
+        "A tie") goes on, and one that cycles (points moving back to
+        statuses they held) stops at NEWTON_MAX_ITERATIONS."""
+        bits = np.left_shift(1, np.asarray(status, np.int64))
+        if held is None:
+            return bits, False
+        return held | bits, self.ranks.max(float(np.any((held & bits) == 0))) > 0
 
     def _predicted(self, factors: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """The step's first iterate and the statuses it starts from.  Along

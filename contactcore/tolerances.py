@@ -449,23 +449,23 @@ NEWTON_RTOL = 1e-8
 #: displacements (a soft layer under a stiff one: 0.25 of them).
 STEP_ROUNDOFF = 1e-12
 
-#: Newton iterations per (sub-)increment that meet no new status map
-#: before the step is cut back.  A settled status needs one more iteration;
-#: each status change one more.  Measured: 2-6 on the scenes shipped; 25
-#: leaves room for cycling near a stick/slip switch that the cut-back then
-#: resolves.  Iterations that meet a map new to the step with a residual
-#: below the step's first do not count (contactcore.newton, _new_map), up
-#: to NEWTON_STATUS_CHANGES more per point of Γ: at a tie of the law
+#: Newton iterations per (sub-)increment before the step is cut back.  A
+#: settled status needs one more iteration; each status change one more.
+#: Measured: 2-6 on the scenes shipped; 25 leaves room for cycling near a
+#: stick/slip switch that the cut-back then resolves.  Each iteration that
+#: moves a point to a status it has not held in the step adds
+#: NEWTON_PROGRESS_ITERATIONS (contactcore.newton, _progress; a point can
+#: do so at most twice: open, stick, slip): at a tie of the law
 #: (tests/scenes/shearslide.toml, exact Coulomb, the shear driven to exactly
 #: μp, efgm P1) EFGM's discretisation leaves every point's |t*| within
 #: ±1.6e-4 of μp at h = 0.05, and the semismooth Newton moves them from stick
 #: to slip a few per iteration (each solve passes the slip's excess to the
 #: neighbours): 65 iterations at h = 0.05 (180 points; 31 stick at the end),
-#: 87 at h = 0.04 (228 points), 12 at h = 0.1 (measured 2026-11-27).  A
-#: search that only moves points one way changes each at most twice (stick,
-#: slip, open).
+#: 87 at h = 0.04 (228 points), 12 at h = 0.1 (measured 2026-11-27), about
+#: one in two of them moving points on (the others line-search steps that
+#: move none).
 NEWTON_MAX_ITERATIONS = 25
-NEWTON_STATUS_CHANGES = 2
+NEWTON_PROGRESS_ITERATIONS = 2
 
 #: A failed increment is halved at most this many times (1/64 of an
 #: increment) before the run stops with an error naming the increment.
