@@ -111,6 +111,22 @@ def _released(law: str):
     return scene
 
 
+def _tie():
+    """tests/scenes/shearslide.toml (two layers, contrast 100, exact
+    Coulomb μ = 0.35) cut at its fourth increment, where the top's
+    displacement drives the shear to exactly μp: every point of Γ at the
+    slip limit, to EFGM's discretisation error (±1.6e-4 of μp at h = 0.05)."""
+    from contactcore import Support, load_scene
+
+    scene = load_scene(str(HERE / "scenes" / "shearslide.toml"))
+    bottom, top = scene.supports
+    (k0, f0), (k1, f1) = top.path
+    at = tol.TIE_INCREMENT  # the top's factor there, and its path to it
+    factor = f0 + (f1 - f0) * (at - k0) / (k1 - k0)
+    tied = Support(top.boundary, top.fix, tuple(factor * v for v in top.value), ((k0, 0.0), (at, 1.0)))
+    return scene.with_changes(increments=at, supports=(bottom, tied))
+
+
 def _disc(pulled: bool):
     import free_disc
 
@@ -136,7 +152,9 @@ def _squeezed(enforcement: str):
 #: point nearest its stick window and takes a whole step out of a cycle
 #: (xfem on springs refuses it).  Last, a block pressed and released to
 #: exactly zero, at degree 2 (efgm P2's round-off is the largest there),
-#: without and with friction: every point at rest.
+#: without and with friction: every point at rest; and a shear driven to
+#: exactly the friction limit, where Newton moves EFGM's points from stick
+#: to slip a few per iteration.
 CASES = {
     "soft-layer": (lambda: _layered(E_minus_factor=tol.SOFT_LAYER), None),
     "efgm-springs-limit": (_efgm_springs_limit, None),
@@ -152,8 +170,9 @@ CASES = {
     "disc-pressed": (lambda: _disc(False), tol.ROUNDOFF_DISC_H),
     "disc-squeezed-exact": (lambda: _squeezed("exact"), tol.ROUNDOFF_SQUEEZED_H),
     "disc-squeezed-penalty": (lambda: _squeezed("penalty"), tol.ROUNDOFF_SQUEEZED_H),
-    "released-exact": (lambda: _released("unilateral"), tol.ROUNDOFF_RELEASED_H, {"degree": 2, "at_rest": True}),
-    "released-coulomb-exact": (lambda: _released("coulomb"), tol.ROUNDOFF_RELEASED_H, {"degree": 2, "at_rest": True}),
+    "tie-exact": (_tie, tol.ROUNDOFF_TIE_H, {"displacement_scale": True}),
+    "released-exact": (lambda: _released("unilateral"), tol.ROUNDOFF_RELEASED_H, {"degree": 2, "displacement_scale": True}),
+    "released-coulomb-exact": (lambda: _released("coulomb"), tol.ROUNDOFF_RELEASED_H, {"degree": 2, "displacement_scale": True}),
 }
 
 
@@ -210,9 +229,10 @@ def fingerprint(case: str, method: str, perturbation: str = "none") -> dict:
     factory, h, *given = CASES[case]
     given = dict(given[0]) if given else {}
     scene = _perturbed(factory(), perturbation)
-    # a case at rest measures its jumps against the scene's displacement
+    # a case whose jumps may be round-off (a point at rest or sticking
+    # exactly) measures them against the scene's displacement
     # (its largest prescribed value), not against their own round-off
-    at_rest = given.pop("at_rest", False)
+    at_rest = given.pop("displacement_scale", False)
     jump_scale = max(abs(v) for s in scene.supports for v in s.value) if at_rest else 0.0
     try:
         with _renumbered(perturbation):

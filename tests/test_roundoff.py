@@ -78,3 +78,27 @@ def test_a_load_released_to_zero_leaves_every_point_at_rest_closed_under_two_ker
     pressed, released = haswell["status"]
     opened = int(((released == OPEN) & (pressed != OPEN)).sum())
     assert opened == 0, f"{opened} of {released.size} points at rest opened at the released step"
+
+
+def test_a_shear_driven_to_exactly_the_friction_limit_is_solved():
+    """tests/scenes/shearslide.toml to its fourth increment, where the top's
+    displacement drives the shear to exactly μp (exact Coulomb, efgm P1,
+    h = 0.05; grader1 item 2).  Every point's |t*| is μp to EFGM's
+    discretisation error, and the semismooth Newton moves them from stick to
+    slip a few per iteration: it exited after 25 iterations at every
+    cut-back and offered "no equilibrium" for a problem with an answer.
+    Each iteration that moves a point on extends the budget (docs/newton.md,
+    "A tie"); CI runs this under a second kernel, and the slow test below
+    compares the two."""
+    result = roundoff.fingerprint("tie-exact", "efgm")
+    assert "refused" not in result, result["refused"]
+    assert result["step"].tolist() == list(range(1, tol.TIE_INCREMENT + 1))
+
+
+@pytest.mark.slow
+def test_a_shear_driven_to_exactly_the_friction_limit_decides_alike_under_two_kernels(tmp_path):
+    probes = [("tie-exact", "efgm")]
+    haswell = roundoff.in_child(probes, "coretype=Haswell", tmp_path)[probes[0]]
+    nehalem = roundoff.in_child(probes, "coretype=Nehalem", tmp_path)[probes[0]]
+    assert "refused" not in haswell, haswell["refused"]
+    _assert_alike(haswell, nehalem, "tie-exact", "tie-exact, efgm P1, Haswell / Nehalem")
