@@ -246,8 +246,9 @@ class _Newton:
             history.append(norm / scale if scale > 0 else norm)
             if not np.isfinite(norm):
                 raise SolverError(f"the residual is not finite; residual history {_fmt(history)}")
-            judged.append(self._balance(R) / max(forces, self._least_force))
-            if it > 1 and self._converged(R, max(forces, self._least_force), tangent, response, du, u - u0):
+            judged_forces = max(forces, self._least_force)  # what _converged judges the balance against
+            judged.append(self._balance(R) / judged_forces if judged_forces > 0 else self._balance(R))
+            if it > 1 and self._converged(R, judged_forces, tangent, response, du, u - u0):
                 health.check_residual(history[-1], "the settled Newton step")
                 health.check_held(self.scene, *self._gamma, self.ranks.gather(response.status),
                                   f"scene {self.scene.name}: increment {k:g} of {self.scene.increments}")
