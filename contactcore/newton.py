@@ -274,8 +274,8 @@ class _Newton:
             u = u + du
         free = (f" ({self._free_maps} of them on maps whose slipping points alone held a body that nothing else "
                 "holds, free to turn or slide until a point sticks)" if self._free_maps else "")
-        raise SolverError(f"{health.NOT_CONVERGED} in {it} iterations{free}; equilibrium residual over "
-                          f"its forces {_fmt(judged)}, converged at <= {tol.NEWTON_RTOL:.0e}")
+        raise SolverError(f"{health.NOT_CONVERGED} in {it} iterations{free}; relative residual of the equilibrium "
+                          f"rows over their forces {_fmt(judged)}, converged at <= {tol.NEWTON_RTOL:.0e}")
 
     def _balance(self, R) -> float:
         """The largest residual of the equilibrium rows, over every rank."""

@@ -29,7 +29,8 @@ def test_a_failed_step_prints_the_figure_its_convergence_test_judges(monkeypatch
     with pytest.raises(SolverError) as failed:
         methods.solver("efgm")(factory(), tol.MESSAGE_TIE_H, estimate_condition=False)
     details = getattr(failed.value, "details", "") or str(failed.value)
-    found = re.findall(r"equilibrium residual over its forces \[([^\]]*)\], converged at <= ([0-9.e+\-]+)", details)
+    found = re.findall(r"relative residual of the equilibrium rows over their forces \[([^\]]*)\], "
+                       r"converged at <= ([0-9.e+\-]+)", details)
     assert found, f"no judged figure and threshold in the failure: {details[:600]}"
     for figures, threshold in found:
         last = float(figures.split(", ")[-1])
