@@ -70,6 +70,11 @@ class Decision:
     in the margin, so every machine takes the same decision.  The scales
     are Γ-wide (reduced over every rank by Newton): ``gap`` the largest
     ``|g_N|``, ``traction`` the largest slip limit ``μp`` (:meth:`_Law.decision_scales`).
+    A margin within REST_ROUNDOFF of the scene's displacement unit (a
+    traction margin over the point's stiffness) is a point at rest, decided
+    as a zero margin is (closed, sticking) whatever it was before: a load
+    back to exactly zero leaves every margin round-off, and the band
+    relative to round-off scales is round-off too.
     """
 
     previous: np.ndarray
@@ -83,10 +88,14 @@ class Decision:
         gap, traction = (max(ranks.max(float(v)), tol.DECISION_FLOOR) for v in law.decision_scales(g, state))
         return cls(previous, gap, traction)
 
-    def switch(self, margin: np.ndarray, scale: float, was: np.ndarray) -> np.ndarray:
-        """``margin > 0`` where it is beyond the band, else ``was``."""
+    def switch(self, margin: np.ndarray, scale: float, was: np.ndarray, stiffness=1.0) -> np.ndarray:
+        """``margin > 0`` where it is beyond the band, ``True`` (a zero
+        margin's side: closed, sticking) where ``|margin|`` is within
+        REST_ROUNDOFF (times the ``stiffness`` that makes a gap of it,
+        for a traction margin), else ``was``."""
         band = tol.DECISION_BAND * scale
-        return np.where(margin > band, True, np.where(margin < -band, False, was))
+        rest = np.abs(margin) <= tol.REST_ROUNDOFF * np.asarray(stiffness, float)
+        return np.where(rest | (margin > band), True, np.where(margin < -band, False, was))
 
 
 class _Law:
@@ -240,7 +249,8 @@ class CoulombLaw(_Law):
         if decision is None:
             stick = closed & (np.abs(trial) <= limit * (1.0 + tol.STICK_ROUNDOFF))
         else:
-            stick = closed & decision.switch(limit - np.abs(trial), decision.traction, decision.previous == STICK)
+            stick = closed & decision.switch(limit - np.abs(trial), decision.traction, decision.previous == STICK,
+                                             self.kT)
         slip = closed & ~stick
         direction = np.sign(trial)
         tT = np.where(stick, trial, np.where(slip, limit * direction, 0.0))

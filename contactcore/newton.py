@@ -218,10 +218,14 @@ class _Newton:
         u[self.system.fixed] = self.system.fixed_values(supports)
         lift = self._lift(supports)
         history, tangent, start, du, u0 = [], None, 0.0, None, u.copy()
+        judged = []  # the figure the convergence test judges: the equilibrium rows' residual over their forces
+        held, budget = None, tol.NEWTON_MAX_ITERATIONS  # the statuses each point held in the step (_progress)
         self._secant, self._free_maps = None, 0  # each step its own secant and its maps that slip free
         self.factorisations.begin_step()
         evaluated = None  # the line search's response and residual at u
-        for it in range(1, tol.NEWTON_MAX_ITERATIONS + 1):
+        it = 0
+        while it < budget:
+            it += 1
             if evaluated is None:
                 response = self.itf.respond(self.law, u, self.state, previous, self.ranks)
                 evaluated = response, self._residual(u, b, response)
@@ -242,11 +246,15 @@ class _Newton:
             history.append(norm / scale if scale > 0 else norm)
             if not np.isfinite(norm):
                 raise SolverError(f"the residual is not finite; residual history {_fmt(history)}")
-            if it > 1 and self._converged(R, max(forces, self._least_force), tangent, response, du, u - u0):
+            judged_forces = max(forces, self._least_force)  # what _converged judges the balance against
+            judged.append(self._balance(R) / judged_forces if judged_forces > 0 else self._balance(R))
+            if it > 1 and self._converged(R, judged_forces, tangent, response, du, u - u0):
                 health.check_residual(history[-1], "the settled Newton step")
                 health.check_held(self.scene, *self._gamma, self.ranks.gather(response.status),
                                   f"scene {self.scene.name}: increment {k:g} of {self.scene.increments}")
                 return (loads, supports), u, response, it - 1, history
+            held, progress = self._progress(held, response.status)
+            budget += tol.NEWTON_PROGRESS_ITERATIONS * progress
             ahead = () if du is None else self._ahead(u, du, response.status)
             du, rep, tangent = self._solve(response.tangent, -R, scale, response.secant, response.status, ahead)
             _merge(self.report, rep)
@@ -266,8 +274,27 @@ class _Newton:
             u = u + du
         free = (f" ({self._free_maps} of them on maps whose slipping points alone held a body that nothing else "
                 "holds, free to turn or slide until a point sticks)" if self._free_maps else "")
-        raise SolverError(f"{health.NOT_CONVERGED} in {tol.NEWTON_MAX_ITERATIONS} iterations{free}; "
-                          f"relative residual history {_fmt(history)}")
+        raise SolverError(f"{health.NOT_CONVERGED} in {it} iterations{free}; relative residual of the equilibrium "
+                          f"rows over their forces {_fmt(judged)}, converged at <= {tol.NEWTON_RTOL:.0e}")
+
+    def _balance(self, R) -> float:
+        """The largest residual of the equilibrium rows, over every rank."""
+        return self.ranks.max(float(np.max(np.abs(R[self.balance]), initial=0.0)))
+
+    def _progress(self, held, status):
+        """The statuses each point has ``held`` in the step (a bit per
+        status) with ``status`` added, and whether ``status`` moved a point,
+        on any rank, to a status it had not held in the step.  Each such
+        iteration adds NEWTON_PROGRESS_ITERATIONS to the step's budget: a
+        point can do so at most twice (open, stick, slip), so the budget
+        stays finite, while a semismooth Newton that moves points at a tie
+        of the law from stick to slip a few per iteration (docs/newton.md,
+        "A tie") goes on, and one that cycles (points moving back to
+        statuses they held) stops at NEWTON_MAX_ITERATIONS."""
+        bits = np.left_shift(1, np.asarray(status, np.int64))
+        if held is None:
+            return bits, False
+        return held | bits, self.ranks.max(float(np.any((held & bits) == 0))) > 0
 
     def _predicted(self, factors: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """The step's first iterate and the statuses it starts from.  Along
@@ -302,7 +329,7 @@ class _Newton:
         gap is round-off change status at every solve and change nothing:
         a rigid shift under unilateral contact).  The caller then holds it
         to the round-off check against the step's scale."""
-        balance = self.ranks.max(float(np.max(np.abs(R[self.balance]), initial=0.0)))
+        balance = self._balance(R)
         settled = self._settles(tangent, response)
         still = du is not None and self.ranks.max(float(np.max(np.abs(du), initial=0.0))) <= (
             tol.STEP_ROUNDOFF * self.ranks.max(float(np.max(np.abs(moved), initial=0.0))))

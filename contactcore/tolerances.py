@@ -256,11 +256,27 @@ DECISION_BAND = 1e-5
 #: points open by the BLAS kernel, and fe refused a free body under one
 #: kernel only.  1e-8 of the load's scale lies far below any gap or
 #: pressure a load makes.  With it (and RESIDUAL_FLOOR) fe and xfem solve
-#: that case under Haswell and Nehalem alike, but the status of points at
-#: zero traction still differs between kernels and MUMPS orderings (the
-#: tractions agree to 1e-12), and efgm refuses the held zero load: a load
-#: path back to exactly zero is not yet decided alike (measured 2026-11-27).
+#: that case under Haswell and Nehalem alike; the status of a point at rest
+#: (zero gap and traction) is REST_ROUNDOFF's.
 DECISION_FLOOR = 1e-8
+
+#: A point at rest is closed, and sticks.  A status margin (``−g_N``, for
+#: Nitsche ``−y_N``, in the scene's displacement unit U; ``μp − |t*|`` over
+#: the point's tangential stiffness k_T or γ, the gap a traction margin
+#: stands for) within REST_ROUNDOFF of U is round-off of a point neither
+#: opening nor pressing, neither slipping nor held: it is decided as a zero
+#: margin is by docs/scenes.md's laws — closed (``g_N <= 0``), sticking
+#: (``|t*| <= μp``) — whatever it was before, with the law's traction of
+#: round-off.  Measured 2026-11-27 on tests/scenes/presspull.toml pressed
+#: then released to exactly zero (``tests/test_roundoff.py``): after one
+#: solve from the pressed state every margin is round-off, up to 3.5e-11 U
+#: for efgm P2 at h = 0.2 (7.4e-13 at h = 0.1; efgm P1 1.3e-15, fe and xfem
+#: P1, P2 below 2e-16), while the band above is then 1e-5 × DECISION_FLOOR
+#: = 1e-13: 43 or 32 of 80 points opened by the BLAS kernel (Haswell,
+#: Nehalem), and with Coulomb friction 39 of 80 slipped.  1e-9 U is 30
+#: times the worst measured and far below any gap a load makes (a load's
+#: gaps are fractions of U: presspull's 3e-3 U).
+REST_ROUNDOFF = 1e-9
 
 #: The least round-off scale of a Newton step's residual, as a share of the
 #: scene's loads at full value: a step whose loads are all zero (a load
@@ -438,8 +454,20 @@ STEP_ROUNDOFF = 1e-12
 #: Newton iterations per (sub-)increment before the step is cut back.  A
 #: settled status needs one more iteration; each status change one more.
 #: Measured: 2-6 on the scenes shipped; 25 leaves room for cycling near a
-#: stick/slip switch that the cut-back then resolves.
+#: stick/slip switch that the cut-back then resolves.  Each iteration that
+#: moves a point to a status it has not held in the step adds
+#: NEWTON_PROGRESS_ITERATIONS (contactcore.newton, _progress; a point can
+#: do so at most twice: open, stick, slip): at a tie of the law
+#: (tests/scenes/shearslide.toml, exact Coulomb, the shear driven to exactly
+#: μp, efgm P1) EFGM's discretisation leaves every point's |t*| within
+#: ±1.6e-4 of μp at h = 0.05, and the semismooth Newton moves them from stick
+#: to slip a few per iteration (each solve passes the slip's excess to the
+#: neighbours): 65 iterations at h = 0.05 (180 points; 31 stick at the end),
+#: 87 at h = 0.04 (228 points), 12 at h = 0.1 (measured 2026-11-27), about
+#: one in two of them moving points on (the others line-search steps that
+#: move none).
 NEWTON_MAX_ITERATIONS = 25
+NEWTON_PROGRESS_ITERATIONS = 2
 
 #: A failed increment is halved at most this many times (1/64 of an
 #: increment) before the run stops with an error naming the increment.

@@ -94,6 +94,39 @@ def _exact_inclined():
         law=make_law({"type": "unilateral", "enforcement": "exact"}))
 
 
+def _released(law: str):
+    """tests/scenes/presspull.toml (a layered block, contrast 100, exact
+    unilateral contact) pressed by its top's displacement over one
+    increment, then released to exactly zero over one: at rest every margin
+    of Newton's decisions is round-off (contactcore.tolerances.REST_ROUNDOFF);
+    ``law`` "coulomb" puts exact Coulomb friction (μ = 0.3) on Γ."""
+    from contactcore import Support, load_scene, make_law
+
+    scene = load_scene(str(HERE / "scenes" / "presspull.toml"))
+    top = scene.supports[2]
+    released = Support(top.boundary, top.fix, top.value, ((1, 1.0), (2, 0.0)))
+    scene = scene.with_changes(increments=2, supports=scene.supports[:2] + (released,))
+    if law == "coulomb":
+        scene = scene.with_changes(law=make_law({"type": "coulomb", "mu": tol.RELEASED_MU, "enforcement": "exact"}))
+    return scene
+
+
+def _tie():
+    """tests/scenes/shearslide.toml (two layers, contrast 100, exact
+    Coulomb μ = 0.35) cut at its fourth increment, where the top's
+    displacement drives the shear to exactly μp: every point of Γ at the
+    slip limit, to EFGM's discretisation error (±1.6e-4 of μp at h = 0.05)."""
+    from contactcore import Support, load_scene
+
+    scene = load_scene(str(HERE / "scenes" / "shearslide.toml"))
+    bottom, top = scene.supports
+    (k0, f0), (k1, f1) = top.path
+    at = tol.TIE_INCREMENT  # the top's factor there, and its path to it
+    factor = f0 + (f1 - f0) * (at - k0) / (k1 - k0)
+    tied = Support(top.boundary, top.fix, tuple(factor * v for v in top.value), ((k0, 0.0), (at, 1.0)))
+    return scene.with_changes(increments=at, supports=(bottom, tied))
+
+
 def _disc(pulled: bool):
     import free_disc
 
@@ -106,7 +139,8 @@ def _squeezed(enforcement: str):
     return free_disc.squeezed(enforcement)
 
 
-#: The stiff friction cases, by name: (scene factory, h or None for the scene's).
+#: The stiff friction cases, by name: (scene factory, h or None for the
+#: scene's[, the method's options, such as its degree]).
 #: The soft layers are beyond the springs efgm carries under Coulomb
 #: friction (it refuses them before any solve); "efgm-springs-limit" is
 #: within, at half the limit.
@@ -116,7 +150,11 @@ def _squeezed(enforcement: str):
 #: (refused) and pressed (solved), and squeezed from its sides, exact and on
 #: springs, where Newton passes maps that leave it free to turn, pins a
 #: point nearest its stick window and takes a whole step out of a cycle
-#: (xfem on springs refuses it).
+#: (xfem on springs refuses it).  Last, a block pressed and released to
+#: exactly zero, at degree 2 (efgm P2's round-off is the largest there),
+#: without and with friction: every point at rest; and a shear driven to
+#: exactly the friction limit, where Newton moves EFGM's points from stick
+#: to slip a few per iteration.
 CASES = {
     "soft-layer": (lambda: _layered(E_minus_factor=tol.SOFT_LAYER), None),
     "efgm-springs-limit": (_efgm_springs_limit, None),
@@ -132,6 +170,9 @@ CASES = {
     "disc-pressed": (lambda: _disc(False), tol.ROUNDOFF_DISC_H),
     "disc-squeezed-exact": (lambda: _squeezed("exact"), tol.ROUNDOFF_SQUEEZED_H),
     "disc-squeezed-penalty": (lambda: _squeezed("penalty"), tol.ROUNDOFF_SQUEEZED_H),
+    "tie-exact": (_tie, tol.ROUNDOFF_TIE_H, {"displacement_scale": True}),
+    "released-exact": (lambda: _released("unilateral"), tol.ROUNDOFF_RELEASED_H, {"degree": 2, "displacement_scale": True}),
+    "released-coulomb-exact": (lambda: _released("coulomb"), tol.ROUNDOFF_RELEASED_H, {"degree": 2, "displacement_scale": True}),
 }
 
 
@@ -180,22 +221,29 @@ def _renumbered(perturbation: str):
 def fingerprint(case: str, method: str, perturbation: str = "none") -> dict:
     """What must not change under ``perturbation``: the statuses (steps ×
     points), tractions and jumps of every converged step, in Γ's canonical
-    order; or the refusal's message."""
+    order (and the scale the jumps are measured against, where it is not
+    their own); or the refusal's message."""
     from contactcore import SolverError
     from verification import methods
 
-    factory, h = CASES[case]
+    factory, h, *given = CASES[case]
+    given = dict(given[0]) if given else {}
     scene = _perturbed(factory(), perturbation)
+    # a case whose jumps may be round-off (a point at rest or sticking
+    # exactly) measures them against the scene's displacement
+    # (its largest prescribed value), not against their own round-off
+    at_rest = given.pop("displacement_scale", False)
+    jump_scale = max(abs(v) for s in scene.supports for v in s.value) if at_rest else 0.0
     try:
         with _renumbered(perturbation):
-            result = methods.solver(method)(scene, h, estimate_condition=False, **_options(perturbation))
+            result = methods.solver(method)(scene, h, estimate_condition=False, **_options(perturbation), **given)
     except SolverError as exc:
         return {"refused": str(exc).split(";")[0]}
     steps = result.interface.steps
     return {"step": np.array([s.step for s in steps]),
             "status": np.array([s.status for s in steps]),
             "traction": np.array([s.traction for s in steps]),
-            "jump": np.array([s.jump for s in steps])}
+            "jump": np.array([s.jump for s in steps]), "jump_scale": np.array(jump_scale)}
 
 
 def _file(folder: Path, case: str, method: str, perturbation: str) -> Path:
@@ -229,7 +277,7 @@ def differences(a: dict, b: dict, bound: float) -> list[str]:
     for i in np.flatnonzero(np.any(a["status"] != b["status"], axis=1)):
         out.append(f"step {a['step'][i]:g}: {int(np.sum(a['status'][i] != b['status'][i]))} points change status")
     for key in ("traction", "jump"):
-        scale = max(np.max(np.abs(a[key])), np.finfo(float).tiny)
+        scale = max(np.max(np.abs(a[key])), float(a.get(f"{key}_scale", 0.0)), np.finfo(float).tiny)
         worst = np.max(np.abs(a[key] - b[key])) / scale
         if worst > bound:
             out.append(f"{key} differs by {worst:.2e} of its scale")

@@ -57,3 +57,56 @@ def test_every_stiff_case_decides_alike_under_every_perturbation(method, tmp_pat
             failures += [f"{p[0]} under {perturbation}: {d}"
                          for d in roundoff.differences(reference[p], perturbed[p], bound)]
     assert not failures, "\n".join(failures)
+
+
+@pytest.mark.parametrize("case", ["released-exact", "released-coulomb-exact"])
+def test_a_load_released_to_zero_leaves_every_point_at_rest_closed(case):
+    """tests/scenes/presspull.toml pressed, then its top's displacement
+    returned to exactly zero (efgm P2, h = 0.2; grader1 item 4): at rest
+    every margin of Newton's decisions is round-off, and each point's
+    status followed its sign (43 or 32 of 80 points open by the kernel,
+    Haswell or Nehalem; with friction 39 slipping).  A point at rest is
+    closed and sticks (contactcore.tolerances.REST_ROUNDOFF), and so the
+    open/stick/slip counts of increments.csv do not depend on the kernel
+    (CI runs this under a second one; the slow test below compares two)."""
+    from contactcore.laws import OPEN
+
+    result = roundoff.fingerprint(case, "efgm")
+    assert "refused" not in result, result["refused"]
+    pressed, released = result["status"]
+    opened = int(((released == OPEN) & (pressed != OPEN)).sum())
+    assert opened == 0, f"{opened} of {released.size} points at rest opened at the released step"
+
+
+@pytest.mark.slow
+def test_a_load_released_to_zero_decides_alike_under_two_kernels(tmp_path):
+    probes = [("released-exact", "efgm"), ("released-coulomb-exact", "efgm")]
+    haswell = roundoff.in_child(probes, "coretype=Haswell", tmp_path)
+    nehalem = roundoff.in_child(probes, "coretype=Nehalem", tmp_path)
+    for case, method in probes:
+        assert "refused" not in haswell[case, method], haswell[case, method]["refused"]
+        _assert_alike(haswell[case, method], nehalem[case, method], case, f"{case}, efgm P2, Haswell / Nehalem")
+
+
+def test_a_shear_driven_to_exactly_the_friction_limit_is_solved():
+    """tests/scenes/shearslide.toml to its fourth increment, where the top's
+    displacement drives the shear to exactly μp (exact Coulomb, efgm P1,
+    h = 0.05; grader1 item 2).  Every point's |t*| is μp to EFGM's
+    discretisation error, and the semismooth Newton moves them from stick to
+    slip a few per iteration: it exited after 25 iterations at every
+    cut-back and offered "no equilibrium" for a problem with an answer.
+    Each iteration that moves a point on extends the budget (docs/newton.md,
+    "A tie"); CI runs this under a second kernel, and the slow test below
+    compares the two."""
+    result = roundoff.fingerprint("tie-exact", "efgm")
+    assert "refused" not in result, result["refused"]
+    assert result["step"].tolist() == list(range(1, tol.TIE_INCREMENT + 1))
+
+
+@pytest.mark.slow
+def test_a_shear_driven_to_exactly_the_friction_limit_decides_alike_under_two_kernels(tmp_path):
+    probes = [("tie-exact", "efgm")]
+    haswell = roundoff.in_child(probes, "coretype=Haswell", tmp_path)[probes[0]]
+    nehalem = roundoff.in_child(probes, "coretype=Nehalem", tmp_path)[probes[0]]
+    assert "refused" not in haswell, haswell["refused"]
+    _assert_alike(haswell, nehalem, "tie-exact", "tie-exact, efgm P1, Haswell / Nehalem")

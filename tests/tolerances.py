@@ -370,6 +370,43 @@ EFGM_DISTRIBUTED_ASSEMBLY = 1e-13
 
 # ----- round-off probes of Newton's decisions (tests/roundoff.py) -------------
 
+#: tests/scenes/presspull.toml pressed over one increment and released to
+#: exactly zero over the next (tests/roundoff.py, "released-*"), at this
+#: spacing and degree 2, where efgm P2's margins at rest are the largest
+#: round-off measured (3.5e-11 of U, contactcore.tolerances.REST_ROUNDOFF):
+#: 43 or 32 of its 80 points opened by the BLAS kernel before the rest rule.
+#: The friction case puts exact Coulomb with RELEASED_MU on Γ.
+ROUNDOFF_RELEASED_H = 0.2
+RELEASED_MU = 0.3
+
+#: tests/scenes/shearslide.toml cut at this increment, where its shear
+#: reaches exactly μp (tests/roundoff.py, "tie-exact"), at this spacing:
+#: efgm P1 exited at increment 4 after 25 iterations (grader1 item 2); it
+#: needs 65.
+TIE_INCREMENT = 4
+ROUNDOFF_TIE_H = 0.05
+
+#: The tie's spacing where a failure's message is read
+#: (tests/test_newton_messages.py): coarse, its fourth increment six
+#: iterations of efgm P1.
+MESSAGE_TIE_H = 0.1
+
+#: The tractions of the released block, of their largest (the pressed
+#: step's), and its jumps, of the scene's displacement (the pressed jumps of
+#: an exact law are round-off themselves): the released step's are round-off
+#: of the pressed state's solve.  Measured 2026-11-27, Haswell against
+#: Nehalem and Sandybridge, status maps identical: efgm P2 tractions 4.5e-9
+#: (pressed 3.2e-9; with friction 1.2e-12), jumps 3.1e-11; fe and xfem P2
+#: 1.1e-14 and 5.2e-16.  The bound is 10x efgm's worst.
+RELEASED_PROFILES = 5e-8
+
+#: The tie's tractions, of their largest, and jumps, of the scene's
+#: displacement (fe's and xfem's stick exactly: their jumps are round-off).
+#: Measured 2026-11-27, Haswell against Nehalem and Sandybridge, status maps
+#: identical (efgm 31 stick, 149 slip at the tie): efgm 1.8e-13 and
+#: 2.8e-15, fe and xfem 1.2e-14 and 2e-17.  10x efgm's worst.
+TIE_PROFILES = 2e-12
+
 #: Two runs of one stiff friction case under different round-off (OpenBLAS
 #: kernels, MUMPS orderings, EFGM's node order, a 1e-12 change of the load)
 #: must take the same status at every point and increment (the band of
@@ -406,7 +443,8 @@ ROUNDOFF_PROFILES = {"C-coulomb-10x": 1e-8, "C-coulomb-100x": 1e-8, "contrast-1e
                      "contrast+1e-6": 5e-6, "shifted": 2e-7, "soft-layer": 1e-5, "efgm-springs-limit": 2e-10,
                      "C-coulomb-exact": 1e-11, "inclined-exact": 2e-11, "stiff-layer-exact": 5e-9,
                      "disc-pressed": 1e-10, "disc-pulled": 1e-10,
-                     "disc-squeezed-exact": 1e-11, "disc-squeezed-penalty": 1e-11}
+                     "disc-squeezed-exact": 1e-11, "disc-squeezed-penalty": 1e-11,
+                     "tie-exact": TIE_PROFILES, "released-exact": RELEASED_PROFILES, "released-coulomb-exact": RELEASED_PROFILES}
 
 #: The exact-law round-off cases: the lower layer of the layered-slip closed
 #: form this much stiffer (the contrast where EFGM needed the most Newton
