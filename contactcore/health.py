@@ -318,8 +318,8 @@ def _let_go(scene, interface_points, interface_weights, status) -> np.ndarray:
     factorisation says so (MUMPS's null pivots) or returns a rigid motion
     of round-off size.  This reads the status map and the geometry only,
     not the factorisation; the map itself is decided within Newton's
-    round-off band (:class:`~contactcore.laws.Decision`), which a load
-    path held at exactly zero still defeats (DECISION_FLOOR's note).  A
+    round-off band (:class:`~contactcore.laws.Decision`; a point at rest,
+    its margin round-off, is closed and sticks: REST_ROUNDOFF's note).  A
     slipping point counts as holding tangentially: a body held by slipping
     points alone is left to Newton's
     secant step (:func:`contactcore.laws.secant_tangent`), exact or
