@@ -115,3 +115,23 @@ def test_a_second_scene_of_other_values_compiles_no_new_form(tmp_path):
     assert compiled[0]
     assert compiled[1] == compiled[0]
     assert np.abs(answers[1] - answers[0]).max() > tol.SOLVER_AGREEMENT * np.abs(answers[0]).max()
+
+
+def test_xfem_forms_compiled_in_turn_for_two_scenes_compile_once(tmp_path):
+    """The xfem forms of two scenes of other values, each scene's compiled
+    as xfem compiles them (the stiffness first): the second scene adds no
+    module.  ffcx gives a mesh's coordinate element its equispaced variant
+    when it first compiles on it, which renumbered the domains of the load
+    form built before: it compiled anew (xdolfinx.xfem.assembly)."""
+    from dolfinx import fem
+    compiled = []
+    for s in (load_scene("A"), load_scene("A").with_changes(materials={"minus": Material(7e10, 0.2),
+                                                                       "plus": Material(2e11, 0.35)})):
+        space = xfem.enriched_space(xfem.background_mesh(s, H, "quad", comm=MPI.COMM_SELF), 1, s,
+                                    xfem.GAUSS_POINTS[1])
+        a, linear = ufl_forms(space, *tags(space))
+        for form in (a, *linear):
+            fem.form(form, jit_params={"cache_dir": str(tmp_path)})
+        compiled.append(sorted(p.name for p in tmp_path.glob("*.so")))
+    assert len(compiled[0]) == 2
+    assert compiled[1] == compiled[0]

@@ -60,6 +60,22 @@ def tags(space: EnrichedFunctionSpace):
     return cell_tags, facet_tags
 
 
+def _equispaced_geometry(msh) -> None:
+    """Give ``msh``'s UFL domain the coordinate element ffcx 0.5 gives it
+    when it first compiles a form on it (the equispaced variant of the same
+    Lagrange element; ffcx.analysis replaces it in place).  The replacement
+    changes the domain's hash, so a form whose domains UFL had numbered
+    before it got a signature of its own: the xfem load form of the second
+    scene of a study compiled anew though only values differed.  A mesh
+    from gmsh (fe's) has that element from the start."""
+    domain = msh.ufl_domain()
+    element = domain.ufl_coordinate_element()
+    if element.sub_elements()[0].variant() is None:
+        sub = ufl.FiniteElement(element.family(), element.cell(), element.degree(), element.quadrature_scheme(),
+                                variant="equispaced")
+        domain._ufl_coordinate_element = ufl.VectorElement(sub)
+
+
 def ufl_forms(space: EnrichedFunctionSpace, cell_tags, facet_tags):
     """Bulk stiffness and one linear form per load for the cells outside the
     band, in UFL, on the standard part V; None for a load of value zero
@@ -69,6 +85,7 @@ def ufl_forms(space: EnrichedFunctionSpace, cell_tags, facet_tags):
     import meshes
 
     scene, msh, V = space.scene, space.msh, space.V
+    _equispaced_geometry(msh)
     u, v = ufl.TrialFunction(V), ufl.TestFunction(V)
     dx = ufl.Measure("dx", domain=msh, subdomain_data=cell_tags)
     ds = ufl.Measure("ds", domain=msh, subdomain_data=facet_tags)
