@@ -42,7 +42,7 @@ from contactcore import BODIES, DiscretisationError, Result, Scene, Timings
 from contactcore import discretisation
 from contactcore.discretisation import Built, Resolution, make
 from contactcore import tolerances as tol
-from .elasticity import sigma, vanishes
+from .elasticity import load_integrand, sigma, vanishes
 from contactcore.assembly import Triplets
 from contactcore.constraints import Constraints
 from contactcore.cutcell import gauss01
@@ -50,7 +50,7 @@ from contactcore.exact import is_exact
 from contactcore.geometry import polygon_area, tangent_of
 from contactcore.interface_path import piece_centres
 from contactcore.system import InterfaceOperator
-from contactcore.scene import Pressure, Traction, body_force
+from contactcore.scene import Pressure, Traction
 
 from .contact_system import GhostExchange, PETScSystem
 from .evaluation import BodyCellLocator, BodyFields
@@ -93,24 +93,23 @@ def _body_indicator(fm: FittedMesh):
 
 def linear_forms(scene: Scene, fm: FittedMesh, V) -> list:
     """One form per load (traction, pressure, body force or torque), at its
-    full value (a load of value zero: a form that :func:`~xdolfinx.elasticity.vanishes`)."""
+    full value, its numbers as Constants (:mod:`xdolfinx.elasticity`); None
+    for a load of value zero (:func:`~xdolfinx.elasticity.vanishes`)."""
     v = ufl.TestFunction(V)
     vs = ufl.split(v)
     dx = ufl.Measure("dx", domain=fm.mesh, subdomain_data=fm.cell_tags)
     ds = ufl.Measure("ds", domain=fm.mesh, subdomain_data=fm.facet_tags)
-    x = ufl.SpatialCoordinate(fm.mesh)
     chi = _body_indicator(fm)
     v_owner = chi * vs[0] + (1.0 - chi) * vs[1]  # trace of the body that owns the boundary facet
     forms = []
     for load in scene.loads:
-        if isinstance(load, Traction):
-            L = ufl.dot(ufl.as_vector(list(load.value)), v_owner) * ds(meshes.BOUNDARY[load.boundary])
-        elif isinstance(load, Pressure):
-            L = -load.value * ufl.dot(ufl.FacetNormal(fm.mesh), v_owner) * ds(meshes.BOUNDARY[load.boundary])
+        if vanishes(scene, load):
+            forms.append(None)
+        elif isinstance(load, (Traction, Pressure)):
+            forms.append(load_integrand(scene, load, fm.mesh, v_owner) * ds(meshes.BOUNDARY[load.boundary]))
         else:
-            b = ufl.as_vector(body_force(scene, load, x[0], x[1]))
-            L = ufl.dot(b, vs[BODIES.index(load.body)]) * dx(meshes.BODY[load.body])
-        forms.append(L)
+            forms.append(load_integrand(scene, load, fm.mesh, vs[BODIES.index(load.body)])
+                         * dx(meshes.BODY[load.body]))
     return forms
 
 
@@ -374,7 +373,7 @@ def build(scene: Scene, options: FE, resolution: Resolution, timings: Timings) -
         K.assemble()
         loads = []
         for L in linear_forms(scene, fm, V):
-            if vanishes(L):  # a load of value zero
+            if L is None:  # a load of value zero
                 loads.append(np.zeros(V.dofmap.index_map.size_local * V.dofmap.index_map_bs))
                 continue
             vec = fem_petsc.assemble_vector(fem.form(L, jit_params=jit))

@@ -1,23 +1,83 @@
-"""The UFL of linear elasticity shared by fe and xfem: the stress, and
-whether a load's form vanishes (no gmsh: an xfem run on structured cells
-never imports it)."""
+"""The UFL of linear elasticity shared by fe and xfem: the stress, each
+load's integrand, and whether a load's form vanishes (no gmsh: an xfem run
+on structured cells never imports it).
+
+Every number of a scene (E, ν through λ and μ, a traction, a pressure, a
+body force, a torque's coefficient and centre) enters a form as a
+``dolfinx.fem.Constant``, never as a Python float: UFL writes a float into
+the form's signature and ffcx into the C code, so each new material or load
+value compiled new forms (0.3–0.8 s each).  With Constants a form's
+compiled code depends on its structure only (elements, integrals, tags,
+which kinds of load), and two scenes that differ in values share it.
+"""
 from __future__ import annotations
 
+import math
+
+import numpy as np
 import ufl
+from dolfinx import fem
 
 from contactcore.elasticity import lame
+from contactcore.scene import BodyForce, Pressure, Torque, Traction
+
+
+def constant(domain, value) -> fem.Constant:
+    """``value`` (a number or a tuple of numbers) as a float64 Constant on
+    ``domain`` (a dolfinx or UFL mesh)."""
+    return fem.Constant(domain, np.asarray(value, dtype=np.float64))
 
 
 def sigma(w, E: float, nu: float, plane: str):
     """``σ(w) = 2μ ε(w) + λ tr ε(w) I`` with the Lamé constants of ``plane``
-    stress or strain."""
-    lam, mu = lame(E, nu, plane)
+    stress or strain, λ and μ as Constants on ``w``'s mesh."""
+    domain = ufl.domain.extract_unique_domain(w)
+    lam, mu = (constant(domain, c) for c in lame(E, nu, plane))
     eps = ufl.sym(ufl.grad(w))
     return 2.0 * mu * eps + lam * ufl.tr(eps) * ufl.Identity(2)
 
 
-def vanishes(form) -> bool:
-    """Whether every integrand of ``form`` is UFL's zero: a load of value
-    zero, which UFL folds to ``Zero`` while keeping the integral, and for
-    which dolfinx's assembler finds no kernel to call."""
-    return all(isinstance(i.integrand(), ufl.constantvalue.Zero) for i in form.integrals())
+def _coefficients(scene, load) -> tuple[float, ...]:
+    """The numbers a load's form is made of: the traction or body force
+    vector, the pressure, or a torque's ``k = T/J`` (``J = πR⁴/2``, as
+    :func:`contactcore.scene.body_force`)."""
+    if isinstance(load, (Traction, BodyForce)):
+        return tuple(float(c) for c in load.value)
+    if isinstance(load, Pressure):
+        return (float(load.value),)
+    if isinstance(load, Torque):
+        return (load.torque / (math.pi * scene.interface.radius ** 4 / 2),)
+    raise TypeError(f"not a load: {load!r}")
+
+
+def vanishes(scene, load) -> bool:
+    """Whether ``load`` is of value zero, so that it has no form (dolfinx's
+    assembler finds no kernel to call in a form whose integrand is zero).
+    Decided from the load's numbers, not from the form: a Constant is never
+    UFL's zero."""
+    return all(c == 0.0 for c in _coefficients(scene, load))
+
+
+def body_force(scene, load, msh):
+    """The body force ``b`` of a :class:`~contactcore.scene.BodyForce` or
+    :class:`~contactcore.scene.Torque` as a UFL vector on ``msh``: the
+    formula of :func:`contactcore.scene.body_force` with its numbers as
+    Constants (a torque: ``b = k(−(y−y_c), x−x_c)``)."""
+    if isinstance(load, BodyForce):
+        return constant(msh, _coefficients(scene, load))
+    (k,) = _coefficients(scene, load)
+    k, centre = constant(msh, k), constant(msh, scene.interface.centre)
+    x = ufl.SpatialCoordinate(msh)
+    return ufl.as_vector([-k * (x[1] - centre[1]), k * (x[0] - centre[0])])
+
+
+def load_integrand(scene, load, msh, v):
+    """The integrand of ``load``'s linear form against the test function
+    ``v`` (a vector on ``msh``): ``t̄ · v`` for a traction, ``−p n · v`` for a
+    pressure (n the outward normal), ``b · v`` for a body force or torque."""
+    if isinstance(load, Traction):
+        return ufl.dot(constant(msh, _coefficients(scene, load)), v)
+    if isinstance(load, Pressure):
+        (p,) = _coefficients(scene, load)
+        return -constant(msh, p) * ufl.dot(ufl.FacetNormal(msh), v)
+    return ufl.dot(body_force(scene, load, msh), v)

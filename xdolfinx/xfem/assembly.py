@@ -13,9 +13,9 @@ from petsc4py import PETSc
 
 from contactcore import BODIES
 from contactcore import tolerances as tol
-from contactcore.scene import Pressure, Traction, body_force
+from contactcore.scene import Pressure, Traction
 
-from ..elasticity import sigma, vanishes
+from ..elasticity import load_integrand, sigma, vanishes
 from .kernels import band_kernels, band_loads
 from .space import EnrichedFunctionSpace
 
@@ -60,29 +60,52 @@ def tags(space: EnrichedFunctionSpace):
     return cell_tags, facet_tags
 
 
-def forms(space: EnrichedFunctionSpace, cell_tags, facet_tags):
+def _equispaced_geometry(msh) -> None:
+    """Give ``msh``'s UFL domain the coordinate element ffcx 0.5 gives it
+    when it first compiles a form on it (the equispaced variant of the same
+    Lagrange element; ffcx.analysis replaces it in place).  The replacement
+    changes the domain's hash, so a form whose domains UFL had numbered
+    before it got a signature of its own: the xfem load form of the second
+    scene of a study compiled anew though only values differed.  A mesh
+    from gmsh (fe's) has that element from the start."""
+    domain = msh.ufl_domain()
+    element = domain.ufl_coordinate_element()
+    if element.sub_elements()[0].variant() is None:
+        sub = ufl.FiniteElement(element.family(), element.cell(), element.degree(), element.quadrature_scheme(),
+                                variant="equispaced")
+        domain._ufl_coordinate_element = ufl.VectorElement(sub)
+
+
+def ufl_forms(space: EnrichedFunctionSpace, cell_tags, facet_tags):
     """Bulk stiffness and one linear form per load for the cells outside the
-    band (UFL), on the standard part V; None for a load of value zero,
-    whose form UFL folds away."""
+    band, in UFL, on the standard part V; None for a load of value zero
+    (:func:`~xdolfinx.elasticity.vanishes`).  Material and load values
+    enter as Constants, so their compiled code depends on the structure
+    only (:mod:`xdolfinx.elasticity`)."""
     import meshes
 
     scene, msh, V = space.scene, space.msh, space.V
+    _equispaced_geometry(msh)
     u, v = ufl.TrialFunction(V), ufl.TestFunction(V)
     dx = ufl.Measure("dx", domain=msh, subdomain_data=cell_tags)
     ds = ufl.Measure("ds", domain=msh, subdomain_data=facet_tags)
     a = sum(ufl.inner(sigma(u, scene.materials[b].E, scene.materials[b].nu, scene.plane),
                       ufl.sym(ufl.grad(v))) * dx(_TAG_UNCUT[b]) for b in BODIES)
-    x = ufl.SpatialCoordinate(msh)
     linear = []
     for load in scene.loads:
-        if isinstance(load, Traction):
-            L = ufl.dot(ufl.as_vector(list(load.value)), v) * ds(meshes.BOUNDARY[load.boundary])
-        elif isinstance(load, Pressure):
-            L = -load.value * ufl.dot(ufl.FacetNormal(msh), v) * ds(meshes.BOUNDARY[load.boundary])
-        else:
-            L = ufl.dot(ufl.as_vector(body_force(scene, load, x[0], x[1])), v) * dx(_TAG_UNCUT[load.body])
-        linear.append(None if vanishes(L) else fem.form(L))
-    return fem.form(a), linear
+        if vanishes(scene, load):
+            linear.append(None)
+            continue
+        where = ds(meshes.BOUNDARY[load.boundary]) if isinstance(load, (Traction, Pressure)) \
+            else dx(_TAG_UNCUT[load.body])
+        linear.append(load_integrand(scene, load, msh, v) * where)
+    return a, linear
+
+
+def forms(space: EnrichedFunctionSpace, cell_tags, facet_tags):
+    """:func:`ufl_forms` compiled (dolfinx forms; None for a load of value zero)."""
+    a, linear = ufl_forms(space, cell_tags, facet_tags)
+    return fem.form(a), [None if L is None else fem.form(L) for L in linear]
 
 
 def load_vector(space: EnrichedFunctionSpace, L, load) -> np.ndarray:
