@@ -968,3 +968,8 @@ CORNER_SUPPORT_AGREE = 5e-3
 #: compared with the values' own RMS agrees to the last few digits, not
 #: bit for bit (it differed in the 16th digit on an AMD EPYC machine).
 FLOORED_SCALE = 1e-12
+
+#: XFEM's γ₀ floor (xdolfinx.xfem.traction.gamma_floor) against
+#: nitsche_weights' γ₀ at the floor's length: the same few products and
+#: one division, so equal to round-off (measured ≤ 2.2e-16 relative).
+GAMMA_FLOOR_ROUNDOFF = 1e-12

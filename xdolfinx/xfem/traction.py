@@ -6,13 +6,19 @@ Hautefeuille and Dolbow, CMAME 2012).
 The cell of a Γ point is the mesh cell whose Γ rule holds it, ``Ω_kᵉ``
 the part of that cell on side k (the cut-cell rule's weights summed; a
 cell that Γ only touches along an edge is wholly on one side, the other
-part empty) and ``Γᵉ`` Γ's piece in it, its length taken as at least
+part empty) and ``Γᵉ`` Γ's piece in it.  ``γ₀`` is at least
+:func:`gamma_floor`, the least ``γ₀`` that a piece of
 :data:`~contactcore.tolerances.NITSCHE_PIECE_FLOOR` of the cell's
-diameter: where Γ clips a corner of the cell (or only passes through it)
-the piece's length goes to 0 while the cell's far part keeps its area,
-and ``γ₀`` with it; the exact law divides by it, and the point's status
-would follow its stress alone.  Body k's stress at a point of cell
-``c`` is the polynomial of its side there,
+diameter could have in the cell: where Γ clips a corner of the cell (or
+only passes through it) the piece's length goes to 0 while the cell's far
+part keeps its area, and ``γ₀`` with it; the exact law divides by it, and
+the point's status would follow its stress alone.  The floor is not the
+clip's own ``γ₀`` at a longer piece: where the far part is the stiffer
+body that is its modulus over h, up to E₋/E₊ times the γ₀ of the cuts
+beside it, and γ times the jump's discretisation error (set by the softer
+body) then outweighed the compressive traction (points opened on a
+uniformly pressed circle, stiff disc in a ring 100 times softer).  Body
+k's stress at a point of cell ``c`` is the polynomial of its side there,
 ``σ_k = D_k B_k u_c`` with ``B_k`` the strain matrix of the cell's block
 layout (u, then the shifted Heaviside ``(H_k − H_J)`` a, per node).  A
 sliver side gets a weight → 0 as the cut fraction does, so its barely
@@ -49,14 +55,26 @@ def cell_parts(space, c: int) -> np.ndarray:
     return areas
 
 
+def gamma_floor(areas: np.ndarray, moduli: np.ndarray, size: float) -> float:
+    """The least ``γ₀ = 2|Γᵉ| / Σ_k |Ω_kᵉ|/E_k`` that a piece of Γ of
+    :data:`~contactcore.tolerances.NITSCHE_PIECE_FLOOR` times the cell's
+    diameter ``size`` could have in a cell of parts ``areas`` (2,): the
+    whole cell of the softer body, ``2 F size E_min / |cell|``.  A cut
+    across the cell (``|Γᵉ|`` at least F·size) has a larger γ₀ whatever its
+    parts, so only clipped corners are raised, and never above the scale
+    of the softer body (module doc); for equal moduli it is the γ₀ of a
+    piece F·size long."""
+    return 2.0 * tol.NITSCHE_PIECE_FLOOR * size * float(np.min(moduli)) / float(np.sum(areas))
+
+
 def cell_traction(space, c: int, D: np.ndarray, moduli: np.ndarray):
     """Cell ``c``'s blocks (2n) and its rows of ``S`` (P, 2, 4n) in its
     block layout, and ``γ₀`` (P,), at the points of its Γ rule."""
     pts, w, normals = space.cut.gamma_rules[c]
     P = len(w)
     areas = np.broadcast_to(cell_parts(space, c), (P, 2))
-    length = max(np.sum(w), tol.NITSCHE_PIECE_FLOOR * space.cut.cell_size[c])  # a corner clip: γ₀ bounded
-    weights, gamma = nitsche_weights(areas, moduli, np.full(P, length))
+    weights, gamma = nitsche_weights(areas, moduli, np.full(P, np.sum(w)))
+    gamma = np.maximum(gamma, gamma_floor(areas[0], moduli, space.cut.cell_size[c]))  # a corner clip: γ₀ bounded
     maps = traction_maps(normals, D, weights)
     blocks, strains = side_strains(space, c, pts)  # (B₋, B₊), each (P, 3, 4n)
     rows = np.zeros((P, 2, strains[0].shape[-1]))
