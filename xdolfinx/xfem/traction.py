@@ -7,17 +7,19 @@ The cell of a Γ point is the mesh cell whose Γ rule holds it, ``Ω_kᵉ``
 the part of that cell on side k (the cut-cell rule's weights summed; a
 cell that Γ only touches along an edge is wholly on one side, the other
 part empty) and ``Γᵉ`` Γ's piece in it.  ``γ₀`` is at least
-:func:`gamma_floor`, the least ``γ₀`` that a piece of
-:data:`~contactcore.tolerances.NITSCHE_PIECE_FLOOR` of the cell's
-diameter could have in the cell: where Γ clips a corner of the cell (or
-only passes through it) the piece's length goes to 0 while the cell's far
-part keeps its area, and ``γ₀`` with it; the exact law divides by it, and
-the point's status would follow its stress alone.  The floor is not the
-clip's own ``γ₀`` at a longer piece: where the far part is the stiffer
-body that is its modulus over h, up to E₋/E₊ times the γ₀ of the cuts
-beside it, and γ times the jump's discretisation error (set by the softer
-body) then outweighed the compressive traction (points opened on a
-uniformly pressed circle, stiff disc in a ring 100 times softer).  Body
+:func:`gamma_floor`: where Γ clips a corner of the cell (or only passes
+through it) the piece's length goes to 0 while the cell's far part keeps
+its area, and ``γ₀`` with it; the exact law divides by it, and the
+point's status would follow its stress alone.  The floor is the least
+``γ₀`` of a piece of :data:`~contactcore.tolerances.NITSCHE_PIECE_FLOOR`
+of the cell's diameter (the softer body's scale), and where the far part
+is the stiffer body, its ``γ₀`` at a piece of
+:data:`~contactcore.tolerances.NITSCHE_DEGENERATE_PIECE` of it.  The
+far part's ``γ₀`` at NITSCHE_PIECE_FLOOR itself, the floor before, is
+its modulus over h, up to E₋/E₊ times the γ of the cuts beside it, and γ
+times the jump's discretisation error (set by the softer body) then
+outweighed the compressive traction: points opened on a uniformly
+pressed circle, a stiff disc in a ring 100 times softer.  Body
 k's stress at a point of cell ``c`` is the polynomial of its side there,
 ``σ_k = D_k B_k u_c`` with ``B_k`` the strain matrix of the cell's block
 layout (u, then the shifted Heaviside ``(H_k − H_J)`` a, per node).  A
@@ -56,15 +58,25 @@ def cell_parts(space, c: int) -> np.ndarray:
 
 
 def gamma_floor(areas: np.ndarray, moduli: np.ndarray, size: float) -> float:
-    """The least ``γ₀ = 2|Γᵉ| / Σ_k |Ω_kᵉ|/E_k`` that a piece of Γ of
-    :data:`~contactcore.tolerances.NITSCHE_PIECE_FLOOR` times the cell's
-    diameter ``size`` could have in a cell of parts ``areas`` (2,): the
-    whole cell of the softer body, ``2 F size E_min / |cell|``.  A cut
-    across the cell (``|Γᵉ|`` at least F·size) has a larger γ₀ whatever its
-    parts, so only clipped corners are raised, and never above the scale
-    of the softer body (module doc); for equal moduli it is the γ₀ of a
-    piece F·size long."""
-    return 2.0 * tol.NITSCHE_PIECE_FLOOR * size * float(np.min(moduli)) / float(np.sum(areas))
+    """The least ``γ₀`` (module doc) of a cell of parts ``areas`` (2,),
+    moduli ``moduli`` (2,) and diameter ``size``, ``F`` =
+    :data:`~contactcore.tolerances.NITSCHE_PIECE_FLOOR` and ``f`` =
+    :data:`~contactcore.tolerances.NITSCHE_DEGENERATE_PIECE`: the larger of
+
+    * ``2 F size E_min / |cell|``, the least ``γ₀ = 2|Γᵉ| / Σ_k |Ω_kᵉ|/E_k``
+      that a piece ``F size`` long could have in the cell (the whole cell
+      of the softer body): a cut across the cell (``|Γᵉ| >= F size``) has a
+      larger ``γ₀`` whatever its parts, so it only raises clipped corners,
+      to the softer body's scale, which is the cuts' beside them; for equal
+      moduli it is the ``γ₀`` of a piece ``F size`` long;
+    * ``2 f size / Σ_k |Ω_kᵉ|/E_k``, the cell's own ``γ₀`` at a piece ``f
+      size`` long: where the piece degenerates (1e-6 of the cell and less)
+      and the far part is the stiffer body, whose stress the traction then
+      reads, γ at the softer body's scale lets that stress's discretisation
+      error decide the status against the gap."""
+    compliance = float(np.sum(np.asarray(areas, float) / np.asarray(moduli, float)))
+    soft = 2.0 * tol.NITSCHE_PIECE_FLOOR * size * float(np.min(moduli)) / float(np.sum(areas))
+    return max(soft, 2.0 * tol.NITSCHE_DEGENERATE_PIECE * size / compliance)
 
 
 def cell_traction(space, c: int, D: np.ndarray, moduli: np.ndarray):
