@@ -357,6 +357,20 @@ NITSCHE_PIECE_FLOOR = 0.5
 #: -0.024, a point all but open).
 NITSCHE_DEGENERATE_PIECE = 0.02
 
+#: xfem P1 warns when an exact law's Γ is curved and the bodies' moduli
+#: differ by this factor or more: where the softer body's part of a cut
+#: cell is a sliver, Nitsche's traction t = τ + γ g reads the stiffer
+#: body's stress with γ at its scale, times the jump error of the softer
+#: body's P1 field, and the tractions scatter into Γ's piece means.
+#: Measured 2026-11-27 on tests/scenes/cylinder.toml made coulomb (μ = 0.2;
+#: Lamé: uniform pressure, t_T = 0), the ring's E varied: piece-mean t_T up
+#: to 3.5 / 8.4 / 12.5 / 14 % of Γ's pressure at contrast 3.2 / 10 / 32 /
+#: 100 (h = 0.1; 2.2 / 4.7 / 6.5 / 7.6 % at 0.05, first order in h), 24
+#: and 36 of 348 points slipping at 32 and 100; equal moduli exact to
+#: 2e-10; fe P1 0.8 % and xfem P2 0.2 % at contrast 100.  From 10 on
+#: xfem P1's error is ten times fe P1's.
+XFEM_P1_CONTRAST = 10.0
+
 #: A piece of Γ in a cell (or a piece of one) shorter than this share of
 #: the cell's diameter is no piece: Γ only touches the cell at a corner,
 #: and its two crossings differ by round-off (a line through a mesh vertex

@@ -33,6 +33,22 @@ def test_xfem_p1_keeps_a_uniformly_compressed_circle_closed(h):
     status = np.asarray(result.interface.steps[-1].status)
     opened = int(np.sum(status == OPEN))
     assert opened == 0, f"{opened} of {status.size} points of a Γ pressed by 13 MPa everywhere are open"
+    assert any("moduli 100 times apart" in w for w in result.solver.warnings), result.solver.warnings
+
+
+def test_xfem_p1_warns_of_a_contrast_on_a_curved_gamma_only():
+    """The warning (XFEM_P1_CONTRAST) is for xfem P1, an exact law, a curved
+    Γ and moduli at least that far apart; not degree 2, not equal moduli,
+    not a penalty law."""
+    import dataclasses
+    from contactcore import make_law
+    from xdolfinx.xfem.traction import contrast_warnings
+    scene = load_scene(str(CYLINDER))
+    assert contrast_warnings(scene, 1) and not contrast_warnings(scene, 2)
+    equal = {b: dataclasses.replace(m, E=scene.materials["minus"].E) for b, m in scene.materials.items()}
+    assert not contrast_warnings(scene.with_changes(materials=equal), 1)
+    springs = make_law({"type": "unilateral", "kN": 1e6, "kT": 1e6})
+    assert not contrast_warnings(scene.with_changes(law=springs), 1)
 
 
 def _cells(count=200, seed=7):
