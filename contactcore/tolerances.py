@@ -349,8 +349,45 @@ NITSCHE_THETA = -1.0
 #: band until no status can change (exact unilateral on scene B, xfem P1,
 #: h = 0.05: γ₀ down to 1e-15 of the median, 44 of 99 closed points in
 #: tension; measured 2026-11-26).  A cut across the cell has |Γᵉ| between
-#: its side and its diameter, which the floor leaves alone.
+#: its side and its diameter, which the floor leaves alone.  The floor is
+#: the least γ₀ such a piece could have in the cell, the whole cell of the
+#: softer body (xdolfinx.xfem.traction.gamma_floor): the clip's own γ₀ at
+#: that length is the far part's modulus over h, and where that is the
+#: stiffer body it was 10-80 times the γ of the cuts beside the clip, whose
+#: product with the jump's discretisation error (set by the softer body)
+#: outweighed the pressure: a stiff disc in a ring 100 times softer,
+#: uniformly pressed by 13 MPa (tests/scenes/cylinder.toml), had 6 of 348,
+#: 2 of 690 and 3 of 1386 points open in xfem P1 at h = 0.1, 0.05, 0.025
+#: (2026-11-27); for equal moduli the floor is unchanged.
 NITSCHE_PIECE_FLOOR = 0.5
+
+#: Where Γ's piece in a cut cell degenerates and the far part is the
+#: stiffer body, γ₀ is at least that of a piece this share of the cell's
+#: diameter long with the cell's own parts (xdolfinx.xfem.traction.gamma_floor):
+#: the traction reads the stiffer body's stress there, and a γ at the
+#: softer body's scale lets that stress's error decide the status against
+#: the gap.  Measured 2026-11-27, xfem P1, h = 0.05, C-coulomb exact with
+#: the rod 1000 times softer (pieces of ~1e-6 of a cell at θ = ±180°):
+#: at 0.005, 3 closed points kept 40 % of the largest open gap (at the
+#: softer scale alone 6); 0.02 and 0.1 none.  On the cylinder above (clips
+#: of 0.006-0.05 of the cell) 0.02 leaves every point closed, the largest
+#: Nitsche t_N = τ_N + γ g_N at -0.53 of Γ's 13.06 MPa at h = 0.1 (0.1:
+#: -0.024, a point all but open).
+NITSCHE_DEGENERATE_PIECE = 0.02
+
+#: xfem P1 warns when an exact law's Γ is curved and the bodies' moduli
+#: differ by this factor or more: where the softer body's part of a cut
+#: cell is a sliver, Nitsche's traction t = τ + γ g reads the stiffer
+#: body's stress with γ at its scale, times the jump error of the softer
+#: body's P1 field, and the tractions scatter into Γ's piece means.
+#: Measured 2026-11-27 on tests/scenes/cylinder.toml made coulomb (μ = 0.2;
+#: Lamé: uniform pressure, t_T = 0), the ring's E varied: piece-mean t_T up
+#: to 3.5 / 8.4 / 12.5 / 14 % of Γ's pressure at contrast 3.2 / 10 / 32 /
+#: 100 (h = 0.1; 2.2 / 4.7 / 6.5 / 7.6 % at 0.05, first order in h), 24
+#: and 36 of 348 points slipping at 32 and 100; equal moduli exact to
+#: 2e-10; fe P1 0.8 % and xfem P2 0.2 % at contrast 100.  From 10 on
+#: xfem P1's error is ten times fe P1's.
+XFEM_P1_CONTRAST = 10.0
 
 #: A piece of Γ in a cell (or a piece of one) shorter than this share of
 #: the cell's diameter is no piece: Γ only touches the cell at a corner,

@@ -1059,3 +1059,8 @@ CELL_SCALE_LINE = 1e-12
 #: unsplit, at the balanced order of [1.52, 3], 2.23.  Within
 #: [1/1.25, 1.25] of the split's ideal 1 and outside it for the unsplit.
 CELL_SCALE_RECOVERED = (0.8, 1.25)
+
+#: XFEM's γ₀ floor (xdolfinx.xfem.traction.gamma_floor) against
+#: nitsche_weights' γ₀ at the floor's length: the same few products and
+#: one division, so equal to round-off (measured ≤ 2.2e-16 relative).
+GAMMA_FLOOR_ROUNDOFF = 1e-12
