@@ -73,17 +73,23 @@ def _disc_nodes(dom: Disc, h: float) -> NodeSet:
     return NodeSet(np.vstack([pts, ring]), h)
 
 
-def nodes_refused(scene: Scene, nodes: np.ndarray) -> tuple[int, str] | None:
+def nodes_refused(scene: Scene, nodes: np.ndarray) -> tuple[int, str, int | None] | None:
     """The first node of ``nodes`` (N, 2), in ``scene``'s own coordinates,
-    that no EFGM model can hold, and why: not finite, or outside the domain
-    by more than the scene's geometric tolerance; None if every node fits."""
+    that no EFGM model can hold, why, and the other node it concerns: not
+    finite, outside the domain by more than the scene's geometric
+    tolerance, or within NODE_MATCH · L of an earlier node (that node's
+    index third); None if every node fits."""
     x = np.asarray(nodes, float)
     bad = np.flatnonzero(~np.all(np.isfinite(x), axis=1))
     if len(bad):
-        return int(bad[0]), "is not a finite point"
+        return int(bad[0]), "is not a finite point", None
     outside = np.flatnonzero(~scene.domain.contains(x, tol.GEOMETRY * scene.length_scale))
     if len(outside):
-        return int(outside[0]), f"lies outside the domain ({len(outside)} of {len(x)} nodes outside)"
+        return int(outside[0]), f"lies outside the domain ({len(outside)} of {len(x)} nodes outside)", None
+    pairs = cKDTree(x).query_pairs(tol.NODE_MATCH * scene.length_scale, output_type="ndarray")
+    if len(pairs):
+        first, second = sorted(pairs.tolist(), key=lambda p: (max(p), min(p)))[0]
+        return max(first, second), "coincides with an earlier node", min(first, second)
     return None
 
 
@@ -97,14 +103,13 @@ def check_nodes(scene: Scene, nodes: np.ndarray) -> NodeSet:
         raise DiscretisationError(f"efgm: nodes must be an (N, 2) array with N >= 4 (got shape {x.shape})")
     refused = nodes_refused(scene, x)
     if refused is not None:
-        i, why = refused
+        i, why, other = refused
         user = scene.user
         with np.errstate(invalid="ignore"):
             shown = Scales.of(user).to_user(x[i:i + 1])[0] if user is not scene else x[i]
-        raise DiscretisationError(f"efgm: node {i} at ({shown[0]:.6g}, {shown[1]:.6g}) {user.units.length} {why}")
+        raise DiscretisationError(f"efgm: node {i} at ({shown[0]:.6g}, {shown[1]:.6g}) {user.units.length} {why}"
+                                  + (f" (node {other})" if other is not None else ""))
     d, _ = cKDTree(x).query(x, k=2)
-    if np.min(d[:, 1]) <= tol.NODE_MATCH * scene.length_scale:
-        raise DiscretisationError("efgm: two nodes coincide")
     return NodeSet(x, float(np.median(d[:, 1])))
 
 

@@ -103,3 +103,13 @@ def test_efgm_names_a_refused_node_in_the_users_coordinates():
         disc = methods.discretisation("efgm")(nodes=nodes)
         with pytest.raises(DiscretisationError, match=rf"^efgm: node 66 at {shown}"):
             solve(scene, disc)
+
+
+def test_coincident_nodes_are_named_by_their_lines(tmp_path):
+    """Two rows naming one node: both lines, the file's own values."""
+    x, y = np.meshgrid(np.linspace(10, 110, 5), np.linspace(-5, 45, 3))
+    path = tmp_path / "nodes.txt"
+    np.savetxt(path, np.r_[np.c_[x.ravel(), y.ravel()], [[35.0, 20.0]]])
+    with pytest.raises(ContactError, match=r"^efgm: node 15 at \(35, 20\) mm \(.* line 16\) coincides with an "
+                                           r"earlier node \(line 7\)$"):
+        read_nodes(path, load_scene(MM_WEDGE))

@@ -80,9 +80,9 @@ def read_nodes(path, scene=None) -> np.ndarray:
         from efgm.nodes import nodes_refused
         refused = nodes_refused(scene, nodes)
         if refused is not None:
-            i, why = refused
+            i, why, other = refused
             raise ContactError(f"efgm: node {i} at ({nodes[i, 0]:.6g}, {nodes[i, 1]:.6g}) {scene.units.length} "
-                               f"({path} line {rows[i]}) {why}")
+                               f"({path} line {rows[i]}) {why}" + (f" (line {rows[other]})" if other is not None else ""))
     return nodes
 
 
