@@ -42,6 +42,25 @@ class DiscretisationError(ContactError, ValueError):
     """Discretisation parameters that cannot work (e.g. h <= 0, bad degree)."""
 
 
+class FieldsError(ContactError, ValueError):
+    """Arguments of ``fields.displacement``/``stress`` that have no answer: a
+    malformed array, a body that does not exist, a point outside the domain
+    or outside the body named for it (:func:`contactcore.result.check_points`)."""
+
+
+def os_problem(path, exc: OSError) -> str:
+    """What an OSError on ``path`` means, in a phrase for a one-line error:
+    its ``strerror``, and for a name the file system cannot hold (ENAMETOOLONG)
+    the longest component's size in bytes."""
+    import errno
+    import os
+    text = exc.strerror or str(exc)
+    if exc.errno == errno.ENAMETOOLONG:
+        longest = max((len(os.fsencode(part)) for part in os.fspath(path).split(os.sep)), default=0)
+        text += f" (a component of {longest} bytes; a file system holds names up to 255)"
+    return text
+
+
 def require_finite(what: str, values) -> None:
     """SolverError naming ``what`` unless every value is finite: a run
     never reports NaN or ∞ as an answer."""

@@ -15,15 +15,109 @@ from typing import Protocol
 
 import numpy as np
 
+from . import tolerances as tol
+from .bodies import Body
+from .errors import FieldsError
+
 
 class Fields(Protocol):
-    """Point evaluation of a solution, body by body."""
+    """Point evaluation of a solution, body by body.
+
+    The contract (:func:`check_points`, applied by every Result's fields in
+    the user's frame): ``points`` (m, 2) finite, ``bodies`` (m,) of 0 or 1;
+    each point inside the domain and inside the body named for it, within
+    the scene's geometric tolerance (``GEOMETRY · L``: a point on Γ lies in
+    both bodies, a point on the outer boundary in the domain); anything
+    else a :class:`~contactcore.errors.FieldsError` naming the first
+    offending point, never a value extrapolated from the nearest cell."""
 
     def displacement(self, points: np.ndarray, bodies: np.ndarray) -> np.ndarray:
         """``u`` (m, 2) of body ``bodies[i]`` at ``points[i]`` (m, 2)."""
 
     def stress(self, points: np.ndarray, bodies: np.ndarray) -> np.ndarray:
         """``(σxx, σyy, σxy)`` (m, 3) of body ``bodies[i]`` at ``points[i]``."""
+
+
+def _xy(p, unit: str = "") -> str:
+    return f"({p[0]:.6g}, {p[1]:.6g})" + (f" {unit}" if unit else "")
+
+
+def _domain_text(domain, unit: str) -> str:
+    if hasattr(domain, "corner"):
+        (x0, y0), (a, b) = domain.corner, domain.size
+        return f"[{x0:.6g}, {x0 + a:.6g}] × [{y0:.6g}, {y0 + b:.6g}]" + (f" {unit}" if unit else "")
+    return f"the disc of centre {_xy(domain.centre)} and radius {domain.radius:.6g}" + (f" {unit}" if unit else "")
+
+
+def gamma_reach(scene, interface) -> float:
+    """How far off the exact Γ a method's own Γ lies (the scene's units):
+    :data:`~contactcore.tolerances.DISCRETE_GAMMA_REACH` times the largest
+    distance of its ``interface`` points (an InterfacePath in the user's
+    frame, or None) and their pieces' centres from Γ."""
+    if interface is None or not len(interface.points):
+        return 0.0
+    pts = interface.points if interface.pieces is None else np.vstack([interface.points, interface.pieces])
+    with np.errstate(divide="ignore", invalid="ignore"):
+        d = np.abs(np.asarray(scene.interface.signed_distance(pts), float))
+    d = d[np.isfinite(d)]
+    return tol.DISCRETE_GAMMA_REACH * float(d.max()) if len(d) else 0.0
+
+
+def check_points(points, bodies, scene=None, what: str = "fields",
+                 reach: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
+    """``(points (m, 2) float, bodies (m,) int)`` of a call ``what(points,
+    bodies)`` of :class:`Fields`, or a FieldsError naming the argument, or
+    the first offending point and why.
+
+    Without ``scene``, the arrays alone: ``points`` (m, 2) (a third
+    coordinate is ignored) and finite, ``bodies`` m integers 0 or 1.  With
+    the user's ``scene``: also each point inside the domain and inside its
+    body, both within ``GEOMETRY · L`` (contactcore.tolerances): a point on
+    Γ is in both bodies, by Γ's signed distance (a level set's to first
+    order), and is named in the scene's own coordinates and length unit.
+    ``reach``: how far off the exact Γ the method's own Γ lies
+    (:func:`gamma_reach`); a point that close to Γ is on it, too."""
+    try:
+        pts = np.array(points, dtype=float)
+    except (TypeError, ValueError) as exc:
+        raise FieldsError(f"{what}: points: not an array of numbers ({exc})") from None
+    if pts.ndim != 2 or pts.shape[1] not in (2, 3):
+        raise FieldsError(f"{what}: points: must have shape (m, 2), got {pts.shape}")
+    pts = pts[:, :2]
+    bad = np.flatnonzero(~np.all(np.isfinite(pts), axis=1))
+    if len(bad):
+        raise FieldsError(f"{what}: points[{bad[0]}] = {_xy(pts[bad[0]])} is not finite")
+    raw = np.asarray(bodies)
+    if raw.ndim != 1 or len(raw) != len(pts):
+        raise FieldsError(f"{what}: bodies: must hold one body per point ({len(pts)}), got shape {raw.shape}")
+    if raw.dtype.kind not in "biuf":
+        raise FieldsError(f"{what}: bodies: must be 0 (−) or 1 (+), got {raw.dtype} values")
+    good = np.isin(raw, (0, 1)) if raw.dtype.kind != "f" else np.isin(np.nan_to_num(raw, nan=-1.0), (0.0, 1.0))
+    if not np.all(good):
+        i = int(np.flatnonzero(~good)[0])
+        raise FieldsError(f"{what}: bodies[{i}] = {raw[i]!r}: a body is 0 (−) or 1 (+)")
+    body = raw.astype(int)
+    if scene is None or not len(pts):
+        return pts, body
+    unit = scene.units.length
+    slack = tol.GEOMETRY * scene.length_scale
+    outside = np.flatnonzero(~scene.domain.contains(pts, slack))
+    if len(outside):
+        i = int(outside[0])
+        raise FieldsError(f"{what}: points[{i}] = {_xy(pts[i], unit)} lies outside the domain "
+                          f"{_domain_text(scene.domain, unit)} ({len(outside)} of {len(pts)} points outside)")
+    with np.errstate(divide="ignore", invalid="ignore"):
+        d = np.asarray(scene.interface.signed_distance(pts), float)
+    d = np.where(np.isnan(d), scene.interface.phi(pts), d)  # |∇φ| = 0 on φ = 0: on Γ, by φ's sign
+    near = max(slack, reach)
+    wrong = np.flatnonzero(np.where(body == 1, d < -near, d > near))
+    if len(wrong):
+        i = int(wrong[0])
+        asked, other = Body(int(body[i])), Body(1 - int(body[i]))
+        raise FieldsError(f"{what}: points[{i}] = {_xy(pts[i], unit)} lies in the {other.label} (" + "−+"[other]
+                          + f") body, {abs(d[i]):.3g} {unit} from Γ, not in the {asked.label} body that "
+                          f"bodies[{i}] = {int(body[i])} names ({len(wrong)} of {len(pts)} points in the other body)")
+    return pts, body
 
 
 @dataclass(frozen=True)

@@ -48,6 +48,7 @@ from .errors import SceneError, require_finite
 from .geometry import CircleInterface, Disc, LevelSetInterface, LineInterface, Rectangle
 from .interface_path import InterfacePath
 from .profiles import ProfileData
+from .result import check_points, gamma_reach
 from .scene import (DISPLACEMENT_QUANTITIES, STRESS_QUANTITIES, BodyForce, LineProfile, Pressure, Scene, Traction,
                     check_resolution)
 
@@ -284,17 +285,32 @@ class Sizes:
 class ScaledFields:
     """A Result's fields: ``inner`` (the method's, over ``scales``'
     dimensionless scene) read in the user's units: ``u(x) = U u'(x')``,
-    ``σ(x) = Σ σ'(x')``, ``x' = (x − o)/L``."""
+    ``σ(x) = Σ σ'(x')``, ``x' = (x − o)/L``.
 
-    def __init__(self, inner, scales: Scales):
-        self.inner, self.scales = inner, scales
+    With the user's ``scene``, every call holds to the contract of
+    :class:`contactcore.result.Fields` (:func:`~contactcore.result.check_points`,
+    in the user's coordinates and units) before the method sees a point;
+    :attr:`extended` skips the geometric part of it, for a writer that reads
+    a body's polynomial on a cut cell's vertices beyond Γ
+    (:func:`xdolfinx.output.body_mesh`)."""
+
+    def __init__(self, inner, scales: Scales, scene: Scene | None = None, reach: float = 0.0):
+        self.inner, self.scales, self.scene, self.reach = inner, scales, scene, reach
         # the wrapper protocol of contactcore.result.method_fields
         self.base, self.origin, self.length_scale = inner, scales.origin, scales.length
 
+    @property
+    def extended(self) -> "ScaledFields":
+        """The same fields without the check of points against the scene's
+        geometry (the arrays are still checked)."""
+        return ScaledFields(self.inner, self.scales)
+
     def displacement(self, points, bodies) -> np.ndarray:
+        points, bodies = check_points(points, bodies, self.scene, "fields.displacement", self.reach)
         return self.scales.displacement * self.inner.displacement(self.scales.to_dimensionless(points), bodies)
 
     def stress(self, points, bodies) -> np.ndarray:
+        points, bodies = check_points(points, bodies, self.scene, "fields.stress", self.reach)
         return self.scales.stress * self.inner.stress(self.scales.to_dimensionless(points), bodies)
 
 
@@ -344,7 +360,8 @@ def dimensionless(solve):
         if progress is not None:
             options = {**options, "progress": lambda n, total, st: progress(n, total, scales.step(st))}
         result = solve(scaled, inner, h_in, **options)
-        return replace(result, scene=scene, fields=ScaledFields(result.fields, scales),
-                       interface=scales.path(result.interface),
+        path = scales.path(result.interface)
+        return replace(result, scene=scene, fields=ScaledFields(result.fields, scales, scene, gamma_reach(scene, path)),
+                       interface=path,
                        discretisation=scales.discretisation(result.discretisation))
     return solve_dimensionless

@@ -15,7 +15,7 @@ import tomllib
 from importlib import resources
 from pathlib import Path
 
-from .errors import SceneError
+from .errors import SceneError, os_problem
 from .geometry import CircleInterface, Disc, Domain, Interface, LevelSetInterface, LineInterface, Rectangle
 from .exact import default_enforcement
 from .enforcement import make_law
@@ -303,7 +303,11 @@ def scene_text(name_or_path: str | Path | Scene) -> str:
     if str(name_or_path) in builtin_scenes():
         return resources.files("contactcore.scenes").joinpath(f"{name_or_path}.toml").read_text()
     path = Path(name_or_path)
-    if not path.is_file():
+    try:
+        readable = path.is_file()
+    except OSError as exc:  # a name too long for the file system (ENAMETOOLONG), ...
+        raise SceneError("scene", f"cannot read {path}: {os_problem(path, exc)}") from None
+    if not readable:
         raise SceneError("scene", f"{str(name_or_path)!r} is neither a built-in scene "
                          f"({', '.join(builtin_scenes())}) nor a readable file")
     try:

@@ -23,6 +23,18 @@ PROFILE_POINTS = 101
 #: round-off of the inputs (1e-15) but far below any mesh size in use (1e-3 L).
 GEOMETRY = 1e-9
 
+#: A Result's fields take a point within this many times its method's own
+#: reach off the exact Γ as on Γ (contactcore.result.check_points): the
+#: largest distance from the exact Γ of the method's interface points (its
+#: quadrature points on Γ and their pieces' centres).  fe and xfem follow a
+#: curved Γ by chords (a P1 mesh's facets, a cut cell's segment), whose Gauss
+#: points lie at (1 − ξ²) ≥ 2/3 of the chord's sagitta off the circle and
+#: whose midpoints at the full sagitta: 1.5 times the worst interface point
+#: reaches every point of the chords.  Measured: scene C-coulomb, fe P1,
+#: h = 0.2: interface points up to 3.9e-3 m inside the exact circle, where
+#: GEOMETRY · L is 3.6e-9 m.  A straight Γ: round-off, GEOMETRY · L decides.
+DISCRETE_GAMMA_REACH = 1.5
+
 #: A mesh node (or a point gmsh computes on a curve) matches a point of the
 #: scene within this distance, relative to L.  gmsh places embedded points and
 #: boundary curves to ~1e-15 L; the finest mesh in use has h ~ 1e-3 L, so

@@ -40,6 +40,7 @@ from contactcore.system import ContactSystem, InterfaceOperator
 from contactcore.geometry import tangent_of
 from contactcore.interface_path import piece_centres
 from contactcore.scene import Pressure, Traction, body_force
+from contactcore.result import check_points
 from contactcore.scaling import Scales
 
 from contactcore.exact import is_exact
@@ -82,12 +83,13 @@ class EFGMFields:
         self.D = scene.voigt_matrices()
 
     def displacement(self, points, bodies) -> np.ndarray:
-        sv = self.approx.mls.evaluate(np.asarray(points, float)[:, :2], bodies)
-        return (self.approx.displacement_operator(sv, np.asarray(bodies)) @ self.U).reshape(-1, 2)
+        points, bodies = check_points(points, bodies)  # the arrays; the geometry is the Result's (ScaledFields)
+        sv = self.approx.mls.evaluate(points, bodies)
+        return (self.approx.displacement_operator(sv, bodies) @ self.U).reshape(-1, 2)
 
     def stress(self, points, bodies) -> np.ndarray:
-        bodies = np.asarray(bodies)
-        sv = self.approx.mls.evaluate(np.asarray(points, float)[:, :2], bodies)
+        points, bodies = check_points(points, bodies)
+        sv = self.approx.mls.evaluate(points, bodies)
         eps = (self.approx.strain_operator(sv, bodies) @ self.U).reshape(-1, 3)
         return np.where(bodies[:, None] == 1, eps @ self.D[1].T, eps @ self.D[0].T)
 

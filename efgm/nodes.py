@@ -9,6 +9,7 @@ from scipy.spatial import cKDTree
 from contactcore import DiscretisationError, Scene
 from contactcore import tolerances as tol
 from contactcore.geometry import Disc, Rectangle
+from contactcore.scaling import Scales
 
 #: A node's spacing ``c_I`` is its distance to its SPACING_NEIGHBOUR-th
 #: nearest other node: on a regular grid the 4th nearest is one grid step
@@ -72,19 +73,43 @@ def _disc_nodes(dom: Disc, h: float) -> NodeSet:
     return NodeSet(np.vstack([pts, ring]), h)
 
 
+def nodes_refused(scene: Scene, nodes: np.ndarray) -> tuple[int, str, int | None] | None:
+    """The first node of ``nodes`` (N, 2), in ``scene``'s own coordinates,
+    that no EFGM model can hold, why, and the other node it concerns: not
+    finite, outside the domain by more than the scene's geometric
+    tolerance, or within NODE_MATCH · L of an earlier node (that node's
+    index third); None if every node fits."""
+    x = np.asarray(nodes, float)
+    bad = np.flatnonzero(~np.all(np.isfinite(x), axis=1))
+    if len(bad):
+        return int(bad[0]), "is not a finite point", None
+    outside = np.flatnonzero(~scene.domain.contains(x, tol.GEOMETRY * scene.length_scale))
+    if len(outside):
+        return int(outside[0]), f"lies outside the domain ({len(outside)} of {len(x)} nodes outside)", None
+    pairs = cKDTree(x).query_pairs(tol.NODE_MATCH * scene.length_scale, output_type="ndarray")
+    if len(pairs):
+        first, second = sorted(pairs.tolist(), key=lambda p: (max(p), min(p)))[0]
+        return max(first, second), "coincides with an earlier node", min(first, second)
+    return None
+
+
 def check_nodes(scene: Scene, nodes: np.ndarray) -> NodeSet:
-    """A user's point set: inside the domain, distinct; spacing from the set."""
+    """A user's point set: finite, inside the domain, distinct; spacing from
+    the set.  A refused node is named by its index and its coordinates in
+    the user's scene (``scene.user``: the nodes of a dimensionless scene are
+    mapped back; its length unit)."""
     x = np.asarray(nodes, float)
     if x.ndim != 2 or x.shape[1] != 2 or len(x) < 4:
-        raise DiscretisationError("efgm: nodes must be an (N, 2) array with N >= 4")
-    L = scene.length_scale
-    outside = ~scene.domain.contains(x, tol.GEOMETRY * L)
-    if outside.any():
-        i = int(np.flatnonzero(outside)[0])
-        raise DiscretisationError(f"efgm: node {i} at ({x[i, 0]:.6g}, {x[i, 1]:.6g}) lies outside the domain")
+        raise DiscretisationError(f"efgm: nodes must be an (N, 2) array with N >= 4 (got shape {x.shape})")
+    refused = nodes_refused(scene, x)
+    if refused is not None:
+        i, why, other = refused
+        user = scene.user
+        with np.errstate(invalid="ignore"):
+            shown = Scales.of(user).to_user(x[i:i + 1])[0] if user is not scene else x[i]
+        raise DiscretisationError(f"efgm: node {i} at ({shown[0]:.6g}, {shown[1]:.6g}) {user.units.length} {why}"
+                                  + (f" (node {other})" if other is not None else ""))
     d, _ = cKDTree(x).query(x, k=2)
-    if np.min(d[:, 1]) <= tol.NODE_MATCH * L:
-        raise DiscretisationError("efgm: two nodes coincide")
     return NodeSet(x, float(np.median(d[:, 1])))
 
 

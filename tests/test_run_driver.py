@@ -130,7 +130,7 @@ def test_efgm_nodes_from_a_file(tmp_path, capsys):
     capsys.readouterr()
     assert main(["run", "A", "--method", "efgm", "--nodes", str(path), "--out", str(tmp_path / "bad")]) == 2
     err = capsys.readouterr().err
-    assert err.startswith("error: --nodes:") and "must hold two columns (x y), it has 3" in err
+    assert err.startswith("error: --nodes:") and "line 1: a row holds two columns (x y), this one 3" in err
 
 
 def test_the_advisor_picks_the_fastest_rung_that_reaches_each_target():

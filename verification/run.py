@@ -27,14 +27,13 @@ Writes, under ``--out DIR``::
 """
 from __future__ import annotations
 
-import io
 import logging
 from pathlib import Path
 
 import numpy as np
 
 from contactcore import ContactError, Scene, load_scene, sample_profiles, scene_text
-from contactcore.errors import SolverError, SolverOptionError
+from contactcore.errors import SolverError, SolverOptionError, os_problem
 from contactcore import estimate as estimates
 from contactcore import tolerances as tol
 from contactcore.budget import check_budget
@@ -47,16 +46,43 @@ from .agreement import default_exclusion, measured_against, within_estimates
 log = logging.getLogger("verification")
 
 
-def read_nodes(path) -> np.ndarray:
-    """An EFGM node set: a text file of ``x y`` rows (spaces or commas)."""
+def read_nodes(path, scene=None) -> np.ndarray:
+    """An EFGM node set: a text file of ``x y`` rows (spaces or commas;
+    blank lines and ``#`` comments skipped).  A row that is not two finite
+    numbers, an empty file, and (given the user's ``scene``) a node outside
+    its domain are refused naming the file's line and its own values."""
     try:
-        with open(path) as fh:
-            text = fh.read().replace(",", " ")
-        nodes = np.loadtxt(io.StringIO(text), ndmin=2)
+        with open(path, encoding="utf-8") as fh:
+            lines = fh.read().splitlines()
     except (OSError, ValueError) as exc:
-        raise ContactError(f"--nodes: cannot read {path}: {exc}") from None
-    if nodes.shape[1] != 2:
-        raise ContactError(f"--nodes: {path} must hold two columns (x y), it has {nodes.shape[1]}")
+        problem = os_problem(path, exc) if isinstance(exc, OSError) else str(exc)
+        raise ContactError(f"--nodes: cannot read {path}: {problem}") from None
+    rows, numbers = [], []
+    for n, line in enumerate(lines, start=1):
+        words = line.split("#", 1)[0].replace(",", " ").split()
+        if not words:
+            continue
+        if len(words) != 2:
+            raise ContactError(f"--nodes: {path} line {n}: a row holds two columns (x y), this one {len(words)}: "
+                               f"{line.strip()[:60]!r}")
+        try:
+            point = [float(w) for w in words]
+        except ValueError:
+            raise ContactError(f"--nodes: {path} line {n}: not two numbers: {line.strip()[:60]!r}") from None
+        if not all(np.isfinite(point)):
+            raise ContactError(f"--nodes: {path} line {n}: ({words[0]}, {words[1]}) is not a finite point")
+        rows.append(n)
+        numbers.append(point)
+    if not numbers:
+        raise ContactError(f"--nodes: {path} holds no nodes (no row of x y)")
+    nodes = np.array(numbers, float)
+    if scene is not None:
+        from efgm.nodes import nodes_refused
+        refused = nodes_refused(scene, nodes)
+        if refused is not None:
+            i, why, other = refused
+            raise ContactError(f"efgm: node {i} at ({nodes[i, 0]:.6g}, {nodes[i, 1]:.6g}) {scene.units.length} "
+                               f"({path} line {rows[i]}) {why}" + (f" (line {rows[other]})" if other is not None else ""))
     return nodes
 
 
@@ -263,7 +289,7 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
     _check_floors(scene, chosen, floors, bool(estimate or against_exact))
     h = _estimated_h(scene, h) if estimate else h
     finest = h / 2 ** (estimate - 1) if estimate else h  # the answer's h, where a reference is solved
-    nodes = read_nodes(nodes_file) if nodes_file else None
+    nodes = read_nodes(nodes_file, scene) if nodes_file else None
     methods.check_solvable(chosen, scene, h, degree, paper, nodes=nodes, **given)
     if compared:
         _as_reference(reference, "compare the methods", methods.check_solvable, [reference[0]], scene, finest,

@@ -17,6 +17,7 @@ from scipy.spatial import cKDTree
 
 from contactcore import DiscretisationError
 from contactcore.bodies import Body
+from contactcore.result import check_points
 
 #: Nearest cell midpoints examined before the exact distance decides.
 _NEAREST_CANDIDATES = 8
@@ -121,8 +122,7 @@ class BodyFields:
 
     def _eval(self, functions, points, bodies) -> np.ndarray:
         """Under mpirun a collective call (:meth:`BodyCellLocator.choose`)."""
-        points = np.asarray(points, float)[:, :2]
-        bodies = np.asarray(bodies, int)
+        points, bodies = check_points(points, bodies)  # the arrays; the geometry is the Result's (ScaledFields)
         cells, mine = self.locator.choose(points, bodies)
         p3 = np.zeros((len(points), 3))
         p3[:, :2] = points

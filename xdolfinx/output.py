@@ -69,6 +69,7 @@ def body_mesh(fields, body: int) -> BodyMesh:
     clockwise = signed_areas(points, cells) < 0  # a mapping or mesh generator may mirror cells
     cells[clockwise] = cells[clockwise, ::-1]
     centroids = points[cells].mean(axis=1)
+    fields = getattr(fields, "extended", fields)  # an XFEM cut cell's vertices lie beyond Γ: its polynomial there
     return BodyMesh(points=points, cells=cells, cell_type=cell_name,
                     u=fields.displacement(points, np.full(len(points), body)),
                     sigma=fields.stress(centroids, np.full(len(cells), body)))

@@ -6,6 +6,7 @@ import numpy as np
 
 from contactcore.bodies import sign_of_index
 from contactcore.recovery import PatchRecovery
+from contactcore.result import check_points
 
 from ..evaluation import BodyCellLocator
 from .kernels import enriched_basis, heaviside_shift, voigt_stress
@@ -27,8 +28,7 @@ class XFEMFields:
         self._recoveries = {body: None for body in (0, 1)}
 
     def _eval(self, points, bodies, gradient: bool) -> np.ndarray:
-        points = np.asarray(points, float)[:, :2]
-        bodies = np.asarray(bodies)
+        points, bodies = check_points(points, bodies)  # the arrays; the geometry is the Result's (ScaledFields)
         cells, mine = self.locator.choose(points, bodies)
         out = np.zeros((len(points), 3 if gradient else 2))
         if gradient and self.space.degree == 1:
