@@ -65,6 +65,7 @@ from .factorisations import KeptFactorisations
 from .interface_path import Increment, InterfacePath, canonical_order
 from .laws import OPEN, SLIP, STICK, secant_tangent
 from .result import SolverReport
+from .slide import slide
 from .system import ContactSystem
 
 
@@ -247,6 +248,10 @@ class _Newton:
                 health.check_held(self.scene, *self._gamma, self.ranks.gather(response.status),
                                   f"scene {self.scene.name}: increment {k:g} of {self.scene.increments}")
                 return (loads, supports), u, response, it - 1, history
+            slid = slide(self, u, b, R, response, scale)  # a free body's rigid slide to its stick window
+            if slid is not None:
+                u, evaluated, du, tangent = *slid, None, None
+                continue
             ahead = () if du is None else self._ahead(u, du, response.status)
             du, rep, tangent = self._solve(response.tangent, -R, scale, response.secant, response.status, ahead)
             _merge(self.report, rep)
