@@ -248,9 +248,9 @@ class _Newton:
                 health.check_held(self.scene, *self._gamma, self.ranks.gather(response.status),
                                   f"scene {self.scene.name}: increment {k:g} of {self.scene.increments}")
                 return (loads, supports), u, response, it - 1, history
-            slid = slide(self, u, b, R, response, scale)  # a free body's rigid slide to its stick window
+            slid = slide(self, u, b, R, response, scale)  # a body held by Γ's slipping points alone, slid
             if slid is not None:
-                u, evaluated, du, tangent = *slid, None, None
+                du, (u, evaluated), tangent = slid[0] - u, slid, None
                 continue
             ahead = () if du is None else self._ahead(u, du, response.status)
             du, rep, tangent = self._solve(response.tangent, -R, scale, response.secant, response.status, ahead)

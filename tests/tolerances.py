@@ -1011,5 +1011,5 @@ CELL_SCALE_RECOVERED = (0.8, 1.25)
 #: by Γ alone, so Γ's tractions Σ w t carry its loads F exactly in the
 #: discrete equilibrium (a rigid motion is a test function of every
 #: method), up to Newton's accepted residual (NEWTON_RTOL = 1e-8 of the
-#: forces).  Measured 1.1e-16 (fe, xfem, efgm, 2026-11-27) of |F|.
+#: forces).  Measured below 1e-14 of |F| (fe, xfem, efgm, 2026-11-27).
 SLIDE_BALANCE = 1e-8
