@@ -65,6 +65,7 @@ from .factorisations import KeptFactorisations
 from .interface_path import Increment, InterfacePath, canonical_order
 from .laws import OPEN, SLIP, STICK, secant_tangent
 from .result import SolverReport
+from .slide import slide
 from .system import ContactSystem
 
 
@@ -255,6 +256,10 @@ class _Newton:
                 return (loads, supports), u, response, it - 1, history
             held, progress = self._progress(held, response.status)
             budget += tol.NEWTON_PROGRESS_ITERATIONS * progress
+            slid = slide(self, u, b, R, response, scale)  # a body held by Γ's slipping points alone, slid
+            if slid is not None:
+                du, (u, evaluated), tangent = slid[0] - u, slid, None
+                continue
             ahead = () if du is None else self._ahead(u, du, response.status)
             du, rep, tangent = self._solve(response.tangent, -R, scale, response.secant, response.status, ahead)
             _merge(self.report, rep)
