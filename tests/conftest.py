@@ -11,7 +11,48 @@ def pytest_addoption(parser):
     parser.addoption("--runslow", action="store_true", help="also run the long studies marked 'slow'")
 
 
+#: Tests of the default suite moved to the slow stage to keep the default
+#: under its 2 minutes on a 2-core machine (issue 17): on the AMD EPYC
+#: machine of 2026-11-27 the default took 142 s wall (254 s CPU) with them.
+#: Each is the longest of a set whose shorter members stay in the default
+#: (another method or degree of the same rate, refusal, pool or MPI check);
+#: the figure is its measured time (s) in that run
+#: (``pytest -n 2 --dist loadfile --durations=0``).
+LONG_FOR_THE_DEFAULT = {
+    "tests/test_contract.py::test_pressurised_rod_rate[xfem-P2]": 8.1,
+    "tests/test_contract.py::test_pressurised_rod_rate[efgm-P1]": 4.6,
+    "tests/test_contract.py::test_pressurised_rod_rate[efgm-P2]": 3.9,
+    "tests/test_contract.py::test_friction_that_cannot_carry_the_load_is_refused[efgm-P2]": 3.7,
+    "tests/test_health.py::test_a_unilateral_law_that_does_not_settle_is_pointed_to_coulomb": 6.3,
+    "tests/test_mpi.py::test_bad_input_under_mpirun_is_one_line[fe-no-equilibrium]": 6.1,
+    "tests/test_mpi.py::test_bad_input_under_mpirun_is_one_line[xfem-supports]": 2.4,
+    "tests/test_mpi.py::test_bad_input_under_mpirun_is_one_line[scaling]": 1.8,
+    "tests/test_verification.py::test_twisted_rod_closed_form[efgm]": 3.9,
+    "tests/test_pool.py::test_an_mpi4py_futures_pool_writes_the_serial_table": 3.6,
+    "tests/test_petsc.py::test_efgm_without_petsc4py_falls_back_to_superlu_with_the_same_profiles": 3.0,
+    "tests/test_output.py::test_cli_fields_for_a_nonlinear_law": 2.4,
+    "tests/test_gamma_degenerate.py::test_efgm_gamma_on_a_node_line_agrees_with_itself_off_it_and_with_fe[exact-1]": 2.3,
+    "tests/test_gamma_degenerate.py::test_efgm_gamma_on_a_node_line_agrees_with_itself_off_it_and_with_fe[penalty-1]": 1.8,
+    "tests/test_efgm_inclined.py::test_stress_on_gamma_is_its_one_sided_limit[quadratic]": 2.1,
+    "tests/test_efgm_inclined.py::test_inclined_gamma_agrees_with_fe[20.0-0.4-quadratic]": 1.7,
+    "tests/test_xfem_nodes.py::test_gamma_through_nodes_agrees_with_fe[C-1e-06h-quad-P2]": 1.7,
+    "tests/test_xfem_nodes.py::test_gamma_through_nodes_agrees_with_fe[C+1e-06h-quad-P1]": 1.6,
+    "tests/test_factorisations.py::test_a_full_set_of_columns_keeps_those_the_tangent_needs": 2.5,
+    "tests/test_factorisations.py::test_a_map_ahead_is_factorised[2]": 1.6,
+    "tests/test_pool.py::test_two_workers_write_the_serial_table": 2.4,
+    "tests/test_against_exact.py::test_with_an_estimate_the_exact_run_is_estimated_as_the_penalty_run": 2.3,
+    "tests/test_efgm_mpi.py::test_a_too_small_dilation_ends_in_one_line_under_mpirun": 1.9,
+    "tests/test_mpi.py::test_a_bad_out_under_mpirun_is_refused_on_every_rank": 1.9,
+    "tests/test_gamma_degenerate.py::test_efgm_gamma_on_a_node_line_agrees_with_itself_off_it_and_with_fe[exact-2]": 1.6,
+    "tests/test_gamma_degenerate.py::test_efgm_gamma_on_a_node_line_agrees_with_itself_off_it_and_with_fe[penalty-2]": 1.1,
+}
+
+
+@pytest.hookimpl(tryfirst=True)  # before ``-m slow`` selects by the marks
 def pytest_collection_modifyitems(config, items):
+    for item in items:
+        if item.nodeid in LONG_FOR_THE_DEFAULT:
+            item.add_marker(pytest.mark.slow)
     if config.getoption("--runslow"):
         return
     marker = pytest.mark.skip(reason="long study: run with --runslow")
