@@ -538,14 +538,12 @@ def _mode_matrix(x, centre, L) -> np.ndarray:
     return np.array([[1.0, 0.0, -d[1]], [0.0, 1.0, d[0]]])
 
 
-def _load_work(scene, body: int, centre, L, factors) -> np.ndarray:
-    """(3,): the work of the tractions and pressures on ``body``'s part of
-    each loaded edge of the rectangle in its rigid modes (:func:`_modes`,
-    about ``centre``, lengths over ``L``): a uniform load's work in a
-    linear motion is its resultant's at the part's midpoint."""
+def _loaded_parts(scene, body: int, factors):
+    """Each traction or pressure on an edge of the rectangle, on ``body``'s
+    part of that edge (:func:`_part`): ``(t, length, midpoint)``, ``t`` the
+    traction vector at its factor of ``factors``."""
     from .scene import Pressure, Traction
     c = scene.domain.corners
-    work = np.zeros(3)
     for load, f in zip(scene.loads, factors):
         if not isinstance(load, (Traction, Pressure)):
             continue
@@ -556,15 +554,24 @@ def _load_work(scene, body: int, centre, L, factors) -> np.ndarray:
         edge = c[j] - c[i]
         out = np.array([edge[1], -edge[0]]) / np.linalg.norm(edge)  # corners counter-clockwise
         t = np.asarray(load.value, float) if isinstance(load, Traction) else -load.value * out
-        mid = c[i] + 0.5 * (lo + hi) * edge
-        work += f * (hi - lo) * np.linalg.norm(edge) * (t @ _mode_matrix(mid, centre, L))
+        yield f * t, (hi - lo) * np.linalg.norm(edge), c[i] + 0.5 * (lo + hi) * edge
+
+
+def _load_work(scene, body: int, centre, L, factors) -> np.ndarray:
+    """(3,): the work of the tractions and pressures on ``body``'s part of
+    each loaded edge of the rectangle in its rigid modes (:func:`_modes`,
+    about ``centre``, lengths over ``L``): a uniform load's work in a
+    linear motion is its resultant's at the part's midpoint."""
+    work = np.zeros(3)
+    for t, length, mid in _loaded_parts(scene, body, factors):
+        work += length * (t @ _mode_matrix(mid, centre, L))
     return work
 
 
 def _part(phi_a: float, phi_b: float, body: int) -> tuple[float, float]:
     """The part ``[lo, hi]`` (of [0, 1] along an edge) on ``body``, φ
-    linear along it with ``phi_a``, ``phi_b`` at its ends (as :func:`_share`
-    measures it)."""
+    linear along it (a straight Γ) with ``phi_a``, ``phi_b`` at its ends
+    (0: φ < 0, 1: φ > 0)."""
     if (phi_a > 0) == (phi_b > 0):
         on = (phi_a + phi_b > 0) == (body == 1)
         return (0.0, 1.0) if on else (0.0, 0.0)
@@ -573,27 +580,7 @@ def _part(phi_a: float, phi_b: float, body: int) -> tuple[float, float]:
     return plus if body == 1 else ((cut, 1.0) if phi_a > 0 else (0.0, cut))
 
 
-def _share(phi_a: float, phi_b: float, body: int) -> float:
-    """The part of an edge on ``body`` (0: φ < 0, 1: φ > 0), φ linear along
-    it (a straight Γ) with the values ``phi_a``, ``phi_b`` at its ends."""
-    plus = (1.0 if phi_a + phi_b > 0 else 0.0) if (phi_a > 0) == (phi_b > 0) else \
-        (phi_a if phi_a > 0 else phi_b) / abs(phi_a - phi_b)
-    return plus if body == 1 else 1.0 - plus
-
-
 def _boundary_resultant(scene, body: int, factors) -> np.ndarray:
     """The resultant of the tractions and pressures on the part of each
     loaded edge of the rectangle that lies on ``body`` (0 −, 1 +)."""
-    from .scene import Pressure, Traction
-    c = scene.domain.corners
-    force = np.zeros(2)
-    for load, f in zip(scene.loads, factors):
-        if not isinstance(load, (Traction, Pressure)):
-            continue
-        i, j = {"bottom": (0, 1), "right": (1, 2), "top": (2, 3), "left": (3, 0)}[load.boundary]
-        edge = c[j] - c[i]
-        share = _share(*scene.interface.phi(c[[i, j]]), body)
-        out = np.array([edge[1], -edge[0]]) / np.linalg.norm(edge)  # corners counter-clockwise
-        t = np.asarray(load.value, float) if isinstance(load, Traction) else -load.value * out
-        force += f * t * np.linalg.norm(edge) * share
-    return force
+    return sum((t * length for t, length, _ in _loaded_parts(scene, body, factors)), np.zeros(2))
