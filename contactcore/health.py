@@ -495,6 +495,8 @@ def _pulled_off(scene, body: int, Q: np.ndarray, k: float) -> str:
             pivot = centre + L * np.array([-r[1], r[0]]) / r[2]
             return f"its supports and pins leave it free to turn off Γ about ({pivot[0]:.4g}, {pivot[1]:.4g})"
     return ""
+
+
 def tie_cause(scene, k: float, failure: str, from_rest: bool = False) -> str:
     """Why a unilateral law's increment ``k`` failed, or "": another law,
     or a ``failure`` (the last cut-back's message) that is not Newton

@@ -90,11 +90,15 @@ class Decision:
 
     def switch(self, margin: np.ndarray, scale: float, was: np.ndarray, stiffness=1.0) -> np.ndarray:
         """``margin > 0`` where it is beyond the band, ``True`` (a zero
-        margin's side: closed, sticking) where ``|margin|`` is within
-        REST_ROUNDOFF (times the ``stiffness`` that makes a gap of it,
-        for a traction margin), else ``was``."""
+        margin's side: closed, sticking) where Γ's ``scale`` is at
+        DECISION_FLOOR and ``|margin|`` within REST_ROUNDOFF (times the
+        ``stiffness`` that makes a gap of it, for a traction margin), else
+        ``was``."""
         band = tol.DECISION_BAND * scale
-        rest = np.abs(margin) <= tol.REST_ROUNDOFF * np.asarray(stiffness, float)
+        # at rest only where Γ as a whole is (its scale at the floor: a load
+        # back to zero); under load the band decides, and a stiff spring's
+        # window would otherwise hold a point past μp
+        rest = (scale <= tol.DECISION_FLOOR) & (np.abs(margin) <= tol.REST_ROUNDOFF * np.asarray(stiffness, float))
         return np.where(rest | (margin > band), True, np.where(margin < -band, False, was))
 
 

@@ -255,7 +255,7 @@ class _Newton:
                                   f"scene {self.scene.name}: increment {k:g} of {self.scene.increments}")
                 return (loads, supports), u, response, it - 1, history
             held, progress = self._progress(held, response.status)
-            budget += tol.NEWTON_PROGRESS_ITERATIONS * progress
+            budget = min(budget + tol.NEWTON_PROGRESS_ITERATIONS * progress, tol.NEWTON_PROGRESS_CAP)
             slid = slide(self, u, b, R, response, scale)  # a body held by Γ's slipping points alone, slid
             if slid is not None:
                 du, (u, evaluated), tangent = slid[0] - u, slid, None
@@ -281,6 +281,11 @@ class _Newton:
                 "holds, free to turn or slide until a point sticks)" if self._free_maps else "")
         raise SolverError(f"{health.NOT_CONVERGED} in {it} iterations{free}; relative residual of the equilibrium "
                           f"rows over their forces {_fmt(judged)}, converged at <= {tol.NEWTON_RTOL:.0e}")
+
+    def record(self, rep: SolverReport) -> None:
+        """Count a solve made for this Newton outside its own steps (the
+        slide's, :mod:`contactcore.slide`) in its report."""
+        _merge(self.report, rep)
 
     def _balance(self, R) -> float:
         """The largest residual of the equilibrium rows, over every rank."""

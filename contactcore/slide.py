@@ -74,7 +74,8 @@ def _mode(newton, g_r_local: np.ndarray, scale: float):
     stick[:, 0, 0], stick[:, 1, 1] = law.kN, law.kT
     rhs = itf.forces(g_r_local * np.array([law.kN, law.kT]))
     rhs[newton.system.fixed] = 0.0
-    r, _ = newton.factorisations.solve(stick, rhs, scale)
+    r, rep = newton.factorisations.solve(stick, rhs, scale)
+    newton.record(rep)
     r[newton.system.fixed] = 0.0
     miss = newton.ranks.max(float(np.max(np.abs(itf.jumps(r) - g_r_local), initial=0.0)))
     return r if miss <= tol.DECISION_BAND else None

@@ -334,3 +334,18 @@ def test_scene_c_coulomb_has_open_stick_and_slip(method):
     counts = res.interface.final.counts()
     assert min(counts.values()) > 0, counts
     assert res.solver.solver.startswith("newton") and len(res.solver.iterations) == 20
+
+
+@pytest.mark.parametrize("scale, expected", [(core_tol.DECISION_FLOOR, True), (1e3 * core_tol.DECISION_FLOOR, False)])
+def test_a_point_is_at_rest_only_where_gamma_is(scale, expected):
+    """The at-rest rule (a margin within REST_ROUNDOFF of a gap decides
+    closed, sticking) holds only where Γ's own scale is at DECISION_FLOOR
+    (a load back to zero).  Under load, a stiff spring's window (here
+    k = 1e6, so REST_ROUNDOFF·k = 1e-3) would hold a point whose trial
+    traction exceeds μp by a thousand bands: it slips."""
+    from contactcore.laws import Decision
+    stiffness = 1e6
+    margin = -0.5 * core_tol.REST_ROUNDOFF * stiffness  # inside the rest window
+    assert -margin > core_tol.DECISION_BAND * scale or expected  # beyond the band where Γ is loaded
+    decided = Decision(np.array([STICK]), scale, scale).switch(np.array([margin]), scale, np.array([True]), stiffness)
+    assert bool(decided[0]) is expected

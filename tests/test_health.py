@@ -270,7 +270,7 @@ def test_an_exact_law_that_does_not_settle_is_not_told_to_soften_springs():
     from contactcore.newton import _no_equilibrium
     scene = load_scene("C-coulomb").with_changes(law=make_law({"type": "coulomb", "mu": 0.2, "enforcement": "exact"}))
     history = ", ".join(f"{v:.2e}" for v in np.linspace(1.0, 0.5, 25))
-    failure = f"step 0 → 1: Newton did not converge in 25 iterations; relative residual history [{history}]"
+    failure = f"step 0 → 1: Newton did not converge in 25 iterations; relative residual of the equilibrium rows over their forces [{history}], converged at <= 1e-08"
     error = _no_equilibrium(scene, 1, 6, [failure])
     lines = str(error).splitlines()
     assert len(lines) == 2 and "k_N" not in str(error) and "stabilisation" in lines[-1]

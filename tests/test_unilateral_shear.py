@@ -71,7 +71,7 @@ def test_a_unilateral_failure_names_the_tie_first(tmp_path, law):
     shear, so the block pressed onto Γ is not refused as sliding off."""
     scene = _tilted(tmp_path, **law)
     assert health.friction_demand(scene, 1.0) == ""
-    failure = "step 0 → 1: Newton did not converge in 25 iterations; relative residual history [1.00e+00]"
+    failure = "step 0 → 1: Newton did not converge in 25 iterations; relative residual of the equilibrium rows over their forces [1.00e+00], converged at <= 1e-08"
     first, second = str(_no_equilibrium(scene, 1, 6, [failure], from_rest=True)).splitlines()
     assert first.startswith("scene tilted: increment 1 of 1: Newton found no open/closed map of the unilateral law")
     assert "type = \"coulomb\" with mu a few times the loads' shear/normal (1 on body +)" in first

@@ -386,7 +386,6 @@ def profile_agreements(scene: Scene, label: str, got: dict, ref: dict, exclude: 
     profiles, given = {p.id: p for p in scene.profiles}, floors or {}
     rows = []
     for pid, prof in got.items():
-        keep = kept_samples(scene, ref[pid], exclude)
         for q in prof.names[3:]:
             kind = "zero" if is_zero(scene, pid, q, ref) else quantity_class(scene, profiles[pid], q)
             if (pid, q) in (scales or {}):

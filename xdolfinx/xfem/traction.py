@@ -44,7 +44,6 @@ from contactcore.assembly import Triplets
 from contactcore.bodies import Body
 from contactcore.system import InterfaceOperator
 from contactcore.exact import is_exact
-from contactcore.geometry import LineInterface
 from contactcore.traction import nitsche_weights, traction_maps
 
 from .kernels import side_strains
@@ -123,7 +122,7 @@ def contrast_warnings(scene, degree: int) -> list[str]:
     its tractions on Γ scatter (measured there)."""
     moduli = [scene.materials[b].E for b in BODIES]
     contrast = max(moduli) / min(moduli)
-    if degree != 1 or not is_exact(scene.law) or isinstance(scene.interface, LineInterface) \
+    if degree != 1 or not is_exact(scene.law) or scene.interface.straight_in(scene.domain) \
             or contrast < tol.XFEM_P1_CONTRAST:
         return []
     return [f"xfem P1 with an exact law on a curved Γ between moduli {contrast:.3g} times apart: where the softer "
