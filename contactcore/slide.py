@@ -78,7 +78,7 @@ def _mode(newton, g_r_local: np.ndarray, scale: float):
     newton.record(rep)
     r[newton.system.fixed] = 0.0
     miss = newton.ranks.max(float(np.max(np.abs(itf.jumps(r) - g_r_local), initial=0.0)))
-    return r if miss <= tol.DECISION_BAND else None
+    return r if miss <= tol.SLIDE_MODE_MISS else None
 
 
 def slide(newton, u: np.ndarray, b: np.ndarray, R: np.ndarray, response, scale: float):
@@ -101,7 +101,7 @@ def slide(newton, u: np.ndarray, b: np.ndarray, R: np.ndarray, response, scale: 
     # a slide along Γ: no normal jump anywhere (unit: the largest |g_T|)
     g_all = _jumps(newton.scene, motion, points)
     top = np.max(np.abs(g_all[:, 1]), initial=0.0)
-    if top == 0.0 or np.max(np.abs(g_all[:, 0])) > tol.DECISION_BAND * top:
+    if top == 0.0 or np.max(np.abs(g_all[:, 0])) > tol.SLIDE_NORMAL_SHARE * top:
         return None
     g_r = _jumps(newton.scene, motion, itf.points) / top
     r = _mode(newton, g_r, scale)

@@ -523,6 +523,17 @@ NEWTON_PROGRESS_ITERATIONS = 2
 #: cut-backs.  Three times the measured tie leaves it room at h = 0.0125.
 NEWTON_PROGRESS_CAP = 400
 
+#: contactcore.slide moves a body held by Γ's slipping points alone along
+#: its free rigid motion: only where that motion slides along Γ, its normal
+#: jump at every point below this share of its largest tangential one (a
+#: rigid motion of a straight Γ's body along Γ, or a turn in a round Γ,
+#: has none but round-off), and only where the unknowns' motion it solves
+#: for reproduces the rigid jumps to SLIDE_MODE_MISS (of the largest jump,
+#: 1; the solve's round-off is ~1e-12 of it): otherwise Newton's secant
+#: step goes on as before.  Both at Newton's own band, DECISION_BAND.
+SLIDE_NORMAL_SHARE = 1e-5
+SLIDE_MODE_MISS = 1e-5
+
 #: A failed increment is halved at most this many times (1/64 of an
 #: increment) before the run stops with an error naming the increment.
 MAX_CUTBACKS = 6
