@@ -182,6 +182,12 @@ def _frictionless(scene) -> bool:
 _BODY_NAMES = ("−", "+")
 
 
+def modes_centre(domain) -> np.ndarray:
+    """The point the rigid modes (:func:`_modes`) turn about: a disc's
+    centre, a rectangle's middle."""
+    return np.asarray(domain.centre, float) if isinstance(domain, Disc) else np.mean(domain.corners, axis=0)
+
+
 def _modes(points: np.ndarray, bodies: np.ndarray, centre: np.ndarray, length: float) -> np.ndarray:
     """(m, 2, 6): displacement of each point under the six rigid modes
     (body −: x, y, rotation; body +: x, y, rotation), zero off the point's body."""
@@ -219,7 +225,7 @@ def _restraint(scene, interface_points, interface_weights, holding=None,
     a slipping point's tangent has no ``∂t_T/∂g_T``)."""
     E = max(m.E for m in scene.materials.values())
     dom = scene.domain
-    centre = np.asarray(dom.centre, float) if isinstance(dom, Disc) else np.mean(dom.corners, axis=0)
+    centre = modes_centre(dom)
     L = scene.length_scale
     Q = np.zeros((6, 6))
     held = [(_boundary_points(dom, s.boundary), s.fix, 1.0 / _SUPPORT_SAMPLES) for s in scene.supports]

@@ -57,9 +57,7 @@ def _free_motion(scene, points, weights, status):
 
 def _jumps(scene, motion, points) -> np.ndarray:
     """(m, 2) ``[g_N, g_T]`` at ``points`` of the rigid ``motion``."""
-    dom = scene.domain
-    centre = np.asarray(dom.centre, float) if hasattr(dom, "radius") else np.mean(dom.corners, axis=0)
-    L = scene.length_scale
+    centre, L = health.modes_centre(scene.domain), scene.length_scale
     move = (health._modes(points, np.ones(len(points), int), centre, L)
             - health._modes(points, np.zeros(len(points), int), centre, L)) @ motion
     n = scene.interface.normals(points)
