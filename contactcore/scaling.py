@@ -276,11 +276,19 @@ class Sizes:
     def of(cls, scene: Scene) -> "Sizes":
         peak = replace(scene, loads=tuple(map(_at_peak, scene.loads)),
                        supports=tuple(map(_at_peak, scene.supports)))
-        soft = scene.softer_modulus
         stress = Scales.of(peak).stress
-        displacement = Scales.of(replace(peak, materials={b: replace(m, E=soft) for b, m in
-                                                          peak.materials.items()})).displacement
-        return cls(displacement, stress, stress * math.sqrt(scene.domain.area / soft))
+        return cls(softer_displacement(peak), stress, stress * math.sqrt(scene.domain.area / scene.softer_modulus))
+
+
+def softer_displacement(scene: Scene) -> float:
+    """``U = max(L τ/E, |ū|)`` of :class:`Scales`, E the softer body's
+    modulus: the displacement the loads cause in the softer body, or the
+    largest prescribed displacement ū if larger (a stiff disc in a 100×
+    softer block moves with the block, 100 times the stiff body's L τ/E,
+    while a prescribed displacement is the same whichever body is softer)."""
+    soft = scene.softer_modulus
+    return Scales.of(replace(scene, materials={b: replace(m, E=soft) for b, m in scene.materials.items()})).displacement
+
 
 class ScaledFields:
     """A Result's fields: ``inner`` (the method's, over ``scales``'

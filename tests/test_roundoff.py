@@ -21,13 +21,19 @@ def _assert_alike(reference: dict, perturbed: dict, case: str, what: str) -> Non
     assert not problems, f"{what}: " + "; ".join(problems)
 
 
-def test_stiff_cases_decide_alike_under_two_blas_kernels(tmp_path):
-    probes = [("soft-layer", "xfem"), ("C-coulomb-10x", "xfem"), ("C-coulomb-exact", "xfem")]
+def _alike_under_two_kernels(probes, tmp_path, variant):
+    """Each (case, method) of ``probes`` solved under Haswell and under
+    Nehalem in a child each: solved (not refused) and alike."""
     haswell = roundoff.in_child(probes, "coretype=Haswell", tmp_path)
     nehalem = roundoff.in_child(probes, "coretype=Nehalem", tmp_path)
     for case, method in probes:
         assert "refused" not in haswell[case, method], haswell[case, method]["refused"]
-        _assert_alike(haswell[case, method], nehalem[case, method], case, f"{case}, {method}, Haswell / Nehalem")
+        _assert_alike(haswell[case, method], nehalem[case, method], case, f"{case}, {variant(method)}, Haswell / Nehalem")
+
+
+def test_stiff_cases_decide_alike_under_two_blas_kernels(tmp_path):
+    probes = [("soft-layer", "xfem"), ("C-coulomb-10x", "xfem"), ("C-coulomb-exact", "xfem")]
+    _alike_under_two_kernels(probes, tmp_path, lambda method: method)
 
 
 def test_a_load_changed_by_round_off_decides_alike():
@@ -81,11 +87,7 @@ def test_a_load_released_to_zero_leaves_every_point_at_rest_closed(case):
 @pytest.mark.slow
 def test_a_load_released_to_zero_decides_alike_under_two_kernels(tmp_path):
     probes = [("released-exact", "efgm"), ("released-coulomb-exact", "efgm")]
-    haswell = roundoff.in_child(probes, "coretype=Haswell", tmp_path)
-    nehalem = roundoff.in_child(probes, "coretype=Nehalem", tmp_path)
-    for case, method in probes:
-        assert "refused" not in haswell[case, method], haswell[case, method]["refused"]
-        _assert_alike(haswell[case, method], nehalem[case, method], case, f"{case}, efgm P2, Haswell / Nehalem")
+    _alike_under_two_kernels(probes, tmp_path, lambda method: f"{method} P2")
 
 
 def test_a_shear_driven_to_exactly_the_friction_limit_is_solved():

@@ -32,7 +32,7 @@ pytest helper built on it (docs/api.md).
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -40,7 +40,7 @@ from contactcore import ContactError, ProfileData, Scene, load_scene, sample_pro
 from contactcore.scene import DISPLACEMENT_QUANTITIES, STRESS_QUANTITIES, Units
 from contactcore.estimate import ERROR_SUFFIX, far_from_singular, rms, singular_regions
 from contactcore.exact import is_exact
-from contactcore.scaling import Scales, Sizes
+from contactcore.scaling import Sizes, softer_displacement
 # The comparison's tolerances, with their reasons, are contactcore.tolerances'
 # and stay importable from here (tests and users import them from this module).
 from contactcore.tolerances import EXACT_GAP_FLOOR, EXCLUDE_FRACTION, NEGLIGIBLE_SHARE, WORST_TIE  # noqa: F401
@@ -86,15 +86,9 @@ def size_floor(quantity: str, given: dict, *runs: dict, scene: Scene | None = No
 
 
 def displacement_scale(scene: Scene) -> float:
-    """``U = max(L τ/E, |ū|)`` (m), E the softer body's modulus: the
-    displacement the loads cause in the softer body, or the largest
-    prescribed displacement ū if larger (:class:`contactcore.scaling.Scales`'
-    U, taken with the softer modulus; a stiff disc in a 100× softer block
-    moves with the block, 100 times the stiff body's L τ/E, while a
-    prescribed displacement is the same whichever body is softer)."""
-    soft = scene.softer_modulus
-    return Scales.of(scene.with_changes(materials={b: replace(m, E=soft) for b, m in scene.materials.items()})
-                     ).displacement
+    """``U`` (m) of the loads at full value, in the softer body
+    (:func:`contactcore.scaling.softer_displacement`)."""
+    return softer_displacement(scene)
 
 
 def gap_floor(scene: Scene) -> float:
