@@ -83,6 +83,21 @@ EFGM_PATCH_SIGMA = 5e-2
 EFGM_PATCH_QUADRATURE_GAIN = {"linear": 10.0, "quadratic": 2.5}
 EFGM_PATCH_DOUBLINGS = {"linear": 2, "quadratic": 1}
 
+#: EFGM's supports: a uniform stress at a roller edge and at a clamped one
+#: (tests/test_efgm_supports.py, a bar 3 × 0.5 at h = 0.1, the field sampled
+#: on a grid that holds every edge; largest error relative to |P| in σ and to
+#: |P| L / E₊ in u).  Measured 2026-11-27 with the supports held by
+#: multipliers on the boundary: roller σ 2.5e-4 (linear basis, 6×6) and
+#: 1.4e-4 (quadratic, 8×8), u 1.4e-5 and 1.9e-6; clamped σ 2.6e-4 and
+#: 1.3e-4.  Not round-off: it is the Gauss quadrature of the rational shape
+#: functions (twice the points per direction lower σ 4.8x linear, 3.8x
+#: quadratic; u 20x and 6x), hence GAIN.  The bounds are 4x the worst
+#: measured; collocation at the nodes (before) gave σ 5.4e-2 to 8.2e-2 and u
+#: 1.7e-4 to 3.8e-4, the same with twice the points.
+EFGM_SUPPORT_PATCH_SIGMA = 1e-3
+EFGM_SUPPORT_PATCH_U = 5e-5
+EFGM_SUPPORT_PATCH_GAIN = {1: 2.5, 2: 2.5}
+
 #: Gauss points per direction for EFGM's rate test (None: the default).
 #: Supports and cells shrink with h together, so a fixed rule leaves the
 #: same relative quadrature error at every h: a floor, not a rate.  Measured
