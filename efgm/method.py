@@ -10,9 +10,11 @@ operators ``N`` (displacement) and ``B`` (strain):
     f = N_∂ᵀ W_∂ t̄ + N_Ωᵀ W_Ω b,
 
 ``W`` holding the quadrature weights.  MLS functions do not interpolate, so
-essential conditions are imposed by Lagrange multipliers at collocation
-points — the nodes on a supported boundary and the pins — which makes them
-exact at those points, pins included, with no penalty to tune.  The
+essential conditions are imposed by Lagrange multipliers: on the supported
+boundaries a hat function per knot of spacing ``h`` (weighted means of
+``u − ū``, :func:`support_multipliers`, whose traction a linear field's
+reaction is: the patch test passes), at the pins their points; no penalty
+to tune.  The
 saddle-point system is solved by MUMPS's LDLᵀ (the solver of fe and xfem)
 when petsc4py imports, else by SuperLU (:mod:`efgm.sparse_solver`), through the
 shared increments and Newton of :mod:`contactcore.newton` (one solve for the
