@@ -51,7 +51,7 @@ solver carry it unchanged.  ``γ = β γ₀`` per point,
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from typing import ClassVar
 
 import numpy as np
@@ -105,6 +105,9 @@ class _ExactLaw:
     """What the exact laws share: β and the reading of their parameters."""
 
     stabilisation: float
+    #: the ``kN``, ``kT`` its file gave (checked, never used by the answer;
+    #: a study's penalty point takes them): ``(("kN", ..), ("kT", ..))``
+    given_springs: tuple = field(default=(), compare=False, repr=False)
     enforcement: ClassVar[str] = "exact"
     parameters: ClassVar[tuple[str, ...]] = ("stabilisation",)
     has_history: ClassVar[bool] = False
@@ -120,10 +123,8 @@ class _ExactLaw:
         if unknown:
             raise SceneError(f"{path}.{unknown[0]}", f"unknown parameter of the exact '{cls.name}' law (it takes "
                              f"{', '.join(cls.parameters)}; kN, kT play no part)")
-        for k in ("kN", "kT"):
-            if k in params:
-                _positive(params, k, path)
-        values = {"stabilisation": _stabilisation(params, path)}
+        given = tuple((k, _positive(params, k, path)) for k in ("kN", "kT") if k in params)
+        values = {"stabilisation": _stabilisation(params, path), "given_springs": given}
         if "mu" in cls.parameters:
             values["mu"] = _friction(params, path)
         return cls(**values)

@@ -156,6 +156,9 @@ def _friction(params: dict, path: str) -> float:
     value = params["mu"]
     if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) or value < 0:
         raise SceneError(f"{path}.mu", f"must be a finite friction coefficient >= 0 (got {value!r})")
+    if value > tol.MU_LARGEST:
+        raise SceneError(f"{path}.mu", f"{value:g} is above {tol.MU_LARGEST:g}: a μ of that size already makes "
+                         "every closed point stick; give one at most that large")
     return float(value)
 
 

@@ -207,6 +207,16 @@ THIN_BODY_CUT_SHARE = 0.5
 #: of the domain's shorter side.
 EXCLUDE_FRACTION = 0.1
 
+#: The default exclusion keeps at least the middle of every profile: it is at
+#: most this share of the largest distance of a profile's samples from the
+#: singular points (verification.agreement.default_exclusion).  A profile
+#: whose ends are both singular points (Γ across a slender bar, 0.5 m long in
+#: a 3 m bar whose L = 3.04 m) would lose every sample to EXCLUDE_FRACTION·L
+#: (0.304 m from each end); at a half of its 0.25 m it keeps its middle half.
+#: The shipped scenes and examples are not capped (their smallest such
+#: distance is 0.5 m, on A and the README's wedge, against 0.141 m).
+EXCLUDE_KEEP_SHARE = 0.5
+
 #: An exactly enforced law's gap is measured against its own values floored
 #: by this share of the scene's displacement scale U = L τ/E, E the softer
 #: body's modulus (verification.agreement.displacement_scale).  Where Γ is
@@ -239,6 +249,13 @@ NEGLIGIBLE_SHARE = 1e-8
 WORST_TIE = 1e-9
 
 # ----- nonlinear interface laws and Newton ------------------------------------
+
+#: The largest friction coefficient a scene may give.  Engineering μ lie
+#: below about 5; any μ above the largest shear/normal ratio the loads ask
+#: of Γ only makes every closed point stick, which a μ of this size already
+#: does for any state a small-strain solid carries.  Far larger values
+#: (1e308 was accepted) overflow the slip tangent μ k_N and the limit μ|t_N|.
+MU_LARGEST = 1e6
 
 #: Coulomb's stick test ``|t_trial| <= mu p (1 + STICK_ROUNDOFF)``: a point
 #: exactly at the slip limit (a converged slip point re-evaluated, or stick

@@ -265,9 +265,24 @@ def test_study_refuses_an_enforcement_it_cannot_give(tmp_path, capsys, scene, va
 def test_an_exact_law_has_no_penalty_to_fall_back_on():
     """``bonded`` exists only exactly: its penalty counterpart is named."""
     scene = load_scene("A").with_changes(law=make_law({"type": "bonded"}))
-    with pytest.raises(SceneError, match=r'no springs to fall back on \(an exact law keeps none, even those its '
-                                         r'file gives; type = "linear", with kN and kT, is its penalty counterpart\)'):
+    with pytest.raises(SceneError, match=r'its file gives no springs kN, kT to enforce it by \(type = "linear", '
+                                         r'with kN and kT, is its penalty counterpart\)'):
         study.scene_at(scene, {"enforcement": "penalty"})
+
+
+def test_a_study_enforces_an_exact_law_by_the_springs_its_file_gives():
+    """docs/contact-enforcement.md: an exact law's kN, kT "may stay in the
+    file … checked but not used"; the study's penalty point uses them (it
+    refused: "an exact law keeps none, even those its file gives"), and
+    without them it names what is missing."""
+    given = {"type": "coulomb", "enforcement": "exact", "mu": 0.3, "kN": 2e9, "kT": 3e8}
+    scene = load_scene("A").with_changes(law=make_law(given))
+    law = study.scene_at(scene, {"enforcement": "penalty"}).law
+    assert (law.enforcement, law.name, law.kN, law.kT, law.mu) == ("penalty", "coulomb", 2e9, 3e8, 0.3)
+    bare = load_scene("A").with_changes(law=make_law({k: v for k, v in given.items() if k not in ("kN", "kT")}))
+    with pytest.raises(SceneError, match=r"its file gives no springs kN, kT to enforce it by"):
+        study.scene_at(bare, {"enforcement": "penalty"})
+    assert make_law(given) == bare.law  # the springs play no part in the exact law itself
 
 
 def test_study_sets_the_enforcement_before_the_stabilisation(tmp_path):
