@@ -476,8 +476,13 @@ def _check_counts(args) -> None:
 def _check_cell(args) -> None:
     """``--cell quad|triangle`` names structured cells, which fill a
     rectangle only: a disc is meshed by gmsh alone (docs/methods/xfem.md),
-    so asking for them there is refused rather than silently replaced."""
+    so asking for them there is refused rather than silently replaced.
+    A ``--cell`` that no chosen method takes is refused first (``--method
+    fe --cell quad`` on a disc: the cells mean nothing for fe, whatever the
+    domain), as the command itself would refuse it once the disc is fixed."""
     cell = getattr(args, "cell", None)
+    if cell is not None and getattr(args, "method", None) is not None:
+        methods.check_options(methods.expand(args.method), cell=cell)
     if cell is None or cell == "gmsh" or getattr(args, "scene", None) is None:
         return
     from contactcore.geometry import Disc
