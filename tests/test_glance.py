@@ -497,3 +497,35 @@ def test_a_process_whose_janitor_was_killed_says_the_line_itself(tmp_path):
                           capture_output=True, timeout=120)
     assert done.returncode == 0 and done.stdout.split() == ["told", "False", "watching", "False"], done
     assert [p.name for p in tmp_path.iterdir()] == ["out"]
+
+
+#: A ``sitecustomize`` that sends this process SIGINT the moment Python
+#: opens ``verification/__main__.py`` (or its cached bytecode) to load it
+#: (an audit hook on ``open``): a Ctrl-C that lands in that load.
+_CTRL_C_AT_MAIN = '''
+import os, signal, sys
+def _hook(event, args):
+    path = str(args[0]) if event == "open" and args and isinstance(args[0], (str, os.PathLike)) else ""
+    if os.path.basename(path).startswith("__main__.") and f"{os.sep}verification{os.sep}" in path:
+        os.kill(os.getpid(), signal.SIGINT)
+sys.addaudithook(_hook)
+'''
+
+
+def test_ctrl_c_while_python_compiles_the_command_is_one_line(tmp_path):
+    """``python -m verification``: Python imports the package, then reads
+    and compiles ``__main__`` (10-20 ms without a bytecode cache),
+    and only then ran the line that installs the start-up handler; a
+    Ctrl-C meanwhile was Python's traceback.  The package installs it now,
+    before ``__main__`` is read; imported any other way it installs none."""
+    (tmp_path / "sitecustomize.py").write_text(_CTRL_C_AT_MAIN)
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join([str(tmp_path), os.environ.get("PYTHONPATH", "")])}
+    done = subprocess.run([sys.executable, "-m", "verification", "run", "A", "--method", "efgm",
+                           "--out", str(tmp_path / "out")], cwd=ROOT, env=env, capture_output=True, text=True,
+                          timeout=120, preexec_fn=with_ctrl_c)
+    assert (done.returncode, done.stderr) == (130, "interrupted\n"), done.stderr[-2000:]
+    assert not (tmp_path / "out").exists()
+    imported = subprocess.run([sys.executable, "-c", "import signal, verification; "
+                               "print(signal.getsignal(signal.SIGINT) is signal.default_int_handler)"],
+                              cwd=ROOT, capture_output=True, text=True, timeout=120, preexec_fn=with_ctrl_c)
+    assert imported.stdout.strip() == "True", imported.stderr
