@@ -203,8 +203,16 @@ EXACT_LAWS = {law.name: law for law in (ExactUnilateral, ExactCoulomb, Bonded)}
 
 
 def make_law(kind: str, enforcement: str, params: dict, path: str):
-    """The exact law ``kind`` (``enforcement`` as the scene gave it), or a
-    SceneError naming the field."""
+    """The exactly enforced law ``kind`` (``"unilateral"``, ``"coulomb"`` or
+    ``"bonded"``) built from the scene's law table ``params`` (``mu`` for
+    Coulomb, ``stabilisation`` β within NITSCHE_STABILISATION_RANGE);
+    ``enforcement`` is the value the scene gave and ``path`` the table's
+    field name for errors.  Refused with a :class:`SceneError` at
+    ``path.enforcement``: ``bonded`` with any enforcement but ``"exact"``
+    (it has no springs), and a law with no exact form (``linear``).  Bad
+    parameters are refused by the law's ``from_params``, naming their
+    field.  Called by :func:`contactcore.enforcement.make_law`, the entry
+    point for any law table."""
     if kind in BONDED and enforcement != "exact":
         raise SceneError(f"{path}.enforcement", f"the '{kind}' law has no springs: it is enforced exactly only "
                          "(for springs use type = \"linear\")")
@@ -215,6 +223,9 @@ def make_law(kind: str, enforcement: str, params: dict, path: str):
 
 
 def is_exact(law) -> bool:
+    """Whether ``law`` (any law object: penalty or exact) is enforced
+    exactly (its ``enforcement`` is ``"exact"``), so that its tractions
+    come from the solve and not from springs evaluated at the jump."""
     return law.enforcement == "exact"
 
 

@@ -181,6 +181,13 @@ class LinearLaw(_Law):
         return np.diag([self.kN, self.kT])
 
     def evaluate(self, g: np.ndarray, state=None, decision: Decision | None = None) -> LawResponse:
+        """The springs' response to the jumps ``g`` ((m, 2) or flat, ``[g_N,
+        g_T]`` in the scene's length unit; tractions in its stress unit, k in
+        stress per length): ``t = diag(k_N, k_T) g`` at every point, in
+        tension too; the constant tangent; no state (``state`` and
+        ``decision`` are ignored); every point ``STICK``.  Nothing is
+        refused: a non-finite jump gives a non-finite traction, which the
+        health checks refuse."""
         g = np.asarray(g, dtype=float).reshape(-1, 2)
         D = self.constant_tangent()
         return LawResponse(g @ D.T, np.broadcast_to(D, (len(g), 2, 2)).copy(), None,
@@ -203,6 +210,13 @@ class UnilateralLaw(_Law):
     is_linear: ClassVar[bool] = False
 
     def evaluate(self, g: np.ndarray, state=None, decision: Decision | None = None) -> LawResponse:
+        """The response to the jumps ``g`` ((m, 2) or flat, ``[g_N, g_T]`` in
+        the scene's length unit): where closed, ``t = diag(k_N, k_T) g``
+        (``STICK``), where open ``t = 0`` (``OPEN``), with the tangent of
+        each.  A point is closed where ``g_N <= 0``; with a Newton
+        ``decision`` (:class:`Decision`), by its band, so that round-off
+        cannot flip a point.  No state (``state`` is ignored); nothing is
+        refused."""
         g, closed, tN = self._springs(g, decision)
         tT = np.where(closed, self.kT * g[:, 1], 0.0)
         tangent = np.zeros((len(g), 2, 2))
@@ -249,6 +263,16 @@ class CoulombLaw(_Law):
                          float(np.max(-self.mu * tN, initial=0.0))])
 
     def evaluate(self, g: np.ndarray, state=None, decision: Decision | None = None) -> LawResponse:
+        """The return map (class doc) at the jumps ``g`` ((m, 2) or flat,
+        ``[g_N, g_T]`` in the scene's length unit) from the slip ``state``
+        ((m,), same unit; None: no slip yet): tractions (stress unit),
+        the tangent (not symmetric where a point slips), the new slip
+        state, each point's ``OPEN``/``STICK``/``SLIP``, and the slipping
+        points' secant stiffness.  Open/closed and stick/slip are decided
+        at ``g_N <= 0`` and ``|t*| <= μp (1 + STICK_ROUNDOFF)``, or, with a
+        Newton ``decision``, by its bands (round-off cannot flip a
+        point).  Nothing is refused: ``state`` must have one entry per
+        point (numpy broadcasting rules otherwise)."""
         g, closed, tN = self._springs(g, decision)
         limit = self.mu * np.maximum(-tN, 0.0)
         s = np.zeros(len(g)) if state is None else np.asarray(state, dtype=float)
