@@ -287,12 +287,14 @@ class _Newton:
             # back to zero — has internal forces of round-off, which alone made
             # round-off look like a residual of order 1; and a load held at
             # zero has nothing but round-off, so RESIDUAL_FLOOR of the
-            # scene's full loads is the least scale.
-            scale = max(forces, data, lift, start, self._least(u))
+            # scene's full loads, or of the forces u's size makes, is the
+            # least scale (_least).
+            least = self._least(u)
+            scale = max(forces, data, lift, start, least)
             history.append(norm / scale if scale > 0 else norm)
             if not np.isfinite(norm):
                 raise SolverError(f"the residual is not finite; residual history {_fmt(history)}")
-            judged_forces = max(forces, self._least(u))  # what _converged judges the balance against
+            judged_forces = max(forces, least)  # what _converged judges the balance against
             judged.append(self._balance(R) / judged_forces if judged_forces > 0 else self._balance(R))
             if it > 1 and self._converged(R, judged_forces, tangent, response, du, u - u0):
                 health.check_residual(history[-1], "the settled Newton step")
@@ -314,9 +316,11 @@ class _Newton:
                 secant = not self.ranks.all(np.array_equal(tangent, response.tangent))
                 alpha, evaluated = self._line_search(u, du, b, R, response.status, secant, tangent)
                 if secant and evaluated is None and self._slipping(response):  # the secant step is no descent
-                    du, rep, tangent = self._solve(self._pinned(response), -R, scale, status=response.status)
+                    # the pinned map's tangent with the slipping map's residual: its
+                    # step solves no map's linear problem, so it settles nothing
+                    du, rep, _ = self._solve(self._pinned(response), -R, scale, status=response.status)
                     _merge(self.report, rep)
-                    alpha, evaluated = self._line_search(u, du, b, R, response.status, False, tangent)
+                    alpha, evaluated, tangent = *self._line_search(u, du, b, R, response.status), None
                 du = alpha * du
                 tangent = tangent if alpha == 1.0 else None  # a partial step settles nothing
             else:
@@ -514,7 +518,9 @@ class _Newton:
         The point is the one nearest its stick window (the largest
         ``secant/k = μp/|t*|``); of points within DECISION_BAND of that the
         first by their coordinates (x, then y), so that neither round-off
-        nor numbering chooses between mirror points of a symmetric scene."""
+        nor numbering chooses between mirror points of a symmetric scene.
+        Its step is solved from the slipping map's residual, so it solves
+        no map's linear problem and settles nothing (:meth:`_settles`)."""
         k = self.itf.gamma if self.itf.exact else np.full(self.itf.size, self.law.kT)
         ratio = self.ranks.gather(np.where(response.status == SLIP, response.secant / k, -1.0))
         points = self._gamma[0]
