@@ -413,8 +413,10 @@ TIE_PROFILES = 2e-12
 #: load the block sits 286 U along Γ, placed by a solve whose round-off is
 #: that of a body held by one point's soft spring.  Measured 2026-11-27,
 #: Haswell against Nehalem and Sandybridge, status maps identical: fe
-#: 2.6e-11 and 1.4e-10, xfem 6.9e-12 and 4.3e-11, efgm 1.1e-11 and 6.3e-11.
-#: 7x the worst; the zero-load tractions against the loaded ones are held
+#: 2.6e-11 and 1.4e-10, xfem 6.9e-12 and 4.3e-11, efgm 1.1e-11 and 6.3e-11;
+#: against MUMPS orderings 0 and 2 or EFGM's shuffle, the load change and
+#: the Zen and Prescott kernels (the slow stage's perturbations) 1.5e-10 at
+#: most (xfem's jumps, Zen).  6x the worst; the zero-load tractions against the loaded ones are held
 #: to it too (round-off: 3.2e-11 at most, the same runs).  The zero-load position against the limit of loads short
 #: of zero (UNLOADED_LIMIT_LOAD of the step's, the same map), of that position:
 #: measured 1.0e-6 (fe, xfem, efgm P1); it moves by the load times the
