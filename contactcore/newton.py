@@ -171,8 +171,8 @@ class _Newton:
         self._commit(k, *converged)
 
     def _approached(self, k: float):
-        """The step to ``k`` (:meth:`_iterate`).  One that unloads the scene
-        to zero (no load, no prescribed displacement) from a loaded state,
+        """The step to ``k`` (:meth:`_iterate`).  One that takes every load
+        to zero from a loaded state (prescribed displacements may stay),
         under a law with history, where a body is held by Γ alone, is solved
         as the limit of the loads along the step: first to LOAD_APPROACH of
         the step short of zero, then to zero from that answer and its
@@ -196,11 +196,10 @@ class _Newton:
         return factors, u, response, approach + iterations, history
 
     def _unloaded(self, k: float) -> bool:
-        """Whether the scene at increment ``k`` has no load and no
-        prescribed displacement, on every rank."""
+        """Whether no load acts at increment ``k`` (the equilibrium rows of
+        ``b`` zero on every rank; prescribed displacements may not be)."""
         loads, supports = self.scene.factors(k)
-        return self.ranks.all(not self.system.external(loads, supports)[self.free].any()
-                              and not self.system.fixed_values(supports).any())
+        return self.ranks.all(not self.system.external(loads, supports)[self.balance].any())
 
     def _held_by_gamma(self) -> bool:
         """Whether a body is held by Γ alone: the map where every point is

@@ -299,7 +299,7 @@ DECISION_FLOOR = 1e-8
 #: at most, so within the window 2.9e-7 U.
 REST_ROUNDOFF = 1e-9
 
-#: A step that unloads the scene to zero from a loaded state, under a law
+#: A step that takes every load to zero from a loaded state, under a law
 #: with history, where a body is held by Γ alone, is solved first to
 #: LOAD_APPROACH of the step short of zero, then to zero from that answer
 #: (contactcore.newton._Newton._approached): at zero load every slip limit
