@@ -80,13 +80,18 @@ class Decision:
     previous: np.ndarray
     gap: float
     traction: float
+    #: the size of Γ's jumps and slip history (their largest, at least the
+    #: displacement unit): the round-off of a margin ``g − s`` is relative to it
+    size: float = 1.0
 
     @classmethod
     def reduced(cls, law, g: np.ndarray, state, previous: np.ndarray, ranks) -> "Decision":
         """The decision of ``law`` at the jumps ``g``, its scales reduced
         over ``ranks`` (a :class:`~contactcore.collective.Collective`)."""
         gap, traction = (max(ranks.max(float(v)), tol.DECISION_FLOOR) for v in law.decision_scales(g, state))
-        return cls(previous, gap, traction)
+        history = 0.0 if state is None else float(np.max(np.abs(state), initial=0.0))
+        size = max(1.0, ranks.max(max(float(np.max(np.abs(g), initial=0.0)), history)))
+        return cls(previous, gap, traction, size)
 
     def switch(self, margin: np.ndarray, scale: float, was: np.ndarray, stiffness=1.0) -> np.ndarray:
         """``margin > 0`` where it is beyond the band, ``True`` (a zero
@@ -98,7 +103,8 @@ class Decision:
         # at rest only where Γ as a whole is (its scale at the floor: a load
         # back to zero); under load the band decides, and a stiff spring's
         # window would otherwise hold a point past μp
-        rest = (scale <= tol.DECISION_FLOOR) & (np.abs(margin) <= tol.REST_ROUNDOFF * np.asarray(stiffness, float))
+        rest = (scale <= tol.DECISION_FLOOR) & (
+            np.abs(margin) <= tol.REST_ROUNDOFF * self.size * np.asarray(stiffness, float))
         return np.where(rest | (margin > band), True, np.where(margin < -band, False, was))
 
 

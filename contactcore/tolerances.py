@@ -304,15 +304,41 @@ DECISION_FLOOR = 1e-8
 #: = 1e-13: 43 or 32 of 80 points opened by the BLAS kernel (Haswell,
 #: Nehalem), and with Coulomb friction 39 of 80 slipped.  1e-9 U is 30
 #: times the worst measured and far below any gap a load makes (a load's
-#: gaps are fractions of U: presspull's 3e-3 U).
+#: gaps are fractions of U: presspull's 3e-3 U).  The window is relative to
+#: the size of Γ's jumps and slip history where they exceed U (their
+#: largest, contactcore.laws.Decision.size): ``g − s`` is a difference of
+#: two numbers of that size.  Scene A on Coulomb springs unloaded to zero
+#: (tests/scenes/unloaded.toml, h = 0.1) leaves its block 286 U along Γ,
+#: held by one point whose trial is zero in exact arithmetic and whose
+#: ``g − s`` was 6e-9 to 1.1e-7 U after one solve (fe, xfem, efgm P1 under
+#: Haswell and Nehalem, 2026-11-27; further solves do not lower it: the
+#: residual's round-off over that one point's spring), 3.7e-10 of that size
+#: at most, so within the window 2.9e-7 U.
 REST_ROUNDOFF = 1e-9
+
+#: A step that takes every load to zero from a loaded state, under a law
+#: with history, where a body is held by Γ alone, is solved first to
+#: LOAD_APPROACH of the step short of zero, then to zero from that answer
+#: (contactcore.newton._Newton._approached): at zero load every slip limit
+#: is zero and every position of that body along its free motion solves
+#: the step.  Short of zero the answer is linear in the load on one status
+#: map; scene A on Coulomb springs (μ = 0.3, tests/scenes/unloaded.toml,
+#: h = 0.1) has the same map at loads 1e-2 to 1e-6 of the step's, the
+#: block's position linear in the load (fe P1: 1.43864e-4 m at 1e-2 to
+#: 1.42858e-4 m at 1e-6; xfem and efgm P1 alike, 2026-11-27).  1e-3 keeps
+#: that step's slip limits 1e5 times DECISION_FLOOR.
+LOAD_APPROACH = 1e-3
 
 #: The least round-off scale of a Newton step's residual, as a share of the
 #: scene's loads at full value: a step whose loads are all zero (a load
 #: path back to zero, held) has only round-off for forces, and its
 #: relative residual was round-off over round-off (0.04-0.47, by BLAS
 #: kernel): refused.  A residual of 1e-8 × 1e-5 of the full loads is
-#: an answer.
+#: an answer.  Likewise of the forces the unknowns' size makes (``A u`` sums
+#: terms of that size however they cancel, the dimensionless modulus being
+#: 1): scene A on Coulomb springs held at zero with its block 286 U along Γ
+#: (tests/scenes/unloaded.toml, fe P1, h = 0.1) had a residual of round-off,
+#: 2.5e-13 = 8.7e-16 |u|, refused at 1e-5 of 1e-8 of the full loads.
 RESIDUAL_FLOOR = 1e-8
 
 #: Once Newton meets a status map it met before in the same step (a
