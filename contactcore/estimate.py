@@ -719,9 +719,15 @@ def cell_scale_orders(scene: Scene, levels: list[list[ProfileData]],
     means the coarse run's is not yet (the runs of
     docs/error-estimates.md, "Which estimates to warn of").  Quantities
     with an observed order (three runs) are left to
-    :func:`order_warnings`; a part at round-off of the quantity
-    (:data:`~contactcore.tolerances.ESTIMATE_ROUNDOFF`) shows no order."""
-    out = {}
+    :func:`order_warnings`; a part at round-off shows no order: of the
+    quantity (:data:`~contactcore.tolerances.ESTIMATE_ROUNDOFF` of its
+    largest |value|), or of the scene's own size of its kind
+    (:data:`~contactcore.tolerances.NEGLIGIBLE_SHARE` of
+    :class:`~contactcore.scaling.Sizes`' stress for a stress or traction,
+    displacement otherwise), so that a quantity whose values are all
+    round-off (σxy of a bonded patch, 1e-14) is named by no kernel."""
+    from .scaling import Sizes
+    sizes, out = Sizes.of(scene), {}
     for coarse, fine in zip(levels[-2], levels[-1]):
         cols = fine.columns
         xy = np.column_stack([cols["x"], cols["y"]])
@@ -734,7 +740,8 @@ def cell_scale_orders(scene: Scene, levels: list[list[ProfileData]],
                 continue
             a, b = (rms(cell_scale_part(v, s, groups, h)[kept]) for v in (coarse.columns[q], cols[q]))
             scale = max(float(np.max(np.abs(cols[q]))), float(np.max(np.abs(coarse.columns[q]))))
-            if min(a, b) <= tol.ESTIMATE_ROUNDOFF * scale:
+            own = sizes.stress if q in STRESSES + TRACTIONS else sizes.displacement
+            if min(a, b) <= max(tol.ESTIMATE_ROUNDOFF * scale, tol.NEGLIGIBLE_SHARE * own):
                 continue
             order = float(np.log2(a / b))
             if order > e.theory[1] + tol.CELL_SCALE_EXCESS:

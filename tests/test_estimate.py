@@ -10,6 +10,7 @@ import tolerances as tol
 from contactcore import load_scene
 from contactcore import estimate as est
 from contactcore import tolerances as core_tol
+from contactcore.scaling import Sizes
 from verification import files
 from verification.effectivity import CASES, VARIANTS, effectivity
 from verification.run import NOT_ESTIMATED, NOT_ESTIMATED_MARK, run
@@ -705,8 +706,9 @@ def test_a_coarse_run_rough_at_its_cells_beyond_theory_is_not_asymptotic(rate, w
     allowed, [1, 2], by more than CELL_SCALE_EXCESS, the quantity is
     named as not asymptotic, in the estimate's warnings too."""
     scene, h = load_scene("A"), 0.05
-    levels = _runs_along_gamma(lambda s, hk: 1.0 + s + 0.1 * s ** 2 + 100.0 * hk ** rate * np.sin(2 * np.pi * s / hk + 0.3),
-                              h)
+    stress = Sizes.of(scene).stress  # A's load
+    levels = _runs_along_gamma(lambda s, hk: stress * (1.0 + s + 0.1 * s ** 2
+                                                       + 100.0 * hk ** rate * np.sin(2 * np.pi * s / hk + 0.3)), h)
     theory = est.order_range("sxx", 1, "fe")
     estimates = {"L": {"sxx": est.QuantityEstimate(np.zeros(281), est.balanced_order(*theory), False, theory)}}
     found = est.cell_scale_orders(scene, levels, estimates, 0.1, h)
@@ -722,8 +724,9 @@ def test_a_smooth_value_round_off_at_the_cells_or_an_observed_order_shows_no_cel
     """est.cell_scale_orders: runs that differ by a smooth amount only
     (each run's part at the cells' scale the exact value's own, ratio 1),
     runs whose values are lines (that part at round-off, whatever its
-    ratio), and an estimate whose order three runs observed (left to the
-    order's own warning): none is named."""
+    ratio), runs whose values are all round-off of the scene's stresses
+    (rough as they may be), and an estimate whose order three runs
+    observed (left to the order's own warning): none is named."""
     scene, h = load_scene("A"), 0.05
     theory = est.order_range("sxx", 1, "fe")
     two = {"L": {"sxx": est.QuantityEstimate(np.zeros(281), 1.45, False, theory)}}
@@ -731,7 +734,10 @@ def test_a_smooth_value_round_off_at_the_cells_or_an_observed_order_shows_no_cel
     assert est.cell_scale_orders(scene, smooth, two, 0.1, h) == {}
     lines = _runs_along_gamma(lambda s, hk: 1.0 + 2.0 * s + 1e-14 * np.sin(2 * np.pi * s / hk) / hk ** 4, h)
     assert est.cell_scale_orders(scene, lines, two, 0.1, h) == {}
-    rough = _runs_along_gamma(lambda s, hk: 1.0 + 4.0 * hk ** 4 * np.sin(2 * np.pi * s / hk), h)
+    stress = Sizes.of(scene).stress  # A's load
+    rough = _runs_along_gamma(lambda s, hk: stress * (1.0 + 4.0 * hk ** 4 * np.sin(2 * np.pi * s / hk)), h)
     assert est.cell_scale_orders(scene, rough, two, 0.1, h)
+    noise = _runs_along_gamma(lambda s, hk: 1e-14 * stress * (1.0 + 4.0 * hk ** 4 * np.sin(2 * np.pi * s / hk)), h)
+    assert est.cell_scale_orders(scene, noise, two, 0.1, h) == {}  # round-off of A's stresses, however rough
     three = {"L": {"sxx": est.QuantityEstimate(np.zeros(281), 4.0, True, theory)}}
     assert est.cell_scale_orders(scene, rough, three, 0.1, h) == {}
