@@ -54,7 +54,12 @@ def machine_memory() -> float:
 
 
 def estimate(scene, h: float, degree: int, method: str) -> Estimate:
-    """The cost of solving ``scene`` at resolution ``h`` (module doc)."""
+    """The :class:`Estimate` (unknowns, memory in bytes, linear solves) of
+    solving ``scene`` with ``method`` (``"fe"``, ``"xfem"`` or
+    ``"efgm"``; another name counts one field) at degree 1 or 2 and
+    element size ``h``, in the same length unit as ``scene``'s domain
+    (module doc for the model).  Nothing is refused here: a tiny ``h``
+    gives a huge estimate, which :func:`check_budget` refuses."""
     nodes = scene.domain.area / h / h * (degree ** 2 if method != "efgm" else 1)  # h ** 2 underflows to 0 at 1e-300
     unknowns = 2 * FIELDS.get(method, 1) * nodes + 4  # a one-cell mesh still has a few
     gamma_points = 3 * scene.length_scale * math.pi / h
@@ -67,8 +72,12 @@ def estimate(scene, h: float, degree: int, method: str) -> Estimate:
 
 
 def check_budget(scene, h: float, degree: int, method: str, field: str = "--h") -> Estimate:
-    """Raise :class:`TooLargeError` when the run would need more than
-    MEMORY_SHARE of this machine's memory."""
+    """The :func:`estimate` of the run (``h`` in ``scene``'s length unit),
+    or a :class:`TooLargeError` when its memory exceeds MEMORY_SHARE of
+    this machine's physical memory; the message names ``field`` (the
+    option or scene field that set ``h``, ``--h`` by default), the
+    estimate in GB and what to do (a larger h, fewer increments, or
+    ``--allow-large``)."""
     est = estimate(scene, h, degree, method)
     have = MEMORY_SHARE * machine_memory()
     if est.memory > have:

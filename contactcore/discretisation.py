@@ -130,11 +130,19 @@ class Discretisation:
 
 
 def check_degree(name: str, degree) -> None:
+    """Refuse a polynomial ``degree`` other than 1 or 2 (the int values; for
+    efgm 1 is the linear basis, 2 the quadratic) with a
+    :class:`DiscretisationError` naming the method ``name`` and the value
+    given.  Returns nothing; called by each options class on construction."""
     if degree not in (1, 2):
         raise DiscretisationError(f"{name}: degree must be 1 or 2 (got {degree})")
 
 
 def check_choice(name: str, option: str, value, choices) -> None:
+    """Refuse an option ``value`` not among ``choices`` (compared with
+    ``in``: exact values, no case folding) with a
+    :class:`DiscretisationError` naming the method ``name``, the
+    ``option``, every allowed choice and the value given."""
     if value not in choices:
         raise DiscretisationError(f"{name}: {option} must be one of {', '.join(map(str, choices))} (got {value!r})")
 

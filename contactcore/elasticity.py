@@ -21,11 +21,18 @@ def lame(E: float, nu: float, plane: str) -> tuple[float, float]:
 
 
 def voigt_matrix(E: float, nu: float, plane: str) -> np.ndarray:
-    """The 3×3 matrix ``D`` with ``σ = D ε`` in Voigt notation."""
+    """The 3×3 matrix ``D`` with ``σ = D ε`` in Voigt notation
+    ``(σxx, σyy, σxy)``, ``(εxx, εyy, γxy = 2εxy)``, from Young's modulus
+    ``E`` (in the scene's stress unit; D has that unit) and Poisson's
+    ratio ``nu``; ``plane`` is ``"stress"``, and any other value means
+    plane strain (the scene's validation refuses others before; ν, E are
+    not checked here, ν = 0.5 in plane strain divides by zero)."""
     lam, mu = lame(E, nu, plane)
     return np.array([[lam + 2 * mu, lam, 0.0], [lam, lam + 2 * mu, 0.0], [0.0, 0.0, mu]])
 
 
 def compliance(E: float, nu: float, plane: str) -> np.ndarray:
-    """The inverse of :func:`voigt_matrix`: ``ε = C σ``."""
+    """The inverse of :func:`voigt_matrix` (same arguments): ``ε = C σ``,
+    in the inverse of the stress unit; a singular ``D`` raises numpy's
+    LinAlgError."""
     return np.linalg.inv(voigt_matrix(E, nu, plane))

@@ -702,6 +702,65 @@ def unsettled_warnings(found: dict[str, dict[str, tuple[float, float]]], h: floa
     return lines
 
 
+def cell_scale_orders(scene: Scene, levels: list[list[ProfileData]],
+                      estimates: dict[str, dict[str, QuantityEstimate]], exclude: float,
+                      h: float) -> dict[str, tuple[float, float]]:
+    """``{PID:Q: (order, high)}`` of the two-run estimates whose coarse
+    run is rough at the scale of its cells: the RMS over the kept
+    samples (at least ``exclude`` from the singular points) of each run's
+    part at that scale (:func:`cell_scale_part`, the same kernel of the
+    coarse run's ``h`` for both, fitted over :func:`sample_groups`)
+    shrinks between the runs at an ``order`` above the highest that
+    theory allows the quantity (``high``, :func:`order_range`) by more
+    than :data:`~contactcore.tolerances.CELL_SCALE_EXCESS`.  A smooth
+    exact value leaves the same part in both runs (ratio 1); what
+    varies from cell to cell beyond it is each run's local error, which
+    shrinks at the method's order once the runs are asymptotic.  Faster
+    means the coarse run's is not yet (the runs of
+    docs/error-estimates.md, "Which estimates to warn of").  Quantities
+    with an observed order (three runs) are left to
+    :func:`order_warnings`; a part at round-off shows no order: of the
+    quantity (:data:`~contactcore.tolerances.ESTIMATE_ROUNDOFF` of its
+    largest |value|), or of the scene's own size of its kind
+    (:data:`~contactcore.tolerances.NEGLIGIBLE_SHARE` of
+    :class:`~contactcore.scaling.Sizes`' stress for a stress or traction,
+    displacement otherwise), so that a quantity whose values are all
+    round-off (σxy of a bonded patch, 1e-14) is named by no kernel."""
+    from .scaling import Sizes
+    sizes, out = Sizes.of(scene), {}
+    for coarse, fine in zip(levels[-2], levels[-1]):
+        cols = fine.columns
+        xy = np.column_stack([cols["x"], cols["y"]])
+        kept = far_from_singular(scene, xy, exclude)
+        s = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(xy, axis=0), axis=1))])
+        groups = sample_groups(scene, xy, kept)
+        for q in fine.names[3:]:
+            e = estimates.get(fine.id, {}).get(q)
+            if e is None or e.observed or not np.any(kept):
+                continue
+            a, b = (rms(cell_scale_part(v, s, groups, h)[kept]) for v in (coarse.columns[q], cols[q]))
+            scale = max(float(np.max(np.abs(cols[q]))), float(np.max(np.abs(coarse.columns[q]))))
+            own = sizes.stress if q in STRESSES + TRACTIONS else sizes.displacement
+            if min(a, b) <= max(tol.ESTIMATE_ROUNDOFF * scale, tol.NEGLIGIBLE_SHARE * own):
+                continue
+            order = float(np.log2(a / b))
+            if order > e.theory[1] + tol.CELL_SCALE_EXCESS:
+                out[f"{fine.id}:{q}"] = (order, float(e.theory[1]))
+    return out
+
+
+def cell_scale_warnings(found: dict[str, tuple[float, float]], hs: tuple[float, float]) -> list[str]:
+    """One line naming the quantities of :func:`cell_scale_orders`, each
+    with the order at which its runs' variation at the cells' scale
+    shrank and the highest order theory allows it."""
+    if not found:
+        return []
+    names = ", ".join(f"{k} ({o:.2f} against {hi:.3g})" for k, (o, hi) in found.items())
+    return [f"{names}: the runs' variation from cell to cell shrinks between h = {hs[0]:g} and {hs[1]:g} faster "
+            f"than theory allows the error (orders in brackets): the coarse run is not in the asymptotic range, "
+            f"the estimate is an indication only and likely too large"]
+
+
 # ----- the status along Γ -----------------------------------------------------
 
 def switches(paths) -> bool:
@@ -863,7 +922,8 @@ class Estimate:
     between the two finest runs (a law with history), warnings, the
     finest run's profiles as sampled (``sampled``, in the scene's order:
     what a driver writes, not sampled again), and the ``PID:Q`` whose
-    estimate a warning calls not asymptotic (:func:`unsettled`)."""
+    estimate a warning calls not asymptotic (:func:`unsettled`,
+    :func:`cell_scale_orders`)."""
 
     hs: tuple
     profiles: dict[str, dict[str, QuantityEstimate]]
@@ -906,14 +966,17 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     profiles = profile_estimates(levels, results[-1].degree, results[-1].method, coarse, scene, exclude, switching,
                                  h=hs[-2])
     found = unsettled(scene, levels, results[-2].discretisation, results[-1].method, results[-1].degree, exclude)
+    rough = cell_scale_orders(scene, levels, profiles, exclude, hs[-2])
     warnings = (order_warnings(profiles) + pollution_warning(scene, profiles)
-                + unsettled_warnings(found, hs[-2], feature_size(scene), scene.user.units.length))
+                + unsettled_warnings(found, hs[-2], feature_size(scene), scene.user.units.length)
+                + cell_scale_warnings(rough, hs[-2:]))
     status = None
     if scene.law.has_history or not scene.law.is_linear:
         status = status_change(scene, results[-2].interface, results[-1].interface, hs[-2:])
         warnings += status_warning(status)
     zz = energy_estimate(scene, results[-1].fields, hs[-1], exclude) if energy else None
-    return Estimate(hs, profiles, zz, status, warnings, levels[-1], {k for v in found.values() for k in v})
+    return Estimate(hs, profiles, zz, status, warnings, levels[-1],
+                    {k for v in found.values() for k in v} | set(rough))
 
 
 def estimate(scene: Scene, discretisation, h: float, levels: int = 2, *, exclude: float = 0.0, reuse=None,

@@ -51,7 +51,7 @@ solver carry it unchanged.  ``γ = β γ₀`` per point,
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from typing import ClassVar
 
 import numpy as np
@@ -105,6 +105,9 @@ class _ExactLaw:
     """What the exact laws share: β and the reading of their parameters."""
 
     stabilisation: float
+    #: the ``kN``, ``kT`` its file gave (checked, never used by the answer;
+    #: a study's penalty point takes them): ``(("kN", ..), ("kT", ..))``
+    given_springs: tuple = field(default=(), compare=False, repr=False)
     enforcement: ClassVar[str] = "exact"
     parameters: ClassVar[tuple[str, ...]] = ("stabilisation",)
     has_history: ClassVar[bool] = False
@@ -120,10 +123,8 @@ class _ExactLaw:
         if unknown:
             raise SceneError(f"{path}.{unknown[0]}", f"unknown parameter of the exact '{cls.name}' law (it takes "
                              f"{', '.join(cls.parameters)}; kN, kT play no part)")
-        for k in ("kN", "kT"):
-            if k in params:
-                _positive(params, k, path)
-        values = {"stabilisation": _stabilisation(params, path)}
+        given = tuple((k, _positive(params, k, path)) for k in ("kN", "kT") if k in params)
+        values = {"stabilisation": _stabilisation(params, path), "given_springs": given}
         if "mu" in cls.parameters:
             values["mu"] = _friction(params, path)
         return cls(**values)
@@ -202,8 +203,16 @@ EXACT_LAWS = {law.name: law for law in (ExactUnilateral, ExactCoulomb, Bonded)}
 
 
 def make_law(kind: str, enforcement: str, params: dict, path: str):
-    """The exact law ``kind`` (``enforcement`` as the scene gave it), or a
-    SceneError naming the field."""
+    """The exactly enforced law ``kind`` (``"unilateral"``, ``"coulomb"`` or
+    ``"bonded"``) built from the scene's law table ``params`` (``mu`` for
+    Coulomb, ``stabilisation`` β within NITSCHE_STABILISATION_RANGE);
+    ``enforcement`` is the value the scene gave and ``path`` the table's
+    field name for errors.  Refused with a :class:`SceneError` at
+    ``path.enforcement``: ``bonded`` with any enforcement but ``"exact"``
+    (it has no springs), and a law with no exact form (``linear``).  Bad
+    parameters are refused by the law's ``from_params``, naming their
+    field.  Called by :func:`contactcore.enforcement.make_law`, the entry
+    point for any law table."""
     if kind in BONDED and enforcement != "exact":
         raise SceneError(f"{path}.enforcement", f"the '{kind}' law has no springs: it is enforced exactly only "
                          "(for springs use type = \"linear\")")
@@ -214,6 +223,9 @@ def make_law(kind: str, enforcement: str, params: dict, path: str):
 
 
 def is_exact(law) -> bool:
+    """Whether ``law`` (any law object: penalty or exact) is enforced
+    exactly (its ``enforcement`` is ``"exact"``), so that its tractions
+    come from the solve and not from springs evaluated at the jump."""
     return law.enforcement == "exact"
 
 

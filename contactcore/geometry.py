@@ -160,10 +160,15 @@ class LineInterface:
         object.__setattr__(self, "normal", normal)
 
     def phi(self, x) -> np.ndarray:
+        """φ (m,) at points ``x`` (one point (2,) or (m, 2), the scene's
+        length unit): the signed distance to the line, negative on the −
+        side, positive on the + side (where ``normal`` points)."""
         p = _as_points(x)
         return (p[:, 0] - self.point[0]) * self.normal[0] + (p[:, 1] - self.point[1]) * self.normal[1]
 
     def normals(self, x) -> np.ndarray:
+        """The unit normal ``n`` (from − into +) at each point of ``x``
+        ((m, 2)): the line's own, wherever the point lies."""
         return np.tile(np.asarray(self.normal, dtype=float), (len(_as_points(x)), 1))
 
     def signed_distance(self, x) -> np.ndarray:
@@ -222,10 +227,16 @@ class CircleInterface:
     radius: float
 
     def phi(self, x) -> np.ndarray:
+        """φ (m,) at points ``x`` (one point (2,) or (m, 2), the scene's
+        length unit): distance to the centre minus the radius, negative
+        inside (the − body), positive outside."""
         p = _as_points(x)
         return np.hypot(p[:, 0] - self.centre[0], p[:, 1] - self.centre[1]) - self.radius
 
     def normals(self, x) -> np.ndarray:
+        """The unit normal ``n`` (outwards, from − into +) at each point of
+        ``x`` ((m, 2)): the radial direction through the point, on Γ or off
+        it; the centre itself has none (0/0 gives NaN, not refused)."""
         p = _as_points(x)
         d = p - np.asarray(self.centre, dtype=float)
         return d / np.linalg.norm(d, axis=1)[:, None]
@@ -239,6 +250,8 @@ class CircleInterface:
         return False
 
     def points_at_angles(self, theta: np.ndarray) -> np.ndarray:
+        """The points (m, 2) of Γ at polar angles ``theta`` (m,), in
+        radians from the +x axis about the centre, anticlockwise."""
         return np.column_stack([self.centre[0] + self.radius * np.cos(theta),
                                 self.centre[1] + self.radius * np.sin(theta)])
 
@@ -268,9 +281,13 @@ class LevelSetInterface:
     grad_fn: object
 
     def phi(self, x) -> np.ndarray:
+        """The user's φ at points ``x`` (one point (2,) or (m, 2)) as floats:
+        negative on the − body, positive on the +; not checked here."""
         return np.asarray(self.phi_fn(_as_points(x)), float)
 
     def normals(self, x) -> np.ndarray:
+        """``∇φ/|∇φ|`` at each point of ``x`` ((m, 2)): the unit normal from
+        − into +; where ∇φ = 0 it is NaN (not refused here)."""
         g = np.asarray(self.grad_fn(_as_points(x)), float).reshape(-1, 2)
         return g / np.linalg.norm(g, axis=1)[:, None]
 

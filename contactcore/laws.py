@@ -80,13 +80,18 @@ class Decision:
     previous: np.ndarray
     gap: float
     traction: float
+    #: the size of Γ's jumps and slip history (their largest, at least the
+    #: displacement unit): the round-off of a margin ``g − s`` is relative to it
+    size: float = 1.0
 
     @classmethod
     def reduced(cls, law, g: np.ndarray, state, previous: np.ndarray, ranks) -> "Decision":
         """The decision of ``law`` at the jumps ``g``, its scales reduced
         over ``ranks`` (a :class:`~contactcore.collective.Collective`)."""
         gap, traction = (max(ranks.max(float(v)), tol.DECISION_FLOOR) for v in law.decision_scales(g, state))
-        return cls(previous, gap, traction)
+        history = 0.0 if state is None else float(np.max(np.abs(state), initial=0.0))
+        size = max(1.0, ranks.max(max(float(np.max(np.abs(g), initial=0.0)), history)))
+        return cls(previous, gap, traction, size)
 
     def switch(self, margin: np.ndarray, scale: float, was: np.ndarray, stiffness=1.0) -> np.ndarray:
         """``margin > 0`` where it is beyond the band, ``True`` (a zero
@@ -98,7 +103,8 @@ class Decision:
         # at rest only where Γ as a whole is (its scale at the floor: a load
         # back to zero); under load the band decides, and a stiff spring's
         # window would otherwise hold a point past μp
-        rest = (scale <= tol.DECISION_FLOOR) & (np.abs(margin) <= tol.REST_ROUNDOFF * np.asarray(stiffness, float))
+        rest = (scale <= tol.DECISION_FLOOR) & (
+            np.abs(margin) <= tol.REST_ROUNDOFF * self.size * np.asarray(stiffness, float))
         return np.where(rest | (margin > band), True, np.where(margin < -band, False, was))
 
 
@@ -156,6 +162,9 @@ def _friction(params: dict, path: str) -> float:
     value = params["mu"]
     if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) or value < 0:
         raise SceneError(f"{path}.mu", f"must be a finite friction coefficient >= 0 (got {value!r})")
+    if value > tol.MU_LARGEST:
+        raise SceneError(f"{path}.mu", f"{value:g} is above {tol.MU_LARGEST:g}: a μ of that size already makes "
+                         "every closed point stick; give one at most that large")
     return float(value)
 
 
@@ -178,6 +187,13 @@ class LinearLaw(_Law):
         return np.diag([self.kN, self.kT])
 
     def evaluate(self, g: np.ndarray, state=None, decision: Decision | None = None) -> LawResponse:
+        """The springs' response to the jumps ``g`` ((m, 2) or flat, ``[g_N,
+        g_T]`` in the scene's length unit; tractions in its stress unit, k in
+        stress per length): ``t = diag(k_N, k_T) g`` at every point, in
+        tension too; the constant tangent; no state (``state`` and
+        ``decision`` are ignored); every point ``STICK``.  Nothing is
+        refused: a non-finite jump gives a non-finite traction, which the
+        health checks refuse."""
         g = np.asarray(g, dtype=float).reshape(-1, 2)
         D = self.constant_tangent()
         return LawResponse(g @ D.T, np.broadcast_to(D, (len(g), 2, 2)).copy(), None,
@@ -200,6 +216,13 @@ class UnilateralLaw(_Law):
     is_linear: ClassVar[bool] = False
 
     def evaluate(self, g: np.ndarray, state=None, decision: Decision | None = None) -> LawResponse:
+        """The response to the jumps ``g`` ((m, 2) or flat, ``[g_N, g_T]`` in
+        the scene's length unit): where closed, ``t = diag(k_N, k_T) g``
+        (``STICK``), where open ``t = 0`` (``OPEN``), with the tangent of
+        each.  A point is closed where ``g_N <= 0``; with a Newton
+        ``decision`` (:class:`Decision`), by its band, so that round-off
+        cannot flip a point.  No state (``state`` is ignored); nothing is
+        refused."""
         g, closed, tN = self._springs(g, decision)
         tT = np.where(closed, self.kT * g[:, 1], 0.0)
         tangent = np.zeros((len(g), 2, 2))
@@ -246,6 +269,16 @@ class CoulombLaw(_Law):
                          float(np.max(-self.mu * tN, initial=0.0))])
 
     def evaluate(self, g: np.ndarray, state=None, decision: Decision | None = None) -> LawResponse:
+        """The return map (class doc) at the jumps ``g`` ((m, 2) or flat,
+        ``[g_N, g_T]`` in the scene's length unit) from the slip ``state``
+        ((m,), same unit; None: no slip yet): tractions (stress unit),
+        the tangent (not symmetric where a point slips), the new slip
+        state, each point's ``OPEN``/``STICK``/``SLIP``, and the slipping
+        points' secant stiffness.  Open/closed and stick/slip are decided
+        at ``g_N <= 0`` and ``|t*| <= μp (1 + STICK_ROUNDOFF)``, or, with a
+        Newton ``decision``, by its bands (round-off cannot flip a
+        point).  Nothing is refused: ``state`` must have one entry per
+        point (numpy broadcasting rules otherwise)."""
         g, closed, tN = self._springs(g, decision)
         limit = self.mu * np.maximum(-tN, 0.0)
         s = np.zeros(len(g)) if state is None else np.asarray(state, dtype=float)

@@ -129,6 +129,14 @@ class _Newton:
         data = np.max(np.abs(b[self.constraint]), initial=0.0)
         return R, self.ranks.max(forces), self.ranks.max(data)
 
+    def _least(self, u) -> float:
+        """The least round-off scale of a residual at ``u``: RESIDUAL_FLOOR
+        of the scene's full loads, or of the forces ``u``'s size makes
+        (``A u`` sums terms of that size, however well they cancel: a body
+        displaced rigidly, stress-free at zero load, has ``A u`` of ε|u|)."""
+        size = self.ranks.max(float(np.max(np.abs(u[self.balance]), initial=0.0)))
+        return max(self._least_force, tol.RESIDUAL_FLOOR * size)
+
     def _lift(self, supports) -> float:
         """The largest force on a free unknown of the prescribed
         displacements at the ``supports``' factors, every other unknown at
@@ -147,7 +155,7 @@ class _Newton:
         (:meth:`_continued`), else started from a stiffer one
         (:meth:`_from_stiffer`)."""
         try:
-            converged = self._iterate(k)
+            converged = self._approached(k)
         except (SolverOptionError, health.FreeBody):
             raise
         except SolverError:
@@ -161,6 +169,42 @@ class _Newton:
                 except SolverError:
                     raise softer from None
         self._commit(k, *converged)
+
+    def _approached(self, k: float):
+        """The step to ``k`` (:meth:`_iterate`).  One that takes every load
+        to zero from a loaded state (prescribed displacements may stay),
+        under a law with history, where a body is held by Γ alone, is solved
+        as the limit of the loads along the step: first to LOAD_APPROACH of
+        the step short of zero, then to zero from that answer and its
+        status map.  At zero load every slip limit ``μp`` is zero, so every
+        position of that body along its free motion (a block sliding on a
+        straight Γ) solves the step, and Newton's singular solves chose one
+        by round-off (scene A on Coulomb springs unloaded: the block 3.3e-9
+        to 1.8e-4 m along by kernel and method, fe refused under Haswell).
+        Short of zero the step is regular: its map holds the body by the one
+        point whose stick window balances it, and is the same for every
+        load below some share of the step (measured: 1e-2 to 1e-6), where
+        the answer is linear in the load; from it one solve of that map at
+        zero lands on the limit, the point's trial zero (at rest), every
+        other point slipping on its history with zero traction."""
+        start = self.path.steps[-1].step if self.path.steps else 0.0
+        if not (self.law.has_history and self._unloaded(k) and not self._unloaded(start) and self._held_by_gamma()):
+            return self._iterate(k)
+        near = k + tol.LOAD_APPROACH * (start - k)
+        _, u, response, approach, _ = self._iterate(near)
+        factors, u, response, iterations, history = self._iterate(k, start=(u, response.status))
+        return factors, u, response, approach + iterations, history
+
+    def _unloaded(self, k: float) -> bool:
+        """Whether no load acts at increment ``k`` (the equilibrium rows of
+        ``b`` zero on every rank; prescribed displacements may not be)."""
+        loads, supports = self.scene.factors(k)
+        return self.ranks.all(not self.system.external(loads, supports)[self.balance].any())
+
+    def _held_by_gamma(self) -> bool:
+        """Whether a body is held by Γ alone: the map where every point is
+        closed and slips leaves a rigid motion free (:func:`health.slips_free`)."""
+        return health.slips_free(self.scene, *self._gamma, np.full(len(self._gamma[1]), SLIP, np.int8))
 
     def _from_stiffer(self, k: float):
         """The step to ``k`` started from its solution at CONTINUATION_STEP
@@ -242,12 +286,14 @@ class _Newton:
             # back to zero — has internal forces of round-off, which alone made
             # round-off look like a residual of order 1; and a load held at
             # zero has nothing but round-off, so RESIDUAL_FLOOR of the
-            # scene's full loads is the least scale.
-            scale = max(forces, data, lift, start, self._least_force)
+            # scene's full loads, or of the forces u's size makes, is the
+            # least scale (_least).
+            least = self._least(u)
+            scale = max(forces, data, lift, start, least)
             history.append(norm / scale if scale > 0 else norm)
             if not np.isfinite(norm):
                 raise SolverError(f"the residual is not finite; residual history {_fmt(history)}")
-            judged_forces = max(forces, self._least_force)  # what _converged judges the balance against
+            judged_forces = max(forces, least)  # what _converged judges the balance against
             judged.append(self._balance(R) / judged_forces if judged_forces > 0 else self._balance(R))
             if it > 1 and self._converged(R, judged_forces, tangent, response, du, u - u0):
                 health.check_residual(history[-1], "the settled Newton step")
@@ -269,9 +315,11 @@ class _Newton:
                 secant = not self.ranks.all(np.array_equal(tangent, response.tangent))
                 alpha, evaluated = self._line_search(u, du, b, R, response.status, secant, tangent)
                 if secant and evaluated is None and self._slipping(response):  # the secant step is no descent
-                    du, rep, tangent = self._solve(self._pinned(response), -R, scale, status=response.status)
+                    # the pinned map's tangent with the slipping map's residual: its
+                    # step solves no map's linear problem, so it settles nothing
+                    du, rep, _ = self._solve(self._pinned(response), -R, scale, status=response.status)
                     _merge(self.report, rep)
-                    alpha, evaluated = self._line_search(u, du, b, R, response.status, False, tangent)
+                    alpha, evaluated, tangent = *self._line_search(u, du, b, R, response.status), None
                 du = alpha * du
                 tangent = tangent if alpha == 1.0 else None  # a partial step settles nothing
             else:
@@ -469,7 +517,9 @@ class _Newton:
         The point is the one nearest its stick window (the largest
         ``secant/k = μp/|t*|``); of points within DECISION_BAND of that the
         first by their coordinates (x, then y), so that neither round-off
-        nor numbering chooses between mirror points of a symmetric scene."""
+        nor numbering chooses between mirror points of a symmetric scene.
+        Its step is solved from the slipping map's residual, so it solves
+        no map's linear problem and settles nothing (:meth:`_settles`)."""
         k = self.itf.gamma if self.itf.exact else np.full(self.itf.size, self.law.kT)
         ratio = self.ranks.gather(np.where(response.status == SLIP, response.secant / k, -1.0))
         points = self._gamma[0]

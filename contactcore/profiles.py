@@ -55,7 +55,15 @@ def _interior_fractions(n: int) -> np.ndarray:
 
 
 def sample_points(scene: Scene, profile: Profile, n: int = tol.PROFILE_POINTS) -> tuple[np.ndarray, np.ndarray, str]:
-    """``(s, points, parameter)`` of a profile; parameter is "arclength" or "angle"."""
+    """``(s, points, parameter)``: the ``n`` samples of ``profile`` on
+    ``scene``, ``s`` (n,) and ``points`` (n, 2) in the scene's length unit
+    (``s`` in radians when ``parameter`` is ``"angle"``), ``parameter``
+    ``"arclength"`` or ``"angle"``.  A line profile runs from its start to
+    its end; an interface profile along Γ: a circle from θ = 0 to just
+    short of 2π, a line along its chord through the domain.  The two ends
+    of a segment are moved inwards by PROFILE_END_SHIFT of its length, so
+    no sample lies on a corner.  Nothing is refused: the scene is
+    validated already."""
     if isinstance(profile, LineProfile):
         a, b = np.asarray(profile.start, float), np.asarray(profile.end, float)
         f = _interior_fractions(n)
@@ -137,6 +145,16 @@ def sample_profile(scene: Scene, fields: Fields, profile: Profile, path=None) ->
 
 
 def sample_profiles(scene: Scene, fields: Fields, path=None) -> list[ProfileData]:
-    """Exactly the profiles the scene asks for, nothing more (``path`` as
-    for :func:`sample_profile`)."""
+    """Every profile of ``scene`` (in its order, and only those), sampled on
+    ``fields`` (a Result's ``fields``, or any :class:`~contactcore.result.Fields`)
+    at PROFILE_POINTS samples each: a list of :class:`ProfileData`,
+    columns ``s, x, y`` then the profile's quantities, in the scene's
+    units (SI unless its ``[units]`` say otherwise).
+
+    ``path`` is the Result's ``interface``: required where Γ's tractions
+    depend on it (a law with history, such as ``coulomb``, and any exactly
+    enforced law), else a ValueError says to pass it.  Pass the scene the
+    run solved (``result.scene``): another law gives other tractions.  A
+    quantity that is not finite is a SolverError naming the profile; a
+    point the fields refuse is their FieldsError."""
     return [sample_profile(scene, fields, p, path) for p in scene.profiles]

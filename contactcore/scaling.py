@@ -314,10 +314,18 @@ class ScaledFields:
         return ScaledFields(self.inner, self.scales)
 
     def displacement(self, points, bodies) -> np.ndarray:
+        """``u`` (m, 2) of body ``bodies[i]`` (0 = −, 1 = +) at ``points[i]``
+        ((m, 2)), both in the user's coordinates and length unit.  Refused
+        by :func:`~contactcore.result.check_points` with a FieldsError
+        naming the first bad point: outside the domain or the body named,
+        not finite, a body other than 0 or 1, arrays of the wrong shape."""
         points, bodies = check_points(points, bodies, self.scene, "fields.displacement", self.reach)
         return self.scales.displacement * self.inner.displacement(self.scales.to_dimensionless(points), bodies)
 
     def stress(self, points, bodies) -> np.ndarray:
+        """``(σxx, σyy, σxy)`` (m, 3) in the user's stress unit, of body
+        ``bodies[i]`` at ``points[i]``; points refused as for
+        :meth:`displacement`."""
         points, bodies = check_points(points, bodies, self.scene, "fields.stress", self.reach)
         return self.scales.stress * self.inner.stress(self.scales.to_dimensionless(points), bodies)
 

@@ -376,6 +376,10 @@ def body_force(scene: "Scene", load: BodyForce | Torque, x, y):
 # --------------------------------------------------------------------------
 
 def finite(value, path: str) -> float:
+    """``value`` as a float when it is a finite int or float; a bool, a
+    string, None, NaN or ±inf is refused with a :class:`SceneError` at the
+    scene field ``path`` (e.g. ``materials.minus.E``).  No unit is
+    checked or converted: the value stays in the scene's own units."""
     if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
         raise SceneError(path, f"must be a finite number (got {value!r})")
     return float(value)

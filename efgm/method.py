@@ -86,11 +86,18 @@ class EFGMFields:
         self.D = scene.voigt_matrices()
 
     def displacement(self, points, bodies) -> np.ndarray:
+        """``u`` (m, 2) of body ``bodies[i]`` (0 = −, 1 = +) at ``points[i]``
+        ((m, 2)) on the method's dimensionless scene.  Only the arrays are
+        checked here (shape, finite, bodies 0 or 1: FieldsError); where a
+        point lies is checked by the Result's :class:`~contactcore.scaling.ScaledFields`
+        before it arrives."""
         points, bodies = check_points(points, bodies)  # the arrays; the geometry is the Result's (ScaledFields)
         sv = self.approx.mls.evaluate(points, bodies)
         return (self.approx.displacement_operator(sv, bodies) @ self.U).reshape(-1, 2)
 
     def stress(self, points, bodies) -> np.ndarray:
+        """``(σxx, σyy, σxy)`` (m, 3) of body ``bodies[i]`` at ``points[i]``,
+        dimensionless; the arrays checked as for :meth:`displacement`."""
         points, bodies = check_points(points, bodies)
         sv = self.approx.mls.evaluate(points, bodies)
         eps = (self.approx.strain_operator(sv, bodies) @ self.U).reshape(-1, 3)

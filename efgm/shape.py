@@ -102,6 +102,10 @@ WEIGHTS = {"cubic": cubic_spline, "quartic": quartic_spline}
 
 
 def basis_size(degree: int) -> int:
+    """The number of monomials of the MLS basis of ``degree``: 3 for the
+    linear basis (1, ξ, η), 6 for the quadratic; another degree is a
+    KeyError (the options refuse it first,
+    :func:`contactcore.discretisation.check_degree`)."""
     return {1: 3, 2: 6}[degree]
 
 

@@ -127,6 +127,16 @@ def _tie():
     return scene.with_changes(increments=at, supports=(bottom, tied))
 
 
+def _unloaded():
+    """tests/scenes/unloaded.toml: scene A's blocks on Coulomb springs
+    (μ = 0.3), loaded, unloaded to zero and held: at zero load every slip
+    limit is zero and the upper block, held by Γ alone, is where the
+    unloading leaves it (docs/newton.md, "A load back to zero")."""
+    from contactcore import load_scene
+
+    return load_scene(str(HERE / "scenes" / "unloaded.toml"))
+
+
 def _disc(pulled: bool):
     import free_disc
 
@@ -173,6 +183,7 @@ CASES = {
     "tie-exact": (_tie, tol.ROUNDOFF_TIE_H, {"displacement_scale": True}),
     "released-exact": (lambda: _released("unilateral"), tol.ROUNDOFF_RELEASED_H, {"degree": 2, "displacement_scale": True}),
     "released-coulomb-exact": (lambda: _released("coulomb"), tol.ROUNDOFF_RELEASED_H, {"degree": 2, "displacement_scale": True}),
+    "unloaded": (_unloaded, None),
 }
 
 

@@ -10,9 +10,9 @@ import pytest
 
 from pathlib import Path
 
-from contactcore import ContactError, ProfileData, load_scene, make_law
+from contactcore import ContactError, ProfileData, SceneError, load_scene, make_law
 from contactcore.scaling import Scales
-from verification.agreement import (EXACT_GAP_FLOOR, agreements, assert_methods_agree, compare, default_exclusion,
+from verification.agreement import (EXACT_GAP_FLOOR, EXCLUDE_FRACTION, agreements, assert_methods_agree, compare, default_exclusion,
                                     displacement_scale, measured_against, percent, relative_rms, table, variant)
 from xdolfinx.quiet import quiet_compiler
 
@@ -340,3 +340,51 @@ def test_a_run_that_ends_stress_free_reports_round_off_as_no_error():
     errors = {m: {pid: e.error_columns(pid) for pid in e.profiles} for m, e in estimates.items()}
     assert not any(beyond for *_, beyond in within_estimates(scene, got["fe"], errors["fe"], got["xfem"],
                                                              errors["xfem"], exclude))
+
+
+SLENDER = Path(__file__).parent / "scenes" / "slender_bar.toml"
+
+
+@pytest.mark.parametrize("name", ["A", "B", "C", "C-coulomb", "examples/wedge.toml"])
+def test_the_default_exclusion_of_the_shipped_scenes_is_a_tenth_of_their_diameter(name):
+    """The cap that keeps a slender profile's middle leaves the shipped
+    scenes' exclusion as it was (their figures in docs/ were measured with it)."""
+    path = Path(__file__).parents[1] / name if name.endswith(".toml") else name
+    scene = load_scene(path)
+    assert default_exclusion(scene) == EXCLUDE_FRACTION * scene.length_scale
+
+
+def test_the_default_exclusion_keeps_the_middle_of_a_slender_profile():
+    """Γ 0.5 m long across a 3 m bar: a tenth of the diameter (0.304 m) from
+    each end left no sample of Γ's profile, and the agreement read nan.  The
+    default now keeps its middle half, and the table's figures are numbers."""
+    scene = load_scene(SLENDER)
+    exclude = default_exclusion(scene)
+    assert exclude < EXCLUDE_FRACTION * scene.length_scale
+    runs = {label: {p.id: _solved_like(scene, p, factor) for p in scene.profiles}
+            for label, factor in (("ref", 1.0), ("mine", 1.01))}
+    rows = table(scene, runs, "ref").rows
+    kept = {r.profile: r.kept for r in rows}
+    assert kept["G"] >= len(runs["ref"]["G"].columns["s"]) // 2 - 1
+    assert all(np.isfinite(r.worst) and np.isfinite(r.rms) for r in rows)
+
+
+def _solved_like(scene, profile, factor):
+    """A profile of ``scene`` sampled where the runs sample it, every
+    quantity ``factor`` times a smooth non-zero field."""
+    from contactcore.profiles import sample_points
+    s, xy, parameter = sample_points(scene, profile)
+    columns = {"s": s, "x": xy[:, 0], "y": xy[:, 1]}
+    columns.update({q: factor * (1.0 + xy[:, 0] + xy[:, 1] ** 2) for q in profile.quantities})
+    return ProfileData(profile.id, parameter, columns)
+
+
+def test_an_exclusion_that_leaves_a_profile_empty_is_refused_before_any_solve():
+    """An exclusion that keeps no sample of a profile has nothing to
+    measure: compare and assert_methods_agree name the profile and the
+    default, before solving (no nan in a table)."""
+    scene = load_scene(SLENDER)
+    for check in (compare, assert_methods_agree):
+        with pytest.raises(SceneError, match=r"^exclude: 0\.3 leaves out every sample of profile G: give less "
+                                             r"\(the default is 0\.125\)"):
+            check(scene, ["xfem"], h=COARSE_H, exclude=0.3)

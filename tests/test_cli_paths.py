@@ -113,3 +113,61 @@ def test_coincident_nodes_are_named_by_their_lines(tmp_path):
     with pytest.raises(ContactError, match=r"^efgm: node 15 at \(35, 20\) mm \(.* line 16\) coincides with an "
                                            r"earlier node \(line 7\)$"):
         read_nodes(path, load_scene(MM_WEDGE))
+
+
+#: The longest names the file system takes, 246-255 bytes: legal, but a
+#: temporary sibling ``.NAME.RANDOM`` (10 bytes more) was not, and the run
+#: was refused ("File name too long"); from 238 bytes, a rerun's
+#: ``.NAME.earlier.RANDOM`` (18 more) failed after the whole run.
+LEGAL_LONG = [240, 246, 250, 255]
+
+
+def test_an_out_folder_with_the_longest_legal_name_is_written_and_rewritten(tmp_path):
+    """The run itself, twice: the second moves the first aside
+    (``.NAME.earlier.RANDOM`` was 18 bytes longer than NAME) before it puts
+    its own in place; nothing else is left beside it."""
+    from verification.__main__ import main
+
+    out = tmp_path / ("n" * 255)
+    for _ in range(2):
+        assert main(["run", str(MM_WEDGE), "--method", "efgm", "--no-plots", "--out", str(out)]) == 0
+        assert (out / files.MANIFEST).is_file() and (out / "efgm").is_dir()
+        assert [p.name for p in tmp_path.iterdir()] == [out.name]
+
+
+class _Stop(Exception):
+    pass
+
+
+@pytest.mark.parametrize("length", LEGAL_LONG)
+def test_a_result_folder_with_a_long_legal_name_stays_atomic(tmp_path, length):
+    """Built beside its name, put in place whole, and an interrupted build
+    leaves the earlier run under the name and nothing beside it."""
+    out = tmp_path / ("r" * length)
+    with files.result_folder(out) as tmp:
+        assert tmp.parent == tmp_path and tmp != out and not out.exists()
+        files.write_text(tmp / "a.txt", "first")
+        files.write_json(tmp / files.MANIFEST, {})
+    assert (out / "a.txt").read_text() == "first"
+    with pytest.raises(_Stop):
+        with files.result_folder(out) as tmp:
+            files.write_text(tmp / "a.txt", "second")
+            raise _Stop
+    assert (out / "a.txt").read_text() == "first"
+    with files.result_folder(out, watched=True) as tmp:  # the earlier run moved aside, then replaced
+        files.write_text(tmp / "a.txt", "third")
+        files.write_json(tmp / files.MANIFEST, {})
+    assert (out / "a.txt").read_text() == "third"
+    assert [p.name for p in tmp_path.iterdir()] == [out.name]
+
+
+@pytest.mark.parametrize("length", LEGAL_LONG)
+def test_a_file_with_a_long_legal_name_is_written_atomically(tmp_path, length):
+    path = tmp_path / ("f" * (length - 4) + ".csv")
+    files.write_text(path, "whole")
+    assert path.read_text() == "whole"
+    with pytest.raises(_Stop):
+        with files.atomic_path(path) as tmp:
+            tmp.write_text("half")
+            raise _Stop
+    assert path.read_text() == "whole" and [p.name for p in tmp_path.iterdir()] == [path.name]

@@ -1,5 +1,8 @@
-"""The documentation: docs/api.md's examples run as doctests, and the user
-documentation names no issue numbers and no path outside the repository."""
+"""The documentation: docs/api.md's examples run as doctests, docs/usage.md's
+snippets run as written (its agreement test in the slow stage), the README
+gives its two commands, every relative link names a file, docs/architecture.md
+maps every page, and the user documentation names no issue numbers and no
+path outside the repository."""
 import doctest
 import re
 from pathlib import Path
@@ -21,3 +24,65 @@ def test_user_docs_name_no_issue_and_no_outside_path(page):
     text = page.read_text()
     assert not re.search(r"\bissue \d+", text, re.IGNORECASE)
     assert "SCENES.md" not in text and "/work/" not in text
+
+
+README = ROOT / "README.md"
+USAGE = ROOT / "docs" / "usage.md"
+#: The README's two commands, each on a fresh machine: the main job on the
+#: default scene, and the default suite (tests/conftest.py).
+TWO_COMMANDS = ("bash .ci/setup && .venv/bin/python -m verification run A --method all --out results/A",
+                "bash .ci/setup && .venv/bin/python -m pytest -q -n 2 --dist loadfile")
+
+
+def code_blocks(page: Path, language: str) -> list[str]:
+    """The fenced code blocks of ``page`` in ``language``, in order."""
+    return re.findall(rf"^```{language}\n(.*?)^```$", page.read_text(), re.MULTILINE | re.DOTALL)
+
+
+def test_the_readme_gives_the_two_commands_under_its_heading():
+    text = README.read_text()
+    section = text.split("## The two commands", 1)[1].split("\n## ", 1)[0]
+    for command in TWO_COMMANDS:
+        assert f"\n    {command}\n" in section
+
+
+@pytest.mark.parametrize("page", USER_DOCS, ids=lambda p: str(p.relative_to(ROOT)))
+def test_every_relative_link_names_a_file_of_the_repository(page):
+    targets = re.findall(r"\]\(([^)\s]+)\)", page.read_text())
+    local = [t.split("#", 1)[0] for t in targets if not re.match(r"[a-z]+:", t) and not t.startswith("#")]
+    missing = [t for t in local if t and not (page.parent / t).exists()]
+    assert not missing, f"{page.relative_to(ROOT)} links to files that do not exist: {missing}"
+
+
+def test_the_architecture_page_maps_every_page_of_the_docs():
+    text = (ROOT / "docs" / "architecture.md").read_text()
+    section = text.split("## The documentation, one line a page", 1)[1].split("\n## ", 1)[0]
+    named = set(re.findall(r"^\| \[[^]]+\]\(([^)]+)\) \|", section, re.MULTILINE))
+    pages = {str(p.relative_to(ROOT / "docs")) for p in (ROOT / "docs").rglob("*.md")}
+    assert pages <= named and "../README.md" in named
+
+
+def test_the_usage_pages_scene_file_is_the_example_wedge():
+    from contactcore import load_scene
+    (block,) = code_blocks(USAGE, "toml")
+    example = (ROOT / "examples" / "wedge.toml").read_text()
+    assert block == "".join(line for line in example.splitlines(keepends=True) if not line.startswith("#"))
+    assert load_scene(ROOT / "examples" / "wedge.toml").name == "wedge"
+
+
+def test_the_usage_pages_python_runs_as_written(capsys):
+    (block,) = [b for b in code_blocks(USAGE, "python") if "discretisation.solve" in b]
+    exec(compile(block, str(USAGE), "exec"), {})
+    printed = capsys.readouterr().out.splitlines()
+    assert "unknowns, relative residual" in printed[0]
+    assert {line.split()[0] for line in printed[1:]} == {"A1", "A2", "A3", "A4", "A5"}
+
+
+@pytest.mark.slow
+def test_the_usage_pages_agreement_test_passes_as_written(tmp_path, monkeypatch):
+    (block,) = [b for b in code_blocks(USAGE, "python") if "assert_methods_agree" in b]
+    (tmp_path / "wedge.toml").write_text((ROOT / "examples" / "wedge.toml").read_text())
+    monkeypatch.chdir(tmp_path)
+    namespace = {}
+    exec(compile(block, str(USAGE), "exec"), namespace)
+    namespace["test_my_wedge_agrees"]()

@@ -10,6 +10,7 @@ import tolerances as tol
 from contactcore import load_scene
 from contactcore import estimate as est
 from contactcore import tolerances as core_tol
+from contactcore.scaling import Sizes
 from verification import files
 from verification.effectivity import CASES, VARIANTS, effectivity
 from verification.run import NOT_ESTIMATED, NOT_ESTIMATED_MARK, run
@@ -680,3 +681,63 @@ def test_a_line_across_gamma_is_split_there_and_at_left_out_samples():
     assert set(labels[~below]) == {labels[-1]} and labels[-1] not in labels[below]
     on_gamma = np.column_stack([np.linspace(0.2, 0.8, 7), np.full(7, 0.5)])
     assert set(est.sample_groups(scene, on_gamma, np.ones(7, bool))) == {0}
+
+
+def _runs_along_gamma(values_of_h, h: float, quantity: str = "sxx") -> list:
+    """Scene A's Γ (y = 0.5) from x = 0.15 to 0.85, finely sampled, with
+    ``values_of_h(s, h)`` at the coarse run's h and at h/2: one profile
+    per run, coarse first."""
+    from contactcore import ProfileData
+    x = np.linspace(0.15, 0.85, 281)
+    return [[ProfileData("L", "arclength", {"s": x - 0.15, "x": x, "y": np.full_like(x, 0.5),
+                                            quantity: values_of_h(x - 0.15, hk)})] for hk in (h, h / 2)]
+
+
+@pytest.mark.parametrize("rate, warns", [
+    (1.0, False),   # the cells' error at the lower order theory allows a degree-1 stress
+    (2.0, False),   # at the upper one
+    (3.0, True),    # a whole order above: the coarse run's error is not asymptotic
+])
+def test_a_coarse_run_rough_at_its_cells_beyond_theory_is_not_asymptotic(rate, warns):
+    """est.cell_scale_orders: a smooth value plus a wave of each run's
+    cell (amplitude ∝ h^rate, above the smooth value's own part at that
+    scale): the runs' parts at the coarse cells' scale
+    shrink at about ``rate``; beyond the orders a degree-1 stress is
+    allowed, [1, 2], by more than CELL_SCALE_EXCESS, the quantity is
+    named as not asymptotic, in the estimate's warnings too."""
+    scene, h = load_scene("A"), 0.05
+    stress = Sizes.of(scene).stress  # A's load
+    levels = _runs_along_gamma(lambda s, hk: stress * (1.0 + s + 0.1 * s ** 2
+                                                       + 100.0 * hk ** rate * np.sin(2 * np.pi * s / hk + 0.3)), h)
+    theory = est.order_range("sxx", 1, "fe")
+    estimates = {"L": {"sxx": est.QuantityEstimate(np.zeros(281), est.balanced_order(*theory), False, theory)}}
+    found = est.cell_scale_orders(scene, levels, estimates, 0.1, h)
+    assert bool(found) == warns, found
+    lines = est.cell_scale_warnings(found, (h, h / 2))
+    assert len(lines) == int(warns) and all(line.startswith("L:sxx (") for line in lines)
+    if warns:
+        order, high = found["L:sxx"]
+        assert high == theory[1] and order > high + core_tol.CELL_SCALE_EXCESS
+
+
+def test_a_smooth_value_round_off_at_the_cells_or_an_observed_order_shows_no_cell_scale_order():
+    """est.cell_scale_orders: runs that differ by a smooth amount only
+    (each run's part at the cells' scale the exact value's own, ratio 1),
+    runs whose values are lines (that part at round-off, whatever its
+    ratio), runs whose values are all round-off of the scene's stresses
+    (rough as they may be), and an estimate whose order three runs
+    observed (left to the order's own warning): none is named."""
+    scene, h = load_scene("A"), 0.05
+    theory = est.order_range("sxx", 1, "fe")
+    two = {"L": {"sxx": est.QuantityEstimate(np.zeros(281), 1.45, False, theory)}}
+    smooth = _runs_along_gamma(lambda s, hk: np.sin(3 * s) + hk * s, h)
+    assert est.cell_scale_orders(scene, smooth, two, 0.1, h) == {}
+    lines = _runs_along_gamma(lambda s, hk: 1.0 + 2.0 * s + 1e-14 * np.sin(2 * np.pi * s / hk) / hk ** 4, h)
+    assert est.cell_scale_orders(scene, lines, two, 0.1, h) == {}
+    stress = Sizes.of(scene).stress  # A's load
+    rough = _runs_along_gamma(lambda s, hk: stress * (1.0 + 4.0 * hk ** 4 * np.sin(2 * np.pi * s / hk)), h)
+    assert est.cell_scale_orders(scene, rough, two, 0.1, h)
+    noise = _runs_along_gamma(lambda s, hk: 1e-14 * stress * (1.0 + 4.0 * hk ** 4 * np.sin(2 * np.pi * s / hk)), h)
+    assert est.cell_scale_orders(scene, noise, two, 0.1, h) == {}  # round-off of A's stresses, however rough
+    three = {"L": {"sxx": est.QuantityEstimate(np.zeros(281), 4.0, True, theory)}}
+    assert est.cell_scale_orders(scene, rough, three, 0.1, h) == {}

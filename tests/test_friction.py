@@ -3,6 +3,7 @@ Newton with cut-back, and the three methods against a closed form and
 against each other."""
 import dataclasses
 import re
+from pathlib import Path
 
 import numpy as np
 import scipy.sparse as sp
@@ -349,3 +350,49 @@ def test_a_point_is_at_rest_only_where_gamma_is(scale, expected):
     assert -margin > core_tol.DECISION_BAND * scale or expected  # beyond the band where Γ is loaded
     decided = Decision(np.array([STICK]), scale, scale).switch(np.array([margin]), scale, np.array([True]), stiffness)
     assert bool(decided[0]) is expected
+
+
+def _unloaded_to(load: float):
+    """tests/scenes/unloaded.toml (scene A's blocks on Coulomb springs,
+    μ = 0.3, h = 0.1) loaded over one increment and unloaded to ``load``
+    times the full load over the next."""
+    scene = load_scene(Path(__file__).resolve().parent / "scenes" / "unloaded.toml")
+    top = scene.loads[0]
+    return scene.with_changes(increments=2, loads=(dataclasses.replace(top, path=((1, 1.0), (2, load))),))
+
+
+@pytest.mark.parametrize("method", ["fe", "efgm"])
+def test_a_block_unloaded_to_zero_stays_where_the_unloading_leaves_it(method):
+    """Unloaded to exactly zero, every slip limit μp is zero and every
+    position of the upper block (held by Γ alone) along Γ solves the step:
+    Newton's singular solves placed it by round-off (fe: 1.8e-4 m along under
+    Haswell, 6.3e-5 m under Nehalem, then refused the held zero load; xfem
+    and efgm 3e-9 to 4e-7 m).  The answer is the limit of the unloading:
+    the position of a step to a load just short of zero, where one point's
+    stick window balances the block (docs/newton.md, "A load back to
+    zero"): at zero that point is at rest and sticks, every other slips on
+    its history with zero traction.  CI runs this under a second kernel."""
+    at_zero = methods.solver(method)(_unloaded_to(0.0), None, estimate_condition=False)
+    near = methods.solver(method)(_unloaded_to(tol.UNLOADED_LIMIT_LOAD), None, estimate_condition=False)
+    step, limit = at_zero.interface.steps[-1], near.interface.steps[-1]
+    assert np.count_nonzero(step.status == STICK) == 1 and not np.any(step.status == OPEN)
+    assert np.array_equal(step.status, limit.status)
+    loaded = np.max(np.abs(at_zero.interface.steps[0].traction))
+    assert np.max(np.abs(step.traction)) <= tol.UNLOADED_PROFILES * loaded
+    position = np.max(np.abs(limit.jump[:, 1]))
+    assert np.max(np.abs(step.jump[:, 1] - limit.jump[:, 1])) <= tol.UNLOADED_LIMIT * position
+
+
+def test_a_block_unloaded_to_zero_on_a_shifted_base_stays_where_the_unloading_leaves_it():
+    """The same with the lower block's base displaced rigidly by 1e-4 m
+    throughout: the loads go to zero, a prescribed displacement stays, and
+    the upper block is still free along Γ at zero load.  Its jumps are
+    those of the unshifted base (a rigid shift of the lower block moves no
+    jump); Newton's singular solves gave 8.0e-5 or 3.3e-5 m (fe, Haswell or
+    Nehalem) where the limit of the unloading is 1.43e-4 m."""
+    from contactcore import Support
+    plain = _unloaded_to(0.0)
+    shifted = plain.with_changes(supports=(Support("bottom", "xy", (1e-4, 0.0)),))
+    a, b = (methods.solver("fe")(s, None, estimate_condition=False).interface.steps[-1] for s in (plain, shifted))
+    assert np.array_equal(a.status, b.status)
+    assert np.max(np.abs(a.jump - b.jump)) <= tol.UNLOADED_PROFILES * np.max(np.abs(a.jump))

@@ -265,9 +265,24 @@ def test_study_refuses_an_enforcement_it_cannot_give(tmp_path, capsys, scene, va
 def test_an_exact_law_has_no_penalty_to_fall_back_on():
     """``bonded`` exists only exactly: its penalty counterpart is named."""
     scene = load_scene("A").with_changes(law=make_law({"type": "bonded"}))
-    with pytest.raises(SceneError, match=r'no springs to fall back on \(an exact law keeps none, even those its '
-                                         r'file gives; type = "linear", with kN and kT, is its penalty counterpart\)'):
+    with pytest.raises(SceneError, match=r'its file gives no springs kN, kT to enforce it by \(type = "linear", '
+                                         r'with kN and kT, is its penalty counterpart\)'):
         study.scene_at(scene, {"enforcement": "penalty"})
+
+
+def test_a_study_enforces_an_exact_law_by_the_springs_its_file_gives():
+    """docs/contact-enforcement.md: an exact law's kN, kT "may stay in the
+    file … checked but not used"; the study's penalty point uses them (it
+    refused: "an exact law keeps none, even those its file gives"), and
+    without them it names what is missing."""
+    given = {"type": "coulomb", "enforcement": "exact", "mu": 0.3, "kN": 2e9, "kT": 3e8}
+    scene = load_scene("A").with_changes(law=make_law(given))
+    law = study.scene_at(scene, {"enforcement": "penalty"}).law
+    assert (law.enforcement, law.name, law.kN, law.kT, law.mu) == ("penalty", "coulomb", 2e9, 3e8, 0.3)
+    bare = load_scene("A").with_changes(law=make_law({k: v for k, v in given.items() if k not in ("kN", "kT")}))
+    with pytest.raises(SceneError, match=r"its file gives no springs kN, kT to enforce it by"):
+        study.scene_at(bare, {"enforcement": "penalty"})
+    assert make_law(given) == bare.law  # the springs play no part in the exact law itself
 
 
 def test_study_sets_the_enforcement_before_the_stabilisation(tmp_path):
@@ -482,3 +497,35 @@ def test_a_process_whose_janitor_was_killed_says_the_line_itself(tmp_path):
                           capture_output=True, timeout=120)
     assert done.returncode == 0 and done.stdout.split() == ["told", "False", "watching", "False"], done
     assert [p.name for p in tmp_path.iterdir()] == ["out"]
+
+
+#: A ``sitecustomize`` that sends this process SIGINT the moment Python
+#: opens ``verification/__main__.py`` (or its cached bytecode) to load it
+#: (an audit hook on ``open``): a Ctrl-C that lands in that load.
+_CTRL_C_AT_MAIN = '''
+import os, signal, sys
+def _hook(event, args):
+    path = str(args[0]) if event == "open" and args and isinstance(args[0], (str, os.PathLike)) else ""
+    if os.path.basename(path).startswith("__main__.") and f"{os.sep}verification{os.sep}" in path:
+        os.kill(os.getpid(), signal.SIGINT)
+sys.addaudithook(_hook)
+'''
+
+
+def test_ctrl_c_while_python_compiles_the_command_is_one_line(tmp_path):
+    """``python -m verification``: Python imports the package, then reads
+    and compiles ``__main__`` (10-20 ms without a bytecode cache),
+    and only then ran the line that installs the start-up handler; a
+    Ctrl-C meanwhile was Python's traceback.  The package installs it now,
+    before ``__main__`` is read; imported any other way it installs none."""
+    (tmp_path / "sitecustomize.py").write_text(_CTRL_C_AT_MAIN)
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join([str(tmp_path), os.environ.get("PYTHONPATH", "")])}
+    done = subprocess.run([sys.executable, "-m", "verification", "run", "A", "--method", "efgm",
+                           "--out", str(tmp_path / "out")], cwd=ROOT, env=env, capture_output=True, text=True,
+                          timeout=120, preexec_fn=with_ctrl_c)
+    assert (done.returncode, done.stderr) == (130, "interrupted\n"), done.stderr[-2000:]
+    assert not (tmp_path / "out").exists()
+    imported = subprocess.run([sys.executable, "-c", "import signal, verification; "
+                               "print(signal.getsignal(signal.SIGINT) is signal.default_int_handler)"],
+                              cwd=ROOT, capture_output=True, text=True, timeout=120, preexec_fn=with_ctrl_c)
+    assert imported.stdout.strip() == "True", imported.stderr

@@ -124,6 +124,21 @@ def test_a_structured_cell_on_a_disc_is_refused(cell, tmp_path, capsys):
     assert not out.exists()
 
 
+
+@pytest.mark.parametrize("command", [["run"], ["study", "--param", "kN", "--values", "1e9"]])
+@pytest.mark.parametrize("method", ["fe", "efgm"])
+def test_a_cell_for_a_method_that_takes_none_is_refused_before_the_disc(command, method, tmp_path, capsys):
+    """``--method fe --cell quad`` on a disc got the disc refusal; fixing
+    the disc (``--cell gmsh``) then met the refusal of --cell for fe: the
+    first refusal names the first problem, a --cell fe does not take."""
+    out = tmp_path / "out"
+    argv = [command[0], str(SCENES / "cylinder.toml"), *command[1:], "--method", method, "--cell", "quad",
+            "--out", str(out)]
+    assert verification_main.main(argv) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err == [f"error: --cell: means nothing for {method} (only xfem take it)"], err
+    assert not out.exists()
+
 def test_gmsh_cells_on_a_disc_and_any_cell_on_a_rectangle_pass_the_check():
     for scene, cell in ((SCENES / "cylinder.toml", "gmsh"), (PULL_ROLLER, "triangle"), (PULL_ROLLER, "quad")):
         verification_main._check_cell(argparse.Namespace(scene=str(scene), cell=cell))

@@ -140,3 +140,35 @@ def test_efgm_threads_take_their_share_of_the_cores(monkeypatch):
     assert shape.threads() == 1
     monkeypatch.setenv("OMP_NUM_THREADS", "3")
     assert shape.threads() == 3
+
+
+def _after(seconds: float) -> float:
+    import time
+    time.sleep(seconds)
+    return seconds
+
+
+def test_ctrl_c_of_one_pool_leaves_another_pools_workers():
+    """Two pools in one process (the Python API in a user's script): the
+    workers whose spawn a Ctrl-C cut short were kept in one module-wide
+    list, and one pool's Ctrl-C (`_stop`) ended the other's workers too,
+    its cases failing with a broken pool.  A worker the pool never knew
+    (started by its context, as a spawn cut short leaves it) is still ended."""
+    import time
+
+    from verification import pool
+
+    mine, other = pool.executor(2), pool.executor(2)
+    stuck = mine.submit(time.sleep, 600)
+    lost = mine._mp_context.Process(target=time.sleep, args=(600,))  # started, unknown to its pool
+    lost.start()
+    running = other.submit(_after, 2.0)
+    while not (stuck.running() and running.running()):
+        time.sleep(0.05)
+    theirs = [p for p in other._processes.values()]
+    pool._stop(mine)
+    lost.join(timeout=60)
+    assert not lost.is_alive()
+    assert running.result(timeout=120) == 2.0  # before: BrokenProcessPool
+    assert all(p.is_alive() for p in theirs)
+    other.shutdown(wait=True)

@@ -168,6 +168,20 @@ def test_a_law_built_in_code_meets_the_files_rules():
         scene.with_changes(law=CoulombLaw(1e9, 1e8, -0.3))
 
 
+@pytest.mark.parametrize("enforcement", ["penalty", "exact"])
+def test_a_friction_coefficient_beyond_any_use_is_refused(enforcement):
+    """μ = 1e308 was accepted and overflowed the slip tangent μ k_N (three
+    numpy warnings with their source lines); above MU_LARGEST a μ only
+    makes every closed point stick, which MU_LARGEST already does."""
+    from contactcore import make_law
+    from contactcore.tolerances import MU_LARGEST
+    law = {"type": "coulomb", "enforcement": enforcement, "kN": 1e9, "kT": 1e9}
+    assert make_law({**law, "mu": MU_LARGEST}).mu == MU_LARGEST
+    with pytest.raises(SceneError, match=r"^interface\.law\.mu: 1e\+308 is above 1e\+06: a μ of that size already "
+                                         r"makes every closed point stick"):
+        make_law({**law, "mu": 1e308}, "interface.law")
+
+
 def test_torque_needs_the_disc_of_a_circle(scene_dict):
     data = scene_dict("A")
     data["loads"].append({"type": "torque", "body": "minus", "torque": 1.0})

@@ -35,21 +35,14 @@ import signal
 import sys
 
 
-def _interrupted_while_starting(signum, frame) -> None:
-    """Ctrl-C (or SIGTERM) before :func:`main` takes over: the imports
-    below take a second or more on a loaded machine, and nothing is under
-    way yet, so one line and the status of the signal, at once (a
-    KeyboardInterrupt there was a traceback and exit 1)."""
-    if all(os.environ.get(n, "0") == "0" for n in ("OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK")):  # one line
-        print("interrupted" if signum == signal.SIGINT else "terminated", file=sys.stderr, flush=True)
-    os._exit(128 + signum)
+from . import STARTING, hold_signals_while_starting, interrupted_while_starting
 
-
-#: The handlers the command line starts with, until :func:`main` takes over
-#: (a signal already ignored, as in a shell's background job, stays ignored).
-_STARTING = {sig: signal.signal(sig, _interrupted_while_starting)
-             for sig, default in ((signal.SIGINT, signal.default_int_handler), (signal.SIGTERM, signal.SIG_DFL))
-             if __name__ == "__main__" and signal.getsignal(sig) is default}
+#: Ctrl-C's start-up handler (:func:`verification.interrupted_while_starting`),
+#: installed by the package under ``python -m verification`` before this
+#: module was compiled; here where the package could not tell (run by
+#: ``python -m mpi4py.futures -m verification``).
+if __name__ == "__main__":
+    hold_signals_while_starting()
 
 import argparse
 import logging
@@ -476,8 +469,13 @@ def _check_counts(args) -> None:
 def _check_cell(args) -> None:
     """``--cell quad|triangle`` names structured cells, which fill a
     rectangle only: a disc is meshed by gmsh alone (docs/methods/xfem.md),
-    so asking for them there is refused rather than silently replaced."""
+    so asking for them there is refused rather than silently replaced.
+    A ``--cell`` that no chosen method takes is refused first (``--method
+    fe --cell quad`` on a disc: the cells mean nothing for fe, whatever the
+    domain), as the command itself would refuse it once the disc is fixed."""
     cell = getattr(args, "cell", None)
+    if cell is not None and getattr(args, "method", None) is not None:
+        methods.check_options(methods.expand(args.method), cell=cell)
     if cell is None or cell == "gmsh" or getattr(args, "scene", None) is None:
         return
     from contactcore.geometry import Disc
@@ -638,9 +636,9 @@ def main(argv=None) -> int:
 def _take_over_signals() -> None:
     """From here on Ctrl-C raises KeyboardInterrupt, which :func:`main`
     turns into its one line once the result folder under way is discarded
-    (the start-up's handlers, :data:`_STARTING`, put back as Python has them)."""
-    for sig, handler in _STARTING.items():
-        if signal.getsignal(sig) is _interrupted_while_starting:
+    (the start-up's handlers, :data:`verification.STARTING`, put back as Python has them)."""
+    for sig, handler in STARTING.items():
+        if signal.getsignal(sig) is interrupted_while_starting:
             signal.signal(sig, handler)
 
 

@@ -36,14 +36,15 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from contactcore import ContactError, ProfileData, Scene, load_scene, sample_profiles
+from contactcore import ContactError, ProfileData, Scene, SceneError, load_scene, sample_profiles
 from contactcore.scene import DISPLACEMENT_QUANTITIES, STRESS_QUANTITIES, Units
-from contactcore.estimate import ERROR_SUFFIX, far_from_singular, rms, singular_regions
+from contactcore.estimate import ERROR_SUFFIX, far_from_singular, rms, singular_points, singular_regions
+from contactcore.profiles import sample_points
 from contactcore.exact import is_exact
 from contactcore.scaling import Sizes, softer_displacement
 # The comparison's tolerances, with their reasons, are contactcore.tolerances'
 # and stay importable from here (tests and users import them from this module).
-from contactcore.tolerances import EXACT_GAP_FLOOR, EXCLUDE_FRACTION, NEGLIGIBLE_SHARE, WORST_TIE  # noqa: F401
+from contactcore.tolerances import EXACT_GAP_FLOOR, EXCLUDE_FRACTION, EXCLUDE_KEEP_SHARE, NEGLIGIBLE_SHARE, WORST_TIE  # noqa: F401
 
 
 #: The kinds whose largest value floors a quantity's scale (:func:`negligible`).
@@ -128,8 +129,29 @@ def measured_against(scene: Scene, quantity: str, values: np.ndarray) -> np.ndar
 
 
 def default_exclusion(scene: Scene) -> float:
-    """The distance from singular points inside which samples are left out."""
-    return EXCLUDE_FRACTION * scene.length_scale
+    """The distance from singular points inside which samples are left out:
+    ``EXCLUDE_FRACTION`` of the scene's diameter L, at most
+    ``EXCLUDE_KEEP_SHARE`` of the distance from the singular points of each
+    profile's farthest sample, so that every profile keeps samples (its
+    middle, where both its ends are singular points)."""
+    sing = singular_points(scene)
+    if len(sing) == 0:
+        return EXCLUDE_FRACTION * scene.length_scale
+    reach = min((float(np.max(np.min(np.linalg.norm(points[:, None, :] - sing[None], axis=-1), axis=1)))
+                 for points in (sample_points(scene, p)[1] for p in scene.profiles)), default=np.inf)
+    return min(EXCLUDE_FRACTION * scene.length_scale, EXCLUDE_KEEP_SHARE * reach)
+
+
+def check_exclusion(scene: Scene, exclude: float, name: str = "exclude") -> None:
+    """Refuse, before any solve, an exclusion (the argument ``name``) that is
+    not a finite distance >= 0, or that leaves every sample of a profile out
+    (its agreement would have nothing to measure)."""
+    if not (exclude >= 0 and np.isfinite(exclude)):
+        raise SceneError(name, f"must be a finite distance >= 0 (got {exclude:g})")
+    for profile in scene.profiles:
+        if not far_from_singular(scene, sample_points(scene, profile)[1], exclude).any():
+            raise SceneError(name, f"{exclude:g} leaves out every sample of profile {profile.id}: "
+                             f"give less (the default is {default_exclusion(scene):.3g})")
 
 
 def kept_samples(scene: Scene, profile: ProfileData, exclude: float) -> np.ndarray:
@@ -463,6 +485,7 @@ def table(scene: Scene, runs: dict[str, dict], reference: str, exclude: float | 
     count, for a quantity that is zero in the reference (a patch test's
     σxy), where its own round-off would be its scale."""
     exclude = default_exclusion(scene) if exclude is None else exclude
+    check_exclusion(scene, exclude)
     ref, given = runs[reference], user_floors(floors)
     rows = [row for label, got in runs.items() if label != reference
             for row in profile_agreements(scene, label, got, ref, exclude, floors=given)]
@@ -508,6 +531,8 @@ def compare(scene, methods, h: float | None = None, *, reference="fe:2", exclude
     from . import methods as known
     user_floors(floors)  # a bad floor ends here, before any solve
     scene = load_scene(scene)
+    if exclude is not None:
+        check_exclusion(scene, exclude)
     variants = [variant(m) for m in methods]
     ref = variant(reference)
     names = sorted({n for n, _ in [ref, *variants]})

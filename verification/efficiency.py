@@ -33,18 +33,16 @@ from __future__ import annotations
 
 import functools
 import logging
-import math
 from pathlib import Path
 
 from contactcore import estimate as estimates
-from contactcore.profiles import sample_points
 from contactcore import SceneError, load_scene, sample_profiles, scene_text
 from contactcore import tolerances as tol
 from contactcore.budget import MEMORY_SHARE, check_budget, estimate, machine_memory
 from contactcore.scene import Units
 
 from . import files, pool
-from .agreement import agreements, default_exclusion, first_largest, worst_estimate
+from .agreement import agreements, check_exclusion, first_largest, worst_estimate
 from .plots import loglog_by_variant
 from .timing import REPEAT_BELOW, REPEATS, fastest
 
@@ -182,7 +180,7 @@ def efficiency(scene_name: str, variants, ladders: dict, ref_h: float | None, ex
     if ref_h is not None and ref_h > finest:
         raise SceneError("--ref-h", f"{ref_h:g} is coarser than the ladder's finest h, {finest:g}: the "
                          "reference stands for the exact answer, so it must be at least as fine as every rung")
-    _check_exclusion(scene, exclude)
+    check_exclusion(scene, exclude, "--exclude")
     if not allow_large:
         check_budgets(scene, rungs, ref_h, estimated or ref_h is None)
     fresh = spawn_each(scene, rungs, ref_h, estimated)
@@ -219,19 +217,6 @@ def efficiency(scene_name: str, variants, ladders: dict, ref_h: float | None, ex
     files.write_text(out / files.SCENE_FILE, scene_text(scene_name))  # the units of efficiency.csv's columns
     files.write_json(out / "run.json", {**files.provenance(list(argv)), "workers": measured_by})
     return text
-
-
-def _check_exclusion(scene, exclude: float) -> None:
-    """Refuse, before any solve, an exclusion that is not a finite distance
-    >= 0, or that leaves every sample of a profile out (its error would
-    read 0)."""
-    if not (exclude >= 0 and math.isfinite(exclude)):
-        raise SceneError("--exclude", f"must be a finite distance >= 0 (got {exclude:g})")
-    for profile in scene.profiles:
-        _, points, _ = sample_points(scene, profile)
-        if not estimates.far_from_singular(scene, points, exclude).any():
-            raise SceneError("--exclude", f"{exclude:g} leaves out every sample of profile {profile.id}: "
-                             f"give less (the default is {default_exclusion(scene):.3g})")
 
 
 def _error_sentence(ref_h: float | None, ref_dofs: int | None, exclude: float, length: str = "m") -> str:

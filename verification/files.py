@@ -48,10 +48,14 @@ def _follow_umask(path: str, mode: int) -> None:
 
 @contextmanager
 def atomic_path(path: Path, suffix: str = ""):
-    """A temporary path beside ``path``, renamed onto it if the block succeeds."""
+    """A temporary path beside ``path``, renamed onto it if the block
+    succeeds: ``.NAME.RANDOM.SUFFIX``, or ``.tmp.RANDOM.SUFFIX`` where that
+    would be too long a name (a legal ``NAME`` of 246 bytes or more)."""
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=suffix or path.suffix, dir=path.parent)
+    suffix = suffix or path.suffix
+    fits = len(os.fsencode(f".{path.name}.{suffix}")) + janitor.RANDOM_PART <= janitor.name_max(path.parent)
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}." if fits else ".tmp.", suffix=suffix, dir=path.parent)
     os.close(fd)
     _follow_umask(tmp, 0o666)
     try:
@@ -69,7 +73,8 @@ _BUILDING: list[janitor.Build] = []
 @contextmanager
 def atomic_folder(path: Path, watched: bool = False):
     """A temporary folder beside ``path`` that replaces it if the block
-    succeeds.  An earlier folder at ``path`` is moved aside (renamed, not
+    succeeds (named ``.NAME.RANDOM``, or ``.build.RANDOM`` where ``NAME``
+    is too long to carry: :func:`verification.janitor.build_prefix`).  An earlier folder at ``path`` is moved aside (renamed, not
     deleted) until the new one is in place, and put back if the block is
     interrupted in between: at every moment ``path`` holds one whole run.
     ``watched``: a janitor puts it right if this process is killed before
@@ -77,7 +82,7 @@ def atomic_folder(path: Path, watched: bool = False):
     path = Path(path)
     try:
         path.parent.mkdir(parents=True, exist_ok=True)
-        tmp = Path(tempfile.mkdtemp(prefix=f".{path.name}.", dir=path.parent))
+        tmp = Path(tempfile.mkdtemp(prefix=janitor.build_prefix(path), dir=path.parent))
     except OSError as exc:  # a place the system will not let us write (/proc, /sys, a read-only mount)
         raise OutFolderError(f"{path} cannot be created ({exc.strerror or exc})") from None
     _follow_umask(str(tmp), 0o777)

@@ -35,15 +35,41 @@ from pathlib import Path
 INTERRUPTED_LINE = "interrupted"
 
 
+#: The temporary names' random part (``tempfile``'s: 8 characters).
+RANDOM_PART = 8
+#: The prefix of a temporary beside a name too long to carry in it.
+SHORT_PREFIX = ".build."
+
+
+def name_max(folder: Path) -> int:
+    """The longest file name (bytes) that ``folder``'s file system takes."""
+    try:
+        return os.pathconf(folder, "PC_NAME_MAX")
+    except (OSError, ValueError):
+        return 255
+
+
+def build_prefix(path: Path) -> str:
+    """The prefix of ``path``'s temporary sibling: ``.NAME.`` where its
+    longest sibling, ``.NAME.earlier.`` and the random part, fits the file
+    system's names; else :data:`SHORT_PREFIX` (a legal ``NAME`` of 238
+    bytes or more made every sibling too long to create, and was refused)."""
+    path = Path(path)
+    fits = len(os.fsencode(f".{path.name}.earlier.")) + RANDOM_PART <= name_max(path.parent)
+    return f".{path.name}." if fits else SHORT_PREFIX
+
+
 class Build:
     """An atomic folder under way: ``tmp`` built to replace ``path``; an
     earlier folder at ``path`` moves to ``earlier`` (a name made from
-    ``tmp``'s, known before anything is moved) until the new one is in place."""
+    ``tmp``'s, known before anything is moved) until the new one is in
+    place: ``.NAME.earlier.RANDOM`` beside ``.NAME.RANDOM``, or
+    ``.build.earlier.RANDOM`` beside ``.build.RANDOM`` (:func:`build_prefix`)."""
 
     def __init__(self, path: Path, tmp: Path):
         self.path, self.tmp = Path(path), Path(tmp)
-        self.earlier = self.tmp.with_name(f".{self.path.name}.earlier."
-                                          f"{self.tmp.name.removeprefix(f'.{self.path.name}.')}")
+        prefix = f".{self.path.name}." if self.tmp.name.startswith(f".{self.path.name}.") else SHORT_PREFIX
+        self.earlier = self.tmp.with_name(f"{prefix}earlier.{self.tmp.name.removeprefix(prefix)}")
 
     def settle(self) -> None:
         """Leave ``path`` holding one whole run, whichever step was reached:

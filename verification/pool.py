@@ -89,15 +89,7 @@ def executor(workers: int | None, fresh: bool = False) -> Executor:
         return Serial()
     return ProcessPoolExecutor(max_workers=workers or 1, mp_context=_SpawnDeaf(),
                                max_tasks_per_child=1 if fresh else None, initializer=worker_logging,
-                               initargs=(level,))
-
-
-#: The workers spawned and not yet seen to end (their ``Popen``), kept before
-#: the Ctrl-C held back during the spawn is delivered: raised as the mask is
-#: put back, it lost the new worker before its pool knew it, and
-#: :func:`_stop` could not end it (it went on starting, and failed with a
-#: traceback on its pool's queues, closed meanwhile).
-_SPAWNED: list = []
+                               initargs=(level,))  # a context of its own: its workers are this pool's alone
 
 
 class _DeafProcess(multiprocessing.context.SpawnProcess):
@@ -107,23 +99,45 @@ class _DeafProcess(multiprocessing.context.SpawnProcess):
     raising KeyboardInterrupt there, with a traceback, before
     :func:`worker_logging` ignores it (which discards it).  The mask is
     set on the spawning thread only for the spawn; a Ctrl-C meant for the
-    command meanwhile is delivered to it when the mask is put back."""
+    command meanwhile is delivered to it when the mask is put back.
+
+    The new process's ``Popen`` is kept on the process object before the
+    mask is put back: the Ctrl-C raised there lost the worker before its
+    pool knew it (``start`` never returned), and :func:`_stop` could not
+    end it (it went on starting, and failed with a traceback on its pool's
+    queues, closed meanwhile).  Its context (:class:`_SpawnDeaf`) keeps
+    the process object, so :func:`_stop` finds it there."""
 
     @staticmethod
     def _Popen(process_obj):
         before = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
         try:
-            popen = multiprocessing.context.SpawnProcess._Popen(process_obj)
-            _SPAWNED[:] = [p for p in _SPAWNED if p.poll() is None] + [popen]
+            popen = multiprocessing.context.SpawnProcess._Popen(process_obj)  # pickles process_obj: _popen None
+            process_obj._popen = popen  # what start() sets, set before a Ctrl-C can be raised
             return popen
         finally:
             signal.pthread_sigmask(signal.SIG_SETMASK, before)
 
 
 class _SpawnDeaf(multiprocessing.context.SpawnContext):
-    """The spawn context, its processes :class:`_DeafProcess`."""
+    """The spawn context, its processes :class:`_DeafProcess`.  One per
+    pool (:func:`executor`): it keeps the processes it made, so that one
+    pool's Ctrl-C (:func:`_stop`) ends that pool's workers and no other's
+    (two pools in one process, the Python API in a user's script).  A
+    module-wide list, as before, ended every pool's."""
 
-    Process = _DeafProcess
+    def __init__(self):
+        super().__init__()
+        self.processes: list[_DeafProcess] = []
+
+    def Process(self, *args, **kwargs) -> _DeafProcess:  # what ProcessPoolExecutor calls to make a worker
+        process = _DeafProcess(*args, **kwargs)
+        self.processes[:] = [p for p in self.processes if p._popen is None or p._popen.poll() is None] + [process]
+        return process
+
+    def running(self) -> list:
+        """The ``Popen`` of this context's processes started and not yet seen to end."""
+        return [p._popen for p in self.processes if p._popen is not None and p._popen.poll() is None]
 
 
 #: Every process's log line: level, logger, message.
@@ -245,9 +259,9 @@ def _stop(pool: Executor) -> None:
     if isinstance(pool, ProcessPoolExecutor):
         for process in processes:
             process.terminate()
-        for popen in _SPAWNED:  # and any whose spawn the Ctrl-C cut short
-            if popen.poll() is None:
-                popen.terminate()
+        context = getattr(pool, "_mp_context", None)  # its own (executor): this pool's workers alone
+        for popen in context.running() if isinstance(context, _SpawnDeaf) else []:  # and any whose spawn
+            popen.terminate()  # the Ctrl-C cut short
         pool.shutdown(wait=False)
     else:
         pool.shutdown(wait=False, cancel_futures=True)

@@ -44,7 +44,7 @@ import numpy as np
 from contactcore import CircleInterface, LineInterface, SceneError, load_scene, scene_text
 from contactcore.budget import check_budget
 from contactcore.discretisation import Reuse
-from contactcore.enforcement import ENFORCEMENTS
+from contactcore.enforcement import ENFORCEMENTS, make_law
 from contactcore.exact import BONDED, EXACT_LAWS, checked_stabilisation, is_exact
 from contactcore.scene import Units, check_resolution
 
@@ -99,9 +99,13 @@ def _enforcement(scene, value):
     if value == law.enforcement:
         return {"law": law}
     if value == "penalty":
-        raise SceneError("--param enforcement", f"penalty: the scene's '{law.name}' law is enforced exactly and "
-                         f"has no springs to fall back on (an exact law keeps none, even those its file gives; "
-                         f"{penalty_counterpart(law)})")
+        springs = dict(getattr(law, "given_springs", ()))
+        if set(springs) != {"kN", "kT"}:
+            raise SceneError("--param enforcement", f"penalty: the scene's '{law.name}' law is enforced exactly and "
+                             f"its file gives no springs kN, kT to enforce it by ({penalty_counterpart(law)})")
+        params = {k: getattr(law, k) for k in law.parameters if k != "stabilisation"}
+        return {"law": make_law({"type": law.name, "enforcement": "penalty", **params, **springs},
+                                "--param enforcement: interface.law")}
     return {"law": exact_law(law, "--param enforcement: interface.law")}
 
 

@@ -109,7 +109,15 @@ class XFEMFields:
         return out
 
     def displacement(self, points, bodies) -> np.ndarray:
+        """``u`` (m, 2) of body ``bodies[i]`` (0 = −, 1 = +) at ``points[i]``
+        ((m, 2)) on the method's dimensionless scene.  Only the arrays are
+        checked here (shape, finite, bodies 0 or 1: FieldsError); where a
+        point lies is checked by the Result's :class:`~contactcore.scaling.ScaledFields`
+        before it arrives.  Under mpirun a collective call."""
         return self._eval(points, bodies, False)
 
     def stress(self, points, bodies) -> np.ndarray:
+        """``(σxx, σyy, σxy)`` (m, 3) of body ``bodies[i]`` at ``points[i]``,
+        dimensionless (degree 1: the recovered stress, class doc); the
+        arrays checked as for :meth:`displacement`."""
         return self._eval(points, bodies, True)
