@@ -637,10 +637,10 @@ EFFECTIVITY_OUTSIDE = {
     ("twisted_rod", "efgm", 2, "radial", "uy"): (2.102, EFGM_P2_FASTER),
     ("quadratic_layers", "efgm", 2, "vertical", "ux"): (0.284, EFGM_QUADRATURE_FLOOR),
     ("quadratic_layers", "efgm", 2, "vertical", "sxy"): (0.409, EFGM_QUADRATURE_FLOOR),
-    ("layered_slip", "efgm", 2, "gamma", "gN"): (0.398, EFGM_QUADRATURE_SLOW),
-    ("layered_slip", "efgm", 2, "gamma", "gT"): (0.405, EFGM_QUADRATURE_SLOW),
-    ("layered_slip", "efgm", 2, "gamma", "tN"): (0.398, EFGM_QUADRATURE_SLOW),
-    ("layered_slip", "efgm", 2, "gamma", "tT"): (0.396, EFGM_QUADRATURE_SLOW),
+    ("layered_slip", "efgm", 2, "L1", "gN"): (0.398, EFGM_QUADRATURE_SLOW),
+    ("layered_slip", "efgm", 2, "L1", "gT"): (0.405, EFGM_QUADRATURE_SLOW),
+    ("layered_slip", "efgm", 2, "L1", "tN"): (0.398, EFGM_QUADRATURE_SLOW),
+    ("layered_slip", "efgm", 2, "L1", "tT"): (0.396, EFGM_QUADRATURE_SLOW),
 }
 
 #: Degree-1 stresses on scene A converge faster than even the order the
