@@ -594,7 +594,7 @@ EFGM_QUADRATURE_FLOOR = "EFGM's quadrature error does not converge with h: Richa
 EFGM_P1_FASTER = "EFGM P1 converges faster than its theoretical order at h = 0.05 -> 0.025"
 #: EFGM P2 (12 × 12 Gauss points) on the twisted rod: uy's true error
 #: 3.81e-11, 2.57e-12, 2.80e-13 m at h = 0.1, 0.05, 0.025 (orders 3.89,
-#: 3.20 against 3; 2026-11-27, /tmp/efgmest/ql_nomiss.py 2 12 twisted_rod).
+#: 3.20 against 3; 2026-11-27, RMS on the radial profile against the closed form).
 EFGM_P2_FASTER = "EFGM P2 converges faster than its theoretical order at h = 0.1 -> 0.05"
 #: With its supports held by boundary multipliers (efgm.method, 2026-11-27)
 #: EFGM reproduces the layered slip's piecewise-linear field but for its
@@ -619,7 +619,7 @@ XFEM_P1_RECOVERED_ZZ = "xfem P1's stress is already recovered: ZZ's recovery mov
 #: contactcore.estimate.pollution_order, which brought the quadratic layers'
 #: and the layered slip's EFGM P2 entries inside), EFGM's re-measured
 #: 2026-11-27 with its supports held by boundary multipliers (efgm.method;
-#: contactcore.estimate's COLLOCATED rule gone: /tmp/efgmest/table.py);
+#: contactcore.estimate's COLLOCATED rule gone; verification.effectivity);
 #: the test holds each within EFFECTIVITY_OUTSIDE_DRIFT of its value.
 EFFECTIVITY_OUTSIDE = {
     ("patch", "efgm", 2, "line", "ux"): (0.453, EFGM_QUADRATURE_FLOOR),
