@@ -95,13 +95,12 @@ class CutIntegration:
         corners = cells.corners[c]
         on = on_gamma(self.scene, corners, cells.snap)
         off = sign_of(corner_phi)[~on]
-        if on.any() and len(off) and off.min() == off.max():  # Γ snapped to a corner, the others on one side
+        gamma, pieces = interface_rule_in(itf, corners, self.gauss), cut_polygon(itf, corners, self.gauss)
+        if on.any() and len(off) and off.min() == off.max() and self._within_snap(pieces, int(off[0])):
+            # Γ snapped to the corners on it: the cell is whole on the side of the others
             side = int(off[0])
             gamma = self._snapped_rule(corners) if side < 0 else _NO_RULE
             pieces = [(side, *polygon_rule(corners, self.gauss))]
-        else:
-            gamma = interface_rule_in(itf, corners, self.gauss)
-            pieces = cut_polygon(itf, corners, self.gauss)
         if general:
             self._check_rules_found(c, [*gamma, *(a for _, p, w in pieces for a in (p, w))])
         if len(gamma[1]):
@@ -119,6 +118,14 @@ class CutIntegration:
         dofs = cells.cell_dofs[c]
         for side, pts, w, N, dN in parts:
             self.stiffness[index_of_sign(side), dofs] += w @ np.sum(dN ** 2, axis=-1)
+
+    def _within_snap(self, pieces, side: int) -> bool:
+        """Whether every part of a cell off ``side`` lies within the snap
+        distance of Γ (its quadrature points do): a sliver beside a corner
+        on Γ, which snapping removes; a circle's cap deeper than that, cut
+        off an edge away from the corner, stays a part."""
+        snap, itf = self.cells.snap, self.scene.interface
+        return all(np.all(np.abs(itf.signed_distance(p)) <= snap) for s, p, w in pieces if s != side and len(w))
 
     def _snapped_rule(self, corners: np.ndarray):
         """Γ's rule along the edges of a cell whose two ends are both on Γ
