@@ -123,6 +123,7 @@ def test_a_signal_while_the_earlier_run_is_removed_waits_for_the_removal(tmp_pat
     assert main(["run", "A", "--method", "efgm", "--h", "0.2", "--out", str(out)]) == 143
     assert sorted(p.relative_to(out) for p in out.rglob("*")) == names
     assert not [p.name for p in tmp_path.iterdir() if p.name.startswith(".")]
+    assert files._BUILDING == [] and not janitor.watching()  # the bookkeeping done before the signal acted
 
 
 def test_a_failed_run_leaves_nothing_under_the_final_name(tmp_path, scene_dict, capsys):

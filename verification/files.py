@@ -144,11 +144,11 @@ def atomic_folder(path: Path, watched: bool = False):
                 os.replace(path, build.earlier)
             os.replace(tmp, path)
     finally:
-        with signals_held():
+        with signals_held():  # a signal held here acts once every step below is done
             build.settle()
-        _BUILDING.remove(build)
-        if watched and janitor.watching():
-            janitor.unwatch()
+            _BUILDING.remove(build)
+            if watched and janitor.watching():
+                janitor.unwatch()
 
 
 def discard_unfinished() -> None:
