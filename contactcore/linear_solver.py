@@ -152,19 +152,24 @@ def _refused(exc: PETSc.Error, opts: dict) -> PETScOptionError:
     return PETScOptionError(f"petsc option {', '.join(named)}: PETSc cannot use it (error {exc.ierr}): {reason}")
 
 
-@functools.lru_cache(maxsize=1)
-def _options_used():
-    """``PetscOptionsUsed`` of the PETSc library petsc4py runs on (petsc4py
-    3.18 does not wrap it), or None where it cannot be found."""
+@functools.lru_cache(maxsize=None)
+def _petsc_function(name: str, *argtypes):
+    """The C function ``name`` of the PETSc library petsc4py runs on, for
+    what petsc4py 3.18 does not wrap, or None where it cannot be found."""
     try:
         with open("/proc/self/maps") as maps:
             paths = [line.split()[-1] for line in maps if "/libpetsc" in line]
-        used = ctypes.CDLL(paths[0]).PetscOptionsUsed
+        function = getattr(ctypes.CDLL(paths[0]), name)
     except (OSError, IndexError, AttributeError):
         return None
-    used.argtypes = [ctypes.c_void_p, ctypes.c_char_p, ctypes.POINTER(ctypes.c_int)]
-    used.restype = ctypes.c_int
-    return used
+    function.argtypes = list(argtypes)
+    function.restype = ctypes.c_int
+    return function
+
+
+def _options_used():
+    """``PetscOptionsUsed``, or None where it cannot be found."""
+    return _petsc_function("PetscOptionsUsed", ctypes.c_void_p, ctypes.c_char_p, ctypes.POINTER(ctypes.c_int))
 
 
 def unused_options(prefix: str, opts: dict) -> list[str] | None:
@@ -219,6 +224,11 @@ def _mumps_status(ksp) -> tuple[int, int]:
         factor.destroy()
 
 
+#: The cause a singular tangent has here, named by every refusal of one.
+SINGULAR = ("a rigid-body mode is not removed by the supports and pins, or a penalty is so stiff that the bulk "
+            "stiffness is lost in round-off")
+
+
 class NullPivots(SolverError):
     """A factorisation that completed and found the matrix singular: its
     MUMPS analysis stands for the next matrix of the same pattern."""
@@ -234,9 +244,49 @@ def _null_pivots(ksp, what: str) -> None:
     finally:
         factor.destroy()
     if nulls > 0:
-        raise NullPivots(f"{what} is singular to working precision: MUMPS found {nulls} null pivot(s) — "
-                          "a rigid-body mode is not removed by the supports and pins, or a penalty is "
-                          "so stiff that the bulk stiffness is lost in round-off")
+        raise NullPivots(f"{what} is singular to working precision: MUMPS found {nulls} null pivot(s) — {SINGULAR}")
+
+
+#: PETSc's ``PCFailedReason`` (petscpctypes.h) after a factorisation that
+#: failed inside the solve (KSP reason DIVERGED_PCSETUP_FAILED, -11): a
+#: solver without MUMPS's null-pivot detection (ICNTL(24)), SuperLU or
+#: PETSc's own LU, stops at an exactly zero pivot.  Whether a numerically
+#: singular matrix gives an exactly zero pivot there, or a pivot of
+#: round-off size whose huge answer the residual test refuses, follows the
+#: BLAS kernel: the matrix ``Q diag(0, 1, …, 5) Qᵀ`` of tests/test_health.py
+#: with SuperLU, 2026-11-27, AMD EPYC, OpenBLAS 0.3.21: a zero pivot under
+#: OPENBLAS_CORETYPE = Nehalem and SandyBridge, a relative residual 2.3 (default
+#: Cooperlake) or 1.0 (Haswell, Zen) with a backward error ~1e-17.  Either
+#: refusal names the singular matrix (:data:`SINGULAR`).
+PC_FAILURES = {1: "a structurally zero pivot", 2: "a zero pivot", 3: "memory ran short",
+               4: "the factorisation package failed", 6: "a sub-preconditioner failed"}
+
+
+def _pc_failure(ksp) -> int | None:
+    """``PCGetFailedReason`` of ``ksp``'s PC (reduced over its ranks by
+    the solve), or None where it cannot be asked."""
+    failed = _petsc_function("PCGetFailedReason", ctypes.c_void_p, ctypes.POINTER(ctypes.c_int))
+    if failed is None:
+        return None
+    pc, reason = ksp.getPC(), ctypes.c_int(0)
+    try:
+        return None if failed(ctypes.c_void_p(pc.handle), ctypes.byref(reason)) else reason.value
+    finally:
+        pc.destroy()
+
+
+def _diverged(ksp, reason: int, what: str, residual: float) -> SolverError:
+    """The refusal of a solve PETSc reports as diverged (``reason`` < 0),
+    naming the singular matrix where the factorisation met a zero pivot."""
+    if reason == PETSc.KSP.ConvergedReason.DIVERGED_PCSETUP_FAILED:
+        failure = _pc_failure(ksp)
+        if failure in (1, 2):
+            return SolverError(f"{what} is singular to working precision: the factorisation met "
+                              f"{PC_FAILURES[failure]} (PETSc reason {reason}) — {SINGULAR}")
+        return SolverError(f"{what}: the factorisation failed (PETSc reason {reason}: "
+                           + PC_FAILURES.get(failure, "the preconditioner's set-up failed")
+                           + f") — the matrix may be singular: {SINGULAR}")
+    return SolverError(f"{what}: the solver diverged (PETSc reason {reason}, relative residual {residual:.3e})")
 
 
 def _condition(ksp, opts: dict) -> float | None:
@@ -401,8 +451,7 @@ class Factorisation:
         reason = self.ksp.getConvergedReason()
         _measure_residual(self.A, b, x, report, force_scale)
         if reason < 0:
-            raise SolverError(f"{self.what}: the solver diverged (PETSc reason {reason}, "
-                              f"relative residual {report.residual:.3e})")
+            raise _diverged(self.ksp, reason, self.what, report.residual)
         health.check_residual(report.residual, self.what, report.backward_error)
         return report
 

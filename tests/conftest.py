@@ -38,7 +38,6 @@ LONG_FOR_THE_DEFAULT = {
     "tests/test_xfem_nodes.py::test_gamma_through_nodes_agrees_with_fe[C-1e-06h-quad-P2]": 1.7,
     "tests/test_xfem_nodes.py::test_gamma_through_nodes_agrees_with_fe[C+1e-06h-quad-P1]": 1.6,
     "tests/test_factorisations.py::test_a_full_set_of_columns_keeps_those_the_tangent_needs": 2.5,
-    "tests/test_factorisations.py::test_a_map_ahead_is_factorised[2]": 1.6,
     "tests/test_pool.py::test_two_workers_write_the_serial_table": 2.4,
     "tests/test_against_exact.py::test_with_an_estimate_the_exact_run_is_estimated_as_the_penalty_run": 2.3,
     "tests/test_efgm_mpi.py::test_a_too_small_dilation_ends_in_one_line_under_mpirun": 1.9,

@@ -196,6 +196,25 @@ def test_a_quantity_zero_in_the_reference_is_measured_against_a_floor_a_user_giv
             table(scene, runs, "ref", floors=bad)
 
 
+def test_a_gap_floor_given_below_the_exact_laws_own_is_said_to_be_unused():
+    """An exactly enforced law's gaps are floored by its own gap floor, and
+    a smaller floor given for g_N is not used (:func:`floors` keeps the
+    larger): the table's header said it was measured against it (grader4,
+    2026-11-27).  A larger one is used and said so."""
+    from verification.agreement import gap_floor
+    scene = load_scene("A").with_changes(law=make_law({"type": "coulomb", "enforcement": "exact", "mu": 0.3}))
+    scene = scene.with_changes(profiles=tuple(p for p in scene.profiles if p.id == "A5"))
+    own = gap_floor(scene)
+    s = np.linspace(0.0, 1.0, 101)
+    prof = lambda v: ProfileData("A5", "arclength", {"s": s, "x": s, "y": np.full_like(s, 0.5), "gN": v})  # noqa: E731
+    runs = {"ref": {"A5": prof(np.zeros_like(s))}, "mine": {"A5": prof(np.full_like(s, own))}}
+    small = table(scene, runs, "ref", floors={"gN": own / 10}).markdown()
+    assert "gN's floor given" in small and "lies below the law's own and is not used" in small
+    assert "gN is measured against sqrt(gN²" not in small
+    large = table(scene, runs, "ref", floors={"gN": 10 * own}).markdown()
+    assert "gN is measured against sqrt(gN²" in large and "not used" not in large
+
+
 def test_round_off_is_within_any_estimate_and_never_the_worst():
     """A bonded patch's σxy is zero: two methods' σxy differ by round-off
     (1e-14 Pa against σxx = 1e5 Pa) with estimates at round-off too.  That

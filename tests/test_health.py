@@ -125,20 +125,52 @@ def test_efgm_solver_refuses_a_matrix_with_a_null_space():
     assert report.residual <= RESIDUAL_FAIL and np.allclose((A + sp.eye(A.shape[0])) @ x, b)
 
 
-def test_petsc_solver_refuses_a_matrix_with_a_null_space():
-    """PETSc with SuperLU (no null-pivot detection) answers; the residual refuses."""
+#: How a solver without null-pivot detection refuses a singular matrix:
+#: its LU stops at an exactly zero pivot, or answers and the residual
+#: refuses the huge answer (a tiny backward error).  Which of the two,
+#: round-off decides (contactcore.linear_solver.PC_FAILURES); both name a
+#: rigid-body mode left free.
+_SINGULAR_REFUSALS = (r"singular to working precision: the factorisation met a zero pivot \(PETSc reason -11\) — "
+                      r"a rigid-body mode is not removed|relative residual \S+ exceeds 1e-05 \(backward error "
+                      r"\S+e-1[6-9]\) — the answer does not satisfy the equations; a rigid-body mode may be free")
+
+
+def _petsc_refusal(A, b, solver):
+    """The SolverError of one PETSc solve of ``A x = b`` by ``solver``'s LU (None if it answers)."""
     from efgm.petsc_matrices import to_petsc
     from petsc_once import solve_once
-    A, b = _null_space_matrix()
     M = to_petsc(A)
     bv, xv = M.createVecs()
     bv.setArray(b)
     try:
-        with pytest.raises(SolverError, match=r"relative residual \S+ exceeds 1e-05 \(backward error"):
-            solve_once(M, bv, xv, petsc_options={"pc_factor_mat_solver_type": "superlu"})
+        solve_once(M, bv, xv, petsc_options={"pc_factor_mat_solver_type": solver})
+    except SolverError as exc:
+        return exc
     finally:
         for obj in (M, bv, xv):
             obj.destroy()
+    return None
+
+
+def test_petsc_solver_refuses_a_matrix_with_a_null_space():
+    """PETSc with SuperLU (no null-pivot detection) refuses it: by a zero
+    pivot under some OpenBLAS kernels (Nehalem, SandyBridge), by the
+    residual of its huge answer under others (Haswell, Zen, Cooperlake)."""
+    A, b = _null_space_matrix()
+    assert re.search(_SINGULAR_REFUSALS, str(_petsc_refusal(A, b, "superlu")))
+
+
+@pytest.mark.parametrize("solver", ["superlu", "petsc"])
+def test_a_zero_pivot_is_refused_as_a_singular_matrix(solver):
+    """A free spring ``[[1, −1], [−1, 1]]``: in any order, under any kernel,
+    LU's second pivot is exactly 1 − 1 = 0, PETSc's solve reports the
+    preconditioner's failure (reason −11), and the refusal names the
+    singular matrix and a free rigid-body mode, not a bare PETSc reason."""
+    A = sp.csr_matrix(np.array([[1.0, -1.0], [-1.0, 1.0]]))
+    message = str(_petsc_refusal(A, np.array([1.0, -1.0]), solver))
+    assert re.fullmatch(r"linear system is singular to working precision: the factorisation met a zero pivot "
+                        r"\(PETSc reason -11\) — a rigid-body mode is not removed by the supports and pins, .*",
+                        message), message
 
 
 class _WrongSolve(ContactSystem):

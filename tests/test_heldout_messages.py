@@ -213,11 +213,13 @@ def test_workers_start_with_ctrl_c_blocked_and_then_ignore_it():
 def test_ctrl_c_ends_the_workers_under_way():
     """`_stop` read the workers after the shutdown, which forgets them: none
     was ended, and the exit waited for the cases under way."""
+    before = set(multiprocessing.active_children())  # other tests' processes in this worker: not this pool's
     executor = pool.executor(2)
     future = executor.submit(time.sleep, 600)
     while not future.running():
         time.sleep(0.05)
-    children = multiprocessing.active_children()
+    children = [c for c in multiprocessing.active_children() if c not in before]
+    assert children
     pool._stop(executor)
     for child in children:
         child.join(timeout=60)

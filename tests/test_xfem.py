@@ -15,7 +15,7 @@ from contactcore import CircleInterface, DiscretisationError, LevelSetInterface,
 from contactcore import sample_profiles
 from contactcore.bodies import Body
 from contactcore.profiles import interface_response
-from contactcore.tolerances import ACCURATE_FLOOR
+from contactcore.tolerances import ACCURATE_FLOOR, XFEM_SNAP
 from contactcore.elasticity import voigt_matrix
 from verification.closed_forms import interface_patch, pressurised_rod, quadratic_layers
 from verification.norms import max_errors
@@ -437,9 +437,12 @@ def test_general_level_set_is_for_xfem_only():
 def test_a_node_within_round_off_of_gamma_lies_on_it():
     """dolfinx pushes each node through one of its cells, so a node on Γ may
     come out an ulp off it, on either side, depending on the cell (and the
-    rank): it still lies on Γ (H = +1).  A node off Γ by a distance the
-    tests place on purpose (1e-12 h, h = 0.05) keeps its side."""
+    rank): it still lies on Γ (H = +1), as does every node within the snap
+    distance (contactcore.tolerances.XFEM_SNAP of a cell), to which Γ is
+    snapped.  A node beyond it keeps its side."""
     scene = _tiny(LineInterface((0.0, 0.5), (0.0, 1.0)))
-    y = np.array([0.5, np.nextafter(0.5, 0.0), np.nextafter(0.5, 1.0), 0.5 - 5e-14, 0.5 + 5e-14])
+    snap = XFEM_SNAP * 0.05
+    y = np.array([0.5, np.nextafter(0.5, 0.0), np.nextafter(0.5, 1.0), 0.5 - 5e-14, 0.5 - 0.99 * snap,
+                  0.5 - 1.01 * snap, 0.5 + 1.01 * snap])
     coords = np.column_stack([np.full(len(y), 0.3), y])
-    assert list(xfem.node_sides(scene, coords)) == [1, 1, 1, -1, 1]
+    assert list(xfem.node_sides(scene, coords, snap)) == [1, 1, 1, 1, 1, -1, 1]

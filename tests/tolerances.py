@@ -1138,3 +1138,14 @@ GAMMA_FLOOR_ROUNDOFF = 1e-12
 #: method), up to Newton's accepted residual (NEWTON_RTOL = 1e-8 of the
 #: forces).  Measured below 1e-14 of |F| (fe, xfem, efgm, 2026-11-27).
 SLIDE_BALANCE = 1e-8
+
+#: tests/test_xfem_nodeline.py: σ and Γ's tractions of the bar's uniform
+#: closed form, over |P|, and u over its scale (beyond the snap's move
+#: times the strain jump), with Γ on a node line or up to 1e-6 h off it:
+#: measured ≤ 4e-13 (xfem P2 quads and triangles, Haswell and Nehalem;
+#: before the snap 6e-7 and 1.74 by kernel, or refused).
+NODELINE_ROUNDOFF = 1e-10
+
+#: The bar's sample points keep this far (m) from Γ: a point between Γ and
+#: the node line it was snapped to lies in the other body's cells.
+NODELINE_CLEARANCE = 0.01

@@ -443,13 +443,20 @@ class AgreementTable:
         return (f"samples within {self.exclude:.3g} {self.units.length} of these singular points were left out: "
                 f"{where}")
 
+    def _below_gap_floor(self, quantity: str, value: float) -> bool:
+        """Whether a floor given for ``quantity`` is one of the gaps' and no
+        larger than the exactly enforced law's own (:func:`floors` keeps the larger)."""
+        return bool(self.gap_floor) and quantity in ("gN", "gT") and value <= self.gap_floor
+
     def markdown(self) -> str:
         """The table in Markdown, worst sample and RMS in % of the reference's scale."""
         from .files import column_unit
         floor = (f" Γ's gaps (an exactly enforced law: zero where Γ is closed and sticking) are measured "
                  f"against sqrt(g² + ({self.gap_floor:.3g} {self.units.length})²), {EXACT_GAP_FLOOR:g} of the "
                  "displacement scale." if self.gap_floor else "")
-        floor += "".join(f" {q} is measured against sqrt({q}² + ({v:.3g} {column_unit(q, self.units)})²) "
+        floor += "".join(f" {q}'s floor given ({v:.3g} {column_unit(q, self.units)}) lies below the law's own "
+                         "and is not used." if self._below_gap_floor(q, v) else
+                         f" {q} is measured against sqrt({q}² + ({v:.3g} {column_unit(q, self.units)})²) "
                          "(a floor given)." for q, v in self.floors)
         floor += (" Each quantity is measured against its vector's or tensor's size at each sample (t_N and t_T "
                   "against |t|, a stress against the stresses its profile samples), at least "

@@ -12,6 +12,7 @@ import json
 import os
 import platform
 import re
+import signal
 import sys
 import tempfile
 from contextlib import contextmanager
@@ -66,6 +67,49 @@ def atomic_path(path: Path, suffix: str = ""):
             os.unlink(tmp)
 
 
+#: The signals that end a command (``verification.__main__.ENDING``): held
+#: while a result folder is swapped in and the one it replaces removed.
+HELD_SIGNALS = (signal.SIGINT, signal.SIGTERM)
+
+
+@contextmanager
+def signals_held():
+    """Hold Ctrl-C and SIGTERM until the block ends, then let the first
+    that came act as it would have: a swap of result folders and the
+    removal of the one replaced are not cut in half (a SIGTERM in
+    ``shutil.rmtree`` left half of an earlier run in
+    ``.NAME.earlier.RANDOM``, grader4, 2026-11-27).  The handlers are
+    swapped, not the signal mask: a process-directed signal goes to any
+    thread that does not block it (OpenBLAS's, MPI's).  Off the main
+    thread, where Python sets no handler, or where a handler was set
+    outside Python, the block runs as is."""
+    came: list = []
+    try:
+        before = {sig: signal.getsignal(sig) for sig in HELD_SIGNALS}
+        if None in before.values():  # a handler set outside Python, which could not be put back
+            before = None
+        for sig in before or ():
+            signal.signal(sig, lambda *arrived: came.append(arrived))
+    except ValueError:  # not the main thread
+        before = None
+    try:
+        yield
+    finally:
+        if before is not None:
+            for sig, handler in before.items():
+                signal.signal(sig, handler)
+            if came:
+                _act(before[came[0][0]], *came[0])
+
+
+def _act(handler, sig: int, frame) -> None:
+    """Do what ``handler`` (a Python handler, SIG_DFL or SIG_IGN) does with ``sig``."""
+    if callable(handler):
+        handler(sig, frame)
+    elif handler == signal.SIG_DFL:
+        os.kill(os.getpid(), sig)
+
+
 #: The atomic folders being built in this process, innermost last.
 _BUILDING: list[janitor.Build] = []
 
@@ -77,6 +121,9 @@ def atomic_folder(path: Path, watched: bool = False):
     is too long to carry: :func:`verification.janitor.build_prefix`).  An earlier folder at ``path`` is moved aside (renamed, not
     deleted) until the new one is in place, and put back if the block is
     interrupted in between: at every moment ``path`` holds one whole run.
+    Ctrl-C and SIGTERM wait while the folders are swapped and the earlier
+    one removed (:func:`signals_held`); one that arrives then ends the
+    command with the new run in place.
     ``watched``: a janitor puts it right if this process is killed before
     it can (:func:`verification.janitor.watch`)."""
     path = Path(path)
@@ -92,14 +139,16 @@ def atomic_folder(path: Path, watched: bool = False):
         if watched:
             janitor.watch(build)
         yield tmp
-        if path.exists():
-            os.replace(path, build.earlier)
-        os.replace(tmp, path)
+        with signals_held():
+            if path.exists():
+                os.replace(path, build.earlier)
+            os.replace(tmp, path)
     finally:
-        build.settle()
-        _BUILDING.remove(build)
-        if watched and janitor.watching():
-            janitor.unwatch()
+        with signals_held():  # a signal held here acts once every step below is done
+            build.settle()
+            _BUILDING.remove(build)
+            if watched and janitor.watching():
+                janitor.unwatch()
 
 
 def discard_unfinished() -> None:

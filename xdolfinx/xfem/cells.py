@@ -1,5 +1,5 @@
 """XFEM's background mesh and its cells: the mesh that ignores Γ, which side
-of Γ each node lies on, and the Lagrange basis of each cell at physical
+of Γ each node lies on (a node within the snap distance on Γ), and the Lagrange basis of each cell at physical
 points (affine cells, or dolfinx's pull-back on a curved one)."""
 from __future__ import annotations
 
@@ -51,14 +51,27 @@ def cell_counts(scene: Scene, h: float) -> list[int]:
     return [max(1, round(s / h)) for s in scene.domain.size]
 
 
-def node_sides(scene: Scene, coords: np.ndarray) -> np.ndarray:
-    """The side (±1) of mesh nodes, a node within NODE_ON_INTERFACE of Γ
-    on Γ (+1): the same for every cell and rank that computed its
-    coordinates (:data:`contactcore.tolerances.NODE_ON_INTERFACE`).  The
-    distance is |φ|/|∇φ| (φ itself for a line or a circle)."""
+def node_sides(scene: Scene, coords: np.ndarray, snap: float) -> np.ndarray:
+    """The side (±1) of mesh nodes, a node within ``snap`` of Γ on Γ (+1):
+    XFEM's one rule near a node (:data:`contactcore.tolerances.XFEM_SNAP`,
+    :attr:`CellBasis.snap`), the same for every cell and rank that computed
+    its coordinates.  The distance is |φ|/|∇φ| (φ itself for a line or a
+    circle)."""
     itf = scene.interface
-    distance = np.abs(itf.signed_distance(coords))
-    return np.where(distance <= tol.NODE_ON_INTERFACE * scene.length_scale, 1, side_of(itf, coords))
+    return np.where(on_gamma(scene, coords, snap), 1, side_of(itf, coords))
+
+
+def on_gamma(scene: Scene, coords: np.ndarray, snap: float) -> np.ndarray:
+    """(points,) bool: the points within ``snap`` of Γ (|φ|/|∇φ|), which
+    XFEM snaps Γ to (:data:`contactcore.tolerances.XFEM_SNAP`)."""
+    return np.abs(scene.interface.signed_distance(coords)) <= snap
+
+
+def diameters(corners: np.ndarray) -> np.ndarray:
+    """(cells,): each cell's diameter, twice its corners' largest distance
+    from their mean."""
+    centre = corners.mean(axis=1)
+    return 2 * np.max(np.linalg.norm(corners - centre[:, None], axis=2), axis=1)
 
 
 class CellBasis:
@@ -98,7 +111,12 @@ class CellBasis:
         self.cell_dofs = self.V.dofmap.list.array.reshape(self.num_cells, -1)  # block (node) indices
         self.owned_nodes = self.V.dofmap.index_map.size_local  # the others are ghosts (mpirun)
         self.ranks = Collective(msh.comm)
-        self.node_side = node_sides(scene, self.V.tabulate_dof_coordinates()[:, :2])
+        #: XFEM's snap distance (:data:`contactcore.tolerances.XFEM_SNAP` of
+        #: the largest cell diameter over every rank): a node this close to Γ
+        #: lies on it, and Γ is snapped to it
+        self.snap = tol.XFEM_SNAP * self.ranks.max(float(np.max(diameters(self.corners[:self.owned_cells]),
+                                                                  initial=0.0)))
+        self.node_side = node_sides(scene, self.V.tabulate_dof_coordinates()[:, :2], self.snap)
 
     def _curved_cells(self) -> np.ndarray:
         """Cells whose geometry nodes are not the affine image (from the

@@ -12,10 +12,10 @@ import numpy as np
 from contactcore import DiscretisationError, Scene
 from contactcore import tolerances as tol
 from contactcore.bodies import Body, index_of_sign, sign_of
-from contactcore.cutcell import cut_polygon, interface_rule_in, polygon_rule
+from contactcore.cutcell import cut_polygon, gauss01, interface_rule_in, polygon_rule
 from contactcore.geometry import LevelSetInterface, polygon_area
 
-from .cells import CellBasis
+from .cells import CellBasis, on_gamma
 
 #: Gauss points per direction in each (sub-)cell and on each piece of Γ, by
 #: degree: a fan maps a square onto a triangle or curved sector, so n points
@@ -43,10 +43,17 @@ class CutIntegration:
     ``depth[c]`` how far the − and + parts of a cut cell reach from Γ and
     ``cell_size`` each cell's diameter.
 
-    Each node's stiffness ``∫|∇N_J|²`` over the cells near Γ that this rank
-    owns is summed as ``stiffness_total``, and its part on the other side
-    of Γ from the node as ``stiffness_across``: what the enriched space
-    decides its enrichment from."""
+    Γ is snapped to the nodes within ``cells.snap`` of it
+    (:data:`contactcore.tolerances.XFEM_SNAP`): a cell whose corners off Γ
+    all lie on one side is whole on that side, and Γ along an edge whose
+    two ends are on Γ is that edge, its rule held by the cell on the −
+    side; a cell with corners off Γ on both sides is cut along the exact Γ.
+    So no part of a cell is thinner than the snap distance.
+
+    Each node's stiffness ``∫|∇N_J|²`` over the parts on either side of Γ,
+    in the cells near Γ that this rank owns, is summed as
+    ``stiffness[index of the side]``: what the enriched space decides its
+    enrichment from."""
 
     def __init__(self, cells: CellBasis, scene: Scene, gauss: int):
         self.cells, self.scene, self.gauss = cells, scene, gauss
@@ -60,8 +67,7 @@ class CutIntegration:
         self.cell_side = sign_of(phi_c)
         self.regions, self.gamma_rules = {}, {}
         self.depth = np.zeros((len(centre), 2))  # of each body's part of a cut cell (distance from Γ, φ/|∇φ|)
-        self.stiffness_across = np.zeros(len(cells.node_side))
-        self.stiffness_total = np.zeros(len(cells.node_side))
+        self.stiffness = np.zeros((2, len(cells.node_side)))  # of each node's function on the − and + parts
         corner_phi = itf.phi(corners.reshape(-1, 2)).reshape(len(centre), -1)
         for c in self._near_cells(centre, radius, phi_c, corner_phi):
             self._integrate(c, corner_phi[c])
@@ -82,11 +88,19 @@ class CutIntegration:
 
     def _integrate(self, c: int, corner_phi: np.ndarray) -> None:
         """Rules of cell ``c`` near Γ: its regions if Γ cuts it, else its
-        side; its nodes' stiffness on either side if this rank owns it."""
+        side (Γ snapped to its corners within the snap distance); its
+        nodes' stiffness on either side if this rank owns it."""
         itf, cells = self.scene.interface, self.cells
         general = isinstance(itf, LevelSetInterface)
-        gamma = interface_rule_in(itf, cells.corners[c], self.gauss)
-        pieces = cut_polygon(itf, cells.corners[c], self.gauss)
+        corners = cells.corners[c]
+        on = on_gamma(self.scene, corners, cells.snap)
+        off = sign_of(corner_phi)[~on]
+        gamma, pieces = interface_rule_in(itf, corners, self.gauss), cut_polygon(itf, corners, self.gauss)
+        if on.any() and len(off) and off.min() == off.max() and self._within_snap(pieces, int(off[0])):
+            # Γ snapped to the corners on it: the cell is whole on the side of the others
+            side = int(off[0])
+            gamma = self._snapped_rule(corners) if side < 0 else _NO_RULE
+            pieces = [(side, *polygon_rule(corners, self.gauss))]
         if general:
             self._check_rules_found(c, [*gamma, *(a for _, p, w in pieces for a in (p, w))])
         if len(gamma[1]):
@@ -94,7 +108,7 @@ class CutIntegration:
         parts = [(s, p, w, *cells.tabulate(c, p)) for s, p, w in pieces if np.sum(w) > 0]
         if len({part[0] for part in parts}) > 1:
             self.regions[c] = parts
-            self.depth[c] = self._depths(parts, cells.corners[c], corner_phi)
+            self.depth[c] = self._depths(parts, corners, corner_phi)
         elif parts:
             self.cell_side[c] = parts[0][0]
             if general:
@@ -103,9 +117,29 @@ class CutIntegration:
             return
         dofs = cells.cell_dofs[c]
         for side, pts, w, N, dN in parts:
-            energy = w @ np.sum(dN ** 2, axis=-1)
-            self.stiffness_total[dofs] += energy
-            self.stiffness_across[dofs] += energy * (cells.node_side[dofs] != side)
+            self.stiffness[index_of_sign(side), dofs] += w @ np.sum(dN ** 2, axis=-1)
+
+    def _within_snap(self, pieces, side: int) -> bool:
+        """Whether every part of a cell off ``side`` lies within the snap
+        distance of Γ (its quadrature points do): a sliver beside a corner
+        on Γ, which snapping removes; a circle's cap deeper than that, cut
+        off an edge away from the corner, stays a part."""
+        snap, itf = self.cells.snap, self.scene.interface
+        return all(np.all(np.abs(itf.signed_distance(p)) <= snap) for s, p, w in pieces if s != side and len(w))
+
+    def _snapped_rule(self, corners: np.ndarray):
+        """Γ's rule along the edges of a cell whose two ends are both on Γ
+        (within the snap distance): Γ snapped to the edge, Gauss points on
+        it with the level set's normals there."""
+        on = on_gamma(self.scene, corners, self.cells.snap)
+        g, gw = gauss01(self.gauss)
+        rules = [(a + g[:, None] * (b - a), gw * float(np.linalg.norm(b - a)))
+                 for i in range(len(corners)) for a, b in [(corners[i], corners[(i + 1) % len(corners)])]
+                 if on[i] and on[(i + 1) % len(corners)]]
+        if not rules:
+            return _NO_RULE
+        pts = np.vstack([p for p, _ in rules])
+        return pts, np.concatenate([w for _, w in rules]), self.scene.interface.normals(pts)
 
     def _check_rules_found(self, c: int, arrays) -> None:
         """A clear error where cell ``c``'s rules of Γ and of its parts hold
@@ -131,7 +165,8 @@ class CutIntegration:
         corners = self.cells.corners[c]  # counter-clockwise: a bilinear map of the unit square (a triangle repeats one)
         q = corners if len(corners) == 4 else np.vstack([corners, corners[-1:]])
         x = (1 - u) * (1 - v) * q[0] + u * (1 - v) * q[1] + u * v * q[2] + (1 - u) * v * q[3]
-        other = sign_of(self.scene.interface.phi(x)) != side
+        itf = self.scene.interface
+        other = (sign_of(itf.phi(x)) != side) & ~on_gamma(self.scene, x, self.cells.snap)
         if other.any():
             p = x[np.flatnonzero(other)[0]]
             raise DiscretisationError(f"xfem: the level set changes sign inside a cell without crossing its edges, "
@@ -184,6 +219,10 @@ class CutIntegration:
                 "thin wedge with 79 % in cut cells had its mean t_N 23 % below fe's); refine h until the share falls "
                 f"below {tol.THIN_BODY_CUT_SHARE:.0%}, or use fe"
                 for body in Body for share in [self.cut_share(body)] if share > tol.THIN_BODY_CUT_SHARE]
+
+
+#: Γ's rule in a cell it does not cross: no points.
+_NO_RULE = (np.zeros((0, 2)), np.zeros(0), np.zeros((0, 2)))
 
 
 def _reference_cell(cells: CellBasis) -> np.ndarray:

@@ -25,9 +25,14 @@ from ..contact_system import GhostExchange
 from .cells import CellBasis
 from .cut import CutIntegration
 
-#: An enriched node is kept when the stiffness of its shape function across
-#: Γ, ∫|∇N_J|² there, exceeds this fraction of its stiffness over the cells
-#: Γ reaches.  Below it the enriched function lives on a sliver: its
+#: An enriched node is kept when the stiffness of its shape function on
+#: either side of Γ, ∫|∇N_J|² over that side's parts, exceeds this
+#: fraction of its stiffness over the cells Γ reaches (both sides: a node
+#: whose support lies on one side only would get an enrichment equal to its
+#: own function there).  Γ snapped to the nodes within
+#: contactcore.tolerances.XFEM_SNAP of it leaves no part thinner than that
+#: share of a cell; a corner that Γ clips farther out can still leave a
+#: small one.  Below it the enriched function lives on a sliver: its
 #: stiffness vanishes with the fraction and the matrix becomes singular
 #: (MUMPS found null pivots at 1e-13 and 1e-14 on 3 of 24 inclined Γ in
 #: scene A, quads P2); a fraction of ∫|N_J| instead of the stiffness drops
@@ -54,14 +59,15 @@ class BlockNumbering:
 
 
 def enriched_nodes(cells: CellBasis, cut: CutIntegration) -> np.ndarray:
-    """(nodes,) bool: the nodes part of whose support's stiffness lies on
-    the other side of Γ (above MIN_CUT_FRACTION of it): the nodes of cut
-    cells, and also nodes on Γ (H = +1) whose support reaches − cells when
-    Γ runs along edges.  Each node's owner sums the stiffness over every
-    rank's cells, decides, and tells the ranks that ghost it."""
+    """(nodes,) bool: the nodes whose support's stiffness lies on both
+    sides of Γ, each side's above MIN_CUT_FRACTION of it: the nodes of cut
+    cells, and also nodes on Γ whose support reaches cells of both sides
+    when Γ runs along edges.  Each node's owner sums the stiffness over
+    every rank's cells, decides, and tells the ranks that ghost it."""
     exchange = GhostExchange(cells.V.dofmap.index_map, 1, cells.msh.comm)
-    across, total = exchange.reverse(cut.stiffness_across), exchange.reverse(cut.stiffness_total)
-    owned = across > MIN_CUT_FRACTION * np.where(total > 0, total, 1.0)
+    minus, plus = (exchange.reverse(s) for s in cut.stiffness)
+    total = minus + plus
+    owned = np.minimum(minus, plus) > MIN_CUT_FRACTION * np.where(total > 0, total, 1.0)
     if cells.ranks.sum(int(np.count_nonzero(owned))) == 0:
         raise DiscretisationError("xfem: Γ crosses no cell of the mesh")
     return exchange.forward(owned.astype(float)) > 0.5

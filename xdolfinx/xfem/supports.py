@@ -20,7 +20,7 @@ def _facets_gamma_meets(space: EnrichedFunctionSpace, facets: np.ndarray) -> np.
     belong to the body that does not reach the support, and stay free."""
     msh = space.msh
     nodes = _cpp.mesh.entities_to_geometry(msh._mesh, 1, np.asarray(facets, np.int32), False)
-    sides = node_sides(space.scene, msh.geometry.x[nodes.ravel(), :2]).reshape(nodes.shape)
+    sides = node_sides(space.scene, msh.geometry.x[nodes.ravel(), :2], space.cells.snap).reshape(nodes.shape)
     return sides.min(axis=1) != sides.max(axis=1)
 
 
