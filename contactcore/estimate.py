@@ -33,10 +33,12 @@ gap or penalty traction takes the orders ``[min(p, 2λ), p]``
 (:func:`pollution_order`); with two runs of fe or xfem, the part of their
 difference at the scale of the coarse run's cells (:func:`cell_scale_part`),
 their local error, takes ``p`` and only the smooth rest, where the
-pollution lies, the range (:func:`profile_estimates`).  EFGM P2, whose supports are collocated at the
-nodes of a basis that does not interpolate, takes for its bulk
-displacements the order of its supports' defect itself, 2 or ``2λ``
-(:data:`COLLOCATED`, :func:`collocation_order`).  A degree-1 stress read at a point converges at its
+pollution lies, the range (:func:`profile_estimates`).  EFGM holds its supports by boundary
+multipliers (:mod:`efgm.method`), and its P2 takes the orders of every
+other degree-2 method (until 2026-11-27 it collocated them at the nodes
+of a basis that does not interpolate, whose defect set its bulk
+displacements' order: a rule that went with it, docs/error-estimates.md).
+A degree-1 stress read at a point converges at its
 order ``p`` where the point is generic in its cell and at ``p + 1`` where
 it superconverges (the cell's centroid, a uniform grid aligned with the
 profile: Zienkiewicz & Zhu, IJNME 33, 1992; Wahlbin, *Superconvergence in
@@ -147,54 +149,18 @@ def theoretical_order(quantity: str, degree: int, method: str = "", law=None, sw
 STRESSES, SUPERCONVERGENT_DEGREES = ("sxx", "syy", "sxy"), (1,)
 
 
-#: Methods that collocate their essential conditions at the nodes of a
-#: basis that does not interpolate: EFGM (:mod:`efgm.method`).  With the
-#: quadratic basis (supports of 3 h) its trace on a supported edge misses
-#: the prescribed value between the nodes, most at the edge's ends: by
-#: ``O(h)`` where the corner is regular (a roller's: 3.8e-6, 1.8e-6,
-#: 9.4e-7, 4.7e-7 m at h = 0.2 ... 0.025, the linear basis's at ``h²``)
-#: and ``O(h^λ)`` at a clamped-free corner (``u ~ r^λ``: scene A, 0.757
-#: and 0.782 against λ = 0.758).  That defect, over a cell at each end,
-#: is a displacement imposed on the boundary: it acts on the bulk as a
-#: nucleus of strength ``h · h`` (``h^{1+λ}`` at a singular corner, no
-#: faster than the singular term's ``h^{2λ}`` there: Nitsche & Schatz,
-#: Math. Comp. 28, 1974), and the bulk displacements converge at
-#: :func:`collocation_order` rather than 3 (measured 1.0-2.7 on eleven
-#: scenes with supported edges, 1.9-2.4 without a singular corner;
-#: docs/error-estimates.md).  The linear basis's defect is ``h²``, its
-#: smooth order 2 already.
-COLLOCATED = (("efgm", 2),)
-
-#: The far-field order of a collocation defect ``O(h)`` over a cell at
-#: a regular end of a supported edge (:data:`COLLOCATED`).
-COLLOCATED_EDGE_ORDER = 2.0
-
-#: The bulk displacements (Γ's gaps are jumps across Γ, in which a field
-#: continuous across Γ cancels; they keep the polluted range of
-#: :data:`DISPLACEMENT_LIKE`).
-BULK_DISPLACEMENTS = ("ux", "uy")
-
-
 def order_range(quantity: str, degree: int, method: str = "", law=None, switching: bool | None = None,
-                pollution: float = np.inf, collocation: float = np.inf) -> tuple[float, float]:
+                pollution: float = np.inf) -> tuple[float, float]:
     """The orders theory allows a profile quantity: ``(p, p)`` with ``p``
     the :func:`theoretical_order`, ``(p, p + 1)`` for a stress of a degree
     in :data:`SUPERCONVERGENT_DEGREES` (module doc), ``(pollution, p)``
     for a displacement, a gap or a penalty law's traction whose ``p``
-    exceeds the scene's :func:`pollution_order`; for a method in
-    :data:`COLLOCATED`, ``collocation`` (the scene's
-    :func:`collocation_order`) itself for a bulk displacement whose
-    balanced order exceeds it, and ``(collocation, p)`` for a stress."""
+    exceeds the scene's :func:`pollution_order`."""
     p = theoretical_order(quantity, degree, method, law, switching)
     if quantity in STRESSES and degree in SUPERCONVERGENT_DEGREES:
         return (p, p + 1)
     polluted = quantity in DISPLACEMENT_LIKE and not (quantity in TRACTIONS and _exact(law))
-    orders = (pollution, p) if polluted and pollution < p else (p, p)
-    if (method, degree) in COLLOCATED and quantity in STRESSES and collocation < p:
-        return (collocation, p)
-    if (method, degree) in COLLOCATED and quantity in BULK_DISPLACEMENTS and collocation < balanced_order(*orders):
-        return (collocation, collocation)
-    return orders
+    return (pollution, p) if polluted and pollution < p else (p, p)
 
 
 def _exact(law) -> bool:
@@ -341,17 +307,6 @@ def pollution_order(scene: Scene | None) -> float:
     (:func:`order_range`)."""
     lams = corner_exponents(scene) + interface_end_exponents(scene) if scene is not None else []
     return 2 * min(lams) if lams else np.inf
-
-
-def collocation_order(scene: Scene | None) -> float:
-    """The order of a :data:`COLLOCATED` method's bulk displacement: inf
-    without a supported edge that ends at a corner (a disc's rim has no
-    end), else :data:`COLLOCATED_EDGE_ORDER`, or ``2 λ_min`` of the
-    clamped-free corners (:func:`corner_exponents`) where that is less."""
-    if scene is None or not scene.supports or not isinstance(scene.domain, Rectangle):
-        return np.inf
-    lams = corner_exponents(scene)
-    return min([COLLOCATED_EDGE_ORDER] + [2 * lam for lam in lams])
 
 
 def balanced_order(low: float, high: float, ratio: float = 2.0) -> float:
@@ -508,7 +463,7 @@ def polluted(quantity: str, degree: int, method: str = "", law=None, switching: 
     its quadrature's, which does not converge)."""
     p = theoretical_order(quantity, degree, method, law, switching)
     return (quantity in DISPLACEMENT_LIKE and not (quantity in TRACTIONS and _exact(law)) and pollution < p
-            and method not in MESHFREE and (method, degree) not in COLLOCATED)
+            and method not in MESHFREE)
 
 
 def sample_groups(scene: Scene, xy: np.ndarray, kept: np.ndarray) -> np.ndarray:
@@ -539,9 +494,7 @@ def profile_estimates(levels: list[list[ProfileData]], degree: int, method: str 
     from the samples at least ``exclude`` from the ``scene``'s singular
     points; ``switching`` as :func:`theoretical_order` takes it; the
     ``scene``'s :func:`pollution_order` widens the orders of its
-    displacements, gaps and penalty tractions, and its
-    :func:`collocation_order` sets those of a :data:`COLLOCATED`
-    method's bulk (:func:`order_range`).  With the coarse run's ``h``,
+    displacements, gaps and penalty tractions (:func:`order_range`).  With the coarse run's ``h``,
     a two-run estimate of a range that pollution widened (:func:`polluted`)
     takes the difference's part at the scale of that run's cells
     (:func:`cell_scale_part`, over :func:`sample_groups`) at the upper
@@ -549,7 +502,7 @@ def profile_estimates(levels: list[list[ProfileData]], degree: int, method: str 
     homogeneous equations, smooth at that scale, so what varies cell by
     cell is the runs' local error, which converges at the method's order."""
     out, law = {}, scene.law if scene else None
-    pollution, collocation = pollution_order(scene), collocation_order(scene)
+    pollution = pollution_order(scene)
     for profs in zip(*levels):
         pid, cols = profs[-1].id, profs[-1].columns
         xy = np.column_stack([cols["x"], cols["y"]])
@@ -560,7 +513,7 @@ def profile_estimates(levels: list[list[ProfileData]], degree: int, method: str 
             groups = sample_groups(scene, xy, kept)
             cells = lambda v, s=s, groups=groups: cell_scale_part(v, s, groups, h)  # noqa: E731
         out[pid] = {q: richardson([p.columns[q] for p in profs],
-                                  order_range(q, degree, method, law, switching, pollution, collocation),
+                                  order_range(q, degree, method, law, switching, pollution),
                                   coarse=coarse, kept=kept,
                                   cells=cells if polluted(q, degree, method, law, switching, pollution) else None)
                     for q in profs[-1].names[3:]}

@@ -12,7 +12,7 @@ does its own share of the work that costs:
 * Γ's quadrature points and each loaded boundary's are split into
   contiguous ranges in the rules' order (:meth:`Collective.share`); the law
   and its history live at the Γ points a rank holds;
-* the collocation rows (multipliers) are evaluated by the rank that owns
+* the multipliers' rows (supports and pins) are evaluated by the rank that owns
   their row.
 
 Every rank's contributions (global indices, from the one assembly sink)
@@ -81,7 +81,7 @@ def cell_share(points: np.ndarray, origin: np.ndarray, step: np.ndarray, ranks: 
 
 
 def owned_multipliers(ranks: Collective, ndofs: int, count: int) -> np.ndarray:
-    """The collocation rows (of ``count``, numbered after the ``ndofs``
+    """The multipliers' rows (of ``count``, numbered after the ``ndofs``
     unknowns of the approximation) whose rows this rank owns."""
     from .petsc_matrices import ownership
 

@@ -10,9 +10,11 @@ operators ``N`` (displacement) and ``B`` (strain):
     f = N_∂ᵀ W_∂ t̄ + N_Ωᵀ W_Ω b,
 
 ``W`` holding the quadrature weights.  MLS functions do not interpolate, so
-essential conditions are imposed by Lagrange multipliers at collocation
-points — the nodes on a supported boundary and the pins — which makes them
-exact at those points, pins included, with no penalty to tune.  The
+essential conditions are imposed by Lagrange multipliers: on the supported
+boundaries a hat function per knot of spacing ``h`` (weighted means of
+``u − ū``, :func:`support_multipliers`, whose traction a linear field's
+reaction is: the patch test passes), at the pins their points; no penalty
+to tune.  The
 saddle-point system is solved by MUMPS's LDLᵀ (the solver of fe and xfem)
 when petsc4py imports, else by SuperLU (:mod:`efgm.sparse_solver`), through the
 shared increments and Newton of :mod:`contactcore.newton` (one solve for the
@@ -49,7 +51,8 @@ from . import distributed, sparse_solver, traction
 from .nodes import NodeSet, node_set, support_radii
 from .operators import SYMMETRIC, Approximation, block_diagonal, find_enrichment
 from .options import BASES, EFGM  # noqa: F401 (BASES re-exported: the bases by name)
-from contactcore.cutcell import Rule
+from contactcore.cutcell import Rule, edge_crossings, gauss01
+from contactcore.geometry import CircleInterface, Rectangle
 from contactcore.quadrature import background_cells, boundary_rule, interface_rule, volume_rule
 from .shape import MLS
 
@@ -101,52 +104,135 @@ class EFGMFields:
         return np.where(bodies[:, None] == 1, eps @ self.D[1].T, eps @ self.D[0].T)
 
 
-def _constraints(scene: Scene, approx: Approximation, evaluated=None) -> Constraints:
-    """Collocation rows ``C u = g`` (supported boundary nodes, and pins): the
-    rows (``operator``), the values at full load, the support of each row
-    (−1 for a pin) and the point of each row.  ``evaluated(count)``, if
-    given, picks the rows whose shape functions are evaluated (a rank's
-    own, :func:`efgm.distributed.owned_multipliers`); the others are zero."""
-    nodes = approx.mls.nodes
-    points, comps, values, owners = [], [], [], []
+def support_multipliers(scene: Scene, h: float, n: int):
+    """The multipliers of the supported boundaries: on each piece of a
+    supported boundary between the points where Γ meets it, hats (continuous,
+    piecewise linear in arc length) on ``m = round(length / h)`` equal
+    intervals, or one constant multiplier on a piece shorter than h/2; a
+    closed rim that Γ does not meet is one periodic chain.  A row of the
+    constraint is the hat's weighted mean of ``u_j − ū_j`` over its two
+    intervals, each integrated with ``n`` Gauss points.  Returns, per
+    multiplier, its support, component, knot (a point), and the matrix
+    ``R`` (multipliers × Gauss points) of the normalised weights, with the
+    Gauss points."""
+    dom, itf = scene.domain, scene.interface
+    g, gw = gauss01(n)
+    owners, comps, knots, rows, cols, vals, pts = [], [], [], [], [], [], []
+    count = 0
     for i, sup in enumerate(scene.supports):
-        on = np.flatnonzero(scene.domain.on_boundary(sup.boundary, nodes, tol.NODE_MATCH * scene.length_scale))
-        if len(on) == 0:
+        if isinstance(dom, Rectangle):
+            a, b = {"bottom": (0, 1), "top": (3, 2), "left": (0, 3), "right": (1, 2)}[sup.boundary]
+            a, b = dom.corners[a], dom.corners[b]
+            curve = lambda t, a=a, b=b: a + t[:, None] * (b - a)  # noqa: E731
+            length, closed = float(np.linalg.norm(b - a)), False
+            breaks = sorted(edge_crossings(itf, a, b))
+        else:
+            c, R = np.asarray(dom.centre, float), dom.radius
+            curve = lambda t, c=c, R=R: c + R * np.column_stack([np.cos(2 * np.pi * t), np.sin(2 * np.pi * t)])  # noqa: E731
+            length, closed = 2 * np.pi * R, True
+            chord = itf.chord(dom) if not isinstance(itf, CircleInterface) else None
+            breaks = [] if chord is None else sorted((np.arctan2(*(chord - c).T[::-1]) / (2 * np.pi)) % 1.0)
+        if closed and breaks:
+            parts, periodic = list(zip(breaks, breaks[1:] + [breaks[0] + 1.0])), False
+        elif closed:
+            parts, periodic = [(0.0, 1.0)], True
+        else:
+            knots_t = [0.0] + [t for t in breaks if 0.0 < t < 1.0] + [1.0]
+            parts, periodic = list(zip(knots_t[:-1], knots_t[1:])), False
+        for t0, t1 in parts:
+            m = int(round((t1 - t0) * length / h))
+            edges = np.linspace(t0, t1, max(m, 1) + 1)
+            tau = (edges[:-1, None] + g[None] * np.diff(edges)[:, None])  # (intervals, n)
+            w = np.diff(edges)[:, None] * gw[None] * length
+            first = sum(len(p) for p in pts)
+            pts.append(curve(tau.ravel() % 1.0))
+            q = first + np.arange(tau.size).reshape(tau.shape)
+            if m == 0:  # one constant multiplier
+                hats = [(q.ravel(), w.ravel())]
+                where = [curve(np.array([0.5 * (t0 + t1)]) % 1.0)[0]]
+            else:
+                count_h = m if periodic else m + 1
+                hats = [([], []) for _ in range(count_h)]
+                for j in range(m):
+                    hats[j][0].append(q[j]); hats[j][1].append(w[j] * (1 - g))
+                    k = (j + 1) % count_h
+                    hats[k][0].append(q[j]); hats[k][1].append(w[j] * g)
+                hats = [(np.concatenate(a), np.concatenate(b)) for a, b in hats]
+                where = list(curve(edges[:count_h] % 1.0))
+            for comp in sup.fix:
+                for (qq, ww), x in zip(hats, where):
+                    rows.append(np.full(len(qq), count)); cols.append(qq); vals.append(ww / ww.sum())
+                    owners.append(i); comps.append("xy".index(comp)); knots.append(x)
+                    count += 1
+    pts = np.concatenate(pts) if pts else np.zeros((0, 2))
+    R = sp.csr_matrix((np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))), shape=(count, len(pts))) \
+        if count else sp.csr_matrix((0, len(pts)))
+    return np.asarray(owners, int), np.asarray(comps, int), np.reshape(knots, (-1, 2)), R, pts
+
+
+def _constraints(scene: Scene, approx: Approximation, h: float, n: int, evaluated=None) -> Constraints:
+    """The rows ``C u = g`` of the supports and the pins: the rows
+    (``operator``), the values at full load, the support of each row (−1
+    for a pin) and the point of each row.  A support is held in the mean
+    over the hats of :func:`support_multipliers` (multipliers on the
+    boundary, whose traction they carry: a traction linear along the edge
+    is reproduced, so a linear field passes); a pin at its point (a pin
+    carries no force in a balanced scene).  ``evaluated(count)``, if given,
+    picks the rows whose shape functions are evaluated (a rank's own,
+    :func:`efgm.distributed.owned_multipliers`); the others are zero."""
+    nodes = approx.mls.nodes
+    L = tol.NODE_MATCH * scene.length_scale
+    for i, sup in enumerate(scene.supports):
+        if not np.any(scene.domain.on_boundary(sup.boundary, nodes, L)):
             raise DiscretisationError(f"efgm: supports[{i}]: no node lies on boundary '{sup.boundary}' — the node "
                                       "set must include the supported boundaries")
-        for comp in sup.fix:
-            j = "xy".index(comp)
-            points.append(nodes[on])
-            comps.append(np.full(len(on), j))
-            values.append(np.full(len(on), sup.value[j]))
-            owners.append(np.full(len(on), i))
+    # two supports meeting at a corner, or a pin on a supported boundary, that prescribe one component differently
+    held = []  # (point, component, value, owner) of the supports' ends, and the pins
+    if isinstance(scene.domain, Rectangle):
+        ends = {"bottom": (0, 1), "top": (3, 2), "left": (0, 3), "right": (1, 2)}
+        for i, sup in enumerate(scene.supports):
+            for c in ends[sup.boundary]:
+                held += [(scene.domain.corners[c], "xy".index(comp), sup.value["xy".index(comp)], i) for comp in sup.fix]
+    pins = []
     for pin in scene.pins:
         for comp in pin.fix:
-            points.append(np.array([pin.point]))
-            comps.append(np.array(["xy".index(comp)]))
-            values.append(np.zeros(1))
-            owners.append(np.full(1, -1))
-    if not points:
+            j = "xy".index(comp)
+            on = [i for i, sup in enumerate(scene.supports) if comp in sup.fix
+                  and scene.domain.on_boundary(sup.boundary, np.array([pin.point]), L)[0]]
+            held.append((np.asarray(pin.point, float), j, 0.0, -1))
+            if not on:  # a pin on a boundary that holds the same component is that boundary's
+                pins.append((np.asarray(pin.point, float), j))
+            else:
+                held += [(np.asarray(pin.point, float), j, scene.supports[i].value[j], i) for i in on]
+    for k, (p, j, v, o) in enumerate(held):
+        for p2, j2, v2, o2 in held[:k]:
+            if j == j2 and np.all(np.abs(p - p2) <= L) and (v != v2 or (v != 0 and o != o2)):
+                raise DiscretisationError(f"efgm: two supports prescribe u_{'xy'[j]} at ({p[0]:.6g}, {p[1]:.6g}) "
+                                          "with different values or load paths")
+    owners, comps, knots, R, gpts = support_multipliers(scene, h, n)
+    values = np.array([scene.supports[o].value[j] for o, j in zip(owners, comps)])
+    owners = np.concatenate([owners, np.full(len(pins), -1)])
+    comps = np.concatenate([comps, [j for _, j in pins]]).astype(int)
+    values = np.concatenate([values, np.zeros(len(pins))])
+    points = np.vstack([knots] + [p[None] for p, _ in pins])
+    total = len(owners)
+    if total == 0:
         return Constraints(np.zeros(0), np.zeros(0, int), operator=sp.csr_matrix((0, approx.ndofs)),
                            points=np.zeros((0, 2)))
-    pts, comp, g, owner = (np.concatenate(a) for a in (points, comps, values, owners))
-    # a point shared by two supports (a corner) is constrained once: a repeated
-    # row would make the saddle-point system singular
-    key = np.round(pts / (tol.NODE_MATCH * scene.length_scale)).astype(np.int64)
-    _, first, inverse = np.unique(np.column_stack([key, comp]), axis=0, return_index=True, return_inverse=True)
-    clash = (np.abs(g - g[first][inverse.ravel()]) > 0) | ((g != 0) & (owner != owner[first][inverse.ravel()]))
-    if clash.any():
-        i = int(np.flatnonzero(clash)[0])
-        raise DiscretisationError(f"efgm: two supports prescribe u_{'xy'[comp[i]]} at "
-                                  f"({pts[i, 0]:.6g}, {pts[i, 1]:.6g}) with different values or load paths")
-    pts, comp, g, owner = pts[first], comp[first], g[first], owner[first]
-    rows = np.arange(len(pts)) if evaluated is None else evaluated(len(pts))
-    bodies = scene.body_of(pts[rows])
-    N = approx.displacement_operator(approx.mls.evaluate(pts[rows], bodies), bodies)
-    C = N[2 * np.arange(len(rows)) + comp[rows]]
+    # every row as weights over points: the supports' Gauss points, then the pins
+    W = sp.block_diag([R, sp.identity(len(pins))], format="csr") if len(pins) else R
+    allpts = np.vstack([gpts] + [p[None] for p, _ in pins])
+    rows = np.arange(total) if evaluated is None else evaluated(total)
+    W = W[rows]
+    used = np.unique(W.indices)
+    W = W[:, used]
+    bodies = scene.body_of(allpts[used])
+    N = approx.displacement_operator(approx.mls.evaluate(allpts[used], bodies), bodies)
+    pick = sp.diags((comps[rows] == 0).astype(float))
+    C = pick @ W @ N[0::2] + (sp.identity(len(rows)) - pick) @ W @ N[1::2]
     if evaluated is not None:  # the rows in their places among all
-        C = sp.csr_matrix((np.ones(len(rows)), (rows, np.arange(len(rows)))), shape=(len(pts), len(rows))) @ C
-    return Constraints(g, owner, operator=C, points=pts)
+        C = sp.csr_matrix((np.ones(len(rows)), (rows, np.arange(len(rows)))), shape=(total, len(rows))) @ C
+    return Constraints(values, owners, operator=C.tocsr(), points=points)
 
 
 def _body_forces(scene: Scene, vol: Rule) -> np.ndarray:
@@ -281,7 +367,7 @@ def build(scene: Scene, options: EFGM, resolution: Resolution, timings: Timings)
             cells = (origin, step, np.rint((hi.max(axis=0) - origin) / step).astype(int))
             S, gamma = (traction.traction(scene, approx, sv, vol, cells, gam_pts, gam_n, n) if is_exact(scene.law)
                         else (None, None))
-            constraints = _constraints(scene, approx, evaluated)
+            constraints = _constraints(scene, approx, ns.h, n, evaluated)
             loads = _load_vectors(scene, approx, body_vectors, ns.h, n, ranks)
         except ContactError as exc:
             error = exc

@@ -97,12 +97,15 @@ def test_the_observed_order_is_clipped_and_round_off_shows_none():
 def test_the_estimates_are_within_a_factor_two_of_the_true_error(case, key, record_property):
     """One closed form per method (the layered slip: Coulomb, the final
     increment): every profile quantity with an error above round-off and
-    the energy estimate within tol.EFFECTIVITY of the truth."""
+    the energy estimate within tol.EFFECTIVITY of the truth, but for the
+    measured exceptions of tol.EFFECTIVITY_OUTSIDE (EFGM P1's energy on
+    the layered slip: its quadrature's error, which ZZ does not see), each
+    where it was measured and still outside."""
     rows = [r for r in effectivity(case, key) if r["kind"] == "error"]
     assert rows
     for r in rows:
         record_property(f"{r['profile']}:{r['quantity']}", r["effectivity"])
-        assert tol.EFFECTIVITY[0] <= r["effectivity"] <= tol.EFFECTIVITY[1], r
+        _assert_effectivity(r, tol.EFFECTIVITY_OUTSIDE.get((case, *key, r["profile"], r["quantity"])))
 
 
 def _assert_effectivity(row: dict, known: tuple | None) -> None:
@@ -516,37 +519,39 @@ def test_a_polynomial_root_of_the_wedge_is_not_its_exponent():
     assert est.clamped_free_exponent(np.pi / 2, kappa) == est.clamped_free_exponent(np.pi / 2, est.kolosov(0.0, "stress"))
 
 
-def test_efgm_p2s_clamped_edge_misses_zero_by_h_to_the_corners_lambda():
-    """Why EFGM P2's bulk displacements take 2λ (est.COLLOCATED):
-    it collocates u = 0 at the nodes of A's clamped bottom, and next to
-    the clamped–free corners, where u ~ r^λ, its trace misses zero
-    between the nodes by O(h^λ), λ Williams' exponent (0.758): measured
-    at h = 0.1 → 0.05, the largest |u| on the edge falls at λ.  That
-    defect feeds the corner's singular term, so the two-run estimate
-    takes 2λ for ux, uy and [2λ, 2] for the stresses; fe P2 keeps
-    [2λ, 3].  A rectangle whose supported edges end at regular corners
-    (B, clamped all round) gives 2 (a defect O(h) at the ends), a disc
-    with a clamped rim (the twisted rod: no end) the smooth 3."""
+def test_efgm_p2s_supports_carry_no_defect_of_their_own():
+    """EFGM P2 takes fe P2's orders (no rule of its own since its supports
+    are held by boundary multipliers, efgm.method): once it collocated
+    them at the nodes of a basis that does not interpolate, and its trace
+    missed a roller's value by O(h) at the regular ends, a defect that
+    slowed its bulk displacements to order 2 (2λ beside a clamped–free
+    corner).  Now, on scene A with its bottom and left side on rollers
+    (corners regular), EFGM P2's largest miss of each support at h = 0.05
+    is within tol.EFGM_P2_SUPPORT_MISS_OVER_P1 of EFGM P1's (measured 0.20,
+    2.1; collocation 111 on the bottom), and the estimate's orders of
+    EFGM P2 on A and B are fe P2's."""
+    from contactcore import Support
     from contactcore.discretisation import solve
     from efgm.options import EFGM
-    from verification.closed_forms import twisted_rod
     a = load_scene("A")
-    lam = est.corner_exponents(a)[0]
-    edge = np.column_stack([np.linspace(0.0, 1.0, 1001), np.zeros(1001)])
-    bodies = (a.interface.signed_distance(edge) > 0).astype(int)
-    miss = [np.max(np.abs(solve(a, EFGM(degree=2), h).fields.displacement(edge, bodies))) for h in (0.1, 0.05)]
-    assert np.log2(miss[0] / miss[1]) == pytest.approx(lam, abs=tol.CORNER_DEFECT_RATE)
-    corners, pollution = est.collocation_order(a), est.pollution_order(a)
-    assert corners == pytest.approx(2 * lam)
-    assert est.order_range("ux", 2, "efgm", a.law, pollution=pollution, collocation=corners) == (corners, corners)
-    assert est.order_range("sxx", 2, "efgm", a.law, pollution=pollution, collocation=corners) == (corners, 2)
-    assert est.order_range("gN", 2, "efgm", a.law, pollution=pollution, collocation=corners) == (pollution, 3)
-    assert est.order_range("ux", 2, "fe", a.law, pollution=pollution, collocation=corners) == (pollution, 3)
-    assert est.order_range("ux", 1, "efgm", a.law, pollution=pollution, collocation=corners) == (pollution, 2)
-    b, rod = load_scene("B"), twisted_rod().scene
-    assert est.order_range("ux", 2, "efgm", b.law, pollution=est.pollution_order(b),
-                           collocation=est.collocation_order(b)) == (2, 2)
-    assert est.collocation_order(rod) == np.inf and rod.supports
+    rollers = a.with_changes(supports=(Support("bottom", "y"), Support("left", "x")), pins=())
+    t = np.linspace(0.0, 1.0, 1001)
+    edges = {"bottom": (np.column_stack([t, np.zeros_like(t)]), 1), "left": (np.column_stack([np.zeros_like(t), t]), 0)}
+    miss = {}
+    for degree in (1, 2):
+        fields = solve(rollers, EFGM(degree=degree), 0.05).fields
+        for edge, (pts, comp) in edges.items():
+            bodies = (rollers.interface.signed_distance(pts) > 0).astype(int)
+            miss[degree, edge] = np.max(np.abs(fields.displacement(pts, bodies)[:, comp]))
+    for edge in edges:
+        assert 0 < miss[2, edge] <= tol.EFGM_P2_SUPPORT_MISS_OVER_P1 * miss[1, edge], (edge, miss)
+    assert not hasattr(est, "COLLOCATED")
+    for scene in (a, load_scene("B")):
+        pollution = est.pollution_order(scene)
+        for q in ("ux", "uy", "sxx", "syy", "sxy", "gN", "gT", "tN", "tT"):
+            assert est.order_range(q, 2, "efgm", scene.law, pollution=pollution) == \
+                est.order_range(q, 2, "fe", scene.law, pollution=pollution), (scene.name, q)
+    assert est.order_range("ux", 2, "efgm", a.law, pollution=est.pollution_order(a)) == (est.pollution_order(a), 3)
 
 
 def test_a_runs_stencil_is_its_cells_supports_or_recovery_patch():

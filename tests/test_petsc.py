@@ -195,9 +195,11 @@ def test_efgm_without_petsc4py_falls_back_to_superlu_with_the_same_profiles(tmp_
 
 
 def test_a_workspace_that_falls_short_is_relaxed_and_said():
-    """EFGM's saddle point (scene A, h = 0.1) needs delayed two-by-two
+    """EFGM P2's saddle point (scene A, h = 0.1) needs delayed two-by-two
     pivots; with MUMPS's workspace relaxation at 1 % its factorisation runs
-    out of workspace (INFOG(1) = −9, measured): it is redone with the
+    out of workspace (INFOG(1) = −9, measured 2026-11-27; P1's did while its
+    supports were collocated at the nodes, not with multipliers on the
+    boundary, efgm.method.support_multipliers): it is redone with the
     relaxation doubled until it fits, the report says so, and the answer is
     SuperLU's."""
     from contactcore import load_scene
@@ -207,7 +209,7 @@ def test_a_workspace_that_falls_short_is_relaxed_and_said():
     from efgm.options import EFGM
 
     scene = load_scene("A")
-    system = method.build(scene, EFGM(), Resolution(0.1), Timings()).system
+    system = method.build(scene, EFGM(degree=2), Resolution(0.1), Timings()).system
     springs = np.tile(np.diag([scene.law.kN, scene.law.kT]), (system.interface.size, 1, 1))
     A = (system.A + system.interface.stiffness(springs)).tocsr()
     b = np.linspace(1.0, 2.0, A.shape[0])
