@@ -7,7 +7,9 @@ row ``i`` takes ``g_i`` times the current factor of support
 unknown).  A method whose unknowns are nodal values (fe, xfem) gives the
 rows as unknowns, ``dofs`` (C a selection: the unknowns are eliminated);
 one whose shape functions do not interpolate (EFGM) gives ``C`` itself,
-``operator``, with the ``points`` it collocates (Lagrange multipliers).
+``operator``, one row per multiplier of its supports (Lagrange
+multipliers: a pin's point value, a supported edge's hat-weighted means,
+:func:`efgm.method.support_multipliers`), with the ``points`` that name them.
 """
 from __future__ import annotations
 
@@ -49,7 +51,7 @@ class Constraints:
         and the same load path unless that value is zero.  Otherwise which
         support won would depend on their order: a :class:`SceneError`,
         raised on every rank alike (``ranks``, each rank giving its owned
-        unknowns), as EFGM's collocation refuses the same clash."""
+        unknowns), as EFGM's supports refuse the same clash."""
         if not dofs:
             return cls(np.zeros(0), np.zeros(0, int), dofs=np.zeros(0, np.int64))
         d, v, o = (np.concatenate([np.ravel(p) for p in a]) for a in (dofs, values, owners))

@@ -70,8 +70,9 @@ class Decision:
     in the margin, so every machine takes the same decision.  The scales
     are Γ-wide (reduced over every rank by Newton): ``gap`` the largest
     ``|g_N|``, ``traction`` the largest slip limit ``μp`` (:meth:`_Law.decision_scales`).
-    A margin within REST_ROUNDOFF of the scene's displacement unit (a
-    traction margin over the point's stiffness) is a point at rest, decided
+    A margin within REST_ROUNDOFF of ``size`` (the larger of the scene's
+    displacement unit and Γ's largest jump or slip history; a traction
+    margin over the point's stiffness) is a point at rest, decided
     as a zero margin is (closed, sticking) whatever it was before: a load
     back to exactly zero leaves every margin round-off, and the band
     relative to round-off scales is round-off too.

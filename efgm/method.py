@@ -108,7 +108,8 @@ def support_multipliers(scene: Scene, h: float, n: int):
     """The multipliers of the supported boundaries: on each piece of a
     supported boundary between the points where Γ meets it, hats (continuous,
     piecewise linear in arc length) on ``m = round(length / h)`` equal
-    intervals, or one constant multiplier on a piece shorter than h/2; a
+    intervals, or one constant multiplier where ``m`` rounds to 0 (a piece
+    at most h/2 long: Python rounds half to even); a
     closed rim that Γ does not meet is one periodic chain.  A row of the
     constraint is the hat's weighted mean of ``u_j − ū_j`` over its two
     intervals, each integrated with ``n`` Gauss points.  Returns, per

@@ -126,6 +126,40 @@ def test_a_signal_while_the_earlier_run_is_removed_waits_for_the_removal(tmp_pat
     assert files._BUILDING == [] and not janitor.watching()  # the bookkeeping done before the signal acted
 
 
+#: A user's script that writes a result folder twice with SIGTERM at its
+#: default (kill the process), the second time sent during the swap.
+SWAP_UNDER_SIG_DFL = """
+import os, signal, sys
+from pathlib import Path
+from verification import files
+signal.signal(signal.SIGTERM, signal.SIG_DFL)
+out = Path(sys.argv[1])
+with files.atomic_folder(out) as d:
+    (d / "run").write_text("earlier")
+replace = files.os.replace
+def signalled(src, dst):
+    replace(src, dst)
+    os.kill(os.getpid(), signal.SIGTERM)
+files.os.replace = signalled
+with files.atomic_folder(out) as d:
+    (d / "run").write_text("new")
+"""
+
+
+def test_a_default_sigterm_during_the_swap_ends_the_process_after_the_removal(tmp_path):
+    """With SIGTERM at its default (a user's script), the signal held during
+    the swap killed the process before the earlier run was removed: the
+    whole earlier run stayed in ``.out.earlier.RANDOM`` (review,
+    2026-11-27).  Now it acts once the swap and the removal are done."""
+    import subprocess
+    import sys
+    out = tmp_path / "out"
+    done = subprocess.run([sys.executable, "-c", SWAP_UNDER_SIG_DFL, str(out)], capture_output=True, text=True)
+    assert done.returncode == -15, done.stderr
+    assert (out / "run").read_text() == "new"
+    assert not [p.name for p in tmp_path.iterdir() if p.name.startswith(".")]
+
+
 def test_a_failed_run_leaves_nothing_under_the_final_name(tmp_path, scene_dict, capsys):
     data = scene_dict("A")
     del data["supports"]  # a floating body: refused before any solve

@@ -72,7 +72,7 @@ def _errors(scene, nu, degree, gauss=None):
     result = method.solve(scene, 0.1, degree=degree, gauss=gauss)
     x, y = np.meshgrid(np.linspace(0.0, LENGTH, 61), np.linspace(0.0, HEIGHT, 11))
     pts = np.column_stack([x.ravel(), y.ravel()])
-    pts = pts[np.abs(pts[:, 0] - GAMMA) > 1e-9]  # Γ's own points belong to either body
+    pts = pts[np.abs(pts[:, 0] - GAMMA) > tol.ON_GAMMA * LENGTH]  # Γ's own points belong to either body
     bodies = scene.body_of(pts)
     exact_s = np.tile([P, 0.0, 0.0], (len(pts), 1))
     left = pts[:, 0] <= GAMMA

@@ -529,3 +529,20 @@ def test_ctrl_c_while_python_compiles_the_command_is_one_line(tmp_path):
                                "print(signal.getsignal(signal.SIGINT) is signal.default_int_handler)"],
                               cwd=ROOT, capture_output=True, text=True, timeout=120, preexec_fn=with_ctrl_c)
     assert imported.stdout.strip() == "True", imported.stderr
+
+
+@pytest.mark.parametrize("orig, ours", [
+    (["python", "-m", "verification"], True), (["python", "-Bm", "verification"], True),
+    (["python", "-B", "-m", "verification"], True), (["python", "-mverification"], True),
+    (["python", "-Wd", "-X", "dev", "-m", "verification"], True), (["python", "-Im", "verification"], True),
+    (["python", "-m", "verification.janitor"], False), (["python", "-m", "other"], False),
+    (["python", "-c", "import verification"], False),
+])
+def test_the_start_up_handler_knows_its_command_in_every_spelling(monkeypatch, orig, ours):
+    """``python -Bm verification`` (flags joined before m) installed no
+    start-up Ctrl-C handler, though -B is the no-bytecode case it is for
+    (review, 2026-11-27)."""
+    import verification
+    monkeypatch.setattr(sys, "argv", ["-m"])
+    monkeypatch.setattr(sys, "orig_argv", orig)
+    assert verification._run_as_the_command() is ours

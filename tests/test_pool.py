@@ -12,6 +12,7 @@ import sys
 from pathlib import Path
 
 import pytest
+import tolerances as tol
 
 from verification.__main__ import main
 
@@ -163,7 +164,9 @@ def test_ctrl_c_of_one_pool_leaves_another_pools_workers():
     lost = mine._mp_context.Process(target=time.sleep, args=(600,))  # started, unknown to its pool
     lost.start()
     running = other.submit(_after, 2.0)
+    deadline = time.monotonic() + tol.POOL_START
     while not (stuck.running() and running.running()):
+        assert time.monotonic() < deadline, "the pools' cases did not start"
         time.sleep(0.05)
     theirs = [p for p in other._processes.values()]
     pool._stop(mine)

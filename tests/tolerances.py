@@ -94,6 +94,15 @@ EFGM_PATCH_DOUBLINGS = {"linear": 2, "quadratic": 1}
 #: quadratic; u 20x and 6x), hence GAIN.  The bounds are 4x the worst
 #: measured; collocation at the nodes (before) gave σ 5.4e-2 to 8.2e-2 and u
 #: 1.7e-4 to 3.8e-4, the same with twice the points.
+#: How long (s) a test waits for a pool's first cases to start running: a
+#: spawned worker imports numpy and the project in 1-3 s on a loaded 2-core
+#: machine; past this the test fails instead of waiting for ever.
+POOL_START = 120.0
+
+#: A sample point closer than this share of the domain's length to Γ lies on
+#: Γ, where it belongs to either body: the patch tests leave it out.
+ON_GAMMA = 1e-9
+
 EFGM_SUPPORT_PATCH_SIGMA = 1e-3
 EFGM_SUPPORT_PATCH_U = 5e-5
 EFGM_SUPPORT_PATCH_GAIN = {1: 2.5, 2: 2.5}

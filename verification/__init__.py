@@ -45,11 +45,15 @@ def _run_as_the_command() -> bool:
         return False
     args = getattr(sys, "orig_argv", [])
     for i, a in enumerate(args[1:], 1):
-        if a == "-m":
-            return args[i + 1:i + 2] == ["verification"]
-        if a.startswith("-m"):
-            return a == "-mverification"
+        flags, m, name = a.partition("m")
+        if a.startswith("-") and not a.startswith("--") and m and set(flags[1:]) <= NO_VALUE_FLAGS:
+            return (name or (args[i + 1] if i + 1 < len(args) else "")) == "verification"
     return False
+
+
+#: Python's one-letter options that take no value, which may stand before
+#: ``m`` in one argument (``-Bm verification``, ``-Iqm verification``).
+NO_VALUE_FLAGS = set("bBdEhiIOPqsSuvx")
 
 
 if _run_as_the_command():

@@ -530,7 +530,7 @@ INTERRUPTED = 130
 #: ... and by SIGTERM (``kill``, ``timeout``, a batch scheduler): 128 + SIGTERM.
 TERMINATED = 143
 #: The signals that end a command, SIGTERM as Ctrl-C ends it.
-ENDING = (signal.SIGINT, signal.SIGTERM)
+ENDING = files.HELD_SIGNALS
 
 
 class Terminated(KeyboardInterrupt):

@@ -67,7 +67,7 @@ def atomic_path(path: Path, suffix: str = ""):
             os.unlink(tmp)
 
 
-#: The signals that end a command (``verification.__main__.ENDING``): held
+#: The signals that end a command (``verification.__main__.ENDING``), held
 #: while a result folder is swapped in and the one it replaces removed.
 HELD_SIGNALS = (signal.SIGINT, signal.SIGTERM)
 
@@ -135,20 +135,24 @@ def atomic_folder(path: Path, watched: bool = False):
     _follow_umask(str(tmp), 0o777)
     build = janitor.Build(path, tmp)
     _BUILDING.append(build)
+    built = False
     try:
         if watched:
             janitor.watch(build)
         yield tmp
-        with signals_held():
-            if path.exists():
-                os.replace(path, build.earlier)
-            os.replace(tmp, path)
+        built = True
     finally:
-        with signals_held():  # a signal held here acts once every step below is done
-            build.settle()
-            _BUILDING.remove(build)
-            if watched and janitor.watching():
-                janitor.unwatch()
+        with signals_held():  # one that comes now acts once every step below is done
+            try:
+                if built:
+                    if path.exists():
+                        os.replace(path, build.earlier)
+                    os.replace(tmp, path)
+            finally:
+                build.settle()
+                _BUILDING.remove(build)
+                if watched and janitor.watching():
+                    janitor.unwatch()
 
 
 def discard_unfinished() -> None:

@@ -128,14 +128,18 @@ class CutIntegration:
         return all(np.all(np.abs(itf.signed_distance(p)) <= snap) for s, p, w in pieces if s != side and len(w))
 
     def _snapped_rule(self, corners: np.ndarray):
-        """Γ's rule along the edges of a cell whose two ends are both on Γ
-        (within the snap distance): Γ snapped to the edge, Gauss points on
-        it with the level set's normals there."""
-        on = on_gamma(self.scene, corners, self.cells.snap)
+        """Γ's rule along the edges of a cell that Γ runs along (both ends
+        and every Gauss point within the snap distance): Γ snapped to the
+        edge, Gauss points on it with the level set's normals there.  A
+        curved Γ through an edge's two ends bows off it between them (by
+        h²/8R): the cell across is cut along the arc and holds Γ's rule, so
+        the edge holds none (counted twice, a circle's Γ was 15 % too long)."""
+        on, snap = on_gamma(self.scene, corners, self.cells.snap), self.cells.snap
         g, gw = gauss01(self.gauss)
-        rules = [(a + g[:, None] * (b - a), gw * float(np.linalg.norm(b - a)))
+        edges = [(a + g[:, None] * (b - a), gw * float(np.linalg.norm(b - a)))
                  for i in range(len(corners)) for a, b in [(corners[i], corners[(i + 1) % len(corners)])]
                  if on[i] and on[(i + 1) % len(corners)]]
+        rules = [(p, w) for p, w in edges if on_gamma(self.scene, p, snap).all()]
         if not rules:
             return _NO_RULE
         pts = np.vstack([p for p, _ in rules])
