@@ -136,53 +136,20 @@ if __name__ == "__main__":
     print(json.dumps(out))
 
 
-#: A circle (− inside) through the nodes (0.5, 0.3) and (0.5, 0.7) of
-#: an h = 0.1 grid: centre (0.55, 0.5), R = hypot(0.05, 0.2).  Between
-#: adjacent nodes on it the arc bows off their edge by about h²/8R, far beyond
-#: the snap: the cell across is cut along the arc.
-NODE_CIRCLE = """
-name = "node-circle"
-plane = "strain"
-[domain]
-type = "rectangle"
-size = [1.0, 1.0]
-[interface]
-type = "circle"
-centre = [0.55, 0.5]
-radius = {radius!r}
-[interface.law]
-type = "linear"
-kN = 1e12
-kT = 1e12
-[materials.minus]
-E = 1e9
-nu = 0.3
-[materials.plus]
-E = 1e9
-nu = 0.3
-[[supports]]
-boundary = "bottom"
-fix = "xy"
-[[loads]]
-type = "traction"
-boundary = "top"
-value = [0.0, -1e6]
-"""
-
-
 @pytest.mark.parametrize("cell", ["quad", "triangle"])
-def test_a_curved_gamma_through_two_nodes_is_counted_once(tmp_path, cell):
+def test_a_curved_gamma_through_two_nodes_is_counted_once(cell):
     """Γ's rule sums to the circle's length: the snapped cell beside two
     nodes on a circle held a rule along its edge while the cell across held
-    the arc's (review, 2026-11-27: 15 % too long)."""
+    the arc's (review, 2026-11-27: 15 % too long).  The circle (− inside),
+    on scene A's unit square, passes through the nodes (0.5, 0.3) and
+    (0.5, 0.7) of the h = 0.1 grid; between adjacent nodes on it the arc
+    bows off their edge by about h²/8R, far beyond the snap."""
     import math
-    from contactcore import load_scene
+    from contactcore import CircleInterface, load_scene
     from xdolfinx.xfem.cells import CellBasis, background_mesh
     from xdolfinx.xfem.cut import CutIntegration
     radius = math.hypot(0.05, 0.2)
-    path = tmp_path / "node_circle.toml"
-    path.write_text(NODE_CIRCLE.format(radius=radius))
-    scene = load_scene(path)
+    scene = load_scene("A").with_changes(interface=CircleInterface((0.55, 0.5), radius), profiles=())
     cut = CutIntegration(CellBasis(background_mesh(scene, 0.1, cell), 2, scene), scene, 4)
     length = sum(float(np.sum(w)) for _, w, _ in cut.gamma_rules.values())
     assert length == pytest.approx(2 * math.pi * radius, rel=tol.NODELINE_ROUNDOFF)
