@@ -164,7 +164,9 @@ def _squeezed(enforcement: str):
 #: exactly zero, at degree 2 (efgm P2's round-off is the largest there),
 #: without and with friction: every point at rest; and a shear driven to
 #: exactly the friction limit, where Newton moves EFGM's points from stick
-#: to slip a few per iteration.
+#: to slip a few per iteration, at h = 0.05 and at h = 0.025 (360 points,
+#: where the line search takes ~70 whole steps that only move points on
+#: from stick to slip: docs/newton.md, "A tie").
 CASES = {
     "soft-layer": (lambda: _layered(E_minus_factor=tol.SOFT_LAYER), None),
     "efgm-springs-limit": (_efgm_springs_limit, None),
@@ -181,6 +183,7 @@ CASES = {
     "disc-squeezed-exact": (lambda: _squeezed("exact"), tol.ROUNDOFF_SQUEEZED_H),
     "disc-squeezed-penalty": (lambda: _squeezed("penalty"), tol.ROUNDOFF_SQUEEZED_H),
     "tie-exact": (_tie, tol.ROUNDOFF_TIE_H, {"displacement_scale": True}),
+    "tie-exact-fine": (_tie, tol.ROUNDOFF_TIE_FINE_H, {"displacement_scale": True}),
     "released-exact": (lambda: _released("unilateral"), tol.ROUNDOFF_RELEASED_H, {"degree": 2, "displacement_scale": True}),
     "released-coulomb-exact": (lambda: _released("coulomb"), tol.ROUNDOFF_RELEASED_H, {"degree": 2, "displacement_scale": True}),
     "unloaded": (_unloaded, None),

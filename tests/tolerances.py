@@ -410,9 +410,14 @@ RELEASED_MU = 0.3
 #: tests/scenes/shearslide.toml cut at this increment, where its shear
 #: reaches exactly μp (tests/roundoff.py, "tie-exact"), at this spacing:
 #: efgm P1 exited at increment 4 after 25 iterations (grader1 item 2); it
-#: needs 65.
+#: needs 34 (59 before the line search took whole the steps that only move
+#: points on from stick to slip, 2026-11-27).
 TIE_INCREMENT = 4
 ROUNDOFF_TIE_H = 0.05
+#: The tie again at half that spacing (360 points, 170 sticking at the
+#: end): its Newton takes ~70 whole steps that only move points on from
+#: stick to slip (contactcore.newton, _Newton._onward), a decision each.
+ROUNDOFF_TIE_FINE_H = 0.025
 
 #: The tie's spacing where a failure's message is read
 #: (tests/test_newton_messages.py): coarse, its fourth increment six
@@ -432,7 +437,12 @@ RELEASED_PROFILES = 5e-8
 #: displacement (fe's and xfem's stick exactly: their jumps are round-off).
 #: Measured 2026-11-27, Haswell against Nehalem and Sandybridge, status maps
 #: identical (efgm 31 stick, 149 slip at the tie): efgm 1.8e-13 and
-#: 2.8e-15, fe and xfem 1.2e-14 and 2e-17.  10x efgm's worst.
+#: 2.8e-15, fe and xfem 1.2e-14 and 2e-17.  10x efgm's worst.  Measured
+#: again later that day (63 stick, 117 slip; the same before and after the
+#: line search's whole steps onward), Haswell against Nehalem, Sandybridge,
+#: Zen, Prescott and EFGM's nodes shuffled: efgm up to 1.5e-12 and 3.0e-14
+#: (1.3e-12 and 6.5e-15 at h = 0.025, tie-exact-fine); loads scaled by
+#: 1 + 1e-12 move fe's and xfem's tractions by 1.0e-12 themselves.
 TIE_PROFILES = 2e-12
 
 #: Scene A on Coulomb springs loaded, unloaded to zero and held
@@ -490,7 +500,7 @@ ROUNDOFF_PROFILES = {"C-coulomb-10x": 1e-8, "C-coulomb-100x": 1e-8, "contrast-1e
                      "C-coulomb-exact": 1e-11, "inclined-exact": 2e-11, "stiff-layer-exact": 5e-9,
                      "disc-pressed": 1e-10, "disc-pulled": 1e-10,
                      "disc-squeezed-exact": 1e-11, "disc-squeezed-penalty": 1e-11,
-                     "tie-exact": TIE_PROFILES, "released-exact": RELEASED_PROFILES, "released-coulomb-exact": RELEASED_PROFILES,
+                     "tie-exact": TIE_PROFILES, "tie-exact-fine": TIE_PROFILES, "released-exact": RELEASED_PROFILES, "released-coulomb-exact": RELEASED_PROFILES,
                      "unloaded": UNLOADED_PROFILES}
 
 #: The exact-law round-off cases: the lower layer of the layered-slip closed
