@@ -47,6 +47,7 @@ if __name__ == "__main__":
 import argparse
 import logging
 import math
+import re
 import threading
 from contextlib import ExitStack, contextmanager
 from dataclasses import dataclass
@@ -601,8 +602,25 @@ def _python_handles_signals() -> None:
         os.environ["PETSC_OPTIONS"] = f"{given} {NO_PETSC_SIGNALS}".strip()
 
 
+#: The prefixes of the PETSc options a solver reads (KSP, PC, matrix and
+#: MUMPS): the toolkit's solvers read theirs under a prefix of their own
+#: (contactcore.linear_solver), so such an option in ``PETSC_OPTIONS`` never
+#: reaches them; global ones (``-log_view``, ``-info``) still apply.
+SOLVER_OPTION_PREFIXES = ("ksp_", "pc_", "mat_")
+
+
+def _unread_petsc_options(given: str) -> list[str]:
+    """The solver options of the environment's ``PETSC_OPTIONS`` (``given``),
+    which the toolkit's solvers never read (:data:`SOLVER_OPTION_PREFIXES`):
+    ``-mat_mumps_icntl_7 5`` there left the ordering at the toolkit's own
+    without a word."""
+    keys = (word.lstrip("-") for word in given.split() if re.match(r"-[A-Za-z]", word))
+    return [key for key in keys if key.startswith(SOLVER_OPTION_PREFIXES)]
+
+
 def main(argv=None) -> int:
     argv = sys.argv[1:] if argv is None else argv
+    unread = _unread_petsc_options(os.environ.get("PETSC_OPTIONS", ""))
     _python_handles_signals()
     commands = _commands()
     args = _parser(commands).parse_args(argv)
@@ -610,6 +628,9 @@ def main(argv=None) -> int:
     from .pool import distributed, launched_rank
     rank = launched_rank()
     repeats = _configure_logging(args.verbosity if rank == 0 else -2)  # one log, rank 0's
+    if unread:
+        log.warning("PETSC_OPTIONS sets %s, which the toolkit's solvers do not read (each reads its options "
+                    "under a prefix of its own); pass --petsc-option KEY=VALUE instead", ", ".join(unread))
     try:
         _take_over_signals()
         with _signals_end_the_command(rank, distributed()):
