@@ -58,7 +58,12 @@ that run's error is still the singular point's own, and a stencil over
 1/:data:`~contactcore.tolerances.FEATURE_STENCILS` of the scene's smallest
 feature (:func:`feature_size`) resolves it pre-asymptotically.  Richardson
 cannot see either from two runs; the estimate names the quantities
-concerned in a warning (:func:`unsettled`).
+concerned in a warning (:func:`unsettled`).  It names too the quantities
+whose coarse run varies from cell to cell faster than theory allows
+(:func:`cell_scale_orders`), and those whose runs differ a thousand times
+less than others of their kind in the same runs, where the error's
+leading term cancels and a smaller one of another order may set the rate
+(:func:`residues`).
 
 For a law with history (unilateral, Coulomb) the profiles are the final
 increment's, and the status along Γ (open, stick, slip) of the two runs is
