@@ -176,9 +176,10 @@ def scene_rows(scene, key: tuple, h: float, truth: dict[str, ProfileData], level
     over the samples away from singular points, the true error
     relative to the quantity's largest |value| there, and whether the
     estimate warned that it is not asymptotic (``warned``:
-    :func:`contactcore.estimate.unsettled`, the coarse run's stencil, or
+    :func:`contactcore.estimate.unsettled`, the coarse run's stencil,
     :func:`contactcore.estimate.cell_scale_orders`, its variation from
-    cell to cell)."""
+    cell to cell, or :func:`contactcore.estimate.residues`, a difference
+    a thousand times below its kind's)."""
     disc = methods.discretisation(key[0])(degree=key[1])
     results = [solve(scene, disc, hk) for hk in est.levels_of(h, levels)]
     exclude = default_exclusion(scene)
