@@ -1,11 +1,12 @@
-"""What the stabilisation β moves on scene A (issue 33; docs/contact-enforcement.md,
-"What β moves on Γ").
+"""What the stabilisation β moves on scene A (docs/contact-enforcement.md,
+"What β moves, re-measured at three h").
 
 Scene A with the unilateral law enforced exactly: Γ closed and tied, both
 blocks of one material, so the exact σxx is continuous across Γ.  A3 is
-σxx on Γ read on the + side (docs/scenes.md).  At β/10 and 10β, fe P2's and
-efgm P2's A3 moves more than halving h moves it (the acceptance of issue 33
-fails there, measured 2026-11-27).  What β moves is the jump σxx⁺ − σxx⁻
+σxx on Γ read on the + side (docs/scenes.md).  β/10 and 10β each move fe P2's A3
+more than halving h moves it, and efgm P2's β/10 and 10β answers lie
+further apart than h and h/2 (the acceptance that β 10× either way moves
+a profile less than h → h/2 fails there, measured 2026-11-27).  What β moves is the jump σxx⁺ − σxx⁻
 across Γ, the weak tie's residue (∂g_T/∂x at a small β, the elements' own
 stress jump at a large one): its two sides move by about equal and opposite
 amounts, and their mean moves with β less than with h.  The tests pin that

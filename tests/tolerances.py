@@ -585,7 +585,7 @@ BETA_ERROR_SPREAD = 3.0
 #: and 0.10/0.19 at h = 0.025), and half the change of the jump σxx⁺ − σxx⁻
 #: is at least BETA_JUMP_SHARE of the + side's move (measured 0.99-1.01 at
 #: h = 0.05, 0.90-1.02 at 0.025; 2026-11-27, docs/contact-enforcement.md,
-#: "What β moves on Γ").
+#: "What β moves, re-measured at three h").
 BETA_MEAN_SHARE = 0.5
 BETA_JUMP_SHARE = 0.8
 
