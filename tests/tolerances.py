@@ -588,6 +588,17 @@ BETA_H = 0.05
 BETA_ERROR_FALLS = 2.0
 BETA_ERROR_SPREAD = 3.0
 
+#: Scene A exact unilateral, A3 (σxx on Γ) at h = BETA_H, fe P2 and efgm
+#: P2 (tests/test_beta_independence.py): β/10 and 10β move the mean of Γ's
+#: two sides' σxx by less than BETA_MEAN_SHARE of what halving h moves it
+#: (measured 0.24 and 0.11 for fe P2, 0.06 and 0.21 for efgm P2; 0.23/0.13
+#: and 0.10/0.19 at h = 0.025), and half the change of the jump σxx⁺ − σxx⁻
+#: is at least BETA_JUMP_SHARE of the + side's move (measured 0.99-1.01 at
+#: h = 0.05, 0.90-1.02 at 0.025; 2026-11-27, docs/contact-enforcement.md,
+#: "What β moves, re-measured at three h").
+BETA_MEAN_SHARE = 0.5
+BETA_JUMP_SHARE = 0.8
+
 # --- error estimates (tests/test_estimate.py; contactcore.estimate) ---------
 
 #: The effectivity (estimate ÷ true error, RMS over a profile; η over

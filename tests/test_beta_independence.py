@@ -1,0 +1,70 @@
+"""What the stabilisation β moves on scene A (docs/contact-enforcement.md,
+"What β moves, re-measured at three h").
+
+Scene A with the unilateral law enforced exactly: Γ closed and tied, both
+blocks of one material, so the exact σxx is continuous across Γ.  A3 is
+σxx on Γ read on the + side (docs/scenes.md).  β/10 and 10β each move fe P2's A3
+more than halving h moves it, and efgm P2's β/10 and 10β answers lie
+further apart than h and h/2 (the acceptance that β 10× either way moves
+a profile less than h → h/2 fails there, measured 2026-11-27).  What β moves is the jump σxx⁺ − σxx⁻
+across Γ, the weak tie's residue (∂g_T/∂x at a small β, the elements' own
+stress jump at a large one): its two sides move by about equal and opposite
+amounts, and their mean moves with β less than with h.  The tests pin that
+cause; where it stops holding the docs' explanation is wrong."""
+import functools
+from dataclasses import replace
+
+import numpy as np
+import pytest
+
+import tolerances as tol
+from contactcore import discretisation, load_scene, make_law
+from contactcore.estimate import far_from_singular
+from contactcore.profiles import sample_profile
+from contactcore.tolerances import NITSCHE_STABILISATION
+from efgm.options import EFGM
+from verification.agreement import default_exclusion
+from xdolfinx.options import FE
+
+#: The variants whose A3 β moves more than h/2 does while Γ's two sides of it
+#: stay apart (xfem P1's − side at Γ on a row of nodes is a sliver's and is
+#: not in the average: its β move is the + side's own, docs).
+VARIANTS = {("fe", 2): FE(degree=2), ("efgm", 2): EFGM(degree=2)}
+IDS = lambda k: f"{k[0]}-P{k[1]}"  # noqa: E731
+
+
+@functools.lru_cache(maxsize=None)
+def _a3_sides(key, h, beta):
+    """A3's σxx on Γ from the + and the − side, and the samples away from
+    singular points, for scene A exact unilateral at stabilisation ``beta``."""
+    base = load_scene("A")
+    scene = base.with_changes(law=make_law({"type": "unilateral", "enforcement": "exact", "stabilisation": beta}))
+    result = discretisation.solve(scene, VARIANTS[key], h)
+    profile = next(p for p in scene.profiles if p.id == "A3")
+    sides = {side: sample_profile(scene, result.fields, replace(profile, side=side), result.interface).columns
+             for side in ("plus", "minus")}
+    keep = far_from_singular(base, np.column_stack([sides["plus"]["x"], sides["plus"]["y"]]), default_exclusion(base))
+    return sides["plus"]["sxx"][keep], sides["minus"]["sxx"][keep]
+
+
+def _rms(a, b):
+    return float(np.sqrt(np.mean((a - b) ** 2)))
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("key", list(VARIANTS), ids=IDS)
+def test_the_stabilisation_moves_the_stress_jump_across_gamma_not_its_mean(key):
+    """At h = BETA_H, β/10 and 10β move A3 by the jump across Γ: the mean of
+    the two sides moves with β by less than BETA_MEAN_SHARE of h → h/2's move
+    of it, and half the change of σxx⁺ − σxx⁻ is at least BETA_JUMP_SHARE of
+    the + side's move (RMS over the samples away from singular points)."""
+    beta, h = NITSCHE_STABILISATION, tol.BETA_H
+    plus, minus = _a3_sides(key, h, beta)
+    fine_plus, fine_minus = _a3_sides(key, h / 2, beta)
+    mean, jump = 0.5 * (plus + minus), plus - minus
+    halved = _rms(mean, 0.5 * (fine_plus + fine_minus))
+    for factor in (0.1, 10.0):
+        p, m = _a3_sides(key, h, factor * beta)
+        assert _rms(0.5 * (p + m), mean) < tol.BETA_MEAN_SHARE * halved, (factor, _rms(0.5 * (p + m), mean), halved)
+        half_jump = 0.5 * ((p - m) - jump)
+        assert _rms(half_jump, 0) >= tol.BETA_JUMP_SHARE * _rms(p, plus), (factor, _rms(half_jump, 0), _rms(p, plus))
