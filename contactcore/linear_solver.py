@@ -18,6 +18,12 @@ warning in the report.  Each factorisation keeps its options in PETSc's
 options database under its owner's ``prefix`` (the method that made the
 matrix) and a number of its own, and removes them when destroyed.
 
+Under mpirun every rank judges a solve alike: its residual by PETSc's
+norms over the ranks, and its KSP reason and preconditioner failure
+reduced over them (:func:`_outcome`), so that a factorisation that fails
+on one rank's block only (``pc_type`` ``bjacobi`` or ``asm``) is refused
+with the same message on every rank.
+
 Every PETSc object made here is destroyed here, and every petsc4py handle
 on a part of one (``ksp.getPC()``, ``pc.getFactorMatrix()``) is released
 before its owner is destroyed: with petsc4py 3.18 a handle that outlives the

@@ -130,12 +130,16 @@ class _Newton:
         return R, self.ranks.max(forces), self.ranks.max(data)
 
     def _least(self, u) -> float:
-        """The least round-off scale of a residual at ``u``: RESIDUAL_FLOOR
-        of the scene's full loads, or of the forces ``u``'s size makes
-        (``A u`` sums terms of that size, however well they cancel: a body
-        displaced rigidly, stress-free at zero load, has ``A u`` of ε|u|)."""
+        """The least round-off scale of a residual at ``u``, for the health
+        check (RESIDUAL_FAIL) only: RESIDUAL_FLOOR of the scene's full
+        loads, or the scale at which the round-off ``A u`` carries,
+        PRODUCT_ROUNDOFF of ``|u|``, is RESIDUAL_FAIL of it (``A u`` sums
+        terms of ``u``'s size, however well they cancel: a body displaced
+        rigidly, stress-free at zero load, has ``A u`` of round-off).  Never
+        a convergence floor: NEWTON_RTOL of it would be round-off itself
+        (PRODUCT_ROUNDOFF's note)."""
         size = self.ranks.max(float(np.max(np.abs(u[self.balance]), initial=0.0)))
-        return max(self._least_force, tol.RESIDUAL_FLOOR * size)
+        return max(self._least_force, tol.PRODUCT_ROUNDOFF / tol.RESIDUAL_FAIL * size)
 
     def _lift(self, supports) -> float:
         """The largest force on a free unknown of the prescribed
@@ -296,14 +300,17 @@ class _Newton:
             # back to zero — has internal forces of round-off, which alone made
             # round-off look like a residual of order 1; and a load held at
             # zero has nothing but round-off, so RESIDUAL_FLOOR of the
-            # scene's full loads, or of the forces u's size makes, is the
+            # scene's full loads, or the round-off of A u at u's size, is the
             # least scale (_least).
             least = self._least(u)
             scale = max(forces, data, lift, start, least)
             history.append(norm / scale if scale > 0 else norm)
             if not np.isfinite(norm):
                 raise SolverError(f"the residual is not finite; residual history {_fmt(history)}")
-            judged_forces = max(forces, least)  # what _converged judges the balance against
+            # what _converged judges the balance against: the forces, at least
+            # RESIDUAL_FLOOR of the full loads; not the round-off floor of u's
+            # size, whose NEWTON_RTOL is the round-off of A u (PRODUCT_ROUNDOFF)
+            judged_forces = max(forces, self._least_force)
             judged.append(self._balance(R) / judged_forces if judged_forces > 0 else self._balance(R))
             if it > 1 and self._converged(R, judged_forces, tangent, response, du, u - u0):
                 health.check_residual(history[-1], "the settled Newton step")

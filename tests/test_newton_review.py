@@ -147,3 +147,43 @@ def test_a_zero_pivot_on_one_rank_is_refused_alike_on_every_rank(tmp_path, ranks
     assert len(messages) == 1, messages
     assert re.fullmatch(r"linear system: the factorisation failed \(PETSc reason -11: a sub-preconditioner failed\) "
                         r"— the matrix may be singular: a rigid-body mode is not removed .*", messages.pop())
+
+
+def test_no_step_converges_by_a_residual_test_on_round_off(monkeypatch):
+    """Finding 2.  A block pressed and pulled open (tests/scenes/presspull.toml,
+    fe P1, h = 0.2) ends stress-free: at its pulled steps the equilibrium
+    rows' forces and residual are round-off of ``A u`` (2.5e-17 at
+    |u| = 0.5).  Newton's residual test judged them against a floor of
+    RESIDUAL_FLOOR |u| of forces, whose NEWTON_RTOL, 1e-16 |u|, lies inside
+    the round-off ``A u`` carries (6.6e-18 to 1.7e-15 |u| measured,
+    contactcore.tolerances.PRODUCT_ROUNDOFF): the test passed there
+    (2.5e-17 <= 5e-17), a decision round-off made.  The |u| floor is now
+    the health check's only, and the residual test alone (the map's settling
+    and a still step aside) passes no step whose forces and residual are
+    both within PRODUCT_ROUNDOFF |u|; the steps converge by their settled
+    maps, in as many iterations."""
+    from contactcore import newton
+    from contactcore import tolerances as ctol
+
+    decisions, forces_at = [], {}
+    residual, converged = newton._Newton._residual, newton._Newton._converged
+
+    def stash(self, u, b, response):
+        out = residual(self, u, b, response)
+        forces_at[id(self)] = (out[1], float(np.max(np.abs(u[self.balance]), initial=0.0)))
+        return out
+
+    def judged(self, R, forces, tangent, response, du, moved):
+        alone = converged(self, R, forces, None, response, None, moved)  # the residual test alone
+        decisions.append((self._balance(R), *forces_at[id(self)], alone))
+        return converged(self, R, forces, tangent, response, du, moved)
+
+    monkeypatch.setattr(newton._Newton, "_residual", stash)
+    monkeypatch.setattr(newton._Newton, "_converged", judged)
+    result = methods.solver("fe")(load_scene(ROOT / "tests" / "scenes" / "presspull.toml"), 0.2,
+                                  estimate_condition=False)
+    on_round_off = [(b, f, a) for b, f, size, a in decisions
+                    if max(b, f) <= ctol.PRODUCT_ROUNDOFF * size and size > 0]
+    assert on_round_off  # the pulled steps are there
+    assert not any(alone for _, _, alone in on_round_off), on_round_off
+    assert result.solver.iterations == [1] * len(result.solver.iterations)
