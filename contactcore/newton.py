@@ -180,7 +180,7 @@ class _Newton:
                     raise softer from None
 
     def _approached(self, k: float):
-        """The step to ``k`` (:meth:`_iterate`).  One that takes every load
+        """The step to ``k`` (:meth:`_solved`).  One that takes every load
         to zero from a loaded state (prescribed displacements may stay),
         under a law with history, where a body is held by Γ alone, is solved
         as the limit of the loads along the step: first to LOAD_APPROACH of
@@ -195,7 +195,9 @@ class _Newton:
         load below some share of the step (measured: 1e-2 to 1e-6), where
         the answer is linear in the load; from it one solve of that map at
         zero lands on the limit, the point's trial zero (at rest), every
-        other point slipping on its history with zero traction."""
+        other point slipping on its history with zero traction.  Each of the
+        two solves has the exact law's fallbacks (:meth:`_solved`), never the
+        zero load itself from the committed state."""
         start = self.path.steps[-1].step if self.path.steps else 0.0
         if not (self.law.has_history and self._unloaded(k) and not self._unloaded(start) and self._held_by_gamma()):
             return self._solved(k)
