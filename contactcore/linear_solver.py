@@ -18,6 +18,12 @@ warning in the report.  Each factorisation keeps its options in PETSc's
 options database under its owner's ``prefix`` (the method that made the
 matrix) and a number of its own, and removes them when destroyed.
 
+Under mpirun every rank judges a solve alike: its residual by PETSc's
+norms over the ranks, and its KSP reason and preconditioner failure
+reduced over them (:func:`_outcome`), so that a factorisation that fails
+on one rank's block only (``pc_type`` ``bjacobi`` or ``asm``) is refused
+with the same message on every rank.
+
 Every PETSc object made here is destroyed here, and every petsc4py handle
 on a part of one (``ksp.getPC()``, ``pc.getFactorMatrix()``) is released
 before its owner is destroyed: with petsc4py 3.18 a handle that outlives the
@@ -263,9 +269,11 @@ PC_FAILURES = {1: "a structurally zero pivot", 2: "a zero pivot", 3: "memory ran
 
 
 def _pc_failure(ksp) -> int | None:
-    """``PCGetFailedReason`` of ``ksp``'s PC (reduced over its ranks by
-    the solve), or None where it cannot be asked."""
-    failed = _petsc_function("PCGetFailedReason", ctypes.c_void_p, ctypes.POINTER(ctypes.c_int))
+    """``PCGetFailedReasonRank`` of ``ksp``'s PC (this rank's: PETSc
+    3.18's ``PCGetFailedReason`` is reduced over the ranks only by a
+    Krylov method's dot products or norms, never by ``preonly``), or None
+    where it cannot be asked."""
+    failed = _petsc_function("PCGetFailedReasonRank", ctypes.c_void_p, ctypes.POINTER(ctypes.c_int))
     if failed is None:
         return None
     pc, reason = ksp.getPC(), ctypes.c_int(0)
@@ -275,11 +283,35 @@ def _pc_failure(ksp) -> int | None:
         pc.destroy()
 
 
-def _diverged(ksp, reason: int, what: str, residual: float) -> SolverError:
+def _outcome(ksp) -> tuple[int, int | None]:
+    """``ksp``'s converged reason and its PC's failure (:func:`_pc_failure`),
+    the same on every rank: the least reason and the largest failure over
+    the ranks.  With ``preonly`` a factorisation that fails on some ranks
+    only (a zero pivot in one rank's block of ``bjacobi`` or ``asm``) is
+    reported on those ranks alone (PETSc 3.18's KSPSolve_PREONLY), and the
+    others answered as if solved: measured under ``mpirun -n 2`` and
+    ``-n 3``, a zero pivot on rank 1 only gave rank 0 a solved step (and
+    rank 1 the refusal), on rank 0 only the other ranks "relative residual
+    nan": their Newtons then went different ways (tests/test_newton_review.py)."""
+    reason, failure = ksp.getConvergedReason(), _pc_failure(ksp)
+    comm = ksp.getComm()
+    if comm.getSize() == 1:
+        return reason, failure
+    # PETSc's own reduction (no mpi4py here): the least reason is the largest -reason
+    values = PETSc.Vec().createMPI((2, None), bsize=2, comm=comm)
+    try:
+        values.setArray([-float(reason), -1.0 if failure is None else float(failure)])
+        least, largest = -int(values.strideMax(0)[1]), int(values.strideMax(1)[1])
+    finally:
+        values.destroy()
+    return least, (None if largest < 0 else largest)
+
+
+def _diverged(ksp, reason: int, what: str, residual: float, failure: int | None = None) -> SolverError:
     """The refusal of a solve PETSc reports as diverged (``reason`` < 0),
-    naming the singular matrix where the factorisation met a zero pivot."""
+    naming the singular matrix where the factorisation met a zero pivot
+    (``failure``, :func:`_outcome`)."""
     if reason == PETSc.KSP.ConvergedReason.DIVERGED_PCSETUP_FAILED:
-        failure = _pc_failure(ksp)
         if failure in (1, 2):
             return SolverError(f"{what} is singular to working precision: the factorisation met "
                               f"{PC_FAILURES[failure]} (PETSc reason {reason}) — {SINGULAR}")
@@ -448,10 +480,10 @@ class Factorisation:
                                        f"{tol.CONDITION_WARN:.0e}: digits may be lost (penalty too stiff for "
                                        "the mesh?)")
         report.iterations = [self.ksp.getIterationNumber()]
-        reason = self.ksp.getConvergedReason()
+        reason, failure = _outcome(self.ksp)
         _measure_residual(self.A, b, x, report, force_scale)
         if reason < 0:
-            raise _diverged(self.ksp, reason, self.what, report.residual)
+            raise _diverged(self.ksp, reason, self.what, report.residual, failure)
         health.check_residual(report.residual, self.what, report.backward_error)
         return report
 

@@ -130,12 +130,16 @@ class _Newton:
         return R, self.ranks.max(forces), self.ranks.max(data)
 
     def _least(self, u) -> float:
-        """The least round-off scale of a residual at ``u``: RESIDUAL_FLOOR
-        of the scene's full loads, or of the forces ``u``'s size makes
-        (``A u`` sums terms of that size, however well they cancel: a body
-        displaced rigidly, stress-free at zero load, has ``A u`` of ε|u|)."""
+        """The least round-off scale of a residual at ``u``, for the health
+        check (RESIDUAL_FAIL) only: RESIDUAL_FLOOR of the scene's full
+        loads, or the scale at which the round-off ``A u`` carries,
+        PRODUCT_ROUNDOFF of ``|u|``, is RESIDUAL_FAIL of it (``A u`` sums
+        terms of ``u``'s size, however well they cancel: a body displaced
+        rigidly, stress-free at zero load, has ``A u`` of round-off).  Never
+        a convergence floor: NEWTON_RTOL of it would be round-off itself
+        (PRODUCT_ROUNDOFF's note)."""
         size = self.ranks.max(float(np.max(np.abs(u[self.balance]), initial=0.0)))
-        return max(self._least_force, tol.RESIDUAL_FLOOR * size)
+        return max(self._least_force, tol.PRODUCT_ROUNDOFF / tol.RESIDUAL_FAIL * size)
 
     def _lift(self, supports) -> float:
         """The largest force on a free unknown of the prescribed
@@ -150,28 +154,33 @@ class _Newton:
 
     def step(self, k: float) -> None:
         """Converge the step to increment ``k`` from the committed state and
-        commit it, or raise SolverError with the residual history.  An exact
-        law whose step fails is continued in its stabilisation
-        (:meth:`_continued`), else started from a stiffer one
-        (:meth:`_from_stiffer`)."""
+        commit it, or raise SolverError with the residual history
+        (:meth:`_approached`)."""
+        self._commit(k, *self._approached(k))
+
+    def _solved(self, k: float, start=None):
+        """The step to ``k`` (:meth:`_iterate`, from the committed state or
+        from ``start``, ``(u, statuses)``).  An exact law whose step fails is
+        continued in its stabilisation (:meth:`_continued`), else started
+        from a stiffer one (:meth:`_from_stiffer`), each from ``start``
+        too."""
         try:
-            converged = self._approached(k)
+            return self._iterate(k, start=start)
         except (SolverOptionError, health.FreeBody):
             raise
         except SolverError:
             if not self.itf.exact:  # a penalty law has no stabilisation to continue in
                 raise
             try:
-                converged = self._continued(k, 1.0)
+                return self._continued(k, 1.0, start)
             except SolverError as softer:
                 try:
-                    converged = self._from_stiffer(k)
+                    return self._from_stiffer(k, start)
                 except SolverError:
                     raise softer from None
-        self._commit(k, *converged)
 
     def _approached(self, k: float):
-        """The step to ``k`` (:meth:`_iterate`).  One that takes every load
+        """The step to ``k`` (:meth:`_solved`).  One that takes every load
         to zero from a loaded state (prescribed displacements may stay),
         under a law with history, where a body is held by Γ alone, is solved
         as the limit of the loads along the step: first to LOAD_APPROACH of
@@ -186,13 +195,20 @@ class _Newton:
         load below some share of the step (measured: 1e-2 to 1e-6), where
         the answer is linear in the load; from it one solve of that map at
         zero lands on the limit, the point's trial zero (at rest), every
-        other point slipping on its history with zero traction."""
+        other point slipping on its history with zero traction.  Each of the
+        two solves has the exact law's fallbacks (:meth:`_solved`), never the
+        zero load itself from the committed state."""
         start = self.path.steps[-1].step if self.path.steps else 0.0
         if not (self.law.has_history and self._unloaded(k) and not self._unloaded(start) and self._held_by_gamma()):
-            return self._iterate(k)
+            return self._solved(k)
+        # each of the two solves with an exact law's fallbacks (_solved): a
+        # fallback of the step to zero solved from the committed state would
+        # meet the singular zero load itself, and round-off chose the answer
+        # (exact unloaded.toml: the block 1.2e-10 or 5.1e-8 m along by
+        # kernel, xfem P1 at h = 0.05; docs/newton.md, "A load back to zero")
         near = k + tol.LOAD_APPROACH * (start - k)
-        _, u, response, approach, _ = self._iterate(near)
-        factors, u, response, iterations, history = self._iterate(k, start=(u, response.status))
+        _, u, response, approach, _ = self._solved(near)
+        factors, u, response, iterations, history = self._solved(k, start=(u, response.status))
         return factors, u, response, approach + iterations, history
 
     def _unloaded(self, k: float) -> bool:
@@ -206,7 +222,7 @@ class _Newton:
         closed and slips leaves a rigid motion free (:func:`health.slips_free`)."""
         return health.slips_free(self.scene, *self._gamma, np.full(len(self._gamma[1]), SLIP, np.int8))
 
-    def _from_stiffer(self, k: float):
+    def _from_stiffer(self, k: float, start=None):
         """The step to ``k`` started from its solution at CONTINUATION_STEP
         times the stabilisation, where the softer continuation failed.
         Newton from the committed state can settle where no step leaves
@@ -215,9 +231,9 @@ class _Newton:
         maps; its answer differs from this one's by the stabilisation's
         small effect (Nitsche is consistent) and starts Newton next to it
         with its sticking points."""
-        return self._at(k, 1.0, self._at(k, tol.CONTINUATION_STEP))
+        return self._at(k, 1.0, _started(self._at(k, tol.CONTINUATION_STEP, start)))
 
-    def _continued(self, k: float, factor: float):
+    def _continued(self, k: float, factor: float, start=None):
         """The step to ``k`` at ``factor`` times the stabilisation, started
         from its solution at a tenth of it (solved the same way, down to
         CONTINUATION_FLOOR): a stiff γ narrows every point's stick window to
@@ -227,22 +243,22 @@ class _Newton:
         starts Newton next to the answer with the right status map."""
         softer = factor / tol.CONTINUATION_STEP
         try:
-            start = self._at(k, softer)
+            answer = self._at(k, softer, start)
         except SolverError:
             if softer / tol.CONTINUATION_STEP < tol.CONTINUATION_FLOOR:
                 raise
-            start = self._continued(k, softer)
-        return self._at(k, factor, start)
+            answer = self._continued(k, softer, start)
+        return self._at(k, factor, _started(answer))
 
     def _at(self, k: float, factor: float, start=None):
         """The step to ``k`` at ``factor`` times the stabilisation of the
         interface Newton is on, from the committed state or from ``start``
-        (another :meth:`_iterate`'s answer: its ``u`` and status map); that
-        interface is Newton's again afterwards, whatever the outcome."""
+        (``(u, statuses)``); that interface is Newton's again afterwards,
+        whatever the outcome."""
         target = self.itf
         self._use(target.softened(factor) if factor != 1.0 else target)
         try:
-            return self._iterate(k, start=None if start is None else (start[1], start[2].status))
+            return self._iterate(k, start=start)
         finally:
             self._use(target)
 
@@ -286,14 +302,17 @@ class _Newton:
             # back to zero — has internal forces of round-off, which alone made
             # round-off look like a residual of order 1; and a load held at
             # zero has nothing but round-off, so RESIDUAL_FLOOR of the
-            # scene's full loads, or of the forces u's size makes, is the
+            # scene's full loads, or the round-off of A u at u's size, is the
             # least scale (_least).
             least = self._least(u)
             scale = max(forces, data, lift, start, least)
             history.append(norm / scale if scale > 0 else norm)
             if not np.isfinite(norm):
                 raise SolverError(f"the residual is not finite; residual history {_fmt(history)}")
-            judged_forces = max(forces, least)  # what _converged judges the balance against
+            # what _converged judges the balance against: the forces, at least
+            # RESIDUAL_FLOOR of the full loads; not the round-off floor of u's
+            # size, whose NEWTON_RTOL is the round-off of A u (PRODUCT_ROUNDOFF)
+            judged_forces = max(forces, self._least_force)
             judged.append(self._balance(R) / judged_forces if judged_forces > 0 else self._balance(R))
             if it > 1 and self._converged(R, judged_forces, tangent, response, du, u - u0):
                 health.check_residual(history[-1], "the settled Newton step")
@@ -684,6 +703,12 @@ def _unsettled(law, from_rest: bool = False) -> str:
     rest = ("; more increments do not help: from rest along a straight load path a smaller step is the same "
             "problem scaled" if from_rest else "")
     return f"either the load has no equilibrium ({held}) or {remedy}{rest}"
+
+
+def _started(answer) -> tuple[np.ndarray, np.ndarray]:
+    """An :meth:`_Newton._iterate` answer as the start of another solve:
+    its ``u`` and status map."""
+    return answer[1], answer[2].status
 
 
 def _flat(factors) -> np.ndarray:
