@@ -18,7 +18,9 @@ it.  With a third run at ``h/4`` the order is observed,
 over the samples away from singular points (a singularity's differences
 shrink at its own rate), clipped to
 :data:`~contactcore.tolerances.ORDER_RANGE`, and the estimate is the
-finest run's.  With two runs the method's theoretical order for the
+finest run's, at the least of that order and the two-run order below
+(an observed order above theory is the coarse run's error cancelling,
+not a faster rate: Roache's GCI, ASME V&V 20).  With two runs the method's theoretical order for the
 quantity is used (:func:`theoretical_order`): ``k + 1`` for a displacement
 and a gap (the L2 rate of degree k), and for a penalty law's traction on
 Γ, which the law computes from the gaps (``t = k_N g_N`` …) not from the
@@ -358,7 +360,9 @@ class QuantityEstimate:
     whether it was ``observed`` (three runs) or taken from the orders
     ``theory`` allows (:func:`order_range`; recorded as ``"orders"``, so
     that a user sees why a two-run order is, say, 2.205: the balanced
-    order of ``[1.52, 3]``).  ``cell_scale``, where the difference of
+    order of ``[1.52, 3]``); ``measured``, the order three runs showed
+    (recorded as ``"observed_order"``), of which ``order`` is the least
+    with the two-run one.  ``cell_scale``, where the difference of
     the runs was split (:func:`cell_scale_part`): the share (RMS) of its
     part at the scale of the coarse run's cells, estimated at the upper
     order of ``theory`` (recorded as ``"cell_scale"``)."""
@@ -439,7 +443,8 @@ def richardson(values: list[np.ndarray], theory: tuple[float, float], ratio: flo
     by default): near a singular point the differences shrink at the
     singularity's rate, not the smooth solution's, and would set it.
     Without a third run it is the :func:`balanced_order` of the orders
-    ``theory`` allows (:func:`order_range`); with ``cells`` (a function
+    ``theory`` allows (:func:`order_range`); with one, the least of the
+    observed order (``measured``) and that one; with ``cells`` (a function
     that returns a difference's part at the scale of the coarse run's
     cells, :func:`cell_scale_part`), that part is estimated at the upper
     order ``theory[1]`` and the rest at the balanced one: for a range
