@@ -18,7 +18,9 @@ it.  With a third run at ``h/4`` the order is observed,
 over the samples away from singular points (a singularity's differences
 shrink at its own rate), clipped to
 :data:`~contactcore.tolerances.ORDER_RANGE`, and the estimate is the
-finest run's.  With two runs the method's theoretical order for the
+finest run's, at the least of that order and the two-run order below
+(an observed order above theory is the coarse run's error cancelling,
+not a faster rate: Roache's GCI, ASME V&V 20).  With two runs the method's theoretical order for the
 quantity is used (:func:`theoretical_order`): ``k + 1`` for a displacement
 and a gap (the L2 rate of degree k), and for a penalty law's traction on
 Γ, which the law computes from the gaps (``t = k_N g_N`` …) not from the
@@ -363,7 +365,9 @@ class QuantityEstimate:
     whether it was ``observed`` (three runs) or taken from the orders
     ``theory`` allows (:func:`order_range`; recorded as ``"orders"``, so
     that a user sees why a two-run order is, say, 2.205: the balanced
-    order of ``[1.52, 3]``).  ``cell_scale``, where the difference of
+    order of ``[1.52, 3]``); ``measured``, the order three runs showed
+    (recorded as ``"observed_order"``), of which ``order`` is the least
+    with the two-run one.  ``cell_scale``, where the difference of
     the runs was split (:func:`cell_scale_part`): the share (RMS) of its
     part at the scale of the coarse run's cells, estimated at the upper
     order of ``theory`` (recorded as ``"cell_scale"``)."""
@@ -373,6 +377,7 @@ class QuantityEstimate:
     observed: bool
     theory: tuple[float, float]
     cell_scale: float | None = None
+    measured: float | None = None
 
     @property
     def max(self) -> float:
@@ -387,6 +392,8 @@ class QuantityEstimate:
                "orders": [float(t) for t in self.theory]}
         if self.cell_scale is not None:
             out["cell_scale"] = self.cell_scale
+        if self.measured is not None:
+            out["observed_order"] = self.measured
         return out
 
 
@@ -441,18 +448,21 @@ def richardson(values: list[np.ndarray], theory: tuple[float, float], ratio: flo
     by default): near a singular point the differences shrink at the
     singularity's rate, not the smooth solution's, and would set it.
     Without a third run it is the :func:`balanced_order` of the orders
-    ``theory`` allows (:func:`order_range`); with ``cells`` (a function
+    ``theory`` allows (:func:`order_range`); with one, the least of the
+    observed order (``measured``) and that one; with ``cells`` (a function
     that returns a difference's part at the scale of the coarse run's
     cells, :func:`cell_scale_part`), that part is estimated at the upper
     order ``theory[1]`` and the rest at the balanced one: for a range
     that pollution widened (:func:`profile_estimates`)."""
     kept = slice(None) if kept is None or not np.any(kept) else kept
     p = observed_order(*(v[kept] for v in values[-3:]), ratio=ratio) if len(values) >= 3 else None
-    order = balanced_order(*theory, ratio=ratio) if p is None else p
+    order = balanced_order(*theory, ratio=ratio)
+    if p is not None:  # an observed order above the two-run one is pre-asymptotic cancellation: not used
+        order = min(p, order)
     factor = lambda o: ratio ** o / (ratio ** o - 1) if coarse else 1 / (ratio ** o - 1)  # noqa: E731
     signed = values[-1] - values[-2]
     if p is not None or cells is None or theory[0] >= theory[1]:
-        return QuantityEstimate(np.abs(signed) * factor(order), order, p is not None, theory)
+        return QuantityEstimate(np.abs(signed) * factor(order), order, p is not None, theory, measured=p)
     fine = cells(signed)
     share = rms(fine[kept]) / rms(signed[kept]) if rms(signed[kept]) > 0 else 0.0
     error = np.abs((signed - fine) * factor(order) + fine * factor(theory[1]))
@@ -537,11 +547,20 @@ def order_warnings(estimates: dict[str, dict[str, QuantityEstimate]]) -> list[st
     allows, or was clipped to an end of
     :data:`~contactcore.tolerances.ORDER_RANGE` (the differences do not
     shrink like a power of h at all)."""
-    return [f"{pid}:{q}: observed order {e.order:.2f}{_clipped(e.order)} against {_orders(e.theory)} in theory: "
-            f"the runs are not in the asymptotic range, the estimate is not to be trusted"
+    return [f"{pid}:{q}: observed order {e.measured:.2f}{_clipped(e.measured)} against {_orders(e.theory)} in "
+            f"theory: the runs are not in the asymptotic range, the estimate is not to be trusted"
             for pid, qs in estimates.items() for q, e in qs.items()
-            if e.observed and (_clipped(e.order) or not e.theory[0] - tol.ORDER_MISMATCH <= e.order
-                               <= e.theory[1] + tol.ORDER_MISMATCH)]
+            if e.measured is not None and order_mismatch(e)]
+
+
+def order_mismatch(e: QuantityEstimate) -> bool:
+    """Whether ``e``'s observed order (three runs) lies further than
+    :data:`~contactcore.tolerances.ORDER_MISMATCH` from the orders theory
+    allows, or was clipped to an end of
+    :data:`~contactcore.tolerances.ORDER_RANGE`."""
+    p = e.measured
+    return p is not None and bool(_clipped(p) or not e.theory[0] - tol.ORDER_MISMATCH <= p
+                                  <= e.theory[1] + tol.ORDER_MISMATCH)
 
 
 def _clipped(order: float) -> str:
@@ -945,7 +964,8 @@ class Estimate:
     finest run's profiles as sampled (``sampled``, in the scene's order:
     what a driver writes, not sampled again), and the ``PID:Q`` whose
     estimate a warning calls not asymptotic (:func:`unsettled`,
-    :func:`cell_scale_orders`) or not to be trusted (:func:`residues`)."""
+    :func:`cell_scale_orders`, and with three runs :func:`order_mismatch`) or not
+    to be trusted (:func:`residues`)."""
 
     hs: tuple
     profiles: dict[str, dict[str, QuantityEstimate]]
@@ -999,7 +1019,8 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
         warnings += status_warning(status)
     zz = energy_estimate(scene, results[-1].fields, hs[-1], exclude) if energy else None
     return Estimate(hs, profiles, zz, status, warnings, levels[-1],
-                    {k for v in found.values() for k in v} | set(rough) | set(residue))
+                    {k for v in found.values() for k in v} | set(rough) | set(residue)
+                    | {f"{pid}:{q}" for pid, qs in profiles.items() for q, e in qs.items() if order_mismatch(e)})
 
 
 def estimate(scene: Scene, discretisation, h: float, levels: int = 2, *, exclude: float = 0.0, reuse=None,

@@ -174,12 +174,15 @@ def scene_rows(scene, key: tuple, h: float, truth: dict[str, ProfileData], level
     estimated from ``levels`` runs from ``h`` down: the RMS of the
     estimate and of the true error (against ``truth``) of the finest run,
     over the samples away from singular points, the true error
-    relative to the quantity's largest |value| there, and whether the
-    estimate warned that it is not asymptotic (``warned``:
-    :func:`contactcore.estimate.unsettled`, the coarse run's stencil,
-    :func:`contactcore.estimate.cell_scale_orders`, its variation from
-    cell to cell, or :func:`contactcore.estimate.residues`, a difference
-    a thousand times below its kind's)."""
+    relative to the quantity's largest |value| there (``relative``: the
+    true RMS over the largest |value| of the truth on the same samples,
+    no unit), and whether the estimate warned that it is not asymptotic
+    (``warned``: :func:`contactcore.estimate.unsettled`, the coarse run's
+    stencil, :func:`contactcore.estimate.cell_scale_orders`, its variation
+    from cell to cell, :func:`contactcore.estimate.residues`, a difference
+    a thousand times below its kind's, or with three levels
+    :func:`contactcore.estimate.order_mismatch`, the observed order: the
+    same entries as ``run --estimate``'s warnings name)."""
     disc = methods.discretisation(key[0])(degree=key[1])
     results = [solve(scene, disc, hk) for hk in est.levels_of(h, levels)]
     exclude = default_exclusion(scene)

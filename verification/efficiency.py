@@ -4,7 +4,8 @@ For one scene: a refined conforming reference (P2, curved cells, at
 ``--ref-h``), then each method and degree on a ladder of resolutions.  The
 error of a run is the worst, over the scene's profiles and quantities, of
 the relative RMS difference to the reference (:mod:`verification.agreement`:
-samples near corners and the ends of Γ left out, each quantity measured
+samples near the scene's corners and the ends of a straight Γ left out, if
+it has any: a disc with a circular Γ has none, each quantity measured
 against its vector's or tensor's size: t_T against |t|).  Each run is timed by stage (mesh,
 assembly, solve, total) after one warm-up solve per method and degree (the
 one-off JIT compilation is not a steady cost); a run under a second is
@@ -206,7 +207,8 @@ def efficiency(scene_name: str, variants, ladders: dict, ref_h: float | None, ex
     headers = ["method", "degree", files.labelled("h", "h", scene.units), "DOFs", "mesh", "assembly", "solve",
                "total", "error" if ref is not None else "estimated error", "worst at"]
     text = (f"## Error against run time, scene {scene.name}\n\n"
-            + _error_sentence(ref_h, ref_dofs, exclude, scene.units.length)
+            + _error_sentence(ref_h, ref_dofs, exclude, scene.units.length,
+                              tuple(name for name, _ in estimates.singular_regions(scene)))
             + f" Times in s, after a warm-up solve; a run under {REPEAT_BELOW:g} s is the fastest of {REPEATS}; "
             f"measured by {measured_by} at once (rungs beside each other share the cores).\n\n"
             f"{soonest(rows)}\n\nWhich method to pick for a target error (the fastest measured rung that "
@@ -219,9 +221,18 @@ def efficiency(scene_name: str, variants, ladders: dict, ref_h: float | None, ex
     return text
 
 
-def _error_sentence(ref_h: float | None, ref_dofs: int | None, exclude: float, length: str = "m") -> str:
-    """How the table's error was measured, its lengths in the scene's unit named ``length``."""
-    where = f"samples within {exclude:.3g} {length} of corners and of the ends of Γ left out."
+def _error_sentence(ref_h: float | None, ref_dofs: int | None, exclude: float, length: str = "m",
+                    regions: tuple[str, ...] = ("corners", "ends of Γ")) -> str:
+    """How the table's error was measured, its lengths in the scene's unit
+    named ``length``; ``regions``, the names of the scene's singular points
+    (:func:`contactcore.estimate.singular_regions`: none on a disc with a
+    circular Γ, whose samples are all kept)."""
+    if not regions or exclude <= 0:
+        where = "no sample was left out (the scene has no singular point)." if not regions else \
+            "no sample was left out."
+    else:
+        named = [name if name == "corners" else f"the {name}" for name in regions]
+        where = f"samples within {exclude:.3g} {length} of {' and of '.join(named)} left out."
     if ref_h is None:
         return (f"No reference: the error is ESTIMATED (Richardson, each rung against a run at h/2 at the "
                 f"method's theoretical order, contactcore.estimate), the worst relative RMS over the profiles, "
