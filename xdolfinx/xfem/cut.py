@@ -48,7 +48,7 @@ class CutIntegration:
     largest cell at the node): a cell whose corners off Γ all lie on one
     side is whole on that side, and Γ along an edge whose two ends are on
     Γ, between a whole − cell and a whole + cell, is that edge, its rule
-    held by the − cell alone (:meth:`_edge_rules`); a cell with corners off
+    held by the − cell alone (:func:`_edge_rules`); a cell with corners off
     Γ on both sides is cut along the exact Γ.  So no part of a cell is
     thinner than XFEM_SNAP of the cell.
 
@@ -72,7 +72,7 @@ class CutIntegration:
         self.stiffness = np.zeros((2, len(cells.node_side)))  # of each node's function on the − and + parts
         corner_phi = itf.phi(corners.reshape(-1, 2)).reshape(len(centre), -1)
         snapped = [c for c in self._near_cells(centre, radius, phi_c, corner_phi) if self._integrate(c, corner_phi[c])]
-        self._edge_rules(snapped)
+        _edge_rules(self, snapped)
 
     def _near_cells(self, centre, radius, phi_c, corner_phi) -> np.ndarray:
         """The cells Γ may reach: whose centre is within |∇φ|·radius of it
@@ -93,7 +93,7 @@ class CutIntegration:
         side (Γ snapped to its corners within their snap distance); its
         nodes' stiffness on either side if this rank owns it.  Whether the
         cell is whole on the − side with Γ snapped to two of its corners
-        (an edge of it may then carry Γ's rule: :meth:`_edge_rules`)."""
+        (an edge of it may then carry Γ's rule: :func:`_edge_rules`)."""
         itf, cells = self.scene.interface, self.cells
         general = isinstance(itf, LevelSetInterface)
         corners = cells.corners[c]
@@ -139,46 +139,6 @@ class CutIntegration:
         that, cut off an edge away from the corner, stays a part."""
         snap, itf = self.snap_of(c), self.scene.interface
         return all(np.all(np.abs(itf.signed_distance(p)) <= snap) for s, p, w in pieces if s != side and len(w))
-
-    def _edge_rules(self, snapped: list[int]) -> None:
-        """Γ's rule along each edge that Γ was snapped to: an edge of a
-        ``snapped`` cell (whole on the − side) whose two ends are on Γ and
-        whose cell across is whole on the + side.  Γ is then that edge:
-        Gauss points on it with the level set's normals there, held by the
-        − cell alone, so no edge is counted twice (two − cells beside it
-        would each have held it) and the edge carries Γ exactly where the
-        two bodies' cells meet.  Where the cell across is cut (a curved Γ
-        through the edge's two ends that bows off it by more than the snap,
-        by about h²/8R), that cell holds Γ's rule along the arc, and the
-        edge none (counted twice, a circle's Γ was 15 % too long)."""
-        if not snapped:
-            return
-        cells = self.cells
-        nodes = cells.corner_nodes
-        k = nodes.shape[1]
-        ends = np.stack([nodes, np.roll(nodes, -1, axis=1)], axis=-1)         # (cells, k, 2): edge i, corner i to i + 1
-        keys = (np.min(ends, axis=-1).astype(np.int64) * len(cells.node_on) + np.max(ends, axis=-1)).ravel()
-        order = np.argsort(keys, kind="stable")
-        sorted_keys = keys[order]
-        whole_plus = self.cell_side > 0
-        whole_plus[list(self.regions)] = False
-        g, gw = gauss01(self.gauss)
-        for c in snapped:
-            on = cells.node_on[nodes[c]]
-            rules = []
-            for i in np.flatnonzero(on & np.roll(on, -1)):
-                lo, hi = np.searchsorted(sorted_keys, keys[c * k + i], side="left"), \
-                    np.searchsorted(sorted_keys, keys[c * k + i], side="right")
-                across = [int(j) // k for j in order[lo:hi] if int(j) // k != c]
-                if len(across) == 1 and whole_plus[across[0]]:
-                    a, b = cells.corners[c, i], cells.corners[c, (i + 1) % k]
-                    rules.append((a + g[:, None] * (b - a), gw * float(np.linalg.norm(b - a))))
-            if rules:
-                pts = np.vstack([p for p, _ in rules])
-                rule = (pts, np.concatenate([w for _, w in rules]), self.scene.interface.normals(pts))
-                if isinstance(self.scene.interface, LevelSetInterface):
-                    self._check_rules_found(c, rule)
-                self.gamma_rules[c] = rule
 
     def _check_rules_found(self, c: int, arrays) -> None:
         """A clear error where cell ``c``'s rules of Γ and of its parts hold
@@ -258,6 +218,47 @@ class CutIntegration:
                 "thin wedge with 79 % in cut cells had its mean t_N 23 % below fe's); refine h until the share falls "
                 f"below {tol.THIN_BODY_CUT_SHARE:.0%}, or use fe"
                 for body in Body for share in [self.cut_share(body)] if share > tol.THIN_BODY_CUT_SHARE]
+
+
+def _edge_rules(cut: CutIntegration, snapped: list[int]) -> None:
+    """Γ's rule along each edge that Γ was snapped to: an edge of a
+    ``snapped`` cell of ``cut`` (whole on the − side) whose two ends are on Γ and
+    whose cell across is whole on the + side.  Γ is then that edge:
+    Gauss points on it with the level set's normals there, held by the
+    − cell alone, so no edge is counted twice (two − cells beside it
+    would each have held it) and the edge carries Γ exactly where the
+    two bodies' cells meet.  Where the cell across is cut (a curved Γ
+    through the edge's two ends that bows off it by more than the snap,
+    by about h²/8R), that cell holds Γ's rule along the arc, and the
+    edge none (counted twice, a circle's Γ was 15 % too long)."""
+    if not snapped:
+        return
+    cells = cut.cells
+    nodes = cells.corner_nodes
+    k = nodes.shape[1]
+    ends = np.stack([nodes, np.roll(nodes, -1, axis=1)], axis=-1)         # (cells, k, 2): edge i, corner i to i + 1
+    keys = (np.min(ends, axis=-1).astype(np.int64) * len(cells.node_on) + np.max(ends, axis=-1)).ravel()
+    order = np.argsort(keys, kind="stable")
+    sorted_keys = keys[order]
+    whole_plus = cut.cell_side > 0
+    whole_plus[list(cut.regions)] = False
+    g, gw = gauss01(cut.gauss)
+    for c in snapped:
+        on = cells.node_on[nodes[c]]
+        rules = []
+        for i in np.flatnonzero(on & np.roll(on, -1)):
+            lo, hi = np.searchsorted(sorted_keys, keys[c * k + i], side="left"), \
+                np.searchsorted(sorted_keys, keys[c * k + i], side="right")
+            across = [int(j) // k for j in order[lo:hi] if int(j) // k != c]
+            if len(across) == 1 and whole_plus[across[0]]:
+                a, b = cells.corners[c, i], cells.corners[c, (i + 1) % k]
+                rules.append((a + g[:, None] * (b - a), gw * float(np.linalg.norm(b - a))))
+        if rules:
+            pts = np.vstack([p for p, _ in rules])
+            rule = (pts, np.concatenate([w for _, w in rules]), cut.scene.interface.normals(pts))
+            if isinstance(cut.scene.interface, LevelSetInterface):
+                cut._check_rules_found(c, rule)
+            cut.gamma_rules[c] = rule
 
 
 #: Γ's rule in a cell it does not cross: no points.
