@@ -180,7 +180,7 @@ def test_triangles_p2_just_beyond_the_snap_keep_a_traction_gap(offset):
 @pytest.mark.parametrize("cell", ["quad", "triangle"])
 @pytest.mark.parametrize("offset", [2e-5, -3e-5])
 def test_a_node_between_small_and_large_cells_takes_the_large_cells_snap(offset, cell):
-    """Cells of s left of Γ's node line, 100 s right of it, Γ 2e-5 s or
+    """Cells of s left of Γ's node line, 90 s right of it, Γ 2e-5 s or
     3e-5 s off the line: beyond the small cells' snap, 2e-7 to 3e-7 of the
     large ones.  The node takes the largest cell's snap, so Γ is snapped and
     the large cells keep no sliver.  With the smallest cell's snap instead
