@@ -230,7 +230,10 @@ def _edge_rules(cut: CutIntegration, snapped: list[int]) -> None:
     two bodies' cells meet.  Where the cell across is cut (a curved Γ
     through the edge's two ends that bows off it by more than the snap,
     by about h²/8R), that cell holds Γ's rule along the arc, and the
-    edge none (counted twice, a circle's Γ was 15 % too long)."""
+    edge none (counted twice, a circle's Γ was 15 % too long).  Under
+    mpirun the cell across an owned cell's edge is a ghost on its rank
+    (dolfinx's shared-facet ghosts, the default of ``create_rectangle`` and
+    ``create_mesh``); an owned edge inside the domain without one is refused."""
     if not snapped:
         return
     cells = cut.cells
@@ -250,8 +253,11 @@ def _edge_rules(cut: CutIntegration, snapped: list[int]) -> None:
             lo, hi = np.searchsorted(sorted_keys, keys[c * k + i], side="left"), \
                 np.searchsorted(sorted_keys, keys[c * k + i], side="right")
             across = [int(j) // k for j in order[lo:hi] if int(j) // k != c]
+            a, b = cells.corners[c, i], cells.corners[c, (i + 1) % k]
+            if not across and c < cells.owned_cells and not _on_domain_boundary(cut.scene, np.array([a, b])):
+                raise DiscretisationError("xfem: the cell across an edge on Γ is missing on this rank; the mesh "
+                                          "must ghost the cells that share a facet (dolfinx's shared_facet)")
             if len(across) == 1 and whole_plus[across[0]]:
-                a, b = cells.corners[c, i], cells.corners[c, (i + 1) % k]
                 rules.append((a + g[:, None] * (b - a), gw * float(np.linalg.norm(b - a))))
         if rules:
             pts = np.vstack([p for p, _ in rules])
@@ -259,6 +265,13 @@ def _edge_rules(cut: CutIntegration, snapped: list[int]) -> None:
             if isinstance(cut.scene.interface, LevelSetInterface):
                 cut._check_rules_found(c, rule)
             cut.gamma_rules[c] = rule
+
+
+def _on_domain_boundary(scene: Scene, ends: np.ndarray) -> bool:
+    """Whether both ``ends`` (2, 2) of an edge lie on the scene's outer
+    boundary (to NODE_MATCH of its length; a disc's rim chord has its ends
+    on the rim)."""
+    return bool(np.all(np.abs(scene.domain.distance_to_boundary(ends)) <= tol.NODE_MATCH * scene.length_scale))
 
 
 #: Γ's rule in a cell it does not cross: no points.
