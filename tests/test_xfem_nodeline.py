@@ -153,3 +153,70 @@ def test_a_curved_gamma_through_two_nodes_is_counted_once(cell):
     cut = CutIntegration(CellBasis(background_mesh(scene, 0.1, cell), 2, scene), scene, 4)
     length = sum(float(np.sum(w)) for _, w, _ in cut.gamma_rules.values())
     assert length == pytest.approx(2 * math.pi * radius, rel=tol.NODELINE_ROUNDOFF)
+
+
+def _cut(scene, cell: str, degree: int):
+    from xdolfinx.xfem.cells import CellBasis, background_mesh
+    from xdolfinx.xfem.cut import GAUSS_POINTS, CutIntegration
+    return CutIntegration(CellBasis(background_mesh(scene, 0.1, cell), degree, scene), scene, GAUSS_POINTS[degree])
+
+
+#: Straight Γ along node lines of scene A's h = 0.1 grid: (point, normal,
+#: length in the unit square); the diagonal is a node line of triangles only.
+LINES = {"horizontal": ((0.0, 0.3), (0.0, 1.0), 1.0), "vertical": ((0.6, 0.0), (1.0, 0.0), 1.0),
+         "diagonal": ((0.0, 0.0), (-2 ** -0.5, 2 ** -0.5), 2 ** 0.5)}
+
+
+@pytest.mark.parametrize("line", list(LINES))
+@pytest.mark.parametrize("offset", [0.0, 1e-9, -1e-6, 1e-5])
+@pytest.mark.parametrize("cell", ["quad", "triangle"])
+@pytest.mark.parametrize("degree", [1, 2])
+def test_a_straight_gamma_along_a_node_line_has_its_length(line, offset, cell, degree):
+    """Γ's rule sums to Γ's length to round-off: each snapped edge is held
+    by one cell (xdolfinx.xfem.cut._edge_rules), none twice, none left out;
+    Γ on the node line or moved off it along its normal within the snap."""
+    from contactcore import LineInterface, load_scene
+    point, normal, length = LINES[line]
+    if line == "diagonal" and cell == "quad":
+        pytest.skip("the diagonal is a node line of triangles only")
+    at = np.asarray(point) + offset * 0.1 * np.asarray(normal)
+    scene = load_scene("A").with_changes(interface=LineInterface(tuple(at), normal), profiles=())
+    cut = _cut(scene, cell, degree)
+    rules = list(cut.gamma_rules.values())
+    assert sum(float(np.sum(w)) for _, w, _ in rules) == pytest.approx(length, rel=tol.GAMMA_LENGTH_ROUNDOFF)
+    points = np.vstack([p for p, _, _ in rules])
+    assert len(np.unique(points, axis=0)) == len(points)
+
+
+@pytest.mark.parametrize("cell", ["quad", "triangle"])
+def test_no_edge_holds_gammas_rule_twice(cell):
+    """A + strip thinner than the snap along the node line y = a (φ =
+    ε − |y − a − δ|, both of its lines within the snap of y = a), with a
+    + disc elsewhere (φ the larger of the two) so that the scene has two
+    bodies: the strip is snapped away, the cells on either side of its
+    edges are whole −, and those edges are no interface.  Before, both −
+    cells held each edge's rule (every point twice)."""
+    from contactcore import LevelSetInterface, load_scene
+    from contactcore.tolerances import XFEM_SNAP
+    a, delta = 0.3, XFEM_SNAP * 0.1 / 4
+    centre, radius = np.array([0.75, 0.75]), 0.1
+
+    def parts(x):
+        x = np.asarray(x)
+        return delta - np.abs(x[:, 1] - a - delta), radius - np.linalg.norm(x - centre, axis=1)
+
+    def phi(x):
+        return np.maximum(*parts(x))
+
+    def grad(x):
+        x = np.asarray(x)
+        strip, disc = parts(x)
+        g_strip = np.column_stack([np.zeros(len(x)), -np.sign(x[:, 1] - a - delta)])
+        g_disc = -(x - centre) / np.linalg.norm(x - centre, axis=1)[:, None]
+        return np.where((strip > disc)[:, None], g_strip, g_disc)
+
+    scene = load_scene("A").with_changes(interface=LevelSetInterface(phi, grad), profiles=())
+    cut = _cut(scene, cell, 1)
+    points = np.vstack([p for p, _, _ in cut.gamma_rules.values()])
+    assert len(np.unique(points, axis=0)) == len(points)
+    assert np.all(np.abs(points[:, 1] - a) > radius)  # the disc's Γ alone

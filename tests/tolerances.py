@@ -1185,6 +1185,12 @@ SLIDE_BALANCE = 1e-8
 #: before the snap 6e-7 and 1.74 by kernel, or refused).
 NODELINE_ROUNDOFF = 1e-10
 
+#: tests/test_xfem_nodeline.py: Γ's rule against Γ's length, relative,
+#: for a straight Γ along a node line: a sum of edge lengths times Gauss
+#: weights, which round-off alone separates (a double-counted or missing
+#: edge is 0.1 of it).
+GAMMA_LENGTH_ROUNDOFF = 1e-14
+
 #: The bar's sample points keep this far (m) from Γ: a point between Γ and
 #: the node line it was snapped to lies in the other body's cells.
 NODELINE_CLEARANCE = 0.01

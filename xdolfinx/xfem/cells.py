@@ -1,11 +1,11 @@
 """XFEM's background mesh and its cells: the mesh that ignores Γ, which side
-of Γ each node lies on (a node within the snap distance on Γ), and the Lagrange basis of each cell at physical
+of Γ each node lies on (a node within its snap distance on Γ), and the Lagrange basis of each cell at physical
 points (affine cells, or dolfinx's pull-back on a curved one)."""
 from __future__ import annotations
 
 import basix
 import numpy as np
-from dolfinx import fem, mesh
+from dolfinx import fem, la, mesh
 from mpi4py import MPI
 
 from contactcore import Scene
@@ -51,19 +51,20 @@ def cell_counts(scene: Scene, h: float) -> list[int]:
     return [max(1, round(s / h)) for s in scene.domain.size]
 
 
-def node_sides(scene: Scene, coords: np.ndarray, snap: float) -> np.ndarray:
-    """The side (±1) of mesh nodes, a node within ``snap`` of Γ on Γ (+1):
-    XFEM's one rule near a node (:data:`contactcore.tolerances.XFEM_SNAP`,
-    :attr:`CellBasis.snap`), the same for every cell and rank that computed
-    its coordinates.  The distance is |φ|/|∇φ| (φ itself for a line or a
-    circle)."""
+def node_sides(scene: Scene, coords: np.ndarray, snap) -> np.ndarray:
+    """The side (±1) of mesh nodes, a node within ``snap`` (one distance,
+    or one per node) of Γ on Γ (+1): XFEM's one rule near a node
+    (:data:`contactcore.tolerances.XFEM_SNAP`, :attr:`CellBasis.node_snap`),
+    the same for every cell and rank that computed its coordinates.  The
+    distance is |φ|/|∇φ| (φ itself for a line or a circle)."""
     itf = scene.interface
     return np.where(on_gamma(scene, coords, snap), 1, side_of(itf, coords))
 
 
-def on_gamma(scene: Scene, coords: np.ndarray, snap: float) -> np.ndarray:
-    """(points,) bool: the points within ``snap`` of Γ (|φ|/|∇φ|), which
-    XFEM snaps Γ to (:data:`contactcore.tolerances.XFEM_SNAP`)."""
+def on_gamma(scene: Scene, coords: np.ndarray, snap) -> np.ndarray:
+    """(points,) bool: the points within ``snap`` (one distance, or one per
+    point) of Γ (|φ|/|∇φ|), which XFEM snaps Γ to
+    (:data:`contactcore.tolerances.XFEM_SNAP`)."""
     return np.abs(scene.interface.signed_distance(coords)) <= snap
 
 
@@ -107,16 +108,49 @@ class CellBasis:
         # corners counter-clockwise (dolfinx orders a quadrilateral's as 0, 1, 3, 2)
         corners = x[geom[:, [0, 1, 3, 2]]] if name == "quadrilateral" else x[geom[:, :3]]
         area2 = np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
-        self.corners = np.where((area2 < 0)[:, None, None], corners[:, ::-1], corners)
+        flip = (area2 < 0)[:, None]
+        self.corners = np.where(flip[:, :, None], corners[:, ::-1], corners)
         self.cell_dofs = self.V.dofmap.list.array.reshape(self.num_cells, -1)  # block (node) indices
+        # V's first dofs of a cell are its vertices, in the geometry's order
+        vertices = self.cell_dofs[:, [0, 1, 3, 2]] if name == "quadrilateral" else self.cell_dofs[:, :3]
+        #: (cells, corners): V's node at each of :attr:`corners`
+        self.corner_nodes = np.where(flip, vertices[:, ::-1], vertices)
         self.owned_nodes = self.V.dofmap.index_map.size_local  # the others are ghosts (mpirun)
         self.ranks = Collective(msh.comm)
-        #: XFEM's snap distance (:data:`contactcore.tolerances.XFEM_SNAP` of
-        #: the largest cell diameter over every rank): a node this close to Γ
-        #: lies on it, and Γ is snapped to it
-        self.snap = tol.XFEM_SNAP * self.ranks.max(float(np.max(diameters(self.corners[:self.owned_cells]),
-                                                                  initial=0.0)))
-        self.node_side = node_sides(scene, self.V.tabulate_dof_coordinates()[:, :2], self.snap)
+        #: (cells,): XFEM_SNAP of each cell's own diameter (:data:`contactcore.tolerances.XFEM_SNAP`)
+        self.cell_snap = tol.XFEM_SNAP * diameters(self.corners)
+        #: (nodes,): XFEM's snap distance at each node, XFEM_SNAP of the
+        #: largest diameter of the cells that hold it (over every rank): a
+        #: node this close to Γ lies on it, and Γ is snapped to it.  Local,
+        #: so that a graded mesh's small cells are snapped by 1e-5 of
+        #: themselves and not of the mesh's largest cell; the largest of
+        #: the node's cells, so that no cell holding it keeps a part thinner
+        #: than 1e-5 of itself beside it.
+        self.node_snap = self._node_max(self.cell_snap)
+        coords = self.V.tabulate_dof_coordinates()[:, :2]
+        #: (nodes,) bool: the nodes on Γ (within :attr:`node_snap`)
+        self.node_on = on_gamma(scene, coords, self.node_snap)
+        self.node_side = np.where(self.node_on, 1, side_of(scene.interface, coords))
+
+    def _node_max(self, cell_values: np.ndarray) -> np.ndarray:
+        """(nodes,): the largest of ``cell_values`` over the cells that
+        hold each node, on every rank that holds a cell of it (each rank
+        sends its ghosts' values to their owners, which send the result
+        back)."""
+        out = np.zeros(len(self.V.dofmap.index_map.ghosts) + self.owned_nodes)
+        np.maximum.at(out, self.cell_dofs, cell_values[:, None])
+        if not self.ranks.parallel:
+            return out
+        imap, n = self.V.dofmap.index_map, self.owned_nodes
+        ghosts = self.ranks.gather(imap.ghosts.astype(np.int64))
+        values = self.ranks.gather(out[n:])
+        start, stop = imap.local_range
+        mine = (ghosts >= start) & (ghosts < stop)
+        np.maximum.at(out, ghosts[mine] - start, values[mine])
+        vector = la.vector(imap, 1)
+        vector.array[:n] = out[:n]
+        vector.scatter_forward()
+        return vector.array.copy()
 
     def _curved_cells(self) -> np.ndarray:
         """Cells whose geometry nodes are not the affine image (from the

@@ -43,12 +43,14 @@ class CutIntegration:
     ``depth[c]`` how far the − and + parts of a cut cell reach from Γ and
     ``cell_size`` each cell's diameter.
 
-    Γ is snapped to the nodes within ``cells.snap`` of it
-    (:data:`contactcore.tolerances.XFEM_SNAP`): a cell whose corners off Γ
-    all lie on one side is whole on that side, and Γ along an edge whose
-    two ends are on Γ is that edge, its rule held by the cell on the −
-    side; a cell with corners off Γ on both sides is cut along the exact Γ.
-    So no part of a cell is thinner than the snap distance.
+    Γ is snapped to the nodes within their snap distance of it
+    (``cells.node_snap``, :data:`contactcore.tolerances.XFEM_SNAP` of the
+    largest cell at the node): a cell whose corners off Γ all lie on one
+    side is whole on that side, and Γ along an edge whose two ends are on
+    Γ, between a whole − cell and a whole + cell, is that edge, its rule
+    held by the − cell alone (:func:`_edge_rules`); a cell with corners off
+    Γ on both sides is cut along the exact Γ.  So no part of a cell is
+    thinner than XFEM_SNAP of the cell.
 
     Each node's stiffness ``∫|∇N_J|²`` over the parts on either side of Γ,
     in the cells near Γ that this rank owns, is summed as
@@ -69,8 +71,8 @@ class CutIntegration:
         self.depth = np.zeros((len(centre), 2))  # of each body's part of a cut cell (distance from Γ, φ/|∇φ|)
         self.stiffness = np.zeros((2, len(cells.node_side)))  # of each node's function on the − and + parts
         corner_phi = itf.phi(corners.reshape(-1, 2)).reshape(len(centre), -1)
-        for c in self._near_cells(centre, radius, phi_c, corner_phi):
-            self._integrate(c, corner_phi[c])
+        snapped = [c for c in self._near_cells(centre, radius, phi_c, corner_phi) if self._integrate(c, corner_phi[c])]
+        _edge_rules(self, snapped)
 
     def _near_cells(self, centre, radius, phi_c, corner_phi) -> np.ndarray:
         """The cells Γ may reach: whose centre is within |∇φ|·radius of it
@@ -86,20 +88,23 @@ class CutIntegration:
                               | (corner_sides.min(axis=1) != corner_sides.max(axis=1))
                               | (corner_sides[:, 0] != self.cell_side))
 
-    def _integrate(self, c: int, corner_phi: np.ndarray) -> None:
+    def _integrate(self, c: int, corner_phi: np.ndarray) -> bool:
         """Rules of cell ``c`` near Γ: its regions if Γ cuts it, else its
-        side (Γ snapped to its corners within the snap distance); its
-        nodes' stiffness on either side if this rank owns it."""
+        side (Γ snapped to its corners within their snap distance); its
+        nodes' stiffness on either side if this rank owns it.  Whether the
+        cell is whole on the − side with Γ snapped to two of its corners
+        (an edge of it may then carry Γ's rule: :func:`_edge_rules`)."""
         itf, cells = self.scene.interface, self.cells
         general = isinstance(itf, LevelSetInterface)
         corners = cells.corners[c]
-        on = on_gamma(self.scene, corners, cells.snap)
+        on = cells.node_on[cells.corner_nodes[c]]
         off = sign_of(corner_phi)[~on]
         gamma, pieces = interface_rule_in(itf, corners, self.gauss), cut_polygon(itf, corners, self.gauss)
-        if on.any() and len(off) and off.min() == off.max() and self._within_snap(pieces, int(off[0])):
+        snapped = False
+        if on.any() and len(off) and off.min() == off.max() and self._within_snap(c, pieces, int(off[0])):
             # Γ snapped to the corners on it: the cell is whole on the side of the others
             side = int(off[0])
-            gamma = self._snapped_rule(corners) if side < 0 else _NO_RULE
+            gamma, snapped = _NO_RULE, side < 0 and int(np.count_nonzero(on)) > 1
             pieces = [(side, *polygon_rule(corners, self.gauss))]
         if general:
             self._check_rules_found(c, [*gamma, *(a for _, p, w in pieces for a in (p, w))])
@@ -113,37 +118,27 @@ class CutIntegration:
             self.cell_side[c] = parts[0][0]
             if general:
                 self._check_no_hidden_piece(c, parts[0][0])
-        if c >= cells.owned_cells:  # a ghost cell: its owner counts it
-            return
-        dofs = cells.cell_dofs[c]
-        for side, pts, w, N, dN in parts:
-            self.stiffness[index_of_sign(side), dofs] += w @ np.sum(dN ** 2, axis=-1)
+        if c < cells.owned_cells:  # a ghost cell: its owner counts it
+            dofs = cells.cell_dofs[c]
+            for side, pts, w, N, dN in parts:
+                self.stiffness[index_of_sign(side), dofs] += w @ np.sum(dN ** 2, axis=-1)
+        return snapped
 
-    def _within_snap(self, pieces, side: int) -> bool:
-        """Whether every part of a cell off ``side`` lies within the snap
-        distance of Γ (its quadrature points do): a sliver beside a corner
-        on Γ, which snapping removes; a circle's cap deeper than that, cut
-        off an edge away from the corner, stays a part."""
-        snap, itf = self.cells.snap, self.scene.interface
+    def snap_of(self, c: int) -> float:
+        """The distance within which Γ is snapped in cell ``c``: XFEM_SNAP
+        of its own diameter, or its corners' on Γ snap distance if larger
+        (:attr:`CellBasis.node_snap`, the largest cell at that node's)."""
+        cells = self.cells
+        nodes = cells.corner_nodes[c]
+        return max(float(cells.cell_snap[c]), float(np.max(cells.node_snap[nodes][cells.node_on[nodes]], initial=0.0)))
+
+    def _within_snap(self, c: int, pieces, side: int) -> bool:
+        """Whether every part of cell ``c`` off ``side`` lies within the
+        snap distance of Γ (its quadrature points do): a sliver beside a
+        corner on Γ, which snapping removes; a circle's cap deeper than
+        that, cut off an edge away from the corner, stays a part."""
+        snap, itf = self.snap_of(c), self.scene.interface
         return all(np.all(np.abs(itf.signed_distance(p)) <= snap) for s, p, w in pieces if s != side and len(w))
-
-    def _snapped_rule(self, corners: np.ndarray):
-        """Γ's rule along the edges of a cell that Γ runs along (both ends
-        and every Gauss point within the snap distance): Γ snapped to the
-        edge, Gauss points on it with the level set's normals there.  A
-        curved Γ through an edge's two ends bows off it between them (by
-        h²/8R): the cell across is cut along the arc and holds Γ's rule, so
-        the edge holds none (counted twice, a circle's Γ was 15 % too long)."""
-        on, snap = on_gamma(self.scene, corners, self.cells.snap), self.cells.snap
-        g, gw = gauss01(self.gauss)
-        edges = [(a + g[:, None] * (b - a), gw * float(np.linalg.norm(b - a)))
-                 for i in range(len(corners)) for a, b in [(corners[i], corners[(i + 1) % len(corners)])]
-                 if on[i] and on[(i + 1) % len(corners)]]
-        rules = [(p, w) for p, w in edges if on_gamma(self.scene, p, snap).all()]
-        if not rules:
-            return _NO_RULE
-        pts = np.vstack([p for p, _ in rules])
-        return pts, np.concatenate([w for _, w in rules]), self.scene.interface.normals(pts)
 
     def _check_rules_found(self, c: int, arrays) -> None:
         """A clear error where cell ``c``'s rules of Γ and of its parts hold
@@ -170,7 +165,7 @@ class CutIntegration:
         q = corners if len(corners) == 4 else np.vstack([corners, corners[-1:]])
         x = (1 - u) * (1 - v) * q[0] + u * (1 - v) * q[1] + u * v * q[2] + (1 - u) * v * q[3]
         itf = self.scene.interface
-        other = (sign_of(itf.phi(x)) != side) & ~on_gamma(self.scene, x, self.cells.snap)
+        other = (sign_of(itf.phi(x)) != side) & ~on_gamma(self.scene, x, self.snap_of(c))
         if other.any():
             p = x[np.flatnonzero(other)[0]]
             raise DiscretisationError(f"xfem: the level set changes sign inside a cell without crossing its edges, "
@@ -223,6 +218,60 @@ class CutIntegration:
                 "thin wedge with 79 % in cut cells had its mean t_N 23 % below fe's); refine h until the share falls "
                 f"below {tol.THIN_BODY_CUT_SHARE:.0%}, or use fe"
                 for body in Body for share in [self.cut_share(body)] if share > tol.THIN_BODY_CUT_SHARE]
+
+
+def _edge_rules(cut: CutIntegration, snapped: list[int]) -> None:
+    """Γ's rule along each edge that Γ was snapped to: an edge of a
+    ``snapped`` cell of ``cut`` (whole on the − side) whose two ends are on Γ and
+    whose cell across is whole on the + side.  Γ is then that edge:
+    Gauss points on it with the level set's normals there, held by the
+    − cell alone, so no edge is counted twice (two − cells beside it
+    would each have held it) and the edge carries Γ exactly where the
+    two bodies' cells meet.  Where the cell across is cut (a curved Γ
+    through the edge's two ends that bows off it by more than the snap,
+    by about h²/8R), that cell holds Γ's rule along the arc, and the
+    edge none (counted twice, a circle's Γ was 15 % too long).  Under
+    mpirun the cell across an owned cell's edge is a ghost on its rank
+    (dolfinx's shared-facet ghosts, the default of ``create_rectangle`` and
+    ``create_mesh``); an owned edge inside the domain without one is refused."""
+    if not snapped:
+        return
+    cells = cut.cells
+    nodes = cells.corner_nodes
+    k = nodes.shape[1]
+    ends = np.stack([nodes, np.roll(nodes, -1, axis=1)], axis=-1)         # (cells, k, 2): edge i, corner i to i + 1
+    keys = (np.min(ends, axis=-1).astype(np.int64) * len(cells.node_on) + np.max(ends, axis=-1)).ravel()
+    order = np.argsort(keys, kind="stable")
+    sorted_keys = keys[order]
+    whole_plus = cut.cell_side > 0
+    whole_plus[list(cut.regions)] = False
+    g, gw = gauss01(cut.gauss)
+    for c in snapped:
+        on = cells.node_on[nodes[c]]
+        rules = []
+        for i in np.flatnonzero(on & np.roll(on, -1)):
+            lo, hi = np.searchsorted(sorted_keys, keys[c * k + i], side="left"), \
+                np.searchsorted(sorted_keys, keys[c * k + i], side="right")
+            across = [int(j) // k for j in order[lo:hi] if int(j) // k != c]
+            a, b = cells.corners[c, i], cells.corners[c, (i + 1) % k]
+            if not across and c < cells.owned_cells and not _on_domain_boundary(cut.scene, np.array([a, b])):
+                raise DiscretisationError("xfem: the cell across an edge on Γ is missing on this rank; the mesh "
+                                          "must ghost the cells that share a facet (dolfinx's shared_facet)")
+            if len(across) == 1 and whole_plus[across[0]]:
+                rules.append((a + g[:, None] * (b - a), gw * float(np.linalg.norm(b - a))))
+        if rules:
+            pts = np.vstack([p for p, _ in rules])
+            rule = (pts, np.concatenate([w for _, w in rules]), cut.scene.interface.normals(pts))
+            if isinstance(cut.scene.interface, LevelSetInterface):
+                cut._check_rules_found(c, rule)
+            cut.gamma_rules[c] = rule
+
+
+def _on_domain_boundary(scene: Scene, ends: np.ndarray) -> bool:
+    """Whether both ``ends`` (2, 2) of an edge lie on the scene's outer
+    boundary (to NODE_MATCH of its length; a disc's rim chord has its ends
+    on the rim)."""
+    return bool(np.all(np.abs(scene.domain.distance_to_boundary(ends)) <= tol.NODE_MATCH * scene.length_scale))
 
 
 #: Γ's rule in a cell it does not cross: no points.

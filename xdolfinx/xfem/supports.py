@@ -1,27 +1,26 @@
 """XFEM's prescribed unknowns: supports on boundary facets and pins at nodes."""
 from __future__ import annotations
 
-import dolfinx.cpp as _cpp
 import numpy as np
 from dolfinx import fem, mesh
 
 from contactcore import DiscretisationError
 from contactcore import tolerances as tol
 
-from .cells import node_sides
 from .space import EnrichedFunctionSpace
 
 
 def _facets_gamma_meets(space: EnrichedFunctionSpace, facets: np.ndarray) -> np.ndarray:
     """Which of the boundary ``facets`` hold points of both bodies: those
-    whose geometry nodes are not all on one side of Γ (a node on Γ is on
-    its + side, :func:`~xdolfinx.xfem.cells.node_sides`).  Only there does
-    a support hold both bodies' fields; elsewhere the enriched unknowns
-    belong to the body that does not reach the support, and stay free."""
-    msh = space.msh
-    nodes = _cpp.mesh.entities_to_geometry(msh._mesh, 1, np.asarray(facets, np.int32), False)
-    sides = node_sides(space.scene, msh.geometry.x[nodes.ravel(), :2], space.cells.snap).reshape(nodes.shape)
-    return sides.min(axis=1) != sides.max(axis=1)
+    whose nodes are not all on one side of Γ (a node on Γ is on its + side,
+    :attr:`~xdolfinx.xfem.cells.CellBasis.node_side`, with each node's own
+    snap distance).  Only there does a support hold both bodies' fields;
+    elsewhere the enriched unknowns belong to the body that does not reach
+    the support, and stay free."""
+    sides = space.cells.node_side
+    met = [np.ptp(sides[fem.locate_dofs_topological(space.V, 1, np.array([f], np.int32), remote=False)]) > 0
+           for f in facets]  # this rank's own closure of each facet: no collective call per facet
+    return np.array(met, bool)
 
 
 def support_rows(space: EnrichedFunctionSpace) -> tuple[list, list, list]:
