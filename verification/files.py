@@ -56,14 +56,16 @@ def atomic_path(path: Path, suffix: str = ""):
     path.parent.mkdir(parents=True, exist_ok=True)
     suffix = suffix or path.suffix
     fits = len(os.fsencode(f".{path.name}.{suffix}")) + janitor.RANDOM_PART <= janitor.name_max(path.parent)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}." if fits else ".tmp.", suffix=suffix, dir=path.parent)
-    os.close(fd)
-    _follow_umask(tmp, 0o666)
+    tmp = None
     try:
+        with signals_held():  # a signal as the file is made acts once its name is known, and removes it
+            fd, tmp = tempfile.mkstemp(prefix=f".{path.name}." if fits else ".tmp.", suffix=suffix, dir=path.parent)
+            os.close(fd)
+        _follow_umask(tmp, 0o666)
         yield Path(tmp)
         os.replace(tmp, path)
     finally:
-        if os.path.exists(tmp):
+        if tmp is not None and os.path.exists(tmp):
             os.unlink(tmp)
 
 
@@ -123,36 +125,49 @@ def atomic_folder(path: Path, watched: bool = False):
     interrupted in between: at every moment ``path`` holds one whole run.
     Ctrl-C and SIGTERM wait while the folders are swapped and the earlier
     one removed (:func:`signals_held`); one that arrives then ends the
-    command with the new run in place.
+    command with the new run in place.  They wait too while the temporary
+    folder is made, until it is known to be removed if the block ends: one
+    that came just as ``mkdtemp`` returned left an empty ``.NAME.RANDOM``.
     ``watched``: a janitor puts it right if this process is killed before
     it can (:func:`verification.janitor.watch`)."""
     path = Path(path)
+    build, built = None, False
     try:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        tmp = Path(tempfile.mkdtemp(prefix=janitor.build_prefix(path), dir=path.parent))
-    except OSError as exc:  # a place the system will not let us write (/proc, /sys, a read-only mount)
-        raise OutFolderError(f"{path} cannot be created ({exc.strerror or exc})") from None
-    _follow_umask(str(tmp), 0o777)
-    build = janitor.Build(path, tmp)
-    _BUILDING.append(build)
-    built = False
-    try:
+        with signals_held():  # one that comes as the folder is made acts once it is known to be settled
+            try:
+                path.parent.mkdir(parents=True, exist_ok=True)
+                tmp = Path(tempfile.mkdtemp(prefix=janitor.build_prefix(path), dir=path.parent))
+            except OSError as exc:  # a place the system will not let us write (/proc, /sys, a read-only mount)
+                raise OutFolderError(f"{path} cannot be created ({exc.strerror or exc})") from None
+            build = janitor.Build(path, tmp)
+            _BUILDING.append(build)
+        _follow_umask(str(tmp), 0o777)
         if watched:
             janitor.watch(build)
         yield tmp
         built = True
     finally:
-        with signals_held():  # one that comes now acts once every step below is done
-            try:
-                if built:
-                    if path.exists():
-                        os.replace(path, build.earlier)
-                    os.replace(tmp, path)
-            finally:
-                build.settle()
-                _BUILDING.remove(build)
-                if watched and janitor.watching():
-                    janitor.unwatch()
+        if build is not None:
+            _put_in_place(build, built, watched)
+
+
+def _put_in_place(build: janitor.Build, built: bool, watched: bool) -> None:
+    """The end of :func:`atomic_folder`'s ``build``: the new folder in
+    place of the earlier one if it was ``built``, then every other folder
+    of it removed (:meth:`~verification.janitor.Build.settle`), Ctrl-C and
+    SIGTERM held meanwhile; the janitor of a ``watched`` build stopped."""
+    path, tmp = build.path, build.tmp
+    with signals_held():  # one that comes now acts once every step below is done
+        try:
+            if built:
+                if path.exists():
+                    os.replace(path, build.earlier)
+                os.replace(tmp, path)
+        finally:
+            build.settle()
+            _BUILDING.remove(build)
+            if watched and janitor.watching():
+                janitor.unwatch()
 
 
 def discard_unfinished() -> None:
