@@ -762,7 +762,8 @@ def residues(scene: Scene, levels: list[list[ProfileData]],
     0.05, 0.025 and 0.0125, against 2 in theory and 1.98 for σxy in the
     same runs (docs/error-estimates.md, "Which estimates to warn of").
     Quantities with an observed order (three runs) are left to
-    :func:`order_warnings`; a difference at round-off (of the
+    :func:`order_warnings` but count in their kind's largest; a
+    difference at round-off (of the
     quantity, :data:`~contactcore.tolerances.ESTIMATE_ROUNDOFF`, or of
     the scene's size of its kind, :data:`~contactcore.tolerances.NEGLIGIBLE_SHARE`
     of :class:`~contactcore.scaling.Sizes`) shows nothing and is neither
@@ -775,31 +776,32 @@ def residues(scene: Scene, levels: list[list[ProfileData]],
         kept = far_from_singular(scene, xy, exclude)
         for q in fine.names[3:]:
             e = estimates.get(fine.id, {}).get(q)
-            if e is None or e.observed or q not in KINDS or not np.any(kept):
+            if e is None or q not in KINDS or not np.any(kept):
                 continue
             d = rms((cols[q] - coarse.columns[q])[kept])
             scale = max(float(np.max(np.abs(cols[q]))), float(np.max(np.abs(coarse.columns[q]))))
             own = sizes.stress if q in STRESSES + TRACTIONS else sizes.displacement
             if d > max(tol.ESTIMATE_ROUNDOFF * scale, tol.NEGLIGIBLE_SHARE * own):
-                found[f"{fine.id}:{q}"] = (d, KINDS[q])
+                found[f"{fine.id}:{q}"] = (d, KINDS[q], e.observed)
     largest = {}
-    for key, (d, kind) in found.items():
+    for key, (d, kind, _) in found.items():
         if d > largest.get(kind, (0.0, ""))[0]:
             largest[kind] = (d, key)
-    return {key: (d / largest[kind][0], largest[kind][1]) for key, (d, kind) in found.items()
-            if d < tol.RESIDUE_SHARE * largest[kind][0]}
+    return {key: (d / largest[kind][0], largest[kind][1]) for key, (d, kind, observed) in found.items()
+            if not observed and d < tol.RESIDUE_SHARE * largest[kind][0]}
 
 
-def residue_warnings(found: dict[str, tuple[float, str]]) -> list[str]:
+def residue_warnings(found: dict[str, tuple[float, str]], observed: bool = False) -> list[str]:
     """One line naming the quantities of :func:`residues`, each with its
-    difference's share of the largest of its kind."""
+    difference's share of the largest of its kind; from ``observed``
+    runs (three) it does not advise a third."""
     if not found:
         return []
     names = ", ".join(f"{k} ({share:.2g} of {other}'s)" for k, (share, other) in found.items())
     return [f"{names}: the runs differ there by less than {tol.RESIDUE_SHARE:g} of the most they differ in a "
             f"quantity of the same kind (in brackets): the error's leading term nearly cancels there, a smaller "
-            f"term of another order may set its rate, the estimate is an indication only (--estimate 3 observes "
-            f"the order)"]
+            f"term of another order may set its rate, the estimate is an indication only"
+            + ("" if observed else " (--estimate 3 observes the order)")]
 
 
 # ----- the status along Γ -----------------------------------------------------
@@ -1012,7 +1014,7 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     residue = residues(scene, levels, profiles, exclude)
     warnings = (order_warnings(profiles) + pollution_warning(scene, profiles)
                 + unsettled_warnings(found, hs[-2], feature_size(scene), scene.user.units.length)
-                + cell_scale_warnings(rough, hs[-2:]) + residue_warnings(residue))
+                + cell_scale_warnings(rough, hs[-2:]) + residue_warnings(residue, len(levels) > 2))
     status = None
     if scene.law.has_history or not scene.law.is_linear:
         status = status_change(scene, results[-2].interface, results[-1].interface, hs[-2:])

@@ -916,3 +916,29 @@ def test_efficiency_on_a_disc_says_no_sample_was_left_out():
     assert "no sample was left out" in text and "corners" not in text and "ends of Γ" not in text
     names = tuple(name for name, _ in est.singular_regions(load_scene("A")))
     assert "of corners and of the ends of Γ left out" in efficiency._error_sentence(None, None, 0.1, "m", names)
+
+
+def test_a_two_run_estimate_among_three_runs_is_compared_with_every_quantity_of_its_kind():
+    """est.residues (review1): its docstring compares a quantity with the
+    most its kind differs "on every profile of the same runs".  With three
+    runs, a quantity whose order is not observed (its coarse and middle
+    runs agree, so observed_order is None) keeps a two-run estimate; its
+    two finest runs differ by RESIDUE_BELOW of σxx's in the same runs, as
+    in the two-run case that is named, but σxx (order observed) is left
+    out of the kind's largest, so nothing is named."""
+    from contactcore import ProfileData
+    scene, h = load_scene("A"), 0.05
+    stress = Sizes.of(scene).stress
+    x = np.linspace(0.15, 0.85, 281)
+    base = {"s": x - 0.15, "x": x, "y": np.full_like(x, 0.5)}
+    value = lambda hk: stress * (1.0 + x + hk ** 2 * np.sin(5 * x))  # noqa: E731
+    hs = est.levels_of(h, 3)
+    flat = {hk: stress * (1.0 + x) for hk in hs}
+    flat[hs[-1]] = flat[hs[-1]] + tol.RESIDUE_BELOW * (value(hs[-1]) - value(hs[-2]))
+    levels = [[ProfileData("L", "arclength", {**base, "sxx": value(hk)}),
+               ProfileData("M", "arclength", {**base, "sxy": flat[hk]})] for hk in hs]
+    three = est.profile_estimates(levels, 2, "xfem", scene=scene, exclude=0.1)
+    assert three["L"]["sxx"].observed and not three["M"]["sxy"].observed
+    two = est.profile_estimates(levels[1:], 2, "xfem", scene=scene, exclude=0.1)
+    assert "M:sxy" in est.residues(scene, levels[1:], two, 0.1)
+    assert "M:sxy" in est.residues(scene, levels, three, 0.1)

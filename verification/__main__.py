@@ -602,11 +602,13 @@ def _python_handles_signals() -> None:
         os.environ["PETSC_OPTIONS"] = f"{given} {NO_PETSC_SIGNALS}".strip()
 
 
-#: The prefixes of the PETSc options a solver reads (KSP, PC, matrix and
-#: MUMPS): the toolkit's solvers read theirs under a prefix of their own
-#: (contactcore.linear_solver), so such an option in ``PETSC_OPTIONS`` never
-#: reaches them; global ones (``-log_view``, ``-info``) still apply.
-SOLVER_OPTION_PREFIXES = ("ksp_", "pc_", "mat_")
+#: The prefixes of the PETSc options a solver reads (KSP, PC and the
+#: factorisation's package): the toolkit's solvers read theirs under a
+#: prefix of their own (contactcore.linear_solver), so such an option in
+#: ``PETSC_OPTIONS`` never reaches them; global ones (``-log_view``,
+#: ``-info``) and a matrix's own (``-mat_view``: the assembled matrices
+#: carry no prefix) still apply.
+SOLVER_OPTION_PREFIXES = ("ksp_", "pc_", "mat_mumps_", "mat_superlu", "mat_umfpack_", "mat_cholmod_")
 
 
 def _unread_petsc_options(given: str) -> list[str]:
@@ -615,7 +617,7 @@ def _unread_petsc_options(given: str) -> list[str]:
     ``-mat_mumps_icntl_7 5`` there left the ordering at the toolkit's own
     without a word."""
     keys = (word.lstrip("-") for word in given.split() if re.match(r"-[A-Za-z]", word))
-    return [key for key in keys if key.startswith(SOLVER_OPTION_PREFIXES)]
+    return [key for key in keys if key.lower().startswith(SOLVER_OPTION_PREFIXES)]  # PETSc ignores case
 
 
 def main(argv=None) -> int:
@@ -629,8 +631,10 @@ def main(argv=None) -> int:
     rank = launched_rank()
     repeats = _configure_logging(args.verbosity if rank == 0 else -2)  # one log, rank 0's
     if unread:
+        instead = ("pass --petsc-option KEY=VALUE instead (fe, xfem)" if hasattr(args, "petsc_option") else
+                   f"{args.command} takes no solver options (only run does, for fe and xfem)")
         log.warning("PETSC_OPTIONS sets %s, which the toolkit's solvers do not read (each reads its options "
-                    "under a prefix of its own); pass --petsc-option KEY=VALUE instead", ", ".join(unread))
+                    "under a prefix of its own); %s", ", ".join(unread), instead)
     try:
         _take_over_signals()
         with _signals_end_the_command(rank, distributed()):
