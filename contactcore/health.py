@@ -380,7 +380,82 @@ def check_held(scene, interface_points, interface_weights, status, where: str) -
 
 def material_warnings(scene) -> list[str]:
     """Volumetric locking: plane strain with ν above NU_LOCKING_WARN, in
-    one warning that names every such body."""
+    one warning that names every such body; and Coulomb friction across
+    two materials beyond the uniqueness bound (:func:`dundurs_warnings`)."""
+    return _locking_warnings(scene) + dundurs_warnings(scene)
+
+
+def dundurs_beta(scene) -> float:
+    """Dundurs' second parameter β of the two bodies (J. Appl. Mech. 1969),
+    ``[G₋(κ₊ − 1) − G₊(κ₋ − 1)] / [G₋(κ₊ + 1) + G₊(κ₋ + 1)]`` with
+    ``G = E / 2(1 + ν)`` and ``κ = 3 − 4ν`` (plane strain) or
+    ``(3 − ν)/(1 + ν)`` (plane stress): how far shear across Γ moves its
+    normal gap (0 for equal materials, up to ±1/2 in plane strain)."""
+    G, kappa = [], []
+    for body in ("minus", "plus"):
+        m = scene.materials[body]
+        G.append(m.E / (2 * (1 + m.nu)))
+        kappa.append(3 - 4 * m.nu if scene.plane == "strain" else (3 - m.nu) / (1 + m.nu))
+    return (G[0] * (kappa[1] - 1) - G[1] * (kappa[0] - 1)) / (G[0] * (kappa[1] + 1) + G[1] * (kappa[0] + 1))
+
+
+def dundurs_warnings(scene) -> list[str]:
+    """A Coulomb law whose μ·|β| (:func:`dundurs_beta`) exceeds
+    MU_DUNDURS_WARN: the answer may be one of several, which one the
+    method's (tolerances.py's note)."""
+    mu = getattr(scene.law, "mu", 0.0)
+    if scene.law.name != "coulomb" or not mu:
+        return []
+    beta = dundurs_beta(scene)
+    if mu * abs(beta) <= tol.MU_DUNDURS_WARN:
+        return []
+    return [f"mu = {mu:g} across two materials of Dundurs' β = {beta:.3g}: μ|β| = {mu * abs(beta):.3g} is above "
+            f"{tol.MU_DUNDURS_WARN:g}, where slip and the normal gap are coupled strongly enough for Coulomb "
+            "friction to have several answers (a layered block of contrast 1e3 at μ|β| = 1 to 5: fe, xfem and "
+            "efgm held Γ closed or opened up to 20 of 24 points under pressure, tractions up to 164 p apart); "
+            "the answer given is one of them, the method's: compare methods, or lower μ "
+            f"(below {tol.MU_DUNDURS_WARN / abs(beta):.3g} here) or the materials' contrast "
+            "(docs/contact-enforcement.md, \"Known limits\")"]
+
+
+def friction_excess_warnings(scene, path) -> list[str]:
+    """Points a converged ``path`` (an
+    :class:`~contactcore.interface_path.InterfacePath`) holds at stick with
+    ``|t_T|`` beyond ``μ|t_N|`` by more than the traction's round-off
+    (``STICK_ROUNDOFF`` of μp, or ``TRACTION_ROUNDOFF`` of the step's
+    largest pressure): Newton's stick/slip band (DECISION_BAND of Γ's
+    largest μp) keeps a point's previous status within it, so a load whose
+    shear/normal lies within 1e-5 of μ (above it: no sticking equilibrium)
+    may come back sticking.  One warning naming how many (point,
+    increment) pairs, the largest excess over μ|t_N| and its increment."""
+    mu = getattr(scene.law, "mu", None)
+    if mu is None or scene.law.name != "coulomb" or path is None:
+        return []
+    count, worst, where = 0, 0.0, None
+    for step in path.steps:
+        t = np.asarray(step.traction, float).reshape(-1, 2)
+        p = np.maximum(-t[:, 0], 0.0)
+        limit = mu * p
+        allowed = np.maximum(tol.STICK_ROUNDOFF * limit, tol.TRACTION_ROUNDOFF * np.max(p, initial=0.0))
+        excess = np.abs(t[:, 1]) - limit
+        held = (np.asarray(step.status) == STICK) & (excess > allowed)
+        if np.any(held):
+            count += int(np.count_nonzero(held))
+            share = float(np.max(excess[held] / np.maximum(limit[held], np.finfo(float).tiny)))
+            if share > worst:
+                worst, where = share, step.step
+    if not count:
+        return []
+    return [f"Γ's points stick with |t_T| above μ|t_N| = {mu:g}|t_N| at {count} (point, increment) pair(s), by up to "
+            f"{worst:.2g} of μ|t_N| (increment {where:g}): Newton's stick/slip decision keeps a point's status "
+            f"within {tol.DECISION_BAND:g} of Γ's largest μp (DECISION_BAND, above the round-off of its margins), "
+            "so the loads there ask a shear/normal within that band of μ, or above it, where no sticking "
+            "equilibrium exists; a μ that much larger sticks (docs/newton.md, \"Decisions that round-off "
+            "cannot move\")"]
+
+
+def _locking_warnings(scene) -> list[str]:
+    """Volumetric locking: plane strain with ν above NU_LOCKING_WARN."""
     if scene.plane != "strain":
         return []
     high = [(body, m.nu) for body, m in scene.materials.items() if m.nu > tol.NU_LOCKING_WARN]
