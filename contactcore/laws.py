@@ -78,10 +78,10 @@ class Decision:
     relative to round-off scales is round-off too.
 
     Γ is at rest for the stick/slip decision where its largest pressure
-    ``pressure`` is at DECISION_FLOOR, not where its largest slip limit
-    ``μp`` is: a small μ puts μp below the floor under any load (the
-    layered cycle at μ = 1e-6, p = 5e-5 of E), and the rest window held
-    every point at stick there.  Under load the traction scale is
+    ``pressure`` is at DECISION_FLOOR too, not only its largest slip limit
+    ``μp``: a small μ puts μp below the floor under any load (the layered
+    cycle at μ = 1e-6, p = 5e-5 of E), and the rest window held every
+    point at stick there.  Under load the traction scale is
     ``max(μp, TRACTION_ROUNDOFF · p)``, with no absolute floor: the band
     then lets a sticking ``|t_T|`` past ``μp`` by at most ``1e-5 μp`` or the
     traction's round-off (μ below MU_SMALLEST is refused, where that
@@ -316,7 +316,8 @@ class CoulombLaw(_Law):
             stick = closed & (np.abs(trial) <= limit * (1.0 + tol.STICK_ROUNDOFF))
         else:
             stick = closed & decision.switch(limit - np.abs(trial), decision.traction, decision.previous == STICK,
-                                             self.kT, rest=decision.pressure <= tol.DECISION_FLOOR)
+                                             self.kT, rest=decision.traction <= tol.DECISION_FLOOR
+                                             and decision.pressure <= tol.DECISION_FLOOR)
         slip = closed & ~stick
         direction = np.sign(trial)
         tT = np.where(stick, trial, np.where(slip, limit * direction, 0.0))
