@@ -19,7 +19,10 @@ During Newton, :func:`lets_go` asks the same of each status map's closed
 points (a body that Γ has let go makes the tangent singular), and
 :func:`check_held` refuses a converged answer that leaves a body free:
 its position is not determined.
-:func:`material_warnings` warns about volumetric locking near ν = 0.5.
+:func:`material_warnings` warns about volumetric locking near ν = 0.5, and
+about Coulomb friction across two materials beyond the uniqueness bound
+μ|β_Dundurs| (:func:`dundurs_warnings`); :func:`friction_excess_warnings`
+about points a converged path holds at stick beyond μ|t_N|.
 A method may refuse more before its solve: :func:`check_friction_springs`
 (EFGM) penalty Coulomb springs that dwarf the softer body.
 """
