@@ -425,36 +425,45 @@ def friction_excess_warnings(scene, path) -> list[str]:
     """Points a converged ``path`` (an
     :class:`~contactcore.interface_path.InterfacePath`) holds at stick with
     ``|t_T|`` beyond ``μ|t_N|`` by more than the traction's round-off
-    (``STICK_ROUNDOFF`` of μp, or ``TRACTION_ROUNDOFF`` of the step's
-    largest pressure): Newton's stick/slip band (DECISION_BAND of Γ's
+    (``STICK_ROUNDOFF`` of μp, or ``TRACTION_ROUNDOFF`` of the largest
+    pressure along the path): Newton's stick/slip band (DECISION_BAND of Γ's
     largest μp) keeps a point's previous status within it, so a load whose
     shear/normal lies within 1e-5 of μ (above it: no sticking equilibrium)
-    may come back sticking.  One warning naming how many (point,
-    increment) pairs, the largest excess over μ|t_N| and its increment."""
+    may come back sticking; and at a load back to zero the rest window
+    (REST_ROUNDOFF) may hold a small real shear (docs/newton.md, "A small
+    μ").  One warning naming how many (point, increment) pairs, the
+    largest excess over μ|t_N| (or over the path's largest μp, where the
+    point's is smaller) and its increment."""
     mu = getattr(scene.law, "mu", None)
     if mu is None or scene.law.name != "coulomb" or path is None:
         return []
     count, worst, where = 0, 0.0, None
+    # the round-off of a traction is relative to the largest pressure Γ
+    # carried along the path: at a load back to zero the step's own is round-off
+    carried = max((float(np.max(-np.asarray(s.traction, float).reshape(-1, 2)[:, 0], initial=0.0))
+                   for s in path.steps), default=0.0)
     for step in path.steps:
         t = np.asarray(step.traction, float).reshape(-1, 2)
         p = np.maximum(-t[:, 0], 0.0)
         limit = mu * p
-        allowed = np.maximum(tol.STICK_ROUNDOFF * limit, tol.TRACTION_ROUNDOFF * np.max(p, initial=0.0))
+        allowed = np.maximum(tol.STICK_ROUNDOFF * limit, tol.TRACTION_ROUNDOFF * carried)
         excess = np.abs(t[:, 1]) - limit
         held = (np.asarray(step.status) == STICK) & (excess > allowed)
         if np.any(held):
             count += int(np.count_nonzero(held))
-            share = float(np.max(excess[held] / np.maximum(limit[held], np.finfo(float).tiny)))
+            scale = np.maximum(limit[held], max(mu * carried, np.finfo(float).tiny))
+            share = float(np.max(excess[held] / scale))
             if share > worst:
                 worst, where = share, step.step
     if not count:
         return []
     return [f"Γ's points stick with |t_T| above μ|t_N| = {mu:g}|t_N| at {count} (point, increment) pair(s), by up to "
-            f"{worst:.2g} of μ|t_N| (increment {where:g}): Newton's stick/slip decision keeps a point's status "
-            f"within {tol.DECISION_BAND:g} of Γ's largest μp (DECISION_BAND, above the round-off of its margins), "
-            "so the loads there ask a shear/normal within that band of μ, or above it, where no sticking "
-            "equilibrium exists; a μ that much larger sticks (docs/newton.md, \"Decisions that round-off "
-            "cannot move\")"]
+            f"{worst:.2g} of μ|t_N| (of its largest along the path where the point's is smaller; increment "
+            f"{where:g}): Newton keeps a point's status within {tol.DECISION_BAND:g} of Γ's largest μp "
+            "(DECISION_BAND, above the round-off of its margins) and holds a point at rest where Γ is unloaded "
+            "(REST_ROUNDOFF), so the loads there ask a shear/normal within that band of μ or above it, where no "
+            "sticking equilibrium exists, or leave a shear an unloaded Γ does not tell from round-off; a μ that "
+            "much larger sticks (docs/newton.md, \"Decisions that round-off cannot move\")"]
 
 
 def _locking_warnings(scene) -> list[str]:
