@@ -352,7 +352,7 @@ REST_ROUNDOFF = 1e-9
 #: cycle at μ = 1e-6 (p = 10 MPa of E = 2e5, μp = 5e-11) put below, so that
 #: the at-rest rule (REST_ROUNDOFF, whose window is a gap times γ) held
 #: every point of a loaded Γ at stick with |t_T| up to 2.9 μ|t_N| (xfem P1,
-#: heldout5/cycle_mu1e-06.toml, /work/reports/grader5.md #1).
+#: tests/scenes/cycle_mu1e-06.toml, a held-out test's #1).
 TRACTION_ROUNDOFF = 1e-9
 
 #: The least non-zero friction coefficient: below 10 TRACTION_ROUNDOFF the
@@ -372,8 +372,8 @@ MU_SMALLEST = 10 * TRACTION_ROUNDOFF
 #: pressure by μ: the loop gain μ|β| couples them, and the quasi-static
 #: problem loses uniqueness at large μ (Klarbring, Ing. Arch. 1990; Hassani,
 #: Hild, Ionescu & Sakki, CMAME 2003).  Measured 2026-11-27 on the layered
-#: cycle (heldout5/gen_cycle.py, contrast 1e3, ν = 0, plane strain,
-#: β = 0.499; exact Coulomb, h = 2.5 and 1.25, fe, xfem, efgm P1): at
+#: cycle (tests/scenes/cycle_mu1e-06.toml, μ changed, its shear path
+#: scaled by μ; contrast 1e3, ν = 0, plane strain, β = 0.499; exact Coulomb, h = 2.5 and 1.25, fe, xfem, efgm P1): at
 #: μ|β| = 0.5 and 0.75 all three hold the uniform closed form (fe ≤ 1.3e-12
 #: of p, xfem ≤ 1.3e-8, efgm its discretisation error ≤ 1.3e-2); at 1.0
 #: (h = 1.25) xfem and efgm open 23 and 46 points under p with tractions
