@@ -37,7 +37,7 @@ from typing import Any, Callable, ClassVar
 
 import numpy as np
 
-from . import exact
+from . import exact, health
 from . import tolerances as tol
 from .errors import DiscretisationError
 from .geometry import LevelSetInterface, Rectangle
@@ -280,6 +280,7 @@ def solve(scene, discretisation: Discretisation, h: float | None = None, *, pape
     report.warnings += (scene.interface_warnings(built.h, fitted=built.fitted) + scene.ligament_warnings(built.h)
                         + built.warnings)
     path = path.gathered(built.system.collective, scene.interface)
+    report.warnings += health.friction_excess_warnings(scene, path)
     fields = built.fields(x)
     strain_unit = Scales.of(scene.user).strain if scene.source is not None else 1.0  # ε = (U/L) σ'/E'
     report.warnings += scene.small_strain_warnings(fields, built.h, strain_unit)

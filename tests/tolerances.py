@@ -504,13 +504,19 @@ UNLOADED_EXTRAPOLATED = 1e-11
 #: status maps identical): exact 1.7e-12 (xfem; the load
 #: change itself moves it by 1e-12), on springs 3.0e-12 (fe; xfem refuses
 #: it in the same words).  Each bound is 3-10x its case's worst.
+#: The layered cycle at μ = 1e-6 (tests/scenes/cycle_mu1e-06.toml, h = 2.5,
+#: P1), Haswell against Nehalem, 2026-11-27: every status map identical,
+#: tractions and jumps within 3.3e-12 of their largest (xfem; efgm 1.1e-12,
+#: fe 4e-15).
+SMALL_MU_PROFILES = 2e-11
+
 ROUNDOFF_PROFILES = {"C-coulomb-10x": 1e-8, "C-coulomb-100x": 1e-8, "contrast-1e-6": 1e-7,
                      "contrast+1e-6": 5e-6, "shifted": 2e-7, "soft-layer": 1e-5, "efgm-springs-limit": 2e-10,
                      "C-coulomb-exact": 1e-11, "inclined-exact": 2e-11, "stiff-layer-exact": 5e-9,
                      "disc-pressed": 1e-10, "disc-pulled": 1e-10,
                      "disc-squeezed-exact": 1e-11, "disc-squeezed-penalty": 1e-11,
                      "tie-exact": TIE_PROFILES, "tie-exact-fine": TIE_PROFILES, "released-exact": RELEASED_PROFILES, "released-coulomb-exact": RELEASED_PROFILES,
-                     "unloaded": UNLOADED_PROFILES}
+                     "unloaded": UNLOADED_PROFILES, "small-mu-cycle": SMALL_MU_PROFILES}
 
 #: The exact-law round-off cases: the lower layer of the layered-slip closed
 #: form this much stiffer (the contrast where EFGM needed the most Newton
@@ -1210,3 +1216,14 @@ RESIDUE_ORDER_GAP = 0.5
 #: one a decade below est.RESIDUE_SHARE (named) and one a decade above
 #: (not named).
 RESIDUE_BELOW, RESIDUE_ABOVE = 1e-4, 1e-2
+
+#: The layered cycle at μ = 1e-6 and 1e-7 (tests/scenes/cycle_mu1e-0*.toml,
+#: grader5 #1): every field is uniform, so fe and xfem P1 hold the closed
+#: form but for round-off, which is relative to the pressure p, not to μp:
+#: measured 2026-11-27 at h = 2.5, t_T within 2.6e-13 p (xfem P1; fe 4.5e-16)
+#: at both μ, g_T within 1.3e-7 of the slip at μ = 1e-7 (1.3e-8 at 1e-6; fe
+#: 5.8e-10).  The old decision (a stick window of REST_ROUNDOFF·γ under
+#: load) left every point at stick: t_T 2.3 μp off (xfem), g_T lost
+#: (1.0 of the slip); fe at μ = 1e-7 0.17 μp and 0.11 of the slip.
+SMALL_MU_TRACTION = 1e-11
+SMALL_MU_SLIP = 1e-5
