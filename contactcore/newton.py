@@ -332,7 +332,7 @@ class _Newton:
                 # a regularised step on any rank is one on every rank (a rank
                 # whose points do not slip holds the law's own tangent)
                 secant = not self.ranks.all(np.array_equal(tangent, response.tangent))
-                alpha, evaluated = self._line_search(u, du, b, R, response.status, secant, tangent, held=held)
+                alpha, evaluated = self._line_search(u, du, b, R, response.status, secant, tangent)
                 if secant and evaluated is None and self._slipping(response):  # the secant step is no descent
                     # the pinned map's tangent with the slipping map's residual: its
                     # step solves no map's linear problem, so it settles nothing
@@ -422,7 +422,7 @@ class _Newton:
         every rank: the step then solved its status map's linear problem."""
         return tangent is not None and self.ranks.all(np.array_equal(tangent, response.tangent))
 
-    def _line_search(self, u, du, b, R, status, secant: bool = False, tangent=None, held=None):
+    def _line_search(self, u, du, b, R, status, secant: bool = False, tangent=None):
         """The largest ``α = 2⁻ʲ`` (j <= LINE_SEARCH_HALVINGS) whose step
         ``u + α δu`` decreases the merit ``‖R‖₂`` by Armijo's rule
         ``‖R(u + α δu)‖ <= (1 − ARMIJO α) ‖R(u)‖`` — the globalised
@@ -430,12 +430,7 @@ class _Newton:
         ``vinewtonrsls``: ``δu = −J⁻¹R`` is a descent direction of ``½‖R‖²``
         for any generalised Jacobian ``J`` of the semismooth residual, so a
         small enough step always decreases it and breaks a cycle between
-        status maps.  A law step whose full step only moves points on from
-        stick to slip, each for the first time in the step (:meth:`_onward`,
-        ``held`` the statuses of :meth:`_progress`), is taken whole whatever
-        its merit: smaller steps move no point and creep to the same map's
-        solution (docs/newton.md, "A tie").  If none does, a law step is
-        taken whole (the merit has
+        status maps.  If none does, a law step is taken whole (the merit has
         a kink there that is no zero, and smaller steps only cycle about it),
         a secant step at its smallest with no response (the caller then
         pins a point, :meth:`_pinned`).  A ``secant`` step
@@ -463,8 +458,6 @@ class _Newton:
             value = along(alpha)
             if value <= (1.0 - tol.ARMIJO * alpha) * merit or (secant and alpha == 1.0 and value <= merit):
                 break
-            if alpha == 1.0 and not secant and tangent is not None and self._onward(held, status, seen[1.0][0]):
-                return 1.0, seen[1.0]  # a law step whose map only moves points on from stick to slip
             alpha /= 2
         else:
             # a law step that no halving lets descend stands at a kink of
@@ -480,19 +473,6 @@ class _Newton:
                 break
             alpha, value = 2 * alpha, longer
         return alpha, seen[alpha]
-
-    def _onward(self, held, status, response) -> bool:
-        """Whether the law's map at ``response`` differs from ``status``
-        (on some rank) and only by points that stuck there and slip now,
-        each for the first time in the step (``held``, :meth:`_progress`).
-        Such a full step is taken whatever the merit (docs/newton.md, "A
-        tie"): a point can do so once per step, so at most m of these steps
-        escape Armijo's rule and a cycle between maps cannot survive."""
-        if held is None:
-            return False
-        moved = response.status != status
-        onward = (status == STICK) & (response.status == SLIP) & ((held & (1 << SLIP)) == 0)
-        return self.ranks.all(bool(np.all(onward[moved]))) and self.ranks.max(float(np.any(moved))) > 0
 
     def _ahead(self, u, du, status):
         """The maps Newton is heading for, farthest first: the law's

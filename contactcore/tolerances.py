@@ -649,18 +649,17 @@ STEP_ROUNDOFF = 1e-12
 #: μp, efgm P1) EFGM's discretisation leaves every point's |t*| within
 #: ±1.6e-4 of μp at h = 0.05, and the semismooth Newton moves them from stick
 #: to slip a few per iteration (each solve passes the slip's excess to the
-#: neighbours): 34 iterations at h = 0.05 (180 points), 47 at h = 0.04 (228
-#: points), 9 at h = 0.1, 75 at h = 0.025, 48 at h = 0.0125 (measured
-#: 2026-11-27 with a first move from stick to slip taken whole, docs/newton.md
-#: "A tie"; 59, 94, 12, 171 and 94 before it), one full step per point or two
-#: that the slip front crosses.
+#: neighbours): 59 iterations at h = 0.05 (180 points), 94 at h = 0.04 (228
+#: points), 12 at h = 0.1, 171 at h = 0.025, 94 at h = 0.0125 (measured
+#: 2026-11-27, docs/newton.md "A tie"), about one in two of them moving
+#: points on (the others line-search steps that move none).
 NEWTON_MAX_ITERATIONS = 25
 NEWTON_PROGRESS_ITERATIONS = 2
 #: The most a step's budget grows to: the tie above took 171 iterations at
-#: h = 0.025 (360 points) before a first move on was taken whole, 75 after;
-#: without a cap a failing step on m points could run 25 + 4m iterations
-#: (5 569 on a 1 386-point circle) at each of its cut-backs.  The cap leaves
-#: the measured tie more than twice its iterations at every h measured.
+#: h = 0.025 (360 points); without a cap a failing step on m points could
+#: run 25 + 4m iterations (5 569 on a 1 386-point circle) at each of its
+#: cut-backs.  The cap leaves the measured tie more than twice its
+#: iterations at every h measured.
 NEWTON_PROGRESS_CAP = 400
 
 #: contactcore.slide moves a body held by Γ's slipping points alone along

@@ -165,8 +165,7 @@ def _squeezed(enforcement: str):
 #: without and with friction: every point at rest; and a shear driven to
 #: exactly the friction limit, where Newton moves EFGM's points from stick
 #: to slip a few per iteration, at h = 0.05 and at h = 0.025 (360 points,
-#: where the line search takes ~70 whole steps that only move points on
-#: from stick to slip: docs/newton.md, "A tie").
+#: 171 iterations: docs/newton.md, "A tie").
 def _small_mu():
     """The layered cycle at μ = 1e-6 across a contrast of 1e3 (grader5 #1)."""
     from contactcore import load_scene

@@ -113,3 +113,28 @@ def test_a_large_mu_across_two_materials_is_warned():
     assert health.material_warnings(at(1.01 * limit))
     same = {"minus": scene.materials["plus"], "plus": scene.materials["plus"]}
     assert health.dundurs_beta(at(100.0, materials=same)) == 0 and not health.material_warnings(at(100.0, materials=same))
+
+
+@pytest.mark.slow
+def test_a_large_mu_on_equal_layers_is_the_closed_form_or_refused():
+    """Two equal layers (Dundurs β = 0: the uniform answer is unique in the
+    continuum) with μ = 100 along the layered cycle (grader5 #3), xfem P1:
+    Newton either follows the closed form at every loaded increment or
+    refuses.  A line-search rule tried on 2026-11-27 (a step that only
+    moves points on from stick to slip taken whole) turned the refusal
+    into a converged answer of Nitsche's discrete problem with 12–17 of 24
+    points open under pressure and t_T up to 784 p off, exit 0
+    (docs/newton.md, "A tie")."""
+    from contactcore import SolverError
+    scene = load_scene(SCENES / "cycle_mu100_same.toml")
+    closed = _closed("cycle_mu100_same.closed.json")
+    try:
+        result = methods.solver("xfem")(scene, None, degree=1, estimate_condition=False)
+    except SolverError:
+        return  # refused: Newton cannot settle it (docs/contact-enforcement.md, "Known limits")
+    pressure = max(row["p"] for row in closed.values())
+    for n, step in enumerate(result.interface.steps, start=1):
+        row = closed[n]
+        expected = STATUS_NAMES.index(row["status"])
+        assert np.all(step.status == expected), (n, row["status"], step.status)
+        assert np.max(np.abs(step.traction[:, 1] - row["tT"])) <= tol.LARGE_MU_TRACTION * pressure, n

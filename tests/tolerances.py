@@ -410,13 +410,12 @@ RELEASED_MU = 0.3
 #: tests/scenes/shearslide.toml cut at this increment, where its shear
 #: reaches exactly μp (tests/roundoff.py, "tie-exact"), at this spacing:
 #: efgm P1 exited at increment 4 after 25 iterations (grader1 item 2); it
-#: needs 34 (59 before the line search took whole the steps that only move
-#: points on from stick to slip, 2026-11-27).
+#: needs 59 (2026-11-27).
 TIE_INCREMENT = 4
 ROUNDOFF_TIE_H = 0.05
 #: The tie again at half that spacing (360 points, 170 sticking at the
-#: end): its Newton takes ~70 whole steps that only move points on from
-#: stick to slip (contactcore.newton, _Newton._onward), a decision each.
+#: end): its Newton takes 171 iterations, the slip front crossing Γ one or
+#: two points a solve, a decision each (docs/newton.md, "A tie").
 ROUNDOFF_TIE_FINE_H = 0.025
 
 #: The tie's spacing where a failure's message is read
@@ -438,8 +437,7 @@ RELEASED_PROFILES = 5e-8
 #: Measured 2026-11-27, Haswell against Nehalem and Sandybridge, status maps
 #: identical (efgm 31 stick, 149 slip at the tie): efgm 1.8e-13 and
 #: 2.8e-15, fe and xfem 1.2e-14 and 2e-17.  10x efgm's worst.  Measured
-#: again later that day (63 stick, 117 slip; the same before and after the
-#: line search's whole steps onward), Haswell against Nehalem, Sandybridge,
+#: again later that day (63 stick, 117 slip), Haswell against Nehalem, Sandybridge,
 #: Zen, Prescott and EFGM's nodes shuffled: efgm up to 1.5e-12 and 3.0e-14
 #: (1.3e-12 and 6.5e-15 at h = 0.025, tie-exact-fine); loads scaled by
 #: 1 + 1e-12 move fe's and xfem's tractions by 1.0e-12 themselves.
@@ -1227,3 +1225,9 @@ RESIDUE_BELOW, RESIDUE_ABOVE = 1e-4, 1e-2
 #: (1.0 of the slip); fe at μ = 1e-7 0.17 μp and 0.11 of the slip.
 SMALL_MU_TRACTION = 1e-11
 SMALL_MU_SLIP = 1e-5
+
+#: The layered cycle on equal layers at μ = 100 (tests/test_mu_extremes.py),
+#: of the path's largest pressure: the uniform answer lies in every method's
+#: space (fe P1 holds it to 1.8e-10 of p, xfem P1 at μ = 30 to 3.4e-11;
+#: grader5 and musmall, 2026-11-27); a wrong map is off by O(p).
+LARGE_MU_TRACTION = 1e-8
