@@ -257,14 +257,38 @@ def _edge_rules(cut: CutIntegration, snapped: list[int]) -> None:
             if not across and c < cells.owned_cells and not _on_domain_boundary(cut.scene, np.array([a, b])):
                 raise DiscretisationError("xfem: the cell across an edge on Γ is missing on this rank; the mesh "
                                           "must ghost the cells that share a facet (dolfinx's shared_facet)")
-            if len(across) == 1 and whole_plus[across[0]]:
-                rules.append((a + g[:, None] * (b - a), gw * float(np.linalg.norm(b - a))))
+            pts = a + g[:, None] * (b - a)
+            if len(across) == 1 and (whole_plus[across[0]] or _beside_another_branch(cut, across[0], pts)):
+                rules.append((pts, gw * float(np.linalg.norm(b - a))))
         if rules:
             pts = np.vstack([p for p, _ in rules])
             rule = (pts, np.concatenate([w for _, w in rules]), cut.scene.interface.normals(pts))
             if isinstance(cut.scene.interface, LevelSetInterface):
                 cut._check_rules_found(c, rule)
             cut.gamma_rules[c] = rule
+
+
+def _beside_another_branch(cut: CutIntegration, d: int, pts: np.ndarray) -> bool:
+    """Whether the edge with Gauss points ``pts`` of a snapped − cell is
+    Γ's only rule there though cell ``d`` across it is cut: ``d`` is cut by
+    another branch of Γ (a level set with two, φ = (x − 1.2)(1.25 − x)), Γ
+    runs along the edge (every Gauss point within ``d``'s snap) and ``d``'s
+    own rule has no point on the edge.  Without it that stretch of Γ was
+    integrated nowhere (half of Γ's length; a review, 2026-11-27).  A
+    curved Γ through the edge's ends bows off it by more than the snap,
+    so its arc in ``d`` stays the only rule there."""
+    snap = cut.snap_of(d)
+    if d not in cut.regions or not on_gamma(cut.scene, pts, snap).all():
+        return False
+    rule = cut.gamma_rules.get(d)
+    if rule is None or not len(rule[1]):
+        return True
+    a, b = pts[0], pts[-1]
+    t = (b - a) / np.linalg.norm(b - a)
+    rel = rule[0] - a
+    along = rel @ t
+    off = np.abs(rel @ np.array([-t[1], t[0]]))
+    return not np.any((off <= snap) & (along >= -snap) & (along <= float(np.linalg.norm(b - a)) + snap))
 
 
 def _on_domain_boundary(scene: Scene, ends: np.ndarray) -> bool:
