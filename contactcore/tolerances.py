@@ -1046,3 +1046,14 @@ ENERGY_RINGS = 1
 #: measured table).  ``efficiency`` draws it as the estimate's error bar.
 ESTIMATE_TRUST = 2.0
 
+
+#: efgm's refusal of a singular moment matrix (efgm.shape.MLS._check_regular)
+#: says the nodes in the point's support lie "all on one line" when their
+#: centred coordinates' second singular value is at most this times their
+#: first: a message's wording only, no decision of the numerics.  Nodes of
+#: a grid on one line give 0 (grader5's cycle_edge, cycle_edge2), and a
+#: line's round-off in a moved domain is about eps times the domain's size
+#: over the support's (1e-12 at 1e4 spacings); nodes this close to a line
+#: leave a scaled determinant ~1e-16, far below MOMENT_REGULARITY (1e-10),
+#: so a matrix they make singular is singular because they are on a line.
+EFGM_NODES_ON_ONE_LINE = 1e-8
