@@ -942,3 +942,39 @@ def test_a_two_run_estimate_among_three_runs_is_compared_with_every_quantity_of_
     two = est.profile_estimates(levels[1:], 2, "xfem", scene=scene, exclude=0.1)
     assert "M:sxy" in est.residues(scene, levels[1:], two, 0.1)
     assert "M:sxy" in est.residues(scene, levels, three, 0.1)
+
+
+@pytest.mark.parametrize("method", ["fe", pytest.param("xfem", marks=pytest.mark.slow)])
+def test_p2_stresses_next_to_a_curved_gamma_keep_their_order_and_rays_centre_on_the_estimate(method):
+    """grader6's fault 3: on one ray across a curved Γ the two-run
+    estimate of a P2 stress came out at 2.3-2.9 of its error, most of it
+    within 0.1 of Γ.  The stress there converges at the method's order
+    (the median over 48 rays of the RMS error within 0.1 of Γ, h = 0.1
+    against 0.05, at least NEAR_CURVED_GAMMA_STRESS_ORDER: 1.89 measured
+    for fe and xfem), and the per-ray effectivities centre inside
+    EFFECTIVITY (median 1.25 measured; 8 (fe) and 5 (xfem) of 144 lie
+    above 2: one ray reads the pointwise errors of the one or two cells
+    next to Γ, which the two meshes set independently;
+    docs/error-estimates.md, "Stresses next to a curved Γ")."""
+    from contactcore import LineProfile, Material, sample_profiles
+    from contactcore.discretisation import solve
+    from verification import methods
+    from verification.closed_forms import pressurised_rod
+    case = pressurised_rod(a=0.5, b=1.0, p=1e7, kN=1e12, kT=1e11, rod=Material(2e11, 0.3),
+                           matrix=Material(3e10, 0.2))      # grader6's disc_coulomb_stiff
+    angles = 2 * np.pi * (np.arange(48) + 0.5) / 48
+    rays = tuple(LineProfile(f"r{k}", (0.0, 0.0), (np.cos(a), np.sin(a)), ("sxx", "syy", "sxy"))
+                 for k, a in enumerate(angles))
+    scene = case.scene.with_changes(profiles=rays)
+    h, radius = 0.1, 0.5
+    results = [solve(scene, methods.discretisation(method)(degree=2), hk) for hk in est.levels_of(h, 2)]
+    estimate = est.estimate_runs(scene, results, 0.0, energy=False)
+    coarse = sample_profiles(scene, results[0].fields, results[0].interface)
+    ratios, effectivities = [], []
+    for c, f, x in zip(coarse, estimate.sampled, sample_profiles(scene, case)):
+        near = np.abs(np.hypot(x.columns["x"], x.columns["y"]) - radius) < h     # within a coarse cell of Γ
+        for q in ("sxx", "syy", "sxy"):
+            ratios.append(est.rms((c.columns[q] - x.columns[q])[near]) / est.rms((f.columns[q] - x.columns[q])[near]))
+            effectivities.append(estimate.profiles[f.id][q].rms / est.rms(f.columns[q] - x.columns[q]))
+    assert np.log2(np.median(ratios)) >= tol.NEAR_CURVED_GAMMA_STRESS_ORDER, np.log2(np.median(ratios))
+    assert tol.EFFECTIVITY[0] <= np.median(effectivities) <= tol.EFFECTIVITY[1], np.median(effectivities)
