@@ -102,19 +102,26 @@ class XFEM(Discretisation):
                     "whose mesh makes the pin a node, or fe or efgm")
 
 
+def cell_counts(scene, h: float) -> list[int]:
+    """Cells per side of xfem's structured mesh of the rectangle with
+    cells of size ≈ h (:func:`xdolfinx.xfem.cells.background_mesh` builds
+    it; :meth:`XFEM.check_spacing` predicts its nodes before any mesh)."""
+    return [max(1, round(s / h)) for s in scene.domain.size]
+
+
 def structured_grid(scene, cell: str, degree: int, resolution):
     """XFEM's nodes on a rectangle of structured ``cell`` cells at
     ``resolution``, as ``(corner, steps, counts)``: the nodes are
     ``corner + j·steps`` for ``j = 0 … counts`` per direction (the cells'
     vertices at degree 1; at degree 2 also the mid-sides and, of a quad,
     its centre: half the cell); None on gmsh's mesh (a disc, or
-    ``cell="gmsh"``), which does not follow this rule.  Cells per side as
-    :func:`xdolfinx.xfem.cells.cell_counts` counts them."""
+    ``cell="gmsh"``), which does not follow this rule.  Cells per side by
+    :func:`cell_counts`."""
     from contactcore.geometry import Rectangle
 
     if cell == "gmsh" or not isinstance(scene.domain, Rectangle):
         return None
-    cells = resolution.counts or [max(1, round(s / resolution.h)) for s in scene.domain.size]
+    cells = resolution.counts or cell_counts(scene, resolution.h)
     nodes = [degree * n for n in cells]
     return tuple(scene.domain.corner), [s / n for s, n in zip(scene.domain.size, nodes)], nodes
 

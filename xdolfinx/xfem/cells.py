@@ -15,7 +15,7 @@ from contactcore.collective import Collective
 from contactcore.discretisation import check_choice
 from contactcore.geometry import Rectangle
 
-from ..options import XFEM_CELLS
+from ..options import XFEM_CELLS, cell_counts
 
 
 def background_cell(scene: Scene, cell: str) -> str:
@@ -44,11 +44,6 @@ def background_mesh(scene: Scene, h: float, cell: str, counts=None, comm=MPI.COM
     n = list(counts) if counts is not None else cell_counts(scene, h)
     kind = mesh.CellType.quadrilateral if cell == "quad" else mesh.CellType.triangle
     return mesh.create_rectangle(comm, [np.array([x0, y0]), np.array([x0 + a, y0 + b])], n, kind)
-
-
-def cell_counts(scene: Scene, h: float) -> list[int]:
-    """Cells per side of a structured mesh of the rectangle with cells of size ≈ h."""
-    return [max(1, round(s / h)) for s in scene.domain.size]
 
 
 def node_sides(scene: Scene, coords: np.ndarray, snap) -> np.ndarray:
