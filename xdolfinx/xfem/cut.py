@@ -47,8 +47,9 @@ class CutIntegration:
     (``cells.node_snap``, :data:`contactcore.tolerances.XFEM_SNAP` of the
     largest cell at the node): a cell whose corners off Γ all lie on one
     side is whole on that side, and Γ along an edge whose two ends are on
-    Γ, between a whole − cell and a whole + cell, is that edge, its rule
-    held by the − cell alone (:func:`_edge_rules`); a cell with corners off
+    Γ, between a whole − cell and a whole + cell (or a cell another branch
+    of Γ cuts), is that edge, its rule held by the − cell alone
+    (:func:`_edge_rules`); a cell with corners off
     Γ on both sides is cut along the exact Γ.  So no part of a cell is
     thinner than XFEM_SNAP of the cell.
 
@@ -223,7 +224,8 @@ class CutIntegration:
 def _edge_rules(cut: CutIntegration, snapped: list[int]) -> None:
     """Γ's rule along each edge that Γ was snapped to: an edge of a
     ``snapped`` cell of ``cut`` (whole on the − side) whose two ends are on Γ and
-    whose cell across is whole on the + side.  Γ is then that edge:
+    whose cell across is whole on the + side, or cut by another branch of
+    Γ (:func:`_beside_another_branch`).  Γ is then that edge:
     Gauss points on it with the level set's normals there, held by the
     − cell alone, so no edge is counted twice (two − cells beside it
     would each have held it) and the edge carries Γ exactly where the
@@ -258,7 +260,7 @@ def _edge_rules(cut: CutIntegration, snapped: list[int]) -> None:
                 raise DiscretisationError("xfem: the cell across an edge on Γ is missing on this rank; the mesh "
                                           "must ghost the cells that share a facet (dolfinx's shared_facet)")
             pts = a + g[:, None] * (b - a)
-            if len(across) == 1 and (whole_plus[across[0]] or _beside_another_branch(cut, across[0], pts)):
+            if len(across) == 1 and (whole_plus[across[0]] or _beside_another_branch(cut, across[0], a, b, pts)):
                 rules.append((pts, gw * float(np.linalg.norm(b - a))))
         if rules:
             pts = np.vstack([p for p, _ in rules])
@@ -268,8 +270,8 @@ def _edge_rules(cut: CutIntegration, snapped: list[int]) -> None:
             cut.gamma_rules[c] = rule
 
 
-def _beside_another_branch(cut: CutIntegration, d: int, pts: np.ndarray) -> bool:
-    """Whether the edge with Gauss points ``pts`` of a snapped − cell is
+def _beside_another_branch(cut: CutIntegration, d: int, a: np.ndarray, b: np.ndarray, pts: np.ndarray) -> bool:
+    """Whether the edge from ``a`` to ``b`` (Gauss points ``pts``) of a snapped − cell is
     Γ's only rule there though cell ``d`` across it is cut: ``d`` is cut by
     another branch of Γ (a level set with two, φ = (x − 1.2)(1.25 − x)), Γ
     runs along the edge (every Gauss point within ``d``'s snap) and ``d``'s
@@ -283,12 +285,11 @@ def _beside_another_branch(cut: CutIntegration, d: int, pts: np.ndarray) -> bool
     rule = cut.gamma_rules.get(d)
     if rule is None or not len(rule[1]):
         return True
-    a, b = pts[0], pts[-1]
-    t = (b - a) / np.linalg.norm(b - a)
+    length = float(np.linalg.norm(b - a))
+    t = (b - a) / length
     rel = rule[0] - a
-    along = rel @ t
-    off = np.abs(rel @ np.array([-t[1], t[0]]))
-    return not np.any((off <= snap) & (along >= -snap) & (along <= float(np.linalg.norm(b - a)) + snap))
+    along, off = rel @ t, np.abs(rel @ np.array([-t[1], t[0]]))
+    return not np.any((off <= snap) & (along >= -snap) & (along <= length + snap))
 
 
 def _on_domain_boundary(scene: Scene, ends: np.ndarray) -> bool:
