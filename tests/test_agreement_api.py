@@ -223,7 +223,7 @@ def test_round_off_is_within_any_estimate_and_never_the_worst():
     own round-off (σxy is measured against the profile's stresses, |(σxx,
     σxy)|); a real σxy difference (1 Pa, estimates 1e-3 Pa) is
     still beyond them, and a user's floor takes the place of round-off's."""
-    from contactcore.estimate import ERROR_SUFFIX
+    from contactcore.estimate.runs import ERROR_SUFFIX
     from verification.agreement import NEGLIGIBLE_SHARE, estimated_shares, within_estimates, worst_estimate
 
     scene = load_scene("A")

@@ -19,7 +19,7 @@ import pytest
 
 import tolerances as tol
 from contactcore import discretisation, load_scene, make_law
-from contactcore.estimate import far_from_singular
+from contactcore.estimate.singular import far_from_singular
 from contactcore.profiles import sample_profile
 from contactcore.tolerances import NITSCHE_STABILISATION
 from efgm.options import EFGM

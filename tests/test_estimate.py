@@ -430,8 +430,8 @@ def test_two_run_estimates_at_order_three_warn_of_corner_pollution():
     estimated at 3 at all."""
     from verification.closed_forms import pressurised_rod
 
-    def quantity(order, observed=False):
-        return est.QuantityEstimate(np.zeros(3), float(order), observed, (order, order))
+    def quantity(order, measured=None):
+        return est.QuantityEstimate(np.zeros(3), float(order), (order, order), measured=measured)
 
     profiles = {"A5": {"gN": quantity(3), "gT": quantity(3)}, "A1": {"sxy": quantity(2)}}
     (warning,) = est.pollution_warning(load_scene("B"), profiles)
@@ -439,7 +439,7 @@ def test_two_run_estimates_at_order_three_warn_of_corner_pollution():
     assert est.order_range("gN", 2, "fe", pollution=est.pollution_order(load_scene("A")))[0] < 2
     assert est.order_range("gN", 2, "fe", pollution=est.pollution_order(load_scene("B"))) == (3, 3)
     assert est.pollution_warning(pressurised_rod().scene, profiles) == []
-    assert est.pollution_warning(load_scene("A"), {"A5": {"gN": quantity(2), "gT": quantity(3, True)}}) == []
+    assert est.pollution_warning(load_scene("A"), {"A5": {"gN": quantity(2), "gT": quantity(3, measured=3.0)}}) == []
 
 
 def test_a_changed_status_names_the_runs_it_compares():
@@ -770,7 +770,7 @@ def test_a_coarse_run_rough_at_its_cells_beyond_theory_is_not_asymptotic(rate, w
     levels = _runs_along_gamma(lambda s, hk: stress * (1.0 + s + 0.1 * s ** 2
                                                        + 100.0 * hk ** rate * np.sin(2 * np.pi * s / hk + 0.3)), h)
     theory = est.order_range("sxx", 1, "fe")
-    estimates = {"L": {"sxx": est.QuantityEstimate(np.zeros(281), est.balanced_order(*theory), False, theory)}}
+    estimates = {"L": {"sxx": est.QuantityEstimate(np.zeros(281), est.balanced_order(*theory), theory)}}
     found = est.cell_scale_orders(scene, levels, estimates, 0.1, h)
     assert bool(found) == warns, found
     lines = est.cell_scale_warnings(found, (h, h / 2))
@@ -789,7 +789,7 @@ def test_a_smooth_value_round_off_at_the_cells_or_an_observed_order_shows_no_cel
     observed (left to the order's own warning): none is named."""
     scene, h = load_scene("A"), 0.05
     theory = est.order_range("sxx", 1, "fe")
-    two = {"L": {"sxx": est.QuantityEstimate(np.zeros(281), 1.45, False, theory)}}
+    two = {"L": {"sxx": est.QuantityEstimate(np.zeros(281), 1.45, theory)}}
     smooth = _runs_along_gamma(lambda s, hk: np.sin(3 * s) + hk * s, h)
     assert est.cell_scale_orders(scene, smooth, two, 0.1, h) == {}
     lines = _runs_along_gamma(lambda s, hk: 1.0 + 2.0 * s + 1e-14 * np.sin(2 * np.pi * s / hk) / hk ** 4, h)
@@ -799,7 +799,7 @@ def test_a_smooth_value_round_off_at_the_cells_or_an_observed_order_shows_no_cel
     assert est.cell_scale_orders(scene, rough, two, 0.1, h)
     noise = _runs_along_gamma(lambda s, hk: 1e-14 * stress * (1.0 + 4.0 * hk ** 4 * np.sin(2 * np.pi * s / hk)), h)
     assert est.cell_scale_orders(scene, noise, two, 0.1, h) == {}  # round-off of A's stresses, however rough
-    three = {"L": {"sxx": est.QuantityEstimate(np.zeros(281), 4.0, True, theory)}}
+    three = {"L": {"sxx": est.QuantityEstimate(np.zeros(281), 4.0, theory, measured=4.0)}}
     assert est.cell_scale_orders(scene, rough, three, 0.1, h) == {}
 
 
@@ -817,7 +817,7 @@ def _two_profiles(share, other="sxy", h=0.05):
     levels = [[ProfileData("L", "arclength", {**base, "sxx": value(1.0, hk)}),
                ProfileData("M", "arclength", {**base, other: value(share, hk)})] for hk in (h, h / 2)]
     theory = est.order_range("sxx", 2, "xfem")
-    estimates = {pid: {q: est.QuantityEstimate(np.zeros(281), 2.0, False, theory)}
+    estimates = {pid: {q: est.QuantityEstimate(np.zeros(281), 2.0, theory)}
                  for pid, q in (("L", "sxx"), ("M", other))}
     return scene, levels, estimates
 
@@ -850,7 +850,7 @@ def test_a_small_difference_of_another_kind_at_round_off_or_observed_is_no_resid
     assert est.residues(scene, levels, estimates, 0.1) == {}
     scene, levels, estimates = _two_profiles(tol.RESIDUE_BELOW)
     assert "M:sxy" in est.residues(scene, levels, estimates, 0.1)
-    estimates["M"]["sxy"] = est.QuantityEstimate(np.zeros(281), 1.3, True, estimates["M"]["sxy"].theory)
+    estimates["M"]["sxy"] = est.QuantityEstimate(np.zeros(281), 1.3, estimates["M"]["sxy"].theory, measured=1.3)
     assert est.residues(scene, levels, estimates, 0.1) == {}
     scene, levels, estimates = _two_profiles(tol.RESIDUE_BELOW * core_tol.NEGLIGIBLE_SHARE)
     assert est.residues(scene, levels, estimates, 0.1) == {}  # M's runs differ at round-off of A's stresses

@@ -347,7 +347,7 @@ def _coulomb_profiles(key, h, beta):
 def _moved(a, b):
     """The largest RMS difference over the quantities of C1-C4, away from
     singular points, as a share of the quantity's largest value there."""
-    from contactcore.estimate import far_from_singular
+    from contactcore.estimate.singular import far_from_singular
     from verification.agreement import default_exclusion
     scene, out = load_scene("C-coulomb"), []
     for pid, pa in a.items():
@@ -382,7 +382,7 @@ def test_the_stabilisation_moves_the_answer_less_than_halving_h(key, factor):
 def _a3(key, h, beta):
     """Scene A with the unilateral law enforced exactly at stabilisation
     ``beta``: A3 (σxx on Γ) and the samples away from singular points."""
-    from contactcore.estimate import far_from_singular
+    from contactcore.estimate.singular import far_from_singular
     from verification.agreement import default_exclusion
     base = load_scene("A")
     scene = base.with_changes(law=make_law({"type": "unilateral", "enforcement": "exact", "stabilisation": beta}))

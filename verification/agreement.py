@@ -38,7 +38,9 @@ import numpy as np
 
 from contactcore import ContactError, ProfileData, Scene, SceneError, load_scene, sample_profiles
 from contactcore.scene import DISPLACEMENT_QUANTITIES, STRESS_QUANTITIES, Units
-from contactcore.estimate import ERROR_SUFFIX, far_from_singular, rms, singular_points, singular_regions
+from contactcore.estimate.extrapolation import rms
+from contactcore.estimate.runs import ERROR_SUFFIX
+from contactcore.estimate.singular import far_from_singular, singular_points, singular_regions
 from contactcore.profiles import sample_points
 from contactcore.exact import is_exact
 from contactcore.scaling import Sizes, softer_displacement

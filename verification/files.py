@@ -22,7 +22,7 @@ from contactcore import CircleInterface, ContactError, ProfileData, SceneError, 
 from contactcore.profiles import sample_points
 from contactcore.scene import Units
 from contactcore.errors import os_problem
-from contactcore.estimate import ERROR_SUFFIX
+from contactcore.estimate.runs import ERROR_SUFFIX
 
 from . import janitor
 

@@ -1,0 +1,64 @@
+"""Error estimates without a reference: Richardson on profiles, Zienkiewicz–Zhu in energy.
+
+Two estimates of how far a run is from the exact answer, method-independent
+(they read a run only through its :class:`~contactcore.result.Result`):
+Richardson extrapolation of every profile quantity from one method's runs
+at h, h/2 (and h/4), and the Zienkiewicz–Zhu estimate of one run's error
+in energy by recovery.  One idea a module, each with its maths and
+sources:
+
+- :mod:`~contactcore.estimate.runs`: the entry point, :func:`estimate`
+  and :func:`estimate_runs`, which gather the parts into an
+  :class:`Estimate`;
+- :mod:`~contactcore.estimate.extrapolation`: Richardson's estimate of a
+  profile quantity (:class:`QuantityEstimate`);
+- :mod:`~contactcore.estimate.caveats`: the warnings that say where not
+  to trust it (order, pollution, stencils, cell scale, residues);
+- :mod:`~contactcore.estimate.status`: Γ's status in the runs (whether it
+  switches; where two runs differ);
+- :mod:`~contactcore.estimate.energy`: the Zienkiewicz–Zhu estimate;
+- :mod:`~contactcore.estimate.orders`: the orders theory allows a
+  quantity, by method and degree;
+- :mod:`~contactcore.estimate.singular`: the singular points and their
+  exponents (pollution).
+
+The arrows point from the entry point to the parts: ``runs`` →
+``caveats`` → ``extrapolation`` → ``orders``, ``singular``; ``runs`` →
+``status``, ``energy`` (→ ``singular``).
+
+The package's public names, imported here as ``contactcore.estimate.NAME``,
+are its modules' public functions and classes; a module's constants stay
+in their home.
+
+numpy and scipy only; no method is imported.
+"""
+from .caveats import (cell_scale_orders, cell_scale_warnings, feature_size, order_mismatch, order_warnings,
+                      pollution_warning, residue_warnings, residues, stencil_radius, unsettled, unsettled_warnings)
+from .energy import EnergyEstimate, EnergyRule, energy_estimate, energy_norm, energy_rule, recovered_stress
+from .extrapolation import (QuantityEstimate, balanced_order, cell_scale_part, observed_order, profile_estimates,
+                            richardson, rms, sample_groups)
+from .orders import order_range, polluted, theoretical_order
+from .runs import Estimate, estimate, estimate_runs, levels_of
+from .singular import (clamped_free_exponent, corner_exponents, far_from_singular, interface_end_exponents, kolosov,
+                       pollution_order, singular_points, singular_regions)
+from .status import status_along, status_change, status_warning, switches
+
+__all__ = [
+    # runs
+    "Estimate", "estimate", "estimate_runs", "levels_of",
+    # extrapolation
+    "QuantityEstimate", "balanced_order", "cell_scale_part", "observed_order", "profile_estimates", "richardson",
+    "rms", "sample_groups",
+    # caveats
+    "cell_scale_orders", "cell_scale_warnings", "feature_size", "order_mismatch", "order_warnings",
+    "pollution_warning", "residue_warnings", "residues", "stencil_radius", "unsettled", "unsettled_warnings",
+    # status
+    "status_along", "status_change", "status_warning", "switches",
+    # energy
+    "EnergyEstimate", "EnergyRule", "energy_estimate", "energy_norm", "energy_rule", "recovered_stress",
+    # orders
+    "order_range", "polluted", "theoretical_order",
+    # singular
+    "clamped_free_exponent", "corner_exponents", "far_from_singular", "interface_end_exponents", "kolosov",
+    "pollution_order", "singular_points", "singular_regions",
+]

@@ -1,0 +1,312 @@
+"""When not to trust the Richardson estimate: the warnings, each naming the quantities concerned.
+
+The Richardson estimate (:mod:`~contactcore.estimate.extrapolation`)
+holds once the runs are in the asymptotic range, where the error is
+``C h^p`` at an order theory allows
+(:func:`~contactcore.estimate.orders.order_range`).  Each function here
+finds quantities whose runs are not, and a ``*_warning(s)`` function
+says so in one line.
+
+An observed order (three runs) further than
+:data:`~contactcore.tolerances.ORDER_MISMATCH` from the orders theory
+allows, or clipped to an end of :data:`~contactcore.tolerances.ORDER_RANGE`,
+means the runs are not yet in the asymptotic range
+(:func:`order_mismatch`, :func:`order_warnings`).  An order of
+:data:`POLLUTED_ORDER` or more taken from two runs on a domain with
+singular points that :func:`~contactcore.estimate.singular.pollution_order`
+does not take may make the estimate several times too small
+(:func:`pollution_warning`).
+
+Two runs are not asymptotic where the coarser one's stencil (a cell,
+EFGM's support, xfem P1's recovery patch: :func:`stencil_radius`) is not
+small against what it resolves: within two stencils of a singular point
+that run's error is still the singular point's own, and a stencil over
+1/:data:`~contactcore.tolerances.FEATURE_STENCILS` of the scene's smallest
+feature (:func:`feature_size`) resolves it pre-asymptotically.  Richardson
+cannot see either from two runs; the estimate names the quantities
+concerned in a warning (:func:`unsettled`).  It names too the quantities
+whose coarse run varies from cell to cell faster than theory allows
+(:func:`cell_scale_orders`), and those whose runs differ a thousand times
+less than others of their kind in the same runs, where the error's
+leading term cancels and a smaller one of another order may set the rate
+(:func:`residues`).
+
+Where Γ's status differs between the runs: :mod:`~contactcore.estimate.status`.
+
+numpy only; no method is imported.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from .. import tolerances as tol
+from ..geometry import Rectangle
+from ..profiles import ProfileData
+from ..scaling import Sizes
+from ..scene import Scene
+from .extrapolation import QuantityEstimate, cell_scale_part, rms, sample_groups
+from .orders import MESHFREE, RECOVERED_STRESS, STRESSES, TRACTIONS
+from .singular import far_from_singular, singular_points
+
+
+def _orders(theory: tuple[float, float]) -> str:
+    """``"2"``, or ``"1-2"`` for a range."""
+    low, high = theory
+    return f"{low:.3g}" if low == high else f"{low:.3g}-{high:.3g}"
+
+
+def order_warnings(estimates: dict[str, dict[str, QuantityEstimate]]) -> list[str]:
+    """One line per quantity whose observed order is further than
+    :data:`~contactcore.tolerances.ORDER_MISMATCH` from the orders theory
+    allows, or was clipped to an end of
+    :data:`~contactcore.tolerances.ORDER_RANGE` (the differences do not
+    shrink like a power of h at all)."""
+    return [f"{pid}:{q}: observed order {e.measured:.2f}{_clipped(e.measured)} against {_orders(e.theory)} in "
+            f"theory: the runs are not in the asymptotic range, the estimate is not to be trusted"
+            for pid, qs in estimates.items() for q, e in qs.items()
+            if e.measured is not None and order_mismatch(e)]
+
+
+def order_mismatch(e: QuantityEstimate) -> bool:
+    """Whether ``e``'s observed order (three runs) lies further than
+    :data:`~contactcore.tolerances.ORDER_MISMATCH` from the orders theory
+    allows, or was clipped to an end of
+    :data:`~contactcore.tolerances.ORDER_RANGE`."""
+    p = e.measured
+    return p is not None and bool(_clipped(p) or not e.theory[0] - tol.ORDER_MISMATCH <= p
+                                  <= e.theory[1] + tol.ORDER_MISMATCH)
+
+
+def _clipped(order: float) -> str:
+    """``" (clipped)"`` where an observed order sits at an end of ORDER_RANGE."""
+    return " (clipped)" if order <= tol.ORDER_RANGE[0] or order >= tol.ORDER_RANGE[1] else ""
+
+
+#: The least order at which a corner's pollution shows: the degree-2
+#: displacement and gaps (order 3) converged at 1.5-1.9 away from the
+#: singular points of nine scenes the estimate was not tuned on, their
+#: two-run estimates at order 3 0.15-0.46 of the error
+#: (docs/error-estimates.md).
+#: :func:`~contactcore.estimate.singular.pollution_order` takes the
+#: clamped-free corners and Γ's ends under a penalty law; what is left at
+#: this order lies on a domain whose singular points it does not take.
+POLLUTED_ORDER = 3
+
+
+def pollution_warning(scene: Scene, profiles: dict[str, dict[str, QuantityEstimate]]) -> list[str]:
+    """A line when quantities are estimated from two runs at an order of
+    :data:`POLLUTED_ORDER` or more on a domain with singular points that
+    :func:`~contactcore.estimate.singular.pollution_order` does not take
+    (corners between two clamped or two free edges, the end of an exactly
+    enforced Γ, a straight Γ's ends on a disc): if one of them slows them
+    everywhere after all, the estimate may be several times too small."""
+    names = [f"{pid}:{q}" for pid, qs in profiles.items() for q, e in qs.items()
+             if not e.observed and e.order >= POLLUTED_ORDER]
+    if not names or not len(singular_points(scene)):
+        return []
+    return [f"{', '.join(names)}: estimated at order {POLLUTED_ORDER} from two runs, but the domain has singular "
+            f"points (corners, Γ's ends) which, where they slow such quantities to 1.5-2 everywhere, make the "
+            f"estimate 2-7 times too small: --estimate 3 observes the order"]
+
+
+def stencil_radius(record: dict, method: str, degree: int, quantity: str) -> float:
+    """The radius around a point within which lie the unknowns that set a
+    run's ``quantity`` there: a support of ``dmax · h`` for a meshfree method
+    (``√2`` times that to a rectangular support's corner), the recovery patch
+    of :data:`~contactcore.tolerances.RECOVERY_RINGS` vertex rings around the
+    point's cell for a recovered stress
+    (:data:`~contactcore.estimate.orders.RECOVERED_STRESS`), and one cell,
+    ``h``, otherwise."""
+    h = float(record["h"])
+    if method in MESHFREE:
+        return float(record["dmax"]) * h * (np.sqrt(2.0) if record.get("support") == "rectangular" else 1.0)
+    if quantity in STRESSES and (method, degree) in RECOVERED_STRESS:
+        return (tol.RECOVERY_RINGS + 1) * h
+    return h
+
+
+def feature_size(scene: Scene) -> float:
+    """The scene's smallest feature: the domain's smallest extent (a
+    rectangle's shorter side, a disc's diameter), or a circular Γ's
+    diameter where that is less."""
+    domain = scene.domain
+    size = float(min(domain.size)) if isinstance(domain, Rectangle) else domain.length_scale
+    radius = getattr(scene.interface, "radius", None)
+    return min(size, 2.0 * float(radius)) if radius is not None else size
+
+
+def unsettled(scene: Scene, levels: list[list[ProfileData]], record: dict, method: str, degree: int,
+              exclude: float) -> dict[str, dict[str, tuple[float, float]]]:
+    """The quantities whose two-run estimate is not asymptotic, by cause,
+    from the coarser run (``record``, its discretisation) of the pair
+    that makes it: ``{"reach": {PID:Q: (ρ, h_ok)}, "coarse": {...}}``
+    with ``ρ`` the quantity's :func:`stencil_radius` in that run and
+    ``h_ok`` the coarse run's h from which the cause is gone (ρ scales
+    with h).  ``reach``: a sample kept (at least ``exclude`` from the
+    singular points) lies within
+    :data:`~contactcore.tolerances.REACH_STENCILS` stencils of a singular
+    point, where that run's error is still the singular point's own.
+    ``coarse``: the stencil exceeds
+    1/:data:`~contactcore.tolerances.FEATURE_STENCILS` of the scene's
+    :func:`feature_size`.  A tie within
+    :data:`~contactcore.tolerances.GEOMETRY` (relative) is no cause: h =
+    0.05 with supports of 2h on a feature of 0.8 sits on the threshold,
+    and round-off must not decide it."""
+    sing, feature, h = singular_points(scene), feature_size(scene), float(record["h"])
+    out = {"reach": {}, "coarse": {}}
+    for prof in levels[-1]:
+        xy = np.column_stack([prof.columns["x"], prof.columns["y"]])
+        kept = far_from_singular(scene, xy, exclude)
+        near = (np.min(np.linalg.norm(xy[kept][:, None] - sing[None], axis=-1))
+                if len(sing) and np.any(kept) else np.inf)
+        for q in prof.names[3:]:
+            rho = stencil_radius(record, method, degree, q)
+            if near < tol.REACH_STENCILS * rho * (1 - tol.GEOMETRY):
+                out["reach"][f"{prof.id}:{q}"] = (rho, h * near / (tol.REACH_STENCILS * rho))
+            if rho * tol.FEATURE_STENCILS > feature * (1 + tol.GEOMETRY):
+                out["coarse"][f"{prof.id}:{q}"] = (rho, h * feature / (tol.FEATURE_STENCILS * rho))
+    return out
+
+
+def unsettled_warnings(found: dict[str, dict[str, tuple[float, float]]], h: float, feature: float,
+                       length: str = "m") -> list[str]:
+    """One line per cause of :func:`unsettled` and per stencil, naming the
+    quantities and the coarse h from which the cause is gone; its lengths
+    in the scene's unit named ``length`` (:class:`~contactcore.scene.Units`)."""
+    lines = []
+    for cause, entries in found.items():
+        for rho in sorted({v[0] for v in entries.values()}):
+            names = [k for k, v in entries.items() if v[0] == rho]
+            h_ok = min(entries[k][1] for k in names)
+            why = (f"samples kept within {tol.REACH_STENCILS * rho:.3g} of a singular point, the reach of its own "
+                   f"error in the run at h = {h:g} (two stencils of {rho:.3g})" if cause == "reach" else
+                   f"the run at h = {h:g} has stencils (cells, supports, recovery patches) of {rho:.3g}, more than "
+                   f"1/{tol.FEATURE_STENCILS:g} of the scene's smallest feature ({feature:.3g})")
+            lines.append(f"{', '.join(names)}: {why}: the runs are not in the asymptotic range, the estimate is an "
+                         f"indication only (starting below h = {h_ok:.3g} avoids this; lengths in {length})")
+    return lines
+
+
+def cell_scale_orders(scene: Scene, levels: list[list[ProfileData]],
+                      estimates: dict[str, dict[str, QuantityEstimate]], exclude: float,
+                      h: float) -> dict[str, tuple[float, float]]:
+    """``{PID:Q: (order, high)}`` of the two-run estimates whose coarse run is
+    rough at the scale of its cells: the RMS over the kept samples (at least
+    ``exclude`` from the singular points) of each run's part at that scale
+    (:func:`~contactcore.estimate.extrapolation.cell_scale_part`, the same
+    kernel of the coarse run's ``h`` for both, fitted over
+    :func:`~contactcore.estimate.extrapolation.sample_groups`) shrinks between
+    the runs at an ``order`` above the highest that theory allows the quantity
+    (``high``, :func:`~contactcore.estimate.orders.order_range`) by more than
+    :data:`~contactcore.tolerances.CELL_SCALE_EXCESS`.  A smooth exact value
+    leaves the same part in both runs (ratio 1); what varies from cell to cell
+    beyond it is each run's local error, which shrinks at the method's order
+    once the runs are asymptotic.  Faster means the coarse run's is not yet
+    (the runs of docs/error-estimates.md, "Which estimates to warn of").
+    Quantities with an observed order (three runs) are left to
+    :func:`order_warnings`; a part at round-off shows no order: of the
+    quantity (:data:`~contactcore.tolerances.ESTIMATE_ROUNDOFF` of its largest
+    |value|), or of the scene's own size of its kind
+    (:data:`~contactcore.tolerances.NEGLIGIBLE_SHARE` of
+    :class:`~contactcore.scaling.Sizes`' stress for a stress or traction,
+    displacement otherwise), so that a quantity whose values are all round-off
+    (σxy of a bonded patch, 1e-14) is named by no kernel."""
+    sizes, out = Sizes.of(scene), {}
+    for coarse, fine in zip(levels[-2], levels[-1]):
+        cols = fine.columns
+        xy = np.column_stack([cols["x"], cols["y"]])
+        kept = far_from_singular(scene, xy, exclude)
+        s = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(xy, axis=0), axis=1))])
+        groups = sample_groups(scene, xy, kept)
+        for q in fine.names[3:]:
+            e = estimates.get(fine.id, {}).get(q)
+            if e is None or e.observed or not np.any(kept):
+                continue
+            a, b = (rms(cell_scale_part(v, s, groups, h)[kept]) for v in (coarse.columns[q], cols[q]))
+            scale = max(float(np.max(np.abs(cols[q]))), float(np.max(np.abs(coarse.columns[q]))))
+            own = sizes.stress if q in STRESSES + TRACTIONS else sizes.displacement
+            if min(a, b) <= max(tol.ESTIMATE_ROUNDOFF * scale, tol.NEGLIGIBLE_SHARE * own):
+                continue
+            order = float(np.log2(a / b))
+            if order > e.theory[1] + tol.CELL_SCALE_EXCESS:
+                out[f"{fine.id}:{q}"] = (order, float(e.theory[1]))
+    return out
+
+
+def cell_scale_warnings(found: dict[str, tuple[float, float]], hs: tuple[float, float]) -> list[str]:
+    """One line naming the quantities of :func:`cell_scale_orders`, each
+    with the order at which its runs' variation at the cells' scale
+    shrank and the highest order theory allows it."""
+    if not found:
+        return []
+    names = ", ".join(f"{k} ({o:.2f} against {hi:.3g})" for k, (o, hi) in found.items())
+    return [f"{names}: the runs' variation from cell to cell shrinks between h = {hs[0]:g} and {hs[1]:g} faster "
+            f"than theory allows the error (orders in brackets): the coarse run is not in the asymptotic range, "
+            f"the estimate is an indication only and likely too large"]
+
+
+#: The kinds of profile quantity whose errors a run compares
+#: (:func:`residues`): bulk displacements, bulk stresses, gaps and
+#: tractions on Γ.
+KINDS = {"ux": "displacement", "uy": "displacement", "sxx": "stress", "syy": "stress", "sxy": "stress",
+         "gN": "gap", "gT": "gap", "tN": "traction", "tT": "traction"}
+
+
+def residues(scene: Scene, levels: list[list[ProfileData]],
+             estimates: dict[str, dict[str, QuantityEstimate]], exclude: float) -> dict[str, tuple[float, str]]:
+    """``{PID:Q: (share, PID:Q')}`` of the two-run estimates whose runs
+    differ (RMS over the kept samples, at least ``exclude`` from the
+    singular points) by less than
+    :data:`~contactcore.tolerances.RESIDUE_SHARE` of the largest such
+    difference among the quantities of its kind (:data:`KINDS`) on every
+    profile of the same runs (``PID:Q'``).  The theoretical order is
+    that of the error's leading term ``C h^p``, whose ``C`` the
+    solution's derivatives near the sample set; where the runs differ a
+    thousand times less than elsewhere that term nearly cancels, and a
+    term whose coefficient is as small (the representation of Γ in the
+    cut cells, quadrature) may set the rate: σxx along scene B's
+    clamped top edge in xfem P2 converges at 1.28 and 0.96 between h =
+    0.05, 0.025 and 0.0125, against 2 in theory and 1.98 for σxy in the
+    same runs (docs/error-estimates.md, "Which estimates to warn of").
+    Quantities with an observed order (three runs) are left to
+    :func:`order_warnings` but count in their kind's largest; a
+    difference at round-off (of the
+    quantity, :data:`~contactcore.tolerances.ESTIMATE_ROUNDOFF`, or of
+    the scene's size of its kind, :data:`~contactcore.tolerances.NEGLIGIBLE_SHARE`
+    of :class:`~contactcore.scaling.Sizes`) shows nothing and is neither
+    named nor the kind's largest."""
+    sizes, found = Sizes.of(scene), {}
+    for coarse, fine in zip(levels[-2], levels[-1]):
+        cols = fine.columns
+        xy = np.column_stack([cols["x"], cols["y"]])
+        kept = far_from_singular(scene, xy, exclude)
+        for q in fine.names[3:]:
+            e = estimates.get(fine.id, {}).get(q)
+            if e is None or q not in KINDS or not np.any(kept):
+                continue
+            d = rms((cols[q] - coarse.columns[q])[kept])
+            scale = max(float(np.max(np.abs(cols[q]))), float(np.max(np.abs(coarse.columns[q]))))
+            own = sizes.stress if q in STRESSES + TRACTIONS else sizes.displacement
+            if d > max(tol.ESTIMATE_ROUNDOFF * scale, tol.NEGLIGIBLE_SHARE * own):
+                found[f"{fine.id}:{q}"] = (d, KINDS[q], e.observed)
+    largest = {}
+    for key, (d, kind, _) in found.items():
+        if d > largest.get(kind, (0.0, ""))[0]:
+            largest[kind] = (d, key)
+    return {key: (d / largest[kind][0], largest[kind][1]) for key, (d, kind, observed) in found.items()
+            if not observed and d < tol.RESIDUE_SHARE * largest[kind][0]}
+
+
+def residue_warnings(found: dict[str, tuple[float, str]], observed: bool = False) -> list[str]:
+    """One line naming the quantities of :func:`residues`, each with its
+    difference's share of the largest of its kind; from ``observed``
+    runs (three) it does not advise a third."""
+    if not found:
+        return []
+    names = ", ".join(f"{k} ({share:.2g} of {other}'s)" for k, (share, other) in found.items())
+    return [f"{names}: the runs differ there by less than {tol.RESIDUE_SHARE:g} of the most they differ in a "
+            f"quantity of the same kind (in brackets): the error's leading term nearly cancels there, a smaller "
+            f"term of another order may set its rate, the estimate is an indication only"
+            + ("" if observed else " (--estimate 3 observes the order)")]
+
+

@@ -1,0 +1,239 @@
+"""Richardson extrapolation of each profile quantity's error, from one method's runs at h, h/2 (and h/4).
+
+**Richardson extrapolation** (Richardson 1911; Roache, *Verification and
+Validation in Computational Science*, 1998, ch. 5).  One method at ``h``
+and ``h/2`` samples every profile at the same points.  If a quantity's
+sample converges as ``q_h = q + C h^p``, the finer run's error is
+
+    e_{h/2} = q_{h/2} − q ≈ (q_{h/2} − q_h) / (2^p − 1),
+
+estimated sample by sample; the profile's worst sample and RMS summarise
+it.  With a third run at ``h/4`` the order is observed,
+
+    p = log₂ (‖q_{h/2} − q_h‖ / ‖q_{h/4} − q_{h/2}‖)        (RMS over the samples),
+
+over the samples away from singular points (a singularity's differences
+shrink at its own rate: :func:`~contactcore.estimate.singular.far_from_singular`),
+clipped to :data:`~contactcore.tolerances.ORDER_RANGE`, and the estimate
+is the finest run's, at the least of that order and the two-run order
+below (an observed order above theory is the coarse run's error
+cancelling, not a faster rate: Roache's GCI, ASME V&V 20).
+
+With two runs the order is one that theory allows the quantity
+(:func:`~contactcore.estimate.orders.order_range`).  Where that is a
+range ``[low, high]`` (a degree-1 stress that may superconverge at a
+sample, a displacement that a singular point may pollute) the estimate
+takes the order between whose Richardson factor ``1/(2^q − 1)`` is the
+geometric mean of the two (:func:`balanced_order`), so its effectivity
+lies within ``[(1/3)^½, 3^½]`` for ``p = 1`` (``[(3/7)^½, (7/3)^½]`` for
+``p = 2``) whichever holds.  With two runs of fe or xfem, the part of
+their difference at the scale of the coarse run's cells
+(:func:`cell_scale_part`), their local error, takes the upper order ``p``
+and only the smooth rest, where the pollution lies, the range
+(:func:`profile_estimates`).
+
+Where not to trust the estimate: :mod:`~contactcore.estimate.caveats`
+and :mod:`~contactcore.estimate.status`.
+
+numpy only; no method is imported.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .. import tolerances as tol
+from ..profiles import ProfileData
+from ..scene import Scene
+from .orders import order_range, polluted
+from .singular import far_from_singular, pollution_order
+
+
+def rms(x: np.ndarray) -> float:
+    """The root mean square of ``x`` (0 for none)."""
+    return float(np.sqrt(np.mean(np.square(x)))) if len(x) else 0.0
+
+
+def balanced_order(low: float, high: float, ratio: float = 2.0) -> float:
+    """The order ``q`` whose Richardson factor is the geometric mean of
+    those of ``low`` and ``high``: ``r^q − 1 = ((r^low − 1)(r^high − 1))^½``
+    (``r`` the refinement ratio).  If the error converges at either, the
+    estimate at ``q`` is off by at most ``((r^high − 1)/(r^low − 1))^½``,
+    up or down; ``low`` itself where the two are equal."""
+    return float(np.log1p(np.sqrt((ratio ** low - 1) * (ratio ** high - 1))) / np.log(ratio))
+
+
+@dataclass(frozen=True)
+class QuantityEstimate:
+    """The finest run's estimated error of one quantity on one profile:
+    ``error`` (per sample, ≥ 0, in the quantity's units), the ``order`` used,
+    the orders ``theory`` allows
+    (:func:`~contactcore.estimate.orders.order_range`; recorded as
+    ``"orders"``, so that a user sees why a two-run order is, say, 2.205: the
+    balanced order of ``[1.52, 3]``); ``measured``, the order three runs
+    showed (recorded as ``"observed_order"``), of which ``order`` is the least
+    with the two-run one, None where the order was not observed (two runs, or
+    three at round-off); ``observed`` says which.  ``cell_scale``, where the
+    difference of the runs was split (:func:`cell_scale_part`): the share
+    (RMS) of its part at the scale of the coarse run's cells, estimated at the
+    upper order of ``theory`` (recorded as ``"cell_scale"``)."""
+
+    error: np.ndarray
+    order: float
+    theory: tuple[float, float]
+    cell_scale: float | None = None
+    measured: float | None = None
+
+    @property
+    def observed(self) -> bool:
+        """Whether the order was observed (three runs showed one: ``measured``)."""
+        return self.measured is not None
+
+    @property
+    def max(self) -> float:
+        return float(np.max(self.error)) if len(self.error) else 0.0
+
+    @property
+    def rms(self) -> float:
+        return rms(self.error)
+
+    def record(self) -> dict:
+        out = {"max": self.max, "rms": self.rms, "order": self.order, "observed": self.observed,
+               "orders": [float(t) for t in self.theory]}
+        if self.cell_scale is not None:
+            out["cell_scale"] = self.cell_scale
+        if self.measured is not None:
+            out["observed_order"] = self.measured
+        return out
+
+
+def observed_order(coarse: np.ndarray, mid: np.ndarray, fine: np.ndarray, ratio: float = 2.0) -> float | None:
+    """``log_ratio(‖mid − coarse‖ / ‖fine − mid‖)`` (RMS), clipped to
+    :data:`~contactcore.tolerances.ORDER_RANGE`; None when the finer
+    difference is at round-off of the quantity's scale
+    (:data:`~contactcore.tolerances.ESTIMATE_ROUNDOFF`): no order to see."""
+    scale = max(np.max(np.abs(fine)), np.max(np.abs(mid)), 0.0) if len(fine) else 0.0
+    d1, d2 = rms(mid - coarse), rms(fine - mid)
+    if d2 <= tol.ESTIMATE_ROUNDOFF * scale or d1 <= tol.ESTIMATE_ROUNDOFF * scale:
+        return None
+    p = np.log(d1 / d2) / np.log(ratio)
+    return float(np.clip(p, *tol.ORDER_RANGE))
+
+
+def cell_scale_part(values: np.ndarray, s: np.ndarray, groups: np.ndarray, width: float) -> np.ndarray:
+    """The part of ``values`` (samples at arc length ``s``) at the scale of
+    a run's cells: ``values`` minus their local linear regression with a
+    Gaussian kernel of standard deviation ``width`` (the coarse run's h),
+    fitted within each group of samples (``groups``: a label per sample,
+    −1 for none: contiguous samples away from singular points, in one
+    body); 0 outside the groups and in a group too short to fit a line
+    through its neighbours (:data:`CELL_SCALE_MIN_SAMPLES`)."""
+    out = np.zeros(len(values))
+    for g in np.unique(groups[groups >= 0]):
+        idx = np.flatnonzero(groups == g)
+        if len(idx) < CELL_SCALE_MIN_SAMPLES:
+            continue
+        si, vi = s[idx], values[idx]
+        w = np.exp(-0.5 * ((si[None, :] - si[:, None]) / width) ** 2)            # (target, sample)
+        d = si[None, :] - si[:, None]
+        s0, s1, s2 = w.sum(1), (w * d).sum(1), (w * d * d).sum(1)
+        t0, t1 = (w * vi[None, :]).sum(1), (w * d * vi[None, :]).sum(1)
+        det = s0 * s2 - s1 * s1
+        smooth = np.where(det > 0, (s2 * t0 - s1 * t1) / np.where(det > 0, det, 1.0), t0 / s0)
+        out[idx] = vi - smooth
+    return out
+
+
+#: The fewest samples in a group through which :func:`cell_scale_part`
+#: fits its local lines (fewer: the whole difference is taken as smooth).
+CELL_SCALE_MIN_SAMPLES = 5
+
+
+def richardson(values: list[np.ndarray], theory: tuple[float, float], ratio: float = 2.0, coarse: bool = False,
+               kept: np.ndarray | None = None, cells=None) -> QuantityEstimate:
+    """The estimate of one quantity from its samples at h, h/2 (and h/4),
+    coarse to fine (module doc): the finest run's error, or with ``coarse``
+    the coarsest run's (``(q_{h/2} − q_h) r^p / (r^p − 1)``, two levels only).
+    The order is observed on the ``kept`` samples (all by default): near a
+    singular point the differences shrink at the singularity's rate, not the
+    smooth solution's, and would set it. Without a third run it is the
+    :func:`balanced_order` of the orders ``theory`` allows
+    (:func:`~contactcore.estimate.orders.order_range`); with one, the least of
+    the observed order (``measured``) and that one; with ``cells`` (a function
+    that returns a difference's part at the scale of the coarse run's cells,
+    :func:`cell_scale_part`), that part is estimated at the upper order
+    ``theory[1]`` and the rest at the balanced one: for a range that pollution
+    widened (:func:`profile_estimates`)."""
+    kept = slice(None) if kept is None or not np.any(kept) else kept
+    p = observed_order(*(v[kept] for v in values[-3:]), ratio=ratio) if len(values) >= 3 else None
+    order = balanced_order(*theory, ratio=ratio)
+    if p is not None:  # an observed order above the two-run one is pre-asymptotic cancellation: not used
+        order = min(p, order)
+    factor = lambda o: ratio ** o / (ratio ** o - 1) if coarse else 1 / (ratio ** o - 1)  # noqa: E731
+    signed = values[-1] - values[-2]
+    if p is not None or cells is None or theory[0] >= theory[1]:
+        return QuantityEstimate(np.abs(signed) * factor(order), order, theory, measured=p)
+    fine = cells(signed)
+    share = rms(fine[kept]) / rms(signed[kept]) if rms(signed[kept]) > 0 else 0.0
+    error = np.abs((signed - fine) * factor(order) + fine * factor(theory[1]))
+    return QuantityEstimate(error, order, theory, cell_scale=float(share))
+
+
+def sample_groups(scene: Scene, xy: np.ndarray, kept: np.ndarray) -> np.ndarray:
+    """A label per sample of a profile (−1 for none): runs of consecutive
+    ``kept`` samples in one body (a line that crosses Γ is split there,
+    where its quantities kink or jump; samples on Γ are one group)."""
+    d = scene.interface.signed_distance(xy)
+    side = np.where(np.abs(d) <= tol.GEOMETRY * scene.length_scale, 0, np.sign(d))
+    if not np.any(side != 0):
+        side = np.ones(len(xy))
+    ok = kept & (side != 0)
+    labels, current, prev = np.full(len(xy), -1), -1, None
+    for i in range(len(xy)):
+        if not ok[i]:
+            prev = None
+            continue
+        if prev is None or side[i] != side[prev]:
+            current += 1
+        labels[i], prev = current, i
+    return labels
+
+
+def profile_estimates(levels: list[list[ProfileData]], degree: int, method: str = "", coarse: bool = False,
+                      scene: Scene | None = None, exclude: float = 0.0,
+                      switching: bool | None = None, h: float | None = None) -> dict[str, dict[str, QuantityEstimate]]:
+    """``{profile id: {quantity: estimate}}`` from the profiles of each run,
+    coarse to fine (each a list in the scene's order); an observed order from
+    the samples at least ``exclude`` from the ``scene``'s singular points;
+    ``switching`` as :func:`~contactcore.estimate.orders.theoretical_order`
+    takes it; the ``scene``'s
+    :func:`~contactcore.estimate.singular.pollution_order` widens the orders
+    of its displacements, gaps and penalty tractions
+    (:func:`~contactcore.estimate.orders.order_range`).  With the coarse run's
+    ``h``, a two-run estimate of a range that pollution widened
+    (:func:`~contactcore.estimate.orders.polluted`) takes the difference's
+    part at the scale of that run's cells (:func:`cell_scale_part`, over
+    :func:`sample_groups`) at the upper order: away from a singular point its
+    pollution solves the homogeneous equations, smooth at that scale, so what
+    varies cell by cell is the runs' local error, which converges at the
+    method's order."""
+    out, law = {}, scene.law if scene else None
+    pollution = pollution_order(scene)
+    for profs in zip(*levels):
+        pid, cols = profs[-1].id, profs[-1].columns
+        xy = np.column_stack([cols["x"], cols["y"]])
+        kept = far_from_singular(scene, xy, exclude) if scene else None
+        cells = None
+        if scene is not None and h is not None:
+            s = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(xy, axis=0), axis=1))])
+            groups = sample_groups(scene, xy, kept)
+            cells = lambda v, s=s, groups=groups: cell_scale_part(v, s, groups, h)  # noqa: E731
+        out[pid] = {q: richardson([p.columns[q] for p in profs],
+                                  order_range(q, degree, method, law, switching, pollution),
+                                  coarse=coarse, kept=kept,
+                                  cells=cells if polluted(q, degree, method, law, switching, pollution) else None)
+                    for q in profs[-1].names[3:]}
+    return out
+
+

@@ -1,0 +1,131 @@
+"""The orders theory allows a profile quantity's error, by method and degree.
+
+With two runs the Richardson estimate
+(:mod:`~contactcore.estimate.extrapolation`) takes the method's
+theoretical order for the quantity (:func:`theoretical_order`): ``k + 1``
+for a displacement and a gap (the L2 rate of degree k), and for a penalty
+law's traction on Γ, which the law computes from the gaps
+(``t = k_N g_N`` …) not from the bulk stress; ``k`` for a stress (the H1
+rate); under an exact law, at most 2 for the gaps and 1 for the traction
+where Γ's status changes along it
+(:func:`~contactcore.estimate.status.switches`).  A degree-1 stress that
+a method recovers (xfem P1: :data:`RECOVERED_STRESS`) converges as the
+displacement.
+
+Away from a singular point of exponent ``λ`` (``u ~ r^λ``: a
+clamped-free corner, the end of a penalty Γ:
+:mod:`~contactcore.estimate.singular`) a displacement's error converges
+no faster than ``h^{2λ}`` once the singular term outweighs the smooth one
+(pollution: Nitsche & Schatz, Math. Comp. 28, 1974), which depends on its
+coefficient: a displacement, gap or penalty traction takes the orders
+``[min(p, 2λ), p]`` (:func:`order_range`, ``2λ`` from
+:func:`~contactcore.estimate.singular.pollution_order`).  EFGM holds its
+supports by boundary multipliers (:mod:`efgm.method`), and its P2 takes
+the orders of every other degree-2 method (until 2026-11-27 it collocated
+them at the nodes of a basis that does not interpolate, whose defect set
+its bulk displacements' order: a rule that went with it,
+docs/error-estimates.md).
+
+A degree-1 stress read at a point converges at its order ``p`` where the
+point is generic in its cell and at ``p + 1`` where it superconverges
+(the cell's centroid, a uniform grid aligned with the profile: Zienkiewicz
+& Zhu, IJNME 33, 1992; Wahlbin, *Superconvergence in Galerkin finite
+element methods*, 1995), and which holds at a sample is not known from
+two runs: its orders are ``[p, p + 1]`` (:func:`order_range`), of which
+the estimate takes the balanced one
+(:func:`~contactcore.estimate.extrapolation.balanced_order`).
+
+numpy only; no method is imported.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+
+#: Quantities that converge as the displacement (degree + 1): displacements,
+#: gaps, and the tractions the law computes from the gaps.
+DISPLACEMENT_LIKE = ("ux", "uy", "gN", "gT", "tN", "tT")
+
+
+#: Methods whose degree-1 stress is recovered (:mod:`contactcore.recovery`:
+#: xfem P1), not read from the cell: it converges one order faster, as
+#: the displacement (measured with the orders of the other methods, the
+#: Richardson effectivity of xfem P1's stresses was 3.0-6.2 on the
+#: pressurised and twisted rods: a rate 2 read as 1).
+RECOVERED_STRESS = (("xfem", 1),)
+
+
+#: Meshfree methods, whose stencil is their supports (the run's record
+#: holds ``dmax`` and ``support``: :mod:`efgm.method`;
+#: :func:`~contactcore.estimate.caveats.stencil_radius`), and whose error
+#: at the scale of their cells includes their quadrature's (:func:`polluted`).
+MESHFREE = ("efgm",)
+
+
+#: Γ's quantities under an exact law (:mod:`contactcore.exact`).
+GAPS, TRACTIONS = ("gN", "gT"), ("tN", "tT")
+
+
+def theoretical_order(quantity: str, degree: int, method: str = "", law=None, switching: bool | None = None) -> int:
+    """The rate of a profile quantity for ``method`` of ``degree`` (module
+    doc).  Under an exact ``law`` the traction on Γ is Nitsche's multiplier,
+    a stress (rate ``degree``, not the gaps' ``degree + 1``).  Where that
+    law switches (open/closed, stick/slip: every exact law but ``bonded``)
+    the solution is no smoother than H^{5/2-ε} at the points where Γ's
+    status changes (Moussaoui & Khodja, Comm. PDE 17, 1992; Chouly, Hild &
+    Renard, Math. Comp. 84, 2015), which caps the gaps' rate at 2 and the
+    traction's at 1 in every degree: exact C-coulomb's profiles converge
+    at about these rates (docs/contact-enforcement.md, "Convergence").
+    ``switching`` False says that the runs' status never changed along Γ
+    (:func:`~contactcore.estimate.status.switches`): no such point, the bonded
+    law's rates."""
+    if _exact(law):
+        switches = not law.is_linear and switching is not False
+        if quantity in TRACTIONS:
+            return 1 if switches else degree
+        if quantity in GAPS and switches:
+            return min(degree + 1, 2)
+    if quantity in DISPLACEMENT_LIKE or (method, degree) in RECOVERED_STRESS:
+        return degree + 1
+    return degree
+
+
+#: Bulk stresses, and the degrees whose stress read at a point converges
+#: at its theoretical order or one faster (module doc): the estimate's
+#: order lies between (:func:`order_range`).  Measured at the theoretical
+#: order, the Richardson effectivity of these stresses was 0.96-8.8 on
+#: the paper's scenes and 0.98-2.31 on the closed forms (2026-11-27,
+#: docs/error-estimates.md), of the degree-2 stresses 0.9-1.45.
+STRESSES, SUPERCONVERGENT_DEGREES = ("sxx", "syy", "sxy"), (1,)
+
+
+def order_range(quantity: str, degree: int, method: str = "", law=None, switching: bool | None = None,
+                pollution: float = np.inf) -> tuple[float, float]:
+    """The orders theory allows a profile quantity: ``(p, p)`` with ``p``
+    the :func:`theoretical_order`, ``(p, p + 1)`` for a stress of a degree
+    in :data:`SUPERCONVERGENT_DEGREES` (module doc), ``(pollution, p)``
+    for a displacement, a gap or a penalty law's traction whose ``p``
+    exceeds the scene's
+    :func:`~contactcore.estimate.singular.pollution_order`."""
+    p = theoretical_order(quantity, degree, method, law, switching)
+    if quantity in STRESSES and degree in SUPERCONVERGENT_DEGREES:
+        return (p, p + 1)
+    polluted = quantity in DISPLACEMENT_LIKE and not (quantity in TRACTIONS and _exact(law))
+    return (pollution, p) if polluted and pollution < p else (p, p)
+
+
+def polluted(quantity: str, degree: int, method: str = "", law=None, switching: bool | None = None,
+             pollution: float = np.inf) -> bool:
+    """Whether :func:`order_range` widened the quantity's orders for
+    pollution (a displacement, gap or penalty traction whose order
+    exceeds ``pollution``), in a method whose error at the scale of its
+    cells converges at that order (not :data:`MESHFREE`: EFGM's includes
+    its quadrature's, which does not converge)."""
+    p = theoretical_order(quantity, degree, method, law, switching)
+    return (quantity in DISPLACEMENT_LIKE and not (quantity in TRACTIONS and _exact(law)) and pollution < p
+            and method not in MESHFREE)
+
+
+def _exact(law) -> bool:
+    """Whether ``law`` is enforced exactly (:mod:`contactcore.exact`)."""
+    return law is not None and getattr(law, "enforcement", "penalty") == "exact"

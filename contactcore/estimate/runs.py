@@ -1,0 +1,116 @@
+"""One estimate of a run: solve at h, h/2 (and h/4) and gather every part into an :class:`Estimate`.
+
+:func:`estimate` solves a scene with one discretisation at the
+resolutions of :func:`levels_of`; :func:`estimate_runs` reads the runs
+(only through their :class:`~contactcore.result.Result`) and gathers the
+Richardson estimate of every profile quantity
+(:mod:`~contactcore.estimate.extrapolation`, the orders of
+:mod:`~contactcore.estimate.orders`), the warnings that say where not to
+trust it (:mod:`~contactcore.estimate.caveats`,
+:mod:`~contactcore.estimate.status`) and the finest run's
+Zienkiewicz–Zhu estimate in energy (:mod:`~contactcore.estimate.energy`).
+
+numpy only; no method is imported (:func:`estimate` solves through
+:func:`contactcore.discretisation.solve`).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..profiles import ProfileData, sample_profiles
+from ..scene import Scene
+from .caveats import (cell_scale_orders, cell_scale_warnings, feature_size, order_mismatch, order_warnings,
+                      pollution_warning, residue_warnings, residues, unsettled, unsettled_warnings)
+from .energy import EnergyEstimate, energy_estimate
+from .extrapolation import QuantityEstimate, profile_estimates
+from .status import status_change, status_warning, switches
+
+
+#: The suffix of an estimated error's column beside its quantity
+#: (``q_err``, in q's unit).
+ERROR_SUFFIX = "_err"
+
+
+@dataclass
+class Estimate:
+    """Everything estimated about the finest of a method's runs at ``hs``
+    (coarse to fine): per profile and quantity
+    (:class:`~contactcore.estimate.extrapolation.QuantityEstimate`), in energy
+    (:class:`~contactcore.estimate.energy.EnergyEstimate`), the status along Γ
+    compared between the two finest runs (a law with history), warnings, the
+    finest run's profiles as sampled (``sampled``, in the scene's order: what
+    a driver writes, not sampled again), and the ``PID:Q`` whose estimate a
+    warning calls not asymptotic
+    (:func:`~contactcore.estimate.caveats.unsettled`,
+    :func:`~contactcore.estimate.caveats.cell_scale_orders`, and with three
+    runs :func:`~contactcore.estimate.caveats.order_mismatch`) or not to be
+    trusted (:func:`~contactcore.estimate.caveats.residues`)."""
+
+    hs: tuple
+    profiles: dict[str, dict[str, QuantityEstimate]]
+    energy: EnergyEstimate | None
+    status: dict | None = None
+    warnings: list[str] = field(default_factory=list)
+    sampled: list[ProfileData] = field(default_factory=list)
+    unsettled: set[str] = field(default_factory=set)
+
+    def error_columns(self, pid: str) -> dict[str, np.ndarray]:
+        """``{q + ERROR_SUFFIX: per-sample error}`` of profile ``pid``."""
+        return {f"{q}{ERROR_SUFFIX}": e.error for q, e in self.profiles.get(pid, {}).items()}
+
+    def summary(self) -> dict:
+        """JSON-ready: ``{PROFILE: {QUANTITY: {max, rms, order, observed}}}``
+        plus ``energy``, ``h`` (the runs), ``status`` and ``warnings``."""
+        out = {pid: {q: e.record() for q, e in qs.items()} for pid, qs in self.profiles.items()}
+        out.update({"energy": self.energy.record() if self.energy else None, "h": list(self.hs),
+                    "status": self.status, "warnings": list(self.warnings)})
+        return out
+
+
+def levels_of(h: float, levels: int) -> list[float]:
+    """``h, h/2`` (and ``h/4``), coarse to fine."""
+    if levels not in (2, 3):
+        raise ValueError(f"levels must be 2 or 3 (got {levels})")
+    return [h / 2 ** k for k in range(levels)]
+
+
+def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: bool = True,
+                  coarse: bool = False) -> Estimate:
+    """The :class:`Estimate` of the finest of ``results`` (one method at
+    h, h/2 (, h/4), coarse to fine), or with ``coarse`` of the coarser of
+    two (its profiles' errors; the energy estimate still the finest run's);
+    the energy and an observed order leave out what lies within
+    ``exclude`` of a singular point."""
+    hs = tuple(float(r.discretisation["h"]) for r in results)
+    levels = [sample_profiles(scene, r.fields, r.interface) for r in results]
+    switching = None if scene.law.is_linear else switches([r.interface for r in results])
+    profiles = profile_estimates(levels, results[-1].degree, results[-1].method, coarse, scene, exclude, switching,
+                                 h=hs[-2])
+    found = unsettled(scene, levels, results[-2].discretisation, results[-1].method, results[-1].degree, exclude)
+    rough = cell_scale_orders(scene, levels, profiles, exclude, hs[-2])
+    residue = residues(scene, levels, profiles, exclude)
+    warnings = (order_warnings(profiles) + pollution_warning(scene, profiles)
+                + unsettled_warnings(found, hs[-2], feature_size(scene), scene.user.units.length)
+                + cell_scale_warnings(rough, hs[-2:]) + residue_warnings(residue, len(levels) > 2))
+    status = None
+    if scene.law.has_history or not scene.law.is_linear:
+        status = status_change(scene, results[-2].interface, results[-1].interface, hs[-2:])
+        warnings += status_warning(status)
+    zz = energy_estimate(scene, results[-1].fields, hs[-1], exclude) if energy else None
+    return Estimate(hs, profiles, zz, status, warnings, levels[-1],
+                    {k for v in found.values() for k in v} | set(rough) | set(residue)
+                    | {f"{pid}:{q}" for pid, qs in profiles.items() for q, e in qs.items() if order_mismatch(e)})
+
+
+def estimate(scene: Scene, discretisation, h: float, levels: int = 2, *, exclude: float = 0.0, reuse=None,
+             progress=None):
+    """Solve ``scene`` with ``discretisation`` (:mod:`contactcore.discretisation`)
+    at ``h``, ``h/2`` (and ``h/4`` with ``levels=3``) and return the finest
+    :class:`~contactcore.result.Result` with its :class:`Estimate`; the
+    energy estimate leaves out Gauss points within ``exclude`` of the
+    singular points."""
+    from ..discretisation import solve
+    results = [solve(scene, discretisation, hk, reuse=reuse, progress=progress) for hk in levels_of(h, levels)]
+    return results[-1], estimate_runs(scene, results, exclude)

@@ -1,0 +1,201 @@
+"""The scene's singular points, and the exponents that slow a displacement's error everywhere (pollution).
+
+The singular points are a rectangular domain's corners and the points
+where a straight Γ meets the outer boundary (:func:`singular_points`,
+named by :func:`singular_regions`): no estimate captures their stress
+singularities, so the estimates leave out what lies within ``exclude``
+of them (:func:`far_from_singular`).
+
+Some of them also slow the error away from them.  Near a singular point
+of exponent ``λ`` the displacement goes as ``u ~ r^λ`` (``σ ~ r^(λ−1)``);
+the exponent of a wedge with one face clamped and the other free is a
+root of Williams' eigen-equation (Williams, J. Appl. Mech. 19, 1952;
+:func:`clamped_free_exponent`), which sets a rectangle's clamped–free
+corners (:func:`corner_exponents`) and the ends of a penalty Γ on a
+clamped edge; on a free, loaded or roller edge the end of a penalty Γ
+has ``u ~ r log r``, ``λ = 1`` (Sinclair, Appl. Mech. Rev. 57, 2004;
+:func:`interface_end_exponents`).  Away from a singularity ``r^λ`` the
+error of a displacement converges no faster than ``h^{2λ}`` (pollution:
+Nitsche & Schatz, Math. Comp. 28, 1974; Wahlbin, *Local behavior in
+finite element methods*, 1991), though only once the singular term
+outweighs the smooth one: :func:`pollution_order`, ``2 λ_min``, is the
+lower end of the orders :func:`~contactcore.estimate.orders.order_range`
+allows.
+
+numpy only; no method is imported.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from .. import tolerances as tol
+from ..exact import is_exact
+from ..geometry import LineInterface, Rectangle
+from ..scene import Scene
+
+
+def kolosov(nu: float, plane: str) -> float:
+    """Kolosov's constant ``κ``: ``3 − 4ν`` in plane strain, ``(3 − ν)/(1 + ν)`` in plane stress."""
+    return 3.0 - 4.0 * nu if plane == "strain" else (3.0 - nu) / (1.0 + nu)
+
+
+def clamped_free_exponent(alpha: float, kappa: float) -> float:
+    """The least ``Re λ > 0`` of an elastic wedge of angle ``alpha`` with
+    one face clamped and the other free (``u ~ r^λ``, ``σ ~ r^(λ−1)``):
+    a root of Williams' eigen-equation
+
+        κ sin²(λα) = (κ + 1)²/4 − λ² sin²α
+
+    (Williams, J. Appl. Mech. 19, 1952; the 4×4 determinant of the
+    wedge's Kolosov–Muskhelishvili potentials has the same roots).  A
+    right angle gives 0.758 in plane stress and 0.711 in plane strain at
+    ν = 0.3, the half-plane (α = π) ½ ± iε.  Complex roots are found by
+    Newton's method from a grid of starts in ``0 < Re λ < 2``.  A real
+    integer root is left out: its Airy function ``r^(λ+1) F(θ)``, F of
+    ``(λ ± 1)θ``, is a polynomial, its field smooth (at ν = 0, κ = 3, a
+    right angle has λ = 1, ``u = (0, c y)`` clamped at y = 0 and free at
+    x = 0; its singular exponent is 1.352)."""
+    s2 = np.sin(alpha) ** 2
+    f = lambda lam: kappa * np.sin(lam * alpha) ** 2 - (kappa + 1) ** 2 / 4 + lam ** 2 * s2  # noqa: E731
+    df = lambda lam: kappa * alpha * np.sin(2 * lam * alpha) + 2 * lam * s2  # noqa: E731
+    lam = (np.linspace(0.05, 2.0, 40)[:, None] + 1j * np.array([0.0, 0.3, 1.0])[None]).ravel()
+    with np.errstate(all="ignore"):
+        for _ in range(WEDGE_NEWTON_STEPS):
+            lam = lam - f(lam) / np.where(df(lam) == 0, 1.0, df(lam))
+        polynomial = (np.abs(lam.imag) <= tol.WEDGE_ROOT) & (np.abs(lam.real - np.round(lam.real)) <= tol.WEDGE_ROOT)
+        found = np.isfinite(lam) & (np.abs(f(lam)) <= tol.WEDGE_ROOT) & (lam.real > tol.WEDGE_ROOT) & ~polynomial
+    return float(np.min(lam.real[found]))
+
+
+#: Newton steps of :func:`clamped_free_exponent` from each start (its
+#: roots converge quadratically within about ten from the nearest start).
+WEDGE_NEWTON_STEPS = 60
+
+
+def _edge_supports(scene: Scene) -> dict[str, str]:
+    """``{edge: "clamped" | "roller"}`` of a rectangle's supported edges
+    (both components held, by one support or by several, or one); an edge
+    not named is free or loaded."""
+    held: dict[str, set] = {}
+    for s in scene.supports:
+        held.setdefault(s.boundary, set()).update(s.fix)
+    return {edge: "clamped" if fix == {"x", "y"} else "roller" for edge, fix in held.items()}
+
+
+def corner_exponents(scene: Scene) -> list[float]:
+    """``λ`` of each corner of a rectangular domain where a clamped edge meets
+    a free (or loaded) one: a clamped–free right angle
+    (:func:`clamped_free_exponent`, the κ of the body holding the corner, the
+    least of both bodies' where Γ passes through it).  Left out: a corner
+    between two clamped edges (2λ = 2.98 in plane stress, 2.84 in plane strain
+    at ν = 0.3: degree 2's Richardson factor changes by 2 % and 14 %; but 2.32
+    at ν = 0.45 in plane strain, a factor 1.75, which
+    :func:`~contactcore.estimate.caveats.pollution_warning` names), one with a
+    roller (reflected across it, a half-plane: integer exponents, a smooth
+    solution), and a convex one between two free edges (no stress
+    singularity)."""
+    if not isinstance(scene.domain, Rectangle):
+        return []
+    kinds, out = _edge_supports(scene), []
+    for corner in scene.domain.corners:
+        edges = [kinds.get(e, "free") for e in scene.domain.boundary_of(corner, tol.GEOMETRY * scene.length_scale)]
+        if sorted(edges) == ["clamped", "free"]:
+            out.append(min(clamped_free_exponent(np.pi / 2, kolosov(scene.materials[b].nu, scene.plane))
+                           for b in _bodies_at(scene, corner)))
+    return out
+
+
+def _bodies_at(scene: Scene, point) -> tuple[str, ...]:
+    """The bodies holding ``point``: both where it lies on Γ (within
+    GEOMETRY of the scene's length), so that no sign of round-off picks one."""
+    d = scene.interface.signed_distance([point])[0]
+    if abs(d) <= tol.GEOMETRY * scene.length_scale:
+        return ("minus", "plus")
+    return ("minus",) if d < 0 else ("plus",)
+
+
+def interface_end_exponents(scene: Scene) -> list[float]:
+    """``λ`` of each end of a straight Γ (where it meets a rectangle's
+    boundary) under a penalty law: the least over the wedges Γ makes
+    with the edges at that end (:func:`_wedges_at`; two on an edge, of
+    angles α and π − α, one per edge at a corner, of angles β and
+    π/2 − β).  A wedge on a clamped edge is a clamped–free wedge of its
+    angle (the springs' traction is a load of lower order):
+    :func:`clamped_free_exponent`, the least over both bodies.  On a
+    free, loaded or roller edge the springs' traction at the end does
+    not vanish, while the edge prescribes its own there: no uniform
+    stress near the vertex takes both, so the stress there, bounded,
+    depends on the direction (the wedge's ``r² θ`` Airy term) and
+    ``u ~ r log r`` (Sinclair, Appl. Mech. Rev. 57, 2004; the stress is
+    ``~ log r`` only where that term fails too, a wedge of 180° or
+    257°), ``λ = 1``.  Under an exactly enforced law Γ's end is a bonded
+    bimaterial edge (Bogy's exponents, none for equal materials), not
+    taken here."""
+    if not (isinstance(scene.interface, LineInterface) and isinstance(scene.domain, Rectangle)) or is_exact(scene.law):
+        return []
+    ends = scene.interface.chord(scene.domain)
+    kinds, out = _edge_supports(scene), []
+    kappas = [kolosov(scene.materials[b].nu, scene.plane) for b in ("minus", "plus")]
+    for end, other in (() if ends is None else (ends, ends[::-1])):
+        out.append(min(min(clamped_free_exponent(angle, k) for k in kappas) if kinds.get(edge) == "clamped" else 1.0
+                       for edge, angle in _wedges_at(scene, end, other)))
+    return out
+
+
+#: The direction along each edge of a rectangle.
+EDGE_DIRECTIONS = {"left": (0.0, 1.0), "right": (0.0, 1.0), "bottom": (1.0, 0.0), "top": (1.0, 0.0)}
+
+
+def _wedges_at(scene: Scene, end, other) -> list[tuple[str, float]]:
+    """``(edge, angle)`` of each wedge between Γ, leaving ``end`` towards
+    ``other``, and an edge at ``end``, along that edge's directions that
+    stay on the rectangle: α and π − α at a point inside an edge, one
+    angle per edge at a corner (their sum π/2)."""
+    tol_ = tol.GEOMETRY * scene.length_scale
+    d = (other - end) / np.linalg.norm(other - end)
+    wedges = []
+    for edge in scene.domain.boundary_of(end, tol_):
+        for e in (np.array(EDGE_DIRECTIONS[edge]), -np.array(EDGE_DIRECTIONS[edge])):
+            if scene.domain.contains([end + tol.WEDGE_PROBE * scene.length_scale * e], tol_)[0]:
+                wedges.append((edge, float(np.arccos(np.clip(d @ e, -1.0, 1.0)))))
+    return wedges
+
+
+def pollution_order(scene: Scene | None) -> float:
+    """``2 λ_min`` over the scene's singular points (:func:`corner_exponents`,
+    :func:`interface_end_exponents`), inf where there are none: away from
+    a singularity ``r^λ`` the error of a displacement converges no faster
+    than ``h^{2λ}`` (pollution: Nitsche & Schatz, Math. Comp. 28, 1974;
+    Wahlbin, *Local behavior in finite element methods*, 1991), though
+    only once the singular term outweighs the smooth one, which depends
+    on its coefficient: the orders lie in ``[min(p, 2λ), p]``
+    (:func:`~contactcore.estimate.orders.order_range`)."""
+    lams = corner_exponents(scene) + interface_end_exponents(scene) if scene is not None else []
+    return 2 * min(lams) if lams else np.inf
+
+
+def singular_regions(scene: Scene) -> list[tuple[str, np.ndarray]]:
+    """The singular points, named: ``("corners", points)`` of a rectangular
+    domain and ``("ends of Γ", points)`` where a straight Γ meets the outer
+    boundary (each an (m, 2) array)."""
+    regions = []
+    if isinstance(scene.domain, Rectangle):
+        regions.append(("corners", np.asarray(scene.domain.corners, float)))
+    if isinstance(scene.interface, LineInterface):
+        regions.append(("ends of Γ", np.asarray(scene.interface.chord(scene.domain), float)))
+    return regions
+
+
+def singular_points(scene: Scene) -> np.ndarray:
+    """Domain corners and the points where a straight Γ meets the outer boundary."""
+    pts = [points for _, points in singular_regions(scene)]
+    return np.vstack(pts) if pts else np.zeros((0, 2))
+
+
+def far_from_singular(scene: Scene, points: np.ndarray, exclude: float) -> np.ndarray:
+    """Mask of the points at least ``exclude`` from every singular point."""
+    sing = singular_points(scene)
+    if len(sing) == 0 or exclude <= 0:
+        return np.ones(len(points), bool)
+    return np.min(np.linalg.norm(points[:, None, :] - sing[None], axis=-1), axis=1) >= exclude
+

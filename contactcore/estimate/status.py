@@ -1,0 +1,72 @@
+"""Γ's status (open, stick, slip) in the runs of an estimate.
+
+Whether it ever took more than one value (:func:`switches`) sets the
+orders theory allows Γ's quantities under an exactly enforced law: at a
+point where the status changes the solution is no smoother than
+H^{5/2-ε} (Moussaoui & Khodja, Comm. PDE 17, 1992; Chouly, Hild & Renard,
+Math. Comp. 84, 2015; :func:`~contactcore.estimate.orders.theoretical_order`).
+
+For a law with history (unilateral, Coulomb) the profiles are the final
+increment's, and the status along Γ of the two runs is compared at
+:data:`~contactcore.tolerances.PROFILE_POINTS` points
+(:func:`status_change`): where it differs, the error there is not
+asymptotic, and the estimate says so (:func:`status_warning`).
+
+numpy only; no method is imported.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ..interface_path import along
+from ..laws import SLIP, STATUS_NAMES
+from ..profiles import sample_points
+from ..scene import InterfaceProfile, Scene
+
+
+def switches(paths) -> bool:
+    """Whether Γ's status (open, stick, slip forwards, slip backwards: the
+    sign of t_T) took more than one value over all increments of the runs'
+    interface ``paths``.  Where it never did (scene A under the exact
+    unilateral law: closed and tied everywhere), no point of Γ separates
+    two statuses, now or in the history that set a Coulomb slip, so nothing
+    limits the solution's smoothness there
+    (:func:`~contactcore.estimate.orders.theoretical_order`).
+    Slip in both directions is a switch: t_T jumps between ±μp."""
+    seen = set()
+    for path in paths:
+        for step in path.steps:
+            status = np.asarray(step.status)
+            backwards = (status == SLIP) & (np.asarray(step.traction)[:, 1] < 0)
+            seen.update(np.unique(np.where(backwards, -1, status)).tolist())
+    return len(seen) > 1
+
+
+def status_along(scene: Scene, path) -> np.ndarray:
+    """The final increment's status (index into ``STATUS_NAMES``) at the
+    profile samples of Γ, each the status of the nearest quadrature point
+    along Γ."""
+    _, pts, _ = sample_points(scene, InterfaceProfile("gamma", ("gN",)))
+    a, b = along(scene.interface, path.points), along(scene.interface, pts)
+    nearest = np.argmin(np.abs(b[:, None] - a[None, :]), axis=1)
+    return path.final.status[nearest]
+
+
+def status_change(scene: Scene, coarse_path, fine_path, hs: tuple[float, float] | None = None) -> dict:
+    """The final status of two runs (at ``hs``, coarse and fine) compared
+    along Γ: the share of Γ in each status per run, and the samples whose
+    status differs."""
+    s0, s1 = status_along(scene, coarse_path), status_along(scene, fine_path)
+    shares = lambda s: {n: float(np.mean(s == i)) for i, n in enumerate(STATUS_NAMES)}  # noqa: E731
+    return {"coarse": shares(s0), "fine": shares(s1), "differ": int(np.sum(s0 != s1)), "samples": len(s0),
+            "h": list(hs) if hs else None}
+
+
+def status_warning(change: dict) -> list[str]:
+    """A line when the two compared runs' status differs somewhere along Γ."""
+    if not change or change["differ"] == 0:
+        return []
+    show = lambda s: ", ".join(f"{v:.0%} {k}" for k, v in s.items())  # noqa: E731
+    runs = f"h = {change['h'][0]:g} and {change['h'][1]:g}" if change.get("h") else "the two finest runs"
+    return [f"the status along Γ differs between {runs} at {change['differ']} of {change['samples']} samples "
+            f"({show(change['coarse'])} → {show(change['fine'])}): the estimate is not asymptotic there"]
