@@ -1054,7 +1054,7 @@ WEDGE_ROOT = 1e-10
 
 #: A step along an edge from an end of Γ, as a fraction of the scene's
 #: size, that tells which of the edge's two directions stay on the
-#: rectangle (estimate._wedges_at): far above the GEOMETRY tolerance
+#: rectangle (estimate.singular._wedges_at): far above the GEOMETRY tolerance
 #: that puts the end on the edge (1e-9), far below any edge's length.
 WEDGE_PROBE = 1e-6
 
