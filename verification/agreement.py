@@ -32,6 +32,7 @@ pytest helper built on it (docs/api.md).
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -528,6 +529,44 @@ def sampled(scene: Scene, result) -> dict:
     return {p.id: p for p in sample_profiles(scene, result.fields, result.interface)}
 
 
+def compared_variants(methods, reference: tuple[str, int]) -> list[tuple[str, int]]:
+    """The ``(method, degree)`` of each of ``methods`` (:func:`variant`),
+    refused with a :class:`ContactError`, before any solve, when they
+    compare nothing with ``reference``: an empty list, or the reference
+    alone (a check over no method passed having checked nothing, grader9
+    #3); a string, which would be read a letter a method, is refused too."""
+    if isinstance(methods, str):
+        raise ContactError(f"methods: a list of methods, not one string (got {methods!r}; write [{methods!r}])")
+    try:
+        variants = [variant(m) for m in methods]
+    except TypeError:
+        raise ContactError(f"methods: a list of methods such as ['fe', 'xfem:2'] (got {methods!r})") from None
+    if not any(v != reference for v in variants):
+        given = "none is given" if not variants else f"only the reference {label(*reference)} itself is given"
+        raise ContactError(f"methods: {given}: name at least one method to compare with the reference "
+                           f"{label(*reference)} (nothing would be compared, and the check would pass having "
+                           "checked nothing)")
+    return variants
+
+
+#: The measures of :func:`assert_methods_agree`: an :class:`Agreement`'s
+#: worst sample and its RMS, both relative to the reference's scale.
+MEASURES = ("worst", "rms")
+
+
+def check_rtol(rtol, measure: str) -> float:
+    """``rtol`` and ``measure`` of :func:`assert_methods_agree`, refused with a
+    :class:`ContactError` (before any solve) unless ``measure`` is one of
+    :data:`MEASURES` and ``rtol`` a finite number > 0 (a NaN or negative
+    rtol failed every row, an infinite one passed every row)."""
+    if not isinstance(measure, str) or measure not in MEASURES:
+        raise ContactError(f"measure: {measure!r} is not a measure of agreement (known: "
+                           f"{', '.join(MEASURES)})")
+    if isinstance(rtol, bool) or not isinstance(rtol, (int, float)) or not math.isfinite(rtol) or rtol <= 0:
+        raise ContactError(f"rtol: must be a finite number > 0 (got {rtol!r})")
+    return float(rtol)
+
+
 def compare(scene, methods, h: float | None = None, *, reference="fe:2", exclude: float | None = None,
             floors: dict | None = None, **options) -> AgreementTable:
     """Solve ``scene`` (a Scene, a shipped scene's name or a TOML path) with
@@ -542,8 +581,8 @@ def compare(scene, methods, h: float | None = None, *, reference="fe:2", exclude
     scene = load_scene(scene)
     if exclude is not None:
         check_exclusion(scene, exclude)
-    variants = [variant(m) for m in methods]
     ref = variant(reference)
+    variants = compared_variants(methods, ref)
     names = sorted({n for n, _ in [ref, *variants]})
     known.check_options(names, **options)
     runs = {}
@@ -562,7 +601,11 @@ def assert_methods_agree(scene, methods, h: float | None = None, rtol: float = 0
     reference's scale (see :func:`compare`).  The AssertionError names the
     worst offender first (method, profile, quantity, the sample and both
     values), then the others; the table is returned when all agree.
-    ``floors`` (quantity -> value in its unit): see :func:`table`."""
+    ``floors`` (quantity -> value in its unit): see :func:`table`.  A
+    ``measure`` not in :data:`MEASURES`, an ``rtol`` that is not a finite
+    number > 0 and ``methods`` that compare nothing (:func:`compared_variants`)
+    are refused with a :class:`ContactError` before any solve."""
+    check_rtol(rtol, measure)
     result = compare(scene, methods, h, reference=reference, exclude=exclude, floors=floors, **options)
     failed = sorted((a for a in result.rows if not getattr(a, measure) <= rtol),
                     key=lambda a: -getattr(a, measure))
