@@ -340,6 +340,9 @@ def _benchmark(args, argv) -> None:
 def _efficiency(args, argv) -> None:
     from .agreement import default_exclusion
     from .efficiency import efficiency
+    from .study import check_given_once
+    check_given_once("--method", args.method)
+    check_given_once("--degree", args.degree)
     exclude = args.exclude if args.exclude is not None else default_exclusion(load_scene(args.scene))
     variants = [(m, d) for m in methods.expand(args.method) for d in args.degree]
     efficiency(args.scene, variants, {d: args.h for d in args.degree}, args.ref_h, exclude, args.out,
