@@ -472,16 +472,28 @@ class AgreementTable:
         return "\n".join(lines) + "\n"
 
 
+def floor_problem(q: str, value) -> str | None:
+    """What is wrong with ``value`` as quantity ``q``'s floor, or None: the
+    one rule and text of a floor, for ``floors={...}`` in Python and
+    ``--floor Q=VALUE`` on the command line: a finite number > 0 in ``q``'s
+    unit (a floor of 0 is no floor: leave the quantity out)."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not np.isfinite(value) or value <= 0:
+        shown = f"{value:g}" if isinstance(value, (int, float)) and not isinstance(value, bool) else repr(value)
+        return f"{q}: the floor must be a finite number > 0 in {q}'s unit (got {shown})"
+    return None
+
+
 def user_floors(floors: dict | None) -> dict[str, float]:
-    """``floors`` (quantity -> a value in its unit, ≥ 0) checked: a
-    ContactError names a quantity that does not exist or a bad value."""
+    """``floors`` (quantity -> a value in its unit, > 0: :func:`floor_problem`)
+    checked: a ContactError names a quantity that does not exist or a bad value."""
     from contactcore.scene import QUANTITIES
     checked = {}
     for q, value in (floors or {}).items():
         if q not in QUANTITIES:
             raise ContactError(f"floors: unknown quantity {q!r} (known: {', '.join(QUANTITIES)})")
-        if isinstance(value, bool) or not isinstance(value, (int, float)) or not np.isfinite(value) or value < 0:
-            raise ContactError(f"floors: {q} must be a finite number ≥ 0 in its unit (got {value!r})")
+        problem = floor_problem(q, value)
+        if problem:
+            raise ContactError(f"floors: {problem}")
         checked[q] = float(value)
     return checked
 
@@ -493,7 +505,17 @@ def table(scene: Scene, runs: dict[str, dict], reference: str, exclude: float | 
     (quantity -> value in its unit) measures a quantity against
     ``sqrt(q_ref² + floor²)``: the size below which a difference does not
     count, for a quantity that is zero in the reference (a patch test's
-    σxy), where its own round-off would be its scale."""
+    σxy), where its own round-off would be its scale.  ``reference`` is a
+    label among ``runs``' keys; anything else is refused with a
+    :class:`ContactError` naming the labels."""
+    if not isinstance(runs, dict):
+        raise ContactError(f"runs: a dict of label -> {{profile id: ProfileData}} (got {type(runs).__name__})")
+    labels = ", ".join(map(repr, runs))
+    if not isinstance(reference, str):
+        raise ContactError(f"reference: the label of one of runs ({labels}), not its profiles (got a "
+                           f"{type(reference).__name__})")
+    if reference not in runs:
+        raise ContactError(f"reference: {reference!r} is not a label of runs (they are {labels})")
     exclude = default_exclusion(scene) if exclude is None else exclude
     check_exclusion(scene, exclude)
     ref, given = runs[reference], user_floors(floors)

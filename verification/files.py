@@ -228,6 +228,9 @@ def write_text(path: Path, text: str) -> Path:
 
 
 def write_json(path: Path, data) -> Path:
+    """``data`` as indented JSON into ``path``, atomically (:func:`write_text`);
+    numpy numbers and arrays as lists or numbers, anything else JSON cannot
+    hold (a path) as its text."""
     return write_text(path, json.dumps(data, indent=2, default=_jsonable) + "\n")
 
 
