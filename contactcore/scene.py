@@ -19,7 +19,8 @@ from . import tolerances as tol
 from .bodies import Body
 from .elasticity import voigt_matrix
 from .errors import SceneError, quoted
-from .geometry import CircleInterface, Disc, Domain, Interface, LevelSetInterface, LineInterface, Rectangle
+from .geometry import (CircleInterface, Disc, Domain, Interface, LevelSetInterface, LineInterface, Rectangle,
+                       domain_cells)
 from .laws import InterfaceLaw
 
 BODIES = tuple(b.label for b in Body)
@@ -275,8 +276,7 @@ class Scene:
         above :data:`~contactcore.tolerances.SMALL_STRAIN_LIMIT`.  An RMS,
         not a peak: a corner's stress singularity, integrable, does not
         trigger it as h falls."""
-        from .quadrature import background_cells  # quadrature imports this module
-        lo, hi = background_cells(self, self.length_scale / tol.SMALL_STRAIN_SAMPLES)
+        lo, hi = domain_cells(self.domain, self.length_scale / tol.SMALL_STRAIN_SAMPLES)
         centre = (lo + hi) / 2
         clear = np.maximum(np.linalg.norm(hi - lo, axis=1) / 2, h / 2)
         inside = ((self.domain.distance_to_boundary(centre) > clear)
