@@ -56,6 +56,7 @@ with keeping_sigint():
 from contactcore import DiscretisationError, Scene
 from contactcore import tolerances as tol
 from contactcore.errors import check_writable
+from contactcore.scene import check_fitted_thickness
 from contactcore.geometry import CircleInterface, Disc, Rectangle
 
 from .tags import BODY, BOUNDARY, INTERFACE, NAMES, OUTER
@@ -179,6 +180,8 @@ def _check_features(scene: Scene, h: float, fitted: bool) -> None:
     smallest = [("domain.radius", dom.radius, user.domain.radius)] if isinstance(dom, Disc) else []
     if fitted and isinstance(itf, CircleInterface):
         smallest.append(("interface.radius", itf.radius, user.interface.radius))
+    if fitted:
+        check_fitted_thickness(scene)
     for field, size, named in smallest:
         if size < tol.MESH_MIN_FEATURE * h:
             raise DiscretisationError(f"{field}: {named:g} is {size / h:.1e} h, below {tol.MESH_MIN_FEATURE:g} h: "
