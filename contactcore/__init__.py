@@ -12,14 +12,14 @@ from .laws import LAWS, CoulombLaw, LinearLaw, UnilateralLaw
 from .profiles import ProfileData, evaluate_quantities, sample_profile, sample_profiles
 from .result import Result, SolverReport, Timings
 from .scene import (BODIES, BodyForce, InterfaceProfile, LineProfile, Material, Pin, Pressure, Scene, Support,
-                    Torque, Traction)
+                    Torque, Traction, Units)
 from .scene_files import builtin_scenes, load_scene, scene_from_dict, scene_text
 from .geometry import CircleInterface, Disc, LevelSetInterface, LineInterface, Rectangle
 
 __all__ = [
     "BODIES", "BodyForce", "CircleInterface", "ContactError", "Disc", "DiscretisationError", "FieldsError", "InterfaceProfile",
     "CoulombLaw", "LAWS", "LevelSetInterface", "LineInterface", "LineProfile", "LinearLaw", "Material", "Pin", "Pressure", "ProfileData", "Rectangle",
-    "Result", "Scene", "SceneError", "SolverError", "SolverReport", "Support", "Timings", "Torque", "Traction", "UnilateralLaw",
+    "Result", "Scene", "SceneError", "SolverError", "SolverReport", "Support", "Timings", "Torque", "Traction", "UnilateralLaw", "Units",
     "builtin_scenes", "evaluate_quantities", "load_scene", "make_law", "sample_profile", "sample_profiles",
     "scene_from_dict", "scene_text",
 ]

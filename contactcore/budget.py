@@ -40,6 +40,9 @@ class TooLargeError(ContactError):
 
 @dataclass(frozen=True)
 class Estimate:
+    """What a run will cost (:func:`estimate`): about ``unknowns`` unknowns,
+    ``memory`` resident bytes, factors included, and ``solves`` linear solves."""
+
     unknowns: float
     memory: float  # bytes
     solves: float

@@ -23,7 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from contactcore import DiscretisationError
+from contactcore.errors import DiscretisationError
 from contactcore import tolerances as tol
 from contactcore.bodies import sign_of
 from contactcore.geometry import CircleInterface, LevelSetInterface, LineInterface, clip_halfplane, polygon_area

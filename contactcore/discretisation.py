@@ -260,12 +260,19 @@ def check_solvable(scene, discretisation: Discretisation, h: float | None = None
 @dimensionless
 def solve(scene, discretisation: Discretisation, h: float | None = None, *, paper: bool = False,
           progress=None, reuse: Reuse | None = None) -> Result:
-    """Solve ``scene`` with ``discretisation`` at the spacing ``h`` (or the
-    paper's grid): the one entry point of every method (module doc);
-    ``progress`` as for :func:`contactcore.newton.solve_increments`;
-    ``reuse`` a :class:`Reuse` that may hold this system already (the
-    record then says ``"reused": true`` and the mesh and assembly times
-    are zero: nothing was built)."""
+    """Solve ``scene`` with ``discretisation`` at the spacing ``h`` (the
+    cell size or node spacing, in the scene's length unit; None: the
+    scene's own) or on the paper's grid: the one entry point of every
+    method (module doc); ``progress`` as for
+    :func:`contactcore.newton.solve_increments`; ``reuse`` a :class:`Reuse`
+    that may hold this system already (the record then says ``"reused":
+    true`` and the mesh and assembly times are zero: nothing was built).
+    Refused before anything is built: a scene or ``h`` that cannot be
+    discretised (:class:`~contactcore.errors.SceneError`), options the
+    method cannot use (:class:`~contactcore.errors.DiscretisationError`);
+    a solve that fails (no equilibrium, a singular system) raises
+    :class:`~contactcore.errors.SolverError`.  Each is a
+    :class:`~contactcore.errors.ContactError` whose message names the problem."""
     start, timings = time.perf_counter(), Timings()
     resolution = _refused(scene, discretisation, h, paper)
     built = (reuse.build(scene, discretisation, resolution, timings) if reuse is not None

@@ -61,6 +61,38 @@ def os_problem(path, exc: OSError) -> str:
     return text
 
 
+def check_writable(path, *, kind: str = "folder", option: str = "--out", error: type = ContactError):
+    """``path`` as where a command writes, checked before any work and
+    touching nothing: refuse a path below a file, one whose nearest existing
+    folder is not writable (missing parents are created later), a name the
+    file system cannot hold, and, for ``kind`` "folder", an existing file,
+    for ``kind`` "file" (written beside itself and renamed over any earlier
+    one), an existing folder.  The ``error`` raised names ``option`` first
+    (``--out: PATH is a file``): the one check of every command's output
+    path (``python -m verification``'s result folders, ``python -m
+    meshes``'s mesh file)."""
+    import os
+    from pathlib import Path
+    if kind not in ("folder", "file"):
+        raise ValueError(f"kind: 'folder' or 'file' (got {kind!r})")
+    path = Path(path)
+    try:
+        if kind == "file" and path.is_dir():
+            raise error(f"{option}: {path} is a folder; give the name of the file to write")
+        start = path if kind == "folder" else path.parent
+        for parent in [start, *start.parents]:
+            if parent.exists() and not parent.is_dir():
+                where = "is a file" if parent == path else f"lies below the file {parent}"
+                raise error(f"{option}: {path} {where}")
+            if parent.exists():
+                if not os.access(parent, os.W_OK | os.X_OK):
+                    raise error(f"{option}: {path} cannot be created or written ({parent} is not writable)")
+                break
+    except OSError as exc:  # a name too long for the file system (ENAMETOOLONG), ...
+        raise error(f"{option}: {path} cannot be created: {os_problem(path, exc)}") from None
+    return path
+
+
 def require_finite(what: str, values) -> None:
     """SolverError naming ``what`` unless every value is finite: a run
     never reports NaN or ∞ as an answer."""

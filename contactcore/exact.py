@@ -65,6 +65,9 @@ from .laws import STICK, CoulombLaw, Decision, LawResponse, LinearLaw, Unilatera
 #: Laws that exist only enforced exactly (no springs).
 BONDED = ("bonded",)
 
+#: What every refusal of springs on ``bonded`` says.
+NO_SPRINGS = "it has no springs: for springs use type = \"linear\""
+
 
 def default_enforcement(kind: str) -> str:
     """How a law of type ``kind`` is enforced when the scene does not say."""
@@ -87,13 +90,17 @@ _SOFT = ("a smaller β leaves the contact a soft spring (C-coulomb's t_T 11-16 %
 
 def checked_stabilisation(value, field: str) -> float:
     """β as given (dimensionless, a multiple of the method's E/h), or a
-    SceneError naming ``field``: a finite number > 0 within
+    SceneError naming ``field``: a number within
     :data:`~contactcore.tolerances.NITSCHE_STABILISATION_RANGE`, outside
     which an answer at the mesh's h was measured to move with β (a large γ
-    locks cut cells like a stiff penalty, a small one is a soft spring)."""
-    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) or value <= 0:
-        raise SceneError(field, f"must be a finite number > 0, a multiple of the method's E/h (got {value!r})")
+    locks cut cells like a stiff penalty, a small one is a soft spring).
+    The one rule and text of β, for a scene file, a Python scene and
+    ``study --param stabilisation``: every refusal reads ``must lie within
+    LOW..HIGH``."""
     low, high = tol.NITSCHE_STABILISATION_RANGE
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
+        raise SceneError(field, f"must lie within {low:g}..{high:g}, a number: a multiple of the method's E/h "
+                                f"(got {value!r})")
     if not low <= value <= high:
         why = _STIFF if value > high else _SOFT
         raise SceneError(field, f"must lie within {low:g}..{high:g} (got {quoted(value, low, high)}): {why}")
@@ -115,6 +122,9 @@ class _ExactLaw:
     #: the penalty law evaluated with per-point stiffnesses (None: bonded)
     springs: ClassVar[type | None] = None
 
+    #: What the law says of ``kN``, ``kT`` when it refuses an unknown key.
+    about_springs: ClassVar[str] = "kN, kT may be given and play no part"
+
     @classmethod
     def from_params(cls, params: dict, path: str):
         """Build from a TOML table; k_N, k_T may be given (checked, unused)."""
@@ -122,7 +132,7 @@ class _ExactLaw:
         unknown = sorted(set(params) - allowed)
         if unknown:
             raise SceneError(f"{path}.{unknown[0]}", f"unknown parameter of the exact '{cls.name}' law (it takes "
-                             f"{', '.join(cls.parameters)}; kN, kT play no part)")
+                             f"{', '.join(cls.parameters)}; {cls.about_springs})")
         given = tuple((k, _positive(params, k, path)) for k in ("kN", "kT") if k in params)
         values = {"stabilisation": _stabilisation(params, path), "given_springs": given}
         if "mu" in cls.parameters:
@@ -179,12 +189,15 @@ class Bonded(_ExactLaw):
 
     name: ClassVar[str] = "bonded"
     is_linear: ClassVar[bool] = True
+    about_springs: ClassVar[str] = NO_SPRINGS
 
     @classmethod
     def from_params(cls, params: dict, path: str):
+        """Build from a TOML table: ``stabilisation`` alone; ``kN``, ``kT``
+        are refused, in the words of any unknown key (:data:`NO_SPRINGS`)."""
         for k in ("kN", "kT"):
             if k in params:
-                raise SceneError(f"{path}.{k}", "the bonded law has no springs (for springs use type = \"linear\")")
+                raise SceneError(f"{path}.{k}", f"the 'bonded' law takes stabilisation only; {NO_SPRINGS}")
         return super().from_params(params, path)
 
     def at(self, stiffness: np.ndarray):
@@ -214,8 +227,7 @@ def make_law(kind: str, enforcement: str, params: dict, path: str):
     field.  Called by :func:`contactcore.enforcement.make_law`, the entry
     point for any law table."""
     if kind in BONDED and enforcement != "exact":
-        raise SceneError(f"{path}.enforcement", f"the '{kind}' law has no springs: it is enforced exactly only "
-                         "(for springs use type = \"linear\")")
+        raise SceneError(f"{path}.enforcement", f"the '{kind}' law is enforced exactly only, as {NO_SPRINGS}")
     if kind not in EXACT_LAWS:
         raise SceneError(f"{path}.enforcement", f"the '{kind}' law is enforced by its springs only (exact "
                          f"enforcement: {', '.join(EXACT_LAWS)}; perfect bonding is type = \"bonded\")")

@@ -138,6 +138,27 @@ class Disc:
 Domain = Rectangle | Disc
 
 
+def domain_cells(domain: Domain, h: float) -> tuple[np.ndarray, np.ndarray]:
+    """Lower and upper corners (C, 2) of square-ish cells of size ≈ h covering
+    ``domain`` (for a disc: those that meet it): the background cells of
+    EFGM's quadrature (:func:`contactcore.quadrature.background_cells`) and
+    the small-strain check's samples (:meth:`contactcore.scene.Scene.small_strain_warnings`)."""
+    if isinstance(domain, Rectangle):
+        lo0, size = np.asarray(domain.corner, float), np.asarray(domain.size, float)
+    else:
+        lo0, size = np.asarray(domain.centre, float) - domain.radius, np.full(2, 2 * domain.radius)
+    n = np.maximum(1, np.round(size / h)).astype(int)
+    step = size / n
+    I, J = np.meshgrid(np.arange(n[0]), np.arange(n[1]), indexing="ij")
+    lo = lo0 + np.column_stack([I.ravel(), J.ravel()]) * step
+    hi = lo + step
+    if isinstance(domain, Disc):
+        centre_dist = np.hypot(*((lo + hi) / 2 - np.asarray(domain.centre)).T)
+        keep = centre_dist < domain.radius + np.linalg.norm(step) / 2
+        lo, hi = lo[keep], hi[keep]
+    return lo, hi
+
+
 @dataclass(frozen=True)
 class LineInterface:
     """Straight Γ through ``point`` with ``normal`` (from − into +), made a

@@ -46,7 +46,8 @@ import scipy.sparse as sp
 
 from petsc4py import PETSc
 
-from contactcore import SolverError, SolverReport
+from contactcore.errors import SolverError
+from contactcore.result import SolverReport
 from contactcore.errors import SolverOptionError
 from contactcore import health
 from contactcore import tolerances as tol

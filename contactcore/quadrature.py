@@ -16,29 +16,15 @@ from __future__ import annotations
 
 import numpy as np
 
-from contactcore import Scene
+from contactcore.scene import Scene
 from contactcore.cutcell import Rule, curve_rule, cut_cell, edge_crossings, tensor_cells
-from contactcore.geometry import CircleInterface, Disc, Rectangle
+from contactcore.geometry import CircleInterface, Disc, Rectangle, domain_cells
 
 
 def background_cells(scene: Scene, h: float) -> tuple[np.ndarray, np.ndarray]:
     """Lower and upper corners (C, 2) of square-ish cells of size ≈ h covering
-    the domain (for a disc: those that meet it)."""
-    dom = scene.domain
-    if isinstance(dom, Rectangle):
-        lo0, size = np.asarray(dom.corner, float), np.asarray(dom.size, float)
-    else:
-        lo0, size = np.asarray(dom.centre, float) - dom.radius, np.full(2, 2 * dom.radius)
-    n = np.maximum(1, np.round(size / h)).astype(int)
-    step = size / n
-    I, J = np.meshgrid(np.arange(n[0]), np.arange(n[1]), indexing="ij")
-    lo = lo0 + np.column_stack([I.ravel(), J.ravel()]) * step
-    hi = lo + step
-    if isinstance(dom, Disc):
-        centre_dist = np.hypot(*((lo + hi) / 2 - np.asarray(dom.centre)).T)
-        keep = centre_dist < dom.radius + np.linalg.norm(step) / 2
-        lo, hi = lo[keep], hi[keep]
-    return lo, hi
+    the scene's domain (:func:`contactcore.geometry.domain_cells`)."""
+    return domain_cells(scene.domain, h)
 
 
 def _outer_circle(scene: Scene) -> CircleInterface | None:

@@ -76,6 +76,16 @@ NODE_MATCH = 1e-6
 #: (tests/test_xfem_graded.py).
 XFEM_SNAP = 1e-5
 
+#: The thinnest body a fitted (gmsh) mesh can hold, relative to L: the
+#: mesher names each boundary curve by the one outer boundary within
+#: NODE_MATCH·L of its midpoint, so a body at most 2·NODE_MATCH·L thick has
+#: a curve within that of two boundaries.  Measured (grader9's 2 × 1 incline,
+#: L = 2.24, a horizontal Γ t above the bottom, fe at h = 0.1): t = 4.4e-6
+#: and below fail ("gmsh curve 6 could not be assigned to one outer
+#: boundary"; at 1e-7 Γ's facets are lost and body + "can slide along Γ"),
+#: 4.6e-6 and above mesh and solve; 2·NODE_MATCH·L = 4.47e-6.
+THINNEST_FITTED_BODY = 2 * NODE_MATCH
+
 #: Degree 1 (fe and xfem) reads a body's stress from a least-squares quadratic through
 #: its cells' own stresses at their parts' centroids, weighted by the parts'
 #: areas, over the cells within this many vertex rings of the point's cell

@@ -4,29 +4,45 @@ import logging
 import sys
 
 from contactcore import ContactError, load_scene
+from contactcore.budget import check_budget
+from contactcore.scene import check_resolution
 
-from .build import Grading, write_mesh
+from .build import Grading, check_mesh_path, write_mesh
 
 
 def main(argv=None) -> int:
+    """The command: refuse, before any meshing and with one ``error:`` line
+    and exit 2, an output path that cannot take the mesh
+    (:func:`meshes.build.check_mesh_path`), and an ``h`` that ``python -m
+    verification run`` refuses too: not a finite number > 0, larger than the
+    domain or below its geometric tolerance
+    (:func:`contactcore.scene.check_resolution`), or a mesh too large for
+    the machine (:func:`contactcore.budget.check_budget`, fe's, unless
+    ``--allow-large``); then mesh and write it (0)."""
     parser = argparse.ArgumentParser(prog="python -m meshes", description=__doc__)
     parser.add_argument("scene", help="built-in scene name (A, B, C) or a scene TOML file")
     parser.add_argument("--h", type=float, help="element size (default: the scene's h)")
-    parser.add_argument("--out", required=True, help="the .msh file to write")
+    parser.add_argument("--out", required=True, help="the mesh file to write (.msh, or another format gmsh writes)")
     parser.add_argument("--order", type=int, default=1, choices=(1, 2), help="geometry order (2: curved)")
     parser.add_argument("--grade", type=float, metavar="FACTOR", help="size on Γ and corners as a fraction of h")
     parser.add_argument("--grade-distance", type=float, help="distance over which the size grows back to h")
+    parser.add_argument("--allow-large", action="store_true",
+                        help="mesh even when the estimated memory of solving on it exceeds what this machine has")
     args = parser.parse_args(argv)
     logging.basicConfig(level=logging.INFO, format="%(message)s")
     try:
+        out = check_mesh_path(args.out)
         scene = load_scene(args.scene)
         h = args.h if args.h is not None else scene.h
         if h is None:
             parser.error("the scene gives no default h: pass --h")
+        check_resolution(scene, h, "--h")
+        if not args.allow_large:
+            check_budget(scene, h, args.order, "fe")
         grading = None
         if args.grade is not None:
             grading = Grading(args.grade, args.grade_distance or 4 * h)
-        out = write_mesh(scene, h, args.out, order=args.order, grading=grading)
+        out = write_mesh(scene, h, out, order=args.order, grading=grading)
     except ContactError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2

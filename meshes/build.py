@@ -55,6 +55,8 @@ with keeping_sigint():
 
 from contactcore import DiscretisationError, Scene
 from contactcore import tolerances as tol
+from contactcore.errors import check_writable
+from contactcore.scene import check_fitted_thickness
 from contactcore.geometry import CircleInterface, Disc, Rectangle
 
 from .tags import BODY, BOUNDARY, INTERFACE, NAMES, OUTER
@@ -178,6 +180,8 @@ def _check_features(scene: Scene, h: float, fitted: bool) -> None:
     smallest = [("domain.radius", dom.radius, user.domain.radius)] if isinstance(dom, Disc) else []
     if fitted and isinstance(itf, CircleInterface):
         smallest.append(("interface.radius", itf.radius, user.interface.radius))
+    if fitted:
+        check_fitted_thickness(scene)
     for field, size, named in smallest:
         if size < tol.MESH_MIN_FEATURE * h:
             raise DiscretisationError(f"{field}: {named:g} is {size / h:.1e} h, below {tol.MESH_MIN_FEATURE:g} h: "
@@ -241,14 +245,40 @@ def _build_outer_only(scene: Scene, outer: int, h: float, order: int) -> None:
         gmsh.model.mesh.setOrder(2)
 
 
+#: The mesh formats gmsh 4.8 writes to the file named (by its extension):
+#: others it cannot write here (.med, .cgns: not compiled in), writes
+#: under other names (.celum), writes empty (.neu, .p3d), or are no mesh
+#: (.brep, .step, .geo_unrolled).
+MESH_FORMATS = (".msh", ".vtk", ".mesh", ".inp", ".unv", ".stl", ".bdf", ".su2", ".diff", ".ir3", ".m",
+                ".ply2", ".wrl", ".x3d", ".pos", ".key")
+
+
+def check_mesh_path(out: str | Path, option: str = "--out") -> Path:
+    """``out`` as a mesh file to write, checked before any meshing: a
+    :class:`DiscretisationError` naming ``option`` for an empty path, an
+    extension gmsh writes no mesh to (:data:`MESH_FORMATS`), an existing
+    folder, a path below a file or in a folder that cannot be written
+    (:func:`contactcore.errors.check_writable`, the check of every
+    command's output path)."""
+    if not str(out).strip():
+        raise DiscretisationError(f"{option}: must name a file (got an empty path)")
+    out = check_writable(out, kind="file", option=option, error=DiscretisationError)
+    if out.suffix.lower() not in MESH_FORMATS:
+        got = f"'{out.suffix}'" if out.suffix else "none"
+        raise DiscretisationError(f"{option}: {out}: gmsh writes no mesh format of extension {got}; end the name "
+                                  f"with one of {', '.join(MESH_FORMATS)}")
+    return out
+
+
 def write_mesh(scene: Scene, h: float, out: str | Path, *, order: int = 1, grading: Grading | None = None) -> Path:
     """Build the fitted mesh and write it to ``out`` (atomically: a temporary
-    file in the same folder, renamed when complete)."""
-    out = Path(out)
+    file in the same folder, renamed when complete); ``out`` is checked
+    first (:func:`check_mesh_path`)."""
+    out = check_mesh_path(out, "out")
     out.parent.mkdir(parents=True, exist_ok=True)
     with gmsh_session():
         build_model(scene, h, order=order, grading=grading)
-        fd, tmp = tempfile.mkstemp(suffix=out.suffix or ".msh", dir=out.parent)
+        fd, tmp = tempfile.mkstemp(suffix=out.suffix, dir=out.parent)
         os.close(fd)
         try:
             gmsh.write(tmp)

@@ -191,7 +191,8 @@ def test_a_quantity_zero_in_the_reference_is_measured_against_a_floor_a_user_giv
     assert bare.worst == pytest.approx((mine - ref) / roundoff(scene, "sxy"))
     assert floored.worst == pytest.approx((mine - ref) / floor)
     assert "largest sqrt(sxy² + (1e+03 Pa)²) (floored)" in floored.describe()
-    for bad, why in (({"vonmises": 1.0}, "unknown quantity"), ({"sxy": -1.0}, "finite number ≥ 0")):
+    for bad, why in (({"vonmises": 1.0}, "unknown quantity"), ({"sxy": -1.0}, "finite number > 0"),
+                     ({"sxy": 0}, "finite number > 0")):  # one rule with --floor's (grader9 #11)
         with pytest.raises(ContactError, match=f"floors: .*{why}"):
             table(scene, runs, "ref", floors=bad)
 
@@ -407,3 +408,38 @@ def test_an_exclusion_that_leaves_a_profile_empty_is_refused_before_any_solve():
         with pytest.raises(SceneError, match=r"^exclude: 0\.3 leaves out every sample of profile G: give less "
                                              r"\(the default is 0\.125\)"):
             check(scene, ["xfem"], h=COARSE_H, exclude=0.3)
+
+
+@pytest.fixture
+def no_solve(monkeypatch):
+    """Fail at once if a method is solved: the refusals below come first."""
+    import verification.methods as known
+    monkeypatch.setattr(known, "solver", lambda name: pytest.fail(f"{name} was solved"))
+
+
+@pytest.mark.parametrize("methods,message", [
+    ([], r"^methods: none is given: name at least one method to compare with the reference fe p2 "),
+    (["fe:2"], r"^methods: only the reference fe p2 itself is given"),
+    ([("fe", 2), "fe:2"], r"^methods: only the reference fe p2 itself is given"),
+    ("xfem", r"^methods: a list of methods, not one string \(got 'xfem'; write \['xfem'\]\)$"),
+    (3, r"^methods: a list of methods such as")])
+def test_methods_that_compare_nothing_are_refused_before_any_solve(methods, message, no_solve):
+    """grader9 #3: an empty list passed, having compared nothing."""
+    for check in (compare, assert_methods_agree):
+        with pytest.raises(ContactError, match=message):
+            check("A", methods, h=COARSE_H)
+
+
+@pytest.mark.parametrize("rtol,measure,message", [
+    (0.05, "worse", r"^measure: 'worse' is not a measure of agreement \(known: worst, rms\)$"),
+    (0.05, "value", r"^measure: 'value' is not"),
+    (-1.0, "worst", r"^rtol: must be a finite number > 0 \(got -1\.0\)$"),
+    (0.0, "rms", r"^rtol: must be a finite number > 0"),
+    (float("nan"), "worst", r"^rtol: must be a finite number > 0 \(got nan\)$"),
+    (float("inf"), "worst", r"^rtol: must be a finite number > 0"),
+    ("0.1", "worst", r"^rtol: must be a finite number > 0")])
+def test_a_measure_or_rtol_that_means_nothing_is_refused_before_any_solve(rtol, measure, message, no_solve):
+    """grader9 #4: ``getattr(a, measure)`` took any attribute (``value``
+    compared physical values with rtol), after every solve."""
+    with pytest.raises(ContactError, match=message):
+        assert_methods_agree("A", ["xfem"], h=COARSE_H, rtol=rtol, measure=measure)

@@ -295,6 +295,25 @@ def test_an_empty_out_and_a_value_given_twice_are_refused(tmp_path, capsys):
     assert capsys.readouterr().err.strip() == "error: --values: kN: each value may be given once (1e+10 given twice)"
 
 
+@pytest.mark.parametrize("given, message", [
+    (["--degree", "1", "1", "--h", "0.2", "0.1"], "error: --degree: each value may be given once (1 given twice)"),
+    (["--h", "0.2", "0.2"], "error: --h: each value may be given once (0.2 given twice)"),
+    (["--method", "efgm", "efgm", "--h", "0.2"], "error: --method: each value may be given once (efgm given twice)"),
+    (["--h", "5", "0.1"], "error: --h: 5 exceeds the domain's smallest dimension 1: the mesh would be one cell "
+                          "across")])
+def test_efficiency_refuses_a_value_given_twice_as_study_does(given, message, tmp_path, capsys, monkeypatch):
+    """grader9 #8: ``efficiency --degree 1 1`` or ``--h 0.2 0.2`` solved each
+    rung twice and wrote its row twice (exit 0); an h larger than the
+    domain was named ``h:``, after the memory line.  Refused before any solve."""
+    from verification import methods
+    monkeypatch.setattr(methods, "solver", lambda name: pytest.fail(f"{name} was solved"))
+    argv = ["efficiency", "A", *([] if "--method" in given else ["--method", "efgm"]), *given,
+            "--out", str(tmp_path / "e")]
+    assert main(argv) == 2
+    assert capsys.readouterr().err.strip().splitlines() == [message]
+    assert not (tmp_path / "e").exists()
+
+
 @pytest.mark.parametrize("exclude, message", [
     ("100", "error: --exclude: 100 leaves out every sample of profile A1"),
     ("nan", "error: --exclude: must be a finite distance >= 0 (got nan)"),

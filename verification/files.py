@@ -21,7 +21,7 @@ from pathlib import Path
 from contactcore import CircleInterface, ContactError, ProfileData, SceneError, load_scene
 from contactcore.profiles import sample_points
 from contactcore.scene import Units
-from contactcore.errors import os_problem
+from contactcore.errors import check_writable, os_problem
 from contactcore.estimate.runs import ERROR_SUFFIX
 
 from . import janitor
@@ -184,16 +184,8 @@ def check_out(path: Path) -> Path:
     file, a folder that cannot be created, and a non-empty folder that this
     tool did not write (no :data:`MANIFEST`), all with an
     :class:`OutFolderError` that names it; nothing is touched."""
-    path = Path(path)
+    path = check_writable(path, kind="folder", error=OutFolderError)
     try:
-        for parent in [path, *path.parents]:
-            if parent.exists() and not parent.is_dir():
-                where = "is a file" if parent == path else f"lies below the file {parent}"
-                raise OutFolderError(f"--out: {path} {where}")
-            if parent.exists():
-                if not os.access(parent, os.W_OK | os.X_OK):
-                    raise OutFolderError(f"--out: {path} cannot be created or written ({parent} is not writable)")
-                break
         unwritten = path.is_dir() and any(path.iterdir()) and not (path / MANIFEST).is_file()
     except OSError as exc:  # a name too long for the file system (ENAMETOOLONG), ...
         raise OutFolderError(f"--out: {path} cannot be created: {os_problem(path, exc)}") from None
@@ -236,6 +228,9 @@ def write_text(path: Path, text: str) -> Path:
 
 
 def write_json(path: Path, data) -> Path:
+    """``data`` as indented JSON into ``path``, atomically (:func:`write_text`);
+    numpy numbers and arrays as lists or numbers, anything else JSON cannot
+    hold (a path) as its text."""
     return write_text(path, json.dumps(data, indent=2, default=_jsonable) + "\n")
 
 

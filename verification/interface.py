@@ -31,13 +31,20 @@ from .plots import keep_span, legend_outside, pyplot, save, style
 STATUS_COLOURS = ("#bbbbbb", "#2c7fb8", "#d95f0e")  # open, stick, slip
 
 
+def step_value(k: float) -> int | float:
+    """A step as ``increments.csv`` and ``interface.csv`` write it: an
+    increment's number as an integer (``1``, not ``1.0``), a cut-back's
+    sub-step (halved after a failure) as the fraction it is (``1.5``)."""
+    return int(k) if float(k).is_integer() else float(k)
+
+
 def increment_rows(path: InterfacePath) -> list[dict]:
     """One row per converged step (see module doc)."""
     w = path.weights / path.weights.sum()
     rows = []
     for s in path.steps:
         means, rms = path.means(s), np.sqrt(w @ s.traction ** 2)
-        rows.append({"step": s.step, "iterations": s.iterations, "residual": s.residuals[-1], **s.counts(),
+        rows.append({"step": step_value(s.step), "iterations": s.iterations, "residual": s.residuals[-1], **s.counts(),
                      **dict(zip(("mean_tN", "mean_tT", "mean_gN", "mean_gT"), map(float, means))),
                      "rms_tN": float(rms[0]), "rms_tT": float(rms[1]),
                      **{f"{name}_fraction": float(w @ (s.status == STATUS_NAMES.index(name)))
@@ -53,7 +60,7 @@ def write_history(folder: Path, scene, path: InterfacePath) -> None:
     points = []
     for step in path.steps:
         for i in range(len(s)):
-            points.append({"step": step.step, "x": float(path.points[i, 0]), "y": float(path.points[i, 1]),
+            points.append({"step": step_value(step.step), "x": float(path.points[i, 0]), "y": float(path.points[i, 1]),
                            "s": float(s[i]), "gN": float(step.jump[i, 0]), "gT": float(step.jump[i, 1]),
                            "tN": float(step.traction[i, 0]), "tT": float(step.traction[i, 1]),
                            "status": STATUS_NAMES[step.status[i]]})

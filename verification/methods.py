@@ -34,13 +34,23 @@ FLAGS = {"petsc_options": "--petsc-option", "cell": "--cell", "dmax": "--dmax", 
 
 
 def discretisation(name: str) -> type:
-    """Method ``name``'s options class."""
+    """Method ``name``'s options class; an unknown ``name`` is refused
+    with a :class:`ContactError` naming the methods."""
+    if not isinstance(name, str) or name not in METHODS:
+        raise ContactError(f"method {name!r}: unknown (known: {', '.join(METHODS)})")
     module, cls = METHODS[name].split(":")
     return getattr(importlib.import_module(module), cls)
 
 
 def solver(name: str):
-    """The ``solve`` function of method (or peer) ``name``."""
+    """The ``solve`` function of method (or peer) ``name``:
+    ``solve(scene, h=None, *, degree=1, paper=False, **options)``, ``h`` the
+    cell size or node spacing in the scene's length unit (None: the
+    scene's own), the options the method's (:func:`takes`); it refuses
+    and fails as :func:`contactcore.discretisation.solve` does (a
+    :class:`~contactcore.ContactError` naming the problem: a bad scene or
+    ``h``, an option the method does not take, a failed solve).  An unknown
+    ``name`` is refused with a ContactError."""
     module = PEERS[name] if name in PEERS else discretisation(name).module
     return importlib.import_module(module).solve
 

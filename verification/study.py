@@ -283,6 +283,18 @@ def solve_case(case: Case) -> dict:
             **_outputs(scene, tried.result)}
 
 
+def check_given_once(field: str, values, name: str = "") -> None:
+    """Refuse with a :class:`SceneError` naming ``field`` (and ``name``, the
+    parameter the values belong to, if any) a value given more than once: a
+    repeated value ran the same case twice and wrote its row twice (the
+    one check of ``study --values`` and ``efficiency --method/--degree/--h``)."""
+    values = list(values)
+    twice = sorted({f"{v:g}" if isinstance(v, float) else str(v) for v in values if values.count(v) > 1})
+    if twice:
+        raise SceneError(field, f"{name + ': ' if name else ''}each value may be given once "
+                                f"({', '.join(twice)} given twice)")
+
+
 def study(scene_name: str, params: list[tuple[str, list[float]]], method_names: list[str], out: Path, *,
           degree: int = 1, h: float | None = None, cell: str | None = None, workers: int | None = None,
           allow_large: bool = False, argv=()) -> str:
@@ -295,9 +307,7 @@ def study(scene_name: str, params: list[tuple[str, list[float]]], method_names: 
     if len(set(names)) != len(names):
         raise SceneError("--param", f"each parameter may be given once (got {', '.join(names)})")
     for name, values in params:
-        twice = sorted({f"{v:g}" if isinstance(v, float) else str(v) for v in values if values.count(v) > 1})
-        if twice:
-            raise SceneError("--values", f"{name}: each value may be given once ({', '.join(twice)} given twice)")
+        check_given_once("--values", values, name)
     base = load_scene(scene_name)
     if h is not None:
         check_resolution(base, h)

