@@ -685,8 +685,9 @@ def _no_equilibrium(scene, n: int, depth: int, failures: list[str], from_rest: b
         error = SolverError(f"{where}: {tie}\n  ({cut}: {health.NOT_CONVERGED})")
     else:
         diverged = [f.split(": ", 1)[1] for f in failures if health.DIVERGED in f]  # the options chose it
-        how = diverged[0] if diverged else f"{health.NOT_CONVERGED}, or a linear solve was {SOLVE_FAILED}"
-        error = SolverError(f"{where} {cut}: no step converged ({how})\n  {_unsettled(scene.law, from_rest)}")
+        error = SolverError(f"{where} {cut}: no step converged: {diverged[0]}" if diverged else
+                            f"{where} {cut}: no step converged ({health.NOT_CONVERGED}, or a linear solve was "
+                            f"{SOLVE_FAILED})\n  {_unsettled(scene.law, from_rest)}")
     error.details = "\n".join(failures)
     return error
 

@@ -206,6 +206,9 @@ def test_a_diverged_iterative_solve_is_named_by_its_reason():
     assert "relative residual" not in str(error)
     refusal = str(_refusal(load_scene("A"), _system([0.05]), error))
     assert refusal.startswith(str(error)) and "increment 20 of 20" in refusal
+    from contactcore.newton import _no_equilibrium
+    coulomb = str(_no_equilibrium(load_scene("A"), 1, 6, ["step 0 → 0.5: fine", f"step 0 → 0.015625: {error}"]))
+    assert coulomb == f"scene A: increment 1 of 20 failed after 6 cut-backs (step 1/64): no step converged: {error}"
 
 
 def _no_equilibrium_failures():
