@@ -244,3 +244,19 @@ def test_an_increment_that_fails_is_refused_alike_however_its_last_cut_back_fail
         assert "no open/closed map of the unilateral law" in first
     else:
         assert "no step converged" in first and "either the load has no equilibrium" in second
+
+
+def test_a_nearly_incompressible_increment_is_refused_alike_however_it_failed(tmp_path):
+    """Scene A in plane strain at ν = 0.4999999999 on Coulomb springs: its
+    second line printed the last cut-back's residual (fe P1 at h = 0.1:
+    7.72e-03 / 9.04e-03 / 5.60e-03 under Haswell / Nehalem / SandyBridge).
+    Now it names the cut-backs and what to do, alike for every failure."""
+    from contactcore import load_scene, make_law
+    from contactcore.newton import _no_equilibrium
+    scene = load_scene(_linear_refusal_scene("incompressible", tmp_path))
+    scene = scene.with_changes(law=make_law({"type": "coulomb", "mu": 0.3, "kN": 1e10, "kT": 1e8}))
+    errors = [str(_no_equilibrium(scene, 1, 6, f)) for f in _no_equilibrium_failures()]
+    assert errors[0] == errors[1] == errors[2], errors
+    first, second = errors[0].splitlines()
+    assert first.startswith("scene A: increment 1 of 20: materials.minus.nu and materials.plus.nu = 0.4999999999")
+    assert second == "  (failed after 6 cut-backs (step 1/64)); lower ν or use plane stress"
