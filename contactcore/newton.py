@@ -659,6 +659,12 @@ def _refusal(scene, system: ContactSystem, exc: SolverError) -> SolverError:
     return error
 
 
+#: What :meth:`_Newton._iterate`'s failure says of iterations on maps that
+#: left a body free (:func:`contactcore.health.slips_free`); the refusal
+#: names it without their count.
+_FREE_MAPS = "on maps whose slipping points alone held a body that nothing else holds"
+
+
 def _no_equilibrium(scene, n: int, depth: int, failures: list[str], from_rest: bool = False) -> SolverError:
     """Two lines, the failed check first: the friction cone on Γ if the
     loads leave it (:func:`~contactcore.health.friction_demand`), a nearly
@@ -685,9 +691,12 @@ def _no_equilibrium(scene, n: int, depth: int, failures: list[str], from_rest: b
         error = SolverError(f"{where}: {tie}\n  ({cut}: {health.NOT_CONVERGED})")
     else:
         diverged = [f.split(": ", 1)[1] for f in failures if health.DIVERGED in f]  # the options chose it
+        free = any(_FREE_MAPS in f for f in failures)  # of every cut-back, not how many: round-off's count
         error = SolverError(f"{where} {cut}: no step converged: {diverged[0]}" if diverged else
                             f"{where} {cut}: no step converged ({health.NOT_CONVERGED}, or a linear solve was "
-                            f"{SOLVE_FAILED})\n  {_unsettled(scene.law, from_rest)}")
+                            f"{SOLVE_FAILED})" + (f"; Newton's iterations stood {_FREE_MAPS}, free to turn or slide "
+                                                  "until a point sticks" if free else "")
+                            + f"\n  {_unsettled(scene.law, from_rest)}")
     error.details = "\n".join(failures)
     return error
 
