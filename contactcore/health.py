@@ -101,11 +101,6 @@ def material_cause(scene) -> str:
             "and the solve keeps too few digits")
 
 
-def headline(message: str) -> str:
-    """A solver message up to its explanation (the part before " — ")."""
-    return message.split(" — ")[0]
-
-
 def check_springs(scene, weights) -> None:
     """Refuse springs whose entries ``k w`` (w the largest quadrature weight
     on Γ) exceed ``SPRING_ENTRY_MAX·E``: the bulk stiffness (~E) added to
@@ -166,6 +161,12 @@ def _springs(scene):
 #: How Newton's error begins when its iterations run out (contactcore.newton);
 #: :func:`tie_cause` reads a failure by it.
 NOT_CONVERGED = "Newton did not converge"
+
+#: How a linear solve that PETSc reports as diverged is named
+#: (contactcore.linear_solver; an iterative ``ksp_type`` out of iterations):
+#: the options, not round-off, chose it, so a refusal keeps it
+#: (contactcore.newton._refusal, _no_equilibrium).
+DIVERGED = "the solver diverged"
 
 
 def spring_unit(scene) -> str:
@@ -592,8 +593,10 @@ def _pulled_off(scene, body: int, Q: np.ndarray, k: float) -> str:
 
 def tie_cause(scene, k: float, failure: str, from_rest: bool = False) -> str:
     """Why a unilateral law's increment ``k`` failed, or "": another law,
-    or a ``failure`` (the last cut-back's message) that is not Newton
-    running out of iterations (a solve that failed is not the tie's).
+    or a ``failure`` (every cut-back's message, one a line) where Newton
+    never ran out of iterations (a solve that failed is not the tie's).
+    Every cut-back's, not the last one's alone: how that one failed (out
+    of iterations, null pivots, a residual) round-off may choose.
     The law ties a closed point (``t_T = k_T g_T``; exactly, ``g_T = 0``
     with any ``t_T``) and frees it the moment it opens (``t_T = 0``):
     ``t_T`` is not monotone in the jump.  Where Γ opens under shear, the

@@ -308,10 +308,17 @@ def _outcome(ksp) -> tuple[int, int | None]:
     return least, (None if largest < 0 else largest)
 
 
-def _diverged(ksp, reason: int, what: str, residual: float, failure: int | None = None) -> SolverError:
+#: The KSP reasons a solve may diverge by, by their value (PETSc's names).
+KSP_DIVERGED = {v: k for k, v in vars(PETSc.KSP.ConvergedReason).items() if k.startswith("DIVERGED")}
+
+
+def _diverged(ksp, reason: int, what: str, failure: int | None = None) -> SolverError:
     """The refusal of a solve PETSc reports as diverged (``reason`` < 0),
     naming the singular matrix where the factorisation met a zero pivot
-    (``failure``, :func:`_outcome`)."""
+    (``failure``, :func:`_outcome`); else the reason by its name and what
+    to do, without the solve's relative residual, whose figure follows
+    round-off (the BLAS kernel, MUMPS's ordering) and tells nothing the
+    reason does not."""
     if reason == PETSc.KSP.ConvergedReason.DIVERGED_PCSETUP_FAILED:
         if failure in (1, 2):
             return SolverError(f"{what} is singular to working precision: the factorisation met "
@@ -319,7 +326,11 @@ def _diverged(ksp, reason: int, what: str, residual: float, failure: int | None 
         return SolverError(f"{what}: the factorisation failed (PETSc reason {reason}: "
                            + PC_FAILURES.get(failure, "the preconditioner's set-up failed")
                            + f") — the matrix may be singular: {SINGULAR}")
-    return SolverError(f"{what}: the solver diverged (PETSc reason {reason}, relative residual {residual:.3e})")
+    name = KSP_DIVERGED.get(reason, "")
+    more = ("raise ksp_max_it, or use the default direct solver" if name == "DIVERGED_MAX_IT" else
+            "use the default direct solver")
+    return SolverError(f"{what}: {health.DIVERGED} (PETSc reason {reason}{': ' + name if name else ''}); {more} "
+                       "(no ksp_type or pc_type option: MUMPS's LU)")
 
 
 def _condition(ksp, opts: dict) -> float | None:
@@ -484,7 +495,7 @@ class Factorisation:
         reason, failure = _outcome(self.ksp)
         _measure_residual(self.A, b, x, report, force_scale)
         if reason < 0:
-            raise _diverged(self.ksp, reason, self.what, report.residual, failure)
+            raise _diverged(self.ksp, reason, self.what, failure)
         health.check_residual(report.residual, self.what, report.backward_error)
         return report
 

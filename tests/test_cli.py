@@ -3,7 +3,10 @@ the result folder, one ``--workers`` default, help that explains its
 choices, and refusals in one line with exit status 2."""
 import argparse
 import json
+import os
 import re
+import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -426,3 +429,61 @@ def test_the_unread_petsc_options_warning_offers_only_a_flag_the_command_has(tmp
               "--out", str(tmp_path / "o")])
     assert "unrecognized arguments: --petsc-option" in capsys.readouterr().err
     assert "--petsc-option KEY=VALUE" not in err, err
+
+
+def _petsc_places(tmp_path):
+    """A home and a working directory whose PETSc files set options, and an
+    environment naming files of its own: every way PETSc 3.18 reads
+    options at its start (verification.petsc_env)."""
+    home, work = tmp_path / "home", tmp_path / "work"
+    home.mkdir()
+    work.mkdir()
+    (home / ".petscrc").write_text("-mat_mumps_icntl_7 5\n# -ksp_type cg (a comment)\n-log_view\n")
+    (tmp_path / "nested.txt").write_text("-Pc_Type ilu\n-options_file_yaml " + str(tmp_path / "more.yaml") + "\n")
+    (tmp_path / "more.yaml").write_text("ksp:\n  rtol: 1e-3\nmat_mumps_icntl_14: 50\n")
+    (work / ".petscrc").write_text(f"-options_file {tmp_path / 'nested.txt'}\nalias -x -y\n")
+    (work / "petscrc").write_text("-prefix_push mat_mumps_\n-cntl_1 0.1\n-prefix_pop\n-info\n")
+    (tmp_path / "env.txt").write_text("-ksp_atol 1e-20\n")
+    environ = {"HOME": str(home), "PETSC_OPTIONS": f"-skip_petscrc -options_file {tmp_path / 'env.txt'} -KSP_TYPE cg",
+               "PETSC_OPTIONS_YAML": "pc:\n  factor_mat_solver_type: superlu\n"}
+    return environ, work
+
+
+def test_the_petsc_option_check_reads_what_petsc_reads(tmp_path):
+    """PETSc 3.18 reads $HOME/.petscrc, .petscrc and petscrc in the working
+    directory, PETSC_OPTIONS and PETSC_OPTIONS_YAML, and the files they
+    name (-options_file, -options_file_yaml); -skip_petscrc in
+    PETSC_OPTIONS skips nothing.  The check's names are PETSc's own, as
+    petsc4py.init() in a child with that home, directory and environment
+    lists them (case aside: PETSc's names are case-insensitive)."""
+    from verification import petsc_env
+    environ, work = _petsc_places(tmp_path)
+    probe = ("import petsc4py; petsc4py.init(); from petsc4py import PETSc; "
+             "print('\\n'.join('OPTION ' + name for name in PETSc.Options().getAll()))")
+    child = subprocess.run([sys.executable, "-c", probe], cwd=work, capture_output=True, text=True, timeout=120,
+                           env={**os.environ, **environ})
+    assert child.returncode == 0, child.stderr
+    theirs = {line.split()[1].lower() for line in child.stdout.splitlines() if line.startswith("OPTION ")}
+    ours = {name.lower() for name, _ in petsc_env.given(environ, work)}
+    assert ours == theirs and "mat_mumps_cntl_1" in ours and "ksp_rtol" in ours, (ours, theirs)
+    unread = petsc_env.unread(environ, work)
+    for name in ("mat_mumps_icntl_7", "Pc_Type", "ksp_rtol", "mat_mumps_icntl_14", "mat_mumps_cntl_1", "ksp_atol",
+                 "KSP_TYPE", "pc_factor_mat_solver_type"):
+        assert name in unread, unread
+    assert "log_view" not in unread and "info" not in unread and "$HOME/.petscrc sets mat_mumps_icntl_7" in unread
+
+
+def test_a_solver_option_in_a_petscrc_is_named_as_unread(tmp_path, capsys, monkeypatch):
+    """``-mat_mumps_icntl_7 5`` in ~/.petscrc, or in a file PETSC_OPTIONS
+    names by -options_file, never reaches the solvers either: the command
+    names it the same way as one in PETSC_OPTIONS itself."""
+    (tmp_path / ".petscrc").write_text("-mat_mumps_icntl_7 5\n")
+    (tmp_path / "opts").write_text("-KSP_TYPE cg\n")
+    monkeypatch.setenv("HOME", str(tmp_path))
+    monkeypatch.setenv("PETSC_OPTIONS", f"-options_file {tmp_path / 'opts'}")
+    monkeypatch.chdir(tmp_path)
+    assert main(["run", str(tmp_path / "missing.toml"), "--out", str(tmp_path / "o")]) == 2
+    err = capsys.readouterr().err
+    assert "$HOME/.petscrc sets mat_mumps_icntl_7" in err and f"{tmp_path / 'opts'} (-options_file in PETSC_OPTIONS) " \
+        "sets KSP_TYPE, which the toolkit's solvers do not read" in err, err
+    assert "--petsc-option KEY=VALUE" in err

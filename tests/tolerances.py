@@ -430,6 +430,14 @@ MESSAGE_TIE_H = 0.1
 #: ~8 s a run under a load of 8.
 NO_EQUILIBRIUM_H = 0.5
 
+#: The spacing (m) of scene A where a linear law's refusals are read under
+#: two BLAS kernels (tests/test_newton_messages.py): springs of 1 Pa/m
+#: (efgm P1 printed "relative residual 3.76e-04 / 3.58e-04 / 5.48e-04" under
+#: Haswell / Nehalem / SandyBridge before the fix) and plane strain at
+#: ν = 0.4999999999 (efgm P1: 7.25e-04 / 8.76e-04 / 6.09e-04; fe P1 at 0.1:
+#: 5.80e-03 / 1.04e-02 / 8.24e-03, 7.55e-03 with MUMPS's ordering 0).
+LINEAR_REFUSAL_H = 0.2
+
 #: The tractions of the released block, of their largest (the pressed
 #: step's), and its jumps, of the scene's displacement (the pressed jumps of
 #: an exact law are round-off themselves): the released step's are round-off

@@ -47,7 +47,6 @@ if __name__ == "__main__":
 import argparse
 import logging
 import math
-import re
 import threading
 from contextlib import ExitStack, contextmanager
 from dataclasses import dataclass
@@ -58,7 +57,7 @@ from contactcore import ContactError, load_scene
 
 from xdolfinx.options import XFEM_CELLS
 
-from . import files, janitor, methods
+from . import files, janitor, methods, petsc_env
 from .pool import DEFAULT_WORKERS, LOG_FORMAT
 
 log = logging.getLogger("verification")
@@ -609,24 +608,6 @@ def _python_handles_signals() -> None:
         os.environ["PETSC_OPTIONS"] = f"{given} {NO_PETSC_SIGNALS}".strip()
 
 
-#: The prefixes of the PETSc options a solver reads (KSP, PC and the
-#: factorisation's package): the toolkit's solvers read theirs under a
-#: prefix of their own (contactcore.linear_solver), so such an option in
-#: ``PETSC_OPTIONS`` never reaches them; global ones (``-log_view``,
-#: ``-info``) and a matrix's own (``-mat_view``: the assembled matrices
-#: carry no prefix) still apply.
-SOLVER_OPTION_PREFIXES = ("ksp_", "pc_", "mat_mumps_", "mat_superlu", "mat_umfpack_", "mat_cholmod_")
-
-
-def _unread_petsc_options(given: str) -> list[str]:
-    """The solver options of the environment's ``PETSC_OPTIONS`` (``given``),
-    which the toolkit's solvers never read (:data:`SOLVER_OPTION_PREFIXES`):
-    ``-mat_mumps_icntl_7 5`` there left the ordering at the toolkit's own
-    without a word."""
-    keys = (word.lstrip("-") for word in given.split() if re.match(r"-[A-Za-z]", word))
-    return [key for key in keys if key.lower().startswith(SOLVER_OPTION_PREFIXES)]  # PETSc ignores case
-
-
 def main(argv=None) -> int:
     """``python -m verification COMMAND ...`` (``argv``, default
     ``sys.argv[1:]``): the exit status, 0 when the command succeeded, 2
@@ -635,7 +616,7 @@ def main(argv=None) -> int:
     (the result folder under way discarded); argparse's own refusals exit 2
     by ``SystemExit``.  Any other exception is a bug, and propagates."""
     argv = sys.argv[1:] if argv is None else argv
-    unread = _unread_petsc_options(os.environ.get("PETSC_OPTIONS", ""))
+    unread = petsc_env.unread()  # before _python_handles_signals adds its own to PETSC_OPTIONS
     _python_handles_signals()
     commands = _commands()
     args = _parser(commands).parse_args(argv)
@@ -646,8 +627,8 @@ def main(argv=None) -> int:
     if unread:
         instead = ("pass --petsc-option KEY=VALUE instead (fe, xfem)" if hasattr(args, "petsc_option") else
                    f"{args.command} takes no solver options (only run does, for fe and xfem)")
-        log.warning("PETSC_OPTIONS sets %s, which the toolkit's solvers do not read (each reads its options "
-                    "under a prefix of its own); %s", ", ".join(unread), instead)
+        log.warning("%s, which the toolkit's solvers do not read (each reads its options under a prefix of its "
+                    "own); %s", unread, instead)
     try:
         _take_over_signals()
         with _signals_end_the_command(rank, distributed()):
