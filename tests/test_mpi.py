@@ -205,7 +205,7 @@ _slow = pytest.mark.slow
                  marks=_slow),
     pytest.param(["run", "clash", "--method", "fe", "--h", "0.1"], "supports[1]: prescribes", marks=_slow),
     (["run", "clash", "--method", "xfem", "--h", "0.1"], "supports[1]: prescribes"),
-    pytest.param(["run", "strip", "--method", "xfem", "--h", "0.05"], "no cell resolves body plus", marks=_slow),
+    pytest.param(["run", "strip", "--method", "xfem", "--h", "0.05"], "no cell resolves body +", marks=_slow),
     pytest.param(["study", "A", "--param", "kN", "--values", "1e9"], "spreads its cases over a pool", marks=_slow),
     (["scaling", "A", "--h", "0.2"], "launches mpirun itself"),
     pytest.param(["closed", "--case", "patch"], "solves its cases one after another in one process", marks=_slow),

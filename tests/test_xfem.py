@@ -150,7 +150,7 @@ def test_a_body_no_cell_resolves_is_refused_then_resolved_when_refined(degree):
     the strip is 0.14 of a cell's diameter: solved, and its displacement
     agrees with fe's."""
     scene = load_scene("A").with_changes(interface=LineInterface((0.0, 1.0 - STRIP), (0.0, 1.0)), profiles=())
-    with pytest.raises(DiscretisationError, match="no cell resolves body plus"):
+    with pytest.raises(DiscretisationError, match=r"no cell resolves body \+: "):
         xfem.solve(scene, 0.05, degree=degree)
     points = np.column_stack([np.linspace(0.1, 0.9, 9), np.full(9, 1.0 - STRIP / 2)])
     bodies = np.ones(9, int)
