@@ -147,6 +147,26 @@ def test_the_observed_order_is_clipped_and_round_off_shows_none():
     assert est.observed_order(base, base * (1 + 1e-14), base) is None
 
 
+def test_a_quantity_exactly_zero_shows_no_order_against_the_scenes_size():
+    """grader8's fault 4: σxy on a column under its weight is exactly 0;
+    its runs give round-off (1e-8 Pa against stresses of 1e6), whose
+    differences' ratio was read as an order, clipped to 0.5, and warned
+    "not to be trusted", against the docs' round-off rule.  A difference at
+    most NEGLIGIBLE_SHARE of the scene's own size of the kind (Sizes) shows
+    none: no order, the two-run order, no warning."""
+    scene = load_scene("C")
+    stress = Sizes.of(scene).stress
+    noise = np.array([3e-9, -1e-8, 2e-8, 5e-9, -7e-9]) * stress * 1e-6   # 1e-8 Pa-like on 1e6 Pa
+    levels = [noise * k for k in (1.0, -0.3, 2.0)]
+    floor = est.roundoff_floor(Sizes.of(scene), "sxy")
+    assert floor == core_tol.NEGLIGIBLE_SHARE * stress
+    assert est.observed_order(*levels) is not None                       # the quantity's own scale sees an order
+    e = est.richardson(levels, theory=(1, 2), floor=floor)
+    assert e.measured is None and e.order == est.balanced_order(1, 2)
+    assert not est.order_warnings({"vert": {"sxy": e}})
+    assert est.roundoff_floor(Sizes.of(scene), "ux") == core_tol.NEGLIGIBLE_SHARE * Sizes.of(scene).displacement
+
+
 @pytest.mark.parametrize("case,key", [("pressurised_rod", ("fe", 1)), ("pressurised_rod", ("xfem", 2)),
                                       ("layered_slip", ("efgm", 1))], ids=lambda v: str(v))
 def test_the_estimates_are_within_a_factor_two_of_the_true_error(case, key, record_property):
