@@ -99,9 +99,13 @@ class QuantityEstimate:
     def rms(self) -> float:
         return rms(self.error)
 
-    def record(self) -> dict:
+    def record(self, kept: np.ndarray | None = None) -> dict:
+        """JSON-ready; with ``kept`` (a mask of the samples away from
+        singular points) also ``kept_rms``, the RMS over those."""
         out = {"max": self.max, "rms": self.rms, "order": self.order, "observed": self.observed,
                "orders": [float(t) for t in self.theory]}
+        if kept is not None:
+            out["kept_rms"] = rms(self.error[kept])
         if self.cell_scale is not None:
             out["cell_scale"] = self.cell_scale
         if self.measured is not None:
