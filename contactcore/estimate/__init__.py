@@ -36,7 +36,7 @@ from .caveats import (cell_scale_orders, cell_scale_warnings, feature_size, orde
                       pollution_warning, residue_warnings, residues, stencil_radius, unsettled, unsettled_warnings)
 from .energy import EnergyEstimate, EnergyRule, energy_estimate, energy_norm, energy_rule, recovered_stress
 from .extrapolation import (QuantityEstimate, balanced_order, cell_scale_part, observed_order, profile_estimates,
-                            richardson, rms, sample_groups)
+                            richardson, rms, roundoff_floor, sample_groups, three_run_order)
 from .orders import order_range, polluted, theoretical_order
 from .runs import Estimate, estimate, estimate_runs, levels_of
 from .singular import (clamped_free_exponent, corner_exponents, far_from_singular, interface_end_exponents, kolosov,
@@ -48,7 +48,7 @@ __all__ = [
     "Estimate", "estimate", "estimate_runs", "levels_of",
     # extrapolation
     "QuantityEstimate", "balanced_order", "cell_scale_part", "observed_order", "profile_estimates", "richardson",
-    "rms", "sample_groups",
+    "rms", "roundoff_floor", "sample_groups", "three_run_order",
     # caveats
     "cell_scale_orders", "cell_scale_warnings", "feature_size", "order_mismatch", "order_warnings",
     "pollution_warning", "residue_warnings", "residues", "stencil_radius", "unsettled", "unsettled_warnings",

@@ -25,6 +25,7 @@ from .caveats import (cell_scale_orders, cell_scale_warnings, feature_size, orde
                       pollution_warning, residue_warnings, residues, unsettled, unsettled_warnings)
 from .energy import EnergyEstimate, energy_estimate
 from .extrapolation import QuantityEstimate, profile_estimates
+from .singular import far_from_singular
 from .status import status_change, status_warning, switches
 
 
@@ -55,15 +56,22 @@ class Estimate:
     warnings: list[str] = field(default_factory=list)
     sampled: list[ProfileData] = field(default_factory=list)
     unsettled: set[str] = field(default_factory=set)
+    kept: dict[str, np.ndarray] = field(default_factory=dict)
 
     def error_columns(self, pid: str) -> dict[str, np.ndarray]:
         """``{q + ERROR_SUFFIX: per-sample error}`` of profile ``pid``."""
         return {f"{q}{ERROR_SUFFIX}": e.error for q, e in self.profiles.get(pid, {}).items()}
 
     def summary(self) -> dict:
-        """JSON-ready: ``{PROFILE: {QUANTITY: {max, rms, order, observed}}}``
-        plus ``energy``, ``h`` (the runs), ``status`` and ``warnings``."""
-        out = {pid: {q: e.record() for q, e in qs.items()} for pid, qs in self.profiles.items()}
+        """JSON-ready: ``{PROFILE: {QUANTITY: {max, rms, kept_rms, order,
+        observed, orders (, cell_scale, observed_order)}}}`` plus ``energy``,
+        ``h`` (the runs), ``status`` and ``warnings``; ``kept_rms`` over the
+        samples away from singular points (``kept``).  summary.json's
+        ``"estimate"`` is this dict with each quantity's ``scale`` and
+        ``kept_scale`` and the ``"worst"`` added
+        (:func:`verification.run.estimate_record`: the scales are the
+        agreement's, floored as it floors them)."""
+        out = {pid: {q: e.record(self.kept.get(pid)) for q, e in qs.items()} for pid, qs in self.profiles.items()}
         out.update({"energy": self.energy.record() if self.energy else None, "h": list(self.hs),
                     "status": self.status, "warnings": list(self.warnings)})
         return out
@@ -99,9 +107,12 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
         status = status_change(scene, results[-2].interface, results[-1].interface, hs[-2:])
         warnings += status_warning(status)
     zz = energy_estimate(scene, results[-1].fields, hs[-1], exclude) if energy else None
+    kept = {p.id: far_from_singular(scene, np.column_stack([p.columns["x"], p.columns["y"]]), exclude)
+            for p in levels[-1]}
     return Estimate(hs, profiles, zz, status, warnings, levels[-1],
                     {k for v in found.values() for k in v} | set(rough) | set(residue)
-                    | {f"{pid}:{q}" for pid, qs in profiles.items() for q, e in qs.items() if order_mismatch(e)})
+                    | {f"{pid}:{q}" for pid, qs in profiles.items() for q, e in qs.items() if order_mismatch(e)},
+                    kept)
 
 
 def estimate(scene: Scene, discretisation, h: float, levels: int = 2, *, exclude: float = 0.0, reuse=None,
