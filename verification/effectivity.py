@@ -33,6 +33,7 @@ from contactcore import InterfaceProfile, LineProfile, ProfileData, sample_profi
 from contactcore import estimate as est
 from contactcore import tolerances as tol
 from contactcore.budget import check_budget
+from contactcore.estimate.caveats import ENERGY_KEY
 from contactcore.discretisation import solve
 
 from . import methods
@@ -141,7 +142,7 @@ def energy_row(scene, result, estimate: est.Estimate, exact, exclude: float) -> 
     eta = estimate.energy.eta
     kind = "round-off" if true <= tol.NEGLIGIBLE_SHARE * norm else "error"
     return {"profile": "energy", "quantity": "‖σ‖_E", "estimate": eta, "true": true, "order": None, "kind": kind,
-            "effectivity": eta / true if kind == "error" else None}
+            "effectivity": eta / true if kind == "error" else None, "warned": ENERGY_KEY in estimate.unsettled}
 
 
 def effectivity(case_name: str, key: tuple) -> list[dict]:

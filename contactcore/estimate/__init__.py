@@ -13,7 +13,8 @@ sources:
 - :mod:`~contactcore.estimate.extrapolation`: Richardson's estimate of a
   profile quantity (:class:`QuantityEstimate`);
 - :mod:`~contactcore.estimate.caveats`: the warnings that say where not
-  to trust it (order, pollution, stencils, cell scale, residues);
+  to trust it (order, pollution, stencils, cell scale, residues, a
+  curved Γ's layer, a recovered stress's energy);
 - :mod:`~contactcore.estimate.status`: Γ's status in the runs (whether it
   switches; where two runs differ);
 - :mod:`~contactcore.estimate.energy`: the Zienkiewicz–Zhu estimate;
@@ -32,8 +33,9 @@ in their home.
 
 numpy and scipy only; no method is imported.
 """
-from .caveats import (cell_scale_orders, cell_scale_warnings, feature_size, order_mismatch, order_warnings,
-                      pollution_warning, residue_warnings, residues, stencil_radius, unsettled, unsettled_warnings)
+from .caveats import (cell_scale_orders, cell_scale_warnings, curved_layer, curved_layer_warning, energy_caveat,
+                      feature_size, order_mismatch, order_warnings, pollution_warning, residue_warnings, residues,
+                      stencil_radius, unsettled, unsettled_warnings)
 from .energy import EnergyEstimate, EnergyRule, energy_estimate, energy_norm, energy_rule, recovered_stress
 from .extrapolation import (QuantityEstimate, balanced_order, cell_scale_part, observed_order, profile_estimates,
                             richardson, rms, roundoff_floor, sample_groups, three_run_order)
@@ -50,7 +52,7 @@ __all__ = [
     "QuantityEstimate", "balanced_order", "cell_scale_part", "observed_order", "profile_estimates", "richardson",
     "rms", "roundoff_floor", "sample_groups", "three_run_order",
     # caveats
-    "cell_scale_orders", "cell_scale_warnings", "feature_size", "order_mismatch", "order_warnings",
+    "cell_scale_orders", "cell_scale_warnings", "curved_layer", "curved_layer_warning", "energy_caveat", "feature_size", "order_mismatch", "order_warnings",
     "pollution_warning", "residue_warnings", "residues", "stencil_radius", "unsettled", "unsettled_warnings",
     # status
     "status_along", "status_change", "status_warning", "switches",

@@ -31,6 +31,17 @@ less than others of their kind in the same runs, where the error's
 leading term cancels and a smaller one of another order may set the rate
 (:func:`residues`).
 
+xfem P1's recovered stress (:data:`~contactcore.estimate.orders.RECOVERED_STRESS`)
+converges at order 1 in a layer one cell thick along a curved Γ, where
+the recovery patch is one-sided and cut cells' samples carry an O(h)
+bias, against 2 to 3 elsewhere: from h = 0.025 that layer sets a ray's
+error and the two-run estimate, taken at the order elsewhere, reads 0.42
+to 0.47 of it (docs/methods/xfem.md, "Degree-1 stress").  The estimate
+names such profiles (:func:`curved_layer`).  The same recovered stress
+makes xfem P1's Zienkiewicz–Zhu estimate too small: a second recovery
+moves it less than its error (0.32 to 0.61 of the true error on the
+closed forms and held-out discs measured; :func:`energy_caveat`).
+
 Where Γ's status differs between the runs: :mod:`~contactcore.estimate.status`.
 
 numpy only; no method is imported.
@@ -310,3 +321,52 @@ def residue_warnings(found: dict[str, tuple[float, str]], observed: bool = False
             + ("" if observed else " (--estimate 3 observes the order)")]
 
 
+
+
+def curved_layer(scene: Scene, levels: list[list[ProfileData]], method: str, degree: int, h: float,
+                 exclude: float) -> list[str]:
+    """The ``PID:Q`` of xfem P1's recovered stresses
+    (:data:`~contactcore.estimate.orders.RECOVERED_STRESS`) on profiles with
+    a sample kept (at least ``exclude`` from the singular points) within one
+    cell of the coarser run, ``h``, of a curved Γ: there that stress
+    converges at order 1 and the estimate, taken at the order elsewhere,
+    is too small (module doc).  Empty for a straight Γ or another method.
+    A sample at h within :data:`~contactcore.tolerances.GEOMETRY`
+    (relative) counts, so round-off does not decide it."""
+    if (method, degree) not in RECOVERED_STRESS or scene.interface.straight_in(scene.domain):
+        return []
+    names = []
+    for prof in levels[-1]:
+        xy = np.column_stack([prof.columns["x"], prof.columns["y"]])
+        kept = far_from_singular(scene, xy, exclude)
+        near = np.abs(scene.interface.signed_distance(xy[kept])) <= h * (1 + tol.GEOMETRY)
+        if np.any(near):
+            names += [f"{prof.id}:{q}" for q in prof.names[3:] if q in STRESSES]
+    return names
+
+
+def curved_layer_warning(names: list[str], h: float, length: str = "m") -> list[str]:
+    """One line naming :func:`curved_layer`'s quantities; lengths in the
+    scene's unit named ``length``."""
+    if not names:
+        return []
+    return [f"{', '.join(names)}: xfem P1's recovered stress converges at order 1 within a cell ({h:g} {length}) "
+            f"of the curved Γ, against 2-3 elsewhere, so the estimate may be 2 times too small there: degree 2, "
+            f"or samples farther than a cell from Γ, avoid this"]
+
+
+#: The key under which :func:`energy_caveat` marks the energy estimate in
+#: :attr:`~contactcore.estimate.runs.Estimate.unsettled` (a profile id
+#: ``energy``, quantity ``‖σ‖_E``, as the effectivity table names it).
+ENERGY_KEY = "energy:‖σ‖_E"
+
+
+def energy_caveat(method: str, degree: int) -> list[str]:
+    """One line where the Zienkiewicz–Zhu estimate is too small by
+    construction: a method whose stress is already recovered
+    (:data:`~contactcore.estimate.orders.RECOVERED_STRESS`), which a second
+    recovery moves less than its error (module doc)."""
+    if (method, degree) not in RECOVERED_STRESS:
+        return []
+    return [f"energy (ZZ): {method} P{degree}'s stress is already recovered, so a second recovery moves it less "
+            f"than its error: read the energy estimate as a lower bound (measured 0.32-0.61 of the true error)"]

@@ -22,7 +22,8 @@ import numpy as np
 from ..profiles import ProfileData, sample_profiles
 from ..scene import Scene
 from .caveats import (cell_scale_orders, cell_scale_warnings, feature_size, order_mismatch, order_warnings,
-                      pollution_warning, residue_warnings, residues, unsettled, unsettled_warnings)
+                      pollution_warning, residue_warnings, residues, unsettled, unsettled_warnings,
+                      curved_layer, curved_layer_warning, energy_caveat, ENERGY_KEY)
 from .energy import EnergyEstimate, energy_estimate
 from .extrapolation import QuantityEstimate, profile_estimates
 from .singular import far_from_singular
@@ -45,7 +46,10 @@ class Estimate:
     a driver writes, not sampled again), and the ``PID:Q`` whose estimate a
     warning calls not asymptotic
     (:func:`~contactcore.estimate.caveats.unsettled`,
-    :func:`~contactcore.estimate.caveats.cell_scale_orders`, and with three
+    :func:`~contactcore.estimate.caveats.cell_scale_orders`,
+    :func:`~contactcore.estimate.caveats.curved_layer`, the energy's
+    :data:`~contactcore.estimate.caveats.ENERGY_KEY` where
+    :func:`~contactcore.estimate.caveats.energy_caveat` applies, and with three
     runs :func:`~contactcore.estimate.caveats.order_mismatch`) or not to be
     trusted (:func:`~contactcore.estimate.caveats.residues`)."""
 
@@ -97,10 +101,12 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     profiles = profile_estimates(levels, results[-1].degree, results[-1].method, coarse, scene, exclude, switching,
                                  h=hs[-2])
     found = unsettled(scene, levels, results[-2].discretisation, results[-1].method, results[-1].degree, exclude)
+    layer = curved_layer(scene, levels, results[-1].method, results[-1].degree, hs[-2], exclude)
     rough = cell_scale_orders(scene, levels, profiles, exclude, hs[-2])
     residue = residues(scene, levels, profiles, exclude)
     warnings = (order_warnings(profiles) + pollution_warning(scene, profiles)
                 + unsettled_warnings(found, hs[-2], feature_size(scene), scene.user.units.length)
+                + curved_layer_warning(layer, hs[-2], scene.user.units.length)
                 + cell_scale_warnings(rough, hs[-2:]) + residue_warnings(residue, len(levels) > 2))
     status = None
     if scene.law.has_history or not scene.law.is_linear:
@@ -109,8 +115,10 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     zz = energy_estimate(scene, results[-1].fields, hs[-1], exclude) if energy else None
     kept = {p.id: far_from_singular(scene, np.column_stack([p.columns["x"], p.columns["y"]]), exclude)
             for p in levels[-1]}
-    return Estimate(hs, profiles, zz, status, warnings, levels[-1],
-                    {k for v in found.values() for k in v} | set(rough) | set(residue)
+    caveat = energy_caveat(results[-1].method, results[-1].degree) if energy else []
+    return Estimate(hs, profiles, zz, status, warnings + caveat, levels[-1],
+                    {k for v in found.values() for k in v} | set(layer) | set(rough) | set(residue)
+                    | ({ENERGY_KEY} if caveat else set())
                     | {f"{pid}:{q}" for pid, qs in profiles.items() for q, e in qs.items() if order_mismatch(e)},
                     kept)
 
