@@ -501,9 +501,11 @@ def closed_tension_warnings(scene, path) -> list[str]:
         return []
     return [f"Γ's points are closed in tension (t_N > 0) at {count} (point, increment) pair(s), up to {worst:.2g} "
             f"of the largest pressure along the path (increment {where:g}), where the law closes a point only "
-            f"under pressure: Newton kept their status within its band (DECISION_BAND = {tol.DECISION_BAND:g} of "
-            "Γ's largest gap, which an open gap sets), so these points' tractions are not the law's; refine h "
-            "or compare with the exact law (docs/newton.md, \"Decisions that round-off cannot move\")"]
+            f"under pressure: Newton kept their status within its round-off band (DECISION_BAND = "
+            f"{tol.DECISION_BAND:g} of Γ's largest gap for a penalty law, which an open gap sets; of the largest "
+            "pressure, in traction, for an exact one), so these points' tractions are not the law's; refine h, "
+            "or for springs compare with enforcement = \"exact\" (docs/contact-enforcement.md, \"The closed/open "
+            "band is in traction\")"]
 
 
 def _locking_warnings(scene) -> list[str]:
