@@ -288,6 +288,7 @@ def solve(scene, discretisation: Discretisation, h: float | None = None, *, pape
                         + built.warnings)
     path = path.gathered(built.system.collective, scene.interface)
     report.warnings += health.friction_excess_warnings(scene, path)
+    report.warnings += health.closed_tension_warnings(scene, path)
     fields = built.fields(x)
     strain_unit = Scales.of(scene.user).strain if scene.source is not None else 1.0  # ε = (U/L) σ'/E'
     report.warnings += scene.small_strain_warnings(fields, built.h, strain_unit)

@@ -282,7 +282,16 @@ class NitscheInterface:
         decided, and its state updated, as the penalty law's
         (:class:`~contactcore.laws.Decision`; module doc)."""
         y = self._scaled.jumps(u)
-        decision = None if previous is None else Decision.reduced(law.at(self.gamma), y, state, previous, ranks)
+        decision = None
+        if previous is not None:
+            decision = Decision.reduced(law.at(self.gamma), y, state, previous, ranks)
+            # the closed/open band in traction: γ times the margin within
+            # DECISION_BAND of Γ's largest pressure γ max(−y_N, 0), so that no
+            # point is held closed in tension (or open in penetration) by
+            # more than that share of p (laws.Decision.in_traction)
+            y2 = np.asarray(y, float).reshape(-1, 2)
+            pressure = ranks.max(float(np.max(-self.gamma * y2[:, 0], initial=0.0)))
+            decision = decision.in_traction(self.gamma, pressure)
         return law.evaluate(y, state, self.gamma, decision)
 
     def internal(self, u: np.ndarray, traction: np.ndarray) -> np.ndarray:

