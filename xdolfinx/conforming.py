@@ -16,10 +16,13 @@ so field ``b`` lives on body ``b`` and its trace on Γ.  The weak form is
 law's tangent ``∂(t_N, t_T)/∂(g_N, g_T)`` (the paper's Eq. 6 for ``linear``;
 docs/scenes.md for signs).  Both fields are continuous across every facet, so
 their traces on Γ need no side: the interior-facet orientation trap of
-dolfinx 0.5.2 does not arise.  ``n`` is the exact normal of the level set at
-the quadrature point, not the normal of the mesh's chord: on scene B's
-curved Γ a chord normal creates a false normal traction of order
-``(k_N/k_T)(h/2R)|t_T|`` (docs/scenes.md).  Boundary loads on an outer facet are
+dolfinx 0.5.2 does not arise.  Under a penalty law ``n`` is the exact
+normal of the level set at the quadrature point, not the normal of the
+mesh's chord: on scene B's curved Γ a chord normal creates a false normal
+traction of order ``(k_N/k_T)(h/2R)|t_T|`` (docs/scenes.md).  Under a law
+enforced exactly (Nitsche) ``n`` is the mesh's own normal, the only one
+consistent with the bulk's integration by parts (:func:`_frame_normals`;
+the patch test on a circular Γ, docs/methods/fe.md).  Boundary loads on an outer facet are
 weighted by the DG0 indicator of the body that owns the facet's cell.
 
 Increments, Newton and the law are :mod:`contactcore.newton`'s, shared with
@@ -116,9 +119,10 @@ def linear_forms(scene: Scene, fm: FittedMesh, V) -> list:
 def interface_operator(scene: Scene, fm: FittedMesh, V, degree: int, exchange: "GhostExchange",
                        exact: bool = False) -> InterfaceOperator:
     """Γ's quadrature on the mesh's Γ facets and ``G``: the jump
-    ``[[u]] = u₊ − u₋`` in the frame (n, t) of the level set's exact normal
-    at each point (not the chord's: docs/scenes.md, scene B); with ``exact``,
-    also Nitsche's ``S`` and ``stabilisation`` (:func:`_nitsche_rows`).
+    ``[[u]] = u₊ − u₋`` in the frame (n, t) of :func:`_frame_normals` at
+    each point: the level set's exact normal under a penalty law (not the
+    chord's: docs/scenes.md, scene B), the mesh's own under ``exact``,
+    with Nitsche's ``S`` and ``stabilisation`` (:func:`_nitsche_rows`).
 
     Both fields are continuous across Γ's facets, so their traces are taken
     from one cell of each facet, whichever side: the interior-facet
@@ -144,7 +148,7 @@ def interface_operator(scene: Scene, fm: FittedMesh, V, degree: int, exchange: "
         edge = ref.edge(c, f)
         dx_dxi = (tab[1, :, :, 0] * edge[0] + tab[2, :, :, 0] * edge[1]) @ coords
         N = ref.element.tabulate(0, X)[0, :, :, 0]
-        normals = scene.interface.normals(x)
+        normals = _frame_normals(scene, x, dx_dxi, exact)
         frame = np.stack([normals, tangent_of(normals)], axis=1)  # rows n, t
         rows = 2 * (i * len(xi) + np.arange(len(xi)))[:, None, None] + np.arange(2)[None, :, None]
         for side, sign in ((0, -1.0), (1, 1.0)):
@@ -159,6 +163,28 @@ def interface_operator(scene: Scene, fm: FittedMesh, V, degree: int, exchange: "
     return InterfaceOperator(trip.to_csr(), weights, points, exchange if exchange.ranks.parallel else None, S=S,
                              stabilisation=_concatenate(stabilisation, 0) if exact else None,
                              pieces=piece_centres(points, weights, [len(xi)] * len(facets)))
+
+
+def _frame_normals(scene: Scene, x: np.ndarray, dx_dxi: np.ndarray, exact: bool) -> np.ndarray:
+    """The normal of Γ's frame at the points ``x`` of a facet whose
+    tangent (unnormalised) there is ``dx_dxi``.
+
+    A law enforced exactly (Nitsche) reads the traction ``σ(u) n``; the
+    bulk's ``∫ σ(u) : ε(v)`` integrates by parts onto the mesh's own
+    facets, so only the mesh's normal (the chord's on straight P1 cells,
+    the curved map's on P2 cells) keeps the two consistent: any other
+    normal breaks the patch test (a constant stress no longer solves the
+    discrete problem; the exact circle's normal on P1 chords gave t_N low
+    by about θ²/24, θ the facet's angle).  A penalty law has no
+    consistency term: it takes the level set's exact normal, which leaves
+    a rigid rotation of a disc free of normal springs (docs/scenes.md,
+    scene B).  The mesh's normal is turned to point from − into +."""
+    exact_normals = scene.interface.normals(x)
+    if not exact:
+        return exact_normals
+    t = dx_dxi / np.linalg.norm(dx_dxi, axis=1)[:, None]
+    n = np.column_stack([t[:, 1], -t[:, 0]])
+    return n * np.sign(np.sum(n * exact_normals, axis=1))[:, None]
 
 
 class _Reference:
