@@ -2,13 +2,18 @@
 
 Two bodies of one material meet on a circle and carry hydrostatic
 σ = −p·I (tests/scenes/circle_hydrostatic.toml).  The exact answer is
-linear, u = −(1 − ν)p/E·(x, y), with t_N = −p and t_T = 0 on Γ whatever the
-normal.  A P1 mesh's domain is a polygon, but a constant stress is still
-the exact answer on a polygon, so every law enforced exactly must give it
-to round-off at degree 1 (straight cells) and 2 (curved cells): the
-Nitsche terms read σ(u)n with the mesh's own normal.  Before the fix they
-used the exact circle's normal on P1 chords and t_N came out 0.5–0.6 % low
-at h = 0.1.
+linear, u = −(1 − ν)p/E·(x, y).  A P1 mesh's domain is a polygon, but a
+constant stress is the exact answer on a polygon too, so every law
+enforced exactly must give u and σ to round-off at degree 1 (straight
+cells) and 2 (curved cells): Nitsche's traction reads σ(u)n_h with the
+mesh's own normal.  Before the fix it took the exact circle's normal on P1
+chords: u off by 1.8e-4, σ by 4.2e-4 at h = 0.1.  The tractions at Γ's
+points (``Result.interface``) are the polygon's σ n_h = −p n_h given in the
+circle's frame: |t| = p to round-off, its direction the chord's (t_N is
+−p cos φ, φ the angle between the two normals, an O(h²/R²) geometric
+shortfall, not checked here).  Coulomb sticks at every point only where μ
+exceeds tan φ (μ = 0.3 against tan φ ≤ 0.19 at h = 0.1); below that the
+circle's frame makes it slip (docs/methods/fe.md).
 
 A penalty law has no linear answer on a closed curve (the jump σn/k is
 radial, and a radial jump changes the outer body's stress), so for it the
@@ -66,16 +71,14 @@ def test_exact_laws_pass_the_patch_test_on_a_circle(law, degree):
     assert np.max(np.abs(u - u_ex)) <= tol.PATCH_ROUNDOFF * np.max(np.abs(u_ex))
     s = res.fields.stress(pts, bodies)
     assert np.max(np.abs(s - np.array([-p, -p, 0.0]))) <= tol.PATCH_ROUNDOFF * p
-    # the solve's tractions at Γ's quadrature points (Result.interface) ...
+    # the solve's tractions at Γ's quadrature points (Result.interface): σ n_h, |t| = p
     t = res.interface.final.traction
-    assert np.max(np.abs(t[:, 0] + p)) <= tol.PATCH_ROUNDOFF * p
-    assert np.max(np.abs(t[:, 1])) <= tol.PATCH_ROUNDOFF * p
-    # ... and the profile along the exact circle, which interpolates them
+    assert np.max(np.abs(np.hypot(t[:, 0], t[:, 1]) - p)) <= tol.PATCH_ROUNDOFF * p
+    # the profile along the exact circle: no gap
     (profile,) = [pr for pr in scene.profiles if pr.id == "G"]
     cols = sample_profile(scene, res.fields, profile, res.interface).columns
-    assert np.max(np.abs(cols["tN"] + p)) <= tol.PATCH_ROUNDOFF * p
-    assert np.max(np.abs(cols["tT"])) <= tol.PATCH_ROUNDOFF * p
     assert np.max(np.abs(cols["gN"])) <= tol.PATCH_ROUNDOFF * np.max(np.abs(u_ex))
+    assert np.max(np.abs(cols["gT"])) <= tol.PATCH_ROUNDOFF * np.max(np.abs(u_ex))
 
 
 @pytest.mark.parametrize("degree", [1, 2])
