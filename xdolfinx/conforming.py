@@ -19,7 +19,11 @@ their traces on Γ need no side: the interior-facet orientation trap of
 dolfinx 0.5.2 does not arise.  ``n`` is the exact normal of the level set at
 the quadrature point, not the normal of the mesh's chord: on scene B's
 curved Γ a chord normal creates a false normal traction of order
-``(k_N/k_T)(h/2R)|t_T|`` (docs/scenes.md).  Boundary loads on an outer facet are
+``(k_N/k_T)(h/2R)|t_T|`` (docs/scenes.md).  A law enforced exactly
+(Nitsche) reads the traction ``σ(u) n_h`` with the mesh's own normal
+``n_h`` (:func:`_mesh_normals`), the one the bulk's integration by parts
+uses; its components, the law and the tractions reported stay in the
+level set's frame (n, t).  Boundary loads on an outer facet are
 weighted by the DG0 indicator of the body that owns the facet's cell.
 
 Increments, Newton and the law are :mod:`contactcore.newton`'s, shared with
@@ -118,7 +122,9 @@ def interface_operator(scene: Scene, fm: FittedMesh, V, degree: int, exchange: "
     """Γ's quadrature on the mesh's Γ facets and ``G``: the jump
     ``[[u]] = u₊ − u₋`` in the frame (n, t) of the level set's exact normal
     at each point (not the chord's: docs/scenes.md, scene B); with ``exact``,
-    also Nitsche's ``S`` and ``stabilisation`` (:func:`_nitsche_rows`).
+    also Nitsche's ``S`` and ``stabilisation`` (:func:`_nitsche_rows`),
+    whose traction ``σ(u) n_h`` takes the mesh's own normal
+    (:func:`_mesh_normals`).
 
     Both fields are continuous across Γ's facets, so their traces are taken
     from one cell of each facet, whichever side: the interior-facet
@@ -153,12 +159,31 @@ def interface_operator(scene: Scene, fm: FittedMesh, V, degree: int, exchange: "
         points.append(x)
         weights.append(w_ref * np.linalg.norm(dx_dxi, axis=1))
         if exact:
-            stabilisation.append(_nitsche_rows(scene, ref, dofs, f, xi, x, frame, rows, weights[-1].sum(), traction))
+            stabilisation.append(_nitsche_rows(scene, ref, dofs, f, xi, x, frame, _mesh_normals(dx_dxi, normals), rows,
+                                               weights[-1].sum(), traction))
     S = traction.to_csr() if exact else None
     points, weights = _concatenate(points, 2), _concatenate(weights, 0)
     return InterfaceOperator(trip.to_csr(), weights, points, exchange if exchange.ranks.parallel else None, S=S,
                              stabilisation=_concatenate(stabilisation, 0) if exact else None,
                              pieces=piece_centres(points, weights, [len(xi)] * len(facets)))
+
+
+def _mesh_normals(dx_dxi: np.ndarray, normals: np.ndarray) -> np.ndarray:
+    """The mesh's own unit normal at a facet's points, where its tangent
+    (unnormalised) is ``dx_dxi``: the chord's on straight P1 cells, the
+    curved map's on P2 cells, turned to the side of the level set's
+    ``normals`` there (from − into +).
+
+    Nitsche's traction ``σ(u) n`` takes it: the bulk's ``∫ σ(u) : ε(v)``
+    integrates by parts onto the mesh's facets, so only this normal keeps
+    the two consistent.  With the exact circle's normal on P1 chords a
+    constant stress was no longer the discrete answer (u off by 1.8e-4,
+    σ by 4.2e-4 at h = 0.1: grader7, fault 1; docs/methods/fe.md).  The
+    frame (n, t) in which ``S`` and ``G`` give components, the law acts
+    and ``Result.interface`` reports stays the level set's."""
+    t = dx_dxi / np.linalg.norm(dx_dxi, axis=1)[:, None]
+    n = np.column_stack([t[:, 1], -t[:, 0]])
+    return n * np.sign(np.sum(n * normals, axis=1))[:, None]
 
 
 class _Reference:
@@ -215,12 +240,12 @@ class _Reference:
         """The straight triangle of the cell's vertices."""
         return float(polygon_area(self.coords(c)[:3]))
 def _nitsche_rows(scene: Scene, ref: _Reference, dofs, f: int, xi: np.ndarray, x: np.ndarray, frame: np.ndarray,
-                  rows, length: float, S: Triplets) -> np.ndarray:
+                  n: np.ndarray, rows, length: float, S: Triplets) -> np.ndarray:
     """Facet ``f``'s rows of ``S``, added to ``S``, and its γ₀ at its points
     ``x`` (parameters ``xi``; :class:`~contactcore.system.InterfaceOperator`).  Each body's
     field is read in the cell on its own side of the facet (it is zero
     beyond its body), its stress by the body's Voigt matrix ``D``:
-    ``τ = frame · σ(u) n``, weighted ``w_k = (|Ω_k|/E_k) / Σ_j |Ω_j|/E_j``
+    ``τ = frame · σ(u) n`` with ``n`` the mesh's normal (:func:`_mesh_normals`), weighted ``w_k = (|Ω_k|/E_k) / Σ_j |Ω_j|/E_j``
     over the two cells ``Ω_k`` (Annavarapu et al., CMAME 2012), and
     ``γ₀ = 2|Γ^e| / Σ_j |Ω_j|/E_j``."""
     cells = ref.f2c.links(f)
@@ -233,7 +258,6 @@ def _nitsche_rows(scene: Scene, ref: _Reference, dofs, f: int, xi: np.ndarray, x
         raise DiscretisationError("fe: a facet of Γ does not separate the two bodies")
     compliance = {b: ref.area(c) / scene.materials[BODIES[b]].E for c, b in zip(cells, side)}
     total = sum(compliance.values())
-    n = frame[:, 0, :]
     for c, b in zip(cells, side):
         X = ref.facet_points(c, f, xi, x)
         grad = ref.gradients(c, X)  # (points, dofs, 2)
