@@ -273,11 +273,21 @@ def check_mesh_path(out: str | Path, option: str = "--out") -> Path:
 def write_mesh(scene: Scene, h: float, out: str | Path, *, order: int = 1, grading: Grading | None = None) -> Path:
     """Build the fitted mesh and write it to ``out`` (atomically: a temporary
     file in the same folder, renamed when complete); ``out`` is checked
-    first (:func:`check_mesh_path`)."""
+    first (:func:`check_mesh_path`).  Meshed as the solvers mesh it, in the
+    dimensionless scene (:mod:`contactcore.scaling`), and written in the
+    scene's units: OpenCASCADE's fixed precision (1e-7 in the model's
+    units) merged a layer of 3e-7 km into its neighbour and wrote a mesh
+    without Γ or body − in a scene in km that fe solves (review3 #1)."""
+    from contactcore.scaling import Scales
     out = check_mesh_path(out, "out")
     out.parent.mkdir(parents=True, exist_ok=True)
+    scales = Scales.of(scene)
+    inner = scales.scene(scene)
+    L = scales.length
+    inner_grading = None if grading is None else Grading(grading.factor, grading.distance / L, grading.corners)
     with gmsh_session():
-        build_model(scene, h, order=order, grading=grading)
+        build_model(inner, h / L, order=order, grading=inner_grading)
+        _nodes_to_user(scales)
         fd, tmp = tempfile.mkstemp(suffix=out.suffix, dir=out.parent)
         os.close(fd)
         try:
@@ -287,6 +297,15 @@ def write_mesh(scene: Scene, h: float, out: str | Path, *, order: int = 1, gradi
             if os.path.exists(tmp):
                 os.unlink(tmp)
     return out
+
+
+def _nodes_to_user(scales) -> None:
+    """Move every node of the current gmsh mesh from the dimensionless
+    scene's coordinates to the user's (``x = o + L x'``)."""
+    tags, coords, _ = gmsh.model.mesh.getNodes()
+    xy = scales.to_user(np.asarray(coords, float).reshape(-1, 3))
+    for tag, (x, y) in zip(tags, xy):
+        gmsh.model.mesh.setNode(int(tag), [float(x), float(y), 0.0], [])
 
 
 #: gmsh's "Mesh.MinimumCirclePoints" (4.8): the fewest segments it draws a circle with.

@@ -858,6 +858,11 @@ KERNELS_VS_DOLFINX = 1e-13
 #: hundred ε of the total).
 MESH_SUMS = 1e-12
 
+#: A mesh file's node coordinates, the same scene written in m and in km
+#: (×1e3): both are the one dimensionless mesh mapped by x = o + L x', so
+#: they differ by the round-off of that map and of the ×1e3, a few ε of L.
+MESH_UNITS = 1e-12
+
 #: The length of a disc's rim (radius 1) meshed with second-order cells at
 #: h = 0.1: each curved edge is the circle's quadratic interpolant, whose
 #: length is off by O(h⁴) ≈ 1e-4 of an edge's and less once summed with
