@@ -6,6 +6,7 @@ includes Γ itself, docs/scenes.md).  A body has three names, one per use:
 * its index 0/1 (:class:`Body`), for arrays indexed by body;
 * its label "minus"/"plus" (``Body.label``, :data:`contactcore.scene.BODIES`),
   in scene files and output;
+* its symbol "−"/"+" (``Body.symbol``, :func:`symbol_of`), in messages;
 * its sign −1/+1 (``Body.sign``), the Heaviside function ``H`` of both
   enrichments (XFEM's and EFGM's ``u = Σ N_I u_I + Σ N_J (H − H_J) a_J``).
 
@@ -31,6 +32,16 @@ class Body(IntEnum):
     @property
     def sign(self) -> int:
         return sign_of_index(int(self))
+
+    @property
+    def symbol(self) -> str:
+        """"−" or "+", as messages and docs name a body."""
+        return "−" if self is Body.MINUS else "+"
+
+
+def symbol_of(label: str) -> str:
+    """A body's label ("minus"/"plus") → its symbol ("−"/"+")."""
+    return Body[label.upper()].symbol
 
 
 def sign_of(phi) -> np.ndarray:

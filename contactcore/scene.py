@@ -16,7 +16,7 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from . import tolerances as tol
-from .bodies import Body
+from .bodies import Body, symbol_of
 from .elasticity import voigt_matrix
 from .errors import DiscretisationError, SceneError, quoted
 from .geometry import (CircleInterface, Disc, Domain, Interface, LevelSetInterface, LineInterface, Rectangle,
@@ -560,7 +560,7 @@ def check_fitted_thickness(scene: Scene) -> None:
         if t <= floor:
             scale, unit = user.length_scale / scene.length_scale, user.units.length
             raise DiscretisationError(
-                f"body {'−' if body == 'minus' else '+'} is at most {t * scale:.3g} {unit} thick across Γ, not "
+                f"body {symbol_of(body)} is at most {t * scale:.3g} {unit} thick across Γ, not "
                 f"above {tol.THINNEST_FITTED_BODY:g} of the domain's diameter ({floor * scale:.3g} {unit}): a "
                 "fitted mesh cannot tell its edges apart (gmsh names each edge by the boundary it lies on), and "
                 "xfem and efgm need a cell or node spacing finer than its thickness: make it thicker")

@@ -9,11 +9,22 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import ClassVar
 
+from contactcore import tolerances as _tol
+from contactcore.bodies import symbol_of
 from contactcore.discretisation import Discretisation, check_choice, check_degree
 
 #: The background cells of XFEM: structured quadrilaterals (the paper's),
 #: structured triangles, or gmsh triangles (used for a disc).
 XFEM_CELLS = ("quad", "triangle", "gmsh")
+
+
+def refinement(reach: float) -> str:
+    """What to do where a body reaches at most ``reach`` of a cell's
+    diameter from Γ, less than ``SLIVER_EVAL_DEPTH`` needs: the factor to
+    divide h by, or, where it does not reach into any cell, that Γ only
+    grazes it (xfem's two refusals of an unresolved body)."""
+    return (f"divide h by about {_tol.SLIVER_EVAL_DEPTH / reach:.3g} or more" if reach > 0
+            else "Γ only grazes it")
 
 
 @dataclass(frozen=True)
@@ -96,14 +107,11 @@ class XFEM(Discretisation):
         for body, t in thickness.items():
             if t <= tol.XFEM_SNAP * diameter:
                 reach = t / diameter
-                refine = (f"divide h by about {tol.SLIVER_EVAL_DEPTH / reach:.3g} or more" if reach > 0
-                          else "Γ only grazes it")
-                label = "−" if body == "minus" else "+"
                 raise DiscretisationError(
-                    f"xfem: no cell resolves body {label}: it reaches at most {reach:.3g} of a cell's diameter "
+                    f"xfem: no cell resolves body {symbol_of(body)}: it reaches at most {reach:.3g} of a cell's diameter "
                     f"from Γ, within xfem's snap distance ({tol.XFEM_SNAP:g} of it: the nodes beside Γ are moved "
                     f"onto it and the body vanishes; at least {tol.SLIVER_EVAL_DEPTH:g} is needed to evaluate its "
-                    f"fields); {refine}")
+                    f"fields); {refinement(reach)}")
 
     def check_spacing(self, scene, resolution) -> None:
         """Refuse a pin that is not a node of the structured grid at

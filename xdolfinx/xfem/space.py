@@ -23,6 +23,7 @@ from contactcore.geometry import Disc, LineInterface
 
 from ..contact_system import GhostExchange
 from .cells import CellBasis
+from ..options import refinement
 from .cut import CutIntegration
 
 #: An enriched node is kept when the stiffness of its shape function on
@@ -146,13 +147,10 @@ class EnrichedFunctionSpace:
             return
         which = np.array(sorted(cut.regions), dtype=int)
         reach = ranks.max(float(np.max(cut.depth[which, int(body)] / cut.cell_size[which], initial=0.0)))
-        refine = (f"divide h by about {tol.SLIVER_EVAL_DEPTH / reach:.3g} or more" if reach > 0
-                  else "Γ only grazes it")
-        label = "−" if body == Body.MINUS else "+"
         raise DiscretisationError(
-            f"xfem: no cell resolves body {label}: wherever Γ cuts it, it reaches at most {reach:.3g} of a "
+            f"xfem: no cell resolves body {body.symbol}: wherever Γ cuts it, it reaches at most {reach:.3g} of a "
             f"cell's diameter from Γ (at least {tol.SLIVER_EVAL_DEPTH:g} is needed to evaluate its fields); "
-            f"{refine}, or use fe (which fits a body thicker than {tol.THINNEST_FITTED_BODY:g} of the domain's "
+            f"{refinement(reach)}, or use fe (which fits a body thicker than {tol.THINNEST_FITTED_BODY:g} of the domain's "
             f"diameter)")
 
     def cells_resolving(self, side: int) -> np.ndarray:
