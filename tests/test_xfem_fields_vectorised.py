@@ -3,8 +3,11 @@ cells vectorised over the points, curved cells one by one) equal the simple
 per-point evaluation in each point's cell (XFEMFields._local), on cut and
 uncut cells, for both bodies of a cut cell, on a curved Γ (the rod: gmsh
 cells, curved at the rim at P2) and a straight inclined one (the patch) and
-scene C (quads and triangles) (docs/methods/xfem.md,
-"Evaluation")."""
+scene C (quads and triangles), and Γ snapped to a node line (its nodes
+count as + in the cells beside it: docs/methods/xfem.md, "Evaluation at
+many points")."""
+from pathlib import Path
+
 import numpy as np
 import pytest
 
@@ -14,6 +17,15 @@ from verification import methods
 from verification.closed_forms import interface_patch, pressurised_rod
 
 from tolerances import XFEM_VECTORISED_EVALUATION
+
+
+def _nodeline():
+    """A bar whose Γ lies on a node line (x = 1.2, 6 h at h = 0.2) moved
+    1e-7 h off it: snapped, its nodes on Γ count as + (docs/methods/xfem.md,
+    "Enrichment")."""
+    from contactcore import LineInterface
+    scene = load_scene(str(Path(__file__).resolve().parent / "scenes" / "nodeline_bar.toml"))
+    return scene.with_changes(interface=LineInterface((1.2 + 2e-8, 0.0), (1.0, 0.0))).validated()
 
 
 def _points(fields, per_cell: int = 3):
@@ -35,7 +47,7 @@ def _points(fields, per_cell: int = 3):
 
 
 @pytest.mark.parametrize("case, cell", [(pressurised_rod, "gmsh"), (interface_patch, "gmsh"), (lambda: load_scene("C"), "quad"),
-                                        (lambda: load_scene("C"), "triangle")])
+                                        (lambda: load_scene("C"), "triangle"), (_nodeline, "quad")])
 @pytest.mark.parametrize("degree", [1, 2])
 def test_vectorised_evaluation_equals_the_per_point_reference(case, cell, degree):
     """Every point of every resolving cell: u and σ of the cell's own
@@ -48,8 +60,12 @@ def test_vectorised_evaluation_equals_the_per_point_reference(case, cell, degree
     fields, _ = method_fields(result.fields)
     cells, bodies, points = _points(fields)
     cut = np.isin(cells, list(fields.space.cut.regions))
-    assert cut.any() and (~cut).any()
-    assert set(bodies[cut]) == {0, 1}
+    if case is _nodeline:  # no cell cut: the snapped nodes on Γ, enriched, count as + in the cells beside them
+        basis = fields.space.cells
+        assert basis.node_on[basis.cell_dofs[cells[bodies == 0]]].any()
+    else:
+        assert cut.any() and (~cut).any()
+        assert set(bodies[cut]) == {0, 1}
     if case is pressurised_rod and degree == 2:
         assert fields.space.cells.curved[cells].any()  # the curved path too
     for gradient in (False, True):
