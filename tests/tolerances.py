@@ -373,6 +373,15 @@ EFGM_CELL_ASSEMBLY = 1e-12
 #: on scenes A, B, C).  A wrong block in either numbering gives O(1).
 XFEM_NUMBERING = 1e-12
 
+#: xfem's field evaluation vectorised over the points (affine cells at once,
+#: one basix tabulation) against the per-cell reference (XFEMFields._local):
+#: the same sums in another order, round-off of the field's largest value,
+#: which σ at P2 lifts (a difference of nodal displacements).  Measured
+#: 2026-11-28 (tests/test_xfem_fields_vectorised.py's cases, 3 points a
+#: cell): u ≤ 3.6e-16; σ up to 1.2e-14 (scene C, triangles, P2), 1.5e-15
+#: with OPENBLAS_CORETYPE=Nehalem.  The bound is about 17x the worst.
+XFEM_VECTORISED_EVALUATION = 2e-13
+
 
 # --------------------------------------------------------------------------
 # fe under mpirun (tests/test_mpi.py, issue 15)
