@@ -43,23 +43,24 @@ import numpy as np
 from . import health
 from . import tolerances as tol
 from .geometry import tangent_of
+from .health.restraint import _free_modes, _modes, _restraint
 from .laws import OPEN, STICK
 
 
 def _free_motion(scene, points, weights, status):
-    """The one rigid motion (a 6-vector of :func:`contactcore.health._modes`)
+    """The one rigid motion (a 6-vector of :func:`contactcore.health.restraint._modes`)
     the ``status`` map leaves free once its slipping points hold normally
     only, or None unless exactly one is free."""
-    Q = health._restraint(scene, points, weights, status != OPEN, status == STICK)[0]
-    free = health._free_modes(Q)
+    Q = _restraint(scene, points, weights, status != OPEN, status == STICK)[0]
+    free = _free_modes(Q)
     return free[:, 0] if free.shape[1] == 1 else None
 
 
 def _jumps(scene, motion, points) -> np.ndarray:
     """(m, 2) ``[g_N, g_T]`` at ``points`` of the rigid ``motion``."""
     centre, L = health.modes_centre(scene.domain), scene.length_scale
-    move = (health._modes(points, np.ones(len(points), int), centre, L)
-            - health._modes(points, np.zeros(len(points), int), centre, L)) @ motion
+    move = (_modes(points, np.ones(len(points), int), centre, L)
+            - _modes(points, np.zeros(len(points), int), centre, L)) @ motion
     n = scene.interface.normals(points)
     return np.column_stack([np.einsum("mi,mi->m", n, move), np.einsum("mi,mi->m", tangent_of(n), move)])
 

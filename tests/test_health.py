@@ -367,7 +367,7 @@ def test_coulomb_springs_at_the_limit_efgm_quotes_are_carried():
 
 def test_a_free_motions_direction_shows_no_round_off():
     """A translation along x found with 3e-16 in y is shown as (-1, 0)."""
-    from contactcore.health import _describe
+    from contactcore.health.restraint import _describe
 
     scene = load_scene("C")  # a circular Γ: a translation is named by its direction
     assert _describe(scene, np.array([0.0, 0.0, 0.0, -1.0, 3.1e-16, 0.0])) == "body + can translate along (-1, 0)"

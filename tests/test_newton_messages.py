@@ -199,7 +199,7 @@ def test_a_diverged_iterative_solve_is_named_by_its_reason():
     reason is the options', named with what to do, and a linear law's
     refusal keeps it."""
     from contactcore import load_scene
-    from contactcore.linear_solver import _diverged
+    from contactcore.linear_solver.diagnosis import _diverged
     from contactcore.newton import _refusal
     error = _diverged(None, -3, "scene A (fe)")
     assert "DIVERGED_MAX_IT" in str(error) and "raise ksp_max_it" in str(error)

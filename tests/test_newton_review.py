@@ -1,6 +1,6 @@
 """Three findings of a review of Newton and its linear solver, each checked
 on the code before its fix (docs/newton.md, "A load back to zero"; the
-module doc of contactcore/linear_solver.py)."""
+package doc of contactcore/linear_solver/)."""
 import dataclasses
 import json
 import os

@@ -1,0 +1,170 @@
+"""Warnings on an answer found: where the method or the problem may make it
+off, or one of several.
+
+- Volumetric locking: plane strain with ν above NU_LOCKING_WARN, where
+  every method here (displacement-based) may lock (:func:`_locking_warnings`).
+- Coulomb friction across two materials: Dundurs' second parameter
+  (J. Appl. Mech. 1969)
+
+      β = [G₋(κ₊ − 1) − G₊(κ₋ − 1)] / [G₋(κ₊ + 1) + G₊(κ₋ + 1)],
+
+  ``G = E / 2(1 + ν)``, ``κ = 3 − 4ν`` (plane strain) or ``(3 − ν)/(1 + ν)``
+  (plane stress), couples slip and the normal gap; beyond
+  ``μ|β| > MU_DUNDURS_WARN`` the answer may be one of several
+  (:func:`dundurs_beta`, :func:`dundurs_warnings`).
+- Points a converged path holds at stick with ``|t_T|`` beyond ``μ|t_N|``
+  by more than the traction's round-off (:func:`friction_excess_warnings`).
+- Points a converged path holds closed in tension, ``t_N > 0`` beyond
+  Newton's closed/open band in traction plus round-off
+  (:func:`closed_tension_warnings`).
+
+:func:`material_warnings` gathers the first two, asked of the scene before
+Newton; the last two read the path after it.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from .. import tolerances as tol
+from ..laws import OPEN, STICK
+
+
+def material_warnings(scene) -> list[str]:
+    """Volumetric locking: plane strain with ν above NU_LOCKING_WARN, in
+    one warning that names every such body; and Coulomb friction across
+    two materials beyond the uniqueness bound (:func:`dundurs_warnings`)."""
+    return _locking_warnings(scene) + dundurs_warnings(scene)
+
+
+def dundurs_beta(scene) -> float:
+    """Dundurs' second parameter β of the two bodies (J. Appl. Mech. 1969),
+    ``[G₋(κ₊ − 1) − G₊(κ₋ − 1)] / [G₋(κ₊ + 1) + G₊(κ₋ + 1)]`` with
+    ``G = E / 2(1 + ν)`` and ``κ = 3 − 4ν`` (plane strain) or
+    ``(3 − ν)/(1 + ν)`` (plane stress): how far shear across Γ moves its
+    normal gap (0 for equal materials, up to ±1/2 in plane strain)."""
+    G, kappa = [], []
+    for body in ("minus", "plus"):
+        m = scene.materials[body]
+        G.append(m.E / (2 * (1 + m.nu)))
+        kappa.append(3 - 4 * m.nu if scene.plane == "strain" else (3 - m.nu) / (1 + m.nu))
+    return (G[0] * (kappa[1] - 1) - G[1] * (kappa[0] - 1)) / (G[0] * (kappa[1] + 1) + G[1] * (kappa[0] + 1))
+
+
+def dundurs_warnings(scene) -> list[str]:
+    """A Coulomb law whose μ·|β| (:func:`dundurs_beta`) exceeds
+    MU_DUNDURS_WARN: the answer may be one of several, which one the
+    method's (tolerances.py's note)."""
+    mu = getattr(scene.law, "mu", 0.0)
+    if scene.law.name != "coulomb" or not mu:
+        return []
+    beta = dundurs_beta(scene)
+    if mu * abs(beta) <= tol.MU_DUNDURS_WARN:
+        return []
+    return [f"mu = {mu:g} across two materials of Dundurs' β = {beta:.3g}: μ|β| = {mu * abs(beta):.3g} is above "
+            f"{tol.MU_DUNDURS_WARN:g}, where slip and the normal gap are coupled strongly enough for Coulomb "
+            "friction to have several answers (a layered block of contrast 1e3 at μ|β| = 1 to 5: fe, xfem and "
+            "efgm held Γ closed or opened up to 20 of 24 points under pressure, tractions up to 164 p apart); "
+            "the answer given is one of them, the method's: compare methods, or lower μ "
+            f"(below {tol.MU_DUNDURS_WARN / abs(beta):.3g} here) or the materials' contrast "
+            "(docs/contact-enforcement.md, \"Known limits\")"]
+
+
+def friction_excess_warnings(scene, path) -> list[str]:
+    """Points a converged ``path`` (an
+    :class:`~contactcore.interface_path.InterfacePath`) holds at stick with
+    ``|t_T|`` beyond ``μ|t_N|`` by more than the traction's round-off
+    (``STICK_ROUNDOFF`` of μp, or ``TRACTION_ROUNDOFF`` of the largest
+    pressure along the path): Newton's stick/slip band (DECISION_BAND of Γ's
+    largest μp) keeps a point's previous status within it, so a load whose
+    shear/normal lies within 1e-5 of μ (above it: no sticking equilibrium)
+    may come back sticking; and at a load back to zero the rest window
+    (REST_ROUNDOFF) may hold a small real shear (docs/newton.md, "A small
+    μ").  One warning naming how many (point, increment) pairs, the
+    largest excess over μ|t_N| (or over the path's largest μp, where the
+    point's is smaller) and its increment."""
+    mu = getattr(scene.law, "mu", None)
+    if mu is None or scene.law.name != "coulomb" or path is None:
+        return []
+    count, worst, where = 0, 0.0, None
+    # the round-off of a traction is relative to the largest pressure Γ
+    # carried along the path: at a load back to zero the step's own is round-off
+    carried = max((float(np.max(-np.asarray(s.traction, float).reshape(-1, 2)[:, 0], initial=0.0))
+                   for s in path.steps), default=0.0)
+    for step in path.steps:
+        t = np.asarray(step.traction, float).reshape(-1, 2)
+        p = np.maximum(-t[:, 0], 0.0)
+        limit = mu * p
+        allowed = np.maximum(tol.STICK_ROUNDOFF * limit, tol.TRACTION_ROUNDOFF * carried)
+        excess = np.abs(t[:, 1]) - limit
+        held = (np.asarray(step.status) == STICK) & (excess > allowed)
+        if np.any(held):
+            count += int(np.count_nonzero(held))
+            scale = np.maximum(limit[held], max(mu * carried, np.finfo(float).tiny))
+            share = float(np.max(excess[held] / scale))
+            if share > worst:
+                worst, where = share, step.step
+    if not count:
+        return []
+    return [f"Γ's points stick with |t_T| above μ|t_N| = {mu:g}|t_N| at {count} (point, increment) pair(s), by up to "
+            f"{worst:.2g} of μ|t_N| (of its largest along the path where the point's is smaller; increment "
+            f"{where:g}): Newton keeps a point's status within {tol.DECISION_BAND:g} of Γ's largest μp "
+            "(DECISION_BAND, above the round-off of its margins) and holds a point at rest where Γ is unloaded "
+            "(REST_ROUNDOFF), so the loads there ask a shear/normal within that band of μ or above it, where no "
+            "sticking equilibrium exists, or leave a shear an unloaded Γ does not tell from round-off; a μ that "
+            "much larger sticks (docs/newton.md, \"Decisions that round-off cannot move\")"]
+
+
+def closed_tension_warnings(scene, path) -> list[str]:
+    """Points a converged ``path`` (an
+    :class:`~contactcore.interface_path.InterfacePath`) holds closed
+    (``stick`` or ``slip``) with a tension ``t_N > 0`` beyond Newton's
+    closed/open band in traction (DECISION_BAND of the largest pressure
+    along the path) plus the traction's round-off (TRACTION_ROUNDOFF of it).
+    ``t_N`` is the law's traction at the point, the one its status was
+    decided on (exact laws: ``γ min(y_N, 0)`` at the augmented jump, which
+    is never positive where the status follows its sign), so such a point
+    contradicts the law: an exact law's band is in traction
+    (:meth:`contactcore.laws.Decision.in_traction`), a penalty law's is
+    DECISION_BAND of Γ's largest |g_N|, which an open gap can make
+    ``k_N`` times a tension of that size.  One warning naming how many
+    (point, increment) pairs, the largest tension as a share of the path's
+    largest pressure and its increment; none for a law without statuses
+    (linear, bonded)."""
+    if path is None or scene.law.name not in ("unilateral", "coulomb"):
+        return []
+    carried = max((float(np.max(-np.asarray(s.traction, float).reshape(-1, 2)[:, 0], initial=0.0))
+                   for s in path.steps), default=0.0)
+    allowed = (tol.DECISION_BAND + tol.TRACTION_ROUNDOFF) * carried
+    count, worst, where = 0, 0.0, None
+    for step in path.steps:
+        tN = np.asarray(step.traction, float).reshape(-1, 2)[:, 0]
+        held = (np.asarray(step.status) != OPEN) & (tN > allowed)
+        if np.any(held):
+            count += int(np.count_nonzero(held))
+            share = float(np.max(tN[held])) / max(carried, np.finfo(float).tiny)
+            if share > worst:
+                worst, where = share, step.step
+    if not count:
+        return []
+    return [f"Γ's points are closed in tension (t_N > 0) at {count} (point, increment) pair(s), up to {worst:.2g} "
+            f"of the largest pressure along the path (increment {where:g}), where the law closes a point only "
+            f"under pressure: Newton kept their status within its round-off band (DECISION_BAND = "
+            f"{tol.DECISION_BAND:g} of Γ's largest gap for a penalty law, which an open gap sets; of the largest "
+            "pressure, in traction, for an exact one), so these points' tractions are not the law's; refine h, "
+            "or for springs compare with enforcement = \"exact\" (docs/contact-enforcement.md, \"The closed/open "
+            "band is in traction\")"]
+
+
+def _locking_warnings(scene) -> list[str]:
+    """Volumetric locking: plane strain with ν above NU_LOCKING_WARN."""
+    if scene.plane != "strain":
+        return []
+    high = [(body, m.nu) for body, m in scene.materials.items() if m.nu > tol.NU_LOCKING_WARN]
+    if not high:
+        return []
+    named = " and ".join(f"materials.{body}.nu = {nu:.10g} (λ/μ = {2 * nu / (1 - 2 * nu):.1e})" for body, nu in high)
+    return [f"{named} in plane strain, above {tol.NU_LOCKING_WARN:g}: every method here is displacement-based and "
+            "may lock volumetrically, its stresses off by tens of percent or more, degree 1 the most but degree 2 "
+            "too (scene A at ν = 0.4999, h = 0.05: the upper block's moment from σyy on Γ 18 % off in fe P2, 180 % "
+            "in xfem P2, 120 % in EFGM's quadratic basis); Γ's tractions come from the same fields and may be off "
+            "as much (fe P1's t_N on a uniformly pressed Γ at ν = 0.499 ranged over 0.01–2.8 times the pressure)"]

@@ -1,0 +1,221 @@
+"""Whether the loads leave an equilibrium: the diagnosis of an increment
+that found none.
+
+A body held by Γ alone under boundary tractions and pressures is in
+equilibrium only if their resultant ``F`` presses it onto a straight Γ
+with ``|F·t| <= μ |F·n|`` (Coulomb's cone integrated over Γ; Wriggers
+2006, §2.3); the unilateral law ties a closed point tangentially, μ = ∞
+(:func:`friction_demand`, :func:`_demands`).  A body its supports and pins
+hold in part is refused when the loads do positive work in a rigid motion
+they leave free that opens Γ without sliding (:func:`_pulled_off`): contact
+only pushes.  The unilateral law's tie under shear may admit no consistent
+open/closed map (Dundurs, J. Appl. Mech. 1969; Comninou, J. Appl. Mech.
+1977): :func:`tie_cause` names it from every cut-back's failure.
+
+The loads are read on a rectangle cut by a line: the tractions and
+pressures on each body's part of each loaded edge (:func:`_part`, φ
+linear along the edge), their resultant (:func:`_boundary_resultant`) and
+their work in the body's rigid modes (:func:`_load_work`; a uniform load's
+work in a linear motion is its resultant's at the part's midpoint).
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from .. import tolerances as tol
+from ..geometry import LineInterface, Rectangle, tangent_of
+from .residual import NOT_CONVERGED
+from .restraint import _BODY_NAMES, _free_modes, _mode_matrix, _restraint
+
+
+def friction_demand(scene, k: float) -> str:
+    """The check a Coulomb or unilateral failure turns on, or "": a body
+    held by Γ alone (no support or pin on it) under boundary tractions and
+    pressures is in equilibrium only if their resultant ``F`` presses it
+    onto a straight Γ with ``|F·t| <= μ |F·n|`` (Coulomb's cone, integrated
+    over Γ; Wriggers 2006, §2.3).  The unilateral law ties a closed point
+    tangentially, μ = ∞: only the press is checked.  ``F`` is the sum of
+    ``factor(k)·traction·length`` over the part of each loaded edge on that
+    body (φ linear along it), ``t = −p n_out`` for a pressure.  A body whose
+    supports and pins hold some directions but leave it free to move off Γ
+    (an x-roller leaves a block above a horizontal Γ free in y) is refused
+    when the loads do positive work in such a motion (:func:`_pulled_off`):
+    Γ's contact pushes only, so it cannot hold them.  Only a rectangle cut
+    by a line with no body force on the body is judged here."""
+    mu = float("inf") if scene.law.name == "unilateral" else getattr(scene.law, "mu", None)
+    if mu is None:
+        return ""
+    for name, shear, press, held in _demands(scene, k):
+        if held:
+            return (f"body {name}: {held}, and the loads pull it off Γ: no equilibrium, as contact only pushes; "
+                    "hold it that way with a support or pin, or with springs that carry tension (type = \"linear\")")
+        if press <= 0:
+            how = "pull it off Γ" if press < 0 else "lie along Γ and do not press it onto Γ"
+            return f"body {name} is held by Γ alone and the loads {how}: no equilibrium without a support"
+        if shear > mu * press:
+            return (f"on Γ the loads ask for shear/normal = {shear / press:.3g} of body {name}, above μ = {mu:g}: "
+                    "it slides off (no equilibrium); lower the shear load or raise μ")
+    return ""
+
+
+def _demands(scene, k: float):
+    """``(name, |F·t|, F·n pressing it onto Γ, "")`` of each body held by Γ
+    alone and loaded (:func:`friction_demand`), at increment ``k``, F·n
+    within :data:`~contactcore.tolerances.ALONG_GAMMA` of |F| taken as 0
+    (F along Γ); ``(name, 0, 0, how)`` of a body its supports and pins hold
+    in part, whose loads pull it off Γ in the motion ``how`` they leave
+    free (:func:`_pulled_off`); none where Γ is not a line across a
+    rectangle."""
+    if not isinstance(scene.interface, LineInterface) or not isinstance(scene.domain, Rectangle):
+        return
+    n = np.asarray(scene.interface.normal, float)
+    supports = _restraint(scene, np.zeros((0, 2)), np.zeros(0))[0]
+    for b, name in enumerate(_BODY_NAMES):
+        if any(getattr(ld, "body", None) == ("minus", "plus")[b] for ld in scene.loads):
+            continue
+        free = _free_modes(supports[3 * b:3 * b + 3, 3 * b:3 * b + 3])
+        if not free.shape[1]:
+            continue
+        if free.shape[1] < 3:  # held in part by its supports and pins
+            how = _pulled_off(scene, b, supports[3 * b:3 * b + 3, 3 * b:3 * b + 3], k)
+            if how:
+                yield name, 0.0, 0.0, how
+            continue
+        force = _boundary_resultant(scene, b, scene.factors(k)[0])
+        if force.any():
+            press = -force @ n if b == 1 else force @ n
+            along = abs(press) <= tol.ALONG_GAMMA * np.linalg.norm(force)  # round-off's sign decides nothing
+            yield name, abs(force @ tangent_of(n[None])[0]), 0.0 if along else float(press), ""
+
+
+def _pulled_off(scene, body: int, Q: np.ndarray, k: float) -> str:
+    """How body ``body`` (0 −, 1 +) may move off Γ against its loads, or "":
+    a rigid motion ``r`` that its supports and pins leave free (``rᵀ Q r``
+    within RIGID_MODE_FREE of ``|r|²``, ``Q`` their 3×3 restraint of its
+    modes, :func:`_restraint`), that opens Γ everywhere without sliding
+    (g_N >= 0, g_T = 0 at every point of the straight Γ), and in which the
+    loads at increment ``k`` do positive work (beyond ALONG_GAMMA of
+    ``|G||r|``, ``G`` their work per mode).  Such motions are the
+    non-negative combinations of the turns about Γ's two ends that open
+    it; contact's tractions push (t_N <= 0) and do no work along g_T = 0,
+    so in that motion nothing balances the loads' work: no equilibrium,
+    under a unilateral or Coulomb law alike."""
+    itf, dom = scene.interface, scene.domain
+    ends = itf.chord(dom)
+    if ends is None:
+        return ""
+    ends = np.asarray(ends, float)
+    centre, L = np.mean(dom.corners, axis=0), scene.length_scale
+    n, sign = np.asarray(itf.normal, float), 1.0 if body == 1 else -1.0  # the jump is + minus −
+
+    def opening(p, q):
+        """The turn about ``p`` (unit) that opens Γ at its other end ``q``."""
+        dp = (p - centre) / L
+        r = np.array([dp[1], -dp[0], 1.0])
+        gap = sign * n @ (_mode_matrix(q, centre, L) @ r)
+        return r * np.sign(gap) / np.linalg.norm(r)
+
+    a, c = opening(ends[0], ends[1]), opening(ends[1], ends[0])
+    G = _load_work(scene, body, centre, L, scene.factors(k)[0])
+    if not G.any():
+        return ""
+    # q(α) = r(α)ᵀ Q r(α), r(α) = α a + (1 − α) c: convex; its free set is an interval about its minimum
+    d = a - c
+    A, B = d @ Q @ d, 2 * c @ Q @ d
+    candidates = {0.0, 1.0, float(np.clip(-B / (2 * A), 0.0, 1.0)) if A > 0 else 0.0}
+    for alpha in sorted(candidates):
+        r = alpha * a + (1 - alpha) * c
+        size = r @ r
+        if size > 0 and r @ Q @ r <= tol.RIGID_MODE_FREE * size and \
+                G @ r > tol.ALONG_GAMMA * np.linalg.norm(G) * np.sqrt(size):
+            if abs(r[2]) <= tol.ALONG_GAMMA * np.sqrt(size):
+                return "its supports and pins leave it free to move straight off Γ"
+            pivot = centre + L * np.array([-r[1], r[0]]) / r[2]
+            return f"its supports and pins leave it free to turn off Γ about ({pivot[0]:.4g}, {pivot[1]:.4g})"
+    return ""
+
+
+def tie_cause(scene, k: float, failure: str, from_rest: bool = False) -> str:
+    """Why a unilateral law's increment ``k`` failed, or "": another law,
+    or a ``failure`` (every cut-back's message, one a line) where Newton
+    never ran out of iterations (a solve that failed is not the tie's).
+    Every cut-back's, not the last one's alone: how that one failed (out
+    of iterations, null pivots, a residual) round-off may choose.
+    The law ties a closed point (``t_T = k_T g_T``; exactly, ``g_T = 0``
+    with any ``t_T``) and frees it the moment it opens (``t_T = 0``):
+    ``t_T`` is not monotone in the jump.  Where Γ opens under shear, the
+    last closed points carry the tie's shear on almost no pressure (a
+    median 20 times their |t_N| on the points Newton flips); opening one
+    hands that shear to its neighbours, and shear across an interface of
+    two materials moves its normal gap (Dundurs' β, J. Appl. Mech. 1969;
+    a bonded edge makes the open faces overlap, Comninou, J. Appl. Mech.
+    1977), so a map consistent at every point need not exist, and is
+    found less often as h or the degree resolves the edge
+    (docs/contact-enforcement.md, "The unilateral law under shear").
+    Coulomb's ``|t_T| <= μ|t_N|`` lets the shear vanish with the pressure;
+    μ must exceed the loads' shear/normal on a body held by Γ alone.  An
+    increment ``from_rest`` along a straight path is the same problem at
+    any size (the law is positively homogeneous), so more increments do
+    not help it."""
+    if scene.law.name != "unilateral" or NOT_CONVERGED not in failure:
+        return ""
+    ratios = [f"{shear / press:.3g} on body {name}" for name, shear, press, _ in _demands(scene, k) if press > 0]
+    mu = f"mu a few times the loads' shear/normal ({ratios[0]})" if ratios else "a large mu"
+    exact = scene.law.enforcement == "exact"
+    more = ("more increments do not help: from rest a smaller step is the same problem scaled" if from_rest else
+            "more increments help only where a consistent map exists")
+    other = "another stabilisation seldom helps" if exact else "soften k_N, k_T to settle it, with their answer"
+    return ("Newton found no open/closed map of the unilateral law consistent at every point, and there may be "
+            "none: the law ties a closed point tangentially and frees it (t_T = 0) the moment it opens, so where "
+            "Γ opens under shear the last closed points carry the tie's shear on almost no pressure and opening "
+            f"one opens or closes its neighbours (a finer h or degree 2 fails more often; {more}; {other}); use "
+            f"type = \"coulomb\" with {mu}: |t_T| <= mu|t_N| lets the shear vanish with the pressure where Γ "
+            "opens")
+
+
+def _loaded_parts(scene, body: int, factors):
+    """Each traction or pressure on an edge of the rectangle, on ``body``'s
+    part of that edge (:func:`_part`): ``(t, length, midpoint)``, ``t`` the
+    traction vector at its factor of ``factors``."""
+    from ..scene import Pressure, Traction
+    c = scene.domain.corners
+    for load, f in zip(scene.loads, factors):
+        if not isinstance(load, (Traction, Pressure)):
+            continue
+        i, j = {"bottom": (0, 1), "right": (1, 2), "top": (2, 3), "left": (3, 0)}[load.boundary]
+        lo, hi = _part(*scene.interface.phi(c[[i, j]]), body)
+        if hi <= lo:
+            continue
+        edge = c[j] - c[i]
+        out = np.array([edge[1], -edge[0]]) / np.linalg.norm(edge)  # corners counter-clockwise
+        t = np.asarray(load.value, float) if isinstance(load, Traction) else -load.value * out
+        yield f * t, (hi - lo) * np.linalg.norm(edge), c[i] + 0.5 * (lo + hi) * edge
+
+
+def _load_work(scene, body: int, centre, L, factors) -> np.ndarray:
+    """(3,): the work of the tractions and pressures on ``body``'s part of
+    each loaded edge of the rectangle in its rigid modes (:func:`_modes`,
+    about ``centre``, lengths over ``L``): a uniform load's work in a
+    linear motion is its resultant's at the part's midpoint."""
+    work = np.zeros(3)
+    for t, length, mid in _loaded_parts(scene, body, factors):
+        work += length * (t @ _mode_matrix(mid, centre, L))
+    return work
+
+
+def _part(phi_a: float, phi_b: float, body: int) -> tuple[float, float]:
+    """The part ``[lo, hi]`` (of [0, 1] along an edge) on ``body``, φ
+    linear along it (a straight Γ) with ``phi_a``, ``phi_b`` at its ends
+    (0: φ < 0, 1: φ > 0)."""
+    if (phi_a > 0) == (phi_b > 0):
+        on = (phi_a + phi_b > 0) == (body == 1)
+        return (0.0, 1.0) if on else (0.0, 0.0)
+    cut = phi_a / (phi_a - phi_b)
+    plus = (0.0, cut) if phi_a > 0 else (cut, 1.0)
+    return plus if body == 1 else ((cut, 1.0) if phi_a > 0 else (0.0, cut))
+
+
+def _boundary_resultant(scene, body: int, factors) -> np.ndarray:
+    """The resultant of the tractions and pressures on the part of each
+    loaded edge of the rectangle that lies on ``body`` (0 −, 1 +)."""
+    return sum((t * length for t, length, _ in _loaded_parts(scene, body, factors)), np.zeros(2))
