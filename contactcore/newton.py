@@ -646,7 +646,7 @@ def _refusal(scene, system: ContactSystem, exc: SolverError) -> SolverError:
     (:data:`SOLVE_FAILED`); ``exc`` is kept whole in ``details``."""
     step = f"increment {scene.increments} of {scene.increments}, a linear law's one step from rest"
     cause = health.material_cause(scene)
-    if health.DIVERGED in str(exc):  # the solver's options chose it, not round-off
+    if health.options_chose(str(exc)):  # the solver's options chose it, not round-off
         error = SolverError(f"{exc} (at {step})")
     elif cause:
         error = SolverError(f"scene {scene.name}: {cause}\n  (its solve at {step}, was {SOLVE_FAILED}); lower ν or "
@@ -683,17 +683,18 @@ def _no_equilibrium(scene, n: int, depth: int, failures: list[str], from_rest: b
     cut = f"failed after {depth} cut-backs (step 1/{2 ** depth})"
     demand, material = health.friction_demand(scene, float(n)), health.material_cause(scene)
     tie = not (demand or material) and health.tie_cause(scene, float(n), "\n".join(failures), from_rest)
+    chosen = [f.split(": ", 1)[1] for f in failures if health.options_chose(f)]  # the options chose it
     if demand:
         error = SolverError(f"{where}: {demand}\n  ({cut}, as it must without equilibrium)")
+    elif chosen:
+        error = SolverError(f"{where} {cut}: no step converged: {chosen[0]}")
     elif material:
         error = SolverError(f"{where}: {material}\n  ({cut}); lower ν or use plane stress")
     elif tie:
         error = SolverError(f"{where}: {tie}\n  ({cut}: {health.NOT_CONVERGED})")
     else:
-        diverged = [f.split(": ", 1)[1] for f in failures if health.DIVERGED in f]  # the options chose it
         free = any(_FREE_MAPS in f for f in failures)  # of every cut-back, not how many: round-off's count
-        error = SolverError(f"{where} {cut}: no step converged: {diverged[0]}" if diverged else
-                            f"{where} {cut}: no step converged ({health.NOT_CONVERGED}, or a linear solve was "
+        error = SolverError(f"{where} {cut}: no step converged ({health.NOT_CONVERGED}, or a linear solve was "
                             f"{SOLVE_FAILED})" + (f"; Newton's iterations stood {_FREE_MAPS}, free to turn or slide "
                                                   "until a point sticks" if free else "")
                             + f"\n  {_unsettled(scene.law, from_rest)}")

@@ -260,3 +260,44 @@ def test_a_nearly_incompressible_increment_is_refused_alike_however_it_failed(tm
     first, second = errors[0].splitlines()
     assert first.startswith("scene A: increment 1 of 20: materials.minus.nu and materials.plus.nu = 0.4999999999")
     assert second == "  (failed after 6 cut-backs (step 1/64)); lower ν or use plane stress"
+
+
+#: A cut-back's failure that the user's solver options chose, and one that
+#: round-off chose (review3, 2026-11-28).
+_CHOSEN = ("step 0 → 0.015625: scene C (fe): the solver diverged (PETSc reason -3: DIVERGED_MAX_IT); raise "
+           "ksp_max_it, or use the default direct solver")
+_SHORT = ("step 0 → 0.015625: scene C (fe): the solver the options chose stopped short of the residual check "
+          "(1e-05; ksp_type gmres, pc_type jacobi): lower ksp_rtol, or use the default direct solver")
+_OUT_OF_ITERATIONS = ("step 0 → 0.03125: Newton did not converge in 43 iterations; relative residual of the "
+                      "equilibrium rows over their forces [1.00e+00, 2.0e-3], converged at <= 1e-08")
+
+
+@pytest.mark.parametrize("law", [{"type": "unilateral", "enforcement": "exact"},
+                                 {"type": "coulomb", "mu": 0.2, "enforcement": "exact"}])
+@pytest.mark.parametrize("chosen", [_CHOSEN, _SHORT])
+def test_a_failure_the_solver_options_chose_is_named_before_the_unilateral_tie(law, chosen):
+    """review3 #3: under the unilateral law the tie's explanation came
+    before a divergence the user's options chose (and under Coulomb not);
+    the options' failure is named as it is whatever the law, in either
+    order of the cut-backs."""
+    from contactcore import load_scene, make_law
+    from contactcore.newton import _no_equilibrium
+    scene = load_scene("C").with_changes(law=make_law(law))
+    for failures in ([_OUT_OF_ITERATIONS, chosen], [chosen, _OUT_OF_ITERATIONS]):
+        text = str(_no_equilibrium(scene, 1, 6, failures))
+        assert text.endswith(chosen.split(": ", 1)[1]) and "\n" not in text, text
+
+
+def test_an_iterative_solver_short_of_the_residual_check_is_named(tmp_path, capsys):
+    """review3 #2: gmres + jacobi on presspull stops, by its own rtol, at a
+    relative residual above RESIDUAL_FAIL; the refusal named "no step
+    converged" with the load's advice.  It now names the options' solver
+    and what to change, in one line, exit 2."""
+    from verification.__main__ import main
+    args = ["run", str(Path(__file__).resolve().parent / "scenes" / "presspull.toml"), "--method", "fe", "--petsc-option", "ksp_type=gmres",
+            "--petsc-option", "pc_type=jacobi", "--petsc-option", "ksp_max_it=200", "--no-plots", "-q",
+            "--reference", "none", "--out", str(tmp_path / "o")]
+    assert main(args) == 2
+    err = [line for line in capsys.readouterr().err.splitlines() if line.strip()]
+    assert len(err) == 1 and "stopped short of the residual check" in err[0] and "ksp_type gmres, pc_type jacobi" \
+        in err[0] and "use the default direct solver" in err[0], err

@@ -53,13 +53,15 @@ stay in their home.
 from .caveats import (closed_tension_warnings, dundurs_beta, dundurs_warnings, friction_excess_warnings,
                       material_warnings)
 from .equilibrium import friction_demand, tie_cause
-from .residual import DIVERGED, NOT_CONVERGED, backward_error, check_residual, relative_residual
+from .residual import (DIVERGED, NOT_CONVERGED, SHORT_OF_CHECK, backward_error, check_residual, options_chose,
+                       relative_residual)
 from .restraint import FreeBody, check_held, check_restraint, lets_go, modes_centre, slips_free
 from .stiffness import check_friction_springs, check_springs, failure_hint, material_cause, spring_unit
 
 __all__ = [
     # residual
-    "DIVERGED", "NOT_CONVERGED", "backward_error", "check_residual", "relative_residual",
+    "DIVERGED", "NOT_CONVERGED", "SHORT_OF_CHECK", "backward_error", "check_residual", "options_chose",
+    "relative_residual",
     # stiffness
     "check_friction_springs", "check_springs", "failure_hint", "material_cause", "spring_unit",
     # restraint

@@ -58,3 +58,17 @@ NOT_CONVERGED = "Newton did not converge"
 #: the options, not round-off, chose it, so a refusal keeps it
 #: (contactcore.newton._refusal, _no_equilibrium).
 DIVERGED = "the solver diverged"
+
+#: How a solve is named whose user-chosen iterative solver (a ``ksp_type``
+#: or ``pc_type`` option) stopped, by its own tolerances, short of
+#: :data:`~contactcore.tolerances.RESIDUAL_FAIL`: the options chose it, as
+#: they choose a divergence (review3, 2026-11-28: gmres + jacobi on
+#: presspull read "no step converged" with the load's advice).
+SHORT_OF_CHECK = "the solver the options chose stopped short of the residual check"
+
+
+def options_chose(failure: str) -> bool:
+    """Whether a solve's ``failure`` message is one the user's solver
+    options chose (:data:`DIVERGED`, :data:`SHORT_OF_CHECK`), not
+    round-off: a refusal names it as it is."""
+    return DIVERGED in failure or SHORT_OF_CHECK in failure

@@ -55,6 +55,10 @@ class Factorisation:
                  what: str = "linear system", paired: bool = False, symmetric: bool = False,
                  prefix: str = DEFAULT_PREFIX):
         self.opts = _options(petsc_options, estimate_condition, paired, symmetric)
+        #: an iterative solver the options chose (not ``preonly`` with a
+        #: factorisation), whose own tolerances may stop short of the check
+        self.iterative = not (self.opts.get("ksp_type") == "preonly"
+                              and self.opts.get("pc_type") in ("lu", "cholesky"))
         check_options(self.opts)
         self.what, self.count = what, 0
         self.prefix = f"{prefix}{next(_prefixes)}_"
@@ -173,6 +177,10 @@ class Factorisation:
         _measure_residual(self.A, b, x, report, force_scale)
         if reason < 0:
             raise _diverged(self.ksp, reason, self.what, failure)
+        if self.iterative and not report.residual <= tol.RESIDUAL_FAIL:
+            raise SolverError(f"{self.what}: {health.SHORT_OF_CHECK} ({tol.RESIDUAL_FAIL:g}; ksp_type "
+                              f"{self.opts['ksp_type']}, pc_type {self.opts['pc_type']}): lower ksp_rtol, or use "
+                              "the default direct solver (no ksp_type or pc_type option: MUMPS's LU)")
         health.check_residual(report.residual, self.what, report.backward_error)
         return report
 
