@@ -69,6 +69,29 @@ def dundurs_warnings(scene) -> list[str]:
             "(docs/contact-enforcement.md, \"Known limits\")"]
 
 
+def _carried(path) -> float:
+    """The largest pressure Γ carries along ``path``: the scale of a
+    traction's round-off (at a load back to zero the step's own pressure
+    is round-off)."""
+    return max((float(np.max(-np.asarray(s.traction, float).reshape(-1, 2)[:, 0], initial=0.0))
+                for s in path.steps), default=0.0)
+
+
+def _tally(path, offending) -> tuple[int, float, float | None]:
+    """Over ``path``'s steps: how many (point, increment) pairs
+    ``offending(t, status)`` flags, the largest share it gives them and
+    that increment.  ``offending`` takes a step's tractions (m, 2) and
+    statuses and returns the flagged points and each point's share."""
+    count, worst, where = 0, 0.0, None
+    for step in path.steps:
+        held, share = offending(np.asarray(step.traction, float).reshape(-1, 2), np.asarray(step.status))
+        if np.any(held):
+            count += int(np.count_nonzero(held))
+            if float(np.max(share[held])) > worst:
+                worst, where = float(np.max(share[held])), step.step
+    return count, worst, where
+
+
 def friction_excess_warnings(scene, path) -> list[str]:
     """Points a converged ``path`` (an
     :class:`~contactcore.interface_path.InterfacePath`) holds at stick with
@@ -85,24 +108,15 @@ def friction_excess_warnings(scene, path) -> list[str]:
     mu = getattr(scene.law, "mu", None)
     if mu is None or scene.law.name != "coulomb" or path is None:
         return []
-    count, worst, where = 0, 0.0, None
-    # the round-off of a traction is relative to the largest pressure Γ
-    # carried along the path: at a load back to zero the step's own is round-off
-    carried = max((float(np.max(-np.asarray(s.traction, float).reshape(-1, 2)[:, 0], initial=0.0))
-                   for s in path.steps), default=0.0)
-    for step in path.steps:
-        t = np.asarray(step.traction, float).reshape(-1, 2)
-        p = np.maximum(-t[:, 0], 0.0)
-        limit = mu * p
+    carried = _carried(path)
+
+    def excess(t, status):
+        limit = mu * np.maximum(-t[:, 0], 0.0)
         allowed = np.maximum(tol.STICK_ROUNDOFF * limit, tol.TRACTION_ROUNDOFF * carried)
-        excess = np.abs(t[:, 1]) - limit
-        held = (np.asarray(step.status) == STICK) & (excess > allowed)
-        if np.any(held):
-            count += int(np.count_nonzero(held))
-            scale = np.maximum(limit[held], max(mu * carried, np.finfo(float).tiny))
-            share = float(np.max(excess[held] / scale))
-            if share > worst:
-                worst, where = share, step.step
+        over = np.abs(t[:, 1]) - limit
+        return (status == STICK) & (over > allowed), over / np.maximum(limit, max(mu * carried, np.finfo(float).tiny))
+
+    count, worst, where = _tally(path, excess)
     if not count:
         return []
     return [f"Γ's points stick with |t_T| above μ|t_N| = {mu:g}|t_N| at {count} (point, increment) pair(s), by up to "
@@ -132,18 +146,10 @@ def closed_tension_warnings(scene, path) -> list[str]:
     (linear, bonded)."""
     if path is None or scene.law.name not in ("unilateral", "coulomb"):
         return []
-    carried = max((float(np.max(-np.asarray(s.traction, float).reshape(-1, 2)[:, 0], initial=0.0))
-                   for s in path.steps), default=0.0)
+    carried = _carried(path)
     allowed = (tol.DECISION_BAND + tol.TRACTION_ROUNDOFF) * carried
-    count, worst, where = 0, 0.0, None
-    for step in path.steps:
-        tN = np.asarray(step.traction, float).reshape(-1, 2)[:, 0]
-        held = (np.asarray(step.status) != OPEN) & (tN > allowed)
-        if np.any(held):
-            count += int(np.count_nonzero(held))
-            share = float(np.max(tN[held])) / max(carried, np.finfo(float).tiny)
-            if share > worst:
-                worst, where = share, step.step
+    count, worst, where = _tally(path, lambda t, status: ((status != OPEN) & (t[:, 0] > allowed),
+                                                         t[:, 0] / max(carried, np.finfo(float).tiny)))
     if not count:
         return []
     return [f"Γ's points are closed in tension (t_N > 0) at {count} (point, increment) pair(s), up to {worst:.2g} "
