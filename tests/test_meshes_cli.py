@@ -51,14 +51,20 @@ def read_only(tmp_path):
     folder.chmod(0o755)
 
 
-def test_an_out_path_below_a_file_or_unwritable_is_refused_as_verification_refuses_it(tmp_path, read_only, capsys,
-                                                                                         never_meshes):
+def _refused_as_verification_refuses(capsys, out, verification_out) -> None:
+    line = _refusal(capsys, "--h", 0.2, "--out", out)
+    with pytest.raises(files.OutFolderError) as refused:
+        files.check_out(verification_out)
+    assert line == f"error: {refused.value}".replace(str(verification_out), str(out))
+
+
+def test_an_out_path_below_a_file_is_refused_as_verification_refuses_it(tmp_path, capsys, never_meshes):
     (tmp_path / "afile").write_text("")
-    for out, verification_out in [(read_only / "x.msh", read_only / "x"), (tmp_path / "afile" / "x.msh", tmp_path / "afile" / "x")]:
-        line = _refusal(capsys, "--h", 0.2, "--out", out)
-        with pytest.raises(files.OutFolderError) as refused:
-            files.check_out(verification_out)
-        assert line == f"error: {refused.value}".replace(str(verification_out), str(out))
+    _refused_as_verification_refuses(capsys, tmp_path / "afile" / "x.msh", tmp_path / "afile" / "x")
+
+
+def test_an_unwritable_out_path_is_refused_as_verification_refuses_it(read_only, capsys, never_meshes):
+    _refused_as_verification_refuses(capsys, read_only / "x.msh", read_only / "x")
 
 
 @pytest.mark.parametrize("name,problem", [("", "must name a file"), (".", "is a folder"),
