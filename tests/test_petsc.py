@@ -278,3 +278,27 @@ def test_efgm_systems_are_symmetric_by_construction(scene_name, degree, support)
     system = method.build(load_scene(scene_name), EFGM(degree=degree, support=support), Resolution(0.1),
                           Timings()).system
     assert SYMMETRIC and linear_solver.is_symmetric(system.A)
+
+
+@pytest.mark.parametrize("ksp, advice", [("preonly", "preonly applies pc_type jacobi once and does not iterate: "
+                                                     "give an iterative ksp_type"),
+                                         ("gmres", "lower ksp_rtol")])
+def test_a_solve_short_of_the_residual_check_gets_advice_that_fits_its_ksp(ksp, advice):
+    """review4: preonly + jacobi applies Jacobi once and stops far short of
+    the residual check; its refusal advised "lower ksp_rtol", an option
+    preonly does not read.  gmres stopped by a loose ksp_rtol keeps that
+    advice."""
+    from contactcore import health
+    A = to_petsc(_laplacian(6))
+    b, x = A.createVecs()
+    b.set(1.0)
+    options = {"ksp_type": ksp, "pc_type": "jacobi"} | ({"ksp_rtol": 0.5} if ksp == "gmres" else {})
+    try:
+        with pytest.raises(SolverError) as refused:
+            solve_once(A, b, x, petsc_options=options)
+    finally:
+        for obj in (A, b, x):
+            obj.destroy()
+    assert health.SHORT_OF_CHECK in str(refused.value) and f"): {advice}, or use the default " \
+        "direct solver" in str(refused.value), str(refused.value)
+    assert _left_in_database() == []

@@ -133,7 +133,9 @@ def closed_tension_warnings(scene, path) -> list[str]:
     :class:`~contactcore.interface_path.InterfacePath`) holds closed
     (``stick`` or ``slip``) with a tension ``t_N > 0`` beyond Newton's
     closed/open band in traction (DECISION_BAND of the largest pressure
-    along the path) plus the traction's round-off (TRACTION_ROUNDOFF of it).
+    along the path) plus the traction's round-off (TRACTION_ROUNDOFF of
+    Γ's largest traction along the path, normal or tangential: on a Γ in
+    pure shear every t_N is round-off of the shear).
     ``t_N`` is the law's traction at the point, the one its status was
     decided on (exact laws: ``γ min(y_N, 0)`` at the augmented jump, which
     is never positive where the status follows its sign), so such a point
@@ -147,7 +149,12 @@ def closed_tension_warnings(scene, path) -> list[str]:
     if path is None or scene.law.name not in ("unilateral", "coulomb"):
         return []
     carried = _carried(path)
-    allowed = (tol.DECISION_BAND + tol.TRACTION_ROUNDOFF) * carried
+    # the traction's round-off is relative to Γ's largest traction, shear
+    # included: a Γ in pure shear carries no pressure, and its t_N of
+    # round-off (1e-14 of the shear) is no tension
+    largest = max((float(np.max(np.abs(np.asarray(s.traction, float)), initial=0.0)) for s in path.steps),
+                  default=0.0)
+    allowed = tol.DECISION_BAND * carried + tol.TRACTION_ROUNDOFF * max(carried, largest)
     count, worst, where = _tally(path, lambda t, status: ((status != OPEN) & (t[:, 0] > allowed),
                                                          t[:, 0] / max(carried, np.finfo(float).tiny)))
     if not count:

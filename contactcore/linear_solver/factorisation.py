@@ -178,9 +178,13 @@ class Factorisation:
         if reason < 0:
             raise _diverged(self.ksp, reason, self.what, failure)
         if self.iterative and not report.residual <= tol.RESIDUAL_FAIL:
-            raise SolverError(f"{self.what}: {health.SHORT_OF_CHECK} ({tol.RESIDUAL_FAIL:g}; ksp_type "
-                              f"{self.opts['ksp_type']}, pc_type {self.opts['pc_type']}): lower ksp_rtol, or use "
-                              "the default direct solver (no ksp_type or pc_type option: MUMPS's LU)")
+            ksp, pc = self.opts["ksp_type"], self.opts["pc_type"]
+            # preonly applies the preconditioner once: no ksp_rtol to lower
+            change = (f"preonly applies pc_type {pc} once and does not iterate: give an iterative ksp_type"
+                      if ksp == "preonly" else "lower ksp_rtol")
+            raise SolverError(f"{self.what}: {health.SHORT_OF_CHECK} ({tol.RESIDUAL_FAIL:g}; ksp_type {ksp}, "
+                              f"pc_type {pc}): {change}, or use the default direct solver (no ksp_type or pc_type "
+                              "option: MUMPS's LU)")
         health.check_residual(report.residual, self.what, report.backward_error)
         return report
 
