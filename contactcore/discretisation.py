@@ -44,7 +44,7 @@ from .geometry import LevelSetInterface, Rectangle
 from .newton import solve_increments
 from .system import ContactSystem
 from .result import Result, Timings
-from .scaling import Scales, dimensionless, dimensionless_inputs
+from .scaling import Scales, Sizes, dimensionless, dimensionless_inputs
 
 
 @dataclass(frozen=True)
@@ -288,7 +288,7 @@ def solve(scene, discretisation: Discretisation, h: float | None = None, *, pape
                         + built.warnings)
     path = path.gathered(built.system.collective, scene.interface)
     report.warnings += health.friction_excess_warnings(scene, path)
-    report.warnings += health.closed_tension_warnings(scene, path)
+    report.warnings += health.closed_tension_warnings(scene, path, Sizes.of(scene).stress)
     fields = built.fields(x)
     strain_unit = Scales.of(scene.user).strain if scene.source is not None else 1.0  # ε = (U/L) σ'/E'
     report.warnings += scene.small_strain_warnings(fields, built.h, strain_unit)

@@ -128,14 +128,16 @@ def friction_excess_warnings(scene, path) -> list[str]:
             "much larger sticks (docs/newton.md, \"Decisions that round-off cannot move\")"]
 
 
-def closed_tension_warnings(scene, path) -> list[str]:
+def closed_tension_warnings(scene, path, stress_size: float = 0.0) -> list[str]:
     """Points a converged ``path`` (an
     :class:`~contactcore.interface_path.InterfacePath`) holds closed
     (``stick`` or ``slip``) with a tension ``t_N > 0`` beyond Newton's
     closed/open band in traction (DECISION_BAND of the largest pressure
     along the path) plus the traction's round-off (TRACTION_ROUNDOFF of
-    Γ's largest traction along the path, normal or tangential: on a Γ in
-    pure shear every t_N is round-off of the shear).
+    Γ's largest traction along the path, normal or tangential, or of the
+    scene's ``stress_size`` (:class:`contactcore.scaling.Sizes`' stress)
+    if larger: on a Γ in pure shear every t_N is round-off of the shear,
+    and on a Γ the loads leave unloaded, of the loads elsewhere).
     ``t_N`` is the law's traction at the point, the one its status was
     decided on (exact laws: ``γ min(y_N, 0)`` at the augmented jump, which
     is never positive where the status follows its sign), so such a point
@@ -154,7 +156,8 @@ def closed_tension_warnings(scene, path) -> list[str]:
     # round-off (1e-14 of the shear) is no tension
     largest = max((float(np.max(np.abs(np.asarray(s.traction, float)), initial=0.0)) for s in path.steps),
                   default=0.0)
-    allowed = tol.DECISION_BAND * carried + tol.TRACTION_ROUNDOFF * max(carried, largest)
+    # and a Γ no load reaches has every traction of round-off of the loads
+    allowed = tol.DECISION_BAND * carried + tol.TRACTION_ROUNDOFF * max(carried, largest, stress_size)
     count, worst, where = _tally(path, lambda t, status: ((status != OPEN) & (t[:, 0] > allowed),
                                                          t[:, 0] / max(carried, np.finfo(float).tiny)))
     if not count:
