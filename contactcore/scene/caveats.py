@@ -1,0 +1,128 @@
+"""What a method of cell or node spacing ``h`` should warn about on a
+scene before anyone trusts its answer: a ligament between Γ and the outer
+boundary narrower than ``h`` (:func:`ligament_warnings`), strains beyond
+small strain (:func:`small_strain_warnings`), and springs stiff enough to
+lock or to amplify the discretisation error of Γ's tractions
+(:func:`interface_warnings`).  The thresholds and their measurements are
+:mod:`contactcore.tolerances`'.
+
+Each takes the :class:`~contactcore.scene.Scene` (whose methods of the same
+names delegate here); this module does not import it (the Scene imports
+this module)."""
+from __future__ import annotations
+
+import numpy as np
+
+from .. import tolerances as tol
+from ..geometry import CircleInterface, Rectangle, domain_cells
+from .vocabulary import BODIES
+
+
+def ligament_warnings(scene: "Scene", h: float) -> list[str]:
+    """A circular Γ closer to the outer boundary than ``h``: no cell or
+    node spacing resolves the ligament between them, so its stresses and
+    Γ's tractions there are unresolved (a disc 0.01 mm from a 100 mm
+    block's edge at h = 5 mm: fe and xfem P1 44–108 % off fe P2 there)."""
+    itf, dom = scene.interface, scene.domain
+    if not isinstance(itf, CircleInterface):
+        return []
+    c, r = np.asarray(itf.centre, float), itf.radius
+    if isinstance(dom, Rectangle):
+        lo, hi = np.asarray(dom.corner, float), np.asarray(dom.corner, float) + dom.size
+        gap = float(min(np.min(c - r - lo), np.min(hi - c - r)))
+    else:
+        gap = float(dom.radius - np.linalg.norm(c - np.asarray(dom.centre, float)) - r)
+    if gap >= h:
+        return []
+    return [f"Γ comes within {gap / h:.2g} h of the domain's boundary (h the cell or node spacing): no cell "
+            "resolves the ligament between them, so its stresses and Γ's tractions there are not resolved; "
+            "refine to an h below that gap"]
+
+
+def small_strain_warnings(scene: "Scene", fields, h: float, strain_unit: float = 1.0) -> list[str]:
+    """The answer's strain too large for the small-strain theory every
+    method solves: the RMS over a body of its largest principal strain,
+    ``ε = strain_unit · D⁻¹σ`` (``strain_unit`` U/L on a dimensionless
+    scene, :mod:`contactcore.scaling`: σ'/E' is ε L/U) from ``fields``
+    (:class:`contactcore.result.Fields`) at
+    the centres of cells of size ``L/SMALL_STRAIN_SAMPLES`` clear of Γ
+    and of the boundary by half a cell's diagonal and by h/2 (inside one
+    body of any method's mesh of spacing ``h``),
+    above :data:`~contactcore.tolerances.SMALL_STRAIN_LIMIT`.  An RMS,
+    not a peak: a corner's stress singularity, integrable, does not
+    trigger it as h falls."""
+    lo, hi = domain_cells(scene.domain, scene.length_scale / tol.SMALL_STRAIN_SAMPLES)
+    centre = (lo + hi) / 2
+    clear = np.maximum(np.linalg.norm(hi - lo, axis=1) / 2, h / 2)
+    inside = ((scene.domain.distance_to_boundary(centre) > clear)
+              & (np.abs(scene.interface.signed_distance(centre)) > clear))
+    centre = centre[inside]
+    bodies = (scene.interface.phi(centre) >= 0).astype(int)
+    if not len(centre):
+        return []
+    stress = np.asarray(fields.stress(centre, bodies), float)
+    found = []
+    for b, D in zip(range(len(BODIES)), scene.voigt_matrices()):
+        if not np.any(bodies == b):
+            continue
+        exx, eyy, gxy = np.linalg.solve(D, stress[bodies == b].T)
+        largest = np.abs(exx + eyy) / 2 + np.hypot((exx - eyy) / 2, gxy / 2)
+        rms = strain_unit * float(np.sqrt(np.mean(largest ** 2)))
+        if not rms <= tol.SMALL_STRAIN_LIMIT:
+            found.append(f"{rms:.2g} in body {BODIES[b]} (E = {scene.user.materials[BODIES[b]].E:.3g} "
+                         f"{scene.user.units.stress})")
+    if not found:
+        return []
+    return [f"strains far beyond small strain: the RMS of a body's largest principal strain is {' and '.join(found)}, "
+            f"above {tol.SMALL_STRAIN_LIMIT:g}: the small-strain (linear) theory every method solves does not "
+            "hold there (its strain omits Green's ½∇uᵀ∇u, which is ε/2 of it), so its displacements and "
+            "stresses mean nothing physical; check the moduli and loads (units?)"]
+
+
+def interface_warnings(scene: "Scene", h: float, fitted: bool = False) -> list[str]:
+    """What a method of cell or node spacing ``h`` should warn about
+    before anyone trusts its interface tractions (the thresholds and
+    their measurements are in contactcore.tolerances):
+
+    Γ is curved unless its geometry is straight (``straight_in``: a
+    line, or a level set whose normal is the same along Γ), whatever
+    class it was given as.
+
+    * springs stiff enough to lock the jump of an unfitted method on a
+      curved Γ (not ``fitted``): ``k h / E > LOCKING_WARN``, E the softer
+      modulus (the body whose deformation the springs over-constrain);
+    * springs stiff enough that Γ's profile tractions ``t = k g``, the
+      law at each sample's jump, amplify the jump's discretisation
+      error, in every method: ``k_N h / E`` or ``k_T h / E`` above its
+      PROFILE_TRACTION_WARN on a curved Γ, E the softer modulus;
+    * a normal traction ``t_N = k_N g_N`` that amplifies the
+      discretisation error of ``g_N`` on a circle of radius R:
+      ``(k_N/k_T)(h/2R)² > FALSE_TN_WARN`` (docs/scenes.md, scene B).
+    """
+    warnings = []
+    law, itf = scene.law, scene.interface
+    if not hasattr(law, "kN"):  # enforced exactly: no springs
+        return warnings
+    soft, curved = scene.softer_modulus, not itf.straight_in(scene.domain)
+    alpha = law.stiffness_scale * h / soft
+    if not fitted and curved and alpha > tol.LOCKING_WARN:
+        warnings.append(f"interface springs of {alpha:.1e}·E/h, E the softer body's (above "
+                        f"{tol.LOCKING_WARN:.0e}·E/h), on a curved Γ that cuts the discretisation: penalty "
+                        "locking may raise the error tenfold and lower the convergence rate; soften the springs "
+                        "or refine")
+    stiff = [f"k_{c} h/E = {k * h / soft:.2g} (above {tol.PROFILE_TRACTION_WARN[c]:g})"
+             for c, k in (("N", law.kN), ("T", law.kT)) if k * h / soft > tol.PROFILE_TRACTION_WARN[c]]
+    if stiff and curved:
+        warnings.append(f"interface springs of {' and '.join(stiff)}, E the softer body's, on a curved Γ: Γ's "
+                        "profile tractions t = k g multiply the jump's discretisation error between Γ's points "
+                        "by that factor and may be off by tens of per cent; the solve's own tractions at Γ's "
+                        "points are in interface.csv (Result.interface); soften the springs, refine, or enforce "
+                        "the law exactly")
+    if isinstance(itf, CircleInterface):
+        amplification = law.kN / law.kT * (h / (2 * itf.radius)) ** 2
+        if amplification > tol.FALSE_TN_WARN:
+            warnings.append(f"k_N/k_T = {law.kN / law.kT:.3g} on a circle at h/2R = {h / (2 * itf.radius):.3g}: "
+                            f"t_N = k_N g_N amplifies the discretisation error of g_N ((k_N/k_T)(h/2R)² = "
+                            f"{amplification:.3g} > {tol.FALSE_TN_WARN:g}); a false t_N of the order of t_T may "
+                            "appear: refine (it falls as h²) or lower k_N/k_T")
+    return warnings

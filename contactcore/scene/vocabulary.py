@@ -1,0 +1,12 @@
+"""The words a scene is written in: its bodies, the components a support
+or pin holds, and the quantities a profile samples (docs/scenes.md)."""
+from __future__ import annotations
+
+from ..bodies import Body
+
+BODIES = tuple(b.label for b in Body)
+COMPONENTS = ("xy", "x", "y")
+STRESS_QUANTITIES = ("sxx", "syy", "sxy")
+DISPLACEMENT_QUANTITIES = ("ux", "uy")
+INTERFACE_QUANTITIES = ("tN", "tT", "gN", "gT")
+QUANTITIES = STRESS_QUANTITIES + DISPLACEMENT_QUANTITIES + INTERFACE_QUANTITIES

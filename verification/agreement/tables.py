@@ -1,0 +1,99 @@
+"""Methods against a reference on one scene: the :class:`AgreementTable`
+(its worst row, what it left out, its Markdown as ``run`` writes it into
+summary.md) and :func:`table`, which builds it from sampled profiles."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from contactcore import ContactError, Scene
+from contactcore.estimate.singular import singular_regions
+from contactcore.scene import Units
+from contactcore.tolerances import EXACT_GAP_FLOOR, NEGLIGIBLE_SHARE
+
+from .measures import first_largest, percent
+from .records import Agreement, profile_agreements
+from .samples import check_exclusion, default_exclusion
+from .sizes import measured_floor, user_floors
+
+
+@dataclass(frozen=True)
+class AgreementTable:
+    """Methods against a reference on one scene: one :class:`Agreement` per
+    method, profile and quantity; samples within ``exclude`` of the named
+    singular ``regions`` left out."""
+
+    scene: str
+    reference: str
+    exclude: float
+    regions: tuple[tuple[str, tuple[tuple[float, float], ...]], ...]
+    rows: tuple[Agreement, ...]
+    gap_floor: float = 0.0  # an exact law's gaps' floor (measured_against), in length; 0 for a penalty law
+    floors: tuple[tuple[str, float], ...] = ()  # the floors given (quantity, value in its unit): table's floors
+    units: Units = Units()  # the names of the scene's units, which the floors are in
+
+    def worst(self, measure: str = "worst") -> Agreement:
+        """The row with the largest ``measure`` (``"worst"`` or ``"rms"``;
+        the first of those within :data:`WORST_TIE`)."""
+        return first_largest(self.rows, key=lambda a: getattr(a, measure))
+
+    def excluded(self) -> str:
+        """Which samples were left out, in words."""
+        if not self.regions:
+            return "no sample was left out (the scene has no singular point)"
+        where = "; ".join(f"{name} " + ", ".join(f"({x:.4g}, {y:.4g})" for x, y in pts)
+                          for name, pts in self.regions)
+        return (f"samples within {self.exclude:.3g} {self.units.length} of these singular points were left out: "
+                f"{where}")
+
+    def _below_gap_floor(self, quantity: str, value: float) -> bool:
+        """Whether a floor given for ``quantity`` is one of the gaps' and no
+        larger than the exactly enforced law's own (:func:`floors` keeps the larger)."""
+        return bool(self.gap_floor) and quantity in ("gN", "gT") and value <= self.gap_floor
+
+    def markdown(self) -> str:
+        """The table in Markdown, worst sample and RMS in % of the reference's scale."""
+        from ..files import column_unit
+        floor = (f" Γ's gaps (an exactly enforced law: zero where Γ is closed and sticking) are measured "
+                 f"against sqrt(g² + ({self.gap_floor:.3g} {self.units.length})²), {EXACT_GAP_FLOOR:g} of the "
+                 "displacement scale." if self.gap_floor else "")
+        floor += "".join(f" {q}'s floor given ({v:.3g} {column_unit(q, self.units)}) lies below the law's own "
+                         "and is not used." if self._below_gap_floor(q, v) else
+                         f" {q} is measured against sqrt({q}² + ({v:.3g} {column_unit(q, self.units)})²) "
+                         "(a floor given)." for q, v in self.floors)
+        floor += (" Each quantity is measured against its vector's or tensor's size at each sample (t_N and t_T "
+                  "against |t|, a stress against the stresses its profile samples), at least "
+                  f"{NEGLIGIBLE_SHARE:g} of the scene's own scale (round-off).")
+        lines = [f"Against {self.reference}; {self.excluded()}.{floor}", "",
+                 "| method | profile | quantity | class | worst sample | at s (x, y) | RMS |",
+                 "|---|---|---|---|---|---|---|"]
+        lines += [f"| {a.method} | {a.profile} | {a.quantity} | {a.kind} | {percent(a.worst)} | {a.s:.4g} "
+                  f"({a.x:.4g}, {a.y:.4g}) | {percent(a.rms)} |" for a in self.rows]
+        return "\n".join(lines) + "\n"
+
+
+def table(scene: Scene, runs: dict[str, dict], reference: str, exclude: float | None = None,
+          floors: dict | None = None) -> AgreementTable:
+    """The :class:`AgreementTable` of sampled profiles ``runs`` (label ->
+    id -> ProfileData), ``runs[reference]`` the reference.  ``floors``
+    (quantity -> value in its unit) measures a quantity against
+    ``sqrt(q_ref² + floor²)``: the size below which a difference does not
+    count, for a quantity that is zero in the reference (a patch test's
+    σxy), where its own round-off would be its scale.  ``reference`` is a
+    label among ``runs``' keys; anything else is refused with a
+    :class:`ContactError` naming the labels."""
+    if not isinstance(runs, dict):
+        raise ContactError(f"runs: a dict of label -> {{profile id: ProfileData}} (got {type(runs).__name__})")
+    labels = ", ".join(map(repr, runs))
+    if not isinstance(reference, str):
+        raise ContactError(f"reference: the label of one of runs ({labels}), not its profiles (got a "
+                           f"{type(reference).__name__})")
+    if reference not in runs:
+        raise ContactError(f"reference: {reference!r} is not a label of runs (they are {labels})")
+    exclude = default_exclusion(scene) if exclude is None else exclude
+    check_exclusion(scene, exclude)
+    ref, given = runs[reference], user_floors(floors)
+    rows = [row for label, got in runs.items() if label != reference
+            for row in profile_agreements(scene, label, got, ref, exclude, floors=given)]
+    regions = tuple((name, tuple(map(tuple, pts.tolist()))) for name, pts in singular_regions(scene))
+    return AgreementTable(scene.name, reference, exclude, regions, tuple(rows), measured_floor(scene, "gN"),
+                          tuple(given.items()), scene.units)
