@@ -11,7 +11,8 @@ from pathlib import Path
 
 import pytest
 
-from verification.__main__ import _parser, main
+from verification.__main__ import main
+from verification.cli.parser import build_parser
 from verification.study import PARAMETERS
 from verification.sweeps import sweeps
 
@@ -33,10 +34,10 @@ def _refused(argv, capsys) -> str:
 
 def test_every_command_takes_its_folder_as_out(capsys):
     """``--out DIR`` on every command, ``report`` too; a bare folder is refused."""
-    for name, sub in _subparsers(_parser()):
+    for name, sub in _subparsers(build_parser()):
         outs = [a for a in sub._actions if a.dest == "out"]
         assert [a.option_strings for a in outs] == [["--out"]], name
-    assert _parser().parse_args(["report", "--out", "R", "--quick"]).out.name == "R"
+    assert build_parser().parse_args(["report", "--out", "R", "--quick"]).out.name == "R"
     assert _refused(["report", "R", "--quick"], capsys).startswith("error: report: ")
 
 
@@ -44,7 +45,7 @@ def test_every_command_that_takes_workers_has_one_default_and_one_help():
     """``--workers``: the same default (:data:`~verification.pool.DEFAULT_WORKERS`)
     and the same help line wherever it is taken."""
     from verification.pool import DEFAULT_WORKERS
-    found = {name: a for name, sub in _subparsers(_parser()) for a in sub._actions if a.dest == "workers"}
+    found = {name: a for name, sub in _subparsers(build_parser()) for a in sub._actions if a.dest == "workers"}
     assert set(found) == {"study", "sweeps", "efficiency", "paper", "benchmark", "report"}
     assert {a.default for a in found.values()} == {DEFAULT_WORKERS} == {1}
     assert len({a.help for a in found.values()}) == 1 and f"default {DEFAULT_WORKERS}" in found["study"].help

@@ -321,8 +321,8 @@ def test_an_option_that_means_nothing_for_the_method(tmp_path, capsys, method, o
 def test_quiet_keeps_warnings_and_repeats_are_collapsed(tmp_path, capsys):
     import logging
 
-    from verification.__main__ import _configure_logging
-    repeats = _configure_logging(-1)
+    from verification.cli.logs import configure_logging
+    repeats = configure_logging(-1)
     log = logging.getLogger("verification")
     log.info("progress")
     for _ in range(30):

@@ -19,6 +19,7 @@ from terminal import with_ctrl_c
 from contactcore import SceneError, SolverError, health, load_scene, make_law, sample_profiles, scene_from_dict
 from contactcore.laws import CoulombLaw
 from verification import __main__ as verification_main
+from verification.cli.parser import build_parser
 from verification import files, methods, plots, study
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -140,7 +141,7 @@ def _subparsers(parser: argparse.ArgumentParser):
 
 
 def test_every_cli_option_has_a_help_line():
-    missing = [f"{name} {action.dest}" for name, sub in _subparsers(verification_main._parser())
+    missing = [f"{name} {action.dest}" for name, sub in _subparsers(build_parser())
                for action in sub._actions if not action.help]
     assert not missing, missing
 
@@ -492,7 +493,7 @@ def test_a_process_whose_janitor_was_killed_says_the_line_itself(tmp_path):
     """A janitor killed before its process is asked to end (someone's kill):
     telling it is no error (no SIGPIPE, on which PETSc aborts), and the
     process learns that no line was said, so that it says it itself
-    (verification.__main__._end_now)."""
+    (verification.cli.signals.end_now)."""
     done = subprocess.run([sys.executable, "-c", KILLED_JANITOR, str(tmp_path / "out")], cwd=ROOT, text=True,
                           capture_output=True, timeout=120)
     assert done.returncode == 0 and done.stdout.split() == ["told", "False", "watching", "False"], done

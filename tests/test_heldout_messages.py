@@ -24,6 +24,7 @@ from contactcore.scene import check_resolution
 from contactcore.tolerances import NITSCHE_STABILISATION_RANGE
 from verification import __main__ as verification_main
 from verification import pool
+from verification.cli.checks import check_cell
 
 ROOT = Path(__file__).resolve().parents[1]
 SCENES = Path(__file__).resolve().parent / "scenes"
@@ -141,7 +142,7 @@ def test_a_cell_for_a_method_that_takes_none_is_refused_before_the_disc(command,
 
 def test_gmsh_cells_on_a_disc_and_any_cell_on_a_rectangle_pass_the_check():
     for scene, cell in ((SCENES / "cylinder.toml", "gmsh"), (PULL_ROLLER, "triangle"), (PULL_ROLLER, "quad")):
-        verification_main._check_cell(argparse.Namespace(scene=str(scene), cell=cell))
+        check_cell(argparse.Namespace(scene=str(scene), cell=cell))
 
 
 # ----- 4. q_err columns are magnitudes ------------------------------------------

@@ -34,7 +34,7 @@ def _watched(tmp_path):
 
 
 def _end_as_rank_0(signum) -> None:
-    """What rank 0's handler says (verification.__main__._end_now)."""
+    """What rank 0's handler says (verification.cli.signals.end_now)."""
     if not janitor.told(signum):
         print(janitor.INTERRUPTED_LINE, file=sys.stderr, flush=True)
 

@@ -69,7 +69,7 @@ def atomic_path(path: Path, suffix: str = ""):
             os.unlink(tmp)
 
 
-#: The signals that end a command (``verification.__main__.ENDING``), held
+#: The signals that end a command (``verification.cli.signals.ENDING``), held
 #: while a result folder is swapped in and the one it replaces removed.
 HELD_SIGNALS = (signal.SIGINT, signal.SIGTERM)
 
