@@ -64,8 +64,9 @@ class _Walk:
     def __init__(self, k, factors, b, u, previous, lift):
         self.k, self.factors, self.b, self.u, self.previous, self.lift = k, factors, b, u, previous, lift
         self.history, self.tangent, self.first, self.du, self.u0 = [], None, 0.0, None, u.copy()
-        self.judged = []  # the figure the convergence test judges: the equilibrium rows' residual over their forces
-        self.held, self.budget = None, tol.NEWTON_MAX_ITERATIONS  # the statuses each point held in the step (_progress)
+        # the figure the convergence test judges: the equilibrium rows' residual over their forces
+        self.judged = []
+        self.held, self.budget = None, tol.NEWTON_MAX_ITERATIONS  # the statuses each point held (_progress)
         self.evaluated = None  # the line search's response and residual at u
         self.it = 0
 
