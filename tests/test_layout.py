@@ -204,3 +204,14 @@ def test_the_architecture_pages_largest_xdolfinx_file_is_the_largest():
              for p in (ROOT / "xdolfinx").rglob("*.py")}
     largest = max(sizes, key=sizes.get)
     assert (name, int(lines)) == (largest, sizes[largest]), "update docs/architecture.md's Sizes"
+
+
+def test_every_package_is_in_the_wheel():
+    """setuptools lists packages by name (pyproject.toml's
+    ``[tool.setuptools] packages``): a package left out is missing from an
+    installed wheel though an editable install still finds it (the split of
+    verification/__main__.py left out ``verification.cli``)."""
+    import tomllib
+    listed = set(tomllib.loads((ROOT / "pyproject.toml").read_text())["tool"]["setuptools"]["packages"])
+    found = {name for name, (_, package) in _modules().items() if package}
+    assert found == listed, f"in the tree, not listed: {sorted(found - listed)}; listed, not in the tree: {sorted(listed - found)}"
