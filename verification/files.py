@@ -112,6 +112,35 @@ def _act(handler, sig: int, frame) -> None:
         os.kill(os.getpid(), sig)
 
 
+#: The exceptions of the ending signals that arrived while a command ran
+#: (:func:`note_signal`), first first.  Python discards an exception raised
+#: in a finalizer or a weakref callback ("Exception ignored in …"): a
+#: SIGTERM whose handler ran there was lost, and the run went on to write
+#: its results and exit 0 (mainsplit, 2026-11-28).
+_ARRIVED: list[type[BaseException]] = []
+
+
+def note_signal(ending: type[BaseException]) -> None:
+    """Record that a signal ending the command arrived, as ``ending`` (the
+    exception its handler raises): a block of :func:`atomic_folder` that
+    ends anyway, its exception swallowed on the way, raises it then."""
+    _ARRIVED.append(ending)
+
+
+def forget_signals() -> None:
+    """Clear :func:`note_signal`'s record: a command starts with none (one
+    process may run several commands: ``main`` called in turn)."""
+    _ARRIVED.clear()
+
+
+def _end_if_signalled() -> None:
+    """Raise the first recorded ending signal's exception
+    (:func:`note_signal`): a result folder is not put in place after the
+    command was asked to end."""
+    if _ARRIVED:
+        raise _ARRIVED[0]
+
+
 #: The atomic folders being built in this process, innermost last.
 _BUILDING: list[janitor.Build] = []
 
@@ -145,6 +174,7 @@ def atomic_folder(path: Path, watched: bool = False):
         if watched:
             janitor.watch(build)
         yield tmp
+        _end_if_signalled()
         built = True
     finally:
         if build is not None:

@@ -35,8 +35,17 @@ class Terminated(KeyboardInterrupt):
 
 
 def raise_terminated(signum, frame) -> None:
-    """SIGTERM's handler in one process: raise :class:`Terminated`."""
+    """SIGTERM's handler in one process: raise :class:`Terminated`, noted
+    (:func:`verification.files.note_signal`) where a finalizer swallows it."""
+    files.note_signal(Terminated)
     raise Terminated
+
+
+def raise_interrupted(signum, frame) -> None:
+    """Ctrl-C's handler in one process: raise KeyboardInterrupt, as
+    Python's own does, noted as :func:`raise_terminated`'s is."""
+    files.note_signal(KeyboardInterrupt)
+    raise KeyboardInterrupt
 
 
 def end_now(signum, frame) -> None:
@@ -55,7 +64,9 @@ def end_now(signum, frame) -> None:
 
 def handlers(rank: int, distributed: bool) -> dict:
     """How each of :data:`ENDING` ends the command.  In one process Ctrl-C
-    raises KeyboardInterrupt and SIGTERM :class:`Terminated`.  mpirun
+    raises KeyboardInterrupt and SIGTERM :class:`Terminated`, each noted
+    so that a result folder is not put in place if a finalizer swallowed it
+    (:func:`verification.files.note_signal`).  mpirun
     passes on Ctrl-C and its own SIGTERM alike, to its ranks as SIGTERM,
     and kills them a second later (Open MPI's ``odls_base_sigkill_timeout``):
     rank 0 ends at once (:func:`end_now`; its janitor puts its result
@@ -63,7 +74,7 @@ def handlers(rank: int, distributed: bool) -> dict:
     both signals, so that they keep joining every collective rank 0 is in
     until it has ended (they hold nothing to discard) and mpirun kills them."""
     if not distributed:
-        return {signal.SIGTERM: raise_terminated}
+        return {signal.SIGINT: raise_interrupted, signal.SIGTERM: raise_terminated}
     return dict.fromkeys(ENDING, end_now if rank == 0 else signal.SIG_IGN)
 
 
@@ -74,12 +85,14 @@ def signals_end_the_command(rank: int, distributed: bool):
     if threading.current_thread() is not threading.main_thread():
         yield
         return
+    files.forget_signals()
     before = {sig: signal.signal(sig, handler) for sig, handler in handlers(rank, distributed).items()}
     try:
         yield
     finally:
         for sig, handler in before.items():
             signal.signal(sig, handler)
+        files.forget_signals()
 
 
 #: PETSc's option that leaves every signal to the process (see :func:`python_handles_signals`).
