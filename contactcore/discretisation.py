@@ -287,8 +287,9 @@ def solve(scene, discretisation: Discretisation, h: float | None = None, *, pape
     report.warnings += (scene.interface_warnings(built.h, fitted=built.fitted) + scene.ligament_warnings(built.h)
                         + built.warnings)
     path = path.gathered(built.system.collective, scene.interface)
-    report.warnings += health.friction_excess_warnings(scene, path)
-    report.warnings += health.closed_tension_warnings(scene, path, Sizes.of(scene).stress)
+    stress_size = Sizes.of(scene).stress  # the round-off of a traction on a Γ no load reaches
+    report.warnings += health.friction_excess_warnings(scene, path, stress_size)
+    report.warnings += health.closed_tension_warnings(scene, path, stress_size)
     fields = built.fields(x)
     strain_unit = Scales.of(scene.user).strain if scene.source is not None else 1.0  # ε = (U/L) σ'/E'
     report.warnings += scene.small_strain_warnings(fields, built.h, strain_unit)
