@@ -280,6 +280,19 @@ class Sizes:
         return cls(softer_displacement(peak), stress, stress * math.sqrt(scene.domain.area / scene.softer_modulus))
 
 
+def softer_stress(scene: Scene) -> float:
+    """``Σ`` of :class:`Sizes` with every body at the softer body's modulus:
+    the largest load, or the stress a prescribed displacement ū causes in
+    the softer body, ``E_soft |ū|/L``.  A lower bound of the stress a
+    prescribed displacement causes where :class:`Sizes`' ``E_stiff |ū|/L``
+    is an upper one (the layered cycle, ū on a layer 1e3 times softer:
+    5.0 against 5005 MPa, under its 10 MPa pressure): the scale of a
+    traction's round-off on a Γ the loads leave unloaded, which must not
+    hide a real excess (``contactcore.health``'s warnings)."""
+    soft = scene.softer_modulus
+    return Sizes.of(replace(scene, materials={b: replace(m, E=soft) for b, m in scene.materials.items()})).stress
+
+
 def softer_displacement(scene: Scene) -> float:
     """``U = max(L τ/E, |ū|)`` of :class:`Scales`, E the softer body's
     modulus: the displacement the loads cause in the softer body, or the

@@ -108,7 +108,7 @@ def test_a_gamma_no_load_reaches_is_not_warned_of_tension(stress_size, warned):
     (here 1e-9 Pa against a scene's stress size of 1 MPa); relative to the
     path's own largest traction (itself round-off) it read as tension up
     to 0.5 of the largest pressure.  With the scene's stress size
-    (``Sizes.stress``) as the round-off's floor: no warning; without it
+    (``scaling.softer_stress``) as the round-off's floor: no warning; without it
     (size 0, the rule before) the warning fires, so the floor is what
     silences it."""
     scene = load_scene(SCENE)

@@ -137,7 +137,7 @@ def closed_tension_warnings(scene, path, stress_size: float = 0.0) -> list[str]:
     closed/open band in traction (DECISION_BAND of the largest pressure
     along the path) plus the traction's round-off (TRACTION_ROUNDOFF of
     Γ's largest traction along the path, normal or tangential, or of the
-    scene's ``stress_size`` (:class:`contactcore.scaling.Sizes`' stress)
+    scene's ``stress_size`` (:func:`contactcore.scaling.softer_stress`)
     if larger: on a Γ in pure shear every t_N is round-off of the shear,
     and on a Γ the loads leave unloaded, of the loads elsewhere).
     ``t_N`` is the law's traction at the point, the one its status was
