@@ -31,9 +31,6 @@ from contactcore.geometry import CircleInterface, LevelSetInterface, LineInterfa
 #: Quad-tree splits of a cell before giving up on a cut that stays complicated.
 MAX_DEPTH = 6
 
-#: A fan whose Jacobian falls below −FAN_FOLD·(region size)² at a Gauss point
-#: folds over itself: that vertex does not see the whole region.
-FAN_FOLD = 1e-12
 
 
 @dataclass
@@ -186,7 +183,7 @@ def _region_rule(corners_and_curves, n, size2):
         vertex = points[0 if k is None else k][0]
         fans = [_fan(vertex, curve, n) for j, curve in enumerate(curves) if k is None or j not in (k - 1, k)]
         w = np.concatenate([f[1] for f in fans])
-        if w.min(initial=0.0) >= -FAN_FOLD * size2:
+        if w.min(initial=0.0) >= -tol.FAN_FOLD * size2:
             return np.concatenate([f[0] for f in fans]), np.maximum(w, 0.0)
     return None
 

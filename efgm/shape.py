@@ -41,11 +41,6 @@ from contactcore import DiscretisationError
 from contactcore import tolerances as tol
 from contactcore.collective import launched_size
 
-#: A moment matrix is regular when ``det(A)/Π A_ii`` (its determinant once
-#: scaled to a unit diagonal) exceeds this.  Measured on grids with 2e4
-#: random points: at least 0.65 for the linear basis (dmax 1.5–2) and 1.4e-3
-#: for the quadratic one (dmax 2.5–3); nodes on one line give ~1e-16.
-MOMENT_REGULARITY = 1e-10
 
 #: Gauss points whose stiffness blocks are made together
 #: (:meth:`efgm.operators.Approximation.stiffness`): large enough to amortise
@@ -546,12 +541,12 @@ class MLS:
 
     def _check_regular(self, points, ratio, w, idx, per: int = 1) -> None:
         """A clear error at the first point whose moment matrix has a
-        :meth:`regularity` ``ratio`` below :data:`MOMENT_REGULARITY`
+        :meth:`regularity` ``ratio`` below :data:`contactcore.tolerances.MOMENT_REGULARITY`
         (``w`` (P, K) its weights, ``idx[p // per]`` the nodes of point p's
         columns).  It says whether the nodes in the support lie on one line
         (:func:`_on_one_line`), and names a body thinner than the node
         spacing where that is why (:meth:`_thin_body`)."""
-        bad = ~(ratio > MOMENT_REGULARITY)
+        bad = ~(ratio > tol.MOMENT_REGULARITY)
         if bad.any():
             i = int(np.flatnonzero(bad)[0])
             seen = np.asarray(idx[i // per])[w[i] > 0]

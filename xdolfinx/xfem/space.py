@@ -18,6 +18,7 @@ from petsc4py import PETSc
 
 from contactcore import DiscretisationError
 from contactcore import tolerances as tol
+from contactcore.tolerances import MIN_CUT_FRACTION  # which nodes are enriched, with its reason
 from contactcore.bodies import Body, index_of_sign
 from contactcore.geometry import Disc, LineInterface
 
@@ -25,25 +26,6 @@ from ..contact_system import GhostExchange
 from .cells import CellBasis
 from ..options import refinement
 from .cut import CutIntegration
-
-#: An enriched node is kept when the stiffness of its shape function on
-#: either side of Γ, ∫|∇N_J|² over that side's parts, exceeds this
-#: fraction of its stiffness over the cells Γ reaches (both sides: a node
-#: whose support lies on one side only would get an enrichment equal to its
-#: own function there).  Γ snapped to the nodes within
-#: contactcore.tolerances.XFEM_SNAP of it leaves no part thinner than that
-#: share of a cell; a corner that Γ clips farther out can still leave a
-#: small one.  Below it the enriched function lives on a sliver: its
-#: stiffness vanishes with the fraction and the matrix becomes singular
-#: (MUMPS found null pivots at 1e-13 and 1e-14 on 3 of 24 inclined Γ in
-#: scene A, quads P2); a fraction of ∫|N_J| instead of the stiffness drops
-#: nodes whose gradient still reaches across a corner.  Left out, the node
-#: carries its own side's value across the sliver: against enriching down
-#: to 1e-12, measured on the first 15 inclined Γ of
-#: tests/test_xfem_inclined.py, σ at the profiles' samples moves by at most
-#: 0.34 % of the profile's scale (P2 quads; 1e-7 elsewhere) and u by 1.2e-8,
-#: within the agreement bounds, so the run gives no warning.
-MIN_CUT_FRACTION = 1e-11
 
 
 @dataclass(frozen=True)
