@@ -67,8 +67,13 @@ def _beyond(shear: float, press: float, mu: float) -> bool:
 
 
 def _slides_off(name: str, shear: float, press: float, mu: float) -> str:
-    return (f"on Γ the loads ask for shear/normal = {shear / press:.3g} of body {name}, above μ = {mu:g}: "
-            "it slides off (no equilibrium); lower the shear load or raise μ")
+    """The refusal's words: the demand to 3 digits and μ to 6, or both to
+    as many digits as tell them apart (0.25 against μ = 0.2499999975)."""
+    ratio, digits = shear / press, 3
+    while digits < 17 and float(f"{ratio:.{digits}g}") <= float(f"{mu:.{max(digits, 6)}g}"):
+        digits += 1
+    return (f"on Γ the loads ask for shear/normal = {ratio:.{digits}g} of body {name}, above μ = "
+            f"{mu:.{max(digits, 6)}g}: it slides off (no equilibrium); lower the shear load or raise μ")
 
 
 def beyond_cone(scene, k: float) -> str:
