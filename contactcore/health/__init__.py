@@ -26,7 +26,8 @@ about points a converged path holds at stick beyond μ|t_N|.
 A method may refuse more before its solve: :func:`check_friction_springs`
 (EFGM) penalty Coulomb springs that dwarf the softer body.
 When an increment finds no equilibrium, :func:`friction_demand` and
-:func:`tie_cause` say whether the loads leave one.
+:func:`tie_cause` say whether the loads leave one; :func:`beyond_cone`
+refuses, before Newton, a Coulomb load whose resultant leaves the cone.
 
 One idea a module, each with its maths and sources:
 
@@ -52,7 +53,7 @@ stay in their home.
 """
 from .caveats import (closed_tension_warnings, dundurs_beta, dundurs_warnings, friction_excess_warnings,
                       material_warnings)
-from .equilibrium import friction_demand, tie_cause
+from .equilibrium import beyond_cone, friction_demand, tie_cause
 from .residual import (DIVERGED, NOT_CONVERGED, SHORT_OF_CHECK, backward_error, check_residual, options_chose,
                        relative_residual)
 from .restraint import FreeBody, check_held, check_restraint, lets_go, modes_centre, slips_free
@@ -69,5 +70,5 @@ __all__ = [
     # caveats
     "closed_tension_warnings", "dundurs_beta", "dundurs_warnings", "friction_excess_warnings", "material_warnings",
     # equilibrium
-    "friction_demand", "tie_cause",
+    "beyond_cone", "friction_demand", "tie_cause",
 ]

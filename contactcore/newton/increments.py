@@ -117,7 +117,15 @@ class _Newton(_Continuation, _Iteration, _Correction, _Statuses, _LineSearch, _C
         return bool(np.linalg.norm(half - f1 / 2) <= tol.PATH_STRAIGHT * np.linalg.norm(f1))
 
     def increment(self, n: int) -> None:
-        """Increment ``n`` (from ``n − 1``), halving it on failure."""
+        """Increment ``n`` (from ``n − 1``), halving it on failure; refused
+        before any step where the scene's loads leave Γ's friction cone
+        (:func:`contactcore.health.beyond_cone`): Newton's stick/slip band
+        would hold such a load at stick or not as round-off decides."""
+        beyond = health.beyond_cone(self.scene, float(n))
+        if beyond:
+            raise SolverError(f"scene {self.scene.name}: increment {n} of {self.scene.increments}: {beyond}\n  "
+                              f"(from the scene's loads, before Newton: a resultant beyond μ by more than "
+                              f"{tol.DEMAND_ROUNDOFF:g} of it has no equilibrium)")
         pending, failures, rest = [(float(n), 0)], [], False
         start = float(n - 1)
         while pending:
