@@ -50,7 +50,7 @@ from contactcore.scene import Units, check_resolution
 
 from . import files, methods, pool
 from .against_exact import exact_law, penalty_counterpart
-from .outcomes import attempt, health
+from .outcomes import Incomplete, attempt, health
 
 log = logging.getLogger("verification")
 
@@ -297,12 +297,15 @@ def check_given_once(field: str, values, name: str = "") -> None:
 
 def study(scene_name: str, params: list[tuple[str, list[float]]], method_names: list[str], out: Path, *,
           degree: int = 1, h: float | None = None, cell: str | None = None, workers: int | None = None,
-          allow_large: bool = False, argv=()) -> str:
+          allow_large: bool = False, strict: bool = False, argv=()) -> str:
     """Run the study over the Cartesian product of ``params`` ((name, values)
     pairs; the last varies fastest) on :mod:`verification.pool`, and write
     its table and plots; return the Markdown section.  Every point is
     checked first (:func:`check_points`), and unless ``allow_large`` each
-    point's solve against this machine's memory (:func:`check_sizes`)."""
+    point's solve against this machine's memory (:func:`check_sizes`).
+    A point that fails is a row with its message and the study goes on;
+    with ``strict`` (the CLI), once everything is written, any failed point
+    raises :class:`~verification.outcomes.Incomplete` (exit status 1)."""
     names = [p for p, _ in params]
     if len(set(names)) != len(names):
         raise SceneError("--param", f"each parameter may be given once (got {', '.join(names)})")
@@ -341,6 +344,10 @@ def study(scene_name: str, params: list[tuple[str, list[float]]], method_names: 
                                         "params": {p: list(v) for p, v in params},
                                         "methods": methods.expand(method_names), "degree": degree, "h": h,
                                         "workers": pool.workers_label(workers)})
+    failed = sum(r["status"] == "failed" for r in rows)
+    if strict and failed:
+        raise Incomplete(f"study: {failed} of {len(rows)} points failed; the study is written, each failed row "
+                         "of study.csv says why")
     return text
 
 

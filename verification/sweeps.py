@@ -51,7 +51,7 @@ from contactcore.discretisation import Reuse
 from . import files, pool
 from .closed_forms import interface_patch, layered_slip, pressurised_rod, twisted_rod
 from .norms import l2_error, max_errors
-from .outcomes import accuracy_bound, attempt, classify, health
+from .outcomes import Incomplete, accuracy_bound, attempt, classify, health
 
 log = logging.getLogger("verification")
 
@@ -346,10 +346,13 @@ def _sweep_by_name(name: str, degree: int, method_names) -> list[dict]:
 
 
 def run_sweeps(out: Path, names=None, method_names=None, degree: int = 1, workers: int | None = None,
-               argv=()) -> str:
+               argv=(), strict: bool = False) -> str:
     """Run the sweeps (all, or those named), one case each on
     :mod:`verification.pool`, write the tables and plots, and return the
-    Markdown section."""
+    Markdown section.  A *refused* or *warned* case is data (the sweeps map
+    where each method stops); a *wrong* one is a bug: with ``strict`` (the
+    CLI), once everything is written, it raises
+    :class:`~verification.outcomes.Incomplete` (exit status 1)."""
     selected = [s for s in sweeps() if names is None or s.name in names]
     rows = []
     runs = pool.map_cases(functools.partial(_sweep_by_name, degree=degree, method_names=method_names),
@@ -363,4 +366,8 @@ def run_sweeps(out: Path, names=None, method_names=None, degree: int = 1, worker
     text = markdown(rows, selected)
     files.write_text(Path(out) / "sweeps.md", text)
     files.write_json(Path(out) / "run.json", files.provenance(list(argv)))
+    wrong = sum(r["outcome"] == "wrong" for r in rows)
+    if strict and wrong:
+        raise Incomplete(f"sweeps: {wrong} of {len(rows)} cases are wrong (beyond the bound with no warning: a "
+                         "bug; their rows in sweeps.csv)")
     return text

@@ -91,14 +91,15 @@ def effectivity(args, argv) -> None:
 def sweeps(args, argv) -> None:
     """``sweeps``: the stiff and extreme cases (:func:`verification.sweeps.run_sweeps`)."""
     from ..sweeps import run_sweeps
-    run_sweeps(args.out, args.sweep, methods.expand(args.method), args.degree, workers=args.workers, argv=argv)
+    run_sweeps(args.out, args.sweep, methods.expand(args.method), args.degree, workers=args.workers, argv=argv,
+               strict=True)
 
 
 def study(args, argv) -> None:
     """``study``: inputs varied over their product (:func:`verification.study.study`)."""
     from ..study import study as vary
     vary(args.scene, study_params(args), args.method, args.out, degree=args.degree, h=args.h,
-         cell=args.cell, workers=args.workers, allow_large=args.allow_large, argv=argv)
+         cell=args.cell, workers=args.workers, allow_large=args.allow_large, strict=True, argv=argv)
 
 
 def report(args, argv) -> None:
