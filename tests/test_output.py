@@ -400,3 +400,21 @@ def test_run_json_records_the_h_that_ran(tmp_path):
     assert json.loads((out / "run.json").read_text())["h"] == ran == 0.2
     assert main(["run", "A", "--method", "efgm", "--paper", "--no-plots", "-q", "--out", str(out)]) == 0
     assert json.loads((out / "run.json").read_text())["h"] is None
+
+
+@pytest.mark.parametrize("param, values, unit", [("h", ["0.5", "0.25"], "mm"), ("angle", ["0", "5"], "degree"),
+                                                 ("E_minus", ["1e9", "2e9"], "MPa")])
+def test_a_one_parameter_studys_column_carries_its_unit(tmp_path, a_in_mpa, param, values, unit):
+    """grader11's fault 4: a one-parameter study named its column ``value``,
+    with no unit in units.json, and study.md's header was a bare ``h``:
+    the column is named after the parameter, units.json and study.md's
+    header give its unit."""
+    import csv
+    from verification import files
+    out = tmp_path / "s"
+    assert main(["study", str(a_in_mpa), "--param", param, "--values", *values, "--method", "fe", "--h", "0.5", "-q",
+                 "--out", str(out)]) == 0
+    with open(out / "study.csv") as fh:
+        assert next(csv.reader(fh))[0] == param
+    assert json.loads((out / files.UNITS_FILE).read_text())["study.csv"][param] == unit
+    assert f"| {param} ({unit}) | method |" in (out / "study.md").read_text()

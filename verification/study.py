@@ -240,9 +240,11 @@ STATS = ["method", "degree", "status", "dofs", "total", "condition", "backward_e
 
 
 def point_columns(params: list[str]) -> list[str]:
-    """The columns naming a point: ``value`` for a one-parameter study (its
-    table as before), else one column per parameter, named after it."""
-    return ["value"] if len(params) == 1 else list(params)
+    """The columns naming a point: one per parameter, named after it, so
+    that ``units.json`` and study.md give each its unit
+    (:func:`verification.files.column_unit`: ``h (mm)``, ``angle (degree)``;
+    a one-parameter study's was ``value``, with none: grader11's fault 4)."""
+    return list(params)
 
 
 @dataclass(frozen=True)
@@ -406,7 +408,8 @@ def markdown(scene_name: str, names: list[str], rows: list[dict], units: Units =
     return (f"## Study: scene {scene_name}, {what}\n\n"
             + "".join(f"![study {p}]({_plot_name(names, p)})\n" for p in names) + "\n"
             + files.markdown_table(rows, [*labels, "method", "status", "dofs", "total", *OUTPUTS, "message"],
-                                   [*names, "method", "status", "DOFs", "total (s)",
+                                   [*(files.labelled(p, p, units) for p in names), "method", "status", "DOFs",
+                                    "total (s)",
                                     *(files.labelled(text, q, units) for text, q in zip(OUTPUT_HEADERS, OUTPUTS)),
                                     "message"])
             + (f"\n{len(failed)} of {len(rows)} points failed; the study went on.\n" if failed else ""))
