@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import csv
 import itertools
+import json
 import os
 import shutil
 import subprocess
@@ -104,7 +105,9 @@ def test_a_failing_point_is_recorded_and_the_pool_goes_on(tmp_path, capsys):
     assert [(r["radius"], float(r["kN"]), r["status"] != "failed") for r in rows] == [
         ("0.2", 1e25, False), ("0.2", 1e9, True), ("0.2", 1e10, True)]
     assert "too stiff for double precision" in rows[0]["message"]
-    assert "1 of 3 points failed" in (tmp_path / "study.md").read_text()
+    text = (tmp_path / "study.md").read_text()
+    assert "1 of 3 points failed" in text and "measured by 2 workers at once" in text  # grader11 #3
+    assert json.loads((tmp_path / "run.json").read_text())["workers"] == "2 workers"
 
 
 @pytest.mark.parametrize("args, message", [

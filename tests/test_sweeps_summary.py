@@ -1,6 +1,8 @@
 """sweeps.md's "range handled" (grader2 item 9): refused values on both
 sides of the accurate ones were written "refused: 1e-12 … 1e+12 (3
 values)", a range claiming the whole span refused."""
+import json
+
 from verification import files
 from verification.sweeps import handled_range
 
@@ -41,7 +43,9 @@ def test_a_wrong_case_ends_the_sweeps_with_status_1_and_refusals_do_not(tmp_path
     from verification.__main__ import main
     argv = ["sweeps", "--sweep", "kN_patch", "--method", "efgm"]
     assert main([*argv, "--out", str(tmp_path / "ok")]) == 0
-    assert "refused" in (tmp_path / "ok" / "sweeps.md").read_text()
+    text = (tmp_path / "ok" / "sweeps.md").read_text()
+    assert "refused" in text and "measured by 1 worker at once" in text  # grader11 #3
+    assert json.loads((tmp_path / "ok" / "run.json").read_text())["workers"] == "1 worker"
     monkeypatch.setattr(sweeps, "classify", lambda *_: "wrong")
     capsys.readouterr()
     assert main([*argv, "--out", str(tmp_path / "bad")]) == 1

@@ -339,7 +339,7 @@ def study(scene_name: str, params: list[tuple[str, list[float]]], method_names: 
     files.write_csv(out / "study.csv", rows, [*labels, *STATS])
     for param, label in zip(names, labels):
         _plot(out / _plot_name(names, param), base, param, label, [lb for lb in labels if lb != label], rows)
-    text = markdown(base.name, names, rows, base.units)
+    text = markdown(base.name, names, rows, base.units, pool.workers_label(workers))
     files.write_text(out / "study.md", text)
     files.write_text(out / files.SCENE_FILE, scene_text(scene_name))  # the units of study.csv's columns
     files.write_json(out / "run.json", {**files.provenance(list(argv)), "scene": base.name,
@@ -400,13 +400,17 @@ def _plot_name(names: list[str], param: str) -> str:
     return "study.png" if len(names) == 1 else f"study_{param}.png"
 
 
-def markdown(scene_name: str, names: list[str], rows: list[dict], units: Units = Units()) -> str:
-    """The study's section: its plots and its table, in the scene's ``units``."""
+def markdown(scene_name: str, names: list[str], rows: list[dict], units: Units = Units(),
+             measured_by: str = "1 worker") -> str:
+    """The study's section: its plots and its table, in the scene's
+    ``units``, and how many workers measured its times (``measured_by``,
+    :func:`verification.pool.workers_label`)."""
     failed = [r for r in rows if r["status"] == "failed"]
     what = " × ".join(f"{p} ({described(p, units)})" for p in names)
     labels = point_columns(names)
     return (f"## Study: scene {scene_name}, {what}\n\n"
             + "".join(f"![study {p}]({_plot_name(names, p)})\n" for p in names) + "\n"
+            + f"Times in s, measured by {measured_by} at once (cases beside each other share the cores).\n\n"
             + files.markdown_table(rows, [*labels, "method", "status", "dofs", "total", *OUTPUTS, "message"],
                                    [*(files.labelled(p, p, units) for p in names), "method", "status", "DOFs",
                                     "total (s)",
