@@ -56,6 +56,7 @@ def test_the_table_names_what_it_left_out_and_matches_the_drivers_measure():
 
 
 def test_the_helper_passes_at_the_worst_difference_and_fails_just_below_it():
+    from verification.files import column_unit
     scene = load_scene("A")
     worst = compare(scene, ["xfem:1"], COARSE_H).worst()
     assert_methods_agree(scene, ["xfem:1"], COARSE_H, rtol=worst.worst)
@@ -63,7 +64,8 @@ def test_the_helper_passes_at_the_worst_difference_and_fails_just_below_it():
         assert_methods_agree(scene, ["xfem:1"], COARSE_H, rtol=0.99 * worst.worst)
     first = str(failure.value).splitlines()[0]
     assert f"xfem p1 against fe p2: {worst.profile} {worst.quantity} at s = {worst.s:.4g}" in first
-    assert f"{worst.value:.4g} against {worst.reference:.4g}" in first
+    unit = column_unit(worst.quantity)  # each value with its unit (grader11 #7)
+    assert f"{worst.value:.4g} {unit} against {worst.reference:.4g} {unit}" in first
 
 
 def test_the_helpers_rms_is_the_relative_rms_of_the_drivers():

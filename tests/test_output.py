@@ -418,3 +418,15 @@ def test_a_one_parameter_studys_column_carries_its_unit(tmp_path, a_in_mpa, para
         assert next(csv.reader(fh))[0] == param
     assert json.loads((out / files.UNITS_FILE).read_text())["study.csv"][param] == unit
     assert f"| {param} ({unit}) | method |" in (out / "study.md").read_text()
+
+
+def test_the_agreement_messages_give_the_scenes_units(a_in_mpa):
+    """grader11's fault 7: assert_methods_agree's and describe()'s lines
+    gave s, x, y and both values without units on an mm/MPa scene."""
+    from verification.agreement import assert_methods_agree, compare
+    worst = compare(a_in_mpa, ["xfem"], 0.25, reference="fe:1").worst()
+    unit = "mm" if worst.quantity in ("ux", "uy", "gN", "gT") else "MPa"
+    assert re.search(rf" at s = \S+ mm \(x = \S+ mm, y = \S+ mm\): \S+ {unit} against \S+ {unit}, a difference",
+                     worst.describe()), worst.describe()
+    with pytest.raises(AssertionError, match=r"at s = \S+ mm \(x = \S+ mm, y = \S+ mm\): \S+ (mm|MPa) against"):
+        assert_methods_agree(a_in_mpa, ["xfem"], 0.25, rtol=worst.worst / 2, reference="fe:1")
