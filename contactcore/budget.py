@@ -33,6 +33,13 @@ BYTES_PER_HISTORY_POINT = 64
 #: Fraction of the machine's memory a run may plan to use.
 MEMORY_SHARE = 0.8
 
+#: Resident bytes of one process before its cases' own sizes: a Python
+#: that has imported every method (dolfinx, PETSc, gmsh) and solved scene A
+#: at h = 0.2 with each peaks at 0.19 GB (2026-11-28, ``/usr/bin/time -f
+#: %M``); rounded up.  A pool of ``--workers K`` or mpirun's K ranks holds
+#: K of them (:func:`check_processes`).
+BYTES_PER_PROCESS = 250e6
+
 
 class TooLargeError(ContactError):
     """A run that would not fit in the machine's memory."""
@@ -72,6 +79,20 @@ def estimate(scene, h: float, degree: int, method: str) -> Estimate:
     solves = scene.increments * (1 if scene.law.is_linear else 3) if followed else 1
     memory = BYTES_PER_UNKNOWN * unknowns + BYTES_PER_HISTORY_POINT * gamma_points * solves
     return Estimate(unknowns, memory, solves)
+
+
+def check_processes(count: int, field: str, offer_allow_large: bool = True) -> None:
+    """A :class:`TooLargeError` when ``count`` processes (a pool's workers,
+    mpirun's ranks; ``field`` the option that asked for them) would hold
+    more than MEMORY_SHARE of this machine's memory at
+    :data:`BYTES_PER_PROCESS` each, before any case's own memory (the
+    message offers ``--allow-large`` where the command has it)."""
+    have = MEMORY_SHARE * machine_memory()
+    if count * BYTES_PER_PROCESS > have:
+        raise TooLargeError(f"{field} {count}: about {count * BYTES_PER_PROCESS / 1e9:.3g} GB for the processes "
+                            f"alone ({BYTES_PER_PROCESS / 1e9:.2g} GB each, before any solve), against "
+                            f"{have / 1e9:.3g} GB usable on this machine ({os.cpu_count()} cores); use fewer"
+                            + (", or pass --allow-large to try anyway" if offer_allow_large else ""))
 
 
 def check_budget(scene, h: float, degree: int, method: str, field: str = "--h") -> Estimate:

@@ -548,3 +548,19 @@ def test_the_start_up_handler_knows_its_command_in_every_spelling(monkeypatch, o
     monkeypatch.setattr(sys, "argv", ["-m"])
     monkeypatch.setattr(sys, "orig_argv", orig)
     assert verification._run_as_the_command() is ours
+
+
+def test_two_series_failing_at_one_value_both_show():
+    """grader11's fault 7: fe's dotted failure line lay exactly under
+    xfem's; each series dashes it in its own phase, so both colours show."""
+    fig = plots.pyplot().figure()
+    ax = fig.add_subplot()
+    for slot, method in enumerate(("fe", "xfem")):
+        rows = [{"value": 1.0, "method": method, "status": "failed", **dict.fromkeys(study.OUTPUTS, 1.0)}]
+        study._mark(ax, "value", "tN", 1.0, rows, f"C{slot}", slot, 2)
+    fe, xfem = ax.get_lines()
+    assert list(fe.get_xdata()) == list(xfem.get_xdata())
+    (fe_offset, fe_dashes), (xfem_offset, xfem_dashes) = fe._unscaled_dash_pattern, xfem._unscaled_dash_pattern
+    assert fe_dashes == xfem_dashes and fe_dashes[0] == fe_dashes[1]  # a dash, a gap as long
+    assert xfem_offset - fe_offset == fe_dashes[0]  # xfem's dashes fill fe's gaps
+    plots.pyplot().close(fig)

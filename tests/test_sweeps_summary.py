@@ -1,6 +1,8 @@
 """sweeps.md's "range handled" (grader2 item 9): refused values on both
 sides of the accurate ones were written "refused: 1e-12 … 1e+12 (3
 values)", a range claiming the whole span refused."""
+import json
+
 from verification import files
 from verification.sweeps import handled_range
 
@@ -30,3 +32,22 @@ def test_names_keep_the_sweeps_order():
     rows = [{"value": "b", "outcome": "accurate"}, {"value": "a", "outcome": "refused"},
             {"value": "c", "outcome": "accurate"}]
     assert handled_range(rows) == "accurate: b, c; refused: a"
+
+
+def test_a_wrong_case_ends_the_sweeps_with_status_1_and_refusals_do_not(tmp_path, capsys, monkeypatch):
+    """A sweep's *refused* and *warned* cases are data (exit 0: kN_patch
+    refuses efgm at 1e-12 and 1e10); a *wrong* one is a bug: the sweeps are
+    written whole, then one line and exit status 1, as a study with a failed
+    point (grader11's fault 2)."""
+    from verification import sweeps
+    from verification.__main__ import main
+    argv = ["sweeps", "--sweep", "kN_patch", "--method", "efgm"]
+    assert main([*argv, "--out", str(tmp_path / "ok")]) == 0
+    text = (tmp_path / "ok" / "sweeps.md").read_text()
+    assert "refused" in text and "measured by 1 worker at once" in text  # grader11 #3
+    assert json.loads((tmp_path / "ok" / "run.json").read_text())["workers"] == "1 worker"
+    monkeypatch.setattr(sweeps, "classify", lambda *_: "wrong")
+    capsys.readouterr()
+    assert main([*argv, "--out", str(tmp_path / "bad")]) == 1
+    assert capsys.readouterr().err.strip().splitlines()[-1].startswith("sweeps: 17 of 17 cases are wrong")
+    assert "wrong" in (tmp_path / "bad" / "sweeps.md").read_text()

@@ -52,6 +52,7 @@ import logging
 from contactcore import ContactError
 
 from . import janitor, petsc_env
+from .outcomes import INCOMPLETE_STATUS, Incomplete
 from .cli.checks import check
 from .cli.commands import Command, commands
 from .cli.folders import result_folder, sign
@@ -68,7 +69,9 @@ def main(argv=None) -> int:
     """``python -m verification COMMAND ...`` (``argv``, default
     ``sys.argv[1:]``): the exit status, 0 when the command succeeded, 2
     after one ``error:`` line for bad input or a refused run (every
-    :class:`ContactError`), and Ctrl-C's or SIGTERM's status after its line
+    :class:`ContactError`), 1 after one line when the command wrote its
+    results but part of them failed (:class:`~verification.outcomes.Incomplete`:
+    a study point, a *wrong* sweep case), and Ctrl-C's or SIGTERM's status after its line
     (the result folder under way discarded); argparse's own refusals exit 2
     by ``SystemExit``.  Any other exception is a bug, and propagates."""
     argv = sys.argv[1:] if argv is None else argv
@@ -88,6 +91,11 @@ def main(argv=None) -> int:
         with signals_end_the_command(rank, distributed()):
             _main(args, argv, command, rank)
         print_repeats(repeats)
+    except Incomplete as exc:  # the results are in place; part of them failed
+        print_repeats(repeats)
+        if rank == 0:
+            print(str(exc), file=sys.stderr)
+        return INCOMPLETE_STATUS
     except ContactError as exc:
         print_repeats(repeats)
         if rank == 0:  # every rank meets the same error (Newton's decisions are collective): one line
@@ -128,12 +136,18 @@ def _main(args, argv, command: Command, rank: int) -> None:
         command.run(args, argv)
         return
     final = args.out
+    incomplete = None
     with result_folder(final, rank, distributed()) as folder:
         args.out = folder
-        command.run(args, argv)
+        try:
+            command.run(args, argv)
+        except Incomplete as exc:  # written whole: the folder goes in place, then the status says it
+            incomplete = exc
         if rank == 0:
             sign(folder, argv)
     log.info("wrote %s", final)
+    if incomplete is not None:
+        raise incomplete
 
 
 def _abort_on(exc: BaseException) -> None:

@@ -22,6 +22,19 @@ from contactcore import ContactError
 from contactcore import tolerances as tol
 
 
+#: The exit status of a command that wrote its results but could not
+#: compute all it was asked for (:class:`Incomplete`): a study with a failed
+#: point, a sweep with a *wrong* case.  Bad input and refused runs exit 2.
+INCOMPLETE_STATUS = 1
+
+
+class Incomplete(Exception):
+    """Raised by a driver asked to be ``strict``, after it has written all
+    its results, when part of what it was asked for failed (a study point
+    that did not solve, a sweep case that was *wrong*): the command puts its
+    folder in place, says this line and exits :data:`INCOMPLETE_STATUS`."""
+
+
 @dataclass
 class Attempt:
     """A solve that was tried: its result, or the message that refused it."""

@@ -28,6 +28,7 @@ from contactcore import ContactError, load_scene
 
 from . import files
 from .timing import COLUMNS as TIMING_COLUMNS
+from .timing import check_budgets
 
 log = logging.getLogger("verification")
 
@@ -60,7 +61,7 @@ def _timing_run(ranks: int, scene: str, method_names, degrees, hs, folder: Path)
     env.update(ONE_THREAD)
     command = launcher(ranks) + [sys.executable, "-m", "verification", "timing", scene, "--method", *method_names,
                                  "--degree", *map(str, degrees), "--h", *map(repr, hs), "--out", str(folder),
-                                 "--quiet"]
+                                 "--quiet", "--allow-large"]  # checked before the launch (scaling)
     log.info("scaling: %s", " ".join(command))
     done = subprocess.run(command, capture_output=True, text=True, env=env, stdin=subprocess.DEVNULL)
     if done.returncode != 0:
@@ -93,10 +94,15 @@ def speedups(rows: list[dict]) -> list[dict]:
     return out
 
 
-def scaling(scene: str, method_names, degrees, hs, ranks, out: Path, argv=()) -> list[dict]:
-    """The ladder on each rank count of ``ranks`` (module doc)."""
+def scaling(scene: str, method_names, degrees, hs, ranks, out: Path, argv=(), allow_large: bool = False) -> list[dict]:
+    """The ladder on each rank count of ``ranks`` (module doc).  Unless
+    ``allow_large``, every rung must fit the machine, checked here before
+    any launch (:func:`verification.timing.check_budgets`)."""
     out = Path(out)
-    rows, units = [], load_scene(scene).units  # scaling.csv's h, in units.json (read before any run)
+    loaded = load_scene(scene)
+    rows, units = [], loaded.units  # scaling.csv's h, in units.json (read before any run)
+    if not allow_large:
+        check_budgets([loaded], method_names, degrees, hs)
     for k in ranks:
         rows += [{"ranks": k, **row} for row in _timing_run(k, scene, method_names, degrees, hs, out / f"ranks_{k}")]
     rows = speedups(rows)

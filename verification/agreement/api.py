@@ -1,17 +1,20 @@
 """The public agreement check: :func:`compare` solves a scene with several
 methods and a reference and returns the
 :class:`~verification.agreement.tables.AgreementTable`;
-:func:`assert_methods_agree` is the pytest helper built on it
-(docs/api.md).  Its arguments are refused before any solve: the methods
+:func:`assert_methods_agree` is the pytest helper built on it;
+:func:`compare_estimates` asks, without a reference, whether two methods
+differ by more than their estimated errors (docs/api.md).  Its arguments are refused before any solve: the methods
 (:func:`variant`, :func:`compared_variants`), ``rtol`` and ``measure``
 (:func:`check_rtol`), the floors and the exclusion."""
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 from contactcore import ContactError, Scene, load_scene, sample_profiles
 
-from .samples import check_exclusion
+from .estimates import within_estimates
+from .samples import check_exclusion, default_exclusion
 from .sizes import user_floors
 from .tables import AgreementTable, table
 
@@ -127,3 +130,74 @@ def assert_methods_agree(scene, methods, h: float | None = None, rtol: float = 0
                              f"rtol = {rtol:g} ({measure}): " + "\n".join(lines)
                              + f"\n({result.excluded()})")
     return result
+
+
+@dataclass(frozen=True)
+class EstimateVerdict:
+    """Two methods' profile quantity against their estimated errors
+    (:func:`compare_estimates`): ``ratio`` is ``RMS(q_a − q_b) / RMS(e_a +
+    e_b)`` over the kept samples (a difference below the quantity's floor
+    or round-off counts as within), and ``beyond`` whether it exceeds 1:
+    the methods differ by more than their estimated errors allow, so at
+    least one estimate is too small there (that difference is not
+    resolution)."""
+
+    methods: tuple[str, str]  # their labels, "xfem p1"
+    profile: str
+    quantity: str
+    ratio: float
+    beyond: bool
+
+
+def compare_estimates(scene, methods, h: float | None = None, *, levels: int = 2, exclude: float | None = None,
+                      floors: dict | None = None, **options) -> list[EstimateVerdict]:
+    """Whether each pair of ``methods`` differs by more than the sum of
+    their estimated errors, per profile and quantity of ``scene`` (a Scene,
+    a shipped scene's name or a TOML path): each method (``"fe"``,
+    ``"xfem:2"``, ``("efgm", 2)``, ...) solved at ``h`` (default the
+    scene's), ``h/2`` (and ``h/4`` with ``levels=3``), its finest run's
+    errors estimated by :func:`contactcore.estimate.estimate_runs`, and
+    every pair compared by :func:`within_estimates` (what ``run
+    --estimate`` writes under "Agreement within the estimated errors").
+    Returns one :class:`EstimateVerdict` per pair (in the order given),
+    profile and quantity; no reference is solved.  ``exclude`` (default
+    :func:`default_exclusion`) leaves out the samples near singular
+    points, ``floors`` (quantity -> value in its unit) the differences
+    below them; ``options`` go to the methods that take them.  Fewer
+    than two distinct methods, a method given twice, ``levels`` other
+    than 2 or 3, a bad floor, exclusion or option are refused with a
+    :class:`ContactError` before any solve."""
+    from contactcore import estimate as est
+    from .. import methods as known
+    user_floors(floors)
+    scene = load_scene(scene)
+    if isinstance(methods, str):
+        raise ContactError(f"methods: a list of methods, not one string (got {methods!r}; write [{methods!r}])")
+    variants = [variant(m) for m in methods]
+    if len(set(variants)) != len(variants):
+        raise ContactError(f"methods: each may be given once (got {', '.join(label(*v) for v in variants)})")
+    if len(variants) < 2:
+        raise ContactError(f"methods: name at least two to compare (got {len(variants)})")
+    if levels not in (2, 3):
+        raise ContactError(f"levels: must be 2 (h, h/2) or 3 (h, h/2, h/4) (got {levels!r})")
+    if exclude is not None:
+        check_exclusion(scene, exclude)
+    exclude = default_exclusion(scene) if exclude is None else exclude
+    h = scene.h if h is None else h
+    if h is None:
+        raise ContactError(f"h: scene {scene.name} gives no h; pass one")
+    known.check_options(sorted({n for n, _ in variants}), **options)
+    runs = {}
+    for name, degree in variants:
+        solve = known.solver(name)
+        results = [solve(scene, hk, degree=degree, **known.options_for(name, **options))
+                   for hk in est.levels_of(h, levels)]
+        estimate = est.estimate_runs(scene, results, exclude)
+        profiles = sampled(scene, results[-1])
+        runs[label(name, degree)] = (profiles, {pid: estimate.error_columns(pid) for pid in profiles})
+    names, verdicts = list(runs), []
+    for i, a in enumerate(names):
+        for b in names[i + 1:]:
+            verdicts += [EstimateVerdict((a, b), pid, q, ratio, beyond)
+                         for pid, q, ratio, beyond in within_estimates(scene, *runs[a], *runs[b], exclude, floors)]
+    return verdicts

@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 
 from contactcore import ContactError, load_scene
+from contactcore.budget import check_processes
 
 from .. import methods
 
@@ -54,10 +55,14 @@ def check_sizes(args) -> None:
 
 
 def check_workers(args) -> None:
-    """``--workers``: at least 1."""
+    """``--workers``: at least 1, and (unless ``--allow-large``) no more
+    processes than this machine's memory holds
+    (:func:`contactcore.budget.check_processes`)."""
     workers = getattr(args, "workers", None)
     if workers is not None and workers < 1:
         raise ContactError(f"--workers: must be at least 1 (got {workers})")
+    if workers is not None and not getattr(args, "allow_large", False):
+        check_processes(workers, "--workers", hasattr(args, "allow_large"))
 
 
 def check_counts(args) -> None:
@@ -93,3 +98,5 @@ def check_ranks_list(args) -> None:
     """``scaling``'s ``--ranks``: every rank count at least 1."""
     if any(k < 1 for k in getattr(args, "ranks", None) or ()):
         raise ContactError(f"--ranks: every rank count must be at least 1 (got {args.ranks})")
+    if getattr(args, "ranks", None) and not getattr(args, "allow_large", False):
+        check_processes(max(args.ranks), "--ranks", hasattr(args, "allow_large"))

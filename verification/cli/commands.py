@@ -120,7 +120,7 @@ def commands() -> dict[str, Command]:
             out), runners.run, "spread"),
         "paper": Command("the paper's figures and an agreement table against a refined reference", (
             scenes, arg("--ref-h", type=float, help="cell size of the P2 reference (default: a quarter of the "
-                                                    "scene's h)"), out, workers), runners.paper),
+                                                    "scene's h)"), out, workers, allow_large), runners.paper),
         "closed": Command("closed-form cases on refinement ladders, with observed rates", (
             arg("--case", nargs="+", default=list(CASES), choices=list(CASES), help="the cases (default: all)"),
             method, arg("--degree", nargs="+", type=int, default=[1, 2], choices=(1, 2),
@@ -161,17 +161,17 @@ def commands() -> dict[str, Command]:
             scenes, out, workers), runners.benchmark),
         "timing": Command("wall time against DOFs on a ladder of resolutions", (
             arg("scene", nargs="+", help="one or more scenes, measured in one run (e.g. C C-coulomb)"),
-            method, degrees, ladder, out), runners.timing, "spread"),
+            method, degrees, ladder, out, allow_large), runners.timing, "spread"),
         "shapes": Command("EFGM's shape functions with gradients: points per second", (
             arg("--basis", nargs="+", default=["linear", "quadratic"], choices=["linear", "quadratic"],
                 help="the MLS bases (default: both)"),
             arg("--grid", type=int, default=101, help="nodes per side of the unit square (default 101)"),
             arg("--points", type=int, default=200_000, help="random points evaluated (default 200000)"),
             arg("--repeats", type=int, default=5, help="timed evaluations; the median is reported (default 5)"),
-            out), runners.shapes, "spread"),
+            out, allow_large), runners.shapes, "spread"),
         "scaling": Command("strong scaling: the timing ladder under mpirun on each rank count, one BLAS thread "
                            "per rank", (
             arg("scene", help="built-in scene name or a scene TOML file"), method, degrees, ladder,
-            arg("--ranks", nargs="+", type=int, default=[1, 2], help="rank counts (default 1 2)"), out),
+            arg("--ranks", nargs="+", type=int, default=[1, 2], help="rank counts (default 1 2)"), out, allow_large),
             runners.scaling, "launcher"),
     }

@@ -45,7 +45,7 @@ def run(args, argv) -> None:
 def paper(args, argv) -> None:
     """``paper``: the paper's figures (:func:`verification.paper.paper`)."""
     from ..paper import paper as figures
-    figures(args.out, tuple(args.scene), args.ref_h, workers=args.workers, argv=argv)
+    figures(args.out, tuple(args.scene), args.ref_h, workers=args.workers, argv=argv, allow_large=args.allow_large)
 
 
 def closed(args, argv) -> None:
@@ -91,14 +91,15 @@ def effectivity(args, argv) -> None:
 def sweeps(args, argv) -> None:
     """``sweeps``: the stiff and extreme cases (:func:`verification.sweeps.run_sweeps`)."""
     from ..sweeps import run_sweeps
-    run_sweeps(args.out, args.sweep, methods.expand(args.method), args.degree, workers=args.workers, argv=argv)
+    run_sweeps(args.out, args.sweep, methods.expand(args.method), args.degree, workers=args.workers, argv=argv,
+               strict=True)
 
 
 def study(args, argv) -> None:
     """``study``: inputs varied over their product (:func:`verification.study.study`)."""
     from ..study import study as vary
     vary(args.scene, study_params(args), args.method, args.out, degree=args.degree, h=args.h,
-         cell=args.cell, workers=args.workers, allow_large=args.allow_large, argv=argv)
+         cell=args.cell, workers=args.workers, allow_large=args.allow_large, strict=True, argv=argv)
 
 
 def report(args, argv) -> None:
@@ -110,16 +111,17 @@ def report(args, argv) -> None:
 def timing(args, argv) -> None:
     """``timing``: wall time against DOFs (:func:`verification.timing.timing`)."""
     from ..timing import timing as measure
-    measure(args.scene, args.method, args.degree, args.h, args.out, argv=argv)
+    measure(args.scene, args.method, args.degree, args.h, args.out, argv=argv, allow_large=args.allow_large)
 
 
 def shapes(args, argv) -> None:
     """``shapes``: EFGM's shape functions timed (:func:`verification.shapes.shapes`)."""
     from ..shapes import shapes as measure
-    measure(args.basis, args.grid, args.points, args.repeats, args.out, argv=argv)
+    measure(args.basis, args.grid, args.points, args.repeats, args.out, argv=argv, allow_large=args.allow_large)
 
 
 def scaling(args, argv) -> None:
     """``scaling``: the timing ladder under mpirun (:func:`verification.scaling.scaling`)."""
     from ..scaling import scaling as measure
-    measure(args.scene, methods.expand(args.method), args.degree, args.h, args.ranks, args.out, argv=argv)
+    measure(args.scene, methods.expand(args.method), args.degree, args.h, args.ranks, args.out, argv=argv,
+            allow_large=args.allow_large)
