@@ -43,6 +43,14 @@ from .stiffness import _springs
 #: non-collinear points suffice; more make the check independent of them).
 _SUPPORT_SAMPLES = 16
 
+#: Points per support boundary searched for a body's part of it that the
+#: coarse samples miss: Γ crossing an edge within 1/(2·_SUPPORT_SAMPLES)
+#: of its end leaves that body's part of the support unsampled, and the
+#: body was taken for held by Γ alone (review5: a block clamped on the top
+#: 0.03 of its left edge refused as "slides off (no equilibrium)", and
+#: Newton steered as for a free body).  Such a part is sampled this finely.
+_SUPPORT_SEARCH = 1024
+
 
 def _frictionless(scene) -> bool:
     """A Coulomb law with μ = 0: every closed point slips, Γ holds no shear."""
@@ -79,9 +87,9 @@ def _mode_matrix(x, centre, L) -> np.ndarray:
     return np.array([[1.0, 0.0, -d[1]], [0.0, 1.0, d[0]]])
 
 
-def _boundary_points(domain, name: str) -> np.ndarray:
-    """Evenly spaced points on the named boundary (an edge, or the rim)."""
-    s = (np.arange(_SUPPORT_SAMPLES) + 0.5) / _SUPPORT_SAMPLES
+def _boundary_points(domain, name: str, count: int = _SUPPORT_SAMPLES) -> np.ndarray:
+    """``count`` evenly spaced points on the named boundary (an edge, or the rim)."""
+    s = (np.arange(count) + 0.5) / count
     if isinstance(domain, Disc):
         a = 2 * np.pi * s
         return np.column_stack([domain.centre[0] + domain.radius * np.cos(a),
@@ -89,6 +97,24 @@ def _boundary_points(domain, name: str) -> np.ndarray:
     c = domain.corners
     i, j = {"bottom": (0, 1), "right": (1, 2), "top": (2, 3), "left": (3, 0)}[name]
     return c[i] + s[:, None] * (c[j] - c[i])
+
+
+def _support_samples(scene, support) -> list:
+    """``(points, fix, weight)`` of a support: its boundary's
+    :data:`_SUPPORT_SAMPLES` points (weight 1/count each, a mean over the
+    boundary), and, for a body whose part of the boundary none of them
+    lies on, that part's points among :data:`_SUPPORT_SEARCH` (weight
+    1/_SUPPORT_SEARCH each): a support holds each body along its part of
+    the edge, however short."""
+    dom = scene.domain
+    coarse = _boundary_points(dom, support.boundary)
+    out = [(coarse, support.fix, 1.0 / _SUPPORT_SAMPLES)]
+    fine = _boundary_points(dom, support.boundary, _SUPPORT_SEARCH)
+    found, on = set(scene.body_of(coarse).tolist()), scene.body_of(fine)
+    for b in (0, 1):
+        if b not in found and np.any(on == b):
+            out.append((fine[on == b], support.fix, 1.0 / _SUPPORT_SEARCH))
+    return out
 
 
 def _restraint(scene, interface_points, interface_weights, holding=None,
@@ -105,7 +131,9 @@ def _restraint(scene, interface_points, interface_weights, holding=None,
     centre = modes_centre(dom)
     L = scene.length_scale
     Q = np.zeros((6, 6))
-    held = [(_boundary_points(dom, s.boundary), s.fix, 1.0 / _SUPPORT_SAMPLES) for s in scene.supports]
+    held = []
+    for s in scene.supports:
+        held += _support_samples(scene, s)
     held += [(np.asarray([p.point], float), p.fix, 1.0) for p in scene.pins]
     for pts, fix, weight in held:
         M = _modes(pts, scene.body_of(pts), centre, L)
