@@ -227,6 +227,15 @@ FALSE_TN_WARN = 2.0
 #: within the agreement bounds, so the run gives no warning.
 MIN_CUT_FRACTION = 1e-11
 
+#: XFEM examines the cells whose centre lies within (1 + NEAR_ROUNDOFF)
+#: times their circumradius of a line or circle Γ (xdolfinx.xfem.cut.NEAR_FACTOR,
+#: φ a signed distance): a cell farther than its circumradius cannot meet Γ,
+#: and this share is the allowance for the round-off of the centre and of φ
+#: (a few ulps of the cell size; not measured).  Was a literal inside
+#: NEAR_FACTOR in xdolfinx/xfem/cut.py, which the check that library
+#: tolerances live here did not see (review5); value unchanged.
+NEAR_ROUNDOFF = 1e-9
+
 #: XFEM evaluates a body's points only in cells where that body's part
 #: reaches at least this fraction of the cell's diameter from Γ;
 #: a point in a thinner part (a sliver, whose polynomial is fitted to the

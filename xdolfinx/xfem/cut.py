@@ -25,9 +25,10 @@ GAUSS_POINTS = {1: 3, 2: 4}
 
 #: Cells whose centre lies within NEAR_FACTOR·|∇φ|·(circumradius) of Γ are
 #: examined for cuts: the φ of a line or a circle is the signed distance, so
-#: a cell farther than its circumradius cannot meet Γ (1, plus a round-off
-#: allowance); 2 leaves room for the curvature of a general φ.
-NEAR_FACTOR = {"distance": 1.0 + 1e-9, "level set": 2.0}
+#: a cell farther than its circumradius cannot meet Γ (1, plus the round-off
+#: allowance contactcore.tolerances.NEAR_ROUNDOFF); 2 leaves room for the
+#: curvature of a general φ.
+NEAR_FACTOR = {"distance": 1.0 + tol.NEAR_ROUNDOFF, "level set": 2.0}
 
 #: Points per direction at which φ is sampled in a cell near a general
 #: level set that its corners and edges leave on one side, to find a piece
