@@ -6,6 +6,8 @@ of its own (``if __name__ == "__main__"``), never a driver or the numerics
 import ast
 from pathlib import Path
 
+from test_layout import imported_names
+
 ROOT = Path(__file__).resolve().parent.parent
 PACKAGES = ("contactcore", "meshes", "xdolfinx", "efgm", "verification")
 
@@ -17,19 +19,11 @@ def _dotted(path: Path) -> str:
 
 
 def _imported(path: Path) -> set[str]:
-    """The absolute names ``path`` imports anywhere in its body (relative imports resolved)."""
-    name, package = _dotted(path), path.name == "__init__.py"
+    """The absolute names ``path`` imports anywhere in its body (relative
+    imports resolved, as :func:`test_layout.imported_names` reads them)."""
     found = set()
-    for node in ast.walk(ast.parse(path.read_text())):
-        if isinstance(node, ast.Import):
-            found |= {a.name for a in node.names}
-        elif isinstance(node, ast.ImportFrom):
-            base = node.module or ""
-            if node.level:
-                parts = name.split(".") if package else name.split(".")[:-1]
-                parts = parts[:len(parts) - node.level + 1]
-                base = ".".join(parts + ([node.module] if node.module else []))
-            found |= {base} | {f"{base}.{a.name}" for a in node.names}
+    for base, names in imported_names(_dotted(path), path, path.name == "__init__.py"):
+        found |= set(names) if base is None else {base} | {f"{base}.{n}" for n in names}
     return found
 
 

@@ -38,23 +38,32 @@ def _imports(name: str, path: Path, package: bool, modules) -> set[str]:
     of a name from its own package counts too (left out, it hid the circle
     scene -> quadrature -> contactcore -> scene, grader9 #9)."""
     found = set()
+    for base, names in imported_names(name, path, package):
+        targets = names if base is None else [f"{base}.{n}" if f"{base}.{n}" in modules else base for n in names]
+        for target in targets:
+            while target and target not in modules:
+                target = target.rpartition(".")[0]
+            if target and target != name:
+                found.add(target)
+    return found
+
+
+def imported_names(name: str, path: Path, package: bool) -> list[tuple[str | None, list[str]]]:
+    """Every import statement of module ``name`` (file ``path``, a
+    package's ``__init__`` if ``package``) anywhere in its body, relative
+    ones resolved: ``(None, modules)`` for ``import a, b``, ``(base,
+    names)`` for ``from base import names``."""
+    found = []
     for node in ast.walk(ast.parse(path.read_text())):
         if isinstance(node, ast.Import):
-            targets = [a.name for a in node.names]
+            found.append((None, [a.name for a in node.names]))
         elif isinstance(node, ast.ImportFrom):
             base = node.module or ""
             if node.level:
                 parts = name.split(".") if package else name.split(".")[:-1]
                 parts = parts[:len(parts) - node.level + 1]
                 base = ".".join(parts + ([node.module] if node.module else []))
-            targets = [f"{base}.{a.name}" if f"{base}.{a.name}" in modules else base for a in node.names]
-        else:
-            continue
-        for target in targets:
-            while target and target not in modules:
-                target = target.rpartition(".")[0]
-            if target and target != name:
-                found.add(target)
+            found.append((base, [a.name for a in node.names]))
     return found
 
 
