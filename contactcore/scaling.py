@@ -289,8 +289,7 @@ def softer_stress(scene: Scene) -> float:
     5.0 against 5005 MPa, under its 10 MPa pressure): the scale of a
     traction's round-off on a Γ the loads leave unloaded, which must not
     hide a real excess (``contactcore.health``'s warnings)."""
-    soft = scene.softer_modulus
-    return Sizes.of(replace(scene, materials={b: replace(m, E=soft) for b, m in scene.materials.items()})).stress
+    return Sizes.of(_all_softer(scene)).stress
 
 
 def softer_displacement(scene: Scene) -> float:
@@ -299,8 +298,13 @@ def softer_displacement(scene: Scene) -> float:
     largest prescribed displacement ū if larger (a stiff disc in a 100×
     softer block moves with the block, 100 times the stiff body's L τ/E,
     while a prescribed displacement is the same whichever body is softer)."""
+    return Scales.of(_all_softer(scene)).displacement
+
+
+def _all_softer(scene: Scene) -> Scene:
+    """``scene`` with every body at the softer body's Young's modulus."""
     soft = scene.softer_modulus
-    return Scales.of(replace(scene, materials={b: replace(m, E=soft) for b, m in scene.materials.items()})).displacement
+    return replace(scene, materials={b: replace(m, E=soft) for b, m in scene.materials.items()})
 
 
 class ScaledFields:
