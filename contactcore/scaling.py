@@ -310,7 +310,8 @@ def softer_stress(scene: Scene, h: float | None = None) -> float:
     if not (_load_stress(peak) or any(v for sup in peak.supports for v in sup.value)):
         return Sizes.of(soft).stress
     size = max(abs(v) * max((abs(f) for _, f in sup.path), default=1.0)
-               for sup in scene.supports for v, moved in zip(sup.value, rigid) if moved)
+               for sup in scene.supports for v, moved, axis in zip(sup.value, rigid, "xy")
+               if moved and axis in sup.fix)
     return max(Sizes.of(strained).stress,
                tol.TRANSLATION_ROUNDOFF / tol.TRACTION_ROUNDOFF * scene.softer_modulus * size / h)
 

@@ -88,8 +88,8 @@ TOGETHER = [
     (["benchmark", "--scene", "A"], THIS_MACHINE, "error: --workers 8: 8 of the 36 cases at once, the largest about "
      "2.46 GB", "--workers"),
     (["report"], THIS_MACHINE, "error: --workers 6: 6 of the 23 cases at once, the largest about 3.69 GB", "--workers"),
-    (["sweeps", "--degree", "2"], TINY_MACHINE, "error: --workers 13: 13 of the 13 cases at once, the largest about 0.154 GB",
-     "--workers"),
+    (["sweeps", "--degree", "2"], TINY_MACHINE,
+     "error: --workers 13: 13 of the 13 cases at once, the largest about 0.154 GB", "--workers"),
     (["scaling", "A", "--method", "fe", "--degree", "2", "--h", "0.004"],
      SMALL_MACHINE, "error: --ranks 8: the largest case, about 6 GB, on 8 ranks", "--ranks"),
 ]

@@ -135,15 +135,17 @@ def friction_excess_warnings(scene, path, stress_size: float = 0.0, h: float | N
         return (status == STICK) & (over > allowed), over / np.maximum(limit, max(mu * carried, np.finfo(float).tiny))
 
     count, worst, where = _tally(path, excess)
+    blind = spring_band_warnings(scene, h)
     if not count:
-        return spring_band_warnings(scene, h)
-    return spring_band_warnings(scene, h) + [f"Γ's points stick with |t_T| above μ|t_N| = {mu:g}|t_N| at {count} (point, increment) pair(s), by up to "
-            f"{worst:.2g} of μ|t_N| (of its largest along the path where the point's is smaller; increment "
-            f"{where:g}): Newton keeps a point's status within {tol.DECISION_BAND:g} of Γ's largest μp "
-            "(DECISION_BAND, above the round-off of its margins) and holds a point at rest where Γ is unloaded "
-            "(REST_ROUNDOFF), so the loads there ask a shear/normal within that band of μ or above it, where no "
-            "sticking equilibrium exists, or leave a shear an unloaded Γ does not tell from round-off; a μ that "
-            "much larger sticks (docs/newton.md, \"Decisions that round-off cannot move\")"]
+        return blind
+    return blind + [
+        f"Γ's points stick with |t_T| above μ|t_N| = {mu:g}|t_N| at {count} (point, increment) pair(s), by up to "
+        f"{worst:.2g} of μ|t_N| (of its largest along the path where the point's is smaller; increment "
+        f"{where:g}): Newton keeps a point's status within {tol.DECISION_BAND:g} of Γ's largest μp "
+        "(DECISION_BAND, above the round-off of its margins) and holds a point at rest where Γ is unloaded "
+        "(REST_ROUNDOFF), so the loads there ask a shear/normal within that band of μ or above it, where no "
+        "sticking equilibrium exists, or leave a shear an unloaded Γ does not tell from round-off; a μ that "
+        "much larger sticks (docs/newton.md, \"Decisions that round-off cannot move\")"]
 
 
 def spring_band_warnings(scene, h: float | None) -> list[str]:
