@@ -37,7 +37,8 @@ MEMORY_SHARE = 0.8
 #: that has imported every method (dolfinx, PETSc, gmsh) and solved scene A
 #: at h = 0.2 with each peaks at 0.19 GB (2026-11-28, ``/usr/bin/time -f
 #: %M``); rounded up.  A pool of ``--workers K`` or mpirun's K ranks holds
-#: K of them (:func:`check_processes`).
+#: K of them (:func:`check_processes`, and with their cases
+#: :func:`check_together`, :func:`check_spread`).
 BYTES_PER_PROCESS = 250e6
 
 
@@ -95,17 +96,70 @@ def check_processes(count: int, field: str, offer_allow_large: bool = True) -> N
                             + (", or pass --allow-large to try anyway" if offer_allow_large else ""))
 
 
-def check_budget(scene, h: float, degree: int, method: str, field: str = "--h") -> Estimate:
+def check_budget(scene, h: float, degree: int, method: str, field: str = "--h",
+                 offer_allow_large: bool = True) -> Estimate:
     """The :func:`estimate` of the run (``h`` in ``scene``'s length unit),
     or a :class:`TooLargeError` when its memory exceeds MEMORY_SHARE of
     this machine's physical memory; the message names ``field`` (the
     option or scene field that set ``h``, ``--h`` by default), the
     estimate in GB and what to do (a larger h, fewer increments, or
-    ``--allow-large``)."""
+    ``--allow-large`` where the command has it)."""
     est = estimate(scene, h, degree, method)
     have = MEMORY_SHARE * machine_memory()
     if est.memory > have:
         raise TooLargeError(f"{field} {h:g} with {method} (degree {degree}, {scene.increments} increments): "
                             f"{est.describe()}, against {have / 1e9:.3g} GB usable on this machine; use a larger h "
-                            "or fewer increments, or pass --allow-large to try anyway")
+                            "or fewer increments" + (", or pass --allow-large to try anyway" if offer_allow_large
+                                                     else ""))
     return est
+
+
+def together(memories, count: int) -> float:
+    """Bytes that ``count`` processes (a pool's workers) hold when they
+    solve the cases of ``memories`` (each case's resident bytes, one case
+    a process at a time): ``min(count, len(memories))`` of them at once,
+    each, at worst, with the largest case and :data:`BYTES_PER_PROCESS`.
+    A pool starts no more processes than it has cases."""
+    at_once = min(max(count, 1), len(memories))
+    return at_once * (max(memories, default=0.0) + BYTES_PER_PROCESS)
+
+
+def check_together(memories, count: int, field: str = "--workers", offer_allow_large: bool = True) -> None:
+    """A :class:`TooLargeError` when ``count`` processes (``field`` the
+    option that asked for them) solving the cases of ``memories`` (each
+    case's resident bytes, :func:`estimate`'s memory) at once would hold
+    more than MEMORY_SHARE of this machine's memory (:func:`together`),
+    though each case alone fits (:func:`check_budget`) and the processes
+    alone fit (:func:`check_processes`): review5's fault 2, two cases of
+    11.5 GB on ``--workers 2`` against 20.2 GB usable.  The message names
+    the count, the largest case and the sum, and what to do."""
+    memories = list(memories)
+    need, have = together(memories, count), MEMORY_SHARE * machine_memory()
+    if need > have:
+        at_once = min(max(count, 1), len(memories))
+        raise TooLargeError(f"{field} {count}: {at_once} of the {len(memories)} cases at once, the largest about "
+                            f"{max(memories) / 1e9:.3g} GB (+{BYTES_PER_PROCESS / 1e9:.2g} GB for its process), "
+                            f"about {need / 1e9:.3g} GB together, against {have / 1e9:.3g} GB usable on this "
+                            "machine; use fewer workers or a larger h"
+                            + (", or pass --allow-large to try anyway" if offer_allow_large else ""))
+
+
+def spread(memory: float, ranks: int) -> float:
+    """Bytes that one case of ``memory`` resident bytes holds spread over
+    ``ranks`` mpirun ranks: the case's own (its factors are split over the
+    ranks, not copied) and :data:`BYTES_PER_PROCESS` for each rank."""
+    return memory + ranks * BYTES_PER_PROCESS
+
+
+def check_spread(memories, ranks: int, field: str = "--ranks", offer_allow_large: bool = True) -> None:
+    """A :class:`TooLargeError` when the largest case of ``memories``
+    (each case's resident bytes), solved on ``ranks`` mpirun ranks one case
+    after another, would hold more than MEMORY_SHARE of this machine's
+    memory (:func:`spread`)."""
+    largest = max(memories, default=0.0)
+    need, have = spread(largest, ranks), MEMORY_SHARE * machine_memory()
+    if need > have:
+        raise TooLargeError(f"{field} {ranks}: the largest case, about {largest / 1e9:.3g} GB, on {ranks} ranks "
+                            f"(+{BYTES_PER_PROCESS / 1e9:.2g} GB each) needs about {need / 1e9:.3g} GB, against "
+                            f"{have / 1e9:.3g} GB usable on this machine; use fewer ranks or a larger h"
+                            + (", or pass --allow-large to try anyway" if offer_allow_large else ""))

@@ -287,7 +287,7 @@ def solve(scene, discretisation: Discretisation, h: float | None = None, *, pape
     report.warnings += (scene.interface_warnings(built.h, fitted=built.fitted) + scene.ligament_warnings(built.h)
                         + built.warnings)
     path = path.gathered(built.system.collective, scene.interface)
-    stress_size = softer_stress(scene)  # the round-off of a traction on a Γ no load reaches
+    stress_size = softer_stress(scene, built.h)  # the round-off of a traction on a Γ no load reaches
     report.warnings += health.friction_excess_warnings(scene, path, stress_size, built.h)
     report.warnings += health.closed_tension_warnings(scene, path, stress_size)
     fields = built.fields(x)

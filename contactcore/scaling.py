@@ -280,7 +280,7 @@ class Sizes:
         return cls(softer_displacement(peak), stress, stress * math.sqrt(scene.domain.area / scene.softer_modulus))
 
 
-def softer_stress(scene: Scene) -> float:
+def softer_stress(scene: Scene, h: float | None = None) -> float:
     """``Σ`` of :class:`Sizes` with every body at the softer body's modulus:
     the largest load, or the stress a prescribed displacement ū causes in
     the softer body, ``E_soft |ū|/L``.  A lower bound of the stress a
@@ -288,8 +288,51 @@ def softer_stress(scene: Scene) -> float:
     is an upper one (the layered cycle, ū on a layer 1e3 times softer:
     5.0 against 5005 MPa, under its 10 MPa pressure): the scale of a
     traction's round-off on a Γ the loads leave unloaded, which must not
-    hide a real excess (``contactcore.health``'s warnings)."""
-    return Sizes.of(_all_softer(scene)).stress
+    hide a real excess (``contactcore.health``'s warnings).
+
+    Given the method's spacing ``h``, a rigid translation c the supports
+    prescribe (:func:`rigid_translation`) strains nothing and counts only
+    with the round-off it leaves in a traction, TRANSLATION_ROUNDOFF of
+    ``E_soft |c|/h`` (as a stress whose TRACTION_ROUNDOFF share is that):
+    counted as ``E_soft |c|/L`` it hid a decision band's real excess
+    (review5's fault 4).  Where nothing but the translation acts (no load,
+    no other prescription) it counts as before: every traction is then
+    round-off of it."""
+    soft = _all_softer(scene)
+    rigid = rigid_translation(scene)
+    if h is None or not any(rigid):
+        return Sizes.of(soft).stress
+    strained = replace(soft, supports=tuple(
+        replace(sup, value=tuple(0.0 if moved else v for v, moved in zip(sup.value, rigid)))
+        for sup in soft.supports))
+    peak = replace(strained, loads=tuple(map(_at_peak, strained.loads)),
+                   supports=tuple(map(_at_peak, strained.supports)))
+    if not (_load_stress(peak) or any(v for sup in peak.supports for v in sup.value)):
+        return Sizes.of(soft).stress
+    size = max(abs(v) * max((abs(f) for _, f in sup.path), default=1.0)
+               for sup in scene.supports for v, moved, axis in zip(sup.value, rigid, "xy")
+               if moved and axis in sup.fix)
+    return max(Sizes.of(strained).stress,
+               tol.TRANSLATION_ROUNDOFF / tol.TRACTION_ROUNDOFF * scene.softer_modulus * size / h)
+
+
+def rigid_translation(scene: Scene) -> tuple[bool, bool]:
+    """For each component (x, y), whether the supports prescribe a rigid
+    translation in it: at least one support fixes it, every support that
+    fixes it prescribes the same displacement at every increment (the
+    same value times the same path factor), not zero, and no pin holds it
+    at zero.  The body then moves by that displacement as a whole in that
+    component and is strained by the rest alone."""
+    increments = sorted({0, scene.increments, *(k for sup in scene.supports for k, _ in sup.path)})
+    moved = []
+    for i, axis in enumerate("xy"):
+        held = [sup for sup in scene.supports if axis in sup.fix]
+        if not held or any(axis in pin.fix for pin in scene.pins):
+            moved.append(False)
+            continue
+        paths = [[sup.value[i] * scene.factor(sup.path, k) for k in increments] for sup in held]
+        moved.append(all(p == paths[0] for p in paths) and any(paths[0]))
+    return tuple(moved)
 
 
 def softer_displacement(scene: Scene) -> float:

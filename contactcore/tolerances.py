@@ -407,6 +407,23 @@ TRACTION_ROUNDOFF = 1e-9
 #: below 1e-11 of p, far below the decision band's excess it warns of.
 SPRING_TRACTION_ROUNDOFF = 1e-14
 
+#: The round-off a rigid translation ū prescribed by the supports (every
+#: support fixing a component moving it alike: contactcore.scaling.
+#: rigid_translation) leaves in Γ's tractions, as a share of E₋|ū|/h (E₋ the
+#: softer modulus, h the method's spacing).  The translation strains
+#: nothing, but the unknowns carry it, so a jump and a stress lose ε|ū| of
+#: it.  Measured 2026-11-28 on the layered closed form with its stack moved
+#: 10 m in y (/tmp/mf/m/shift3.py of the memfix report; the spread of Γ's
+#: tractions, uniform in exact arithmetic): fe P1 1.2e-15–1.7e-15 at
+#: h = 0.1, 0.025, 0.0125; fe P2 4.8e-15; xfem P1 1.7e-15–2.2e-15; xfem P2
+#: 1.4e-14, 2.9e-14, 3.3e-14 at h = 0.1, 0.05, 0.025.  1e-12 is 30 times
+#: the worst.  It replaces, for the translation, the stress E₋|ū|/L that
+#: contactcore.scaling.softer_stress counted before (times
+#: TRACTION_ROUNDOFF, 1e-9 of E₋|ū|/L: 1e4 to 1e6 times the measured, so a
+#: translation of 0.1 m hid EFGM's decision-band excess of 2.8 Pa on that
+#: closed form, review5's fault 4).
+TRANSLATION_ROUNDOFF = 1e-12
+
 #: The least non-zero friction coefficient: below 10 TRACTION_ROUNDOFF the
 #: band of the stick/slip decision (at least TRACTION_ROUNDOFF·p) exceeds a
 #: tenth of μp, and below TRACTION_ROUNDOFF μp itself is below the round-off

@@ -8,7 +8,8 @@ import subprocess
 
 import pytest
 
-from verification import methods, pool, shapes
+from contactcore import budget
+from verification import methods, peer_getfem, pool, shapes
 from verification.__main__ import main
 
 
@@ -46,3 +47,109 @@ def test_every_command_with_a_size_check_offers_allow_large(capsys, command):
     with pytest.raises(SystemExit):
         main([command, "--help"])
     assert "--allow-large" in capsys.readouterr().out
+
+
+#: This machine's physical memory (2026-11-28, ``os.sysconf``), fixed so
+#: that the checks of several cases at once decide alike on any machine:
+#: 20.2 GB usable at MEMORY_SHARE 0.8.
+THIS_MACHINE = 25.3e9
+#: Machines small enough that a case fits alone but not beside the others.
+SMALL_MACHINE = 9e9  # 7.2 GB usable
+TINY_MACHINE = 5e9  # 4 GB usable
+
+
+class Started(Exception):
+    """Raised where the command's work would start: its checks all passed."""
+
+
+def _starts(*_, **__):
+    raise Started
+
+
+def _machine(monkeypatch, size: float) -> None:
+    monkeypatch.setattr(budget, "machine_memory", lambda: size)
+    for name in ("map_cases",):
+        monkeypatch.setattr(pool, name, _starts)
+    monkeypatch.setattr(methods, "solver", lambda *_: _starts)
+    monkeypatch.setattr(subprocess, "run", _starts)
+    monkeypatch.setattr(peer_getfem, "getfem_module", lambda: None)  # benchmark's, whether GetFEM is installed or not
+
+
+#: (argv, machine, the refusal's start, the option whose count COUNTS gives). Each case alone fits the
+#: machine (the per-case check passes) and K processes alone fit too (check_processes passes); K cases
+#: at once do not (review5's fault 2: 2 × (11.5 + 0.25) GB against 20.2 GB usable).
+TOGETHER = [
+    (["study", "A", "--param", "h", "--values", "0.00289", "0.0029", "--method", "fe", "--degree", "2"],
+     THIS_MACHINE, "error: --workers 2: 2 of the 2 cases at once, the largest about 11.5 GB", "--workers"),
+    (["efficiency", "A", "--method", "fe", "--degree", "2", "--h", "0.0057", "0.0056"],
+     THIS_MACHINE, "error: --workers 2: 2 of the 2 cases at once, the largest about 15.3 GB", "--workers"),
+    (["paper", "--scene", "A", "B", "--ref-h", "0.0055"],
+     THIS_MACHINE, "error: --workers 2: 2 of the 2 cases at once, the largest about 12.7 GB", "--workers"),
+    (["benchmark", "--scene", "A"], THIS_MACHINE, "error: --workers 8: 8 of the 36 cases at once, the largest about "
+     "2.46 GB", "--workers"),
+    (["report"], THIS_MACHINE, "error: --workers 6: 6 of the 23 cases at once, the largest about 3.69 GB", "--workers"),
+    (["sweeps", "--degree", "2"], TINY_MACHINE,
+     "error: --workers 13: 13 of the 13 cases at once, the largest about 0.154 GB", "--workers"),
+    (["scaling", "A", "--method", "fe", "--degree", "2", "--h", "0.004"],
+     SMALL_MACHINE, "error: --ranks 8: the largest case, about 6 GB, on 8 ranks", "--ranks"),
+]
+#: The count each command of TOGETHER is refused at, and one that fits.
+COUNTS = {"study": (2, 1), "efficiency": (2, 1), "paper": (2, 1), "benchmark": (8, 7), "report": (6, 5),
+          "sweeps": (13, 9), "scaling": (8, 2)}
+
+
+#: The commands with --workers and no --allow-large.
+NO_ALLOW_LARGE = ("sweeps", "report", "benchmark")
+
+
+def _with_count(argv: list[str], option: str, count: int) -> list[str]:
+    return [*argv, option, *(["1"] if option == "--ranks" else []), str(count)]
+
+
+@pytest.mark.parametrize("argv, machine, start, option", TOGETHER, ids=[a[0] for a, *_ in TOGETHER])
+def test_cases_that_fit_alone_but_not_together_are_refused_before_any_work(tmp_path, capsys, monkeypatch, argv,
+                                                                          machine, start, option):
+    _machine(monkeypatch, machine)
+    out = tmp_path / "t"
+    assert main([*_with_count(argv, option, COUNTS[argv[0]][0]), "--out", str(out)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith(start), err
+    assert ("--allow-large" in err[0]) == (argv[0] not in NO_ALLOW_LARGE), err  # where the command has it
+    assert not out.exists()
+
+
+@pytest.mark.parametrize("argv, machine, start, option", TOGETHER, ids=[a[0] for a, *_ in TOGETHER])
+def test_fewer_at_once_or_allow_large_passes_the_check(tmp_path, monkeypatch, argv, machine, start, option):
+    """The refusal above is the check of several at once, not of one case:
+    fewer workers or ranks start, and so does ``--allow-large``."""
+    _machine(monkeypatch, machine)
+    with pytest.raises(Started):
+        main([*_with_count(argv, option, COUNTS[argv[0]][1]), "--out", str(tmp_path / "fewer")])
+    if argv[0] not in NO_ALLOW_LARGE:
+        with pytest.raises(Started):
+            main([*_with_count(argv, option, COUNTS[argv[0]][0]), "--allow-large", "--out", str(tmp_path / "big")])
+
+
+@pytest.mark.parametrize("argv", [
+    ["run", "A", "--method", "all"],  # the README's
+    ["efficiency", "A", "--method", "xfem", "efgm", "--degree", "2", "--h", "0.1", "0.05", "0.025", "0.0125",
+     "--ref-h", "0.00625", "--workers", "1"],  # docs/benchmarks.md's
+    ["scaling", "B", "--method", "xfem", "fe", "--degree", "2", "--h", "0.05", "0.0057", "--ranks", "1", "2"],
+    ["study", "B", "--param", "radius", "--values", "0.15", "0.2", "0.25", "0.3", "--param", "kN", "--values", "1e9",
+     "1e10", "--h", "0.025", "--workers", "2"],
+    ["report", "--workers", "2"], ["paper", "--workers", "3"], ["sweeps", "--workers", "2"],
+], ids=lambda a: a[0])
+def test_the_documented_commands_pass_the_checks_on_a_machine_like_this_one(tmp_path, monkeypatch, argv):
+    _machine(monkeypatch, THIS_MACHINE)
+    with pytest.raises(Started):
+        main([*argv, "--out", str(tmp_path / "t")])
+
+
+def test_together_counts_no_more_processes_than_cases():
+    """A pool starts no more workers than it has cases: three cases on
+    --workers 8 hold three processes, each at worst with the largest."""
+    gb = 1e9
+    assert budget.together([1 * gb, 3 * gb, 2 * gb], 8) == 3 * (3 * gb + budget.BYTES_PER_PROCESS)
+    assert budget.together([1 * gb, 3 * gb, 2 * gb], 2) == 2 * (3 * gb + budget.BYTES_PER_PROCESS)
+    assert budget.together([], 4) == 0
+    assert budget.spread(3 * gb, 4) == 3 * gb + 4 * budget.BYTES_PER_PROCESS

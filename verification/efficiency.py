@@ -39,7 +39,7 @@ from pathlib import Path
 from contactcore import estimate as estimates
 from contactcore import SceneError, load_scene, sample_profiles, scene_text
 from contactcore import tolerances as tol
-from contactcore.budget import MEMORY_SHARE, check_budget, estimate, machine_memory
+from contactcore.budget import MEMORY_SHARE, check_budget, check_together, estimate, machine_memory
 from contactcore.scene import Units, check_resolution
 
 from . import files, pool
@@ -127,16 +127,23 @@ def _reference(scene_name: str, ref_h: float) -> tuple[dict, int, float]:
     return {p.id: p for p in sample_profiles(scene, reference.fields, reference.interface)}, reference.dofs, reference.timings.total
 
 
-def check_budgets(scene, rungs, ref_h: float | None, estimated: bool) -> None:
+def check_budgets(scene, rungs, ref_h: float | None, estimated: bool, workers: int | None = None,
+                  offer_allow_large: bool = True) -> None:
     """Refuse, before any solve, a rung (at its h, and at h/2 where
     ``estimated``) or the reference that alone would not fit this machine
-    (:func:`contactcore.budget.check_budget`); :func:`spawn_each` then
-    decides whether the ones that fit share a process."""
+    (:func:`contactcore.budget.check_budget`), or ``workers`` rungs at once
+    that together would not (:func:`contactcore.budget.check_together`: a
+    rung holds its run and, ``estimated``, the run at h/2; the reference
+    runs alone, before them); :func:`spawn_each` then decides whether the
+    ones that fit share a process.  The messages offer ``--allow-large``
+    if ``offer_allow_large`` (``benchmark`` and ``report`` have none)."""
     if ref_h is not None:
-        check_budget(scene, ref_h, 2, "fe", field="--ref-h")
+        check_budget(scene, ref_h, 2, "fe", "--ref-h", offer_allow_large)
+    memories = []
     for name, degree, h, _ in rungs:
-        for at in (h, h / 2) if estimated else (h,):
-            check_budget(scene, at, degree, name)
+        memories.append(sum(check_budget(scene, at, degree, name, offer_allow_large=offer_allow_large).memory
+                            for at in ((h, h / 2) if estimated else (h,))))
+    check_together(memories, workers or 1, offer_allow_large=offer_allow_large)
 
 
 def spawn_each(scene, rungs, ref_h: float | None, estimated: bool = False) -> bool:
@@ -159,7 +166,7 @@ def spawn_each(scene, rungs, ref_h: float | None, estimated: bool = False) -> bo
     return False
 
 
-def _rungs(variants, ladders: dict) -> list[tuple]:
+def ladder_rungs(variants, ladders: dict) -> list[tuple]:
     """``(method, degree, h, warm_h)`` of every rung, each ladder coarse to fine."""
     rungs = []
     for name, degree in variants:
@@ -169,27 +176,29 @@ def _rungs(variants, ladders: dict) -> list[tuple]:
 
 
 def efficiency(scene_name: str, variants, ladders: dict, ref_h: float | None, exclude: float, out: Path,
-               workers: int | None = None, estimated: bool = False, allow_large: bool = False, argv=()) -> str:
+               workers: int | None = None, estimated: bool = False, allow_large: bool = False, argv=(),
+               offer_allow_large: bool = True) -> str:
     """Run the ladders (``ladders[(method, degree)]`` if given, else
     ``ladders[degree]``: the h of that variant) on ``workers``
     processes, write the table and the plot; return the Markdown section.
     ``estimated``: each rung's error also estimated (module doc); without
     ``ref_h`` it must be.  Unless ``allow_large``, every solve must fit
-    the machine (:func:`check_budgets`)."""
+    the machine, and ``workers`` rungs at once too (:func:`check_budgets`;
+    its messages offer ``--allow-large`` if ``offer_allow_large``)."""
     scene = load_scene(scene_name)
     check_given_once("--method, --degree", [label(*v) for v in variants])
     for hs in ladders.values():
         check_given_once("--h", hs)
         for h in hs:
             check_resolution(scene, h, "--h")
-    rungs, rows = _rungs(variants, ladders), []
+    rungs, rows = ladder_rungs(variants, ladders), []
     finest = min(h for _, _, h, _ in rungs)
     if ref_h is not None and ref_h > finest:
         raise SceneError("--ref-h", f"{ref_h:g} is coarser than the ladder's finest h, {finest:g}: the "
                          "reference stands for the exact answer, so it must be at least as fine as every rung")
     check_exclusion(scene, exclude, "--exclude")
     if not allow_large:
-        check_budgets(scene, rungs, ref_h, estimated or ref_h is None)
+        check_budgets(scene, rungs, ref_h, estimated or ref_h is None, workers, offer_allow_large)
     fresh = spawn_each(scene, rungs, ref_h, estimated)
     ref = ref_dofs = None
     if ref_h is not None:

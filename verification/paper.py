@@ -30,7 +30,7 @@ import re
 from pathlib import Path
 
 from contactcore import load_scene, sample_profiles, scene_text
-from contactcore.budget import check_budget
+from contactcore.budget import check_budget, check_together
 
 from . import files, methods, plots, pool
 from .agreement import agreements, default_exclusion
@@ -117,25 +117,32 @@ def markdown(rows: list[dict], warnings: list[str]) -> str:
     return "\n".join(md)
 
 
-def check_budgets(scenes, ref_h: float | None) -> None:
+def check_budgets(scenes, ref_h: float | None, workers: int | None = None, offer_allow_large: bool = True) -> None:
     """Refuse, before any solve, a reference (fe P2 at ``ref_h``, else
     the scene's h / REFERENCE_REFINEMENT) that would not fit this machine
-    (:func:`contactcore.budget.check_budget`); the paper's own grids are
-    fixed and small."""
+    (:func:`contactcore.budget.check_budget`), or ``workers`` scenes at
+    once whose references together would not
+    (:func:`contactcore.budget.check_together`); the paper's own grids are
+    fixed and small.  The messages offer ``--allow-large`` if
+    ``offer_allow_large`` (``report`` has none)."""
+    memories = []
     for name in scenes:
         scene = load_scene(name)
         at = ref_h or scene.h / REFERENCE_REFINEMENT
-        check_budget(scene, at, 2, "fe", field="--ref-h" if ref_h else f"scene {scene.name}'s reference h")
+        memories.append(check_budget(scene, at, 2, "fe", "--ref-h" if ref_h else f"scene {scene.name}'s reference h",
+                                     offer_allow_large).memory)
+    check_together(memories, workers or 1, offer_allow_large=offer_allow_large)
 
 
 def paper(out: Path, scenes=SCENES, ref_h: float | None = None, workers: int | None = None, argv=(),
           allow_large: bool = False) -> str:
     """Reproduce the paper's scenes, one case each on :mod:`verification.pool`;
     write the figures and the agreement table.  Unless ``allow_large``,
-    each reference must fit the machine (:func:`check_budgets`)."""
+    each reference must fit the machine, and ``workers`` of them at once
+    (:func:`check_budgets`)."""
     out = Path(out)
     if not allow_large:
-        check_budgets(scenes, ref_h)
+        check_budgets(scenes, ref_h, workers)
     rows, warnings = [], []
     log.info("paper: scenes %s on %s", ", ".join(scenes), pool.workers_label(workers))
     for got, warned in pool.map_cases(functools.partial(reproduce_scene, out=out, ref_h=ref_h), scenes, workers):

@@ -23,15 +23,18 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from contactcore import load_scene
+from contactcore.budget import check_together
 
-from . import files, pool
+from . import files, methods, pool
 from .agreement import default_exclusion
 from .convergence import CASES, closed
-from .efficiency import LADDERS, REFERENCE_H, VARIANTS, efficiency
-from .paper import paper
+from .efficiency import LADDERS, REFERENCE_H, VARIANTS, efficiency, ladder_rungs
+from .efficiency import check_budgets as efficiency_budgets
+from .paper import SCENES, paper
+from .paper import check_budgets as paper_budgets
 from .run import run
-from .study import study
-from .sweeps import run_sweeps
+from .study import check_points, check_sizes, study
+from .sweeps import memory, run_sweeps, sweeps
 
 log = logging.getLogger("verification")
 
@@ -81,10 +84,30 @@ def _frictions(scenes, against_exact, workers):
                                                    scenes, workers))
 
 
+def check_plan(plan: Plan, workers: int | None) -> None:
+    """Before any part runs, what each part checks at its own start: every
+    solve of the paper, the efficiency ladders, the sweeps and the studies
+    fits this machine, and ``workers`` of a part's cases at once too
+    (:func:`contactcore.budget.check_together`), so that a report too
+    large is refused before its first part, not after the parts before it."""
+    paper_budgets(SCENES, plan.paper_ref_h, workers, offer_allow_large=False)
+    for scene in plan.ladders:
+        efficiency_budgets(load_scene(scene), ladder_rungs(plan.variants, plan.ladders[scene]), plan.reference_h[scene],
+                           False, workers, offer_allow_large=False)
+    selected = [s for s in sweeps() if plan.sweeps is None or s.name in plan.sweeps]
+    check_together([memory(sw) for sw in selected], workers or 1, offer_allow_large=False)
+    for scene, param, values, degree in plan.studies:
+        base, points = load_scene(scene), [(v,) for v in values]
+        check_together(check_sizes(check_points(base, [param], points), [param], points, methods.expand(["all"]),
+                                   degree, None), workers or 1, offer_allow_large=False)
+
+
 def report(out: Path, quick: bool = False, workers: int | None = None, argv=()) -> Path:
     """Run every part into ``out`` (each part's cases on ``workers``
-    processes) and write ``out/report.md``."""
+    processes) and write ``out/report.md``; the whole plan is checked
+    against this machine's memory first (:func:`check_plan`)."""
     plan = QUICK if quick else FULL
+    check_plan(plan, workers)
     out = Path(out)
     sections, times = [], {}
 

@@ -25,6 +25,7 @@ import sys
 from pathlib import Path
 
 from contactcore import ContactError, load_scene
+from contactcore.budget import check_spread
 
 from . import files
 from .timing import COLUMNS as TIMING_COLUMNS
@@ -97,12 +98,13 @@ def speedups(rows: list[dict]) -> list[dict]:
 def scaling(scene: str, method_names, degrees, hs, ranks, out: Path, argv=(), allow_large: bool = False) -> list[dict]:
     """The ladder on each rank count of ``ranks`` (module doc).  Unless
     ``allow_large``, every rung must fit the machine, checked here before
-    any launch (:func:`verification.timing.check_budgets`)."""
+    any launch (:func:`verification.timing.check_budgets`), with the most
+    ranks' own memory beside it (:func:`contactcore.budget.check_spread`)."""
     out = Path(out)
     loaded = load_scene(scene)
     rows, units = [], loaded.units  # scaling.csv's h, in units.json (read before any run)
     if not allow_large:
-        check_budgets([loaded], method_names, degrees, hs)
+        check_spread(check_budgets([loaded], method_names, degrees, hs), max(ranks, default=1))
     for k in ranks:
         rows += [{"ranks": k, **row} for row in _timing_run(k, scene, method_names, degrees, hs, out / f"ranks_{k}")]
     rows = speedups(rows)

@@ -42,7 +42,7 @@ from pathlib import Path
 import numpy as np
 
 from contactcore import CircleInterface, LineInterface, SceneError, load_scene, scene_text
-from contactcore.budget import check_budget
+from contactcore.budget import check_budget, check_together
 from contactcore.discretisation import Reuse
 from contactcore.enforcement import ENFORCEMENTS, make_law
 from contactcore.exact import BONDED, EXACT_LAWS, checked_stabilisation, is_exact
@@ -304,7 +304,8 @@ def study(scene_name: str, params: list[tuple[str, list[float]]], method_names: 
     pairs; the last varies fastest) on :mod:`verification.pool`, and write
     its table and plots; return the Markdown section.  Every point is
     checked first (:func:`check_points`), and unless ``allow_large`` each
-    point's solve against this machine's memory (:func:`check_sizes`).
+    point's solve against this machine's memory (:func:`check_sizes`), and
+    ``workers`` of them at once (:func:`contactcore.budget.check_together`).
     A point that fails is a row with its message and the study goes on;
     with ``strict`` (the CLI), once everything is written, any failed point
     raises :class:`~verification.outcomes.Incomplete` (exit status 1)."""
@@ -320,7 +321,7 @@ def study(scene_name: str, params: list[tuple[str, list[float]]], method_names: 
     points = list(itertools.product(*(values for _, values in params)))
     scenes = check_points(base, names, points)
     if not allow_large:
-        check_sizes(scenes, names, points, methods.expand(method_names), degree, h)
+        check_together(check_sizes(scenes, names, points, methods.expand(method_names), degree, h), workers or 1)
     cases = [Case(scene_name, tuple(zip(names, pt)), m, degree, h, cell) for pt in points
              for m in methods.expand(method_names)]
     rows = []
@@ -371,19 +372,22 @@ def check_points(base, names: list[str], points: list[tuple]) -> list:
 
 
 def check_sizes(scenes: list, names: list[str], points: list[tuple], method_names: list[str], degree: int,
-                h) -> None:
+                h) -> list[float]:
     """Every point's solve (its scene of :func:`check_points`), with every
     method, within this machine's memory
     (:func:`contactcore.budget.check_budget`), before any solve: the first
     that is not ends the study with a TooLargeError naming it (``--param h
     --values 1e-9`` would otherwise mesh until the system stops the
-    process)."""
+    process).  Returns each case's estimated memory in bytes, for the
+    check of several at once."""
+    memories = []
     for scene, point in zip(scenes, points):
         at = dict(zip(names, point)).get("h", h if h is not None else scene.h)
         if at is None:
             continue  # refused by the solve itself, as a failed row, naming the missing h
         for name in method_names:
-            check_budget(scene, at, degree, name, field=f"--param {_where(names, point)}: h")
+            memories.append(check_budget(scene, at, degree, name, field=f"--param {_where(names, point)}: h").memory)
+    return memories
 
 
 def _where(names: list[str], point: tuple) -> str:

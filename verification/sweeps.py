@@ -43,6 +43,7 @@ import numpy as np
 
 from contactcore import LineInterface, LinearLaw, Material, load_scene, sample_profile
 from contactcore import tolerances as tol
+from contactcore.budget import check_together, estimate
 from contactcore.geometry import Rectangle
 from contactcore.scene import InterfaceProfile
 
@@ -349,15 +350,27 @@ def _sweep_by_name(name: str, degree: int, method_names) -> list[dict]:
     return run_sweep(next(s for s in sweeps() if s.name == name), degree, method_names)
 
 
+def memory(sweep: Sweep, degree: int = 1, method_names=None) -> float:
+    """The estimated memory in bytes of ``sweep``, one case of the pool:
+    its largest solve (:func:`contactcore.budget.estimate`; its solves run
+    one after another)."""
+    return max((estimate(c.scene, c.scene.h if sweep.name == "false_tN" else H, degree, name).memory
+                for c in sweep.cases() for name in sweep.methods if method_names is None or name in method_names),
+               default=0.0)
+
+
 def run_sweeps(out: Path, names=None, method_names=None, degree: int = 1, workers: int | None = None,
                argv=(), strict: bool = False) -> str:
     """Run the sweeps (all, or those named), one case each on
     :mod:`verification.pool`, write the tables and plots, and return the
-    Markdown section.  A *refused* or *warned* case is data (the sweeps map
+    Markdown section; ``workers`` sweeps at once must fit this machine
+    (:func:`contactcore.budget.check_together`, before any solve).  A
+    *refused* or *warned* case is data (the sweeps map
     where each method stops); a *wrong* one is a bug: with ``strict`` (the
     CLI), once everything is written, it raises
     :class:`~verification.outcomes.Incomplete` (exit status 1)."""
     selected = [s for s in sweeps() if names is None or s.name in names]
+    check_together([memory(sw, degree, method_names) for sw in selected], workers or 1, offer_allow_large=False)
     rows = []
     runs = pool.map_cases(functools.partial(_sweep_by_name, degree=degree, method_names=method_names),
                           [sw.name for sw in selected], workers)

@@ -49,16 +49,14 @@ COLUMNS = ["scene", "method", "degree", "h", "dofs", "mesh", "assembly", "solve"
            "factorisations", "backward_error"]
 
 
-def check_budgets(scenes, method_names, degrees, hs) -> None:
+def check_budgets(scenes, method_names, degrees, hs) -> list[float]:
     """Refuse, before any solve, a rung of the ladder that alone would not
     fit this machine (:func:`contactcore.budget.check_budget`, the check
     ``run``, ``study`` and ``efficiency`` make; grader11's fault 1: ``--h
-    0.1`` on a 1000 mm scene filled 21.7 GB)."""
-    for scene in scenes:
-        for name in methods.expand(method_names):
-            for degree in degrees:
-                for h in hs:
-                    check_budget(scene, h, degree, name)
+    0.1`` on a 1000 mm scene filled 21.7 GB).  Returns each rung's
+    estimated memory in bytes (``scaling`` adds its ranks' own)."""
+    return [check_budget(scene, h, degree, name).memory for scene in scenes for name in methods.expand(method_names)
+            for degree in degrees for h in hs]
 
 
 def timing(scene_names: list[str], method_names: list[str], degrees: list[int], hs: list[float], out: Path,

@@ -13,7 +13,9 @@ off, or one of several.
   ``μ|β| > MU_DUNDURS_WARN`` the answer may be one of several
   (:func:`dundurs_beta`, :func:`dundurs_warnings`).
 - Points a converged path holds at stick with ``|t_T|`` beyond ``μ|t_N|``
-  by more than the traction's round-off (:func:`friction_excess_warnings`).
+  by more than the traction's round-off (:func:`friction_excess_warnings`),
+  and springs so stiff that this round-off exceeds the stick/slip band's
+  whole excess (:func:`spring_band_warnings`).
 - Points a converged path holds closed in tension, ``t_N > 0`` beyond
   Newton's closed/open band in traction plus round-off
   (:func:`closed_tension_warnings`).
@@ -133,15 +135,42 @@ def friction_excess_warnings(scene, path, stress_size: float = 0.0, h: float | N
         return (status == STICK) & (over > allowed), over / np.maximum(limit, max(mu * carried, np.finfo(float).tiny))
 
     count, worst, where = _tally(path, excess)
+    blind = spring_band_warnings(scene, h)
     if not count:
+        return blind
+    return blind + [
+        f"Γ's points stick with |t_T| above μ|t_N| = {mu:g}|t_N| at {count} (point, increment) pair(s), by up to "
+        f"{worst:.2g} of μ|t_N| (of its largest along the path where the point's is smaller; increment "
+        f"{where:g}): Newton keeps a point's status within {tol.DECISION_BAND:g} of Γ's largest μp "
+        "(DECISION_BAND, above the round-off of its margins) and holds a point at rest where Γ is unloaded "
+        "(REST_ROUNDOFF), so the loads there ask a shear/normal within that band of μ or above it, where no "
+        "sticking equilibrium exists, or leave a shear an unloaded Γ does not tell from round-off; a μ that "
+        "much larger sticks (docs/newton.md, \"Decisions that round-off cannot move\")"]
+
+
+def spring_band_warnings(scene, h: float | None) -> list[str]:
+    """Coulomb springs so stiff that their tractions' round-off
+    (``SPRING_TRACTION_ROUNDOFF·α`` of Γ's largest pressure p,
+    :func:`spring_alpha`) exceeds Newton's stick/slip band
+    (``DECISION_BAND·μ`` of p): :func:`friction_excess_warnings` then
+    allows more than the band's whole excess, and a point held at stick
+    above μ|t_N| by the band cannot be told from round-off.  One line
+    saying so, decided on the scene's inputs and ``h`` alone (never on
+    the answer's round-off).  Measured (review5's fault 4, layered closed
+    form pushed 3e-6 past its slip limit, fe P1): the band's excess,
+    3.3e-6 of μp, is warned at α = 1e8 and silent at 1e9 and 1e10, where
+    the closed form exactly at the limit sticks up to 3.8e-6 and 5.6e-6 of
+    μp above it from round-off alone."""
+    mu = getattr(scene.law, "mu", None)
+    alpha = spring_alpha(scene, h)
+    if scene.law.name != "coulomb" or not mu or tol.SPRING_TRACTION_ROUNDOFF * alpha <= tol.DECISION_BAND * mu:
         return []
-    return [f"Γ's points stick with |t_T| above μ|t_N| = {mu:g}|t_N| at {count} (point, increment) pair(s), by up to "
-            f"{worst:.2g} of μ|t_N| (of its largest along the path where the point's is smaller; increment "
-            f"{where:g}): Newton keeps a point's status within {tol.DECISION_BAND:g} of Γ's largest μp "
-            "(DECISION_BAND, above the round-off of its margins) and holds a point at rest where Γ is unloaded "
-            "(REST_ROUNDOFF), so the loads there ask a shear/normal within that band of μ or above it, where no "
-            "sticking equilibrium exists, or leave a shear an unloaded Γ does not tell from round-off; a μ that "
-            "much larger sticks (docs/newton.md, \"Decisions that round-off cannot move\")"]
+    return [f"penalty springs at α = k h/E₋ = {alpha:.2g} with μ = {mu:g}: their tractions' round-off "
+            f"(SPRING_TRACTION_ROUNDOFF·α = {tol.SPRING_TRACTION_ROUNDOFF * alpha:.2g} of Γ's largest pressure) "
+            f"exceeds Newton's stick/slip band (DECISION_BAND·μ = {tol.DECISION_BAND * mu:.2g} of it), so a point "
+            "held at stick above μ|t_N| within that band cannot be told from round-off and is not reported; "
+            f"springs with α at most {tol.DECISION_BAND * mu / tol.SPRING_TRACTION_ROUNDOFF:.2g}, or "
+            "enforcement = \"exact\", tell it apart (docs/newton.md, \"Decisions that round-off cannot move\")"]
 
 
 def closed_tension_warnings(scene, path, stress_size: float = 0.0) -> list[str]:

@@ -58,11 +58,15 @@ def closed(args, argv) -> None:
 def benchmark(args, argv) -> None:
     """``benchmark``: efficiency beside GetFEM's level-set XFEM, one section a scene in benchmark.md."""
     from ..agreement import default_exclusion
-    from ..efficiency import BENCHMARK_LADDERS, BENCHMARK_VARIANTS, REFERENCE_H, efficiency
+    from ..efficiency import BENCHMARK_LADDERS, BENCHMARK_VARIANTS, REFERENCE_H, check_budgets, efficiency, ladder_rungs
     from ..peer_getfem import getfem_module
     getfem_module()  # before the long reference runs
+    for s in args.scene:  # every scene's ladder, and --workers of its rungs at once, before the first scene runs
+        check_budgets(load_scene(s), ladder_rungs(BENCHMARK_VARIANTS, BENCHMARK_LADDERS[s]), REFERENCE_H[s], False,
+                      args.workers, offer_allow_large=False)
     sections = [efficiency(s, BENCHMARK_VARIANTS, BENCHMARK_LADDERS[s], REFERENCE_H[s],
-                           default_exclusion(load_scene(s)), args.out / s, workers=args.workers, argv=argv)
+                           default_exclusion(load_scene(s)), args.out / s, workers=args.workers, argv=argv,
+                           offer_allow_large=False)
                 for s in args.scene]
     files.write_text(args.out / "benchmark.md", "# Benchmark against GetFEM's level-set XFEM\n\n"
                      + "\n".join(t.replace("](efficiency.png)", f"]({s}/efficiency.png)")
