@@ -23,7 +23,6 @@ smooth up to Γ from b's side.  Without it (or without bodies) every node is
 seen everywhere.
 
 Weights ``w(r)``: the cubic spline and the quartic spline of Belytschko et
-Weights ``w(r)``: the cubic spline and the quartic spline of Belytschko et
 al. (1994), on circular supports (``r = |x − x_I| / r_I``) or rectangular ones
 (``w(r_x) w(r_y)``).  Everything is vectorised over points; neighbours come
 from buckets of candidates found with ``scipy.spatial.cKDTree``.
