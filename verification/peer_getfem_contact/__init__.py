@@ -74,10 +74,9 @@ One idea a module, each with its maths and contract:
   (:func:`study`, :func:`check_sizes`);
 - :mod:`~verification.peer_getfem_contact.tables`: its tables
   (:func:`markdown`);
-- :mod:`~verification.peer_getfem_contact.cli`: the command line
-  (:func:`main`), run by ``__main__``.
+- ``__main__``: the command line (:func:`main`).
 
-The arrows: ``cli`` → ``runs``, ``scenes``, ``tables``; ``runs`` →
+The arrows: ``__main__`` → ``runs``, ``scenes``, ``tables``; ``runs`` →
 ``solver``, ``comparison``, ``scenes``; ``solver`` → ``reach``,
 ``bodies``, ``bricks``, ``newton``, ``gamma``, ``fields``; ``bricks``,
 ``gamma``, ``fields`` → ``bodies``; ``gamma`` → ``fields``; ``newton``,
@@ -91,11 +90,14 @@ because the tests and docs/peer-contact.md reach them as
 ``_facet_points``, ``_Gamma`` and ``_table``.  A setting is read where it
 lives: to vary one (``AUGMENTATION``, say), set it in its module
 (``peer_getfem_contact.bricks.AUGMENTATION = 10.0``); setting the name
-imported here changes nothing.
+imported here changes nothing.  :func:`main` is imported from
+``__main__`` on first use (``peer_getfem_contact.main``, or ``from
+verification.peer_getfem_contact import main``): imported here at once,
+``python -m verification.peer_getfem_contact`` would find its own
+``__main__`` imported before running it, and runpy warns.
 """
 from .bodies import FACE_MATCH, MULTIPLIER_DEGREE
 from .bricks import AUGMENTATION, TIE_FRICTION, _edge_traction  # noqa: F401  (the tests' check)
-from .cli import main
 from .comparison import Difference, differences, path_means, status_split
 from .fields import GetFEMContactFields
 from .gamma import FACET_POINTS, _facet_points, _Gamma  # noqa: F401  (the tests' checks)
@@ -105,6 +107,14 @@ from .runs import check_sizes, study
 from .scenes import INCLINED_A, STUDIES, WEDGE, WEDGE_SLIP, exact_scene
 from .solver import solve
 from .tables import _table, markdown  # noqa: F401  (docs/peer-contact.md's script)
+
+
+def __getattr__(name: str):
+    """``main``, the command line, imported from ``__main__`` on first use."""
+    if name == "main":
+        from .__main__ import main
+        return main
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 __all__ = [
     # solver
@@ -129,6 +139,6 @@ __all__ = [
     "study", "check_sizes",
     # tables
     "markdown",
-    # cli
+    # __main__
     "main",
 ]
