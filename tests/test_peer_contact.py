@@ -1,5 +1,5 @@
 """GetFEM's contact bricks as a peer of our exact contact
-(verification/peer_getfem_contact.py, docs/peer-contact.md).
+(verification/peer_getfem_contact/, docs/peer-contact.md).
 
 The default stage needs no GetFEM: the module imports without it, a scene
 outside its reach is refused by name before GetFEM is asked for, a missing
@@ -76,7 +76,7 @@ def test_the_study_refuses_an_h_before_any_mesh(h, problem, capsys, monkeypatch)
     """The study checks every h before any solve: one line, exit 2 (an h
     of 1e-9 meshed until the machine killed it); the peer's own size
     (efgm's run at h = 0.001 fits, GetFEM's P2 meshes do not)."""
-    monkeypatch.setattr(peer, "_Bodies", None)  # no mesh is made
+    monkeypatch.setattr(peer.solver, "_Bodies", None)  # no mesh is made
     methods = ["efgm"] if h == "0.001" else ["fe"]
     assert peer.main(["A", "--h", "0.1", h, "--methods", *methods]) == 2
     err = capsys.readouterr().err.splitlines()

@@ -1064,7 +1064,7 @@ OPEN_GAP_SHARE = 5e-2
 #: of θ); a straight chord would be θ²/24 = 4e-4 short.
 PEER_CONTACT_CURVED_FACET = 1e-6
 
-#: GetFEM's Alart–Curnier contact (verification/peer_getfem_contact.py)
+#: GetFEM's Alart–Curnier contact (verification/peer_getfem_contact/)
 #: against our exact fe P2 at h = 0.025, P2 both, the RMS difference as a
 #: share of ours' largest value away from singular points, per profile
 #: quantity (tests/test_peer_contact.py): 1.5 times the value measured
