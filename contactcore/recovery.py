@@ -152,9 +152,11 @@ class PatchRecovery:
             todo = np.flatnonzero(np.isnan(coef[:, 0, 0]) & (count > terms))
             if not len(todo):
                 continue
-            U, S, Vt = distinct_svd(A[todo, :, :terms])
+            every = len(todo) == len(targets)  # no copies of the stacks (the same values)
+            U, S, Vt = distinct_svd(A[..., :terms] if every else A[todo, :, :terms])
             full = np.sum(S > S[:, :1] * max(count.max(), terms) * np.finfo(float).eps, axis=1) == terms
-            solved = np.swapaxes(Vt, 1, 2) @ ((np.swapaxes(U, 1, 2) @ Y[todo]) / np.where(S > 0, S, 1.0)[:, :, None])
+            solved = np.swapaxes(Vt, 1, 2) @ ((np.swapaxes(U, 1, 2) @ (Y if every else Y[todo]))
+                                              / np.where(S > 0, S, 1.0)[:, :, None])
             coef[todo[full]] = 0.0
             coef[todo[full], :terms] = solved[full]
         self._fitted[targets] = True
