@@ -29,7 +29,7 @@ import numpy as np
 
 from .. import tolerances as tol
 from ..quadrature import background_cells, volume_rule
-from ..recovery import PatchRecovery
+from ..recovery import PatchRecovery, incidence_of
 from ..scaling import Sizes
 from ..scene import Scene
 from .singular import far_from_singular
@@ -77,6 +77,8 @@ def recovered_stress(scene: Scene, er: EnergyRule, sigma: np.ndarray) -> np.ndar
     least-squares fit to ``σ_h`` over the Gauss points of its patch, a local
     L2 projection; σ_h itself where a patch fits no line."""
     rule, out = er.rule, sigma.copy()
+    keys = er.keys[er.cell]
+    incidence = incidence_of(keys)  # the same cells for either body
     for body in (0, 1):
         mine = np.flatnonzero(rule.bodies == body)
         if not len(mine):
@@ -84,8 +86,8 @@ def recovered_stress(scene: Scene, er: EnergyRule, sigma: np.ndarray) -> np.ndar
         sample = np.full(len(rule.weights), -1)
         sample[mine] = np.arange(len(mine))
         _, first, inverse = np.unique(er.cell[mine], return_index=True, return_inverse=True)
-        recovery = PatchRecovery(er.keys[er.cell], sample, rule.points[mine], rule.weights[mine], sigma[mine],
-                                 rings=tol.ENERGY_RINGS)
+        recovery = PatchRecovery(keys, sample, rule.points[mine], rule.weights[mine], sigma[mine],
+                                 rings=tol.ENERGY_RINGS, incidence=incidence)
         star = recovery.at(mine[first][inverse], rule.points[mine])
         ok = ~np.isnan(star[:, 0])
         out[mine[ok]] = star[ok]
