@@ -19,7 +19,7 @@ point meets a closed one.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -28,7 +28,10 @@ from .errors import require_finite
 from .exact import is_exact
 from .geometry import CircleInterface, tangent_of
 from .result import Fields
+from .errors import ContactError
 from .scene import DISPLACEMENT_QUANTITIES, INTERFACE_QUANTITIES, STRESS_QUANTITIES, LineProfile, Profile, Scene
+from .scene.check_profiles import check_profiles
+from .scene.profiles import InterfaceProfile
 
 
 @dataclass(frozen=True)
@@ -120,20 +123,39 @@ def evaluate_quantities(scene: Scene, fields: Fields, points: np.ndarray, quanti
     return {q: out[q] for q in quantities}
 
 
+def check_profile(scene: Scene, profile) -> None:
+    """The rules a scene's own profiles meet (:func:`check_profiles`: known
+    quantities, a segment inside the domain, on Γ for Γ's quantities…)
+    applied to one profile a user built, or a :class:`SceneError` naming
+    it; a ContactError if ``profile`` is no profile at all."""
+    if not isinstance(profile, (LineProfile, InterfaceProfile)):
+        raise ContactError(f"profile: must be a LineProfile or an InterfaceProfile, got {type(profile).__name__} "
+                           f"{profile!r} (a scene's own: scene.profiles)")
+    check_profiles(replace(scene, profiles=(profile,)))
+
+
 def sample_profile(scene: Scene, fields: Fields, profile: Profile, path=None) -> ProfileData:
     """One profile of ``scene`` evaluated on ``fields`` (and the interface
     history ``path``, for a law that has one: a Result's ``interface``);
     SolverError if a quantity is not finite (the last guard before anything
-    is written).
+    is written).  A profile the user built is held to the rules of a
+    scene's own (:func:`check_profile`) before any field is evaluated:
+    never a sample outside the domain, nor Γ's quantities off Γ.
 
     A Result's fields (:class:`contactcore.scaling.ScaledFields`) are
     sampled where the method solved, on the dimensionless scene, and mapped
     back: the same samples in any units and placement, so that one on a cell
     edge (a P1 stress jumps there) takes the same side of it."""
+    check_profile(scene, profile)
+    return _sampled(scene, fields, profile, path)
+
+
+def _sampled(scene: Scene, fields: Fields, profile: Profile, path=None) -> ProfileData:
+    """:func:`sample_profile` of a profile already checked."""
     scales = getattr(fields, "scales", None)
     if scales is not None:
-        data = scales.profile_data(sample_profile(scales.scene(scene), fields.inner, scales.profile(profile),
-                                                  scales.path_in(path)))
+        data = scales.profile_data(_sampled(scales.scene(scene), fields.inner, scales.profile(profile),
+                                            scales.path_in(path)))
     else:
         s, pts, param = sample_points(scene, profile)
         columns = {"s": s, "x": pts[:, 0], "y": pts[:, 1]}

@@ -38,8 +38,16 @@ class Fields(Protocol):
         """``(σxx, σyy, σxy)`` (m, 3) of body ``bodies[i]`` at ``points[i]``."""
 
 
+def _coordinate(x) -> str:
+    """Six digits where they say the number exactly, else the shortest
+    that reads back: a point just outside the domain is never shown on
+    its boundary (1 + 1e-6 is ``1.000001``, not ``1``)."""
+    short = f"{float(x):.6g}"
+    return short if float(short) == float(x) or not np.isfinite(x) else repr(float(x))
+
+
 def _xy(p, unit: str = "") -> str:
-    return f"({p[0]:.6g}, {p[1]:.6g})" + (f" {unit}" if unit else "")
+    return f"({_coordinate(p[0])}, {_coordinate(p[1])})" + (f" {unit}" if unit else "")
 
 
 def _domain_text(domain, unit: str) -> str:
@@ -69,8 +77,8 @@ def check_points(points, bodies, scene=None, what: str = "fields",
     bodies)`` of :class:`Fields`, or a FieldsError naming the argument, or
     the first offending point and why.
 
-    Without ``scene``, the arrays alone: ``points`` (m, 2) (a third
-    coordinate is ignored) and finite, ``bodies`` m integers 0 or 1.  With
+    Without ``scene``, the arrays alone: ``points`` (m, 2) (or (m, 3)
+    with z = 0, as dolfinx pads them) and finite, ``bodies`` m integers 0 or 1.  With
     the user's ``scene``: also each point inside the domain and inside its
     body, both within ``GEOMETRY · L`` (contactcore.tolerances): a point on
     Γ is in both bodies, by Γ's signed distance (a level set's to first
@@ -83,6 +91,10 @@ def check_points(points, bodies, scene=None, what: str = "fields",
         raise FieldsError(f"{what}: points: not an array of numbers ({exc})") from None
     if pts.ndim != 2 or pts.shape[1] not in (2, 3):
         raise FieldsError(f"{what}: points: must have shape (m, 2), got {pts.shape}")
+    if pts.shape[1] == 3 and np.any(pts[:, 2] != 0.0):
+        i = int(np.flatnonzero(pts[:, 2] != 0.0)[0])
+        raise FieldsError(f"{what}: points[{i}] has z = {float(pts[i, 2])!r}: the problem is plane, give (m, 2) "
+                          "points, or (m, 3) with z = 0 as dolfinx pads them")
     pts = pts[:, :2]
     bad = np.flatnonzero(~np.all(np.isfinite(pts), axis=1))
     if len(bad):
