@@ -93,14 +93,14 @@ def interface_response(scene: Scene, fields: Fields, points: np.ndarray, path=No
     g = np.column_stack([np.sum(jump * n, axis=1), np.sum(jump * tangent_of(n), axis=1)])
     if is_exact(scene.law):
         if path is None or not path.steps:
-            raise ValueError(f"the exact '{scene.law.name}' law's tractions come from the solve: pass the "
+            raise ContactError(f"path: the exact '{scene.law.name}' law's tractions come from the solve: pass the "
                              "Result's interface path")
         t = path.piece_means(scene.interface, points, path.final.traction)
         return {"gN": g[:, 0], "gT": g[:, 1], "tN": t[:, 0], "tT": t[:, 1]}
     state = None
     if scene.law.has_history:
         if path is None or path.state is None:
-            raise ValueError(f"the '{scene.law.name}' law needs the interface history: pass the Result's "
+            raise ContactError(f"path: the '{scene.law.name}' law needs the interface history: pass the Result's "
                              "interface path")
         state = path.state_at(scene.interface, points)
     t = scene.law.evaluate(g, state).traction
@@ -175,7 +175,7 @@ def sample_profiles(scene: Scene, fields: Fields, path=None) -> list[ProfileData
 
     ``path`` is the Result's ``interface``: required where Γ's tractions
     depend on it (a law with history, such as ``coulomb``, and any exactly
-    enforced law), else a ValueError says to pass it.  Pass the scene the
+    enforced law), else a ContactError says to pass it.  Pass the scene the
     run solved (``result.scene``): another law gives other tractions.  A
     quantity that is not finite is a SolverError naming the profile; a
     point the fields refuse is their FieldsError."""

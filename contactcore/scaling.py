@@ -38,13 +38,14 @@ from __future__ import annotations
 import dataclasses
 import functools
 import math
+import numbers
 import sys
 from dataclasses import dataclass, replace
 
 import numpy as np
 
 from . import tolerances as tol
-from .errors import SceneError, require_finite
+from .errors import ContactError, DiscretisationError, SceneError, require_finite
 from .geometry import CircleInterface, Disc, LevelSetInterface, LineInterface, Rectangle
 from .interface_path import InterfacePath
 from .profiles import ProfileData
@@ -408,7 +409,10 @@ def dimensionless_inputs(scene: Scene, discretisation, h: float | None):
     """``(scales, scene, discretisation, h)``: the scales of the user's
     ``scene`` and the scene, the discretisation's options and ``h`` a solve
     sees, made dimensionless.  An ``h`` that is not > 0 is passed on
-    unchanged, for the method to refuse in the user's numbers."""
+    unchanged, for the method to refuse in the user's numbers; a
+    ``scene`` that is no Scene, or an ``h`` that is no number, is refused
+    here by name (a ContactError, not the AttributeError it would meet)."""
+    _check_kinds(scene, h)
     scales = Scales.of(scene)
     if h is not None and h > 0:  # in the user's numbers, whatever the driver (run checks it too)
         check_resolution(scene, h, "h")
@@ -416,6 +420,18 @@ def dimensionless_inputs(scene: Scene, discretisation, h: float | None):
     given = {f.name: getattr(discretisation, f.name) for f in dataclasses.fields(discretisation)}
     inner = replace(discretisation, **{k: _option_in(k, v, scales) for k, v in given.items()})
     return scales, scales.scene(scene), inner, h_in
+
+
+def _check_kinds(scene, h) -> None:
+    """Refuse a ``scene`` that is no :class:`Scene` (a scene's name, a
+    path: :func:`contactcore.load_scene` reads them) and an ``h`` that is
+    no real number (a string, a bool), naming the argument."""
+    if not isinstance(scene, Scene):
+        raise ContactError(f"scene: must be a Scene (contactcore.load_scene(NAME or PATH) reads one), got "
+                           f"{type(scene).__name__} {scene!r}"[:200])
+    if h is not None and (isinstance(h, bool) or not isinstance(h, numbers.Real)):
+        raise DiscretisationError(f"h: must be a number, the cell size or node spacing in the scene's length "
+                                  f"unit, got {type(h).__name__} {h!r}"[:200])
 
 
 def dimensionless(solve):
