@@ -196,6 +196,16 @@ LOCKING_WARN = 1e4
 #: α_N = 2.5 at its h = 0.05, where fe P1's t_N is 1.5 % of t_T.
 PROFILE_TRACTION_WARN = {"N": 6.0, "T": 2.0}
 
+#: An exactly enforced law on a circle of radius R: its profile tractions
+#: (the mean over each piece of Γ, read between the pieces' centres) are
+#: warned about above h/R = EXACT_PROFILE_WARN.  Measured by grader15 (#6,
+#: 2026-11-28; uniform stress [[−1e6, 3e5], [3e5, −2e6]], centre (0.43,
+#: 0.52), h = 0.1, profile G's t_N off by, of max|σ|): fe P2 2.1e-2, 7.1e-2,
+#: 1.3e-1 and xfem P2 2.8e-2, 1.0e-1, 2.0e-1 at R = 0.3, 0.15, 0.1 (h/R =
+#: 0.33, 0.67, 1), the solve's own points 1e-4..2.5e-3; the penalty's
+#: PROFILE_TRACTION_WARN warns of errors of that size (tens of per cent).
+EXACT_PROFILE_WARN = 0.5
+
 #: False normal traction on a curved Γ.  ``t_N = k_N g_N`` multiplies the
 #: discretisation error of ``g_N`` (its exact value may be zero, as in scene
 #: B) by ``k_N``; relative to ``t_T = k_T g_T`` it scales as
