@@ -196,6 +196,16 @@ LOCKING_WARN = 1e4
 #: α_N = 2.5 at its h = 0.05, where fe P1's t_N is 1.5 % of t_T.
 PROFILE_TRACTION_WARN = {"N": 6.0, "T": 2.0}
 
+#: An exactly enforced law on a circle of radius R: its profile tractions
+#: (the mean over each piece of Γ, read between the pieces' centres) are
+#: warned about above h/R = EXACT_PROFILE_WARN.  Measured by grader15 (#6,
+#: 2026-11-28; uniform stress [[−1e6, 3e5], [3e5, −2e6]], centre (0.43,
+#: 0.52), h = 0.1, profile G's t_N off by, of max|σ|): fe P2 2.1e-2, 7.1e-2,
+#: 1.3e-1 and xfem P2 2.8e-2, 1.0e-1, 2.0e-1 at R = 0.3, 0.15, 0.1 (h/R =
+#: 0.33, 0.67, 1), the solve's own points 1e-4..2.5e-3; the penalty's
+#: PROFILE_TRACTION_WARN warns of errors of that size (tens of per cent).
+EXACT_PROFILE_WARN = 0.5
+
 #: False normal traction on a curved Γ.  ``t_N = k_N g_N`` multiplies the
 #: discretisation error of ``g_N`` (its exact value may be zero, as in scene
 #: B) by ``k_N``; relative to ``t_T = k_T g_T`` it scales as
@@ -972,6 +982,24 @@ SPRING_ENTRY_MAX = 4.5e10
 #: failed, where the points' t_N spreads by at most 8 % of p; the shipped
 #: scenes have α <= 1 (layered-slip at h = 0.1).
 EFGM_FRICTION_SPRINGS = {"N": 1e3, "T": 1e2}
+
+#: EFGM warns of penalty springs of any law (``linear``, ``unilateral``,
+#: ``coulomb``) whose larger ``α = k h / E`` (E the softer body's) exceeds
+#: EFGM_SPRING_WARN[degree]: the tractions on Γ then oscillate by more than
+#: the about 1e-3 of the stress that docs/methods/efgm.md states.  The
+#: error grows as α times the jump's discretisation error.  Measured
+#: 2026-11-28 (grader15 #1) on a uniform stress σ = [[−1e6, 3e5], [3e5,
+#: −2e6]] across a straight Γ at −22.5° through (0.5, 0.47), one material
+#: (E 2e11, ν 0.3), k_N = k_T, h = 0.1, the profile G's max |t_N − exact|
+#: / max|σ| (t_T's smaller): P1 5.0e-5, 4.5e-4, 1.2e-3, 3.3e-3, 8.0e-3,
+#: 1.9e-2, 6.3e-2, 8.4e-2 at α = 0.01, 0.1, 0.3, 1, 3, 10, 100, 1e3; P2
+#: 1.3e-6, 1.4e-5, 4.0e-5, 1.3e-4, 3.5e-4, 9.8e-4, 3.9e-3, 1.2e-2 (the
+#: grader saw 0.26 and 0.18 at α = 1e6).  The limits are the α where the
+#: error reaches about 1e-3 (tests/test_efgm_stiff_springs.py measures it
+#: again).  Not a refusal: the answer is a converged, inaccurate one (the
+#: Coulomb law is refused above EFGM_FRICTION_SPRINGS because Newton's
+#: stick/slip decisions fail there).
+EFGM_SPRING_WARN = {1: 0.3, 2: 10.0}
 
 #: A ratio compared with a limit (health.check_friction_springs' α) is
 #: formed from the scene made dimensionless (k L/S, h/L, E/S): a few ulps

