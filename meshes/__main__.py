@@ -1,6 +1,7 @@
 """``python -m meshes SCENE --h H --out FILE.msh``: write a scene's fitted mesh."""
 import argparse
 import logging
+import signal
 import sys
 
 from contactcore import ContactError, load_scene
@@ -10,7 +11,35 @@ from contactcore.scene import check_resolution
 from .build import Grading, check_mesh_path, write_mesh
 
 
+#: Exit statuses of a command ended by Ctrl-C or SIGTERM: 128 + the signal,
+#: as a shell reports it (the same as ``python -m verification``'s).
+INTERRUPTED, TERMINATED = 130, 143
+
+
+class Terminated(KeyboardInterrupt):
+    """SIGTERM, raised where the command is, so that it ends as Ctrl-C
+    does: the temporary mesh file removed (:func:`write_mesh`), one line."""
+
+
+def _raise_terminated(signum, frame) -> None:
+    raise Terminated
+
+
 def main(argv=None) -> int:
+    """:func:`_command`, ended by Ctrl-C or SIGTERM in one line
+    (``interrupted`` or ``terminated``, exit 130 or 143), never a
+    traceback, and no temporary file left beside ``--out``."""
+    previous = signal.signal(signal.SIGTERM, _raise_terminated)
+    try:
+        return _command(argv)
+    except KeyboardInterrupt as exc:
+        print("terminated" if isinstance(exc, Terminated) else "interrupted", file=sys.stderr)
+        return TERMINATED if isinstance(exc, Terminated) else INTERRUPTED
+    finally:
+        signal.signal(signal.SIGTERM, previous)
+
+
+def _command(argv=None) -> int:
     """The command: refuse, before any meshing and with one ``error:`` line
     and exit 2, an output path that cannot take the mesh
     (:func:`meshes.build.check_mesh_path`), and an ``h`` that ``python -m

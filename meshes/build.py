@@ -289,11 +289,11 @@ def write_mesh(scene: Scene, h: float, out: str | Path, *, order: int = 1, gradi
         build_model(inner, h / L, order=order, grading=inner_grading)
         _nodes_to_user(scales)
         fd, tmp = tempfile.mkstemp(suffix=out.suffix, dir=out.parent)
-        os.close(fd)
-        # mkstemp makes it 0600; give the mesh the mode of every other
-        # output, 0666 less the umask (grader15 #3)
-        os.chmod(tmp, 0o666 & ~_umask())
         try:
+            os.close(fd)
+            # mkstemp makes it 0600; give the mesh the mode of every other
+            # output, 0666 less the umask (grader15 #3)
+            os.chmod(tmp, 0o666 & ~_umask())
             gmsh.write(tmp)
             os.replace(tmp, out)
         finally:

@@ -43,3 +43,25 @@ def test_the_mesh_file_has_the_mode_the_umask_gives(tmp_path, umask):
         os.umask(old)
     assert stat.S_IMODE(out.stat().st_mode) == 0o666 & ~umask
     assert [p.name for p in tmp_path.iterdir()] == ["a.msh"]
+
+
+@pytest.mark.parametrize("signum, line, status", [("SIGINT", "interrupted", cli.INTERRUPTED),
+                                                  ("SIGTERM", "terminated", cli.TERMINATED)])
+def test_a_signal_while_the_mesh_is_written_ends_in_one_line_and_leaves_no_file(tmp_path, capsys, monkeypatch,
+                                                                              signum, line, status):
+    """grader15 #2: Ctrl-C while meshing ended in a KeyboardInterrupt
+    traceback, and SIGTERM while writing left ``tmpXXXXXXXX.msh`` beside
+    ``--out``.  The signal is sent from inside gmsh's write, once the
+    temporary file exists."""
+    import signal
+
+    write = meshes.build.gmsh.write
+
+    def signalled(path):
+        write(path)
+        os.kill(os.getpid(), getattr(signal, signum))
+
+    monkeypatch.setattr(meshes.build.gmsh, "write", signalled)
+    assert cli.main(["A", "--h", "0.25", "--out", str(tmp_path / "a.msh")]) == status
+    assert capsys.readouterr().err.splitlines()[-1:] == [line]
+    assert list(tmp_path.iterdir()) == []
