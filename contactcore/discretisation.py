@@ -114,6 +114,12 @@ class Discretisation:
         (what :meth:`check` cannot know before the spacing), before anything
         is built: nothing here."""
 
+    def spacing_warnings(self, scene, h: float) -> list[str]:
+        """This method's warnings of ``scene`` at the spacing ``h`` it
+        built (its laws' and materials' numbers, which a reused system
+        (:class:`Reuse`) does not carry): none here."""
+        return []
+
     def resolution(self, scene, h: float | None, paper: bool) -> Resolution:
         """This discretisation's resolution of ``scene`` by the one rule
         (:func:`resolution`)."""
@@ -285,7 +291,7 @@ def solve(scene, discretisation: Discretisation, h: float | None = None, *, pape
         if reuse is None or not reuse.owns(built):
             built.system.close()
     report.warnings += (scene.interface_warnings(built.h, fitted=built.fitted) + scene.ligament_warnings(built.h)
-                        + built.warnings)
+                        + built.warnings + discretisation.spacing_warnings(scene, built.h))
     path = path.gathered(built.system.collective, scene.interface)
     stress_size = softer_stress(scene, built.h)  # the round-off of a traction on a Γ no load reaches
     report.warnings += health.friction_excess_warnings(scene, path, stress_size, built.h)

@@ -33,7 +33,7 @@ import numpy as np
 import scipy.sparse as sp
 
 from contactcore import BODIES, ContactError, DiscretisationError, Result, Scene, Timings
-from contactcore import discretisation, health
+from contactcore import discretisation
 from contactcore.collective import SERIAL, Collective
 from contactcore.discretisation import Built, Resolution, make
 from contactcore import tolerances as tol
@@ -384,8 +384,7 @@ def build(scene: Scene, options: EFGM, resolution: Resolution, timings: Timings)
                                 options.estimate_condition, what)
     # the fields of the whole solution, on every rank (gathered: output only)
     return Built(system, lambda x: EFGMFields(scene, approx, ranks.gather(x)[:approx.ndofs]), approx.ndofs, h=ns.h,
-                 warnings=_dilation_warnings(degree, dmax, options.gauss is None, n) + _cell_warnings(ns, radii, n)
-                 + health.stiff_spring_warnings(scene, ns.h, tol.EFGM_SPRING_WARN[degree], "efgm", degree),
+                 warnings=_dilation_warnings(degree, dmax, options.gauss is None, n) + _cell_warnings(ns, radii, n),
                  record={"h": ns.h, "nodes": len(ns.x), "enriched_nodes": approx.enr.count, "dmax": dmax,
                          "weight": options.weight, "support": options.support, "gauss": n, "basis_degree": degree})
 

@@ -74,6 +74,12 @@ class EFGM(Discretisation):
         health.check_friction_springs(scene, node_set(scene, resolution, self.nodes).h,
                                       tol.EFGM_FRICTION_SPRINGS, self.name)
 
+    def spacing_warnings(self, scene, h: float) -> list[str]:
+        """Penalty springs of any law above ``EFGM_SPRING_WARN`` at the node
+        spacing ``h`` (:func:`contactcore.health.stiff_spring_warnings`):
+        per solve, since a study's reused system carries no law."""
+        return health.stiff_spring_warnings(scene, h, tol.EFGM_SPRING_WARN[self.degree], self.name, self.degree)
+
     @classmethod
     def label(cls, result) -> str:
         return f"efgm ({result.discretisation['nodes']} nodes)"
