@@ -6,19 +6,10 @@ import sys
 
 from contactcore import ContactError, load_scene
 from contactcore.budget import check_budget
+from contactcore.endings import INTERRUPTED, TERMINATED, Terminated
 from contactcore.scene import check_resolution
 
 from .build import Grading, check_mesh_path, write_mesh
-
-
-#: Exit statuses of a command ended by Ctrl-C or SIGTERM: 128 + the signal,
-#: as a shell reports it (the same as ``python -m verification``'s).
-INTERRUPTED, TERMINATED = 130, 143
-
-
-class Terminated(KeyboardInterrupt):
-    """SIGTERM, raised where the command is, so that it ends as Ctrl-C
-    does: the temporary mesh file removed (:func:`write_mesh`), one line."""
 
 
 def _raise_terminated(signum, frame) -> None:

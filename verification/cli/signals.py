@@ -19,19 +19,12 @@ import sys
 import threading
 from contextlib import contextmanager
 
+from contactcore.endings import INTERRUPTED, TERMINATED, Terminated
+
 from .. import STARTING, files, interrupted_while_starting, janitor
 
-#: The exit status of a run ended by Ctrl-C: 128 + SIGINT, as a shell reports it.
-INTERRUPTED = 130
-#: ... and by SIGTERM (``kill``, ``timeout``, a batch scheduler): 128 + SIGTERM.
-TERMINATED = 143
 #: The signals that end a command, SIGTERM as Ctrl-C ends it.
 ENDING = files.HELD_SIGNALS
-
-
-class Terminated(KeyboardInterrupt):
-    """SIGTERM, raised where the process is, so that it ends as Ctrl-C does:
-    the result folder discarded, the workers stopped, one line."""
 
 
 def raise_terminated(signum, frame) -> None:
