@@ -170,7 +170,3 @@ def structured_grid(scene, cell: str, degree: int, resolution):
     cells = resolution.counts or cell_counts(scene, resolution.h)
     nodes = [degree * n for n in cells]
     return tuple(scene.domain.corner), [s / n for s, n in zip(scene.domain.size, nodes)], nodes
-
-    @classmethod
-    def label(cls, result) -> str:
-        return f"xfem P{result.degree} ({result.discretisation['cells']} cells)"
