@@ -298,6 +298,7 @@ def solve(scene, discretisation: Discretisation, h: float | None = None, *, pape
     report.warnings += health.closed_tension_warnings(scene, path, stress_size)
     fields = built.fields(x)
     strain_unit = Scales.of(scene.user).strain if scene.source is not None else 1.0  # ε = (U/L) σ'/E'
+    report.warnings += health.large_slip_warnings(scene, path, strain_unit)  # a jump U/L of a length
     report.warnings += scene.small_strain_warnings(fields, built.h, strain_unit)
     timings.total = time.perf_counter() - start
     return Result(method=discretisation.name, scene=scene, degree=discretisation.degree, dofs=built.dofs,

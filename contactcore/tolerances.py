@@ -937,6 +937,18 @@ NU_LOCKING_WARN_FE_P1_EXACT = 0.44
 #: 2.5 mm) 1.2e-3; its aluminium made E = 1e-3 MPa, 8e4.
 SMALL_STRAIN_LIMIT = 1e-2
 
+#: Small sliding: every method pairs Γ's two sides where they started
+#: (geometrically linear, as small strain), so a slip s leaves s of a
+#: straight Γ facing nothing and turns a circular Γ's normal by s/R at the
+#: partner.  Warned (contactcore.health.large_slip_warnings) where |g_T|
+#: exceeds this share of Γ's length (its radius on a circle): 1 % of Γ
+#: mispaired, the SMALL_STRAIN_LIMIT of the interface.  Measured
+#: 2026-11-28 (the largest |g_T| over every increment, fe P1, h = 0.1):
+#: grader13's bigslip (the shear block driven 0.5 m on a 1 m Γ) 0.5;
+#: A-cyclic 9.9e-4, A 2.5e-4, layered-slip 1.05e-5, B 9.3e-6, C and
+#: C-coulomb 4e-6: ten times below the limit at the worst shipped scene.
+LARGE_SLIP_SHARE = 1e-2
+
 #: The least ratio of the softer body's Young's modulus to the stiffer's a
 #: scene may have (refused below, at validation).  The softer body's
 #: stiffness is that fraction of the stiffer's, so LU's round-off, ε ≈

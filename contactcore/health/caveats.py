@@ -18,6 +18,8 @@ off, or one of several.
   by more than the traction's round-off (:func:`friction_excess_warnings`),
   and springs so stiff that this round-off exceeds the stick/slip band's
   whole excess (:func:`spring_band_warnings`).
+- Slip beyond small sliding: a tangential jump above LARGE_SLIP_SHARE of
+  Γ's size (:func:`large_slip_warnings`).
 - Points a converged path holds closed in tension, ``t_N > 0`` beyond
   Newton's closed/open band in traction plus round-off
   (:func:`closed_tension_warnings`).
@@ -30,6 +32,7 @@ from __future__ import annotations
 import numpy as np
 
 from .. import tolerances as tol
+from ..geometry import CircleInterface
 from ..laws import OPEN, STICK
 
 
@@ -252,3 +255,38 @@ def _locking_warnings(scene) -> list[str]:
             "too (scene A at ν = 0.4999, h = 0.05: the upper block's moment from σyy on Γ 18 % off in fe P2, 180 % "
             "in xfem P2, 120 % in EFGM's quadratic basis); Γ's tractions come from the same fields and may be off "
             "as much (fe P1's t_N on a uniformly pressed Γ at ν = 0.499 ranged over 0.01–2.8 times the pressure)"]
+
+
+def large_slip_warnings(scene, path, displacement_unit: float = 1.0) -> list[str]:
+    """A converged ``path`` (an
+    :class:`~contactcore.interface_path.InterfacePath`) whose tangential
+    jump |g_T| somewhere exceeds ``LARGE_SLIP_SHARE`` of Γ's size: the
+    radius of a circular Γ (a slip s turns the normal by s/R), else Γ's
+    length (the sum of its quadrature weights; a slip s leaves s of it
+    facing nothing).  Every method pairs Γ's two sides where they started
+    (small sliding, as small strain, docs/scenes.md), so beyond that share
+    the pairing, and the answer there, is not the physical one however
+    well it solves its equations.  ``displacement_unit`` turns the path's
+    jumps into its lengths' unit (U/L on a dimensionless scene,
+    :mod:`contactcore.scaling`).  One line naming the share and its
+    increment."""
+    if path is None or not path.steps or not len(path.weights):
+        return []
+    size = (scene.interface.radius if isinstance(scene.interface, CircleInterface)
+            else float(np.sum(path.weights)))
+    if not size > 0:
+        return []
+    worst, where = 0.0, None
+    for step in path.steps:
+        slip = displacement_unit * float(np.max(np.abs(np.asarray(step.jump, float).reshape(-1, 2)[:, 1]),
+                                                initial=0.0)) / size
+        if slip > worst:
+            worst, where = slip, step.step
+    if not worst > tol.LARGE_SLIP_SHARE:
+        return []
+    what = "Γ's radius" if isinstance(scene.interface, CircleInterface) else "Γ's length"
+    return [f"Γ slips by up to {worst:.2g} of {what} (increment {where:g}), above {tol.LARGE_SLIP_SHARE:g}: every "
+            "method is geometrically linear and pairs Γ's two sides where they started (small sliding, as small "
+            "strain), so a point that slid that far is still paired with its first partner, and the part of Γ "
+            "that has slid past the other body's end still carries traction: the answer solves the model, not "
+            "the physical problem, there (docs/scenes.md, \"Small strain and small sliding\")"]
