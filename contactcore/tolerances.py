@@ -462,6 +462,28 @@ MU_SMALLEST = 10 * TRACTION_ROUNDOFF
 #: hold.
 MU_DUNDURS_WARN = 0.75
 
+#: A frictional hinge (contactcore.health.hinge_warnings): an increment of
+#: a Coulomb path at which Γ is pressed (its normal resultant N compressive
+#: beyond round-off) yet closed over less than HINGE_CLOSED_SHARE of its
+#: length, its few closed points holding by friction a shear resultant T
+#: above HINGE_SHEAR_RATIO times N.  Friction above 1 lets a body tip onto
+#: a corner of Γ and turn about it instead of sliding, whatever Dundurs'
+#: β: an equilibrium alongside the one where Γ stays closed and slips
+#: (quasi-static Coulomb friction has several answers at large μ: Hassani,
+#: Hild & Ionescu, CMAME 2004; Renard's uniqueness criterion, J. Math.
+#: Anal. Appl. 2006, and Ballard's counter-example, J. Elasticity 1999,
+#: give no bound a scene's inputs could check, so the answer is checked).
+#: Measured 2026-11-28, fe P1, h = 0.1, the share closed and T/N at the
+#: worst increment: grader13's shear block of equal layers (β = 0) at μ =
+#: 1000 and 300 tipped onto one Gauss point, share 0.028, T/N = 1000;
+#: at μ = 100 it stays closed (share 1.0); scenes A, B, C, A-cyclic,
+#: layered-slip share 1.0; C-coulomb 0.59 at T/N ≤ μ = 0.2.  A tenth of Γ
+#: lies between; T > N needs μ > 1, where friction can carry more shear
+#: than the pressure (a rigid block then tips before it slides once μ
+#: exceeds its half-width over its height).
+HINGE_CLOSED_SHARE = 0.1
+HINGE_SHEAR_RATIO = 1.0
+
 #: A step that takes every load to zero from a loaded state, under a law
 #: with history, where a body is held by Γ alone, is solved first to
 #: LOAD_APPROACH of the step short of zero, then to zero from that answer

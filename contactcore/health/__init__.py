@@ -52,7 +52,7 @@ are its modules' public functions, classes and the failure words
 stay in their home.
 """
 from .caveats import (closed_tension_warnings, dundurs_beta, dundurs_warnings, friction_excess_warnings,
-                      large_slip_warnings, material_warnings, traction_locking_warnings)
+                      hinge_warnings, large_slip_warnings, material_warnings, traction_locking_warnings)
 from .equilibrium import beyond_cone, friction_demand, tie_cause
 from .residual import (DIVERGED, NOT_CONVERGED, SHORT_OF_CHECK, backward_error, check_residual, options_chose,
                        relative_residual)
@@ -71,7 +71,7 @@ __all__ = [
     "FreeBody", "check_held", "check_restraint", "lets_go", "modes_centre", "slips_free",
     # caveats
     "closed_tension_warnings", "dundurs_beta", "dundurs_warnings", "friction_excess_warnings", "material_warnings",
-    "large_slip_warnings", "traction_locking_warnings",
+    "hinge_warnings", "large_slip_warnings", "traction_locking_warnings",
     # equilibrium
     "beyond_cone", "friction_demand", "tie_cause",
 ]

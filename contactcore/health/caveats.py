@@ -18,6 +18,9 @@ off, or one of several.
   by more than the traction's round-off (:func:`friction_excess_warnings`),
   and springs so stiff that this round-off exceeds the stick/slip band's
   whole excess (:func:`spring_band_warnings`).
+- A frictional hinge: Γ pressed yet closed over a few points that hold by
+  friction more shear than the pressure, a body tipped onto a corner of Γ
+  (:func:`hinge_warnings`): one answer of several at μ > 1, whatever β.
 - Slip beyond small sliding: a tangential jump above LARGE_SLIP_SHARE of
   Γ's size (:func:`large_slip_warnings`).
 - Points a converged path holds closed in tension, ``t_N > 0`` beyond
@@ -290,3 +293,46 @@ def large_slip_warnings(scene, path, displacement_unit: float = 1.0) -> list[str
             "strain), so a point that slid that far is still paired with its first partner, and the part of Γ "
             "that has slid past the other body's end still carries traction: the answer solves the model, not "
             "the physical problem, there (docs/scenes.md, \"Small strain and small sliding\")"]
+
+
+def hinge_warnings(scene, path) -> list[str]:
+    """A converged Coulomb ``path`` (an
+    :class:`~contactcore.interface_path.InterfacePath`) with an increment at
+    which Γ is pressed (its normal resultant ``N = −∫ t_N ds`` positive
+    beyond TRACTION_ROUNDOFF of Γ's largest traction along the path times
+    its length) yet closed over less than HINGE_CLOSED_SHARE of its length,
+    while its closed points hold by friction a shear resultant
+    ``T = ∫ |t_T| ds`` above HINGE_SHEAR_RATIO·N: a body tipped onto a
+    frictional hinge, one answer of several (tolerances.py's note).  One
+    line naming the first such increment, its closed share and T/N; none
+    for another law."""
+    mu = getattr(scene.law, "mu", None)
+    if path is None or scene.law.name != "coulomb" or not mu or not len(path.weights):
+        return []
+    w = np.asarray(path.weights, float)
+    length = float(np.sum(w))
+    largest = max((float(np.max(np.abs(np.asarray(s.traction, float)), initial=0.0)) for s in path.steps),
+                  default=0.0)
+    count, first = 0, None
+    for step in path.steps:
+        t = np.asarray(step.traction, float).reshape(-1, 2)
+        closed = np.asarray(step.status) != OPEN
+        pressed = float(-(w @ t[:, 0]))
+        share = float(np.sum(w[closed])) / length
+        shear = float(w[closed] @ np.abs(t[closed, 1]))
+        if (np.any(closed) and pressed > tol.TRACTION_ROUNDOFF * largest * length
+                and share < tol.HINGE_CLOSED_SHARE and shear > tol.HINGE_SHEAR_RATIO * pressed):
+            count += 1
+            if first is None:
+                first = (step.step, share, shear / pressed)
+    if not count:
+        return []
+    step, share, ratio = first
+    return [f"from increment {step:g} ({count} increment(s)) Γ is pressed yet closed over only {share:.2g} of its "
+            f"length, its few closed points holding by friction (μ = {mu:g}) a shear {ratio:.3g} times the "
+            "pressure's resultant: a body has tipped onto a corner of Γ and turns about it instead of sliding. "
+            "That is an equilibrium, but not the only one: Coulomb friction above 1 lets the same loads be held "
+            "with Γ closed and slipping too, whatever Dundurs' β, and the answer given is one of several, the "
+            "one the method's path found (grader13's shear block of equal layers tipped at μ = 300 and 1000 "
+            "in every method; at 100 fe stayed closed, xfem P2 tipped); do not take it as the answer: lower μ, or compare "
+            "methods and load paths (docs/contact-enforcement.md, \"Known limits\")"]
