@@ -38,7 +38,8 @@ One idea a module, each with its maths and sources:
 - :mod:`~contactcore.health.restraint`: the rigid-body modes and whether
   the supports, pins and Γ hold them;
 - :mod:`~contactcore.health.caveats`: the warnings on an answer found
-  (locking, Dundurs' β, friction beyond μ|t_N|, closed points in tension);
+  (locking, Dundurs' β, friction beyond μ|t_N|, closed points in tension,
+  a body tipped onto a frictional hinge, slip beyond small sliding);
 - :mod:`~contactcore.health.equilibrium`: whether the loads leave an
   equilibrium (Coulomb's cone on a body held by Γ alone, a body pulled
   off Γ, the unilateral law's tie).
