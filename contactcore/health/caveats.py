@@ -295,11 +295,13 @@ def large_slip_warnings(scene, path, displacement_unit: float = 1.0) -> list[str
             "the physical problem, there (docs/scenes.md, \"Small strain and small sliding\")"]
 
 
-def hinge_warnings(scene, path) -> list[str]:
+def hinge_warnings(scene, path, stress_size: float = 0.0) -> list[str]:
     """A converged Coulomb ``path`` (an
     :class:`~contactcore.interface_path.InterfacePath`) with an increment at
     which Γ is pressed (its normal resultant ``N = −∫ t_N ds`` positive
-    beyond TRACTION_ROUNDOFF of Γ's largest traction along the path times
+    beyond TRACTION_ROUNDOFF of Γ's largest traction along the path, or of
+    the scene's ``stress_size`` if larger (on a Γ the loads leave unloaded
+    every traction is round-off, :func:`closed_tension_warnings`), times
     its length) yet closed over less than HINGE_CLOSED_SHARE of its length,
     while its closed points hold by friction a shear resultant
     ``T = ∫ |t_T| ds`` above HINGE_SHEAR_RATIO·N: a body tipped onto a
@@ -320,7 +322,7 @@ def hinge_warnings(scene, path) -> list[str]:
         pressed = float(-(w @ t[:, 0]))
         share = float(np.sum(w[closed])) / length
         shear = float(w[closed] @ np.abs(t[closed, 1]))
-        if (np.any(closed) and pressed > tol.TRACTION_ROUNDOFF * largest * length
+        if (np.any(closed) and pressed > tol.TRACTION_ROUNDOFF * max(largest, stress_size) * length
                 and share < tol.HINGE_CLOSED_SHARE and shear > tol.HINGE_SHEAR_RATIO * pressed):
             count += 1
             if first is None:
