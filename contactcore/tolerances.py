@@ -462,6 +462,28 @@ MU_SMALLEST = 10 * TRACTION_ROUNDOFF
 #: hold.
 MU_DUNDURS_WARN = 0.75
 
+#: A frictional hinge (contactcore.health.hinge_warnings): an increment of
+#: a Coulomb path at which Γ is pressed (its normal resultant N compressive
+#: beyond round-off) yet closed over less than HINGE_CLOSED_SHARE of its
+#: length, its few closed points holding by friction a shear resultant T
+#: above HINGE_SHEAR_RATIO times N.  Friction above 1 lets a body tip onto
+#: a corner of Γ and turn about it instead of sliding, whatever Dundurs'
+#: β: an equilibrium alongside the one where Γ stays closed and slips
+#: (quasi-static Coulomb friction has several answers at large μ: Hassani,
+#: Hild & Ionescu, CMAME 2004; Renard's uniqueness criterion, J. Math.
+#: Anal. Appl. 2006, and Ballard's counter-example, J. Elasticity 1999,
+#: give no bound a scene's inputs could check, so the answer is checked).
+#: Measured 2026-11-28, fe P1, h = 0.1, the share closed and T/N at the
+#: worst increment: grader13's shear block of equal layers (β = 0) at μ =
+#: 1000 and 300 tipped onto one Gauss point, share 0.028, T/N = 1000;
+#: at μ = 100 it stays closed (share 1.0); scenes A, B, C, A-cyclic,
+#: layered-slip share 1.0; C-coulomb 0.59 at T/N ≤ μ = 0.2.  A tenth of Γ
+#: lies between; T > N needs μ > 1, where friction can carry more shear
+#: than the pressure (a rigid block then tips before it slides once μ
+#: exceeds its half-width over its height).
+HINGE_CLOSED_SHARE = 0.1
+HINGE_SHEAR_RATIO = 1.0
+
 #: A step that takes every load to zero from a loaded state, under a law
 #: with history, where a body is held by Γ alone, is solved first to
 #: LOAD_APPROACH of the step short of zero, then to zero from that answer
@@ -902,8 +924,29 @@ FREE_BODY_TIE = 1e-6
 #: from P2 by 6-9 %.  From 0.49 on P1 is ten times further from P2 than at
 #: ν = 0.3.  Closer to 0.5 λ/μ also amplifies round-off: fe at ν = 0.4999999
 #: has a relative residual of 2.3e-6 at h = 0.2 and 1.75e-5 (refused) at
-#: h = 0.05.
+#: h = 0.05.  Warned from this value on (``>=``: grader13 #3 found fe P1's
+#: exactly enforced Γ traction 17 times its ν = 0.3 error at ν = 0.49
+#: itself, unwarned under ``>``).
 NU_LOCKING_WARN = 0.49
+
+#: fe P1 with an exactly enforced law (Nitsche): Γ's traction is σ(u)·n of
+#: the P1 field, which carries λ div u, and locks well below
+#: NU_LOCKING_WARN; warned from this ν on (``>=``), plane strain
+#: (contactcore.health.traction_locking_warnings, asked by fe's
+#: spacing_warnings).  Measured 2026-11-28 on grader13's twisted rod (a =
+#: 0.4 in a clamped disc b = 1, shear moduli held at 7.7e10 / 7.7e9, so the
+#: exact t_T = 9947 Pa is the same for every ν; bonded, fe P1): the worst
+#: |t_T − 9947|/9947 on Γ's profile over its ν = 0.3 value, for ν = 0.4 /
+#: 0.42 / 0.44 / 0.45 / 0.46 / 0.47 / 0.48 / 0.49, at h = 0.1: 1.9 / 2.3 /
+#: 3.0 / 3.4 / 4.1 / 5.0 / 6.5 / 9.1; h = 0.05: 2.1 / 2.7 / 3.5 / 4.2 /
+#: 5.2 / 6.7 / – / 15.8; h = 0.025: 2.0 / 2.5 / 3.3 / 4.0 / 5.1 / 6.7 / 9.7
+#: / 17.1 (ν = 0.3: 3.8 %, 1.2 %, 0.75 %).  0.44 is where the error passes
+#: three times its ν = 0.3 value at every h.  Not the other methods: xfem
+#: P1 at h = 0.05 (12.6 % at ν = 0.3, its own documented limit) 1.09 /
+#: 1.21 / 2.2 at ν = 0.44 / 0.46 / 0.49; efgm P1 1.4 / 1.8 at 0.44 / 0.46;
+#: fe P2, xfem P2 and efgm P1 2.4–4.5 at 0.49 (grader13's report); fe P1
+#: on penalty springs 1.7 at 0.49 (the traction is k times the jump).
+NU_LOCKING_WARN_FE_P1_EXACT = 0.44
 
 #: Small strain: every method solves linear kinematics, ε = sym ∇u, which
 #: omits Green's ½∇uᵀ∇u, of relative size ε/2 (and a rotation θ's θ²/2).
@@ -915,6 +958,18 @@ NU_LOCKING_WARN = 0.49
 #: 6e-8, 9e-8; steel on aluminium under 100 MPa (grader2's mm wedge, h =
 #: 2.5 mm) 1.2e-3; its aluminium made E = 1e-3 MPa, 8e4.
 SMALL_STRAIN_LIMIT = 1e-2
+
+#: Small sliding: every method pairs Γ's two sides where they started
+#: (geometrically linear, as small strain), so a slip s leaves s of a
+#: straight Γ facing nothing and turns a circular Γ's normal by s/R at the
+#: partner.  Warned (contactcore.health.large_slip_warnings) where |g_T|
+#: exceeds this share of Γ's length (its radius on a circle): 1 % of Γ
+#: mispaired, the SMALL_STRAIN_LIMIT of the interface.  Measured
+#: 2026-11-28 (the largest |g_T| over every increment, fe P1, h = 0.1):
+#: grader13's bigslip (the shear block driven 0.5 m on a 1 m Γ) 0.5;
+#: A-cyclic 9.9e-4, A 2.5e-4, layered-slip 1.05e-5, B 9.3e-6, C and
+#: C-coulomb 4e-6: ten times below the limit at the worst shipped scene.
+LARGE_SLIP_SHARE = 1e-2
 
 #: The least ratio of the softer body's Young's modulus to the stiffer's a
 #: scene may have (refused below, at validation).  The softer body's

@@ -115,8 +115,8 @@ def check_nodes(scene: Scene, nodes: np.ndarray) -> NodeSet:
 
 def support_radii(nodes: NodeSet, dmax: float, rectangular: bool) -> np.ndarray:
     """``r_I = dmax · c_I`` (see :data:`SPACING_NEIGHBOUR`); (N,) or (N, 2)."""
-    if not dmax > 0:
-        raise DiscretisationError(f"efgm: dmax must be > 0 (got {dmax})")
+    if not (dmax > 0 and np.isfinite(dmax)):  # inf: every node in every support, each moment matrix singular
+        raise DiscretisationError(f"efgm: dmax must be finite and > 0 (got {dmax})")
     k = min(SPACING_NEIGHBOUR + 1, len(nodes.x))
     d, _ = cKDTree(nodes.x).query(nodes.x, k=k)
     r = dmax * d[:, -1]

@@ -98,6 +98,12 @@ def test_units_json_gives_each_csvs_s_its_own_unit(tmp_path):
      "--param increments: must be a whole number >= 1 (got nan)"),
     (["C-coulomb", "--param", "increments", "--values", "20", "inf"],  # was an OverflowError traceback
      "--param increments: must be a whole number >= 1 (got inf)"),
+    (["A", "--param", "load", "--values", "1", "inf"],  # said "(got nan)", a component 0 times inf (grader13 #6)
+     "--param load: must be a finite number (got inf)"),
+    (["A", "--param", "offset", "--values", "0.1", "nan"],  # said "the line misses the domain"
+     "--param offset: must be a finite number (got nan)"),
+    (["A", "--param", "angle", "--values", "10", "inf"],  # said "interface.normal: ... (got (nan, nan))"
+     "--param angle: must be a finite number (got inf)"),
     (["C-coulomb", "--param", "enforcement", "--values", "exact", "--param", "stabilisation", "--values", "2", "200"],
      "--param stabilisation: must lie within 0.3..30 (got 200)"),
     (["C-coulomb", "--param", "enforcement", "--values", "exact", "--param", "stabilisation", "--values", "200", "2"],

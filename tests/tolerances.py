@@ -1300,3 +1300,10 @@ CLOSED_TENSION_OF_P = 2e-5
 #: contactcore.tolerances.EFGM_SPRING_WARN must be warned about because the
 #: oscillation of t_N over Γ's points exceeds it there (grader15 #1).
 EFGM_STATED_TRACTION = 1e-3
+
+#: grader13's hairdisc (a disc 0.005 mm above a block's bottom, exact
+#: unilateral), fe P1 at h = 0.1 against h = 0.05: the mean t_N over Γ.
+#: Measured 2026-11-28 on the G profile: −8.072 and −8.059 MPa (1.6e-3);
+#: xfem P1 at h = 0.1 −8.104.  1e-2 keeps a factor 6 and still tells a
+#: wrongly sided facet (its Nitsche rows in one body) from the answer.
+HAIR_LIGAMENT_MEAN_TN = 1e-2

@@ -53,6 +53,12 @@ class FE(Discretisation):
     def __post_init__(self):
         check_degree(self.name, self.degree)
 
+    def spacing_warnings(self, scene, h: float) -> list[str]:
+        """P1's exactly enforced Γ traction near incompressibility
+        (:func:`contactcore.health.traction_locking_warnings`)."""
+        from contactcore import health
+        return health.traction_locking_warnings(scene, self.name, self.degree)
+
     def check(self, scene) -> None:
         """Refuse, before anything is built, a body thinner than a fitted
         mesh can hold (:func:`contactcore.scene.check_fitted_thickness`):

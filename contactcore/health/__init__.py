@@ -38,7 +38,8 @@ One idea a module, each with its maths and sources:
 - :mod:`~contactcore.health.restraint`: the rigid-body modes and whether
   the supports, pins and Γ hold them;
 - :mod:`~contactcore.health.caveats`: the warnings on an answer found
-  (locking, Dundurs' β, friction beyond μ|t_N|, closed points in tension);
+  (locking, Dundurs' β, friction beyond μ|t_N|, closed points in tension,
+  a body tipped onto a frictional hinge, slip beyond small sliding);
 - :mod:`~contactcore.health.equilibrium`: whether the loads leave an
   equilibrium (Coulomb's cone on a body held by Γ alone, a body pulled
   off Γ, the unilateral law's tie).
@@ -52,7 +53,7 @@ are its modules' public functions, classes and the failure words
 stay in their home.
 """
 from .caveats import (closed_tension_warnings, dundurs_beta, dundurs_warnings, friction_excess_warnings,
-                      material_warnings)
+                      hinge_warnings, large_slip_warnings, material_warnings, traction_locking_warnings)
 from .equilibrium import beyond_cone, friction_demand, tie_cause
 from .residual import (DIVERGED, NOT_CONVERGED, SHORT_OF_CHECK, backward_error, check_residual, options_chose,
                        relative_residual)
@@ -71,6 +72,7 @@ __all__ = [
     "FreeBody", "check_held", "check_restraint", "lets_go", "modes_centre", "slips_free",
     # caveats
     "closed_tension_warnings", "dundurs_beta", "dundurs_warnings", "friction_excess_warnings", "material_warnings",
+    "hinge_warnings", "large_slip_warnings", "traction_locking_warnings",
     # equilibrium
     "beyond_cone", "friction_demand", "tie_cause",
 ]

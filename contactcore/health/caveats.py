@@ -1,8 +1,10 @@
 """Warnings on an answer found: where the method or the problem may make it
 off, or one of several.
 
-- Volumetric locking: plane strain with ν above NU_LOCKING_WARN, where
-  every method here (displacement-based) may lock (:func:`_locking_warnings`).
+- Volumetric locking: plane strain with ν at or above NU_LOCKING_WARN, where
+  every method here (displacement-based) may lock (:func:`_locking_warnings`);
+  fe P1's exactly enforced Γ traction from NU_LOCKING_WARN_FE_P1_EXACT on
+  (:func:`traction_locking_warnings`).
 - Coulomb friction across two materials: Dundurs' second parameter
   (J. Appl. Mech. 1969)
 
@@ -16,6 +18,11 @@ off, or one of several.
   by more than the traction's round-off (:func:`friction_excess_warnings`),
   and springs so stiff that this round-off exceeds the stick/slip band's
   whole excess (:func:`spring_band_warnings`).
+- A frictional hinge: Γ pressed yet closed over a few points that hold by
+  friction more shear than the pressure, a body tipped onto a corner of Γ
+  (:func:`hinge_warnings`): one answer of several at μ > 1, whatever β.
+- Slip beyond small sliding: a tangential jump above LARGE_SLIP_SHARE of
+  Γ's size (:func:`large_slip_warnings`).
 - Points a converged path holds closed in tension, ``t_N > 0`` beyond
   Newton's closed/open band in traction plus round-off
   (:func:`closed_tension_warnings`).
@@ -28,11 +35,12 @@ from __future__ import annotations
 import numpy as np
 
 from .. import tolerances as tol
+from ..geometry import CircleInterface
 from ..laws import OPEN, STICK
 
 
 def material_warnings(scene) -> list[str]:
-    """Volumetric locking: plane strain with ν above NU_LOCKING_WARN, in
+    """Volumetric locking: plane strain with ν at or above NU_LOCKING_WARN, in
     one warning that names every such body; and Coulomb friction across
     two materials beyond the uniqueness bound (:func:`dundurs_warnings`)."""
     return _locking_warnings(scene) + dundurs_warnings(scene)
@@ -216,16 +224,117 @@ def closed_tension_warnings(scene, path, stress_size: float = 0.0) -> list[str]:
             "band is in traction\")"]
 
 
-def _locking_warnings(scene) -> list[str]:
-    """Volumetric locking: plane strain with ν above NU_LOCKING_WARN."""
-    if scene.plane != "strain":
+def traction_locking_warnings(scene, method: str, degree: int) -> list[str]:
+    """fe P1 with an exactly enforced law in plane strain, a body's ν at or
+    above NU_LOCKING_WARN_FE_P1_EXACT but below NU_LOCKING_WARN (which
+    :func:`material_warnings` warns of for every method): Γ's traction
+    σ(u)·n carries λ div u of the P1 field and locks first (the constant's
+    measurement).  One line naming the bodies; none for other methods,
+    degrees, penalty laws or plane stress."""
+    if (method != "fe" or degree != 1 or scene.plane != "strain"
+            or getattr(scene.law, "enforcement", None) != "exact"):
         return []
-    high = [(body, m.nu) for body, m in scene.materials.items() if m.nu > tol.NU_LOCKING_WARN]
+    high = [(body, m.nu) for body, m in scene.materials.items()
+            if tol.NU_LOCKING_WARN_FE_P1_EXACT <= m.nu < tol.NU_LOCKING_WARN]
     if not high:
         return []
     named = " and ".join(f"materials.{body}.nu = {nu:.10g} (λ/μ = {2 * nu / (1 - 2 * nu):.1e})" for body, nu in high)
-    return [f"{named} in plane strain, above {tol.NU_LOCKING_WARN:g}: every method here is displacement-based and "
+    return [f"{named} in plane strain, at or above {tol.NU_LOCKING_WARN_FE_P1_EXACT:g}: fe P1's exactly enforced "
+            "Γ traction is σ(u)·n of the P1 field, which carries λ div u and locks (a twisted rod of fixed shear "
+            "moduli, whose exact t_T does not depend on ν: fe P1's error on Γ 3.3 times its ν = 0.3 value at "
+            "ν = 0.44, 17 times at 0.49, h = 0.025); use degree = 2 (within 2.4–4.5 times at 0.49)"]
+
+
+def _locking_warnings(scene) -> list[str]:
+    """Volumetric locking: plane strain with ν at or above NU_LOCKING_WARN."""
+    if scene.plane != "strain":
+        return []
+    high = [(body, m.nu) for body, m in scene.materials.items() if m.nu >= tol.NU_LOCKING_WARN]
+    if not high:
+        return []
+    named = " and ".join(f"materials.{body}.nu = {nu:.10g} (λ/μ = {2 * nu / (1 - 2 * nu):.1e})" for body, nu in high)
+    return [f"{named} in plane strain, at or above {tol.NU_LOCKING_WARN:g}: every method here is displacement-based and "
             "may lock volumetrically, its stresses off by tens of percent or more, degree 1 the most but degree 2 "
             "too (scene A at ν = 0.4999, h = 0.05: the upper block's moment from σyy on Γ 18 % off in fe P2, 180 % "
             "in xfem P2, 120 % in EFGM's quadratic basis); Γ's tractions come from the same fields and may be off "
             "as much (fe P1's t_N on a uniformly pressed Γ at ν = 0.499 ranged over 0.01–2.8 times the pressure)"]
+
+
+def large_slip_warnings(scene, path, displacement_unit: float = 1.0) -> list[str]:
+    """A converged ``path`` (an
+    :class:`~contactcore.interface_path.InterfacePath`) whose tangential
+    jump |g_T| somewhere exceeds ``LARGE_SLIP_SHARE`` of Γ's size: the
+    radius of a circular Γ (a slip s turns the normal by s/R), else Γ's
+    length (the sum of its quadrature weights; a slip s leaves s of it
+    facing nothing).  Every method pairs Γ's two sides where they started
+    (small sliding, as small strain, docs/scenes.md), so beyond that share
+    the pairing, and the answer there, is not the physical one however
+    well it solves its equations.  ``displacement_unit`` turns the path's
+    jumps into its lengths' unit (U/L on a dimensionless scene,
+    :mod:`contactcore.scaling`).  One line naming the share and its
+    increment."""
+    if path is None or not path.steps or not len(path.weights):
+        return []
+    size = (scene.interface.radius if isinstance(scene.interface, CircleInterface)
+            else float(np.sum(path.weights)))
+    if not size > 0:
+        return []
+    worst, where = 0.0, None
+    for step in path.steps:
+        slip = displacement_unit * float(np.max(np.abs(np.asarray(step.jump, float).reshape(-1, 2)[:, 1]),
+                                                initial=0.0)) / size
+        if slip > worst:
+            worst, where = slip, step.step
+    if not worst > tol.LARGE_SLIP_SHARE:
+        return []
+    what = "Γ's radius" if isinstance(scene.interface, CircleInterface) else "Γ's length"
+    return [f"Γ slips by up to {worst:.2g} of {what} (increment {where:g}), above {tol.LARGE_SLIP_SHARE:g}: every "
+            "method is geometrically linear and pairs Γ's two sides where they started (small sliding, as small "
+            "strain), so a point that slid that far is still paired with its first partner, and the part of Γ "
+            "that has slid past the other body's end still carries traction: the answer solves the model, not "
+            "the physical problem, there (docs/scenes.md, \"Small strain and small sliding\")"]
+
+
+def hinge_warnings(scene, path, stress_size: float = 0.0) -> list[str]:
+    """A converged Coulomb ``path`` (an
+    :class:`~contactcore.interface_path.InterfacePath`) with an increment at
+    which Γ is pressed (its normal resultant ``N = −∫ t_N ds`` positive
+    beyond TRACTION_ROUNDOFF of Γ's largest traction along the path, or of
+    the scene's ``stress_size`` if larger (on a Γ the loads leave unloaded
+    every traction is round-off, :func:`closed_tension_warnings`), times
+    its length) yet closed over less than HINGE_CLOSED_SHARE of its length,
+    while its closed points hold by friction a shear resultant
+    ``T = ∫ |t_T| ds`` above HINGE_SHEAR_RATIO·N: a body tipped onto a
+    frictional hinge, one answer of several (tolerances.py's note).  One
+    line naming the first such increment, its closed share and T/N; none
+    for another law."""
+    mu = getattr(scene.law, "mu", None)
+    if path is None or scene.law.name != "coulomb" or not mu or not len(path.weights):
+        return []
+    w = np.asarray(path.weights, float)
+    length = float(np.sum(w))
+    largest = max((float(np.max(np.abs(np.asarray(s.traction, float)), initial=0.0)) for s in path.steps),
+                  default=0.0)
+    count, first = 0, None
+    for step in path.steps:
+        t = np.asarray(step.traction, float).reshape(-1, 2)
+        closed = np.asarray(step.status) != OPEN
+        pressed = float(-(w @ t[:, 0]))
+        share = float(np.sum(w[closed])) / length
+        shear = float(w[closed] @ np.abs(t[closed, 1]))
+        if (np.any(closed) and pressed > tol.TRACTION_ROUNDOFF * max(largest, stress_size) * length
+                and share < tol.HINGE_CLOSED_SHARE and shear > tol.HINGE_SHEAR_RATIO * pressed):
+            count += 1
+            if first is None:
+                first = (step.step, share, shear / pressed)
+    if not count:
+        return []
+    step, share, ratio = first
+    return [f"from increment {step:g} ({count} increment(s)) Γ is pressed yet closed over only {share:.2g} of its "
+            f"length, its few closed points holding by friction (μ = {mu:g}) a shear {ratio:.3g} times the "
+            "pressure's resultant: a body has tipped onto a corner of Γ and turns about it instead of sliding. "
+            "That is an equilibrium, but not the only one: Coulomb friction above 1 lets the same loads be held "
+            "with Γ closed and slipping too, whatever Dundurs' β, and the answer given is one of several, the "
+            "one the method's path found (grader13's shear block of equal layers tipped at μ = 300 and 1000 "
+            "in every method; at 100 fe stayed closed, xfem P2 tipped); do not take it as the answer: lower μ, or compare "
+            "methods and load paths (docs/contact-enforcement.md, \"Known limits\")"]

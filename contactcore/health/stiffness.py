@@ -42,13 +42,13 @@ def failure_hint(scene, weights) -> str:
 
 
 def material_cause(scene) -> str:
-    """A nearly incompressible material in plane strain (ν above
+    """A nearly incompressible material in plane strain (ν at or above
     NU_LOCKING_WARN), named with ``λ/μ = 2ν/(1 − 2ν)``: the bulk rows
     carry λ, the shear rows μ, and a solve loses about log10(λ/μ) digits
     to round-off (Hughes 2000, §4.1); "" if none."""
     if scene.plane != "strain":
         return ""
-    bad = [(body, m.nu) for body, m in scene.user.materials.items() if m.nu > tol.NU_LOCKING_WARN]
+    bad = [(body, m.nu) for body, m in scene.user.materials.items() if m.nu >= tol.NU_LOCKING_WARN]
     if not bad:
         return ""
     nu = max(v for _, v in bad)
