@@ -168,16 +168,20 @@ def spring_band_warnings(scene, h: float | None) -> list[str]:
     form pushed 3e-6 past its slip limit, fe P1): the band's excess,
     3.3e-6 of μp, is warned at α = 1e8 and silent at 1e9 and 1e10, where
     the closed form exactly at the limit sticks up to 3.8e-6 and 5.6e-6 of
-    μp above it from round-off alone."""
+    μp above it from round-off alone.  α within LIMIT_ROUNDOFF of the
+    limit counts as at it (α in the user's units and in the solve's
+    dimensionless ones differ in the last bits: review6 #6, 20 of 200 h
+    warned in one and not the other at α = 3e8 exactly)."""
     mu = getattr(scene.law, "mu", None)
     alpha = spring_alpha(scene, h)
-    if scene.law.name != "coulomb" or not mu or tol.SPRING_TRACTION_ROUNDOFF * alpha <= tol.DECISION_BAND * mu:
+    limit = tol.DECISION_BAND * mu / tol.SPRING_TRACTION_ROUNDOFF if mu else 0.0
+    if scene.law.name != "coulomb" or not mu or alpha <= limit * (1 + tol.LIMIT_ROUNDOFF):
         return []
     return [f"penalty springs at α = k h/E₋ = {alpha:.2g} with μ = {mu:g}: their tractions' round-off "
             f"(SPRING_TRACTION_ROUNDOFF·α = {tol.SPRING_TRACTION_ROUNDOFF * alpha:.2g} of Γ's largest pressure) "
             f"exceeds Newton's stick/slip band (DECISION_BAND·μ = {tol.DECISION_BAND * mu:.2g} of it), so a point "
             "held at stick above μ|t_N| within that band cannot be told from round-off and is not reported; "
-            f"springs with α at most {tol.DECISION_BAND * mu / tol.SPRING_TRACTION_ROUNDOFF:.2g}, or "
+            f"springs with α at most {limit:.2g}, or "
             "enforcement = \"exact\", tell it apart (docs/newton.md, \"Decisions that round-off cannot move\")"]
 
 
