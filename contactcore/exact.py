@@ -60,7 +60,8 @@ import scipy.sparse as sp
 from . import tolerances as tol
 from .errors import DiscretisationError, SceneError, quoted
 from .collective import SERIAL
-from .laws import STICK, CoulombLaw, Decision, LawResponse, LinearLaw, UnilateralLaw, _friction, _positive
+from .laws import (DIMENSIONLESS, STICK, CoulombLaw, Decision, LawResponse, LinearLaw, UnilateralLaw, _friction,
+                   _positive, registry)
 
 #: Laws that exist only enforced exactly (no springs).
 BONDED = ("bonded",)
@@ -117,6 +118,10 @@ class _ExactLaw:
     given_springs: tuple = field(default=(), compare=False, repr=False)
     enforcement: ClassVar[str] = "exact"
     parameters: ClassVar[tuple[str, ...]] = ("stabilisation",)
+    #: the law contract (contactcore.laws' module doc): β is a multiple of E/h
+    dimensions: ClassVar[dict[str, str]] = {"stabilisation": DIMENSIONLESS}
+    #: its springs' law at per-point γ, read at the linear y = G̃ u
+    homogeneous: ClassVar[bool] = True
     has_history: ClassVar[bool] = False
     is_linear: ClassVar[bool] = False
     #: the penalty law evaluated with per-point stiffnesses (None: bonded)
@@ -162,6 +167,8 @@ class ExactUnilateral(_ExactLaw):
 
     name: ClassVar[str] = "unilateral"
     springs: ClassVar[type] = UnilateralLaw
+    unilateral: ClassVar[bool] = True
+    frictional: ClassVar[bool] = False
 
 
 @dataclass(frozen=True)
@@ -173,8 +180,11 @@ class ExactCoulomb(_ExactLaw):
     mu: float = 0.0
     name: ClassVar[str] = "coulomb"
     parameters: ClassVar[tuple[str, ...]] = ("mu", "stabilisation")
+    dimensions: ClassVar[dict[str, str]] = {"mu": DIMENSIONLESS, "stabilisation": DIMENSIONLESS}
     has_history: ClassVar[bool] = True
     springs: ClassVar[type] = CoulombLaw
+    unilateral: ClassVar[bool] = True
+    frictional: ClassVar[bool] = True
 
     def initial_state(self, m: int) -> np.ndarray:
         return np.zeros(m)
@@ -189,6 +199,8 @@ class Bonded(_ExactLaw):
 
     name: ClassVar[str] = "bonded"
     is_linear: ClassVar[bool] = True
+    unilateral: ClassVar[bool] = False
+    frictional: ClassVar[bool] = False
     about_springs: ClassVar[str] = NO_SPRINGS
 
     @classmethod
@@ -212,7 +224,7 @@ class Bonded(_ExactLaw):
 
 
 #: Every law enforced exactly, by the name a scene file gives it.
-EXACT_LAWS = {law.name: law for law in (ExactUnilateral, ExactCoulomb, Bonded)}
+EXACT_LAWS = registry(ExactUnilateral, ExactCoulomb, Bonded)
 
 
 def make_law(kind: str, enforcement: str, params: dict, path: str):

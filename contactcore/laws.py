@@ -7,8 +7,36 @@ tangent ``∂t/∂g`` (shape ``(m, 2, 2)``, Pa/m).  The traction acting on the +
 body is ``τ⁺ = −(t_N n + t_T t)``; the − body receives ``−τ⁺`` (docs/scenes.md).
 
 In a weak form the law contributes ``∫_Γ t(g(u)) · g(δu) dΓ`` to the
-internal virtual work.  Laws are looked up by name in :data:`LAWS`, so a new
-law is one class and one registry entry; every method calls the same code.
+internal virtual work.  Laws are looked up by name in :data:`LAWS`; every
+method calls the same code.
+
+The contract of a law class (:class:`_Law`), checked when it is registered
+(:func:`registry`) and again when a scene is made dimensionless
+(:func:`law_contract`), so that a law missing a declaration is refused by
+name rather than answered wrongly:
+
+* ``parameters``: the names of its parameters, and ``dimensions``: the
+  dimension of each (:data:`DIMENSIONS`).  :mod:`contactcore.scaling`
+  makes every parameter dimensionless by its declared dimension and by
+  nothing else: a gap ``g0`` (m) compared with a jump is a
+  :data:`DISPLACEMENT`, scaled as the jumps are; undeclared, it would
+  reach every method in the user's metres against dimensionless jumps.
+  The response must be dimensionally consistent (the same formula in any
+  consistent units), which every physical law is.
+* ``homogeneous``: whether ``t(c·g) = c·t(g)`` for every ``c > 0`` at an
+  untouched history (positively homogeneous of degree one), as
+  ``linear``, ``unilateral`` and ``coulomb`` are and a law with a gap, a
+  threshold or a cohesive strength is not.  Newton's cut-backs rely on it
+  only where it is declared (:meth:`contactcore.newton.increments._Newton._from_rest`:
+  from rest a smaller step is then the same problem scaled).
+* ``unilateral`` (the law can open: no tension, ``t_N <= 0``) and
+  ``frictional`` (Coulomb friction with the parameter ``mu``; points may
+  slip): the capabilities the health checks and refusals read
+  (:mod:`contactcore.health`), never the law's name.
+
+A new law is one class declaring these, an entry in :data:`LAWS`, its row
+in docs/scenes.md and a closed-form test (docs/architecture.md, "Where to
+change what").
 """
 from __future__ import annotations
 
@@ -19,7 +47,7 @@ from typing import ClassVar
 import numpy as np
 
 from . import tolerances as tol
-from .errors import SceneError
+from .errors import ContactError, SceneError
 
 
 @dataclass(frozen=True)
@@ -149,10 +177,84 @@ class Decision:
         return np.where(rest | (margin > band), True, np.where(margin < -band, False, was))
 
 
+#: The dimensions a law's parameter may declare (:attr:`_Law.dimensions`),
+#: each made dimensionless by :mod:`contactcore.scaling` with the scene's
+#: units (``L`` length, ``S`` modulus, ``U`` displacement, ``Σ = S U/L``):
+STIFFNESS = "stress per length"  #: a spring, Pa/m in SI: × L/S
+STRESS = "stress"  #: a traction or strength, Pa: / Σ
+DISPLACEMENT = "displacement"  #: compared with a jump (a gap, a slip), m: / U
+LENGTH = "length"  #: a distance in the geometry, m: / L
+DIMENSIONLESS = "dimensionless"  #: μ, β: unchanged
+DIMENSIONS = (STIFFNESS, STRESS, DISPLACEMENT, LENGTH, DIMENSIONLESS)
+
+#: The capabilities every law class declares (module doc), each a bool.
+CAPABILITIES = ("homogeneous", "unilateral", "frictional")
+
+
+def law_contract(cls) -> dict[str, str]:
+    """The declared dimension of each parameter of the law class ``cls``
+    (module doc), or a ContactError naming what ``cls`` fails to declare: a
+    parameter without a dimension in :data:`DIMENSIONS`, a dimension for
+    no parameter, a capability of :data:`CAPABILITIES` that is not a bool,
+    ``frictional`` without the parameter ``mu``."""
+    name = getattr(cls, "name", cls.__name__)
+    where = f"the '{name}' law ({cls.__module__}.{cls.__qualname__})"
+    parameters = getattr(cls, "parameters", None)
+    if not isinstance(parameters, tuple) or not all(isinstance(p, str) for p in parameters):
+        raise ContactError(f"{where}: declares no tuple 'parameters' of its parameters' names")
+    dims = getattr(cls, "dimensions", None)
+    if not isinstance(dims, dict):
+        raise ContactError(f"{where}: declares no 'dimensions' (parameter -> one of {', '.join(DIMENSIONS)}): "
+                           "the scaling could not make its parameters dimensionless")
+    for p in parameters:
+        if dims.get(p) not in DIMENSIONS:
+            raise ContactError(f"{where}: declares no dimension for its parameter '{p}' (got {dims.get(p)!r}; one "
+                               f"of {', '.join(DIMENSIONS)}): unscaled, it would reach every method in the "
+                               "user's units against a dimensionless scene, a silently wrong answer")
+    extra = sorted(set(dims) - set(parameters))
+    if extra:
+        raise ContactError(f"{where}: declares a dimension for '{extra[0]}', which is not among its parameters "
+                           f"({', '.join(parameters)})")
+    for cap in CAPABILITIES:
+        if not isinstance(getattr(cls, cap, None), bool):
+            raise ContactError(f"{where}: declares no '{cap}' (True or False; contactcore.laws' module doc): the "
+                               "health checks and Newton's cut-backs read it")
+    if cls.frictional and "mu" not in parameters:
+        raise ContactError(f"{where}: is frictional but has no parameter 'mu', Coulomb's coefficient the health "
+                           "checks read")
+    return dict(dims)
+
+
+def registry(*classes) -> dict:
+    """``{name: class}`` of law classes, each held to :func:`law_contract`
+    (at import: a law that declares too little is refused before any scene
+    uses it), no name twice."""
+    out = {}
+    for cls in classes:
+        law_contract(cls)
+        if cls.name in out:
+            raise ContactError(f"the law name '{cls.name}' is registered twice ({out[cls.name].__qualname__}, "
+                               f"{cls.__qualname__})")
+        out[cls.name] = cls
+    return out
+
+
 class _Law:
-    """What every law shares: reading its parameters, its spring scale."""
+    """What every law shares: reading its parameters, its spring scale.
+
+    A law class declares (module doc; :func:`law_contract` refuses one that
+    does not): ``name``; ``parameters`` and the ``dimensions`` of each;
+    ``homogeneous``, whether ``t(c·g) = c·t(g)`` for ``c > 0`` from an
+    untouched history; ``unilateral``, whether it can open (no tension);
+    ``frictional``, whether it has Coulomb friction ``mu`` (points slip).
+    The capabilities are deliberately not given here, so that a new law
+    cannot inherit a wrong one."""
 
     parameters: ClassVar[tuple[str, ...]] = ("kN", "kT")
+    dimensions: ClassVar[dict[str, str]] = {"kN": STIFFNESS, "kT": STIFFNESS}
+    homogeneous: ClassVar[bool]
+    unilateral: ClassVar[bool]
+    frictional: ClassVar[bool]
     has_history: ClassVar[bool] = False
     #: how the law is enforced: by its springs (here) or exactly
     #: (:mod:`contactcore.exact`, which evaluates these laws with per-point
@@ -231,6 +333,9 @@ class LinearLaw(_Law):
 
     name: ClassVar[str] = "linear"
     is_linear: ClassVar[bool] = True
+    homogeneous: ClassVar[bool] = True
+    unilateral: ClassVar[bool] = False
+    frictional: ClassVar[bool] = False
 
     def constant_tangent(self) -> np.ndarray:
         """``∂t/∂g = diag(k_N, k_T)``: the same at every point."""
@@ -264,6 +369,9 @@ class UnilateralLaw(_Law):
 
     name: ClassVar[str] = "unilateral"
     is_linear: ClassVar[bool] = False
+    homogeneous: ClassVar[bool] = True
+    unilateral: ClassVar[bool] = True
+    frictional: ClassVar[bool] = False
 
     def evaluate(self, g: np.ndarray, state=None, decision: Decision | None = None) -> LawResponse:
         """The response to the jumps ``g`` ((m, 2) or flat, ``[g_N, g_T]`` in
@@ -303,8 +411,12 @@ class CoulombLaw(_Law):
 
     name: ClassVar[str] = "coulomb"
     parameters: ClassVar[tuple[str, ...]] = ("kN", "kT", "mu")
+    dimensions: ClassVar[dict[str, str]] = {"kN": STIFFNESS, "kT": STIFFNESS, "mu": DIMENSIONLESS}
     is_linear: ClassVar[bool] = False
     has_history: ClassVar[bool] = True
+    homogeneous: ClassVar[bool] = True  # the cone μp scales with p, the slip s with g
+    unilateral: ClassVar[bool] = True
+    frictional: ClassVar[bool] = True
 
     def initial_state(self, m: int) -> np.ndarray:
         """No slip before the first increment."""
@@ -375,6 +487,6 @@ def secant_tangent(tangent: np.ndarray, secant: np.ndarray) -> np.ndarray:
 
 
 #: Every penalty law by the name a scene file gives it.
-LAWS = {law.name: law for law in (LinearLaw, UnilateralLaw, CoulombLaw)}
+LAWS = registry(LinearLaw, UnilateralLaw, CoulombLaw)
 
 InterfaceLaw = LinearLaw | UnilateralLaw | CoulombLaw

@@ -22,14 +22,21 @@ rest of the scene follows from the dimensions of its fields (SI units as in
   ``b = (T/J) r`` with ``J = πR⁴/2``;
 * prescribed displacements, the slip history of a law (m): ``/U``;
 * h (m): ``/L``; points (pins, profile ends, Γ, nodes): ``(x − o)/L``;
-  ν, μ and load paths are dimensionless already.
+  ν, μ and load paths are dimensionless already;
+* a law's parameters by the dimension its class declares
+  (:func:`contactcore.laws.law_contract`, :meth:`Scales.parameter_unit`),
+  never by name: springs (Pa/m) ``× L/S``, stresses ``/Σ``,
+  displacements (a gap compared with a jump) ``/U``, lengths ``/L``,
+  dimensionless ones unchanged.  A law that declares no dimension for a
+  parameter is refused here, by name.
 
-Equilibrium ``∇·σ + b = 0`` and the laws (``t = k g``, ``t_N = k_N
-min(g_N, 0)``, Coulomb's cone: positively homogeneous of degree one in g)
-hold in the primed quantities exactly when they hold in the original ones,
-so the discrete answer is the same up to round-off whatever the units and
-the placement, and gmsh meshes the same dimensionless geometry at every
-scale.  ``U`` keeps the unknowns of order one however soft the material:
+Equilibrium ``∇·σ + b = 0`` and the laws hold in the primed quantities
+exactly when they hold in the original ones (a law's response is
+dimensionally consistent and every parameter is scaled by its dimension:
+``t = k g``, ``t_N = k_N min(g_N + g0, 0)`` alike; positive homogeneity is
+not needed here), so the discrete answer is the same up to round-off
+whatever the units and the placement, and gmsh meshes the same
+dimensionless geometry at every scale.  ``U`` keeps the unknowns of order one however soft the material:
 E = 1e-300 Pa under 1e5 Pa is a strain of 1e305 that ``σ = D ε`` would
 overflow, but an ordinary problem once made dimensionless.
 """
@@ -48,6 +55,7 @@ from . import tolerances as tol
 from .errors import ContactError, DiscretisationError, SceneError, require_finite
 from .geometry import CircleInterface, Disc, LevelSetInterface, LineInterface, Rectangle
 from .interface_path import InterfacePath
+from .laws import DIMENSIONLESS, DISPLACEMENT, LENGTH, STIFFNESS, STRESS, law_contract
 from .profiles import ProfileData
 from .result import check_points, gamma_reach
 from .scene import (DISPLACEMENT_QUANTITIES, STRESS_QUANTITIES, BodyForce, LineProfile, Pressure, Scene, Traction,
@@ -191,12 +199,29 @@ class Scales:
         columns = {q: xy[:, "xy".index(q)] if q in ("x", "y") else unit[q] * v for q, v in data.columns.items()}
         return replace(data, columns=columns)
 
+    def parameter_unit(self, dimension: str) -> float:
+        """What a law's parameter of ``dimension`` (:data:`contactcore.laws.DIMENSIONS`)
+        is divided by in the dimensionless scene (module doc)."""
+        L, S, U = self.length, self.modulus, self.displacement
+        return {STIFFNESS: S / L, STRESS: self.stress, DISPLACEMENT: U, LENGTH: L, DIMENSIONLESS: 1.0}[dimension]
+
+    def law(self, law):
+        """The law with every parameter made dimensionless by the dimension
+        its class declares (:func:`contactcore.laws.law_contract`, which
+        refuses a law that declares none, as a SceneError at
+        ``interface.law``); a dimensionless one unchanged."""
+        try:
+            dims = law_contract(type(law))
+        except ContactError as exc:
+            raise SceneError("interface.law", str(exc)) from None
+        return replace(law, **{k: _scaled(getattr(law, k), self.parameter_unit(d), f"interface.law.{k}")
+                               for k, d in dims.items() if d != DIMENSIONLESS})
+
     def scene(self, scene: Scene) -> Scene:
         """The dimensionless scene (module doc); SceneError if a value leaves
         the floating-point range."""
         L, S, U = self.length, self.modulus, self.displacement
-        law = replace(scene.law, **{k: _scaled(getattr(scene.law, k), S / L, f"interface.law.{k}")
-                                    for k in ("kN", "kT") if hasattr(scene.law, k)})  # none if exact
+        law = self.law(scene.law)
         return replace(
             scene, domain=self._domain(scene.domain), interface=self._interface(scene.interface), law=law,
             materials={b: replace(m, E=_scaled(m.E, S, f"materials.{b}.E", sys.float_info.min))

@@ -89,7 +89,7 @@ def slide(newton, u: np.ndarray, b: np.ndarray, R: np.ndarray, response, scale: 
     loads still move the body (no equilibrium, which the refusal then
     names, :func:`contactcore.health.friction_demand`)."""
     law, itf, ranks = newton.law, newton.itf, newton.ranks
-    if itf.exact or law.name != "coulomb" or response.secant is None:
+    if itf.exact or not law.frictional or response.secant is None:
         return None
     points, status = newton._gamma[0], ranks.gather(response.status)
     if np.any(status == OPEN) or not health.slips_free(newton.scene, *newton._gamma, status):

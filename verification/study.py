@@ -47,6 +47,7 @@ from contactcore.budget import check_budget, check_together
 from contactcore.discretisation import Reuse
 from contactcore.enforcement import ENFORCEMENTS, make_law
 from contactcore.exact import BONDED, EXACT_LAWS, checked_stabilisation, is_exact
+from contactcore.laws import LAWS
 from contactcore.scene import Units, check_resolution
 
 from . import files, methods, pool
@@ -190,6 +191,15 @@ CHANGES = {
     "offset": ("shift of a straight Γ along its normal", _offset),
     "angle": ("angle of a straight Γ to the x axis", _angle),
 }
+#: Every other parameter a registered law declares (its ``parameters``,
+#: contactcore.laws' contract), so that a new law's is a --param as it is
+#: registered: ``_law`` refuses it on a scene whose law lacks it.
+for _kind in (*LAWS.values(), *EXACT_LAWS.values()):
+    for _key in _kind.parameters:
+        if _key not in CHANGES:
+            CHANGES[_key] = (f"parameter {_key} of the '{_kind.name}' law ({_kind.dimensions[_key]})",
+                             lambda s, v, key=_key: _law(s, key, v))
+del _kind, _key
 #: The units of a scene as the help names them: any consistent set
 #: (docs/scenes.md, "Units"); a study's tables and plots name its scene's.
 ANY_UNITS = Units(length="length", stress="stress")

@@ -65,7 +65,7 @@ def dundurs_warnings(scene) -> list[str]:
     MU_DUNDURS_WARN: the answer may be one of several, which one the
     method's (tolerances.py's note)."""
     mu = getattr(scene.law, "mu", 0.0)
-    if scene.law.name != "coulomb" or not mu:
+    if not scene.law.frictional or not mu:
         return []
     beta = dundurs_beta(scene)
     if mu * abs(beta) <= tol.MU_DUNDURS_WARN:
@@ -130,7 +130,7 @@ def friction_excess_warnings(scene, path, stress_size: float = 0.0, h: float | N
     largest excess over μ|t_N| (or over the path's largest μp, where the
     point's is smaller) and its increment."""
     mu = getattr(scene.law, "mu", None)
-    if mu is None or scene.law.name != "coulomb" or path is None:
+    if mu is None or not scene.law.frictional or path is None:
         return []
     carried = _carried(path)
     spring_roundoff = tol.SPRING_TRACTION_ROUNDOFF * spring_alpha(scene, h)
@@ -175,7 +175,7 @@ def spring_band_warnings(scene, h: float | None) -> list[str]:
     mu = getattr(scene.law, "mu", None)
     alpha = spring_alpha(scene, h)
     limit = tol.DECISION_BAND * mu / tol.SPRING_TRACTION_ROUNDOFF if mu else 0.0
-    if scene.law.name != "coulomb" or not mu or alpha <= limit * (1 + tol.LIMIT_ROUNDOFF):
+    if not scene.law.frictional or not mu or alpha <= limit * (1 + tol.LIMIT_ROUNDOFF):
         return []
     return [f"penalty springs at α = k h/E₋ = {alpha:.2g} with μ = {mu:g}: their tractions' round-off "
             f"(SPRING_TRACTION_ROUNDOFF·α = {tol.SPRING_TRACTION_ROUNDOFF * alpha:.2g} of Γ's largest pressure) "
@@ -205,7 +205,7 @@ def closed_tension_warnings(scene, path, stress_size: float = 0.0) -> list[str]:
     (point, increment) pairs, the largest tension as a share of the path's
     largest pressure and its increment; none for a law without statuses
     (linear, bonded)."""
-    if path is None or scene.law.name not in ("unilateral", "coulomb"):
+    if path is None or not scene.law.unilateral:
         return []
     carried = _carried(path)
     # the traction's round-off is relative to Γ's largest traction, shear
@@ -313,7 +313,7 @@ def hinge_warnings(scene, path, stress_size: float = 0.0) -> list[str]:
     line naming the first such increment, its closed share and T/N; none
     for another law."""
     mu = getattr(scene.law, "mu", None)
-    if path is None or scene.law.name != "coulomb" or not mu or not len(path.weights):
+    if path is None or not scene.law.frictional or not mu or not len(path.weights):
         return []
     w = np.asarray(path.weights, float)
     length = float(np.sum(w))

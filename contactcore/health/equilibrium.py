@@ -44,9 +44,9 @@ def friction_demand(scene, k: float) -> str:
     when the loads do positive work in such a motion (:func:`_pulled_off`):
     Γ's contact pushes only, so it cannot hold them.  Only a rectangle cut
     by a line with no body force on the body is judged here."""
-    mu = float("inf") if scene.law.name == "unilateral" else getattr(scene.law, "mu", None)
-    if mu is None:
+    if not scene.law.unilateral:  # springs that carry tension hold any load
         return ""
+    mu = scene.law.mu if scene.law.frictional else float("inf")
     for name, shear, press, held in _demands(scene, k):
         if held:
             return (f"body {name}: {held}, and the loads pull it off Γ: no equilibrium, as contact only pushes; "
@@ -89,7 +89,7 @@ def beyond_cone(scene, k: float) -> str:
     proves there is no equilibrium (Wriggers 2006, §2.3), so such a load
     is refused on every machine alike, however close to μ."""
     mu = getattr(scene.law, "mu", None)
-    if scene.law.name != "coulomb" or mu is None:
+    if not scene.law.frictional or mu is None:
         return ""
     for name, shear, press, held in _demands(scene, k):
         if not held and press > 0 and _beyond(shear, press, mu):
@@ -200,9 +200,11 @@ def tie_cause(scene, k: float, failure: str, from_rest: bool = False) -> str:
     Coulomb's ``|t_T| <= μ|t_N|`` lets the shear vanish with the pressure;
     μ must exceed the loads' shear/normal on a body held by Γ alone.  An
     increment ``from_rest`` along a straight path is the same problem at
-    any size (the law is positively homogeneous), so more increments do
-    not help it."""
-    if scene.law.name != "unilateral" or NOT_CONVERGED not in failure:
+    any size (``from_rest`` holds only for a law that declares itself
+    positively homogeneous, ``law.homogeneous``), so more increments do
+    not help it.  Taken for any law that can open and has no friction
+    (``law.unilateral``, not ``law.frictional``), named as the scene names it."""
+    if not scene.law.unilateral or scene.law.frictional or NOT_CONVERGED not in failure:
         return ""
     ratios = [f"{shear / press:.3g} on body {name}" for name, shear, press, _ in _demands(scene, k) if press > 0]
     mu = f"mu a few times the loads' shear/normal ({ratios[0]})" if ratios else "a large mu"
@@ -210,7 +212,7 @@ def tie_cause(scene, k: float, failure: str, from_rest: bool = False) -> str:
     more = ("more increments do not help: from rest a smaller step is the same problem scaled" if from_rest else
             "more increments help only where a consistent map exists")
     other = "another stabilisation seldom helps" if exact else "soften k_N, k_T to settle it, with their answer"
-    return ("Newton found no open/closed map of the unilateral law consistent at every point, and there may be "
+    return (f"Newton found no open/closed map of the {scene.law.name} law consistent at every point, and there may be "
             "none: the law ties a closed point tangentially and frees it (t_T = 0) the moment it opens, so where "
             "Γ opens under shear the last closed points carry the tie's shear on almost no pressure and opening "
             f"one opens or closes its neighbours (a finer h or degree 2 fails more often; {more}; {other}); use "

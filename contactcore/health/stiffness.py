@@ -83,7 +83,7 @@ def check_friction_springs(scene, h: float, limits: dict, method: str) -> None:
     to round-off (``α`` is formed from the scene made dimensionless) are
     carried, and the largest spring the message offers is rounded down, so
     that it is carried too."""
-    if getattr(scene.law, "name", None) != "coulomb" or not hasattr(scene.law, "kN"):
+    if not getattr(scene.law, "frictional", False) or not hasattr(scene.law, "kN"):
         return
     for c, k, k_user in _springs(scene):
         alpha, limit = k * h / scene.softer_modulus, limits[c]

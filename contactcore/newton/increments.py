@@ -15,8 +15,9 @@ halved: the pending steps ``n − 1 → (n − 1 + k)/2 → k`` are solved in tu
 down to MAX_CUTBACKS halvings, after which the increment is refused
 (:func:`contactcore.newton.refusals._no_equilibrium`), every cut-back's
 failure in its details.  A step from rest along a straight load path
-(:meth:`_Newton._from_rest`) is the same problem scaled at every halving,
-and the refusal says so.  A refused solver option or a free body is raised
+(:meth:`_Newton._from_rest`) under a law that declares itself positively
+homogeneous is the same problem scaled at every halving, and the refusal
+says so.  A refused solver option or a free body is raised
 at once: no smaller step helps.
 
 Contract: :class:`_Newton` takes a scene and its
@@ -103,13 +104,17 @@ class _Newton(_Continuation, _Iteration, _Correction, _Statuses, _LineSearch, _C
 
     def _from_rest(self, start: float, k: float) -> bool:
         """Whether the step ``start → k`` starts from rest (``u = 0``, no
-        load, the law's history untouched) along a straight load path: every
-        law here is positively homogeneous there (``t(c y) = c t(y)`` for
-        ``c > 0`` at ``s = 0``, and Nitsche's ``y = G̃ u`` is linear), so a
-        halved step is the same problem scaled, and Newton repeats its
+        load, the law's history untouched) along a straight load path, for
+        a law that declares itself positively homogeneous
+        (``law.homogeneous``: ``t(c y) = c t(y)`` for ``c > 0`` at ``s = 0``,
+        contactcore.laws' contract; Nitsche's ``y = G̃ u`` is linear): a
+        halved step is then the same problem scaled, and Newton repeats its
         iterates (the squeezed disc of tests/free_disc.py, xfem P1 at
         h = 0.05: the same residual history at each of six cut-backs): more
-        increments do not help."""
+        increments do not help.  False for any other law (a gap, a
+        threshold: a smaller step is another problem)."""
+        if not self.law.homogeneous:
+            return False
         untouched = self.ranks.all((self.state is None or not np.any(self.state)) and not self.u.any())
         f0, f1, half = (_flat(self.scene.factors(x)) for x in (start, k, (start + k) / 2))
         if f0.any() or not untouched:

@@ -117,7 +117,7 @@ def _unsettled(law, from_rest: bool = False) -> str:
                 + ("another stabilisation, or a rigid-body mode nearly free" if exact else
                    "springs far stiffer or softer than the bulk (k_N, k_T against E/h), or a rigid-body mode "
                    "nearly free"))
-    friction = law.name == "coulomb"
+    friction = law.frictional
     held = ("shear above μp, " if friction else "") + "a body held only by open points"
     status = "open/closed and stick/slip" if friction else "open/closed"
     more = "" if from_rest else " or use more increments"
