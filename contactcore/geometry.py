@@ -212,7 +212,7 @@ class LineInterface:
             lo, hi = -np.inf, np.inf
             (x0, y0), (a, b) = domain.corner, domain.size
             for k, (mn, mx) in enumerate(((x0, x0 + a), (y0, y0 + b))):
-                if abs(t[k]) < 1e-300:
+                if abs(t[k]) < tol.AXIS_PARALLEL:  # Γ parallel to this axis
                     if not mn <= p[k] <= mx:
                         return None
                     continue

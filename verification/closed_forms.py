@@ -296,10 +296,6 @@ def quadratic_layers(kind: str = "shear", *, y_gamma: float = 0.53, minus=Materi
     return QuadraticLayers(scene, j, moduli, body_force, traction, kT if j == 0 else kN, y_gamma)
 
 
-#: The closed-form cases of the verification, by name.
-CLOSED_FORMS = {"patch": interface_patch, "pressurised_rod": pressurised_rod, "twisted_rod": twisted_rod}
-
-
 @dataclass
 class LayerState:
     """The exact state of the layered block at one increment."""

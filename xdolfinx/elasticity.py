@@ -12,7 +12,6 @@ which kinds of load), and two scenes that differ in values share it.
 """
 from __future__ import annotations
 
-import math
 
 import numpy as np
 import ufl
@@ -20,6 +19,7 @@ from dolfinx import fem
 
 from contactcore.elasticity import lame
 from contactcore.scene import BodyForce, Pressure, Torque, Traction
+from contactcore.scene.loads import torque_field, torque_rate
 
 
 def constant(domain, value) -> fem.Constant:
@@ -46,7 +46,7 @@ def _coefficients(scene, load) -> tuple[float, ...]:
     if isinstance(load, Pressure):
         return (float(load.value),)
     if isinstance(load, Torque):
-        return (load.torque / (math.pi * scene.interface.radius ** 4 / 2),)
+        return (torque_rate(scene, load),)
     raise TypeError(f"not a load: {load!r}")
 
 
@@ -61,14 +61,15 @@ def vanishes(scene, load) -> bool:
 def body_force(scene, load, msh):
     """The body force ``b`` of a :class:`~contactcore.scene.BodyForce` or
     :class:`~contactcore.scene.Torque` as a UFL vector on ``msh``: the
-    formula of :func:`contactcore.scene.body_force` with its numbers as
-    Constants (a torque: ``b = k(−(y−y_c), x−x_c)``)."""
+    core's formula (a torque: :func:`contactcore.scene.loads.torque_field`,
+    ``b = k(−(y−y_c), x−x_c)``, and its rate ``torque_rate``) with its
+    numbers as Constants, so that a new load value needs no new kernel."""
     if isinstance(load, BodyForce):
         return constant(msh, _coefficients(scene, load))
     (k,) = _coefficients(scene, load)
     k, centre = constant(msh, k), constant(msh, scene.interface.centre)
     x = ufl.SpatialCoordinate(msh)
-    return ufl.as_vector([-k * (x[1] - centre[1]), k * (x[0] - centre[0])])
+    return ufl.as_vector(torque_field(k, centre, x[0], x[1]))
 
 
 def load_integrand(scene, load, msh, v):

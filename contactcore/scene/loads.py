@@ -85,7 +85,18 @@ def body_force(scene: "Scene", load: BodyForce | Torque, x, y):
     """
     if isinstance(load, BodyForce):
         return load.value[0] + 0 * x, load.value[1] + 0 * y
-    (xc, yc), R = scene.interface.centre, scene.interface.radius
-    k = load.torque / (math.pi * R ** 4 / 2)
-    return -k * (y - yc), k * (x - xc)
+    return torque_field(torque_rate(scene, load), scene.interface.centre, x, y)
+
+
+def torque_rate(scene: "Scene", load: Torque) -> float:
+    """A torque's ``k = T/J``, ``J = πR⁴/2`` the polar moment of Γ's disc."""
+    return load.torque / (math.pi * scene.interface.radius ** 4 / 2)
+
+
+def torque_field(k, centre, x, y):
+    """``b = k(−(y−y_c), x−x_c)``: a torque's body force at x, y, with its
+    rate ``k`` (:func:`torque_rate`) and ``centre`` given as numbers or as
+    UFL Constants (xdolfinx's form multiplies these, with no copy of the
+    formula)."""
+    return -k * (y - centre[1]), k * (x - centre[0])
 

@@ -60,9 +60,11 @@ class AgreementTable:
                          "and is not used." if self._below_gap_floor(q, v) else
                          f" {q} is measured against sqrt({q}² + ({v:.3g} {column_unit(q, self.units)})²) "
                          "(a floor given)." for q, v in self.floors)
-        floor += (" Each quantity is measured against its vector's or tensor's size at each sample (t_N and t_T "
-                  "against |t|, a stress against the stresses its profile samples), at least "
-                  f"{NEGLIGIBLE_SHARE:g} of the scene's own scale (round-off).")
+        floor += (" Each quantity is measured against the size of its vector or tensor in the reference (t_N and "
+                  "t_T against |t|, a stress against the stresses its profile samples), at least "
+                  f"{NEGLIGIBLE_SHARE:g} of the scene's own scale (round-off): the worst sample is the largest "
+                  "|difference| over the largest size on the profile (not over the size at that sample), the RMS "
+                  "the RMS difference over the RMS size.")
         lines = [f"Against {self.reference}; {self.excluded()}.{floor}", "",
                  "| method | profile | quantity | class | worst sample | at s (x, y) | RMS |",
                  "|---|---|---|---|---|---|---|"]
