@@ -143,10 +143,11 @@ def test_a_law_that_does_not_declare_a_capability_is_refused(capability):
 
 def test_the_registered_laws_hold_to_the_contract():
     """Every law a scene file can name declares a dimension per parameter;
-    the shipped ones are homogeneous."""
+    linear, unilateral and coulomb, penalty or exact, are homogeneous."""
     for kind in (*LAWS.values(), *EXACT_LAWS.values()):
         assert set(law_contract(kind)) == set(kind.parameters)
-        assert kind.homogeneous
+    assert all(table[name].homogeneous for table in (LAWS, EXACT_LAWS) for name in ("unilateral", "coulomb"))
+    assert LAWS["linear"].homogeneous and EXACT_LAWS["bonded"].homogeneous
     assert law_contract(CoulombLaw)["mu"] == DIMENSIONLESS
 
 
