@@ -1076,6 +1076,16 @@ MIN_CELLS_ACROSS = 4
 #: h = 0.05, and meshed 1e-3 (h/50).  h/100 keeps the cases that mesh.
 MESH_MIN_FEATURE = 1e-2
 
+#: The smallest size ``python -m meshes --grade`` may ask for on Γ (h times
+#: the factor), as a fraction of the domain's smallest dimension: gmsh 4.8
+#: aborted the process (SIGABRT, "Unable to recover the edge", no Python
+#: exception) on scene A at h = 0.1 with --grade 1e-8 (1e-9 L, the
+#: geometric tolerance), and meshed --grade 1e-5 (1e-6 L: 1.6e5 nodes,
+#: review6).  The sizes between were not all measured; 1e-6 L is the
+#: smallest that was.  A size this small passes the memory check only with
+#: --allow-large (checked at h × factor over the whole domain).
+MESH_MIN_GRADED_SIZE = 1e-6
+
 # ----- error estimates (contactcore.estimate) ----------------------------------
 
 #: The observed order of a profile quantity (three runs, h, h/2, h/4) is
