@@ -175,7 +175,7 @@ def check_together(memories, count: int | None, field: str = "--workers", offer_
         at_once = min(max(count or 1, 1), cases)
         reuse = " and the systems kept for reuse" if kept and systems > 1 else ""
         advice = ("use fewer workers or a larger h" if at_once > 1 else
-                  "use a larger h" + (", or fewer values of the law's parameters" if reuse else ""))
+                  "use a larger h" + (", or one method a study" if reuse else ""))
         where = (f"{field} {count}: {at_once} of the {cases} cases at once{reuse}, the largest about "
                  f"{largest / 1e9:.3g} GB (+{BYTES_PER_PROCESS / 1e9:.2g} GB for each process)"
                  if at_once > 1 else
