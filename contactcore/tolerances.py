@@ -813,7 +813,10 @@ AHEAD_SHARE = 1.0
 
 #: Built systems a study keeps for reuse (contactcore.discretisation.Reuse):
 #: one per method of a ``--method all`` study, whose cases alternate
-#: between the methods; each costs one system's matrices and factorisations.
+#: between the methods; each costs one system's matrices and factorisations,
+#: so a study's memory check counts them (verification.study.check_memory,
+#: contactcore.budget.together), and a study keeps a system only until the
+#: last case that shares it (none for a study of h or of the geometry).
 SYSTEMS_KEPT = 3
 
 # ----- units and placement -----------------------------------------------------
