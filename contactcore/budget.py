@@ -114,34 +114,75 @@ def check_budget(scene, h: float, degree: int, method: str, field: str = "--h",
     return est
 
 
-def together(memories, count: int) -> float:
-    """Bytes that ``count`` processes (a pool's workers) hold when they
-    solve the cases of ``memories`` (each case's resident bytes, one case
-    a process at a time): ``min(count, len(memories))`` of them at once,
-    each, at worst, with the largest case and :data:`BYTES_PER_PROCESS`.
-    A pool starts no more processes than it has cases."""
-    at_once = min(max(count, 1), len(memories))
-    return at_once * (max(memories, default=0.0) + BYTES_PER_PROCESS)
+def together(memories, count: int | None, kept=(), systems: int = 1) -> float:
+    """Bytes that ``count`` processes (a pool's workers; None or 1: one,
+    serially) hold at worst when they solve the cases of ``memories``
+    (each case's resident bytes, :func:`estimate`'s memory) and the cases
+    of ``kept`` (below).
+
+    Each process solves one case at a time, so at most ``at_once =
+    min(count, cases)`` run at once (a pool starts no more processes than
+    it has cases): the ``at_once`` largest cases together, not ``at_once``
+    copies of the largest (review6's fault 2), and :data:`BYTES_PER_PROCESS`
+    for each process when there are several.  One process alone is counted
+    as :func:`check_budget` counts ``run``'s, without it: BYTES_PER_UNKNOWN
+    was measured on one whole process's peak (review6's fault 3).
+
+    A process may also keep built systems between its cases for reuse
+    (:class:`contactcore.discretisation.Reuse`): ``kept`` gives, for each
+    system several cases share, ``(bytes, cases)``; the cases of
+    ``memories`` are those whose system nobody keeps.  A process holds at
+    most ``systems`` systems, the one it solves in included, at most one
+    of them not kept, and each process keeps its own copy of a shared one.
+    So at most the ``at_once × systems`` largest of: the cases of
+    ``memories`` (at most ``at_once`` of them), and each shared system
+    ``min(at_once, cases)`` times (review6's fault 1)."""
+    memories, kept = [float(m) for m in memories], [(float(m), int(c)) for m, c in kept]
+    at_once = min(max(count or 1, 1), len(memories) + sum(c for _, c in kept))
+    if at_once == 0:
+        return 0.0
+    slots = at_once * max(systems, 1)
+    units = [(m, False) for m in memories] + [(m, True) for m, cases in kept for _ in range(min(at_once, cases))]
+    alone, need, taken = 0, 0.0, 0
+    for m, shared in sorted(units, key=lambda u: -u[0]):
+        if taken == slots:
+            break
+        if not shared:
+            if alone == at_once:
+                continue
+            alone += 1
+        need, taken = need + m, taken + 1
+    return need + (at_once * BYTES_PER_PROCESS if at_once > 1 else 0.0)
 
 
-def check_together(memories, count: int, field: str = "--workers", offer_allow_large: bool = True) -> None:
+def check_together(memories, count: int | None, field: str = "--workers", offer_allow_large: bool = True,
+                   kept=(), systems: int = 1) -> None:
     """A :class:`TooLargeError` when ``count`` processes (``field`` the
-    option that asked for them) solving the cases of ``memories`` (each
-    case's resident bytes, :func:`estimate`'s memory) at once would hold
-    more than MEMORY_SHARE of this machine's memory (:func:`together`),
-    though each case alone fits (:func:`check_budget`) and the processes
-    alone fit (:func:`check_processes`): review5's fault 2, two cases of
-    11.5 GB on ``--workers 2`` against 20.2 GB usable.  The message names
-    the count, the largest case and the sum, and what to do."""
-    memories = list(memories)
-    need, have = together(memories, count), MEMORY_SHARE * machine_memory()
+    option that asked for them; None or 1: one process, serially) solving
+    the cases of ``memories`` (each case's resident bytes,
+    :func:`estimate`'s memory), and keeping the shared systems of ``kept``
+    (:func:`together`), would hold more than MEMORY_SHARE of this
+    machine's memory, though each case alone fits (:func:`check_budget`)
+    and the processes alone fit (:func:`check_processes`): review5's fault
+    2, two cases of 11.5 GB on ``--workers 2`` against 20.2 GB usable.  The
+    message names the count (``field`` only for several processes: one is
+    the default, which the user may not have given), the largest case and
+    the sum, and what to do."""
+    memories, kept = list(memories), list(kept)
+    cases, largest = len(memories) + sum(c for _, c in kept), max([*memories, *(m for m, _ in kept)], default=0.0)
+    need, have = together(memories, count, kept, systems), MEMORY_SHARE * machine_memory()
     if need > have:
-        at_once = min(max(count, 1), len(memories))
-        raise TooLargeError(f"{field} {count}: {at_once} of the {len(memories)} cases at once, the largest about "
-                            f"{max(memories) / 1e9:.3g} GB (+{BYTES_PER_PROCESS / 1e9:.2g} GB for its process), "
-                            f"about {need / 1e9:.3g} GB together, against {have / 1e9:.3g} GB usable on this "
-                            "machine; use fewer workers or a larger h"
-                            + (", or pass --allow-large to try anyway" if offer_allow_large else ""))
+        at_once = min(max(count or 1, 1), cases)
+        reuse = " and the systems kept for reuse" if kept and systems > 1 else ""
+        advice = ("use fewer workers or a larger h" if at_once > 1 else
+                  "use a larger h" + (", or one method a study" if reuse else ""))
+        where = (f"{field} {count}: {at_once} of the {cases} cases at once{reuse}, the largest about "
+                 f"{largest / 1e9:.3g} GB (+{BYTES_PER_PROCESS / 1e9:.2g} GB for each process)"
+                 if at_once > 1 else
+                 f"the {cases} cases one at a time{reuse}, the largest about {largest / 1e9:.3g} GB")
+        raise TooLargeError(f"{where}, about {need / 1e9:.3g} GB together, against {have / 1e9:.3g} GB usable on "
+                            f"this machine; {advice}" + (", or pass --allow-large to try anyway" if offer_allow_large
+                                                         else ""))
 
 
 def spread(memory: float, ranks: int) -> float:

@@ -198,14 +198,23 @@ class Reuse:
     without those, the discretisation's options but its communicator, and
     the resolution — so a change of h, geometry, material or load builds
     afresh.  At most :data:`~contactcore.tolerances.SYSTEMS_KEPT` are kept,
-    the one used longest ago released first; :meth:`close` releases all.
-    A scene that cannot be pickled (a general level set of Python
-    callables) is never reused.
+    the one used longest ago released first, and before the new one is
+    built (never ``size`` kept beside the one building); :meth:`close`
+    releases all.  With :attr:`keep` False, the caller's next solve is its
+    system's last use (no later case shares it: a study of h, review6's
+    fault 1): a kept system is taken out of the store and a new one not
+    put in, so the solve closes it.  A scene that cannot be pickled (a
+    general level set of Python callables) is never reused.
     """
 
     def __init__(self, size: int | None = None):
         self.size = tol.SYSTEMS_KEPT if size is None else size
         self._kept: OrderedDict[bytes, Built] = OrderedDict()
+        self.keep = True
+
+    def __len__(self) -> int:
+        """The systems kept now."""
+        return len(self._kept)
 
     @staticmethod
     def key(scene, discretisation: Discretisation, resolution: Resolution) -> bytes | None:
@@ -226,13 +235,14 @@ class Reuse:
         key = self.key(scene, discretisation, resolution)
         if key is not None and key in self._kept:
             self._kept.move_to_end(key)
-            built = self._kept[key]
+            built = self._kept[key] if self.keep else self._kept.pop(key)
             return dataclasses.replace(built, record={**built.record, "reused": True})
+        keep = key is not None and self.keep and self.size > 0
+        while keep and len(self._kept) >= self.size:
+            self._kept.popitem(last=False)[1].system.close()  # room made before the new one is built
         built = discretisation.build(scene, resolution, timings)
-        if key is not None:
+        if keep:
             self._kept[key] = built
-            while len(self._kept) > self.size:
-                self._kept.popitem(last=False)[1].system.close()
         return built
 
     def owns(self, built: Built) -> bool:

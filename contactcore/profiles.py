@@ -19,6 +19,7 @@ point meets a closed one.
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -28,7 +29,7 @@ from .errors import require_finite
 from .exact import is_exact
 from .geometry import CircleInterface, tangent_of
 from .result import Fields
-from .errors import ContactError
+from .errors import ContactError, SceneError
 from .scene import DISPLACEMENT_QUANTITIES, INTERFACE_QUANTITIES, STRESS_QUANTITIES, LineProfile, Profile, Scene
 from .scene.check_profiles import check_profiles
 from .scene.profiles import InterfaceProfile
@@ -131,7 +132,36 @@ def check_profile(scene: Scene, profile) -> None:
     if not isinstance(profile, (LineProfile, InterfaceProfile)):
         raise ContactError(f"profile: must be a LineProfile or an InterfaceProfile, got {type(profile).__name__} "
                            f"{profile!r} (a scene's own: scene.profiles)")
-    check_profiles(replace(scene, profiles=(profile,)))
+    name = f"profile {profile.id!r}"
+    if isinstance(profile, LineProfile):
+        profile = replace(profile, **{end: _plane_point(getattr(profile, end), f"{name}.{end}")
+                                      for end in ("start", "end")})
+    try:
+        check_profiles(replace(scene, profiles=(profile,)))
+    except SceneError as exc:  # named by its id: it is no profiles[0] of the scene's
+        field = exc.field.replace("profiles[0]", name, 1) if exc.field.startswith("profiles[0]") else exc.field
+        raise SceneError(field, exc.problem) from None
+
+
+def _finite(value) -> bool:
+    try:
+        return math.isfinite(value)
+    except OverflowError:  # an int past float's range
+        return False
+
+
+def _plane_point(point, field: str) -> tuple[float, float]:
+    """A segment's end a user built, as two floats: exactly two finite real
+    numbers ``(x, y)`` (a tuple, list or array; numpy's numbers too), or a
+    :class:`SceneError` naming ``field`` (a scene file's are always two; a
+    third, z, was dropped silently, and one number or None raised an
+    IndexError or a TypeError: review6's fault 5)."""
+    values = tuple(point) if isinstance(point, (tuple, list, np.ndarray)) else None
+    if (values is None or len(values) != 2
+            or not all(isinstance(v, (int, float, np.integer, np.floating)) and not isinstance(v, (bool, np.bool_))
+                       and _finite(v) for v in values)):
+        raise SceneError(field, f"must be two finite numbers (x, y) (got {point!r})")
+    return float(values[0]), float(values[1])
 
 
 def sample_profile(scene: Scene, fields: Fields, profile: Profile, path=None) -> ProfileData:

@@ -835,7 +835,10 @@ AHEAD_SHARE = 1.0
 
 #: Built systems a study keeps for reuse (contactcore.discretisation.Reuse):
 #: one per method of a ``--method all`` study, whose cases alternate
-#: between the methods; each costs one system's matrices and factorisations.
+#: between the methods; each costs one system's matrices and factorisations,
+#: so a study's memory check counts them (verification.study.check_memory,
+#: contactcore.budget.together), and a study keeps a system only until the
+#: last case that shares it (none for a study of h or of the geometry).
 SYSTEMS_KEPT = 3
 
 # ----- units and placement -----------------------------------------------------
@@ -1130,6 +1133,16 @@ MIN_CELLS_ACROSS = 4
 #: Python exception) on scene C with a rod of radius 1e-6 and 1e-9 at
 #: h = 0.05, and meshed 1e-3 (h/50).  h/100 keeps the cases that mesh.
 MESH_MIN_FEATURE = 1e-2
+
+#: The smallest size ``python -m meshes --grade`` may ask for on Γ (h times
+#: the factor), as a fraction of the domain's smallest dimension: gmsh 4.8
+#: aborted the process (SIGABRT, "Unable to recover the edge", no Python
+#: exception) on scene A at h = 0.1 with --grade 1e-8 (1e-9 L, the
+#: geometric tolerance), and meshed --grade 1e-5 (1e-6 L: 1.6e5 nodes,
+#: review6).  The sizes between were not all measured; 1e-6 L is the
+#: smallest that was.  A size this small passes the memory check only with
+#: --allow-large (checked at h × factor over the whole domain).
+MESH_MIN_GRADED_SIZE = 1e-6
 
 # ----- error estimates (contactcore.estimate) ----------------------------------
 

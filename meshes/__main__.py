@@ -1,13 +1,15 @@
 """``python -m meshes SCENE --h H --out FILE.msh``: write a scene's fitted mesh."""
 import argparse
 import logging
+import math
 import signal
 import sys
 
 from contactcore import ContactError, load_scene
+from contactcore import tolerances as tol
 from contactcore.budget import check_budget
 from contactcore.endings import INTERRUPTED, TERMINATED, Terminated
-from contactcore.scene import check_resolution
+from contactcore.scene import check_resolution, smallest_dimension
 
 from .build import Grading, check_mesh_path, write_mesh
 
@@ -57,20 +59,39 @@ def _command(argv=None) -> int:
         if h is None:
             parser.error("the scene gives no default h: pass --h")
         check_resolution(scene, h, "--h")
-        if not args.allow_large:
-            check_budget(scene, h, args.order, "fe")
         if args.grade is None and args.grade_distance is not None:
             raise ContactError("--grade-distance: grades nothing without --grade FACTOR")
-        grading = None
-        if args.grade is not None:
-            distance = 4 * h if args.grade_distance is None else args.grade_distance
-            grading = Grading(args.grade, distance)
+        grading = None if args.grade is None else check_grading(scene, h, args.grade, args.grade_distance)
+        if not args.allow_large:  # at the graded size: a safe upper bound, as if the whole domain took it
+            check_budget(scene, h if grading is None else h * grading.factor, args.order, "fe",
+                         "--h" if grading is None else f"--h {h:g} × --grade {grading.factor:g}: the size")
         out = write_mesh(scene, h, out, order=args.order, grading=grading)
     except ContactError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
     logging.info("wrote %s", out)
     return 0
+
+
+def check_grading(scene, h: float, factor: float, distance: float | None) -> Grading:
+    """The :class:`~meshes.build.Grading` of ``--grade FACTOR`` and
+    ``--grade-distance`` (default 4 h), or a ContactError naming the option:
+    a factor not a finite number in (0, 1], a size on Γ (h × factor) below
+    :data:`~contactcore.tolerances.MESH_MIN_GRADED_SIZE` of the domain's
+    smallest dimension (gmsh aborts the process on one far smaller), a
+    distance not a finite number > 0 (``inf`` graded the whole domain)."""
+    if not (math.isfinite(factor) and 0.0 < factor <= 1.0):
+        raise ContactError(f"--grade: the factor must be a finite number in (0, 1] (got {factor:g})")
+    top = smallest_dimension(scene.domain)
+    if h * factor < tol.MESH_MIN_GRADED_SIZE * top:
+        raise ContactError(f"--grade: {factor:g} makes the size on Γ h × {factor:g} = {h * factor:.3g}, below "
+                           f"{tol.MESH_MIN_GRADED_SIZE:g} of the domain's smallest dimension {top:g}, the smallest "
+                           "gmsh is known to mesh (it aborts on smaller ones); use a larger factor")
+    if distance is None:
+        distance = 4 * h
+    elif not (math.isfinite(distance) and distance > 0.0):
+        raise ContactError(f"--grade-distance: must be a finite number > 0 (got {distance:g})")
+    return Grading(factor, distance)
 
 
 if __name__ == "__main__":

@@ -73,8 +73,8 @@ class Grading:
     def __post_init__(self):
         if not 0.0 < self.factor <= 1.0:
             raise DiscretisationError(f"grading factor must lie in (0, 1] (got {self.factor})")
-        if not self.distance > 0.0:
-            raise DiscretisationError(f"grading distance must be > 0 (got {self.distance})")
+        if not (self.distance > 0.0 and math.isfinite(self.distance)):  # inf graded the whole domain
+            raise DiscretisationError(f"grading distance must be a finite number > 0 (got {self.distance})")
 
 
 _session_depth = 0

@@ -13,7 +13,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from contactcore import ContactError, Disc, FieldsError, LineProfile, load_scene, sample_profile
+from contactcore import ContactError, Disc, FieldsError, LineProfile, SceneError, load_scene, sample_profile
 from contactcore import tolerances as core_tol
 from contactcore.profiles import sample_points
 from contactcore.result import check_points
@@ -146,7 +146,7 @@ def test_a_third_coordinate_other_than_zero_is_refused(fields_of_a, name):
 
 @pytest.mark.parametrize("name", METHODS)
 @pytest.mark.parametrize("profile, named", [
-    (LineProfile(id="off", start=(0.2, 0.2), end=(1.5, 0.2), quantities=("syy",)), "profiles[0].end"),
+    (LineProfile(id="off", start=(0.2, 0.2), end=(1.5, 0.2), quantities=("syy",)), "profile 'off'.end"),
     (LineProfile(id="offg", start=(0.2, 0.2), end=(0.8, 0.2), quantities=("tN",)), "lies on the interface"),
     (LineProfile(id="foo", start=(0.2, 0.2), end=(0.8, 0.2), quantities=("foo",)), "unknown quantity 'foo'"),
     ("A2", "must be a LineProfile or an InterfaceProfile"),
@@ -162,3 +162,25 @@ def test_a_profile_the_user_builds_is_held_to_a_scenes_rules(fields_of_a, name, 
         sample_profile(scene, fields[name], profile)
     inside = LineProfile(id="in", start=(0.2, 0.2), end=(0.8, 0.2), quantities=("syy",))
     assert np.all(np.isfinite(sample_profile(scene, fields[name], inside).columns["syy"]))
+
+
+@pytest.mark.parametrize("start, end, named", [
+    ((0.2, 0.2, 5.0), (0.5, 0.2, 7.0), "profile 'm'.start: must be two finite numbers (x, y) (got (0.2, 0.2, 5.0))"),
+    ((0.2,), (0.5, 0.2), "profile 'm'.start: must be two finite numbers (x, y) (got (0.2,))"),
+    (None, (0.5, 0.2), "profile 'm'.start: must be two finite numbers (x, y) (got None)"),
+    ((0.2, 0.2), (0.5, float("nan")), "profile 'm'.end: must be two finite numbers (x, y) (got (0.5, nan))"),
+    ((0.2, 0.2), ("0.5", 0.2), "profile 'm'.end: must be two finite numbers"),
+    ((True, 0.2), (0.5, 0.2), "profile 'm'.start: must be two finite numbers"),
+])
+def test_a_profiles_ends_are_two_finite_numbers(start, end, named):
+    """A segment built in Python with a z (dropped silently: 101 samples
+    on the plane), one number (IndexError) or None (TypeError) is refused
+    by name, before any field is evaluated (review6's fault 5); arrays and
+    lists of two numbers are ends like tuples."""
+    from contactcore.profiles import check_profile
+    scene = load_scene("A")
+    with pytest.raises(SceneError) as info:
+        check_profile(scene, LineProfile(id="m", start=start, end=end, quantities=("syy",)))
+    assert str(info.value).startswith(named), str(info.value)
+    check_profile(scene, LineProfile(id="m", start=np.array([0.2, 0.2]), end=[0.5, np.float32(0.2)],
+                                     quantities=("syy",)))

@@ -91,6 +91,36 @@ def test_an_h_that_run_refuses_is_refused_before_meshing(tmp_path, capsys, never
     assert never_meshes == [] and not out.exists()
 
 
+def test_a_grading_is_checked_at_its_size_on_the_interface(tmp_path, capsys, never_meshes):
+    """The memory check takes h × the grade factor (a safe upper bound:
+    as if the whole domain took it), not h: --grade 1e-5 at h = 0.1 meshed
+    1.6e5 nodes, and smaller factors more, past the check at h (review6's
+    fault 4)."""
+    out = tmp_path / "x.msh"
+    line = _refusal(capsys, "--h", 0.1, "--grade", 1e-3, "--out", out)
+    assert line.startswith("error: --h 0.1 × --grade 0.001: the size 0.0001 with fe") and "GB usable" in line, line
+    assert never_meshes == [] and not out.exists()
+
+
+@pytest.mark.parametrize("argv, problem", [
+    (["--grade", 1e-8, "--allow-large"], "--grade: 1e-08 makes the size on Γ h × 1e-08 = 1e-09, below 1e-06"),
+    (["--grade", 1e-20, "--allow-large"], "--grade: 1e-20 makes the size on Γ"),
+    (["--grade", "nan"], "--grade: the factor must be a finite number in (0, 1] (got nan)"),
+    (["--grade", 2], "--grade: the factor must be a finite number in (0, 1] (got 2)"),
+    (["--grade", 0.5, "--grade-distance", "inf"], "--grade-distance: must be a finite number > 0 (got inf)"),
+    (["--grade", 0.5, "--grade-distance", 0], "--grade-distance: must be a finite number > 0 (got 0)"),
+])
+def test_a_grading_gmsh_cannot_mesh_is_refused_by_its_option(tmp_path, capsys, never_meshes, argv, problem):
+    """A factor so small that gmsh aborts the process (--grade 1e-8 at
+    h = 0.1: exit 134, "terminate called after throwing…", even with
+    --allow-large), and an infinite distance (graded the whole domain), are
+    refused in one line naming the option, before any meshing."""
+    out = tmp_path / "x.msh"
+    line = _refusal(capsys, "--h", 0.1, *argv, "--out", out)
+    assert line.startswith(f"error: {problem}"), line
+    assert never_meshes == [] and not out.exists()
+
+
 def test_the_path_check_is_shared_and_touches_nothing(tmp_path):
     target = tmp_path / "new" / "deeper" / "x.msh"
     assert check_writable(target, kind="file") == target and not (tmp_path / "new").exists()

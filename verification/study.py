@@ -43,6 +43,7 @@ from pathlib import Path
 import numpy as np
 
 from contactcore import CircleInterface, LineInterface, SceneError, load_scene, scene_text
+from contactcore import tolerances as tol
 from contactcore.budget import check_budget, check_together
 from contactcore.discretisation import Reuse
 from contactcore.enforcement import ENFORCEMENTS, make_law
@@ -279,12 +280,35 @@ class Case:
     degree: int
     h: float | None
     cell: str | None
+    keep: bool = True  # a later case of the study may reuse its system (:func:`shared`)
 
 
 #: This process's systems kept between the cases it solves: a point that
 #: changes only the law's parameters reuses its method's mesh, shape
 #: functions and matrices (contactcore.discretisation.Reuse).
 _REUSE = Reuse()
+
+#: The parameters a built system does not depend on (the law's parameters,
+#: not its enforcement, and the load path: contactcore.discretisation.Reuse's
+#: key leaves them out): two cases that differ only in these share one.
+SYSTEM_FREE = ("kN", "kT", "mu", "stabilisation", "increments")
+
+
+def system_of(method: str, point) -> tuple:
+    """What a case's built system depends on among what a study varies:
+    its method and the point's parameters but :data:`SYSTEM_FREE`."""
+    return method, tuple((p, v) for p, v in point if p not in SYSTEM_FREE)
+
+
+def shared(cases: list) -> list:
+    """``cases`` (study order) each with ``keep`` set: whether a later case
+    shares its system (:func:`system_of`).  The last case of each system
+    releases it after its solve, and a case no other shares (every case of
+    ``--param h``) keeps nothing: a study of four h values held the three
+    systems before beside the one it solved (822 MB against 379 MB for
+    one; review6's fault 1)."""
+    keys = [system_of(c.method, c.point) for c in cases]
+    return [dataclasses.replace(c, keep=key in keys[k + 1:]) for k, (c, key) in enumerate(zip(cases, keys))]
 
 
 def solve_case(case: Case) -> dict:
@@ -296,6 +320,7 @@ def solve_case(case: Case) -> dict:
     scene = scene_at(load_scene(case.scene), point)
     solve, comm = pool.solver(case.method)
     options = {**methods.options_for(case.method, cell=case.cell), **comm}
+    _REUSE.keep = case.keep
     tried = attempt(solve, scene, point.get("h", case.h), degree=case.degree, reuse=_REUSE, **options)
     row.update(health(tried))
     if tried.refused:
@@ -342,10 +367,11 @@ def study(scene_name: str, params: list[tuple[str, list[float]]], method_names: 
     labels = point_columns(names)
     points = list(itertools.product(*(values for _, values in params)))
     scenes = check_points(base, names, points)
+    cases = shared([Case(scene_name, tuple(zip(names, pt)), m, degree, h, cell) for pt in points
+                    for m in methods.expand(method_names)])
     if not allow_large:
-        check_together(check_sizes(scenes, names, points, methods.expand(method_names), degree, h), workers or 1)
-    cases = [Case(scene_name, tuple(zip(names, pt)), m, degree, h, cell) for pt in points
-             for m in methods.expand(method_names)]
+        check_memory(cases, check_sizes(scenes, names, points, methods.expand(method_names), degree, h,
+                                        every=True), workers)
     rows = []
     try:
         for k, (case, row) in enumerate(zip(cases, pool.map_cases(solve_case, cases, workers)), 1):
@@ -394,22 +420,47 @@ def check_points(base, names: list[str], points: list[tuple]) -> list:
 
 
 def check_sizes(scenes: list, names: list[str], points: list[tuple], method_names: list[str], degree: int,
-                h) -> list[float]:
+                h, every: bool = False) -> list:
     """Every point's solve (its scene of :func:`check_points`), with every
     method, within this machine's memory
     (:func:`contactcore.budget.check_budget`), before any solve: the first
     that is not ends the study with a TooLargeError naming it (``--param h
     --values 1e-9`` would otherwise mesh until the system stops the
     process).  Returns each case's estimated memory in bytes, for the
-    check of several at once."""
+    check of several at once (with ``every``, one per case in study
+    order, None for a case without h)."""
     memories = []
     for scene, point in zip(scenes, points):
         at = dict(zip(names, point)).get("h", h if h is not None else scene.h)
         if at is None:
+            memories += [None] * len(method_names) if every else []
             continue  # refused by the solve itself, as a failed row, naming the missing h
         for name in method_names:
             memories.append(check_budget(scene, at, degree, name, field=f"--param {_where(names, point)}: h").memory)
     return memories
+
+
+def check_memory(cases: list, memories: list, workers: int | None) -> None:
+    """The study's cases (:func:`shared`; ``memories`` their estimates, in
+    order, None for one the solve refuses) within this machine's memory,
+    ``workers`` at once, with the systems each process keeps for the
+    cases after (:func:`contactcore.budget.check_together`): a case that
+    shares its system counts once per system, as many as
+    :data:`~contactcore.tolerances.SYSTEMS_KEPT` of them a process; in
+    one process, as many as are ever open at once in the study's order
+    (from their first case to their last)."""
+    keys = [system_of(c.method, c.point) for c in cases]
+    sizes: dict = {}
+    for key, memory in zip(keys, memories):
+        if memory is not None:
+            sizes.setdefault(key, []).append(memory)
+    kept = [(max(m), len(m)) for m in sizes.values() if len(m) > 1]
+    alone = [m[0] for m in sizes.values() if len(m) == 1]
+    span = {key: (keys.index(key), len(keys) - 1 - keys[::-1].index(key)) for key in sizes}
+    most_open = max((sum(a <= k <= b for a, b in span.values()) for k in range(len(keys))), default=1)
+    serial = (workers or 1) == 1
+    check_together(alone, workers, kept=kept, systems=min(tol.SYSTEMS_KEPT, most_open) if serial
+                   else tol.SYSTEMS_KEPT)
 
 
 def _where(names: list[str], point: tuple) -> str:
