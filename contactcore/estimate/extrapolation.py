@@ -271,7 +271,10 @@ def profile_estimates(levels: list[list[ProfileData]], degree: int, method: str 
     :func:`sample_groups`) at the upper order: away from a singular point its
     pollution solves the homogeneous equations, smooth at that scale, so what
     varies cell by cell is the runs' local error, which converges at the
-    method's order."""
+    method's order.  Where the scene's straight Γ ends under an exact law
+    (:func:`~contactcore.estimate.singular.exact_interface_ends`), a bulk
+    displacement of such a range takes its lower end from two runs
+    (:func:`~contactcore.estimate.orders.lower_end`)."""
     out, law = {}, scene.law if scene else None
     pollution, sizes = pollution_order(scene), Sizes.of(scene) if scene is not None else None
     unknown_ends = len(exact_interface_ends(scene)) > 0

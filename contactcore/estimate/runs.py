@@ -48,7 +48,8 @@ class Estimate:
     warning calls not asymptotic
     (:func:`~contactcore.estimate.caveats.unsettled`,
     :func:`~contactcore.estimate.caveats.cell_scale_orders`,
-    :func:`~contactcore.estimate.caveats.curved_layer`, the energy's
+    :func:`~contactcore.estimate.caveats.curved_layer`,
+    :func:`~contactcore.estimate.caveats.exact_tractions`, the energy's
     :data:`~contactcore.estimate.caveats.ENERGY_KEY` where
     :func:`~contactcore.estimate.caveats.energy_caveat` applies, and with three
     runs :func:`~contactcore.estimate.caveats.order_mismatch`) or not to be
