@@ -787,6 +787,17 @@ ACROSS_A_THRESHOLD = 1e-6
 #: again (and may have come inside EFFECTIVITY).
 EFFECTIVITY_OUTSIDE_DRIFT = 0.25
 
+#: grader17 F1's bonded control, reduced (tests/scenes/tilt_bonded.toml; fe
+#: P2, h = 0.1 → 0.05, truth fe P2 at h = 0.0125): the two-run effectivity of
+#: H's u_x and u_y, measured 2026-11-28 (tests/test_estimate_pollution.py),
+#: at the lower end of their orders [1.42, 3] (Γ's exact ends:
+#: contactcore.estimate.orders.lower_end) and, without that rule, at their
+#: balanced order 2.15.  The test holds each within
+#: EFFECTIVITY_OUTSIDE_DRIFT of these and the rule's inside EFFECTIVITY;
+#: grader17 measured 0.57, 0.47 at 2.15 with the same runs.
+TILT_BONDED_EFFECTIVITY = {"ux": 1.157, "uy": 0.957}
+TILT_BONDED_EFFECTIVITY_BALANCED = {"ux": 0.567, "uy": 0.471}
+
 #: Scene A with the unilateral law enforced exactly and Γ inclined (the
 #: placements of tests/placements.py): xfem's and efgm's t_N at Γ's points
 #: against fe P2's at h/2, worst over the points away from Γ's ends and from

@@ -34,14 +34,14 @@ in their home.
 numpy and scipy only; no method is imported.
 """
 from .caveats import (cell_scale_orders, cell_scale_warnings, curved_layer, curved_layer_warning, energy_caveat,
-                      feature_size, order_mismatch, order_warnings, pollution_warning, residue_warnings, residues,
+                      exact_traction_warning, exact_tractions, feature_size, order_mismatch, order_warnings, pollution_warning, residue_warnings, residues,
                       stencil_radius, unsettled, unsettled_warnings)
 from .energy import EnergyEstimate, EnergyRule, energy_estimate, energy_norm, energy_rule, recovered_stress
 from .extrapolation import (QuantityEstimate, balanced_order, cell_scale_part, observed_order, profile_estimates,
                             richardson, rms, roundoff_floor, sample_groups, three_run_order)
-from .orders import order_range, polluted, theoretical_order
+from .orders import lower_end, order_range, polluted, theoretical_order
 from .runs import Estimate, estimate, estimate_runs, levels_of
-from .singular import (clamped_free_exponent, corner_exponents, far_from_singular, interface_end_exponents, kolosov,
+from .singular import (clamped_free_exponent, corner_exponents, exact_interface_ends, far_from_singular, interface_end_exponents, kolosov,
                        pollution_order, singular_points, singular_regions)
 from .status import status_along, status_change, status_warning, switches
 
@@ -52,15 +52,16 @@ __all__ = [
     "QuantityEstimate", "balanced_order", "cell_scale_part", "observed_order", "profile_estimates", "richardson",
     "rms", "roundoff_floor", "sample_groups", "three_run_order",
     # caveats
-    "cell_scale_orders", "cell_scale_warnings", "curved_layer", "curved_layer_warning", "energy_caveat", "feature_size", "order_mismatch", "order_warnings",
+    "cell_scale_orders", "cell_scale_warnings", "curved_layer", "curved_layer_warning", "energy_caveat",
+    "exact_traction_warning", "exact_tractions", "feature_size", "order_mismatch", "order_warnings",
     "pollution_warning", "residue_warnings", "residues", "stencil_radius", "unsettled", "unsettled_warnings",
     # status
     "status_along", "status_change", "status_warning", "switches",
     # energy
     "EnergyEstimate", "EnergyRule", "energy_estimate", "energy_norm", "energy_rule", "recovered_stress",
     # orders
-    "order_range", "polluted", "theoretical_order",
+    "lower_end", "order_range", "polluted", "theoretical_order",
     # singular
-    "clamped_free_exponent", "corner_exponents", "far_from_singular", "interface_end_exponents", "kolosov",
+    "clamped_free_exponent", "corner_exponents", "exact_interface_ends", "far_from_singular", "interface_end_exponents", "kolosov",
     "pollution_order", "singular_points", "singular_regions",
 ]

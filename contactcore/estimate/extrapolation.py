@@ -49,8 +49,8 @@ from .. import tolerances as tol
 from ..profiles import ProfileData
 from ..scene import Scene
 from ..scaling import Sizes
-from .orders import STRESSES, TRACTIONS, order_range, polluted
-from .singular import far_from_singular, pollution_order
+from .orders import STRESSES, TRACTIONS, lower_end, order_range, polluted
+from .singular import exact_interface_ends, far_from_singular, pollution_order
 
 
 def rms(x: np.ndarray) -> float:
@@ -199,7 +199,8 @@ def three_run_order(measured: float, order: float, theory: tuple[float, float]) 
 
 
 def richardson(values: list[np.ndarray], theory: tuple[float, float], ratio: float = 2.0, coarse: bool = False,
-               kept: np.ndarray | None = None, cells=None, floor: float = 0.0) -> QuantityEstimate:
+               kept: np.ndarray | None = None, cells=None, floor: float = 0.0,
+               low: bool = False) -> QuantityEstimate:
     """The estimate of one quantity from its samples at h, h/2 (and h/4),
     coarse to fine (module doc): the finest run's error, or with ``coarse``
     the coarsest run's (``(q_{h/2} − q_h) r^p / (r^p − 1)``, two levels only).
@@ -213,12 +214,16 @@ def richardson(values: list[np.ndarray], theory: tuple[float, float], ratio: flo
     that returns a difference's part at the scale of the coarse run's cells,
     :func:`cell_scale_part`), that part is estimated at the upper order
     ``theory[1]`` and the rest at the balanced one: for a range that pollution
-    widened (:func:`profile_estimates`)."""
+    widened (:func:`profile_estimates`).  With ``low`` a two-run estimate
+    takes ``theory[0]``, not the balanced order
+    (:func:`~contactcore.estimate.orders.lower_end`); three runs observe it."""
     kept = slice(None) if kept is None or not np.any(kept) else kept
     p = observed_order(*(v[kept] for v in values[-3:]), ratio=ratio, floor=floor) if len(values) >= 3 else None
     order = balanced_order(*theory, ratio=ratio)
     if p is not None:
         order = three_run_order(p, order, theory)
+    elif low:
+        order = float(theory[0])
     factor = lambda o: ratio ** o / (ratio ** o - 1) if coarse else 1 / (ratio ** o - 1)  # noqa: E731
     signed = values[-1] - values[-2]
     if p is not None or cells is None or theory[0] >= theory[1]:
@@ -266,9 +271,13 @@ def profile_estimates(levels: list[list[ProfileData]], degree: int, method: str 
     :func:`sample_groups`) at the upper order: away from a singular point its
     pollution solves the homogeneous equations, smooth at that scale, so what
     varies cell by cell is the runs' local error, which converges at the
-    method's order."""
+    method's order.  Where the scene's straight Γ ends under an exact law
+    (:func:`~contactcore.estimate.singular.exact_interface_ends`), a bulk
+    displacement of such a range takes its lower end from two runs
+    (:func:`~contactcore.estimate.orders.lower_end`)."""
     out, law = {}, scene.law if scene else None
     pollution, sizes = pollution_order(scene), Sizes.of(scene) if scene is not None else None
+    unknown_ends = len(exact_interface_ends(scene)) > 0
     for profs in zip(*levels):
         pid, cols = profs[-1].id, profs[-1].columns
         xy = np.column_stack([cols["x"], cols["y"]])
@@ -278,11 +287,13 @@ def profile_estimates(levels: list[list[ProfileData]], degree: int, method: str 
             s = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(xy, axis=0), axis=1))])
             groups = sample_groups(scene, xy, kept)
             cells = lambda v, s=s, groups=groups: cell_scale_part(v, s, groups, h)  # noqa: E731
-        out[pid] = {q: richardson([p.columns[q] for p in profs],
-                                  order_range(q, degree, method, law, switching, pollution),
-                                  coarse=coarse, kept=kept, floor=roundoff_floor(sizes, q),
-                                  cells=cells if polluted(q, degree, method, law, switching, pollution) else None)
-                    for q in profs[-1].names[3:]}
+        out[pid] = {}
+        for q in profs[-1].names[3:]:
+            theory = order_range(q, degree, method, law, switching, pollution)
+            out[pid][q] = richardson([p.columns[q] for p in profs], theory, coarse=coarse, kept=kept,
+                                     floor=roundoff_floor(sizes, q),
+                                     cells=cells if polluted(q, degree, method, law, switching, pollution) else None,
+                                     low=lower_end(q, theory, unknown_ends))
     return out
 
 

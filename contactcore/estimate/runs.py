@@ -21,7 +21,8 @@ import numpy as np
 
 from ..profiles import ProfileData, sample_profiles
 from ..scene import Scene
-from .caveats import (cell_scale_orders, cell_scale_warnings, feature_size, order_mismatch, order_warnings,
+from .caveats import (cell_scale_orders, cell_scale_warnings, exact_traction_warning, exact_tractions, feature_size,
+                      order_mismatch, order_warnings,
                       pollution_warning, residue_warnings, residues, unsettled, unsettled_warnings,
                       curved_layer, curved_layer_warning, energy_caveat, ENERGY_KEY)
 from .energy import EnergyEstimate, energy_estimate
@@ -47,7 +48,8 @@ class Estimate:
     warning calls not asymptotic
     (:func:`~contactcore.estimate.caveats.unsettled`,
     :func:`~contactcore.estimate.caveats.cell_scale_orders`,
-    :func:`~contactcore.estimate.caveats.curved_layer`, the energy's
+    :func:`~contactcore.estimate.caveats.curved_layer`,
+    :func:`~contactcore.estimate.caveats.exact_tractions`, the energy's
     :data:`~contactcore.estimate.caveats.ENERGY_KEY` where
     :func:`~contactcore.estimate.caveats.energy_caveat` applies, and with three
     runs :func:`~contactcore.estimate.caveats.order_mismatch`) or not to be
@@ -104,7 +106,8 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     layer = curved_layer(scene, levels, results[-1].method, results[-1].degree, hs[-2], exclude)
     rough = cell_scale_orders(scene, levels, profiles, exclude, hs[-2])
     residue = residues(scene, levels, profiles, exclude)
-    warnings = (order_warnings(profiles) + pollution_warning(scene, profiles)
+    nitsche = exact_tractions(scene, profiles)
+    warnings = (order_warnings(profiles) + pollution_warning(scene, profiles) + exact_traction_warning(nitsche)
                 + unsettled_warnings(found, hs[-2], feature_size(scene), scene.user.units.length)
                 + curved_layer_warning(layer, hs[-2], scene.user.units.length)
                 + cell_scale_warnings(rough, hs[-2:]) + residue_warnings(residue, len(levels) > 2))
@@ -117,7 +120,7 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
             for p in levels[-1]}
     caveat = energy_caveat(results[-1].method, results[-1].degree) if energy else []
     return Estimate(hs, profiles, zz, status, warnings + caveat, levels[-1],
-                    {k for v in found.values() for k in v} | set(layer) | set(rough) | set(residue)
+                    {k for v in found.values() for k in v} | set(layer) | set(rough) | set(residue) | set(nitsche)
                     | ({ENERGY_KEY} if caveat else set())
                     | {f"{pid}:{q}" for pid, qs in profiles.items() for q, e in qs.items() if order_mismatch(e)},
                     kept)
