@@ -86,11 +86,16 @@ def edge_crossings(itf, a: np.ndarray, b: np.ndarray) -> list[float]:
     """Parameters t ∈ [0, 1) of the segment a→b where the side changes."""
     if isinstance(itf, LevelSetInterface):
         return _general_crossings(itf, a, b)
-    sa, sb = sign_of(itf.phi([a, b]))
+    return _crossings(itf, a, b, *itf.phi([a, b]))
+
+
+def _crossings(itf, a: np.ndarray, b: np.ndarray, fa, fb) -> list[float]:
+    """:func:`edge_crossings` of a line or a circle, its level set ``fa``,
+    ``fb`` at a and b given (a polygon's corners' values, found once)."""
+    sa, sb = (1 if fa >= 0 else -1), (1 if fb >= 0 else -1)  # sign_of
     if isinstance(itf, LineInterface):
         if sa == sb:
             return []
-        fa, fb = itf.phi([a, b])
         return [float(fa / (fa - fb))]
     # scalar arithmetic: this runs for every edge of every cell near Γ
     (cx, cy), R = itf.centre, itf.radius
@@ -231,12 +236,15 @@ def _walk(itf, vertices: np.ndarray):
     it, and whether Γ is a circle that may lie inside the polygon or cut it
     along an arc longer than π (the short-arc construction would then be
     wrong: the polygon is split)."""
-    sides = sign_of(itf.phi(vertices))
+    phi = itf.phi(vertices)
+    sides = sign_of(phi)
+    general = isinstance(itf, LevelSetInterface)
     walk = []
     for i in range(len(vertices)):
-        a, b = vertices[i], vertices[(i + 1) % len(vertices)]
+        j = (i + 1) % len(vertices)
+        a, b = vertices[i], vertices[j]
         walk.append((a, True, sides[i]))
-        for t in edge_crossings(itf, a, b):
+        for t in (_general_crossings(itf, a, b) if general else _crossings(itf, a, b, phi[i], phi[j])):
             walk.append((a + t * (b - a), False, None))
     crossings = [i for i, w in enumerate(walk) if not w[1]]
     lo, hi = vertices.min(axis=0), vertices.max(axis=0)
@@ -268,8 +276,10 @@ def _sliver_cut(itf, vertices: np.ndarray, walk, places) -> bool:
     ``walk`` make of a polygon include a :func:`_sliver`: the one test of
     :func:`cut_polygon` and :func:`interface_rule_in`, so that Γ has a
     piece in a cell exactly where the cell has two regions."""
-    regions = _two_regions(itf, walk, places, SLIVER_GAUSS, polygon_area(vertices))
     chord = float(np.linalg.norm(walk[places[1]][0] - walk[places[0]][0]))
+    if chord > tol.TOUCH_CHORD * float(np.linalg.norm(vertices.max(axis=0) - vertices.min(axis=0))):
+        return False  # no sliver whatever its regions' areas (:func:`_sliver`'s first test): not fanned
+    regions = _two_regions(itf, walk, places, SLIVER_GAUSS, polygon_area(vertices))
     return regions is not None and _sliver(regions, chord, vertices)
 
 
