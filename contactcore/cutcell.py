@@ -425,14 +425,9 @@ def interface_rule_in(itf, vertices: np.ndarray, n: int, depth: int = 0):
 # same order, as :func:`cut_cell`'s scalar path: each point and weight is the
 # bits :func:`cut_cell` gives (a test compares them).  A cell whose cut is
 # not the plain one (no crossing, or two crossings on two different edges
-# fanned from a corner), or whose decision lies within round-off of a
-# threshold, is left to :func:`cut_cell`.
-
-#: Relative margin about a threshold (touch, sliver, fold, a circle's dip
-#: into an edge) within which :func:`cut_squares` leaves a cell to
-#: :func:`cut_cell`, whose decision it would otherwise have to reproduce
-#: bit for bit.
-BATCH_MARGIN = 1e-6
+# fanned from a corner), or whose decision lies within
+# :data:`~contactcore.tolerances.CUT_BATCH_MARGIN` of a threshold, is left
+# to :func:`cut_cell`.
 
 
 def _square_vertices(lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
@@ -462,7 +457,7 @@ def _batch_crossings(itf, a: np.ndarray, b: np.ndarray, fa: np.ndarray, fb: np.n
     t[one] = np.minimum(np.maximum(root[one], 0.0), _BELOW_ONE)
     t_near = np.minimum(np.maximum(-qb / (2 * qa), 0.0), 1.0)
     depth = R - np.hypot(fx + t_near * dx, fy + t_near * dy)
-    two = ~one & (sa > 0) & (depth > tol.GEOMETRY * R * (1 - BATCH_MARGIN)) & (0.0 <= lo_root) & (hi_root < 1.0)
+    two = ~one & (sa > 0) & (depth > tol.GEOMETRY * R * (1 - tol.CUT_BATCH_MARGIN)) & (0.0 <= lo_root) & (hi_root < 1.0)
     return t, two
 
 
@@ -505,7 +500,8 @@ def _batch_region(itf, chain: list[np.ndarray], n: int, size2: np.ndarray):
     for k in range(m + 1):
         p, q = chain[k], chain[k + 1]
         d = q - p
-        curves.append((p[:, None, :] + g[None, :, None] * d[:, None, :], np.broadcast_to(d[:, None, :], (len(p), n, 2))))
+        curves.append((p[:, None, :] + g[None, :, None] * d[:, None, :],
+                       np.broadcast_to(d[:, None, :], (len(p), n, 2))))
     curves.append(_batch_gamma(itf, chain[-1], chain[0], g))
     B = len(size2)
     pts, wts = np.zeros((B, m * n * n, 2)), np.zeros((B, m * n * n))
@@ -522,8 +518,8 @@ def _batch_region(itf, chain: list[np.ndarray], n: int, size2: np.ndarray):
         w = np.concatenate([f[1] for f in fans], axis=1)
         low = np.minimum(w.min(axis=1), 0.0)
         f = floor[rows]
-        ok = low >= f * (1 - BATCH_MARGIN)
-        near = ~ok & (low >= f * (1 + BATCH_MARGIN))
+        ok = low >= f * (1 - tol.CUT_BATCH_MARGIN)
+        near = ~ok & (low >= f * (1 + tol.CUT_BATCH_MARGIN))
         unsure[rows[near]] = True
         todo[rows[near]] = False
         pts[rows[ok]], wts[rows[ok]] = p[ok], np.maximum(w[ok], 0.0)
@@ -601,7 +597,7 @@ def cut_squares(itf, lo: np.ndarray, hi: np.ndarray, n: int):
             X1 = Vr[:, e1] + t[rows, e1, None] * (Vr[:, (e1 + 1) % 4] - Vr[:, e1])
             X2 = Vr[:, e2] + t[rows, e2, None] * (Vr[:, (e2 + 1) % 4] - Vr[:, e2])
             chord = np.linalg.norm(X2 - X1, axis=1)
-            rows_ok = chord > tol.TOUCH_CHORD * size[rows] * (1 + BATCH_MARGIN)  # no touch, no sliver
+            rows_ok = chord > tol.TOUCH_CHORD * size[rows] * (1 + tol.CUT_BATCH_MARGIN)  # no touch, no sliver
             rows, Vr, X1, X2 = rows[rows_ok], Vr[rows_ok], X1[rows_ok], X2[rows_ok]
             if not len(rows):
                 continue

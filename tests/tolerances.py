@@ -201,7 +201,7 @@ DISC_SPLIT_AREA = 1e-8
 SPLIT_CIRCLE_AREA = 1e-6
 
 #: contactcore.cutcell.cut_squares settles at least this share of the cells
-#: a line or a circle may cross (measured 0.90-1.0 on tests/test_quadrature_batch.py's
+#: a line or a circle may cross (measured 0.86-1.0 on tests/test_quadrature_batch.py's
 #: geometries at h = 0.1-0.025, a circle inside one cell aside; the rest,
 #: tangents and a circle's dips into an edge, are cut cell by cell): the
 #: batch is not left unused.
