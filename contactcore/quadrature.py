@@ -17,7 +17,7 @@ from __future__ import annotations
 import numpy as np
 
 from contactcore.scene import Scene
-from contactcore.cutcell import Rule, curve_rule, cut_cell, edge_crossings, tensor_cells
+from contactcore.cutcell import Rule, curve_rule, cut_cell, cut_squares, edge_crossings, tensor_cells
 from contactcore.geometry import CircleInterface, Disc, Rectangle, domain_cells
 
 
@@ -85,7 +85,12 @@ def _rim_cell(scene: Scene, outer, lo: np.ndarray, hi: np.ndarray, n: int, near_
 
 
 def volume_rule(scene: Scene, h: float, n: int) -> Rule:
-    """Gauss points of the domain with the body of each, Γ followed exactly."""
+    """Gauss points of the domain with the body of each, Γ followed exactly.
+
+    The cells that Γ or the rim crosses plainly are cut all at once
+    (:func:`contactcore.cutcell.cut_squares`), the others one by one
+    (:func:`_gamma_cell`, :func:`_rim_cell`); the points come in the order
+    of the cells, plain cells first, as the cell-by-cell rule gives them."""
     lo, hi = background_cells(scene, h)
     centre = (lo + hi) / 2
     near_gamma = _near(scene.interface, lo, hi)
@@ -94,13 +99,40 @@ def volume_rule(scene: Scene, h: float, n: int) -> Rule:
     plain = ~near_gamma & ~near_rim
     pts, w = tensor_cells(lo[plain], hi[plain], n)
     body = np.repeat((scene.interface.phi(centre[plain]) >= 0).astype(int), n * n)
-    rules = [Rule(pts, w, body)]
-    for c in np.flatnonzero(~plain):
-        if near_rim[c]:
-            rules += _rim_cell(scene, outer, lo[c], hi[c], n, near_gamma[c])
-        else:
-            rules += _gamma_cell(scene, lo[c], hi[c], n)
-    rule = Rule.concatenate(rules)
+    # (cell, slot) of each chunk's points: the cut cells' pieces are put in cell order
+    points, weights, bodies, keys = [pts], [w], [body], [np.full(len(w), -1)]
+
+    def add(cells, slot, p, wt, b):
+        points.append(p.reshape(-1, 2))
+        weights.append(wt.ravel())
+        bodies.append(b.ravel())
+        keys.append(np.repeat(cells * 4 + slot, wt.shape[1] if wt.ndim == 2 else 1))
+
+    gamma_only = np.flatnonzero(near_gamma & ~near_rim)
+    done, chunks = cut_squares(scene.interface, lo[gamma_only], hi[gamma_only], n)
+    for cells, slot, side, p, wt in chunks:
+        add(gamma_only[cells], slot, p, wt, np.broadcast_to((side > 0).astype(int)[:, None], wt.shape))
+    left = list(gamma_only[~done])
+    rim_only = np.flatnonzero(near_rim & ~near_gamma)
+    if len(rim_only):
+        done, chunks = cut_squares(outer, lo[rim_only], hi[rim_only], n)
+        for cells, slot, side, p, wt in chunks:
+            inside = side < 0
+            if inside.any():
+                q = p[inside]
+                add(rim_only[cells[inside]], slot, q, wt[inside],
+                    (scene.interface.phi(q.reshape(-1, 2)) >= 0).astype(int).reshape(wt[inside].shape))
+        left += list(rim_only[~done])
+    left += list(np.flatnonzero(near_rim & near_gamma))
+    for c in left:
+        rule = Rule.concatenate(_rim_cell(scene, outer, lo[c], hi[c], n, near_gamma[c]) if near_rim[c]
+                                else _gamma_cell(scene, lo[c], hi[c], n))
+        points.append(rule.points)
+        weights.append(rule.weights)
+        bodies.append(rule.bodies)
+        keys.append(np.full(len(rule.weights), c * 4))
+    order = np.argsort(np.concatenate(keys), kind="stable")
+    rule = Rule(np.concatenate(points)[order], np.concatenate(weights)[order], np.concatenate(bodies)[order])
     keep = rule.weights > 0
     return Rule(rule.points[keep], rule.weights[keep], rule.bodies[keep])
 

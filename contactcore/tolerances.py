@@ -1285,6 +1285,15 @@ EFGM_NODES_ON_ONE_LINE = 1e-8
 #: folds over itself: that vertex does not see the whole region.
 FAN_FOLD = 1e-12
 
+#: contactcore.cutcell.cut_squares (many cells cut at once, the same bits
+#: as cut_cell's one at a time) leaves a cell to cut_cell where one of
+#: cut_cell's decisions (a touch, a sliver, a fold against FAN_FOLD, a
+#: circle's dip into an edge against GEOMETRY) lies within this relative
+#: margin of its threshold: its own norms and areas may differ from
+#: cut_cell's by an ulp, and the decision must be cut_cell's.  It decides
+#: which path cuts a cell, never a result (tests/test_quadrature_batch.py).
+CUT_BATCH_MARGIN = 1e-6
+
 #: EFGM shape functions (efgm.shape): when a node set leaves a point's
 #: moment matrix singular.
 #: A moment matrix is regular when ``det(A)/Π A_ii`` (its determinant once

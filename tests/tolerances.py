@@ -193,6 +193,19 @@ TANGENT_AREA = 2e-7
 #: and the − segment's areas measured to 3e-10 (a disc of 10 cells across),
 #: 1e-12 at 80.  Bound 30x.
 DISC_SPLIT_AREA = 1e-8
+
+#: A circle inside one background cell (radius 0.01 in a 0.05 cell, 3 Gauss
+#: points): the cell is split until its pieces are cut plainly, the finest
+#: taking Γ as a chord where a piece's edge is tangent; the − body's area
+#: measured 1.0e-7 off π R² (tests/test_quadrature_batch.py).  Bound 10x.
+SPLIT_CIRCLE_AREA = 1e-6
+
+#: contactcore.cutcell.cut_squares settles at least this share of the cells
+#: a line or a circle may cross (measured 0.86-1.0 on tests/test_quadrature_batch.py's
+#: geometries at h = 0.1-0.025, a circle inside one cell aside; the rest,
+#: tangents and a circle's dips into an edge, are cut cell by cell): the
+#: batch is not left unused.
+BATCH_SETTLED = 0.8
 GENERAL_LENGTH = 1e-5
 GENERAL_VS_CIRCLE = 1e-6
 
