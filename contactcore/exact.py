@@ -120,8 +120,9 @@ class _ExactLaw:
     parameters: ClassVar[tuple[str, ...]] = ("stabilisation",)
     #: the law contract (contactcore.laws' module doc): β is a multiple of E/h
     dimensions: ClassVar[dict[str, str]] = {"stabilisation": DIMENSIONLESS}
-    #: its springs' law at per-point γ, read at the linear y = G̃ u
-    homogeneous: ClassVar[bool] = True
+    #: (``homogeneous``, ``unilateral``, ``frictional``: each subclass
+    #: declares its own, as the law contract asks of every law, so a new
+    #: exact law cannot inherit a wrong one; review7 #3)
     has_history: ClassVar[bool] = False
     is_linear: ClassVar[bool] = False
     #: the penalty law evaluated with per-point stiffnesses (None: bonded)
@@ -167,6 +168,7 @@ class ExactUnilateral(_ExactLaw):
 
     name: ClassVar[str] = "unilateral"
     springs: ClassVar[type] = UnilateralLaw
+    homogeneous: ClassVar[bool] = True  # its springs' law at per-point γ, read at the linear y = G̃ u
     unilateral: ClassVar[bool] = True
     frictional: ClassVar[bool] = False
 
@@ -183,6 +185,7 @@ class ExactCoulomb(_ExactLaw):
     dimensions: ClassVar[dict[str, str]] = {"mu": DIMENSIONLESS, "stabilisation": DIMENSIONLESS}
     has_history: ClassVar[bool] = True
     springs: ClassVar[type] = CoulombLaw
+    homogeneous: ClassVar[bool] = True  # its springs' law at per-point γ, read at the linear y = G̃ u
     unilateral: ClassVar[bool] = True
     frictional: ClassVar[bool] = True
 
@@ -199,6 +202,7 @@ class Bonded(_ExactLaw):
 
     name: ClassVar[str] = "bonded"
     is_linear: ClassVar[bool] = True
+    homogeneous: ClassVar[bool] = True  # linear
     unilateral: ClassVar[bool] = False
     frictional: ClassVar[bool] = False
     about_springs: ClassVar[str] = NO_SPRINGS

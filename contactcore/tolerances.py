@@ -482,6 +482,11 @@ MU_DUNDURS_WARN = 0.75
 #: than the pressure (a rigid block then tips before it slides once μ
 #: exceeds its half-width over its height).
 HINGE_CLOSED_SHARE = 0.1
+#: ... or HINGE_CLOSED_CELLS cells' share of Γ where that is larger (a mesh
+#: with fewer than ten cells along Γ): review7 #1, grader13's tipped block
+#: at fe P1 h = 0.5 closed over 2 of 6 Gauss points (share 0.28 < h/|Γ| =
+#: 0.5), where a tenth of Γ is a fifth of one cell.
+HINGE_CLOSED_CELLS = 1.0
 HINGE_SHEAR_RATIO = 1.0
 
 #: A step that takes every load to zero from a loaded state, under a law

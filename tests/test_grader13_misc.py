@@ -135,3 +135,26 @@ def test_a_slip_of_half_gamma_is_warned_and_a_small_one_is_not():
     assert health.large_slip_warnings(load_scene("layered-slip"), _path(np.zeros((n, 2)), np.full(n, SLIP), small)) == []
     large = small * 4
     assert health.large_slip_warnings(load_scene("layered-slip"), _path(np.zeros((n, 2)), np.full(n, SLIP), large))
+
+
+def test_a_slip_at_the_share_within_round_off_is_not_warned():
+    """review7 #2: max |g_T| 1 + 3e-15 times LARGE_SLIP_SHARE of Γ's length
+    warned under one BLAS kernel and not under the other; at the share
+    within LIMIT_ROUNDOFF it is not above it, beyond that it is."""
+    n = 10
+    at = np.tile([0.0, lib.LARGE_SLIP_SHARE * (1 + 3e-15)], (n, 1))
+    assert health.large_slip_warnings(load_scene("layered-slip"), _path(np.zeros((n, 2)), np.full(n, SLIP), at)) == []
+    beyond = np.tile([0.0, lib.LARGE_SLIP_SHARE * (1 + 1e3 * lib.LIMIT_ROUNDOFF)], (n, 1))
+    assert health.large_slip_warnings(load_scene("layered-slip"), _path(np.zeros((n, 2)), np.full(n, SLIP), beyond))
+
+
+def test_a_hinge_on_a_coarse_mesh_is_warned_at_one_cells_share():
+    """review7 #1: with two cells along Γ (fe P1, h = 0.5) the tipped block
+    closes 2 of 6 points, share 0.28 > HINGE_CLOSED_SHARE; one cell's
+    share (HINGE_CLOSED_CELLS · h / |Γ| = 0.5) bounds it there."""
+    result = methods.solver("fe")(load_scene(SCENES / "tipping_mu1000.toml"), 0.5, degree=1)
+    shares = [float(np.sum(result.interface.weights[s.status != OPEN]) / np.sum(result.interface.weights))
+              for s in result.interface.steps]
+    assert min(shares) > lib.HINGE_CLOSED_SHARE  # the old bound could not see it
+    said = [w for w in result.solver.warnings if "tipped" in w]
+    assert len(said) == 1 and "one of several" in said[0], (shares, said)

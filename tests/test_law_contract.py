@@ -236,3 +236,16 @@ def test_scenes_md_names_every_law_and_load_type_the_scene_model_accepts():
     assert all(f"`{name}`" in laws or f'type = "{name}"' in laws for name in EXACT_LAWS)
     loads = re.findall(r"^\| `([a-z_-]+)` \|", text, re.M)
     assert set(_LOAD_TYPES.values()) <= set(loads), set(_LOAD_TYPES.values()) - set(loads)
+
+
+@pytest.mark.parametrize("capability", ["homogeneous", "unilateral", "frictional"])
+def test_an_exact_law_that_does_not_declare_a_capability_is_refused(capability):
+    """The exact laws' base gives none either (review7 #3: it gave
+    ``homogeneous``, so an exact law that forgot it was taken as
+    homogeneous and told its user that more increments do not help)."""
+    from contactcore.exact import ExactUnilateral, _ExactLaw
+
+    members = {k: getattr(ExactUnilateral, k) for k in ("homogeneous", "unilateral", "frictional") if k != capability}
+    lacking = type("LackingExact", (_ExactLaw,), {"name": "lacking_exact", **members})
+    with pytest.raises(ContactError, match=f"declares no '{capability}'"):
+        registry(lacking)
