@@ -96,7 +96,6 @@ def _efgm_parts(theta: float) -> tuple[float, float]:
     row of cells: the cells a square of side H centred at the point meets
     (efgm/traction.py), two rows for θ < 1/2 (the row and the one below,
     wholly −) and for θ = 1 (Γ on their common edge)."""
-    assert theta < 0.5 or theta == 1.0
     return (1.0, 1.0) if theta == 1.0 else (1 + theta, 1 - theta)
 
 
