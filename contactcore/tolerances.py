@@ -684,6 +684,18 @@ ON_CELL_EDGE = 1e-10
 #: ≥ 0.115 of the cells (it was 1e-6).  Measured 2026-11-28.
 EFGM_NITSCHE_REACH = 0.5
 
+#: ... taken only where the point's own cell (or the two cells of a grid
+#: line it lies on) leaves one body less than this share of it: a sliver.
+#: Elsewhere the one-cell rule stays; either way γ₀ = 2|Γᵉ|/Σ|Ωₖᵉ|/Eₖ
+#: over the cells taken (wide: about half the one-cell value of an
+#: ordinary cut of equal moduli, E/h for 2E/h).  Widening every
+#: point (0.5 everywhere) halved γ₀ of ordinary cuts and turned two fragile
+#: exact-unilateral runs from solved to refused (scene C's law made exact
+#: unilateral, efgm P2 at h = 0.05; tests/test_nitsche_cuts.py placement
+#: 22, efgm P2).  0.1: the one-cell rule's error on the roller block was
+#: 1.0e-3 of p at a share of 0.1 (d = 1e-2 m, h = 0.1), 9.4e-3 at 0.01.
+EFGM_SLIVER_PART = 0.1
+
 #: Nitsche's stabilisation β: γ = β γ₀ at each point of Γ, γ₀ = 2|Γ^e| /
 #: Σ_k (|Ω_k^e|/E_k) from the method (~2E/h on fe's cells; Annavarapu,
 #: Hautefeuille & Dolbow 2012), unless the scene's [interface.law] gives

@@ -3,15 +3,20 @@
 (:mod:`contactcore.traction` for the maths and its source).
 
 EFGM has no cells of its own; the weights and ``γ₀`` of a Γ point are
-taken on the background integration cells around it: those that a square
-of side h centred at the point meets
+taken on the background integration cell that holds it, or, where that
+cell leaves a body a sliver (less than
+:data:`~contactcore.tolerances.EFGM_SLIVER_PART` of it), on the cells
+around it: those that a square of side h centred at the point meets
 (:data:`~contactcore.tolerances.EFGM_NITSCHE_REACH`), taken as one (its
 ``Ω₋ᵉ``, ``Ω₊ᵉ``: the areas the volume rule gives each body in those
 cells, the same rule that integrates ``K``; ``Γᵉ``: the length of Γ in
 them and the domain).  A grid line within
 :data:`~contactcore.tolerances.ON_CELL_EDGE` of the square's edge counts
 as inside it, so the cells do not follow round-off (Γ along a grid line,
-a point at a cell's centre).
+a point at a cell's centre); a point on a grid line (within ON_CELL_EDGE)
+has the cells on both sides as its own, taken as one.  (All points wide
+halved γ₀ of ordinary cuts and turned two fragile exact-unilateral runs
+from solved to refused: tolerances.EFGM_SLIVER_PART.)
 
 Why more than the point's own cell: a straight Γ halves the square, so
 each body has at least h²/2 in the cells, and neither part is a sliver
@@ -53,20 +58,28 @@ from contactcore.cutcell import Rule, interface_rule_in
 from contactcore.traction import nitsche_weights, traction_maps, traction_operator
 
 
-def cell_ranges(points: np.ndarray, origin: np.ndarray, step: np.ndarray, counts: np.ndarray) -> np.ndarray:
+def cell_ranges(points: np.ndarray, origin: np.ndarray, step: np.ndarray, counts: np.ndarray,
+                wide: bool = True) -> np.ndarray:
     """The first and last background cell (ix, iy) of each point's parts,
     (P, 2, 2) as ``[[ix0, iy0], [ix1, iy1]]``, squares of side ``step``
     from ``origin``, ``counts`` per direction: the cells that a square of
     side ``2 EFGM_NITSCHE_REACH step`` centred at the point meets (module
-    doc), two or three in each direction inside the grid."""
+    doc), two or three in each direction inside the grid; not ``wide``,
+    the point's own cell, or in a direction where it lies on a grid line
+    (within ON_CELL_EDGE) the two cells on either side of it."""
     f = (points - origin) / step
-    reach = tol.EFGM_NITSCHE_REACH + tol.ON_CELL_EDGE
-    first, last = np.floor(f - reach), np.floor(f + reach)
+    if wide:
+        reach = tol.EFGM_NITSCHE_REACH + tol.ON_CELL_EDGE
+        first, last = np.floor(f - reach), np.floor(f + reach)
+    else:
+        line = np.rint(f)
+        on = np.abs(f - line) <= tol.ON_CELL_EDGE
+        first, last = np.where(on, line - 1, np.floor(f)), np.where(on, line, np.floor(f))
     return np.clip(np.stack([first, last], axis=1), 0, counts - 1).astype(np.int64)
 
 
 def cell_parts(scene, vol: Rule, origin: np.ndarray, step: np.ndarray, counts: np.ndarray, points: np.ndarray,
-               gauss: int) -> tuple[np.ndarray, np.ndarray]:
+               gauss: int, wide: bool = True) -> tuple[np.ndarray, np.ndarray]:
     """The areas (P, 2) of the − and + parts of the background cells
     around each Γ point (:func:`cell_ranges`), from the volume rule
     ``vol``, and the length (P,) of Γ in those cells (and in the domain)."""
@@ -74,7 +87,7 @@ def cell_parts(scene, vol: Rule, origin: np.ndarray, step: np.ndarray, counts: n
     at = np.clip(np.floor((vol.points - origin) / step), 0, counts - 1).astype(np.int64)  # inside its cell
     volume = np.zeros((*counts, 2))
     np.add.at(volume, (at[:, 0], at[:, 1], vol.bodies), vol.weights)
-    ranges, inverse = np.unique(cell_ranges(points, origin, step, counts).reshape(len(points), 4), axis=0,
+    ranges, inverse = np.unique(cell_ranges(points, origin, step, counts, wide).reshape(len(points), 4), axis=0,
                                 return_inverse=True)
     areas, length = np.zeros((len(ranges), 2)), np.zeros(len(ranges))
     for i, (ix0, iy0, ix1, iy1) in enumerate(ranges):
@@ -90,9 +103,12 @@ def traction(scene, approx, shape_values, vol: Rule, cells: tuple, points: np.nd
     """``(S, γ₀)`` at Γ's ``points`` (module doc): ``shape_values`` the MLS
     functions there for the − and + bodies, ``cells`` the background
     cells' ``(origin, step, counts)``."""
-    areas, length = cell_parts(scene, vol, *cells, points, gauss)
+    own, length = cell_parts(scene, vol, *cells, points, gauss, wide=False)
+    sliver = own.min(axis=1) < tol.EFGM_SLIVER_PART * own.sum(axis=1)
+    if np.any(sliver):
+        own[sliver], length[sliver] = cell_parts(scene, vol, *cells, points[sliver], gauss)
     moduli = np.array([scene.materials[b].E for b in BODIES])
-    weights, gamma = nitsche_weights(areas, moduli, length)
+    weights, gamma = nitsche_weights(own, moduli, length)
     m = len(points)
     strains = [approx.strain_operator(sv, np.full(m, b)) for b, sv in enumerate(shape_values)]
     return traction_operator(traction_maps(normals, scene.voigt_matrices(), weights), strains), gamma

@@ -6,10 +6,9 @@ basis reproduces (linear, and quadratic at degree 2), ``S u`` at every Γ
 point is ``w₋ τ(σ₋) + w₊ τ(σ₊)`` with the exact stresses and weights
 in [0, 1] summing to 1 — on a straight, an inclined and a circular Γ.  On
 a horizontal Γ a fraction θ up a row of cells the weights and ``γ₀`` are
-known in closed form (Annavarapu et al. 2012): every xfem cell holding Γ
-has parts θh² and (1 − θ)h²; a sliver side's weight → 0 with θ while γ₀
-stays bounded.  efgm's parts reach over the background cells a square of
-side h centred at the point meets, so neither is a sliver.
+known in closed form (Annavarapu et al. 2012): every cell holding Γ has
+parts θh² and (1 − θ)h²; a sliver side's weight → 0 with θ while γ₀ stays
+bounded.
 """
 import dataclasses
 import json
@@ -82,21 +81,11 @@ def test_traction_patch_test(method, degree, options, gamma):
     assert np.all(itf.stabilisation > 0)
 
 
-def _closed_form(theta: float, plus: float | None = None, minus: float | None = None) -> tuple[float, float]:
+def _closed_form(theta: float, plus: float | None = None) -> tuple[float, float]:
     """w₋ and γ₀ of a cell of side H whose − part is θH² (module doc), its
-    + part ``plus``·H² (1 − θ unless given: two cells taken as one), or
-    ``minus``·H² and ``plus``·H² over a column of cells Γ crosses once."""
-    parts = [theta if minus is None else minus, 1 - theta if plus is None else plus]
-    compliance = np.array(parts) * H ** 2 / np.array(MODULI)
+    + part ``plus``·H² (1 − θ unless given: two cells taken as one)."""
+    compliance = np.array([theta, 1 - theta if plus is None else plus]) * H ** 2 / np.array(MODULI)
     return compliance[0] / compliance.sum(), 2 * H / compliance.sum()
-
-
-def _efgm_parts(theta: float) -> tuple[float, float]:
-    """efgm's − and + parts, per H² of a column, of a horizontal Γ θ up a
-    row of cells: the cells a square of side H centred at the point meets
-    (efgm/traction.py), two rows for θ < 1/2 (the row and the one below,
-    wholly −) and for θ = 1 (Γ on their common edge)."""
-    return (1.0, 1.0) if theta == 1.0 else (1 + theta, 1 - theta)
 
 
 @pytest.mark.parametrize("theta", [0.3, 1.0])
@@ -104,17 +93,11 @@ def _efgm_parts(theta: float) -> tuple[float, float]:
 def test_weights_and_stabilisation_on_a_horizontal_gamma(method, degree, options, theta):
     """Γ θ up a row of cells (xfem's cut cells, efgm's background cells):
     ``w₋`` and ``γ₀`` in closed form; θ = 1 puts Γ on the cells' edges,
-    whose points belong in xfem to the cell below (wholly −); efgm takes
-    the cells a square of side H centred at the point meets, whose rows
-    are the cut row and the one below for θ = 0.3, the rows on both sides
-    of the edge for θ = 1."""
+    whose points belong in xfem to the cell below (wholly −), in efgm to
+    the cells on both sides (wholly − and wholly +)."""
     itf, tau, sides = _split(method, degree, options, _horizontal(0.5 + (theta - 1) * H))
     w, rest = _weights(tau, sides)
-    if method == "efgm":
-        minus, plus = _efgm_parts(theta)
-        w_minus, gamma = _closed_form(theta, plus, minus)
-    else:
-        w_minus, gamma = _closed_form(theta)
+    w_minus, gamma = _closed_form(theta, 1.0 if method == "efgm" and theta == 1.0 else None)
     assert rest <= tol.PATCH_ROUNDOFF
     assert np.max(np.abs(w - w_minus)) <= tol.PATCH_ROUNDOFF
     assert np.max(np.abs(itf.stabilisation / gamma - 1)) <= tol.PATCH_ROUNDOFF
