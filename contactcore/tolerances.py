@@ -681,13 +681,47 @@ PIECE_MERGE_SHARE = 0.35
 #: whole edge (a region of no area, chord the edge) stays a cut.
 TOUCH_CHORD = 1e-3
 
-#: EFGM's Nitsche weights take a Γ point within this share of a background
-#: cell's side from a grid line as on it: its parts are the cells on both
-#: sides (efgm.traction).  A Γ along a grid line (a vertical Γ at x = 0.3,
-#: cells of 0.1) has its points a few ulps off the line, to one side or the
-#: other as round-off falls; 1e-10 is 1e5 times that, and far below any
-#: Gauss point's distance from a line it does not lie on.
+#: EFGM's Nitsche weights take a grid line within this share of a background
+#: cell's side of the edge of a Γ point's reach (EFGM_NITSCHE_REACH) as
+#: inside it: the cells on both sides of the line count (efgm.traction).  A
+#: Γ along a grid line (a vertical Γ at x = 0.3, cells of 0.1), or a point
+#: at a cell's centre, whose reach then ends on the grid lines, has its
+#: points a few ulps off, to one side or the other as round-off falls;
+#: 1e-10 is 1e5 times that, and far below any Gauss point's distance from a
+#: line it does not lie on.
 ON_CELL_EDGE = 1e-10
+
+#: EFGM's Nitsche parts |Ω₋ᵉ|, |Ω₊ᵉ| and |Γᵉ| of a Γ point are summed over
+#: the background cells that a square of this share of a cell's side on
+#: either side of the point meets (efgm.traction): 0.5, a square of side h
+#: centred at the point.  A straight Γ halves that square, so each body has
+#: at least h²/2 there (less only where the body itself is thinner: a strip
+#: along a boundary, the domain's edge), and no part is a sliver.  With the
+#: point's own cell alone (0) a Γ a hair above a node row left the soft body
+#: a sliver of each cell: both compliances tiny, γ₀ at the stiff body's
+#: scale, γ₀ h/E_soft 2e6 at 1e-9 h off, 1e6 at 1e-7, 2e4 at 1e-5, 200 at
+#: 1e-3, 20 at 1e-2, and Γ's t_N off by 14 %, 13 %, 4 %, 0.9 %, 0.1 % of
+#: the pressure (efgm P1, h = 0.1, the roller block of moduli 1e6 apart,
+#: exact unilateral law; P2 9.8 %, 9.2 %, 3.8 %, 0.9 %, 0.3 %), whatever h:
+#: γ times the jump's error outweighs the traction (grader13 #1; the
+#: penalty's α = k h/E in docs/methods/efgm.md, "Limits").  With 0.5, γ₀
+#: h/E_soft is 2 at every one of those offsets and t_N is Γ-on-the-row's,
+#: 3.7e-4 (P1) and 8.7e-4 (P2); over 48 inclined placements of scene A at
+#: moduli 1 and 1e4 apart γ₀ h/E_soft ≤ 10.5 (it was up to 2e4), each part
+#: ≥ 0.115 of the cells (it was 1e-6).  Measured 2026-11-28.
+EFGM_NITSCHE_REACH = 0.5
+
+#: ... taken only where the point's own cell (or the two cells of a grid
+#: line it lies on) leaves one body less than this share of it: a sliver.
+#: Elsewhere the one-cell rule stays; either way γ₀ = 2|Γᵉ|/Σ|Ωₖᵉ|/Eₖ
+#: over the cells taken (wide: about half the one-cell value of an
+#: ordinary cut of equal moduli, E/h for 2E/h).  Widening every
+#: point (0.5 everywhere) halved γ₀ of ordinary cuts and turned two fragile
+#: exact-unilateral runs from solved to refused (scene C's law made exact
+#: unilateral, efgm P2 at h = 0.05; tests/test_nitsche_cuts.py placement
+#: 22, efgm P2).  0.1: the one-cell rule's error on the roller block was
+#: 1.0e-3 of p at a share of 0.1 (d = 1e-2 m, h = 0.1), 9.4e-3 at 0.01.
+EFGM_SLIVER_PART = 0.1
 
 #: Nitsche's stabilisation β: γ = β γ₀ at each point of Γ, γ₀ = 2|Γ^e| /
 #: Σ_k (|Ω_k^e|/E_k) from the method (~2E/h on fe's cells; Annavarapu,

@@ -1331,3 +1331,16 @@ EFGM_STATED_TRACTION = 1e-3
 #: xfem P1 at h = 0.1 −8.104.  1e-2 keeps a factor 6 and still tells a
 #: wrongly sided facet (its Nitsche rows in one body) from the answer.
 HAIR_LIGAMENT_MEAN_TN = 1e-2
+
+#: How far efgm's exact traction on Γ may move when Γ leaves a node row by a
+#: hair, as a share of the pressure (tests/test_efgm_sliver.py: the roller
+#: block, moduli 1e6 apart, Γ 1e-7 or 1e-9 above the row, or the stiff body
+#: below and Γ 1e-7 under it, against Γ on the row).  Measured 2026-11-28:
+#: 2.4e-8 (P1), 2.5e-8 (P2), 1.0e-9 (stiff below), 1.4e-8 at 1e-9 off;
+#: the field's own change is about the offset over h (1.2e-5 and 3.7e-5
+#: at 1e-3 off), so 1e-6 leaves room 40 times the measured one for the
+#: solver's round-off at this contrast.  Before the Nitsche parts reached
+#: beyond the point's own cell (efgm/traction.py) it moved by 0.13 (P1) and
+#: 0.09 (P2): the soft body's sliver of a cell set γ₀ at the stiff body's
+#: scale (grader13 #1).
+EFGM_NEAR_ROW_MOVE = 1e-6
