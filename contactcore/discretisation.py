@@ -265,20 +265,21 @@ def check_solvable(scene, discretisation: Discretisation, h: float | None = None
     _refused(scene, discretisation, h, paper)
 
 
-def _coarse_guess(scene, discretisation: Discretisation, resolution: Resolution, system: ContactSystem):
+def _coarse_guess(scene, discretisation: Discretisation, resolution: Resolution):
     """An exact, nonlinear law's first status map from the same scene and
     method at twice the spacing (:mod:`contactcore.newton.guess`), or None:
     not for a penalty or linear law, a given grid or node set (no ``h`` to
-    coarsen), several processes, or a coarser spacing the method refuses."""
+    coarsen), or a coarser spacing the method refuses."""
     if not exact.is_exact(scene.law) or scene.law.is_linear or resolution.h is None or resolution.counts is not None:
         return None
-    if system.collective.parallel or newton_guess.COARSER is None:
+    if newton_guess.COARSER is None:
         return None
-    coarse = Resolution(newton_guess.COARSER * resolution.h)
+    coarse, kept = Resolution(newton_guess.COARSER * resolution.h), []
 
     def build():
         discretisation.check_spacing(scene, coarse)
         built = discretisation.build(scene, coarse, Timings())
+        kept.append(built)  # its mesh, whose communicator the system's reductions use, lives as long
         try:
             exact.check(scene.law, built.system.interface, discretisation.name)
         except Exception:
@@ -312,7 +313,7 @@ def solve(scene, discretisation: Discretisation, h: float | None = None, *, pape
     try:
         exact.check(scene.law, built.system.interface, discretisation.name)
         with timings.measure("solve"):
-            guess = _coarse_guess(scene, discretisation, resolution, built.system)
+            guess = _coarse_guess(scene, discretisation, resolution)
             x, path, report = solve_increments(scene, built.system, progress, guess)
     finally:
         if reuse is None or not reuse.owns(built):

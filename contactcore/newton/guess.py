@@ -26,8 +26,9 @@ Contract: :func:`coarse_guess` takes a dimensionless scene with an exact,
 nonlinear law and a callable that builds the coarse
 :class:`~contactcore.system.ContactSystem` (or raises
 :class:`~contactcore.errors.ContactError`); it returns a
-:class:`StatusGuess`, or None where the coarse system cannot be built, runs
-on several processes, or its first increment does not converge.  It
+:class:`StatusGuess` (every rank's coarse points, on every rank), or None
+where the coarse system cannot be built or its first step does not
+converge.  It
 prints nothing and closes the coarse system.
 """
 from __future__ import annotations
@@ -79,8 +80,6 @@ def coarse_guess(scene, build) -> StatusGuess | None:
     except ContactError:
         return None
     try:
-        if system.collective.parallel:
-            return None
         newton = _Newton(scene, system)
         if scene.law.has_history or scene.follow_path:
             newton.increment(1)
@@ -88,9 +87,9 @@ def coarse_guess(scene, build) -> StatusGuess | None:
             newton.step(float(scene.increments))
         itf, law = newton.itf, newton.law
         response = itf.respond(law, newton.u, law.initial_state(itf.size), newton.status, newton.ranks)
-        gamma = np.asarray(itf.gamma, float)
-        return StatusGuess(np.asarray(itf.points, float).reshape(-1, 2).copy(), response.status.copy(),
-                           response.tangent / gamma[:, None, None], newton.report.solves,
+        gamma, ranks = np.asarray(itf.gamma, float), newton.ranks  # every rank's points, on every rank
+        return StatusGuess(ranks.gather(np.asarray(itf.points, float).reshape(-1, 2)), ranks.gather(response.status),
+                           ranks.gather(response.tangent / gamma[:, None, None]), newton.report.solves,
                            newton.report.factorisations)
     except ContactError:
         return None
