@@ -39,6 +39,7 @@ import numpy as np
 from scipy.spatial import cKDTree
 
 from ..errors import ContactError
+from .increments import _Newton
 
 #: The coarser solve's spacing over the fine one (None: no coarser solve;
 #: the tests of the status search itself set it so).
@@ -69,15 +70,14 @@ class StatusGuess:
 
 def coarse_guess(scene, build) -> StatusGuess | None:
     """The converged map of ``scene``'s first step on the system
-    ``build()`` makes (module doc), or None: its first increment, or for a
+    ``build()`` makes (module doc), or None (``build`` failing in any way
+    means no guess, never a failed run): its first increment, or for a
     law without history on a path not followed the step to its last
     increment, which :func:`~contactcore.newton.solve_increments` takes
     first."""
-    from .increments import _Newton  # the package's own Newton (increments imports this module's users)
-
     try:
         system = build()
-    except ContactError:
+    except Exception:  # noqa: BLE001 - a coarser mesh or system the method cannot make: no guess, the search as before
         return None
     try:
         newton = _Newton(scene, system)
