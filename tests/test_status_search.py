@@ -86,3 +86,26 @@ def test_a_coarser_spacing_the_method_refuses_gives_no_guess(monkeypatch):
     assert alone.solver.iterations == searched.solver.iterations
     assert alone.solver.factorisations == searched.solver.factorisations
     assert max(seen) > min(seen)  # the coarser spacing was asked for, and refused
+
+
+def test_a_short_coarse_search_leaves_the_fine_run_as_it_was(monkeypatch):
+    """A coarse first step settled in SEARCH_WORTH_GUESSING iterations (the
+    layered cycle pulled open at μ = 1e-6, xfem P1: the all-stick solve,
+    then every point open) is not used: the fine run factorises and
+    decides as without it, bit for bit (with it, the all-open map was
+    factorised first and increment 3's stick was a correction of it, t_T
+    1.1e-8 MPa off the closed form's 0 where the all-stick factorisation
+    gives 2.6e-12; tests/test_mu_extremes.py)."""
+    from pathlib import Path
+    scene = load_scene(Path(__file__).parent / "scenes" / "cycle_mu1e-06.toml")
+    seen = []
+    coarse = discretisation.coarse_guess
+    monkeypatch.setattr(discretisation, "coarse_guess", lambda *a: seen.append(coarse(*a)) or seen[-1])
+    guessed = methods.solver("xfem")(scene, None, degree=1, estimate_condition=False)
+    assert seen and seen[0] is not None and not seen[0].worth()
+    monkeypatch.setattr(newton_guess, "COARSER", None)
+    searched = methods.solver("xfem")(scene, None, degree=1, estimate_condition=False)
+    assert guessed.solver.iterations == searched.solver.iterations
+    for a, b in zip(guessed.interface.steps, searched.interface.steps, strict=True):
+        assert np.array_equal(a.status, b.status)
+        assert np.array_equal(a.traction, b.traction) and np.array_equal(a.jump, b.jump)

@@ -45,6 +45,13 @@ from .increments import _Newton
 #: the tests of the status search itself set it so).
 COARSER = 2.0
 
+#: A coarse first step of at most this many iterations (the all-stick
+#: solve and the map it gives, settled) leaves the fine search as it was:
+#: it would take as few from every point sticking, and a guessed start
+#: changes which matrix is factorised first (the kept factorisation later
+#: increments correct from) for nothing.
+SEARCH_WORTH_GUESSING = 2
+
 
 @dataclass(frozen=True)
 class StatusGuess:
@@ -59,6 +66,16 @@ class StatusGuess:
     shape: np.ndarray
     solves: int = 0
     factorisations: int = 0
+    #: the coarse first step's iterations: a search of at most
+    #: SEARCH_WORTH_GUESSING is not shortened by a guess (:meth:`worth`)
+    iterations: int = 0
+
+    def worth(self) -> bool:
+        """Whether the coarse search was long enough that starting the fine
+        one from its map can shorten it (more than SEARCH_WORTH_GUESSING
+        iterations: the all-stick solve and one map after it are what any
+        start costs)."""
+        return self.iterations > SEARCH_WORTH_GUESSING
 
     def at(self, points: np.ndarray, gamma: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """The tangent (times ``gamma``) and status of the nearest of the
@@ -90,7 +107,7 @@ def coarse_guess(scene, build) -> StatusGuess | None:
         gamma, ranks = np.asarray(itf.gamma, float), newton.ranks  # every rank's points, on every rank
         return StatusGuess(ranks.gather(np.asarray(itf.points, float).reshape(-1, 2)), ranks.gather(response.status),
                            ranks.gather(response.tangent / gamma[:, None, None]), newton.report.solves,
-                           newton.report.factorisations)
+                           newton.report.factorisations, newton.report.iterations[0])
     except ContactError:
         return None
     finally:

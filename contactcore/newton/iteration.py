@@ -102,7 +102,7 @@ class _Iteration:
         u, previous = self._predicted(_flat((loads, supports))) if start is None else (start[0].copy(), start[1])
         u[self.system.fixed] = self.system.fixed_values(supports)
         walk = _Walk(k, (loads, supports), b, u, previous, self._lift(supports))
-        if self._guess is not None and start is None and self._at_rest():
+        if self._guess is not None and self._guess.worth() and start is None and self._at_rest():
             walk.guess = self._guess.at(self.itf.points, self.itf.gamma)
         self._guess = None  # the first step's first try only: cut-backs and continuations go as before
         self._secant, self._free_maps = None, 0  # each step its own secant and its maps that slip free
