@@ -42,6 +42,8 @@ from . import tolerances as tol
 from .errors import DiscretisationError
 from .geometry import LevelSetInterface, Rectangle
 from .newton import solve_increments
+from .newton import guess as newton_guess
+from .newton.guess import coarse_guess
 from .system import ContactSystem
 from .result import Result, Timings
 from .scaling import Scales, dimensionless, dimensionless_inputs, softer_stress
@@ -273,6 +275,31 @@ def check_solvable(scene, discretisation: Discretisation, h: float | None = None
     _refused(scene, discretisation, h, paper)
 
 
+def _coarse_guess(scene, discretisation: Discretisation, resolution: Resolution):
+    """An exact, nonlinear law's first status map from the same scene and
+    method at twice the spacing (:mod:`contactcore.newton.guess`), or None:
+    not for a penalty or linear law, a given grid or node set (no ``h`` to
+    coarsen), or a coarser spacing the method refuses."""
+    if not exact.is_exact(scene.law) or scene.law.is_linear or resolution.h is None or resolution.counts is not None:
+        return None
+    if newton_guess.COARSER is None:
+        return None
+    coarse, kept = Resolution(newton_guess.COARSER * resolution.h), []
+
+    def build():
+        discretisation.check_spacing(scene, coarse)
+        built = discretisation.build(scene, coarse, Timings())
+        kept.append(built)  # its mesh, whose communicator the system's reductions use, lives as long
+        try:
+            exact.check(scene.law, built.system.interface, discretisation.name)
+        except Exception:
+            built.system.close()
+            raise
+        return built.system
+
+    return coarse_guess(scene, build)
+
+
 @dimensionless
 def solve(scene, discretisation: Discretisation, h: float | None = None, *, paper: bool = False,
           progress=None, reuse: Reuse | None = None) -> Result:
@@ -296,7 +323,8 @@ def solve(scene, discretisation: Discretisation, h: float | None = None, *, pape
     try:
         exact.check(scene.law, built.system.interface, discretisation.name)
         with timings.measure("solve"):
-            x, path, report = solve_increments(scene, built.system, progress)
+            guess = _coarse_guess(scene, discretisation, resolution)
+            x, path, report = solve_increments(scene, built.system, progress, guess)
     finally:
         if reuse is None or not reuse.owns(built):
             built.system.close()

@@ -11,6 +11,7 @@ import tolerances as tol
 from contactcore import factorisations, load_scene, make_law, linear_solver
 from contactcore import tolerances as core_tol
 from contactcore.errors import SolverError
+from contactcore.newton import guess as newton_guess
 from verification import methods
 
 #: C-coulomb's own resolution, where its exact run was measured
@@ -72,13 +73,14 @@ def test_only_the_first_increment_factorises(method, law, counted):
 
 
 @pytest.mark.parametrize("method", ["fe", "xfem"])
-def test_a_map_free_to_turn_is_not_factorised(method, counted):
+def test_a_map_free_to_turn_is_not_factorised(method, counted, monkeypatch):
     """Exact C-coulomb's first increment reaches maps where every closed
     point slips, the rod free to turn: the map and Γ's geometry say so
     (``health.slips_free``), so no factorisation of such a tangent is
     tried and fails (whether MUMPS's pivots call it singular is
     round-off's choice: one did, fe P1 and xfem P1), and the secant steps
     share one matrix: fewer factorisations than iterations."""
+    monkeypatch.setattr(newton_guess, "COARSER", None)  # the search from every point sticking
     result, after = _run(method, "exact", counted)
     assert counted["singular"] == 0
     assert after[0] < result.solver.iterations[0]
@@ -113,6 +115,7 @@ def test_a_map_ahead_is_factorised(degree, counted, monkeypatch):
     two cells where the circle touches a vertex 3e-10 h off kept caps of
     1.4e-14 h²; with Γ snapped to that vertex, contactcore.tolerances.XFEM_SNAP,
     both strategies factorise 4 times.)"""
+    monkeypatch.setattr(newton_guess, "COARSER", None)  # the search from every point sticking
     ahead, _ = _run("xfem", "exact", counted, degree=degree)
     begun = counted["factorisations"]
     monkeypatch.setattr(core_tol, "AHEAD_STEPS", ())
@@ -178,6 +181,7 @@ def test_a_map_left_behind_is_refilled_not_analysed_again(method, degree, counte
         analyses.append(1)
         made(self, *args, **kwargs)
     monkeypatch.setattr(linear_solver.Factorisation, "__init__", analysed)
+    monkeypatch.setattr(newton_guess, "COARSER", None)  # the search from every point sticking
     _run(method, "exact", counted, degree=degree)
     assert counted["factorisations"] > 2
     assert len(analyses) == 1 + (counted["detours"] > 0)

@@ -7,6 +7,7 @@ tries the doubled one."""
 import pytest
 
 from contactcore import load_scene, make_law, newton
+from contactcore.newton import guess as newton_guess
 from verification import methods
 
 #: C-coulomb's own resolution, where the evaluations were counted (docs/newton.md).
@@ -40,6 +41,7 @@ def test_a_settled_step_is_not_doubled(enforcement, monkeypatch):
     monkeypatch.setattr(newton._Newton, "_residual", counted)
     monkeypatch.setattr(newton._Newton, "_commit", committed)
     monkeypatch.setattr(newton._Newton, "_line_search", searched)
+    monkeypatch.setattr(newton_guess, "COARSER", None)  # the first increment's search from every point sticking
     scene = load_scene("C-coulomb")
     result = methods.solver("fe")(_exact(scene) if enforcement == "exact" else scene, H, degree=1)
     assert result.solver.iterations[1:] == [1] * (scene.increments - 1)

@@ -74,12 +74,16 @@ One idea a module, each with its maths and contract:
 - :mod:`~contactcore.newton.residual`: the residual and the scales it is
   judged against;
 - :mod:`~contactcore.newton.refusals`: what the user reads when no step
-  converges (:data:`SOLVE_FAILED`).
+  converges (:data:`SOLVE_FAILED`);
+- :mod:`~contactcore.newton.guess`: an exact law's first status map from
+  the same scene solved at twice the spacing, for the first step's first
+  correction (:func:`contactcore.discretisation.solve` makes it).
 
 The arrows: ``driver`` → ``increments`` → ``continuation``, ``iteration``,
 ``correction``, ``statuses``, ``line_search``, ``convergence``,
 ``residual``; ``iteration`` → ``correction`` and :mod:`contactcore.slide`;
-``driver``, ``increments`` → ``refusals``.  ``_Newton`` is one class made
+``driver``, ``increments`` → ``refusals``; ``guess`` → ``increments``
+(the coarser solve's own Newton).  ``_Newton`` is one class made
 of the mixins (each module's ``_Name``), which share its attributes as
 each module's contract lists them.
 

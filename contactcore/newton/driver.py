@@ -66,17 +66,21 @@ def _follow(scene, newton: _Newton, progress) -> None:
             progress(n, scene.increments, newton.path.final.gathered(ranks, order))
 
 
-def solve_increments(scene, system: ContactSystem, progress=None) -> tuple[np.ndarray, InterfacePath, SolverReport]:
+def solve_increments(scene, system: ContactSystem, progress=None,
+                     guess=None) -> tuple[np.ndarray, InterfacePath, SolverReport]:
     """Solve ``scene`` on ``system``: its unknowns at the last increment, the
     interface's history and the solver's report (module doc).  ``progress``,
     if given, is called as ``progress(n, increments, step)`` after each
     increment ``n`` of a followed path converges (``step`` its
-    :class:`Increment`): the driver reports it, the numerics print nothing."""
+    :class:`Increment`): the driver reports it, the numerics print nothing.
+    ``guess``, if given, is a coarser solve's status map
+    (:class:`contactcore.newton.guess.StatusGuess`) for the first step's
+    first correction: it shortens the status search and decides nothing."""
     ranks = system.collective
     weights, points = ranks.gather(system.interface.weights), ranks.gather(system.interface.points)
     health.check_springs(scene, weights)
     health.check_restraint(scene, points, weights)
-    newton = _Newton(scene, system)
+    newton = _Newton(scene, system, guess)
     if not (scene.law.has_history or scene.follow_path):
         newton = _final_state(scene, system, newton, progress)
     else:
@@ -84,6 +88,9 @@ def solve_increments(scene, system: ContactSystem, progress=None) -> tuple[np.nd
     if not scene.law.is_linear:
         newton.report.solver = f"newton + {newton.report.solver}"
     newton.report.increments = len(newton.path.steps)  # what was solved, not the scene's count
+    if guess is not None:  # what the coarser solve paid is the run's
+        newton.report.solves += guess.solves
+        newton.report.factorisations += guess.factorisations
     newton.report.warnings += health.material_warnings(scene)
     newton.path.state = newton.state
     return newton.u, newton.path, newton.report

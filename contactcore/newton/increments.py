@@ -54,8 +54,11 @@ from .statuses import _Statuses
 class _Newton(_Continuation, _Iteration, _Correction, _Statuses, _LineSearch, _Convergence, _Residual):
     """Newton on one system and law, state committed only on convergence."""
 
-    def __init__(self, scene, system: ContactSystem):
+    def __init__(self, scene, system: ContactSystem, guess=None):
         self.scene, self.system, self.law = scene, system, scene.law
+        # a coarser solve's status map for the first step's first correction
+        # (contactcore.newton.guess), taken by the first step from rest only
+        self._guess = guess
         self.itf = enforced(scene.law, system.interface)
         self.free = np.setdiff1d(np.arange(system.size), system.fixed)
         # rows that prescribe displacements (EFGM's multipliers, scaled by E:

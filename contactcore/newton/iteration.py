@@ -40,6 +40,8 @@ to ``report``.
 """
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 
 from .. import health
@@ -68,6 +70,7 @@ class _Walk:
         self.judged = []
         self.held, self.budget = None, tol.NEWTON_MAX_ITERATIONS  # the statuses each point held (_progress)
         self.evaluated = None  # the line search's response and residual at u
+        self.guess = None  # a coarser solve's (tangent, statuses) for the first correction (_guessed)
         self.it = 0
 
 
@@ -99,9 +102,18 @@ class _Iteration:
         u, previous = self._predicted(_flat((loads, supports))) if start is None else (start[0].copy(), start[1])
         u[self.system.fixed] = self.system.fixed_values(supports)
         walk = _Walk(k, (loads, supports), b, u, previous, self._lift(supports))
+        if self._guess is not None and self._guess.worth() and start is None and self._at_rest():
+            walk.guess = self._guess.at(self.itf.points, self.itf.gamma)
+        self._guess = None  # the first step's first try only: cut-backs and continuations go as before
         self._secant, self._free_maps = None, 0  # each step its own secant and its maps that slip free
         self.factorisations.begin_step()
         return walk
+
+    def _at_rest(self) -> bool:
+        """Whether Newton stands at rest: ``u = 0`` and the law's history
+        untouched (the first step, where a coarser solve's map may start
+        the status search)."""
+        return self.ranks.all((self.state is None or not np.any(self.state)) and not self.u.any())
 
     def _measure(self, walk: _Walk):
         """The law's response and residual at ``walk.u`` (the line search's,
@@ -156,14 +168,38 @@ class _Iteration:
         if slid is not None:
             walk.du, (walk.u, walk.evaluated), walk.tangent = slid[0] - u, slid, None
             return
-        ahead = () if walk.du is None else self._ahead(u, walk.du, response.status)
-        du, rep, tangent = self._solve(response.tangent, -R, scale, response.secant, response.status, ahead)
+        solved = self._guessed(walk, R, response, scale) if walk.guess is not None else None
+        if solved is None:
+            ahead = () if walk.du is None else self._ahead(u, walk.du, response.status)
+            du, rep, tangent = self._solve(response.tangent, -R, scale, response.secant, response.status, ahead)
+        else:
+            response, (du, rep, tangent) = solved
         _merge(self.report, rep)
         if not self.law.is_linear:  # a linear law is solved in one step
             du, tangent, walk.evaluated = self._damped(walk, R, response, scale, du, tangent)
         else:
             walk.evaluated = None
         walk.du, walk.tangent, walk.u = du, tangent, u + du
+
+    def _guessed(self, walk: _Walk, R, response, scale: float):
+        """The step's first correction solved with a coarser solve's map
+        (``walk.guess``, :mod:`contactcore.newton.guess`) in place of the
+        all-stick one: ``(response, (δu, report, tangent))``, ``response``
+        the one at ``u`` with that map's tangent and statuses, from which
+        the line search decides the next map within the band.  Taken once;
+        None (the all-stick correction is solved, :meth:`_correct`) where
+        the map lets a body go or its slipping points leave one free (its
+        tangent is singular, the all-stick one is not) or its solve fails."""
+        tangent, status = walk.guess
+        walk.guess = None
+        gathered = self.ranks.gather(status)
+        if health.lets_go(self.scene, *self._gamma, gathered) or health.slips_free(self.scene, *self._gamma, gathered):
+            return None
+        guessed = dataclasses.replace(response, tangent=tangent, status=status, secant=None)
+        try:
+            return guessed, self._solve(tangent, -R, scale, status=status)
+        except SolverError:
+            return None
 
     def _damped(self, walk: _Walk, R, response, scale: float, du, tangent):
         """The correction ``du`` (solved with ``tangent``) scaled by the
