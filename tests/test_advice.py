@@ -1,7 +1,7 @@
 """The advice of an increment that does not converge names only remedies
 that apply to the law and its enforcement: springs (k_N, k_T) only where
 the law is enforced by them, Nitsche's β only where it is enforced exactly,
-more increments only for a nonlinear law, μp only for friction."""
+more increments only for a nonlinear law, the friction limit (μ times the pressure) only for friction."""
 import pytest
 
 from contactcore import load_scene
@@ -12,22 +12,22 @@ FAILURE = ["step 0 → 1: Newton did not converge in 25 iterations; relative res
 #: law -> (phrases its advice holds, phrases it must not hold)
 CASES = {
     "coulomb penalty": ({"type": "coulomb", "kN": 1e10, "kT": 1e8, "mu": 0.2},
-                        ["soften k_N, k_T", "use more increments", "μp"], ["stabilisation"]),
+                        ["soften k_N, k_T", "use more increments", "μ times its pressure"], ["stabilisation"]),
     "coulomb exact": ({"type": "coulomb", "mu": 0.2, "enforcement": "exact"},
-                      ["another stabilisation", "use more increments", "μp"], ["k_N", "k_T", "springs"]),
+                      ["another stabilisation", "use more increments", "μ times its pressure"], ["k_N", "k_T", "springs"]),
     # Newton out of iterations under the unilateral law: its tie is named first (health.tie_cause)
     "unilateral penalty": ({"type": "unilateral", "kN": 1e10, "kT": 1e8},
                            ["soften k_N, k_T", "more increments help only where a consistent map exists"],
-                           ["stabilisation", "μp", "stick/slip"]),
+                           ["stabilisation", "μ times its pressure", "stick/slip"]),
     "unilateral exact": ({"type": "unilateral", "enforcement": "exact"},
                          ["another stabilisation", "more increments help only where a consistent map exists"],
-                         ["k_N", "springs", "μp"]),
+                         ["k_N", "springs", "μ times its pressure"]),
     "linear penalty": ({"type": "linear", "kN": 1e10, "kT": 1e8},
                        ["k_N, k_T", "more increments do not help"],
-                       ["use more increments", "stabilisation", "μp", "open points", "stick"]),
+                       ["use more increments", "stabilisation", "μ times its pressure", "open points", "stick"]),
     "bonded exact": ({"type": "bonded"},
                      ["another stabilisation", "more increments do not help"],
-                     ["use more increments", "k_N", "springs", "μp", "open points", "stick"]),
+                     ["use more increments", "k_N", "springs", "μ times its pressure", "open points", "stick"]),
 }
 
 
