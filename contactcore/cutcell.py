@@ -210,10 +210,12 @@ def _split(vertices: np.ndarray) -> list[np.ndarray]:
 
 
 def polygon_rule(vertices: np.ndarray, n: int):
-    """Gauss points of an uncut convex polygon: tensor rule on an
-    axis-aligned rectangle, fans from the first vertex otherwise."""
-    if len(vertices) == 4 and np.allclose(vertices[[0, 1, 2, 3], [1, 1, 0, 0]], vertices[[1, 0, 3, 2], [1, 0, 0, 1]]):
-        return _tensor_rule(vertices[0], vertices[2], n)
+    """Gauss points of an uncut convex polygon: the n×n tensor rule on an
+    axis-aligned rectangle (:func:`_rectangle_test`), exact for a degree
+    2n − 1 polynomial in each coordinate; fans from the first vertex
+    otherwise (2n² points a quadrilateral, exact to total degree 2n − 2)."""
+    if len(vertices) == 4 and _rectangle_test(vertices[None])[0]:
+        return _tensor_rule(np.minimum(vertices[0], vertices[2]), np.maximum(vertices[0], vertices[2]), n)
     pts, wts = zip(*[_fan(vertices[0], _segment(vertices[k], vertices[k + 1]), n)
                      for k in range(1, len(vertices) - 1)])
     return np.concatenate(pts), np.concatenate(wts)
@@ -528,9 +530,19 @@ def _batch_region(itf, chain: list[np.ndarray], n: int, size2: np.ndarray):
 
 
 def _rectangle_test(V: np.ndarray) -> np.ndarray:
-    """:func:`polygon_rule`'s test for an axis-aligned rectangle, as it
-    stands, of each quadrilateral V (B, 4, 2)."""
-    return np.all(np.isclose(V[:, [0, 1, 2, 3], [1, 1, 0, 0]], V[:, [1, 0, 3, 2], [1, 0, 0, 1]]), axis=1)
+    """Whether each quadrilateral V (B, 4, 2) is an axis-aligned rectangle:
+    its edges alternately horizontal and vertical, from its first vertex
+    (v₀y = v₁y, v₁x = v₂x, v₂y = v₃y, v₃x = v₀x) or, the vertices starting
+    one corner on (a piece of :func:`_split`, a cell whose order was
+    reversed), vertical and horizontal, each within
+    :data:`~contactcore.tolerances.AXIS_RECTANGLE` of the polygon's
+    diameter.  The one test of :func:`polygon_rule` and :func:`cut_squares`."""
+    size = np.linalg.norm(V.max(axis=1) - V.min(axis=1), axis=1)
+    step = np.abs(np.roll(V, -1, axis=1) - V)            # (B, 4, 2): |v_{k+1} − v_k| by coordinate
+    limit = (tol.AXIS_RECTANGLE * size)[:, None]
+    horizontal_first = np.all(step[:, [0, 1, 2, 3], [1, 0, 1, 0]] <= limit, axis=1)
+    vertical_first = np.all(step[:, [0, 1, 2, 3], [0, 1, 0, 1]] <= limit, axis=1)
+    return (horizontal_first | vertical_first) & (size > 0)
 
 
 def _batch_polygon_rule(V: np.ndarray, n: int, rectangle: bool):
@@ -539,7 +551,7 @@ def _batch_polygon_rule(V: np.ndarray, n: int, rectangle: bool):
     or the fans from the first vertex; points (B, K, 2), weights (B, K)."""
     B = len(V)
     if rectangle:
-        pts, w = tensor_cells(V[:, 0], V[:, 2], n)
+        pts, w = tensor_cells(np.minimum(V[:, 0], V[:, 2]), np.maximum(V[:, 0], V[:, 2]), n)
         return pts.reshape(B, n * n, 2), w.reshape(B, n * n)
     g, _ = gauss01(n)
     fans = []

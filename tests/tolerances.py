@@ -1331,3 +1331,10 @@ EFGM_STATED_TRACTION = 1e-3
 #: xfem P1 at h = 0.1 −8.104.  1e-2 keeps a factor 6 and still tells a
 #: wrongly sided facet (its Nitsche rows in one body) from the answer.
 HAIR_LIGAMENT_MEAN_TN = 1e-2
+
+#: contactcore.cutcell.polygon_rule's n×n tensor rule on an axis-aligned
+#: rectangle integrates x^a y^b, a, b ≤ 2n − 1, exactly: relative to the
+#: integral, the error measured at most 1.7e-15 (n = 2-6, rectangles of
+#: side 1e-3 to 1e3 off the origin, tests/test_polygon_rule.py).  Bound
+#: above round-off's growth with the degree, well below a missed degree.
+TENSOR_RULE_EXACT = 1e-12
