@@ -193,9 +193,9 @@ def _region_rule(corners_and_curves, n, size2):
     return None
 
 
-def cut_cell(itf, lo: np.ndarray, hi: np.ndarray, n: int) -> list[tuple[int, np.ndarray, np.ndarray]]:
-    """``[(side, points, weights)]`` for the rectangle [lo, hi]."""
-    return cut_polygon(itf, np.array([lo, [hi[0], lo[1]], hi, [lo[0], hi[1]]], float), n)
+def cut_cell(itf, lo: np.ndarray, hi: np.ndarray, n: int, tensor: bool = True) -> list[tuple[int, np.ndarray, np.ndarray]]:
+    """``[(side, points, weights)]`` for the rectangle [lo, hi] (``tensor``: :func:`polygon_rule`'s)."""
+    return cut_polygon(itf, np.array([lo, [hi[0], lo[1]], hi, [lo[0], hi[1]]], float), n, tensor=tensor)
 
 
 def _split(vertices: np.ndarray) -> list[np.ndarray]:
@@ -209,11 +209,15 @@ def _split(vertices: np.ndarray) -> list[np.ndarray]:
     return [np.array([vertices[i], mids[i], c, mids[i - 1]]) for i in range(4)]
 
 
-def polygon_rule(vertices: np.ndarray, n: int):
-    """Gauss points of an uncut convex polygon: tensor rule on an
-    axis-aligned rectangle, fans from the first vertex otherwise."""
-    if len(vertices) == 4 and np.allclose(vertices[[0, 1, 2, 3], [1, 1, 0, 0]], vertices[[1, 0, 3, 2], [1, 0, 0, 1]]):
-        return _tensor_rule(vertices[0], vertices[2], n)
+def polygon_rule(vertices: np.ndarray, n: int, tensor: bool = True):
+    """Gauss points of an uncut convex polygon: the n×n tensor rule on an
+    axis-aligned rectangle (:func:`_rectangle_test`), exact for a degree
+    2n − 1 polynomial in each coordinate; fans from the first vertex
+    otherwise (2n² points a quadrilateral, exact to total degree 2n − 2),
+    and on every polygon where ``tensor`` is false (the choice of
+    :data:`contactcore.quadrature.WHOLE_CELL_TENSOR`)."""
+    if tensor and len(vertices) == 4 and _rectangle_test(vertices[None])[0]:
+        return _tensor_rule(np.minimum(vertices[0], vertices[2]), np.maximum(vertices[0], vertices[2]), n)
     pts, wts = zip(*[_fan(vertices[0], _segment(vertices[k], vertices[k + 1]), n)
                      for k in range(1, len(vertices) - 1)])
     return np.concatenate(pts), np.concatenate(wts)
@@ -283,37 +287,39 @@ def _sliver_cut(itf, vertices: np.ndarray, walk, places) -> bool:
     return regions is not None and _sliver(regions, chord, vertices)
 
 
-def _whole(itf, vertices: np.ndarray, n: int):
+def _whole(itf, vertices: np.ndarray, n: int, tensor: bool):
     """The polygon as one region on the side of its corner farthest from Γ."""
     far = int(np.argmax(np.abs(itf.phi(vertices))))
-    return [(int(sign_of(itf.phi(vertices[far:far + 1]))[0]), *polygon_rule(vertices, n))]
+    return [(int(sign_of(itf.phi(vertices[far:far + 1]))[0]), *polygon_rule(vertices, n, tensor))]
 
 
-def cut_polygon(itf, vertices: np.ndarray, n: int, depth: int = 0) -> list[tuple[int, np.ndarray, np.ndarray]]:
+def cut_polygon(itf, vertices: np.ndarray, n: int, depth: int = 0,
+                tensor: bool = True) -> list[tuple[int, np.ndarray, np.ndarray]]:
     """``[(side, points, weights)]`` for a convex polygon (counter-clockwise)
     and level set ``itf``: one entry per region on one side of Γ; one
     region where Γ only touches the polygon (:func:`_touches_only`,
-    :func:`_sliver`)."""
+    :func:`_sliver`).  ``tensor``: whether a whole axis-aligned rectangle
+    takes the tensor rule (:func:`polygon_rule`)."""
     walk, crossings, small_circle = _walk(itf, vertices)
     size2 = polygon_area(vertices)
     if not small_circle and (not crossings or _touches_only([walk[i][0] for i in crossings], vertices)
                              or len(crossings) == 2 and _sliver_cut(itf, vertices, walk, crossings)):
-        return _whole(itf, vertices, n)
+        return _whole(itf, vertices, n, tensor)
     if len(crossings) == 2 and not small_circle:
         result = _two_regions(itf, walk, crossings, n, size2)
         if result is not None:
             return result
     if depth >= MAX_DEPTH and len(crossings) == 2 and not small_circle:
-        chord = _chord_regions(itf, vertices, walk[crossings[0]][0], walk[crossings[1]][0], n)
+        chord = _chord_regions(itf, vertices, walk[crossings[0]][0], walk[crossings[1]][0], n, tensor)
         if chord is not None:
             return chord
     if depth >= MAX_DEPTH:
         raise DiscretisationError(f"the cell with corners {np.round(vertices, 6).tolist()} is cut by Γ in a way "
                                   f"that {MAX_DEPTH} subdivisions do not simplify; refine")
-    return [part for piece in _split(vertices) for part in cut_polygon(itf, piece, n, depth + 1)]
+    return [part for piece in _split(vertices) for part in cut_polygon(itf, piece, n, depth + 1, tensor)]
 
 
-def _chord_regions(itf, vertices: np.ndarray, p: np.ndarray, q: np.ndarray, n: int):
+def _chord_regions(itf, vertices: np.ndarray, p: np.ndarray, q: np.ndarray, n: int, tensor: bool):
     """The two regions of a piece at the finest split that Γ crosses at
     ``p`` and ``q`` but that no corner sees whole (Γ touching a side of the
     piece between its crossings: a circle tangent to a grid line, which
@@ -336,7 +342,7 @@ def _chord_regions(itf, vertices: np.ndarray, p: np.ndarray, q: np.ndarray, n: i
     for side, normal in ((-1, m), (1, -m)):
         piece = clip_halfplane(vertices, LineInterface(tuple(p), tuple(normal)))
         if polygon_area(piece) > 0:
-            out.append((side, *polygon_rule(piece, n)))
+            out.append((side, *polygon_rule(piece, n, tensor)))
     return out
 
 
@@ -528,9 +534,19 @@ def _batch_region(itf, chain: list[np.ndarray], n: int, size2: np.ndarray):
 
 
 def _rectangle_test(V: np.ndarray) -> np.ndarray:
-    """:func:`polygon_rule`'s test for an axis-aligned rectangle, as it
-    stands, of each quadrilateral V (B, 4, 2)."""
-    return np.all(np.isclose(V[:, [0, 1, 2, 3], [1, 1, 0, 0]], V[:, [1, 0, 3, 2], [1, 0, 0, 1]]), axis=1)
+    """Whether each quadrilateral V (B, 4, 2) is an axis-aligned rectangle:
+    its edges alternately horizontal and vertical, from its first vertex
+    (v₀y = v₁y, v₁x = v₂x, v₂y = v₃y, v₃x = v₀x) or, the vertices starting
+    one corner on (a piece of :func:`_split`, a cell whose order was
+    reversed), vertical and horizontal, each within
+    :data:`~contactcore.tolerances.AXIS_RECTANGLE` of the polygon's
+    diameter.  The one test of :func:`polygon_rule` and :func:`cut_squares`."""
+    size = np.linalg.norm(V.max(axis=1) - V.min(axis=1), axis=1)
+    step = np.abs(np.roll(V, -1, axis=1) - V)            # (B, 4, 2): |v_{k+1} − v_k| by coordinate
+    limit = (tol.AXIS_RECTANGLE * size)[:, None]
+    horizontal_first = np.all(step[:, [0, 1, 2, 3], [1, 0, 1, 0]] <= limit, axis=1)
+    vertical_first = np.all(step[:, [0, 1, 2, 3], [0, 1, 0, 1]] <= limit, axis=1)
+    return (horizontal_first | vertical_first) & (size > 0)
 
 
 def _batch_polygon_rule(V: np.ndarray, n: int, rectangle: bool):
@@ -539,7 +555,7 @@ def _batch_polygon_rule(V: np.ndarray, n: int, rectangle: bool):
     or the fans from the first vertex; points (B, K, 2), weights (B, K)."""
     B = len(V)
     if rectangle:
-        pts, w = tensor_cells(V[:, 0], V[:, 2], n)
+        pts, w = tensor_cells(np.minimum(V[:, 0], V[:, 2]), np.maximum(V[:, 0], V[:, 2]), n)
         return pts.reshape(B, n * n, 2), w.reshape(B, n * n)
     g, _ = gauss01(n)
     fans = []
@@ -551,14 +567,14 @@ def _batch_polygon_rule(V: np.ndarray, n: int, rectangle: bool):
     return np.concatenate([f[0] for f in fans], axis=1), np.concatenate([f[1] for f in fans], axis=1)
 
 
-def cut_squares(itf, lo: np.ndarray, hi: np.ndarray, n: int):
+def cut_squares(itf, lo: np.ndarray, hi: np.ndarray, n: int, tensor: bool = True):
     """:func:`cut_cell` of the cells [lo, hi] (C, 2) at once, where a line
     or a circle cuts them plainly (section comment).  Returns ``done``
     (C,), which cells it settled, and their regions as ``(cells, slot,
     side, points, weights)`` chunks: ``cells`` (B,) the cells, ``slot`` the
     region's place among its cell's regions, ``side`` (B,) its side of
     ``itf``, points (B, K, 2) and weights (B, K) in :func:`cut_cell`'s
-    order."""
+    order, ``tensor`` as there."""
     C = len(lo)
     done = np.zeros(C, bool)
     if not isinstance(itf, (LineInterface, CircleInterface)) or not C:
@@ -578,7 +594,7 @@ def cut_squares(itf, lo: np.ndarray, hi: np.ndarray, n: int):
     chunks = []
     # no crossing: the whole cell on the side of its corner farthest from Γ (:func:`_whole`)
     whole = np.flatnonzero(fine & (count == 0))
-    rectangle = _rectangle_test(V[whole])
+    rectangle = _rectangle_test(V[whole]) if tensor else np.zeros(len(whole), bool)
     for kind in (True, False):
         rows = whole[rectangle == kind]
         if len(rows):

@@ -1333,6 +1333,16 @@ FAN_FOLD = 1e-12
 #: which path cuts a cell, never a result (tests/test_quadrature_batch.py).
 CUT_BATCH_MARGIN = 1e-6
 
+#: contactcore.cutcell.polygon_rule gives the n×n tensor rule to a
+#: quadrilateral whose edges are horizontal and vertical within this share
+#: of its diameter (relative: the test holds alike in any unit).  A cell
+#: built from its lower and upper corners passes exactly; a piece of a
+#: split cell may be off by an ulp or two (its centre is the mean of four
+#: corners, its edge midpoints the mean of two); a distorted mesh cell is
+#: off by far more than 1e-10 and is fanned.  Either rule integrates the
+#: polygon (to that share of its area); the test picks the points only.
+AXIS_RECTANGLE = 1e-10
+
 #: EFGM shape functions (efgm.shape): when a node set leaves a point's
 #: moment matrix singular.
 #: A moment matrix is regular when ``det(A)/Π A_ii`` (its determinant once

@@ -88,21 +88,23 @@ def test_the_batched_rule_s_weights_sum_to_the_bodies_areas(name):
 
 @pytest.mark.parametrize("name", ["inclined line", "circle in a block", "circle tangent to grid lines",
                                   "circle inside one cell"])
-def test_cut_squares_settles_the_plain_cuts_as_cut_cell_does(name):
+@pytest.mark.parametrize("tensor", [True, False], ids=["tensor", "fans"])
+def test_cut_squares_settles_the_plain_cuts_as_cut_cell_does(name, tensor):
     """Each cell cut_squares settles holds cut_cell's regions (sides,
-    points, weights) bit for bit; it settles most of the cells Γ may cross
-    and leaves the awkward ones (a tangent, a circle inside one cell) to
+    points, weights) bit for bit, a whole cell given the tensor rule or the
+    fans alike (``tensor``); it settles most of the cells Γ may cross and
+    leaves the awkward ones (a tangent, a circle inside one cell) to
     cut_cell."""
     scene = _scene(name)
     lo, hi = Q.background_cells(scene, 0.05)
     near = np.flatnonzero(Q._near(scene.interface, lo, hi))
-    done, chunks = cut_squares(scene.interface, lo[near], hi[near], 3)
+    done, chunks = cut_squares(scene.interface, lo[near], hi[near], 3, tensor)
     found = {}
     for cells, slot, side, pts, w in chunks:
         for k, c in enumerate(cells):
             found.setdefault(int(c), []).append((slot, int(side[k]), pts[k], w[k]))
     for k in np.flatnonzero(done):
-        old = cut_cell(scene.interface, lo[near[k]], hi[near[k]], 3)
+        old = cut_cell(scene.interface, lo[near[k]], hi[near[k]], 3, tensor)
         new = [r[1:] for r in sorted(found[int(k)], key=lambda r: r[0])]
         assert [s for s, _, _ in old] == [s for s, _, _ in new]
         assert all(np.array_equal(a[1], b[1]) and np.array_equal(a[2], b[2]) for a, b in zip(old, new))
