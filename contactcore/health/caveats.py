@@ -242,11 +242,16 @@ def traction_locking_warnings(scene, method: str, degree: int) -> list[str]:
             if tol.NU_LOCKING_WARN_FE_P1_EXACT <= m.nu < tol.NU_LOCKING_WARN]
     if not high:
         return []
-    named = " and ".join(f"materials.{body}.nu = {nu:.10g} (λ/μ = {2 * nu / (1 - 2 * nu):.1e})" for body, nu in high)
+    named = _named_nu(high)
     return [f"{named} in plane strain, at or above {tol.NU_LOCKING_WARN_FE_P1_EXACT:g}: fe P1's exactly enforced "
             "Γ traction is σ(u)·n of the P1 field, which carries λ div u and locks (a twisted rod of fixed shear "
             "moduli, whose exact t_T does not depend on ν: fe P1's error on Γ 3.3 times its ν = 0.3 value at "
             "ν = 0.44, 17 times at 0.49, h = 0.025); use degree = 2 (within 2.4–4.5 times at 0.49)"]
+
+
+def _named_nu(high) -> str:
+    """The bodies ``(name, ν)`` of ``high`` named with ν and ``λ/μ = 2ν/(1 − 2ν)``."""
+    return " and ".join(f"materials.{body}.nu = {nu:.10g} (λ/μ = {2 * nu / (1 - 2 * nu):.1e})" for body, nu in high)
 
 
 def _locking_warnings(scene) -> list[str]:
@@ -256,7 +261,7 @@ def _locking_warnings(scene) -> list[str]:
     high = [(body, m.nu) for body, m in scene.materials.items() if m.nu >= tol.NU_LOCKING_WARN]
     if not high:
         return []
-    named = " and ".join(f"materials.{body}.nu = {nu:.10g} (λ/μ = {2 * nu / (1 - 2 * nu):.1e})" for body, nu in high)
+    named = _named_nu(high)
     return [f"{named} in plane strain, at or above {tol.NU_LOCKING_WARN:g}: every method here is displacement-based and "
             "may lock volumetrically, its stresses off by tens of percent or more, degree 1 the most but degree 2 "
             "too (scene A at ν = 0.4999, h = 0.05: the upper block's moment from σyy on Γ 18 % off in fe P2, 180 % "
