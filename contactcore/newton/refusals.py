@@ -82,6 +82,8 @@ def _no_equilibrium(scene, n: int, depth: int, failures: list[str], from_rest: b
     ``from_rest`` (:meth:`~contactcore.newton.increments._Newton._from_rest`).
     Every cut-back's full message is kept in the error's ``details``."""
     where = f"scene {scene.name}: increment {n} of {scene.increments}"
+    if scene.increments > 1 and not (scene.law.has_history or scene.follow_path):
+        where += f" (followed once the one step to increment {scene.increments} failed)"
     cut = f"failed after {depth} cut-backs (step 1/{2 ** depth})"
     demand, material = health.friction_demand(scene, float(n)), health.material_cause(scene)
     tie = not (demand or material) and health.tie_cause(scene, float(n), "\n".join(failures), from_rest)
