@@ -43,6 +43,12 @@ fix = "xy"
 type = "traction"
 boundary = "top"
 value = [5e5, -1e6]
+[[profiles]]
+id = "G"
+type = "line"
+start = [0.0, 0.5]
+end = [1.0, 0.5]
+quantities = ["tN", "tT", "gN", "gT"]
 """
 
 
