@@ -93,11 +93,13 @@ def _closed_form(theta: float, plus: float | None = None) -> tuple[float, float]
 def test_weights_and_stabilisation_on_a_horizontal_gamma(method, degree, options, theta):
     """Γ θ up a row of cells (xfem's cut cells, efgm's background cells):
     ``w₋`` and ``γ₀`` in closed form; θ = 1 puts Γ on the cells' edges,
-    whose points belong in xfem to the cell below (wholly −), in efgm to
-    the cells on both sides (wholly − and wholly +)."""
+    whose points belong in xfem to the cell below (wholly −) and are read
+    with the cell above (wholly +) as fe reads a facet's two cells (the
+    cell below alone until grader16 F2), in efgm to the cells on both
+    sides (wholly − and wholly +)."""
     itf, tau, sides = _split(method, degree, options, _horizontal(0.5 + (theta - 1) * H))
     w, rest = _weights(tau, sides)
-    w_minus, gamma = _closed_form(theta, 1.0 if method == "efgm" and theta == 1.0 else None)
+    w_minus, gamma = _closed_form(theta, 1.0 if theta == 1.0 else None)
     assert rest <= tol.PATCH_ROUNDOFF
     assert np.max(np.abs(w - w_minus)) <= tol.PATCH_ROUNDOFF
     assert np.max(np.abs(itf.stabilisation / gamma - 1)) <= tol.PATCH_ROUNDOFF

@@ -1351,3 +1351,15 @@ EFGM_NEAR_ROW_MOVE = 1e-6
 #: side 1e-3 to 1e3 off the origin, tests/test_polygon_rule.py).  Bound
 #: above round-off's growth with the degree, well below a missed degree.
 TENSOR_RULE_EXACT = 1e-12
+
+#: grader16's scene `uni` (a block tilted off Γ, exact unilateral law):
+#: where Γ opens, s₀ = 0.3156 by an independent node-to-node multiplier
+#: solver at h = 1/160 (fe P2 0.3150, efgm P1 0.3159 at h = 0.0125).
+UNI_OPENING_REFERENCE = 0.3156
+
+#: How far xfem P1's opening point on `uni` may lie from
+#: UNI_OPENING_REFERENCE at h = 0.025 and 0.0125: measured 0.0017 and
+#: 0.0007 with Γ's traction read on both sides of a node row, 0.0094 at
+#: both when it was read on the − side alone (the opening held at the node
+#: s = 0.325 at every h; grader16 F2).  Half the old error.
+UNI_OPENING = 0.0047

@@ -14,7 +14,9 @@ Per profile and quantity, Δ = penalty − exact is measured as
 :mod:`verification.agreement` measures a method against its reference,
 the exact answer the reference: the **worst sample**, max |Δ| over the kept
 samples as a share of the exact scale's max there, and the **RMS share**,
-RMS(Δ)/RMS(scale) over the same samples; samples near singular points are
+RMS(Δ)/RMS(scale) over the same samples (different denominators: the RMS
+share exceeds the worst sample's where the scale is small over most
+samples and Δ is not; grader16 F4); samples near singular points are
 left out (:func:`verification.agreement.default_exclusion`).  The scale
 is the exact quantity itself, except on Γ: a jump component (g_N, g_T) is
 measured against the exact jump's magnitude |g| = √(g_N² + g_T²) floored
@@ -175,9 +177,12 @@ def section(scene: Scene, law_name: str, records: dict[str, dict]) -> str:
              "of the displacement scale, t_N and t_T against |t| (the exact g_N of a closed contact is zero); "
              "a profile holding one component of a vector alone, against its own |value|, a gap floored alike. "
              "Beside it, max |Δ| as a share of the component's own largest exact |value| (a gap floored as "
-             "above): what a vector's share hides of a small component. The last three columns are in the "
-             "quantity's unit.\n",
-             "| method | profile | quantity | worst sample | of its own size | at s (x, y) | RMS | max \\|Δ\\| "
+             "above): what a vector's share hides of a small component. The worst sample and the RMS share have "
+             "different denominators (the scale's largest value, its RMS), so the RMS share exceeds the worst "
+             "sample's where the scale is small over most samples and Δ is not: a worst sample below the RMS "
+             "share is no contradiction. The last three columns are in the quantity's unit.\n",
+             "| method | profile | quantity | worst sample (of max scale) | of its own size | at s (x, y) "
+             "| RMS (of RMS scale) | max \\|Δ\\| "
              "| max \\|exact\\| | max scale |",
              "|---|---|---|---|---|---|---|---|---|---|"]
     for label, rec in records.items():

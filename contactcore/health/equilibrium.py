@@ -195,8 +195,10 @@ def tie_cause(scene, k: float, failure: str, from_rest: bool = False) -> str:
     two materials moves its normal gap (Dundurs' β, J. Appl. Mech. 1969;
     a bonded edge makes the open faces overlap, Comninou, J. Appl. Mech.
     1977), so a map consistent at every point need not exist, and is
-    found less often as h or the degree resolves the edge
-    (docs/contact-enforcement.md, "The unilateral law under shear").
+    found at some h and degrees and not at others, in no order that
+    holds across scenes: finer h and degree 2 failed more often on the
+    tilted block, less often on a partly open block under shear (grader16
+    F1; docs/contact-enforcement.md, "The unilateral law under shear").
     Coulomb's ``|t_T| <= μ|t_N|`` lets the shear vanish with the pressure;
     μ must exceed the loads' shear/normal on a body held by Γ alone.  An
     increment ``from_rest`` along a straight path is the same problem at
@@ -215,7 +217,8 @@ def tie_cause(scene, k: float, failure: str, from_rest: bool = False) -> str:
     return (f"Newton found no open/closed map of the {scene.law.name} law consistent at every point, and there may be "
             "none: the law ties a closed point tangentially and frees it (t_T = 0) the moment it opens, so where "
             "Γ opens under shear the last closed points carry the tie's shear on almost no pressure and opening "
-            f"one opens or closes its neighbours (a finer h or degree 2 fails more often; {more}; {other}); use "
+            "one opens or closes its neighbours (another h or degree may find one or not, as the scene decides; "
+            f"{more}; {other}); use "
             f"type = \"coulomb\" with {mu}: |t_T| <= mu|t_N| lets the shear vanish with the pressure where Γ "
             "opens")
 

@@ -82,6 +82,8 @@ def _no_equilibrium(scene, n: int, depth: int, failures: list[str], from_rest: b
     ``from_rest`` (:meth:`~contactcore.newton.increments._Newton._from_rest`).
     Every cut-back's full message is kept in the error's ``details``."""
     where = f"scene {scene.name}: increment {n} of {scene.increments}"
+    once = scene.increments > 1 and not (scene.law.has_history or scene.law.is_linear or scene.follow_path)
+    note = f" (followed once the one step to increment {scene.increments} failed)" if once else ""
     cut = f"failed after {depth} cut-backs (step 1/{2 ** depth})"
     demand, material = health.friction_demand(scene, float(n)), health.material_cause(scene)
     tie = not (demand or material) and health.tie_cause(scene, float(n), "\n".join(failures), from_rest)
@@ -89,14 +91,14 @@ def _no_equilibrium(scene, n: int, depth: int, failures: list[str], from_rest: b
     if demand:
         error = SolverError(f"{where}: {demand}\n  ({cut}, as it must without equilibrium)")
     elif chosen:
-        error = SolverError(f"{where} {cut}: no step converged: {chosen[0]}")
+        error = SolverError(f"{where} {cut}{note}: no step converged: {chosen[0]}")
     elif material:
         error = SolverError(f"{where}: {material}\n  ({cut}); lower ν or use plane stress")
     elif tie:
-        error = SolverError(f"{where}: {tie}\n  ({cut}: {health.NOT_CONVERGED})")
+        error = SolverError(f"{where}{note}: {tie}\n  ({cut}: {health.NOT_CONVERGED})")
     else:
         free = any(_FREE_MAPS in f for f in failures)  # of every cut-back, not how many: round-off's count
-        error = SolverError(f"{where} {cut}: no step converged ({health.NOT_CONVERGED}, or a linear solve was "
+        error = SolverError(f"{where} {cut}{note}: no step converged ({health.NOT_CONVERGED}, or a linear solve was "
                             f"{SOLVE_FAILED})" + (f"; Newton's iterations stood {_FREE_MAPS}, free to turn or slide "
                                                   "until a point sticks" if free else "")
                             + f"\n  {_unsettled(scene.law, from_rest)}")

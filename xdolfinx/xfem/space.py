@@ -20,6 +20,7 @@ from contactcore import DiscretisationError
 from contactcore import tolerances as tol
 from contactcore.tolerances import MIN_CUT_FRACTION  # which nodes are enriched, with its reason
 from contactcore.bodies import Body, index_of_sign
+from contactcore.exact import is_exact
 from contactcore.geometry import Disc, LineInterface
 
 from ..contact_system import GhostExchange
@@ -177,6 +178,58 @@ class EnrichedFunctionSpace:
         out[self.enriched, 2:] = local[2 * n:].reshape(-1, 2)
         return out
 
+    def edge_neighbours(self) -> dict:
+        """``{(a, b): [cells]}``: the cells holding each edge, keyed by its
+        two corner nodes sorted (the local mesh, ghosts included)."""
+        nodes = self.cells.corner_nodes
+        k = nodes.shape[1]
+        out: dict = {}
+        for c in range(len(nodes)):
+            for i in range(k):
+                a, b = int(nodes[c, i]), int(nodes[c, (i + 1) % k])
+                out.setdefault((min(a, b), max(a, b)), []).append(c)
+        return out
+
+    def across_edge(self, c: int, points: np.ndarray, edges: dict) -> np.ndarray:
+        """(P,): for each of ``points`` (Γ's rule of cell ``c``) on an edge
+        of ``c`` whose two ends are on Γ, the cell across that edge where it
+        is whole on the + side, else −1: Γ along that edge has a body's
+        cell on each side (:func:`xdolfinx.xfem.traction.cell_traction`)."""
+        cells, cut = self.cells, self.cut
+        nodes, corners = cells.corner_nodes[c], cells.corners[c]
+        k, snap = len(nodes), cut.snap_of(c)
+        out = np.full(len(points), -1)
+        for i in range(k):
+            a, b = int(nodes[i]), int(nodes[(i + 1) % k])
+            if not (cells.node_on[a] and cells.node_on[b]):
+                continue
+            across = [d for d in edges.get((min(a, b), max(a, b)), []) if d != c]
+            if len(across) != 1 or cut.cell_side[across[0]] <= 0 or across[0] in cut.regions:
+                continue
+            p, q = corners[i], corners[(i + 1) % k]
+            length = float(np.linalg.norm(q - p))
+            rel = points - p
+            off = np.abs(rel[:, 0] * (q - p)[1] - rel[:, 1] * (q - p)[0]) / length
+            along = rel @ (q - p) / length
+            out[(off <= snap) & (along >= -snap) & (along <= length + snap)] = across[0]
+        return out
+
+    def edge_couplings(self) -> list[np.ndarray]:
+        """The blocks of each owned whole − cell holding Γ's rule along an
+        edge together with the whole + cell across it: the exact laws'
+        traction there reads both cells (:meth:`across_edge`), so the
+        matrix couples them."""
+        if not is_exact(self.scene.law):
+            return []
+        edges, out = self.edge_neighbours(), []
+        for c in self.owned_band:
+            rule = self.cut.gamma_rules.get(c)
+            if rule is None or c in self.cut.regions or self.cut.cell_side[c] > 0:
+                continue
+            for d in set(int(d) for d in self.across_edge(c, rule[0], edges) if d >= 0):
+                out.append(np.concatenate([self.cell_blocks(c), self.cell_blocks(d)]))
+        return out
+
     def create_matrix(self) -> PETSc.Mat:
         """An AIJ matrix of block size 2 over the blocks of :attr:`numbering`,
         with room for exactly the cells' couplings (every owned cell couples
@@ -186,7 +239,8 @@ class EnrichedFunctionSpace:
         both write into it with ``setValuesBlockedLocal``."""
         comm, num = self.msh.comm, self.numbering
         pattern = _cpp.la.SparsityPattern(comm, [num.index_map, num.index_map], [2, 2])
-        for blocks in self.cell_blocks(np.arange(self.cells.owned_cells)):
+        couplings = self.edge_couplings()
+        for blocks in [*self.cell_blocks(np.arange(self.cells.owned_cells)), *couplings]:
             mapped = num.order[blocks[blocks >= 0]].astype(np.int32)
             pattern.insert(mapped, mapped)
         pattern.assemble()
@@ -194,6 +248,9 @@ class EnrichedFunctionSpace:
         lgmap = PETSc.LGMap().create(num.global_blocks.astype(PETSc.IntType), bsize=2, comm=comm)
         A.setLGMap(lgmap, lgmap)
         lgmap.destroy()
+        for blocks in couplings:  # stored zeros: the assembly keeps only the entries written
+            idx = blocks.astype(PETSc.IntType)
+            A.setValuesBlockedLocal(idx, idx, np.zeros((2 * len(idx)) ** 2), addv=PETSc.InsertMode.ADD_VALUES)
         return A
 
 
