@@ -37,7 +37,12 @@ XFEM_QUAD_P2, EFGM_P2 = XFEM(degree=2, cell="quad"), EFGM(degree=2)
 #: (method, height of Γ at x = 0.5): placement 0 moved by −2, +2, +4 mm,
 #: the moved placements that Newton fails at H (docs/contact-enforcement.md,
 #: "Where Γ opens").
-UNSETTLED = [(XFEM_QUAD_P2, 0.398), (XFEM_QUAD_P2, 0.402), (XFEM_QUAD_P2, 0.404), (EFGM_P2, 0.402)]
+#: efgm P2 at 0.402 was among them until efgm's Nitsche parts took the wide
+#: cells where a point's own cell leaves a body a sliver (EFGM_SLIVER_PART,
+#: 2026-11-28): its probe now finds a consistent edge position, and Newton
+#: still refuses it (at H, 92 CPU s): a failure of the search there, not
+#: of the law, which this test does not cover.
+UNSETTLED = [(XFEM_QUAD_P2, 0.398), (XFEM_QUAD_P2, 0.402), (XFEM_QUAD_P2, 0.404)]
 #: The edge of the contact zone lies in the first third of Γ's points
 #: (Γ opens near its left end, placement 0: s ≈ 0.1 of 1.06).
 EDGE_SHARE = 1 / 3
@@ -57,7 +62,7 @@ def _probe(scene, method, monkeypatch, look):
     ``order`` sorts Γ's points along Γ."""
     found = {}
 
-    def instead(scene, system, progress=None):
+    def instead(scene, system, progress=None, guess=None):
         newton = _Newton(scene, system)
         loads, supports = scene.factors(float(scene.increments))
         b = system.external(loads, supports)

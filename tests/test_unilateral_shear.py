@@ -115,7 +115,7 @@ def _maps(scene, method, h, monkeypatch):
     from contactcore import discretisation as disc
     found = {}
 
-    def search(scene, system, progress=None):
+    def search(scene, system, progress=None, guess=None):
         found["maps"] = _search(_Newton(scene, system))
         raise SolverError("searched")
     monkeypatch.setattr(disc, "solve_increments", search)
