@@ -78,15 +78,23 @@ def cell_ranges(points: np.ndarray, origin: np.ndarray, step: np.ndarray, counts
     return np.clip(np.stack([first, last], axis=1), 0, counts - 1).astype(np.int64)
 
 
-def cell_parts(scene, vol: Rule, origin: np.ndarray, step: np.ndarray, counts: np.ndarray, points: np.ndarray,
-               gauss: int, wide: bool = True) -> tuple[np.ndarray, np.ndarray]:
-    """The areas (P, 2) of the − and + parts of the background cells
-    around each Γ point (:func:`cell_ranges`), from the volume rule
-    ``vol``, and the length (P,) of Γ in those cells (and in the domain)."""
+def cell_volumes(vol: Rule, origin: np.ndarray, step: np.ndarray, counts: np.ndarray) -> np.ndarray:
+    """The area (nx, ny, 2) of the − and + body in each background cell,
+    from the volume rule ``vol`` (each Gauss point inside its cell)."""
     counts = np.asarray(counts)
-    at = np.clip(np.floor((vol.points - origin) / step), 0, counts - 1).astype(np.int64)  # inside its cell
+    at = np.clip(np.floor((vol.points - origin) / step), 0, counts - 1).astype(np.int64)
     volume = np.zeros((*counts, 2))
     np.add.at(volume, (at[:, 0], at[:, 1], vol.bodies), vol.weights)
+    return volume
+
+
+def cell_parts(scene, volume: np.ndarray, origin: np.ndarray, step: np.ndarray, counts: np.ndarray,
+               points: np.ndarray, gauss: int, wide: bool = True) -> tuple[np.ndarray, np.ndarray]:
+    """The areas (P, 2) of the − and + parts of the background cells
+    around each Γ point (:func:`cell_ranges`), from the cells' ``volume``
+    (:func:`cell_volumes`), and the length (P,) of Γ in those cells (and
+    in the domain)."""
+    counts = np.asarray(counts)
     ranges, inverse = np.unique(cell_ranges(points, origin, step, counts, wide).reshape(len(points), 4), axis=0,
                                 return_inverse=True)
     areas, length = np.zeros((len(ranges), 2)), np.zeros(len(ranges))
@@ -103,10 +111,11 @@ def traction(scene, approx, shape_values, vol: Rule, cells: tuple, points: np.nd
     """``(S, γ₀)`` at Γ's ``points`` (module doc): ``shape_values`` the MLS
     functions there for the − and + bodies, ``cells`` the background
     cells' ``(origin, step, counts)``."""
-    own, length = cell_parts(scene, vol, *cells, points, gauss, wide=False)
+    volume = cell_volumes(vol, *cells)
+    own, length = cell_parts(scene, volume, *cells, points, gauss, wide=False)
     sliver = own.min(axis=1) < tol.EFGM_SLIVER_PART * own.sum(axis=1)
     if np.any(sliver):
-        own[sliver], length[sliver] = cell_parts(scene, vol, *cells, points[sliver], gauss)
+        own[sliver], length[sliver] = cell_parts(scene, volume, *cells, points[sliver], gauss)
     moduli = np.array([scene.materials[b].E for b in BODIES])
     weights, gamma = nitsche_weights(own, moduli, length)
     m = len(points)
