@@ -288,10 +288,12 @@ class Case:
 #: functions and matrices (contactcore.discretisation.Reuse).
 _REUSE = Reuse()
 
-#: The parameters a built system does not depend on (the law's parameters,
-#: not its enforcement, and the load path: contactcore.discretisation.Reuse's
-#: key leaves them out): two cases that differ only in these share one.
-SYSTEM_FREE = ("kN", "kT", "mu", "stabilisation", "increments")
+#: The parameters a built system does not depend on (every registered law's
+#: parameters, not its enforcement, and the load path:
+#: contactcore.discretisation.Reuse's key leaves them out): two cases that
+#: differ only in these share one.
+SYSTEM_FREE = ("increments", *sorted({key for kind in (*LAWS.values(), *EXACT_LAWS.values())
+                                      for key in kind.parameters}))
 
 
 def system_of(method: str, point) -> tuple:
