@@ -275,7 +275,7 @@ def check_solvable(scene, discretisation: Discretisation, h: float | None = None
     _refused(scene, discretisation, h, paper)
 
 
-def _coarse_guess(scene, discretisation: Discretisation, resolution: Resolution):
+def _coarse_guess(scene, discretisation: Discretisation, resolution: Resolution, ranks: Collective):
     """An exact, nonlinear law's first status map from the same scene and
     method at twice the spacing (:mod:`contactcore.newton.guess`), or None:
     not for a penalty or linear law, a given grid or node set (no ``h`` to
@@ -297,7 +297,7 @@ def _coarse_guess(scene, discretisation: Discretisation, resolution: Resolution)
             raise
         return built.system
 
-    return coarse_guess(scene, build)
+    return coarse_guess(scene, build, ranks)
 
 
 @dimensionless
@@ -323,7 +323,7 @@ def solve(scene, discretisation: Discretisation, h: float | None = None, *, pape
     try:
         exact.check(scene.law, built.system.interface, discretisation.name)
         with timings.measure("solve"):
-            guess = _coarse_guess(scene, discretisation, resolution)
+            guess = _coarse_guess(scene, discretisation, resolution, built.system.collective)
             x, path, report = solve_increments(scene, built.system, progress, guess)
     finally:
         if reuse is None or not reuse.owns(built):

@@ -109,3 +109,26 @@ def test_a_short_coarse_search_leaves_the_fine_run_as_it_was(monkeypatch):
     for a, b in zip(guessed.interface.steps, searched.interface.steps, strict=True):
         assert np.array_equal(a.status, b.status)
         assert np.array_equal(a.traction, b.traction) and np.array_equal(a.jump, b.jump)
+
+
+class _OtherRankFailed:
+    """A communicator's reductions as seen from a rank whose coarse build
+    succeeded while another rank's failed."""
+
+    def all(self, flag):
+        return False
+
+
+def test_a_coarse_build_failing_on_another_rank_gives_no_guess_here():
+    """Under mpirun a coarse build that fails on one rank means no guess
+    on every rank: this rank's system is closed and it does not start the
+    coarse Newton, whose reductions the failed rank would never join."""
+    closed = []
+
+    class _System:
+        def close(self):
+            closed.append(True)
+
+    scene = _exact(load_scene("C-coulomb"))
+    assert newton_guess.coarse_guess(scene, _System, _OtherRankFailed()) is None
+    assert closed == [True]

@@ -38,6 +38,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.spatial import cKDTree
 
+from ..collective import SERIAL, Collective
 from ..errors import ContactError
 from .increments import _Newton
 
@@ -85,16 +86,22 @@ class StatusGuess:
         return self.shape[nearest] * np.asarray(gamma, float)[:, None, None], self.status[nearest].copy()
 
 
-def coarse_guess(scene, build) -> StatusGuess | None:
+def coarse_guess(scene, build, ranks: Collective = SERIAL) -> StatusGuess | None:
     """The converged map of ``scene``'s first step on the system
     ``build()`` makes (module doc), or None (``build`` failing in any way
     means no guess, never a failed run): its first increment, or for a
     law without history on a path not followed the step to its last
     increment, which :func:`~contactcore.newton.solve_increments` takes
-    first."""
+    first.  ``ranks``: the fine system's; a ``build`` that fails on any
+    rank means no guess on every rank, so none waits in the coarse
+    Newton's reductions for a rank that left it."""
     try:
         system = build()
     except Exception:  # noqa: BLE001 - a coarser mesh or system the method cannot make: no guess, the search as before
+        system = None
+    if not ranks.all(system is not None):
+        if system is not None:
+            system.close()
         return None
     try:
         newton = _Newton(scene, system)
