@@ -62,7 +62,7 @@ from .laws import DIMENSIONLESS, DISPLACEMENT, LENGTH, STIFFNESS, STRESS, law_co
 from .profiles import ProfileData
 from .result import check_points, gamma_reach
 from .scene import DISPLACEMENT_QUANTITIES, STRESS_QUANTITIES, LineProfile, Scene, Support, acts_on, check_resolution
-from .scene.loads import FORCE_DENSITY, MAGNITUDES, MOMENT, POINT, STRESS as LOAD_STRESS, load_contract
+from .scene.loads import FORCE_DENSITY, MAGNITUDES, MOMENT, POINT, STRESS as LOAD_STRESS, load_contract, scaled_load
 
 
 def _scaled(value: float, unit: float, path: str, least: float = 0.0) -> float:
@@ -312,14 +312,11 @@ class Scales:
 def _at_peak(item):
     """A load or support at the largest |factor| of its path (1: no path,
     the ramp to the full value), its path left out: a support's value, a
-    load's parameters of a magnitude (:data:`contactcore.scene.loads.MAGNITUDES`)."""
+    load's parameters of a magnitude (:func:`contactcore.scene.loads.scaled_load`)."""
     f = max((abs(v) for _, v in item.path), default=1.0)
-    names = ["value"] if isinstance(item, Support) else \
-        [p for p, d in load_contract(type(item)).items() if d in MAGNITUDES]
-
-    def at(value):
-        return tuple(v * f for v in value) if isinstance(value, tuple) else value * f
-    return replace(item, **{p: at(getattr(item, p)) for p in names}, path=())
+    if isinstance(item, Support):
+        return replace(item, value=tuple(v * f for v in item.value), path=())
+    return replace(scaled_load(item, f), path=())
 
 
 @dataclass(frozen=True)

@@ -275,7 +275,11 @@ def test_the_ufl_loads_are_the_core_formula(hydrostatic):
         assert np.abs(ours - theirs).max() <= SAME_SUMS * scale, type(load).__name__
 
 
-def test_a_load_that_vanishes_has_no_form_and_no_size():
-    """Zero in every parameter of a magnitude, whatever its points."""
+def test_a_load_vanishes_and_scales_by_its_magnitudes_not_its_points():
+    """Zero in every parameter of a magnitude, whatever its points, is no
+    load; a factor of the load path multiplies those parameters only."""
     assert load_module.vanishes(Hydrostatic("top", 0.0, (0.0, -0.0), (3.0, 4.0)))
     assert not load_module.vanishes(Hydrostatic("top", 0.0, (0.0, 1.0), (3.0, 4.0)))
+    assert load_module.scaled_load(Hydrostatic("top", 1.5, (2.0, -1.0), (3.0, 4.0)), -2.0) == \
+        Hydrostatic("top", -3.0, (-4.0, 2.0), (3.0, 4.0))
+    assert load_module.scaled_load(Torque("minus", 3.0), 0.5) == Torque("minus", 1.5)

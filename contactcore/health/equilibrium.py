@@ -12,11 +12,14 @@ only pushes.  The unilateral law's tie under shear may admit no consistent
 open/closed map (Dundurs, J. Appl. Mech. 1969; Comninou, J. Appl. Mech.
 1977): :func:`tie_cause` names it from every cut-back's failure.
 
-The loads are read on a rectangle cut by a line: the tractions and
-pressures on each body's part of each loaded edge (:func:`_part`, φ
-linear along the edge), their resultant (:func:`_boundary_resultant`) and
-their work in the body's rigid modes (:func:`_load_work`; a uniform load's
-work in a linear motion is its resultant's at the part's midpoint).
+The loads are read on a rectangle cut by a line: the edge loads (as
+each declares, :func:`contactcore.scene.acts_on`; tractions, pressures)
+on each body's part of each loaded edge (:func:`_part`, φ linear along
+the edge), by their formula (:func:`contactcore.scene.edge_traction`),
+their resultant (:func:`_boundary_resultant`) and their work in the
+body's rigid modes (:func:`_load_work`; a uniform load's work in a linear
+motion is its resultant's at the part's midpoint, a varying one's is
+summed over three Gauss points).
 """
 from __future__ import annotations
 

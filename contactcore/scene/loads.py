@@ -280,6 +280,16 @@ def vanishes(load) -> bool:
     return all(v == 0.0 for p, d in dims.items() if d in MAGNITUDES for v in np.ravel(getattr(load, p)))
 
 
+def scaled_load(load, factor: float):
+    """``load`` with each parameter of a magnitude times ``factor`` (its
+    points and dimensionless parameters as they are): the load at that
+    factor of its path."""
+    def times(value):
+        return tuple(v * factor for v in value) if isinstance(value, tuple) else value * factor
+    return dataclasses.replace(load, **{p: times(getattr(load, p))
+                                        for p, d in load_contract(type(load)).items() if d in MAGNITUDES})
+
+
 def _rows(vector, x: np.ndarray) -> np.ndarray:
     """(P, 2): a formula's vector at the P points of ``x``, from a pair of
     components (numbers or (P,) arrays) or an array with its components
