@@ -15,11 +15,14 @@ load as a stress (or ``U = L`` with no load), and maps the answer back.  The
 rest of the scene follows from the dimensions of its fields (SI units as in
 ``contactcore.scene``, thickness 1), with the stress unit ``Σ = S U/L``:
 
-* tractions, pressures (Pa):                   ``t' = t/Σ``;
+* a load's parameters by the dimension its class declares
+  (:func:`contactcore.scene.loads.load_contract`, :meth:`Scales.load_units`),
+  never by its type: tractions, pressures (Pa) ``t' = t/Σ``; body forces
+  (N/m³) and a pressure's gradient (Pa/m) ``b' = b L/Σ``; torques (N·m
+  per unit thickness, i.e. N) ``T' = T/(Σ L²)``, since ``b = (T/J) r``
+  with ``J = πR⁴/2``; points ``(x − o)/L``.  A load that is no registered
+  load, or declares too little, is refused here, naming its type;
 * penalty springs (Pa/m):                       ``k' = k L/S``;
-* body forces (N/m³):                           ``b' = b L/Σ``;
-* torques (N·m per unit thickness, i.e. N):    ``T' = T/(Σ L²)``, since
-  ``b = (T/J) r`` with ``J = πR⁴/2``;
 * prescribed displacements, the slip history of a law (m): ``/U``;
 * h (m): ``/L``; points (pins, profile ends, Γ, nodes): ``(x − o)/L``;
   ν, μ and load paths are dimensionless already;
@@ -58,8 +61,8 @@ from .interface_path import InterfacePath
 from .laws import DIMENSIONLESS, DISPLACEMENT, LENGTH, STIFFNESS, STRESS, law_contract
 from .profiles import ProfileData
 from .result import check_points, gamma_reach
-from .scene import (DISPLACEMENT_QUANTITIES, STRESS_QUANTITIES, BodyForce, LineProfile, Pressure, Scene, Traction,
-                    check_resolution)
+from .scene import DISPLACEMENT_QUANTITIES, STRESS_QUANTITIES, LineProfile, Scene, Support, acts_on, check_resolution
+from .scene.loads import FORCE_DENSITY, MAGNITUDES, MOMENT, POINT, STRESS as LOAD_STRESS, load_contract, scaled_load
 
 
 def _scaled(value: float, unit: float, path: str, least: float = 0.0) -> float:
@@ -76,21 +79,32 @@ def _scaled(value: float, unit: float, path: str, least: float = 0.0) -> float:
 
 
 def _load_stress(scene: Scene) -> float:
-    """``τ``: the largest load as a stress (|t|, p, |b| L, |T|/L²; Pa).
+    """``τ``: the largest load as a stress (Pa): of each parameter of a
+    magnitude a load declares, its largest component as a stress (|t|, p,
+    |b| L or a pressure's |gradient| L, |T|/L²).
 
     Load paths are left out: ``U`` only has to keep the unknowns within a
     few orders of one, since every tolerance is relative."""
     L = Scales.extent(scene.domain)[1]
     sizes = [0.0]
-    for load in scene.loads:
-        if isinstance(load, (Traction, BodyForce)):
-            size = max(abs(v) for v in load.value) * (L if isinstance(load, BodyForce) else 1.0)
-        elif isinstance(load, Pressure):
-            size = abs(load.value)
-        else:
-            size = abs(load.torque) / L / L
-        sizes.append(size)
+    for i, load in enumerate(scene.loads):
+        for name, dim in _declared(load, i).items():
+            if dim not in MAGNITUDES:
+                continue
+            size = max(abs(v) for v in np.ravel(getattr(load, name)))
+            sizes.append(size * L if dim == FORCE_DENSITY else size / L / L if dim == MOMENT else size)
     return max(sizes)
+
+
+def _declared(load, i: int) -> dict[str, str]:
+    """The declared dimension of each parameter of ``load`` (the ``i``-th of
+    its scene), or a SceneError at ``loads[i]`` naming its type: no
+    registered load, or one that declares too little."""
+    try:
+        acts_on(load)
+        return load_contract(type(load))
+    except ContactError as exc:
+        raise SceneError(f"loads[{i}]", str(exc)) from None
 
 
 @dataclass(frozen=True)
@@ -171,15 +185,34 @@ class Scales:
         return LevelSetInterface(lambda p: np.asarray(itf.phi_fn(self.to_user(p)), float) / self.length,
                                  lambda p: itf.grad_fn(self.to_user(p)))
 
+    def load_units(self, dimension: str) -> tuple[float, ...]:
+        """What a load's parameter of ``dimension`` (:data:`contactcore.scene.loads.LOAD_DIMENSIONS`,
+        not a point) is divided by, in turn, in the dimensionless scene
+        (module doc): Σ for a stress, Σ/L for a force per volume, Σ then L²
+        for a moment, nothing for a dimensionless one."""
+        L, S = self.length, self.stress
+        return {LOAD_STRESS: (S,), FORCE_DENSITY: (S / L,), MOMENT: (S, L * L)}.get(dimension, ())
+
     def _load(self, load, i: int):
-        L, S, path = self.length, self.stress, f"loads[{i}]"  # S: the stress unit Σ
-        if isinstance(load, Traction):
-            return replace(load, value=tuple(_scaled(v, S, f"{path}.value") for v in load.value))
-        if isinstance(load, Pressure):
-            return replace(load, value=_scaled(load.value, S, f"{path}.value"))
-        if isinstance(load, BodyForce):
-            return replace(load, value=tuple(_scaled(v, S / L, f"{path}.value") for v in load.value))
-        return replace(load, torque=_scaled(_scaled(load.torque, S, f"{path}.torque"), L * L, f"{path}.torque"))
+        """The load with each parameter made dimensionless by its declared
+        dimension (:func:`_declared`)."""
+        path = f"loads[{i}]"
+        changes = {}
+        for name, dim in _declared(load, i).items():
+            value, where = getattr(load, name), f"{path}.{name}"
+            if dim == POINT:
+                changes[name] = self._point(value, where)
+                continue
+            units = self.load_units(dim)
+            if not units:
+                continue
+
+            def scaled(v):
+                for unit in units:
+                    v = _scaled(v, unit, where)
+                return v
+            changes[name] = tuple(scaled(v) for v in value) if isinstance(value, tuple) else scaled(value)
+        return replace(load, **changes)
 
     def profile(self, prof, path: str = "profile"):
         """A profile of the dimensionless scene."""
@@ -278,12 +311,12 @@ class Scales:
 
 def _at_peak(item):
     """A load or support at the largest |factor| of its path (1: no path,
-    the ramp to the full value), its path left out."""
+    the ramp to the full value), its path left out: a support's value, a
+    load's parameters of a magnitude (:func:`contactcore.scene.loads.scaled_load`)."""
     f = max((abs(v) for _, v in item.path), default=1.0)
-    if hasattr(item, "torque"):
-        return replace(item, torque=item.torque * f, path=())
-    value = tuple(v * f for v in item.value) if isinstance(item.value, tuple) else item.value * f
-    return replace(item, value=value, path=())
+    if isinstance(item, Support):
+        return replace(item, value=tuple(v * f for v in item.value), path=())
+    return replace(scaled_load(item, f), path=())
 
 
 @dataclass(frozen=True)

@@ -1363,3 +1363,10 @@ UNI_OPENING_REFERENCE = 0.3156
 #: both when it was read on the − side alone (the opening held at the node
 #: s = 0.325 at every h; grader16 F2).  Half the old error.
 UNI_OPENING = 0.0047
+
+#: A pressure linear in x on a square block (tests/test_load_contract.py,
+#: the test-only registered load): σ_yy = −p(x) linear and u quadratic,
+#: reproduced to round-off by fe and xfem at degree 2; efgm's quadratic
+#: MLS to its quadrature (measured 3.1e-5 on t_N, 9.9e-5 and 2.5e-4 on σ_yy
+#: at 0.9 L across and crossing Γ; relative to p at its smaller end).
+LINEAR_PRESSURE = {"fe": 1e-10, "xfem": 1e-10, "efgm": 1e-3}

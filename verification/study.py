@@ -50,6 +50,7 @@ from contactcore.enforcement import ENFORCEMENTS, make_law
 from contactcore.exact import BONDED, EXACT_LAWS, checked_stabilisation, is_exact
 from contactcore.laws import LAWS
 from contactcore.scene import Units, check_resolution
+from contactcore.scene.loads import scaled_load
 
 from . import files, methods, pool
 from .against_exact import exact_law, penalty_counterpart
@@ -147,12 +148,9 @@ def _angle(scene, value: float):
 
 
 def _scaled(load, value: float):
-    """``load`` times ``value``: its traction, pressure, body force or torque."""
-    if hasattr(load, "torque"):
-        return dataclasses.replace(load, torque=value * load.torque)
-    if isinstance(load.value, tuple):
-        return dataclasses.replace(load, value=tuple(value * v for v in load.value))
-    return dataclasses.replace(load, value=value * load.value)
+    """``load`` times ``value``: each parameter of a magnitude it declares
+    (:func:`contactcore.scene.loads.scaled_load`; a point stays put)."""
+    return scaled_load(load, value)
 
 
 def _load(scene, value: float):

@@ -12,11 +12,14 @@ only pushes.  The unilateral law's tie under shear may admit no consistent
 open/closed map (Dundurs, J. Appl. Mech. 1969; Comninou, J. Appl. Mech.
 1977): :func:`tie_cause` names it from every cut-back's failure.
 
-The loads are read on a rectangle cut by a line: the tractions and
-pressures on each body's part of each loaded edge (:func:`_part`, φ
-linear along the edge), their resultant (:func:`_boundary_resultant`) and
-their work in the body's rigid modes (:func:`_load_work`; a uniform load's
-work in a linear motion is its resultant's at the part's midpoint).
+The loads are read on a rectangle cut by a line: the edge loads (as
+each declares, :func:`contactcore.scene.acts_on`; tractions, pressures)
+on each body's part of each loaded edge (:func:`_part`, φ linear along
+the edge), by their formula (:func:`contactcore.scene.edge_traction`),
+their resultant (:func:`_boundary_resultant`) and their work in the
+body's rigid modes (:func:`_load_work`; a uniform load's work in a linear
+motion is its resultant's at the part's midpoint, a varying one's is
+summed over three Gauss points).
 """
 from __future__ import annotations
 
@@ -26,6 +29,7 @@ import numpy as np
 
 from .. import tolerances as tol
 from ..geometry import LineInterface, Rectangle, tangent_of
+from ..scene.loads import BODY, EDGE, acts_on, edge_traction
 from .residual import NOT_CONVERGED
 from .restraint import _BODY_NAMES, _free_modes, _mode_matrix, _restraint
 
@@ -116,7 +120,7 @@ def _demands(scene, k: float):
     n = np.asarray(scene.interface.normal, float)
     supports = _restraint(scene, np.zeros((0, 2)), np.zeros(0))[0]
     for b, name in enumerate(_BODY_NAMES):
-        if any(getattr(ld, "body", None) == ("minus", "plus")[b] for ld in scene.loads):
+        if any(acts_on(ld) == BODY and ld.body == ("minus", "plus")[b] for ld in scene.loads):
             continue
         free = _free_modes(supports[3 * b:3 * b + 3, 3 * b:3 * b + 3])
         if not free.shape[1]:
@@ -224,13 +228,18 @@ def tie_cause(scene, k: float, failure: str, from_rest: bool = False) -> str:
 
 
 def _loaded_parts(scene, body: int, factors):
-    """Each traction or pressure on an edge of the rectangle, on ``body``'s
-    part of that edge (:func:`_part`): ``(t, length, midpoint)``, ``t`` the
-    traction vector at its factor of ``factors``."""
-    from ..scene import Pressure, Traction
+    """Each edge load on an edge of the rectangle, on ``body``'s part of
+    that edge (:func:`_part`): ``(t, length, point)``, ``t`` the traction
+    vector at ``point`` by the load's formula
+    (:func:`contactcore.scene.edge_traction`) at its factor of
+    ``factors``: the part's midpoint and its whole length where the
+    traction is the same at the part's three Gauss points (a uniform load,
+    whose work in a rigid motion is its resultant's there), else those
+    three points with their shares of the length (exact for a traction
+    quadratic along the edge: resultant and moment)."""
     c = scene.domain.corners
     for load, f in zip(scene.loads, factors):
-        if not isinstance(load, (Traction, Pressure)):
+        if acts_on(load) != EDGE:
             continue
         i, j = {"bottom": (0, 1), "right": (1, 2), "top": (2, 3), "left": (3, 0)}[load.boundary]
         lo, hi = _part(*scene.interface.phi(c[[i, j]]), body)
@@ -239,8 +248,18 @@ def _loaded_parts(scene, body: int, factors):
         edge = c[j] - c[i]
         size = math.hypot(*edge)  # not np.linalg.norm: BLAS's dot, whose rounding follows the CPU
         out = np.array([edge[1], -edge[0]]) / size  # corners counter-clockwise
-        t = np.asarray(load.value, float) if isinstance(load, Traction) else -load.value * out
-        yield f * t, (hi - lo) * size, c[i] + 0.5 * (lo + hi) * edge
+        at = c[i] + np.outer(lo + _GAUSS3 * (hi - lo), edge)
+        t = edge_traction(scene, load, at[:, 0], at[:, 1], np.tile(out, (3, 1)))
+        if np.all(t == t[1]):
+            yield f * t[1], (hi - lo) * size, c[i] + 0.5 * (lo + hi) * edge
+            continue
+        for tk, wk, xk in zip(t, _GAUSS3_WEIGHTS, at):
+            yield f * tk, wk * (hi - lo) * size, xk
+
+
+#: Gauss-Legendre's three points on [0, 1] and their weights.
+_GAUSS3 = np.array([0.5 - 0.5 * math.sqrt(0.6), 0.5, 0.5 + 0.5 * math.sqrt(0.6)])
+_GAUSS3_WEIGHTS = (5.0 / 18.0, 8.0 / 18.0, 5.0 / 18.0)
 
 
 def _load_work(scene, body: int, centre, L, factors) -> np.ndarray:

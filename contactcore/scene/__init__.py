@@ -12,8 +12,9 @@ One idea a module:
   quantities a scene names (:data:`BODIES`, :data:`QUANTITIES`, ...);
 - :mod:`~contactcore.scene.materials`, :mod:`~contactcore.scene.units`:
   a body's :class:`Material`, the names of the scene's :class:`Units`;
-- :mod:`~contactcore.scene.loads`: supports, pins and loads, and
-  :func:`body_force`, the one formula of a body load;
+- :mod:`~contactcore.scene.loads`: supports, pins and loads, the load
+  contract (:data:`LOADS`, :func:`acts_on`) and each load's one formula
+  (:func:`edge_traction`, :func:`body_force`);
 - :mod:`~contactcore.scene.profiles`: what a scene samples
   (:class:`LineProfile`, :class:`InterfaceProfile`);
 - :mod:`~contactcore.scene.model`: the :class:`Scene` itself (its load
@@ -48,7 +49,8 @@ from ..errors import DiscretisationError, SceneError
 from ..geometry import CircleInterface, Disc, Domain, Interface, LevelSetInterface, LineInterface, Rectangle
 from ..laws import InterfaceLaw
 from .check_profiles import RESERVED_PROFILE_IDS
-from .loads import BodyForce, Load, Pin, Pressure, Support, Torque, Traction, body_force
+from .loads import (BODY, EDGE, LOADS, BodyForce, Load, Pin, Pressure, Support, Torque, Traction, acts_on, body_force,
+                    edge_traction)
 from .materials import Material
 from .model import Scene
 from .profiles import InterfaceProfile, LineProfile, Profile
@@ -65,7 +67,8 @@ __all__ = [
     # materials, units
     "MAX_UNIT_NAME", "Material", "Units",
     # loads
-    "BodyForce", "Load", "Pin", "Pressure", "Support", "Torque", "Traction", "body_force",
+    "BODY", "BodyForce", "EDGE", "LOADS", "Load", "Pin", "Pressure", "Support", "Torque", "Traction", "acts_on",
+    "body_force", "edge_traction",
     # profiles
     "InterfaceProfile", "LineProfile", "Profile",
     # model

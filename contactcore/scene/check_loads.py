@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from ..errors import SceneError
 from ..geometry import CircleInterface
-from .loads import Pressure, Torque, Traction
+from .loads import EDGE, Torque, acts_on, load_contract
 from .values import check_body, check_point_inside, finite
 from .vocabulary import COMPONENTS
 
@@ -34,26 +34,27 @@ def check_pins(scene: "Scene") -> None:
 
 
 def check_loads(scene: "Scene") -> None:
-    """Each load on a boundary of the domain (a traction, a pressure) or a
-    body (a body force, a torque: on the disc of a circular Γ), of finite
-    values, with a valid path."""
+    """Each load on a boundary of the domain or in a body, as its class
+    declares (:func:`~contactcore.scene.loads.acts_on`; a torque: on the
+    disc of a circular Γ), every declared parameter finite, with a valid
+    path."""
     for i, load in enumerate(scene.loads):
         path = f"loads[{i}]"
         _check_path(scene, load.path, f"{path}.path")
-        if isinstance(load, (Traction, Pressure)):
+        if acts_on(load) == EDGE:
             _check_boundary(scene, load.boundary, f"{path}.boundary")
         else:
             check_body(load.body, f"{path}.body")
-        if isinstance(load, Pressure):
-            finite(load.value, f"{path}.value")
-        elif isinstance(load, Torque):
-            finite(load.torque, f"{path}.torque")
-            if not isinstance(scene.interface, CircleInterface) or load.body != "minus":
-                raise SceneError(f"{path}.body", "a torque acts on the disc inside a circular interface: "
-                                 "it needs a circle interface and body = 'minus'")
-        else:
-            for k, v in zip("xy", load.value):
-                finite(v, f"{path}.value.{k}")
+        for name in load_contract(type(load)):
+            value = getattr(load, name)
+            if isinstance(value, tuple):
+                for k, v in zip("xy", value):
+                    finite(v, f"{path}.{name}.{k}")
+            else:
+                finite(value, f"{path}.{name}")
+        if isinstance(load, Torque) and (not isinstance(scene.interface, CircleInterface) or load.body != "minus"):
+            raise SceneError(f"{path}.body", "a torque acts on the disc inside a circular interface: "
+                             "it needs a circle interface and body = 'minus'")
 
 
 def _check_boundary(scene: "Scene", name: str, path: str) -> None:

@@ -16,7 +16,7 @@ from .check_geometry import check_domain, check_interface
 from .check_loads import check_loads, check_pins, check_supports
 from .check_materials import check_materials
 from .check_profiles import check_profiles
-from .loads import BodyForce, Pin, Pressure, Support, Torque, Traction
+from .loads import LOADS, Pin, Support
 from .materials import Material
 from .profiles import InterfaceProfile, LineProfile
 from .resolution import check_resolution
@@ -69,7 +69,7 @@ _KINDS = {"domain": ((Rectangle, Disc), "a Rectangle or a Disc"),
           "interface": ((LineInterface, CircleInterface, LevelSetInterface),
                         "a LineInterface, a CircleInterface or a LevelSetInterface")}
 _SEQUENCES = {"supports": ((Support,), "Support"), "pins": ((Pin,), "Pin"),
-              "loads": ((Traction, Pressure, BodyForce, Torque), "Traction, Pressure, BodyForce or Torque"),
+              "loads": (None, None),  # the registered loads (contactcore.scene.loads.LOADS) when checked
               "profiles": ((LineProfile, InterfaceProfile), "LineProfile or InterfaceProfile")}
 
 
@@ -92,6 +92,9 @@ def _check_kinds(scene: "Scene") -> None:
         raise SceneError("interface.law", f"must be an interface law, as contactcore.make_law({{\"type\": ...}}) "
                                           f"builds (got {law!r})")
     for name, (kinds, what) in _SEQUENCES.items():
+        if name == "loads":
+            kinds = tuple(LOADS.values())
+            what = ", ".join(c.__qualname__ for c in kinds[:-1]) + f" or {kinds[-1].__qualname__}"
         items = getattr(scene, name)
         if not isinstance(items, (tuple, list)):
             raise SceneError(name, f"must be a tuple of {what} (got {items!r})")

@@ -22,7 +22,7 @@ from contactcore.cutcell import edge_crossings, gauss01
 from contactcore.geometry import tangent_of
 from contactcore.interface_path import piece_centres
 from contactcore.system import InterfaceOperator
-from contactcore.scene import BodyForce, Torque, Traction, body_force
+from contactcore.scene import BODY, EDGE, acts_on, body_force, edge_traction
 
 from .space import EnrichedFunctionSpace
 
@@ -140,10 +140,13 @@ def band_loads(space: EnrichedFunctionSpace, load):
     snapped node (≤ XFEM_SNAP of a cell) loaded the other side's
     enrichment, a function that is zero in the cell: a bonded layered bar
     pulled along Γ had σ off by 0.8 and Γ's traction by 4.8 times Γ's
-    distance from the node line over h."""
-    if isinstance(load, (BodyForce, Torque)):
+    distance from the node line over h.  Dispatched on where the load
+    acts (:func:`contactcore.scene.acts_on`, which refuses an unknown one
+    by name)."""
+    kind = acts_on(load)
+    if kind == BODY:
         yield from _band_body_loads(space, load)
-    else:
+    elif kind == EDGE:
         yield from _band_edge_loads(space, load)
 
 
@@ -179,19 +182,20 @@ def _band_edge_loads(space: EnrichedFunctionSpace, load):
                 side = ((1 if scene.interface.phi([(pts[0] + pts[-1]) / 2])[0] >= 0 else -1) if cut
                         else int(space.cut.cell_side[c]))
                 N, _, shift = enriched_basis(space, c, pts, side)
-                f += _vector_load(N, shift, w[:, None] * _edge_traction(load, a, b, corners[k].mean(axis=0)))
+                t = _edge_traction(scene, load, a, b, corners[k].mean(axis=0), pts)
+                f += _vector_load(N, shift, w[:, None] * t)
         yield space.cell_blocks(c), f
 
 
-def _edge_traction(load, a: np.ndarray, b: np.ndarray, inside: np.ndarray) -> np.ndarray:
-    """The traction (2,) of a boundary ``load`` on the cell edge ``a``–``b``
-    (``inside`` a point of the cell): its value, or for a pressure ``−p n``
-    with ``n`` the edge's own outward normal (a disc's rim is the mesh's
-    chords: uniform pressure then gives σ = −p I to round-off)."""
-    if isinstance(load, Traction):
-        return np.asarray(load.value, float)
+def _edge_traction(scene, load, a: np.ndarray, b: np.ndarray, inside: np.ndarray, pts: np.ndarray) -> np.ndarray:
+    """The traction (P, 2) of a boundary ``load`` at the points ``pts`` of
+    the cell edge ``a``–``b`` (``inside`` a point of the cell), by the
+    load's formula (:func:`contactcore.scene.edge_traction`) with ``n`` the
+    edge's own outward normal (a disc's rim is the mesh's chords: uniform
+    pressure then gives σ = −p I to round-off)."""
     n = np.array([b[1] - a[1], a[0] - b[0]]) / np.linalg.norm(b - a)
-    return -load.value * (n if n @ (a - inside) > 0 else -n)
+    n = n if n @ (a - inside) > 0 else -n
+    return edge_traction(scene, load, pts[:, 0], pts[:, 1], np.tile(n, (len(pts), 1)))
 
 
 def _vector_load(N: np.ndarray, shift: np.ndarray, wt: np.ndarray) -> np.ndarray:
