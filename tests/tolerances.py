@@ -1363,3 +1363,9 @@ UNI_OPENING_REFERENCE = 0.3156
 #: both when it was read on the − side alone (the opening held at the node
 #: s = 0.325 at every h; grader16 F2).  Half the old error.
 UNI_OPENING = 0.0047
+
+#: Runs' differences within reach of a singular point for
+#: tests/test_estimate_warnings.py, against 1 beyond: as large (spread:
+#: below contactcore.tolerances.REACH_CONCENTRATION = 3) and ten times
+#: (concentrated: above it).
+REACH_SPREAD, REACH_CONCENTRATED = 1.0, 10.0
