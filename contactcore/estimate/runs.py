@@ -103,7 +103,8 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     switching = None if scene.law.is_linear else switches([r.interface for r in results])
     profiles = profile_estimates(levels, results[-1].degree, results[-1].method, coarse, scene, exclude, switching,
                                  h=hs[-2])
-    found = unsettled(scene, levels, results[-2].discretisation, results[-1].method, results[-1].degree, exclude)
+    found = unsettled(scene, levels, results[-2].discretisation, results[-1].method, results[-1].degree, exclude,
+                      profiles)
     layer = curved_layer(scene, levels, results[-1].method, results[-1].degree, hs[-2], exclude)
     rough = cell_scale_orders(scene, levels, profiles, exclude, hs[-2])
     residue = residues(scene, levels, profiles, exclude)
