@@ -88,3 +88,25 @@ def test_efgm_p1s_gaps_and_tractions_from_two_runs_are_named_as_likely_too_large
     line, = est.fast_gamma_warning(names, "efgm", 1)
     assert line.startswith("G:gN, G:tT: ") and "too large" in line
     assert not est.fast_gamma_warning([], "efgm", 1)
+
+
+def test_a_bulk_displacement_at_an_exact_gammas_end_keeps_the_reach_cause_however_the_runs_differ():
+    """est.unsettled on the tilted block (Γ at y = 0.47 under an exact
+    law, ends on free sides: est.exact_interface_ends), fe at h = 0.1,
+    u_x on a line 0.05 above Γ whose runs differ as much near Γ's ends
+    as beyond: taken at the lower end of a widened range
+    (est.lower_end), its reach cause stands (that end's error may
+    pollute everywhere); at an order range pollution did not widen, the
+    runs' spread silences it."""
+    scene = load_scene("tests/scenes/tilt_bonded.toml")
+    x = np.linspace(0.15, 0.85, 29)
+    close = np.minimum(x, 1.0 - x) < 0.2
+    def run(values):
+        return [ProfileData("L", "arclength", {"s": x - 0.15, "x": x, "y": np.full_like(x, 0.52), "ux": values})]
+    runs = [run(1.0 + x), run(1.0 + x + np.where(close, tol.REACH_SPREAD, 1.0))]
+    levels = [r[0].columns["ux"] for r in runs]
+    widened = {"L": {"ux": est.richardson(levels, theory=(1.42, 3), low=True)}}
+    assert est.lower_end("ux", widened["L"]["ux"].theory, True)
+    assert est.unsettled(scene, runs, {"h": 0.1}, "fe", 2, exclude=0.1, estimates=widened)["reach"]
+    plain = {"L": {"ux": est.richardson(levels, theory=(3, 3))}}
+    assert not est.unsettled(scene, runs, {"h": 0.1}, "fe", 2, exclude=0.1, estimates=plain)["reach"]
