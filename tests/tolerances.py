@@ -1370,3 +1370,9 @@ UNI_OPENING = 0.0047
 #: MLS to its quadrature (measured 3.1e-5 on t_N, 9.9e-5 and 2.5e-4 on σ_yy
 #: at 0.9 L across and crossing Γ; relative to p at its smaller end).
 LINEAR_PRESSURE = {"fe": 1e-10, "xfem": 1e-10, "efgm": 1e-3}
+
+#: Runs' differences within reach of a singular point for
+#: tests/test_estimate_warnings.py, against 1 beyond: as large (spread:
+#: below contactcore.tolerances.REACH_CONCENTRATION = 3) and ten times
+#: (concentrated: above it).
+REACH_SPREAD, REACH_CONCENTRATED = 1.0, 10.0

@@ -184,9 +184,11 @@ def scene_rows(scene, key: tuple, h: float, truth: dict[str, ProfileData], level
     (``warned``: :func:`contactcore.estimate.unsettled`, the coarse run's
     stencil, :func:`contactcore.estimate.cell_scale_orders`, its variation
     from cell to cell, :func:`contactcore.estimate.residues`, a difference
-    a thousand times below its kind's, or with three levels
-    :func:`contactcore.estimate.order_mismatch`, the observed order: the
-    same entries as ``run --estimate``'s warnings name)."""
+    a thousand times below its kind's, :func:`contactcore.estimate.curved_layer`,
+    :func:`contactcore.estimate.exact_tractions`,
+    :func:`contactcore.estimate.fast_gamma`, EFGM P1's Γ quantities, or
+    with three levels :func:`contactcore.estimate.order_mismatch`, the
+    observed order: the entries ``Estimate.unsettled`` holds)."""
     disc = methods.discretisation(key[0])(degree=key[1])
     results = [solve(scene, disc, hk) for hk in est.levels_of(h, levels)]
     exclude = default_exclusion(scene)

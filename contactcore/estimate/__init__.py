@@ -34,7 +34,7 @@ in their home.
 numpy and scipy only; no method is imported.
 """
 from .caveats import (cell_scale_orders, cell_scale_warnings, curved_layer, curved_layer_warning, energy_caveat,
-                      exact_traction_warning, exact_tractions, feature_size, order_mismatch, order_warnings, pollution_warning, residue_warnings, residues,
+                      exact_traction_warning, exact_tractions, fast_gamma, fast_gamma_warning, feature_size, order_mismatch, order_warnings, pollution_warning, residue_warnings, residues,
                       stencil_radius, unsettled, unsettled_warnings)
 from .energy import EnergyEstimate, EnergyRule, energy_estimate, energy_norm, energy_rule, recovered_stress
 from .extrapolation import (QuantityEstimate, balanced_order, cell_scale_part, observed_order, profile_estimates,
@@ -42,7 +42,7 @@ from .extrapolation import (QuantityEstimate, balanced_order, cell_scale_part, o
 from .orders import lower_end, order_range, polluted, theoretical_order
 from .runs import Estimate, estimate, estimate_runs, levels_of
 from .singular import (clamped_free_exponent, corner_exponents, exact_interface_ends, far_from_singular, interface_end_exponents, kolosov,
-                       pollution_order, singular_points, singular_regions)
+                       pollution_order, reflected, singular_points, singular_regions, stress_singular_points)
 from .status import status_along, status_change, status_warning, switches
 
 __all__ = [
@@ -53,7 +53,7 @@ __all__ = [
     "rms", "roundoff_floor", "sample_groups", "three_run_order",
     # caveats
     "cell_scale_orders", "cell_scale_warnings", "curved_layer", "curved_layer_warning", "energy_caveat",
-    "exact_traction_warning", "exact_tractions", "feature_size", "order_mismatch", "order_warnings",
+    "exact_traction_warning", "exact_tractions", "fast_gamma", "fast_gamma_warning", "feature_size", "order_mismatch", "order_warnings",
     "pollution_warning", "residue_warnings", "residues", "stencil_radius", "unsettled", "unsettled_warnings",
     # status
     "status_along", "status_change", "status_warning", "switches",
@@ -63,5 +63,5 @@ __all__ = [
     "lower_end", "order_range", "polluted", "theoretical_order",
     # singular
     "clamped_free_exponent", "corner_exponents", "exact_interface_ends", "far_from_singular", "interface_end_exponents", "kolosov",
-    "pollution_order", "singular_points", "singular_regions",
+    "pollution_order", "reflected", "singular_points", "singular_regions", "stress_singular_points",
 ]

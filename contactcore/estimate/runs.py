@@ -21,7 +21,8 @@ import numpy as np
 
 from ..profiles import ProfileData, sample_profiles
 from ..scene import Scene
-from .caveats import (cell_scale_orders, cell_scale_warnings, exact_traction_warning, exact_tractions, feature_size,
+from .caveats import (cell_scale_orders, cell_scale_warnings, exact_traction_warning, exact_tractions, fast_gamma,
+                      fast_gamma_warning, feature_size,
                       order_mismatch, order_warnings,
                       pollution_warning, residue_warnings, residues, unsettled, unsettled_warnings,
                       curved_layer, curved_layer_warning, energy_caveat, ENERGY_KEY)
@@ -102,12 +103,15 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     switching = None if scene.law.is_linear else switches([r.interface for r in results])
     profiles = profile_estimates(levels, results[-1].degree, results[-1].method, coarse, scene, exclude, switching,
                                  h=hs[-2])
-    found = unsettled(scene, levels, results[-2].discretisation, results[-1].method, results[-1].degree, exclude)
+    found = unsettled(scene, levels, results[-2].discretisation, results[-1].method, results[-1].degree, exclude,
+                      profiles)
     layer = curved_layer(scene, levels, results[-1].method, results[-1].degree, hs[-2], exclude)
     rough = cell_scale_orders(scene, levels, profiles, exclude, hs[-2])
     residue = residues(scene, levels, profiles, exclude)
     nitsche = exact_tractions(scene, profiles)
+    fast = fast_gamma(profiles, results[-1].method, results[-1].degree)
     warnings = (order_warnings(profiles) + pollution_warning(scene, profiles) + exact_traction_warning(nitsche)
+                + fast_gamma_warning(fast, results[-1].method, results[-1].degree)
                 + unsettled_warnings(found, hs[-2], feature_size(scene), scene.user.units.length)
                 + curved_layer_warning(layer, hs[-2], scene.user.units.length)
                 + cell_scale_warnings(rough, hs[-2:]) + residue_warnings(residue, len(levels) > 2))
@@ -121,6 +125,7 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     caveat = energy_caveat(results[-1].method, results[-1].degree) if energy else []
     return Estimate(hs, profiles, zz, status, warnings + caveat, levels[-1],
                     {k for v in found.values() for k in v} | set(layer) | set(rough) | set(residue) | set(nitsche)
+                    | set(fast)
                     | ({ENERGY_KEY} if caveat else set())
                     | {f"{pid}:{q}" for pid, qs in profiles.items() for q, e in qs.items() if order_mismatch(e)},
                     kept)

@@ -1,0 +1,112 @@
+"""The estimate's warnings (contactcore.estimate.caveats): which entries
+they name, measured against the true error in docs/error-estimates.md,
+"Which estimates to warn of"."""
+import numpy as np
+import pytest
+
+import tolerances as tol
+from contactcore import ProfileData, load_scene
+from contactcore import estimate as est
+from contactcore import tolerances as core_tol
+from contactcore.geometry import LineInterface
+from verification.effectivity import CASES
+
+
+def test_a_roller_makes_its_corners_and_a_perpendicular_gammas_ends_smooth():
+    """est.reflected: the quadratic layers (clamped base, rollers on both
+    sides, Γ horizontal) have their base corners on a roller and Γ's ends
+    perpendicular to the rollers: all six points smooth; the layered slip
+    (rollers on top only) its top corners; scene A (clamped and free
+    edges) none.  An inclined Γ's ends on the same rollers are not."""
+    layers = CASES["quadratic_layers"]().scene
+    assert est.reflected(layers).all() and not len(est.stress_singular_points(layers))
+    assert est.reflected(CASES["layered_slip"]().scene).tolist() == [False, False, True, True, False, False]
+    assert not est.reflected(load_scene("A")).any()
+    inclined = layers.with_changes(interface=LineInterface((0.0, 0.45), (-0.2, 1.0)))
+    pts, smooth = est.singular_points(inclined), est.reflected(inclined)
+    ends = np.isclose(pts[:, 0], 0.0) & ~np.isclose(pts[:, 1], 0.0) & ~np.isclose(pts[:, 1], 1.0) | (
+        np.isclose(pts[:, 0], 1.0) & ~np.isclose(pts[:, 1], 0.0) & ~np.isclose(pts[:, 1], 1.0))
+    assert ends.sum() == 2 and not smooth[ends].any() and smooth[~ends].all()
+
+
+def _runs_along_gamma(near: float, far: float) -> list:
+    """Two runs of σxx on scene A's Γ (y = 0.5) from x = 0.15 to 0.85,
+    differing by ``near`` within 0.2 of Γ's ends and by ``far`` beyond."""
+    x = np.linspace(0.15, 0.85, 29)
+    close = np.minimum(x, 1.0 - x) < 0.2
+    def run(values):
+        return [ProfileData("L", "arclength", {"s": x - 0.15, "x": x, "y": np.full_like(x, 0.5), "sxx": values})]
+    base = 1.0 + x
+    return [run(base), run(base + np.where(close, near, far))]
+
+
+@pytest.mark.parametrize("method, near, reach", [
+    ("fe", tol.REACH_SPREAD, False),        # one cell: no more within reach than beyond
+    ("fe", tol.REACH_CONCENTRATED, True),   # one cell: concentrated near Γ's ends
+    ("efgm", tol.REACH_SPREAD, True),       # supports: the cause stands without the runs' say
+])
+def test_a_one_cell_stencil_reaches_a_singular_point_only_where_the_runs_differ_most_there(method, near, reach):
+    """est.unsettled, scene A at h = 0.1 (reach 0.2 for fe, 0.4 for EFGM
+    P1's supports of 0.2): samples kept 0.15 from Γ's ends lie within
+    reach.  For fe's stencil of one cell the cause stands only where the
+    runs' difference within reach exceeds
+    REACH_CONCENTRATION times that beyond; for EFGM it stands whatever
+    the difference.  One run alone (no difference): it stands."""
+    scene = load_scene("A")
+    record = {"h": 0.1} if method == "fe" else {"h": 0.1, "dmax": 2.0, "support": "circular"}
+    runs = _runs_along_gamma(near, 1.0)
+    found = est.unsettled(scene, runs, record, method, 1, exclude=0.1)
+    assert bool(found["reach"]) == reach
+    assert est.unsettled(scene, runs[1:], record, method, 1, exclude=0.1)["reach"]
+
+
+def test_a_difference_at_round_off_leaves_the_reach_cause_standing():
+    """est.unsettled: runs that differ only at round-off of the quantity
+    (ESTIMATE_ROUNDOFF) show nothing about where they differ most: fe's
+    reach cause stands."""
+    scene = load_scene("A")
+    runs = _runs_along_gamma(0.0, core_tol.ESTIMATE_ROUNDOFF)
+    assert est.unsettled(scene, runs, {"h": 0.1}, "fe", 1, exclude=0.1)["reach"]
+
+
+def _estimate(observed: bool) -> est.QuantityEstimate:
+    """A two-run (or an observed, three-run) estimate of order 2."""
+    levels = [np.linspace(0.0, 1.0, 5) * (1.0 + h ** 2) for h in ((0.1, 0.05, 0.025) if observed else (0.1, 0.05))]
+    return est.richardson(levels, theory=(2, 2))
+
+
+def test_efgm_p1s_gaps_and_tractions_from_two_runs_are_named_as_likely_too_large():
+    """est.fast_gamma: EFGM P1's g_N, g_T, t_N, t_T estimated from two
+    runs (core_tol.FAST_GAMMA), not its displacements, not EFGM P2's nor
+    fe's, and not an observed order; the warning names them."""
+    two, three = _estimate(False), _estimate(True)
+    profiles = {"G": {"gN": two, "tT": two, "ux": two}, "H": {"gT": three}}
+    assert ("efgm", 1) in core_tol.FAST_GAMMA
+    names = est.fast_gamma(profiles, "efgm", 1)
+    assert names == ["G:gN", "G:tT"]
+    assert not est.fast_gamma(profiles, "efgm", 2) and not est.fast_gamma(profiles, "fe", 1)
+    line, = est.fast_gamma_warning(names, "efgm", 1)
+    assert line.startswith("G:gN, G:tT: ") and "too large" in line
+    assert not est.fast_gamma_warning([], "efgm", 1)
+
+
+def test_a_bulk_displacement_at_an_exact_gammas_end_keeps_the_reach_cause_however_the_runs_differ():
+    """est.unsettled on the tilted block (Γ at y = 0.47 under an exact
+    law, ends on free sides: est.exact_interface_ends), fe at h = 0.1,
+    u_x on a line 0.05 above Γ whose runs differ as much near Γ's ends
+    as beyond: taken at the lower end of a widened range
+    (est.lower_end), its reach cause stands (that end's error may
+    pollute everywhere); at an order range pollution did not widen, the
+    runs' spread silences it."""
+    scene = load_scene("tests/scenes/tilt_bonded.toml")
+    x = np.linspace(0.15, 0.85, 29)
+    close = np.minimum(x, 1.0 - x) < 0.2
+    def run(values):
+        return [ProfileData("L", "arclength", {"s": x - 0.15, "x": x, "y": np.full_like(x, 0.52), "ux": values})]
+    runs = [run(1.0 + x), run(1.0 + x + np.where(close, tol.REACH_SPREAD, 1.0))]
+    levels = [r[0].columns["ux"] for r in runs]
+    widened = {"L": {"ux": est.richardson(levels, theory=(1.42, 3), low=True)}}
+    assert est.lower_end("ux", widened["L"]["ux"].theory, True)
+    assert est.unsettled(scene, runs, {"h": 0.1}, "fe", 2, exclude=0.1, estimates=widened)["reach"]
+    plain = {"L": {"ux": est.richardson(levels, theory=(3, 3))}}
+    assert not est.unsettled(scene, runs, {"h": 0.1}, "fe", 2, exclude=0.1, estimates=plain)["reach"]
