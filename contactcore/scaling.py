@@ -91,7 +91,7 @@ def _load_stress(scene: Scene) -> float:
         for name, dim in _declared(load, i).items():
             if dim not in MAGNITUDES:
                 continue
-            size = max(abs(v) for v in np.ravel(getattr(load, name)))
+            size = float(max(abs(v) for v in np.ravel(getattr(load, name))))  # a Python float: overflow is inf, refused below, not a numpy warning
             sizes.append(size * L if dim == FORCE_DENSITY else size / L / L if dim == MOMENT else size)
     return max(sizes)
 
