@@ -3,7 +3,9 @@
 For each method and degree, one warm-up solve at the coarsest h (it pays the
 one-off JIT compilation, so that the table shows steady costs), then one solve
 per h (:func:`fastest`: short ones repeated), each split into mesh / assembly /
-solve / total.  Writes
+solve / total.  Each row names its scene's enforcement (``penalty`` or
+``exact``, the scene file's ``[interface.law] enforcement``): a scene's name
+alone does not say it, and the two cost differently.  Writes
 ``DIR/timing.csv`` and ``DIR/timing.md``.
 """
 from __future__ import annotations
@@ -45,7 +47,7 @@ def fastest(solve, scene, h: float, degree: int):
     return best
 
 
-COLUMNS = ["scene", "method", "degree", "h", "dofs", "mesh", "assembly", "solve", "total", "solves",
+COLUMNS = ["scene", "enforcement", "method", "degree", "h", "dofs", "mesh", "assembly", "solve", "total", "solves",
            "factorisations", "backward_error"]
 
 
@@ -80,17 +82,17 @@ def timing(scene_names: list[str], method_names: list[str], degrees: list[int], 
                 for h in sorted(hs, reverse=True):
                     res = fastest(solve, scene, h, degree)
                     t = res.timings
-                    rows.append({"scene": scene.name, "method": name, "degree": degree, "h": h, "dofs": res.dofs,
+                    rows.append({"scene": scene.name, "enforcement": scene.law.enforcement, "method": name, "degree": degree, "h": h, "dofs": res.dofs,
                                  "mesh": t.mesh, "assembly": t.assembly, "solve": t.solve, "total": t.total,
                                  "solves": res.solver.solves, "factorisations": res.solver.factorisations,
                                  "backward_error": res.solver.backward_error})
-                    log.info("%s, %s p%d h=%g: %d DOFs, mesh %.2f s, assembly %.2f s, solve %.2f s (%d solves, %d "
-                             "factorisations), total %.2f s", scene.name, name, degree, h, res.dofs, t.mesh,
+                    log.info("%s (%s), %s p%d h=%g: %d DOFs, mesh %.2f s, assembly %.2f s, solve %.2f s (%d solves, %d "
+                             "factorisations), total %.2f s", scene.name, scene.law.enforcement, name, degree, h, res.dofs, t.mesh,
                              t.assembly, t.solve, res.solver.solves, res.solver.factorisations, t.total)
     out = Path(out)
     files.write_csv(out / "timing.csv", rows, COLUMNS)
     files.write_text(out / "timing.md", "# Wall time against DOFs\n\n" + files.markdown_table(
-        rows, COLUMNS[:-1], ["scene", "method", "degree", files.labelled("h", "h", units), "DOFs", "mesh (s)",
+        rows, COLUMNS[:-1], ["scene", "enforcement", "method", "degree", files.labelled("h", "h", units), "DOFs", "mesh (s)",
                              "assembly (s)", "solve (s)", "total (s)", "solves", "factorisations"]))
     files.write_json(out / "run.json", {**files.provenance(list(argv)), **files.run_units(units)})
     return rows
