@@ -1363,3 +1363,9 @@ UNI_OPENING_REFERENCE = 0.3156
 #: both when it was read on the − side alone (the opening held at the node
 #: s = 0.325 at every h; grader16 F2).  Half the old error.
 UNI_OPENING = 0.0047
+
+#: The unilateral law's partial answer (contactcore.newton.partial): a
+#: partial point's t_N is θ γ y_N with y_N solved to 0, so round-off of
+#: the map's solve: measured 2.4e-16 of max |t_N| (grader16's `uni`, fe
+#: P1, h = 0.05, 2026-11-28).  Bound far below any discretisation error.
+PARTIAL_NORMAL_ROUNDOFF = 1e-10
