@@ -224,7 +224,7 @@ def _commit(newton, search: _Search, k: float, s, u, y, tau, P, maps: int) -> bo
     points = newton.itf.points[P]
     listed = ", ".join(f"({x:.4g}, {z:.4g}) θ = {t:.3g}" for (x, z), t in zip(points, theta))
     newton.report.warnings.append(
-        f"{where}: no open/closed map of the unilateral law is consistent at every point; {len(P)} point(s) of Γ "
+        f"{where}: Newton found no open/closed map of the unilateral law consistent at every point; {len(P)} point(s) of Γ "
         f"hold y_N = 0 with a share θ of the tie's shear (the law's two branches mixed, Filippov's answer at its "
         f"jump; docs/contact-enforcement.md, \"The unilateral law under shear\"): {listed}")
     return True
