@@ -1367,6 +1367,8 @@ AXIS_PARALLEL = 1e-300
 #: (xfem P2, h = 0.025); on grader17's `shear-unilateral` (penalty, zero
 #: normal load, every point of Γ at g_N = 0 in the continuum) the search
 #: does not settle (fe P1 at h = 0.1 reaches a singular map at its 5th;
-#: efgm P1 and P2 cycle with 22 and 36 partial points past 60 maps), and
-#: the refusal stands, so the cap is what a refusal costs.
+#: efgm P1 cycles with 17-27 points partial to the cap, and a 60-map
+#: prototype settled no better), nor on the docs' tilted block (fe P1 at
+#: h = 0.025: 44-91 partial over its last maps), and the refusal stands,
+#: so the cap is what a refusal costs (3.3 CPU s there).
 PARTIAL_SEARCH_MAPS = 30
