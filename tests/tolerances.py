@@ -1376,3 +1376,20 @@ LINEAR_PRESSURE = {"fe": 1e-10, "xfem": 1e-10, "efgm": 1e-3}
 #: below contactcore.tolerances.REACH_CONCENTRATION = 3) and ten times
 #: (concentrated: above it).
 REACH_SPREAD, REACH_CONCENTRATED = 1.0, 10.0
+
+#: The unilateral law's partial answer (contactcore.newton.partial): a
+#: partial point's t_N is θ γ y_N with y_N solved to 0, so round-off of
+#: the map's solve: measured 2.4e-16 of max |t_N| (grader16's `uni`, fe
+#: P1, h = 0.05, 2026-11-28).  Bound far below any discretisation error.
+PARTIAL_NORMAL_ROUNDOFF = 1e-10
+
+#: grader17's `tilt-unil-exact`: where Γ opens in the fe P2 reference at
+#: h = 0.0125 (its open/closed changes at x = 0.081, 0.085, 0.088, an
+#: island at the edge; measured 2026-11-28).
+TILT_OPENING_REFERENCE = 0.085
+
+#: How far a partial point of `tilt-unil-exact` (efgm P1 at h = 0.05, xfem
+#: P2 at 0.025) may lie from TILT_OPENING_REFERENCE: half the coarser h,
+#: the edge of the contact zone resolved to the cell that holds it
+#: (measured 0.004; 0.012 and 0.018).
+TILT_PARTIAL_FROM_OPENING = 0.025

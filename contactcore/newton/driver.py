@@ -33,6 +33,7 @@ from ..errors import SolverError, SolverOptionError
 from ..interface_path import InterfacePath, canonical_order
 from ..result import SolverReport
 from ..system import ContactSystem
+from . import partial
 from .increments import _Newton
 from .refusals import _refusal
 
@@ -42,7 +43,12 @@ def _final_state(scene, system: ContactSystem, newton: _Newton, progress=None) -
     increment does not depend on the path, so Newton goes there in one step
     from the unloaded state (a linear law in one solve, its tangent settled
     at once).  A nonlinear law whose one step does not converge follows the
-    increments instead, with cut-backs; a linear one ends with the error."""
+    increments instead, with cut-backs; a linear one ends with the error.
+    Where the unilateral law's path fails too, its partial answer
+    (:mod:`contactcore.newton.partial`: a point of Γ at ``y_N = 0`` with a
+    share of the tie's shear, where no open/closed map is consistent) is
+    the step to the last increment if the search finds one; else the
+    path's refusal stands."""
     try:
         newton.step(float(scene.increments))
         return newton
@@ -52,7 +58,20 @@ def _final_state(scene, system: ContactSystem, newton: _Newton, progress=None) -
         if scene.law.is_linear:
             raise _refusal(scene, system, exc) from None
     newton = _Newton(scene, system)
-    _follow(scene, newton, progress)
+    try:
+        _follow(scene, newton, progress)
+    except (SolverOptionError, health.FreeBody):
+        raise
+    except SolverError:
+        # no consistent open/closed map along the path either: the
+        # unilateral law's partial answer, if it has one (a point of Γ at
+        # y_N = 0 carrying a share of the tie's shear), else the refusal
+        if not partial.applies(scene, system):
+            raise
+        fallback = _Newton(scene, system)
+        if not partial.partial_answer(fallback, float(scene.increments)):
+            raise
+        return fallback
     return newton
 
 

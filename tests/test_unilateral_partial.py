@@ -1,0 +1,149 @@
+"""The unilateral law where no open/closed map is consistent: a point of
+Γ in a partial state (contactcore.newton.partial; docs/contact-enforcement.md,
+"The unilateral law under shear").  grader16's `uni` at fe P1, h = 0.05
+was refused (one Gauss point, s = 0.325, contradicting both its
+statuses); it now has one partial point there and the opening of the
+fine references."""
+import re
+
+import numpy as np
+import pytest
+
+from contactcore import discretisation, load_scene
+from contactcore.errors import SolverError
+from contactcore.laws import OPEN
+from contactcore.newton import partial
+
+from test_xfem_opening import UNI
+from tolerances import (PARTIAL_NORMAL_ROUNDOFF, TILT_OPENING_REFERENCE, TILT_PARTIAL_FROM_OPENING, UNI_OPENING,
+                        UNI_OPENING_REFERENCE)
+
+SHEAR_UNILATERAL = """name = "shear-unilateral"
+plane = "strain"
+h = 0.1
+[domain]
+type = "rectangle"
+corner = [0.0, 0.0]
+size = [1.0, 1.0]
+[interface]
+type = "line"
+point = [0.0, 0.53]
+normal = [0.0, 1.0]
+[interface.law]
+type = "unilateral"
+kN = 1000.0
+kT = 40.0
+[materials.minus]
+E = 100.0
+nu = 0.3
+[materials.plus]
+E = 250.0
+nu = 0.2
+[[supports]]
+boundary = "bottom"
+fix = "xy"
+[[supports]]
+boundary = "left"
+fix = "y"
+[[supports]]
+boundary = "right"
+fix = "y"
+[[loads]]
+type = "body_force"
+body = "minus"
+value = [0.3, 0.0]
+[[loads]]
+type = "body_force"
+body = "plus"
+value = [0.1, 0.0]
+"""
+
+
+def _partial_points(report):
+    """The partial points the run's warning names: [(x, y, θ)]."""
+    lines = [w for w in report.warnings if "hold y_N = 0 with a share θ" in w]
+    assert len(lines) <= 1, lines
+    if not lines:
+        return []
+    return [tuple(map(float, m)) for m in re.findall(r"\(([-\d.e+]+), ([-\d.e+]+)\) θ = ([-\d.e+]+)", lines[0])]
+
+
+def test_uni_fe_p1_has_one_partial_point_and_the_references_opening(tmp_path):
+    """fe P1 at h = 0.05, refused before: one partial point, the middle
+    Gauss point of [0.3, 0.35], at t_N = 0 to round-off and θ strictly
+    inside (0, 1); Γ changes from open to closed once, within UNI_OPENING
+    of the reference opening (measured 0.3153 against 0.3156; fe P1 at
+    h = 0.025, which Newton solves, 0.325)."""
+    from xdolfinx.options import FE
+    path = tmp_path / "uni.toml"
+    path.write_text(UNI)
+    result = discretisation.solve(load_scene(path), FE(degree=1), 0.05)
+    points = _partial_points(result.solver)
+    assert len(points) == 1, result.solver.warnings
+    (x, y, theta), = points
+    assert x == pytest.approx(0.325) and y == pytest.approx(0.5) and 0.0 < theta < 1.0
+    interface = result.interface
+    at = np.argmin(np.abs(interface.points[:, 0] - x))
+    traction = interface.final.traction
+    assert abs(traction[at, 0]) <= PARTIAL_NORMAL_ROUNDOFF * np.max(np.abs(traction[:, 0]))
+    order = np.argsort(interface.points[:, 0], kind="stable")
+    xs, status = interface.points[order, 0], interface.final.status[order]
+    change = np.flatnonzero((status[:-1] == OPEN) != (status[1:] == OPEN))
+    assert len(change) == 1
+    where = 0.5 * (xs[change[0]] + xs[change[0] + 1])
+    assert abs(where - UNI_OPENING_REFERENCE) <= UNI_OPENING, where
+
+
+def test_a_grazing_shear_with_no_partial_answer_is_still_refused(tmp_path):
+    """grader17's `shear-unilateral` (penalty, no normal load: the closed
+    form has g_N = 0 and t_N = 0 on all of Γ), fe P1 at h = 0.1: the
+    discrete all-closed answer puts g_N at up to 2e-4 of |g_T| in
+    tension (discretisation, not round-off), the partial search reaches a
+    singular map, and the refusal names the unilateral law as before."""
+    from xdolfinx.options import FE
+    path = tmp_path / "shear.toml"
+    path.write_text(SHEAR_UNILATERAL)
+    with pytest.raises(SolverError, match="no open/closed map of the unilateral law"):
+        discretisation.solve(load_scene(path), FE(degree=1), 0.1)
+
+
+def test_the_partial_search_is_for_the_unilateral_law_alone():
+    """Coulomb (history), linear and a parallel run keep their refusals."""
+    from contactcore.enforcement import make_law
+    from contactcore.collective import Collective
+
+    class _System:
+        def __init__(self, comm=None):
+            self.collective = Collective(comm)
+
+    class _Comm:
+        size, rank = 2, 0
+
+    scene = load_scene("A")
+    for law, applies in (({"type": "unilateral", "kN": 1e12, "kT": 1e12}, True),
+                         ({"type": "unilateral", "enforcement": "exact"}, True),
+                         ({"type": "coulomb", "kN": 1e12, "kT": 1e12, "mu": 0.3}, False),
+                         ({"type": "linear", "kN": 1e12, "kT": 1e12}, False)):
+        s = scene.with_changes(law=make_law(law))
+        assert partial.applies(s, _System()) is applies, law
+    s = scene.with_changes(law=make_law({"type": "unilateral", "enforcement": "exact"}))
+    assert partial.applies(s, _System(_Comm())) is False
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("method, degree, h", [("efgm", 1, 0.05), ("xfem", 2, 0.025)])
+def test_tilt_unil_exact_has_a_partial_answer(method, degree, h):
+    """grader17's `tilt-unil-exact` (tests/scenes/tilt_unil_exact.toml),
+    refused before in efgm P1 at h = 0.05 and xfem P2 at 0.025: one and
+    two partial points at the edge of the contact zone (x = 0.081; 0.067
+    and 0.073; the fe P2 reference at h = 0.0125 opens at 0.081-0.088),
+    each at θ strictly inside (0, 1)."""
+    import pathlib
+    from efgm.options import EFGM
+    from xdolfinx.options import XFEM
+    options = {"efgm": EFGM, "xfem": XFEM}[method](degree=degree)
+    scene = load_scene(pathlib.Path(__file__).parent / "scenes" / "tilt_unil_exact.toml")
+    result = discretisation.solve(scene, options, h)
+    points = _partial_points(result.solver)
+    assert 1 <= len(points) <= 2 and all(0.0 < p[2] < 1.0 and abs(p[0] - TILT_OPENING_REFERENCE) <= TILT_PARTIAL_FROM_OPENING
+                                       for p in points), points
