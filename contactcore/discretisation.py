@@ -38,12 +38,14 @@ from typing import Any, Callable, ClassVar
 import numpy as np
 
 from . import exact, health
+from .collective import Collective
 from . import tolerances as tol
 from .errors import DiscretisationError
 from .geometry import LevelSetInterface, Rectangle
 from .newton import solve_increments
 from .newton import guess as newton_guess
 from .newton.guess import coarse_guess
+from .newton.iteration import STICKING
 from .system import ContactSystem
 from .result import Result, Timings
 from .scaling import Scales, dimensionless, dimensionless_inputs, softer_stress
@@ -275,6 +277,10 @@ def check_solvable(scene, discretisation: Discretisation, h: float | None = None
     _refused(scene, discretisation, h, paper)
 
 
+#: Why an exact, nonlinear law's run took no coarser map (``SolverReport.first_map``).
+NO_COARSER_MAP = "no coarser map (a given grid or node set, or the coarser spacing refused or its solve failed)"
+
+
 def _coarse_guess(scene, discretisation: Discretisation, resolution: Resolution, ranks: Collective):
     """An exact, nonlinear law's first status map from the same scene and
     method at twice the spacing (:mod:`contactcore.newton.guess`), or None:
@@ -325,6 +331,8 @@ def solve(scene, discretisation: Discretisation, h: float | None = None, *, pape
         with timings.measure("solve"):
             guess = _coarse_guess(scene, discretisation, resolution, built.system.collective)
             x, path, report = solve_increments(scene, built.system, progress, guess)
+        if guess is None and exact.is_exact(scene.law) and not scene.law.is_linear:
+            report.first_map = STICKING + NO_COARSER_MAP
     finally:
         if reuse is None or not reuse.owns(built):
             built.system.close()

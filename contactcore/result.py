@@ -193,7 +193,11 @@ class SolverReport:
     ``‖b − A x‖/(‖A‖‖x‖ + ‖b‖)``, reported beside it, never instead;
     ``condition`` the solver's condition estimate when it was asked for;
     ``solves`` the linear solves and ``factorisations`` the matrices
-    factorised for them (a solve with an unchanged tangent reuses the last).
+    factorised for them (a solve with an unchanged tangent reuses the last);
+    ``first_map`` where an exact, nonlinear law's first status search
+    started (:mod:`contactcore.newton.guess`): :data:`~contactcore.newton.iteration.FROM_COARSER`
+    or "every point sticking: " and why no coarser map was taken; empty
+    for other laws.
     """
 
     solver: str
@@ -206,6 +210,7 @@ class SolverReport:
     condition: float | None = None
     warnings: list[str] = field(default_factory=list)
     options: dict = field(default_factory=dict)
+    first_map: str = ""
 
 
 @dataclass

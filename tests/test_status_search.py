@@ -12,6 +12,7 @@ import tolerances as tol
 from contactcore import discretisation, load_scene, make_law
 from contactcore.laws import OPEN, SLIP, STICK
 from contactcore.newton import guess as newton_guess
+from contactcore.newton.iteration import FROM_COARSER, STICKING
 from verification import methods
 
 #: C-coulomb's own resolution (its first increment: docs/newton.md).
@@ -36,6 +37,8 @@ def test_a_coarser_map_shortens_the_search_and_keeps_the_answer(method, degree, 
     monkeypatch.setattr(newton_guess, "COARSER", None)
     searched = methods.solver(method)(scene, H, degree=degree)
     assert _first_increment(guessed) < _first_increment(searched)
+    assert guessed.solver.first_map == FROM_COARSER
+    assert searched.solver.first_map == STICKING + discretisation.NO_COARSER_MAP
     assert guessed.solver.iterations[1:] == searched.solver.iterations[1:]
     for a, b in zip(guessed.interface.steps, searched.interface.steps, strict=True):
         assert np.array_equal(a.status, b.status)
@@ -47,7 +50,7 @@ def test_a_penalty_law_takes_no_coarser_solve(monkeypatch):
     """The penalty path is the one it was: no coarser system is built."""
     calls = []
     monkeypatch.setattr(discretisation, "coarse_guess", lambda *a: calls.append(a))
-    methods.solver("xfem")(load_scene("C-coulomb"), H, degree=1)
+    assert methods.solver("xfem")(load_scene("C-coulomb"), H, degree=1).solver.first_map == ""
     assert calls == []
     methods.solver("xfem")(_exact(load_scene("C-coulomb")), H, degree=1)
     assert len(calls) == 1
@@ -106,6 +109,7 @@ def test_a_short_coarse_search_leaves_the_fine_run_as_it_was(monkeypatch):
     monkeypatch.setattr(newton_guess, "COARSER", None)
     searched = methods.solver("xfem")(scene, None, degree=1, estimate_condition=False)
     assert guessed.solver.iterations == searched.solver.iterations
+    assert guessed.solver.first_map.startswith(STICKING) and "settled" in guessed.solver.first_map
     for a, b in zip(guessed.interface.steps, searched.interface.steps, strict=True):
         assert np.array_equal(a.status, b.status)
         assert np.array_equal(a.traction, b.traction) and np.array_equal(a.jump, b.jump)

@@ -99,11 +99,12 @@ def solve_increments(scene, system: ContactSystem, progress=None,
     weights, points = ranks.gather(system.interface.weights), ranks.gather(system.interface.points)
     health.check_springs(scene, weights)
     health.check_restraint(scene, points, weights)
-    newton = _Newton(scene, system, guess)
+    first = newton = _Newton(scene, system, guess)
     if not (scene.law.has_history or scene.follow_path):
         newton = _final_state(scene, system, newton, progress)
     else:
         _follow(scene, newton, progress)
+    newton.report.first_map = first.first_map
     if not scene.law.is_linear:
         newton.report.solver = f"newton + {newton.report.solver}"
     newton.report.increments = len(newton.path.steps)  # what was solved, not the scene's count

@@ -59,6 +59,7 @@ class _Newton(_Continuation, _Iteration, _Correction, _Statuses, _LineSearch, _C
         # a coarser solve's status map for the first step's first correction
         # (contactcore.newton.guess), taken by the first step from rest only
         self._guess = guess
+        self.first_map = ""  # where the first status search started (iteration.FROM_COARSER, STICKING)
         self.itf = enforced(scene.law, system.interface)
         self.free = np.setdiff1d(np.arange(system.size), system.fixed)
         # rows that prescribe displacements (EFGM's multipliers, scaled by E:

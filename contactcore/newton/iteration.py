@@ -51,6 +51,12 @@ from ..laws import SLIP, STICK
 from ..slide import slide
 from .correction import _merge
 
+#: Where the first status search of an exact, nonlinear law started
+#: (``SolverReport.first_map``): a coarser solve's map, or every point
+#: sticking and why (contactcore.newton.guess).
+FROM_COARSER = "a coarser solve's map"
+STICKING = "every point sticking: "
+
 
 class _Walk:
     """One step's iterate and record between its iterations: the increment
@@ -102,8 +108,12 @@ class _Iteration:
         u, previous = self._predicted(_flat((loads, supports))) if start is None else (start[0].copy(), start[1])
         u[self.system.fixed] = self.system.fixed_values(supports)
         walk = _Walk(k, (loads, supports), b, u, previous, self._lift(supports))
-        if self._guess is not None and self._guess.worth() and start is None and self._at_rest():
-            walk.guess = self._guess.at(self.itf.points, self.itf.gamma)
+        if self._guess is not None and start is None and self._at_rest():
+            if self._guess.worth():
+                walk.guess = self._guess.at(self.itf.points, self.itf.gamma)
+            else:
+                self.first_map = STICKING + (f"the coarser search settled in {self._guess.iterations} "
+                                             "iteration(s), too few to shorten this one")
         self._guess = None  # the first step's first try only: cut-backs and continuations go as before
         self._secant, self._free_maps = None, 0  # each step its own secant and its maps that slip free
         self.factorisations.begin_step()
@@ -194,12 +204,16 @@ class _Iteration:
         walk.guess = None
         gathered = self.ranks.gather(status)
         if health.lets_go(self.scene, *self._gamma, gathered) or health.slips_free(self.scene, *self._gamma, gathered):
+            self.first_map = STICKING + "the coarser map lets a body go"
             return None
         guessed = dataclasses.replace(response, tangent=tangent, status=status, secant=None)
         try:
-            return guessed, self._solve(tangent, -R, scale, status=status)
+            solved = guessed, self._solve(tangent, -R, scale, status=status)
         except SolverError:
+            self.first_map = STICKING + "the coarser map's solve failed"
             return None
+        self.first_map = FROM_COARSER
+        return solved
 
     def _damped(self, walk: _Walk, R, response, scale: float, du, tangent):
         """The correction ``du`` (solved with ``tangent``) scaled by the
