@@ -1266,8 +1266,11 @@ FEATURE_STENCILS = 8.0
 CELL_SCALE_EXCESS = 0.5
 
 #: The (method, degree) pairs whose gaps and tractions on Γ a two-run
-#: estimate names as likely too large (estimate.caveats.fast_gamma): they
-#: converge faster than the order the estimate takes (degree + 1).
+#: estimate names (estimate.caveats.fast_gamma): they mostly converge
+#: faster than the order the estimate takes (degree + 1).  Since
+#: 2026-11-28 (grader21's F3) the warning gives no direction: 14 of the
+#: 128 entries below 1 (the layered slip's t_N, t_T, g_N 0.55, where
+#: EFGM's quadrature sets the error), 80 above 2.
 #: EFGM P1's converged at 2.52 on the twisted rod, 2.66 on the quadratic
 #: layers and 2.81 on the pressurised rod against 2 (closed forms, h =
 #: 0.05 -> 0.025, true errors), and their estimates read 2.02, 2.09 and
@@ -1285,6 +1288,21 @@ CELL_SCALE_EXCESS = 0.5
 #: docs/error-estimates-log.md, "The reach cause narrowed, and EFGM P1's
 #: Γ quantities named".
 FAST_GAMMA = (("efgm", 1),)
+
+#: From three runs, EFGM P1's Γ quantities (FAST_GAMMA) are named where
+#: their observed order exceeds the highest theory allows by more than
+#: this (the estimate then takes that highest, capped): a margin so that
+#: an order at theory's (2.0000000000001 for runs differing exactly as
+#: h^2) is not named by round-off.  The closed forms' EFGM P1 Γ entries
+#: from h = 0.05/0.025 down (three runs, 2026-11-28): observed 2.19 to
+#: 2.61 against 2 where not already warned, effectivities 1.06-1.14 on
+#: the rods and the quadratic layers, 0.49 on the layered slip's t_N,
+#: t_T, g_N (observed 2.52; grader21's F4, unwarned before); the
+#: layered slip's g_T (observed 1.77, 0.72) is left.  The differences
+#: shrink faster than theory allows the error, and where EFGM's
+#: quadrature sets the error they do not see it.  docs/error-estimates.md,
+#: "Which estimates to warn of".
+FAST_GAMMA_EXCESS = 0.1
 
 #: A two-run estimate warns when its runs differ (RMS over the kept
 #: samples) by less than this share of the most they differ in a quantity

