@@ -111,7 +111,7 @@ def _claims(line: str) -> list[str]:
     return [w for w in _DIRECTIONS if w in line and "either way" not in line and "may" not in line]
 
 
-@pytest.mark.parametrize("levels", [2, 3])
+@pytest.mark.parametrize("levels", [2, pytest.param(3, marks=pytest.mark.slow)])  # three levels: 6.5 s, slow stage
 def test_no_warning_points_the_wrong_way_on_the_layered_slip_efgm_p1(levels):
     """grader21's F3/F4: the layered slip (Coulomb) in EFGM P1 from h =
     0.05, two runs (effectivities 0.55 of t_N, t_T, g_N: fast_gamma and

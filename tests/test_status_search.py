@@ -27,7 +27,8 @@ def _first_increment(result):
     return result.solver.iterations[0]
 
 
-@pytest.mark.parametrize("method, degree", [("fe", 1), ("xfem", 1), ("efgm", 1)])
+@pytest.mark.parametrize("method, degree", [pytest.param("fe", 1, marks=pytest.mark.slow), ("xfem", 1),
+                                            pytest.param("efgm", 1, marks=pytest.mark.slow)])  # 4.6, 6.7 s: slow stage
 def test_a_coarser_map_shortens_the_search_and_keeps_the_answer(method, degree, monkeypatch):
     """Exact C-coulomb: with the map of the same scene at 2h the first
     increment takes fewer iterations than from every point sticking, and
