@@ -33,6 +33,22 @@ def test_a_roller_makes_its_corners_and_a_perpendicular_gammas_ends_smooth():
     assert ends.sum() == 2 and not smooth[ends].any() and smooth[~ends].all()
 
 
+def test_a_symmetry_roller_leaves_a_sheared_corner_singular():
+    """est.reflected: across a roller holding its edge's normal component
+    (a symmetry plane, u_x on the left edge) σxy is odd, so a tangential
+    traction on the top edge jumps at the top-left corner, which stays
+    singular; a purely normal traction there extends smoothly (review8)."""
+    from contactcore.scene import Support, Traction
+    scene = load_scene("A").with_changes(supports=(Support("bottom", "xy"), Support("left", "x")))
+    corner = np.all(np.isclose(est.singular_points(scene), [0.0, 1.0]), axis=1)
+    assert corner.sum() == 1
+    assert not est.reflected(scene)[corner].any()  # A's top traction (25 kPa, −100 kPa) has a shear
+    pressed = scene.with_changes(loads=(Traction("top", (0.0, -1e5)),))
+    assert est.reflected(pressed)[corner].all()
+    held_along = scene.with_changes(supports=(Support("bottom", "xy"), Support("left", "y")))
+    assert est.reflected(held_along)[corner].all()  # holding u_y: σxy is even across it
+
+
 def _runs_along_gamma(near: float, far: float) -> list:
     """Two runs of σxx on scene A's Γ (y = 0.5) from x = 0.15 to 0.85,
     differing by ``near`` within 0.2 of Γ's ends and by ``far`` beyond."""

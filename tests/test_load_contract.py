@@ -110,7 +110,7 @@ def _lacking(**members):
      r"no dimension for its parameter 'gradient' \(got 'pressure'"),
     ({"dimensions": {"value": POINT, "gradient": POINT, "datum": POINT}}, r"no parameter of a magnitude"),
     ({"field": None}, r"declares no formula 'field' \(the traction"),
-    ({"acts_on": BODY}, r"acts on an body but has no field 'body'"),
+    ({"acts_on": BODY}, r"acts on a body but has no field 'body'"),
 ], ids=["no-acts-on", "bad-acts-on", "no-name", "no-dimension", "bad-dimension", "no-magnitude", "no-formula",
         "no-body"])
 def test_a_load_that_declares_too_little_is_refused_at_registration_by_name(members, message):

@@ -68,11 +68,10 @@ from ..scaling import Sizes
 from ..scene import Scene
 from .extrapolation import QuantityEstimate, cell_scale_part, rms, sample_groups
 from .orders import GAPS, MESHFREE, RECOVERED_STRESS, STRESSES, TRACTIONS, _exact, lower_end
-
+from .singular import exact_interface_ends, far_from_singular, singular_points, stress_singular_points
 
 #: Γ's quantities: the gaps and the tractions.
 GAMMA = GAPS + TRACTIONS
-from .singular import exact_interface_ends, far_from_singular, singular_points, stress_singular_points
 
 
 def _orders(theory: tuple[float, float]) -> str:

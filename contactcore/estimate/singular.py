@@ -32,6 +32,7 @@ from .. import tolerances as tol
 from ..exact import Bonded, is_exact
 from ..geometry import LineInterface, Rectangle
 from ..scene import Scene
+from ..scene.loads import EDGE, acts_on, edge_traction
 
 
 def kolosov(nu: float, plane: str) -> float:
@@ -216,6 +217,33 @@ def singular_points(scene: Scene) -> np.ndarray:
     return np.vstack(pts) if pts else np.zeros((0, 2))
 
 
+#: Outward unit normals of a rectangle's edges.
+EDGE_NORMALS = {"left": (-1.0, 0.0), "right": (1.0, 0.0), "bottom": (0.0, -1.0), "top": (0.0, 1.0)}
+
+
+def _holds_normal(scene: Scene, edge: str) -> bool:
+    """Whether a support on ``edge`` holds its normal component (a
+    symmetry plane: reflected across it u_n is odd, so σ_nt is odd too)."""
+    axis = "x" if EDGE_NORMALS[edge][0] else "y"
+    return any(s.boundary == edge and axis in s.fix for s in scene.supports)
+
+
+def _sheared(scene: Scene, edge: str, p: np.ndarray) -> bool:
+    """Whether an edge load on ``edge`` has a tangential traction at ``p``:
+    reflected across a roller that holds its normal component
+    (:func:`_holds_normal`) at a corner, σ_nt changes sign, a jump of twice
+    the traction at the reflected point, which then stays singular
+    (review8); across one that holds the tangential component σ_nt is
+    even and the traction extends smoothly."""
+    normal = np.asarray(EDGE_NORMALS[edge], float)
+    for load in scene.loads:
+        if acts_on(load) == EDGE and load.boundary == edge:
+            t = edge_traction(scene, load, p[:1], p[1:2], normal[None])[0]
+            if abs(t @ np.asarray(EDGE_DIRECTIONS[edge], float)) > tol.GEOMETRY * np.linalg.norm(t):
+                return True
+    return False
+
+
 def reflected(scene: Scene) -> np.ndarray:
     """Mask over :func:`singular_points` of the points a roller makes
     smooth: reflected across a roller edge (one component held) the
@@ -225,7 +253,9 @@ def reflected(scene: Scene) -> np.ndarray:
     point of a straight boundary (a half-plane: integer exponents, the
     rule :func:`corner_exponents` already follows), and an end of a
     straight Γ perpendicular to a roller edge, on that edge alone, a
-    point inside a straight Γ.  A point that is both a corner and Γ's
+    point inside a straight Γ; not a corner whose roller holds its edge's
+    normal component while the other edge carries a tangential traction
+    (:func:`_sheared`).  A point that is both a corner and Γ's
     end is smooth only where both are.  Measured (docs/error-estimates.md,
     "Which estimates to warn of"): grader17's column, two layers on
     rollers with a 1-D closed form, had every EFGM entry warned for
@@ -247,7 +277,8 @@ def reflected(scene: Scene) -> np.ndarray:
         rollers = [e for e in edges if kinds.get(e) == "roller"]
         corner = bool(np.any(np.linalg.norm(corners - p, axis=1) <= tol_))
         end = bool(len(ends)) and bool(np.any(np.linalg.norm(ends - p, axis=1) <= tol_))
-        corner_smooth = bool(rollers)
+        corner_smooth = bool(rollers) and not (any(_holds_normal(scene, r) for r in rollers)
+                                               and any(_sheared(scene, e, p) for e in edges if e not in rollers))
         end_smooth = (len(edges) == 1 and len(rollers) == 1
                       and abs(abs(normal @ np.asarray(EDGE_DIRECTIONS[rollers[0]])) - 1.0) <= tol.GEOMETRY)
         out[i] = (not corner or corner_smooth) and (not end or end_smooth)

@@ -57,7 +57,8 @@ def _final_state(scene, system: ContactSystem, newton: _Newton, progress=None) -
     except SolverError as exc:
         if scene.law.is_linear:
             raise _refusal(scene, system, exc) from None
-    newton = _Newton(scene, system)
+    tried, newton = newton, _Newton(scene, system)
+    _carry(tried, newton)
     try:
         _follow(scene, newton, progress)
     except (SolverOptionError, health.FreeBody):
@@ -69,10 +70,18 @@ def _final_state(scene, system: ContactSystem, newton: _Newton, progress=None) -
         if not partial.applies(scene, system):
             raise
         fallback = _Newton(scene, system)
+        _carry(newton, fallback)
         if not partial.partial_answer(fallback, float(scene.increments)):
             raise
         return fallback
     return newton
+
+
+def _carry(failed: _Newton, fresh: _Newton) -> None:
+    """What a failed attempt solved and factorised counted in the fresh
+    attempt's report: the run's cost is every attempt's."""
+    fresh.report.solves += failed.report.solves
+    fresh.report.factorisations += failed.report.factorisations
 
 
 def _follow(scene, newton: _Newton, progress) -> None:

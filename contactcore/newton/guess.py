@@ -92,9 +92,12 @@ def coarse_guess(scene, build, ranks: Collective = SERIAL) -> StatusGuess | None
     means no guess, never a failed run): its first increment, or for a
     law without history on a path not followed the step to its last
     increment, which :func:`~contactcore.newton.solve_increments` takes
-    first.  ``ranks``: the fine system's; a ``build`` that fails on any
-    rank means no guess on every rank, so none waits in the coarse
-    Newton's reductions for a rank that left it."""
+    first.  ``ranks``: the fine system's; a ``build`` that returns to
+    this call failed on any rank means no guess on every rank, so none
+    waits in the coarse Newton's reductions for a rank that left it (the
+    local check of the coarse interface, say).  A rank failing inside one
+    of the build's own collective steps (dolfinx's mesh distribution) is
+    not covered: the others wait in that step, as in any dolfinx build."""
     try:
         system = build()
     except Exception:  # noqa: BLE001 - a coarser mesh or system the method cannot make: no guess, the search as before

@@ -48,6 +48,8 @@ def check_loads(scene: "Scene") -> None:
         for name in load_contract(type(load)):
             value = getattr(load, name)
             if isinstance(value, tuple):
+                if len(value) != 2:
+                    raise SceneError(f"{path}.{name}", f"must have 2 components (x, y), got {len(value)}")
                 for k, v in zip("xy", value):
                     finite(v, f"{path}.{name}.{k}")
             else:

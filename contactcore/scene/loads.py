@@ -213,7 +213,7 @@ def load_contract(cls) -> dict[str, str]:
     fields = [f.name for f in dataclasses.fields(cls)]
     for needed in (_PLACES[kind], "path"):
         if needed not in fields:
-            raise ContactError(f"{where}: acts on an {kind} but has no field '{needed}'")
+            raise ContactError(f"{where}: acts on {'an edge' if kind == EDGE else 'a body'} but has no field '{needed}'")
     parameters = getattr(cls, "parameters", None)
     if not isinstance(parameters, tuple) or not all(isinstance(p, str) for p in parameters):
         raise ContactError(f"{where}: declares no tuple 'parameters' of its parameters' names")
