@@ -110,6 +110,26 @@ def test_exact_contact_on_two_ranks_gives_the_serial_answer(tmp_path):
 
 
 @pytest.mark.slow
+@pytest.mark.parametrize("ranks", [2, 3])
+def test_the_unilateral_partial_answer_on_ranks_is_the_serial_one(tmp_path, ranks):
+    """grader16's `uni` (exact unilateral law), fe P1 at h = 0.05: no
+    open/closed map is consistent and the partial search answers
+    (contactcore.newton.partial), refused under mpirun before.  On 2 and
+    3 ranks (Γ's points split, the partial point on one rank, the others
+    solving with zero unit forces): the serial profiles, interface history
+    and statuses, and the same warning, naming the same partial point
+    and θ."""
+    from test_xfem_opening import UNI
+    path = tmp_path / "uni.toml"
+    path.write_text(UNI)
+    _parity(tmp_path, path, ranks, 1, 0.05)
+    warnings = [json.loads((tmp_path / d / "fe" / "summary.json").read_text())["solver"]["warnings"]
+                for d in ("s1", f"p{ranks}_1")]
+    assert any("share θ of the tie's shear" in w for w in warnings[0]), warnings[0]
+    assert warnings[1] == warnings[0]
+
+
+@pytest.mark.slow
 def test_an_estimate_on_two_ranks_gives_the_serial_estimate(tmp_path):
     """``run --estimate`` (runs at h and h/2, Richardson per sample, ZZ in
     energy) in every method: each profile and its estimated errors are the

@@ -64,8 +64,18 @@ answer lets go is refused (:func:`contactcore.health.check_held`).
 Measured 2026-11-28 (docs/contact-enforcement.md, "The unilateral law
 under shear"): ``uni`` fe P1 at h = 0.05, one partial point, θ = 0.0587,
 8 maps; grader17's ``tilt-unil-exact`` efgm P1 at h = 0.05 (one point)
-and xfem P2 at h = 0.025 (two). Serial only: under mpirun the refusal
-stands (the partial points' equations would be gathered over ranks).
+and xfem P2 at h = 0.025 (two).
+
+**Under mpirun** (fe, xfem: Γ's points split between ranks) the search
+is the serial one: the bands' maxima are reduced over the ranks; the
+partial points are every rank's, in rank order, and every rank solves
+for each of them (a rank owning none with zero unit forces: the solve is
+a collective); ``M`` and ``y_N,P(u₀ + v₀)`` are gathered, so ``τ`` is
+the same on every rank; "no point moved" holds on every rank; the
+warning lists every rank's partial points along Γ (its canonical order,
+which no partition changes).  Each point's move reads only its own
+margin and the Γ-wide bands, so the maps visited do not depend on the
+partition.
 
 Contract: :func:`partial_answer` takes a fresh :class:`_Newton` and the
 increment ``k``; it commits the answer and returns True, or returns False
@@ -79,6 +89,7 @@ import numpy as np
 from .. import health
 from .. import tolerances as tol
 from ..errors import SolverError
+from ..interface_path import canonical_order
 from ..laws import OPEN, STICK, LawResponse
 from .correction import _merge
 from .iteration import _flat
@@ -89,10 +100,9 @@ _OPEN, _CLOSED, _PARTIAL = 0, 1, 2
 
 def applies(scene, system) -> bool:
     """Whether the partial search may run: the ``unilateral`` law (no
-    friction, no history; penalty or exact), in one process."""
+    friction, no history; penalty or exact), on any number of ranks."""
     law = scene.law
-    return (law.unilateral and not law.frictional and not law.has_history and not law.is_linear
-            and not system.collective.parallel)
+    return law.unilateral and not law.frictional and not law.has_history and not law.is_linear
 
 
 def _stiffness(newton) -> np.ndarray:
@@ -107,7 +117,10 @@ def _stiffness(newton) -> np.ndarray:
 def _jumps(newton, u: np.ndarray) -> np.ndarray:
     """(m, 2): the jumps the law reads, ``y = G̃ u`` (exact) or ``g = G u``."""
     itf = newton.itf
-    y = itf.augmented @ u if itf.exact else itf.jumps(u)
+    if not itf.exact:
+        return np.asarray(itf.jumps(u), float).reshape(-1, 2)
+    local = u if itf.exchange is None else itf.exchange.forward(u)  # G̃'s columns are local: a collective
+    y = itf.augmented @ local
     return np.asarray(y, float).reshape(-1, 2)
 
 
@@ -124,51 +137,63 @@ class _Search:
         u0[newton.system.fixed] = newton.system.fixed_values(supports)
         self.u0 = u0
         R0, forces, data = newton._residual(u0, self.b, newton.itf.respond(newton.law, u0, newton.state))
-        first = float(np.max(np.abs(R0[newton.free]), initial=0.0))
+        first = newton.ranks.max(float(np.max(np.abs(R0[newton.free]), initial=0.0)))
         self.R0 = R0
         self.scale = max(forces, data, newton._lift(supports), first, newton._least(u0))
         self.k = _stiffness(newton)
         self.m = newton.itf.size
+        self.ranks = newton.ranks
 
-    def unit(self, p: int) -> np.ndarray:
-        """The forces of a unit ``t_T`` at point ``p`` (``Tᵀ W e_p``)."""
+    def unit(self, j: int, first: int, P: np.ndarray) -> np.ndarray:
+        """The forces of a unit ``t_T`` at the ``j``-th partial point of
+        every rank's (``Tᵀ W e_p``), this rank's partial points ``P``
+        being the ``first``-th on: zero forces on a rank that does not own
+        it, which takes part in the collective all the same."""
         t = np.zeros((self.m, 2))
-        t[p, 1] = 1.0
+        if first <= j < first + len(P):
+            t[P[j - first], 1] = 1.0
         return self.newton.itf.internal(np.zeros_like(self.u0), t)
 
     def solve(self, s: np.ndarray):
-        """The linear problem of the map ``s``: ``(u, y, τ_P, P)``;
-        SolverError where its tangent is singular or ``M`` is."""
-        newton = self.newton
+        """The linear problem of the map ``s``: ``(u, y, τ_P, P)``, ``P``
+        this rank's partial points and ``τ_P`` theirs; SolverError where
+        its tangent is singular or ``M`` is.  Under mpirun the partial
+        points are every rank's, in rank order: each rank solves for each
+        of them, ``M`` and ``y_N,P(u₀ + v₀)`` gathered, ``τ`` the same on
+        every rank."""
+        newton, ranks = self.newton, self.ranks
         tangent = np.zeros((self.m, 2, 2))
         closed = s == _CLOSED
         tangent[closed, 0, 0], tangent[closed, 1, 1] = self.k[closed, 0], self.k[closed, 1]
         P = np.flatnonzero(s == _PARTIAL)
+        counts = ranks.gather(np.array([len(P)]))
+        first, total = int(np.sum(counts[:ranks.rank])), int(np.sum(counts))
         solved = []
-        for rhs in [-self.R0] + [self.unit(p) for p in P]:
+        for rhs in [-self.R0] + [self.unit(j, first, P) for j in range(total)]:
             x, rep = newton.factorisations.solve(tangent, rhs, self.scale)
             _merge(newton.report, rep)
             solved.append(x)
         tau = np.zeros(0)
-        if len(P):
-            M = np.array([[_jumps(newton, v)[q, 0] for v in solved[1:]] for q in P])
+        if total:
+            M = np.column_stack([ranks.gather(_jumps(newton, v)[P, 0]) for v in solved[1:]])
             try:
-                tau = np.linalg.solve(M, _jumps(newton, self.u0 + solved[0])[P, 0])
+                tau = np.linalg.solve(M, ranks.gather(_jumps(newton, self.u0 + solved[0])[P, 0]))
             except np.linalg.LinAlgError:
                 raise SolverError("the partial points' equations are singular") from None
         u = self.u0 + solved[0] - sum((t * v for t, v in zip(tau, solved[1:])), np.zeros_like(self.u0))
-        return u, _jumps(newton, u), tau, P
+        return u, _jumps(newton, u), tau[first:first + len(P)], P
 
     def moves(self, s: np.ndarray, y: np.ndarray, tau: np.ndarray, P: np.ndarray) -> np.ndarray:
         """The status each point asks for at ``y`` (module doc: beyond the
         band only)."""
-        gap = tol.DECISION_BAND * max(float(np.max(np.abs(y[:, 0]), initial=0.0)), tol.DECISION_FLOOR)
+        ranks = self.ranks
+        gap = tol.DECISION_BAND * max(ranks.max(float(np.max(np.abs(y[:, 0]), initial=0.0))), tol.DECISION_FLOOR)
         want = s.copy()
         want[(s == _CLOSED) & (y[:, 0] > gap)] = _OPEN
         want[(s == _OPEN) & (y[:, 0] < -gap)] = _CLOSED
-        if len(P):
+        if ranks.max(float(len(P))) > 0:  # the band's maximum is a collective
             tie = self.k[:, 1] * y[:, 1]
-            band = tol.DECISION_BAND * max(float(np.max(np.abs(tie), initial=0.0)), tol.DECISION_FLOOR)
+            band = tol.DECISION_BAND * max(ranks.max(float(np.max(np.abs(tie), initial=0.0))), tol.DECISION_FLOOR)
             side = np.sign(tie[P])  # τ within [0, k_T y_T]: beyond the tie closes, beyond 0 opens
             beyond_tie = side * (tau - tie[P]) > band
             beyond_zero = np.where(side != 0, -side * tau, np.abs(tau)) > band
@@ -191,7 +216,7 @@ def partial_answer(newton, k: float) -> bool:
             return False
         want = search.moves(s, y, tau, P)
         moved = np.flatnonzero(want != s)
-        if not len(moved):
+        if search.ranks.all(not len(moved)):
             return _commit(newton, search, k, s, u, y, tau, P, maps)
         for p in moved:
             s[p] = _PARTIAL if s[p] != _PARTIAL and had[p, want[p]] else want[p]
@@ -204,7 +229,8 @@ def _commit(newton, search: _Search, k: float, s, u, y, tau, P, maps: int) -> bo
     tractions, its statuses (a partial point ``STICK``), the warning; False
     where its residual fails RESIDUAL_FAIL or it has no partial point (a
     consistent map Newton missed is Newton's to find, not this search's)."""
-    if not len(P):
+    ranks = search.ranks
+    if ranks.max(float(len(P))) == 0:
         return False
     closed = s == _CLOSED
     traction = np.where(closed[:, None], search.k * y, 0.0)
@@ -214,17 +240,19 @@ def _commit(newton, search: _Search, k: float, s, u, y, tau, P, maps: int) -> bo
     status = np.where(s == _OPEN, OPEN, STICK).astype(np.int8)
     response = LawResponse(traction, tangent, None, status)
     R, _, _ = newton._residual(u, search.b, response)
-    relative = float(np.max(np.abs(R[newton.free]), initial=0.0)) / search.scale
+    relative = ranks.max(float(np.max(np.abs(R[newton.free]), initial=0.0))) / search.scale
     if not relative <= tol.RESIDUAL_FAIL:
         return False
     where = f"scene {newton.scene.name}: increment {k:g} of {newton.scene.increments}"
-    health.check_held(newton.scene, *newton._gamma, status, where)
+    health.check_held(newton.scene, *newton._gamma, ranks.gather(status), where)
     newton._commit(k, search.factors, u, response, maps, [relative])
-    theta = tau / (search.k[P, 1] * y[P, 1])
-    points = newton.itf.points[P]
+    theta = ranks.gather(tau / (search.k[P, 1] * y[P, 1]))
+    points = ranks.gather(np.asarray(newton.itf.points, float).reshape(-1, 2)[P])
+    order = canonical_order(newton.scene.interface, points)  # along Γ: no partition changes it
+    points, theta = points[order], theta[order]
     listed = ", ".join(f"({x:.4g}, {z:.4g}) θ = {t:.3g}" for (x, z), t in zip(points, theta))
     newton.report.warnings.append(
-        f"{where}: Newton found no open/closed map of the unilateral law consistent at every point; {len(P)} point(s) of Γ "
+        f"{where}: Newton found no open/closed map of the unilateral law consistent at every point; {len(points)} point(s) of Γ "
         f"hold y_N = 0 with a share θ of the tie's shear (the law's two branches mixed, Filippov's answer at its "
         f"jump; docs/contact-enforcement.md, \"The unilateral law under shear\"): {listed}")
     return True
