@@ -1422,9 +1422,9 @@ AXIS_PARALLEL = 1e-300
 #: The most maps the unilateral law's partial search solves
 #: (contactcore.newton.partial) before the refusal stands: each map is
 #: 1 + |P| solves of one kept or corrected factorisation.  Measured
-#: 2026-11-28: grader16's `uni` (exact, fe P1, h = 0.05) settles in 8
-#: maps, grader17's `tilt-unil-exact` in 5 (efgm P1, h = 0.05) and 9
-#: (xfem P2, h = 0.025); on grader17's `shear-unilateral` (penalty, zero
+#: 2026-11-28: grader16's `uni` (exact, fe P1, h = 0.05) settles in 9
+#: maps, grader17's `tilt-unil-exact` in 6 (efgm P1, h = 0.05) and 10
+#: (xfem P2, h = 0.025), as the runs' ``iterations`` report them; on grader17's `shear-unilateral` (penalty, zero
 #: normal load, every point of Γ at g_N = 0 in the continuum) the search
 #: does not settle (fe P1 at h = 0.1 reaches a singular map at its 5th;
 #: efgm P1 cycles with 17-27 points partial to the cap, and a 60-map

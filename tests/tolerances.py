@@ -1377,11 +1377,13 @@ LINEAR_PRESSURE = {"fe": 1e-10, "xfem": 1e-10, "efgm": 1e-3}
 #: (concentrated: above it).
 REACH_SPREAD, REACH_CONCENTRATED = 1.0, 10.0
 
-#: The unilateral law's partial answer (contactcore.newton.partial): a
-#: partial point's t_N is θ γ y_N with y_N solved to 0, so round-off of
-#: the map's solve: measured 2.4e-16 of max |t_N| (grader16's `uni`, fe
-#: P1, h = 0.05, 2026-11-28).  Bound far below any discretisation error.
-PARTIAL_NORMAL_ROUNDOFF = 1e-10
+#: The unilateral law's partial search (contactcore.newton.partial): a
+#: map's answer solves the map's own equations (its residual over the
+#: search's scale) to round-off of one direct solve: measured 7.1e-15 and
+#: 5.7e-15 with a prescribed displacement opening Γ at rest (review8's
+#: case, fe P1, h = 0.05, 2026-11-28); 0.128 before each map took its own
+#: residual at rest.
+PARTIAL_MAP_RESIDUAL = 1e-12
 
 #: grader17's `tilt-unil-exact`: where Γ opens in the fe P2 reference at
 #: h = 0.0125 (its open/closed changes at x = 0.081, 0.085, 0.088, an

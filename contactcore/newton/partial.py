@@ -28,7 +28,8 @@ every answer Newton gives is unchanged, bit for bit.
 
 **The linear problem of a map.** With the closed points ``C`` tied
 (tangent ``D``), the open ones free and the partial ones ``P`` carrying
-``τ_P`` along Γ's tangent, from the unloaded ``u₀`` (residual ``R₀``):
+``τ_P`` along Γ's tangent, from the unloaded ``u₀`` (``R₀`` its residual
+under the map's own tractions at ``u₀``, :meth:`_Search.rest`):
 
     J_C u = J_C u₀ − R₀ − Σ_{p∈P} τ_p f_p,   y_N,p(u) = 0  (p ∈ P),
 
@@ -63,7 +64,7 @@ answer lets go is refused (:func:`contactcore.health.check_held`).
 
 Measured 2026-11-28 (docs/contact-enforcement.md, "The unilateral law
 under shear"): ``uni`` fe P1 at h = 0.05, one partial point, θ = 0.0587,
-8 maps; grader17's ``tilt-unil-exact`` efgm P1 at h = 0.05 (one point)
+9 maps; grader17's ``tilt-unil-exact`` efgm P1 at h = 0.05 (one point)
 and xfem P2 at h = 0.025 (two).
 
 **Under mpirun** (fe, xfem: Γ's points split between ranks) the search
@@ -138,11 +139,32 @@ class _Search:
         self.u0 = u0
         R0, forces, data = newton._residual(u0, self.b, newton.itf.respond(newton.law, u0, newton.state))
         first = newton.ranks.max(float(np.max(np.abs(R0[newton.free]), initial=0.0)))
-        self.R0 = R0
         self.scale = max(forces, data, newton._lift(supports), first, newton._least(u0))
         self.k = _stiffness(newton)
         self.m = newton.itf.size
         self.ranks = newton.ranks
+        self.y0 = _jumps(newton, u0)  # not 0 where a prescribed displacement opens Γ at rest
+
+    def response(self, s: np.ndarray, y: np.ndarray, tau: np.ndarray, P: np.ndarray) -> LawResponse:
+        """The map ``s``'s law at the jumps ``y``: a closed point tied
+        (``k y``, tangent ``k``), an open one free, a partial one
+        ``(0, τ)``; statuses open or ``STICK`` (module doc)."""
+        closed = s == _CLOSED
+        traction = np.where(closed[:, None], self.k * y, 0.0)
+        traction[P] = np.column_stack([np.zeros(len(P)), tau])
+        tangent = np.zeros((self.m, 2, 2))
+        tangent[closed, 0, 0], tangent[closed, 1, 1] = self.k[closed, 0], self.k[closed, 1]
+        return LawResponse(traction, tangent, None, np.where(s == _OPEN, OPEN, STICK).astype(np.int8))
+
+    def rest(self, s: np.ndarray) -> np.ndarray:
+        """The residual ``R₀`` at ``u₀`` with the map ``s``'s own
+        tractions there (a partial point's τ apart: its unit forces carry
+        it), so ``J_s (u − u₀) = −R₀ − Σ τ_p f_p`` is the map's linear
+        problem even where ``y(u₀) ≠ 0`` (review8: the law's response at
+        ``u₀`` left a residual of 0.128 of the scale in a map opening
+        points a prescribed displacement had opened)."""
+        R0, _, _ = self.newton._residual(self.u0, self.b, self.response(s, self.y0, np.zeros(0), np.zeros(0, int)))
+        return R0
 
     def unit(self, j: int, first: int, P: np.ndarray) -> np.ndarray:
         """The forces of a unit ``t_T`` at the ``j``-th partial point of
@@ -162,14 +184,12 @@ class _Search:
         of them, ``M`` and ``y_N,P(u₀ + v₀)`` gathered, ``τ`` the same on
         every rank."""
         newton, ranks = self.newton, self.ranks
-        tangent = np.zeros((self.m, 2, 2))
-        closed = s == _CLOSED
-        tangent[closed, 0, 0], tangent[closed, 1, 1] = self.k[closed, 0], self.k[closed, 1]
+        tangent = self.response(s, self.y0, np.zeros(0), np.zeros(0, int)).tangent
         P = np.flatnonzero(s == _PARTIAL)
         counts = ranks.gather(np.array([len(P)]))
         first, total = int(np.sum(counts[:ranks.rank])), int(np.sum(counts))
         solved = []
-        for rhs in [-self.R0] + [self.unit(j, first, P) for j in range(total)]:
+        for rhs in [-self.rest(s)] + [self.unit(j, first, P) for j in range(total)]:
             x, rep = newton.factorisations.solve(tangent, rhs, self.scale)
             _merge(newton.report, rep)
             solved.append(x)
@@ -232,21 +252,25 @@ def _commit(newton, search: _Search, k: float, s, u, y, tau, P, maps: int) -> bo
     ranks = search.ranks
     if ranks.max(float(len(P))) == 0:
         return False
-    closed = s == _CLOSED
-    traction = np.where(closed[:, None], search.k * y, 0.0)
-    traction[P] = np.column_stack([np.zeros(len(P)), tau])
-    tangent = np.zeros((search.m, 2, 2))
-    tangent[closed, 0, 0], tangent[closed, 1, 1] = search.k[closed, 0], search.k[closed, 1]
-    status = np.where(s == _OPEN, OPEN, STICK).astype(np.int8)
-    response = LawResponse(traction, tangent, None, status)
+    response = search.response(s, y, tau, P)
+    status = response.status
     R, _, _ = newton._residual(u, search.b, response)
     relative = ranks.max(float(np.max(np.abs(R[newton.free]), initial=0.0))) / search.scale
     if not relative <= tol.RESIDUAL_FAIL:
         return False
+    # the law's own decision at u, from these statuses, keeps every point
+    # not partial as the search left it (review8: the search's band is
+    # on y_N, Newton's in traction); else no answer is committed
+    decided = newton.itf.respond(newton.law, u, newton.state, status, ranks).status
+    kept = np.ones(search.m, bool)
+    kept[P] = False
+    if not ranks.all(np.array_equal(decided[kept], status[kept])):
+        return False
     where = f"scene {newton.scene.name}: increment {k:g} of {newton.scene.increments}"
     health.check_held(newton.scene, *newton._gamma, ranks.gather(status), where)
     newton._commit(k, search.factors, u, response, maps, [relative])
-    theta = ranks.gather(tau / (search.k[P, 1] * y[P, 1]))
+    tie = search.k[P, 1] * y[P, 1]
+    theta = ranks.gather(np.divide(tau, tie, out=np.zeros_like(tau), where=tie != 0))  # y_T = 0: τ within the band of 0
     points = ranks.gather(np.asarray(newton.itf.points, float).reshape(-1, 2)[P])
     order = canonical_order(newton.scene.interface, points)  # along Γ: no partition changes it
     points, theta = points[order], theta[order]
