@@ -313,18 +313,25 @@ def test_an_exact_law_that_does_not_settle_is_not_told_to_soften_springs():
     assert "1.00e+00" not in str(error) and history in error.details
 
 
-def test_a_unilateral_law_that_does_not_settle_is_pointed_to_coulomb():
-    """Scene C with the unilateral law, xfem P2 at h = 0.1 (exact): no
-    open/closed map settles, because the law drops a point's tangential
-    tie the moment it opens.  The refusal's first line names that and the
-    law that behaves (coulomb with a large μ, which solves the same case);
-    a Coulomb law's refusal does not mention it."""
+def test_a_unilateral_law_that_does_not_settle_is_pointed_to_coulomb(tmp_path):
+    """grader17's shear with the unilateral law (penalty, no normal load),
+    fe P1 at h = 0.1: no open/closed map settles, because the law drops a
+    point's tangential tie the moment it opens, and the partial search
+    finds no answer either (tests/test_unilateral_partial.py).  The
+    refusal's first line names that and the law that behaves (coulomb
+    with a large μ, which solves scene C made unilateral); a Coulomb law's
+    refusal does not mention it.  (Scene C with the unilateral law, xfem
+    P2 at h = 0.1, the case this test refused until 2026-11-28, now
+    answers with one partial point.)"""
     from contactcore.enforcement import make_law
-    from xdolfinx.options import XFEM
+    from xdolfinx.options import FE, XFEM
     from contactcore import discretisation
-    scene = load_scene("C").with_changes(law=make_law({"type": "unilateral", "enforcement": "exact"}))
+    from test_unilateral_partial import SHEAR_UNILATERAL
+    path = tmp_path / "shear.toml"
+    path.write_text(SHEAR_UNILATERAL)
     with pytest.raises(SolverError) as error:
-        discretisation.solve(scene, XFEM(degree=2), 0.1)
+        discretisation.solve(load_scene(path), FE(degree=1), 0.1)
+    scene = load_scene("C").with_changes(law=make_law({"type": "unilateral", "enforcement": "exact"}))
     lines = str(error.value).splitlines()
     assert len(lines) == 2 and "no open/closed map of the unilateral law" in lines[0]
     assert 'type = "coulomb" with a large mu' in lines[0] and "Newton did not converge" in lines[1]
