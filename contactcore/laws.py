@@ -48,6 +48,7 @@ import numpy as np
 
 from . import tolerances as tol
 from .errors import ContactError, SceneError
+from .registry import registered
 
 
 @dataclass(frozen=True)
@@ -228,15 +229,8 @@ def law_contract(cls) -> dict[str, str]:
 def registry(*classes) -> dict:
     """``{name: class}`` of law classes, each held to :func:`law_contract`
     (at import: a law that declares too little is refused before any scene
-    uses it), no name twice."""
-    out = {}
-    for cls in classes:
-        law_contract(cls)
-        if cls.name in out:
-            raise ContactError(f"the law name '{cls.name}' is registered twice ({out[cls.name].__qualname__}, "
-                               f"{cls.__qualname__})")
-        out[cls.name] = cls
-    return out
+    uses it), no name twice (:func:`contactcore.registry.registered`)."""
+    return registered("law", law_contract, classes)
 
 
 class _Law:

@@ -45,6 +45,7 @@ from typing import ClassVar
 import numpy as np
 
 from ..errors import ContactError
+from ..registry import registered
 
 
 @dataclass(frozen=True)
@@ -247,15 +248,8 @@ def load_contract(cls) -> dict[str, str]:
 def load_registry(*classes) -> dict:
     """``{name: class}`` of load classes, each held to :func:`load_contract`
     (at import: a load that declares too little is refused before any
-    scene uses it), no name twice."""
-    out = {}
-    for cls in classes:
-        load_contract(cls)
-        if cls.name in out:
-            raise ContactError(f"the load name '{cls.name}' is registered twice ({out[cls.name].__qualname__}, "
-                               f"{cls.__qualname__})")
-        out[cls.name] = cls
-    return out
+    scene uses it), no name twice (:func:`contactcore.registry.registered`)."""
+    return registered("load", load_contract, classes)
 
 
 #: Every load type by the name a scene file gives it.
