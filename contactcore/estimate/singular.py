@@ -217,14 +217,10 @@ def singular_points(scene: Scene) -> np.ndarray:
     return np.vstack(pts) if pts else np.zeros((0, 2))
 
 
-#: Outward unit normals of a rectangle's edges.
-EDGE_NORMALS = {"left": (-1.0, 0.0), "right": (1.0, 0.0), "bottom": (0.0, -1.0), "top": (0.0, 1.0)}
-
-
 def _holds_normal(scene: Scene, edge: str) -> bool:
     """Whether a support on ``edge`` holds its normal component (a
     symmetry plane: reflected across it u_n is odd, so σ_nt is odd too)."""
-    axis = "x" if EDGE_NORMALS[edge][0] else "y"
+    axis = "x" if scene.domain.outward_normal(edge)[0] else "y"
     return any(s.boundary == edge and axis in s.fix for s in scene.supports)
 
 
@@ -235,7 +231,7 @@ def _sheared(scene: Scene, edge: str, p: np.ndarray) -> bool:
     the traction at the reflected point, which then stays singular
     (review8); across one that holds the tangential component σ_nt is
     even and the traction extends smoothly."""
-    normal = np.asarray(EDGE_NORMALS[edge], float)
+    normal = scene.domain.outward_normal(edge)
     for load in scene.loads:
         if acts_on(load) == EDGE and load.boundary == edge:
             t = edge_traction(scene, load, p[:1], p[1:2], normal[None])[0]

@@ -156,15 +156,16 @@ class _Search:
         tangent[closed, 0, 0], tangent[closed, 1, 1] = self.k[closed, 0], self.k[closed, 1]
         return LawResponse(traction, tangent, None, np.where(s == _OPEN, OPEN, STICK).astype(np.int8))
 
-    def rest(self, s: np.ndarray) -> np.ndarray:
+    def rest(self, s: np.ndarray) -> tuple[np.ndarray, LawResponse]:
         """The residual ``R₀`` at ``u₀`` with the map ``s``'s own
-        tractions there (a partial point's τ apart: its unit forces carry
+        tractions there, and that response (its tangent the map's) (a partial point's τ apart: its unit forces carry
         it), so ``J_s (u − u₀) = −R₀ − Σ τ_p f_p`` is the map's linear
         problem even where ``y(u₀) ≠ 0`` (review8: the law's response at
         ``u₀`` left a residual of 0.128 of the scale in a map opening
         points a prescribed displacement had opened)."""
-        R0, _, _ = self.newton._residual(self.u0, self.b, self.response(s, self.y0, np.zeros(0), np.zeros(0, int)))
-        return R0
+        at_rest = self.response(s, self.y0, np.zeros(0), np.zeros(0, int))
+        R0, _, _ = self.newton._residual(self.u0, self.b, at_rest)
+        return R0, at_rest
 
     def unit(self, j: int, first: int, P: np.ndarray) -> np.ndarray:
         """The forces of a unit ``t_T`` at the ``j``-th partial point of
@@ -184,12 +185,13 @@ class _Search:
         of them, ``M`` and ``y_N,P(u₀ + v₀)`` gathered, ``τ`` the same on
         every rank."""
         newton, ranks = self.newton, self.ranks
-        tangent = self.response(s, self.y0, np.zeros(0), np.zeros(0, int)).tangent
+        R0, at_rest = self.rest(s)
+        tangent = at_rest.tangent
         P = np.flatnonzero(s == _PARTIAL)
         counts = ranks.gather(np.array([len(P)]))
         first, total = int(np.sum(counts[:ranks.rank])), int(np.sum(counts))
         solved = []
-        for rhs in [-self.rest(s)] + [self.unit(j, first, P) for j in range(total)]:
+        for rhs in [-R0] + [self.unit(j, first, P) for j in range(total)]:
             x, rep = newton.factorisations.solve(tangent, rhs, self.scale)
             _merge(newton.report, rep)
             solved.append(x)
