@@ -48,7 +48,7 @@ import numpy as np
 
 from . import tolerances as tol
 from .errors import ContactError, SceneError
-from .registry import registered
+from .registry import declared_dimensions, registered
 
 
 @dataclass(frozen=True)
@@ -200,22 +200,8 @@ def law_contract(cls) -> dict[str, str]:
     ``frictional`` without the parameter ``mu``."""
     name = getattr(cls, "name", cls.__name__)
     where = f"the '{name}' law ({cls.__module__}.{cls.__qualname__})"
-    parameters = getattr(cls, "parameters", None)
-    if not isinstance(parameters, tuple) or not all(isinstance(p, str) for p in parameters):
-        raise ContactError(f"{where}: declares no tuple 'parameters' of its parameters' names")
-    dims = getattr(cls, "dimensions", None)
-    if not isinstance(dims, dict):
-        raise ContactError(f"{where}: declares no 'dimensions' (parameter -> one of {', '.join(DIMENSIONS)}): "
-                           "the scaling could not make its parameters dimensionless")
-    for p in parameters:
-        if dims.get(p) not in DIMENSIONS:
-            raise ContactError(f"{where}: declares no dimension for its parameter '{p}' (got {dims.get(p)!r}; one "
-                               f"of {', '.join(DIMENSIONS)}): unscaled, it would reach every method in the "
-                               "user's units against a dimensionless scene, a silently wrong answer")
-    extra = sorted(set(dims) - set(parameters))
-    if extra:
-        raise ContactError(f"{where}: declares a dimension for '{extra[0]}', which is not among its parameters "
-                           f"({', '.join(parameters)})")
+    dims = declared_dimensions(cls, where, DIMENSIONS)
+    parameters = cls.parameters
     for cap in CAPABILITIES:
         if not isinstance(getattr(cls, cap, None), bool):
             raise ContactError(f"{where}: declares no '{cap}' (True or False; contactcore.laws' module doc): the "
@@ -223,7 +209,7 @@ def law_contract(cls) -> dict[str, str]:
     if cls.frictional and "mu" not in parameters:
         raise ContactError(f"{where}: is frictional but has no parameter 'mu', Coulomb's coefficient the health "
                            "checks read")
-    return dict(dims)
+    return dims
 
 
 def registry(*classes) -> dict:

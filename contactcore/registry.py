@@ -20,3 +20,29 @@ def registered(kind: str, contract: Callable, classes) -> dict:
                                f"{cls.__qualname__})")
         out[cls.name] = cls
     return out
+
+
+def declared_dimensions(cls, where: str, allowed) -> dict[str, str]:
+    """The ``{parameter: dimension}`` a law or load class ``cls`` declares
+    (its tuple ``parameters``, its dict ``dimensions``), each dimension
+    one of ``allowed``, or a ContactError naming ``where`` and what is
+    missing: no tuple of names, no dict, a parameter without an allowed
+    dimension (unscaled, it would reach every method in the user's units
+    against a dimensionless scene), a dimension for no parameter."""
+    parameters = getattr(cls, "parameters", None)
+    if not isinstance(parameters, tuple) or not all(isinstance(p, str) for p in parameters):
+        raise ContactError(f"{where}: declares no tuple 'parameters' of its parameters' names")
+    dims = getattr(cls, "dimensions", None)
+    if not isinstance(dims, dict):
+        raise ContactError(f"{where}: declares no 'dimensions' (parameter -> one of {', '.join(allowed)}): "
+                           "the scaling could not make its parameters dimensionless")
+    for p in parameters:
+        if dims.get(p) not in allowed:
+            raise ContactError(f"{where}: declares no dimension for its parameter '{p}' (got {dims.get(p)!r}; one "
+                               f"of {', '.join(allowed)}): unscaled, it would reach every method in the "
+                               "user's units against a dimensionless scene, a silently wrong answer")
+    extra = sorted(set(dims) - set(parameters))
+    if extra:
+        raise ContactError(f"{where}: declares a dimension for '{extra[0]}', which is not among its parameters "
+                           f"({', '.join(parameters)})")
+    return dict(dims)

@@ -45,7 +45,7 @@ from typing import ClassVar
 import numpy as np
 
 from ..errors import ContactError
-from ..registry import registered
+from ..registry import declared_dimensions, registered
 
 
 @dataclass(frozen=True)
@@ -215,9 +215,8 @@ def load_contract(cls) -> dict[str, str]:
     for needed in (_PLACES[kind], "path"):
         if needed not in fields:
             raise ContactError(f"{where}: acts on {'an edge' if kind == EDGE else 'a body'} but has no field '{needed}'")
-    parameters = getattr(cls, "parameters", None)
-    if not isinstance(parameters, tuple) or not all(isinstance(p, str) for p in parameters):
-        raise ContactError(f"{where}: declares no tuple 'parameters' of its parameters' names")
+    dims = declared_dimensions(cls, where, LOAD_DIMENSIONS)
+    parameters = cls.parameters
     undeclared = [f for f in fields if f not in (_PLACES[kind], "path") and f not in parameters]
     if undeclared:
         raise ContactError(f"{where}: its field '{undeclared[0]}' is not among its declared parameters "
@@ -225,24 +224,13 @@ def load_contract(cls) -> dict[str, str]:
     missing = [p for p in parameters if p not in fields]
     if missing:
         raise ContactError(f"{where}: declares the parameter '{missing[0]}', which is not one of its fields")
-    dims = getattr(cls, "dimensions", None)
-    if not isinstance(dims, dict):
-        raise ContactError(f"{where}: declares no 'dimensions' (parameter -> one of {', '.join(LOAD_DIMENSIONS)})")
-    for p in parameters:
-        if dims.get(p) not in LOAD_DIMENSIONS:
-            raise ContactError(f"{where}: declares no dimension for its parameter '{p}' (got {dims.get(p)!r}; one "
-                               f"of {', '.join(LOAD_DIMENSIONS)}): unscaled, it would reach every method in the "
-                               "user's units against a dimensionless scene, a silently wrong answer")
-    extra = sorted(set(dims) - set(parameters))
-    if extra:
-        raise ContactError(f"{where}: declares a dimension for '{extra[0]}', which is not among its parameters")
     if not any(dims[p] in MAGNITUDES for p in parameters):
         raise ContactError(f"{where}: has no parameter of a magnitude ({', '.join(MAGNITUDES)}): its size and "
                            "its load path's factor would act on nothing")
     if not callable(getattr(cls, "field", None)):
         raise ContactError(f"{where}: declares no formula 'field' (the {'traction' if kind == EDGE else 'body force'} "
                            "at points; module doc)")
-    return dict(dims)
+    return dims
 
 
 def load_registry(*classes) -> dict:
