@@ -343,6 +343,7 @@ def solve(scene, discretisation: Discretisation, h: float | None = None, *, pape
     report.warnings += health.friction_excess_warnings(scene, path, stress_size, built.h)
     report.warnings += health.closed_tension_warnings(scene, path, stress_size)
     report.warnings += health.hinge_warnings(scene, path, stress_size, built.h)
+    report.warnings += health.grazing_warnings(scene, path, stress_size)
     fields = built.fields(x)
     strain_unit = Scales.of(scene.user).strain if scene.source is not None else 1.0  # ε = (U/L) σ'/E'
     report.warnings += health.large_slip_warnings(scene, path, strain_unit)  # a jump U/L of a length

@@ -42,7 +42,10 @@ One idea a module, each with its maths and sources:
   a body tipped onto a frictional hinge, slip beyond small sliding);
 - :mod:`~contactcore.health.equilibrium`: whether the loads leave an
   equilibrium (Coulomb's cone on a body held by Γ alone, a body pulled
-  off Γ, the unilateral law's tie).
+  off Γ, the unilateral law's tie);
+- :mod:`~contactcore.health.grazing`: the warning on a ``unilateral``
+  answer whose open zone is the mesh's (Γ opened by the discretisation's
+  error in g_N while its closed points carry shear).
 
 The arrows: ``equilibrium`` → ``restraint`` → ``stiffness``;
 ``equilibrium`` → ``residual``.
@@ -55,6 +58,7 @@ stay in their home.
 from .caveats import (closed_tension_warnings, dundurs_beta, dundurs_warnings, friction_excess_warnings,
                       hinge_warnings, large_slip_warnings, material_warnings, traction_locking_warnings)
 from .equilibrium import beyond_cone, friction_demand, tie_cause
+from .grazing import grazing_warnings, grazing_zone
 from .residual import (DIVERGED, NOT_CONVERGED, SHORT_OF_CHECK, backward_error, check_residual, options_chose,
                        relative_residual)
 from .restraint import FreeBody, check_held, check_restraint, lets_go, modes_centre, slips_free
@@ -75,4 +79,6 @@ __all__ = [
     "hinge_warnings", "large_slip_warnings", "traction_locking_warnings",
     # equilibrium
     "beyond_cone", "friction_demand", "tie_cause",
+    # grazing
+    "grazing_warnings", "grazing_zone",
 ]

@@ -1,0 +1,108 @@
+"""A warning on an answer of the ``unilateral`` law whose open zone is the
+mesh's: Γ opened by the discretisation's error in ``g_N``, not by the loads.
+
+The ``unilateral`` law ties a closed point (``t_T = k_T g_T``, exactly
+``γ y_T``) and frees an open one (``t = 0``), so its tangential traction
+jumps at ``g_N = 0``.  Where no load presses Γ across (grader17's
+``shear-unilateral``: layers sheared by body forces, closed form
+``g_N = 0``, ``t_N = 0``, ``t_T = 0.047`` on all of Γ) every point sits on
+that switch, and the sign of each point's ``g_N`` is the discretisation's
+error (1e-4 to 1e-3 of the jump in fe P1, docs/contact-enforcement.md, "No
+normal load: Γ grazes everywhere").  Where Newton then finds a map, the
+points whose error is a tension open, the others carry their shear, and
+the answer's tractions are the mesh's: fe P1 at h = 0.05 opened 9 of 60
+points by at most 1.1e-3 of the jump and put ``t_T`` 31 % above the
+closed form, silently.
+
+:func:`grazing_warnings` reads the converged path (gathered: the same on
+every rank) and warns where, at some increment,
+
+* Γ is open somewhere, and its largest opening ``max g_N`` over the open
+  points is below ``GRAZING_OPENING`` of the displacement scale
+  ``max(U, max |g|)`` (U the scene's displacement unit, 1 once
+  dimensionless; ``max |g|`` Γ's largest jump, either component, at that
+  increment): the scale the law's decisions already use
+  (:class:`contactcore.laws.Decision`'s ``size``); and
+* Γ's closed points carry a shear ``max |t_T|`` of at least
+  ``GRAZING_SHEAR`` of the loads' stress (``stress_size``,
+  :func:`contactcore.scaling.softer_stress`): the open/closed map then
+  moves the tractions (a Γ whose every traction is the discretisation's
+  noise, as ``tests/scenes/hung_on_gamma.toml``, opens by as little but its
+  answer, ``t = 0``, is the same open or closed).
+
+Both are ratios of a discretisation's error to a load's scale, decided
+with a margin of 4 or more on every case measured (the constants'
+notes), never on round-off.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from .. import tolerances as tol
+from ..laws import OPEN
+
+#: An open zone is grazing where its largest opening is below this share of
+#: the displacement scale max(U, max |g|).  Measured 2026-11-28 (the largest
+#: open g_N over that scale, final increment; helper `grazing`'s report):
+#: grader17's `shear-unilateral` in fe P1 at h = 0.05, the only answer of
+#: its unpressed or lightly pressed variants in fe P1 (the others refused),
+#: 1.08e-3 (top traction 0), 1.15e-3 and 0.96e-3 (pressed by 0.02 and 0.1 of
+#: the shear); legitimate openings: tests/scenes/tilt_unil_exact.toml 0.053
+#: to 0.067 (fe, xfem, efgm P1, h = 0.05), the same on springs k_N = 1000,
+#: k_T = 40 (whose tie's g_T sets the scale) 0.031, scene C made unilateral
+#: 0.046 to 0.059 (exact, fe, xfem, efgm at h = 0.1) and 0.45 on springs,
+#: grader16's `uni` 0.59 to 0.62, tests/scenes/partial_unilateral.toml 1.0,
+#: presspull pulled 0.5.  5e-3 lies 4.3 times above the largest grazing
+#: share and 6 times below the smallest legitimate one.
+GRAZING_OPENING = 5e-3
+
+#: A grazing open zone is warned of only where Γ's closed points carry a
+#: shear of at least this share of the loads' stress (softer_stress): the
+#: tie's shear is what the open/closed map moves.  Measured 2026-11-28:
+#: `shear-unilateral` fe P1 h = 0.05 0.205 (0.192 and 0.199 pressed), the
+#: hung body of tests/scenes/hung_on_gamma.toml (closed form t = 0, every
+#: traction on Γ the discretisation's, opening 7e-6 to 5.2e-3 of the scale)
+#: at most 0.0107 (fe P1 at h = 0.1, 0.2, 0.25; efgm P1, P2 at 0.2: 2.3e-5
+#: to 0.0107).  5e-2 lies 3.8 times below the one and 4.7 times above the
+#: other.
+GRAZING_SHEAR = 5e-2
+
+
+def grazing_zone(scene, path, stress_size: float = 0.0) -> tuple[int, int, float, float] | None:
+    """The first increment of a converged ``path`` (an
+    :class:`~contactcore.interface_path.InterfacePath`) whose open zone is
+    grazing (module doc): ``(increment, open points, points, opening
+    share)``, or None (not the ``unilateral`` law, or no such increment)."""
+    law = scene.law
+    if path is None or not law.unilateral or law.frictional or law.has_history or law.is_linear:
+        return None
+    for step in path.steps:
+        status = np.asarray(step.status)
+        opened = status == OPEN
+        if not opened.any() or opened.all():
+            continue
+        g = np.asarray(step.jump, float).reshape(-1, 2)
+        t = np.asarray(step.traction, float).reshape(-1, 2)
+        scale = max(1.0, float(np.max(np.abs(g))))  # U = 1 once dimensionless
+        share = float(np.max(g[opened, 0])) / scale
+        shear = float(np.max(np.abs(t[~opened, 1])))
+        if share < GRAZING_OPENING * (1 - tol.LIMIT_ROUNDOFF) and shear >= GRAZING_SHEAR * stress_size:
+            return step.step, int(np.count_nonzero(opened)), len(status), share
+    return None
+
+
+def grazing_warnings(scene, path, stress_size: float = 0.0) -> list[str]:
+    """One line where :func:`grazing_zone` finds a grazing open zone, naming its
+    increment, how many points opened and by how much, and what to compare
+    with; none otherwise."""
+    found = grazing_zone(scene, path, stress_size)
+    if found is None:
+        return []
+    step, count, points, share = found
+    return [f"Γ opens at {count} of {points} points (increment {step:g}) by at most {share:.2g} of the displacement "
+            f"jump's scale, below {GRAZING_OPENING:g} (GRAZING_OPENING), while its closed points carry shear: an "
+            "opening of the discretisation's size, where the loads leave Γ near g_N = 0 and the unilateral law "
+            "ties a closed point's shear and frees an open one's, so the open/closed map is the mesh's, not the "
+            "load's, and so are the tractions (grader17's shear-unilateral, fe P1 at h = 0.05: 9 points open, "
+            "t_T 31 % above the closed form); compare with type = \"linear\" (the tie without opening) or at h/2 "
+            "(docs/contact-enforcement.md, \"No normal load: Γ grazes everywhere\")"]
