@@ -1432,3 +1432,31 @@ AXIS_PARALLEL = 1e-300
 #: h = 0.025: 44-91 partial over its last maps), and the refusal stands,
 #: so the cap is what a refusal costs (3.3 CPU s there).
 PARTIAL_SEARCH_MAPS = 30
+
+#: The unilateral law's grazing open zone (contactcore.health.grazing): an
+#: open zone is grazing where its largest opening is below this share of
+#: the displacement scale max(U, max |g|).  Measured 2026-11-28 (the largest
+#: open g_N over that scale, final increment; docs/contact-enforcement-log.md,
+#: "Γ grazing: the opening against the jump's scale"):
+#: grader17's `shear-unilateral` in fe P1 at h = 0.05, the only answer of
+#: its unpressed or lightly pressed variants in fe P1 (the others refused),
+#: 1.08e-3 (top traction 0), 1.15e-3 and 0.96e-3 (pressed by 0.02 and 0.1 of
+#: the shear); legitimate openings: tests/scenes/tilt_unil_exact.toml 0.053
+#: to 0.067 (fe, xfem, efgm P1, h = 0.05), the same on springs k_N = 1000,
+#: k_T = 40 (whose tie's g_T sets the scale) 0.031, scene C made unilateral
+#: 0.046 to 0.059 (exact, fe, xfem, efgm at h = 0.1) and 0.45 on springs,
+#: grader16's `uni` 0.59 to 0.62, tests/scenes/partial_unilateral.toml 1.0,
+#: presspull pulled 0.5.  5e-3 lies 4.3 times above the largest grazing
+#: share and 6 times below the smallest legitimate one.
+GRAZING_OPENING = 5e-3
+
+#: A grazing open zone is warned of only where Γ's closed points carry a
+#: shear of at least this share of the loads' stress (softer_stress): the
+#: tie's shear is what the open/closed map moves.  Measured 2026-11-28:
+#: `shear-unilateral` fe P1 h = 0.05 0.205 (0.192 and 0.199 pressed), the
+#: hung body of tests/scenes/hung_on_gamma.toml (closed form t = 0, every
+#: traction on Γ the discretisation's, opening 7e-6 to 5.2e-3 of the scale)
+#: at most 0.0107 (fe P1 at h = 0.1, 0.2, 0.25; efgm P1 at 0.1, 0.2 and P2
+#: at 0.2: 2.3e-5 to 0.0107).  5e-2 lies 3.8 times below the one and 4.7 times above the
+#: other.
+GRAZING_SHEAR = 5e-2

@@ -17,7 +17,8 @@ import pytest
 
 from contactcore import discretisation, load_scene
 from contactcore.enforcement import make_law
-from contactcore.health.grazing import GRAZING_OPENING, GRAZING_SHEAR, grazing_warnings, grazing_zone
+from contactcore.health.grazing import grazing_warnings, grazing_zone
+from contactcore.tolerances import GRAZING_OPENING, GRAZING_SHEAR
 from contactcore.laws import OPEN, STICK
 
 from test_unilateral_partial import SHEAR_UNILATERAL

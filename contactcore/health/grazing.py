@@ -32,7 +32,7 @@ every rank) and warns where, at some increment,
 
 Both are ratios of a discretisation's error to a load's scale, decided
 with a margin of 4 or more on every case measured (the constants'
-notes), never on round-off.
+notes in contactcore/tolerances.py), never on round-off.
 """
 from __future__ import annotations
 
@@ -40,32 +40,6 @@ import numpy as np
 
 from .. import tolerances as tol
 from ..laws import OPEN
-
-#: An open zone is grazing where its largest opening is below this share of
-#: the displacement scale max(U, max |g|).  Measured 2026-11-28 (the largest
-#: open g_N over that scale, final increment; helper `grazing`'s report):
-#: grader17's `shear-unilateral` in fe P1 at h = 0.05, the only answer of
-#: its unpressed or lightly pressed variants in fe P1 (the others refused),
-#: 1.08e-3 (top traction 0), 1.15e-3 and 0.96e-3 (pressed by 0.02 and 0.1 of
-#: the shear); legitimate openings: tests/scenes/tilt_unil_exact.toml 0.053
-#: to 0.067 (fe, xfem, efgm P1, h = 0.05), the same on springs k_N = 1000,
-#: k_T = 40 (whose tie's g_T sets the scale) 0.031, scene C made unilateral
-#: 0.046 to 0.059 (exact, fe, xfem, efgm at h = 0.1) and 0.45 on springs,
-#: grader16's `uni` 0.59 to 0.62, tests/scenes/partial_unilateral.toml 1.0,
-#: presspull pulled 0.5.  5e-3 lies 4.3 times above the largest grazing
-#: share and 6 times below the smallest legitimate one.
-GRAZING_OPENING = 5e-3
-
-#: A grazing open zone is warned of only where Γ's closed points carry a
-#: shear of at least this share of the loads' stress (softer_stress): the
-#: tie's shear is what the open/closed map moves.  Measured 2026-11-28:
-#: `shear-unilateral` fe P1 h = 0.05 0.205 (0.192 and 0.199 pressed), the
-#: hung body of tests/scenes/hung_on_gamma.toml (closed form t = 0, every
-#: traction on Γ the discretisation's, opening 7e-6 to 5.2e-3 of the scale)
-#: at most 0.0107 (fe P1 at h = 0.1, 0.2, 0.25; efgm P1, P2 at 0.2: 2.3e-5
-#: to 0.0107).  5e-2 lies 3.8 times below the one and 4.7 times above the
-#: other.
-GRAZING_SHEAR = 5e-2
 
 
 def grazing_zone(scene, path, stress_size: float = 0.0) -> tuple[int, int, float, float] | None:
@@ -86,7 +60,7 @@ def grazing_zone(scene, path, stress_size: float = 0.0) -> tuple[int, int, float
         scale = max(1.0, float(np.max(np.abs(g))))  # U = 1 once dimensionless
         share = float(np.max(g[opened, 0])) / scale
         shear = float(np.max(np.abs(t[~opened, 1])))
-        if share < GRAZING_OPENING * (1 - tol.LIMIT_ROUNDOFF) and shear >= GRAZING_SHEAR * stress_size:
+        if share < tol.GRAZING_OPENING * (1 - tol.LIMIT_ROUNDOFF) and shear >= tol.GRAZING_SHEAR * stress_size:
             return step.step, int(np.count_nonzero(opened)), len(status), share
     return None
 
@@ -100,7 +74,7 @@ def grazing_warnings(scene, path, stress_size: float = 0.0) -> list[str]:
         return []
     step, count, points, share = found
     return [f"Γ opens at {count} of {points} points (increment {step:g}) by at most {share:.2g} of the displacement "
-            f"jump's scale, below {GRAZING_OPENING:g} (GRAZING_OPENING), while its closed points carry shear: an "
+            f"jump's scale, below {tol.GRAZING_OPENING:g} (GRAZING_OPENING), while its closed points carry shear: an "
             "opening of the discretisation's size, where the loads leave Γ near g_N = 0 and the unilateral law "
             "ties a closed point's shear and frees an open one's, so the open/closed map is the mesh's, not the "
             "load's, and so are the tractions (grader17's shear-unilateral, fe P1 at h = 0.05: 9 points open, "
