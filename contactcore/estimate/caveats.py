@@ -66,6 +66,7 @@ from ..geometry import Rectangle
 from ..profiles import ProfileData
 from ..scaling import Sizes
 from ..scene import Scene
+from .energy import EnergyEstimate
 from .extrapolation import QuantityEstimate, cell_scale_part, rms, sample_groups
 from .orders import GAPS, MESHFREE, RECOVERED_STRESS, STRESSES, TRACTIONS, _exact, lower_end
 from .singular import exact_interface_ends, far_from_singular, singular_points, stress_singular_points
@@ -475,7 +476,18 @@ def curved_layer(scene: Scene, levels: list[list[ProfileData]], method: str, deg
     on four sets (2026-11-28), so the warning gives no direction.  Empty for a straight Γ or another method.
     A sample at h within :data:`~contactcore.tolerances.GEOMETRY`
     (relative) counts, so round-off does not decide it."""
-    if (method, degree) not in RECOVERED_STRESS or scene.interface.straight_in(scene.domain):
+    if (method, degree) not in RECOVERED_STRESS:
+        return []
+    return _near_curved_gamma(scene, levels, h, exclude, STRESSES)
+
+
+def _near_curved_gamma(scene: Scene, levels: list[list[ProfileData]], h: float, exclude: float,
+                       quantities: tuple[str, ...]) -> list[str]:
+    """The ``PID:Q`` (``Q`` in ``quantities``) of the profiles with a sample
+    kept (at least ``exclude`` from the singular points) within ``h`` of a
+    curved Γ (none for a straight one); a sample at ``h`` within
+    :data:`~contactcore.tolerances.GEOMETRY` (relative) counts."""
+    if scene.interface.straight_in(scene.domain):
         return []
     names = []
     for prof in levels[-1]:
@@ -483,8 +495,103 @@ def curved_layer(scene: Scene, levels: list[list[ProfileData]], method: str, deg
         kept = far_from_singular(scene, xy, exclude)
         near = np.abs(scene.interface.signed_distance(xy[kept])) <= h * (1 + tol.GEOMETRY)
         if np.any(near):
-            names += [f"{prof.id}:{q}" for q in prof.names[3:] if q in STRESSES]
+            names += [f"{prof.id}:{q}" for q in prof.names[3:] if q in quantities]
     return names
+
+
+#: The (method, degree) whose bulk displacements next to a curved Γ
+#: :func:`curved_displacements` names: xfem P1, whose cut cells replace
+#: the circle by a chord per cell, differently in the two meshes.  On
+#: grader21's Lamé disc its ray ``u_y`` read 2.37 (h = 0.05 → 0.025); on a
+#: rod of radius 0.2 in the closed form's pressurised disc (seven rays
+#: from the centre at 15° steps, h = 0.05 → 0.025, 2026-11-28) its
+#: displacements read 0.467-1.73, on the closed forms' rods 1.09-1.51
+#: (docs/error-estimates.md, "Which estimates to warn of").
+CURVED_DISPLACEMENTS = {("xfem", 1)}
+
+#: The bulk displacements.
+DISPLACEMENTS = ("ux", "uy")
+
+
+def curved_displacements(scene: Scene, levels: list[list[ProfileData]], method: str, degree: int, h: float,
+                         exclude: float) -> list[str]:
+    """The ``PID:Q`` of the bulk displacements (:data:`DISPLACEMENTS`) of
+    :data:`CURVED_DISPLACEMENTS` (xfem P1) on profiles with a sample kept
+    (at least ``exclude`` from the singular points) within one cell of the
+    coarser run, ``h``, of a curved Γ.  Each mesh cuts the circle in its
+    own chords, so the two runs' difference there is not the smooth
+    ``C h^p`` of Richardson: off either way, measured 0.467-2.37 (the
+    constant's note).  Empty for a straight Γ or another method."""
+    if (method, degree) not in CURVED_DISPLACEMENTS:
+        return []
+    return _near_curved_gamma(scene, levels, h, exclude, DISPLACEMENTS)
+
+
+def curved_displacement_warning(names: list[str], h: float, length: str = "m") -> list[str]:
+    """One line naming :func:`curved_displacements`' quantities, without a
+    direction; lengths in the scene's unit named ``length``."""
+    if not names:
+        return []
+    return [f"{', '.join(names)}: xfem P1's displacements on a profile within a cell ({h:g} {length}) of the "
+            f"curved Γ: each mesh cuts the circle in its own chords, so the runs' difference is not a smooth "
+            f"power of h there and the estimate is not to be trusted, either way (measured 0.467-2.37 times the "
+            f"error): degree 2 avoids this"]
+
+
+#: The share (RMS over the kept samples) of a two-run difference at the
+#: scale of the coarse run's cells above which :func:`split_cell_share`
+#: names a polluted range's estimate.  That part is estimated at the
+#: range's upper order (:func:`~contactcore.estimate.extrapolation.profile_estimates`);
+#: where it converges slower, the estimate is too small: scene A's A5
+#: fe P2 ``g_N`` (share 0.545, that part converging at 2.29 against 3,
+#: effectivity 0.485) and xfem P2 (0.454, 0.534).  The shares measured on
+#: A, B, C at h = 0.05 → 0.025 (2026-11-28): degree 1 0.07-0.31, degree-2
+#: ``g_T`` 0.08-0.12, degree-2 ``g_N`` on A 0.45-0.55, degree-2 tractions
+#: on C 0.73-0.90 (effectivities 1.27-1.77: there that part converges at
+#: 3).  0.4 lies between the degree-1 largest and the degree-2 ``g_N``.
+SPLIT_CELL_SHARE = 0.4
+
+
+def split_cell_share(scene: Scene, levels: list[list[ProfileData]],
+                     estimates: dict[str, dict[str, QuantityEstimate]], exclude: float) -> dict[str, float]:
+    """``{PID:Q: share}`` of the two-run estimates of a range pollution
+    widened whose difference lies at the scale of the coarse run's cells
+    by a share of at least :data:`SPLIT_CELL_SHARE` (the estimate's
+    ``cell_scale``): that part is taken at the range's upper order, which
+    two runs cannot check; where it converges slower the estimate is too
+    small (A5's fe P2 ``g_N``, 0.485), where it does not it is right
+    (C4's degree-2 tractions, 1.27-1.77).  A difference at round-off (of
+    the quantity, :data:`~contactcore.tolerances.ESTIMATE_ROUNDOFF`, or of
+    the scene's own size of its kind,
+    :data:`~contactcore.tolerances.NEGLIGIBLE_SHARE` of
+    :class:`~contactcore.scaling.Sizes`) shows nothing and is not named."""
+    sizes, out = Sizes.of(scene), {}
+    for coarse, fine in zip(levels[-2], levels[-1]):
+        xy = np.column_stack([fine.columns["x"], fine.columns["y"]])
+        kept = far_from_singular(scene, xy, exclude)
+        for q in fine.names[3:]:
+            e = estimates.get(fine.id, {}).get(q)
+            if e is None or e.observed or e.cell_scale is None or e.cell_scale < SPLIT_CELL_SHARE:
+                continue
+            d = rms((fine.columns[q] - coarse.columns[q])[kept]) if np.any(kept) else 0.0
+            scale = max(float(np.max(np.abs(fine.columns[q]))), float(np.max(np.abs(coarse.columns[q]))))
+            own = sizes.stress if q in STRESSES + TRACTIONS else sizes.displacement
+            if d > max(tol.ESTIMATE_ROUNDOFF * scale, tol.NEGLIGIBLE_SHARE * own):
+                out[f"{fine.id}:{q}"] = float(e.cell_scale)
+    return out
+
+
+def split_cell_share_warning(found: dict[str, float]) -> list[str]:
+    """One line naming :func:`split_cell_share`'s quantities, each with its
+    share, without a direction (measured 0.485-1.77 on the six entries it
+    names on A, B, C)."""
+    if not found:
+        return []
+    names = ", ".join(f"{k} ({v:.2f})" for k, v in found.items())
+    return [f"{names}: most of the runs' difference (share in brackets) varies at the scale of the coarse run's "
+            f"cells, which the estimate takes at the upper order of a range the singular points widened; two runs "
+            f"cannot check that order, and where that part converges slower the estimate is too small: an "
+            f"indication only, either way (measured 0.485-1.77 times the error) (--estimate 3 observes the order)"]
 
 
 def curved_layer_warning(names: list[str], h: float, length: str = "m") -> list[str]:
@@ -502,6 +609,36 @@ def curved_layer_warning(names: list[str], h: float, length: str = "m") -> list[
 #: :attr:`~contactcore.estimate.runs.Estimate.unsettled` (a profile id
 #: ``energy``, quantity ``‖σ‖_E``, as the effectivity table names it).
 ENERGY_KEY = "energy:‖σ‖_E"
+
+
+#: The relative Zienkiewicz–Zhu estimate (``eta`` over ``‖σ_h‖_E``) of
+#: :data:`QUADRATURE_ENERGY` below which :func:`quadrature_energy` names
+#: the energy estimate.  EFGM P1 reproduces a piecewise-linear field but
+#: for its Gauss quadrature; where the field is nearly so, that quadrature's
+#: error is what is left, and a recovery of the run's own stress does not
+#: see it.  On the closed forms (2026-11-28, EFGM P1): the layered slip
+#: 1.83e-5 (effectivity 0.41), the patch 3.98e-5 (0.76), the rods and the
+#: quadratic layers 1.70e-4 to 1.93e-3 (0.78-1.00); 1e-4 lies between.
+QUADRATURE_ENERGY_SHARE = 1e-4
+
+#: The (method, degree) of :func:`quadrature_energy`: EFGM P1 (EFGM P2's
+#: relative estimates on the same cases, 4.96e-6 to 3.40e-3, all read
+#: 0.67-1.78: not named).
+QUADRATURE_ENERGY = {("efgm", 1)}
+
+
+def quadrature_energy(method: str, degree: int, energy: EnergyEstimate | None) -> list[str]:
+    """One line where :data:`QUADRATURE_ENERGY`'s (EFGM P1) energy estimate
+    is below :data:`QUADRATURE_ENERGY_SHARE` of the run's energy: its
+    quadrature's error may then be most of the error, which the
+    Zienkiewicz–Zhu recovery does not see (the layered slip's 0.41, the
+    patch's 0.76)."""
+    if (method, degree) not in QUADRATURE_ENERGY or energy is None or not energy.relative < QUADRATURE_ENERGY_SHARE:
+        return []
+    return [f"energy (ZZ): {method} P{degree}'s estimate is {energy.relative:.2g} of the run's energy, where its "
+            f"Gauss quadrature's error, which a recovery of the run's stress does not see, may be most of the "
+            f"error: an indication only, too small on both such closed forms measured (0.41 and 0.76 of the true "
+            f"error)"]
 
 
 def energy_caveat(method: str, degree: int) -> list[str]:
