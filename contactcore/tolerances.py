@@ -1432,3 +1432,14 @@ AXIS_PARALLEL = 1e-300
 #: h = 0.025: 44-91 partial over its last maps), and the refusal stands,
 #: so the cap is what a refusal costs (3.3 CPU s there).
 PARTIAL_SEARCH_MAPS = 30
+
+#: The relative Zienkiewicz–Zhu estimate (``eta`` over ``‖σ_h‖_E``) of
+#: EFGM P1 (contactcore.estimate.caveats.QUADRATURE_ENERGY) below which
+#: contactcore.estimate.caveats.quadrature_energy names
+#: the energy estimate.  EFGM P1 reproduces a piecewise-linear field but
+#: for its Gauss quadrature; where the field is nearly so, that quadrature's
+#: error is what is left, and a recovery of the run's own stress does not
+#: see it.  On the closed forms (2026-11-28, EFGM P1): the layered slip
+#: 1.83e-5 (effectivity 0.41), the patch 3.98e-5 (0.76), the rods and the
+#: quadratic layers 1.70e-4 to 1.93e-3 (0.78-1.00); 1e-4 lies between.
+QUADRATURE_ENERGY_SHARE = 1e-4

@@ -195,6 +195,9 @@ def test_a5s_fe_p2_gap_is_named_by_the_share_of_its_difference_at_the_cells_scal
     assert "A5:gN" in e.unsettled and "A5:gT" not in e.unsettled
     line, = [w for w in e.warnings if w.startswith("A5:gN (")]
     assert "either way" in line and not _claims(line)
+    # the same runs at degree 1 (SPLIT_CELL_DEGREE): not named, whatever the share
+    assert not est.split_cell_share(scene, [
+        sample_profiles(scene, r.fields, r.interface) for r in results], e.profiles, default_exclusion(scene), 1)
 
 
 def test_the_layered_slips_efgm_p1_energy_estimate_is_named_where_its_quadrature_may_dominate():
@@ -211,27 +214,3 @@ def test_the_layered_slips_efgm_p1_energy_estimate_is_named_where_its_quadrature
     rod, = [r for r in effectivity("pressurised_rod", ("efgm", 1)) if r["profile"] == "energy"]
     assert tol.EFFECTIVITY[0] <= rod["effectivity"] <= tol.EFFECTIVITY[1] and not rod["warned"]
 
-
-def test_xfem_p1_displacements_next_to_a_curved_gamma_are_named_without_a_direction():
-    """est.curved_displacements: the closed form's pressurised rod with a
-    rod of radius 0.2 (grader21's Lamé disc's Γ diameter, 0.4), xfem P1 at
-    h = 0.05 -> 0.025, u_y along the ray at 75° from the centre: 0.467 of
-    its error, unwarned before (grader21's ray u_y on its disc: 2.37).
-    Named, in a line that claims no direction; xfem P2's are not."""
-    from contactcore import LineProfile
-    from verification.closed_forms import pressurised_rod
-    case = pressurised_rod(a=0.2)
-    angle = np.radians(75.0)
-    case.scene = case.scene.with_changes(
-        profiles=(LineProfile("ray75", (0.0, 0.0), (np.cos(angle), np.sin(angle)), ("ux", "uy")),))
-    exclude = default_exclusion(case.scene)
-    results = [solve(case.scene, methods.discretisation("xfem")(degree=1), h) for h in (0.05, 0.025)]
-    e = est.estimate_runs(case.scene, results, exclude, energy=False)
-    got = {p.id: p for p in e.sampled}
-    row, = [r for r in profile_rows(e, got, exact_profiles(case)) if r["quantity"] == "uy"]
-    assert row["effectivity"] == pytest.approx(tol.SMALL_ROD_XFEM_P1_RAY75_UY_EFFECTIVITY,
-                                               rel=tol.EFFECTIVITY_OUTSIDE_DRIFT)
-    assert row["effectivity"] < tol.EFFECTIVITY[0] and row["warned"]
-    line, = [w for w in e.warnings if w.startswith("ray75:ux, ray75:uy: xfem P1's displacements")]
-    assert "either way" in line and not _claims(line)
-    assert not est.curved_displacements(case.scene, [e.sampled], "xfem", 2, 0.05, exclude)

@@ -499,45 +499,6 @@ def _near_curved_gamma(scene: Scene, levels: list[list[ProfileData]], h: float, 
     return names
 
 
-#: The (method, degree) whose bulk displacements next to a curved Γ
-#: :func:`curved_displacements` names: xfem P1, whose cut cells replace
-#: the circle by a chord per cell, differently in the two meshes.  On
-#: grader21's Lamé disc its ray ``u_y`` read 2.37 (h = 0.05 → 0.025); on a
-#: rod of radius 0.2 in the closed form's pressurised disc (seven rays
-#: from the centre at 15° steps, h = 0.05 → 0.025, 2026-11-28) its
-#: displacements read 0.467-1.73, on the closed forms' rods 1.09-1.51
-#: (docs/error-estimates.md, "Which estimates to warn of").
-CURVED_DISPLACEMENTS = {("xfem", 1)}
-
-#: The bulk displacements.
-DISPLACEMENTS = ("ux", "uy")
-
-
-def curved_displacements(scene: Scene, levels: list[list[ProfileData]], method: str, degree: int, h: float,
-                         exclude: float) -> list[str]:
-    """The ``PID:Q`` of the bulk displacements (:data:`DISPLACEMENTS`) of
-    :data:`CURVED_DISPLACEMENTS` (xfem P1) on profiles with a sample kept
-    (at least ``exclude`` from the singular points) within one cell of the
-    coarser run, ``h``, of a curved Γ.  Each mesh cuts the circle in its
-    own chords, so the two runs' difference there is not the smooth
-    ``C h^p`` of Richardson: off either way, measured 0.467-2.37 (the
-    constant's note).  Empty for a straight Γ or another method."""
-    if (method, degree) not in CURVED_DISPLACEMENTS:
-        return []
-    return _near_curved_gamma(scene, levels, h, exclude, DISPLACEMENTS)
-
-
-def curved_displacement_warning(names: list[str], h: float, length: str = "m") -> list[str]:
-    """One line naming :func:`curved_displacements`' quantities, without a
-    direction; lengths in the scene's unit named ``length``."""
-    if not names:
-        return []
-    return [f"{', '.join(names)}: xfem P1's displacements on a profile within a cell ({h:g} {length}) of the "
-            f"curved Γ: each mesh cuts the circle in its own chords, so the runs' difference is not a smooth "
-            f"power of h there and the estimate is not to be trusted, either way (measured 0.467-2.37 times the "
-            f"error): degree 2 avoids this"]
-
-
 #: The share (RMS over the kept samples) of a two-run difference at the
 #: scale of the coarse run's cells above which :func:`split_cell_share`
 #: names a polluted range's estimate.  That part is estimated at the
@@ -548,15 +509,26 @@ def curved_displacement_warning(names: list[str], h: float, length: str = "m") -
 #: A, B, C at h = 0.05 → 0.025 (2026-11-28): degree 1 0.07-0.31, degree-2
 #: ``g_T`` 0.08-0.12, degree-2 ``g_N`` on A 0.45-0.55, degree-2 tractions
 #: on C 0.73-0.90 (effectivities 1.27-1.77: there that part converges at
-#: 3).  0.4 lies between the degree-1 largest and the degree-2 ``g_N``.
+#: 3).  0.4 lies between A's degree-2 ``g_T`` and ``g_N``.  An empirical
+#: marker of A5's miss (the smooth part converges below 2λ as well), not
+#: a bound: of the six entries it names on A, B, C one lies outside.
 SPLIT_CELL_SHARE = 0.4
+
+#: The least degree :func:`split_cell_share` names: at degree 1 the split
+#: takes ``[2λ, 2]``, whose Richardson factors differ by at most 1.27, so
+#: that part's order moves the estimate little (the error_estimate
+#: example's fe P1 ``g_N``: share 0.67, effectivity 1.04); at degree 2
+#: ``[2λ, 3]``, up to 1.95.
+SPLIT_CELL_DEGREE = 2
 
 
 def split_cell_share(scene: Scene, levels: list[list[ProfileData]],
-                     estimates: dict[str, dict[str, QuantityEstimate]], exclude: float) -> dict[str, float]:
+                     estimates: dict[str, dict[str, QuantityEstimate]], exclude: float,
+                     degree: int) -> dict[str, float]:
     """``{PID:Q: share}`` of the two-run estimates of a range pollution
-    widened whose difference lies at the scale of the coarse run's cells
-    by a share of at least :data:`SPLIT_CELL_SHARE` (the estimate's
+    widened, of a run of ``degree`` :data:`SPLIT_CELL_DEGREE` or more,
+    whose difference lies at the scale of the coarse run's cells by a
+    share of at least :data:`SPLIT_CELL_SHARE` (the estimate's
     ``cell_scale``): that part is taken at the range's upper order, which
     two runs cannot check; where it converges slower the estimate is too
     small (A5's fe P2 ``g_N``, 0.485), where it does not it is right
@@ -566,6 +538,8 @@ def split_cell_share(scene: Scene, levels: list[list[ProfileData]],
     :data:`~contactcore.tolerances.NEGLIGIBLE_SHARE` of
     :class:`~contactcore.scaling.Sizes`) shows nothing and is not named."""
     sizes, out = Sizes.of(scene), {}
+    if degree < SPLIT_CELL_DEGREE:
+        return out
     for coarse, fine in zip(levels[-2], levels[-1]):
         xy = np.column_stack([fine.columns["x"], fine.columns["y"]])
         kept = far_from_singular(scene, xy, exclude)
@@ -611,16 +585,6 @@ def curved_layer_warning(names: list[str], h: float, length: str = "m") -> list[
 ENERGY_KEY = "energy:‖σ‖_E"
 
 
-#: The relative Zienkiewicz–Zhu estimate (``eta`` over ``‖σ_h‖_E``) of
-#: :data:`QUADRATURE_ENERGY` below which :func:`quadrature_energy` names
-#: the energy estimate.  EFGM P1 reproduces a piecewise-linear field but
-#: for its Gauss quadrature; where the field is nearly so, that quadrature's
-#: error is what is left, and a recovery of the run's own stress does not
-#: see it.  On the closed forms (2026-11-28, EFGM P1): the layered slip
-#: 1.83e-5 (effectivity 0.41), the patch 3.98e-5 (0.76), the rods and the
-#: quadratic layers 1.70e-4 to 1.93e-3 (0.78-1.00); 1e-4 lies between.
-QUADRATURE_ENERGY_SHARE = 1e-4
-
 #: The (method, degree) of :func:`quadrature_energy`: EFGM P1 (EFGM P2's
 #: relative estimates on the same cases, 4.96e-6 to 3.40e-3, all read
 #: 0.67-1.78: not named).
@@ -629,11 +593,11 @@ QUADRATURE_ENERGY = {("efgm", 1)}
 
 def quadrature_energy(method: str, degree: int, energy: EnergyEstimate | None) -> list[str]:
     """One line where :data:`QUADRATURE_ENERGY`'s (EFGM P1) energy estimate
-    is below :data:`QUADRATURE_ENERGY_SHARE` of the run's energy: its
+    is below :data:`~contactcore.tolerances.QUADRATURE_ENERGY_SHARE` of the run's energy: its
     quadrature's error may then be most of the error, which the
     Zienkiewicz–Zhu recovery does not see (the layered slip's 0.41, the
     patch's 0.76)."""
-    if (method, degree) not in QUADRATURE_ENERGY or energy is None or not energy.relative < QUADRATURE_ENERGY_SHARE:
+    if (method, degree) not in QUADRATURE_ENERGY or energy is None or not energy.relative < tol.QUADRATURE_ENERGY_SHARE:
         return []
     return [f"energy (ZZ): {method} P{degree}'s estimate is {energy.relative:.2g} of the run's energy, where its "
             f"Gauss quadrature's error, which a recovery of the run's stress does not see, may be most of the "

@@ -26,7 +26,7 @@ from .caveats import (cell_scale_orders, cell_scale_warnings, exact_traction_war
                       order_mismatch, order_warnings,
                       pollution_warning, residue_warnings, residues, unsettled, unsettled_warnings,
                       curved_layer, curved_layer_warning, energy_caveat, ENERGY_KEY,
-                      curved_displacements, curved_displacement_warning, quadrature_energy,
+                      quadrature_energy,
                       split_cell_share, split_cell_share_warning)
 from .energy import EnergyEstimate, energy_estimate
 from .extrapolation import QuantityEstimate, profile_estimates
@@ -53,7 +53,6 @@ class Estimate:
     :func:`~contactcore.estimate.caveats.cell_scale_orders`,
     :func:`~contactcore.estimate.caveats.curved_layer`,
     :func:`~contactcore.estimate.caveats.exact_tractions`,
-    :func:`~contactcore.estimate.caveats.curved_displacements`,
     :func:`~contactcore.estimate.caveats.split_cell_share`, the energy's
     :data:`~contactcore.estimate.caveats.ENERGY_KEY` where
     :func:`~contactcore.estimate.caveats.energy_caveat` or
@@ -113,15 +112,13 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     layer = curved_layer(scene, levels, results[-1].method, results[-1].degree, hs[-2], exclude)
     rough = cell_scale_orders(scene, levels, profiles, exclude, hs[-2])
     residue = residues(scene, levels, profiles, exclude)
-    moving = curved_displacements(scene, levels, results[-1].method, results[-1].degree, hs[-2], exclude)
-    split = split_cell_share(scene, levels, profiles, exclude)
+    split = split_cell_share(scene, levels, profiles, exclude, results[-1].degree)
     nitsche = exact_tractions(scene, profiles)
     fast = fast_gamma(profiles, results[-1].method, results[-1].degree)
     warnings = (order_warnings(profiles) + pollution_warning(scene, profiles) + exact_traction_warning(nitsche)
                 + fast_gamma_warning(fast, results[-1].method, results[-1].degree, len(levels) > 2)
                 + unsettled_warnings(found, hs[-2], feature_size(scene), scene.user.units.length)
                 + curved_layer_warning(layer, hs[-2], scene.user.units.length)
-                + curved_displacement_warning(moving, hs[-2], scene.user.units.length)
                 + split_cell_share_warning(split)
                 + cell_scale_warnings(rough, hs[-2:], fast) + residue_warnings(residue, len(levels) > 2))
     status = None
@@ -135,7 +132,7 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
               + quadrature_energy(results[-1].method, results[-1].degree, zz)) if energy else []
     return Estimate(hs, profiles, zz, status, warnings + caveat, levels[-1],
                     {k for v in found.values() for k in v} | set(layer) | set(rough) | set(residue) | set(nitsche)
-                    | set(moving) | set(split)
+                    | set(split)
                     | set(fast)
                     | ({ENERGY_KEY} if caveat else set())
                     | {f"{pid}:{q}" for pid, qs in profiles.items() for q, e in qs.items() if order_mismatch(e)},
