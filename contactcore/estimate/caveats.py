@@ -29,7 +29,11 @@ whose coarse run varies from cell to cell faster than theory allows
 (:func:`cell_scale_orders`), and those whose runs differ a thousand times
 less than others of their kind in the same runs, where the error's
 leading term cancels and a smaller one of another order may set the rate
-(:func:`residues`).
+(:func:`residues`), and, for a polluted range split at the cells'
+scale, those whose difference lies mostly at that scale, the part
+taken at the range's upper order, which two runs cannot check
+(:func:`split_cell_share`, an empirical marker of scene A's A5 fe P2
+``g_N``, 0.485).
 
 xfem P1's recovered stress (:data:`~contactcore.estimate.orders.RECOVERED_STRESS`)
 converges at order 1 in a layer one cell thick along a curved Γ, where
@@ -43,7 +47,10 @@ makes xfem P1's Zienkiewicz–Zhu estimate too small: a second recovery
 moves it less than its error (0.32 to 0.61 of the true error on the
 closed forms and held-out discs measured, and falling as h shrinks:
 0.32 → 0.15 and 0.35 → 0.22 from h = 0.05 to 0.025 on grader17's
-blocks with singular points; :func:`energy_caveat`).
+blocks with singular points; :func:`energy_caveat`).  EFGM P1's
+Zienkiewicz–Zhu estimate at a tiny share of the run's energy, where its
+quadrature's error may be most of the error, is named too
+(:func:`quadrature_energy`: the layered slip's 0.41).
 
 An exact law's traction on Γ (Nitsche's multiplier) estimated from two
 runs at order 1, the least theory allows it, is most often too large:
