@@ -1460,3 +1460,14 @@ GRAZING_OPENING = 5e-3
 #: at 0.2: 2.3e-5 to 0.0107).  5e-2 lies 3.8 times below the one and 4.7 times above the
 #: other.
 GRAZING_SHEAR = 5e-2
+
+#: The relative Zienkiewicz–Zhu estimate (``eta`` over ``‖σ_h‖_E``) of
+#: EFGM P1 (contactcore.estimate.caveats.QUADRATURE_ENERGY) below which
+#: contactcore.estimate.caveats.quadrature_energy names
+#: the energy estimate.  EFGM P1 reproduces a piecewise-linear field but
+#: for its Gauss quadrature; where the field is nearly so, that quadrature's
+#: error is what is left, and a recovery of the run's own stress does not
+#: see it.  On the closed forms (2026-11-28, EFGM P1): the layered slip
+#: 1.83e-5 (effectivity 0.41), the patch 3.98e-5 (0.76), the rods and the
+#: quadratic layers 1.70e-4 to 1.93e-3 (0.78-1.00); 1e-4 lies between.
+QUADRATURE_ENERGY_SHARE = 1e-4

@@ -178,3 +178,39 @@ def test_a_bulk_displacement_at_an_exact_gammas_end_keeps_the_reach_cause_howeve
     assert est.unsettled(scene, runs, {"h": 0.1}, "fe", 2, exclude=0.1, estimates=widened)["reach"]
     plain = {"L": {"ux": est.richardson(levels, theory=(3, 3))}}
     assert not est.unsettled(scene, runs, {"h": 0.1}, "fe", 2, exclude=0.1, estimates=plain)["reach"]
+
+
+def test_a5s_fe_p2_gap_is_named_by_the_share_of_its_difference_at_the_cells_scale():
+    """est.split_cell_share on scene A, fe P2 at h = 0.05 -> 0.025: A5's
+    g_N (0.485 of its error against fe P2 at 0.00625, unwarned before;
+    that check is the slow scene-A table's) has 0.545 of its difference
+    at the cells' scale, taken at the upper order 3 of a range the corners
+    widened: named, in a line without a direction; its g_T (share 0.12,
+    0.87) is not."""
+    scene = load_scene("A")
+    disc = methods.discretisation("fe")(degree=2)
+    results = [solve(scene, disc, h) for h in (0.05, 0.025)]
+    e = est.estimate_runs(scene, results, default_exclusion(scene), energy=False)
+    assert e.profiles["A5"]["gN"].cell_scale >= est.caveats.SPLIT_CELL_SHARE > e.profiles["A5"]["gT"].cell_scale
+    assert "A5:gN" in e.unsettled and "A5:gT" not in e.unsettled
+    line, = [w for w in e.warnings if w.startswith("A5:gN (")]
+    assert "either way" in line and not _claims(line)
+    # the same runs at degree 1 (SPLIT_CELL_DEGREE): not named, whatever the share
+    assert not est.split_cell_share(scene, [
+        sample_profiles(scene, r.fields, r.interface) for r in results], e.profiles, default_exclusion(scene), 1)
+
+
+def test_the_layered_slips_efgm_p1_energy_estimate_is_named_where_its_quadrature_may_dominate():
+    """est.quadrature_energy: the layered slip's EFGM P1 ZZ estimate
+    (0.41 of the true energy error at h = 0.05 -> 0.025, unwarned before)
+    is 1.8e-5 of the run's energy, below QUADRATURE_ENERGY_SHARE: named
+    (the energy key in Estimate.unsettled); the pressurised rod's (1.7e-4,
+    0.97) is not."""
+    from verification.effectivity import effectivity
+    slip, = [r for r in effectivity("layered_slip", ("efgm", 1)) if r["profile"] == "energy"]
+    assert slip["effectivity"] == pytest.approx(tol.LAYERED_SLIP_EFGM_P1_ENERGY_EFFECTIVITY,
+                                                rel=tol.EFFECTIVITY_OUTSIDE_DRIFT)
+    assert slip["effectivity"] < tol.EFFECTIVITY[0] and slip["warned"]
+    rod, = [r for r in effectivity("pressurised_rod", ("efgm", 1)) if r["profile"] == "energy"]
+    assert tol.EFFECTIVITY[0] <= rod["effectivity"] <= tol.EFFECTIVITY[1] and not rod["warned"]
+

@@ -29,7 +29,11 @@ whose coarse run varies from cell to cell faster than theory allows
 (:func:`cell_scale_orders`), and those whose runs differ a thousand times
 less than others of their kind in the same runs, where the error's
 leading term cancels and a smaller one of another order may set the rate
-(:func:`residues`).
+(:func:`residues`), and, for a polluted range split at the cells'
+scale, those whose difference lies mostly at that scale, the part
+taken at the range's upper order, which two runs cannot check
+(:func:`split_cell_share`, an empirical marker of scene A's A5 fe P2
+``g_N``, 0.485).
 
 xfem P1's recovered stress (:data:`~contactcore.estimate.orders.RECOVERED_STRESS`)
 converges at order 1 in a layer one cell thick along a curved Γ, where
@@ -43,7 +47,10 @@ makes xfem P1's Zienkiewicz–Zhu estimate too small: a second recovery
 moves it less than its error (0.32 to 0.61 of the true error on the
 closed forms and held-out discs measured, and falling as h shrinks:
 0.32 → 0.15 and 0.35 → 0.22 from h = 0.05 to 0.025 on grader17's
-blocks with singular points; :func:`energy_caveat`).
+blocks with singular points; :func:`energy_caveat`).  EFGM P1's
+Zienkiewicz–Zhu estimate at a tiny share of the run's energy, where its
+quadrature's error may be most of the error, is named too
+(:func:`quadrature_energy`: the layered slip's 0.41).
 
 An exact law's traction on Γ (Nitsche's multiplier) estimated from two
 runs at order 1, the least theory allows it, is most often too large:
@@ -66,6 +73,7 @@ from ..geometry import Rectangle
 from ..profiles import ProfileData
 from ..scaling import Sizes
 from ..scene import Scene
+from .energy import EnergyEstimate
 from .extrapolation import QuantityEstimate, cell_scale_part, rms, sample_groups
 from .orders import GAPS, MESHFREE, RECOVERED_STRESS, STRESSES, TRACTIONS, _exact, lower_end
 from .singular import exact_interface_ends, far_from_singular, singular_points, stress_singular_points
@@ -475,7 +483,18 @@ def curved_layer(scene: Scene, levels: list[list[ProfileData]], method: str, deg
     on four sets (2026-11-28), so the warning gives no direction.  Empty for a straight Γ or another method.
     A sample at h within :data:`~contactcore.tolerances.GEOMETRY`
     (relative) counts, so round-off does not decide it."""
-    if (method, degree) not in RECOVERED_STRESS or scene.interface.straight_in(scene.domain):
+    if (method, degree) not in RECOVERED_STRESS:
+        return []
+    return _near_curved_gamma(scene, levels, h, exclude, STRESSES)
+
+
+def _near_curved_gamma(scene: Scene, levels: list[list[ProfileData]], h: float, exclude: float,
+                       quantities: tuple[str, ...]) -> list[str]:
+    """The ``PID:Q`` (``Q`` in ``quantities``) of the profiles with a sample
+    kept (at least ``exclude`` from the singular points) within ``h`` of a
+    curved Γ (none for a straight one); a sample at ``h`` within
+    :data:`~contactcore.tolerances.GEOMETRY` (relative) counts."""
+    if scene.interface.straight_in(scene.domain):
         return []
     names = []
     for prof in levels[-1]:
@@ -483,8 +502,77 @@ def curved_layer(scene: Scene, levels: list[list[ProfileData]], method: str, deg
         kept = far_from_singular(scene, xy, exclude)
         near = np.abs(scene.interface.signed_distance(xy[kept])) <= h * (1 + tol.GEOMETRY)
         if np.any(near):
-            names += [f"{prof.id}:{q}" for q in prof.names[3:] if q in STRESSES]
+            names += [f"{prof.id}:{q}" for q in prof.names[3:] if q in quantities]
     return names
+
+
+#: The share (RMS over the kept samples) of a two-run difference at the
+#: scale of the coarse run's cells above which :func:`split_cell_share`
+#: names a polluted range's estimate.  That part is estimated at the
+#: range's upper order (:func:`~contactcore.estimate.extrapolation.profile_estimates`);
+#: where it converges slower, the estimate is too small: scene A's A5
+#: fe P2 ``g_N`` (share 0.545, that part converging at 2.29 against 3,
+#: effectivity 0.485) and xfem P2 (0.454, 0.534).  The shares measured on
+#: A, B, C at h = 0.05 → 0.025 (2026-11-28): degree 1 0.07-0.31, degree-2
+#: ``g_T`` 0.08-0.12, degree-2 ``g_N`` on A 0.45-0.55, degree-2 tractions
+#: on C 0.73-0.90 (effectivities 1.27-1.77: there that part converges at
+#: 3).  0.4 lies between A's degree-2 ``g_T`` and ``g_N``.  An empirical
+#: marker of A5's miss (the smooth part converges below 2λ as well), not
+#: a bound: of the six entries it names on A, B, C one lies outside.
+SPLIT_CELL_SHARE = 0.4
+
+#: The least degree :func:`split_cell_share` names: at degree 1 the split
+#: takes ``[2λ, 2]``, whose Richardson factors differ by at most 1.27, so
+#: that part's order moves the estimate little (the error_estimate
+#: example's fe P1 ``g_N``: share 0.67, effectivity 1.04); at degree 2
+#: ``[2λ, 3]``, up to 1.95.
+SPLIT_CELL_DEGREE = 2
+
+
+def split_cell_share(scene: Scene, levels: list[list[ProfileData]],
+                     estimates: dict[str, dict[str, QuantityEstimate]], exclude: float,
+                     degree: int) -> dict[str, float]:
+    """``{PID:Q: share}`` of the two-run estimates of a range pollution
+    widened, of a run of ``degree`` :data:`SPLIT_CELL_DEGREE` or more,
+    whose difference lies at the scale of the coarse run's cells by a
+    share of at least :data:`SPLIT_CELL_SHARE` (the estimate's
+    ``cell_scale``): that part is taken at the range's upper order, which
+    two runs cannot check; where it converges slower the estimate is too
+    small (A5's fe P2 ``g_N``, 0.485), where it does not it is right
+    (C4's degree-2 tractions, 1.27-1.77).  A difference at round-off (of
+    the quantity, :data:`~contactcore.tolerances.ESTIMATE_ROUNDOFF`, or of
+    the scene's own size of its kind,
+    :data:`~contactcore.tolerances.NEGLIGIBLE_SHARE` of
+    :class:`~contactcore.scaling.Sizes`) shows nothing and is not named."""
+    sizes, out = Sizes.of(scene), {}
+    if degree < SPLIT_CELL_DEGREE:
+        return out
+    for coarse, fine in zip(levels[-2], levels[-1]):
+        xy = np.column_stack([fine.columns["x"], fine.columns["y"]])
+        kept = far_from_singular(scene, xy, exclude)
+        for q in fine.names[3:]:
+            e = estimates.get(fine.id, {}).get(q)
+            if e is None or e.observed or e.cell_scale is None or e.cell_scale < SPLIT_CELL_SHARE:
+                continue
+            d = rms((fine.columns[q] - coarse.columns[q])[kept]) if np.any(kept) else 0.0
+            scale = max(float(np.max(np.abs(fine.columns[q]))), float(np.max(np.abs(coarse.columns[q]))))
+            own = sizes.stress if q in STRESSES + TRACTIONS else sizes.displacement
+            if d > max(tol.ESTIMATE_ROUNDOFF * scale, tol.NEGLIGIBLE_SHARE * own):
+                out[f"{fine.id}:{q}"] = float(e.cell_scale)
+    return out
+
+
+def split_cell_share_warning(found: dict[str, float]) -> list[str]:
+    """One line naming :func:`split_cell_share`'s quantities, each with its
+    share, without a direction (measured 0.485-1.77 on the six entries it
+    names on A, B, C)."""
+    if not found:
+        return []
+    names = ", ".join(f"{k} ({v:.2f})" for k, v in found.items())
+    return [f"{names}: most of the runs' difference (share in brackets) varies at the scale of the coarse run's "
+            f"cells, which the estimate takes at the upper order of a range the singular points widened; two runs "
+            f"cannot check that order, and where that part converges slower the estimate is too small: an "
+            f"indication only, either way (measured 0.485-1.77 times the error) (--estimate 3 observes the order)"]
 
 
 def curved_layer_warning(names: list[str], h: float, length: str = "m") -> list[str]:
@@ -502,6 +590,26 @@ def curved_layer_warning(names: list[str], h: float, length: str = "m") -> list[
 #: :attr:`~contactcore.estimate.runs.Estimate.unsettled` (a profile id
 #: ``energy``, quantity ``‖σ‖_E``, as the effectivity table names it).
 ENERGY_KEY = "energy:‖σ‖_E"
+
+
+#: The (method, degree) of :func:`quadrature_energy`: EFGM P1 (EFGM P2's
+#: relative estimates on the same cases, 4.96e-6 to 3.40e-3, all read
+#: 0.67-1.78: not named).
+QUADRATURE_ENERGY = {("efgm", 1)}
+
+
+def quadrature_energy(method: str, degree: int, energy: EnergyEstimate | None) -> list[str]:
+    """One line where :data:`QUADRATURE_ENERGY`'s (EFGM P1) energy estimate
+    is below :data:`~contactcore.tolerances.QUADRATURE_ENERGY_SHARE` of the run's energy: its
+    quadrature's error may then be most of the error, which the
+    Zienkiewicz–Zhu recovery does not see (the layered slip's 0.41, the
+    patch's 0.76)."""
+    if (method, degree) not in QUADRATURE_ENERGY or energy is None or not energy.relative < tol.QUADRATURE_ENERGY_SHARE:
+        return []
+    return [f"energy (ZZ): {method} P{degree}'s estimate is {energy.relative:.2g} of the run's energy, where its "
+            f"Gauss quadrature's error, which a recovery of the run's stress does not see, may be most of the "
+            f"error: an indication only, too small on both such closed forms measured (0.41 and 0.76 of the true "
+            f"error)"]
 
 
 def energy_caveat(method: str, degree: int) -> list[str]:

@@ -25,7 +25,9 @@ from .caveats import (cell_scale_orders, cell_scale_warnings, exact_traction_war
                       fast_gamma_warning, feature_size,
                       order_mismatch, order_warnings,
                       pollution_warning, residue_warnings, residues, unsettled, unsettled_warnings,
-                      curved_layer, curved_layer_warning, energy_caveat, ENERGY_KEY)
+                      curved_layer, curved_layer_warning, energy_caveat, ENERGY_KEY,
+                      quadrature_energy,
+                      split_cell_share, split_cell_share_warning)
 from .energy import EnergyEstimate, energy_estimate
 from .extrapolation import QuantityEstimate, profile_estimates
 from .singular import far_from_singular
@@ -50,9 +52,11 @@ class Estimate:
     (:func:`~contactcore.estimate.caveats.unsettled`,
     :func:`~contactcore.estimate.caveats.cell_scale_orders`,
     :func:`~contactcore.estimate.caveats.curved_layer`,
-    :func:`~contactcore.estimate.caveats.exact_tractions`, the energy's
+    :func:`~contactcore.estimate.caveats.exact_tractions`,
+    :func:`~contactcore.estimate.caveats.split_cell_share`, the energy's
     :data:`~contactcore.estimate.caveats.ENERGY_KEY` where
-    :func:`~contactcore.estimate.caveats.energy_caveat` applies, and with three
+    :func:`~contactcore.estimate.caveats.energy_caveat` or
+    :func:`~contactcore.estimate.caveats.quadrature_energy` applies, and with three
     runs :func:`~contactcore.estimate.caveats.order_mismatch`) or not to be
     trusted (:func:`~contactcore.estimate.caveats.residues`)."""
 
@@ -108,12 +112,14 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     layer = curved_layer(scene, levels, results[-1].method, results[-1].degree, hs[-2], exclude)
     rough = cell_scale_orders(scene, levels, profiles, exclude, hs[-2])
     residue = residues(scene, levels, profiles, exclude)
+    split = split_cell_share(scene, levels, profiles, exclude, results[-1].degree)
     nitsche = exact_tractions(scene, profiles)
     fast = fast_gamma(profiles, results[-1].method, results[-1].degree)
     warnings = (order_warnings(profiles) + pollution_warning(scene, profiles) + exact_traction_warning(nitsche)
                 + fast_gamma_warning(fast, results[-1].method, results[-1].degree, len(levels) > 2)
                 + unsettled_warnings(found, hs[-2], feature_size(scene), scene.user.units.length)
                 + curved_layer_warning(layer, hs[-2], scene.user.units.length)
+                + split_cell_share_warning(split)
                 + cell_scale_warnings(rough, hs[-2:], fast) + residue_warnings(residue, len(levels) > 2))
     status = None
     if scene.law.has_history or not scene.law.is_linear:
@@ -122,9 +128,11 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     zz = energy_estimate(scene, results[-1].fields, hs[-1], exclude) if energy else None
     kept = {p.id: far_from_singular(scene, np.column_stack([p.columns["x"], p.columns["y"]]), exclude)
             for p in levels[-1]}
-    caveat = energy_caveat(results[-1].method, results[-1].degree) if energy else []
+    caveat = (energy_caveat(results[-1].method, results[-1].degree)
+              + quadrature_energy(results[-1].method, results[-1].degree, zz)) if energy else []
     return Estimate(hs, profiles, zz, status, warnings + caveat, levels[-1],
                     {k for v in found.values() for k in v} | set(layer) | set(rough) | set(residue) | set(nitsche)
+                    | set(split)
                     | set(fast)
                     | ({ENERGY_KEY} if caveat else set())
                     | {f"{pid}:{q}" for pid, qs in profiles.items() for q, e in qs.items() if order_mismatch(e)},
