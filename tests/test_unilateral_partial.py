@@ -4,6 +4,7 @@
 was refused (one Gauss point, s = 0.325, contradicting both its
 statuses); it now has one partial point there and the opening of the
 fine references."""
+import pathlib
 import re
 
 import numpy as np
@@ -18,45 +19,7 @@ from test_xfem_opening import UNI
 from tolerances import (PARTIAL_MAP_RESIDUAL, TILT_OPENING_REFERENCE, TILT_PARTIAL_FROM_OPENING, UNI_OPENING,
                         UNI_OPENING_REFERENCE)
 
-SHEAR_UNILATERAL = """name = "shear-unilateral"
-plane = "strain"
-h = 0.1
-[domain]
-type = "rectangle"
-corner = [0.0, 0.0]
-size = [1.0, 1.0]
-[interface]
-type = "line"
-point = [0.0, 0.53]
-normal = [0.0, 1.0]
-[interface.law]
-type = "unilateral"
-kN = 1000.0
-kT = 40.0
-[materials.minus]
-E = 100.0
-nu = 0.3
-[materials.plus]
-E = 250.0
-nu = 0.2
-[[supports]]
-boundary = "bottom"
-fix = "xy"
-[[supports]]
-boundary = "left"
-fix = "y"
-[[supports]]
-boundary = "right"
-fix = "y"
-[[loads]]
-type = "body_force"
-body = "minus"
-value = [0.3, 0.0]
-[[loads]]
-type = "body_force"
-body = "plus"
-value = [0.1, 0.0]
-"""
+SHEAR_UNILATERAL = (pathlib.Path(__file__).parent / "scenes" / "shear_unilateral.toml").read_text()
 
 
 def _partial_points(report):
@@ -139,7 +102,6 @@ def test_tilt_unil_exact_has_a_partial_answer(method, degree, h):
     two partial points at the edge of the contact zone (x = 0.081; 0.067
     and 0.073; the fe P2 reference at h = 0.0125 opens at 0.081-0.088),
     each at θ strictly inside (0, 1)."""
-    import pathlib
     from efgm.options import EFGM
     from xdolfinx.options import XFEM
     options = {"efgm": EFGM, "xfem": XFEM}[method](degree=degree)

@@ -9,6 +9,8 @@ held at the node s = 0.325 at h = 0.05, 0.025 and 0.0125 (P1 and P2)
 against 0.3156, and the far-field gap did not converge; read from both
 cells, as fe reads a facet, it follows h.
 """
+import pathlib
+
 import numpy as np
 import pytest
 
@@ -17,39 +19,7 @@ from contactcore.laws import OPEN
 
 from tolerances import UNI_OPENING, UNI_OPENING_REFERENCE
 
-UNI = """name = "g16-uni"
-plane = "stress"
-increments = 5
-[domain]
-type = "rectangle"
-size = [1.0, 1.0]
-[interface]
-type = "line"
-point = [0.0, 0.5]
-normal = [0.0, 1.0]
-[interface.law]
-type = "unilateral"
-enforcement = "exact"
-[materials.minus]
-E = 2e11
-nu = 0.3
-[materials.plus]
-E = 2e11
-nu = 0.3
-[[supports]]
-boundary = "bottom"
-fix = "xy"
-[[loads]]
-type = "traction"
-boundary = "top"
-value = [5e5, -1e6]
-[[profiles]]
-id = "G"
-type = "line"
-start = [0.0, 0.5]
-end = [1.0, 0.5]
-quantities = ["tN", "tT", "gN", "gT"]
-"""
+UNI = (pathlib.Path(__file__).parent / "scenes" / "uni_opening.toml").read_text()
 
 
 def _opening(tmp_path, h):
