@@ -11,12 +11,20 @@ from scipy.spatial import cKDTree
 
 from . import tolerances as tol
 from .geometry import CircleInterface, LineInterface, tangent_of
-from .laws import STATUS_NAMES
+from .laws import PARTIAL, REPORTED_STATUS_NAMES, STATUS_NAMES
 
 
 @dataclass
 class Increment:
-    """The converged state of one (sub-)increment at the interface points."""
+    """The converged state of one (sub-)increment at the interface points.
+
+    ``status`` is the law's (``OPEN``, ``STICK``, ``SLIP``), what Newton
+    and the health checks read.  ``theta`` (m,), on the unilateral law's
+    partial answer only (:mod:`contactcore.newton.partial`), is each
+    partial point's share θ ∈ [0, 1] of the tie's shear (NaN at every other
+    point); None where no point is partial.  A partial point's ``status``
+    is ``STICK`` (``y_N = 0`` is closed in the law's definition); outputs
+    report it as ``partial`` (:meth:`reported_status`)."""
 
     step: float
     factors: tuple
@@ -25,15 +33,41 @@ class Increment:
     jump: np.ndarray
     traction: np.ndarray
     status: np.ndarray
+    theta: np.ndarray | None = None
 
     def gathered(self, ranks, order: np.ndarray) -> "Increment":
-        """Every rank's points of this increment, in ``order``."""
+        """Every rank's points of this increment, in ``order``.  Every rank
+        has ``theta`` or none has (the partial answer is committed on every
+        rank): its gather is a collective like the others."""
         return replace(self, jump=ranks.gather(self.jump)[order], traction=ranks.gather(self.traction)[order],
-                       status=ranks.gather(self.status)[order])
+                       status=ranks.gather(self.status)[order],
+                       theta=None if self.theta is None else ranks.gather(self.theta)[order])
+
+    @property
+    def partial(self) -> np.ndarray:
+        """(m,) bool: the points of the partial answer (θ given)."""
+        if self.theta is None:
+            return np.zeros(len(self.status), bool)
+        return np.isfinite(self.theta)
+
+    def reported_status(self) -> np.ndarray:
+        """(m,) the status as outputs report it: ``status`` with a partial
+        point ``PARTIAL`` (an index into ``REPORTED_STATUS_NAMES``)."""
+        return np.where(self.partial, PARTIAL, self.status).astype(np.int8)
+
+    def status_names(self) -> list[str]:
+        """Each point's reported status by name (``open``, ``stick``,
+        ``slip`` or ``partial``)."""
+        return [REPORTED_STATUS_NAMES[c] for c in self.reported_status()]
 
     def counts(self) -> dict[str, int]:
-        """How many points are open, sticking and slipping."""
-        return {name: int(np.sum(self.status == i)) for i, name in enumerate(STATUS_NAMES)}
+        """How many points are open, sticking and slipping, and, where the
+        step has partial points, how many (then not counted as sticking)."""
+        status = self.reported_status()
+        counts = {name: int(np.sum(status == i)) for i, name in enumerate(STATUS_NAMES)}
+        if self.partial.any():
+            counts["partial"] = int(np.sum(status == PARTIAL))
+        return counts
 
 
 @dataclass

@@ -82,6 +82,12 @@ def _positive(params: dict, key: str, path: str) -> float:
 #: Status of an interface point (``LawResponse.status``).
 OPEN, STICK, SLIP = 0, 1, 2
 STATUS_NAMES = ("open", "stick", "slip")
+#: A point of the unilateral law's partial answer (:mod:`contactcore.newton.partial`:
+#: ``y_N = 0`` with a share θ of the tie's shear), as outputs report it
+#: (:meth:`contactcore.interface_path.Increment.reported_status`).  No law
+#: and no Newton status arithmetic ever sees it: there the point is ``STICK``.
+PARTIAL = 3
+REPORTED_STATUS_NAMES = STATUS_NAMES + ("partial",)
 
 
 @dataclass(frozen=True)

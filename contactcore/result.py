@@ -228,8 +228,15 @@ class Result:
     interface: object = None  # contactcore.interface_path.InterfacePath: every increment on Γ
 
     def summary(self) -> dict:
-        """A JSON-ready record of the run (no field values)."""
-        return {
+        """A JSON-ready record of the run (no field values); with an
+        interface history, ``status``: the final increment's counts of
+        open, sticking and slipping points of Γ
+        (:meth:`~contactcore.interface_path.Increment.counts`), and where
+        the unilateral law's partial answer has partial points
+        (:mod:`contactcore.newton.partial`) their count too and
+        ``partial``: each one's ``x``, ``y`` and share ``theta`` of the
+        tie's shear, in Γ's order."""
+        record = {
             "method": self.method,
             "scene": self.scene.name,
             "degree": self.degree,
@@ -238,3 +245,11 @@ class Result:
             "timings": asdict(self.timings),
             "solver": asdict(self.solver),
         }
+        if self.interface is not None and self.interface.steps:
+            final = self.interface.final
+            record["status"] = final.counts()
+            where = np.flatnonzero(final.partial)
+            if len(where):
+                record["partial"] = [{"x": float(self.interface.points[i, 0]), "y": float(self.interface.points[i, 1]),
+                                      "theta": float(final.theta[i])} for i in where]
+        return record

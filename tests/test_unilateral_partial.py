@@ -15,6 +15,7 @@ from contactcore.errors import SolverError
 from contactcore.laws import OPEN
 from contactcore.newton import partial
 
+from test_partial_status import check_partial_reported
 from test_xfem_opening import UNI
 from tolerances import (PARTIAL_MAP_RESIDUAL, TILT_OPENING_REFERENCE, TILT_PARTIAL_FROM_OPENING, UNI_OPENING,
                         UNI_OPENING_REFERENCE)
@@ -43,6 +44,7 @@ def test_uni_fe_p1_has_one_partial_point_and_the_references_opening(tmp_path):
     result = discretisation.solve(load_scene(path), FE(degree=1), 0.05)
     points = _partial_points(result.solver)
     assert len(points) == 1, result.solver.warnings
+    check_partial_reported(tmp_path, load_scene(path), result)  # reported `partial`, with its θ (test_partial_status)
     (x, y, theta), = points
     assert x == pytest.approx(0.325) and y == pytest.approx(0.5) and 0.0 < theta < 1.0
     interface = result.interface

@@ -44,7 +44,7 @@ from contactcore import ContactError, Scene
 from contactcore.enforcement import make_law
 from contactcore.exact import BONDED, EXACT_LAWS
 from contactcore.interface_path import InterfacePath
-from contactcore.laws import STATUS_NAMES
+from contactcore.laws import REPORTED_STATUS_NAMES, STATUS_NAMES
 
 from . import files
 from .agreement import (Agreement, default_exclusion, gap_floor, gap_floors, kept_samples, percent, profile_agreements,
@@ -86,11 +86,13 @@ def exact_twin(scene: Scene, field: str = "--against-exact") -> Scene:
 
 
 def status_split(path: InterfacePath) -> dict:
-    """Open, sticking and slipping points of Γ at the last increment, and
+    """Open, sticking and slipping points of Γ at the last increment (and
+    partial ones, where the unilateral law's partial answer has them), and
     the share of Γ's length (quadrature weight) of each."""
     final, w = path.final, path.weights / path.weights.sum()
-    return {**final.counts(), **{f"{name}_share": float(w @ (final.status == code))
-                                 for code, name in enumerate(STATUS_NAMES)}}
+    counts, status = final.counts(), final.reported_status()
+    return {**counts, **{f"{name}_share": float(w @ (status == code))
+                         for code, name in enumerate(REPORTED_STATUS_NAMES) if name in counts}}
 
 
 #: Γ's components and the vector each is measured against (module doc).
@@ -193,10 +195,12 @@ def section(scene: Scene, law_name: str, records: dict[str, dict]) -> str:
                              f"{at['s']:.4g} ({at['x']:.4g}, {at['y']:.4g}) | {percent(d['rms'])} | "
                              f"{files.cell(d['largest_difference'])} | "
                              f"{files.cell(d['largest_exact'])} | {files.cell(d['scale'])} |")
+    names = [n for n in REPORTED_STATUS_NAMES if n in STATUS_NAMES or any(
+        n in split for rec in records.values() for split in rec["status"].values())]  # partial where a run has it
     lines += ["", "Status on Γ at the last increment: quadrature points (share of Γ's length).", "",
-              "| method | enforcement | " + " | ".join(STATUS_NAMES) + " |", "|---|---|" + "---|" * len(STATUS_NAMES)]
+              "| method | enforcement | " + " | ".join(names) + " |", "|---|---|" + "---|" * len(names)]
     for label, rec in records.items():
         for enforcement, split in rec["status"].items():
             lines.append(f"| {label} | {enforcement} | " + " | ".join(
-                f"{split[name]} ({percent(split[f'{name}_share'])})" for name in STATUS_NAMES) + " |")
+                f"{split.get(name, 0)} ({percent(split.get(f'{name}_share', 0.0))})" for name in names) + " |")
     return "\n".join(lines) + "\n"

@@ -9,7 +9,10 @@ base64), which both ParaView and ``meshio.read`` open:
     the cell's centroid, :mod:`xdolfinx.output`).
 ``interface_NNNN.vtu``        (every method) Γ's quadrature points as a
     point cloud at converged step NNNN: point data ``gN``, ``gT``, ``tN``,
-    ``tT``, ``status`` (0 open, 1 stick, 2 slip), ``s`` (along Γ).
+    ``tT``, ``status`` (0 open, 1 stick, 2 slip, 3 partial: the unilateral
+    law's partial answer, contactcore.newton.partial), ``s`` (along Γ), and
+    at a step with partial points ``theta`` (a partial point's share θ of
+    the tie's shear, NaN at the others).
 ``interface.pvd``             the steps as a time series (time = the step).
 
 Bulk fields exist at the final state only (the methods keep no per-step
@@ -54,7 +57,9 @@ def write_interface(folder: Path, scene, path: InterfacePath) -> list[tuple[floa
     for n, step in enumerate(path.steps):
         name = f"interface_{n:04d}.vtu"
         data = {"gN": step.jump[:, 0], "gT": step.jump[:, 1], "tN": step.traction[:, 0],
-                "tT": step.traction[:, 1], "status": np.asarray(step.status, np.int32), "s": s}
+                "tT": step.traction[:, 1], "status": np.asarray(step.reported_status(), np.int32), "s": s}
+        if step.partial.any():
+            data["theta"] = np.asarray(step.theta, float)
         meshio.Mesh(_points3(path.points), vertices, point_data=data).write(folder / name, file_format="vtu")
         written.append((float(step.step), name))
     return written

@@ -2,11 +2,15 @@
 Newton iterations per increment.
 
 ``DIR/<method>/increments.csv``  one row per converged (sub-)increment:
-    iterations, final relative residual, open/stick/slip counts, mean and
-    RMS of t_N, t_T and mean g_N, g_T over Γ, and the open and slipping
-    fractions of Γ (all weighted by the quadrature).
+    iterations, final relative residual, open/stick/slip counts (and a
+    ``partial`` count where the unilateral law's partial answer has
+    partial points: contactcore.newton.partial), mean and RMS of t_N, t_T
+    and mean g_N, g_T over Γ, and the open and slipping fractions of Γ
+    (all weighted by the quadrature).
 ``DIR/<method>/interface.csv``   one row per increment and Γ point:
-    x, y, s (along Γ), g_N, g_T, t_N, t_T, status.
+    x, y, s (along Γ), g_N, g_T, t_N, t_T, status (open, stick, slip or
+    partial), and where a step has partial points a last column ``theta``:
+    a partial point's share θ of the tie's shear, empty at the others.
 ``DIR/plots/status_<method>.png`` status along Γ (x) against the increment (y).
 ``DIR/plots/response.png``       against the increment, methods overlaid:
     RMS t_N and t_T on Γ and the open and slipping fractions of Γ; on a
@@ -22,13 +26,13 @@ from pathlib import Path
 import numpy as np
 
 from contactcore import LineInterface
-from contactcore.laws import STATUS_NAMES
+from contactcore.laws import REPORTED_STATUS_NAMES, STATUS_NAMES
 from contactcore.interface_path import InterfacePath, along_from_entry
 
 from . import files
 from .plots import keep_span, legend_outside, pyplot, save, style
 
-STATUS_COLOURS = ("#bbbbbb", "#2c7fb8", "#d95f0e")  # open, stick, slip
+STATUS_COLOURS = ("#bbbbbb", "#2c7fb8", "#d95f0e", "#7b3294")  # open, stick, slip, partial
 
 
 def step_value(k: float) -> int | float:
@@ -39,12 +43,15 @@ def step_value(k: float) -> int | float:
 
 
 def increment_rows(path: InterfacePath) -> list[dict]:
-    """One row per converged step (see module doc)."""
+    """One row per converged step (see module doc); a ``partial`` count in
+    every row (0 where none) where any step has partial points."""
     w = path.weights / path.weights.sum()
+    partial = any(s.partial.any() for s in path.steps)
     rows = []
     for s in path.steps:
         means, rms = path.means(s), np.sqrt(w @ s.traction ** 2)
-        rows.append({"step": step_value(s.step), "iterations": s.iterations, "residual": s.residuals[-1], **s.counts(),
+        counts = {**s.counts(), **({"partial": int(s.partial.sum())} if partial else {})}
+        rows.append({"step": step_value(s.step), "iterations": s.iterations, "residual": s.residuals[-1], **counts,
                      **dict(zip(("mean_tN", "mean_tT", "mean_gN", "mean_gT"), map(float, means))),
                      "rms_tN": float(rms[0]), "rms_tT": float(rms[1]),
                      **{f"{name}_fraction": float(w @ (s.status == STATUS_NAMES.index(name)))
@@ -57,13 +64,17 @@ def write_history(folder: Path, scene, path: InterfacePath) -> None:
     rows = increment_rows(path)
     files.write_csv(folder / "increments.csv", rows, list(rows[0]))
     s = along_from_entry(scene, path.points)
+    partial = any(step.partial.any() for step in path.steps)  # then a theta column
     points = []
     for step in path.steps:
+        names, theta = step.status_names(), step.theta
         for i in range(len(s)):
             points.append({"step": step_value(step.step), "x": float(path.points[i, 0]), "y": float(path.points[i, 1]),
                            "s": float(s[i]), "gN": float(step.jump[i, 0]), "gT": float(step.jump[i, 1]),
                            "tN": float(step.traction[i, 0]), "tT": float(step.traction[i, 1]),
-                           "status": STATUS_NAMES[step.status[i]]})
+                           "status": names[i]})
+            if partial:
+                points[-1]["theta"] = float(theta[i]) if names[i] == "partial" else ""
     files.write_csv(folder / "interface.csv", points, list(points[0]))
 
 
@@ -76,8 +87,8 @@ def plot_status(out: Path, scene, label: str, path: InterfacePath) -> Path:
     """Status of every Γ point (x: along Γ) at every step (y)."""
     s = along_from_entry(scene, path.points)
     fig, ax = pyplot().subplots(figsize=(8, 4), layout="constrained")
-    for code, (name, colour) in enumerate(zip(STATUS_NAMES, STATUS_COLOURS)):
-        xs = [s[step.status == code] for step in path.steps]
+    for code, (name, colour) in enumerate(zip(REPORTED_STATUS_NAMES, STATUS_COLOURS)):
+        xs = [s[step.reported_status() == code] for step in path.steps]
         ys = [np.full(len(x), step.step) for x, step in zip(xs, path.steps)]
         if any(len(x) for x in xs):
             ax.scatter(np.concatenate(xs), np.concatenate(ys), s=6, c=colour, label=name, marker="s")

@@ -99,9 +99,24 @@ def _summary_table(summaries: list[dict]) -> str:
                      f"{sv['residual']:.1e} | {cond} |")
     footnote = [NOT_ESTIMATED] if estimated and any("estimate" not in s for s in summaries) else []
     footnote += _ladder_note(summaries) if estimated else []
+    footnote += _partial_note(summaries)
     warnings = [f"- {s['method']}: {w}" for s in summaries
                 for w in s["solver"]["warnings"] + s.get("estimate", {}).get("warnings", [])]
     return "\n".join(lines + footnote + ([""] + ["Warnings:"] + warnings if warnings else [])) + "\n"
+
+
+def _partial_note(summaries: list[dict]) -> list[str]:
+    """Under the table, only where a run's last increment has points of
+    the unilateral law's partial answer (contactcore.newton.partial): the
+    run's status counts on Γ and each partial point with its θ."""
+    lines = []
+    for s in summaries:
+        if s.get("partial"):
+            counts = ", ".join(f"{v} {k}" for k, v in s["status"].items())
+            points = "; ".join(f"({p['x']:.4g}, {p['y']:.4g}) θ = {p['theta']:.3g}" for p in s["partial"])
+            lines.append(f"- {s['method']}: status on Γ at the last increment {counts}; partial: {points}")
+    return ["", "Partial points (y_N = 0 with a share θ of the tie's shear, interface.csv's status `partial`):",
+            *lines] if lines else []
 
 
 def _ladder_note(summaries: list[dict]) -> list[str]:

@@ -1,4 +1,4 @@
-"""Γ's status (open, stick, slip) in the runs of an estimate.
+"""Γ's status (open, stick, slip, partial) in the runs of an estimate.
 
 Whether it ever took more than one value (:func:`switches`) sets the
 orders theory allows Γ's quantities under an exactly enforced law: at a
@@ -19,15 +19,16 @@ from __future__ import annotations
 import numpy as np
 
 from ..interface_path import along
-from ..laws import SLIP, STATUS_NAMES
+from ..laws import PARTIAL, REPORTED_STATUS_NAMES, SLIP
 from ..profiles import sample_points
 from ..scene import InterfaceProfile, Scene
 
 
 def switches(paths) -> bool:
     """Whether Γ's status (open, stick, slip forwards, slip backwards: the
-    sign of t_T) took more than one value over all increments of the runs'
-    interface ``paths``.  Where it never did (scene A under the exact
+    sign of t_T; partial, a point of the unilateral law's partial answer,
+    between open and closed) took more than one value over all increments
+    of the runs' interface ``paths``.  Where it never did (scene A under the exact
     unilateral law: closed and tied everywhere), no point of Γ separates
     two statuses, now or in the history that set a Coulomb slip, so nothing
     limits the solution's smoothness there
@@ -36,28 +37,40 @@ def switches(paths) -> bool:
     seen = set()
     for path in paths:
         for step in path.steps:
-            status = np.asarray(step.status)
+            status = _reported(step)
             backwards = (status == SLIP) & (np.asarray(step.traction)[:, 1] < 0)
             seen.update(np.unique(np.where(backwards, -1, status)).tolist())
     return len(seen) > 1
 
 
+def _reported(step) -> np.ndarray:
+    """A step's status as outputs report it (a partial point ``PARTIAL``,
+    :meth:`~contactcore.interface_path.Increment.reported_status`), read
+    from its ``status`` and its ``theta`` where it has one."""
+    status, theta = np.asarray(step.status), getattr(step, "theta", None)
+    return status if theta is None else np.where(np.isfinite(theta), PARTIAL, status)
+
+
 def status_along(scene: Scene, path) -> np.ndarray:
-    """The final increment's status (index into ``STATUS_NAMES``) at the
-    profile samples of Γ, each the status of the nearest quadrature point
-    along Γ."""
+    """The final increment's reported status (index into
+    ``REPORTED_STATUS_NAMES``: a partial point ``PARTIAL``) at the profile
+    samples of Γ, each the status of the nearest quadrature point along
+    Γ."""
     _, pts, _ = sample_points(scene, InterfaceProfile("gamma", ("gN",)))
     a, b = along(scene.interface, path.points), along(scene.interface, pts)
     nearest = np.argmin(np.abs(b[:, None] - a[None, :]), axis=1)
-    return path.final.status[nearest]
+    return _reported(path.final)[nearest]
 
 
 def status_change(scene: Scene, coarse_path, fine_path, hs: tuple[float, float] | None = None) -> dict:
     """The final status of two runs (at ``hs``, coarse and fine) compared
-    along Γ: the share of Γ in each status per run, and the samples whose
-    status differs."""
+    along Γ: the share of Γ in each status per run (``partial`` only where
+    either run has a partial point at a sample), and the samples whose
+    status differs (a partial point differs from every other status)."""
     s0, s1 = status_along(scene, coarse_path), status_along(scene, fine_path)
-    shares = lambda s: {n: float(np.mean(s == i)) for i, n in enumerate(STATUS_NAMES)}  # noqa: E731
+    either = np.any(s0 == PARTIAL) or np.any(s1 == PARTIAL)
+    names = REPORTED_STATUS_NAMES if either else REPORTED_STATUS_NAMES[:PARTIAL]
+    shares = lambda s: {n: float(np.mean(s == i)) for i, n in enumerate(names)}  # noqa: E731
     return {"coarse": shares(s0), "fine": shares(s1), "differ": int(np.sum(s0 != s1)), "samples": len(s0),
             "h": list(hs) if hs else None}
 

@@ -57,10 +57,13 @@ body let go), or when it has no partial answer: then the refusal stands.
 The answer is committed as the step to the last increment (a law
 without history is path-independent): a partial point's status is
 ``STICK`` (``y_N = 0`` is closed in the law's definition), its traction
-``(0, τ)``, and the run warns once, naming the partial points, their
-``θ`` and where they lie (``Result.solver.warnings``).  The residual of
-the answer is held to RESIDUAL_FAIL as Newton's is, and a body the
-answer lets go is refused (:func:`contactcore.health.check_held`).
+``(0, τ)``, its θ the step's ``theta`` (NaN at every other point;
+outputs report the point as ``partial``,
+:meth:`contactcore.interface_path.Increment.reported_status`), and the
+run warns once, naming the partial points, their ``θ`` and where they
+lie (``Result.solver.warnings``).  The residual of the answer is held
+to RESIDUAL_FAIL as Newton's is, and a body the answer lets go is
+refused (:func:`contactcore.health.check_held`).
 
 Measured 2026-11-28 (docs/contact-enforcement.md, "The unilateral law
 under shear"): ``uni`` fe P1 at h = 0.05, one partial point, θ = 0.0587,
@@ -272,7 +275,10 @@ def _commit(newton, search: _Search, k: float, s, u, y, tau, P, maps: int) -> bo
     health.check_held(newton.scene, *newton._gamma, ranks.gather(status), where)
     newton._commit(k, search.factors, u, response, maps, [relative])
     tie = search.k[P, 1] * y[P, 1]
-    theta = ranks.gather(np.divide(tau, tie, out=np.zeros_like(tau), where=tie != 0))  # y_T = 0: τ within the band of 0
+    share = np.divide(tau, tie, out=np.zeros_like(tau), where=tie != 0)  # y_T = 0: τ within the band of 0
+    newton.path.steps[-1].theta = np.full(search.m, np.nan)  # the step's θ per point, for its outputs
+    newton.path.steps[-1].theta[P] = share
+    theta = ranks.gather(share)
     points = ranks.gather(np.asarray(newton.itf.points, float).reshape(-1, 2)[P])
     order = canonical_order(newton.scene.interface, points)  # along Γ: no partition changes it
     points, theta = points[order], theta[order]

@@ -1,0 +1,115 @@
+"""A point of the unilateral law's partial answer (contactcore.newton.partial:
+y_N = 0 with a share θ of the tie's shear) is reported as ``partial``, with
+its θ, in the Result and interface.csv; Newton's status there stays STICK.
+
+grader16's `uni` (tests/test_xfem_opening.py), fe P1 at h = 0.05, has one
+partial point, at s = 0.325 (the run's warning names it and its θ); a run
+without a partial point reports what its law's status says."""
+import csv
+import re
+
+import numpy as np
+
+from contactcore import discretisation, load_scene
+from contactcore.laws import PARTIAL, STICK
+from verification.interface import write_history
+
+
+def _rows(folder):
+    with open(folder / "interface.csv", newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def check_partial_reported(tmp_path, scene, result):
+    """``result``: `uni` fe P1 at h = 0.05 (solved once, in
+    tests/test_unilateral_partial.py): its one partial point is reported
+    ``partial`` with its θ in the Result, its summary and interface.csv."""
+    final = result.interface.final
+    where = np.flatnonzero(final.partial)
+    assert len(where) == 1, where
+    # Newton's status is untouched: the point is closed (STICK); outputs say partial
+    assert final.status[where[0]] == STICK and final.reported_status()[where[0]] == PARTIAL
+    assert final.status_names()[where[0]] == "partial"
+    assert np.isnan(np.delete(final.theta, where)).all()
+    # θ is the warning's (printed to 3 digits there)
+    warned = [w for w in result.solver.warnings if "share θ of the tie's shear" in w]
+    assert len(warned) == 1, result.solver.warnings
+    theta = float(re.search(r"θ = ([0-9.e+-]+)", warned[0]).group(1))
+    assert f"{final.theta[where[0]]:.3g}" == f"{theta:.3g}", (final.theta, warned)
+    assert 0 < final.theta[where[0]] < 1
+    # summary(): counts with partial apart from stick, and the point
+    summary = result.summary()
+    assert summary["status"]["partial"] == 1
+    assert sum(summary["status"].values()) == len(final.status)
+    assert summary["status"]["stick"] == int(np.sum(final.status == STICK)) - 1
+    assert summary["partial"] == [{"x": float(result.interface.points[where[0], 0]),
+                                   "y": float(result.interface.points[where[0], 1]),
+                                   "theta": float(final.theta[where[0]])}]
+    # interface.csv: status partial and θ at that point of the last step, θ empty elsewhere
+    write_history(tmp_path, scene, result.interface)
+    rows = _rows(tmp_path)
+    last = [r for r in rows if r["step"] == rows[-1]["step"]]
+    partial = [r for r in last if r["status"] == "partial"]
+    assert len(partial) == 1 and float(partial[0]["theta"]) == final.theta[where[0]]
+    assert all(r["theta"] == "" for r in rows if r["status"] != "partial")
+    assert [r["status"] for r in last] == final.status_names()
+
+
+def test_without_a_partial_point_statuses_are_the_laws(tmp_path):
+    """C-coulomb (penalty), fe P1 at its coarse h: open, stick and slip
+    as the law says, no theta column, no partial count."""
+    from xdolfinx.options import FE
+    scene = load_scene("C-coulomb")
+    result = discretisation.solve(scene, FE(degree=1), 0.1)
+    path = result.interface
+    assert all(s.theta is None and not s.partial.any() for s in path.steps)
+    assert all(np.array_equal(s.reported_status(), s.status) for s in path.steps)
+    assert "partial" not in result.summary() and "partial" not in result.summary()["status"]
+    write_history(tmp_path, scene, path)
+    rows = _rows(tmp_path)
+    assert "theta" not in rows[0]
+    names = {"open", "stick", "slip"}
+    assert {r["status"] for r in rows} <= names and len({r["status"] for r in rows}) > 1
+    with open(tmp_path / "increments.csv", newline="") as f:
+        assert "partial" not in next(csv.reader(f))
+
+
+def test_summary_md_lists_partial_points_only_where_a_run_has_them():
+    """summary.md's note under the table: each run with partial points, its
+    counts and each point with θ (summary.json's `status` and `partial`);
+    nothing for a run without."""
+    from verification.run import _partial_note
+    plain = {"method": "fe", "status": {"open": 1, "stick": 2, "slip": 0}}
+    partial = {"method": "xfem", "status": {"open": 19, "stick": 40, "slip": 0, "partial": 1},
+               "partial": [{"x": 0.325, "y": 0.5, "theta": 0.0587}]}
+    assert _partial_note([plain]) == []
+    note = _partial_note([plain, partial])
+    assert len(note) == 3 and note[2].startswith("- xfem: ") and "1 partial" in note[2]
+    assert "(0.325, 0.5) θ = 0.0587" in note[2]
+
+
+def _path(status, theta=None):
+    """One increment on Γ: y = 0.5 at len(status) evenly spaced points."""
+    from contactcore.interface_path import Increment, InterfacePath
+    m = len(status)
+    points = np.column_stack([np.linspace(0.05, 0.95, m), np.full(m, 0.5)])
+    step = Increment(1.0, (1.0,), 1, [0.0], np.zeros((m, 2)), np.zeros((m, 2)), np.asarray(status, np.int8),
+                     None if theta is None else np.asarray(theta, float))
+    return InterfacePath(points, np.full(m, 1.0 / m), [step])
+
+
+def test_the_estimate_compares_a_partial_point_as_its_own_status(tmp_path):
+    """status_change: a point partial in one run and sticking in the other
+    differs there; `partial` among the shares only where a run has one.
+    switches: a partial point beside sticking ones is a change of status."""
+    from contactcore.estimate.status import status_change, switches
+    from test_xfem_opening import UNI
+    (tmp_path / "uni.toml").write_text(UNI)
+    scene = load_scene(tmp_path / "uni.toml")  # Γ the line y = 0.5 of the paths
+    stick = _path([STICK] * 5)
+    mixed = _path([STICK] * 5, theta=[np.nan, np.nan, 0.5, np.nan, np.nan])
+    same = status_change(scene, stick, stick)
+    assert same["differ"] == 0 and "partial" not in same["fine"]
+    change = status_change(scene, stick, mixed)
+    assert change["differ"] > 0 and change["fine"]["partial"] > 0 and change["coarse"]["partial"] == 0
+    assert not switches([stick]) and switches([mixed])
