@@ -2,7 +2,7 @@
 (docs/contact-enforcement.md, "The unilateral law under shear": exact
 unilateral, Γ at 20° through (0.5, 0.402), xfem P2 on quads at h =
 0.0125, one partial point after 8 maps).  One run of four was once
-refused there (2026-11-28, not reproduced since in eight runs: Haswell,
+refused there (2026-11-28, not reproduced since in nine runs: Haswell,
 Nehalem, the native kernel, one thread or the default, cold or warm JIT
 cache, beside other runs; docs/contact-enforcement-log.md, "The moved
 cut's partial answer, run by run").  These tests pin what would make
