@@ -1406,3 +1406,20 @@ TILT_PARTIAL_FROM_OPENING = 0.025
 #: tests/test_estimate_warnings.py still tests a warned miss.  (A5's fe P2
 #: g_N, 0.485, is SCENE_A_EFFECTIVITY_OUTSIDE's, now warned: SCENE_A_SILENT.)
 LAYERED_SLIP_EFGM_P1_ENERGY_EFFECTIVITY = 0.410
+
+# --- a20hunt2 (2026-11-28): the partial answer of scene A's moved cut is not round-off's ---
+
+#: Every decision of the partial search on scene A with Γ at 20° through
+#: (0.5, 0.402), exact unilateral, xfem P2 on quads at h = 0.0125 (8 maps,
+#: one partial point) lies at least this many band widths (DECISION_BAND of
+#: Γ's largest |y_N|, or of its largest |k_T y_T| for a partial point's τ)
+#: from the band's edge: measured 6.0 at least (2026-11-28, Haswell and
+#: the native kernel alike; the nearest, at the 2nd map), while round-off
+#: leaves ~1e-12 of max|y_N| in y_N, 1e-7 band widths.
+PARTIAL_DECISION_MARGIN = 1.0
+
+#: The jumps the search reads perturbed by this share of Γ's largest |y|
+#: (seeded, point by point): 1e3 times the round-off of a direct solve's
+#: jumps (~1e-12 of their largest, the residuals of "The unilateral law
+#: under shear"), a tenth of a band width.
+PARTIAL_PERTURBATION = 1e-9
