@@ -31,6 +31,7 @@ from .. import tolerances as tol
 from ..geometry import LineInterface, Rectangle, tangent_of
 from ..scene.loads import BODY, EDGE, acts_on, edge_traction
 from .residual import NOT_CONVERGED
+from .overturning import overturns
 from .restraint import _BODY_NAMES, _free_modes, _mode_matrix, _restraint
 
 
@@ -93,12 +94,11 @@ def beyond_cone(scene, k: float) -> str:
     proves there is no equilibrium (Wriggers 2006, §2.3), so such a load
     is refused on every machine alike, however close to μ."""
     mu = getattr(scene.law, "mu", None)
-    if not scene.law.frictional or mu is None:
-        return ""
-    for name, shear, press, held in _demands(scene, k):
-        if not held and press > 0 and _beyond(shear, press, mu):
-            return _slides_off(name, shear, press, mu)
-    return ""
+    if scene.law.frictional and mu is not None:
+        for name, shear, press, held in _demands(scene, k):
+            if not held and press > 0 and _beyond(shear, press, mu):
+                return _slides_off(name, shear, press, mu)
+    return overturns(scene, k, _loaded_parts)  # any law without tension: the loads' line of action must meet Γ
 
 
 def _dot(a, b) -> float:

@@ -133,8 +133,8 @@ class _Newton(_Continuation, _Iteration, _Correction, _Statuses, _LineSearch, _C
         beyond = health.beyond_cone(self.scene, float(n))
         if beyond:
             raise SolverError(f"scene {self.scene.name}: increment {n} of {self.scene.increments}: {beyond}\n  "
-                              f"(from the scene's loads, before Newton: a resultant beyond μ by more than "
-                              f"{tol.DEMAND_ROUNDOFF:g} of it has no equilibrium)")
+                              f"(from the scene's loads, before Newton: a resultant beyond μ, or meeting Γ beyond its "
+                              f"ends, by more than {tol.DEMAND_ROUNDOFF:g} of it has no equilibrium)")
         pending, failures, rest = [(float(n), 0)], [], False
         start = float(n - 1)
         while pending:
