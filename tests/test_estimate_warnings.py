@@ -214,3 +214,31 @@ def test_the_layered_slips_efgm_p1_energy_estimate_is_named_where_its_quadrature
     rod, = [r for r in effectivity("pressurised_rod", ("efgm", 1)) if r["profile"] == "energy"]
     assert tol.EFFECTIVITY[0] <= rod["effectivity"] <= tol.EFFECTIVITY[1] and not rod["warned"]
 
+
+
+def test_split_cell_share_names_a_difference_above_round_off_only():
+    """review9 #5: ``split_cell_share`` names a degree-2 estimate whose
+    difference lies at the cells' scale (``cell_scale`` at or above
+    SPLIT_CELL_SHARE) only where the two runs differ by more than
+    round-off, of the quantity (ESTIMATE_ROUNDOFF of its largest) or of
+    the scene's own size (NEGLIGIBLE_SHARE): the closed forms, whose runs
+    agree to round-off, stay silent.  Scene A's A5 samples, synthetic
+    columns: a difference of 10 round-offs is named, one of a tenth is not."""
+    from contactcore.estimate.extrapolation import QuantityEstimate
+    from contactcore.scaling import Sizes
+    from verification.agreement import default_exclusion
+    scene = load_scene("A")
+    x = np.linspace(0.1, 0.9, 9)
+    own = Sizes.of(scene).displacement
+    floor = max(core_tol.ESTIMATE_ROUNDOFF * own, core_tol.NEGLIGIBLE_SHARE * own)
+
+    def levels(diff):
+        base = {"s": x, "x": x, "y": np.full_like(x, 0.4), "gN": np.full_like(x, own)}
+        fine = dict(base, gN=base["gN"] + diff * np.where(np.arange(x.size) % 2, 1.0, -1.0))
+        return [[ProfileData("A5", "length", base)], [ProfileData("A5", "length", fine)]]
+
+    estimate = {"A5": {"gN": QuantityEstimate(np.zeros_like(x), 2.2, (2.2, 3.0), cell_scale=1.0)}}
+    exclude = default_exclusion(scene)
+    assert est.caveats.split_cell_share(scene, levels(10 * floor), estimate, exclude, 2) == {"A5:gN": 1.0}
+    assert est.caveats.split_cell_share(scene, levels(0.1 * floor), estimate, exclude, 2) == {}
+    assert est.caveats.split_cell_share(scene, levels(10 * floor), estimate, exclude, 1) == {}
