@@ -54,7 +54,7 @@ def increment_rows(path: InterfacePath) -> list[dict]:
         rows.append({"step": step_value(s.step), "iterations": s.iterations, "residual": s.residuals[-1], **counts,
                      **dict(zip(("mean_tN", "mean_tT", "mean_gN", "mean_gT"), map(float, means))),
                      "rms_tN": float(rms[0]), "rms_tT": float(rms[1]),
-                     **{f"{name}_fraction": float(w @ (s.status == STATUS_NAMES.index(name)))
+                     **{f"{name}_fraction": float(w @ (s.reported_status() == STATUS_NAMES.index(name)))
                         for name in ("open", "slip")}})
     return rows
 

@@ -38,7 +38,9 @@ def switches(paths) -> bool:
     for path in paths:
         for step in path.steps:
             status = _reported(step)
-            backwards = (status == SLIP) & (np.asarray(step.traction)[:, 1] < 0)
+            # a frictionless point's t_T is round-off: no direction to tell
+            frictionless = getattr(step, "frictionless", False)
+            backwards = (status == SLIP) & (np.asarray(step.traction)[:, 1] < 0) & (not frictionless)
             seen.update(np.unique(np.where(backwards, -1, status)).tolist())
     return len(seen) > 1
 
@@ -47,6 +49,8 @@ def _reported(step) -> np.ndarray:
     """A step's status as outputs report it (a partial point ``PARTIAL``,
     :meth:`~contactcore.interface_path.Increment.reported_status`), read
     from its ``status`` and its ``theta`` where it has one."""
+    if hasattr(step, "reported_status"):
+        return step.reported_status()
     status, theta = np.asarray(step.status), getattr(step, "theta", None)
     return status if theta is None else np.where(np.isfinite(theta), PARTIAL, status)
 

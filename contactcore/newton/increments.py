@@ -102,7 +102,9 @@ class _Newton(_Continuation, _Iteration, _Correction, _Statuses, _LineSearch, _C
         self.u, self.state, self.status = u, response.state, response.status
         self._converged_at = (self._converged_at + [(_flat(factors), u.copy())])[-2:]
         g = self.itf.jumps(u)
-        self.path.steps.append(Increment(k, factors, iterations, history, g, response.traction, response.status))
+        frictionless = self.law.frictional and self.law.mu == 0
+        self.path.steps.append(Increment(k, factors, iterations, history, g, response.traction, response.status,
+                                         frictionless=frictionless))
         self.report.iterations.append(iterations)
         self.report.residual = history[-1]
 
