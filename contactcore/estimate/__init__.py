@@ -34,8 +34,9 @@ in their home.
 numpy and scipy only; no method is imported.
 """
 from .caveats import (cell_scale_orders, cell_scale_warnings, curved_layer, curved_layer_warning, energy_caveat,
-                      exact_traction_warning, exact_tractions, fast_gamma, fast_gamma_warning, feature_size, order_mismatch, order_warnings, pollution_warning, residue_warnings, residues,
-                      stencil_radius, unsettled, unsettled_warnings, quadrature_energy, split_cell_share, split_cell_share_warning)
+                      exact_traction_warning, exact_tractions, fast_gamma, fast_gamma_warning, feature_size, order_mismatch,
+                      order_warnings, pollution_warning, quadrature_energy, residue_warnings, residues,
+                      split_cell_share, split_cell_share_warning, stencil_radius, unsettled, unsettled_warnings)
 from .energy import EnergyEstimate, EnergyRule, energy_estimate, energy_norm, energy_rule, recovered_stress
 from .extrapolation import (QuantityEstimate, balanced_order, cell_scale_part, observed_order, profile_estimates,
                             richardson, rms, roundoff_floor, sample_groups, three_run_order)
@@ -54,9 +55,8 @@ __all__ = [
     # caveats
     "cell_scale_orders", "cell_scale_warnings", "curved_layer", "curved_layer_warning", "energy_caveat",
     "exact_traction_warning", "exact_tractions", "fast_gamma", "fast_gamma_warning", "feature_size", "order_mismatch", "order_warnings",
-    "pollution_warning", "residue_warnings", "residues", "stencil_radius", "unsettled", "unsettled_warnings",
-    "quadrature_energy", "split_cell_share",
-    "split_cell_share_warning",
+    "pollution_warning", "quadrature_energy", "residue_warnings", "residues", "split_cell_share",
+    "split_cell_share_warning", "stencil_radius", "unsettled", "unsettled_warnings",
     # status
     "status_along", "status_change", "status_warning", "switches",
     # energy

@@ -483,17 +483,7 @@ def curved_layer(scene: Scene, levels: list[list[ProfileData]], method: str, deg
     on four sets (2026-11-28), so the warning gives no direction.  Empty for a straight Γ or another method.
     A sample at h within :data:`~contactcore.tolerances.GEOMETRY`
     (relative) counts, so round-off does not decide it."""
-    if (method, degree) not in RECOVERED_STRESS:
-        return []
-    return _near_curved_gamma(scene, levels, h, exclude)
-
-
-def _near_curved_gamma(scene: Scene, levels: list[list[ProfileData]], h: float, exclude: float) -> list[str]:
-    """The ``PID:Q`` (``Q`` a stress) of the profiles with a sample
-    kept (at least ``exclude`` from the singular points) within ``h`` of a
-    curved Γ (none for a straight one); a sample at ``h`` within
-    :data:`~contactcore.tolerances.GEOMETRY` (relative) counts."""
-    if scene.interface.straight_in(scene.domain):
+    if (method, degree) not in RECOVERED_STRESS or scene.interface.straight_in(scene.domain):
         return []
     names = []
     for prof in levels[-1]:

@@ -31,7 +31,7 @@ from .. import tolerances as tol
 from ..geometry import LineInterface, Rectangle, tangent_of
 from ..scene.loads import BODY, EDGE, acts_on, edge_traction
 from .residual import NOT_CONVERGED
-from .overturning import overturns
+from .overturning import eccentricity, overturn_refusal, overturned
 from .restraint import _BODY_NAMES, _free_modes, _mode_matrix, _restraint
 
 
@@ -52,7 +52,7 @@ def friction_demand(scene, k: float) -> str:
     if not scene.law.unilateral:  # springs that carry tension hold any load
         return ""
     mu = scene.law.mu if scene.law.frictional else float("inf")
-    for name, shear, press, held in _demands(scene, k):
+    for name, shear, press, held, e in _demands(scene, k):
         if held:
             return (f"body {name}: {held}, and the loads pull it off Γ: no equilibrium, as contact only pushes; "
                     "hold it that way with a support or pin, or with springs that carry tension (type = \"linear\")")
@@ -61,6 +61,8 @@ def friction_demand(scene, k: float) -> str:
             return f"body {name} is held by Γ alone and the loads {how}: no equilibrium without a support"
         if _beyond(shear, press, mu):
             return _slides_off(name, shear, press, mu)
+        if overturned(scene, e):
+            return overturn_refusal(scene, name, e)
     return ""
 
 
@@ -94,11 +96,16 @@ def beyond_cone(scene, k: float) -> str:
     proves there is no equilibrium (Wriggers 2006, §2.3), so such a load
     is refused on every machine alike, however close to μ."""
     mu = getattr(scene.law, "mu", None)
-    if scene.law.frictional and mu is not None:
-        for name, shear, press, held in _demands(scene, k):
-            if not held and press > 0 and _beyond(shear, press, mu):
-                return _slides_off(name, shear, press, mu)
-    return overturns(scene, k, _loaded_parts)  # any law without tension: the loads' line of action must meet Γ
+    if not scene.law.unilateral:  # springs that carry tension hold any load
+        return ""
+    for name, shear, press, held, e in _demands(scene, k):
+        if held or press <= 0:
+            continue
+        if scene.law.frictional and mu is not None and _beyond(shear, press, mu):
+            return _slides_off(name, shear, press, mu)
+        if overturned(scene, e):  # any law without tension: the loads' line of action must meet Γ
+            return overturn_refusal(scene, name, e)
+    return ""
 
 
 def _dot(a, b) -> float:
@@ -108,13 +115,15 @@ def _dot(a, b) -> float:
 
 
 def _demands(scene, k: float):
-    """``(name, |F·t|, F·n pressing it onto Γ, "")`` of each body held by Γ
-    alone and loaded (:func:`friction_demand`), at increment ``k``, F·n
+    """``(name, |F·t|, F·n pressing it onto Γ, "", e)`` of each body held
+    by Γ alone and loaded (:func:`friction_demand`), at increment ``k``, F·n
     within :data:`~contactcore.tolerances.ALONG_GAMMA` of |F| taken as 0
-    (F along Γ); ``(name, 0, 0, how)`` of a body its supports and pins hold
-    in part, whose loads pull it off Γ in the motion ``how`` they leave
-    free (:func:`_pulled_off`); none where Γ is not a line across a
-    rectangle."""
+    (F along Γ), ``e`` where the loads' line of action meets Γ's line,
+    from Γ's midpoint (:func:`contactcore.health.overturning.eccentricity`;
+    0 where F does not press); ``(name, 0, 0, how, 0)`` of a body its
+    supports and pins hold in part, whose loads pull it off Γ in the motion
+    ``how`` they leave free (:func:`_pulled_off`); none where Γ is not a
+    line across a rectangle."""
     if not isinstance(scene.interface, LineInterface) or not isinstance(scene.domain, Rectangle):
         return
     n = np.asarray(scene.interface.normal, float)
@@ -128,13 +137,15 @@ def _demands(scene, k: float):
         if free.shape[1] < 3:  # held in part by its supports and pins
             how = _pulled_off(scene, b, supports[3 * b:3 * b + 3, 3 * b:3 * b + 3], k)
             if how:
-                yield name, 0.0, 0.0, how
+                yield name, 0.0, 0.0, how, 0.0
             continue
-        force = _boundary_resultant(scene, b, scene.factors(k)[0])
+        parts = list(_loaded_parts(scene, b, scene.factors(k)[0]))
+        force = _resultant(parts)
         if force.any():
             press = -_dot(force, n) if b == 1 else _dot(force, n)
             along = abs(press) <= tol.ALONG_GAMMA * math.hypot(*force)  # round-off's sign decides nothing
-            yield name, abs(_dot(force, tangent_of(n[None])[0])), 0.0 if along else float(press), ""
+            e = 0.0 if along else eccentricity(scene, parts, force)
+            yield name, abs(_dot(force, tangent_of(n[None])[0])), 0.0 if along else float(press), "", e
 
 
 def _pulled_off(scene, body: int, Q: np.ndarray, k: float) -> str:
@@ -212,7 +223,7 @@ def tie_cause(scene, k: float, failure: str, from_rest: bool = False) -> str:
     (``law.unilateral``, not ``law.frictional``), named as the scene names it."""
     if not scene.law.unilateral or scene.law.frictional or NOT_CONVERGED not in failure:
         return ""
-    ratios = [f"{shear / press:.3g} on body {name}" for name, shear, press, _ in _demands(scene, k) if press > 0]
+    ratios = [f"{shear / press:.3g} on body {name}" for name, shear, press, *_ in _demands(scene, k) if press > 0]
     mu = f"mu a few times the loads' shear/normal ({ratios[0]})" if ratios else "a large mu"
     exact = scene.law.enforcement == "exact"
     more = ("more increments do not help: from rest a smaller step is the same problem scaled" if from_rest else
@@ -288,4 +299,9 @@ def _part(phi_a: float, phi_b: float, body: int) -> tuple[float, float]:
 def _boundary_resultant(scene, body: int, factors) -> np.ndarray:
     """The resultant of the tractions and pressures on the part of each
     loaded edge of the rectangle that lies on ``body`` (0 −, 1 +)."""
-    return sum((t * length for t, length, _ in _loaded_parts(scene, body, factors)), np.zeros(2))
+    return _resultant(_loaded_parts(scene, body, factors))
+
+
+def _resultant(parts) -> np.ndarray:
+    """``Σ t·length`` of :func:`_loaded_parts`' ``(t, length, point)``."""
+    return sum((t * length for t, length, _ in parts), np.zeros(2))
