@@ -1423,3 +1423,11 @@ PARTIAL_DECISION_MARGIN = 1.0
 #: jumps (~1e-12 of their largest, the residuals of "The unilateral law
 #: under shear"), a tenth of a band width.
 PARTIAL_PERTURBATION = 1e-9
+
+# --- grazing3 (2026-11-28): the grazing warning's printed figures ---
+
+#: A figure the grazing warning prints to 2 significant digits (``:.2g``)
+#: lies within half a unit of its 2nd digit of the value, at most 0.05 of
+#: it (leading digit 1): the warning's opening, scale, shear and pressure
+#: are compared with the answer's own to this share.
+PRINTED_2G = 0.05
