@@ -44,8 +44,9 @@ One idea a module, each with its maths and sources:
   equilibrium (Coulomb's cone on a body held by Γ alone, a body pulled
   off Γ, the unilateral law's tie);
 - :mod:`~contactcore.health.grazing`: the warning on a ``unilateral``
-  answer whose open zone is the mesh's (Γ opened by the discretisation's
-  error in g_N while its closed points carry shear).
+  answer whose open zone is the mesh's (its closed points carry shear
+  but no load presses them, so the discretisation's error in g_N decides
+  which points open).
 
 The arrows: ``equilibrium`` → ``restraint`` → ``stiffness``;
 ``equilibrium`` → ``residual``.
