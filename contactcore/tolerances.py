@@ -1033,6 +1033,13 @@ MODULUS_CONTRAST_MIN = 1e-12
 #: the domain's length scale), at most ~this² points whatever h: an RMS
 #: needs no finer sampling.
 SMALL_STRAIN_SAMPLES = 40
+#: A body no sample of that grid reaches (a layer thinner than a sample
+#: cell or than h/2 between Γ and the boundary) is sampled on the grid's
+#: cells halved up to this many times: down to L/40/2^12 ≈ 6e-6 L, a
+#: thousandth of the thinnest layer measured (grader24's 1e-3 L top
+#: layer, found at 7 halvings, 2026-11-28), with at most a few thousand
+#: cells per level along Γ.
+SMALL_STRAIN_REFINEMENTS = 12
 
 #: A failed solve names a spring whose entry k w (w a quadrature weight) lies
 #: outside [SPRING_HINT_RANGE, 1/SPRING_HINT_RANGE]·E as its likely cause:

@@ -39,6 +39,41 @@ def ligament_warnings(scene: "Scene", h: float) -> list[str]:
             "refine to an h below that gap"]
 
 
+def _clear_samples(scene, lo, hi, h: float) -> tuple[np.ndarray, np.ndarray]:
+    """The centres of the cells ``lo``, ``hi`` that lie inside one body,
+    clear of Γ and of the boundary by half the cell's diagonal and by
+    ``h/2``, and their bodies (0 for −, 1 for +)."""
+    centre = (lo + hi) / 2
+    clear = np.maximum(np.linalg.norm(hi - lo, axis=1) / 2, h / 2)
+    inside = ((scene.domain.distance_to_boundary(centre) > clear)
+              & (np.abs(scene.interface.signed_distance(centre)) > clear))
+    centre = centre[inside]
+    return centre, (scene.interface.phi(centre) >= 0).astype(int)
+
+
+def _thin_body_samples(scene, body: int, lo, hi) -> np.ndarray:
+    """Samples of a ``body`` that no sample of :func:`small_strain_warnings`'
+    grid reaches (a layer thinner than the grid's cells, or than h, between
+    Γ and the boundary): the grid's cells that may meet the body, halved
+    up to ``SMALL_STRAIN_REFINEMENTS`` times, until some cell's centre lies
+    in it clear of Γ and of the boundary by half its diagonal (not by h/2:
+    the body is thinner than that, and every method's field of the body
+    there is what it solved for it).  None found: an empty array."""
+    for _ in range(tol.SMALL_STRAIN_REFINEMENTS):
+        centre, half = (lo + hi) / 2, np.linalg.norm(hi - lo, axis=1) / 2
+        side = (scene.interface.phi(centre) >= 0).astype(int)
+        sd, db = np.abs(scene.interface.signed_distance(centre)), scene.domain.distance_to_boundary(centre)
+        found = (side == body) & (sd > half) & (db > half)
+        if np.any(found):
+            return centre[found]
+        meets = ((side == body) | (sd <= half)) & (db > -half)
+        lo, hi = lo[meets], hi[meets]
+        mid = (lo + hi) / 2
+        lo = np.concatenate([lo, np.column_stack([mid[:, 0], lo[:, 1]]), np.column_stack([lo[:, 0], mid[:, 1]]), mid])
+        hi = np.concatenate([mid, np.column_stack([hi[:, 0], mid[:, 1]]), np.column_stack([mid[:, 0], hi[:, 1]]), hi])
+    return np.empty((0, 2))
+
+
 def small_strain_warnings(scene: "Scene", fields, h: float, strain_unit: float = 1.0) -> list[str]:
     """The answer's strain too large for the small-strain theory every
     method solves: the RMS over a body of its largest principal strain,
@@ -50,33 +85,37 @@ def small_strain_warnings(scene: "Scene", fields, h: float, strain_unit: float =
     body of any method's mesh of spacing ``h``),
     above :data:`~contactcore.tolerances.SMALL_STRAIN_LIMIT`.  An RMS,
     not a peak: a corner's stress singularity, integrable, does not
-    trigger it as h falls."""
+    trigger it as h falls.  A body no such centre reaches (a layer
+    thinner than a cell or than h) is sampled on finer cells
+    (:func:`_thin_body_samples`), never skipped: one too thin for those
+    is named as not checked."""
     lo, hi = domain_cells(scene.domain, scene.length_scale / tol.SMALL_STRAIN_SAMPLES)
-    centre = (lo + hi) / 2
-    clear = np.maximum(np.linalg.norm(hi - lo, axis=1) / 2, h / 2)
-    inside = ((scene.domain.distance_to_boundary(centre) > clear)
-              & (np.abs(scene.interface.signed_distance(centre)) > clear))
-    centre = centre[inside]
-    bodies = (scene.interface.phi(centre) >= 0).astype(int)
-    if not len(centre):
-        return []
-    stress = np.asarray(fields.stress(centre, bodies), float)
-    found = []
+    centre, bodies = _clear_samples(scene, lo, hi, h)
+    found, unchecked = [], []
     for b, D in zip(range(len(BODIES)), scene.voigt_matrices()):
-        if not np.any(bodies == b):
+        points = centre[bodies == b] if np.any(bodies == b) else _thin_body_samples(scene, b, lo, hi)
+        if not len(points):
+            unchecked.append(BODIES[b])
             continue
-        exx, eyy, gxy = np.linalg.solve(D, stress[bodies == b].T)
+        stress = np.asarray(fields.stress(points, np.full(len(points), b)), float)
+        exx, eyy, gxy = np.linalg.solve(D, stress.T)
         largest = np.abs(exx + eyy) / 2 + np.hypot((exx - eyy) / 2, gxy / 2)
         rms = strain_unit * float(np.sqrt(np.mean(largest ** 2)))
         if not rms <= tol.SMALL_STRAIN_LIMIT:
             found.append(f"{rms:.2g} in body {BODIES[b]} (E = {scene.user.materials[BODIES[b]].E:.3g} "
                          f"{scene.user.units.stress})")
-    if not found:
-        return []
-    return [f"strains far beyond small strain: the RMS of a body's largest principal strain is {' and '.join(found)}, "
-            f"above {tol.SMALL_STRAIN_LIMIT:g}: the small-strain (linear) theory every method solves does not "
-            "hold there (its strain omits Green's ½∇uᵀ∇u, which is ε/2 of it), so its displacements and "
-            "stresses mean nothing physical; check the moduli and loads (units?)"]
+    warnings = []
+    if found:
+        warnings.append(f"strains far beyond small strain: the RMS of a body's largest principal strain is "
+                        f"{' and '.join(found)}, above {tol.SMALL_STRAIN_LIMIT:g}: the small-strain (linear) "
+                        "theory every method solves does not hold there (its strain omits Green's ½∇uᵀ∇u, "
+                        "which is ε/2 of it), so its displacements and stresses mean nothing physical; check "
+                        "the moduli and loads (units?)")
+    if unchecked:
+        warnings.append(f"body {' and '.join(unchecked)} is thinner than the small-strain check's finest sample "
+                        f"cell (L/{tol.SMALL_STRAIN_SAMPLES}/2^{tol.SMALL_STRAIN_REFINEMENTS}): its strain was "
+                        "not checked against small strain")
+    return warnings
 
 
 def interface_warnings(scene: "Scene", h: float, fitted: bool = False) -> list[str]:
