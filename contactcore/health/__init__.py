@@ -63,7 +63,7 @@ from .grazing import grazing_warnings, grazing_zone
 from .residual import (DIVERGED, NOT_CONVERGED, SHORT_OF_CHECK, backward_error, check_residual, options_chose,
                        relative_residual)
 from .restraint import FreeBody, check_held, check_restraint, lets_go, modes_centre, slips_free
-from .stiffness import (check_friction_springs, check_springs, failure_hint, material_cause, spring_unit,
+from .stiffness import (check_friction_springs, check_springs, contrast_cause, failure_hint, material_cause, spring_unit,
                         stiff_spring_warnings)
 
 __all__ = [
@@ -71,7 +71,7 @@ __all__ = [
     "DIVERGED", "NOT_CONVERGED", "SHORT_OF_CHECK", "backward_error", "check_residual", "options_chose",
     "relative_residual",
     # stiffness
-    "check_friction_springs", "check_springs", "failure_hint", "material_cause", "spring_unit",
+    "check_friction_springs", "check_springs", "contrast_cause", "failure_hint", "material_cause", "spring_unit",
     "stiff_spring_warnings",
     # restraint
     "FreeBody", "check_held", "check_restraint", "lets_go", "modes_centre", "slips_free",

@@ -8,7 +8,9 @@ bulk's share only while ``k w / E`` stays below ``SPRING_ENTRY_MAX``
 springs far below ``E/h`` is nearly free (:func:`failure_hint`, named after
 a solve failed).  A nearly incompressible material in plane strain carries
 ``λ/μ = 2ν/(1 − 2ν)`` in its bulk rows, and a solve loses about
-log10(λ/μ) digits (:func:`material_cause`; Hughes 2000, §4.1).  A penalty
+log10(λ/μ) digits (:func:`material_cause`; Hughes 2000, §4.1); a softer
+body whose modulus lies ``CONTRAST_CAUSE`` or less of the stiffer's loses
+as many to the stiffer's rows (:func:`contrast_cause`).  A penalty
 Coulomb spring above a method's limit of ``α = k h / E`` makes its
 tractions oscillate from point to point (:func:`check_friction_springs`,
 the limits measured in contactcore.tolerances, EFGM_FRICTION_SPRINGS).
@@ -39,6 +41,22 @@ def failure_hint(scene, weights) -> str:
             out.append(f"interface.law.k{c} = {k_user:.3g} {unit} is very soft: k w = {ratio:.1e} E, a body held by it "
                        "is nearly free — stiffen it or add a support")
     return "; ".join(out) or "a rigid-body mode may be nearly free"
+
+
+def contrast_cause(scene) -> str:
+    """The two bodies' moduli ``CONTRAST_CAUSE`` or further apart, named
+    with their ratio: the softer body's rows lie that far below the
+    stiffer's, whose round-off (~2e-16 of them) a solve then carries into
+    the softer body's answer; "" if they are closer."""
+    materials = scene.user.materials
+    soft, stiff = sorted(materials, key=lambda body: materials[body].E)
+    ratio = materials[soft].E / materials[stiff].E
+    if ratio > tol.CONTRAST_CAUSE:
+        return ""
+    unit = scene.user.units.stress
+    return (f"materials.{soft}.E = {materials[soft].E:.3g} {unit} is {ratio:.1e} of materials.{stiff}.E = "
+            f"{materials[stiff].E:.3g} {unit} (at or below {tol.CONTRAST_CAUSE:g}), and the solve keeps too few digits "
+            "of the softer body")
 
 
 def material_cause(scene) -> str:

@@ -10,7 +10,8 @@ and its cause where the scene decides one, in this order:
 1. a failure the user's solver options chose
    (:func:`contactcore.health.options_chose`), as it is;
 2. loads that leave Γ's friction cone (:func:`contactcore.health.friction_demand`);
-3. a nearly incompressible material (:func:`contactcore.health.material_cause`);
+3. a nearly incompressible material (:func:`contactcore.health.material_cause`),
+   or moduli too far apart (:func:`contactcore.health.contrast_cause`);
 4. the unilateral law's tie (:func:`contactcore.health.tie_cause`);
 5. else that no step converged, and the remedies that apply to the law
    (:func:`_unsettled`).
@@ -46,18 +47,33 @@ def _refusal(scene, system: ContactSystem, exc: SolverError) -> SolverError:
     MUMPS's ordering 0), so the message names the check it failed
     (:data:`SOLVE_FAILED`); ``exc`` is kept whole in ``details``."""
     step = f"increment {scene.increments} of {scene.increments}, a linear law's one step from rest"
-    cause = health.material_cause(scene)
+    cause, remedy = _material(scene)
     if health.options_chose(str(exc)):  # the solver's options chose it, not round-off
         error = SolverError(f"{exc} (at {step})")
     elif cause:
-        error = SolverError(f"scene {scene.name}: {cause}\n  (its solve at {step}, was {SOLVE_FAILED}); lower ν or "
-                            "use plane stress")
+        error = SolverError(f"scene {scene.name}: {cause}\n  (its solve at {step}, was {SOLVE_FAILED}); {remedy}")
     else:
         weights = system.collective.gather(system.interface.weights)
         error = SolverError(f"scene {scene.name}: {step}: the solve was {SOLVE_FAILED}; "
                             f"{health.failure_hint(scene, weights)}")
     error.details = str(exc)
     return error
+
+
+#: What to do where the materials make the solve keep too few digits.
+_NU_REMEDY = "lower ν or use plane stress"
+_CONTRAST_REMEDY = "bring the moduli closer: every method solved the measured scenes at 1e-9 (docs/scenes.md)"
+
+
+def _material(scene) -> tuple[str, str]:
+    """The materials' cause of a failed solve and its remedy: a nearly
+    incompressible material, else moduli too far apart; ``("", "")`` if
+    neither."""
+    cause = health.material_cause(scene)
+    if cause:
+        return cause, _NU_REMEDY
+    cause = health.contrast_cause(scene)
+    return (cause, _CONTRAST_REMEDY) if cause else ("", "")
 
 
 #: What :meth:`~contactcore.newton.iteration._Iteration._iterate`'s failure
@@ -85,7 +101,7 @@ def _no_equilibrium(scene, n: int, depth: int, failures: list[str], from_rest: b
     once = scene.increments > 1 and not (scene.law.has_history or scene.law.is_linear or scene.follow_path)
     note = f" (followed once the one step to increment {scene.increments} failed)" if once else ""
     cut = f"failed after {depth} cut-backs (step 1/{2 ** depth})"
-    demand, material = health.friction_demand(scene, float(n)), health.material_cause(scene)
+    demand, (material, remedy) = health.friction_demand(scene, float(n)), _material(scene)
     tie = not (demand or material) and health.tie_cause(scene, float(n), "\n".join(failures), from_rest)
     chosen = [f.split(": ", 1)[1] for f in failures if health.options_chose(f)]  # the options chose it
     if demand:
@@ -93,7 +109,7 @@ def _no_equilibrium(scene, n: int, depth: int, failures: list[str], from_rest: b
     elif chosen:
         error = SolverError(f"{where} {cut}{note}: no step converged: {chosen[0]}")
     elif material:
-        error = SolverError(f"{where}: {material}\n  ({cut}); lower ν or use plane stress")
+        error = SolverError(f"{where}: {material}\n  ({cut}); {remedy}")
     elif tie:
         error = SolverError(f"{where}{note}: {tie}\n  ({cut}: {health.NOT_CONVERGED})")
     else:
