@@ -66,7 +66,8 @@ NODE_MATCH = 1e-6
 #: MIN_CUT_FRACTION), 3e-7 h and closer null pivots.  1e-5 snaps 50 times
 #: beyond that, and moves Γ by at most 1.4e-5 h where it snaps: u moves by
 #: that times the strain jump (a patch with Γ 1e-4 h off a node row moved
-#: u by 6.8e-6 of its scale when snapped), σ of a uniform state not at all.
+#: u by 6.8e-6 of its scale when snapped), σ of a uniform state across a
+#: node row not at all (across a 45° node diagonal it does: XFEM_SNAP_WARN).
 #: It also covers the round-off of a node's coordinates between ranks
 #: (≤ 1e-15 L: a node on Γ came out 1 ulp below it on one of 3 ranks).
 #: The scale is local (the node's largest cell, not the mesh's): with the
@@ -75,6 +76,15 @@ NODE_MATCH = 1e-6
 #: by 2e-4 of its cells there, u moving 7 times the local allowance
 #: (tests/test_xfem_graded.py).
 XFEM_SNAP = 1e-5
+#: A snap that moved Γ by more than this share of a cell's diameter is
+#: warned of (xdolfinx.xfem.cells.CellBasis.snap_warnings): the answer
+#: moves with Γ.  Measured 2026-11-28 (grader24's F5: σ = −pI across a
+#: bonded Γ at 45° moved onto a node diagonal, equal materials, h = 0.1,
+#: xfem P1): t_N off by 2.5e-5 p at a move of 5e-6 of a cell's diameter,
+#: in proportion down to 2.5e-8 p at 5e-9 (fe exact at every offset).
+#: 1e-8 warns of any error above ~2.5e-8 p and stays 1e6 times above a
+#: node's coordinate round-off between ranks (~1e-14 of a cell).
+XFEM_SNAP_WARN = 1e-8
 
 #: The thinnest body a fitted (gmsh) mesh can hold, relative to L: the
 #: mesher names each boundary curve by the one outer boundary within

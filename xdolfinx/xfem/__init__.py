@@ -80,7 +80,7 @@ def build(scene: Scene, options: XFEM, resolution: Resolution, timings: Timings)
                              comm=msh.comm, petsc_options=options.petsc_options,
                              estimate_condition=options.estimate_condition, what=f"scene {scene.name} (xfem)")
     return Built(system, lambda x: XFEMFields(space, x), 2 * space.numbering.index_map.size_global, h=h,
-                 warnings=space.cut.thin_body_warnings() + contrast_warnings(scene, degree), record=_record(space, h, background_cell(scene, options.cell)))
+                 warnings=space.cut.thin_body_warnings() + space.cells.snap_warnings() + contrast_warnings(scene, degree), record=_record(space, h, background_cell(scene, options.cell)))
 
 
 def _record(space: EnrichedFunctionSpace, h: float, cell: str) -> dict:
