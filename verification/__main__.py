@@ -138,7 +138,8 @@ def _main(args, argv, command: Command, rank: int) -> None:
         return
     final = args.out
     incomplete = None
-    _start_mpi()
+    if (getattr(args, "workers", None) or 1) == 1:  # a pool's parent solves nothing: its MPI never starts
+        _start_mpi()
     with result_folder(final, rank, distributed()) as folder:
         args.out = folder
         try:
@@ -160,7 +161,11 @@ def _start_mpi() -> None:
     the desired directory: /tmp/ompi…: File exists", exit 1), and an abort
     there left the folder built aside (``.NAME.xxxx``) behind.  Started
     first, such an abort leaves no file.  Without mpi4py (an EFGM-only
-    install) nothing starts and nothing needs to."""
+    install) nothing starts and nothing needs to.  Not called for a local
+    pool's parent (``--workers`` K > 1), which solves nothing: started
+    there, a Ctrl-C while its workers spawned once left one of them
+    printing an ``EOFError`` traceback (CI 2026-11-28,
+    tests/test_heldout_messages.py, the pooled study's Ctrl-C at 0.5 s)."""
     with suppress(ImportError):
         from mpi4py import MPI  # noqa: F401
 
