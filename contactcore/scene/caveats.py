@@ -118,6 +118,19 @@ def small_strain_warnings(scene: "Scene", fields, h: float, strain_unit: float =
     return warnings
 
 
+def _amplification(curved: bool, fitted: bool) -> tuple[dict, str, str]:
+    """Where Γ's profile tractions ``t = k g`` amplify the jump's error:
+    the bound on each spring's ``k h/E`` (none where they do not), the
+    place and the size measured there (contactcore.tolerances'
+    PROFILE_TRACTION_WARN, CUT_PROFILE_TRACTION_WARN)."""
+    if curved:
+        return tol.PROFILE_TRACTION_WARN, "a curved Γ", "and may be off by tens of per cent"
+    if not fitted:
+        return (dict.fromkeys("NT", tol.CUT_PROFILE_TRACTION_WARN), "a straight Γ that cuts the discretisation",
+                "(an inclined Γ at 50: xfem P1 3.8 %, efgm P1 2.8 % off; at 1000: 29 %, 26 %; xfem P2 0.8 %)")
+    return {}, "", ""
+
+
 def interface_warnings(scene: "Scene", h: float, fitted: bool = False) -> list[str]:
     """What a method of cell or node spacing ``h`` should warn about
     before anyone trusts its interface tractions (the thresholds and
@@ -135,7 +148,7 @@ def interface_warnings(scene: "Scene", h: float, fitted: bool = False) -> list[s
       error, in every method: ``k_N h / E`` or ``k_T h / E`` above its
       PROFILE_TRACTION_WARN on a curved Γ, E the softer modulus;
     * the same on a straight Γ of an unfitted method (not ``fitted``),
-      above ``CUT_PROFILE_TRACTION_WARN`` (grader24's F4);
+      above ``CUT_PROFILE_TRACTION_WARN`` (grader24's F4; :func:`_amplification`);
     * a normal traction ``t_N = k_N g_N`` that amplifies the
       discretisation error of ``g_N`` on a circle of radius R:
       ``(k_N/k_T)(h/2R)² > FALSE_TN_WARN`` (docs/scenes.md, scene B).
@@ -157,23 +170,14 @@ def interface_warnings(scene: "Scene", h: float, fitted: bool = False) -> list[s
                         f"{tol.LOCKING_WARN:.0e}·E/h), on a curved Γ that cuts the discretisation: penalty "
                         "locking may raise the error tenfold and lower the convergence rate; soften the springs "
                         "or refine")
-    stiff = [f"k_{c} h/E = {k * h / soft:.2g} (above {tol.PROFILE_TRACTION_WARN[c]:g})"
-             for c, k in (("N", law.kN), ("T", law.kT)) if k * h / soft > tol.PROFILE_TRACTION_WARN[c]]
-    if stiff and curved:
-        warnings.append(f"interface springs of {' and '.join(stiff)}, E the softer body's, on a curved Γ: Γ's "
-                        "profile tractions t = k g multiply the jump's discretisation error between Γ's points "
-                        "by that factor and may be off by tens of per cent; the solve's own tractions at Γ's "
-                        "points are in interface.csv (Result.interface); soften the springs, refine, or enforce "
-                        "the law exactly")
-    cut = [f"k_{c} h/E = {k * h / soft:.2g}" for c, k in (("N", law.kN), ("T", law.kT))
-           if k * h / soft > tol.CUT_PROFILE_TRACTION_WARN]
-    if cut and not curved and not fitted:
-        warnings.append(f"interface springs of {' and '.join(cut)}, E the softer body's (above "
-                        f"{tol.CUT_PROFILE_TRACTION_WARN:g}), on a Γ that cuts the discretisation: Γ's profile "
-                        "tractions t = k g multiply the jump's discretisation error by that factor (a straight "
-                        "inclined Γ at 50: xfem P1 3.8 %, efgm P1 2.8 % off; at 1000: 29 %, 26 %; xfem P2 0.8 %); "
-                        "the solve's own tractions at Γ's points are in interface.csv (Result.interface); soften "
-                        "the springs, or use type = \"bonded\" for a tie")
+    bound, where, size = _amplification(curved, fitted)
+    stiff = [f"k_{c} h/E = {k * h / soft:.2g} (above {bound[c]:g})"
+             for c, k in (("N", law.kN), ("T", law.kT)) if c in bound and k * h / soft > bound[c]]
+    if stiff:
+        warnings.append(f"interface springs of {' and '.join(stiff)}, E the softer body's, on {where}: Γ's profile "
+                        "tractions t = k g multiply the jump's discretisation error between Γ's points by that "
+                        f"factor {size}; the solve's own tractions at Γ's points are in interface.csv "
+                        "(Result.interface); soften the springs, refine, or enforce the law exactly")
     if isinstance(itf, CircleInterface):
         amplification = law.kN / law.kT * (h / (2 * itf.radius)) ** 2
         if amplification > tol.FALSE_TN_WARN:
