@@ -1473,8 +1473,22 @@ AXIS_PARALLEL = 1e-300
 #: efgm P1 cycles with 17-27 points partial to the cap, and a 60-map
 #: prototype settled no better), nor on the docs' tilted block (fe P1 at
 #: h = 0.025: 44-91 partial over its last maps), and the refusal stands,
-#: so the cap is what a refusal costs (3.3 CPU s there).
+#: so the cap is what a refusal costs (3.3 CPU s there; since each walk
+#: also ends past PARTIAL_SEARCH_POINTS, 2026-11-29, the whole refused run
+#: takes 0.9-1.2 CPU s in fe P1, efgm P1 and P2 at h = 0.1).
 PARTIAL_SEARCH_MAPS = 30
+
+#: The most points of Γ a map of the partial search may hold partial
+#: before that walk ends (contactcore.newton.partial._walk): an answer's
+#: partial points sit where Γ opens, one or two per opening edge, and a
+#: walk that makes more partial is lost, each of them one more solve per
+#: map.  Measured 2026-11-29: every answer found has 1 (uni fe P1; scene A
+#: at 20° through (0.5, 0.402), xfem P2 quads, and through 0.398; tilt
+#: efgm P1) or 2 (tilt xfem P2 at h = 0.025); the returning walk on scene
+#: A through 0.402 in efgm P2 at h = 0.0125 held 6, 29, ... up to 300
+#: partial over its 30 maps and found nothing in 115 CPU s.  Four times
+#: the most an answer has had.
+PARTIAL_SEARCH_POINTS = 8
 
 #: The unilateral law's grazing open zone (contactcore.health.grazing): a
 #: partly open Γ is grazing where its closed points are pressed by less

@@ -31,20 +31,34 @@ MAPS, PARTIAL_POINTS = 8, 1
 SEED = 33
 
 
+def _law_band(newton, y: np.ndarray) -> np.ndarray:
+    """Each point's closed/open band on ``y_N`` as the exact law decides
+    it (contactcore.laws.Decision.in_traction): DECISION_BAND of the
+    smaller of Γ's largest ``|y_N|`` and Γ's largest pressure over the
+    point's ``γ``."""
+    gamma = np.asarray(newton.itf.gamma, float)
+    gap = max(float(np.max(np.abs(y[:, 0]))), ctol.DECISION_FLOOR)
+    pressure = float(np.max(-gamma * y[:, 0], initial=0.0))
+    return ctol.DECISION_BAND * np.minimum(gap, pressure / gamma)
+
+
 def _search(monkeypatch, perturb: float):
     """The partial search on the case: ``(found, maps, margins, P, θ)``,
     the margins each map's decisions keep from the band's edge, in band
-    widths, the jumps it reads perturbed by ``perturb`` of their largest."""
+    widths, the unknowns it reads perturbed by ``perturb`` of their
+    largest (the jumps with them)."""
     record = {"margins": [], "maps": 0}
     rng = np.random.default_rng(SEED)
     moves = partial._Search.moves
 
-    def watched(self, s, y, tau, P):
+    def watched(self, s, u, y, tau, P):
         if perturb:
-            y = y + perturb * np.max(np.abs(y)) * rng.uniform(-1.0, 1.0, y.shape)
-        gap = ctol.DECISION_BAND * max(float(np.max(np.abs(y[:, 0]))), ctol.DECISION_FLOOR)
+            u = u + perturb * np.max(np.abs(u)) * rng.uniform(-1.0, 1.0, u.shape)
+            y = partial._jumps(self.newton, u)
+        gap = _law_band(self.newton, y)
         closed, opened = s == partial._CLOSED, s == partial._OPEN
-        margin = np.concatenate([np.abs(y[closed, 0] - gap), np.abs(y[opened, 0] + gap)]) / gap
+        margin = np.concatenate([np.abs(y[closed, 0] - gap[closed]) / gap[closed],
+                                 np.abs(y[opened, 0] + gap[opened]) / gap[opened]])
         if len(P):
             tie = self.k[:, 1] * y[:, 1]
             band = ctol.DECISION_BAND * max(float(np.max(np.abs(tie))), ctol.DECISION_FLOOR)
@@ -55,7 +69,7 @@ def _search(monkeypatch, perturb: float):
         record["margins"].append(float(np.min(margin)))
         points = np.asarray(self.newton.itf.points, float).reshape(-1, 2)
         record["P"] = [tuple(np.round(points[p], 6)) for p in P]
-        return moves(self, s, y, tau, P)
+        return moves(self, s, u, y, tau, P)
 
     def instead(scene, system, progress=None, guess=None):
         record["found"] = partial.partial_answer(_Newton(scene, system), float(scene.increments))

@@ -1411,11 +1411,13 @@ LAYERED_SLIP_EFGM_P1_ENERGY_EFFECTIVITY = 0.410
 
 #: Every decision of the partial search on scene A with Γ at 20° through
 #: (0.5, 0.402), exact unilateral, xfem P2 on quads at h = 0.0125 (8 maps,
-#: one partial point) lies at least this many band widths (DECISION_BAND of
-#: Γ's largest |y_N|, or of its largest |k_T y_T| for a partial point's τ)
-#: from the band's edge: measured 6.0 at least (2026-11-28, Haswell and
-#: the native kernel alike; the nearest, at the 2nd map), while round-off
-#: leaves ~1e-12 of max|y_N| in y_N, 1e-7 band widths.
+#: one partial point) lies at least this many band widths (the exact law's
+#: own band on y_N, DECISION_BAND of the smaller of Γ's largest |y_N| and
+#: its largest pressure over γ; of Γ's largest |k_T y_T| for a partial
+#: point's τ) from the band's edge: measured 89.7 at least (2026-11-29,
+#: the nearest at the 2nd map; 6.0 on the search's own band of Γ's
+#: largest |y_N|, which it read until then), while round-off leaves
+#: ~1e-12 of max|y_N| in y_N, 1e-7 band widths.
 PARTIAL_DECISION_MARGIN = 1.0
 
 #: The jumps the search reads perturbed by this share of Γ's largest |y|
