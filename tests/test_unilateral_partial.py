@@ -17,6 +17,7 @@ from contactcore.newton import partial
 
 from test_partial_status import check_partial_reported
 from test_xfem_opening import UNI
+import tolerances as tol
 from tolerances import (PARTIAL_MAP_RESIDUAL, TILT_OPENING_REFERENCE, TILT_PARTIAL_FROM_OPENING, UNI_OPENING,
                         UNI_OPENING_REFERENCE)
 
@@ -143,3 +144,36 @@ def test_a_maps_problem_holds_where_a_prescribed_displacement_opens_gamma_at_res
     with pytest.raises(SystemExit):
         discretisation.solve(load_scene(path), FE(degree=1), 0.05)
     assert len(seen) == 2 and max(seen) <= PARTIAL_MAP_RESIDUAL, seen
+
+
+def test_a_consistent_map_the_search_finds_is_handed_to_newton(tmp_path, monkeypatch):
+    """Where Newton answers (`uni`, fe P1 at h = 0.025: no point partial),
+    the search run in its place finds that consistent open/closed map with
+    no partial point, hands it to Newton (partial._answer), and the
+    committed answer is Newton's own: the same statuses, the tractions
+    within Newton's tolerance (SEARCH_AS_NEWTON) of Newton's, no partial
+    point reported."""
+    from contactcore.newton.increments import _Newton
+    from xdolfinx.options import FE
+    path = tmp_path / "uni.toml"
+    path.write_text(UNI)
+    scene = load_scene(path)
+    newtons = discretisation.solve(scene, FE(degree=1), 0.025)
+    handed = []
+
+    def searched(scene, system, progress=None, guess=None):
+        newton = _Newton(scene, system)
+        answer = partial._answer
+        monkeypatch.setattr(partial, "_answer", lambda *a: handed.append(len(a[6])) or answer(*a))
+        assert partial.partial_answer(newton, float(scene.increments))
+        newton.report.increments = len(newton.path.steps)
+        newton.path.state = newton.state
+        return newton.u, newton.path, newton.report
+
+    monkeypatch.setattr(discretisation, "solve_increments", searched)
+    result = discretisation.solve(scene, FE(degree=1), 0.025)
+    assert handed == [0]  # a consistent map with no partial point, handed over
+    mine, theirs = result.interface.final, newtons.interface.final
+    assert np.array_equal(mine.status, theirs.status) and mine.counts().get("partial", 0) == 0
+    scale = np.max(np.abs(theirs.traction))
+    assert np.max(np.abs(mine.traction - theirs.traction)) <= tol.SEARCH_AS_NEWTON * scale
