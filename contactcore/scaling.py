@@ -61,7 +61,7 @@ from .interface_path import InterfacePath
 from .laws import DIMENSIONLESS, DISPLACEMENT, LENGTH, STIFFNESS, STRESS, law_contract
 from .profiles import ProfileData
 from .result import check_points, gamma_reach
-from .scene import DISPLACEMENT_QUANTITIES, STRESS_QUANTITIES, LineProfile, Scene, Support, acts_on, check_resolution
+from .scene import DISPLACEMENT_QUANTITIES, STRESS_QUANTITIES, LineProfile, Scene, Support, place_of, check_resolution
 from .scene.loads import FORCE_DENSITY, MAGNITUDES, MOMENT, POINT, STRESS as LOAD_STRESS, load_contract, scaled_load
 
 
@@ -101,7 +101,7 @@ def _declared(load, i: int) -> dict[str, str]:
     its scene), or a SceneError at ``loads[i]`` naming its type: no
     registered load, or one that declares too little."""
     try:
-        acts_on(load)
+        place_of(load)
         return load_contract(type(load))
     except ContactError as exc:
         raise SceneError(f"loads[{i}]", str(exc)) from None

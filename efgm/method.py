@@ -41,7 +41,7 @@ from contactcore.constraints import Constraints
 from contactcore.system import ContactSystem, InterfaceOperator
 from contactcore.geometry import tangent_of
 from contactcore.interface_path import piece_centres
-from contactcore.scene import BODY, acts_on, body_force, edge_traction
+from contactcore.scene import BODY, place_of, body_force, edge_traction
 from contactcore.result import check_points
 from contactcore.scaling import Scales
 
@@ -241,7 +241,7 @@ def _body_forces(scene: Scene, vol: Rule) -> np.ndarray:
     the weights of ``vol``'s points in its body: (P, L, 2)."""
     forces = []
     for load in scene.loads:
-        if acts_on(load) == BODY:
+        if place_of(load) == BODY:
             mask = (vol.bodies == BODIES.index(load.body)) * vol.weights
             forces.append(mask[:, None] * np.column_stack(body_force(scene, load, vol.points[:, 0], vol.points[:, 1])))
     return np.stack(forces, axis=1) if forces else np.zeros((len(vol.weights), 0, 2))
@@ -255,7 +255,7 @@ def _load_vectors(scene: Scene, approx: Approximation, body_vectors: np.ndarray,
     tractions' from this rank's share of each boundary's points."""
     vectors, body = [], iter(body_vectors.T)
     for load in scene.loads:
-        kind = acts_on(load)
+        kind = place_of(load)
         if kind == BODY:
             vectors.append(next(body))
             continue

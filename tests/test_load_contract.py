@@ -23,7 +23,7 @@ from contactcore import (InterfaceProfile, LinearLaw, LineInterface, LineProfile
                          SceneError, Support, discretisation, load_scene, sample_profiles)
 from contactcore.errors import ContactError
 from contactcore.scaling import Scales, dimensionless_inputs
-from contactcore.scene import BODY, EDGE, LOADS, BodyForce, Pressure, Torque, Traction, acts_on, edge_traction
+from contactcore.scene import BODY, EDGE, LOADS, BodyForce, Pressure, Torque, Traction, place_of, edge_traction
 from contactcore.scene import loads as load_module
 from contactcore.scene.loads import FORCE_DENSITY, POINT, STRESS, _Load, load_contract, load_registry
 from contactcore.scene_files import _LOAD_TYPES
@@ -234,7 +234,7 @@ def test_an_unknown_load_is_refused_by_name_everywhere(tmp_path):
         raw = dataclasses.replace(scene, loads=(load,))
         with pytest.raises(SceneError, match=rf"^loads\[0\]: .*{match}"):
             dimensionless_inputs(raw, _options("efgm"), 0.1)
-        for call in (lambda: acts_on(load), lambda: _load_vectors(raw, None, np.zeros((0, 0)), 0.1, 1),
+        for call in (lambda: place_of(load), lambda: _load_vectors(raw, None, np.zeros((0, 0)), 0.1, 1),
                      lambda: next(band_loads(None, load)), lambda: _boundary_resultant(raw, 0, (1.0,))):
             with pytest.raises(ContactError, match=match):
                 call()
@@ -260,7 +260,7 @@ def test_the_ufl_loads_are_the_core_formula(hydrostatic):
              BodyForce("plus", (1e3, -2e3)), Torque("minus", -9417.6)]
     assert {type(ld) for ld in loads} >= set(LOADS.values())
     for load in loads:
-        if acts_on(load) == EDGE:
+        if place_of(load) == EDGE:
             expr = elasticity.edge_traction(scene, load, msh)
             theirs = edge_traction(scene, load, points[:, 0], points[:, 1], np.tile(normal, (len(points), 1)))
         else:

@@ -54,7 +54,7 @@ from contactcore.exact import is_exact
 from contactcore.geometry import polygon_area, tangent_of
 from contactcore.interface_path import piece_centres
 from contactcore.system import InterfaceOperator
-from contactcore.scene import BODY, EDGE, acts_on
+from contactcore.scene import BODY, EDGE, place_of
 
 from .contact_system import GhostExchange, PETScSystem
 from .evaluation import BodyCellLocator, BodyFields
@@ -109,9 +109,9 @@ def linear_forms(scene: Scene, fm: FittedMesh, V) -> list:
     for load in scene.loads:
         if vanishes(scene, load):
             forms.append(None)
-        elif acts_on(load) == EDGE:
+        elif place_of(load) == EDGE:
             forms.append(load_integrand(scene, load, fm.mesh, v_owner) * ds(meshes.BOUNDARY[load.boundary]))
-        elif acts_on(load) == BODY:
+        elif place_of(load) == BODY:
             forms.append(load_integrand(scene, load, fm.mesh, vs[BODIES.index(load.body)])
                          * dx(meshes.BODY[load.body]))
     return forms

@@ -20,7 +20,7 @@ import ufl
 from dolfinx import fem
 
 from contactcore.elasticity import lame
-from contactcore.scene import BODY, EDGE, acts_on
+from contactcore.scene import BODY, EDGE, place_of
 from contactcore.scene.loads import vanishes as _vanishes
 
 
@@ -83,9 +83,9 @@ def load_integrand(scene, load, msh, v):
     """The integrand of ``load``'s linear form against the test function
     ``v`` (a vector on ``msh``): ``t · v`` for an edge load (to be
     integrated over its boundary), ``b · v`` for a body load (over its
-    body), by where the load acts (:func:`contactcore.scene.acts_on`, which
+    body), by where the load acts (:func:`contactcore.scene.place_of`, which
     refuses an unknown load by name)."""
-    kind = acts_on(load)
+    kind = place_of(load)
     if kind == EDGE:
         return ufl.dot(edge_traction(scene, load, msh), v)
     if kind == BODY:

@@ -32,7 +32,7 @@ from .. import tolerances as tol
 from ..exact import Bonded, is_exact
 from ..geometry import LineInterface, Rectangle
 from ..scene import Scene
-from ..scene.loads import EDGE, acts_on, edge_traction
+from ..scene.loads import EDGE, place_of, edge_traction
 
 
 def kolosov(nu: float, plane: str) -> float:
@@ -233,7 +233,7 @@ def _sheared(scene: Scene, edge: str, p: np.ndarray) -> bool:
     even and the traction extends smoothly."""
     normal = scene.domain.outward_normal(edge)
     for load in scene.loads:
-        if acts_on(load) == EDGE and load.boundary == edge:
+        if place_of(load) == EDGE and load.boundary == edge:
             t = edge_traction(scene, load, p[:1], p[1:2], normal[None])[0]
             if abs(t @ np.asarray(EDGE_DIRECTIONS[edge], float)) > tol.GEOMETRY * np.linalg.norm(t):
                 return True

@@ -13,7 +13,7 @@ open/closed map (Dundurs, J. Appl. Mech. 1969; Comninou, J. Appl. Mech.
 1977): :func:`tie_cause` names it from every cut-back's failure.
 
 The loads are read on a rectangle cut by a line: the edge loads (as
-each declares, :func:`contactcore.scene.acts_on`; tractions, pressures)
+each declares, :func:`contactcore.scene.place_of`; tractions, pressures)
 on each body's part of each loaded edge (:func:`_part`, φ linear along
 the edge), by their formula (:func:`contactcore.scene.edge_traction`),
 their resultant (:func:`_boundary_resultant`) and their work in the
@@ -29,7 +29,7 @@ import numpy as np
 
 from .. import tolerances as tol
 from ..geometry import LineInterface, Rectangle, tangent_of
-from ..scene.loads import BODY, EDGE, acts_on, edge_traction
+from ..scene.loads import BODY, EDGE, place_of, edge_traction
 from .residual import NOT_CONVERGED
 from .overturning import eccentricity, overturn_refusal, overturned
 from .restraint import _BODY_NAMES, _free_modes, _mode_matrix, _restraint
@@ -129,7 +129,7 @@ def _demands(scene, k: float):
     n = np.asarray(scene.interface.normal, float)
     supports = _restraint(scene, np.zeros((0, 2)), np.zeros(0))[0]
     for b, name in enumerate(_BODY_NAMES):
-        if any(acts_on(ld) == BODY and ld.body == ("minus", "plus")[b] for ld in scene.loads):
+        if any(place_of(ld) == BODY and ld.body == ("minus", "plus")[b] for ld in scene.loads):
             continue
         free = _free_modes(supports[3 * b:3 * b + 3, 3 * b:3 * b + 3])
         if not free.shape[1]:
@@ -250,7 +250,7 @@ def _loaded_parts(scene, body: int, factors):
     quadratic along the edge: resultant and moment)."""
     c = scene.domain.corners
     for load, f in zip(scene.loads, factors):
-        if acts_on(load) != EDGE:
+        if place_of(load) != EDGE:
             continue
         i, j = {"bottom": (0, 1), "right": (1, 2), "top": (2, 3), "left": (3, 0)}[load.boundary]
         lo, hi = _part(*scene.interface.phi(c[[i, j]]), body)

@@ -13,7 +13,7 @@ One idea a module:
 - :mod:`~contactcore.scene.materials`, :mod:`~contactcore.scene.units`:
   a body's :class:`Material`, the names of the scene's :class:`Units`;
 - :mod:`~contactcore.scene.loads`: supports, pins and loads, the load
-  contract (:data:`LOADS`, :func:`acts_on`) and each load's one formula
+  contract (:data:`LOADS`, :func:`place_of`) and each load's one formula
   (:func:`edge_traction`, :func:`body_force`);
 - :mod:`~contactcore.scene.profiles`: what a scene samples
   (:class:`LineProfile`, :class:`InterfaceProfile`);
@@ -49,7 +49,7 @@ from ..errors import DiscretisationError, SceneError
 from ..geometry import CircleInterface, Disc, Domain, Interface, LevelSetInterface, LineInterface, Rectangle
 from ..laws import InterfaceLaw
 from .check_profiles import RESERVED_PROFILE_IDS
-from .loads import (BODY, EDGE, LOADS, BodyForce, Load, Pin, Pressure, Support, Torque, Traction, acts_on, body_force,
+from .loads import (BODY, EDGE, LOADS, BodyForce, Load, Pin, Pressure, Support, Torque, Traction, place_of, body_force,
                     edge_traction)
 from .materials import Material
 from .model import Scene
@@ -67,7 +67,7 @@ __all__ = [
     # materials, units
     "MAX_UNIT_NAME", "Material", "Units",
     # loads
-    "BODY", "BodyForce", "EDGE", "LOADS", "Load", "Pin", "Pressure", "Support", "Torque", "Traction", "acts_on",
+    "BODY", "BodyForce", "EDGE", "LOADS", "Load", "Pin", "Pressure", "Support", "Torque", "Traction", "place_of",
     "body_force", "edge_traction",
     # profiles
     "InterfaceProfile", "LineProfile", "Profile",

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from ..errors import SceneError
 from ..geometry import CircleInterface
-from .loads import EDGE, Torque, acts_on, load_contract
+from .loads import EDGE, Torque, place_of, load_contract
 from .values import check_body, check_point_inside, finite
 from .vocabulary import COMPONENTS
 
@@ -35,13 +35,13 @@ def check_pins(scene: "Scene") -> None:
 
 def check_loads(scene: "Scene") -> None:
     """Each load on a boundary of the domain or in a body, as its class
-    declares (:func:`~contactcore.scene.loads.acts_on`; a torque: on the
+    declares (:func:`~contactcore.scene.loads.place_of`; a torque: on the
     disc of a circular Γ), every declared parameter finite, with a valid
     path."""
     for i, load in enumerate(scene.loads):
         path = f"loads[{i}]"
         _check_path(scene, load.path, f"{path}.path")
-        if acts_on(load) == EDGE:
+        if place_of(load) == EDGE:
             _check_boundary(scene, load.boundary, f"{path}.boundary")
         else:
             check_body(load.body, f"{path}.body")

@@ -5,7 +5,7 @@ the load path by the factor of its ``path`` (:meth:`Scene.factor
 
 The contract of a load class (:class:`_Load`), checked when it is
 registered in :data:`LOADS` (:func:`load_registry`, at import) and again
-wherever a method meets a load (:func:`acts_on`, :func:`load_contract`),
+wherever a method meets a load (:func:`place_of`, :func:`load_contract`),
 so that a load that declares too little, or an object that is no
 registered load, is refused by name rather than met as a missing
 attribute deep in a method:
@@ -244,7 +244,7 @@ def load_registry(*classes) -> dict:
 LOADS = load_registry(Traction, Pressure, BodyForce, Torque)
 
 
-def acts_on(load) -> str:
+def place_of(load) -> str:
     """:data:`EDGE` or :data:`BODY`: where ``load`` acts, or a ContactError
     naming its type if it is no registered load (:data:`LOADS`): what every
     method dispatches on."""
@@ -282,7 +282,7 @@ def _rows(vector, x: np.ndarray) -> np.ndarray:
 def edge_traction(scene, load, x, y, normals) -> np.ndarray:
     """(P, 2): the traction of the edge load ``load`` at the points x, y
     ((P,) each) of outward unit normals ``normals`` (P, 2), by its formula."""
-    if acts_on(load) != EDGE:
+    if place_of(load) != EDGE:
         raise ContactError(f"{type(load).__qualname__} acts in a body, not on an edge")
     x, y = np.asarray(x, float), np.asarray(y, float)
     return _rows(load.field(load.coefficients(scene), x, y, np.asarray(normals, float).T), x)
@@ -291,7 +291,7 @@ def edge_traction(scene, load, x, y, normals) -> np.ndarray:
 def body_force(scene, load, x, y):
     """The components ``(b_x, b_y)`` of the body load ``load`` at the
     coordinates x, y (numpy arrays), by its formula."""
-    if acts_on(load) != BODY:
+    if place_of(load) != BODY:
         raise ContactError(f"{type(load).__qualname__} acts on an edge, not in a body")
     x, y = np.asarray(x, float), np.asarray(y, float)
     b = _rows(load.field(load.coefficients(scene), x, y), x)

@@ -13,7 +13,7 @@ from petsc4py import PETSc
 
 from contactcore import BODIES
 from contactcore import tolerances as tol
-from contactcore.scene import EDGE, acts_on
+from contactcore.scene import EDGE, place_of
 
 from ..elasticity import load_integrand, sigma, vanishes
 from .kernels import band_kernels, band_loads
@@ -96,7 +96,7 @@ def ufl_forms(space: EnrichedFunctionSpace, cell_tags, facet_tags):
         if vanishes(scene, load):
             linear.append(None)
             continue
-        where = ds(meshes.BOUNDARY[load.boundary]) if acts_on(load) == EDGE \
+        where = ds(meshes.BOUNDARY[load.boundary]) if place_of(load) == EDGE \
             else dx(_TAG_UNCUT[load.body])
         linear.append(load_integrand(scene, load, msh, v) * where)
     return a, linear

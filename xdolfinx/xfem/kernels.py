@@ -22,7 +22,7 @@ from contactcore.cutcell import edge_crossings, gauss01
 from contactcore.geometry import tangent_of
 from contactcore.interface_path import piece_centres
 from contactcore.system import InterfaceOperator
-from contactcore.scene import BODY, EDGE, acts_on, body_force, edge_traction
+from contactcore.scene import BODY, EDGE, place_of, body_force, edge_traction
 
 from .space import EnrichedFunctionSpace
 
@@ -141,9 +141,9 @@ def band_loads(space: EnrichedFunctionSpace, load):
     enrichment, a function that is zero in the cell: a bonded layered bar
     pulled along Γ had σ off by 0.8 and Γ's traction by 4.8 times Γ's
     distance from the node line over h.  Dispatched on where the load
-    acts (:func:`contactcore.scene.acts_on`, which refuses an unknown one
+    acts (:func:`contactcore.scene.place_of`, which refuses an unknown one
     by name)."""
-    kind = acts_on(load)
+    kind = place_of(load)
     if kind == BODY:
         yield from _band_body_loads(space, load)
     elif kind == EDGE:
