@@ -30,7 +30,8 @@ from .exact import is_exact
 from .geometry import CircleInterface, tangent_of
 from .result import Fields
 from .errors import ContactError, SceneError
-from .scene import DISPLACEMENT_QUANTITIES, INTERFACE_QUANTITIES, STRESS_QUANTITIES, LineProfile, Profile, Scene
+from .scene import (BODIES, DISPLACEMENT_QUANTITIES, INTERFACE_QUANTITIES, MEAN_SIDE, STRESS_QUANTITIES, LineProfile,
+                    Profile, Scene)
 from .scene.check_profiles import check_profiles
 from .scene.profiles import InterfaceProfile
 
@@ -111,14 +112,19 @@ def interface_response(scene: Scene, fields: Fields, points: np.ndarray, path=No
 def evaluate_quantities(scene: Scene, fields: Fields, points: np.ndarray, quantities, side: str = "plus",
                         path=None) -> dict:
     """Every quantity in ``quantities`` at ``points`` (see module doc;
-    ``path`` the interface history, needed by a law that has one)."""
-    bodies = scene.body_of(points, side)
+    ``path`` the interface history, needed by a law that has one).  On Γ a
+    body's field is read from ``side``; ``MEAN_SIDE`` reads the mean of
+    the two sides' limits, ``{σ} = (σ⁺ + σ⁻)/2`` (off Γ both are the one
+    body's)."""
+    sides = BODIES if side == MEAN_SIDE else (side,)
+    bodies = [scene.body_of(points, one) for one in sides]
     out = {}
     if set(quantities) & set(STRESS_QUANTITIES):
-        sig = fields.stress(points, bodies)
+        sig = np.mean([fields.stress(points, b) for b in bodies], axis=0)
         out.update(zip(STRESS_QUANTITIES, sig.T))
     if set(quantities) & set(DISPLACEMENT_QUANTITIES):
-        out.update(zip(DISPLACEMENT_QUANTITIES, fields.displacement(points, bodies).T))
+        u = np.mean([fields.displacement(points, b) for b in bodies], axis=0)
+        out.update(zip(DISPLACEMENT_QUANTITIES, u.T))
     if set(quantities) & set(INTERFACE_QUANTITIES):
         out.update(interface_response(scene, fields, points, path))
     return {q: out[q] for q in quantities}

@@ -112,7 +112,7 @@ BAD_INPUTS = [
     ("A", "profiles.1.id", "A1", "profiles[1].id", "unique"),
     ("A", "profiles.1.id", "worst", "profiles[1].id", "reserved"),
     ("A", "profiles.1.id", "-x", "profiles[1].id", "starting with a letter"),
-    ("A", "profiles.0.side", "middle", "profiles[0].side", "unknown body"),
+    ("A", "profiles.0.side", "middle", "profiles[0].side", "unknown side"),
     ("A", "loads.0.boundary", "outer", "loads[0].boundary", "no boundary named 'outer'"),
     ("A", "loads.0.type", "wind", "loads[0].type", "must be one of"),
     ("A", "supports.0.boundary", "roof", "supports[0].boundary", "no boundary named 'roof'"),

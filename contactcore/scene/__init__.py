@@ -58,12 +58,13 @@ from .resolution import check_fitted_thickness, check_resolution, smallest_dimen
 from .units import MAX_UNIT_NAME, Units
 from .validation import validate
 from .values import FILE_NAME, check_file_name, finite
-from .vocabulary import (BODIES, COMPONENTS, DISPLACEMENT_QUANTITIES, INTERFACE_QUANTITIES, QUANTITIES,
-                         STRESS_QUANTITIES)
+from .vocabulary import (BODIES, COMPONENTS, DISPLACEMENT_QUANTITIES, INTERFACE_QUANTITIES, MEAN_SIDE,
+                         PROFILE_SIDES, QUANTITIES, STRESS_QUANTITIES)
 
 __all__ = [
     # vocabulary
-    "BODIES", "COMPONENTS", "DISPLACEMENT_QUANTITIES", "INTERFACE_QUANTITIES", "QUANTITIES", "STRESS_QUANTITIES",
+    "BODIES", "COMPONENTS", "DISPLACEMENT_QUANTITIES", "INTERFACE_QUANTITIES", "MEAN_SIDE", "PROFILE_SIDES",
+    "QUANTITIES", "STRESS_QUANTITIES",
     # materials, units
     "MAX_UNIT_NAME", "Material", "Units",
     # loads

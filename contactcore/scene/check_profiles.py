@@ -11,8 +11,8 @@ from .. import tolerances as tol
 from ..errors import SceneError
 from ..geometry import CircleInterface, LevelSetInterface
 from .profiles import LineProfile
-from .values import check_body, check_file_name, check_point_inside
-from .vocabulary import INTERFACE_QUANTITIES, QUANTITIES
+from .values import check_file_name, check_point_inside
+from .vocabulary import INTERFACE_QUANTITIES, MEAN_SIDE, PROFILE_SIDES, QUANTITIES
 
 
 #: Names a profile may not take: they sit beside the profiles' ids in a
@@ -40,7 +40,9 @@ def check_profiles(scene: "Scene") -> None:
         for q in prof.quantities:
             if q not in QUANTITIES:
                 raise SceneError(f"{path}.quantities", f"unknown quantity {q!r} (known: {', '.join(QUANTITIES)})")
-        check_body(prof.side, f"{path}.side")
+        if prof.side not in PROFILE_SIDES:
+            raise SceneError(f"{path}.side", f"unknown side {prof.side!r} (a body, 'minus' or 'plus', or "
+                             f"'{MEAN_SIDE}', the two sides' mean on Γ)")
         if isinstance(prof, LineProfile):
             check_point_inside(scene, prof.start, f"{path}.start")
             check_point_inside(scene, prof.end, f"{path}.end")

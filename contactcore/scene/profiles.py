@@ -11,7 +11,8 @@ from dataclasses import dataclass
 class LineProfile:
     """Quantities sampled on a segment from ``start`` to ``end``.
 
-    On Γ the stress is taken from ``side`` (default +, docs/scenes.md).
+    On Γ the stress and displacement are taken from ``side`` (default +;
+    ``"mean"``, the two sides' mean; docs/scenes.md).
     """
 
     id: str
