@@ -230,12 +230,9 @@ def tie_cause(scene, k: float, failure: str, from_rest: bool = False) -> str:
             "more increments help only where a consistent map exists")
     other = "another stabilisation seldom helps" if exact else "soften k_N, k_T to settle it, with their answer"
     return (f"Newton found no open/closed map of the {scene.law.name} law consistent at every point, and there may be "
-            "none: the law ties a closed point tangentially and frees it (t_T = 0) the moment it opens, so where "
-            "Γ opens under shear the last closed points carry the tie's shear on almost no pressure and opening "
-            "one opens or closes its neighbours (another h or degree may find one or not, as the scene decides; "
-            f"{more}; {other}); use "
-            f"type = \"coulomb\" with {mu}: |t_T| <= mu|t_N| lets the shear vanish with the pressure where Γ "
-            "opens")
+            "none: where Γ opens under shear a closed point carries the tie's shear on almost no pressure, and "
+            f"opening it opens or closes its neighbours (another h or degree may settle it or not; {more}; {other}); "
+            f"use type = \"coulomb\" with {mu}, which lets the shear vanish with the pressure")
 
 
 def _loaded_parts(scene, body: int, factors):
