@@ -304,7 +304,9 @@ def _cycling(s, want, moved, had, seen, ranks) -> np.ndarray:
     scene A with Γ at 20° through (0.5, 0.402), exact, efgm P2 at h =
     0.0125, the 3rd map closes 6 of the 11 points the 2nd opened; made
     partial at once, they took τ of up to 772 times their tie and the walk
-    was lost, where moved as asked it settles at the 11th map.  Map
+    was lost, where moved as asked it settles at the 12th map with one
+    point partial (docs/contact-enforcement-log.md, "Two walks on the
+    law's band").  Map
     equality is each rank's own part equal on every rank: the partition
     does not change it."""
     new = s.copy()
