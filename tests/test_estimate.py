@@ -436,14 +436,16 @@ def test_a_status_that_never_changes_along_gamma_lifts_the_cap():
     against fe P2 at h = 0.00625, 2026-11-26): the degree-2 gaps'
     effectivities were 2.4-3.8 with the cap (order 2) and are 1.0-1.6
     at order 3 (fe, xfem, efgm P2); degree 1 keeps order 2 either way."""
-    from types import SimpleNamespace as NS
     from contactcore import load_scene, make_law
+    from contactcore.interface_path import Increment, InterfacePath
     from verification import methods
 
     def path(*statuses, shear=1.0):
-        return NS(steps=[NS(status=np.array(s, np.int8), traction=np.column_stack([-np.ones(len(s)),
-                                                                                 shear * np.ones(len(s))]))
-                         for s in statuses])
+        steps = [Increment(1.0, (1.0,), 1, [0.0], np.zeros((len(s), 2)),
+                           np.column_stack([-np.ones(len(s)), shear * np.ones(len(s))]), np.array(s, np.int8))
+                 for s in statuses]
+        m = len(statuses[0])
+        return InterfacePath(np.zeros((m, 2)), np.ones(m), steps)
     assert not est.switches([path([1, 1, 1], [1, 1, 1]), path([1, 1])])
     assert est.switches([path([1, 1, 1], [1, 2, 1])])  # slipped once, then stuck: the slip kinks
     assert est.switches([path([1, 1]), path([0, 0])])  # open at h/2, closed at h

@@ -37,22 +37,12 @@ def switches(paths) -> bool:
     seen = set()
     for path in paths:
         for step in path.steps:
-            status = _reported(step)
+            status = step.reported_status()  # a partial point PARTIAL (Increment.reported_status)
             # a frictionless point's t_T is round-off: no direction to tell
-            frictionless = getattr(step, "frictionless", False)
+            frictionless = step.frictionless
             backwards = (status == SLIP) & (np.asarray(step.traction)[:, 1] < 0) & (not frictionless)
             seen.update(np.unique(np.where(backwards, -1, status)).tolist())
     return len(seen) > 1
-
-
-def _reported(step) -> np.ndarray:
-    """A step's status as outputs report it (a partial point ``PARTIAL``,
-    :meth:`~contactcore.interface_path.Increment.reported_status`), read
-    from its ``status`` and its ``theta`` where it has one."""
-    if hasattr(step, "reported_status"):
-        return step.reported_status()
-    status, theta = np.asarray(step.status), getattr(step, "theta", None)
-    return status if theta is None else np.where(np.isfinite(theta), PARTIAL, status)
 
 
 def status_along(scene: Scene, path) -> np.ndarray:
@@ -63,7 +53,7 @@ def status_along(scene: Scene, path) -> np.ndarray:
     _, pts, _ = sample_points(scene, InterfaceProfile("gamma", ("gN",)))
     a, b = along(scene.interface, path.points), along(scene.interface, pts)
     nearest = np.argmin(np.abs(b[:, None] - a[None, :]), axis=1)
-    return _reported(path.final)[nearest]
+    return path.final.reported_status()[nearest]
 
 
 def status_change(scene: Scene, coarse_path, fine_path, hs: tuple[float, float] | None = None) -> dict:
