@@ -63,4 +63,4 @@ def test_the_unilateral_refusal_names_the_step_solved_and_no_order_in_h(tmp_path
     assert first.startswith(f"scene g16-uni: increment 1 of {increments}{followed}: Newton found no open/closed "
                             "map of the unilateral law"), first
     assert "finer h" not in first and "fails more often" not in first
-    assert "another h or degree may find one or not" in first
+    assert "another h or degree may settle it or not" in first
