@@ -28,6 +28,8 @@ from . import tolerances as tol
 from .errors import require_finite
 from .exact import is_exact
 from .geometry import CircleInterface, tangent_of
+from .interface_path import along
+from .laws import PARTIAL, SLIP, STICK
 from .result import Fields
 from .errors import ContactError, SceneError
 from .scene import (BODIES, DISPLACEMENT_QUANTITIES, INTERFACE_QUANTITIES, MEAN_SIDE, STRESS_QUANTITIES, LineProfile,
@@ -99,14 +101,39 @@ def interface_response(scene: Scene, fields: Fields, points: np.ndarray, path=No
                              "Result's interface path")
         t = path.piece_means(scene.interface, points, path.final.traction)
         return {"gN": g[:, 0], "gT": g[:, 1], "tN": t[:, 0], "tT": t[:, 1]}
+    t = _law_at(scene, g, points, path).traction
+    return {"gN": g[:, 0], "gT": g[:, 1], "tN": t[:, 0], "tT": t[:, 1]}
+
+
+def _law_at(scene: Scene, g: np.ndarray, points: np.ndarray, path=None):
+    """A penalty law's response to the jumps ``g`` at ``points`` of Γ, its
+    history read from ``path`` where it has one."""
     state = None
     if scene.law.has_history:
         if path is None or path.state is None:
             raise ContactError(f"path: the '{scene.law.name}' law needs the interface history: pass the Result's "
                              "interface path")
         state = path.state_at(scene.interface, points)
-    t = scene.law.evaluate(g, state).traction
-    return {"gN": g[:, 0], "gT": g[:, 1], "tN": t[:, 0], "tT": t[:, 1]}
+    return scene.law.evaluate(g, state)
+
+
+def interface_status(scene: Scene, fields: Fields, points: np.ndarray, path) -> np.ndarray:
+    """The status a profile's tractions at ``points`` of Γ follow (an index
+    into ``REPORTED_STATUS_NAMES``): a penalty law's own at the profile's
+    jumps (:func:`interface_response`: the traction there is the law's at
+    that jump, so an interpolated gap that opens reads t = 0 whatever the
+    nearest quadrature point's status), an exact law's the nearest
+    quadrature point's (its tractions are the solve's, per piece of Γ).  A
+    point of the partial answer, or a frictionless closed point, is
+    reported as its quadrature point is (``Increment.reported_status``)."""
+    a, b = along(scene.interface, path.points), along(scene.interface, points)
+    reported = path.final.reported_status()[np.argmin(np.abs(b[:, None] - a[None, :]), axis=1)]
+    if is_exact(scene.law):
+        return reported
+    g = interface_response(scene, fields, points, path)
+    own = _law_at(scene, np.column_stack([g["gN"], g["gT"]]), points, path).status
+    own = np.where(path.final.frictionless & (own == STICK), SLIP, own)
+    return np.where(reported == PARTIAL, PARTIAL, own).astype(np.int8)
 
 
 def evaluate_quantities(scene: Scene, fields: Fields, points: np.ndarray, quantities, side: str = "plus",

@@ -6,12 +6,14 @@ grader16's `uni` (tests/test_xfem_opening.py), fe P1 at h = 0.05, has one
 partial point, at s = 0.325 (the run's warning names it and its θ); a run
 without a partial point reports what its law's status says."""
 import csv
+import pathlib
 import re
 
 import numpy as np
 
 from contactcore import discretisation, load_scene
 from contactcore.laws import PARTIAL, STICK
+from contactcore.profiles import interface_response
 from verification.interface import write_history
 
 
@@ -106,10 +108,38 @@ def test_the_estimate_compares_a_partial_point_as_its_own_status(tmp_path):
     from test_xfem_opening import UNI
     (tmp_path / "uni.toml").write_text(UNI)
     scene = load_scene(tmp_path / "uni.toml")  # Γ the line y = 0.5 of the paths
-    stick = _path([STICK] * 5)
-    mixed = _path([STICK] * 5, theta=[np.nan, np.nan, 0.5, np.nan, np.nan])
+    from types import SimpleNamespace
+    # an exact law's statuses are its quadrature points': no field is read
+    stick = SimpleNamespace(interface=_path([STICK] * 5), fields=None)
+    mixed = SimpleNamespace(interface=_path([STICK] * 5, theta=[np.nan, np.nan, 0.5, np.nan, np.nan]), fields=None)
     same = status_change(scene, stick, stick)
     assert same["differ"] == 0 and "partial" not in same["fine"]
     change = status_change(scene, stick, mixed)
     assert change["differ"] > 0 and change["fine"]["partial"] > 0 and change["coarse"]["partial"] == 0
-    assert not switches([stick]) and switches([mixed])
+    assert not switches([stick.interface]) and switches([mixed.interface])
+
+
+def test_the_status_compared_is_the_one_the_profiles_tractions_follow():
+    """grader25b H1 (tests/scenes/unil_partopen.toml, penalty unilateral,
+    fe P1 at h = 0.05 and 0.025): at one sample of Γ the coarser run's
+    interpolated gap opens (its profile reads t = 0) while the nearest
+    quadrature point sticks, and the finer run's closes.  The status the
+    estimate compares is the law's at the profile's own jumps, so the two
+    runs differ there and the estimate is warned (it read `differ 0`,
+    the quadrature points' statuses, and t_T's effectivity was 5.3
+    unwarned).  Each differing sample's t_T is zero in exactly one run."""
+    from contactcore.estimate import status_along, status_change
+    from contactcore.laws import OPEN
+    from contactcore.profiles import sample_points
+    from contactcore.scene import InterfaceProfile
+    from xdolfinx.options import FE
+    scene = load_scene(pathlib.Path(__file__).parent / "scenes" / "unil_partopen.toml")
+    runs = [discretisation.solve(scene, FE(degree=1), h) for h in (0.05, 0.025)]
+    change = status_change(scene, *runs, (0.05, 0.025))
+    assert change["differ"] >= 1
+    _, points, _ = sample_points(scene, InterfaceProfile("gamma", ("gN",)))
+    statuses = [status_along(scene, r) for r in runs]
+    tT = [interface_response(scene, r.fields, points, r.interface)["tT"] for r in runs]
+    for i in np.flatnonzero(statuses[0] != statuses[1]):
+        assert [s[i] == OPEN for s in statuses] == [t[i] == 0.0 for t in tT]
+        assert (tT[0][i] == 0.0) != (tT[1][i] == 0.0)

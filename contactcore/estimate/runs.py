@@ -123,7 +123,7 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
                 + cell_scale_warnings(rough, hs[-2:], fast) + residue_warnings(residue, len(levels) > 2))
     status = None
     if scene.law.has_history or not scene.law.is_linear:
-        status = status_change(scene, results[-2].interface, results[-1].interface, hs[-2:])
+        status = status_change(scene, results[-2], results[-1], hs[-2:])
         warnings += status_warning(status)
     zz = energy_estimate(scene, results[-1].fields, hs[-1], exclude) if energy else None
     kept = {p.id: far_from_singular(scene, np.column_stack([p.columns["x"], p.columns["y"]]), exclude)

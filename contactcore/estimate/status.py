@@ -18,9 +18,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..interface_path import along
 from ..laws import PARTIAL, REPORTED_STATUS_NAMES, SLIP
-from ..profiles import sample_points
+from ..profiles import interface_status, sample_points
 from ..scene import InterfaceProfile, Scene
 
 
@@ -45,23 +44,24 @@ def switches(paths) -> bool:
     return len(seen) > 1
 
 
-def status_along(scene: Scene, path) -> np.ndarray:
+def status_along(scene: Scene, result) -> np.ndarray:
     """The final increment's reported status (index into
     ``REPORTED_STATUS_NAMES``: a partial point ``PARTIAL``) at the profile
-    samples of Γ, each the status of the nearest quadrature point along
-    Γ."""
+    samples of Γ, the status the profile's tractions follow there
+    (:func:`contactcore.profiles.interface_status`; grader25b H1: a sample
+    whose interpolated gap opens reads t = 0 beside a sticking quadrature
+    point, and the nearest point's status hid that the runs differed)."""
     _, pts, _ = sample_points(scene, InterfaceProfile("gamma", ("gN",)))
-    a, b = along(scene.interface, path.points), along(scene.interface, pts)
-    nearest = np.argmin(np.abs(b[:, None] - a[None, :]), axis=1)
-    return path.final.reported_status()[nearest]
+    return interface_status(scene, result.fields, pts, result.interface)
 
 
-def status_change(scene: Scene, coarse_path, fine_path, hs: tuple[float, float] | None = None) -> dict:
-    """The final status of two runs (at ``hs``, coarse and fine) compared
-    along Γ: the share of Γ in each status per run (``partial`` only where
-    either run has a partial point at a sample), and the samples whose
-    status differs (a partial point differs from every other status)."""
-    s0, s1 = status_along(scene, coarse_path), status_along(scene, fine_path)
+def status_change(scene: Scene, coarse, fine, hs: tuple[float, float] | None = None) -> dict:
+    """The final status of two runs' Results (at ``hs``, coarse and fine)
+    compared along Γ: the share of Γ in each status per run (``partial``
+    only where either run has a partial point at a sample), and the
+    samples whose status differs (a partial point differs from every other
+    status)."""
+    s0, s1 = status_along(scene, coarse), status_along(scene, fine)
     either = np.any(s0 == PARTIAL) or np.any(s1 == PARTIAL)
     names = REPORTED_STATUS_NAMES if either else REPORTED_STATUS_NAMES[:PARTIAL]
     shares = lambda s: {n: float(np.mean(s == i)) for i, n in enumerate(names)}  # noqa: E731
