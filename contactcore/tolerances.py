@@ -1071,10 +1071,15 @@ CONTRAST_CAUSE = 1e-8
 SMALL_STRAIN_SAMPLES = 40
 #: A body no sample of that grid reaches (a layer thinner than a sample
 #: cell or than h/2 between Γ and the boundary) is sampled on the grid's
-#: cells halved up to this many times: down to L/40/2^12 ≈ 6e-6 L, a
-#: thousandth of the thinnest layer measured (grader24's 1e-3 L top
-#: layer, found at 7 halvings, 2026-11-28), with at most a few thousand
-#: cells per level along Γ.
+#: cells halved up to this many times: down to cells of c = L/40/2^12
+#: (6.1e-6 L; on the unit square, L its diagonal, 8.6e-6 of its side),
+#: each level tested, the last included.  A sample's centre must clear Γ
+#: and the boundary by half its cell's diagonal, so a layer (1 + √2) c
+#: thick or more (2.1e-5 of the unit square's side) is always found
+#: (2026-11-29, review10: 3e-5 was named unchecked while the last level
+#: went untested), 1/50 of the thinnest layer measured (grader24's 1e-3 L top layer, found at 7
+#: halvings, 2026-11-28), with at most a few thousand cells per level
+#: along Γ.
 SMALL_STRAIN_REFINEMENTS = 12
 
 #: A failed solve names a spring whose entry k w (w a quadrature weight) lies
@@ -1483,8 +1488,10 @@ PARTIAL_SEARCH_MAPS = 30
 #: partial points sit where Γ opens, one or two per opening edge, and a
 #: walk that makes more partial is lost, each of them one more solve per
 #: map.  Measured 2026-11-29: every answer found has 1 (uni fe P1; scene A
-#: at 20° through (0.5, 0.402), xfem P2 quads, and through 0.398; tilt
-#: efgm P1) or 2 (tilt xfem P2 at h = 0.025); the returning walk on scene
+#: at 20° through (0.5, 0.402) in xfem P2 quads and efgm P2, through 0.398
+#: in xfem P2 quads; tilt efgm P1) or 2 (tilt xfem P2 at h = 0.025), each
+#: Γ opening at one edge (a Γ with more opening edges than four, each
+#: needing two, would be refused by this bound); the returning walk on scene
 #: A through 0.402 in efgm P2 at h = 0.0125 held 6, 29, ... up to 300
 #: partial over its 30 maps and found nothing in 115 CPU s.  Four times
 #: the most an answer has had.

@@ -12,7 +12,7 @@ from contactcore import load_scene
 from contactcore.geometry import domain_cells
 from contactcore.scene.caveats import _thin_body_samples
 from contactcore.scene_files import scene_from_dict, scene_toml
-from contactcore.tolerances import SMALL_STRAIN_LIMIT, SMALL_STRAIN_SAMPLES
+from contactcore.tolerances import SMALL_STRAIN_LIMIT, SMALL_STRAIN_REFINEMENTS, SMALL_STRAIN_SAMPLES
 from verification import methods
 from verification.__main__ import main
 
@@ -89,6 +89,22 @@ def test_a_thin_layer_s_strain_is_the_closed_form_p_over_e():
     warned = scene.small_strain_warnings(_Uniform([0.0, -p, 0.0]), COARSE)
     assert len(warned) == 1 and f"{p / E:.2g} in body plus" in warned[0], warned
     assert "body minus" not in warned[0]  # the stiff body: 5e-6
+
+
+@pytest.mark.parametrize("thickness", [3e-5, 2.1e-5])
+def test_a_layer_of_one_plus_root_two_finest_cells_is_found(thickness):
+    """review10 #1: every level of halving is tested, the last included,
+    so a layer (1 + √2) cells of L/40/2^SMALL_STRAIN_REFINEMENTS thick
+    (L the domain's diagonal: 2.1e-5 of the unit square's side) or more
+    has samples inside it (3e-5 was named unchecked while the last level
+    went untested)."""
+    scene = _thin(1 - thickness)
+    assert (1 + np.sqrt(2)) * scene.length_scale / SMALL_STRAIN_SAMPLES / 2 ** SMALL_STRAIN_REFINEMENTS <= thickness
+    lo, hi = domain_cells(scene.domain, scene.length_scale / SMALL_STRAIN_SAMPLES)
+    points = _thin_body_samples(scene, 1, lo, hi)
+    assert len(points) and np.all(points[:, 1] > 1 - thickness), points
+    warned = scene.small_strain_warnings(_Uniform([0.0, -1.0, 0.0]), COARSE)
+    assert not any("not checked" in w for w in warned), warned
 
 
 def test_a_body_too_thin_for_the_finest_samples_is_named_unchecked():

@@ -177,3 +177,17 @@ def test_a_consistent_map_the_search_finds_is_handed_to_newton(tmp_path, monkeyp
     assert np.array_equal(mine.status, theirs.status) and mine.counts().get("partial", 0) == 0
     scale = np.max(np.abs(theirs.traction))
     assert np.max(np.abs(mine.traction - theirs.traction)) <= tol.SEARCH_AS_NEWTON * scale
+
+
+def test_a_walk_with_more_partial_points_than_the_bound_ends(tmp_path, monkeypatch):
+    """review10 #2: PARTIAL_SEARCH_POINTS ends a walk.  `uni` fe P1 at
+    h = 0.05 answers with one partial point; with the bound below that
+    (0) neither walk may hold it and the refusal stands."""
+    from contactcore import tolerances as ctol
+    from xdolfinx.options import FE
+    path = tmp_path / "uni.toml"
+    path.write_text(UNI)
+    assert len(_partial_points(discretisation.solve(load_scene(path), FE(degree=1), 0.05).solver)) == 1
+    monkeypatch.setattr(ctol, "PARTIAL_SEARCH_POINTS", 0)
+    with pytest.raises(SolverError, match="Newton found no open/closed map"):
+        discretisation.solve(load_scene(path), FE(degree=1), 0.05)

@@ -58,14 +58,18 @@ def _thin_body_samples(scene, body: int, lo, hi) -> np.ndarray:
     up to ``SMALL_STRAIN_REFINEMENTS`` times, until some cell's centre lies
     in it clear of Γ and of the boundary by half its diagonal (not by h/2:
     the body is thinner than that, and every method's field of the body
-    there is what it solved for it).  None found: an empty array."""
-    for _ in range(tol.SMALL_STRAIN_REFINEMENTS):
+    there is what it solved for it): the grid's own cells and those of
+    each halving, the last included (review10 #1: it was computed and
+    not tested).  None found: an empty array."""
+    for level in range(tol.SMALL_STRAIN_REFINEMENTS + 1):
         centre, half = (lo + hi) / 2, np.linalg.norm(hi - lo, axis=1) / 2
         side = (scene.interface.phi(centre) >= 0).astype(int)
         sd, db = np.abs(scene.interface.signed_distance(centre)), scene.domain.distance_to_boundary(centre)
         found = (side == body) & (sd > half) & (db > half)
         if np.any(found):
             return centre[found]
+        if level == tol.SMALL_STRAIN_REFINEMENTS:
+            break
         meets = ((side == body) | (sd <= half)) & (db > -half)
         lo, hi = lo[meets], hi[meets]
         mid = (lo + hi) / 2
