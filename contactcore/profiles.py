@@ -91,10 +91,7 @@ def interface_response(scene: Scene, fields: Fields, points: np.ndarray, path=No
     (and the law's history on ``path``, for a law that has one); an exact
     law's tractions are the solve's, averaged over each piece of Γ
     (:meth:`~contactcore.interface_path.InterfacePath.piece_means`)."""
-    m = len(points)
-    jump = fields.displacement(points, np.ones(m, int)) - fields.displacement(points, np.zeros(m, int))
-    n = scene.interface.normals(points)
-    g = np.column_stack([np.sum(jump * n, axis=1), np.sum(jump * tangent_of(n), axis=1)])
+    g = _jumps_at(scene, fields, points)
     if is_exact(scene.law):
         if path is None or not path.steps:
             raise ContactError(f"path: the exact '{scene.law.name}' law's tractions come from the solve: pass the "
@@ -103,6 +100,14 @@ def interface_response(scene: Scene, fields: Fields, points: np.ndarray, path=No
         return {"gN": g[:, 0], "gT": g[:, 1], "tN": t[:, 0], "tT": t[:, 1]}
     t = _law_at(scene, g, points, path).traction
     return {"gN": g[:, 0], "gT": g[:, 1], "tN": t[:, 0], "tT": t[:, 1]}
+
+
+def _jumps_at(scene: Scene, fields: Fields, points: np.ndarray) -> np.ndarray:
+    """(m, 2): the computed field's jump ``(g_N, g_T)`` at points of Γ."""
+    m = len(points)
+    jump = fields.displacement(points, np.ones(m, int)) - fields.displacement(points, np.zeros(m, int))
+    n = scene.interface.normals(points)
+    return np.column_stack([np.sum(jump * n, axis=1), np.sum(jump * tangent_of(n), axis=1)])
 
 
 def _law_at(scene: Scene, g: np.ndarray, points: np.ndarray, path=None):
@@ -124,14 +129,14 @@ def interface_status(scene: Scene, fields: Fields, points: np.ndarray, path) -> 
     that jump, so an interpolated gap that opens reads t = 0 whatever the
     nearest quadrature point's status), an exact law's the nearest
     quadrature point's (its tractions are the solve's, per piece of Γ).  A
-    point of the partial answer, or a frictionless closed point, is
-    reported as its quadrature point is (``Increment.reported_status``)."""
+    sample whose nearest quadrature point is of the partial answer is
+    reported partial, and a frictionless closed one ``SLIP``, as
+    ``Increment.reported_status`` reports the points."""
     a, b = along(scene.interface, path.points), along(scene.interface, points)
     reported = path.final.reported_status()[np.argmin(np.abs(b[:, None] - a[None, :]), axis=1)]
     if is_exact(scene.law):
         return reported
-    g = interface_response(scene, fields, points, path)
-    own = _law_at(scene, np.column_stack([g["gN"], g["gT"]]), points, path).status
+    own = _law_at(scene, _jumps_at(scene, fields, points), points, path).status
     own = np.where(path.final.frictionless & (own == STICK), SLIP, own)
     return np.where(reported == PARTIAL, PARTIAL, own).astype(np.int8)
 

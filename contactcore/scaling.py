@@ -61,7 +61,7 @@ from .interface_path import InterfacePath
 from .laws import DIMENSIONLESS, DISPLACEMENT, LENGTH, STIFFNESS, STRESS, law_contract
 from .profiles import ProfileData
 from .result import check_points, gamma_reach
-from .scene import DISPLACEMENT_QUANTITIES, STRESS_QUANTITIES, LineProfile, Scene, Support, place_of, check_resolution
+from .scene import DISPLACEMENT_QUANTITIES, STRESS_QUANTITIES, LineProfile, Scene, Support, check_resolution, place_of
 from .scene.loads import FORCE_DENSITY, MAGNITUDES, MOMENT, POINT, STRESS as LOAD_STRESS, load_contract, scaled_load
 
 

@@ -41,7 +41,7 @@ from contactcore.constraints import Constraints
 from contactcore.system import ContactSystem, InterfaceOperator
 from contactcore.geometry import tangent_of
 from contactcore.interface_path import piece_centres
-from contactcore.scene import BODY, place_of, body_force, edge_traction
+from contactcore.scene import BODY, body_force, edge_traction, place_of
 from contactcore.result import check_points
 from contactcore.scaling import Scales
 

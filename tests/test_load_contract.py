@@ -23,7 +23,7 @@ from contactcore import (InterfaceProfile, LinearLaw, LineInterface, LineProfile
                          SceneError, Support, discretisation, load_scene, sample_profiles)
 from contactcore.errors import ContactError
 from contactcore.scaling import Scales, dimensionless_inputs
-from contactcore.scene import BODY, EDGE, LOADS, BodyForce, Pressure, Torque, Traction, place_of, edge_traction
+from contactcore.scene import BODY, EDGE, LOADS, BodyForce, Pressure, Torque, Traction, edge_traction, place_of
 from contactcore.scene import loads as load_module
 from contactcore.scene.loads import FORCE_DENSITY, POINT, STRESS, _Load, load_contract, load_registry
 from contactcore.scene_files import _LOAD_TYPES

@@ -32,7 +32,7 @@ from .. import tolerances as tol
 from ..exact import Bonded, is_exact
 from ..geometry import LineInterface, Rectangle
 from ..scene import Scene
-from ..scene.loads import EDGE, place_of, edge_traction
+from ..scene.loads import EDGE, edge_traction, place_of
 
 
 def kolosov(nu: float, plane: str) -> float:

@@ -29,7 +29,7 @@ import numpy as np
 
 from .. import tolerances as tol
 from ..geometry import LineInterface, Rectangle, tangent_of
-from ..scene.loads import BODY, EDGE, place_of, edge_traction
+from ..scene.loads import BODY, EDGE, edge_traction, place_of
 from .residual import NOT_CONVERGED
 from .overturning import eccentricity, overturn_refusal, overturned
 from .restraint import _BODY_NAMES, _free_modes, _mode_matrix, _restraint

@@ -117,6 +117,13 @@ from .iteration import _flat
 _OPEN, _CLOSED, _PARTIAL = 0, 1, 2
 
 
+def _law_status(s: np.ndarray) -> np.ndarray:
+    """The law's status of each point of the search's map ``s``: open, or
+    ``STICK`` (a closed or partial point: ``y_N = 0`` is closed in the
+    law's definition)."""
+    return np.where(s == _OPEN, OPEN, STICK).astype(np.int8)
+
+
 def applies(scene, system) -> bool:
     """Whether the partial search may run: the ``unilateral`` law (no
     friction, no history; penalty or exact), on any number of ranks."""
@@ -172,7 +179,7 @@ class _Search:
         traction[P] = np.column_stack([np.zeros(len(P)), tau])
         tangent = np.zeros((self.m, 2, 2))
         tangent[closed, 0, 0], tangent[closed, 1, 1] = self.k[closed, 0], self.k[closed, 1]
-        return LawResponse(traction, tangent, None, np.where(s == _OPEN, OPEN, STICK).astype(np.int8))
+        return LawResponse(traction, tangent, None, _law_status(s))
 
     def rest(self, s: np.ndarray) -> tuple[np.ndarray, LawResponse]:
         """The residual ``R₀`` at ``u₀`` with the map ``s``'s own
@@ -229,7 +236,7 @@ class _Search:
         band, :class:`contactcore.laws.Decision`), a partial one by its
         ``τ`` beyond its band (module doc)."""
         ranks, newton = self.ranks, self.newton
-        status = np.where(s == _OPEN, OPEN, STICK).astype(np.int8)
+        status = _law_status(s)
         decided = newton.itf.respond(newton.law, u, newton.state, status, ranks).status
         want = np.where(s == _PARTIAL, _PARTIAL, np.where(decided == OPEN, _OPEN, _CLOSED)).astype(np.int8)
         if ranks.max(float(len(P))) > 0:  # the band's maximum is a collective
@@ -324,7 +331,7 @@ def _answer(newton, search: _Search, k: float, s, u, y, tau, P, maps: int) -> bo
     it).  False where either fails."""
     if search.ranks.max(float(len(P))) > 0:
         return _commit(newton, search, k, s, u, y, tau, P, maps)
-    status = np.where(s == _OPEN, OPEN, STICK).astype(np.int8)
+    status = _law_status(s)
     try:
         factors, u, response, iterations, history = newton._iterate(k, start=(u, status))
     except health.FreeBody:

@@ -49,8 +49,8 @@ from ..errors import DiscretisationError, SceneError
 from ..geometry import CircleInterface, Disc, Domain, Interface, LevelSetInterface, LineInterface, Rectangle
 from ..laws import InterfaceLaw
 from .check_profiles import RESERVED_PROFILE_IDS
-from .loads import (BODY, EDGE, LOADS, BodyForce, Load, Pin, Pressure, Support, Torque, Traction, place_of, body_force,
-                    edge_traction)
+from .loads import (BODY, EDGE, LOADS, BodyForce, Load, Pin, Pressure, Support, Torque, Traction, body_force,
+                    edge_traction, place_of)
 from .materials import Material
 from .model import Scene
 from .profiles import InterfaceProfile, LineProfile, Profile
@@ -68,8 +68,8 @@ __all__ = [
     # materials, units
     "MAX_UNIT_NAME", "Material", "Units",
     # loads
-    "BODY", "BodyForce", "EDGE", "LOADS", "Load", "Pin", "Pressure", "Support", "Torque", "Traction", "place_of",
-    "body_force", "edge_traction",
+    "BODY", "BodyForce", "EDGE", "LOADS", "Load", "Pin", "Pressure", "Support", "Torque", "Traction",
+    "body_force", "edge_traction", "place_of",
     # profiles
     "InterfaceProfile", "LineProfile", "Profile",
     # model

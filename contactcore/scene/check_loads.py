@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from ..errors import SceneError
 from ..geometry import CircleInterface
-from .loads import EDGE, Torque, place_of, load_contract
+from .loads import EDGE, Torque, load_contract, place_of
 from .values import check_body, check_point_inside, finite
 from .vocabulary import COMPONENTS
 

@@ -22,7 +22,7 @@ from contactcore.cutcell import edge_crossings, gauss01
 from contactcore.geometry import tangent_of
 from contactcore.interface_path import piece_centres
 from contactcore.system import InterfaceOperator
-from contactcore.scene import BODY, EDGE, place_of, body_force, edge_traction
+from contactcore.scene import BODY, EDGE, body_force, edge_traction, place_of
 
 from .space import EnrichedFunctionSpace
 
