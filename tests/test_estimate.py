@@ -712,6 +712,7 @@ def _line_along_gamma(start: float) -> list:
     ("efgm", 0.05, 2.0, {"reach"}),             # supports 0.1: reach 0.2 > 0.15, 0.1 < 1/8
     ("efgm", 0.1, 2.0, {"reach", "coarse"}),    # supports 0.2 > 1/8 of A
     ("efgm", 0.025, 2.0, set()),                # reach 0.1 < 0.15
+    ("efgm", 0.1, 3.0, {"reach", "coarse", "thin"}),  # supports 0.3: 2 of them exceed A's bodies, 0.5 thick
 ])
 def test_a_coarse_run_whose_stencil_reaches_a_singular_point_or_spans_a_feature_is_not_asymptotic(
         method, h, dmax, causes):
@@ -723,13 +724,46 @@ def test_a_coarse_run_whose_stencil_reaches_a_singular_point_or_spans_a_feature_
     record = {"h": h} if dmax is None else {"h": h, "dmax": dmax, "support": "circular"}
     found = est.unsettled(scene, [_line_along_gamma(0.15)], record, method, 1, exclude=0.1)
     assert {cause for cause, names in found.items() if names} == causes
-    lines = est.unsettled_warnings(found, h, est.feature_size(scene))
+    lines = est.unsettled_warnings(found, h, est.feature_size(scene), thin=est.thinnest_body(scene))
     assert len(lines) == len(causes) and all(line.startswith("L:sxx: ") for line in lines)
+    assert ("the thinner body across Γ is 0.5 thick" in " ".join(lines)) == ("thin" in causes)
     for cause in causes:  # the h from which the cause is gone: just below it, it is
         (_, h_ok), = found[cause].values()
         below = est.unsettled(scene, [_line_along_gamma(0.15)], {**record, "h": h_ok * (1 - tol.ACROSS_A_THRESHOLD)}, method, 1,
                               exclude=0.1)
         assert not below[cause] and f"h = {h_ok:.3g} avoids" in " ".join(lines)
+
+
+def _layer(tmp_path, y: float):
+    """Scene A with Γ at height ``y``: its upper body a layer 1 − y thick."""
+    from contactcore.scene_files import scene_text
+    toml = tmp_path / "layer.toml"
+    toml.write_text(scene_text("A").replace("0.5]", f"{y!r}]"))  # Γ and the profiles along it
+    return load_scene(toml)
+
+
+@pytest.mark.parametrize("method, h, dmax, thin", [
+    ("fe", 0.1, None, True),          # 2 cells of 0.1 exceed the layer's 0.15 (grader25b's xfem P1 u_y, 0.127)
+    ("fe", 0.05, None, False),        # 2 cells of 0.05 do not
+    ("efgm", 0.05, 2.0, True),        # 2 supports of 0.1 do
+])
+def test_a_body_thinner_than_two_stencils_across_gamma_is_not_asymptotic(tmp_path, method, h, dmax, thin):
+    """est.unsettled's ``thin`` cause: a layer 0.15 thick (Γ at y = 0.85
+    on A's unit square; est.thinnest_body) spans fewer than
+    THIN_BODY_STENCILS of the coarse run's stencils or not; below the h
+    the warning gives, it is gone.  A curved Γ (B, C) has no such body."""
+    scene = _layer(tmp_path, 0.85)
+    assert est.thinnest_body(scene) == pytest.approx(0.15)
+    assert est.thinnest_body(load_scene("B")) == est.thinnest_body(load_scene("C")) == np.inf
+    record = {"h": h} if dmax is None else {"h": h, "dmax": dmax, "support": "circular"}
+    found = est.unsettled(scene, [_line_along_gamma(0.45)], record, method, 1, exclude=0.1)
+    assert bool(found["thin"]) == thin
+    if thin:
+        (_, h_ok), = found["thin"].values()
+        assert h_ok == pytest.approx(h * 0.15 / (core_tol.THIN_BODY_STENCILS * (h if dmax is None else dmax * h)))
+        below = est.unsettled(scene, [_line_along_gamma(0.45)], {**record, "h": h_ok * (1 - tol.ACROSS_A_THRESHOLD)},
+                              method, 1, exclude=0.1)
+        assert not below["thin"]
 
 
 def test_a_stencil_exactly_at_a_threshold_is_no_cause_whatever_the_round_off():

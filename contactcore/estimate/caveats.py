@@ -75,6 +75,7 @@ from ..scaling import Sizes
 from ..scene import Scene
 from .energy import EnergyEstimate
 from .extrapolation import QuantityEstimate, cell_scale_part, rms, sample_groups
+from ..scene.resolution import body_thickness
 from .orders import GAPS, MESHFREE, RECOVERED_STRESS, STRESSES, TRACTIONS, _exact, lower_end
 from .singular import exact_interface_ends, far_from_singular, singular_points, stress_singular_points
 
@@ -243,12 +244,21 @@ def feature_size(scene: Scene) -> float:
     return min(size, 2.0 * float(radius)) if radius is not None else size
 
 
+def thinnest_body(scene: Scene) -> float:
+    """The thinner body's thickness across a straight Γ
+    (:func:`~contactcore.scene.resolution.body_thickness`: a layer between
+    Γ and a parallel edge, a corner cut off), infinite for a curved Γ
+    (its disc is in :func:`feature_size`)."""
+    thickness = body_thickness(scene)
+    return min(thickness.values()) if thickness else np.inf
+
+
 def unsettled(scene: Scene, levels: list[list[ProfileData]], record: dict, method: str, degree: int,
               exclude: float, estimates: dict[str, dict[str, QuantityEstimate]] | None = None
               ) -> dict[str, dict[str, tuple[float, float]]]:
     """The quantities whose two-run estimate is not asymptotic, by cause,
     from the coarser run (``record``, its discretisation) of the pair
-    that makes it: ``{"reach": {PID:Q: (ρ, h_ok)}, "coarse": {...}}``
+    that makes it: ``{"reach": {PID:Q: (ρ, h_ok)}, "coarse": {...}, "thin": {...}}``
     with ``ρ`` the quantity's :func:`stencil_radius` in that run and
     ``h_ok`` the coarse run's h from which the cause is gone (ρ scales
     with h).  ``reach``: a sample kept (at least ``exclude`` from the
@@ -257,12 +267,17 @@ def unsettled(scene: Scene, levels: list[list[ProfileData]], record: dict, metho
     point, where that run's error is still the singular point's own.
     ``coarse``: the stencil exceeds
     1/:data:`~contactcore.tolerances.FEATURE_STENCILS` of the scene's
-    :func:`feature_size`.  A tie within
+    :func:`feature_size`.  ``thin``: a body is less than
+    :data:`~contactcore.tolerances.THIN_BODY_STENCILS` stencils thick
+    (:func:`thinnest_body`), so the coarse run hardly resolves a field
+    across it (grader25b's layer 0.15 thick on xfem P1 cells of 0.1: the
+    estimate of ``u_y`` read 0.127 of its error).  A tie within
     :data:`~contactcore.tolerances.GEOMETRY` (relative) is no cause: h =
     0.05 with supports of 2h on a feature of 0.8 sits on the threshold,
     and round-off must not decide it."""
     sing, feature, h = stress_singular_points(scene), feature_size(scene), float(record["h"])
-    out = {"reach": {}, "coarse": {}}
+    thin = thinnest_body(scene)
+    out = {"reach": {}, "coarse": {}, "thin": {}}
     coarse_run = {p.id: p for p in levels[-2]} if len(levels) > 1 else {}
     for prof in levels[-1]:
         xy = np.column_stack([prof.columns["x"], prof.columns["y"]])
@@ -278,6 +293,8 @@ def unsettled(scene: Scene, levels: list[list[ProfileData]], record: dict, metho
                 out["reach"][f"{prof.id}:{q}"] = (rho, h * near / (tol.REACH_STENCILS * rho))
             if rho * tol.FEATURE_STENCILS > feature * (1 + tol.GEOMETRY):
                 out["coarse"][f"{prof.id}:{q}"] = (rho, h * feature / (tol.FEATURE_STENCILS * rho))
+            if rho * tol.THIN_BODY_STENCILS > thin * (1 + tol.GEOMETRY):
+                out["thin"][f"{prof.id}:{q}"] = (rho, h * thin / (tol.THIN_BODY_STENCILS * rho))
     return out
 
 
@@ -318,19 +335,23 @@ def _spread(fine: ProfileData, coarse: ProfileData | None, q: str, within: np.nd
 
 
 def unsettled_warnings(found: dict[str, dict[str, tuple[float, float]]], h: float, feature: float,
-                       length: str = "m") -> list[str]:
+                       length: str = "m", thin: float = np.inf) -> list[str]:
     """One line per cause of :func:`unsettled` and per stencil, naming the
     quantities and the coarse h from which the cause is gone; its lengths
-    in the scene's unit named ``length`` (:class:`~contactcore.scene.Units`)."""
+    in the scene's unit named ``length`` (:class:`~contactcore.scene.Units`),
+    the scene's smallest ``feature`` and its ``thin``\ nest body's thickness."""
     lines = []
     for cause, entries in found.items():
         for rho in sorted({v[0] for v in entries.values()}):
             names = [k for k, v in entries.items() if v[0] == rho]
             h_ok = min(entries[k][1] for k in names)
-            why = (f"samples kept within {tol.REACH_STENCILS * rho:.3g} of a singular point, the reach of its own "
-                   f"error in the run at h = {h:g} (two stencils of {rho:.3g})" if cause == "reach" else
-                   f"the run at h = {h:g} has stencils (cells, supports, recovery patches) of {rho:.3g}, more than "
-                   f"1/{tol.FEATURE_STENCILS:g} of the scene's smallest feature ({feature:.3g})")
+            stencils = f"the run at h = {h:g} has stencils (cells, supports, recovery patches) of {rho:.3g}"
+            why = {"reach": f"samples kept within {tol.REACH_STENCILS * rho:.3g} of a singular point, the reach of its "
+                            f"own error in the run at h = {h:g} (two stencils of {rho:.3g})",
+                   "coarse": f"{stencils}, more than 1/{tol.FEATURE_STENCILS:g} of the scene's smallest feature "
+                             f"({feature:.3g})",
+                   "thin": f"{stencils}, and the thinner body across Γ is {thin:.3g} thick, less than "
+                           f"{tol.THIN_BODY_STENCILS:g} of them"}[cause]
             lines.append(f"{', '.join(names)}: {why}: the runs are not in the asymptotic range, the estimate is an "
                          f"indication only (starting below h = {h_ok:.3g} avoids this; lengths in {length})")
     return lines

@@ -22,7 +22,7 @@ import numpy as np
 from ..profiles import ProfileData, sample_profiles
 from ..scene import Scene
 from .caveats import (cell_scale_orders, cell_scale_warnings, exact_traction_warning, exact_tractions, fast_gamma,
-                      fast_gamma_warning, feature_size,
+                      fast_gamma_warning, feature_size, thinnest_body,
                       order_mismatch, order_warnings,
                       pollution_warning, residue_warnings, residues, unsettled, unsettled_warnings,
                       curved_layer, curved_layer_warning, energy_caveat, ENERGY_KEY,
@@ -117,7 +117,8 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     fast = fast_gamma(profiles, results[-1].method, results[-1].degree)
     warnings = (order_warnings(profiles) + pollution_warning(scene, profiles) + exact_traction_warning(nitsche)
                 + fast_gamma_warning(fast, results[-1].method, results[-1].degree, len(levels) > 2)
-                + unsettled_warnings(found, hs[-2], feature_size(scene), scene.user.units.length)
+                + unsettled_warnings(found, hs[-2], feature_size(scene), scene.user.units.length,
+                                     thinnest_body(scene))
                 + curved_layer_warning(layer, hs[-2], scene.user.units.length)
                 + split_cell_share_warning(split)
                 + cell_scale_warnings(rough, hs[-2:], fast) + residue_warnings(residue, len(levels) > 2))
