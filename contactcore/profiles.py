@@ -122,6 +122,14 @@ def _law_at(scene: Scene, g: np.ndarray, points: np.ndarray, path=None):
     return scene.law.evaluate(g, state)
 
 
+def nearest_status(scene: Scene, points: np.ndarray, path) -> np.ndarray:
+    """The final increment's reported status (``Increment.reported_status``)
+    of the quadrature point of Γ nearest each of ``points`` along Γ: the
+    solve's own open/closed map, read at the samples."""
+    a, b = along(scene.interface, path.points), along(scene.interface, points)
+    return path.final.reported_status()[np.argmin(np.abs(b[:, None] - a[None, :]), axis=1)]
+
+
 def interface_status(scene: Scene, fields: Fields, points: np.ndarray, path) -> np.ndarray:
     """The status a profile's tractions at ``points`` of Γ follow (an index
     into ``REPORTED_STATUS_NAMES``): a penalty law's own at the profile's
@@ -132,8 +140,7 @@ def interface_status(scene: Scene, fields: Fields, points: np.ndarray, path) -> 
     sample whose nearest quadrature point is of the partial answer is
     reported partial, and a frictionless closed one ``SLIP``, as
     ``Increment.reported_status`` reports the points."""
-    a, b = along(scene.interface, path.points), along(scene.interface, points)
-    reported = path.final.reported_status()[np.argmin(np.abs(b[:, None] - a[None, :]), axis=1)]
+    reported = nearest_status(scene, points, path)
     if is_exact(scene.law):
         return reported
     own = _law_at(scene, _jumps_at(scene, fields, points), points, path).status

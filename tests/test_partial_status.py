@@ -143,3 +143,32 @@ def test_the_status_compared_is_the_one_the_profiles_tractions_follow():
     for i in np.flatnonzero(statuses[0] != statuses[1]):
         assert [s[i] == OPEN for s in statuses] == [t[i] == 0.0 for t in tT]
         assert (tT[0][i] == 0.0) != (tT[1][i] == 0.0)
+    # the moved split moves the whole answer: every estimate is named, the bulk u_x
+    # (its rigid shift, 0.087 of its error) with Γ's
+    from contactcore.estimate import estimate_runs
+    estimate = estimate_runs(scene, runs, exclude=0.0)
+    named = {f"{pid}:{q}" for pid, qs in estimate.profiles.items() for q in qs}
+    assert "H:ux" in named and named <= estimate.unsettled
+    assert any("so no estimate of this run is asymptotic" in w for w in estimate.warnings)
+
+
+def test_a_change_in_the_solves_own_map_is_a_status_change_where_the_profile_shows_none():
+    """unil_partopen in fe P2 at h = 0.05 -> 0.025: the status each
+    profile's tractions follow (the law's at the profile's jump) is the
+    same in both runs at every sample, but the nearest quadrature point's
+    (contactcore.profiles.nearest_status, the solve's map) differs at
+    some: the open/closed split moved, and status_change counts it (it
+    read differ 0 with the profile's status alone, while g_T's and t_T's
+    estimates were 0.37 and 0.32 of their error, 2026-11-29)."""
+    from contactcore.estimate import status_along, status_change
+    from contactcore.profiles import nearest_status, sample_points
+    from contactcore.scene import InterfaceProfile
+    from xdolfinx.options import FE
+    scene = load_scene(pathlib.Path(__file__).parent / "scenes" / "unil_partopen.toml")
+    runs = [discretisation.solve(scene, FE(degree=2), h) for h in (0.05, 0.025)]
+    _, points, _ = sample_points(scene, InterfaceProfile("gamma", ("gN",)))
+    profile = [status_along(scene, r) for r in runs]
+    nearest = [nearest_status(scene, points, r.interface) for r in runs]
+    assert np.array_equal(profile[0], profile[1])
+    moved = int(np.sum(nearest[0] != nearest[1]))
+    assert moved >= 1 and status_change(scene, *runs, (0.05, 0.025))["differ"] == moved

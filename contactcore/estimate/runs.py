@@ -126,6 +126,7 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     if scene.law.has_history or not scene.law.is_linear:
         status = status_change(scene, results[-2], results[-1], hs[-2:])
         warnings += status_warning(status)
+    moved = {f"{pid}:{q}" for pid, qs in profiles.items() for q in qs} if status_warning(status) else set()
     zz = energy_estimate(scene, results[-1].fields, hs[-1], exclude) if energy else None
     kept = {p.id: far_from_singular(scene, np.column_stack([p.columns["x"], p.columns["y"]]), exclude)
             for p in levels[-1]}
@@ -134,7 +135,7 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     return Estimate(hs, profiles, zz, status, warnings + caveat, levels[-1],
                     {k for v in found.values() for k in v} | set(layer) | set(rough) | set(residue) | set(nitsche)
                     | set(split)
-                    | set(fast)
+                    | set(fast) | moved
                     | ({ENERGY_KEY} if caveat else set())
                     | {f"{pid}:{q}" for pid, qs in profiles.items() for q, e in qs.items() if order_mismatch(e)},
                     kept)

@@ -19,7 +19,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..laws import PARTIAL, REPORTED_STATUS_NAMES, SLIP
-from ..profiles import interface_status, sample_points
+from ..profiles import interface_status, nearest_status, sample_points
 from ..scene import InterfaceProfile, Scene
 
 
@@ -51,29 +51,47 @@ def status_along(scene: Scene, result) -> np.ndarray:
     (:func:`contactcore.profiles.interface_status`; grader25b H1: a sample
     whose interpolated gap opens reads t = 0 beside a sticking quadrature
     point, and the nearest point's status hid that the runs differed)."""
-    _, pts, _ = sample_points(scene, InterfaceProfile("gamma", ("gN",)))
-    return interface_status(scene, result.fields, pts, result.interface)
+    return interface_status(scene, result.fields, _samples(scene), result.interface)
+
+
+def _samples(scene: Scene) -> np.ndarray:
+    """Γ's :data:`~contactcore.tolerances.PROFILE_POINTS` profile samples."""
+    return sample_points(scene, InterfaceProfile("gamma", ("gN",)))[1]
 
 
 def status_change(scene: Scene, coarse, fine, hs: tuple[float, float] | None = None) -> dict:
     """The final status of two runs' Results (at ``hs``, coarse and fine)
-    compared along Γ: the share of Γ in each status per run (``partial``
-    only where either run has a partial point at a sample), and the
-    samples whose status differs (a partial point differs from every other
-    status)."""
+    compared along Γ: the share of Γ in each status per run
+    (:func:`status_along`; ``partial`` only where either run has a partial
+    point at a sample), and the samples whose status differs, in the
+    profile's status or in the nearest quadrature point's
+    (:func:`contactcore.profiles.nearest_status`, the solve's own map): a
+    change in either is a change of the open/closed split.  Either alone
+    misses some: the profile's status missed unil_partopen's fe and xfem P2
+    (2026-11-29, their g_T and t_T estimates 0.30-0.37 of the error), the
+    nearest point's its fe and xfem P1 (t_T 5.3-6.2)."""
     s0, s1 = status_along(scene, coarse), status_along(scene, fine)
+    pts = _samples(scene)
+    n0, n1 = (nearest_status(scene, pts, r.interface) for r in (coarse, fine))
     either = np.any(s0 == PARTIAL) or np.any(s1 == PARTIAL)
     names = REPORTED_STATUS_NAMES if either else REPORTED_STATUS_NAMES[:PARTIAL]
     shares = lambda s: {n: float(np.mean(s == i)) for i, n in enumerate(names)}  # noqa: E731
-    return {"coarse": shares(s0), "fine": shares(s1), "differ": int(np.sum(s0 != s1)), "samples": len(s0),
-            "h": list(hs) if hs else None}
+    return {"coarse": shares(s0), "fine": shares(s1), "differ": int(np.sum((s0 != s1) | (n0 != n1))),
+            "samples": len(s0), "h": list(hs) if hs else None}
 
 
-def status_warning(change: dict) -> list[str]:
-    """A line when the two compared runs' status differs somewhere along Γ."""
+def status_warning(change: dict | None) -> list[str]:
+    """A line when the two compared runs' status differs somewhere along Γ:
+    the open/closed (stick/slip) split moved between them, and with it the
+    whole answer (the bodies' rigid shift under a tie: unil_partopen's
+    bulk u_x read 0.078-0.33 of its error at h = 0.05 -> 0.025, 2026-11-29),
+    so the line names no quantity: every estimate of the run is an
+    indication only (:class:`~contactcore.estimate.runs.Estimate`'s
+    ``unsettled`` takes them all)."""
     if not change or change["differ"] == 0:
         return []
     show = lambda s: ", ".join(f"{v:.0%} {k}" for k, v in s.items())  # noqa: E731
     runs = f"h = {change['h'][0]:g} and {change['h'][1]:g}" if change.get("h") else "the two finest runs"
     return [f"the status along Γ differs between {runs} at {change['differ']} of {change['samples']} samples "
-            f"({show(change['coarse'])} → {show(change['fine'])}): the estimate is not asymptotic there"]
+            f"({show(change['coarse'])} → {show(change['fine'])}): Γ's split between its statuses moved between the runs, "
+            "and with it the whole answer, so no estimate of this run is asymptotic (an indication only)"]
