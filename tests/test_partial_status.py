@@ -10,11 +10,18 @@ import pathlib
 import re
 
 import numpy as np
+import pytest
 
 from contactcore import discretisation, load_scene
 from contactcore.laws import PARTIAL, STICK
 from contactcore.profiles import interface_response
 from verification.interface import write_history
+
+import tolerances as tol
+
+#: shear_unilateral's closed-form t_T, 0.1 × 0.47 (test_grazing.SHEAR_CLOSED_FORM,
+#: not imported: test_grazing imports this module through test_xfem_opening)
+SHEAR_T_T = 0.1 * 0.47
 
 
 def _rows(folder):
@@ -172,3 +179,46 @@ def test_a_change_in_the_solves_own_map_is_a_status_change_where_the_profile_sho
     assert np.array_equal(profile[0], profile[1])
     moved = int(np.sum(nearest[0] != nearest[1]))
     assert moved >= 1 and status_change(scene, *runs, (0.05, 0.025))["differ"] == moved
+
+
+def test_a_penalty_coulomb_gamma_that_slips_everywhere_reads_slip_at_every_sample():
+    """grader28 F1 (tests/scenes/slide_everywhere.toml, penalty Coulomb
+    μ = 0.6, dragged along Γ): every quadrature point slips in fe P1 at
+    h = 0.1 and 0.05, and so does every profile sample; the runs' status
+    does not differ.  Re-evaluated against the final slip, the law puts a
+    point that slipped on its limit, where it reads stick: the estimate
+    had read 82 % stick and warned of a moved split at 21 of 101 samples."""
+    from contactcore.estimate import status_along, status_change
+    from contactcore.laws import SLIP
+    from xdolfinx.options import FE
+    scene = load_scene(pathlib.Path(__file__).parent / "scenes" / "slide_everywhere.toml")
+    runs = [discretisation.solve(scene, FE(degree=1), h) for h in (0.1, 0.05)]
+    for r in runs:
+        assert np.all(r.interface.final.reported_status() == SLIP)
+        assert np.all(status_along(scene, r) == SLIP)
+    assert status_change(scene, *runs, (0.1, 0.05))["differ"] == 0
+
+
+def test_a_grazing_gamma_reads_the_solves_tie_at_every_sample_whatever_the_round_off():
+    """review11 #2: shear_unilateral (no load across Γ; closed form t_T =
+    0.047, g_N = 0) in fe P2 at h = 0.1 and 0.05: every quadrature point
+    sticks, and every profile sample's g_N is round-off (|g_N| <= 6.4e-18
+    against g_T 1.2e-3).  Decided as the solve decided (the law's band,
+    each sample's previous status its nearest point's), every sample is
+    closed with the closed form's t_T, and the runs do not differ; decided
+    by the sign of g_N's round-off, 100 or 101 of 101 samples read open
+    (t_T = 0), as the BLAS kernel chose, and 34 or 39 differed."""
+    from contactcore.estimate import status_along, status_change
+    from contactcore.laws import OPEN
+    from contactcore.profiles import sample_points
+    from contactcore.scene import InterfaceProfile
+    from xdolfinx.options import FE
+    scene = load_scene(pathlib.Path(__file__).parent / "scenes" / "shear_unilateral.toml")
+    runs = [discretisation.solve(scene, FE(degree=2), h) for h in (0.1, 0.05)]
+    _, points, _ = sample_points(scene, InterfaceProfile("gamma", ("gN",)))
+    for r in runs:
+        assert not np.any(r.interface.final.reported_status() == OPEN)
+        assert not np.any(status_along(scene, r) == OPEN)
+        tT = interface_response(scene, r.fields, points, r.interface)["tT"]
+        assert tT == pytest.approx(np.full(len(points), SHEAR_T_T), rel=tol.SHEAR_UNILATERAL_TRACTION)
+    assert status_change(scene, *runs, (0.1, 0.05))["differ"] == 0
