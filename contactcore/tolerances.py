@@ -1514,6 +1514,19 @@ PARTIAL_SEARCH_MAPS = 30
 #: the most an answer has had.
 PARTIAL_SEARCH_POINTS = 8
 
+#: The partial points' equations M τ = y_N (contactcore.newton.partial:
+#: one column per partial point) are singular where M's smallest singular
+#: value is at most this share of its largest: the map is refused as
+#: singular on every kernel alike.  Only an exactly zero pivot had been
+#: (LAPACK's error): review11 #1, 2026-11-29, on the docs' tilted block
+#: (exact, xfem P1, h = 0.025) the first walk's 12th map has cond(M) 8.3e16
+#: under Haswell (a zero pivot, refused) and 5.1e16 under Nehalem (solved,
+#: the walk going on to its cap), so the maps visited followed the
+#: kernel.  Every answer found has cond(M) <= 94 (review11's probe on the
+#: answers of PARTIAL_SEARCH_POINTS's note); 1e-8 lies 1e6 beyond that and
+#: 1e8 short of the singular maps.
+PARTIAL_M_RCOND = 1e-8
+
 #: The unilateral law's grazing open zone (contactcore.health.grazing): a
 #: partly open Γ is grazing where its closed points are pressed by less
 #: than this share of the loads' stress Σ (softer_stress), largest −t_N

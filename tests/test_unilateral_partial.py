@@ -191,3 +191,20 @@ def test_a_walk_with_more_partial_points_than_the_bound_ends(tmp_path, monkeypat
     monkeypatch.setattr(ctol, "PARTIAL_SEARCH_POINTS", 0)
     with pytest.raises(SolverError, match="Newton found no open/closed map"):
         discretisation.solve(load_scene(path), FE(degree=1), 0.05)
+
+
+def test_partial_equations_singular_to_working_precision_are_refused_on_every_kernel():
+    """partial.singular (review11 #1): M of condition 1.3e16 is singular
+    to working precision, though LAPACK factors it without a zero pivot
+    (the tilted block's xfem P1 map at h = 0.025 was refused under one
+    kernel and solved under another); a condition of 94, the most an
+    answer's M has had, is not; nor is a 1×1 M of any nonzero size."""
+    from contactcore.tolerances import PARTIAL_M_RCOND
+    near = np.array([[1.0, 1.0], [1.0, 1.0 + 4e-16]])
+    np.linalg.solve(near, np.ones(2))  # no LinAlgError: a pivot test would pass it
+    assert partial.singular(near)
+    assert partial.singular(np.zeros((1, 1))) and partial.singular(np.full((2, 2), np.nan))
+    assert not partial.singular(np.diag([1.0, 1.0 / 94.0]))
+    assert not partial.singular(np.array([[3e-300]]))
+    assert partial.singular(np.diag([1.0, 0.5 * PARTIAL_M_RCOND]))
+    assert not partial.singular(np.diag([1.0, 2.0 * PARTIAL_M_RCOND]))

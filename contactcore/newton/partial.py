@@ -223,10 +223,9 @@ class _Search:
         tau = np.zeros(0)
         if total:
             M = np.column_stack([ranks.gather(_jumps(newton, v)[P, 0]) for v in solved[1:]])
-            try:
-                tau = np.linalg.solve(M, ranks.gather(_jumps(newton, self.u0 + solved[0])[P, 0]))
-            except np.linalg.LinAlgError:
-                raise SolverError("the partial points' equations are singular") from None
+            if singular(M):
+                raise SolverError("the partial points' equations are singular")
+            tau = np.linalg.solve(M, ranks.gather(_jumps(newton, self.u0 + solved[0])[P, 0]))
         u = self.u0 + solved[0] - sum((t * v for t, v in zip(tau, solved[1:])), np.zeros_like(self.u0))
         return u, _jumps(newton, u), tau[first:first + len(P)], P
 
@@ -248,6 +247,18 @@ class _Search:
             want[P[beyond_tie]] = _CLOSED
             want[P[beyond_zero & ~beyond_tie]] = _OPEN
         return want
+
+
+def singular(M: np.ndarray) -> bool:
+    """Whether the partial points' equations ``M`` (square, gathered: the
+    same on every rank) are singular to working precision: the smallest
+    singular value at most :data:`~contactcore.tolerances.PARTIAL_M_RCOND`
+    of the largest (or not finite).  Not LAPACK's zero pivot, which one
+    kernel meets and another passes by on the same map (review11 #1)."""
+    if not np.all(np.isfinite(M)):
+        return True
+    sv = np.linalg.svd(M, compute_uv=False)
+    return not sv[-1] > tol.PARTIAL_M_RCOND * sv[0]
 
 
 def partial_answer(newton, k: float) -> bool:
