@@ -208,3 +208,34 @@ def test_partial_equations_singular_to_working_precision_are_refused_on_every_ke
     assert not partial.singular(np.array([[3e-300]]))
     assert partial.singular(np.diag([1.0, 0.5 * PARTIAL_M_RCOND]))
     assert not partial.singular(np.diag([1.0, 2.0 * PARTIAL_M_RCOND]))
+
+
+def test_the_tilted_block_in_fe_p2_answers_with_one_partial_point_where_gamma_opens(tmp_path):
+    """The docs' tilted block (tests/test_unilateral_shear.TILTED, exact),
+    fe P2 at h = 0.1, which Newton refuses: the search answers (its first
+    walk, cycling) with one partial point at (0.567, 0.5), θ = 0.502
+    (measured 2026-11-29, docs/contact-enforcement.md, "The tilted
+    block"), where Γ changes from open (left) to closed (right), carrying
+    (0, τ) with θ inside (0, 1).  A default test whose partial point moves
+    during the walk (review11 #3: the `uni` answer's appears only in its
+    last map, and 13 of 18 mutations of partial.py passed the default
+    suite; this one fails on dropping the second walk, on a partial point
+    that never moves, on one that stays partial, and on the open side's
+    test)."""
+    from test_unilateral_shear import TILTED
+    from xdolfinx.options import FE
+    path = tmp_path / "tilted.toml"
+    path.write_text(TILTED)
+    scene = load_scene(path)
+    result = discretisation.solve(scene, FE(degree=2), 0.1)
+    (x, y, theta), = _partial_points(result.solver)
+    # named in the scene's metres (it named the dimensionless (0.2835, 0.25) before 2026-11-29)
+    assert (x, y) == pytest.approx((0.567, 0.5), abs=tol.PARTIAL_PRINTED)
+    assert theta == pytest.approx(0.502, abs=tol.PARTIAL_PRINTED)
+    check_partial_reported(tmp_path, scene, result)
+    interface = result.interface
+    at = np.argmin(np.hypot(*(interface.points - [x, y]).T))
+    assert interface.final.traction[at, 0] == 0.0 and 0.0 < abs(interface.final.traction[at, 1])
+    xs, opened = interface.points[:, 0], interface.final.status == OPEN
+    h = 0.1  # Γ open on the left, closed on the right, beyond a cell of the partial point
+    assert np.all(opened[xs < x - h]) and not np.any(opened[xs > x + h])

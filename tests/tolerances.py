@@ -1456,3 +1456,8 @@ MEAN_SIDE_ROUNDOFF = 1e-12
 #: Haswell and Nehalem kernels (the solve's round-off); a sample read open
 #: reads 0, a relative error of 1.
 SHEAR_UNILATERAL_TRACTION = 1e-9
+
+#: A partial point's position and θ as the search's warning prints them
+#: (4 and 3 significant digits: (0.567, 0.5) θ = 0.502 on the tilted block,
+#: fe P2 at h = 0.1, 2026-11-29): half a unit of the last printed digit.
+PARTIAL_PRINTED = 5e-4
