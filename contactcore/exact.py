@@ -87,6 +87,7 @@ _STIFF = ("a larger β locks cut cells like a stiff penalty (xfem's answer 18 % 
           "1868 % at 1e6) or fails Newton's first increment")
 _SOFT = ("a smaller β leaves the contact a soft spring (C-coulomb's t_T 11-16 % off β = 3's at β = 0.1 and "
          "h = 0.05, 77 % at 1e-9)")
+_NONE = "a β of 0 or less gives Nitsche's method no stabilisation, and its problem no unique answer"
 
 
 def checked_stabilisation(value, field: str) -> float:
@@ -103,7 +104,7 @@ def checked_stabilisation(value, field: str) -> float:
         raise SceneError(field, f"must lie within {low:g}..{high:g}, a number: a multiple of the method's E/h "
                                 f"(got {value!r})")
     if not low <= value <= high:
-        why = _STIFF if value > high else _SOFT
+        why = _STIFF if value > high else _NONE if value <= 0 else _SOFT
         raise SceneError(field, f"must lie within {low:g}..{high:g} (got {quoted(value, low, high)}): {why}")
     return float(value)
 

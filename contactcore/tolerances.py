@@ -1491,9 +1491,11 @@ AXIS_PARALLEL = 1e-300
 #: maps, grader17's `tilt-unil-exact` in 6 (efgm P1, h = 0.05) and 10
 #: (xfem P2, h = 0.025), as the runs' ``iterations`` report them; on grader17's `shear-unilateral` (penalty, zero
 #: normal load, every point of Γ at g_N = 0 in the continuum) the search
-#: does not settle (fe P1 at h = 0.1 reaches a singular map at its 5th;
-#: efgm P1 cycles with 17-27 points partial to the cap, and a 60-map
-#: prototype settled no better), nor on the docs' tilted block (fe P1 at
+#: does not settle (fe P1 at h = 0.1 reached a singular map at its 5th;
+#: efgm P1 cycled with 17-27 points partial to the cap, and a 60-map
+#: prototype settled no better; since each walk's PARTIAL_SEARCH_POINTS
+#: bound both walks end within 2 to 13 maps, review11, 2026-11-29), nor
+#: on the docs' tilted block (fe P1 at
 #: h = 0.025: 44-91 partial over its last maps), and the refusal stands,
 #: so the cap is what a refusal costs (3.3 CPU s there; since each walk
 #: also ends past PARTIAL_SEARCH_POINTS, 2026-11-29, the whole refused run

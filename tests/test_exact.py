@@ -67,7 +67,8 @@ def test_exact_laws_read_from_tables():
 
 
 @pytest.mark.parametrize("beta, why", [(1e6, "locks cut cells"), (31.0, "locks cut cells"),
-                                       (0.1, "soft spring"), (1e-9, "soft spring")])
+                                       (0.1, "soft spring"), (1e-9, "soft spring"),
+                                       (0.0, "no stabilisation"), (-3.0, "no stabilisation")])  # grader27 F6
 def test_a_stabilisation_outside_its_range_is_refused(beta, why):
     """β outside NITSCHE_STABILISATION_RANGE moves the answer at one h
     (tolerances.py): refused in one line naming the key, the value, the

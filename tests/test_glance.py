@@ -267,8 +267,8 @@ def test_study_refuses_an_enforcement_it_cannot_give(tmp_path, capsys, scene, va
 def test_an_exact_law_has_no_penalty_to_fall_back_on():
     """``bonded`` exists only exactly: its penalty counterpart is named."""
     scene = load_scene("A").with_changes(law=make_law({"type": "bonded"}))
-    with pytest.raises(SceneError, match=r'its file gives no springs kN, kT to enforce it by \(type = "linear", '
-                                         r'with kN and kT, is its penalty counterpart\)'):
+    with pytest.raises(SceneError, match=r'its file gives no kN or kT to enforce it by: add kN and kT to its '
+                                         r'\[interface.law\] \(type = "linear", with kN and kT, is its penalty counterpart\)'):
         study.scene_at(scene, {"enforcement": "penalty"})
 
 
@@ -282,8 +282,11 @@ def test_a_study_enforces_an_exact_law_by_the_springs_its_file_gives():
     law = study.scene_at(scene, {"enforcement": "penalty"}).law
     assert (law.enforcement, law.name, law.kN, law.kT, law.mu) == ("penalty", "coulomb", 2e9, 3e8, 0.3)
     bare = load_scene("A").with_changes(law=make_law({k: v for k, v in given.items() if k not in ("kN", "kT")}))
-    with pytest.raises(SceneError, match=r"its file gives no springs kN, kT to enforce it by"):
+    with pytest.raises(SceneError, match=r"its file gives no kN or kT to enforce it by: add kN and kT"):
         study.scene_at(bare, {"enforcement": "penalty"})
+    half = load_scene("A").with_changes(law=make_law({k: v for k, v in given.items() if k != "kN"}))
+    with pytest.raises(SceneError, match=r"its file gives no kN to enforce it by: add kN to"):  # grader27 F5
+        study.scene_at(half, {"enforcement": "penalty"})
     assert make_law(given) == bare.law  # the springs play no part in the exact law itself
 
 

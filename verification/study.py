@@ -104,9 +104,11 @@ def _enforcement(scene, value):
         return {"law": law}
     if value == "penalty":
         springs = dict(getattr(law, "given_springs", ()))
-        if set(springs) != {"kN", "kT"}:
+        missing = [k for k in ("kN", "kT") if k not in springs]
+        if missing:
             raise SceneError("--param enforcement", f"penalty: the scene's '{law.name}' law is enforced exactly and "
-                             f"its file gives no springs kN, kT to enforce it by ({penalty_counterpart(law)})")
+                             f"its file gives no {' or '.join(missing)} to enforce it by: add "
+                             f"{' and '.join(missing)} to its [interface.law] ({penalty_counterpart(law)})")
         params = {k: getattr(law, k) for k in law.parameters if k != "stabilisation"}
         return {"law": make_law({"type": law.name, "enforcement": "penalty", **params, **springs},
                                 "--param enforcement: interface.law")}

@@ -49,7 +49,7 @@ of Γ's pressure; :class:`contactcore.laws.Decision`); a partial one
 whose ``τ`` lies beyond ``k_T y_T`` (``θ > 1``) by more than
 ``DECISION_BAND`` of Γ's largest ``|k_T y_T|`` closes, beyond 0
 (``θ < 0``) opens.  Two walks, the second only where the first finds
-nothing: the first moves every point as asked and makes the returning
+nothing (or a map whose answer fails Newton's residual test): the first moves every point as asked and makes the returning
 points partial only where the map would be one it has visited (a cycle;
 :func:`_cycling`); the second makes a closed or open point asked to take
 a status it has already had partial at once (it contradicts both: the
@@ -184,8 +184,9 @@ class _Search:
 
     def rest(self, s: np.ndarray) -> tuple[np.ndarray, LawResponse]:
         """The residual ``R₀`` at ``u₀`` with the map ``s``'s own
-        tractions there, and that response (its tangent the map's) (a partial point's τ apart: its unit forces carry
-        it), so ``J_s (u − u₀) = −R₀ − Σ τ_p f_p`` is the map's linear
+        tractions there (but a partial point's τ, which its unit forces
+        carry), and that response (its tangent the map's), so
+        ``J_s (u − u₀) = −R₀ − Σ τ_p f_p`` is the map's linear
         problem even where ``y(u₀) ≠ 0`` (review8: the law's response at
         ``u₀`` left a residual of 0.128 of the scale in a map opening
         points a prescribed displacement had opened)."""
@@ -267,7 +268,8 @@ def partial_answer(newton, k: float) -> bool:
     committed to ``newton`` if it finds an answer: True; else False.  The
     walk that moves every point as asked goes first (:func:`_cycling`),
     the one that makes a returning point partial second
-    (:func:`_returning`), where the first finds nothing."""
+    (:func:`_returning`), where the first finds nothing or its map fails
+    :func:`_answer`."""
     search = _Search(newton, k)
     for rule in (_cycling, _returning):
         found = _walk(search, rule)

@@ -62,7 +62,8 @@ def _refusal(scene, system: ContactSystem, exc: SolverError) -> SolverError:
 
 #: What to do where the materials make the solve keep too few digits.
 _NU_REMEDY = "lower ν or use plane stress"
-_CONTRAST_REMEDY = "bring the moduli closer: every method solved the measured scenes at 1e-9 (docs/scenes.md)"
+_CONTRAST_REMEDY = ("bring the moduli closer (the measured scenes solved in every method at contrasts down to 1e-9, "
+                    "docs/scenes.md, but this one did not at its own)")
 
 
 def _material(scene) -> tuple[str, str]:
