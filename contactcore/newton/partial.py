@@ -243,7 +243,9 @@ class _Search:
         if ranks.max(float(len(P))) > 0:  # the band's maximum is a collective
             tie = self.k[:, 1] * y[:, 1]
             band = tol.DECISION_BAND * max(ranks.max(float(np.max(np.abs(tie), initial=0.0))), tol.DECISION_FLOOR)
-            side = np.sign(tie[P])  # τ within [0, k_T y_T]: beyond the tie closes, beyond 0 opens
+            # τ within [0, k_T y_T]: beyond the tie closes, beyond 0 opens; a tie within the band has no
+            # side but round-off's (review11 #5): there any τ beyond the band opens
+            side = np.where(np.abs(tie[P]) > band, np.sign(tie[P]), 0.0)
             beyond_tie = side * (tau - tie[P]) > band
             beyond_zero = np.where(side != 0, -side * tau, np.abs(tau)) > band
             want[P[beyond_tie]] = _CLOSED
