@@ -403,6 +403,16 @@ def softer_displacement(scene: Scene) -> float:
     return Scales.of(_all_softer(scene)).displacement
 
 
+def user_points(scene: Scene, points) -> np.ndarray:
+    """``points`` (…, 2) of a dimensionless ``scene`` (one :meth:`Scales.scene`
+    made) in its user's coordinates and length unit, as a message names
+    them; a user's own scene's unchanged.  The tilted block, 2 × 1 m, had
+    its partial point named at (0.2835, 0.25), half its (0.567, 0.5), and
+    a pin-held pull at (3, −1.63) mm its pivot at (−1.1e-16, 0.185)."""
+    source = getattr(scene, "source", None)
+    return np.asarray(points, float) if source is None else Scales.of(source).to_user(points)
+
+
 def _all_softer(scene: Scene) -> Scene:
     """``scene`` with every body at the softer body's Young's modulus."""
     soft = scene.softer_modulus

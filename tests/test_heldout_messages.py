@@ -90,6 +90,21 @@ def test_the_run_refuses_the_roller_held_pull_with_the_pull_off(tmp_path, capsys
     assert not out.exists()
 
 
+def test_the_run_names_the_pivot_of_a_pin_held_pull_in_the_scenes_own_coordinates(tmp_path, capsys):
+    """The run's refusal is decided on the dimensionless scene: its pivot
+    is named in the user's coordinates, (3, -1.63) mm as the scene check
+    names it, not the dimensionless (-1.1e-16, 0.185) it named before
+    2026-11-29."""
+    text = PULL_ROLLER.read_text().replace('[[supports]]\nboundary = "left"\nfix = "x"\n', "")
+    assert text != PULL_ROLLER.read_text()
+    scene = tmp_path / "pin.toml"
+    scene.write_text(text + '\n[[pins]]\npoint = [3.0, -1.629999999]\nfix = "xy"\n')
+    assert verification_main.main(["run", str(scene), "--method", "fe", "--h", "0.25", "--reference", "none",
+                                   "--no-plots", "--out", str(tmp_path / "out")]) == 2
+    err = capsys.readouterr().err
+    assert "free to turn off Γ about (3, -1.63), and the loads pull it off Γ" in err, err
+
+
 # ----- 2. a refused value is quoted on its own side of the range ----------------
 
 @pytest.mark.parametrize("beta", ["30.000001", "0.2999999999"])

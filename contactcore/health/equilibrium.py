@@ -29,6 +29,7 @@ import numpy as np
 
 from .. import tolerances as tol
 from ..geometry import LineInterface, Rectangle, tangent_of
+from ..scaling import user_points
 from ..scene.loads import BODY, EDGE, edge_traction, place_of
 from .residual import NOT_CONVERGED
 from .overturning import eccentricity, overturn_refusal, overturned
@@ -190,7 +191,7 @@ def _pulled_off(scene, body: int, Q: np.ndarray, k: float) -> str:
                 G @ r > tol.ALONG_GAMMA * np.linalg.norm(G) * np.sqrt(size):
             if abs(r[2]) <= tol.ALONG_GAMMA * np.sqrt(size):
                 return "its supports and pins leave it free to move straight off Γ"
-            pivot = centre + L * np.array([-r[1], r[0]]) / r[2]
+            pivot = user_points(scene, centre + L * np.array([-r[1], r[0]]) / r[2])  # named in the user's terms
             return f"its supports and pins leave it free to turn off Γ about ({pivot[0]:.4g}, {pivot[1]:.4g})"
     return ""
 

@@ -110,7 +110,7 @@ from .. import tolerances as tol
 from ..errors import SolverError
 from ..interface_path import canonical_order
 from ..laws import OPEN, STICK, LawResponse
-from ..scaling import Scales
+from ..scaling import user_points
 from .correction import _merge
 from .iteration import _flat
 
@@ -379,7 +379,7 @@ def _commit(newton, search: _Search, k: float, s, u, y, tau, P, maps: int) -> bo
     theta = ranks.gather(share)
     points = ranks.gather(np.asarray(newton.itf.points, float).reshape(-1, 2)[P])
     order = canonical_order(newton.scene.interface, points)  # along Γ: no partition changes it
-    points, theta = _user_points(newton.scene, points[order]), theta[order]
+    points, theta = user_points(newton.scene, points[order]), theta[order]
     listed = ", ".join(f"({x:.4g}, {z:.4g}) θ = {t:.3g}" for (x, z), t in zip(points, theta))
     newton.report.warnings.append(
         f"{where}: Newton found no open/closed map of the unilateral law consistent at every point; {len(points)} point(s) of Γ "
@@ -387,11 +387,3 @@ def _commit(newton, search: _Search, k: float, s, u, y, tau, P, maps: int) -> bo
         f"jump; docs/contact-enforcement.md, \"The unilateral law under shear\"): {listed}")
     return True
 
-
-def _user_points(scene, points: np.ndarray) -> np.ndarray:
-    """``points`` of the dimensionless ``scene`` in its user's coordinates
-    and length unit (a user's own scene: unchanged), as a warning names
-    them (the tilted block, 2 × 1 m, named its partial point at (0.2835,
-    0.25), half its (0.567, 0.5))."""
-    source = getattr(scene, "source", None)
-    return points if source is None else Scales.of(source).to_user(points)

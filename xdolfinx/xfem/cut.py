@@ -14,6 +14,7 @@ from contactcore import tolerances as tol
 from contactcore.bodies import Body, index_of_sign, sign_of
 from contactcore.cutcell import cut_polygon, gauss01, interface_rule_in, polygon_rule
 from contactcore.geometry import LevelSetInterface, polygon_area
+from contactcore.scaling import user_points
 
 from .cells import CellBasis, on_gamma
 
@@ -169,7 +170,7 @@ class CutIntegration:
         itf = self.scene.interface
         other = (sign_of(itf.phi(x)) != side) & ~on_gamma(self.scene, x, self.snap_of(c))
         if other.any():
-            p = x[np.flatnonzero(other)[0]]
+            p = user_points(self.scene, x[np.flatnonzero(other)[0]])  # named in the user's terms
             raise DiscretisationError(f"xfem: the level set changes sign inside a cell without crossing its edges, "
                                       f"near ({p[0]:.6g}, {p[1]:.6g}): a piece of Γ smaller than a cell, which the "
                                       "cut-cell quadrature would leave out; refine h")
