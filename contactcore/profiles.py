@@ -84,7 +84,7 @@ def interface_response(scene: Scene, fields: Fields, points: np.ndarray, path=No
                              "Result's interface path")
         t = path.piece_means(scene.interface, points, path.final.traction)
         return {"gN": g[:, 0], "gT": g[:, 1], "tN": t[:, 0], "tT": t[:, 1]}
-    t = _law_at(scene, g, points, path).traction
+    t, _ = _penalty_at(scene, g, points, path)
     return {"gN": g[:, 0], "gT": g[:, 1], "tN": t[:, 0], "tT": t[:, 1]}
 
 
@@ -126,37 +126,58 @@ def _law_at(scene: Scene, g: np.ndarray, points: np.ndarray, path=None):
     return replace(response, traction=response.traction * scales.stress)
 
 
+def _nearest(scene: Scene, points: np.ndarray, path) -> np.ndarray:
+    """The index of the quadrature point of Γ nearest each of ``points`` along Γ."""
+    a, b = along(scene.interface, path.points), along(scene.interface, points)
+    return np.argmin(np.abs(b[:, None] - a[None, :]), axis=1)
+
+
 def nearest_status(scene: Scene, points: np.ndarray, path) -> np.ndarray:
     """The final increment's reported status (``Increment.reported_status``)
     of the quadrature point of Γ nearest each of ``points`` along Γ: the
     solve's own open/closed map, read at the samples."""
-    a, b = along(scene.interface, path.points), along(scene.interface, points)
-    return path.final.reported_status()[np.argmin(np.abs(b[:, None] - a[None, :]), axis=1)]
+    return path.final.reported_status()[_nearest(scene, points, path)]
+
+
+def _penalty_at(scene: Scene, g: np.ndarray, points: np.ndarray, path=None) -> tuple[np.ndarray, np.ndarray]:
+    """A penalty law's traction (m, 2) and status at ``points`` of Γ, with
+    jumps ``g``, each the other's.  The law decided as the solve decided
+    (:func:`_law_at`) says open or closed: an interpolated gap that opens
+    reads t = 0 whatever the nearest quadrature point's status (grader25b
+    H1).  A closed sample is stick or slip as its nearest quadrature point
+    is, where that point is closed, and a slipping one carries the slip
+    traction ``μ|t_N|`` in that point's direction: the slip history read
+    between the quadrature points puts a sample of a slipping Γ inside the
+    cone (grader28 F1: a penalty Coulomb Γ slipping everywhere read 82 %
+    stick; review12 #1: labelled slip, its t_T was the stick branch's, down
+    to 0.88 μ|t_N| on slide_everywhere and 0.33 on C-coulomb in xfem P1).
+    Where that point is open, or without a path, the law's own; a sample
+    whose nearest point is of the partial answer is reported partial, and
+    a frictionless closed one ``SLIP``, as ``Increment.reported_status``
+    reports the points."""
+    response = _law_at(scene, g, points, path)
+    if path is None or not path.steps:
+        return response.traction, response.status
+    index = _nearest(scene, points, path)
+    reported = path.final.reported_status()[index]
+    own = np.where(path.final.frictionless & (response.status == STICK), SLIP, response.status)
+    closed = (own != OPEN) & ((reported == STICK) | (reported == SLIP))
+    status = np.where(reported == PARTIAL, PARTIAL, np.where(closed, reported, own)).astype(np.int8)
+    t = np.array(response.traction, float)
+    slip = closed & (reported == SLIP)
+    if scene.law.frictional and slip.any():
+        t[slip, 1] = scene.law.mu * np.abs(t[slip, 0]) * np.sign(path.final.traction[index[slip], 1])
+    return t, status
 
 
 def interface_status(scene: Scene, fields: Fields, points: np.ndarray, path) -> np.ndarray:
     """The status a profile's tractions at ``points`` of Γ follow (an index
-    into ``REPORTED_STATUS_NAMES``).  A penalty law's own at the profile's
-    jumps decides open or closed (:func:`interface_response`: the traction
-    there is the law's at that jump, so an interpolated gap that opens
-    reads t = 0 whatever the nearest quadrature point's status, grader25b
-    H1); a closed sample takes the nearest quadrature point's stick or slip
-    where that point is closed: a law with history re-evaluated against
-    the final slip puts a point that slipped in the last increment exactly
-    on its limit μ|t_N|, where it reads stick (grader28 F1: a penalty
-    Coulomb Γ slipping everywhere read 82 % stick), and the law's own
-    status where that point is open.  An exact law's status is the nearest
-    quadrature point's (its tractions are the solve's, per piece of Γ).  A
-    sample whose nearest quadrature point is of the partial answer is
-    reported partial, and a frictionless closed one ``SLIP``, as
-    ``Increment.reported_status`` reports the points."""
-    reported = nearest_status(scene, points, path)
+    into ``REPORTED_STATUS_NAMES``): a penalty law's as :func:`_penalty_at`
+    decides it with the traction, an exact law's the nearest quadrature
+    point's (its tractions are the solve's, per piece of Γ)."""
     if is_exact(scene.law):
-        return reported
-    own = _law_at(scene, _jumps_at(scene, fields, points), points, path).status
-    own = np.where(path.final.frictionless & (own == STICK), SLIP, own)
-    closed = (own != OPEN) & ((reported == STICK) | (reported == SLIP))
-    return np.where(reported == PARTIAL, PARTIAL, np.where(closed, reported, own)).astype(np.int8)
+        return nearest_status(scene, points, path)
+    return _penalty_at(scene, _jumps_at(scene, fields, points), points, path)[1]
 
 
 def evaluate_quantities(scene: Scene, fields: Fields, points: np.ndarray, quantities, side: str = "plus",

@@ -1526,7 +1526,7 @@ PARTIAL_SEARCH_POINTS = 8
 #: the walk going on to its cap), so the maps visited followed the
 #: kernel.  Every answer found has cond(M) <= 94 (review11's probe on the
 #: answers of PARTIAL_SEARCH_POINTS's note); 1e-8 lies 1e6 beyond that and
-#: 1e8 short of the singular maps.
+#: 5e8-8e8 short of the singular maps (1/cond 1.2e-17 to 2.0e-17).
 PARTIAL_M_RCOND = 1e-8
 
 #: The unilateral law's grazing open zone (contactcore.health.grazing): a

@@ -190,12 +190,20 @@ def test_a_penalty_coulomb_gamma_that_slips_everywhere_reads_slip_at_every_sampl
     had read 82 % stick and warned of a moved split at 21 of 101 samples."""
     from contactcore.estimate import status_along, status_change
     from contactcore.laws import SLIP
+    from contactcore.profiles import sample_points
+    from contactcore.scene import InterfaceProfile
     from xdolfinx.options import FE
     scene = load_scene(pathlib.Path(__file__).parent / "scenes" / "slide_everywhere.toml")
     runs = [discretisation.solve(scene, FE(degree=1), h) for h in (0.1, 0.05)]
+    _, points, _ = sample_points(scene, InterfaceProfile("gamma", ("gN",)))
     for r in runs:
         assert np.all(r.interface.final.reported_status() == SLIP)
         assert np.all(status_along(scene, r) == SLIP)
+        # and the tractions those statuses say: on the cone (review12 #1: 13 of 101 samples at
+        # down to 0.884 of it, the stick branch's, in fe P1), in the slip's direction
+        t = interface_response(scene, r.fields, points, r.interface)
+        assert np.array_equal(np.abs(t["tT"]), scene.law.mu * np.abs(t["tN"]))
+        assert np.all(np.sign(t["tT"]) == np.sign(r.interface.final.traction[0, 1]))
     assert status_change(scene, *runs, (0.1, 0.05))["differ"] == 0
 
 

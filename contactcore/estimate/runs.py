@@ -125,8 +125,9 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     status = None
     if scene.law.has_history or not scene.law.is_linear:
         status = status_change(scene, results[-2], results[-1], hs[-2:])
-        warnings += status_warning(status)
-    moved = {f"{pid}:{q}" for pid, qs in profiles.items() for q in qs} if status_warning(status) else set()
+    split_moved = status_warning(status)
+    warnings += split_moved
+    moved = {f"{pid}:{q}" for pid, qs in profiles.items() for q in qs} if split_moved else set()
     zz = energy_estimate(scene, results[-1].fields, hs[-1], exclude) if energy else None
     kept = {p.id: far_from_singular(scene, np.column_stack([p.columns["x"], p.columns["y"]]), exclude)
             for p in levels[-1]}

@@ -77,6 +77,7 @@ def status_change(scene: Scene, coarse, fine, hs: tuple[float, float] | None = N
     names = REPORTED_STATUS_NAMES if either else REPORTED_STATUS_NAMES[:PARTIAL]
     shares = lambda s: {n: float(np.mean(s == i)) for i, n in enumerate(names)}  # noqa: E731
     return {"coarse": shares(s0), "fine": shares(s1), "differ": int(np.sum((s0 != s1) | (n0 != n1))),
+            "differ_profile": int(np.sum(s0 != s1)), "differ_points": int(np.sum(n0 != n1)),
             "samples": len(s0), "h": list(hs) if hs else None}
 
 
@@ -92,6 +93,9 @@ def status_warning(change: dict | None) -> list[str]:
         return []
     show = lambda s: ", ".join(f"{v:.0%} {k}" for k, v in s.items())  # noqa: E731
     runs = f"h = {change['h'][0]:g} and {change['h'][1]:g}" if change.get("h") else "the two finest runs"
-    return [f"the status along Γ differs between {runs} at {change['differ']} of {change['samples']} samples "
-            f"({show(change['coarse'])} → {show(change['fine'])}): Γ's split between its statuses moved between the runs, "
+    where = (f" (the profile's at {change['differ_profile']}, the solve's nearest points' at "
+             f"{change['differ_points']})" if "differ_points" in change else "")
+    return [f"the status along Γ differs between {runs} at {change['differ']} of {change['samples']} samples{where}; "
+            f"the profile's ({show(change['coarse'])} → {show(change['fine'])}): Γ's split between its statuses moved "
+            "between the runs, "
             "and with it the whole answer, so no estimate of this run is asymptotic (an indication only)"]
