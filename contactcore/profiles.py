@@ -127,9 +127,16 @@ def _law_at(scene: Scene, g: np.ndarray, points: np.ndarray, path=None):
 
 
 def _nearest(scene: Scene, points: np.ndarray, path) -> np.ndarray:
-    """The index of the quadrature point of Γ nearest each of ``points`` along Γ."""
+    """The index of the quadrature point of Γ nearest each of ``points``
+    along Γ; points tied within :data:`~contactcore.tolerances.GEOMETRY` of
+    Γ's span go to the one first along Γ, so that round-off of the two
+    distances does not choose (review12 #5: 9-19 samples a run lie midway
+    between two quadrature points)."""
     a, b = along(scene.interface, path.points), along(scene.interface, points)
-    return np.argmin(np.abs(b[:, None] - a[None, :]), axis=1)
+    d = np.abs(b[:, None] - a[None, :])
+    span = float(np.ptp(a)) if len(a) > 1 else 1.0
+    tied = d <= d.min(axis=1, keepdims=True) + tol.GEOMETRY * span
+    return np.argmin(np.where(tied, a[None, :], np.inf), axis=1)
 
 
 def nearest_status(scene: Scene, points: np.ndarray, path) -> np.ndarray:

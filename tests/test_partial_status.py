@@ -230,3 +230,24 @@ def test_a_grazing_gamma_reads_the_solves_tie_at_every_sample_whatever_the_round
         tT = interface_response(scene, r.fields, points, r.interface)["tT"]
         assert tT == pytest.approx(np.full(len(points), SHEAR_T_T), rel=tol.SHEAR_UNILATERAL_TRACTION)
     assert status_change(scene, *runs, (0.1, 0.05))["differ"] == 0
+
+
+def test_a_sample_midway_between_two_quadrature_points_takes_the_first_along_gamma_whatever_the_round_off():
+    """contactcore.profiles.nearest_status (review12 #5): a sample at
+    x = 0.1 on A's Γ, between points at 0 (open) and 0.2 (stick), and the
+    same sample 1e-17 either side (round-off of a distance), take the
+    status of the point first along Γ; a sample clearly nearer 0.2 takes
+    its status."""
+    from types import SimpleNamespace
+    from contactcore.laws import OPEN
+    from contactcore.profiles import nearest_status
+    scene = load_scene("A")
+    status = np.array([OPEN, STICK], np.int8)
+    path = SimpleNamespace(points=np.array([[0.2, 0.5], [0.0, 0.5]])[::-1].copy(),
+                           final=SimpleNamespace(reported_status=lambda: status))
+    samples = np.array([[0.1, 0.5], [0.1 + 1e-17, 0.5], [0.1 - 1e-17, 0.5], [0.1 + 2.8e-17, 0.5], [0.15, 0.5]])
+    assert nearest_status(scene, samples, path).tolist() == [OPEN, OPEN, OPEN, OPEN, STICK]
+    path.points = path.points[::-1].copy()  # the points' order plays no part
+    status = status[::-1].copy()
+    path.final = SimpleNamespace(reported_status=lambda: status)
+    assert nearest_status(scene, samples, path).tolist() == [OPEN, OPEN, OPEN, OPEN, STICK]
