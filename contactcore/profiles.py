@@ -20,7 +20,7 @@ point meets a closed one.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import replace
 
 import numpy as np
 
@@ -96,13 +96,13 @@ def _jumps_at(scene: Scene, fields: Fields, points: np.ndarray) -> np.ndarray:
     return np.column_stack([np.sum(jump * n, axis=1), np.sum(jump * tangent_of(n), axis=1)])
 
 
-def _law_at(scene: Scene, g: np.ndarray, points: np.ndarray, path=None):
+def _law_at(scene: Scene, g: np.ndarray, points: np.ndarray, path=None, previous: np.ndarray | None = None):
     """A penalty law's response to the jumps ``g`` at ``points`` of Γ, its
     history read from ``path`` where it has one, decided as the solve
     decided (:class:`~contactcore.laws.Decision`): each sample's previous
-    status its nearest quadrature point's (:func:`nearest_status`), the
-    scales Γ's at the quadrature points, all made dimensionless as the solve
-    saw them (:class:`~contactcore.scaling.Scales`).  A switch within the
+    status its nearest quadrature point's (``previous``, given with
+    ``path``), the scales Γ's at the quadrature points, all made
+    dimensionless as the solve saw them (:class:`~contactcore.scaling.Scales`).  A switch within the
     band, or at rest within round-off, keeps the solve's status: on a Γ
     that no load presses every sample's g_N is round-off (review11 #2:
     shear_unilateral fe P2 at h = 0.1, |g_N| <= 6.4e-18 against g_T 1.2e-3,
@@ -120,8 +120,7 @@ def _law_at(scene: Scene, g: np.ndarray, points: np.ndarray, path=None):
     scales = Scales.of(scene)
     U, law = scales.displacement, scales.law(scene.law)
     dimensionless = (lambda v: None if v is None else np.asarray(v, float) / U)  # noqa: E731
-    decision = Decision.reduced(law, dimensionless(path.final.jump), dimensionless(path.state),
-                                nearest_status(scene, points, path), SERIAL)
+    decision = Decision.reduced(law, dimensionless(path.final.jump), dimensionless(path.state), previous, SERIAL)
     response = law.evaluate(dimensionless(g), dimensionless(state), decision)
     return replace(response, traction=response.traction * scales.stress)
 
@@ -162,11 +161,12 @@ def _penalty_at(scene: Scene, g: np.ndarray, points: np.ndarray, path=None) -> t
     whose nearest point is of the partial answer is reported partial, and
     a frictionless closed one ``SLIP``, as ``Increment.reported_status``
     reports the points."""
-    response = _law_at(scene, g, points, path)
     if path is None or not path.steps:
+        response = _law_at(scene, g, points, path)
         return response.traction, response.status
     index = _nearest(scene, points, path)
     reported = path.final.reported_status()[index]
+    response = _law_at(scene, g, points, path, reported)
     own = np.where(path.final.frictionless & (response.status == STICK), SLIP, response.status)
     closed = (own != OPEN) & ((reported == STICK) | (reported == SLIP))
     status = np.where(reported == PARTIAL, PARTIAL, np.where(closed, reported, own)).astype(np.int8)

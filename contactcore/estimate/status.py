@@ -70,8 +70,8 @@ def status_change(scene: Scene, coarse, fine, hs: tuple[float, float] | None = N
     misses some: the profile's status missed unil_partopen's fe and xfem P2
     (2026-11-29, their g_T and t_T estimates 0.30-0.37 of the error), the
     nearest point's its fe and xfem P1 (t_T 5.3-6.2)."""
-    s0, s1 = status_along(scene, coarse), status_along(scene, fine)
     pts = _samples(scene)
+    s0, s1 = (interface_status(scene, r.fields, pts, r.interface) for r in (coarse, fine))  # status_along's
     n0, n1 = (nearest_status(scene, pts, r.interface) for r in (coarse, fine))
     either = np.any(s0 == PARTIAL) or np.any(s1 == PARTIAL)
     names = REPORTED_STATUS_NAMES if either else REPORTED_STATUS_NAMES[:PARTIAL]
