@@ -232,6 +232,35 @@ def test_a_grazing_gamma_reads_the_solves_tie_at_every_sample_whatever_the_round
     assert status_change(scene, *runs, (0.1, 0.05))["differ"] == 0
 
 
+def test_a_sample_within_the_band_keeps_its_nearest_points_status_open_or_closed():
+    """review12 #4: a penalty sample whose g_N lies within the law's band
+    (DECISION_BAND of Γ's largest |g_N|) keeps its nearest quadrature
+    point's status, the solve's previous one (contactcore.profiles._law_at's
+    Decision): on unil_partopen fe P1 at h = 0.05 (37 of 101 samples
+    nearest an open point), every sample given g_N = ±band/2 is open
+    exactly where its nearest point is, with t = 0 there; beyond the band
+    (±2 band) the sign decides.  A previous status taken as STICK whatever
+    the map passed every other test."""
+    from contactcore.laws import OPEN
+    from contactcore.profiles import _jumps_at, _penalty_at, nearest_status, sample_points
+    from contactcore.scene import InterfaceProfile
+    from contactcore.tolerances import DECISION_BAND
+    from xdolfinx.options import FE
+    scene = load_scene(pathlib.Path(__file__).parent / "scenes" / "unil_partopen.toml")
+    run = discretisation.solve(scene, FE(degree=1), 0.05)
+    _, points, _ = sample_points(scene, InterfaceProfile("gamma", ("gN",)))
+    path = run.interface
+    near_open = nearest_status(scene, points, path) == OPEN
+    assert 0 < near_open.sum() < len(points)
+    band = DECISION_BAND * np.max(np.abs(path.final.jump[:, 0]))
+    g = _jumps_at(scene, run.fields, points)
+    for share, opened in ((0.5, near_open), (-0.5, near_open), (2.0, True), (-2.0, False)):
+        g[:, 0] = share * band
+        t, status = _penalty_at(scene, g, points, path)
+        assert np.array_equal(status == OPEN, np.broadcast_to(opened, near_open.shape)), share
+        assert np.all(t[status == OPEN] == 0.0)
+
+
 def test_a_sample_midway_between_two_quadrature_points_takes_the_first_along_gamma_whatever_the_round_off():
     """contactcore.profiles.nearest_status (review12 #5): a sample at
     x = 0.1 on A's Γ, between points at 0 (open) and 0.2 (stick), and the

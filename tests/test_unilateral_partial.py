@@ -212,6 +212,21 @@ def test_partial_equations_singular_to_working_precision_are_refused_on_every_ke
     assert not partial.singular(np.diag([1.0, 2.0 * PARTIAL_M_RCOND]))
 
 
+def test_a_partial_point_asks_to_close_or_open_only_beyond_the_band_and_a_tie_within_it_has_no_side():
+    """partial.partial_asks (review11 #5, review12 #3): τ within [0, k_T y_T]
+    stays partial; beyond the tie by more than the band closes, beyond 0
+    opens; a tie within the band (no side but round-off's) opens at any τ
+    beyond the band, either way (the old rule, side = sign(tie), closed
+    the first of these)."""
+    band, O, C, P = 1.0, partial._OPEN, partial._CLOSED, partial._PARTIAL
+    within = 0.5 * band
+    asks = partial.partial_asks(np.array([2.0, -2.0, 0.5]) * band, np.full(3, within), band)
+    assert asks.tolist() == [O, O, P]
+    for sign in (1.0, -1.0):  # a tie beyond the band, either way
+        tau = sign * np.array([12.0, 10.5, 5.0, 0.0, -0.5, -2.0]) * band
+        assert partial.partial_asks(tau, np.full(6, sign * 10.0 * band), band).tolist() == [C, P, P, P, P, O]
+
+
 def test_the_tilted_block_in_fe_p2_answers_with_one_partial_point_where_gamma_opens(tmp_path):
     """The docs' tilted block (tests/test_unilateral_shear.TILTED, exact),
     fe P2 at h = 0.1, which Newton refuses: the search answers (its first

@@ -243,14 +243,23 @@ class _Search:
         if ranks.max(float(len(P))) > 0:  # the band's maximum is a collective
             tie = self.k[:, 1] * y[:, 1]
             band = tol.DECISION_BAND * max(ranks.max(float(np.max(np.abs(tie), initial=0.0))), tol.DECISION_FLOOR)
-            # τ within [0, k_T y_T]: beyond the tie closes, beyond 0 opens; a tie within the band has no
-            # side but round-off's (review11 #5): there any τ beyond the band opens
-            side = np.where(np.abs(tie[P]) > band, np.sign(tie[P]), 0.0)
-            beyond_tie = side * (tau - tie[P]) > band
-            beyond_zero = np.where(side != 0, -side * tau, np.abs(tau)) > band
-            want[P[beyond_tie]] = _CLOSED
-            want[P[beyond_zero & ~beyond_tie]] = _OPEN
+            want[P] = partial_asks(tau, tie[P], band)
         return want
+
+
+def partial_asks(tau: np.ndarray, tie: np.ndarray, band: float) -> np.ndarray:
+    """What each partial point asks for (``_CLOSED``, ``_OPEN`` or
+    ``_PARTIAL``) from its shear ``τ``, its tie's ``k_T y_T`` and the
+    band: ``τ`` lies within ``[0, k_T y_T]`` (a share θ of the tie's
+    shear); a point whose ``τ`` lies beyond its tie by more than ``band``
+    closes, one beyond 0 (on the side away from its tie) by more than
+    ``band`` opens, any other stays partial.  A tie within the band has no
+    side but round-off's: there any ``τ`` beyond the band opens, either
+    way (review11 #5)."""
+    side = np.where(np.abs(tie) > band, np.sign(tie), 0.0)
+    beyond_tie = side * (tau - tie) > band
+    beyond_zero = np.where(side != 0, -side * tau, np.abs(tau)) > band
+    return np.where(beyond_tie, _CLOSED, np.where(beyond_zero, _OPEN, _PARTIAL)).astype(np.int8)
 
 
 def singular(M: np.ndarray) -> bool:
