@@ -37,6 +37,12 @@ class Fields(Protocol):
     def stress(self, points: np.ndarray, bodies: np.ndarray) -> np.ndarray:
         """``(σxx, σyy, σxy)`` (m, 3) of body ``bodies[i]`` at ``points[i]``."""
 
+    # A method whose ``stress`` is recovered rather than its displacement's
+    # own (xfem P1: contactcore.estimate.orders.RECOVERED_STRESS) also has
+    # ``direct_stress(points, bodies)``, σ(u_h) itself, which the energy
+    # norm of the error measures; a Result's fields always have it (the
+    # stress where the method has none: :class:`contactcore.scaling.ScaledFields`).
+
 
 def _coordinate(x) -> str:
     """Six digits where they say the number exactly, else the shortest

@@ -458,6 +458,17 @@ class ScaledFields:
         points, bodies = check_points(points, bodies, self.scene, "fields.stress", self.reach)
         return self.scales.stress * self.inner.stress(self.scales.to_dimensionless(points), bodies)
 
+    def direct_stress(self, points, bodies) -> np.ndarray:
+        """The stress of the computed displacement itself, ``σ(u_h)``
+        (:attr:`contactcore.result.Fields.direct_stress`): the method's own
+        where its :meth:`stress` is recovered (xfem P1), else
+        :meth:`stress`; points refused as for :meth:`displacement`."""
+        direct = getattr(self.inner, "direct_stress", None)
+        if direct is None:
+            return self.stress(points, bodies)
+        points, bodies = check_points(points, bodies, self.scene, "fields.direct_stress", self.reach)
+        return self.scales.stress * direct(self.scales.to_dimensionless(points), bodies)
+
 
 def _option_in(name: str, value, scales: Scales):
     """A method's keyword option made dimensionless: ``nodes`` (points) and a

@@ -202,13 +202,16 @@ def test_a_quantity_exactly_zero_shows_no_order_against_the_scenes_size():
 
 
 @pytest.mark.parametrize("case,key", [("pressurised_rod", ("fe", 1)), ("pressurised_rod", ("xfem", 2)),
-                                      ("layered_slip", ("efgm", 1))], ids=lambda v: str(v))
+                                      ("twisted_rod", ("xfem", 1)), ("layered_slip", ("efgm", 1))],
+                         ids=lambda v: str(v))
 def test_the_estimates_are_within_a_factor_two_of_the_true_error(case, key, record_property):
     """One closed form per method (the layered slip: Coulomb, the final
-    increment): every profile quantity with an error above round-off and
-    the energy estimate within tol.EFFECTIVITY of the truth, but for the
-    measured exceptions of tol.EFFECTIVITY_OUTSIDE (EFGM P1's energy on
-    the layered slip: its quadrature's error, which ZZ does not see), each
+    increment) and xfem P1, whose energy estimate takes its recovered
+    stress as σ* (it read 0.40 on the twisted rod with a second recovery):
+    every profile quantity with an error above round-off and the energy
+    estimate within tol.EFFECTIVITY of the truth, but for the measured
+    exceptions of tol.EFFECTIVITY_OUTSIDE (EFGM P1's energy on the
+    layered slip: its quadrature's error, which ZZ does not see), each
     where it was measured and still outside."""
     rows = [r for r in effectivity(case, key) if r["kind"] == "error"]
     assert rows

@@ -134,9 +134,11 @@ def profile_rows(estimate: est.Estimate, got: dict, exact: dict) -> list[dict]:
 
 def energy_row(scene, result, estimate: est.Estimate, exact, exclude: float) -> dict:
     """The ZZ estimate against ``‖σ − σ_h‖_E`` on the same background
-    cells, :data:`TRUE_GAUSS` points per direction."""
+    cells, :data:`TRUE_GAUSS` points per direction, ``σ_h = σ(u_h)``
+    (:func:`contactcore.estimate.direct_stress`: xfem P1's displacement's
+    own stress, not the recovered one its profiles read)."""
     er = est.energy_rule(scene, estimate.hs[-1], exclude, TRUE_GAUSS)
-    sigma = result.fields.stress(er.rule.points, er.rule.bodies)
+    sigma = est.direct_stress(result.fields, er.rule.points, er.rule.bodies)
     true = est.energy_norm(scene, er, exact.stress(er.rule.points, er.rule.bodies) - sigma)
     norm = est.energy_norm(scene, er, sigma)
     eta = estimate.energy.eta

@@ -33,12 +33,13 @@ in their home.
 
 numpy and scipy only; no method is imported.
 """
-from .caveats import (cell_scale_orders, cell_scale_warnings, curved_layer, curved_layer_warning, energy_caveat,
+from .caveats import (cell_scale_orders, cell_scale_warnings, curved_layer, curved_layer_warning,
                       exact_traction_warning, exact_tractions, fast_gamma, fast_gamma_warning, feature_size, order_mismatch,
                       order_warnings, pollution_warning, quadrature_energy, residue_warnings, residues,
                       split_cell_share, split_cell_share_warning, stencil_radius, thinnest_body, unsettled,
                       unsettled_warnings)
-from .energy import EnergyEstimate, EnergyRule, energy_estimate, energy_norm, energy_rule, recovered_stress
+from .energy import (EnergyEstimate, EnergyRule, direct_stress, energy_estimate, energy_norm, energy_rule,
+                     recovered_stress)
 from .extrapolation import (QuantityEstimate, balanced_order, cell_scale_part, observed_order, profile_estimates,
                             richardson, rms, roundoff_floor, sample_groups, three_run_order)
 from .orders import lower_end, order_range, polluted, theoretical_order
@@ -54,14 +55,15 @@ __all__ = [
     "QuantityEstimate", "balanced_order", "cell_scale_part", "observed_order", "profile_estimates", "richardson",
     "rms", "roundoff_floor", "sample_groups", "three_run_order",
     # caveats
-    "cell_scale_orders", "cell_scale_warnings", "curved_layer", "curved_layer_warning", "energy_caveat",
+    "cell_scale_orders", "cell_scale_warnings", "curved_layer", "curved_layer_warning",
     "exact_traction_warning", "exact_tractions", "fast_gamma", "fast_gamma_warning", "feature_size", "order_mismatch", "order_warnings",
     "pollution_warning", "quadrature_energy", "residue_warnings", "residues", "split_cell_share",
     "split_cell_share_warning", "stencil_radius", "thinnest_body", "unsettled", "unsettled_warnings",
     # status
     "status_along", "status_change", "status_warning", "switches",
     # energy
-    "EnergyEstimate", "EnergyRule", "energy_estimate", "energy_norm", "energy_rule", "recovered_stress",
+    "EnergyEstimate", "EnergyRule", "direct_stress", "energy_estimate", "energy_norm", "energy_rule",
+    "recovered_stress",
     # orders
     "lower_end", "order_range", "polluted", "theoretical_order",
     # singular

@@ -42,12 +42,9 @@ bias, against 2 to 3 elsewhere: from h = 0.025 that layer sets a ray's
 error and the two-run estimate, taken at the order elsewhere, reads 0.42
 to 0.47 of it (docs/methods/xfem.md, "Degree-1 stress"); on other
 scenes such entries read 0.18-2.2.  The estimate names such profiles
-without a direction (:func:`curved_layer`).  The same recovered stress
-makes xfem P1's Zienkiewicz–Zhu estimate too small: a second recovery
-moves it less than its error (0.32 to 0.61 of the true error on the
-closed forms and held-out discs measured, and falling as h shrinks:
-0.32 → 0.15 and 0.35 → 0.22 from h = 0.05 to 0.025 on grader17's
-blocks with singular points; :func:`energy_caveat`).  EFGM P1's
+without a direction (:func:`curved_layer`).  (xfem P1's Zienkiewicz–Zhu
+estimate takes that recovered stress as its ``σ*`` and the displacement's
+own as ``σ_h``: :func:`~contactcore.estimate.energy.energy_estimate`.)  EFGM P1's
 Zienkiewicz–Zhu estimate at a tiny share of the run's energy, where its
 quadrature's error may be most of the error, is named too
 (:func:`quadrature_energy`: the layered slip's 0.41).
@@ -582,7 +579,7 @@ def curved_layer_warning(names: list[str], h: float, length: str = "m") -> list[
             f"cell from Γ, avoid this"]
 
 
-#: The key under which :func:`energy_caveat` marks the energy estimate in
+#: The key under which :func:`quadrature_energy` marks the energy estimate in
 #: :attr:`~contactcore.estimate.runs.Estimate.unsettled` (a profile id
 #: ``energy``, quantity ``‖σ‖_E``, as the effectivity table names it).
 ENERGY_KEY = "energy:‖σ‖_E"
@@ -606,15 +603,3 @@ def quadrature_energy(method: str, degree: int, energy: EnergyEstimate | None) -
             f"Gauss quadrature's error, which a recovery of the run's stress does not see, may be most of the "
             f"error: an indication only, too small on both such closed forms measured (0.41 and 0.76 of the true "
             f"error)"]
-
-
-def energy_caveat(method: str, degree: int) -> list[str]:
-    """One line where the Zienkiewicz–Zhu estimate is too small by
-    construction: a method whose stress is already recovered
-    (:data:`~contactcore.estimate.orders.RECOVERED_STRESS`), which a second
-    recovery moves less than its error (module doc)."""
-    if (method, degree) not in RECOVERED_STRESS:
-        return []
-    return [f"energy (ZZ): {method} P{degree}'s stress is already recovered, so a second recovery moves it less "
-            f"than its error: read the energy estimate as a lower bound only (measured 0.15-0.61 of the true error, "
-            f"falling as h shrinks, so no fixed factor corrects it)"]

@@ -25,11 +25,12 @@ from .caveats import (cell_scale_orders, cell_scale_warnings, exact_traction_war
                       fast_gamma_warning, feature_size, thinnest_body,
                       order_mismatch, order_warnings,
                       pollution_warning, residue_warnings, residues, unsettled, unsettled_warnings,
-                      curved_layer, curved_layer_warning, energy_caveat, ENERGY_KEY,
+                      curved_layer, curved_layer_warning, ENERGY_KEY,
                       quadrature_energy,
                       split_cell_share, split_cell_share_warning)
 from .energy import EnergyEstimate, energy_estimate
 from .extrapolation import QuantityEstimate, profile_estimates
+from .orders import RECOVERED_STRESS
 from .singular import far_from_singular
 from .status import status_change, status_warning, switches
 
@@ -55,7 +56,6 @@ class Estimate:
     :func:`~contactcore.estimate.caveats.exact_tractions`,
     :func:`~contactcore.estimate.caveats.split_cell_share`, the energy's
     :data:`~contactcore.estimate.caveats.ENERGY_KEY` where
-    :func:`~contactcore.estimate.caveats.energy_caveat` or
     :func:`~contactcore.estimate.caveats.quadrature_energy` applies, and with three
     runs :func:`~contactcore.estimate.caveats.order_mismatch`) or not to be
     trusted (:func:`~contactcore.estimate.caveats.residues`)."""
@@ -128,11 +128,12 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     split_moved = status_warning(status)
     warnings += split_moved
     moved = {f"{pid}:{q}" for pid, qs in profiles.items() for q in qs} if split_moved else set()
-    zz = energy_estimate(scene, results[-1].fields, hs[-1], exclude) if energy else None
+    zz = (energy_estimate(scene, results[-1].fields, hs[-1], exclude,
+                          recovered=(results[-1].method, results[-1].degree) in RECOVERED_STRESS)
+          if energy else None)
     kept = {p.id: far_from_singular(scene, np.column_stack([p.columns["x"], p.columns["y"]]), exclude)
             for p in levels[-1]}
-    caveat = (energy_caveat(results[-1].method, results[-1].degree)
-              + quadrature_energy(results[-1].method, results[-1].degree, zz)) if energy else []
+    caveat = quadrature_energy(results[-1].method, results[-1].degree, zz) if energy else []
     return Estimate(hs, profiles, zz, status, warnings + caveat, levels[-1],
                     {k for v in found.values() for k in v} | set(layer) | set(rough) | set(residue) | set(nitsche)
                     | set(split)

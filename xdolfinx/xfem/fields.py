@@ -31,11 +31,11 @@ class XFEMFields:
         self.locator = BodyCellLocator(space.msh, [space.cells_resolving(side) for side in (-1, 1)])
         self._recoveries = {body: None for body in (0, 1)}
 
-    def _eval(self, points, bodies, gradient: bool) -> np.ndarray:
+    def _eval(self, points, bodies, gradient: bool, recovered: bool = True) -> np.ndarray:
         points, bodies = check_points(points, bodies)  # the arrays; the geometry is the Result's (ScaledFields)
         cells, mine = self.locator.choose(points, bodies)
         out = np.zeros((len(points), 3 if gradient else 2))
-        if gradient and self.space.degree == 1:
+        if gradient and recovered and self.space.degree == 1:
             for body in np.unique(bodies):
                 self._recovery(int(body))  # collective: every rank, whatever points it evaluates
                 sel = np.flatnonzero(mine & (bodies == body))
@@ -166,3 +166,11 @@ class XFEMFields:
         dimensionless (degree 1: the recovered stress, class doc); the
         arrays checked as for :meth:`displacement`."""
         return self._eval(points, bodies, True)
+
+    def direct_stress(self, points, bodies) -> np.ndarray:
+        """The stress of the computed displacement itself, ``σ(u_h)``, where
+        :meth:`stress` reads it (the cell's own field, not recovered: at
+        degree 1 a constant per cell and body part); as :meth:`stress` at
+        degree 2.  What the energy norm of the error measures
+        (:mod:`contactcore.estimate.energy`)."""
+        return self._eval(points, bodies, True, recovered=False)
