@@ -158,9 +158,11 @@ def _penalty_at(scene: Scene, g: np.ndarray, points: np.ndarray, path=None) -> t
     stick; review12 #1: labelled slip, its t_T was the stick branch's, down
     to 0.88 μ|t_N| on slide_everywhere and 0.33 on C-coulomb in xfem P1).
     Where that point is open, or without a path, the law's own; a sample
-    whose nearest point is of the partial answer is reported partial, and
-    a frictionless closed one ``SLIP``, as ``Increment.reported_status``
-    reports the points."""
+    whose nearest point is of the partial answer is reported partial and
+    carries that point's traction, ``y_N = 0`` with the share θ of its own
+    tie's shear, ``(0, θ k_T g_T)`` (review11 #7: it carried the whole tie,
+    ``k g``); a frictionless closed one is reported ``SLIP``, as
+    ``Increment.reported_status`` reports the points."""
     if path is None or not path.steps:
         response = _law_at(scene, g, points, path)
         return response.traction, response.status
@@ -174,6 +176,10 @@ def _penalty_at(scene: Scene, g: np.ndarray, points: np.ndarray, path=None) -> t
     slip = closed & (reported == SLIP)
     if scene.law.frictional and slip.any():
         t[slip, 1] = scene.law.mu * np.abs(t[slip, 0]) * np.sign(path.final.traction[index[slip], 1])
+    partial = reported == PARTIAL
+    if partial.any():  # the unilateral law's partial answer (contactcore.newton.partial)
+        t[partial] = np.column_stack([np.zeros(int(partial.sum())),
+                                      path.final.theta[index[partial]] * scene.law.kT * g[partial, 1]])
     return t, status
 
 

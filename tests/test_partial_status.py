@@ -261,6 +261,40 @@ def test_a_sample_within_the_band_keeps_its_nearest_points_status_open_or_closed
         assert np.all(t[status == OPEN] == 0.0)
 
 
+def test_a_penalty_sample_nearest_a_partial_point_carries_its_share_of_the_tie(tmp_path):
+    """review11 #7: a penalty sample whose nearest quadrature point is of
+    the partial answer is reported partial and carries that point's
+    traction, y_N = 0 with the share θ of its tie's shear, (0, θ k_T g_T);
+    it carried the whole tie, k g (t_N -7.2e5 to -7.7e5 Pa, t_T 2.4e5 to
+    3.9e5 below).  No penalty run measured has a partial point (`uni` on
+    springs of 1e12-1e14, every method and degree, h = 0.1 and 0.05), so
+    the run's map is given one: `uni` on springs of 1e13, fe P1 at
+    h = 0.1, its third closed point made partial with θ = 0.4."""
+    from dataclasses import replace
+    from contactcore.laws import OPEN
+    from contactcore.profiles import nearest_status, sample_points
+    from contactcore.scene import InterfaceProfile
+    from xdolfinx.options import FE
+    text = (pathlib.Path(__file__).parent / "scenes" / "uni_opening.toml").read_text()
+    path = tmp_path / "uni_springs.toml"
+    path.write_text(text.replace('enforcement = "exact"', "kN = 1e13\nkT = 1e13"))
+    scene = load_scene(path)
+    run = discretisation.solve(scene, FE(degree=1), 0.1)
+    final = run.interface.final
+    theta = np.full(len(final.status), np.nan)
+    theta[np.flatnonzero(final.status != OPEN)[2]] = 0.4
+    given = replace(run.interface, steps=run.interface.steps[:-1] + [replace(final, theta=theta)])
+    _, points, _ = sample_points(scene, InterfaceProfile("G", ("gN",)))
+    near = np.flatnonzero(nearest_status(scene, points, given) == PARTIAL)
+    assert len(near) >= 1
+    t = interface_response(scene, run.fields, points, given)
+    assert np.all(t["tN"][near] == 0.0)
+    assert np.array_equal(t["tT"][near], 0.4 * scene.law.kT * t["gT"][near])
+    plain = interface_response(scene, run.fields, points, run.interface)
+    others = np.setdiff1d(np.arange(len(points)), near)
+    assert np.array_equal(t["tT"][others], plain["tT"][others]) and np.all(plain["tN"][near] < 0)
+
+
 def test_a_sample_midway_between_two_quadrature_points_takes_the_first_along_gamma_whatever_the_round_off():
     """contactcore.profiles.nearest_status (review12 #5): a sample at
     x = 0.1 on A's Γ, between points at 0 (open) and 0.2 (stick), and the
