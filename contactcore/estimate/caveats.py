@@ -74,7 +74,8 @@ from .energy import EnergyEstimate
 from .extrapolation import QuantityEstimate, cell_scale_part, rms, sample_groups
 from ..scene.resolution import body_thickness
 from .orders import GAPS, MESHFREE, RECOVERED_STRESS, STRESSES, TRACTIONS, _exact, lower_end
-from .singular import exact_interface_ends, far_from_singular, singular_points, stress_singular_points
+from .singular import (exact_interface_ends, far_from_singular, singular_points, stiff_spring_ends,
+                       stress_singular_points)
 
 #: Γ's quantities: the gaps and the tractions.
 GAMMA = GAPS + TRACTIONS
@@ -285,7 +286,7 @@ def unsettled(scene: Scene, levels: list[list[ProfileData]], record: dict, metho
         for q in prof.names[3:]:
             rho = stencil_radius(record, method, degree, q)
             within = kept & (dist < tol.REACH_STENCILS * rho * (1 - tol.GEOMETRY))
-            local = rho <= h * (1 + tol.GEOMETRY) and not _lower_end(scene, estimates, prof.id, q)
+            local = rho <= h * (1 + tol.GEOMETRY) and not _lower_end(scene, estimates, prof.id, q, h)
             if np.any(within) and not _spread(prof, coarse_run.get(prof.id), q, within, kept & ~within, local):
                 out["reach"][f"{prof.id}:{q}"] = (rho, h * near / (tol.REACH_STENCILS * rho))
             if rho * tol.FEATURE_STENCILS > feature * (1 + tol.GEOMETRY):
@@ -295,11 +296,14 @@ def unsettled(scene: Scene, levels: list[list[ProfileData]], record: dict, metho
     return out
 
 
-def _lower_end(scene: Scene, estimates: dict[str, dict[str, QuantityEstimate]] | None, pid: str, q: str) -> bool:
+def _lower_end(scene: Scene, estimates: dict[str, dict[str, QuantityEstimate]] | None, pid: str, q: str,
+               h: float) -> bool:
     """Whether the estimate of ``PID:Q`` takes the lower end of its range
     (:func:`~contactcore.estimate.orders.lower_end`: a bulk displacement
     on a scene whose straight Γ ends under an exact law,
-    :func:`~contactcore.estimate.singular.exact_interface_ends`): an end
+    :func:`~contactcore.estimate.singular.exact_interface_ends`, or under
+    springs stiff at the scale of the coarse run's cells ``h``,
+    :func:`~contactcore.estimate.singular.stiff_spring_ends`): an end
     of an exponent not taken, whose error may pollute the whole domain,
     so that where the runs differ most says nothing of it.  On the nine
     held-out scenes the exact unilateral wedge's xfem P2 `u_x` (3.25,
@@ -307,7 +311,8 @@ def _lower_end(scene: Scene, estimates: dict[str, dict[str, QuantityEstimate]] |
     named by the reach cause alone (docs/error-estimates.md, "Which
     estimates to warn of")."""
     e = (estimates or {}).get(pid, {}).get(q)
-    return e is not None and lower_end(q, e.theory, bool(len(exact_interface_ends(scene))))
+    unknown_ends = bool(len(exact_interface_ends(scene)) or len(stiff_spring_ends(scene, h)))
+    return e is not None and lower_end(q, e.theory, unknown_ends)
 
 
 def _spread(fine: ProfileData, coarse: ProfileData | None, q: str, within: np.ndarray, beyond: np.ndarray,

@@ -50,7 +50,7 @@ from ..profiles import ProfileData
 from ..scene import Scene
 from ..scaling import Sizes
 from .orders import STRESSES, TRACTIONS, lower_end, order_range, polluted
-from .singular import exact_interface_ends, far_from_singular, pollution_order
+from .singular import exact_interface_ends, far_from_singular, pollution_order, stiff_spring_ends
 
 
 def rms(x: np.ndarray) -> float:
@@ -272,12 +272,14 @@ def profile_estimates(levels: list[list[ProfileData]], degree: int, method: str 
     pollution solves the homogeneous equations, smooth at that scale, so what
     varies cell by cell is the runs' local error, which converges at the
     method's order.  Where the scene's straight Γ ends under an exact law
-    (:func:`~contactcore.estimate.singular.exact_interface_ends`), a bulk
+    (:func:`~contactcore.estimate.singular.exact_interface_ends`), or
+    under springs stiff at the scale of the coarse run's cells
+    (:func:`~contactcore.estimate.singular.stiff_spring_ends`), a bulk
     displacement of such a range takes its lower end from two runs
     (:func:`~contactcore.estimate.orders.lower_end`)."""
     out, law = {}, scene.law if scene else None
     pollution, sizes = pollution_order(scene), Sizes.of(scene) if scene is not None else None
-    unknown_ends = len(exact_interface_ends(scene)) > 0
+    unknown_ends = len(exact_interface_ends(scene)) > 0 or len(stiff_spring_ends(scene, h)) > 0
     for profs in zip(*levels):
         pid, cols = profs[-1].id, profs[-1].columns
         xy = np.column_stack([cols["x"], cols["y"]])

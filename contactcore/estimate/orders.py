@@ -140,7 +140,11 @@ def lower_end(quantity: str, theory: tuple[float, float], unknown_ends: bool) ->
     widened, on a scene whose straight Γ has ``unknown_ends``, ends under
     an exact law whose exponent
     :func:`~contactcore.estimate.singular.pollution_order` does not take
-    (:func:`~contactcore.estimate.singular.exact_interface_ends`).  Such an
+    (:func:`~contactcore.estimate.singular.exact_interface_ends`), or
+    under penalty springs stiff at the coarse cells' scale, which end as
+    bonded (:func:`~contactcore.estimate.singular.stiff_spring_ends`;
+    grader28's tilted block on springs: fe P2's displacements 0.44-0.48
+    of their error at the balanced order, 0.84-0.94 at the lower end).  Such an
     end may pollute below the lower end, so that end, not the balanced
     order, is the one the estimate can least afford to miss: on grader17's
     tilted blocks the degree-2 displacements converged at 0.78-1.09 and
