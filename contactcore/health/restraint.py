@@ -117,15 +117,30 @@ def _support_samples(scene, support) -> list:
     return out
 
 
-def _restraint(scene, interface_points, interface_weights, holding=None,
-               gripping=None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """``Q`` (6×6): the stiffness of the supports (E per held component),
-    pins and springs (``Σ w k g gᵀ``) against the rigid modes, relative to
-    the stiffer modulus; and the spring parts ``Q_N``, ``Q_T`` alone.
-    ``holding`` (m,) bool: the points of Γ whose springs hold (every point
-    if None; an open point of a unilateral law holds nothing); ``gripping``
-    the points among them that hold tangentially too (``holding`` if None;
-    a slipping point's tangent has no ``∂t_T/∂g_T``)."""
+#: How many scenes' restraint geometry :func:`_geometry` keeps (a run's
+#: Newton asks of one scene and one Γ; a coarser first map's of a second Γ).
+_GEOMETRY_KEPT = 4
+
+_geometry_kept: list = []  # (scene, Γ's points and weights as bytes, geometry), last used last
+
+
+def _geometry(scene, interface_points, interface_weights):
+    """What :func:`_restraint` reads of the scene and Γ's points alone,
+    whatever the status map: the supports' and pins' restraint ``Q₀``, E,
+    and at Γ's points the normal and tangential jumps ``g_N``, ``g_T`` the
+    modes make.  Newton asks :func:`lets_go`, :func:`slips_free` and
+    :func:`check_held` of every map it solves or accepts, on the same scene
+    and Γ, so these are kept for the last :data:`_GEOMETRY_KEPT` (scene
+    object, Γ's points and weights by value): the same arrays, computed
+    once, give the same figures bit for bit.  A kept entry holds its scene,
+    so no other scene can take its ``id``."""
+    pts = np.asarray(interface_points, float)
+    w = np.asarray(interface_weights, float)
+    key = (pts.shape, pts.tobytes(), w.tobytes())
+    for i, (kept_scene, kept_key, geometry) in enumerate(_geometry_kept):
+        if kept_scene is scene and kept_key == key:
+            _geometry_kept.append(_geometry_kept.pop(i))
+            return geometry
     E = max(m.E for m in scene.materials.values())
     dom = scene.domain
     centre = modes_centre(dom)
@@ -135,18 +150,39 @@ def _restraint(scene, interface_points, interface_weights, holding=None,
     for s in scene.supports:
         held += _support_samples(scene, s)
     held += [(np.asarray([p.point], float), p.fix, 1.0) for p in scene.pins]
-    for pts, fix, weight in held:
-        M = _modes(pts, scene.body_of(pts), centre, L)
+    for hpts, fix, weight in held:
+        M = _modes(hpts, scene.body_of(hpts), centre, L)
         for c in (0, 1):
             if "xy"[c] in fix:
                 Q += weight * M[:, c, :].T @ M[:, c, :]
-    pts = np.asarray(interface_points, float)
-    w = np.asarray(interface_weights, float)
+    gN = gT = None
     if len(pts):
         n = scene.interface.normals(pts)
         t = tangent_of(n)
         jump = _modes(pts, np.ones(len(pts), int), centre, L) - _modes(pts, np.zeros(len(pts), int), centre, L)
         gN, gT = np.einsum("mi,mij->mj", n, jump), np.einsum("mi,mij->mj", t, jump)
+    geometry = E, Q, gN, gT
+    for a in (Q, gN, gT):
+        if a is not None:
+            a.flags.writeable = False
+    _geometry_kept.append((scene, key, geometry))
+    del _geometry_kept[:-_GEOMETRY_KEPT]
+    return geometry
+
+
+def _restraint(scene, interface_points, interface_weights, holding=None,
+               gripping=None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``Q`` (6×6): the stiffness of the supports (E per held component),
+    pins and springs (``Σ w k g gᵀ``) against the rigid modes, relative to
+    the stiffer modulus; and the spring parts ``Q_N``, ``Q_T`` alone.
+    ``holding`` (m,) bool: the points of Γ whose springs hold (every point
+    if None; an open point of a unilateral law holds nothing); ``gripping``
+    the points among them that hold tangentially too (``holding`` if None;
+    a slipping point's tangent has no ``∂t_T/∂g_T``).  The parts that do
+    not depend on the map are :func:`_geometry`'s, kept."""
+    E, Q, gN, gT = _geometry(scene, interface_points, interface_weights)
+    w = np.asarray(interface_weights, float)
+    if gN is not None:
         # a spring stiffer than E per |Γ| holds like a support; capping it
         # there keeps the eigenvalues of Q within double precision
         cap = 1.0 / np.sum(w)

@@ -179,15 +179,25 @@ class EnrichedFunctionSpace:
         return out
 
     def edge_neighbours(self) -> dict:
-        """``{(a, b): [cells]}``: the cells holding each edge, keyed by its
-        two corner nodes sorted (the local mesh, ghosts included)."""
-        nodes = self.cells.corner_nodes
-        k = nodes.shape[1]
+        """``{(a, b): [cells]}``: the cells holding each edge whose two ends
+        lie on Γ (``cells.node_on``; the only edges :meth:`across_edge`
+        looks up), keyed by its two corner nodes sorted (the local mesh,
+        ghosts included).  Made once per space (an exact law's build asks
+        for it twice: its traction operator and its matrix's couplings);
+        callers only read it."""
+        kept = getattr(self, "_edge_neighbours", None)
+        if kept is not None:
+            return kept
+        nodes = np.asarray(self.cells.corner_nodes)
+        ends = np.roll(nodes, -1, axis=1)  # edge i of a cell runs from its corner i to corner i + 1
+        on = np.asarray(self.cells.node_on, bool)
+        both = (on[nodes] & on[ends]).ravel()
+        lo, hi = np.minimum(nodes, ends).ravel()[both].tolist(), np.maximum(nodes, ends).ravel()[both].tolist()
+        cells = np.repeat(np.arange(len(nodes)), nodes.shape[1])[both].tolist()
         out: dict = {}
-        for c in range(len(nodes)):
-            for i in range(k):
-                a, b = int(nodes[c, i]), int(nodes[c, (i + 1) % k])
-                out.setdefault((min(a, b), max(a, b)), []).append(c)
+        for key, c in zip(zip(lo, hi), cells):  # cell by cell, edge by edge, as the lists' order
+            out.setdefault(key, []).append(c)
+        self._edge_neighbours = out
         return out
 
     def across_edge(self, c: int, points: np.ndarray, edges: dict) -> np.ndarray:
