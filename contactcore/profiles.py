@@ -157,11 +157,12 @@ def _penalty_at(scene: Scene, g: np.ndarray, points: np.ndarray, path=None) -> t
     cone (grader28 F1: a penalty Coulomb Γ slipping everywhere read 82 %
     stick; review12 #1: labelled slip, its t_T was the stick branch's, down
     to 0.88 μ|t_N| on slide_everywhere and 0.33 on C-coulomb in xfem P1).
-    Where that point is open, or without a path, the law's own; a sample
-    whose nearest point is of the partial answer is reported partial and
-    carries that point's traction, ``y_N = 0`` with the share θ of its own
-    tie's shear, ``(0, θ k_T g_T)`` (review11 #7: it carried the whole tie,
-    ``k g``); a frictionless closed one is reported ``SLIP``, as
+    Where that point is open, or without a path, the law's own; a closed
+    sample whose nearest point is of the partial answer is reported
+    partial and carries that point's share θ of the tie, ``y_N = 0`` and
+    θ times its own tie's shear, ``(0, θ k_T g_T)`` (review11 #7: it
+    carried the whole tie, ``k g``), an opening one reads open with t = 0
+    as any other; a frictionless closed one is reported ``SLIP``, as
     ``Increment.reported_status`` reports the points."""
     if path is None or not path.steps:
         response = _law_at(scene, g, points, path)
@@ -171,12 +172,12 @@ def _penalty_at(scene: Scene, g: np.ndarray, points: np.ndarray, path=None) -> t
     response = _law_at(scene, g, points, path, reported)
     own = np.where(path.final.frictionless & (response.status == STICK), SLIP, response.status)
     closed = (own != OPEN) & ((reported == STICK) | (reported == SLIP))
-    status = np.where(reported == PARTIAL, PARTIAL, np.where(closed, reported, own)).astype(np.int8)
+    partial = (own != OPEN) & (reported == PARTIAL)
+    status = np.where(partial, PARTIAL, np.where(closed, reported, own)).astype(np.int8)
     t = np.array(response.traction, float)
     slip = closed & (reported == SLIP)
     if scene.law.frictional and slip.any():
         t[slip, 1] = scene.law.mu * np.abs(t[slip, 0]) * np.sign(path.final.traction[index[slip], 1])
-    partial = reported == PARTIAL
     if partial.any():  # the unilateral law's partial answer (contactcore.newton.partial)
         t[partial] = np.column_stack([np.zeros(int(partial.sum())),
                                       path.final.theta[index[partial]] * scene.law.kT * g[partial, 1]])

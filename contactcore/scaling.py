@@ -460,9 +460,10 @@ class ScaledFields:
 
     def direct_stress(self, points, bodies) -> np.ndarray:
         """The stress of the computed displacement itself, ``σ(u_h)``
-        (:attr:`contactcore.result.Fields.direct_stress`): the method's own
-        where its :meth:`stress` is recovered (xfem P1), else
-        :meth:`stress`; points refused as for :meth:`displacement`."""
+        (:class:`contactcore.result.Fields`' note): the method's own
+        ``direct_stress`` where it has one (xfem), else :meth:`stress`
+        (fe on curved cells: σ(u_h) interpolated per cell); points refused
+        as for :meth:`displacement`."""
         direct = getattr(self.inner, "direct_stress", None)
         if direct is None:
             return self.stress(points, bodies)

@@ -66,3 +66,38 @@ def test_xfem_p1s_direct_stress_is_its_cells_own_and_p2s_its_stress():
     assert np.abs(mixed(direct)).max() <= tol.Q1_MIXED_ROUNDOFF * size < np.abs(mixed(reported)).max()
     p2 = solve(scene, methods.discretisation("xfem")(degree=2), 0.1)
     assert np.array_equal(p2.fields.direct_stress(points, bodies), p2.fields.stress(points, bodies))
+
+
+def test_estimate_runs_takes_xfem_p1s_reported_stress_as_sigma_star_and_fe_p1s_own_recovery():
+    """contactcore.estimate.estimate_runs (review13 #1): xfem P1's η is the
+    energy norm of its reported (recovered) minus its direct stress, fe
+    P1's that of the estimate's own recovery of its stress minus that
+    stress (scene A, h = 0.2 -> 0.1).  The other choice for xfem P1, the
+    estimate's own recovery of the direct stress, is also one recovery of
+    σ(u_h), and read 0.963, 0.957, 0.907 on the three closed forms against
+    0.983, 0.971, 1.002 (review13, 2026-11-29)."""
+    from contactcore import load_scene
+    scene = load_scene("A")
+    for method in ("xfem", "fe"):
+        runs = [solve(scene, methods.discretisation(method)(degree=1), h) for h in (0.2, 0.1)]
+        eta = est.estimate_runs(scene, runs, 0.0).energy.eta
+        er = est.energy_rule(scene, 0.1)
+        direct = est.direct_stress(runs[-1].fields, er.rule.points, er.rule.bodies)
+        star = (runs[-1].fields.stress(er.rule.points, er.rule.bodies) if method == "xfem"
+                else est.recovered_stress(scene, er, direct))
+        assert eta == est.energy_norm(scene, er, star - direct) > 0, method
+
+
+def test_a_recovered_stress_without_its_direct_one_is_refused():
+    """review13 #5: fields whose stress is recovered but that have no
+    direct_stress would give η = 0 (the stress set against itself): the
+    estimate refuses them, naming what is missing."""
+    import pytest
+    from contactcore.errors import ContactError
+
+    class Recovered:
+        def stress(self, points, bodies):
+            return np.ones((len(points), 3))
+
+    with pytest.raises(ContactError, match="no direct_stress"):
+        est.energy_estimate(twisted_rod().scene, Recovered(), 0.1, recovered=True)

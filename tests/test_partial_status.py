@@ -268,8 +268,10 @@ def test_a_penalty_sample_nearest_a_partial_point_carries_its_share_of_the_tie(t
     it carried the whole tie, k g (t_N -7.2e5 to -7.7e5 Pa, t_T 2.4e5 to
     3.9e5 below).  No penalty run measured has a partial point (`uni` on
     springs of 1e12-1e14, every method and degree, h = 0.1 and 0.05), so
-    the run's map is given one: `uni` on springs of 1e13, fe P1 at
-    h = 0.1, its third closed point made partial with θ = 0.4."""
+    the run's map is given one: `uni` on springs kN = 1e13, kT = 3e12, fe
+    P1 at h = 0.1, its third closed point made partial with θ = 0.4.  A
+    sample there whose gap opens reads open with t = 0, as any other
+    (review13 #3)."""
     from dataclasses import replace
     from contactcore.laws import OPEN
     from contactcore.profiles import nearest_status, sample_points
@@ -277,7 +279,7 @@ def test_a_penalty_sample_nearest_a_partial_point_carries_its_share_of_the_tie(t
     from xdolfinx.options import FE
     text = (pathlib.Path(__file__).parent / "scenes" / "uni_opening.toml").read_text()
     path = tmp_path / "uni_springs.toml"
-    path.write_text(text.replace('enforcement = "exact"', "kN = 1e13\nkT = 1e13"))
+    path.write_text(text.replace('enforcement = "exact"', "kN = 1e13\nkT = 3e12"))
     scene = load_scene(path)
     run = discretisation.solve(scene, FE(degree=1), 0.1)
     final = run.interface.final
@@ -293,6 +295,12 @@ def test_a_penalty_sample_nearest_a_partial_point_carries_its_share_of_the_tie(t
     plain = interface_response(scene, run.fields, points, run.interface)
     others = np.setdiff1d(np.arange(len(points)), near)
     assert np.array_equal(t["tT"][others], plain["tT"][others]) and np.all(plain["tN"][near] < 0)
+    # the same samples with their gaps opened beyond the band read open with t = 0, as any other
+    from contactcore.profiles import _jumps_at, _penalty_at
+    g = _jumps_at(scene, run.fields, points)
+    g[near, 0] = np.max(np.abs(final.jump[:, 0]))
+    opened, status = _penalty_at(scene, g, points, given)
+    assert np.all(status[near] == OPEN) and np.all(opened[near] == 0.0)
 
 
 def test_a_sample_midway_between_two_quadrature_points_takes_the_first_along_gamma_whatever_the_round_off():

@@ -34,6 +34,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import tolerances as tol
+from ..errors import ContactError
 from ..quadrature import background_cells, volume_rule
 from ..recovery import PatchRecovery, incidence_of
 from ..scaling import Sizes
@@ -141,6 +142,9 @@ def energy_estimate(scene: Scene, fields, h: float, exclude: float = 0.0, gauss:
     ``σ*`` and ``σ_h`` its displacement's own (:func:`direct_stress`): one
     recovery, not a second one of ``σ*``, which moved it less than its
     error (0.15-0.61 of it, falling with h)."""
+    if recovered and not hasattr(fields, "direct_stress"):
+        raise ContactError("energy estimate: the fields' stress is recovered but they have no direct_stress "
+                           "(σ(u_h)) to set against it (contactcore.result.Fields' note)")
     er = energy_rule(scene, h, exclude, gauss)
     sigma = direct_stress(fields, er.rule.points, er.rule.bodies)
     star = (fields.stress(er.rule.points, er.rule.bodies) if recovered

@@ -176,7 +176,7 @@ class XFEMFields:
     def direct_stress(self, points, bodies) -> np.ndarray:
         """The stress of the computed displacement itself, ``σ(u_h)``, where
         :meth:`stress` reads it (the cell's own field, not recovered: at
-        degree 1 a constant per cell and body part); as :meth:`stress` at
-        degree 2.  What the energy norm of the error measures
-        (:mod:`contactcore.estimate.energy`)."""
+        degree 1 constant per triangle and body part, linear in x and in y
+        apart on a quadrilateral); as :meth:`stress` at degree 2.  What the
+        energy norm of the error measures (:mod:`contactcore.estimate.energy`)."""
         return self._eval(points, bodies, True, recovered=False)
