@@ -101,3 +101,26 @@ def test_a_recovered_stress_without_its_direct_one_is_refused():
 
     with pytest.raises(ContactError, match="no direct_stress"):
         est.energy_estimate(twisted_rod().scene, Recovered(), 0.1, recovered=True)
+
+
+def test_a_curved_gammas_recovery_floor_is_named_and_a_straight_one_has_none():
+    """contactcore.estimate.caveats.recovery_floor (a held-out review,
+    2026-11-29): on the pressurised rod (circular Γ) fe P2 at h = 0.1 reads
+    an energy effectivity of 2.28, and recovering its σ* again moves it by
+    0.69 of η: the estimate is named likely too large; fe P1 there (0.92,
+    0.17 of η) is not; on scene A (a straight Γ) the check is not taken."""
+    from contactcore import load_scene
+    from contactcore import tolerances as core_tol
+    from verification.agreement import default_exclusion
+    from verification.closed_forms import pressurised_rod
+    scene = pressurised_rod().scene
+    for degree, named in ((2, True), (1, False)):
+        runs = [solve(scene, methods.discretisation("fe")(degree=degree), h) for h in (0.2, 0.1)]
+        estimate = est.estimate_runs(scene, runs, default_exclusion(scene))
+        share = estimate.energy.recovery / estimate.energy.eta
+        lines = [w for w in estimate.warnings if "recovery's own error" in w]
+        assert (share > core_tol.ENERGY_RECOVERY_SHARE) == named and bool(lines) == named, (degree, share)
+        assert (est.caveats.ENERGY_KEY in estimate.unsettled) == named
+    a = load_scene("A")
+    straight = [solve(a, methods.discretisation("fe")(degree=2), h) for h in (0.2, 0.1)]
+    assert est.estimate_runs(a, straight, 0.0).energy.recovery is None

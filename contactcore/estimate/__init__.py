@@ -35,11 +35,11 @@ numpy and scipy only; no method is imported.
 """
 from .caveats import (cell_scale_orders, cell_scale_warnings, curved_layer, curved_layer_warning,
                       exact_traction_warning, exact_tractions, fast_gamma, fast_gamma_warning, feature_size, order_mismatch,
-                      order_warnings, pollution_warning, quadrature_energy, residue_warnings, residues,
+                      order_warnings, pollution_warning, quadrature_energy, recovery_floor, residue_warnings, residues,
                       split_cell_share, split_cell_share_warning, stencil_radius, thinnest_body, unsettled,
                       unsettled_warnings)
 from .energy import (EnergyEstimate, EnergyRule, direct_stress, energy_estimate, energy_norm, energy_rule,
-                     recovered_stress)
+                     recovered_stress, recovery_moves)
 from .extrapolation import (QuantityEstimate, balanced_order, cell_scale_part, observed_order, profile_estimates,
                             richardson, rms, roundoff_floor, sample_groups, three_run_order)
 from .orders import lower_end, order_range, polluted, theoretical_order
@@ -57,13 +57,13 @@ __all__ = [
     # caveats
     "cell_scale_orders", "cell_scale_warnings", "curved_layer", "curved_layer_warning",
     "exact_traction_warning", "exact_tractions", "fast_gamma", "fast_gamma_warning", "feature_size", "order_mismatch", "order_warnings",
-    "pollution_warning", "quadrature_energy", "residue_warnings", "residues", "split_cell_share",
+    "pollution_warning", "quadrature_energy", "recovery_floor", "residue_warnings", "residues", "split_cell_share",
     "split_cell_share_warning", "stencil_radius", "thinnest_body", "unsettled", "unsettled_warnings",
     # status
     "status_along", "status_change", "status_warning", "switches",
     # energy
     "EnergyEstimate", "EnergyRule", "direct_stress", "energy_estimate", "energy_norm", "energy_rule",
-    "recovered_stress",
+    "recovered_stress", "recovery_moves",
     # orders
     "lower_end", "order_range", "polluted", "theoretical_order",
     # singular

@@ -26,7 +26,7 @@ from .caveats import (cell_scale_orders, cell_scale_warnings, exact_traction_war
                       order_mismatch, order_warnings,
                       pollution_warning, residue_warnings, residues, unsettled, unsettled_warnings,
                       curved_layer, curved_layer_warning, ENERGY_KEY,
-                      quadrature_energy,
+                      quadrature_energy, recovery_floor,
                       split_cell_share, split_cell_share_warning)
 from .energy import EnergyEstimate, energy_estimate
 from .extrapolation import QuantityEstimate, profile_estimates
@@ -56,7 +56,8 @@ class Estimate:
     :func:`~contactcore.estimate.caveats.exact_tractions`,
     :func:`~contactcore.estimate.caveats.split_cell_share`, the energy's
     :data:`~contactcore.estimate.caveats.ENERGY_KEY` where
-    :func:`~contactcore.estimate.caveats.quadrature_energy` applies, and with three
+    :func:`~contactcore.estimate.caveats.quadrature_energy` or
+    :func:`~contactcore.estimate.caveats.recovery_floor` applies, and with three
     runs :func:`~contactcore.estimate.caveats.order_mismatch`) or not to be
     trusted (:func:`~contactcore.estimate.caveats.residues`)."""
 
@@ -133,7 +134,7 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
           if energy else None)
     kept = {p.id: far_from_singular(scene, np.column_stack([p.columns["x"], p.columns["y"]]), exclude)
             for p in levels[-1]}
-    caveat = quadrature_energy(results[-1].method, results[-1].degree, zz) if energy else []
+    caveat = (quadrature_energy(results[-1].method, results[-1].degree, zz) + recovery_floor(zz)) if energy else []
     return Estimate(hs, profiles, zz, status, warnings + caveat, levels[-1],
                     {k for v in found.values() for k in v} | set(layer) | set(rough) | set(residue) | set(nitsche)
                     | set(split)
