@@ -124,3 +124,16 @@ def test_a_curved_gammas_recovery_floor_is_named_and_a_straight_one_has_none():
     a = load_scene("A")
     straight = [solve(a, methods.discretisation("fe")(degree=2), h) for h in (0.2, 0.1)]
     assert est.estimate_runs(a, straight, 0.0).energy.recovery is None
+
+
+def test_a_stress_free_run_has_no_quadrature_caveat():
+    """A run that ends stress-free (tests/scenes/disc_unloaded.toml, no
+    load) has η = 0 over a norm of 0: EFGM P1's quadrature caveat ("0 of
+    the run's energy") has no error to speak of and is not given."""
+    import pathlib
+    from contactcore import load_scene
+    scene = load_scene(pathlib.Path(__file__).parent / "scenes" / "disc_unloaded.toml")
+    runs = [solve(scene, methods.discretisation("efgm")(degree=1), h) for h in (0.2, 0.1)]
+    estimate = est.estimate_runs(scene, runs, 0.0)
+    assert estimate.energy.eta == 0.0 and estimate.energy.norm <= estimate.energy.floor
+    assert not [w for w in estimate.warnings if w.startswith("energy (ZZ)")]
