@@ -216,3 +216,26 @@ def test_a_modulus_made_subnormal_is_out_of_range():
     scene = replace(scene, materials={**scene.materials, "minus": replace(scene.materials["minus"], E=1e-300)})
     with pytest.raises(SceneError, match=r"^materials\.minus\.E: 1e-300 is out of floating-point range"):
         methods.solver("xfem")(scene, 0.2, degree=1)
+
+
+def test_the_same_scene_in_mm_and_in_m_meshes_alike_where_h_sits_on_an_exact_multiple():
+    """contactcore.scaling.decimal_quotient (a held-out review, 2026-11-29):
+    h/L as the quotient of the numbers as written, so 5/200 and 0.005/0.2
+    are both 0.025 (float division gives 0.024999999999999998 for the
+    second), and a layered block whose Γ lies at exactly 9 h
+    (tests/scenes/layer_units_mm.toml, _si.toml) gets one fe mesh (2508
+    and 2514 DOFs before) and Γ's profile to round-off.  On C's size 3 and
+    the usual spacings the quotient is float division's own."""
+    import pathlib
+    from contactcore import discretisation
+    from contactcore.scaling import decimal_quotient
+    from xdolfinx.options import FE
+    assert decimal_quotient(5.0, 200.0) == decimal_quotient(0.005, 0.2) == 0.025
+    assert all(decimal_quotient(h, 3.0) == h / 3.0 for h in (0.1, 0.05, 0.025, 0.0125, 0.00625))
+    scenes = pathlib.Path(__file__).parent / "scenes"
+    runs = {u: (load_scene(scenes / f"layer_units_{u}.toml"), h) for u, h in (("mm", 5.0), ("si", 0.005))}
+    runs = {u: (scene, discretisation.solve(scene, FE(degree=1), h)) for u, (scene, h) in runs.items()}
+    assert runs["mm"][1].dofs == runs["si"][1].dofs
+    mm, si = (sample_profiles(scene, r.fields, r.interface)[0] for scene, r in (runs["mm"], runs["si"]))
+    for q in ("tN", "tT"):
+        assert np.max(np.abs(1e6 * mm.columns[q] - si.columns[q])) <= ttol.LAYER_UNITS_ROUNDOFF * np.max(np.abs(si.columns[q]))

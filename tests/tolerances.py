@@ -1483,3 +1483,9 @@ RECOVERY_MOVES_A_Q1_CELL = 1e-3
 #: of the scene's values (no solve, no sum over samples): equal to
 #: round-off, in m and in mm (tests/test_estimate_stiff_springs.py).
 STIFF_SPRINGS_ARITHMETIC = 1e-12
+
+#: A layered block in mm/MPa against the same in m/Pa (tests/scenes/
+#: layer_units_*.toml, fe P1 at h = 5 mm): Γ's t_N, t_T over their
+#: largest, measured 2.0e-16 on 2026-11-29 once h/L is the decimal
+#: quotient (7.3e-5 before, a different mesh).
+LAYER_UNITS_ROUNDOFF = 1e-12
