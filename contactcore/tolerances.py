@@ -1314,6 +1314,24 @@ FEATURE_STENCILS = 8.0
 #: "A thin body is a feature".
 THIN_BODY_STENCILS = 2.0
 
+#: The coarse run's cells, in compliance lengths (contactcore.estimate.singular.compliance_length),
+#: from which a penalty Γ's ends count as unknown bimaterial edges
+#: (contactcore.estimate.singular.stiff_spring_ends): at scales above ``ℓ`` the springs are stiff
+#: against the bodies and Γ behaves as bonded; a mesh whose cells are not
+#: small against ``ℓ`` sees that bonded edge, not the springs' ``r log r``
+#: end (contactcore.estimate.singular.interface_end_exponents).  Set between the measured cases
+#: (docs/error-estimates-log.md, "A penalty Γ's ends at the scale of its
+#: springs", against fe P2 at h = 0.00625): grader28's tilted block, cells
+#: of 0.25 and 0.125 ℓ at h = 0.1 and 0.05, its degree-2 bulk
+#: displacements converging at 1.37-1.67, below the balanced 2.20 (0.44-0.60
+#: at that order, 0.84-1.17 at the lower end 1.52), and grader25b's
+#: near-stick and partly open Γ (0.5 and 0.25 ℓ: fe and xfem P2 0.32-0.60
+#: → 0.66-1.16); grader25b's soft band, cells of 0.05 and 0.025 ℓ, whose
+#: estimates at the balanced order held (fe and xfem 0.59-1.01) and at the
+#: lower end would read up to 2.02, unwarned.  0.08 is about the geometric
+#: mean of 0.05 and 0.125.
+SPRING_BONDED_CELLS = 0.08
+
 #: A two-run estimate warns when the runs' variation at the coarse cells'
 #: scale (estimate.cell_scale_orders) shrinks between them at more than
 #: this above the highest order theory allows the quantity: the coarse

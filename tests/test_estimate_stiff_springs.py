@@ -17,6 +17,7 @@ import pytest
 
 import tolerances as tol
 from contactcore import estimate as est
+from contactcore import tolerances as core_tol
 from contactcore import load_scene
 from contactcore.estimate import singular
 
@@ -37,7 +38,7 @@ def test_a_spring_gammas_ends_count_from_cells_of_a_few_hundredths_of_its_compli
     tilt, mm = load_scene(TILT), load_scene(TILT_MM)
     assert singular.compliance_length(tilt) == pytest.approx(0.4, rel=tol.STIFF_SPRINGS_ARITHMETIC)
     assert singular.compliance_length(mm) == pytest.approx(singular.compliance_length(tilt), rel=tol.STIFF_SPRINGS_ARITHMETIC)
-    ell, c = singular.compliance_length(tilt), singular.SPRING_BONDED_CELLS
+    ell, c = singular.compliance_length(tilt), core_tol.SPRING_BONDED_CELLS
     fine, coarse = 0.025, 0.05
     assert fine / ell < c <= coarse / ell
     assert _fires(tilt, coarse) and not _fires(tilt, fine)

@@ -44,8 +44,9 @@ from .extrapolation import (QuantityEstimate, balanced_order, cell_scale_part, o
                             richardson, rms, roundoff_floor, sample_groups, three_run_order)
 from .orders import lower_end, order_range, polluted, theoretical_order
 from .runs import Estimate, estimate, estimate_runs, levels_of
-from .singular import (clamped_free_exponent, corner_exponents, exact_interface_ends, far_from_singular, interface_end_exponents, kolosov,
-                       pollution_order, reflected, singular_points, singular_regions, stress_singular_points)
+from .singular import (clamped_free_exponent, compliance_length, corner_exponents, exact_interface_ends, far_from_singular,
+                       interface_end_exponents, kolosov, pollution_order, reflected, singular_points, singular_regions,
+                       stiff_spring_ends, stress_singular_points, unknown_ends)
 from .status import status_along, status_change, status_warning, switches
 
 __all__ = [
@@ -67,6 +68,7 @@ __all__ = [
     # orders
     "lower_end", "order_range", "polluted", "theoretical_order",
     # singular
-    "clamped_free_exponent", "corner_exponents", "exact_interface_ends", "far_from_singular", "interface_end_exponents", "kolosov",
-    "pollution_order", "reflected", "singular_points", "singular_regions", "stress_singular_points",
+    "clamped_free_exponent", "compliance_length", "corner_exponents", "exact_interface_ends", "far_from_singular",
+    "interface_end_exponents", "kolosov", "pollution_order", "reflected", "singular_points", "singular_regions",
+    "stiff_spring_ends", "stress_singular_points", "unknown_ends",
 ]

@@ -74,8 +74,7 @@ from .energy import EnergyEstimate
 from .extrapolation import QuantityEstimate, cell_scale_part, rms, sample_groups
 from ..scene.resolution import body_thickness
 from .orders import GAPS, MESHFREE, RECOVERED_STRESS, STRESSES, TRACTIONS, _exact, lower_end
-from .singular import (exact_interface_ends, far_from_singular, singular_points, stiff_spring_ends,
-                       stress_singular_points)
+from .singular import far_from_singular, singular_points, stress_singular_points, unknown_ends
 
 #: Γ's quantities: the gaps and the tractions.
 GAMMA = GAPS + TRACTIONS
@@ -311,8 +310,7 @@ def _lower_end(scene: Scene, estimates: dict[str, dict[str, QuantityEstimate]] |
     named by the reach cause alone (docs/error-estimates.md, "Which
     estimates to warn of")."""
     e = (estimates or {}).get(pid, {}).get(q)
-    unknown_ends = bool(len(exact_interface_ends(scene)) or len(stiff_spring_ends(scene, h)))
-    return e is not None and lower_end(q, e.theory, unknown_ends)
+    return e is not None and lower_end(q, e.theory, unknown_ends(scene, h))
 
 
 def _spread(fine: ProfileData, coarse: ProfileData | None, q: str, within: np.ndarray, beyond: np.ndarray,

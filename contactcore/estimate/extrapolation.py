@@ -50,7 +50,7 @@ from ..profiles import ProfileData
 from ..scene import Scene
 from ..scaling import Sizes
 from .orders import STRESSES, TRACTIONS, lower_end, order_range, polluted
-from .singular import exact_interface_ends, far_from_singular, pollution_order, stiff_spring_ends
+from .singular import far_from_singular, pollution_order, unknown_ends
 
 
 def rms(x: np.ndarray) -> float:
@@ -279,7 +279,7 @@ def profile_estimates(levels: list[list[ProfileData]], degree: int, method: str 
     (:func:`~contactcore.estimate.orders.lower_end`)."""
     out, law = {}, scene.law if scene else None
     pollution, sizes = pollution_order(scene), Sizes.of(scene) if scene is not None else None
-    unknown_ends = len(exact_interface_ends(scene)) > 0 or len(stiff_spring_ends(scene, h)) > 0
+    ends_unknown = unknown_ends(scene, h)
     for profs in zip(*levels):
         pid, cols = profs[-1].id, profs[-1].columns
         xy = np.column_stack([cols["x"], cols["y"]])
@@ -295,7 +295,7 @@ def profile_estimates(levels: list[list[ProfileData]], degree: int, method: str 
             out[pid][q] = richardson([p.columns[q] for p in profs], theory, coarse=coarse, kept=kept,
                                      floor=roundoff_floor(sizes, q),
                                      cells=cells if polluted(q, degree, method, law, switching, pollution) else None,
-                                     low=lower_end(q, theory, unknown_ends))
+                                     low=lower_end(q, theory, ends_unknown))
     return out
 
 

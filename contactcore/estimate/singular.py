@@ -193,36 +193,17 @@ def compliance_length(scene: Scene) -> float:
     ``ℓ = E/k``, the thickness of a layer of the bodies' material as
     compliant as the springs, with the stiffer body's ``E`` and the law's
     largest spring ``stiffness_scale`` (``max(kN, kT)``: the stiffest
-    reading of the springs, the shortest ℓ, :data:`SPRING_BONDED_CELLS`)."""
+    reading of the springs, the shortest ℓ, :data:`~contactcore.tolerances.SPRING_BONDED_CELLS`)."""
     scales = Scales.of(scene)
     E = max(m.E for m in scene.materials.values()) / scales.modulus
     return E / scales.law(scene.law).stiffness_scale
-
-
-#: The coarse run's cells, in compliance lengths (:func:`compliance_length`),
-#: from which a penalty Γ's ends count as unknown bimaterial edges
-#: (:func:`stiff_spring_ends`): at scales above ``ℓ`` the springs are stiff
-#: against the bodies and Γ behaves as bonded; a mesh whose cells are not
-#: small against ``ℓ`` sees that bonded edge, not the springs' ``r log r``
-#: end (:func:`interface_end_exponents`).  Set between the measured cases
-#: (docs/error-estimates-log.md, "A penalty Γ's ends at the scale of its
-#: springs", against fe P2 at h = 0.00625): grader28's tilted block, cells
-#: of 0.25 and 0.125 ℓ at h = 0.1 and 0.05, its degree-2 bulk
-#: displacements converging at 1.37-1.67, below the balanced 2.20 (0.44-0.60
-#: at that order, 0.84-1.17 at the lower end 1.52), and grader25b's
-#: near-stick and partly open Γ (0.5 and 0.25 ℓ: fe and xfem P2 0.32-0.60
-#: → 0.66-1.16); grader25b's soft band, cells of 0.05 and 0.025 ℓ, whose
-#: estimates at the balanced order held (fe and xfem 0.59-1.01) and at the
-#: lower end would read up to 2.02, unwarned.  0.08 is about the geometric
-#: mean of 0.05 and 0.125.
-SPRING_BONDED_CELLS = 0.08
 
 
 def stiff_spring_ends(scene: Scene | None, h: float | None) -> np.ndarray:
     """The ends of a straight Γ under a penalty law between different
     materials where it meets a rectangle's boundary (an (m, 2) array,
     empty where there are none), once the coarse run's ``h`` (the scene's
-    units) is at least :data:`SPRING_BONDED_CELLS` compliance lengths
+    units) is at least :data:`~contactcore.tolerances.SPRING_BONDED_CELLS` compliance lengths
     (:func:`compliance_length`): at the mesh's scale the springs are then
     stiff against the bodies, Γ behaves as bonded and its end as a
     bimaterial edge (Bogy's exponents), which :func:`pollution_order`
@@ -235,10 +216,18 @@ def stiff_spring_ends(scene: Scene | None, h: float | None) -> np.ndarray:
     minus, plus = scene.materials["minus"], scene.materials["plus"]
     if ends is None or (minus.E, minus.nu) == (plus.E, plus.nu):
         return np.zeros((0, 2))
-    if h / Scales.of(scene).length < SPRING_BONDED_CELLS * compliance_length(scene) * (1 - tol.GEOMETRY):
+    if h / Scales.of(scene).length < tol.SPRING_BONDED_CELLS * compliance_length(scene) * (1 - tol.GEOMETRY):
         return np.zeros((0, 2))
     ends = np.asarray(ends, float)
     return ends[~reflected(scene)[len(scene.domain.corners):]]
+
+
+def unknown_ends(scene: Scene | None, h: float | None) -> bool:
+    """Whether the scene's straight Γ has ends of an exponent
+    :func:`pollution_order` does not take: under an exact law
+    (:func:`exact_interface_ends`) or under springs stiff at the scale of
+    the coarse run's cells ``h`` (:func:`stiff_spring_ends`)."""
+    return len(exact_interface_ends(scene)) > 0 or len(stiff_spring_ends(scene, h)) > 0
 
 
 def pollution_order(scene: Scene | None) -> float:

@@ -49,9 +49,10 @@ of Γ's pressure; :class:`contactcore.laws.Decision`); a partial one
 whose ``τ`` lies beyond ``k_T y_T`` (``θ > 1``) by more than
 ``DECISION_BAND`` of Γ's largest ``|k_T y_T|`` closes, beyond 0
 (``θ < 0``) opens.  Two walks, the second only where the first finds
-nothing (or a map whose answer fails Newton's residual test): the first moves every point as asked and makes the returning
-points partial only where the map would be one it has visited (a cycle;
-:func:`_cycling`); the second makes a closed or open point asked to take
+nothing (or a map whose answer fails Newton's residual test): the first
+moves every point as asked and makes the returning points partial only
+where the map would be one it has visited (a cycle; :func:`_cycling`);
+the second makes a closed or open point asked to take
 a status it has already had partial at once (it contradicts both: the
 point of ``uni`` above; :func:`_returning`).  The first lets an opening
 edge overshoot and come back (scene A at 20°, efgm P2: the second walk
@@ -395,4 +396,3 @@ def _commit(newton, search: _Search, k: float, s, u, y, tau, P, maps: int) -> bo
         f"hold y_N = 0 with a share θ of the tie's shear (the law's two branches mixed, Filippov's answer at its "
         f"jump; docs/contact-enforcement.md, \"The unilateral law under shear\"): {listed}")
     return True
-
