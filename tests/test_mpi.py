@@ -79,6 +79,9 @@ def _parity(tmp_path, scene, ranks: int, degree: int, h: float, methods=("fe",),
     assert main([str(a) for a in args] + ["--out", str(serial), "--quiet"]) == 0
     out = mpirun(ranks, "-m", "verification", *args, "--out", parallel, timeout=timeout)
     assert out.returncode == 0, out.stderr
+    for run, count in ((serial, 1), (parallel, ranks)):  # the outputs say how many ranks solved
+        assert json.loads((run / "run.json").read_text())["ranks"] == count
+        assert all(json.loads((run / m / "summary.json").read_text())["ranks"] == count for m in methods)
     for m in methods:
         files = sorted((serial / m).rglob("*.csv"))
         assert files

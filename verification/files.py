@@ -19,12 +19,13 @@ from contextlib import contextmanager
 from pathlib import Path
 
 from contactcore import CircleInterface, ContactError, ProfileData, SceneError, load_scene
+from contactcore.collective import launched_size
 from contactcore.profiles import sample_points
 from contactcore.scene import Units
 from contactcore.errors import check_writable, os_problem
 from contactcore.estimate.runs import ERROR_SUFFIX
 
-from . import janitor
+from . import janitor, pool
 
 #: The file that marks a folder as a result folder of this tool (every
 #: command writes it last): only such a folder is replaced by a new run.
@@ -328,10 +329,19 @@ def git_commit() -> str | None:
 
 def provenance(argv: list[str]) -> dict:
     """What produced a result folder: the command, the code (version and git
-    commit), the machine and the versions of the packages."""
+    commit), the machine, the MPI ranks it ran on (:func:`ranks`) and the
+    versions of the packages."""
     return {"command": " ".join(["python -m verification", *argv]), "cwd": os.getcwd(),
-            "host": platform.node(), "version": package_version(), "commit": git_commit(),
+            "host": platform.node(), "ranks": ranks(), "version": package_version(), "commit": git_commit(),
             "versions": versions()}
+
+
+def ranks() -> int:
+    """How many MPI ranks each solve of this job spreads over: mpirun's
+    count (read from the launcher, :func:`contactcore.collective.launched_size`),
+    1 without mpirun or under an mpi4py.futures pool, whose workers each
+    solve alone (:func:`verification.pool.distributed`)."""
+    return launched_size() if pool.distributed() else 1
 
 
 def cell(value) -> str:

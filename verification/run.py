@@ -2,9 +2,9 @@
 
 Writes, under ``--out DIR``::
 
-    DIR/run.json                  command, versions, options
+    DIR/run.json                  command, MPI ranks, versions, options
     DIR/scene.toml                the scene as read
-    DIR/<method>/summary.json     DOFs, timings, solver health
+    DIR/<method>/summary.json     DOFs, MPI ranks, timings, solver health
     DIR/<method>/profiles/<ID>.csv
     DIR/<method>/fields/          (with --fields) VTU per body, Γ per step + PVD
     DIR/plots/<ID>.png            each profile, methods overlaid
@@ -470,6 +470,7 @@ def _write_method(out: Path, scene: Scene, name: str, result, est, fields: bool,
     label.  Returns its summary."""
     label = f"{name} (p{result.degree})"
     summary, sampled = _written_profiles(out / name, scene, result, est, floors)
+    summary["ranks"] = files.ranks()
     if label in gaps:
         summary["against_exact"] = gaps[label]
     if est is not None:
