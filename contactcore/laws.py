@@ -69,8 +69,8 @@ class LawResponse:
 
 def _positive(params: dict, key: str, path: str) -> float:
     if key not in params:
-        raise SceneError(f"{path}.{key}", "missing (a penalty stiffness, in the scene's stress per length: "
-                         "Pa/m in SI)")
+        raise SceneError(f"{path}.{key}", "missing (a penalty stiffness, in the scene's stress unit per length unit: "
+                         "Pa/m in SI, MPa/mm in a scene of mm and MPa)")
     value = params[key]
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         raise SceneError(f"{path}.{key}", f"must be a number (got {value!r})")

@@ -221,7 +221,20 @@ class SolverReport:
 
 @dataclass
 class Result:
-    """One method's solution of one scene at the full load."""
+    """One method's solution of one scene at the full load, the same type
+    from every method (``verification.methods.solver(name)(scene, h)``).
+
+    ``method`` and ``degree`` name the run; ``scene`` is the scene as given
+    (the user's units); ``dofs`` its unknowns; ``timings``
+    (:class:`Timings`: mesh, assembly, solve, total, in s) and ``solver``
+    (:class:`SolverReport`: residual, backward error, Newton iterations per
+    increment, factorisations, warnings) say what it cost and how healthy
+    the solve was; ``fields`` (:class:`Fields`) evaluates the displacement
+    and stress at any points; ``discretisation`` records the mesh or nodes
+    (cells, h, quadrature); ``interface``, for a law with history or a
+    followed path, holds Γ's jump, traction and status at every increment
+    (:class:`~contactcore.interface_path.InterfacePath`); :meth:`summary`
+    is the JSON record ``run`` writes."""
 
     method: str
     scene: object

@@ -10,6 +10,7 @@ back, so a run's ``scene.toml`` is the scene it solved.
 from __future__ import annotations
 
 import dataclasses
+import difflib
 import json
 import tomllib
 from importlib import resources
@@ -23,6 +24,20 @@ from .laws import InterfaceLaw
 from .scene import (BODIES, BodyForce, InterfaceProfile, LineProfile, Load, Material, Pin, Pressure, Profile, Scene, Support,
                     Torque, Traction, Units, finite)
 
+
+
+#: How alike (difflib's ratio) a key given and a key known must be for a
+#: refusal to ask whether one is a misspelling of the other: 'increment'
+#: and 'increments' score 0.95, 'plsu' and 'plus' 0.75, 'kN' and 'kT' 0.5
+#: (two real keys, never offered for each other).
+SPELLING_LIKENESS = 0.7
+
+
+def _closest(name: str, candidates) -> str | None:
+    """The candidate most like ``name``, if any is as alike as
+    :data:`SPELLING_LIKENESS`."""
+    close = difflib.get_close_matches(name, sorted(candidates), n=1, cutoff=SPELLING_LIKENESS)
+    return close[0] if close else None
 
 
 class _Table:
@@ -43,7 +58,8 @@ class _Table:
         path = self._key(key)
         if key not in self.data:
             if default is ...:
-                raise SceneError(path, "missing")
+                given = _closest(key, set(self.data) - self.used)
+                raise SceneError(path, f"missing (is {given!r}, given, a misspelling of it?)" if given else "missing")
             return default
         value = self.data[key]
         if kind == "number":
@@ -88,7 +104,8 @@ class _Table:
         """Reject any key that was not read: a typo must not pass silently."""
         unknown = sorted(set(self.data) - self.used)
         if unknown:
-            raise SceneError(self._key(unknown[0]), "unknown key")
+            known = _closest(unknown[0], self.used - set(self.data))
+            raise SceneError(self._key(unknown[0]), f"unknown key (did you mean {known!r}?)" if known else "unknown key")
 
 
 def _read_domain(t: _Table) -> Domain:

@@ -108,7 +108,7 @@ def test_units_json_gives_each_csvs_s_its_own_unit(tmp_path):
      "--param stabilisation: must lie within 0.3..30 (got 200)"),
     (["C-coulomb", "--param", "enforcement", "--values", "exact", "--param", "stabilisation", "--values", "200", "2"],
      "--param stabilisation: must lie within 0.3..30 (got 200)"),
-    (["A", "--param", "h", "--values", "0.1", "5"], "--param h: 5 exceeds the domain's smallest dimension 1"),
+    (["A", "--param", "h", "--values", "0.1", "5"], "--param h: 5 m exceeds the domain's smallest dimension 1 m"),
     (["A", "--param", "E_plus", "--values", "1e9", "-1"], "--param E_plus = -1: materials.plus.E: Young's modulus"),
     (["A", "--param", "h", "--values", "0.1", "1e-5"], "--param h = 1e-05: h 1e-05 with fe (degree 1, 20 increments)"),
 ])
@@ -313,7 +313,7 @@ def test_an_empty_out_and_a_value_given_twice_are_refused(tmp_path, capsys):
     (["--degree", "1", "1", "--h", "0.2", "0.1"], "error: --degree: each value may be given once (1 given twice)"),
     (["--h", "0.2", "0.2"], "error: --h: each value may be given once (0.2 given twice)"),
     (["--method", "efgm", "efgm", "--h", "0.2"], "error: --method: each value may be given once (efgm given twice)"),
-    (["--h", "5", "0.1"], "error: --h: 5 exceeds the domain's smallest dimension 1: the mesh would be one cell "
+    (["--h", "5", "0.1"], "error: --h: 5 m exceeds the domain's smallest dimension 1 m: the mesh would be one cell "
                           "across")])
 def test_efficiency_refuses_a_value_given_twice_as_study_does(given, message, tmp_path, capsys, monkeypatch):
     """grader9 #8: ``efficiency --degree 1 1`` or ``--h 0.2 0.2`` solved each

@@ -246,10 +246,10 @@ def test_the_estimate_grows_with_the_unknowns():
 
 
 @pytest.mark.parametrize("argv, pattern", [
-    (["run", "A", "--method", "xfem", "--h", "1e-300"], r"--h: 1e-300 is below the geometric tolerance"),
-    (["timing", "A", "--method", "xfem", "--h", "5"], r"h: 5 exceeds the domain's smallest dimension"),
+    (["run", "A", "--method", "xfem", "--h", "1e-300"], r"--h: 1e-300 m is below the geometric tolerance"),
+    (["timing", "A", "--method", "xfem", "--h", "5"], r"h: 5 m exceeds the domain's smallest dimension"),
     (["efficiency", "A", "--method", "fe", "--h", "5", "--ref-h", "0.1", "--workers", "2"],
-     r"h: 5 exceeds the domain's smallest dimension"),
+     r"h: 5 m exceeds the domain's smallest dimension"),
 ])
 def test_every_driver_refuses_a_resolution_run_refuses(tmp_path, capsys, argv, pattern):
     """The resolution is checked wherever a solve starts (a study's h, the

@@ -122,7 +122,7 @@ def test_an_h_just_above_the_domain_is_quoted_above_it():
     scene = load_scene(str(PULL_ROLLER))  # 2 x 1 mm: h may be at most 1
     with pytest.raises(SceneError) as err:
         check_resolution(scene, 1.0000001)
-    assert str(err.value).startswith("--h: 1.0000001 exceeds"), err.value
+    assert str(err.value).startswith("--h: 1.0000001 mm exceeds"), err.value
 
 
 # ----- 3. --cell quad|triangle on a disc ----------------------------------------

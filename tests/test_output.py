@@ -156,6 +156,8 @@ def test_every_method_and_degree_has_its_own_style():
              for m in plots.METHOD_STYLE for d in (1, 2) for st in [plots.style(f"{m} (p{d})")]}
     assert len(set(looks.values())) == len(looks)  # no two curves look alike
     assert len({look[2] for look in looks.values()}) == len(looks)  # not even by marker alone
+    for m in plots.METHOD_STYLE:  # a method's two degrees differ by more than their markers
+        assert plots.style(f"{m} (p1)")["lw"] != plots.style(f"{m} (p2)")["lw"]
     assert plots.variant("reference: fe P2, h = 0.025 (3000 DOFs)") == ("fe", 2)
     assert plots.reference_label(["xfem (p2)", "fe (p1)", "fe (p2)", "efgm (p1)"]) == "fe (p2)"
     assert plots.reference_label(["xfem (p1)", "efgm (p1)"]) == "xfem (p1)"

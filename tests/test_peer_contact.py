@@ -61,7 +61,7 @@ def test_a_bad_resolution_is_refused(options, problem):
 
 
 @pytest.mark.parametrize("h,problem", [(0.0, "h: must be a finite number > 0 \\(got 0.0\\)"),
-                                       (2.0, "h: 2 exceeds the domain's smallest dimension 1")])
+                                       (2.0, "h: 2 m exceeds the domain's smallest dimension 1 m")])
 def test_a_bad_h_is_refused_not_replaced_by_the_scenes(h, problem, monkeypatch):
     monkeypatch.setitem(sys.modules, "getfem", None)  # refused before GetFEM is asked for
     with pytest.raises(SceneError, match=problem):

@@ -137,6 +137,25 @@ def test_every_bad_input_is_named(scene_dict, name, path, value, field, words):
     assert words in str(err.value)
 
 
+def test_a_misspelt_key_is_named_with_the_key_it_is_like(scene_dict):
+    """A typo is refused with the key it is most like (contactcore.scene_files,
+    SPELLING_LIKENESS): an unknown key with the known one it resembles, a
+    missing key with the given one that resembles it; keys alike in no way
+    get no guess."""
+    data = scene_dict("A")
+    data["increment"] = data.pop("increments")
+    with pytest.raises(SceneError, match=r"^increment: unknown key \(did you mean 'increments'\?\)$"):
+        scene_from_dict(data)
+    data = scene_dict("A")
+    data["materials"]["plsu"] = data["materials"].pop("plus")
+    with pytest.raises(SceneError, match=r"^materials.plus: missing \(is 'plsu', given, a misspelling of it\?\)$"):
+        scene_from_dict(data)
+    data = scene_dict("A")
+    data["colour"] = "red"
+    with pytest.raises(SceneError, match=r"^colour: unknown key$"):
+        scene_from_dict(data)
+
+
 def test_a_support_value_on_a_component_it_does_not_hold_is_named(scene_dict):
     """fix = "x" with a non-zero u_y: the u_y would be dropped silently."""
     data = scene_dict("A")

@@ -331,7 +331,8 @@ def provenance(argv: list[str]) -> dict:
     """What produced a result folder: the command, the code (version and git
     commit), the machine, the MPI ranks it ran on (:func:`ranks`) and the
     versions of the packages."""
-    return {"command": " ".join(["python -m verification", *argv]), "cwd": os.getcwd(),
+    launcher = [f"mpirun -n {ranks()}"] if ranks() > 1 else []
+    return {"command": " ".join([*launcher, "python -m verification", *argv]), "cwd": os.getcwd(),
             "host": platform.node(), "ranks": ranks(), "version": package_version(), "commit": git_commit(),
             "versions": versions()}
 

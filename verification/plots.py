@@ -72,6 +72,10 @@ OTHER_STYLE = ("tab:gray", (0, (5, 1, 1, 1)), "+x1")
 #: Markers on a sampled curve: this many per curve, shifted from curve to
 #: curve so that coincident curves show each one's markers.
 MARKERS_PER_CURVE = 10
+#: A curve's line width by degree (1, then 2 and higher): a method's two
+#: degrees share its colour and line style, so the heavier line tells the
+#: degree-2 run (the reference's, fe P2) from degree 1 without the markers.
+LINE_WIDTH = (1.4, 2.6)
 
 
 def variant(label: str) -> tuple[str, int]:
@@ -88,7 +92,8 @@ def style(label: str, index: int = 0, points: int = 0) -> dict:
     figure; ``points`` > 0 spreads markers over a sampled curve."""
     method, degree = variant(label)
     colour, line, markers = METHOD_STYLE.get(method, OTHER_STYLE)
-    kw = {"color": colour, "linestyle": line, "marker": markers[min(degree, len(markers)) - 1], "lw": 1.4,
+    kw = {"color": colour, "linestyle": line, "marker": markers[min(degree, len(markers)) - 1],
+          "lw": LINE_WIDTH[min(degree, 2) - 1],
           "ms": 6, "mfc": "none", "label": label}
     if points > MARKERS_PER_CURVE:
         every = max(1, points // MARKERS_PER_CURVE)

@@ -137,6 +137,19 @@ NOT_ESTIMATED = (f"\n{NOT_ESTIMATED_MARK} not estimated: the reference the runs 
                  "at the answer's h (the finest), so it has no coarser run to estimate from.")
 
 
+def conventions(units, ranks: int = 1) -> str:
+    """``summary.md``'s opening paragraph: the units and sign conventions
+    every figure below uses (docs/scenes.md defines them) and, on several
+    ranks, that the run was parallel."""
+    parallel = (f" Solved on {ranks} MPI ranks (mpirun), whose numbers are the serial run's to round-off."
+                if ranks > 1 else "")
+    return (f"Lengths, displacements and gaps in {units.length}, stresses and tractions in {units.stress} "
+            "(`units.json` names every column's unit). Γ's normal n points from the − body into the + body and "
+            "its tangent is t = (n_y, −n_x); g_N = [[u]]·n > 0 is an opening, g_T = [[u]]·t the + body's slip "
+            "along t; t_N > 0 is tension (the pressure is −t_N) and t_T has the sign of the slip that causes it; "
+            f"stresses are tension positive (docs/scenes.md).{parallel}\n\n")
+
+
 def agreement_section(scene: Scene, profiles: dict, reference: str | None = None, floors: dict | None = None) -> str:
     """``summary.md``'s agreement of every run with the reference of the
     plots' difference panels (``reference``, else fe at its highest degree,
@@ -546,8 +559,8 @@ def _write_summary(out: Path, scene: Scene, summaries: list[dict], profiles: dic
     for pid, runs in profiles.items() if draw else ():
         plots.plot_profile(out / "plots" / f"{pid}.png", titles[pid], runs, ref, agreement.floors(scene, floors),
                            scene.units)
-    text = (f"# Scene {plots.heading(scene.name, scene.title)}\n\n" + _summary_table(summaries)
-            + agreement_section(scene, profiles, ref, floors))
+    text = (f"# Scene {plots.heading(scene.name, scene.title)}\n\n" + conventions(scene.units, files.ranks())
+            + _summary_table(summaries) + agreement_section(scene, profiles, ref, floors))
     if len(estimated) > 1:
         text += _estimates_section(scene, estimated, floors)
     if gaps:

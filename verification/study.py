@@ -189,8 +189,8 @@ CHANGES = {
     "E_plus": ("Young's modulus of the + body", lambda s, v: _material(s, "plus", "E", v)),
     "nu_plus": ("Poisson's ratio of the + body", lambda s, v: _material(s, "plus", "nu", v)),
     "radius": ("radius of a circular Γ", _radius),
-    "offset": ("shift of a straight Γ along its normal", _offset),
-    "angle": ("angle of a straight Γ to the x axis", _angle),
+    "offset": ("shift of a straight Γ along its normal, in the scene's length unit", _offset),
+    "angle": ("angle of a straight Γ to the x axis, in degrees, Γ turned about the middle of its chord", _angle),
 }
 #: Every other parameter a registered law declares (its ``parameters``,
 #: contactcore.laws' contract), so that a new law's is a --param as it is

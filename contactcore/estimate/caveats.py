@@ -339,7 +339,7 @@ def unsettled_warnings(found: dict[str, dict[str, tuple[float, float]]], h: floa
     """One line per cause of :func:`unsettled` and per stencil, naming the
     quantities and the coarse h from which the cause is gone; its lengths
     in the scene's unit named ``length`` (:class:`~contactcore.scene.Units`),
-    the scene's smallest ``feature`` and its ``thin``\ nest body's thickness."""
+    the scene's smallest ``feature`` and ``thin``, its thinnest body's thickness."""
     lines = []
     for cause, entries in found.items():
         for rho in sorted({v[0] for v in entries.values()}):

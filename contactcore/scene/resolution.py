@@ -65,9 +65,10 @@ def check_resolution(scene: "Scene", h, field: str = "--h") -> float:
         raise SceneError(field, f"must be a finite number > 0 (got {h!r})")
     top = smallest_dimension(scene.domain)
     if h > top:
-        raise SceneError(field, f"{quoted(h, top)} exceeds the domain's smallest dimension {top:g}: the mesh would be one "
+        raise SceneError(field, f"{quoted(h, top)} {scene.units.length} exceeds the domain's smallest dimension {top:g} "
+                         f"{scene.units.length}: the mesh would be one "
                          "cell across")
     if h < tol.GEOMETRY * top:
-        raise SceneError(field, f"{quoted(h, tol.GEOMETRY * top)} is below the geometric tolerance, {tol.GEOMETRY:g} of the domain's "
-                         f"smallest dimension {top:g}: no mesh or node set of it can be made or held")
+        raise SceneError(field, f"{quoted(h, tol.GEOMETRY * top)} {scene.units.length} is below the geometric tolerance, {tol.GEOMETRY:g} of "
+                         f"the domain's smallest dimension {top:g} {scene.units.length}: no mesh or node set of it can be made or held")
     return float(h)

@@ -64,7 +64,11 @@ class AgreementTable:
                   "t_T against |t|, a stress against the stresses its profile samples), at least "
                   f"{NEGLIGIBLE_SHARE:g} of the scene's own scale (round-off): the worst sample is the largest "
                   "|difference| over the largest size on the profile (not over the size at that sample), the RMS "
-                  "the RMS difference over the RMS size.")
+                  "the RMS difference over the RMS size. A quantity's class names what it is: `interface` (Γ's "
+                  "gaps and tractions under a linear law), `contact` (g_N, g_T, t_N of a law that opens: kinks where "
+                  "Γ opens), `contact edge` (t_T of such a law, which jumps where Γ closes), `edge` (a stress on "
+                  "the outer boundary), `interior` (any other); `at s (x, y)` is the worst sample's arc length "
+                  f"along its profile in {self.units.length} (a polar angle in rad on a circular Γ) and its point.")
         lines = [f"Against {self.reference}; {self.excluded()}.{floor}", "",
                  "| method | profile | quantity | class | worst sample | at s (x, y) | RMS |",
                  "|---|---|---|---|---|---|---|"]
