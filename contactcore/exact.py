@@ -280,7 +280,9 @@ class NitscheInterface:
         self._scaled = replace(operator, G=self.augmented)  # forces, stiffness and pattern on G̃
         theta = tol.NITSCHE_THETA
         self.test = (operator.G + theta * (inverse @ operator.S)).tocsr()  # G + θ Γ⁻¹S
-        self._tested = replace(operator, G=self.test)
+        # (G + θ Γ⁻¹S)ᵀ made once (the CSC view scipy's ``.T`` gives, not one
+        # per residual): the forces summed as InterfaceOperator.forces sums them
+        self._test_transposed = self.test.T
         WS = sp.diags(np.repeat(operator.weights / self.gamma, 2)) @ operator.S if len(self.gamma) else operator.S
         self.correction = (-theta * (operator.S.T @ WS)).tocsr()  # C, local numbering
 
@@ -316,7 +318,8 @@ class NitscheInterface:
         local = u if self.exchange is None else self.exchange.forward(u)
         bulk = self.correction @ local
         bulk = bulk if self.exchange is None else self.exchange.reverse(bulk)
-        return self._tested.forces(traction) + bulk
+        forces = self._test_transposed @ (self.weights[:, None] * traction).ravel()  # Tᵀ W t
+        return (forces if self.exchange is None else self.exchange.reverse(forces)) + bulk
 
     def stiffness(self, tangent: np.ndarray) -> sp.csr_matrix:
         return (self._scaled.stiffness(tangent, self.test) + self.correction).tocsr()

@@ -140,7 +140,7 @@ def interface_operator(scene: Scene, fm: FittedMesh, V, degree: int, exchange: "
     facets = facets[facets < fm.mesh.topology.index_map(1).size_local]  # each facet on the rank that owns it
     trip = Triplets((2 * len(facets) * len(xi), exchange.local_size))
     traction = Triplets((2 * len(facets) * len(xi), exchange.local_size)) if exact else None
-    points, weights, stabilisation = [], [], []
+    points, weights, nitsche = [], [], []
     for i, f in enumerate(facets):
         c = ref.f2c.links(f)[0]
         X = ref.facet_points(c, f, xi)
@@ -159,12 +159,12 @@ def interface_operator(scene: Scene, fm: FittedMesh, V, degree: int, exchange: "
         points.append(x)
         weights.append(w_ref * np.linalg.norm(dx_dxi, axis=1))
         if exact:
-            stabilisation.append(_nitsche_rows(scene, ref, dofs, f, xi, x, frame, _mesh_normals(dx_dxi, normals), rows,
-                                               weights[-1].sum(), traction))
+            nitsche.append((f, x, frame, _mesh_normals(dx_dxi, normals), weights[-1].sum()))
+    stabilisation = _nitsche_rows(scene, ref, dofs, xi, nitsche, traction) if exact else None
     S = traction.to_csr() if exact else None
     points, weights = _concatenate(points, 2), _concatenate(weights, 0)
     return InterfaceOperator(trip.to_csr(), weights, points, exchange if exchange.ranks.parallel else None, S=S,
-                             stabilisation=_concatenate(stabilisation, 0) if exact else None,
+                             stabilisation=stabilisation,
                              pieces=piece_centres(points, weights, [len(xi)] * len(facets)))
 
 
@@ -222,65 +222,107 @@ class _Reference:
         a, b = self._ends(c, f)
         return b - a
 
-    def facet_points(self, c: int, f: int, xi: np.ndarray, x: np.ndarray | None = None) -> np.ndarray:
-        """Reference points of cell ``c`` at the parameters ``xi`` of facet
-        ``f``; given the physical points ``x``, those of ``xi`` or of
-        ``1 − xi``, whichever lands on them (the two cells of a facet may
-        run along it in opposite directions)."""
+    def facet_points(self, c: int, f: int, xi: np.ndarray) -> np.ndarray:
+        """Reference points of cell ``c`` at the parameters ``xi`` of facet ``f``."""
         a, b = self._ends(c, f)
-        X = a + xi[:, None] * (b - a)
-        if x is None:
-            return X
-        Y = a + (1.0 - xi)[:, None] * (b - a)
-        return Y if np.abs(self.physical(c, Y) - x).max() < np.abs(self.physical(c, X) - x).max() else X
+        return a + xi[:, None] * (b - a)
 
-    def physical(self, c: int, X: np.ndarray) -> np.ndarray:
-        return self.cmap.tabulate(0, X)[0, :, :, 0] @ self.coords(c)
-
-    def gradients(self, c: int, X: np.ndarray) -> np.ndarray:
-        """``∂N_a/∂x_i`` (points, dofs, 2) of the P element in cell ``c``."""
+    def gradients(self, X: np.ndarray, coords: np.ndarray) -> np.ndarray:
+        """``∂N_a/∂x_i`` (cells, points, dofs, 2) of the P element in cells
+        of nodes ``coords`` (cells, nodes, 2) at the reference points ``X``."""
         geo = self.cmap.tabulate(1, X)[1:, :, :, 0]  # (2, points, nodes): ∂ψ/∂X_k
-        J = np.einsum("kpg,gi->pik", geo, self.coords(c))  # ∂x_i/∂X_k
+        J = np.einsum("kpg,cgi->cpik", geo, coords)  # ∂x_i/∂X_k
         dN = self.element.tabulate(1, X)[1:, :, :, 0]  # (2, points, dofs)
-        return np.einsum("kpa,pki->pai", dN, np.linalg.inv(J))
+        return np.einsum("kpa,cpki->cpai", dN, np.linalg.inv(J))
 
-    def area(self, c: int) -> float:
-        """The straight triangle of the cell's vertices."""
-        return float(polygon_area(self.coords(c)[:3]))
-def _nitsche_rows(scene: Scene, ref: _Reference, dofs, f: int, xi: np.ndarray, x: np.ndarray, frame: np.ndarray,
-                  n: np.ndarray, rows, length: float, S: Triplets) -> np.ndarray:
-    """Facet ``f``'s rows of ``S``, added to ``S``, and its γ₀ at its points
-    ``x`` (parameters ``xi``; :class:`~contactcore.system.InterfaceOperator`).  Each body's
+
+def _nitsche_rows(scene: Scene, ref: _Reference, dofs, xi: np.ndarray, facets: list, S: Triplets) -> np.ndarray:
+    """The rows of ``S`` of Γ's ``facets``, added to ``S``, and γ₀ at their
+    points (parameters ``xi``; :class:`~contactcore.system.InterfaceOperator`);
+    ``facets`` lists, in the rows' order, each facet's ``(f, x, frame, n,
+    length)``: its points ``x``, the level set's frame there, the mesh's
+    normal ``n`` (:func:`_mesh_normals`) and its length.  Each body's
     field is read in the cell on its own side of the facet (it is zero
     beyond its body), its stress by the body's Voigt matrix ``D``:
-    ``τ = frame · σ(u) n`` with ``n`` the mesh's normal (:func:`_mesh_normals`), weighted ``w_k = (|Ω_k|/E_k) / Σ_j |Ω_j|/E_j``
+    ``τ = frame · σ(u) n``, weighted ``w_k = (|Ω_k|/E_k) / Σ_j |Ω_j|/E_j``
     over the two cells ``Ω_k`` (Annavarapu et al., CMAME 2012), and
-    ``γ₀ = 2|Γ^e| / Σ_j |Ω_j|/E_j``."""
+    ``γ₀ = 2|Γ^e| / Σ_j |Ω_j|/E_j``.
+
+    Every facet's numbers are made together, point by point by the same
+    operations a facet at a time would take (the reference points of a
+    cell's edge, run either way, tabulated once each), and each row's
+    entries reach the COO sink in the facet-at-a-time order (the facet's
+    two cells in dolfinx's order, each its x then its y dofs)."""
+    D = scene.voigt_matrices()
+    P = len(xi)
+    if not facets:
+        return np.zeros(0)
+    cells, side = np.zeros((len(facets), 2), np.int64), np.zeros((len(facets), 2), np.int64)
+    for i, (f, *_) in enumerate(facets):
+        cells[i], side[i] = _facet_sides(scene, ref, f)
+    total_cells = cells.ravel()
+    coords = np.stack([ref.coords(c) for c in total_cells])  # (2F, nodes, 2)
+    E = np.array([scene.materials[b].E for b in BODIES])
+    compliance = (polygon_area(coords[:, :3]) / E[side.ravel()]).reshape(-1, 2)  # |Ω_k| / E_k, straight cells
+    total = compliance[:, 0] + compliance[:, 1]
+    share = compliance / total[:, None]
+    x = np.stack([x for _, x, *_ in facets])  # (F, P, 2)
+    frame = np.stack([fr for _, _, fr, *_ in facets])  # (F, P, 2, 2)
+    n = np.stack([nm for *_, nm, _ in facets])  # (F, P, 2)
+    # each cell's reference points on the facet: at x's parameters or at 1 - x's, whichever lands
+    # on x (the facet's two cells may run along it in opposite directions)
+    edge = np.array([int(np.flatnonzero(ref.c2f.links(c) == f)[0]) for c, f in
+                     zip(total_cells, np.repeat([f for f, *_ in facets], 2))])
+    runs = {}
+    for e in np.unique(edge):
+        a, b = ref.ref[ref.edges[e]]
+        for flip, t in ((0, xi), (1, 1.0 - xi)):
+            X = a + t[:, None] * (b - a)
+            runs[e, flip] = X, ref.cmap.tabulate(0, X)[0, :, :, 0]
+    xx = np.repeat(x, 2, axis=0)  # (2F, P, 2): each cell's facet points
+    along = np.stack([runs[e, 0][1] for e in edge]) @ coords  # (2F, P, 2)
+    back = np.stack([runs[e, 1][1] for e in edge]) @ coords
+    flip = (np.abs(back - xx).max(axis=(1, 2)) < np.abs(along - xx).max(axis=(1, 2))).astype(int)
+    grad = np.zeros((len(total_cells), P, ref.element.dim, 2))
+    for e, k in {(e, k) for e, k in zip(edge.tolist(), flip.tolist())}:  # ref.gradients, cells of one X together
+        at = np.flatnonzero((edge == e) & (flip == k))
+        grad[at] = ref.gradients(runs[e, k][0], coords[at])
+    Nx, Ny = grad[..., 0], grad[..., 1]
+    Dc = D[side.ravel()]  # (2F, 3, 3)
+    nn = np.repeat(n, 2, axis=0)
+    nx, ny = nn[..., :1], nn[..., 1:]  # (2F, P, 1)
+    vals = []
+    for e_x, e_y, e_xy in ((Nx, 0.0 * Nx, Ny), (0.0 * Ny, Ny, Nx)):
+        sigma = (Dc[:, :, 0, None, None] * e_x[:, None] + Dc[:, :, 1, None, None] * e_y[:, None]
+                 + Dc[:, :, 2, None, None] * e_xy[:, None])  # (2F, 3, P, dofs): σxx, σyy, σxy
+        sn = np.stack([sigma[:, 0] * nx + sigma[:, 2] * ny, sigma[:, 2] * nx + sigma[:, 1] * ny],
+                      axis=2)  # (2F, P, 2, dofs)
+        vals.append(share.ravel()[:, None, None, None]
+                    * np.einsum("cpij,cpjd->cpid", np.repeat(frame, 2, axis=0), sn))
+    nd = grad.shape[2]
+    vals = np.stack(vals, axis=1).reshape(len(facets), 2, 2, P, 2, nd)  # (F, cell, j, P, row, dofs)
+    cols = np.array([[[dofs[b][j].cell_dofs(c) for j in range(2)] for c, b in zip(cs, sd)]
+                     for cs, sd in zip(cells, side)])  # (F, cell, j, dofs)
+    rows = 2 * (np.arange(len(facets))[:, None] * P + np.arange(P))[:, :, None] + np.arange(2)  # (F, P, row)
+    S.add(rows[:, :, :, None, None, None], cols[:, None, None], vals.transpose(0, 3, 4, 1, 2, 5))
+    return np.repeat(2.0 * np.array([length for *_, length in facets]) / total, P)
+
+
+def _facet_sides(scene: Scene, ref: _Reference, f: int) -> tuple[np.ndarray, np.ndarray]:
+    """Facet ``f``'s two cells and the body each lies in (by the mesher's
+    tag, else its centroid); DiscretisationError where this rank does not
+    hold both or they are not the two bodies."""
     cells = ref.f2c.links(f)
     if len(cells) != 2:
         raise DiscretisationError(f"fe: a facet of Γ has {len(cells)} cell(s) on this rank, not 2 (exact "
                                   "enforcement needs both sides: ghost mode shared_facet)")
-    D = scene.voigt_matrices()
     side = ref.body[cells]
     untagged = side < 0
     if np.any(untagged):  # by the centroid where the mesher's tag is missing
         side = np.where(untagged, scene.body_of(np.array([ref.coords(c)[:3].mean(axis=0) for c in cells])), side)
     if sorted(side) != [0, 1]:
         raise DiscretisationError("fe: a facet of Γ does not separate the two bodies")
-    compliance = {b: ref.area(c) / scene.materials[BODIES[b]].E for c, b in zip(cells, side)}
-    total = sum(compliance.values())
-    for c, b in zip(cells, side):
-        X = ref.facet_points(c, f, xi, x)
-        grad = ref.gradients(c, X)  # (points, dofs, 2)
-        Nx, Ny = grad[..., 0], grad[..., 1]
-        for j, (e_x, e_y, e_xy) in enumerate(((Nx, 0.0 * Nx, Ny), (0.0 * Ny, Ny, Nx))):
-            sigma = (D[b][:, 0, None, None] * e_x + D[b][:, 1, None, None] * e_y
-                     + D[b][:, 2, None, None] * e_xy)  # (3, points, dofs): σxx, σyy, σxy
-            sn = np.stack([sigma[0] * n[:, :1] + sigma[2] * n[:, 1:], sigma[2] * n[:, :1] + sigma[1] * n[:, 1:]],
-                          axis=1)  # (points, 2, dofs)
-            S.add(rows, dofs[b][j].cell_dofs(c)[None, None, :],
-                  compliance[b] / total * np.einsum("pij,pjd->pid", frame, sn))
-    return np.full(len(x), 2.0 * length / total)
+    return cells, side
 
 
 def _concatenate(parts: list, width: int) -> np.ndarray:

@@ -46,7 +46,7 @@ from contactcore.system import InterfaceOperator
 from contactcore.exact import is_exact
 from contactcore.traction import nitsche_weights, traction_maps
 
-from .kernels import side_strains
+from .kernels import heaviside_shift, side_strains, strain_matrix
 
 
 def cell_parts(space, c: int) -> np.ndarray:
@@ -141,22 +141,84 @@ def _edge_traction(space, c: int, D: np.ndarray, moduli: np.ndarray, pts, w, nor
 def traction_operator(space):
     """``(S, γ₀)`` of the space's Γ points (module doc): ``S`` (2m × local
     unknowns) in :func:`xdolfinx.xfem.interface_operator`'s rows and
-    columns, ``γ₀`` (m,) in Pa/m."""
+    columns, ``γ₀`` (m,) in Pa/m.
+
+    The cells read from themselves alone (:func:`cell_traction`'s first
+    case, all but those with Γ along an edge and a whole + cell across it)
+    are computed together, point by point as :func:`cell_traction` does
+    (the same products per point, so the same numbers); the few others
+    cell by cell (:func:`_edge_traction`).  Each row's entries reach the
+    COO sink in the order the cell-by-cell loop gave them, so ``S`` sums
+    any duplicates alike."""
     scene = space.scene
     D = scene.voigt_matrices()
     moduli = np.array([scene.materials[b].E for b in BODIES])
     trip = Triplets((0, 2 * space.num_blocks))
-    gammas, m = [], 0
     edges = space.edge_neighbours()
-    for c in (c for c in space.owned_band if c in space.cut.gamma_rules):
-        blocks, rows, gamma = cell_traction(space, c, D, moduli, edges)  # blocks (2n,): u, then a (−1 if none)
-        P = len(gamma)
-        cols = np.where(blocks[:, None] >= 0, 2 * blocks[:, None] + np.arange(2), -1).ravel()  # (4n,)
-        trip.add(2 * (m + np.arange(P))[:, None, None] + np.arange(2)[None, :, None], cols[None, None, :], rows)
-        gammas.append(gamma)
-        m += P
+    cells = [c for c in space.owned_band if c in space.cut.gamma_rules]
+    sizes = np.array([len(space.cut.gamma_rules[c][1]) for c in cells], dtype=np.int64)
+    starts = np.concatenate([[0], np.cumsum(sizes)])
+    m = int(starts[-1])
+    gamma = np.zeros(m)
+    plain = []  # (cell, its parts): read from the cell alone
+    for i, c in enumerate(cells):
+        pts, w, normals = space.cut.gamma_rules[c]
+        parts = cell_parts(space, c)
+        across = np.full(len(w), -1) if parts[1] > 0 or edges is None else space.across_edge(c, pts, edges)
+        if not np.any(across >= 0):
+            plain.append((i, parts))
+            continue
+        blocks, rows, gamma[starts[i]:starts[i + 1]] = _edge_traction(space, c, D, moduli, pts, w, normals, across)
+        _add_rows(trip, starts[i], blocks, rows)
+    if plain:
+        _plain_tractions(space, trip, D, moduli, [cells[i] for i, _ in plain], np.array([p for _, p in plain]),
+                         starts[[i for i, _ in plain]], gamma)
     trip.shape = (2 * m, trip.shape[1])
-    return trip.to_csr(), np.concatenate(gammas) if gammas else np.zeros(0)
+    return trip.to_csr(), gamma
+
+
+def _add_rows(trip: Triplets, first: int, blocks: np.ndarray, rows: np.ndarray) -> None:
+    """Rows ``rows`` (P, 2, 4n) of the points ``first …`` on the cell's
+    ``blocks`` (2n,: u, then a, −1 if none) into ``trip``."""
+    P = len(rows)
+    cols = np.where(blocks[:, None] >= 0, 2 * blocks[:, None] + np.arange(2), -1).ravel()  # (4n,)
+    trip.add(2 * (first + np.arange(P))[:, None, None] + np.arange(2)[None, :, None], cols[None, None, :], rows)
+
+
+def _plain_tractions(space, trip: Triplets, D: np.ndarray, moduli: np.ndarray, cells: list, parts: np.ndarray,
+                     starts: np.ndarray, gamma: np.ndarray) -> None:
+    """:func:`cell_traction`'s rows and ``γ₀`` of ``cells`` read from
+    themselves alone (``parts`` (C, 2) their − and + areas, ``starts``
+    their first points' rows), all points at once: into ``trip`` and
+    ``gamma``."""
+    rules = [space.cut.gamma_rules[c] for c in cells]
+    count = np.array([len(w) for _, w, _ in rules], dtype=np.int64)
+    cell_of = np.repeat(np.arange(len(cells)), count)  # each point's cell (index into cells)
+    normals = np.concatenate([n for _, _, n in rules])
+    areas = parts[cell_of]
+    weights, g = nitsche_weights(areas, moduli, np.repeat([np.sum(w) for _, w, _ in rules], count))
+    gamma_at = np.repeat(starts, count) + (np.arange(len(cell_of)) - np.repeat(np.cumsum(count) - count, count))
+    gamma[gamma_at] = np.maximum(g, _gamma_floors(parts, moduli, space.cut.cell_size[cells])[cell_of])
+    maps = traction_maps(normals, D, weights)
+    dN = np.concatenate([space.cells.tabulate(c, pts)[1] for c, (pts, _, _) in zip(cells, rules)])  # (M, n, 2)
+    dofs = space.cells.cell_dofs[cells][cell_of]  # (M, n)
+    rows = np.zeros((len(cell_of), 2, 4 * dofs.shape[1]))
+    for body in Body:
+        strain = strain_matrix(dN, heaviside_shift(space, dofs, body.sign))
+        used = weights[:, body] > 0
+        rows[used] += maps[body][used] @ strain[used]
+    blocks = space.cell_blocks(np.asarray(cells))[cell_of]  # (M, 2n)
+    cols = np.where(blocks[:, :, None] >= 0, 2 * blocks[:, :, None] + np.arange(2), -1).reshape(len(cell_of), -1)
+    trip.add(2 * gamma_at[:, None, None] + np.arange(2)[None, :, None], cols[:, None, :], rows)
+
+
+def _gamma_floors(parts: np.ndarray, moduli: np.ndarray, sizes: np.ndarray) -> np.ndarray:
+    """:func:`gamma_floor` of cells of parts ``parts`` (C, 2) and diameters
+    ``sizes`` (C,), the same operations in the same order."""
+    moduli = np.asarray(moduli, float)
+    compliance = parts[:, 0] / moduli[0] + parts[:, 1] / moduli[1]
+    soft = 2.0 * tol.NITSCHE_PIECE_FLOOR * sizes * float(np.min(moduli)) / (parts[:, 0] + parts[:, 1])
+    return np.maximum(soft, 2.0 * tol.NITSCHE_DEGENERATE_PIECE * sizes / compliance)
 
 
 def contrast_warnings(scene, degree: int) -> list[str]:
