@@ -72,9 +72,10 @@ def energy_rule(scene: Scene, h: float, exclude: float = 0.0, gauss: int = tol.E
 
 def energy_norm(scene: Scene, er: EnergyRule, sigma: np.ndarray) -> float:
     """``(Σ_q w_q σᵀ C σ)^½`` over the kept points of ``er`` (σ Voigt, (Q, 3))."""
-    C = np.linalg.inv(scene.voigt_matrices())[er.rule.bodies]
+    sigma = sigma[er.kept]  # each point's density on its own: the kept points' alone
+    C = np.linalg.inv(scene.voigt_matrices())[er.rule.bodies[er.kept]]
     density = np.einsum("qi,qij,qj->q", sigma, C, sigma)
-    return float(np.sqrt(max(er.rule.weights[er.kept] @ density[er.kept], 0.0)))
+    return float(np.sqrt(max(er.rule.weights[er.kept] @ density, 0.0)))
 
 
 def recovered_stress(scene: Scene, er: EnergyRule, sigma: np.ndarray) -> np.ndarray:
@@ -150,9 +151,18 @@ def energy_estimate(scene: Scene, fields, h: float, exclude: float = 0.0, gauss:
         raise ContactError("energy estimate: the fields' stress is recovered but they have no direct_stress "
                            "(σ(u_h)) to set against it (contactcore.result.Fields' note)")
     er = energy_rule(scene, h, exclude, gauss)
-    sigma = direct_stress(fields, er.rule.points, er.rule.bodies)
-    star = (fields.stress(er.rule.points, er.rule.bodies) if recovered
-            else recovered_stress(scene, er, sigma))
+    if recovered and scene.interface.straight_in(scene.domain):
+        # η and the norm read σ_h and σ* at the kept points only (energy_norm); nothing recovers them again
+        # on a straight Γ (recovery_moves), so the rest are not evaluated: zeros there (tilt35, xfem P1 at
+        # h = 0.003125: 12 % of 416 178 points, and their cells' patch fits)
+        sigma, star = (np.zeros((len(er.rule.weights), 3)) for _ in range(2))
+        points, bodies = er.rule.points[er.kept], er.rule.bodies[er.kept]
+        sigma[er.kept] = direct_stress(fields, points, bodies)
+        star[er.kept] = fields.stress(points, bodies)
+    else:
+        sigma = direct_stress(fields, er.rule.points, er.rule.bodies)
+        star = (fields.stress(er.rule.points, er.rule.bodies) if recovered
+                else recovered_stress(scene, er, sigma))
     return EnergyEstimate(energy_norm(scene, er, star - sigma), energy_norm(scene, er, sigma), exclude,
                           tol.NEGLIGIBLE_SHARE * Sizes.of(scene).energy, recovery_moves(scene, er, star))
 
