@@ -86,12 +86,16 @@ class _Grid:
     def inside(self, points: np.ndarray) -> np.ndarray:
         """(P,): the owned cell each point lies well inside, −1 where none
         (outside the grid's owned cells, or within the margin of an edge)."""
-        ij = np.floor((points - self.origin) / self.step)
-        ok = np.all((ij >= 0) & (ij < self.index.shape), axis=1)
-        cell = np.full(len(points), -1, dtype=np.int32)
-        cell[ok] = self.index[ij[ok, 0].astype(np.int64), ij[ok, 1].astype(np.int64)]
-        c = np.maximum(cell, 0)
-        well = np.all((points > self.lo[c] + self.margin[c]) & (points < self.hi[c] - self.margin[c]), axis=1)
+        i = np.floor((points[:, 0] - self.origin[0]) / self.step[0])
+        j = np.floor((points[:, 1] - self.origin[1]) / self.step[1])
+        nx, ny = self.index.shape
+        ok = (i >= 0) & (i < nx) & (j >= 0) & (j < ny)
+        cell = np.take(self.index.ravel(), np.where(ok, i * ny + j, 0).astype(np.int64))
+        cell[~ok] = -1
+        c = np.maximum(cell, 0)  # row gathers by np.take, several times numpy's fancy index
+        lo, hi, margin = (np.take(a, c, axis=0) for a in (self.lo, self.hi, self.margin))
+        well = ((points[:, 0] > lo[:, 0] + margin[:, 0]) & (points[:, 0] < hi[:, 0] - margin[:, 0])
+                & (points[:, 1] > lo[:, 1] + margin[:, 1]) & (points[:, 1] < hi[:, 1] - margin[:, 1]))
         return np.where(well, cell, -1)
 
 
@@ -135,11 +139,10 @@ class BodyCellLocator:
             return self._searched(points, bodies)
         cells = self.grid.inside(points)
         found = cells >= 0
-        found[found] = self.holds[bodies[found], cells[found]]
+        found &= np.take(self.holds.ravel(), np.asarray(bodies, np.int64) * self.holds.shape[1] + np.maximum(cells, 0))
         out = np.where(found, cells, -1).astype(np.int32)
         dist = np.zeros(len(points))
-        key = np.zeros((len(points), 2))
-        key[found] = self.all_midpoints[out[found]]
+        key = np.take(self.all_midpoints, np.maximum(out, 0), axis=0)
         rest = np.flatnonzero(~found)
         if len(rest):
             out[rest], dist[rest], key[rest] = self._searched(points[rest], bodies[rest])

@@ -73,7 +73,7 @@ def energy_rule(scene: Scene, h: float, exclude: float = 0.0, gauss: int = tol.E
 def energy_norm(scene: Scene, er: EnergyRule, sigma: np.ndarray) -> float:
     """``(Σ_q w_q σᵀ C σ)^½`` over the kept points of ``er`` (σ Voigt, (Q, 3))."""
     sigma = sigma[er.kept]  # each point's density on its own: the kept points' alone
-    C = np.linalg.inv(scene.voigt_matrices())[er.rule.bodies[er.kept]]
+    C = np.take(np.linalg.inv(scene.voigt_matrices()), er.rule.bodies[er.kept], axis=0)  # a row gather
     density = np.einsum("qi,qij,qj->q", sigma, C, sigma)
     return float(np.sqrt(max(er.rule.weights[er.kept] @ density, 0.0)))
 
