@@ -58,8 +58,8 @@ def distinct_svd(A: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     sorting the matrices' bytes)."""
     words = np.ascontiguousarray(A).reshape(len(A), -1).view(np.uint64)
     if words.shape[1] <= len(_MIX):
-        _, first, inverse = np.unique((words * _MIX[:words.shape[1]]).sum(axis=1), return_index=True,
-                                      return_inverse=True)
+        # Σ_k word_k mix_k (mod 2^64) as one product: the sum of the products, three times faster
+        _, first, inverse = np.unique(words @ _MIX[:words.shape[1]], return_index=True, return_inverse=True)
     if words.shape[1] > len(_MIX) or not np.array_equal(words, words[first][inverse]):
         key = words.view(np.dtype((np.void, words.shape[1] * words.itemsize))).ravel()
         _, first, inverse = np.unique(key, return_index=True, return_inverse=True)
