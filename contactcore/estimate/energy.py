@@ -72,9 +72,19 @@ def energy_rule(scene: Scene, h: float, exclude: float = 0.0, gauss: int = tol.E
 
 def energy_norm(scene: Scene, er: EnergyRule, sigma: np.ndarray) -> float:
     """``(Σ_q w_q σᵀ C σ)^½`` over the kept points of ``er`` (σ Voigt, (Q, 3))."""
-    sigma = sigma[er.kept]  # each point's density on its own: the kept points' alone
-    C = np.take(np.linalg.inv(scene.voigt_matrices()), er.rule.bodies[er.kept], axis=0)  # a row gather
-    density = np.einsum("qi,qij,qj->q", sigma, C, sigma)
+    sigma, bodies = sigma[er.kept], er.rule.bodies[er.kept]  # each point's density on its own: the kept points'
+    compliance = np.linalg.inv(scene.voigt_matrices())
+    density = np.zeros(len(sigma))
+    for body in np.unique(bodies):
+        # Σ_ij (σ_i C_ij) σ_j summed in einsum("qi,qij,qj->q")'s order, i then j (the same bits), body by
+        # body with its C: no (points, 3, 3) gather, three times faster
+        sel = np.flatnonzero(bodies == body)
+        s = [sigma[sel, i] for i in range(3)]
+        terms = [(s[i] * compliance[body, i, j]) * s[j] for i in range(3) for j in range(3)]
+        acc = terms[0]
+        for term in terms[1:]:
+            acc = acc + term
+        density[sel] = acc
     return float(np.sqrt(max(er.rule.weights[er.kept] @ density, 0.0)))
 
 
