@@ -16,41 +16,24 @@ from mpi4py import MPI
 from scipy.spatial import cKDTree
 
 from contactcore import DiscretisationError
+from contactcore import tolerances as tol
 from contactcore.bodies import Body
 from contactcore.result import check_points
 
 #: Nearest cell midpoints examined before the exact distance decides.
 _NEAREST_CANDIDATES = 8
 
-#: A point farther than this share of its grid cell's side from the cell's
-#: edges, or :data:`_GRID_REACH`, whichever is larger, lies in that cell
-#: alone: dolfinx's collision test (GJK) counts a cell within 1e-12 of a
-#: point as holding it (measured on dolfinx 0.5.2, 2026-11-29: 1e-12 off an
-#: edge already reads one cell), so the grid's answer is dolfinx's.  Nearer
-#: an edge, the point is located as any other (:class:`_Grid`).
-_GRID_MARGIN = 1e-6
-
-#: The absolute floor of :data:`_GRID_MARGIN` (in the mesh's coordinates,
-#: the dimensionless scene's of length about 1): a thousandfold above the
-#: reach of dolfinx's collision test, whatever the cells' size.
-_GRID_REACH = 1e-9
-
-#: How far a cell's corner may lie from its lattice point, a share of the
-#: grid's step, for the mesh to be taken as one axis-aligned grid.
-_GRID_LATTICE = 1e-6
-
-
 class _Grid:
     """The owned cells of a mesh that is one axis-aligned grid of
     rectangles (dolfinx's structured quadrilaterals on a rectangle: xfem's
     background mesh), found from the cells' own corners; None otherwise
     (:meth:`of`).  :meth:`inside` gives the cell a point lies in, well
-    inside it (:data:`_GRID_MARGIN`), by one division and no search: the
+    inside it (:data:`~contactcore.tolerances.GRID_MARGIN`), by one division and no search: the
     cell dolfinx's search finds, as nothing else is near the point."""
 
     def __init__(self, lo: np.ndarray, hi: np.ndarray, origin: np.ndarray, step: np.ndarray, index: np.ndarray):
         self.lo, self.hi, self.origin, self.step, self.index = lo, hi, origin, step, index
-        self.margin = np.maximum(_GRID_MARGIN * (hi - lo), _GRID_REACH)
+        self.margin = np.maximum(tol.GRID_MARGIN * (hi - lo), tol.GRID_REACH)
 
     @classmethod
     def of(cls, msh, ncells: int) -> "_Grid | None":
@@ -71,10 +54,10 @@ class _Grid:
             return None
         step = hi[0] - lo[0]
         origin = lo.min(axis=0)
-        if not np.all(np.abs((hi - lo) - step) <= _GRID_LATTICE * step):
+        if not np.all(np.abs((hi - lo) - step) <= tol.GRID_LATTICE * step):
             return None
         ij = np.round((lo - origin) / step).astype(np.int64)
-        if not np.all(np.abs(origin + ij * step - lo) <= _GRID_LATTICE * step):
+        if not np.all(np.abs(origin + ij * step - lo) <= tol.GRID_LATTICE * step):
             return None
         shape = ij.max(axis=0) + 1
         index = np.full(tuple(shape), -1, dtype=np.int32)
