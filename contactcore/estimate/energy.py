@@ -30,6 +30,7 @@ numpy and scipy only; no method is imported.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
@@ -44,14 +45,31 @@ from .singular import far_from_singular
 
 @dataclass(frozen=True)
 class EnergyRule:
-    """Gauss points of the domain (``rule``) with each point's background
-    cell (``cell``), the grid's node keys of every cell (``keys``), and
-    which points lie away from the singular points (``kept``)."""
+    """Gauss points of the domain (``rule``), which points lie away from
+    the singular points (``kept``), and the grid of background cells they
+    were made on (lower corner ``origin``, side ``step``, cells per
+    direction ``shape``): each point's background cell (``cell``) and the
+    grid's node keys of every cell (``keys``), computed when first read
+    (only :func:`recovered_stress` reads them; 0.05 s of CPU at 1.7e6
+    points, tilt35 at h = 0.0015625)."""
 
     rule: object
-    cell: np.ndarray
-    keys: np.ndarray
     kept: np.ndarray
+    origin: np.ndarray
+    step: float
+    shape: np.ndarray
+
+    @cached_property
+    def cell(self) -> np.ndarray:
+        ij = np.clip(np.floor((self.rule.points - self.origin) / self.step).astype(int), 0, self.shape - 1)
+        return ij[:, 0] * self.shape[1] + ij[:, 1]
+
+    @cached_property
+    def keys(self) -> np.ndarray:
+        n = self.shape
+        I, J = np.divmod(np.arange(n[0] * n[1]), n[1])
+        node = lambda i, j: i * (n[1] + 1) + j  # noqa: E731
+        return np.column_stack([node(I, J), node(I + 1, J), node(I, J + 1), node(I + 1, J + 1)])
 
 
 def energy_rule(scene: Scene, h: float, exclude: float = 0.0, gauss: int = tol.ENERGY_GAUSS) -> EnergyRule:
@@ -62,12 +80,7 @@ def energy_rule(scene: Scene, h: float, exclude: float = 0.0, gauss: int = tol.E
     step = hi[0] - lo[0]
     origin = lo.min(axis=0)
     n = np.round((hi.max(axis=0) - origin) / step).astype(int)
-    ij = np.clip(np.floor((rule.points - origin) / step).astype(int), 0, n - 1)
-    cell = ij[:, 0] * n[1] + ij[:, 1]
-    I, J = np.divmod(np.arange(n[0] * n[1]), n[1])
-    node = lambda i, j: i * (n[1] + 1) + j  # noqa: E731
-    keys = np.column_stack([node(I, J), node(I + 1, J), node(I, J + 1), node(I + 1, J + 1)])
-    return EnergyRule(rule, cell, keys, far_from_singular(scene, rule.points, exclude))
+    return EnergyRule(rule, far_from_singular(scene, rule.points, exclude), origin, step, n)
 
 
 def energy_norm(scene: Scene, er: EnergyRule, sigma: np.ndarray) -> float:

@@ -77,16 +77,26 @@ class XFEMFields:
         J = take(basis.inverse, cells)
         X = np.einsum("pa,pda->pd", points - take(basis.origin, cells), J)
         tab = basis.element.tabulate(1 if gradient else 0, X)
-        dofs = take(basis.cell_dofs, cells)
-        U = take(self.blocks, dofs)                                             # (P, n, 4)
-        shift = heaviside_shift(space, dofs, sign_of_index(bodies))             # (P, n)
         if not gradient:
+            dofs = take(basis.cell_dofs, cells)
+            U = take(self.blocks, dofs)                                         # (P, n, 4)
+            shift = heaviside_shift(space, dofs, sign_of_index(bodies))         # (P, n)
             vec = U[..., :2] + shift[..., None] * U[..., 2:]                    # (P, n, 2)
             return np.einsum("pn,pnk->pk", tab[0, :, :, 0], vec)
         # node by node along the points, (n, P): vec_k = u_k + shift a_k, dN_d = Σ_e ∂N/∂X_e J_ed, and
         # du_kd = Σ_j dN_jd vec_jk summed in j's order, the same bits as the (P, n, 2) broadcasts they
-        # replace, which numpy ran several times slower over their short last axes
-        vec = [U[..., k].T + shift.T * U[..., 2 + k].T for k in range(2)]      # (n, P) each
+        # replace, which numpy ran several times slower over their short last axes.  vec is a cell's
+        # and body's: computed once for each run of points in one cell and body (the energy estimate's
+        # Gauss points come cell by cell, 4 to a run) and repeated over its points
+        new = np.r_[True, (cells[1:] != cells[:-1]) | (bodies[1:] != bodies[:-1])]
+        first = np.flatnonzero(new)
+        dofs = take(basis.cell_dofs, cells[first])
+        U = take(self.blocks, dofs)                                             # (runs, n, 4)
+        shift = heaviside_shift(space, dofs, sign_of_index(bodies[first]))      # (runs, n)
+        vec = [U[..., k].T + shift.T * U[..., 2 + k].T for k in range(2)]      # (n, runs) each
+        if len(first) < len(cells):
+            run = np.cumsum(new) - 1
+            vec = [np.take(v, run, axis=1) for v in vec]                        # (n, P) each
         dN = [tab[1, :, :, 0].T * J[:, 0, d] + tab[2, :, :, 0].T * J[:, 1, d] for d in range(2)]
         du = np.empty((len(points), 2, 2))
         for k in range(2):
