@@ -58,8 +58,8 @@ def distinct_svd(A: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     sorting the matrices' bytes)."""
     words = np.ascontiguousarray(A).reshape(len(A), -1).view(np.uint64)
     if words.shape[1] <= len(_MIX):
-        _, first, inverse = np.unique((words * _MIX[:words.shape[1]]).sum(axis=1), return_index=True,
-                                      return_inverse=True)
+        # Σ_k word_k mix_k (mod 2^64) as one product: the sum of the products, three times faster
+        _, first, inverse = np.unique(words @ _MIX[:words.shape[1]], return_index=True, return_inverse=True)
     if words.shape[1] > len(_MIX) or not np.array_equal(words, words[first][inverse]):
         key = words.view(np.dtype((np.void, words.shape[1] * words.itemsize))).ravel()
         _, first, inverse = np.unique(key, return_index=True, return_inverse=True)
@@ -121,8 +121,10 @@ class PatchRecovery:
         todo = np.unique(cells[~self._fitted[cells]])
         for start in range(0, len(todo), FIT_BATCH):
             self._fit(todo[start:start + FIT_BATCH])
-        d = (points - self._origin[cells]) / self._length[cells, None]
-        return np.einsum("pi,pic->pc", quadratic_basis(d, 6), self._coef[cells])
+        # row gathers by np.take, the offsets column by column (the same bits; as in _fit)
+        origin, length = np.take(self._origin, cells, axis=0), np.take(self._length, cells)
+        d = np.column_stack([(points[:, 0] - origin[:, 0]) / length, (points[:, 1] - origin[:, 1]) / length])
+        return np.einsum("pi,pic->pc", quadratic_basis(d, 6), np.take(self._coef, cells, axis=0))
 
     def _fit(self, targets: np.ndarray) -> None:
         """Fit the patches of the cells ``targets`` (their origin, length and
@@ -132,24 +134,42 @@ class PatchRecovery:
         index, centroids, areas, sig = self.sample, self.centroids, self.areas, self.sigma
         sub = self.patches(targets)
         rows = np.repeat(np.arange(len(targets)), np.diff(sub.indptr))
-        member = index[sub.indices]
+        member = np.take(index, sub.indices)
         keep = member >= 0
         rows, member = rows[keep], member[keep]
         count = np.bincount(rows, minlength=len(targets))
-        pos = np.arange(len(rows)) - np.repeat(np.cumsum(count) - count, count)
+        first = np.cumsum(count) - count
+        pos = np.arange(len(rows)) - np.repeat(first, count)
+        area = np.take(areas, member)
         largest = np.zeros(len(targets))
         some = count > 0
         if some.any():
-            largest[some] = np.maximum.reduceat(areas[member], (np.cumsum(count) - count)[some])
-        origin, length = centroids[index[targets]], np.sqrt(largest)
-        weight = np.sqrt(areas[member] / largest[rows])
-        d = (centroids[member] - origin[rows]) / length[rows, None]
+            largest[some] = np.maximum.reduceat(area, first[some])
+        origin, length = np.take(centroids, np.take(index, targets), axis=0), np.sqrt(largest)
+        # Row gathers by np.take and arithmetic column by column: the values of
+        # ``quadratic_basis(d, 6) * weight[:, None]`` and ``sig[member] * weight[:, None]``
+        # bit for bit, without numpy's slow broadcast over a last axis of 2, 3 or 6
+        # (rows run patch by patch, so a patch's value over its rows is a repeat)
+        weight = np.sqrt(area / np.repeat(largest, count))
+        at_x = np.take(centroids, member, axis=0)
+        scale = np.repeat(length, count)
+        d0 = (at_x[:, 0] - np.repeat(origin[:, 0], count)) / scale
+        d1 = (at_x[:, 1] - np.repeat(origin[:, 1], count)) / scale
         longest = count.max(initial=0)
-        A = np.zeros((len(targets), longest, 6))
-        Y = np.zeros((len(targets), longest, 3))
-        at = rows * longest + pos  # (row, pos) in the flattened stacks
-        A.reshape(-1, 6)[at] = quadratic_basis(d, 6) * weight[:, None]
-        Y.reshape(-1, 3)[at] = sig[member] * weight[:, None]
+        basis = np.empty((9, len(rows)))  # the 6 columns of A, then the 3 of Y
+        basis[0] = weight
+        np.multiply(d0, weight, out=basis[1])
+        np.multiply(d1, weight, out=basis[2])
+        np.multiply(d0 * d0, weight, out=basis[3])
+        np.multiply(d0 * d1, weight, out=basis[4])
+        np.multiply(d1 * d1, weight, out=basis[5])
+        values = np.take(sig, member, axis=0)
+        for k in range(3):
+            np.multiply(values[:, k], weight, out=basis[6 + k])
+        both = np.zeros((len(targets) * longest, 9))
+        both[rows * longest + pos] = basis.T  # (row, pos) in the flattened stacks
+        both = both.reshape(len(targets), longest, 9)
+        A, Y = np.ascontiguousarray(both[..., :6]), np.ascontiguousarray(both[..., 6:])
         coef = np.full((len(targets), 6, 3), np.nan)  # a line's: its quadratic terms 0
         for terms in (6, 3):
             todo = np.flatnonzero(np.isnan(coef[:, 0, 0]) & (count > terms))

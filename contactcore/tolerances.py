@@ -1624,3 +1624,21 @@ QUADRATURE_ENERGY_SHARE = 1e-4
 #: marker of A5's miss (the smooth part converges below 2λ as well), not
 #: a bound: of the six entries it names on A, B, C one lies outside.
 SPLIT_CELL_SHARE = 0.4
+
+# --- estcost (2026-11-29): xfem's cells found on its grid (xdolfinx.evaluation) ---
+#: A point farther than this share of its grid cell's side from the cell's
+#: edges, or GRID_REACH, whichever is larger, lies in that cell alone:
+#: dolfinx's collision test (GJK) counts a cell within about 1e-12 of a
+#: point as holding it (dolfinx 0.5.2, measured 2026-11-29: a point 1e-12
+#: off an edge already reads one cell), so xdolfinx.evaluation's grid
+#: answers as dolfinx's search.  Nearer an edge, a point is searched.
+GRID_MARGIN = 1e-6
+
+#: The absolute floor of GRID_MARGIN (the mesh's coordinates, the
+#: dimensionless scene's of length about 1): a thousandfold above the
+#: reach of dolfinx's collision test, whatever the cells' size.
+GRID_REACH = 1e-9
+
+#: How far a cell's corner may lie from its lattice point, a share of the
+#: grid's step, for a mesh to be taken as one axis-aligned grid.
+GRID_LATTICE = 1e-6

@@ -16,11 +16,70 @@ from mpi4py import MPI
 from scipy.spatial import cKDTree
 
 from contactcore import DiscretisationError
+from contactcore import tolerances as tol
 from contactcore.bodies import Body
 from contactcore.result import check_points
 
 #: Nearest cell midpoints examined before the exact distance decides.
 _NEAREST_CANDIDATES = 8
+
+class _Grid:
+    """The owned cells of a mesh that is one axis-aligned grid of
+    rectangles (dolfinx's structured quadrilaterals on a rectangle: xfem's
+    background mesh), found from the cells' own corners; None otherwise
+    (:meth:`of`).  :meth:`inside` gives the cell a point lies in, well
+    inside it (:data:`~contactcore.tolerances.GRID_MARGIN`), by one division and no search: the
+    cell dolfinx's search finds, as nothing else is near the point."""
+
+    def __init__(self, lo: np.ndarray, hi: np.ndarray, origin: np.ndarray, step: np.ndarray, index: np.ndarray):
+        self.lo, self.hi, self.origin, self.step, self.index = lo, hi, origin, step, index
+        self.margin = np.maximum(tol.GRID_MARGIN * (hi - lo), tol.GRID_REACH)
+
+    @classmethod
+    def of(cls, msh, ncells: int) -> "_Grid | None":
+        """The grid of the ``ncells`` owned cells of ``msh``, or None where
+        they are not one (not quadrilaterals, not axis-aligned rectangles
+        of one size on one lattice)."""
+        if msh.topology.cell_name() != "quadrilateral" or ncells == 0:
+            return None
+        dofs = msh.geometry.dofmap.array.reshape(-1, msh.geometry.dofmap.offsets[1])[:ncells]
+        if dofs.shape[1] != 4:
+            return None
+        corners = msh.geometry.x[dofs][..., :2]                    # (cells, 4, 2)
+        lo, hi = corners.min(axis=1), corners.max(axis=1)
+        at_hi = corners == hi[:, None]
+        on_box = np.all(at_hi | (corners == lo[:, None]), axis=(1, 2))
+        code = np.sort(at_hi[..., 0] + 2 * at_hi[..., 1], axis=1)
+        if not (np.all(on_box) and np.all(code == np.arange(4)) and np.all(hi > lo)):
+            return None
+        step = hi[0] - lo[0]
+        origin = lo.min(axis=0)
+        if not np.all(np.abs((hi - lo) - step) <= tol.GRID_LATTICE * step):
+            return None
+        ij = np.round((lo - origin) / step).astype(np.int64)
+        if not np.all(np.abs(origin + ij * step - lo) <= tol.GRID_LATTICE * step):
+            return None
+        shape = ij.max(axis=0) + 1
+        index = np.full(tuple(shape), -1, dtype=np.int32)
+        index[ij[:, 0], ij[:, 1]] = np.arange(ncells, dtype=np.int32)
+        if np.count_nonzero(index >= 0) != ncells:  # two cells on one lattice point
+            return None
+        return cls(lo, hi, origin, step, index)
+
+    def inside(self, points: np.ndarray) -> np.ndarray:
+        """(P,): the owned cell each point lies well inside, −1 where none
+        (outside the grid's owned cells, or within the margin of an edge)."""
+        i = np.floor((points[:, 0] - self.origin[0]) / self.step[0])
+        j = np.floor((points[:, 1] - self.origin[1]) / self.step[1])
+        nx, ny = self.index.shape
+        ok = (i >= 0) & (i < nx) & (j >= 0) & (j < ny)
+        cell = np.take(self.index.ravel(), np.where(ok, i * ny + j, 0).astype(np.int64))
+        cell[~ok] = -1
+        c = np.maximum(cell, 0)  # row gathers by np.take, several times numpy's fancy index
+        lo, hi, margin = (np.take(a, c, axis=0) for a in (self.lo, self.hi, self.margin))
+        well = ((points[:, 0] > lo[:, 0] + margin[:, 0]) & (points[:, 0] < hi[:, 0] - margin[:, 0])
+                & (points[:, 1] > lo[:, 1] + margin[:, 1]) & (points[:, 1] < hi[:, 1] - margin[:, 1]))
+        return np.where(well, cell, -1)
 
 
 class BodyCellLocator:
@@ -42,6 +101,7 @@ class BodyCellLocator:
         self.body_cells = [c[c < ncells] for c in body_cells]
         self.midpoints = [compute_midpoints(msh, tdim, c)[:, :2] for c in self.body_cells]
         self.kdtrees = [cKDTree(m) for m in self.midpoints]
+        self.grid = _Grid.of(msh, ncells)  # a structured mesh's cells found without a search
         self._last = None  # the last choose's points, bodies and answer (:meth:`choose`)
 
     def cells(self, points: np.ndarray, bodies: np.ndarray) -> np.ndarray:
@@ -54,7 +114,25 @@ class BodyCellLocator:
     def cells_and_distances(self, points: np.ndarray, bodies: np.ndarray):
         """:meth:`cells` among this rank's owned cells, the squared distance
         from each point to its cell (0 inside it; inf, with cell −1, where
-        this rank owns no cell of that body) and the cell's midpoint."""
+        this rank owns no cell of that body) and the cell's midpoint.
+        On a grid (:class:`_Grid`), a point well inside a cell of its body
+        takes that cell at distance 0 without a search (the answer of the
+        search: no other cell is near it); the others are searched."""
+        if self.grid is None:
+            return self._searched(points, bodies)
+        cells = self.grid.inside(points)
+        found = cells >= 0
+        found &= np.take(self.holds.ravel(), np.asarray(bodies, np.int64) * self.holds.shape[1] + np.maximum(cells, 0))
+        out = np.where(found, cells, -1).astype(np.int32)
+        dist = np.zeros(len(points))
+        key = np.take(self.all_midpoints, np.maximum(out, 0), axis=0)
+        rest = np.flatnonzero(~found)
+        if len(rest):
+            out[rest], dist[rest], key[rest] = self._searched(points[rest], bodies[rest])
+        return out, dist, key
+
+    def _searched(self, points: np.ndarray, bodies: np.ndarray):
+        """:meth:`cells_and_distances` by dolfinx's search of every point."""
         p3 = np.zeros((len(points), 3))
         p3[:, :2] = points
         colliding = geometry.compute_colliding_cells(self.msh, geometry.compute_collisions(self.tree, p3), p3)

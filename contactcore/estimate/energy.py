@@ -30,6 +30,7 @@ numpy and scipy only; no method is imported.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
@@ -44,14 +45,31 @@ from .singular import far_from_singular
 
 @dataclass(frozen=True)
 class EnergyRule:
-    """Gauss points of the domain (``rule``) with each point's background
-    cell (``cell``), the grid's node keys of every cell (``keys``), and
-    which points lie away from the singular points (``kept``)."""
+    """Gauss points of the domain (``rule``), which points lie away from
+    the singular points (``kept``), and the grid of background cells they
+    were made on (lower corner ``origin``, side ``step``, cells per
+    direction ``shape``): each point's background cell (``cell``) and the
+    grid's node keys of every cell (``keys``), computed when first read
+    (only :func:`recovered_stress` reads them; 0.05 s of CPU at 1.7e6
+    points, tilt35 at h = 0.0015625)."""
 
     rule: object
-    cell: np.ndarray
-    keys: np.ndarray
     kept: np.ndarray
+    origin: np.ndarray
+    step: float
+    shape: np.ndarray
+
+    @cached_property
+    def cell(self) -> np.ndarray:
+        ij = np.clip(np.floor((self.rule.points - self.origin) / self.step).astype(int), 0, self.shape - 1)
+        return ij[:, 0] * self.shape[1] + ij[:, 1]
+
+    @cached_property
+    def keys(self) -> np.ndarray:
+        n = self.shape
+        I, J = np.divmod(np.arange(n[0] * n[1]), n[1])
+        node = lambda i, j: i * (n[1] + 1) + j  # noqa: E731
+        return np.column_stack([node(I, J), node(I + 1, J), node(I, J + 1), node(I + 1, J + 1)])
 
 
 def energy_rule(scene: Scene, h: float, exclude: float = 0.0, gauss: int = tol.ENERGY_GAUSS) -> EnergyRule:
@@ -62,19 +80,25 @@ def energy_rule(scene: Scene, h: float, exclude: float = 0.0, gauss: int = tol.E
     step = hi[0] - lo[0]
     origin = lo.min(axis=0)
     n = np.round((hi.max(axis=0) - origin) / step).astype(int)
-    ij = np.clip(np.floor((rule.points - origin) / step).astype(int), 0, n - 1)
-    cell = ij[:, 0] * n[1] + ij[:, 1]
-    I, J = np.divmod(np.arange(n[0] * n[1]), n[1])
-    node = lambda i, j: i * (n[1] + 1) + j  # noqa: E731
-    keys = np.column_stack([node(I, J), node(I + 1, J), node(I, J + 1), node(I + 1, J + 1)])
-    return EnergyRule(rule, cell, keys, far_from_singular(scene, rule.points, exclude))
+    return EnergyRule(rule, far_from_singular(scene, rule.points, exclude), origin, step, n)
 
 
 def energy_norm(scene: Scene, er: EnergyRule, sigma: np.ndarray) -> float:
     """``(Σ_q w_q σᵀ C σ)^½`` over the kept points of ``er`` (σ Voigt, (Q, 3))."""
-    C = np.linalg.inv(scene.voigt_matrices())[er.rule.bodies]
-    density = np.einsum("qi,qij,qj->q", sigma, C, sigma)
-    return float(np.sqrt(max(er.rule.weights[er.kept] @ density[er.kept], 0.0)))
+    sigma, bodies = sigma[er.kept], er.rule.bodies[er.kept]  # each point's density on its own: the kept points'
+    compliance = np.linalg.inv(scene.voigt_matrices())
+    density = np.zeros(len(sigma))
+    for body in np.unique(bodies):
+        # Σ_ij (σ_i C_ij) σ_j summed in einsum("qi,qij,qj->q")'s order, i then j (the same bits), body by
+        # body with its C: no (points, 3, 3) gather, three times faster
+        sel = np.flatnonzero(bodies == body)
+        s = [sigma[sel, i] for i in range(3)]
+        terms = [(s[i] * compliance[body, i, j]) * s[j] for i in range(3) for j in range(3)]
+        acc = terms[0]
+        for term in terms[1:]:
+            acc = acc + term
+        density[sel] = acc
+    return float(np.sqrt(max(er.rule.weights[er.kept] @ density, 0.0)))
 
 
 def recovered_stress(scene: Scene, er: EnergyRule, sigma: np.ndarray) -> np.ndarray:
@@ -150,9 +174,18 @@ def energy_estimate(scene: Scene, fields, h: float, exclude: float = 0.0, gauss:
         raise ContactError("energy estimate: the fields' stress is recovered but they have no direct_stress "
                            "(σ(u_h)) to set against it (contactcore.result.Fields' note)")
     er = energy_rule(scene, h, exclude, gauss)
-    sigma = direct_stress(fields, er.rule.points, er.rule.bodies)
-    star = (fields.stress(er.rule.points, er.rule.bodies) if recovered
-            else recovered_stress(scene, er, sigma))
+    if recovered and scene.interface.straight_in(scene.domain):
+        # η and the norm read σ_h and σ* at the kept points only (energy_norm); nothing recovers them again
+        # on a straight Γ (recovery_moves), so the rest are not evaluated: zeros there (tilt35, xfem P1 at
+        # h = 0.003125: 12 % of 416 178 points, and their cells' patch fits)
+        sigma, star = (np.zeros((len(er.rule.weights), 3)) for _ in range(2))
+        points, bodies = er.rule.points[er.kept], er.rule.bodies[er.kept]
+        sigma[er.kept] = direct_stress(fields, points, bodies)
+        star[er.kept] = fields.stress(points, bodies)
+    else:
+        sigma = direct_stress(fields, er.rule.points, er.rule.bodies)
+        star = (fields.stress(er.rule.points, er.rule.bodies) if recovered
+                else recovered_stress(scene, er, sigma))
     return EnergyEstimate(energy_norm(scene, er, star - sigma), energy_norm(scene, er, sigma), exclude,
                           tol.NEGLIGIBLE_SHARE * Sizes.of(scene).energy, recovery_moves(scene, er, star))
 

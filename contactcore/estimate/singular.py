@@ -342,6 +342,10 @@ def far_from_singular(scene: Scene, points: np.ndarray, exclude: float) -> np.nd
     sing = singular_points(scene)
     if len(sing) == 0 or exclude <= 0:
         return np.ones(len(points), bool)
-    distance = np.min(np.linalg.norm(points[:, None, :] - sing[None], axis=-1), axis=1)
+    points = np.asarray(points, float)
+    distance = np.full(len(points), np.inf)
+    for s in sing:  # np.linalg.norm's √(dx² + dy²), one singular point at a time: no (points, 6, 2) arrays
+        dx, dy = points[:, 0] - s[0], points[:, 1] - s[1]
+        np.minimum(distance, np.sqrt(dx * dx + dy * dy), out=distance)
     return distance >= exclude * (1 - tol.GEOMETRY)
 

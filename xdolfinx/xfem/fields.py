@@ -77,18 +77,34 @@ class XFEMFields:
         J = take(basis.inverse, cells)
         X = np.einsum("pa,pda->pd", points - take(basis.origin, cells), J)
         tab = basis.element.tabulate(1 if gradient else 0, X)
-        dofs = take(basis.cell_dofs, cells)
-        U = take(self.blocks, dofs)                                             # (P, n, 4)
-        shift = heaviside_shift(space, dofs, sign_of_index(bodies))             # (P, n)
-        vec = U[..., :2] + shift[..., None] * U[..., 2:]                        # (P, n, 2)
         if not gradient:
+            dofs = take(basis.cell_dofs, cells)
+            U = take(self.blocks, dofs)                                         # (P, n, 4)
+            shift = heaviside_shift(space, dofs, sign_of_index(bodies))         # (P, n)
+            vec = U[..., :2] + shift[..., None] * U[..., 2:]                    # (P, n, 2)
             return np.einsum("pn,pnk->pk", tab[0, :, :, 0], vec)
-        # dN = Σ_d ∂N/∂X_d J_d· and du = Σ_j dN_j ⊗ vec_j, summed term by term in einsum's order (the same
-        # bits), two to three times faster than einsum over these short axes
-        dN = tab[1, :, :, 0, None] * J[:, None, 0, :] + tab[2, :, :, 0, None] * J[:, None, 1, :]
-        du = dN[:, 0, None, :] * vec[:, 0, :, None]
-        for j in range(1, dN.shape[1]):
-            du = du + dN[:, j, None, :] * vec[:, j, :, None]
+        # node by node along the points, (n, P): vec_k = u_k + shift a_k, dN_d = Σ_e ∂N/∂X_e J_ed, and
+        # du_kd = Σ_j dN_jd vec_jk summed in j's order, the same bits as the (P, n, 2) broadcasts they
+        # replace, which numpy ran several times slower over their short last axes.  vec is a cell's
+        # and body's: computed once for each run of points in one cell and body (the energy estimate's
+        # Gauss points come cell by cell, 4 to a run) and repeated over its points
+        new = np.r_[True, (cells[1:] != cells[:-1]) | (bodies[1:] != bodies[:-1])]
+        first = np.flatnonzero(new)
+        dofs = take(basis.cell_dofs, cells[first])
+        U = take(self.blocks, dofs)                                             # (runs, n, 4)
+        shift = heaviside_shift(space, dofs, sign_of_index(bodies[first]))      # (runs, n)
+        vec = [U[..., k].T + shift.T * U[..., 2 + k].T for k in range(2)]      # (n, runs) each
+        if len(first) < len(cells):
+            run = np.cumsum(new) - 1
+            vec = [np.take(v, run, axis=1) for v in vec]                        # (n, P) each
+        dN = [tab[1, :, :, 0].T * J[:, 0, d] + tab[2, :, :, 0].T * J[:, 1, d] for d in range(2)]
+        du = np.empty((len(points), 2, 2))
+        for k in range(2):
+            for d in range(2):
+                acc = dN[d][0] * vec[k][0]
+                for j in range(1, len(vec[k])):
+                    acc = acc + dN[d][j] * vec[k][j]
+                du[:, k, d] = acc
         out = np.zeros((len(points), 3))
         for body in np.unique(bodies):
             sel = bodies == body
