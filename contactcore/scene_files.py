@@ -35,7 +35,11 @@ SPELLING_LIKENESS = 0.7
 
 def _closest(name: str, candidates) -> str | None:
     """The candidate most like ``name``, if any is as alike as
-    :data:`SPELLING_LIKENESS`."""
+    :data:`SPELLING_LIKENESS` or differs from it in case alone ('e' for
+    'E')."""
+    by_case = sorted(c for c in candidates if c.casefold() == name.casefold())
+    if by_case:
+        return by_case[0]
     close = difflib.get_close_matches(name, sorted(candidates), n=1, cutoff=SPELLING_LIKENESS)
     return close[0] if close else None
 

@@ -57,6 +57,7 @@ def test_the_section_lists_every_profile_quantity_and_both_status_splits(coulomb
         assert f"| fe (p1) | {enforcement} |" in text
     assert json.loads((coulomb_run / "run.json").read_text())["against_exact"] is True
     assert (coulomb_run / "fe" / "exact" / "increments.csv").exists()
+    assert json.loads((coulomb_run / "fe" / "exact" / "summary.json").read_text())["ranks"] == 1  # as its twin's
 
 
 def test_the_shares_are_the_difference_of_the_written_profiles(coulomb_run):

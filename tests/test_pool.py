@@ -90,6 +90,8 @@ def test_the_quick_report_runs_on_an_mpi4py_futures_pool(tmp_path):
     assert out.returncode == 0, out.stderr
     text = (tmp_path / "r" / "report.md").read_text()
     assert "layered-slip" in text and "Newton iterations" in text
+    run = json.loads((tmp_path / "r" / "run.json").read_text())  # the pool's command; each solve on one rank
+    assert run["command"].startswith("mpirun -n 3 python -m mpi4py.futures -m verification report") and run["ranks"] == 1
 
 
 def test_a_failing_point_is_recorded_and_the_pool_goes_on(tmp_path, capsys):

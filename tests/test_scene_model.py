@@ -151,6 +151,10 @@ def test_a_misspelt_key_is_named_with_the_key_it_is_like(scene_dict):
     with pytest.raises(SceneError, match=r"^materials.plus: missing \(is 'plsu', given, a misspelling of it\?\)$"):
         scene_from_dict(data)
     data = scene_dict("A")
+    data["materials"]["minus"]["e"] = data["materials"]["minus"].pop("E")  # case alone
+    with pytest.raises(SceneError, match=r"^materials.minus.E: missing \(is 'e', given, a misspelling of it\?\)$"):
+        scene_from_dict(data)
+    data = scene_dict("A")
     data["colour"] = "red"
     with pytest.raises(SceneError, match=r"^colour: unknown key$"):
         scene_from_dict(data)

@@ -483,7 +483,6 @@ def _write_method(out: Path, scene: Scene, name: str, result, est, fields: bool,
     label.  Returns its summary."""
     label = f"{name} (p{result.degree})"
     summary, sampled = _written_profiles(out / name, scene, result, est, floors)
-    summary["ranks"] = files.ranks()
     if label in gaps:
         summary["against_exact"] = gaps[label]
     if est is not None:
@@ -507,9 +506,10 @@ def _write_method(out: Path, scene: Scene, name: str, result, est, fields: bool,
 def _written_profiles(folder: Path, scene: Scene, result, est, floors: dict | None = None) -> tuple[dict, list]:
     """``result``'s profiles of ``scene`` written under ``folder/profiles``,
     with their estimated errors if ``est`` (else None) has them; returns
-    its summary (with ``"estimate"``, :func:`estimate_record` with
-    ``floors``) and the profiles."""
-    summary = result.summary()
+    its summary (with ``"ranks"``, :func:`verification.files.ranks`, and
+    ``"estimate"``, :func:`estimate_record` with ``floors``) and the
+    profiles."""
+    summary = {**result.summary(), "ranks": files.ranks()}
     sampled = est.sampled if est is not None else sample_profiles(scene, result.fields, result.interface)
     if est is not None:
         summary["estimate"] = estimate_record(scene, est, sampled, floors)

@@ -6,13 +6,16 @@ the solver's condition estimate and backward error, and the outcome of
 :mod:`verification.outcomes` (accurate, warned, refused — or wrong, which is
 a bug).  The sweeps:
 
-* ``kN``, ``kT``: one spring stiffness ``k = α·E/h`` with α from 1e-3 to
-  1e8 (E the stiffer material's modulus, h the method's cell size or node
-  spacing), on the inclined interface patch (exact for every method and
-  every k) and on the curved closed forms (``kN`` on the pressurised rod,
-  ``kT`` on the twisted rod);
-* ``contrast``: ``E⁺/E⁻`` from 1e-4 to 1e4 on the patch and on the
-  pressurised rod;
+Every case is solved at ``h = H`` (0.1) but ``false_tN``, at scene B's own
+h (0.05).
+
+* ``kN``, ``kT``: one spring stiffness ``k = α·E/h`` (E the stiffer
+  material's modulus, h the method's cell size or node spacing) with α
+  from 1e-12 to 1e12 on the inclined interface patch (exact for every
+  method and every k) and from 1e-3 to 1e8 on the curved closed forms
+  (``kN`` on the pressurised rod, ``kT`` on the twisted rod);
+* ``contrast``: ``E⁺/E⁻`` from 1e-12 to 1e12 on the patch and from 1e-4 to
+  1e4 on the pressurised rod;
 * ``cut``: Γ at ``y = 0.5 + f·h`` with f from 1e-1 down to 1e-10 (cells of
   XFEM and node rows of EFGM cut into slivers), through a row of nodes and
   along edges (f = 0), and diagonally through nodes;

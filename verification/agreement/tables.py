@@ -64,11 +64,13 @@ class AgreementTable:
                   "t_T against |t|, a stress against the stresses its profile samples), at least "
                   f"{NEGLIGIBLE_SHARE:g} of the scene's own scale (round-off): the worst sample is the largest "
                   "|difference| over the largest size on the profile (not over the size at that sample), the RMS "
-                  "the RMS difference over the RMS size. A quantity's class names what it is: `interface` (Γ's "
+                  "the RMS difference over the RMS size. A quantity's class names what it is: `zero` (exactly zero in "
+                  "a paper scene: scene B's g_N and t_N on B6), `interface` (Γ's "
                   "gaps and tractions under a linear law), `contact` (g_N, g_T, t_N of a law that opens: kinks where "
                   "Γ opens), `contact edge` (t_T of such a law, which jumps where Γ closes), `edge` (a stress on "
-                  "the outer boundary), `interior` (any other); `at s (x, y)` is the worst sample's arc length "
-                  f"along its profile in {self.units.length} (a polar angle in rad on a circular Γ) and its point.")
+                  "the outer boundary), `interior` (any other); `at s (x, y)` is the worst sample's parameter "
+                  f"along its profile, the arc length in {self.units.length} (on a circular Γ the polar angle in "
+                  "rad, unless the profile asks for the arc length), and its point.")
         lines = [f"Against {self.reference}; {self.excluded()}.{floor}", "",
                  "| method | profile | quantity | class | worst sample | at s (x, y) | RMS |",
                  "|---|---|---|---|---|---|---|"]
