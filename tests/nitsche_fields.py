@@ -2,6 +2,13 @@
 the built system's ``S`` and ``γ`` per method, and the unknowns of a field
 given separately on each side of Γ.
 
+fe (xdolfinx.conforming) has one Lagrange field per body on the whole
+fitted mesh; ``S`` reads field k in the cell on k's side of each Γ facet,
+so ``unknowns("fe", …)`` sets every dof of field k to ``f_k`` at its node.
+Its traction takes the mesh's own normal ``n_h`` (the chord's on P1
+cells, the curved map's on P2 cells), recovered here from each facet's
+points by :func:`fe_mesh_normals`.
+
 ``unknowns_*`` set the nodal values so that each body's approximation is
 ``f_k`` wherever the basis reproduces it: a node on side s carries
 ``u_I = f_s(x_I)`` and, enriched, ``a_I = (f_o − f_s)(x_I) / (H_o − H_s)``
@@ -23,7 +30,11 @@ def exact(scene):
 
 
 def build(method: str, scene, degree: int, h: float, **options):
-    """The built system of ``method`` ("efgm" or "xfem") for ``scene``."""
+    """The built system of ``method`` ("efgm", "xfem" or "fe") for ``scene``."""
+    if method == "fe":
+        from xdolfinx import conforming
+        from xdolfinx.options import FE
+        return conforming.build(scene, FE(degree=degree, **options), Resolution(h), Timings())
     if method == "efgm":
         from efgm.method import build as efgm_build
         from efgm.options import EFGM
@@ -42,6 +53,8 @@ def _values(side: np.ndarray, f, x: np.ndarray, enriched: np.ndarray):
 
 def unknowns(method: str, built, f) -> np.ndarray:
     """The unknowns (``S``'s columns, serial) of the fields ``f(body, x)``."""
+    if method == "fe":
+        return _fe_unknowns(built, f)
     fields = built.fields(np.zeros(built.system.size))
     if method == "efgm":
         approx = fields.approx
@@ -56,10 +69,52 @@ def unknowns(method: str, built, f) -> np.ndarray:
     return np.concatenate([own.ravel(), a.ravel()])  # a in node order: the enriched blocks' order
 
 
-def frame_traction(sigma: np.ndarray, normals: np.ndarray) -> np.ndarray:
-    """``[n·σn, t·σn]`` (P, 2) of Voigt stresses (P, 3), ``t = (n_y, −n_x)``."""
+def _fe_unknowns(built, f) -> np.ndarray:
+    """fe's unknowns (the mixed space's dofs, ``S``'s columns) of ``f``:
+    ``built.fields`` collapses each body's field out of the mixed space,
+    so fed the dofs' own indices it hands back, per body, which dof of
+    ``S``'s columns each node's x and y value is (exact: integers below
+    2⁵³), beside the collapsed space's node coordinates."""
+    x = np.zeros(built.system.size)
+    for b, ub in enumerate(built.fields(np.arange(built.system.size, dtype=float)).displacements):
+        index = ub.x.array.astype(np.int64).reshape(-1, 2)  # (nodes, x|y), the collapsed blocked order
+        x[index] = f(b, ub.function_space.tabulate_dof_coordinates()[:, :2])
+    return x
+
+
+def fe_facet_curves(points: np.ndarray, P: int, order: int) -> np.ndarray:
+    """The coefficients (F, order + 1, 2) of ``x(ξ) = Σ c_k ξ^k`` through
+    each fe Γ facet's ``P`` points (consecutive in ``points``, at the
+    parameters ξ of contactcore.cutcell.gauss01(P) along the cell's edge):
+    the facet's own geometry map of ``order`` (exact: P > order)."""
+    from contactcore.cutcell import gauss01
+    xi, _ = gauss01(P)
+    pts = points.reshape(-1, P, 2)
+    coef, *_ = np.linalg.lstsq(np.vander(xi, order + 1, increasing=True), pts.transpose(1, 0, 2).reshape(P, -1),
+                               rcond=None)
+    return coef.reshape(order + 1, -1, 2).transpose(1, 0, 2)
+
+
+def fe_mesh_normals(points: np.ndarray, normals: np.ndarray, P: int, order: int) -> np.ndarray:
+    """fe's mesh normal ``n_h`` (m, 2) at Γ's ``points``: normal to each
+    facet's curve (:func:`fe_facet_curves`), turned to the side of the
+    level set's ``normals`` (xdolfinx.conforming._mesh_normals, rebuilt
+    from the points alone)."""
+    from contactcore.cutcell import gauss01
+    xi, _ = gauss01(P)
+    coef = fe_facet_curves(points, P, order)
+    d = np.einsum("pk,fki->fpi", np.column_stack([k * xi ** max(k - 1, 0) for k in range(order + 1)]), coef)
+    t = d.reshape(-1, 2) / np.linalg.norm(d.reshape(-1, 2), axis=1)[:, None]
+    n = np.column_stack([t[:, 1], -t[:, 0]])
+    return n * np.sign(np.sum(n * normals, axis=1))[:, None]
+
+
+def frame_traction(sigma: np.ndarray, normals: np.ndarray, acting: np.ndarray | None = None) -> np.ndarray:
+    """``[n·σm, t·σm]`` (P, 2) of Voigt stresses (P, 3), ``t = (n_y, −n_x)``,
+    ``m`` the normal σ ``acting`` on (``n`` unless given: fe's mesh normal)."""
     n = np.asarray(normals, float)
-    sn = np.column_stack([sigma[:, 0] * n[:, 0] + sigma[:, 2] * n[:, 1], sigma[:, 2] * n[:, 0] + sigma[:, 1] * n[:, 1]])
+    m = n if acting is None else np.asarray(acting, float)
+    sn = np.column_stack([sigma[:, 0] * m[:, 0] + sigma[:, 2] * m[:, 1], sigma[:, 2] * m[:, 0] + sigma[:, 1] * m[:, 1]])
     t = np.column_stack([n[:, 1], -n[:, 0]])
     return np.column_stack([np.sum(sn * n, axis=1), np.sum(sn * t, axis=1)])
 

@@ -1,5 +1,6 @@
-"""Nitsche's consistent traction ``S`` and stabilisation ``γ₀`` of efgm and
-xfem (contactcore.traction, efgm.traction, xdolfinx.xfem.traction).
+"""Nitsche's consistent traction ``S`` and stabilisation ``γ₀`` of efgm,
+xfem and fe (contactcore.traction, efgm.traction, xdolfinx.xfem.traction,
+xdolfinx.conforming._nitsche_rows).
 
 The patch test of ``S``: with a polynomial field on each side that the
 basis reproduces (linear, and quadratic at degree 2), ``S u`` at every Γ
@@ -9,6 +10,25 @@ a horizontal Γ a fraction θ up a row of cells the weights and ``γ₀`` are
 known in closed form (Annavarapu et al. 2012): every cell holding Γ has
 parts θh² and (1 − θ)h²; a sliver side's weight → 0 with θ while γ₀ stays
 bounded.
+
+fe's Γ facets are never cut: a facet's weights are those of its two
+whole cells, ``w_k = (|Ω_k|/E_k) / Σ_j |Ω_j|/E_j``, and
+``γ₀ = 2|Γ^e| / Σ_j |Ω_j|/E_j`` (docs/contact-enforcement.md), checked
+against the mesh's cells.  fe's traction is ``σ n_h`` with the mesh's
+own normal (the chord's on a P1 circle), so its exact tractions here take
+``n_h`` (nitsche_fields.fe_mesh_normals; on a straight Γ ``n_h = n``).
+On the circle fe P2's cells are curved: a quadratic field is not in their
+(isoparametric) space, so fe P2 is tested there with a linear field,
+which is (with the quadratic one its worst point is 1.0e-3 off the
+weighted form at H = 0.1: a discretisation error, not round-off).
+
+Both fail when fe's rows are broken (checked 2026-11-29 by editing
+xdolfinx/conforming.py, then reverting): the + body's rows dropped, or
+the normal's components swapped, fail all 6 fe patch tests and all 5
+weight tests; the level set's normal taken for the mesh's fails both
+circle patch tests (P1, P2) and the circle's weight test; the two
+weights swapped (still in [0, 1], so the patch test passes) fail all 5
+weight tests.
 """
 import dataclasses
 import json
@@ -19,7 +39,8 @@ import pytest
 import tolerances as tol
 from contactcore import BODIES, CircleInterface, LineInterface, load_scene
 from contactcore.traction import nitsche_weights
-from nitsche_fields import PolynomialFields, build, exact, frame_traction, unknowns
+from nitsche_fields import PolynomialFields, build, exact, fe_facet_curves, fe_mesh_normals, frame_traction, unknowns
+from xdolfinx.conforming import INTERFACE_GAUSS
 from placements import inclined_A
 
 #: Coarse: the operators are exact on any mesh.
@@ -29,7 +50,7 @@ H = 0.1
 MODULI = (2e11, 5e10)
 
 METHODS = [("efgm", 1, {}), ("efgm", 2, {}), ("xfem", 1, {"cell": "quad"}), ("xfem", 2, {"cell": "quad"}),
-           ("xfem", 1, {"cell": "triangle"}), ("xfem", 2, {"cell": "triangle"})]
+           ("xfem", 1, {"cell": "triangle"}), ("xfem", 2, {"cell": "triangle"}), ("fe", 1, {}), ("fe", 2, {})]
 IDS = [f"{m}-P{d}{'-' + o['cell'] if o else ''}" for m, d, o in METHODS]
 
 
@@ -46,18 +67,22 @@ GAMMAS = {"horizontal": lambda: _horizontal(0.53), "inclined": lambda: _bimateri
           "circle": lambda: _bimaterial(load_scene("C").with_changes(interface=CircleInterface((1.0, 1.5), 0.45)))}
 
 
-def _split(method, degree, options, scene, seed=0):
-    """The interface, and for a seeded field per side: ``S u`` and the
-    exact tractions of the − and + sides at Γ's points."""
+def _split(method, degree, options, scene, seed=0, field_degree=None, read=None):
+    """The interface, and for a seeded field per side (of ``field_degree``,
+    else ``degree``): ``S u`` and the exact tractions of the − and + sides
+    at Γ's points (σ on fe's mesh normal, in the level set's frame); with
+    ``read``, also ``read(built, scene, itf, degree)`` before the system closes."""
     built = build(method, scene, degree, H, **options)
     itf = built.system.interface
-    fields = PolynomialFields(degree, seed)
+    fields = PolynomialFields(field_degree or degree, seed)
     tau = (itf.S @ unknowns(method, built, fields)).reshape(-1, 2)
     D = scene.voigt_matrices()
     normals = scene.interface.normals(itf.points)
-    sides = [frame_traction(fields.stress(b, itf.points, D), normals) for b in (0, 1)]
+    acting = fe_mesh_normals(itf.points, normals, INTERFACE_GAUSS[degree], degree) if method == "fe" else None
+    sides = [frame_traction(fields.stress(b, itf.points, D), normals, acting) for b in (0, 1)]
+    extra = None if read is None else read(built, scene, itf, degree)
     built.system.close()
-    return itf, tau, sides
+    return (itf, tau, sides) if read is None else (itf, tau, sides, extra)
 
 
 def _weights(tau, sides):
@@ -72,8 +97,10 @@ def _weights(tau, sides):
 @pytest.mark.parametrize("gamma", list(GAMMAS))
 @pytest.mark.parametrize("method, degree, options", METHODS, ids=IDS)
 def test_traction_patch_test(method, degree, options, gamma):
-    """``S u`` is the weighted exact traction at every point, the weights in [0, 1]."""
-    itf, tau, sides = _split(method, degree, options, GAMMAS[gamma]())
+    """``S u`` is the weighted exact traction at every point, the weights in
+    [0, 1] (fe P2 on the circle: a linear field, module doc)."""
+    curved = method == "fe" and degree == 2 and gamma == "circle"
+    itf, tau, sides = _split(method, degree, options, GAMMAS[gamma](), field_degree=1 if curved else None)
     assert itf.S.shape == itf.G.shape and len(itf.stabilisation) == itf.size > 0
     w, rest = _weights(tau, sides)
     assert rest <= tol.PATCH_ROUNDOFF
@@ -118,6 +145,46 @@ def test_a_sliver_side_gets_no_weight_and_gamma_stays_bounded(method, degree, op
         assert rest <= tol.PATCH_ROUNDOFF
         assert np.all(w >= -tol.PATCH_ROUNDOFF) and np.max(w) <= 2 * theta * MODULI[1] / MODULI[0] / (1 - 2 * theta)
         assert np.max(itf.stabilisation) <= 2 * (1 + 2 * theta) * _closed_form(0.0)[1]
+
+
+def _fe_cells(built, scene, itf, degree):
+    """Each Γ point's facet's two cells in fe's mesh, as (|Ω₋|, |Ω₊|) (m, 2)
+    of their vertex triangles, and the facet's length (m,) (its points'
+    weights summed).  A facet's ends (its curve at ξ = 0, 1) are the
+    nearest mesh vertices, its cells the two holding both."""
+    from scipy.spatial import cKDTree
+    P = INTERFACE_GAUSS[degree]
+    msh = built.fields(np.zeros(built.system.size)).displacements[0].function_space.mesh
+    xg = msh.geometry.x[:, :2]
+    triangles = msh.geometry.dofmap.array.reshape(msh.topology.index_map(2).size_local, -1)[:, :3]
+    coef = fe_facet_curves(itf.points, P, degree)
+    ends = cKDTree(xg).query(np.stack([coef[:, 0], coef.sum(axis=1)], axis=1).reshape(-1, 2))[1].reshape(-1, 2)
+    areas = []
+    for a, b in ends:
+        cells = np.flatnonzero(np.isin(triangles, [a, b]).sum(axis=1) == 2)
+        assert len(cells) == 2
+        v = xg[triangles[cells]]  # (2, 3, 2)
+        area = 0.5 * np.abs(np.cross(v[:, 1] - v[:, 0], v[:, 2] - v[:, 0]))
+        body = scene.body_of(v.mean(axis=1))
+        assert sorted(body) == [0, 1]
+        areas.append(area[np.argsort(body)])  # − then +
+    return np.repeat(areas, P, axis=0), np.repeat(itf.weights.reshape(-1, P).sum(axis=1), P)
+
+
+@pytest.mark.parametrize("gamma, degree", [("horizontal", 1), ("horizontal", 2), ("inclined", 1), ("inclined", 2),
+                                           ("circle", 1)])
+def test_fe_weights_and_stabilisation_are_its_two_cells(gamma, degree):
+    """fe's Γ facets are never cut: at each point ``w₋`` and ``γ₀`` are
+    the closed form of the facet's two whole cells (module doc), their
+    areas and the facet's length read from the mesh (P1 cells, and P2 on
+    a straight Γ: straight cells; a curved P2 cell's weight takes its
+    vertex triangle, xdolfinx.conforming._nitsche_rows, so it is left out)."""
+    itf, tau, sides, (areas, length) = _split("fe", degree, {}, GAMMAS[gamma](), read=_fe_cells)
+    w, rest = _weights(tau, sides)
+    compliance = areas / np.array(MODULI)
+    assert rest <= tol.PATCH_ROUNDOFF
+    assert np.max(np.abs(w - compliance[:, 0] / compliance.sum(axis=1))) <= tol.PATCH_ROUNDOFF
+    assert np.max(np.abs(itf.stabilisation / (2 * length / compliance.sum(axis=1)) - 1)) <= tol.PATCH_ROUNDOFF
 
 
 def test_weights_sum_to_one_and_a_sliver_gets_none():
