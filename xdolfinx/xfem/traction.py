@@ -57,9 +57,10 @@ def cell_parts(space, c: int) -> np.ndarray:
     return areas
 
 
-def gamma_floor(areas: np.ndarray, moduli: np.ndarray, size: float) -> float:
+def gamma_floor(areas: np.ndarray, moduli: np.ndarray, size) -> np.ndarray:
     """The least ``γ₀`` (module doc) of a cell of parts ``areas`` (2,),
-    moduli ``moduli`` (2,) and diameter ``size``, ``F`` =
+    moduli ``moduli`` (2,) and diameter ``size`` (or of cells: ``areas``
+    (C, 2), ``size`` (C,)), ``F`` =
     :data:`~contactcore.tolerances.NITSCHE_PIECE_FLOOR` and ``f`` =
     :data:`~contactcore.tolerances.NITSCHE_DEGENERATE_PIECE`: the larger of
 
@@ -74,9 +75,10 @@ def gamma_floor(areas: np.ndarray, moduli: np.ndarray, size: float) -> float:
       and the far part is the stiffer body, whose stress the traction then
       reads, γ at the softer body's scale lets that stress's discretisation
       error decide the status against the gap."""
-    compliance = float(np.sum(np.asarray(areas, float) / np.asarray(moduli, float)))
-    soft = 2.0 * tol.NITSCHE_PIECE_FLOOR * size * float(np.min(moduli)) / float(np.sum(areas))
-    return max(soft, 2.0 * tol.NITSCHE_DEGENERATE_PIECE * size / compliance)
+    areas, moduli = np.asarray(areas, float), np.asarray(moduli, float)
+    compliance = areas[..., 0] / moduli[0] + areas[..., 1] / moduli[1]
+    soft = 2.0 * tol.NITSCHE_PIECE_FLOOR * size * float(np.min(moduli)) / (areas[..., 0] + areas[..., 1])
+    return np.maximum(soft, 2.0 * tol.NITSCHE_DEGENERATE_PIECE * size / compliance)
 
 
 def cell_traction(space, c: int, D: np.ndarray, moduli: np.ndarray, edges: dict | None = None):
@@ -198,7 +200,7 @@ def _plain_tractions(space, trip: Triplets, D: np.ndarray, moduli: np.ndarray, c
     areas = parts[cell_of]
     weights, g = nitsche_weights(areas, moduli, np.repeat([np.sum(w) for _, w, _ in rules], count))
     gamma_at = np.repeat(starts, count) + (np.arange(len(cell_of)) - np.repeat(np.cumsum(count) - count, count))
-    gamma[gamma_at] = np.maximum(g, _gamma_floors(parts, moduli, space.cut.cell_size[cells])[cell_of])
+    gamma[gamma_at] = np.maximum(g, gamma_floor(parts, moduli, space.cut.cell_size[cells])[cell_of])
     maps = traction_maps(normals, D, weights)
     dN = np.concatenate([space.cells.tabulate(c, pts)[1] for c, (pts, _, _) in zip(cells, rules)])  # (M, n, 2)
     dofs = space.cells.cell_dofs[cells][cell_of]  # (M, n)
@@ -210,15 +212,6 @@ def _plain_tractions(space, trip: Triplets, D: np.ndarray, moduli: np.ndarray, c
     blocks = space.cell_blocks(np.asarray(cells))[cell_of]  # (M, 2n)
     cols = np.where(blocks[:, :, None] >= 0, 2 * blocks[:, :, None] + np.arange(2), -1).reshape(len(cell_of), -1)
     trip.add(2 * gamma_at[:, None, None] + np.arange(2)[None, :, None], cols[:, None, :], rows)
-
-
-def _gamma_floors(parts: np.ndarray, moduli: np.ndarray, sizes: np.ndarray) -> np.ndarray:
-    """:func:`gamma_floor` of cells of parts ``parts`` (C, 2) and diameters
-    ``sizes`` (C,), the same operations in the same order."""
-    moduli = np.asarray(moduli, float)
-    compliance = parts[:, 0] / moduli[0] + parts[:, 1] / moduli[1]
-    soft = 2.0 * tol.NITSCHE_PIECE_FLOOR * sizes * float(np.min(moduli)) / (parts[:, 0] + parts[:, 1])
-    return np.maximum(soft, 2.0 * tol.NITSCHE_DEGENERATE_PIECE * sizes / compliance)
 
 
 def contrast_warnings(scene, degree: int) -> list[str]:
