@@ -35,13 +35,18 @@ SPELLING_LIKENESS = 0.7
 
 def _closest(name: str, candidates) -> str | None:
     """The candidate most like ``name``, if any is as alike as
-    :data:`SPELLING_LIKENESS` or differs from it in case alone ('e' for
-    'E')."""
+    :data:`SPELLING_LIKENESS`, differs from it in case alone ('e' for
+    'E'), or is the only candidate that begins with it or that it begins
+    with ('n' for 'nu': too short for the likeness)."""
     by_case = sorted(c for c in candidates if c.casefold() == name.casefold())
     if by_case:
         return by_case[0]
     close = difflib.get_close_matches(name, sorted(candidates), n=1, cutoff=SPELLING_LIKENESS)
-    return close[0] if close else None
+    if close:
+        return close[0]
+    folded = name.casefold()
+    prefixed = [c for c in candidates if c.casefold().startswith(folded) or folded.startswith(c.casefold())]
+    return prefixed[0] if len(prefixed) == 1 else None
 
 
 class _Table:
@@ -109,7 +114,10 @@ class _Table:
         unknown = sorted(set(self.data) - self.used)
         if unknown:
             known = _closest(unknown[0], self.used - set(self.data))
-            raise SceneError(self._key(unknown[0]), f"unknown key (did you mean {known!r}?)" if known else "unknown key")
+            given = None if known else _closest(unknown[0], self.used & set(self.data))
+            hint = (f" (did you mean {known!r}?)" if known
+                    else f" (like {given!r}, which is given too)" if given else "")
+            raise SceneError(self._key(unknown[0]), f"unknown key{hint}")
 
 
 def _read_domain(t: _Table) -> Domain:

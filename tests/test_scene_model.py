@@ -155,6 +155,14 @@ def test_a_misspelt_key_is_named_with_the_key_it_is_like(scene_dict):
     with pytest.raises(SceneError, match=r"^materials.minus.E: missing \(is 'e', given, a misspelling of it\?\)$"):
         scene_from_dict(data)
     data = scene_dict("A")
+    data["materials"]["minus"]["n"] = data["materials"]["minus"].pop("nu")  # too short to be alike: its prefix
+    with pytest.raises(SceneError, match=r"^materials.minus.nu: missing \(is 'n', given, a misspelling of it\?\)$"):
+        scene_from_dict(data)
+    data = scene_dict("A")
+    data["materials"]["minus"]["e"] = data["materials"]["minus"]["E"]  # given twice, in two cases
+    with pytest.raises(SceneError, match=r"^materials.minus.e: unknown key \(like 'E', which is given too\)$"):
+        scene_from_dict(data)
+    data = scene_dict("A")
     data["colour"] = "red"
     with pytest.raises(SceneError, match=r"^colour: unknown key$"):
         scene_from_dict(data)
