@@ -130,6 +130,8 @@ def test_run_writes_the_helpers_agreement_figures(tmp_path):
     wedge = Path(__file__).resolve().parent.parent / "examples" / "wedge.toml"
     run(wedge, ["all"], tmp_path / "out", h=COARSE_H, degree=2, draw=False)
     written = (tmp_path / "out" / "summary.md").read_text()
+    from verification.run import UNESTIMATED_AGREEMENT  # not estimated: says whose error a difference is
+    assert UNESTIMATED_AGREEMENT in written
     helper = compare(wedge, ["xfem:2", "efgm:2"], COARSE_H)
     for a in helper.rows:
         method, degree = a.method.split(" p")

@@ -137,6 +137,13 @@ NOT_ESTIMATED = (f"\n{NOT_ESTIMATED_MARK} not estimated: the reference the runs 
                  "at the answer's h (the finest), so it has no coarser run to estimate from.")
 
 
+#: Under an agreement table of runs not estimated: whose error a difference is.
+UNESTIMATED_AGREEMENT = ("\nThe reference is solved at the same h and has an error of its own, so a difference above "
+                         "is both runs' errors together. `run --estimate` estimates each chosen method's own error "
+                         "from a second run at twice h and says where two methods differ by more than their "
+                         "estimates (docs/error-estimates.md).\n")
+
+
 def conventions(units, ranks: int = 1) -> str:
     """``summary.md``'s opening paragraph: the units and sign conventions
     every figure below uses (docs/scenes.md defines them) and, on several
@@ -561,6 +568,8 @@ def _write_summary(out: Path, scene: Scene, summaries: list[dict], profiles: dic
                            scene.units)
     text = (f"# Scene {plots.heading(scene.name, scene.title)}\n\n" + conventions(scene.units, files.ranks())
             + _summary_table(summaries) + agreement_section(scene, profiles, ref, floors))
+    if "## Agreement" in text and not estimated:
+        text += UNESTIMATED_AGREEMENT
     if len(estimated) > 1:
         text += _estimates_section(scene, estimated, floors)
     if gaps:
