@@ -280,15 +280,19 @@ def check_solvable(scene, discretisation: Discretisation, h: float | None = None
 #: Why an exact, nonlinear law's run took no coarser map (``SolverReport.first_map``).
 NO_COARSER_MAP = "no coarser map (a given grid or node set, or the coarser spacing refused or its solve failed)"
 
+#: ... and where its system is too small for one to pay (:data:`~contactcore.newton.guess.COARSE_MIN_UNKNOWNS`).
+SMALL_FOR_COARSER_MAP = "no coarser map (fewer than {} unknowns: a coarser solve costs more than it saves)"
 
-def _coarse_guess(scene, discretisation: Discretisation, resolution: Resolution, ranks: Collective):
+
+def _coarse_guess(scene, discretisation: Discretisation, resolution: Resolution, ranks: Collective, dofs: int):
     """An exact, nonlinear law's first status map from the same scene and
     method at twice the spacing (:mod:`contactcore.newton.guess`), or None:
     not for a penalty or linear law, a given grid or node set (no ``h`` to
-    coarsen), or a coarser spacing the method refuses."""
+    coarsen), a system of fewer than ``COARSE_MIN_UNKNOWNS`` unknowns
+    (``dofs``, the whole system's), or a coarser spacing the method refuses."""
     if not exact.is_exact(scene.law) or scene.law.is_linear or resolution.h is None or resolution.counts is not None:
         return None
-    if newton_guess.COARSER is None:
+    if newton_guess.COARSER is None or dofs < newton_guess.COARSE_MIN_UNKNOWNS:
         return None
     coarse, kept = Resolution(newton_guess.COARSER * resolution.h), []
 
@@ -329,10 +333,12 @@ def solve(scene, discretisation: Discretisation, h: float | None = None, *, pape
     try:
         exact.check(scene.law, built.system.interface, discretisation.name)
         with timings.measure("solve"):
-            guess = _coarse_guess(scene, discretisation, resolution, built.system.collective)
+            guess = _coarse_guess(scene, discretisation, resolution, built.system.collective, built.dofs)
             x, path, report = solve_increments(scene, built.system, progress, guess)
         if guess is None and exact.is_exact(scene.law) and not scene.law.is_linear:
-            report.first_map = STICKING + NO_COARSER_MAP
+            small = newton_guess.COARSER is not None and built.dofs < newton_guess.COARSE_MIN_UNKNOWNS
+            report.first_map = STICKING + (SMALL_FOR_COARSER_MAP.format(newton_guess.COARSE_MIN_UNKNOWNS) if small
+                                           else NO_COARSER_MAP)
     finally:
         if reuse is None or not reuse.owns(built):
             built.system.close()

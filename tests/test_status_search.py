@@ -15,8 +15,18 @@ from contactcore.newton import guess as newton_guess
 from contactcore.newton.iteration import FROM_COARSER, STICKING
 from verification import methods
 
+#: The library's size rule, read before the fixture below sets it aside.
+SIZE_RULE = newton_guess.COARSE_MIN_UNKNOWNS
+
 #: C-coulomb's own resolution (its first increment: docs/newton.md).
 H = 0.05
+
+
+@pytest.fixture(autouse=True)
+def _every_size_takes_a_coarser_map(monkeypatch):
+    """The mechanism at C-coulomb's own h, whose systems (5 274 to 6 018
+    unknowns) are below COARSE_MIN_UNKNOWNS: the size rule has its own test."""
+    monkeypatch.setattr(newton_guess, "COARSE_MIN_UNKNOWNS", 0)
 
 
 def _exact(scene):
@@ -137,3 +147,23 @@ def test_a_coarse_build_failing_on_another_rank_gives_no_guess_here():
     scene = _exact(load_scene("C-coulomb"))
     assert newton_guess.coarse_guess(scene, _System, _OtherRankFailed()) is None
     assert closed == [True]
+
+
+def test_a_small_system_takes_no_coarser_map(monkeypatch):
+    """Below COARSE_MIN_UNKNOWNS (the library's, not the fixture's) no
+    coarser system is built, the run says why, and the answer is the
+    search from every point sticking, bit for bit."""
+    calls = []
+    scene = _exact(load_scene("C-coulomb"))
+    monkeypatch.setattr(newton_guess, "COARSER", None)
+    searched = methods.solver("xfem")(scene, H, degree=1)
+    assert searched.dofs < SIZE_RULE
+    monkeypatch.setattr(newton_guess, "COARSER", 2.0)
+    monkeypatch.setattr(newton_guess, "COARSE_MIN_UNKNOWNS", SIZE_RULE)
+    monkeypatch.setattr(discretisation, "coarse_guess", lambda *a: calls.append(a))
+    small = methods.solver("xfem")(scene, H, degree=1)
+    assert calls == []
+    assert small.solver.first_map == STICKING + discretisation.SMALL_FOR_COARSER_MAP.format(SIZE_RULE)
+    assert small.solver.iterations == searched.solver.iterations
+    for a, b in zip(small.interface.steps, searched.interface.steps, strict=True):
+        assert np.array_equal(a.status, b.status) and np.array_equal(a.traction, b.traction)
