@@ -1,12 +1,14 @@
 """What a run will cost, estimated before any work, so that a size the
 machine cannot hold is refused in a second instead of exhausting it.
 
-For a resolution ``h`` on a domain of area ``A`` and degree ``k`` the mesh
-has about ``A k² / h²`` nodes (vertices, and edge and cell nodes for k = 2;
-the EFGM grid has ``A / h²`` nodes whatever the basis); each carries two
-displacement components per field: fe keeps one field per body on the whole
-mesh (``× 2``), xfem one standard field plus a few enriched nodes, EFGM one
-field.  The direct solver's factors dominate memory: measured
+For a resolution ``h`` on a domain of area ``A`` a method has about
+``A n / h²`` nodes, ``n`` the nodes a cell holds that its options declare
+(``nodes_per_cell``: ``k²`` at degree k, vertices and edge and cell nodes
+for k = 2, by default; the EFGM grid's one whatever the basis); each
+carries two displacement components per field, of which its options
+declare ``field_copies`` (fe keeps one field per body on the whole mesh,
+2; xfem one standard field plus a few enriched nodes, and EFGM one, 1:
+:class:`contactcore.discretisation.Discretisation`).  The direct solver's factors dominate memory: measured
 :data:`BYTES_PER_UNKNOWN` at up to ~2.4e5 unknowns (2D nested dissection
 grows as N log N, so larger runs need somewhat more).  The interface history
 keeps, per increment, a few numbers per quadrature point of Γ (about
@@ -23,9 +25,6 @@ from .errors import ContactError
 #: Resident bytes per unknown of a run, factors included: run C-coulomb, fe
 #: P2, h = 0.02 (2.4e5 unknowns) peaks at 1.0 GB: 4.2 kB; rounded up for the N log N growth of the factors.
 BYTES_PER_UNKNOWN = 6_000
-
-#: Fields per method: fe keeps one per body on the whole mesh.
-FIELDS = {"fe": 2, "xfem": 1, "efgm": 1}
 
 #: Bytes kept per increment and Γ point (jump, traction, status, residuals).
 BYTES_PER_HISTORY_POINT = 64
@@ -47,6 +46,24 @@ class TooLargeError(ContactError):
 
 
 @dataclass(frozen=True)
+class Counted:
+    """What :func:`estimate` reads of a solve (as of a method's options,
+    :class:`contactcore.discretisation.Discretisation`), stated where no
+    options class is at hand: a peer's solve (one field, ``degree²``
+    nodes a cell, the defaults), or fe's on the mesh ``python -m meshes``
+    writes (``meshes`` may not import the options of ``xdolfinx``)."""
+
+    name: str
+    degree: int
+    field_copies: int = 1
+    nodes_per_cell: int | None = None  # None: degree², as Discretisation's
+
+    def __post_init__(self):
+        if self.nodes_per_cell is None:
+            object.__setattr__(self, "nodes_per_cell", self.degree ** 2)
+
+
+@dataclass(frozen=True)
 class Estimate:
     """What a run will cost (:func:`estimate`): about ``unknowns`` unknowns,
     ``memory`` resident bytes, factors included, and ``solves`` linear solves."""
@@ -64,15 +81,17 @@ def machine_memory() -> float:
     return float(os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES"))
 
 
-def estimate(scene, h: float, degree: int, method: str) -> Estimate:
+def estimate(scene, h: float, options) -> Estimate:
     """The :class:`Estimate` (unknowns, memory in bytes, linear solves) of
-    solving ``scene`` with ``method`` (``"fe"``, ``"xfem"`` or
-    ``"efgm"``; another name counts one field) at degree 1 or 2 and
-    element size ``h``, in the same length unit as ``scene``'s domain
-    (module doc for the model).  Nothing is refused here: a tiny ``h``
-    gives a huge estimate, which :func:`check_budget` refuses."""
-    nodes = scene.domain.area / h / h * (degree ** 2 if method != "efgm" else 1)  # h ** 2 underflows to 0 at 1e-300
-    unknowns = 2 * FIELDS.get(method, 1) * nodes + 4  # a one-cell mesh still has a few
+    solving ``scene`` with a method's ``options`` (a
+    :class:`~contactcore.discretisation.Discretisation`, or a
+    :class:`Counted`: their ``degree``, ``field_copies`` and
+    ``nodes_per_cell``) at element size ``h``, in the same length unit as
+    ``scene``'s domain (module doc for the model).  Nothing is refused
+    here: a tiny ``h`` gives a huge estimate, which :func:`check_budget`
+    refuses."""
+    nodes = scene.domain.area / h / h * options.nodes_per_cell  # h ** 2 underflows to 0 at 1e-300
+    unknowns = 2 * options.field_copies * nodes + 4  # a one-cell mesh still has a few
     gamma_points = 3 * scene.length_scale * math.pi / h
     # every increment is solved, and its history kept, for a nonlinear law
     # or a followed path: Newton's ~3 solves an increment, one for a linear law
@@ -96,18 +115,18 @@ def check_processes(count: int, field: str, offer_allow_large: bool = True) -> N
                             + (", or pass --allow-large to try anyway" if offer_allow_large else ""))
 
 
-def check_budget(scene, h: float, degree: int, method: str, field: str = "--h",
-                 offer_allow_large: bool = True) -> Estimate:
-    """The :func:`estimate` of the run (``h`` in ``scene``'s length unit),
+def check_budget(scene, h: float, options, field: str = "--h", offer_allow_large: bool = True) -> Estimate:
+    """The :func:`estimate` of the run with ``options`` (``h`` in ``scene``'s length unit),
     or a :class:`TooLargeError` when its memory exceeds MEMORY_SHARE of
     this machine's physical memory; the message names ``field`` (the
     option or scene field that set ``h``, ``--h`` by default), the
     estimate in GB and what to do (a larger h, fewer increments, or
     ``--allow-large`` where the command has it)."""
-    est = estimate(scene, h, degree, method)
+    est = estimate(scene, h, options)
     have = MEMORY_SHARE * machine_memory()
     if est.memory > have:
-        raise TooLargeError(f"{field} {h:g} with {method} (degree {degree}, {scene.increments} increments): "
+        raise TooLargeError(f"{field} {h:g} with {options.name} (degree {options.degree}, "
+                            f"{scene.increments} increments): "
                             f"{est.describe()}, against {have / 1e9:.3g} GB usable on this machine; use a larger h "
                             "or fewer increments" + (", or pass --allow-large to try anyway" if offer_allow_large
                                                      else ""))

@@ -47,7 +47,7 @@ from .newton import guess as newton_guess
 from .newton.guess import coarse_guess
 from .newton.iteration import STICKING
 from .system import ContactSystem
-from .result import Result, Timings
+from .result import MethodFacts, Result, Timings
 from .scaling import Scales, dimensionless, dimensionless_inputs, softer_stress
 
 
@@ -94,8 +94,25 @@ class Discretisation:
     * ``needs_mpi``: whether it starts MPI even outside a launcher (a
       driver hands a method that does not a communicator only under one).
 
-    Subclasses are frozen dataclasses; they validate their options in
-    ``__post_init__``.
+    and the facts the shared core reads of an instance (the degree's, where
+    they depend on it), never of a method's name: the memory budget's
+    (:mod:`contactcore.budget`, before the solve, from the options) and
+    the error estimate's (:mod:`contactcore.estimate`, from the
+    :class:`~contactcore.result.Result`, which carries :meth:`facts`):
+
+    * ``field_copies``: the displacement fields it keeps over the domain
+      (the budget counts ``2 · field_copies`` unknowns a node): 1 here;
+    * :attr:`nodes_per_cell`: the nodes a cell of size ``h`` holds
+      (the budget's ``A / h²`` cells): ``degree²`` here;
+    * ``meshfree``: its stencil is a support, not a cell, and its error
+      at the scale of its cells includes its quadrature's: False here;
+    * :attr:`recovered_stress`, :attr:`quadrature_energy`,
+      :attr:`fast_gamma`: the estimate's rules of its degree (each
+      property's doc): False here.
+
+    A subclass overrides only the facts where it differs, with the
+    measurement that set it.  Subclasses are frozen dataclasses; they
+    validate their options in ``__post_init__``.
     """
 
     name: ClassVar[str]
@@ -105,7 +122,53 @@ class Discretisation:
     field_output: ClassVar[str] = "interface"
     distributed: ClassVar[bool] = False
     needs_mpi: ClassVar[bool] = True
+    field_copies: ClassVar[int] = 1
+    meshfree: ClassVar[bool] = False
     degree: int
+
+    @property
+    def nodes_per_cell(self) -> int:
+        """Nodes per cell of size ``h`` (:mod:`contactcore.budget`): a
+        degree-k mesh has vertices, and edge and cell nodes for k = 2,
+        about ``k²`` a cell."""
+        return self.degree ** 2
+
+    @property
+    def recovered_stress(self) -> bool:
+        """Whether the stress it reports at this degree is recovered (a
+        patch recovery, :mod:`contactcore.recovery`), not its
+        displacement's own: it converges one order faster, as the
+        displacement (:func:`~contactcore.estimate.orders.theoretical_order`),
+        its stencil is the recovery patch
+        (:func:`~contactcore.estimate.caveats.stencil_radius`), it converges
+        slower in a layer along a curved Γ
+        (:func:`~contactcore.estimate.caveats.curved_layer`), and the
+        Zienkiewicz–Zhu estimate takes it as σ* (its fields then also have
+        ``direct_stress``: :class:`contactcore.result.Fields`)."""
+        return False
+
+    @property
+    def quadrature_energy(self) -> bool:
+        """Whether, at this degree, its Zienkiewicz–Zhu estimate below
+        :data:`~contactcore.tolerances.QUADRATURE_ENERGY_SHARE` of the
+        run's energy is named as possibly too small: its quadrature's
+        error, which a recovery does not see, may then be most of the
+        error (:func:`~contactcore.estimate.caveats.quadrature_energy`)."""
+        return False
+
+    @property
+    def fast_gamma(self) -> bool:
+        """Whether, at this degree, its gaps and tractions on Γ are named
+        as converging faster than the order the estimate takes, though
+        where its quadrature sets their error they do not
+        (:func:`~contactcore.estimate.caveats.fast_gamma`)."""
+        return False
+
+    def facts(self) -> MethodFacts:
+        """The estimate's facts of these options (:class:`~contactcore.result.MethodFacts`),
+        which :func:`solve` puts in the Result."""
+        return MethodFacts(recovered_stress=self.recovered_stress, meshfree=self.meshfree,
+                           quadrature_energy=self.quadrature_energy, fast_gamma=self.fast_gamma)
 
     def check(self, scene) -> None:
         """Refuse a scene this method cannot solve."""
@@ -356,4 +419,5 @@ def solve(scene, discretisation: Discretisation, h: float | None = None, *, pape
     report.warnings += scene.small_strain_warnings(fields, built.h, strain_unit)
     timings.total = time.perf_counter() - start
     return Result(method=discretisation.name, scene=scene, degree=discretisation.degree, dofs=built.dofs,
-                  timings=timings, solver=report, fields=fields, interface=path, discretisation=built.record)
+                  timings=timings, solver=report, fields=fields, interface=path, discretisation=built.record,
+                  facts=discretisation.facts())

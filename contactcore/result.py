@@ -38,7 +38,7 @@ class Fields(Protocol):
         """``(σxx, σyy, σxy)`` (m, 3) of body ``bodies[i]`` at ``points[i]``."""
 
     # A method whose ``stress`` is recovered rather than its displacement's
-    # own (xfem P1: contactcore.estimate.orders.RECOVERED_STRESS) also has
+    # own (xfem P1: MethodFacts.recovered_stress) also has
     # ``direct_stress(points, bodies)``, σ(u_h) itself, which the energy
     # norm of the error measures; a Result's fields always have it (the
     # stress where the method has none: :class:`contactcore.scaling.ScaledFields`).
@@ -219,6 +219,27 @@ class SolverReport:
     first_map: str = ""
 
 
+@dataclass(frozen=True)
+class MethodFacts:
+    """What the error estimate (:mod:`contactcore.estimate`) must know of
+    the method and degree that solved a run, as its options declared them
+    (:meth:`contactcore.discretisation.Discretisation.facts`, where each
+    fact's meaning and measurement are): ``recovered_stress`` (its
+    reported stress is recovered, not its displacement's own),
+    ``meshfree`` (its stencil is a support of ``dmax · h``, its cells'
+    error its quadrature's), ``quadrature_energy`` (its energy estimate
+    is named below a share of the run's energy) and ``fast_gamma`` (its
+    Γ quantities are named as converging faster than theory allows).
+    The defaults, all False, are a mesh method's whose stress is its
+    displacement's own.  Plain values: a :class:`Result` carries them
+    through pickling (a pool's or mpi4py.futures' workers) unchanged."""
+
+    recovered_stress: bool = False
+    meshfree: bool = False
+    quadrature_energy: bool = False
+    fast_gamma: bool = False
+
+
 @dataclass
 class Result:
     """One method's solution of one scene at the full load, the same type
@@ -233,8 +254,11 @@ class Result:
     and stress at any points; ``discretisation`` records the mesh or nodes
     (cells, h, quadrature); ``interface``, for a law with history or a
     followed path, holds Γ's jump, traction and status at every increment
-    (:class:`~contactcore.interface_path.InterfacePath`); :meth:`summary`
-    is the JSON record ``run`` writes."""
+    (:class:`~contactcore.interface_path.InterfacePath`); ``facts`` what
+    the method's options declared of it at this degree (:class:`MethodFacts`,
+    set once by :func:`contactcore.discretisation.solve`; the defaults for
+    a peer's run), which the error estimate reads; :meth:`summary` is the
+    JSON record ``run`` writes (without ``facts``)."""
 
     method: str
     scene: object
@@ -245,6 +269,7 @@ class Result:
     fields: Fields
     discretisation: dict = field(default_factory=dict)
     interface: object = None  # contactcore.interface_path.InterfacePath: every increment on Γ
+    facts: MethodFacts = field(default_factory=MethodFacts)
 
     def summary(self) -> dict:
         """A JSON-ready record of the run (no field values); with an

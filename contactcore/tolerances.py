@@ -1348,31 +1348,8 @@ SPRING_BONDED_CELLS = 0.08
 #: docs/error-estimates.md, "Which estimates to warn of".
 CELL_SCALE_EXCESS = 0.5
 
-#: The (method, degree) pairs whose gaps and tractions on Γ a two-run
-#: estimate names (estimate.caveats.fast_gamma): they mostly converge
-#: faster than the order the estimate takes (degree + 1).  Since
-#: 2026-11-28 (grader21's F3) the warning gives no direction: 14 of the
-#: 128 entries below 1 (the layered slip's t_N, t_T, g_N 0.55, where
-#: EFGM's quadrature sets the error), 80 above 2.
-#: EFGM P1's converged at 2.52 on the twisted rod, 2.66 on the quadratic
-#: layers and 2.81 on the pressurised rod against 2 (closed forms, h =
-#: 0.05 -> 0.025, true errors), and their estimates read 2.02, 2.09 and
-#: 2.33; the twisted rod's, 2.015, was named by no warning (its runs' part
-#: at the cells' scale shrank at 2.48, 0.02 short of CELL_SCALE_EXCESS).
-#: Measured 2026-11-28 over every EFGM P1 Γ entry of four sets (two-run,
-#: kept samples): closed forms 6 of 14 outside [0.5, 2], grader17's ten
-#: scenes 19 of 42, the nine held-out scenes 55 of 64, A, B, C 0 of 8;
-#: every one outside lies above 2.  The rule's own precision, 80 of 128,
-#: is twice the other warnings' (0.18-0.34), and it names, beyond what
-#: the other warnings named, the twisted rod's two entries outside and
-#: four inside (grader17's exact Lamé disc g_N 1.41 and springs' t_T
-#: 0.81; C's t_N 1.33, t_T 1.50).  EFGM P2's Γ quantities converge at their order
-#: (0.82-1.24 on the closed forms) and are left out.
-#: docs/error-estimates-log.md, "The reach cause narrowed, and EFGM P1's
-#: Γ quantities named".
-FAST_GAMMA = (("efgm", 1),)
-
-#: From three runs, EFGM P1's Γ quantities (FAST_GAMMA) are named where
+#: From three runs, EFGM P1's Γ quantities (efgm.options.EFGM.fast_gamma, its
+#: measurement) are named where
 #: their observed order exceeds the highest theory allows by more than
 #: this (the estimate then takes that highest, capped): a margin so that
 #: an order at theory's (2.0000000000001 for runs differing exactly as
@@ -1600,7 +1577,7 @@ GRAZING_PRESSURE = 0.15
 GRAZING_SHEAR = 5e-2
 
 #: The relative Zienkiewicz–Zhu estimate (``eta`` over ``‖σ_h‖_E``) of
-#: EFGM P1 (contactcore.estimate.caveats.QUADRATURE_ENERGY) below which
+#: EFGM P1 (efgm.options.EFGM.quadrature_energy) below which
 #: contactcore.estimate.caveats.quadrature_energy names
 #: the energy estimate.  EFGM P1 reproduces a piecewise-linear field but
 #: for its Gauss quadrature; where the field is nearly so, that quadrature's

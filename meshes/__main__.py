@@ -7,7 +7,7 @@ import sys
 
 from contactcore import ContactError, load_scene
 from contactcore import tolerances as tol
-from contactcore.budget import check_budget
+from contactcore.budget import Counted, check_budget
 from contactcore.endings import INTERRUPTED, TERMINATED, Terminated
 from contactcore.scene import check_resolution, smallest_dimension
 
@@ -30,6 +30,15 @@ def main(argv=None) -> int:
         return TERMINATED if isinstance(exc, Terminated) else INTERRUPTED
     finally:
         signal.signal(signal.SIGTERM, previous)
+
+
+def fe_solve(order: int) -> Counted:
+    """What :func:`contactcore.budget.check_budget` reads of fe's solve on
+    the mesh of ``order``: fe's facts (:class:`xdolfinx.options.FE`, which
+    ``meshes`` may not import: xdolfinx imports meshes), one field per
+    body, ``order²`` nodes a cell; tests/test_method_facts.py holds them
+    to FE's."""
+    return Counted("fe", order, field_copies=2)
 
 
 def _command(argv=None) -> int:
@@ -63,7 +72,7 @@ def _command(argv=None) -> int:
             raise ContactError("--grade-distance: grades nothing without --grade FACTOR")
         grading = None if args.grade is None else check_grading(scene, h, args.grade, args.grade_distance)
         if not args.allow_large:  # at the graded size: a safe upper bound, as if the whole domain took it
-            check_budget(scene, h if grading is None else h * grading.factor, args.order, "fe",
+            check_budget(scene, h if grading is None else h * grading.factor, fe_solve(args.order),
                          "--h" if grading is None else f"--h {h:g} × --grade {grading.factor:g}: the size")
         out = write_mesh(scene, h, out, order=args.order, grading=grading)
     except ContactError as exc:

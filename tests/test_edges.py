@@ -9,6 +9,7 @@ import pytest
 
 from contactcore import load_scene
 from contactcore.budget import TooLargeError, check_budget, estimate
+from xdolfinx.options import FE
 from verification import files
 from verification.__main__ import main
 
@@ -240,7 +241,7 @@ def test_a_size_beyond_the_machine_is_refused_before_any_work(tmp_path, capsys):
 
 def test_the_estimate_grows_with_the_unknowns():
     scene = load_scene("C-coulomb")
-    small, large = estimate(scene, 0.1, 1, "fe"), estimate(scene, 0.05, 2, "fe")
+    small, large = estimate(scene, 0.1, FE(degree=1)), estimate(scene, 0.05, FE(degree=2))
     assert large.unknowns == pytest.approx(16 * (small.unknowns - 4) + 4)
     assert large.memory > small.memory and small.solves == 3 * scene.increments
 
@@ -279,10 +280,10 @@ def test_a_followed_path_counts_its_increments_whatever_the_law():
     """A linear law on a followed path solves and keeps every increment:
     1e9 of them are refused by the estimate, not run until killed."""
     scene = load_scene("A").with_changes(follow_path=True)
-    assert estimate(scene, 0.1, 1, "fe").solves == scene.increments
-    assert estimate(scene.with_changes(follow_path=False), 0.1, 1, "fe").solves == 1
+    assert estimate(scene, 0.1, FE(degree=1)).solves == scene.increments
+    assert estimate(scene.with_changes(follow_path=False), 0.1, FE(degree=1)).solves == 1
     with pytest.raises(TooLargeError, match="increments"):
-        check_budget(scene.with_changes(increments=10 ** 9), 0.1, 1, "fe")
+        check_budget(scene.with_changes(increments=10 ** 9), 0.1, FE(degree=1))
 
 
 def test_a_scene_that_is_not_text(tmp_path, capsys):

@@ -11,9 +11,14 @@ from contactcore import load_scene
 from contactcore import estimate as est
 from contactcore import tolerances as core_tol
 from contactcore.scaling import Sizes
-from verification import files
+from verification import files, methods
 from verification.effectivity import CASES, VARIANTS, effectivity
 from verification.run import NOT_ESTIMATED, NOT_ESTIMATED_MARK, run
+
+
+def _facts(name: str, degree: int):
+    """Method ``name``'s facts at ``degree``, as its options declare them."""
+    return methods.discretisation(name)(degree=degree).facts()
 
 #: The paper scenes' effectivity setting (the issue's): runs h = 0.05 ->
 #: 0.025 against fe P2 at h = 0.00625.
@@ -59,7 +64,7 @@ def test_a_degree_one_stress_is_estimated_within_root_three_of_either_order_it_m
     superconverges, at p + 1: with two runs the estimate is off by the
     same factor either way, ((2^(p+1) − 1)/(2^p − 1))^½ (√3 for p = 1),
     and by no more; the other quantities keep their one order."""
-    low, high = est.order_range("sxx", 1, "xfem" if p == 2 else "fe")
+    low, high = est.order_range("sxx", 1, _facts("xfem" if p == 2 else "fe", 1))
     assert (low, high) == (p, p + 1) and est.order_range("ux", 1) == (2, 2) and est.order_range("sxx", 2) == (2, 2)
     bound = np.sqrt((2.0 ** high - 1) / (2.0 ** low - 1))
     s = np.linspace(0.0, 1.0, 11)
@@ -297,7 +302,7 @@ def test_run_estimate_writes_the_errors(tmp_path):
                 assert names[names.index(q) + 1] == f"{q}_err"
                 record = estimate["A1"][q]
                 assert record["max"] == pytest.approx(max(columns[f"{q}_err"]))
-                orders = est.order_range(q, 1, name, load_scene("A").law, pollution=est.pollution_order(load_scene("A")))
+                orders = est.order_range(q, 1, _facts(name, 1), load_scene("A").law, pollution=est.pollution_order(load_scene("A")))
                 assert record["orders"] == pytest.approx(list(orders))
                 assert record["order"] == pytest.approx(est.balanced_order(*orders))
                 # summary.md's figure: over the samples at least 0.1 L from Γ's ends (A1 lies on Γ)
@@ -305,7 +310,7 @@ def test_run_estimate_writes_the_errors(tmp_path):
                 keep = np.minimum(x, 1.0 - x) >= 0.1 * np.sqrt(2.0)
                 assert record["kept_rms"] == pytest.approx(np.sqrt(np.mean(err[keep] ** 2)), rel=tol.SAME_SUMS)
         for q, record in estimate["A5"].items():  # Γ's gaps and tractions: the orders the scene allows them
-            orders = est.order_range(q, 1, name, load_scene("A").law, pollution=est.pollution_order(load_scene("A")))
+            orders = est.order_range(q, 1, _facts(name, 1), load_scene("A").law, pollution=est.pollution_order(load_scene("A")))
             assert record["orders"] == pytest.approx(list(orders)) and record["order"] >= orders[0]
     assert json.loads((out / "run.json").read_text())["estimate"] == 2
     units = json.loads(files.write_units(out).read_text())
@@ -425,11 +430,11 @@ def test_an_exact_law_caps_the_orders_on_gamma():
     bonded = make_law({"type": "bonded"})
     penalty = load_scene("C-coulomb").law
     for k in (1, 2):
-        assert [est.theoretical_order(q, k, "fe", coulomb) for q in ("gN", "gT", "tN", "tT")] == [min(k + 1, 2)] * 2 + [1] * 2
-        assert [est.theoretical_order(q, k, "fe", bonded) for q in ("gN", "tN")] == [k + 1, k]
-        assert [est.theoretical_order(q, k, "fe", penalty) for q in ("gN", "tN")] == [k + 1, k + 1]
-        assert est.theoretical_order("sxx", k, "fe", coulomb) == est.theoretical_order("sxx", k, "fe") == k
-        assert est.theoretical_order("ux", k, "efgm", coulomb) == k + 1
+        assert [est.theoretical_order(q, k, _facts("fe", k), coulomb) for q in ("gN", "gT", "tN", "tT")] == [min(k + 1, 2)] * 2 + [1] * 2
+        assert [est.theoretical_order(q, k, _facts("fe", k), bonded) for q in ("gN", "tN")] == [k + 1, k]
+        assert [est.theoretical_order(q, k, _facts("fe", k), penalty) for q in ("gN", "tN")] == [k + 1, k + 1]
+        assert est.theoretical_order("sxx", k, _facts("fe", k), coulomb) == est.theoretical_order("sxx", k, _facts("fe", k)) == k
+        assert est.theoretical_order("ux", k, _facts("efgm", k), coulomb) == k + 1
 
 
 def test_a_status_that_never_changes_along_gamma_lifts_the_cap():
@@ -456,8 +461,8 @@ def test_a_status_that_never_changes_along_gamma_lifts_the_cap():
     assert not est.switches([path([2, 2]), path([2, 2, 2])])  # one slip direction
     assert est.switches([path([2, 2]), path([2, 2], shear=-1.0)])  # t_T jumps from +μp to −μp
     unilateral = make_law({"type": "unilateral", "enforcement": "exact"})
-    assert [est.theoretical_order(q, 2, "fe", unilateral, switching=False) for q in ("gN", "tN")] == [3, 2]
-    assert [est.theoretical_order(q, 2, "fe", unilateral, switching=True) for q in ("gN", "tN")] == [2, 1]
+    assert [est.theoretical_order(q, 2, _facts("fe", 2), unilateral, switching=False) for q in ("gN", "tN")] == [3, 2]
+    assert [est.theoretical_order(q, 2, _facts("fe", 2), unilateral, switching=True) for q in ("gN", "tN")] == [2, 1]
 
     scene = load_scene("A").with_changes(law=unilateral)
     runs = [methods.solver("fe")(scene, h, degree=2) for h in (0.1, 0.05)]
@@ -508,8 +513,8 @@ def test_two_run_estimates_at_order_three_warn_of_corner_pollution():
     profiles = {"A5": {"gN": quantity(3), "gT": quantity(3)}, "A1": {"sxy": quantity(2)}}
     (warning,) = est.pollution_warning(load_scene("B"), profiles)
     assert warning.startswith("A5:gN, A5:gT: estimated at order 3") and "--estimate 3" in warning
-    assert est.order_range("gN", 2, "fe", pollution=est.pollution_order(load_scene("A")))[0] < 2
-    assert est.order_range("gN", 2, "fe", pollution=est.pollution_order(load_scene("B"))) == (3, 3)
+    assert est.order_range("gN", 2, _facts("fe", 2), pollution=est.pollution_order(load_scene("A")))[0] < 2
+    assert est.order_range("gN", 2, _facts("fe", 2), pollution=est.pollution_order(load_scene("B"))) == (3, 3)
     assert est.pollution_warning(pressurised_rod().scene, profiles) == []
     assert est.pollution_warning(load_scene("A"), {"A5": {"gN": quantity(2), "gT": quantity(3, measured=3.0)}}) == []
 
@@ -574,11 +579,11 @@ def test_the_pollution_order_comes_from_the_scenes_singular_points():
     assert est.interface_end_exponents(a.with_changes(law=make_law({"type": "bonded", "enforcement": "exact"}))) == []
     side = est.interface_end_exponents(a.with_changes(supports=(Support("left"),)))
     assert side == pytest.approx([right, 1.0])  # (0, 0.5) on the clamped left side, (1, 0.5) on the free right
-    assert est.order_range("ux", 1, "fe", pollution=2 * right) == (2 * right, 2)
-    assert est.order_range("tN", 2, "fe", pollution=2 * right) == (2 * right, 3)
-    assert est.order_range("tN", 2, "fe", make_law({"type": "bonded", "enforcement": "exact"}), pollution=1.5) == (2, 2)
-    assert est.order_range("sxx", 2, "fe", pollution=1.5) == (2, 2)
-    assert est.order_range("sxx", 1, "xfem", pollution=1.5) == (2, 3)
+    assert est.order_range("ux", 1, _facts("fe", 1), pollution=2 * right) == (2 * right, 2)
+    assert est.order_range("tN", 2, _facts("fe", 2), pollution=2 * right) == (2 * right, 3)
+    assert est.order_range("tN", 2, _facts("fe", 2), make_law({"type": "bonded", "enforcement": "exact"}), pollution=1.5) == (2, 2)
+    assert est.order_range("sxx", 2, _facts("fe", 2), pollution=1.5) == (2, 2)
+    assert est.order_range("sxx", 1, _facts("xfem", 1), pollution=1.5) == (2, 3)
 
 
 def test_an_edge_held_by_two_supports_is_clamped():
@@ -676,9 +681,9 @@ def test_efgm_p2s_supports_carry_no_defect_of_their_own():
     for scene in (a, load_scene("B")):
         pollution = est.pollution_order(scene)
         for q in ("ux", "uy", "sxx", "syy", "sxy", "gN", "gT", "tN", "tT"):
-            assert est.order_range(q, 2, "efgm", scene.law, pollution=pollution) == \
-                est.order_range(q, 2, "fe", scene.law, pollution=pollution), (scene.name, q)
-    assert est.order_range("ux", 2, "efgm", a.law, pollution=est.pollution_order(a)) == (est.pollution_order(a), 3)
+            assert est.order_range(q, 2, _facts("efgm", 2), scene.law, pollution=pollution) == \
+                est.order_range(q, 2, _facts("fe", 2), scene.law, pollution=pollution), (scene.name, q)
+    assert est.order_range("ux", 2, _facts("efgm", 2), a.law, pollution=est.pollution_order(a)) == (est.pollution_order(a), 3)
 
 
 def test_a_runs_stencil_is_its_cells_supports_or_recovery_patch():
@@ -687,11 +692,11 @@ def test_a_runs_stencil_is_its_cells_supports_or_recovery_patch():
     of RECOVERY_RINGS vertex rings around the cell, every other quantity
     one cell."""
     efgm = {"h": 0.05, "dmax": 2.0, "support": "circular"}
-    assert est.stencil_radius(efgm, "efgm", 1, "sxx") == pytest.approx(0.1)
-    assert est.stencil_radius({**efgm, "support": "rectangular"}, "efgm", 1, "gN") == pytest.approx(0.1 * np.sqrt(2))
-    assert est.stencil_radius({"h": 0.05}, "xfem", 1, "sxy") == pytest.approx((core_tol.RECOVERY_RINGS + 1) * 0.05)
-    assert est.stencil_radius({"h": 0.05}, "xfem", 1, "gN") == pytest.approx(0.05)
-    assert est.stencil_radius({"h": 0.05}, "fe", 2, "sxy") == pytest.approx(0.05)
+    assert est.stencil_radius(efgm, _facts("efgm", 1), "sxx") == pytest.approx(0.1)
+    assert est.stencil_radius({**efgm, "support": "rectangular"}, _facts("efgm", 1), "gN") == pytest.approx(0.1 * np.sqrt(2))
+    assert est.stencil_radius({"h": 0.05}, _facts("xfem", 1), "sxy") == pytest.approx((core_tol.RECOVERY_RINGS + 1) * 0.05)
+    assert est.stencil_radius({"h": 0.05}, _facts("xfem", 1), "gN") == pytest.approx(0.05)
+    assert est.stencil_radius({"h": 0.05}, _facts("fe", 2), "sxy") == pytest.approx(0.05)
 
 
 def test_the_smallest_feature_is_the_domains_or_a_circular_gammas():
@@ -726,14 +731,14 @@ def test_a_coarse_run_whose_stencil_reaches_a_singular_point_or_spans_a_feature_
     warning names the quantity."""
     scene = load_scene("A")
     record = {"h": h} if dmax is None else {"h": h, "dmax": dmax, "support": "circular"}
-    found = est.unsettled(scene, [_line_along_gamma(0.15)], record, method, 1, exclude=0.1)
+    found = est.unsettled(scene, [_line_along_gamma(0.15)], record, _facts(method, 1), exclude=0.1)
     assert {cause for cause, names in found.items() if names} == causes
     lines = est.unsettled_warnings(found, h, est.feature_size(scene), thin=est.thinnest_body(scene))
     assert len(lines) == len(causes) and all(line.startswith("L:sxx: ") for line in lines)
     assert ("the thinner body across Γ is 0.5 thick" in " ".join(lines)) == ("thin" in causes)
     for cause in causes:  # the h from which the cause is gone: just below it, it is
         (_, h_ok), = found[cause].values()
-        below = est.unsettled(scene, [_line_along_gamma(0.15)], {**record, "h": h_ok * (1 - tol.ACROSS_A_THRESHOLD)}, method, 1,
+        below = est.unsettled(scene, [_line_along_gamma(0.15)], {**record, "h": h_ok * (1 - tol.ACROSS_A_THRESHOLD)}, _facts(method, 1),
                               exclude=0.1)
         assert not below[cause] and f"h = {h_ok:.3g} avoids" in " ".join(lines)
 
@@ -760,13 +765,13 @@ def test_a_body_thinner_than_two_stencils_across_gamma_is_not_asymptotic(tmp_pat
     assert est.thinnest_body(scene) == pytest.approx(0.15)
     assert est.thinnest_body(load_scene("B")) == est.thinnest_body(load_scene("C")) == np.inf
     record = {"h": h} if dmax is None else {"h": h, "dmax": dmax, "support": "circular"}
-    found = est.unsettled(scene, [_line_along_gamma(0.45)], record, method, 1, exclude=0.1)
+    found = est.unsettled(scene, [_line_along_gamma(0.45)], record, _facts(method, 1), exclude=0.1)
     assert bool(found["thin"]) == thin
     if thin:
         (_, h_ok), = found["thin"].values()
         assert h_ok == pytest.approx(h * 0.15 / (core_tol.THIN_BODY_STENCILS * (h if dmax is None else dmax * h)))
         below = est.unsettled(scene, [_line_along_gamma(0.45)], {**record, "h": h_ok * (1 - tol.ACROSS_A_THRESHOLD)},
-                              method, 1, exclude=0.1)
+                              _facts(method, 1), exclude=0.1)
         assert not below["thin"]
 
 
@@ -778,7 +783,7 @@ def test_a_stencil_exactly_at_a_threshold_is_no_cause_whatever_the_round_off():
     scene = load_scene("A")
     for nudge in (1 - core_tol.GEOMETRY / 10, 1.0, 1 + core_tol.GEOMETRY / 10):
         record = {"h": 0.05 * nudge, "dmax": 2.5, "support": "circular"}
-        found = est.unsettled(scene, [_line_along_gamma(0.25)], record, "efgm", 1, exclude=0.1)
+        found = est.unsettled(scene, [_line_along_gamma(0.25)], record, _facts("efgm", 1), exclude=0.1)
         assert not found["coarse"] and not found["reach"], nudge
 
 
@@ -827,12 +832,12 @@ def test_only_a_mesh_methods_polluted_quantities_are_split():
     does not converge), not where nothing pollutes, not an exact law's
     traction."""
     from contactcore import make_law
-    assert est.polluted("gN", 2, "fe", pollution=1.52) and est.polluted("ux", 1, "xfem", pollution=1.52)
-    assert not est.polluted("sxx", 2, "fe", pollution=1.52)
-    assert not est.polluted("gN", 2, "efgm", pollution=1.52) and not est.polluted("ux", 2, "efgm", pollution=1.52)
-    assert not est.polluted("gN", 2, "fe")
+    assert est.polluted("gN", 2, _facts("fe", 2), pollution=1.52) and est.polluted("ux", 1, _facts("xfem", 1), pollution=1.52)
+    assert not est.polluted("sxx", 2, _facts("fe", 2), pollution=1.52)
+    assert not est.polluted("gN", 2, _facts("efgm", 2), pollution=1.52) and not est.polluted("ux", 2, _facts("efgm", 2), pollution=1.52)
+    assert not est.polluted("gN", 2, _facts("fe", 2))
     exact = make_law({"type": "unilateral", "enforcement": "exact"})
-    assert not est.polluted("tN", 2, "fe", exact, switching=False, pollution=1.52)
+    assert not est.polluted("tN", 2, _facts("fe", 2), exact, switching=False, pollution=1.52)
 
 
 def test_a_line_across_gamma_is_split_there_and_at_left_out_samples():
@@ -875,7 +880,7 @@ def test_a_coarse_run_rough_at_its_cells_beyond_theory_is_not_asymptotic(rate, w
     stress = Sizes.of(scene).stress  # A's load
     levels = _runs_along_gamma(lambda s, hk: stress * (1.0 + s + 0.1 * s ** 2
                                                        + 100.0 * hk ** rate * np.sin(2 * np.pi * s / hk + 0.3)), h)
-    theory = est.order_range("sxx", 1, "fe")
+    theory = est.order_range("sxx", 1, _facts("fe", 1))
     estimates = {"L": {"sxx": est.QuantityEstimate(np.zeros(281), est.balanced_order(*theory), theory)}}
     found = est.cell_scale_orders(scene, levels, estimates, 0.1, h)
     assert bool(found) == warns, found
@@ -894,7 +899,7 @@ def test_a_smooth_value_round_off_at_the_cells_or_an_observed_order_shows_no_cel
     (rough as they may be), and an estimate whose order three runs
     observed (left to the order's own warning): none is named."""
     scene, h = load_scene("A"), 0.05
-    theory = est.order_range("sxx", 1, "fe")
+    theory = est.order_range("sxx", 1, _facts("fe", 1))
     two = {"L": {"sxx": est.QuantityEstimate(np.zeros(281), 1.45, theory)}}
     smooth = _runs_along_gamma(lambda s, hk: np.sin(3 * s) + hk * s, h)
     assert est.cell_scale_orders(scene, smooth, two, 0.1, h) == {}
@@ -922,7 +927,7 @@ def _two_profiles(share, other="sxy", h=0.05):
     value = lambda k, hk: stress * (1.0 + x + k * hk ** 2 * np.sin(5 * x))  # noqa: E731
     levels = [[ProfileData("L", "arclength", {**base, "sxx": value(1.0, hk)}),
                ProfileData("M", "arclength", {**base, other: value(share, hk)})] for hk in (h, h / 2)]
-    theory = est.order_range("sxx", 2, "xfem")
+    theory = est.order_range("sxx", 2, _facts("xfem", 2))
     estimates = {pid: {q: est.QuantityEstimate(np.zeros(281), 2.0, theory)}
                  for pid, q in (("L", "sxx"), ("M", other))}
     return scene, levels, estimates
@@ -1043,9 +1048,9 @@ def test_a_two_run_estimate_among_three_runs_is_compared_with_every_quantity_of_
     flat[hs[-1]] = flat[hs[-1]] + tol.RESIDUE_BELOW * (value(hs[-1]) - value(hs[-2]))
     levels = [[ProfileData("L", "arclength", {**base, "sxx": value(hk)}),
                ProfileData("M", "arclength", {**base, "sxy": flat[hk]})] for hk in hs]
-    three = est.profile_estimates(levels, 2, "xfem", scene=scene, exclude=0.1)
+    three = est.profile_estimates(levels, 2, _facts("xfem", 2), scene=scene, exclude=0.1)
     assert three["L"]["sxx"].observed and not three["M"]["sxy"].observed
-    two = est.profile_estimates(levels[1:], 2, "xfem", scene=scene, exclude=0.1)
+    two = est.profile_estimates(levels[1:], 2, _facts("xfem", 2), scene=scene, exclude=0.1)
     assert "M:sxy" in est.residues(scene, levels[1:], two, 0.1)
     assert "M:sxy" in est.residues(scene, levels, three, 0.1)
 

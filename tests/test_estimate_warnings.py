@@ -16,6 +16,11 @@ from verification.agreement import default_exclusion
 from verification.effectivity import CASES, exact_profiles, profile_rows, rungs
 
 
+def _facts(name: str, degree: int):
+    """Method ``name``'s facts at ``degree``, as its options declare them."""
+    return methods.discretisation(name)(degree=degree).facts()
+
+
 def test_a_roller_makes_its_corners_and_a_perpendicular_gammas_ends_smooth():
     """est.reflected: the quadratic layers (clamped base, rollers on both
     sides, Γ horizontal) have their base corners on a roller and Γ's ends
@@ -75,9 +80,9 @@ def test_a_one_cell_stencil_reaches_a_singular_point_only_where_the_runs_differ_
     scene = load_scene("A")
     record = {"h": 0.1} if method == "fe" else {"h": 0.1, "dmax": 2.0, "support": "circular"}
     runs = _runs_along_gamma(near, 1.0)
-    found = est.unsettled(scene, runs, record, method, 1, exclude=0.1)
+    found = est.unsettled(scene, runs, record, _facts(method, 1), exclude=0.1)
     assert bool(found["reach"]) == reach
-    assert est.unsettled(scene, runs[1:], record, method, 1, exclude=0.1)["reach"]
+    assert est.unsettled(scene, runs[1:], record, _facts(method, 1), exclude=0.1)["reach"]
 
 
 def test_a_difference_at_round_off_leaves_the_reach_cause_standing():
@@ -86,7 +91,7 @@ def test_a_difference_at_round_off_leaves_the_reach_cause_standing():
     reach cause stands."""
     scene = load_scene("A")
     runs = _runs_along_gamma(0.0, core_tol.ESTIMATE_ROUNDOFF)
-    assert est.unsettled(scene, runs, {"h": 0.1}, "fe", 1, exclude=0.1)["reach"]
+    assert est.unsettled(scene, runs, {"h": 0.1}, _facts("fe", 1), exclude=0.1)["reach"]
 
 
 def _estimate(observed: bool) -> est.QuantityEstimate:
@@ -97,7 +102,7 @@ def _estimate(observed: bool) -> est.QuantityEstimate:
 
 def test_efgm_p1s_gaps_and_tractions_are_named_without_a_direction():
     """est.fast_gamma: EFGM P1's g_N, g_T, t_N, t_T estimated from two
-    runs (core_tol.FAST_GAMMA), or from three at an observed order above
+    runs (efgm.options.EFGM.fast_gamma), or from three at an observed order above
     theory's (capped), not one observed within theory, not its
     displacements, not EFGM P2's nor fe's; the warning names them and
     claims no direction (measured 0.49 to 10.6 times the error)."""
@@ -105,10 +110,10 @@ def test_efgm_p1s_gaps_and_tractions_are_named_without_a_direction():
     fast = est.richardson([np.linspace(0.0, 1.0, 5) * (1.0 + h ** 3) for h in (0.1, 0.05, 0.025)], theory=(2, 2))
     assert three.measured <= three.theory[1] + core_tol.FAST_GAMMA_EXCESS < fast.measured
     profiles = {"G": {"gN": two, "tT": two, "ux": two}, "H": {"gT": three, "tN": fast}}
-    assert ("efgm", 1) in core_tol.FAST_GAMMA
-    names = est.fast_gamma(profiles, "efgm", 1)
+    assert _facts("efgm", 1).fast_gamma
+    names = est.fast_gamma(profiles, _facts("efgm", 1))
     assert names == ["G:gN", "G:tT", "H:tN"]
-    assert not est.fast_gamma(profiles, "efgm", 2) and not est.fast_gamma(profiles, "fe", 1)
+    assert not est.fast_gamma(profiles, _facts("efgm", 2)) and not est.fast_gamma(profiles, _facts("fe", 1))
     for observed in (False, True):
         line, = est.fast_gamma_warning(names, "efgm", 1, observed)
         assert line.startswith("G:gN, G:tT, H:tN: ") and "either way" in line
@@ -175,9 +180,9 @@ def test_a_bulk_displacement_at_an_exact_gammas_end_keeps_the_reach_cause_howeve
     levels = [r[0].columns["ux"] for r in runs]
     widened = {"L": {"ux": est.richardson(levels, theory=(1.42, 3), low=True)}}
     assert est.lower_end("ux", widened["L"]["ux"].theory, True)
-    assert est.unsettled(scene, runs, {"h": 0.1}, "fe", 2, exclude=0.1, estimates=widened)["reach"]
+    assert est.unsettled(scene, runs, {"h": 0.1}, _facts("fe", 2), exclude=0.1, estimates=widened)["reach"]
     plain = {"L": {"ux": est.richardson(levels, theory=(3, 3))}}
-    assert not est.unsettled(scene, runs, {"h": 0.1}, "fe", 2, exclude=0.1, estimates=plain)["reach"]
+    assert not est.unsettled(scene, runs, {"h": 0.1}, _facts("fe", 2), exclude=0.1, estimates=plain)["reach"]
 
 
 def test_a5s_fe_p2_gap_is_named_by_the_share_of_its_difference_at_the_cells_scale():

@@ -90,13 +90,14 @@ def test_fe_p1_with_an_exact_law_warns_of_its_traction_locking_from_its_own_thre
     said = FE(degree=1).spacing_warnings(_rod(nu), 0.1)
     assert bool(said) == warned and all("fe P1's exactly enforced" in w for w in said), said
     assert FE(degree=2).spacing_warnings(_rod(nu), 0.1) == []
-    assert health.traction_locking_warnings(_rod(nu), "xfem", 1) == []
+    from xdolfinx.options import XFEM
+    assert XFEM(degree=1).spacing_warnings(_rod(nu), 0.1) == []  # fe's own traction's, not asked of xfem
 
 
 def test_fe_p1_on_springs_or_in_plane_stress_is_not_warned_of_traction_locking():
     from contactcore import LinearLaw
-    assert health.traction_locking_warnings(_rod(0.46, LinearLaw(1e15, 1e15)), "fe", 1) == []
-    assert health.traction_locking_warnings(_rod(0.46).with_changes(plane="stress").validated(), "fe", 1) == []
+    assert health.traction_locking_warnings(_rod(0.46, LinearLaw(1e15, 1e15)), 1) == []
+    assert health.traction_locking_warnings(_rod(0.46).with_changes(plane="stress").validated(), 1) == []
 
 
 def test_locking_is_warned_at_nu_locking_warn_itself():

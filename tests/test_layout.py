@@ -238,3 +238,43 @@ def test_every_source_file_compiles_without_a_warning():
         warnings.simplefilter("error")
         for path in paths:
             compile(path.read_text(), str(path), "exec")
+
+
+
+def _docstrings(tree) -> set[int]:
+    """The ids of the docstring constants of ``tree``'s module, classes and functions."""
+    found = set()
+    for node in ast.walk(tree):
+        if isinstance(node, (ast.Module, ast.ClassDef, ast.FunctionDef, ast.AsyncFunctionDef)) and node.body:
+            first = node.body[0]
+            if isinstance(first, ast.Expr) and isinstance(first.value, ast.Constant) and isinstance(first.value.value, str):
+                found.add(id(first.value))
+    return found
+
+
+def method_names_in(text: str, names) -> list[tuple[int, str]]:
+    """``(line, name)`` of each string constant of the source ``text`` equal
+    to one of the method ``names``, docstrings left out (they may name a
+    method as an example); an f-string's literal parts count too."""
+    tree = ast.parse(text)
+    docs = _docstrings(tree)
+    return sorted((node.lineno, node.value) for node in ast.walk(tree)
+                  if isinstance(node, ast.Constant) and isinstance(node.value, str) and node.value in names
+                  and id(node) not in docs)
+
+
+def test_the_core_names_no_method():
+    """contactcore imports no method and names none: a fact about a method
+    is declared by its options class (contactcore.discretisation.Discretisation)
+    and read from the options or the Result, never looked up by the
+    method's name (docs/architecture.md, "A new method")."""
+    from verification.methods import METHODS
+    found = [f"{path.relative_to(ROOT)}:{line}: {name!r}" for path in sorted((ROOT / "contactcore").rglob("*.py"))
+             for line, name in method_names_in(path.read_text(), METHODS)]
+    assert found == []
+
+
+def test_the_method_name_check_sees_a_name_but_not_a_docstring():
+    source = ('"""fe and xfem."""\nFIELDS = {"fe": 2}\n\n\ndef f(m):\n    """efgm"""\n'
+              '    return m != "efgm" or f"{m}" == "xfem"\n')
+    assert method_names_in(source, ("fe", "xfem", "efgm")) == [(2, "fe"), (7, "efgm"), (7, "xfem")]

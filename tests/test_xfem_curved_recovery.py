@@ -78,7 +78,7 @@ def test_the_estimate_names_xfem_p1_stresses_next_to_a_curved_gamma(method):
     estimate = est.estimate_runs(scene, results, 0.0)
     layer = [w for w in estimate.warnings if "within a cell" in w and "curved Γ" in w]
     caveat = [w for w in estimate.warnings if w.startswith("energy (ZZ)")]
-    named = est.curved_layer(scene, [estimate.sampled], method, 1, estimate.hs[0], 0.0)
+    named = est.curved_layer(scene, [estimate.sampled], methods.discretisation(method)(degree=1).facts(), estimate.hs[0], 0.0)
     if method == "xfem":
         assert named == ["across:sxx", "across:syy", "across:sxy"], named
         assert set(named) <= estimate.unsettled

@@ -1496,3 +1496,13 @@ LAYER_UNITS_ROUNDOFF = 1e-12
 #: largest |σ| on scene A at h = 0.2.  Round-off of a shared evaluation
 #: would be 1e-14; the bound sits far from both.
 FACT_STRESS_ROUNDOFF = 1e-10
+
+# --- facts (2026-11-29): the methods' facts held to their runs ---
+#: tests/test_method_facts.py: the least two-run effectivity of a
+#: variant's gaps and tractions on Γ over the pressurised rod, the
+#: twisted rod and the quadratic layers (verification.effectivity's
+#: variants and rungs; measured 2026-11-29): EFGM P1 2.02 (the twisted
+#: rod), 2.09, 2.33 (efgm.options.EFGM.fast_gamma); every other variant
+#: at most 1.24 (EFGM P2 on the pressurised rod), fe and xfem 0.73-1.20.
+#: The bound lies between, a factor 1.26 from each side.
+FAST_GAMMA_EFFECTIVITY = 1.6

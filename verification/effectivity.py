@@ -259,9 +259,9 @@ def check_budgets(scenes, h: float | None, ref_h: float | None, levels: int) -> 
     scaled to it, :func:`resolutions`)."""
     for scene in scenes:
         h_s, h_name, ref_s, ref_name = resolutions(scene, h, ref_h, levels)
-        check_budget(scene, ref_s, 2, "fe", field=ref_name)
+        check_budget(scene, ref_s, methods.budgeted("fe", 2), field=ref_name)
         for (name, degree), hk in itertools.product(SCENE_VARIANTS, est.levels_of(h_s, levels)):
-            check_budget(scene, hk, degree, name, field=h_name)
+            check_budget(scene, hk, methods.budgeted(name, degree), field=h_name)
 
 
 def scene_table(scene_names, h: float | None, ref_h: float | None, out: Path, levels: int = 2,

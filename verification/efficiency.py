@@ -45,7 +45,7 @@ from contactcore import tolerances as tol
 from contactcore.budget import MEMORY_SHARE, check_budget, check_together, estimate, machine_memory
 from contactcore.scene import Units, check_resolution
 
-from . import files, pool
+from . import files, methods, pool
 from .agreement import agreements, check_exclusion, estimated_shares, first_largest, label, worst_estimate
 from .plots import loglog_by_variant
 from .study import check_given_once
@@ -141,10 +141,10 @@ def check_budgets(scene, rungs, ref_h: float | None, estimated: bool, workers: i
     ones that fit share a process.  The messages offer ``--allow-large``
     if ``offer_allow_large`` (``benchmark`` and ``report`` have none)."""
     if ref_h is not None:
-        check_budget(scene, ref_h, 2, "fe", "--ref-h", offer_allow_large)
+        check_budget(scene, ref_h, methods.budgeted("fe", 2), "--ref-h", offer_allow_large)
     memories = []
     for name, degree, h, _ in rungs:
-        memories.append(sum(check_budget(scene, at, degree, name, offer_allow_large=offer_allow_large).memory
+        memories.append(sum(check_budget(scene, at, methods.budgeted(name, degree), offer_allow_large=offer_allow_large).memory
                             for at in ((h, h / 2) if estimated else (h,))))
     check_together(memories, workers or 1, offer_allow_large=offer_allow_large)
 
@@ -156,9 +156,9 @@ def spawn_each(scene, rungs, ref_h: float | None, estimated: bool = False) -> bo
     were ever returned to the system) would not fit in
     :data:`~contactcore.budget.MEMORY_SHARE` of this machine's memory.  The
     log says which, and why."""
-    needed = ((estimate(scene, ref_h, 2, "fe").memory if ref_h else 0.0)
-              + sum(estimate(scene, h, degree, name).memory for name, degree, h, _ in rungs)
-              + sum(estimate(scene, h / 2, degree, name).memory for name, degree, h, _ in rungs if estimated))
+    needed = ((estimate(scene, ref_h, methods.budgeted("fe", 2)).memory if ref_h else 0.0)
+              + sum(estimate(scene, h, methods.budgeted(name, degree)).memory for name, degree, h, _ in rungs)
+              + sum(estimate(scene, h / 2, methods.budgeted(name, degree)).memory for name, degree, h, _ in rungs if estimated))
     have = MEMORY_SHARE * machine_memory()
     if needed > have:
         log.info("efficiency: each run in a fresh process: together they may need %.3g GB, more than the %.3g GB "

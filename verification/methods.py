@@ -16,6 +16,7 @@ import importlib
 import inspect
 
 from contactcore import ContactError
+from contactcore.budget import Counted
 from contactcore.discretisation import check_solvable as solvable, make, option_names
 
 #: Method name -> its options class, as ``module:Class``, in the order plots list them.
@@ -40,6 +41,16 @@ def discretisation(name: str) -> type:
         raise ContactError(f"method {name!r}: unknown (known: {', '.join(METHODS)})")
     module, cls = METHODS[name].split(":")
     return getattr(importlib.import_module(module), cls)
+
+
+def budgeted(name: str, degree: int):
+    """What :mod:`contactcore.budget` reads of a solve by method ``name``
+    at ``degree``: its options, which declare its facts (field copies,
+    nodes a cell), or for a peer, which has none, a
+    :class:`contactcore.budget.Counted` of one field."""
+    if name in METHODS:
+        return make(discretisation(name), degree=degree)
+    return Counted(name, degree)
 
 
 def solver(name: str):

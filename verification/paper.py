@@ -129,7 +129,7 @@ def check_budgets(scenes, ref_h: float | None, workers: int | None = None, offer
     for name in scenes:
         scene = load_scene(name)
         at = ref_h or scene.h / REFERENCE_REFINEMENT
-        memories.append(check_budget(scene, at, 2, "fe", "--ref-h" if ref_h else f"scene {scene.name}'s reference h",
+        memories.append(check_budget(scene, at, methods.budgeted("fe", 2), "--ref-h" if ref_h else f"scene {scene.name}'s reference h",
                                      offer_allow_large).memory)
     check_together(memories, workers or 1, offer_allow_large=offer_allow_large)
 

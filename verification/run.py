@@ -396,9 +396,9 @@ def _check(scene: Scene, chosen: list[str], h, degree: int, paper: bool, allow_l
     if not (paper or allow_large):
         finest, field = _finest_run(h, scene.h or span, estimate)
         for name in chosen:
-            check_budget(scene, finest, degree, name, field)
+            check_budget(scene, finest, methods.budgeted(name, degree), field)
         if reference:
-            check_budget(scene, finest, reference[1], reference[0], field)
+            check_budget(scene, finest, methods.budgeted(reference[0], reference[1]), field)
 
 
 def _finest_run(h: float | None, default: float, estimate: int | None) -> tuple[float, str]:

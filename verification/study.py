@@ -438,7 +438,7 @@ def check_sizes(scenes: list, names: list[str], points: list[tuple], method_name
             memories += [None] * len(method_names) if every else []
             continue  # refused by the solve itself, as a failed row, naming the missing h
         for name in method_names:
-            memories.append(check_budget(scene, at, degree, name, field=f"--param {_where(names, point)}: h").memory)
+            memories.append(check_budget(scene, at, methods.budgeted(name, degree), field=f"--param {_where(names, point)}: h").memory)
     return memories
 
 

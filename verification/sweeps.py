@@ -52,7 +52,7 @@ from contactcore.scene import InterfaceProfile
 
 from contactcore.discretisation import Reuse
 
-from . import files, pool
+from . import files, methods, pool
 from .closed_forms import interface_patch, layered_slip, pressurised_rod, twisted_rod
 from .norms import l2_error, max_errors
 from .outcomes import Incomplete, accuracy_bound, attempt, classify, health
@@ -357,7 +357,7 @@ def memory(sweep: Sweep, degree: int = 1, method_names=None) -> float:
     """The estimated memory in bytes of ``sweep``, one case of the pool:
     its largest solve (:func:`contactcore.budget.estimate`; its solves run
     one after another)."""
-    return max((estimate(c.scene, c.scene.h if sweep.name == "false_tN" else H, degree, name).memory
+    return max((estimate(c.scene, c.scene.h if sweep.name == "false_tN" else H, methods.budgeted(name, degree)).memory
                 for c in sweep.cases() for name in sweep.methods if method_names is None or name in method_names),
                default=0.0)
 

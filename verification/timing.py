@@ -57,7 +57,7 @@ def check_budgets(scenes, method_names, degrees, hs) -> list[float]:
     ``run``, ``study`` and ``efficiency`` make; grader11's fault 1: ``--h
     0.1`` on a 1000 mm scene filled 21.7 GB).  Returns each rung's
     estimated memory in bytes (``scaling`` adds its ranks' own)."""
-    return [check_budget(scene, h, degree, name).memory for scene in scenes for name in methods.expand(method_names)
+    return [check_budget(scene, h, methods.budgeted(name, degree)).memory for scene in scenes for name in methods.expand(method_names)
             for degree in degrees for h in hs]
 
 

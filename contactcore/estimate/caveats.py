@@ -35,9 +35,9 @@ taken at the range's upper order, which two runs cannot check
 (:func:`split_cell_share`, an empirical marker of scene A's A5 fe P2
 ``g_N``, 0.485).
 
-xfem P1's recovered stress (:data:`~contactcore.estimate.orders.RECOVERED_STRESS`)
-converges at order 1 in a layer one cell thick along a curved Γ, where
-the recovery patch is one-sided and cut cells' samples carry an O(h)
+xfem P1's recovered stress (its options' ``recovered_stress``,
+:class:`~contactcore.result.MethodFacts`) converges at order 1 in a
+layer one cell thick along a curved Γ, where the recovery patch is one-sided and cut cells' samples carry an O(h)
 bias, against 2 to 3 elsewhere: from h = 0.025 that layer sets a ray's
 error and the two-run estimate, taken at the order elsewhere, reads 0.42
 to 0.47 of it (docs/methods/xfem.md, "Degree-1 stress"); on other
@@ -59,7 +59,9 @@ lay that way; otherwise it gives the measured range.
 
 Where Γ's status differs between the runs: :mod:`~contactcore.estimate.status`.
 
-numpy only; no method is imported.
+numpy only; no method is imported or named: what a warning must know of
+one, it reads from the run's :class:`~contactcore.result.MethodFacts`
+(``facts``), as its options declared them.
 """
 from __future__ import annotations
 
@@ -73,7 +75,8 @@ from ..scene import Scene
 from .energy import EnergyEstimate
 from .extrapolation import QuantityEstimate, cell_scale_part, rms, sample_groups
 from ..scene.resolution import body_thickness
-from .orders import GAPS, MESHFREE, RECOVERED_STRESS, STRESSES, TRACTIONS, _exact, lower_end
+from ..result import MethodFacts
+from .orders import GAPS, STRESSES, TRACTIONS, _exact, lower_end
 from .singular import far_from_singular, singular_points, stress_singular_points, unknown_ends
 
 #: Γ's quantities: the gaps and the tractions.
@@ -174,11 +177,11 @@ def exact_traction_warning(names: list[str]) -> list[str]:
             f"(--estimate 3 observes the order)"]
 
 
-def fast_gamma(profiles: dict[str, dict[str, QuantityEstimate]], method: str, degree: int) -> list[str]:
+def fast_gamma(profiles: dict[str, dict[str, QuantityEstimate]], facts: MethodFacts) -> list[str]:
     """The ``PID:Q`` of the gaps and tractions on Γ (:data:`GAMMA`) of a
-    method and degree of :data:`~contactcore.tolerances.FAST_GAMMA` (EFGM
-    P1) estimated from two runs, or from three whose observed order lies
-    above the highest theory allows by more than
+    method and degree whose ``facts`` say ``fast_gamma`` (EFGM P1:
+    :attr:`efgm.options.EFGM.fast_gamma`, its measurement) estimated from
+    two runs, or from three whose observed order lies above the highest theory allows by more than
     :data:`~contactcore.tolerances.FAST_GAMMA_EXCESS` (the estimate then
     takes that highest, capped).
     Their runs' differences often shrink faster than the order the
@@ -189,7 +192,7 @@ def fast_gamma(profiles: dict[str, dict[str, QuantityEstimate]], method: str, de
     below 1 (the layered slip's 0.55), and from three runs the layered
     slip's 0.49 at an observed 2.52 (the tolerance's note).  An
     indication, off either way."""
-    if (method, degree) not in tol.FAST_GAMMA:
+    if not facts.fast_gamma:
         return []
     return [f"{pid}:{q}" for pid, qs in profiles.items() for q, e in qs.items()
             if q in GAMMA and (not e.observed or e.measured > e.theory[1] + tol.FAST_GAMMA_EXCESS)]
@@ -215,18 +218,19 @@ def fast_gamma_warning(names: list[str], method: str, degree: int, observed: boo
             f"on 80 of 128 entries, below 1 on 14) (--estimate 3 observes the order)"]
 
 
-def stencil_radius(record: dict, method: str, degree: int, quantity: str) -> float:
+def stencil_radius(record: dict, facts: MethodFacts, quantity: str) -> float:
     """The radius around a point within which lie the unknowns that set a
-    run's ``quantity`` there: a support of ``dmax · h`` for a meshfree method
-    (``√2`` times that to a rectangular support's corner), the recovery patch
-    of :data:`~contactcore.tolerances.RECOVERY_RINGS` vertex rings around the
-    point's cell for a recovered stress
-    (:data:`~contactcore.estimate.orders.RECOVERED_STRESS`), and one cell,
-    ``h``, otherwise."""
+    run's ``quantity`` there (the run's discretisation ``record`` and
+    :class:`~contactcore.result.MethodFacts`): a support of ``dmax · h``
+    for a ``meshfree`` method (``√2`` times that to a rectangular
+    support's corner), the recovery patch of
+    :data:`~contactcore.tolerances.RECOVERY_RINGS` vertex rings around the
+    point's cell for a ``recovered_stress``, and one cell, ``h``,
+    otherwise."""
     h = float(record["h"])
-    if method in MESHFREE:
+    if facts.meshfree:
         return float(record["dmax"]) * h * (np.sqrt(2.0) if record.get("support") == "rectangular" else 1.0)
-    if quantity in STRESSES and (method, degree) in RECOVERED_STRESS:
+    if quantity in STRESSES and facts.recovered_stress:
         return (tol.RECOVERY_RINGS + 1) * h
     return h
 
@@ -250,12 +254,13 @@ def thinnest_body(scene: Scene) -> float:
     return min(thickness.values()) if thickness else np.inf
 
 
-def unsettled(scene: Scene, levels: list[list[ProfileData]], record: dict, method: str, degree: int,
+def unsettled(scene: Scene, levels: list[list[ProfileData]], record: dict, facts: MethodFacts,
               exclude: float, estimates: dict[str, dict[str, QuantityEstimate]] | None = None
               ) -> dict[str, dict[str, tuple[float, float]]]:
     """The quantities whose two-run estimate is not asymptotic, by cause,
-    from the coarser run (``record``, its discretisation) of the pair
-    that makes it: ``{"reach": {PID:Q: (ρ, h_ok)}, "coarse": {...}, "thin": {...}}``
+    from the coarser run (``record``, its discretisation; ``facts``, its
+    method's :class:`~contactcore.result.MethodFacts`) of the pair that
+    makes it: ``{"reach": {PID:Q: (ρ, h_ok)}, "coarse": {...}, "thin": {...}}``
     with ``ρ`` the quantity's :func:`stencil_radius` in that run and
     ``h_ok`` the coarse run's h from which the cause is gone (ρ scales
     with h).  ``reach``: a sample kept (at least ``exclude`` from the
@@ -283,7 +288,7 @@ def unsettled(scene: Scene, levels: list[list[ProfileData]], record: dict, metho
                 else np.full(len(xy), np.inf))
         near = np.min(dist[kept]) if np.any(kept) else np.inf
         for q in prof.names[3:]:
-            rho = stencil_radius(record, method, degree, q)
+            rho = stencil_radius(record, facts, q)
             within = kept & (dist < tol.REACH_STENCILS * rho * (1 - tol.GEOMETRY))
             local = rho <= h * (1 + tol.GEOMETRY) and not _lower_end(scene, estimates, prof.id, q, h)
             if np.any(within) and not _spread(prof, coarse_run.get(prof.id), q, within, kept & ~within, local):
@@ -492,19 +497,19 @@ def residue_warnings(found: dict[str, tuple[float, str]], observed: bool = False
 
 
 
-def curved_layer(scene: Scene, levels: list[list[ProfileData]], method: str, degree: int, h: float,
+def curved_layer(scene: Scene, levels: list[list[ProfileData]], facts: MethodFacts, h: float,
                  exclude: float) -> list[str]:
-    """The ``PID:Q`` of xfem P1's recovered stresses
-    (:data:`~contactcore.estimate.orders.RECOVERED_STRESS`) on profiles with
+    """The ``PID:Q`` of a recovered stress (``facts.recovered_stress``:
+    xfem P1's) on profiles with
     a sample kept (at least ``exclude`` from the singular points) within one
     cell of the coarser run, ``h``, of a curved Γ: there that stress
     converges at order 1 and the estimate, taken at the order elsewhere,
     is not to be trusted: too small on the rays of the pressurised rods
     (module doc), but 0.18-2.2 times the error on the 54 entries it named
-    on four sets (2026-11-28), so the warning gives no direction.  Empty for a straight Γ or another method.
+    on four sets (2026-11-28), so the warning gives no direction.  Empty for a straight Γ or a stress not recovered.
     A sample at h within :data:`~contactcore.tolerances.GEOMETRY`
     (relative) counts, so round-off does not decide it."""
-    if (method, degree) not in RECOVERED_STRESS or scene.interface.straight_in(scene.domain):
+    if not facts.recovered_stress or scene.interface.straight_in(scene.domain):
         return []
     names = []
     for prof in levels[-1]:
@@ -588,12 +593,6 @@ def curved_layer_warning(names: list[str], h: float, length: str = "m") -> list[
 ENERGY_KEY = "energy:‖σ‖_E"
 
 
-#: The (method, degree) of :func:`quadrature_energy`: EFGM P1 (EFGM P2's
-#: relative estimates on the same cases, 4.96e-6 to 3.40e-3, all read
-#: 0.67-1.78: not named).
-QUADRATURE_ENERGY = {("efgm", 1)}
-
-
 def recovery_floor(energy: EnergyEstimate | None) -> list[str]:
     """One line where the recovery's own error may be much of the
     Zienkiewicz–Zhu estimate: on a curved Γ, a second recovery of σ*
@@ -607,13 +606,16 @@ def recovery_floor(energy: EnergyEstimate | None) -> list[str]:
             f"a finer h brings it down"]
 
 
-def quadrature_energy(method: str, degree: int, energy: EnergyEstimate | None) -> list[str]:
-    """One line where :data:`QUADRATURE_ENERGY`'s (EFGM P1) energy estimate
-    is below :data:`~contactcore.tolerances.QUADRATURE_ENERGY_SHARE` of the run's energy: its
-    quadrature's error may then be most of the error, which the
+def quadrature_energy(method: str, degree: int, facts: MethodFacts, energy: EnergyEstimate | None) -> list[str]:
+    """One line where the energy estimate of a run whose ``facts`` say
+    ``quadrature_energy`` (EFGM P1:
+    :attr:`efgm.options.EFGM.quadrature_energy`, its measurement;
+    ``method`` and ``degree`` name it) is below
+    :data:`~contactcore.tolerances.QUADRATURE_ENERGY_SHARE` of the run's
+    energy: its quadrature's error may then be most of the error, which the
     Zienkiewicz–Zhu recovery does not see (the layered slip's 0.41, the
     patch's 0.76)."""
-    if (method, degree) not in QUADRATURE_ENERGY or energy is None or not energy.relative < tol.QUADRATURE_ENERGY_SHARE:
+    if not facts.quadrature_energy or energy is None or not energy.relative < tol.QUADRATURE_ENERGY_SHARE:
         return []
     if not energy.norm > energy.floor:  # a stress-free run: no error for a quadrature to dominate
         return []

@@ -165,8 +165,8 @@ def energy_estimate(scene: Scene, fields, h: float, exclude: float = 0.0, gauss:
                     recovered: bool = False) -> EnergyEstimate:
     """The Zienkiewicz–Zhu estimate of one run (module doc) on background
     cells of the run's size ``h``, ``gauss`` points per direction.  Where
-    the method's stress is ``recovered`` already (xfem P1:
-    :data:`~contactcore.estimate.orders.RECOVERED_STRESS`), that stress is
+    the method's stress is ``recovered`` already (xfem P1: the run's
+    :attr:`~contactcore.result.MethodFacts.recovered_stress`), that stress is
     ``σ*`` and ``σ_h`` its displacement's own (:func:`direct_stress`): one
     recovery, not a second one of ``σ*``, which moved it less than its
     error (0.15-0.61 of it, falling with h)."""

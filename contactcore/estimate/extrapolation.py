@@ -49,6 +49,7 @@ from .. import tolerances as tol
 from ..profiles import ProfileData
 from ..scene import Scene
 from ..scaling import Sizes
+from ..result import MethodFacts
 from .orders import STRESSES, TRACTIONS, lower_end, order_range, polluted
 from .singular import far_from_singular, pollution_order, unknown_ends
 
@@ -254,11 +255,12 @@ def sample_groups(scene: Scene, xy: np.ndarray, kept: np.ndarray) -> np.ndarray:
     return labels
 
 
-def profile_estimates(levels: list[list[ProfileData]], degree: int, method: str = "", coarse: bool = False,
-                      scene: Scene | None = None, exclude: float = 0.0,
+def profile_estimates(levels: list[list[ProfileData]], degree: int, facts: MethodFacts = MethodFacts(),
+                      coarse: bool = False, scene: Scene | None = None, exclude: float = 0.0,
                       switching: bool | None = None, h: float | None = None) -> dict[str, dict[str, QuantityEstimate]]:
     """``{profile id: {quantity: estimate}}`` from the profiles of each run,
-    coarse to fine (each a list in the scene's order); an observed order from
+    coarse to fine (each a list in the scene's order) of a method of
+    ``degree`` and ``facts`` (its options'); an observed order from
     the samples at least ``exclude`` from the ``scene``'s singular points;
     ``switching`` as :func:`~contactcore.estimate.orders.theoretical_order`
     takes it; the ``scene``'s
@@ -291,10 +293,10 @@ def profile_estimates(levels: list[list[ProfileData]], degree: int, method: str 
             cells = lambda v, s=s, groups=groups: cell_scale_part(v, s, groups, h)  # noqa: E731
         out[pid] = {}
         for q in profs[-1].names[3:]:
-            theory = order_range(q, degree, method, law, switching, pollution)
+            theory = order_range(q, degree, facts, law, switching, pollution)
             out[pid][q] = richardson([p.columns[q] for p in profs], theory, coarse=coarse, kept=kept,
                                      floor=roundoff_floor(sizes, q),
-                                     cells=cells if polluted(q, degree, method, law, switching, pollution) else None,
+                                     cells=cells if polluted(q, degree, facts, law, switching, pollution) else None,
                                      low=lower_end(q, theory, ends_unknown))
     return out
 

@@ -9,7 +9,8 @@ law's traction on Γ, which the law computes from the gaps
 rate); under an exact law, at most 2 for the gaps and 1 for the traction
 where Γ's status changes along it
 (:func:`~contactcore.estimate.status.switches`).  A degree-1 stress that
-a method recovers (xfem P1: :data:`RECOVERED_STRESS`) converges as the
+a method recovers (its options' ``recovered_stress``,
+:class:`~contactcore.result.MethodFacts`: xfem P1) converges as the
 displacement.
 
 Away from a singular point of exponent ``λ`` (``u ~ r^λ``: a
@@ -35,11 +36,15 @@ two runs: its orders are ``[p, p + 1]`` (:func:`order_range`), of which
 the estimate takes the balanced one
 (:func:`~contactcore.estimate.extrapolation.balanced_order`).
 
-numpy only; no method is imported.
+numpy only; no method is imported or named: what this module must know
+of one, it reads from the run's :class:`~contactcore.result.MethodFacts`
+(``facts``; the defaults, a mesh method's whose stress is its own).
 """
 from __future__ import annotations
 
 import numpy as np
+
+from ..result import MethodFacts
 
 
 #: Quantities that converge as the displacement (degree + 1): displacements,
@@ -47,28 +52,15 @@ import numpy as np
 DISPLACEMENT_LIKE = ("ux", "uy", "gN", "gT", "tN", "tT")
 
 
-#: Methods whose degree-1 stress is recovered (:mod:`contactcore.recovery`:
-#: xfem P1), not read from the cell: it converges one order faster, as
-#: the displacement (measured with the orders of the other methods, the
-#: Richardson effectivity of xfem P1's stresses was 3.0-6.2 on the
-#: pressurised and twisted rods: a rate 2 read as 1).
-RECOVERED_STRESS = (("xfem", 1),)
-
-
-#: Meshfree methods, whose stencil is their supports (the run's record
-#: holds ``dmax`` and ``support``: :mod:`efgm.method`;
-#: :func:`~contactcore.estimate.caveats.stencil_radius`), and whose error
-#: at the scale of their cells includes their quadrature's (:func:`polluted`).
-MESHFREE = ("efgm",)
-
-
 #: Γ's quantities under an exact law (:mod:`contactcore.exact`).
 GAPS, TRACTIONS = ("gN", "gT"), ("tN", "tT")
 
 
-def theoretical_order(quantity: str, degree: int, method: str = "", law=None, switching: bool | None = None) -> int:
-    """The rate of a profile quantity for ``method`` of ``degree`` (module
-    doc).  Under an exact ``law`` the traction on Γ is Nitsche's multiplier,
+def theoretical_order(quantity: str, degree: int, facts: MethodFacts = MethodFacts(), law=None,
+                      switching: bool | None = None) -> int:
+    """The rate of a profile quantity for a method of ``degree`` and
+    ``facts`` (module doc; a recovered stress converges as the
+    displacement).  Under an exact ``law`` the traction on Γ is Nitsche's multiplier,
     a stress (rate ``degree``, not the gaps' ``degree + 1``).  Where that
     law switches (open/closed, stick/slip: every exact law but ``bonded``)
     the solution is no smoother than H^{5/2-ε} at the points where Γ's
@@ -85,7 +77,7 @@ def theoretical_order(quantity: str, degree: int, method: str = "", law=None, sw
             return 1 if switches else degree
         if quantity in GAPS and switches:
             return min(degree + 1, 2)
-    if quantity in DISPLACEMENT_LIKE or (method, degree) in RECOVERED_STRESS:
+    if quantity in DISPLACEMENT_LIKE or facts.recovered_stress:
         return degree + 1
     return degree
 
@@ -99,31 +91,31 @@ def theoretical_order(quantity: str, degree: int, method: str = "", law=None, sw
 STRESSES, SUPERCONVERGENT_DEGREES = ("sxx", "syy", "sxy"), (1,)
 
 
-def order_range(quantity: str, degree: int, method: str = "", law=None, switching: bool | None = None,
-                pollution: float = np.inf) -> tuple[float, float]:
+def order_range(quantity: str, degree: int, facts: MethodFacts = MethodFacts(), law=None,
+                switching: bool | None = None, pollution: float = np.inf) -> tuple[float, float]:
     """The orders theory allows a profile quantity: ``(p, p)`` with ``p``
     the :func:`theoretical_order`, ``(p, p + 1)`` for a stress of a degree
     in :data:`SUPERCONVERGENT_DEGREES` (module doc), ``(pollution, p)``
     for a displacement, a gap or a penalty law's traction whose ``p``
     exceeds the scene's
     :func:`~contactcore.estimate.singular.pollution_order`."""
-    p = theoretical_order(quantity, degree, method, law, switching)
+    p = theoretical_order(quantity, degree, facts, law, switching)
     if quantity in STRESSES and degree in SUPERCONVERGENT_DEGREES:
         return (p, p + 1)
     polluted = quantity in DISPLACEMENT_LIKE and not (quantity in TRACTIONS and _exact(law))
     return (pollution, p) if polluted and pollution < p else (p, p)
 
 
-def polluted(quantity: str, degree: int, method: str = "", law=None, switching: bool | None = None,
-             pollution: float = np.inf) -> bool:
+def polluted(quantity: str, degree: int, facts: MethodFacts = MethodFacts(), law=None,
+             switching: bool | None = None, pollution: float = np.inf) -> bool:
     """Whether :func:`order_range` widened the quantity's orders for
     pollution (a displacement, gap or penalty traction whose order
     exceeds ``pollution``), in a method whose error at the scale of its
-    cells converges at that order (not :data:`MESHFREE`: EFGM's includes
-    its quadrature's, which does not converge)."""
-    p = theoretical_order(quantity, degree, method, law, switching)
+    cells converges at that order (not a ``meshfree`` one's: EFGM's
+    includes its quadrature's, which does not converge)."""
+    p = theoretical_order(quantity, degree, facts, law, switching)
     return (quantity in DISPLACEMENT_LIKE and not (quantity in TRACTIONS and _exact(law)) and pollution < p
-            and method not in MESHFREE)
+            and not facts.meshfree)
 
 
 #: Bulk displacements: of the quantities whose orders pollution widens,

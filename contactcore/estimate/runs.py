@@ -30,7 +30,6 @@ from .caveats import (cell_scale_orders, cell_scale_warnings, exact_traction_war
                       split_cell_share, split_cell_share_warning)
 from .energy import EnergyEstimate, energy_estimate
 from .extrapolation import QuantityEstimate, profile_estimates
-from .orders import RECOVERED_STRESS
 from .singular import far_from_singular
 from .status import status_change, status_warning, switches
 
@@ -106,16 +105,15 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     hs = tuple(float(r.discretisation["h"]) for r in results)
     levels = [sample_profiles(scene, r.fields, r.interface) for r in results]
     switching = None if scene.law.is_linear else switches([r.interface for r in results])
-    profiles = profile_estimates(levels, results[-1].degree, results[-1].method, coarse, scene, exclude, switching,
-                                 h=hs[-2])
-    found = unsettled(scene, levels, results[-2].discretisation, results[-1].method, results[-1].degree, exclude,
-                      profiles)
-    layer = curved_layer(scene, levels, results[-1].method, results[-1].degree, hs[-2], exclude)
+    facts = results[-1].facts  # what the method's options declared (contactcore.result.MethodFacts)
+    profiles = profile_estimates(levels, results[-1].degree, facts, coarse, scene, exclude, switching, h=hs[-2])
+    found = unsettled(scene, levels, results[-2].discretisation, facts, exclude, profiles)
+    layer = curved_layer(scene, levels, facts, hs[-2], exclude)
     rough = cell_scale_orders(scene, levels, profiles, exclude, hs[-2])
     residue = residues(scene, levels, profiles, exclude)
     split = split_cell_share(scene, levels, profiles, exclude, results[-1].degree)
     nitsche = exact_tractions(scene, profiles)
-    fast = fast_gamma(profiles, results[-1].method, results[-1].degree)
+    fast = fast_gamma(profiles, facts)
     warnings = (order_warnings(profiles) + pollution_warning(scene, profiles) + exact_traction_warning(nitsche)
                 + fast_gamma_warning(fast, results[-1].method, results[-1].degree, len(levels) > 2)
                 + unsettled_warnings(found, hs[-2], feature_size(scene), scene.user.units.length,
@@ -130,11 +128,12 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     warnings += split_moved
     moved = {f"{pid}:{q}" for pid, qs in profiles.items() for q in qs} if split_moved else set()
     zz = (energy_estimate(scene, results[-1].fields, hs[-1], exclude,
-                          recovered=(results[-1].method, results[-1].degree) in RECOVERED_STRESS)
+                          recovered=facts.recovered_stress)
           if energy else None)
     kept = {p.id: far_from_singular(scene, np.column_stack([p.columns["x"], p.columns["y"]]), exclude)
             for p in levels[-1]}
-    caveat = (quadrature_energy(results[-1].method, results[-1].degree, zz) + recovery_floor(zz)) if energy else []
+    caveat = ((quadrature_energy(results[-1].method, results[-1].degree, facts, zz) + recovery_floor(zz)) if energy
+              else [])
     return Estimate(hs, profiles, zz, status, warnings + caveat, levels[-1],
                     {k for v in found.values() for k in v} | set(layer) | set(rough) | set(residue) | set(nitsche)
                     | set(split)

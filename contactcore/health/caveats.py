@@ -228,14 +228,16 @@ def closed_tension_warnings(scene, path, stress_size: float = 0.0) -> list[str]:
             "band is in traction\")"]
 
 
-def traction_locking_warnings(scene, method: str, degree: int) -> list[str]:
+def traction_locking_warnings(scene, degree: int) -> list[str]:
     """fe P1 with an exactly enforced law in plane strain, a body's ν at or
     above NU_LOCKING_WARN_FE_P1_EXACT but below NU_LOCKING_WARN (which
     :func:`material_warnings` warns of for every method): Γ's traction
     σ(u)·n carries λ div u of the P1 field and locks first (the constant's
-    measurement).  One line naming the bodies; none for other methods,
-    degrees, penalty laws or plane stress."""
-    if (method != "fe" or degree != 1 or scene.plane != "strain"
+    measurement).  One line naming the bodies; none for other degrees,
+    penalty laws or plane stress.  Asked by the method whose Γ traction
+    this is, fe (:meth:`xdolfinx.options.FE.spacing_warnings`), not of
+    another's."""
+    if (degree != 1 or scene.plane != "strain"
             or getattr(scene.law, "enforcement", None) != "exact"):
         return []
     high = [(body, m.nu) for body, m in scene.materials.items()

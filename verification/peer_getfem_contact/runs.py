@@ -60,7 +60,8 @@ def check_sizes(scene: Scene, hs, degree: int, methods, allow_large: bool = Fals
     GetFEM's two bodies' meshes one field over the domain; not checked if
     ``allow_large``), before any mesh: a ContactError naming the first
     that is not."""
+    from verification.methods import budgeted
     for h in hs:
         check_resolution(scene, h)
         for method in () if allow_large else (*methods, METHOD):
-            check_budget(scene, h, degree, method)
+            check_budget(scene, h, budgeted(method, degree))
