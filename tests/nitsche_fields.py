@@ -70,15 +70,22 @@ def unknowns(method: str, built, f) -> np.ndarray:
 
 
 def _fe_unknowns(built, f) -> np.ndarray:
-    """fe's unknowns (the mixed space's dofs, ``S``'s columns) of ``f``:
-    ``built.fields`` collapses each body's field out of the mixed space,
-    so fed the dofs' own indices it hands back, per body, which dof of
-    ``S``'s columns each node's x and y value is (exact: integers below
-    2⁵³), beside the collapsed space's node coordinates."""
-    x = np.zeros(built.system.size)
-    for b, ub in enumerate(built.fields(np.arange(built.system.size, dtype=float)).displacements):
-        index = ub.x.array.astype(np.int64).reshape(-1, 2)  # (nodes, x|y), the collapsed blocked order
-        x[index] = f(b, ub.function_space.tabulate_dof_coordinates()[:, :2])
+    """fe's unknowns (the mixed space's dofs this rank owns, ``S``'s
+    owned columns) of ``f``: ``built.fields`` collapses each body's field
+    out of the mixed space, so fed the owned dofs' global indices it hands
+    back, per body, which global dof each local node's x and y value is
+    (exact: integers below 2⁵³; a ghost's from its owner), beside the
+    collapsed space's node coordinates.  Under mpirun, ``S`` reads these
+    owned values forwarded to the ghosts (``GhostExchange.forward``)."""
+    size = built.system.size
+    ranks = built.system.collective
+    start = sum(ranks.comm.allgather(size)[:ranks.rank]) if ranks.parallel else 0  # owned ranges in rank order
+    x = np.zeros(size)
+    for b, ub in enumerate(built.fields(np.arange(start, start + size, dtype=float)).displacements):
+        index = ub.x.array.astype(np.int64).reshape(-1, 2) - start  # (nodes, x|y), the collapsed blocked order
+        values = f(b, ub.function_space.tabulate_dof_coordinates()[:, :2])
+        mine = (index >= 0) & (index < size)
+        x[index[mine]] = values[mine]
     return x
 
 
