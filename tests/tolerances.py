@@ -1519,3 +1519,7 @@ LAWCAPS_H = 0.05
 #: beyond DEMAND_ROUNDOFF (1e-12), the refusal's own margin, and far below
 #: any change a wrong bound (μ|F_N|, a missing |Γ|) would make (>= 2 %).
 LAWCAPS_BOUND_SHIFT = 1e-6
+#: tests/scenes/wedge_slide.toml with the threshold law: the loads' shear
+#: over Γ is this share of tau_c |Γ|, so that every point slips but one
+#: (fe 38 + 1, xfem 35 + 1, efgm 77 + 1 at 0.9 and 0.99; 2026-11-29).
+LAWCAPS_SLIDE_SHARE = 0.99
