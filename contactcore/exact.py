@@ -60,8 +60,7 @@ import scipy.sparse as sp
 from . import tolerances as tol
 from .errors import DiscretisationError, SceneError, quoted
 from .collective import SERIAL
-from .laws import (DIMENSIONLESS, STICK, CoulombLaw, Decision, LawResponse, LinearLaw, UnilateralLaw, _friction,
-                   _positive, registry)
+from .laws import DIMENSIONLESS, STICK, CoulombLaw, Decision, LawResponse, LinearLaw, UnilateralLaw, _positive, registry
 
 #: Laws that exist only enforced exactly (no springs).
 BONDED = ("bonded",)
@@ -134,7 +133,12 @@ class _ExactLaw:
 
     @classmethod
     def from_params(cls, params: dict, path: str):
-        """Build from a TOML table; k_N, k_T may be given (checked, unused)."""
+        """Build from a TOML table; k_N, k_T may be given (checked, unused).
+        The law's parameters besides ``stabilisation`` are its springs'
+        (``mu`` for Coulomb), read and checked by the springs' class
+        (:meth:`contactcore.laws._Law.extra_parameters`): a new exact law
+        names its ``springs`` and declares the same parameters, with no
+        edit here (takeover31 #3)."""
         allowed = set(cls.parameters) | {"type", "kN", "kT"}
         unknown = sorted(set(params) - allowed)
         if unknown:
@@ -142,12 +146,29 @@ class _ExactLaw:
                              f"{', '.join(cls.parameters)}; {cls.about_springs})")
         given = tuple((k, _positive(params, k, path)) for k in ("kN", "kT") if k in params)
         values = {"stabilisation": _stabilisation(params, path), "given_springs": given}
-        if "mu" in cls.parameters:
-            values["mu"] = _friction(params, path)
+        if cls.springs is not None:
+            values.update(cls.springs.extra_parameters(params, path))
         return cls(**values)
 
+    def __getattr__(self, name):
+        # ``mu`` None where the law has no Coulomb coefficient (as
+        # contactcore.laws._Law: Newton's record of a frictionless Γ reads it)
+        if name == "mu":
+            return None
+        raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
+
     def initial_state(self, m: int):
-        return None
+        """Its springs' history before the first increment (none for bonded)."""
+        return None if self.springs is None else self.at(np.ones(m)).initial_state(m)
+
+    def slip_bound(self, tN: np.ndarray) -> np.ndarray:
+        """Its springs' slip bound (:meth:`contactcore.laws._Law.slip_bound`,
+        for a frictional law): the bound does not depend on the springs."""
+        return self.at(np.ones(1)).slip_bound(tN)
+
+    def slides_off(self, body: str, shear: float, press: float, length: float) -> str:
+        """Its springs' refusal (:meth:`contactcore.laws._Law.slides_off`)."""
+        return self.at(np.ones(1)).slides_off(body, shear, press, length)
 
     def at(self, stiffness: np.ndarray):
         """The penalty law with ``k_N = k_T = stiffness`` (per point)."""
@@ -160,7 +181,9 @@ class _ExactLaw:
         return self.at(stiffness).evaluate(y, state, decision)
 
     def _spring_values(self, k: np.ndarray) -> dict:
-        return {"kN": k, "kT": k}
+        """The springs' arguments: ``k_N = k_T = k`` and every other
+        parameter of the law as it is (``mu``)."""
+        return {"kN": k, "kT": k, **{p: getattr(self, p) for p in self.parameters if p != "stabilisation"}}
 
 
 @dataclass(frozen=True)
@@ -189,12 +212,6 @@ class ExactCoulomb(_ExactLaw):
     homogeneous: ClassVar[bool] = True  # its springs' law at per-point γ, read at the linear y = G̃ u
     unilateral: ClassVar[bool] = True
     frictional: ClassVar[bool] = True
-
-    def initial_state(self, m: int) -> np.ndarray:
-        return np.zeros(m)
-
-    def _spring_values(self, k: np.ndarray) -> dict:
-        return {"kN": k, "kT": k, "mu": self.mu}
 
 
 @dataclass(frozen=True)

@@ -30,13 +30,29 @@ name rather than answered wrongly:
   only where it is declared (:meth:`contactcore.newton.increments._Newton._from_rest`:
   from rest a smaller step is then the same problem scaled).
 * ``unilateral`` (the law can open: no tension, ``t_N <= 0``) and
-  ``frictional`` (Coulomb friction with the parameter ``mu``; points may
-  slip): the capabilities the health checks and refusals read
+  ``frictional`` (a closed point may slip: its ``|t_T|`` is bounded by the
+  law's :meth:`slip_bound`, Coulomb's ``μ max(−t_N, 0)`` or any other):
+  the capabilities the health checks and refusals read
   (:mod:`contactcore.health`), never the law's name.
+* a frictional law's ``slip_bound(t_N)``: the largest ``|t_T|`` a closed
+  point carries at the normal traction ``t_N`` (an array in the scene's
+  stress unit, made dimensionless as the law is), non-decreasing and
+  concave in the pressure ``p = −t_N`` (so that Γ's resultant obeys
+  ``|F_T| <= |Γ| slip_bound(−F_N/|Γ|)``, Jensen).  Everything that needs
+  the bound asks the law for it, never for a parameter by name: the
+  refusal before Newton of a load Γ cannot hold (:meth:`_Law.slides_off`,
+  :func:`contactcore.health.beyond_cone`), the traction scale of
+  :class:`Decision` (:meth:`_Law.decision_scales`), the rigid slide
+  (:mod:`contactcore.slide`), a profile's slipping samples
+  (:mod:`contactcore.profiles`), the exact form (:mod:`contactcore.exact`)
+  and the layered closed form (verification/closed_forms.py).
+* parameters beyond ``kN``, ``kT`` are read and checked by the class's
+  :meth:`_Law.extra_parameters` (its exact form reads them through it too).
 
-A new law is one class declaring these, an entry in :data:`LAWS`, its row
-in docs/scenes.md and a closed-form test (docs/architecture.md, "Where to
-change what").
+A new law is one class declaring these, registered in :data:`LAWS`
+(:func:`register` for a law from outside the package), its row in
+docs/scenes.md and a closed-form test: the checklist is docs/architecture.md,
+"A new law".
 """
 from __future__ import annotations
 
@@ -104,7 +120,8 @@ class Decision:
     round-off that a BLAS kernel, a MUMPS ordering or a renumbering leaves
     in the margin, so every machine takes the same decision.  The scales
     are Γ-wide (reduced over every rank by Newton): ``gap`` the largest
-    ``|g_N|``, ``traction`` the largest slip limit ``μp`` (:meth:`_Law.decision_scales`).
+    ``|g_N|``, ``traction`` the largest slip limit of a closed point, the
+    law's ``slip_bound`` (Coulomb's ``μp``; :meth:`_Law.decision_scales`).
     A margin within REST_ROUNDOFF of ``size`` (the larger of the scene's
     displacement unit and Γ's largest jump or slip history; a traction
     margin over the point's stiffness) is a point at rest, decided
@@ -203,18 +220,17 @@ def law_contract(cls) -> dict[str, str]:
     (module doc), or a ContactError naming what ``cls`` fails to declare: a
     parameter without a dimension in :data:`DIMENSIONS`, a dimension for
     no parameter, a capability of :data:`CAPABILITIES` that is not a bool,
-    ``frictional`` without the parameter ``mu``."""
+    ``frictional`` without a ``slip_bound`` method."""
     name = getattr(cls, "name", cls.__name__)
     where = f"the '{name}' law ({cls.__module__}.{cls.__qualname__})"
     dims = declared_dimensions(cls, where, DIMENSIONS)
-    parameters = cls.parameters
     for cap in CAPABILITIES:
         if not isinstance(getattr(cls, cap, None), bool):
             raise ContactError(f"{where}: declares no '{cap}' (True or False; contactcore.laws' module doc): the "
                                "health checks and Newton's cut-backs read it")
-    if cls.frictional and "mu" not in parameters:
-        raise ContactError(f"{where}: is frictional but has no parameter 'mu', Coulomb's coefficient the health "
-                           "checks read")
+    if cls.frictional and not callable(getattr(cls, "slip_bound", None)):
+        raise ContactError(f"{where}: is frictional but has no method 'slip_bound(t_N)', the largest |t_T| of a "
+                           "closed point, which the health checks, Newton's decisions and the profiles read")
     return dims
 
 
@@ -225,6 +241,29 @@ def registry(*classes) -> dict:
     return registered("law", law_contract, classes)
 
 
+def register(cls, laws: dict | None = None):
+    """Register the law class ``cls`` (held to :func:`law_contract`) in
+    ``laws`` (default :data:`LAWS`, the penalty laws; an exact form goes
+    into :data:`contactcore.exact.EXACT_LAWS`) under its ``name``, so that
+    a scene file's ``type = "<name>"`` builds it
+    (:func:`contactcore.enforcement.make_law`): a law from outside the
+    package, as a plugin (or a test) adds it.  Refused like the built-in
+    ones: a class that declares too little, a name already registered.
+    Returns ``cls`` (usable as a decorator); :func:`unregister` undoes it."""
+    laws = LAWS if laws is None else laws
+    law_contract(cls)
+    if cls.name in laws:
+        raise ContactError(f"the law name '{cls.name}' is registered twice ({laws[cls.name].__qualname__}, "
+                           f"{cls.__qualname__})")
+    laws[cls.name] = cls
+    return cls
+
+
+def unregister(name: str, laws: dict | None = None) -> None:
+    """Remove the law ``name`` that :func:`register` added (nothing if absent)."""
+    (LAWS if laws is None else laws).pop(name, None)
+
+
 class _Law:
     """What every law shares: reading its parameters, its spring scale.
 
@@ -232,9 +271,9 @@ class _Law:
     does not): ``name``; ``parameters`` and the ``dimensions`` of each;
     ``homogeneous``, whether ``t(c·g) = c·t(g)`` for ``c > 0`` from an
     untouched history; ``unilateral``, whether it can open (no tension);
-    ``frictional``, whether it has Coulomb friction ``mu`` (points slip).
-    The capabilities are deliberately not given here, so that a new law
-    cannot inherit a wrong one."""
+    ``frictional``, whether a closed point may slip, with its
+    ``slip_bound(t_N)`` then.  The capabilities are deliberately not given
+    here, so that a new law cannot inherit a wrong one."""
 
     parameters: ClassVar[tuple[str, ...]] = ("kN", "kT")
     dimensions: ClassVar[dict[str, str]] = {"kN": STIFFNESS, "kT": STIFFNESS}
@@ -255,9 +294,29 @@ class _Law:
             raise SceneError(f"{path}.{unknown[0]}", f"unknown parameter of the '{cls.name}' law "
                              f"(it takes {', '.join(cls.parameters)})")
         values = {k: _positive(params, k, path) for k in ("kN", "kT")}
-        if "mu" in cls.parameters:
-            values["mu"] = _friction(params, f"{path}")
+        values.update(cls.extra_parameters(params, path))
         return cls(**values)
+
+    @classmethod
+    def extra_parameters(cls, params: dict, path: str) -> dict:
+        """``{name: value}`` of the law's parameters beyond ``kN``, ``kT``,
+        read from the TOML table ``params`` and checked (a bad one a
+        SceneError naming ``path.name``): none here.  A law with more
+        parameters gives its own (CoulombLaw: ``mu``); its exact form reads
+        them through it (:meth:`contactcore.exact._ExactLaw.from_params`)."""
+        extra = [p for p in cls.parameters if p not in ("kN", "kT")]
+        if extra:
+            raise ContactError(f"the '{cls.name}' law ({cls.__qualname__}) declares the parameters "
+                               f"{', '.join(extra)} but no extra_parameters(params, path) to read and check them")
+        return {}
+
+    def __getattr__(self, name):
+        # ``mu``: Coulomb's coefficient where the law has one (a field),
+        # None for any other: Newton's record of a frictionless Γ still
+        # reads ``law.mu == 0`` (contactcore/newton/increments.py).
+        if name == "mu":
+            return None
+        raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
 
     def initial_state(self, m: int):
         """The history of ``m`` points before the first increment (none)."""
@@ -269,10 +328,38 @@ class _Law:
         return max(self.kN, self.kT)
 
     def decision_scales(self, g: np.ndarray, state=None) -> np.ndarray:
-        """This rank's ``[gap, traction]`` scales of :class:`Decision`."""
-        g = np.asarray(g, dtype=float).reshape(-1, 2)
+        """This rank's scales of :class:`Decision`: ``[gap, traction]``, the
+        largest ``|g_N|`` and ``|k_N g_N|``; for a frictional law ``[gap,
+        traction, pressure]``: the largest ``|g_N|``, the largest slip limit
+        ``slip_bound(t_N)`` of a closed point (not the trial, which a
+        far-off iterate can make arbitrarily large; Coulomb's ``μp``) and
+        the largest pressure ``p``."""
+        if not self.frictional:
+            g = np.asarray(g, dtype=float).reshape(-1, 2)
+            return np.array([float(np.max(np.abs(g[:, 0]), initial=0.0)),
+                             float(np.max(np.abs(self.kN * g[:, 0]), initial=0.0))])
+        g, closed, tN = self._springs(g)
         return np.array([float(np.max(np.abs(g[:, 0]), initial=0.0)),
-                         float(np.max(np.abs(self.kN * g[:, 0]), initial=0.0))])
+                         float(np.max(self.slip_bound(tN[closed]), initial=0.0)),
+                         float(np.max(-tN, initial=0.0))])
+
+    def slides_off(self, body: str, shear: float, press: float, length: float) -> str:
+        """Why a body held by Γ alone (a straight Γ of ``length``) slides
+        off under loads whose resultant presses Γ with ``press`` > 0 and
+        shears it with ``shear`` >= 0, or "" where Γ's slip bound may hold
+        them: by the concavity of :meth:`slip_bound` (module doc) Γ carries
+        at most ``|Γ| slip_bound(−press/|Γ|)``, taken beyond
+        DEMAND_ROUNDOFF of it (the scene's data, no BLAS: the same on every
+        machine).  A frictional law's; CoulombLaw words it by μ."""
+        bound = length * float(np.asarray(self.slip_bound(np.array([-press / length])), float).reshape(-1)[0])
+        if not shear > bound * (1.0 + tol.DEMAND_ROUNDOFF):  # (a zero bound: any shear slides)
+            return ""
+        ratio, digits = shear / bound if bound > 0 else math.inf, 3  # unit-free: the scene may be dimensionless here
+        while digits < 17 and float(f"{ratio:.{digits}g}") <= 1.0:
+            digits += 1
+        return (f"on Γ the loads ask for {ratio:.{digits}g} times the shear the '{self.name}' law's slip bound "
+                f"carries over Γ at their pressure (body {body}): it slides off (no equilibrium); lower the shear "
+                "load or raise the bound")
 
     def _springs(self, g: np.ndarray, decision: Decision | None = None):
         """``g`` as (m, 2), the closed points (``g_N <= 0``, or by
@@ -404,19 +491,32 @@ class CoulombLaw(_Law):
     unilateral: ClassVar[bool] = True
     frictional: ClassVar[bool] = True
 
+    @classmethod
+    def extra_parameters(cls, params: dict, path: str) -> dict:
+        """``mu``, checked (:func:`_friction`)."""
+        return {"mu": _friction(params, path)}
+
     def initial_state(self, m: int) -> np.ndarray:
         """No slip before the first increment."""
         return np.zeros(m)
 
-    def decision_scales(self, g: np.ndarray, state=None) -> np.ndarray:
-        """This rank's ``[gap, traction, pressure]`` scales of
-        :class:`Decision`: the largest ``|g_N|``, the largest slip limit
-        ``μp`` (not the trial, which a far-off iterate can make arbitrarily
-        large) and the largest pressure ``p``."""
-        g, closed, tN = self._springs(g)
-        return np.array([float(np.max(np.abs(g[:, 0]), initial=0.0)),
-                         float(np.max(-self.mu * tN, initial=0.0)),
-                         float(np.max(-tN, initial=0.0))])
+    def slip_bound(self, tN: np.ndarray) -> np.ndarray:
+        """Coulomb's cone: ``μ max(−t_N, 0)``."""
+        return self.mu * np.maximum(-np.asarray(tN, dtype=float), 0.0)
+
+    def slides_off(self, body: str, shear: float, press: float, length: float) -> str:
+        """:meth:`_Law.slides_off` in Coulomb's words: the loads' shear/normal
+        beyond μ (by DEMAND_ROUNDOFF; Wriggers 2006, §2.3), the demand to 3
+        digits and μ to 6, or both to as many digits as tell them apart
+        (0.25 against μ = 0.2499999975)."""
+        mu = self.mu
+        if not shear > mu * press * (1.0 + tol.DEMAND_ROUNDOFF):
+            return ""
+        ratio, digits = shear / press, 3
+        while digits < 17 and float(f"{ratio:.{digits}g}") <= float(f"{mu:.{max(digits, 6)}g}"):
+            digits += 1
+        return (f"on Γ the loads ask for shear/normal = {ratio:.{digits}g} of body {body}, above μ = "
+                f"{mu:.{max(digits, 6)}g}: it slides off (no equilibrium); lower the shear load or raise μ")
 
     def evaluate(self, g: np.ndarray, state=None, decision: Decision | None = None) -> LawResponse:
         """The return map (class doc) at the jumps ``g`` ((m, 2) or flat,
@@ -430,7 +530,7 @@ class CoulombLaw(_Law):
         point).  Nothing is refused: ``state`` must have one entry per
         point (numpy broadcasting rules otherwise)."""
         g, closed, tN = self._springs(g, decision)
-        limit = self.mu * np.maximum(-tN, 0.0)
+        limit = self.slip_bound(tN)
         s = np.zeros(len(g)) if state is None else np.asarray(state, dtype=float)
         trial = self.kT * (g[:, 1] - s)
         if decision is None:
@@ -475,4 +575,7 @@ def secant_tangent(tangent: np.ndarray, secant: np.ndarray) -> np.ndarray:
 #: Every penalty law by the name a scene file gives it.
 LAWS = registry(LinearLaw, UnilateralLaw, CoulombLaw)
 
-InterfaceLaw = LinearLaw | UnilateralLaw | CoulombLaw
+#: The type of a scene's penalty law: any law class (a union of the shipped
+#: ones would leave out a law :func:`register` adds; takeover31 #5).  An
+#: exactly enforced law is a :class:`contactcore.exact._ExactLaw`.
+InterfaceLaw = _Law

@@ -152,7 +152,8 @@ def _penalty_at(scene: Scene, g: np.ndarray, points: np.ndarray, path=None) -> t
     reads t = 0 whatever the nearest quadrature point's status (grader25b
     H1).  A closed sample is stick or slip as its nearest quadrature point
     is, where that point is closed, and a slipping one carries the slip
-    traction ``μ|t_N|`` in that point's direction: the slip history read
+    traction, the law's ``slip_bound(t_N)`` (Coulomb's ``μ|t_N|``), in
+    that point's direction: the slip history read
     between the quadrature points puts a sample of a slipping Γ inside the
     cone (grader28 F1: a penalty Coulomb Γ slipping everywhere read 82 %
     stick; review12 #1: labelled slip, its t_T was the stick branch's, down
@@ -176,8 +177,8 @@ def _penalty_at(scene: Scene, g: np.ndarray, points: np.ndarray, path=None) -> t
     status = np.where(partial, PARTIAL, np.where(closed, reported, own)).astype(np.int8)
     t = np.array(response.traction, float)
     slip = closed & (reported == SLIP)
-    if scene.law.frictional and slip.any():
-        t[slip, 1] = scene.law.mu * np.abs(t[slip, 0]) * np.sign(path.final.traction[index[slip], 1])
+    if scene.law.frictional and slip.any():  # the law's slip bound, any law's (takeover31 #2)
+        t[slip, 1] = scene.law.slip_bound(t[slip, 0]) * np.sign(path.final.traction[index[slip], 1])
     if partial.any():  # the unilateral law's partial answer (contactcore.newton.partial)
         t[partial] = np.column_stack([np.zeros(int(partial.sum())),
                                       path.final.theta[index[partial]] * scene.law.kT * g[partial, 1]])

@@ -21,7 +21,9 @@ kinks sorted, bisected for φ's sign change, and the bracketing segment
 interpolated.  Its point then sticks, the map's tangent is regular, and
 Newton goes on from there (:meth:`contactcore.newton._Newton._iterate`).
 
-Only for the penalty Coulomb law, a map with no open point, one free mode,
+Only for a penalty law that is frictional (its ``slip_bound``, Coulomb's
+``μp`` or any other, read at each point's normal traction, which the
+slide does not change), a map with no open point, one free mode,
 and a mode with no normal jump at any point of Γ (a slide along a straight
 Γ, a turn in a round one): the normal tractions are then the same all along
 ``c``.  Where Γ opens, Newton's secant and pinned steps are left as they
@@ -106,12 +108,12 @@ def slide(newton, u: np.ndarray, b: np.ndarray, R: np.ndarray, response, scale: 
     r = _mode(newton, g_r, scale)
     if r is None:
         return None
-    # the kinks of φ: where a closed point's trial k_T (g_T + c ρ_T − s) reaches ±μp
+    # the kinks of φ: where a closed point's trial k_T (g_T + c ρ_T − s) reaches ± its slip bound
     g = itf.jumps(u)
     rho = itf.jumps(r)[:, 1]
     s = np.zeros(itf.size) if newton.state is None else np.asarray(newton.state, float)
     closed = response.status != OPEN
-    limit = law.mu * np.maximum(-response.traction[:, 0], 0.0)
+    limit = np.where(closed, law.slip_bound(response.traction[:, 0]), 0.0)  # the law's, any bound (laws' module doc)
     moving = closed & (rho != 0.0)
     kinks = np.concatenate([((sign * limit - law.kT * (g[:, 1] - s)) / (law.kT * rho))[moving] for sign in (-1, 1)])
     kinks = np.unique(ranks.gather(kinks))

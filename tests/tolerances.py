@@ -1506,3 +1506,30 @@ FACT_STRESS_ROUNDOFF = 1e-10
 #: at most 1.24 (EFGM P2 on the pressurised rod), fe and xfem 0.73-1.20.
 #: The bound lies between, a factor 1.26 from each side.
 FAST_GAMMA_EFFECTIVITY = 1.6
+
+# --- lawcaps (2026-11-29): the law contract proved by a plugin law (tests/test_law_plugin.py) ---
+#: Scene A with the threshold law at LAWCAPS_HUGE_TAU_C (every point
+#: sticks) against unilateral with the same springs: 20 increments of a law
+#: that is then linear against one solve, so only round-off separates them.
+#: takeover31 measured (the same law built in, fe P1/P2, xfem P1, efgm P1;
+#: penalty and exact, h = 0.05): tractions and jumps <= 6.3e-11 of their
+#: largest, profiles <= 2.6e-10 (efgm).
+LAWCAPS_AS_UNILATERAL = 1e-8
+#: A threshold no traction of scene A comes near (its load is 1e5 Pa).
+LAWCAPS_HUGE_TAU_C = 1e30
+#: The layered block's threshold, apart from the coulomb scene's μp = 3e5 Pa
+#: so that a closed form or law reading μp could not pass.
+LAWCAPS_LAYERED_TAU_C = 2e5
+#: The wedge's threshold where part of Γ slips (mean shear 1.92e5 Pa;
+#: takeover31: fe P2 at h = 0.05, 46 stick and 38 slip points).
+LAWCAPS_WEDGE_TAU_C = 2.2e5
+#: The spacing of the plugin law's runs (scene A's and the wedge's).
+LAWCAPS_H = 0.05
+#: A threshold this share below or above the wedge's mean shear: far
+#: beyond DEMAND_ROUNDOFF (1e-12), the refusal's own margin, and far below
+#: any change a wrong bound (μ|F_N|, a missing |Γ|) would make (>= 2 %).
+LAWCAPS_BOUND_SHIFT = 1e-6
+#: tests/scenes/wedge_slide.toml with the threshold law: the loads' shear
+#: over Γ is this share of tau_c |Γ|, so that every point slips but one
+#: (fe 38 + 1, xfem 35 + 1, efgm 77 + 1 at 0.9 and 0.99; 2026-11-29).
+LAWCAPS_SLIDE_SHARE = 0.99

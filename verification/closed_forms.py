@@ -332,24 +332,28 @@ class LayeredSlipFields:
 
 
 class LayeredSlip:
-    """Coulomb friction in closed form: the built-in scene ``layered-slip``
+    """Friction in closed form: the built-in scene ``layered-slip``
     (two layers, ν = 0, pressed by p, then sheared by a prescribed top
-    displacement δ to and fro; its TOML file explains the inputs).
+    displacement δ to and fro; its TOML file explains the inputs), with its
+    coulomb law or any frictional law that can open (the law's
+    ``slip_bound``, contactcore.laws' module doc).
 
     One interface point stands for the whole of Γ: the layers and the
     tangential spring act in series with compliance
     ``C = h₁/G₋ + h₂/G₊ + 1/k_T``, so the trial shear is ``τ* = (δ − s)/C``;
-    the point sticks while ``|τ*| <= μp``, otherwise ``τ = μp sign τ*`` and
+    the point sticks while ``|τ*| <= b(p)``, the law's slip bound at
+    ``t_N = −p`` (Coulomb's ``μp``), otherwise ``τ = b(p) sign τ*`` and
     ``s = δ − τ C`` (the return map of the coulomb law, docs/scenes.md).
     """
 
     def __init__(self, scene: Scene):
         law, itf, dom = scene.law, scene.interface, scene.domain
-        if law.name != "coulomb" or any(m.nu != 0 for m in scene.materials.values()):
-            raise ValueError("the layered closed form needs the coulomb law and ν = 0 in both layers")
+        if not (law.frictional and law.unilateral) or any(m.nu != 0 for m in scene.materials.values()):
+            raise ValueError("the layered closed form needs a frictional law that can open (as coulomb) and ν = 0 "
+                             "in both layers")
         # enforced exactly, the springs are infinitely stiff: g_N = 0, g_T = s
         self.kN, self.kT = getattr(law, "kN", np.inf), getattr(law, "kT", np.inf)
-        self.scene, self.mu = scene, law.mu
+        self.scene, self.law, self.mu = scene, law, law.mu  # mu: Coulomb's (None for another law)
         self.y0 = dom.corner[1]
         self.h1, self.h2 = itf.point[1] - self.y0, dom.corner[1] + dom.size[1] - itf.point[1]
         self.E = [scene.materials[b].E for b in ("minus", "plus")]
@@ -364,7 +368,7 @@ class LayeredSlip:
             loads, supports = scene.factors(k)
             p, delta = -loads[0] * pressure.value[1], supports[1] * top.value[0]
             trial = (delta - s) / self.compliance
-            limit = self.mu * p
+            limit = self.limit(p)
             if abs(trial) <= limit * (1 + STICK_ROUNDOFF):
                 states.append(LayerState(p, delta, trial, s, "stick"))
             else:
@@ -372,6 +376,11 @@ class LayeredSlip:
                 s = delta - tau * self.compliance
                 states.append(LayerState(p, delta, tau, s, "slip"))
         return states
+
+    def limit(self, p: float) -> float:
+        """The slip limit at the pressure ``p``: the law's slip bound at
+        ``t_N = −p`` (Coulomb's ``μp``)."""
+        return float(np.asarray(self.law.slip_bound(np.array([-p])), float).reshape(-1)[0])
 
     def fields(self, state: LayerState) -> LayeredSlipFields:
         return LayeredSlipFields(self, state)

@@ -3,8 +3,10 @@ that found none.
 
 A body held by Γ alone under boundary tractions and pressures is in
 equilibrium only if their resultant ``F`` presses it onto a straight Γ
-with ``|F·t| <= μ |F·n|`` (Coulomb's cone integrated over Γ; Wriggers
-2006, §2.3); the unilateral law ties a closed point tangentially, μ = ∞
+with ``|F·t|`` within what the law's slip bound carries over Γ
+(``μ |F·n|``, Coulomb's cone integrated over Γ, Wriggers 2006, §2.3; any
+frictional law's :meth:`~contactcore.laws._Law.slides_off`); a law that
+cannot slip ties a closed point tangentially, μ = ∞
 (:func:`friction_demand`, :func:`_demands`).  A body its supports and pins
 hold in part is refused when the loads do positive work in a rigid motion
 they leave free that opens Γ without sliding (:func:`_pulled_off`): contact
@@ -37,11 +39,12 @@ from .restraint import _BODY_NAMES, _free_modes, _mode_matrix, _restraint
 
 
 def friction_demand(scene, k: float) -> str:
-    """The check a Coulomb or unilateral failure turns on, or "": a body
+    """The check a failure of a law that can open turns on, or "": a body
     held by Γ alone (no support or pin on it) under boundary tractions and
     pressures is in equilibrium only if their resultant ``F`` presses it
-    onto a straight Γ with ``|F·t| <= μ |F·n|`` (Coulomb's cone, integrated
-    over Γ; Wriggers 2006, §2.3).  The unilateral law ties a closed point
+    onto a straight Γ with ``|F·t|`` within the law's slip bound over Γ
+    (``law.slides_off``; Coulomb: ``μ |F·n|``, the cone integrated over Γ,
+    Wriggers 2006, §2.3).  A law that is not frictional ties a closed point
     tangentially, μ = ∞: only the press is checked.  ``F`` is the sum of
     ``factor(k)·traction·length`` over the part of each loaded edge on that
     body (φ linear along it), ``t = −p n_out`` for a pressure.  A body whose
@@ -52,7 +55,6 @@ def friction_demand(scene, k: float) -> str:
     by a line with no body force on the body is judged here."""
     if not scene.law.unilateral:  # springs that carry tension hold any load
         return ""
-    mu = scene.law.mu if scene.law.frictional else float("inf")
     for name, shear, press, held, e in _demands(scene, k):
         if held:
             return (f"body {name}: {held}, and the loads pull it off Γ: no equilibrium, as contact only pushes; "
@@ -60,34 +62,32 @@ def friction_demand(scene, k: float) -> str:
         if press <= 0:
             how = "pull it off Γ" if press < 0 else "lie along Γ and do not press it onto Γ"
             return f"body {name} is held by Γ alone and the loads {how}: no equilibrium without a support"
-        if _beyond(shear, press, mu):
-            return _slides_off(name, shear, press, mu)
+        slides = _slides_off(scene, name, shear, press)
+        if slides:
+            return slides
         if overturned(scene, e):
             return overturn_refusal(scene, name, e)
     return ""
 
 
-def _beyond(shear: float, press: float, mu: float) -> bool:
-    """Whether a resultant's ``shear`` lies beyond Coulomb's cone
-    ``μ press`` by more than DEMAND_ROUNDOFF of it (the scene's data, no
-    BLAS: the same on every machine)."""
-    return shear > mu * press * (1.0 + tol.DEMAND_ROUNDOFF)
-
-
-def _slides_off(name: str, shear: float, press: float, mu: float) -> str:
-    """The refusal's words: the demand to 3 digits and μ to 6, or both to
-    as many digits as tell them apart (0.25 against μ = 0.2499999975)."""
-    ratio, digits = shear / press, 3
-    while digits < 17 and float(f"{ratio:.{digits}g}") <= float(f"{mu:.{max(digits, 6)}g}"):
-        digits += 1
-    return (f"on Γ the loads ask for shear/normal = {ratio:.{digits}g} of body {name}, above μ = "
-            f"{mu:.{max(digits, 6)}g}: it slides off (no equilibrium); lower the shear load or raise μ")
+def _slides_off(scene, name: str, shear: float, press: float) -> str:
+    """The refusal of body ``name`` whose loads shear Γ by ``shear`` and
+    press it by ``press`` > 0 beyond what the scene's frictional law
+    carries over Γ (``law.slides_off`` with Γ's length: the law's words,
+    Coulomb's by μ), or "" (and always for a law that is not frictional:
+    it ties a closed point)."""
+    ends = scene.interface.chord(scene.domain) if scene.law.frictional else None
+    if ends is None:  # not frictional, or no Γ across the domain (refused as a scene)
+        return ""
+    a, b = np.asarray(ends, float)
+    return scene.law.slides_off(name, shear, press, math.hypot(*(b - a)))
 
 
 def beyond_cone(scene, k: float) -> str:
-    """The refusal of a Coulomb scene whose loads at increment ``k`` ask a
-    body held by Γ alone for a shear/normal beyond μ (:func:`_beyond`), or
-    "".  Taken from the scene's data before Newton runs: Newton's
+    """The refusal of a scene with a frictional law whose loads at
+    increment ``k`` ask a body held by Γ alone for a shear beyond what the
+    law's slip bound carries over Γ (Coulomb: a shear/normal beyond μ;
+    ``law.slides_off``), or "".  Taken from the scene's data before Newton runs: Newton's
     stick/slip band (DECISION_BAND) holds a point at stick while its trial
     traction lies within 1e-5 of μp past the cone, so on a uniform load
     whose shear/normal lies at the band's edge (μ(1 + 1e-5)) the outcome
@@ -95,15 +95,18 @@ def beyond_cone(scene, k: float) -> str:
     round-off, and followed the BLAS kernel (grader10 F1: xfem P2 refused
     under Haswell, answered under Nehalem).  A resultant beyond the cone
     proves there is no equilibrium (Wriggers 2006, §2.3), so such a load
-    is refused on every machine alike, however close to μ."""
-    mu = getattr(scene.law, "mu", None)
+    is refused on every machine alike, however close to μ.  Any
+    frictional law is refused alike, by its slip bound (takeover31 #1: a
+    threshold law below the loads' shear failed Newton after six cut-backs,
+    told to use coulomb)."""
     if not scene.law.unilateral:  # springs that carry tension hold any load
         return ""
     for name, shear, press, held, e in _demands(scene, k):
         if held or press <= 0:
             continue
-        if scene.law.frictional and mu is not None and _beyond(shear, press, mu):
-            return _slides_off(name, shear, press, mu)
+        slides = _slides_off(scene, name, shear, press)
+        if slides:
+            return slides
         if overturned(scene, e):  # any law without tension: the loads' line of action must meet Γ
             return overturn_refusal(scene, name, e)
     return ""
@@ -216,7 +219,8 @@ def tie_cause(scene, k: float, failure: str, from_rest: bool = False) -> str:
     tilted block, less often on a partly open block under shear (grader16
     F1; docs/contact-enforcement.md, "The unilateral law under shear").
     Coulomb's ``|t_T| <= μ|t_N|`` lets the shear vanish with the pressure;
-    μ must exceed the loads' shear/normal on a body held by Γ alone.  An
+    μ must exceed the loads' shear/normal on a body held by Γ alone.  A
+    frictional law of any slip bound is not the tie, and gets "" here.  An
     increment ``from_rest`` along a straight path is the same problem at
     any size (``from_rest`` holds only for a law that declares itself
     positively homogeneous, ``law.homogeneous``), so more increments do
