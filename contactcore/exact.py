@@ -150,13 +150,6 @@ class _ExactLaw:
             values.update(cls.springs.extra_parameters(params, path))
         return cls(**values)
 
-    def __getattr__(self, name):
-        # ``mu`` None where the law has no Coulomb coefficient (as
-        # contactcore.laws._Law: Newton's record of a frictionless Γ reads it)
-        if name == "mu":
-            return None
-        raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
-
     def initial_state(self, m: int):
         """Its springs' history before the first increment (none for bonded)."""
         return None if self.springs is None else self.at(np.ones(m)).initial_state(m)

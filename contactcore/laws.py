@@ -215,6 +215,14 @@ DIMENSIONS = (STIFFNESS, STRESS, DISPLACEMENT, LENGTH, DIMENSIONLESS)
 CAPABILITIES = ("homogeneous", "unilateral", "frictional")
 
 
+def frictionless(law) -> bool:
+    """Whether ``law`` is frictional with a slip bound of zero (Coulomb's
+    μ = 0): its closed points carry no shear, so a sticking one is
+    reported as slipping (:attr:`contactcore.interface_path.Increment.frictionless`).
+    Asked of the bound at a unit pressure, not of a parameter's name."""
+    return bool(law.frictional) and not np.any(law.slip_bound(np.array([-1.0])))
+
+
 def law_contract(cls) -> dict[str, str]:
     """The declared dimension of each parameter of the law class ``cls``
     (module doc), or a ContactError naming what ``cls`` fails to declare: a
@@ -309,14 +317,6 @@ class _Law:
             raise ContactError(f"the '{cls.name}' law ({cls.__qualname__}) declares the parameters "
                                f"{', '.join(extra)} but no extra_parameters(params, path) to read and check them")
         return {}
-
-    def __getattr__(self, name):
-        # ``mu``: Coulomb's coefficient where the law has one (a field),
-        # None for any other: Newton's record of a frictionless Γ still
-        # reads ``law.mu == 0`` (contactcore/newton/increments.py).
-        if name == "mu":
-            return None
-        raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
 
     def initial_state(self, m: int):
         """The history of ``m`` points before the first increment (none)."""

@@ -365,3 +365,18 @@ def test_a_block_slipping_all_along_gamma_but_one_point_slides_to_it_in_one_step
     assert np.count_nonzero(slip) > np.count_nonzero(status == STICK)
     assert np.allclose(np.abs(t_T[slip]), tau_c, rtol=tol.SLIDE_BALANCE, atol=0)
     assert abs(weights @ t_T - load @ tangent_of(n[None])[0]) <= tol.SLIDE_BALANCE * np.linalg.norm(load)
+
+
+def test_a_frictionless_gamma_is_asked_of_the_bound():
+    """Newton reports a sticking point as slipping only where the law's
+    slip bound is zero (contactcore.laws.frictionless): Coulomb's μ = 0,
+    penalty or exact; never a threshold law, which has no μ, nor a law
+    that is not frictional."""
+    from contactcore.laws import frictionless
+    coulomb = {"type": "coulomb", "kN": 1e10, "kT": 1e10}
+    assert frictionless(make_law({**coulomb, "mu": 0.0}))
+    assert frictionless(make_law({"type": "coulomb", "mu": 0.0, "enforcement": "exact"}))
+    assert not frictionless(make_law({**coulomb, "mu": 0.2}))
+    assert not frictionless(make_law({"type": "unilateral", "kN": 1e10, "kT": 1e10}))
+    assert not frictionless(ThresholdLaw(kN=1e10, kT=1e10, tau_c=tol.LAWCAPS_LAYERED_TAU_C))
+    assert not hasattr(ThresholdLaw(kN=1e10, kT=1e10, tau_c=tol.LAWCAPS_LAYERED_TAU_C), "mu")

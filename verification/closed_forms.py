@@ -353,7 +353,7 @@ class LayeredSlip:
                              "in both layers")
         # enforced exactly, the springs are infinitely stiff: g_N = 0, g_T = s
         self.kN, self.kT = getattr(law, "kN", np.inf), getattr(law, "kT", np.inf)
-        self.scene, self.law, self.mu = scene, law, law.mu  # mu: Coulomb's (None for another law)
+        self.scene, self.law, self.mu = scene, law, getattr(law, "mu", None)  # mu: Coulomb's (None for another law)
         self.y0 = dom.corner[1]
         self.h1, self.h2 = itf.point[1] - self.y0, dom.corner[1] + dom.size[1] - itf.point[1]
         self.E = [scene.materials[b].E for b in ("minus", "plus")]

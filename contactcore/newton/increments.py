@@ -32,7 +32,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .. import health
+from .. import health, laws
 from .. import tolerances as tol
 from ..errors import SolverError, SolverOptionError
 from ..exact import enforced
@@ -102,7 +102,7 @@ class _Newton(_Continuation, _Iteration, _Correction, _Statuses, _LineSearch, _C
         self.u, self.state, self.status = u, response.state, response.status
         self._converged_at = (self._converged_at + [(_flat(factors), u.copy())])[-2:]
         g = self.itf.jumps(u)
-        frictionless = self.law.frictional and self.law.mu == 0
+        frictionless = laws.frictionless(self.law)
         self.path.steps.append(Increment(k, factors, iterations, history, g, response.traction, response.status,
                                          frictionless=frictionless))
         self.report.iterations.append(iterations)
@@ -134,9 +134,10 @@ class _Newton(_Continuation, _Iteration, _Correction, _Statuses, _LineSearch, _C
         would hold such a load at stick or not as round-off decides."""
         beyond = health.beyond_cone(self.scene, float(n))
         if beyond:
+            bound = "μ" if hasattr(self.law, "mu") else "the slip bound"
             raise SolverError(f"scene {self.scene.name}: increment {n} of {self.scene.increments}: {beyond}\n  "
-                              f"(from the scene's loads, before Newton: a resultant beyond μ, or meeting Γ beyond its "
-                              f"ends, by more than {tol.DEMAND_ROUNDOFF:g} of it has no equilibrium)")
+                              f"(from the scene's loads, before Newton: a resultant beyond {bound}, or meeting Γ "
+                              f"beyond its ends, by more than {tol.DEMAND_ROUNDOFF:g} of it has no equilibrium)")
         pending, failures, rest = [(float(n), 0)], [], False
         start = float(n - 1)
         while pending:

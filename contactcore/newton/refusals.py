@@ -142,7 +142,8 @@ def _unsettled(law, from_rest: bool = False) -> str:
                    "springs far stiffer or softer than the bulk (k_N, k_T against E/h), or a rigid-body mode "
                    "nearly free"))
     friction = law.frictional
-    held = "a body held only by open points" + (", or a load shearing Γ beyond μ times its pressure" if friction else "")
+    bound = "μ times its pressure" if hasattr(law, "mu") else "the law's slip bound at its pressure"
+    held = "a body held only by open points" + (f", or a load shearing Γ beyond {bound}" if friction else "")
     status = "open/closed and stick/slip" if friction else "open/closed"
     more = "" if from_rest else " or use more increments"
     remedy = (f"Newton cannot settle the exact law's {status} map: use another stabilisation{more}"
