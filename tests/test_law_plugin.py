@@ -380,3 +380,22 @@ def test_a_frictionless_gamma_is_asked_of_the_bound():
     assert not frictionless(make_law({"type": "unilateral", "kN": 1e10, "kT": 1e10}))
     assert not frictionless(ThresholdLaw(kN=1e10, kT=1e10, tau_c=tol.LAWCAPS_LAYERED_TAU_C))
     assert not hasattr(ThresholdLaw(kN=1e10, kT=1e10, tau_c=tol.LAWCAPS_LAYERED_TAU_C), "mu")
+
+
+def test_a_point_held_at_stick_beyond_the_bound_is_warned_of():
+    """contactcore.health.friction_excess_warnings asks the law's bound:
+    a point reported sticking with |t_T| 1 % above tau_c is named, one at
+    1 % below is not (a Coulomb μ would have read None and named neither)."""
+    from types import SimpleNamespace
+    from contactcore.health import friction_excess_warnings
+    scene = load_scene("layered-slip")
+    scene = scene.with_changes(law=make_law({"type": "threshold", "kN": scene.law.kN, "kT": scene.law.kT,
+                                             "tau_c": tol.LAWCAPS_LAYERED_TAU_C}))
+    tau = tol.LAWCAPS_LAYERED_TAU_C
+
+    def path(share):
+        return SimpleNamespace(steps=[SimpleNamespace(step=1.0, traction=np.array([[-tau, share * tau]]),
+                                                      status=np.array([STICK]))])
+    said = friction_excess_warnings(scene, path(1 + tol.LAWCAPS_EXCESS_SHARE), 0.0, None)
+    assert len(said) == 1 and "above the law's slip bound" in said[0], said
+    assert not friction_excess_warnings(scene, path(1 - tol.LAWCAPS_EXCESS_SHARE), 0.0, None)

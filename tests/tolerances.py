@@ -1533,3 +1533,7 @@ LAWCAPS_BOUND_SHIFT = 1e-6
 #: over Γ is this share of tau_c |Γ|, so that every point slips but one
 #: (fe 38 + 1, xfem 35 + 1, efgm 77 + 1 at 0.9 and 0.99; 2026-11-29).
 LAWCAPS_SLIDE_SHARE = 0.99
+#: A sticking point's |t_T| this share above (below) the threshold law's
+#: bound: far beyond the warning's round-off allowance (STICK_ROUNDOFF,
+#: TRACTION_ROUNDOFF of the pressure: 1e-9 and below), so it must (must not) be named.
+LAWCAPS_EXCESS_SHARE = 1e-2

@@ -139,9 +139,9 @@ NOT_ESTIMATED = (f"\n{NOT_ESTIMATED_MARK} not estimated: the reference the runs 
 
 #: Under an agreement table of runs not estimated: whose error a difference is.
 UNESTIMATED_AGREEMENT = ("\nThe reference is solved at the same h and has an error of its own, so a difference above "
-                         "is both runs' errors together. `run --estimate` estimates each chosen method's own error "
-                         "from a second run at twice h and says where two methods differ by more than their "
-                         "estimates (docs/error-estimates.md).\n")
+                         "is both runs' errors together. `run --estimate` also solves each chosen method at h/2, "
+                         "reports that run with its own estimated error, and says where two methods differ by "
+                         "more than their estimates (docs/error-estimates.md).\n")
 
 
 def conventions(units, ranks: int = 1) -> str:

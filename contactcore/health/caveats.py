@@ -114,7 +114,7 @@ def spring_alpha(scene, h: float | None) -> float:
 def friction_excess_warnings(scene, path, stress_size: float = 0.0, h: float | None = None) -> list[str]:
     """Points a converged ``path`` (an
     :class:`~contactcore.interface_path.InterfacePath`) holds at stick with
-    ``|t_T|`` beyond ``μ|t_N|`` by more than the traction's round-off
+    ``|t_T|`` beyond the law's ``slip_bound(t_N)`` (Coulomb's ``μ|t_N|``) by more than the traction's round-off
     (``STICK_ROUNDOFF`` of μp, or ``TRACTION_ROUNDOFF`` of the largest
     pressure along the path or of the scene's ``stress_size``, whichever is
     larger: on a Γ the loads leave unloaded every traction is round-off of
@@ -129,26 +129,29 @@ def friction_excess_warnings(scene, path, stress_size: float = 0.0, h: float | N
     μ").  One warning naming how many (point, increment) pairs, the
     largest excess over μ|t_N| (or over the path's largest μp, where the
     point's is smaller) and its increment."""
-    mu = getattr(scene.law, "mu", None)
-    if mu is None or not scene.law.frictional or path is None:
+    if not scene.law.frictional or path is None:
         return []
     carried = _carried(path)
     spring_roundoff = tol.SPRING_TRACTION_ROUNDOFF * spring_alpha(scene, h)
+    bound = scene.law.slip_bound  # Coulomb's μ max(−t_N, 0), or the law's own
+    largest = float(bound(np.array([-carried]))[0])
 
     def excess(t, status):
-        limit = mu * np.maximum(-t[:, 0], 0.0)
+        limit = bound(t[:, 0])
         allowed = np.maximum(tol.STICK_ROUNDOFF * limit,
                              max(tol.TRACTION_ROUNDOFF * max(carried, stress_size), spring_roundoff * carried))
         over = np.abs(t[:, 1]) - limit
-        return (status == STICK) & (over > allowed), over / np.maximum(limit, max(mu * carried, np.finfo(float).tiny))
+        return (status == STICK) & (over > allowed), over / np.maximum(limit, max(largest, np.finfo(float).tiny))
 
     count, worst, where = _tally(path, excess)
     blind = spring_band_warnings(scene, h)
     if not count:
         return blind
+    mu = getattr(scene.law, "mu", None)
+    named = f"μ|t_N| = {mu:g}|t_N|" if mu is not None else "the law's slip bound"
     return blind + [
-        f"Γ's points stick with |t_T| above μ|t_N| = {mu:g}|t_N| at {count} (point, increment) pair(s), by up to "
-        f"{worst:.2g} of μ|t_N| (of its largest along the path where the point's is smaller; increment "
+        f"Γ's points stick with |t_T| above {named} at {count} (point, increment) pair(s), by up to "
+        f"{worst:.2g} of {'μ|t_N|' if mu is not None else 'it'} (of its largest along the path where the point's is smaller; increment "
         f"{where:g}): Newton keeps a point's status within {tol.DECISION_BAND:g} of Γ's largest μp "
         "(DECISION_BAND, above the round-off of its margins) and holds a point at rest where Γ is unloaded "
         "(REST_ROUNDOFF), so the loads there ask a shear/normal within that band of μ or above it, where no "
