@@ -124,7 +124,23 @@ class Discretisation:
     needs_mpi: ClassVar[bool] = True
     field_copies: ClassVar[int] = 1
     meshfree: ClassVar[bool] = False
+    #: degree -> the least unknowns of a system whose exact, nonlinear law
+    #: takes a coarser solve's first map (:attr:`coarse_map_min_unknowns`)
+    coarse_map_from: ClassVar[dict[int, int]] = {1: 10_000, 2: 10_000}
     degree: int
+
+    @property
+    def coarse_map_min_unknowns(self) -> int:
+        """The least unknowns (the whole system's, the same on every rank
+        and under any numbering: a decision no round-off moves) of a
+        system whose exact, nonlinear law starts its first status search
+        from a coarser solve's map (:mod:`contactcore.newton.guess`).
+        Below it the coarser build and search cost more than the fine
+        iterations they save; where they break even depends on the
+        method's build and iteration costs, so each method measures its
+        own (:attr:`coarse_map_from`; here 10 000, a new method's until
+        measured; docs/newton.md, "A first map from a coarser solve")."""
+        return self.coarse_map_from[self.degree]
 
     @property
     def nodes_per_cell(self) -> int:
@@ -343,19 +359,25 @@ def check_solvable(scene, discretisation: Discretisation, h: float | None = None
 #: Why an exact, nonlinear law's run took no coarser map (``SolverReport.first_map``).
 NO_COARSER_MAP = "no coarser map (a given grid or node set, or the coarser spacing refused or its solve failed)"
 
-#: ... and where its system is too small for one to pay (:data:`~contactcore.newton.guess.COARSE_MIN_UNKNOWNS`).
+#: ... and where its system is too small for one to pay (:attr:`Discretisation.coarse_map_min_unknowns`).
 SMALL_FOR_COARSER_MAP = "no coarser map (fewer than {} unknowns: a coarser solve costs more than it saves)"
+
+
+def _coarsens(scene, resolution: Resolution) -> bool:
+    """Whether an exact, nonlinear law at a spacing ``h`` (not a given grid
+    or node set) may take a coarser solve's map: the size rule aside."""
+    return (newton_guess.COARSER is not None and exact.is_exact(scene.law) and not scene.law.is_linear
+            and resolution.h is not None and resolution.counts is None)
 
 
 def _coarse_guess(scene, discretisation: Discretisation, resolution: Resolution, ranks: Collective, dofs: int):
     """An exact, nonlinear law's first status map from the same scene and
     method at twice the spacing (:mod:`contactcore.newton.guess`), or None:
     not for a penalty or linear law, a given grid or node set (no ``h`` to
-    coarsen), a system of fewer than ``COARSE_MIN_UNKNOWNS`` unknowns
-    (``dofs``, the whole system's), or a coarser spacing the method refuses."""
-    if not exact.is_exact(scene.law) or scene.law.is_linear or resolution.h is None or resolution.counts is not None:
-        return None
-    if newton_guess.COARSER is None or dofs < newton_guess.COARSE_MIN_UNKNOWNS:
+    coarsen), a system of fewer than the method's
+    :attr:`~Discretisation.coarse_map_min_unknowns` unknowns (``dofs``, the
+    whole system's), or a coarser spacing the method refuses."""
+    if not _coarsens(scene, resolution) or dofs < discretisation.coarse_map_min_unknowns:
         return None
     coarse, kept = Resolution(newton_guess.COARSER * resolution.h), []
 
@@ -399,9 +421,9 @@ def solve(scene, discretisation: Discretisation, h: float | None = None, *, pape
             guess = _coarse_guess(scene, discretisation, resolution, built.system.collective, built.dofs)
             x, path, report = solve_increments(scene, built.system, progress, guess)
         if guess is None and exact.is_exact(scene.law) and not scene.law.is_linear:
-            small = newton_guess.COARSER is not None and built.dofs < newton_guess.COARSE_MIN_UNKNOWNS
-            report.first_map = STICKING + (SMALL_FOR_COARSER_MAP.format(newton_guess.COARSE_MIN_UNKNOWNS) if small
-                                           else NO_COARSER_MAP)
+            least = discretisation.coarse_map_min_unknowns
+            small = _coarsens(scene, resolution) and built.dofs < least
+            report.first_map = STICKING + (SMALL_FOR_COARSER_MAP.format(least) if small else NO_COARSER_MAP)
     finally:
         if reuse is None or not reuse.owns(built):
             built.system.close()

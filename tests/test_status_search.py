@@ -13,10 +13,15 @@ from contactcore import discretisation, load_scene, make_law
 from contactcore.laws import OPEN, SLIP, STICK
 from contactcore.newton import guess as newton_guess
 from contactcore.newton.iteration import FROM_COARSER, STICKING
+from efgm.options import EFGM
 from verification import methods
+from xdolfinx.options import FE, XFEM
 
-#: The library's size rule, read before the fixture below sets it aside.
-SIZE_RULE = newton_guess.COARSE_MIN_UNKNOWNS
+#: xfem P1's size rule, read before the fixture below sets it aside.
+SIZE_RULE = XFEM(degree=1).coarse_map_min_unknowns
+
+#: A size rule no system meets.
+SIZE_FOR_NONE = 10 ** 12
 
 #: C-coulomb's own resolution (its first increment: docs/newton.md).
 H = 0.05
@@ -25,8 +30,10 @@ H = 0.05
 @pytest.fixture(autouse=True)
 def _every_size_takes_a_coarser_map(monkeypatch):
     """The mechanism at C-coulomb's own h, whose systems (5 274 to 6 018
-    unknowns) are below COARSE_MIN_UNKNOWNS: the size rule has its own test."""
-    monkeypatch.setattr(newton_guess, "COARSE_MIN_UNKNOWNS", 0)
+    unknowns at P1) are below fe's and xfem's coarse_map_min_unknowns: the
+    size rule has its own test."""
+    for options in (FE, XFEM, EFGM):
+        monkeypatch.setattr(options, "coarse_map_from", {1: 0, 2: 0})
 
 
 def _exact(scene):
@@ -150,7 +157,7 @@ def test_a_coarse_build_failing_on_another_rank_gives_no_guess_here():
 
 
 def test_a_small_system_takes_no_coarser_map(monkeypatch):
-    """Below COARSE_MIN_UNKNOWNS (the library's, not the fixture's) no
+    """Below xfem's coarse_map_min_unknowns (the library's, not the fixture's) no
     coarser system is built, the run says why, and the answer is the
     search from every point sticking, bit for bit."""
     calls = []
@@ -159,7 +166,7 @@ def test_a_small_system_takes_no_coarser_map(monkeypatch):
     searched = methods.solver("xfem")(scene, H, degree=1)
     assert searched.dofs < SIZE_RULE
     monkeypatch.setattr(newton_guess, "COARSER", 2.0)
-    monkeypatch.setattr(newton_guess, "COARSE_MIN_UNKNOWNS", SIZE_RULE)
+    monkeypatch.setattr(XFEM, "coarse_map_from", {1: SIZE_RULE, 2: SIZE_RULE})
     monkeypatch.setattr(discretisation, "coarse_guess", lambda *a: calls.append(a))
     small = methods.solver("xfem")(scene, H, degree=1)
     assert calls == []
@@ -167,3 +174,11 @@ def test_a_small_system_takes_no_coarser_map(monkeypatch):
     assert small.solver.iterations == searched.solver.iterations
     for a, b in zip(small.interface.steps, searched.interface.steps, strict=True):
         assert np.array_equal(a.status, b.status) and np.array_equal(a.traction, b.traction)
+
+
+def test_a_given_grid_says_it_takes_no_coarser_map_whatever_its_size(monkeypatch):
+    """The paper's grid has no h to coarsen: its reason is that, not the
+    size rule's, even where the rule would also refuse it (review15 #3)."""
+    monkeypatch.setattr(XFEM, "coarse_map_from", {1: SIZE_FOR_NONE, 2: SIZE_FOR_NONE})
+    result = methods.solver("xfem")(_exact(load_scene("C-coulomb")), paper=True, degree=1)
+    assert result.solver.first_map == STICKING + discretisation.NO_COARSER_MAP

@@ -51,6 +51,13 @@ class FE(Discretisation):
     distributed: ClassVar[bool] = True
     # one field per body, each over the whole fitted mesh (contactcore.budget)
     field_copies: ClassVar[int] = 2
+    # where a coarser map pays (Discretisation.coarse_map_min_unknowns):
+    # exact C-coulomb's solve in one warm process, the map's CPU over the
+    # search's from every point sticking (medians of 7 pairs, P2 5;
+    # OMP_NUM_THREADS=1, 2026-11-29): P1 1.11, 1.02, 1.13, 1.01, 0.95 at
+    # 6 018, 9 256, 11 460, 16 290, 23 178 unknowns; P2 1.08, 0.83, 0.93
+    # at 6 294, 12 454, 23 438 (its gmsh build is a P1 run's larger share)
+    coarse_map_from: ClassVar[dict[int, int]] = {1: 18_000, 2: 9_000}
 
     def __post_init__(self):
         check_degree(self.name, self.degree)
@@ -91,6 +98,10 @@ class XFEM(Discretisation):
     level_set: ClassVar[bool] = True
     field_output: ClassVar[str] = "mesh"
     distributed: ClassVar[bool] = True
+    # where a coarser map pays (as FE's): P1 1.14, 1.06, 1.04, 0.88, 0.89
+    # at 5 274, 6 432, 8 112, 9 968, 14 208 unknowns; P2 1.22, 0.93, 0.94
+    # at 5 434, 10 890, 20 418
+    coarse_map_from: ClassVar[dict[int, int]] = {1: 9_000, 2: 9_000}
 
     def __post_init__(self):
         check_degree(self.name, self.degree)

@@ -46,19 +46,6 @@ from .increments import _Newton
 #: the tests of the status search itself set it so).
 COARSER = 2.0
 
-#: The least unknowns of a fine system that takes a coarser solve's map.
-#: Below it the coarser build and search cost more than they save: exact
-#: C-coulomb, the solve alone in one warm process (CPU, median of 5,
-#: OMP_NUM_THREADS=1, 2026-11-29; docs/newton.md, "A first map from a
-#: coarser solve"), exact ÷ penalty without the map → with it: at 5 274 to
-#: 6 018 unknowns (P1 at h = 0.05, efgm P2 5 514) xfem P1 1.48 → 1.78,
-#: fe P1 1.35 → 1.47, efgm P2 1.13 → 1.18, efgm P1 1.25 → 1.18; at 20 162
-#: to 23 438 (P1 at 0.025, xfem and fe P2 at 0.05) xfem P1 1.60 → 1.50,
-#: fe P1 1.56 → 1.33, efgm P1 1.41 → 1.18, xfem P2 1.38 → 1.37, fe P2
-#: 1.34 → 1.29.  A count of the whole system, the same on every rank and
-#: under any numbering: a decision no round-off moves.
-COARSE_MIN_UNKNOWNS = 10_000
-
 #: A coarse first step of at most this many iterations (the all-stick
 #: solve and the map it gives, settled) leaves the fine search as it was:
 #: it would take as few from every point sticking, and a guessed start
