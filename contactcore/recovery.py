@@ -96,6 +96,31 @@ def distinct_svd(A: np.ndarray, key: list | None = None,
     return U[inverse], S[inverse], Vt[inverse]
 
 
+class _Basis:
+    """The stack of :meth:`PatchRecovery._fit`'s matrices ``quadratic_basis(d, terms) · weight`` of
+    patches (their ``weight``, ``d0`` and ``d1`` (patches, samples)), built only for the patches
+    asked for (``[rows]``): column by column, the same operations as on the whole stack."""
+
+    def __init__(self, weight: np.ndarray, d0: np.ndarray, d1: np.ndarray, terms: int):
+        self.weight, self.d0, self.d1, self.terms = weight, d0, d1, terms
+        self.shape = weight.shape + (terms,)
+
+    def __len__(self) -> int:
+        return len(self.weight)
+
+    def __getitem__(self, rows: np.ndarray) -> np.ndarray:
+        w, d0, d1 = (np.take(v, rows, axis=0) for v in (self.weight, self.d0, self.d1))
+        A = np.empty(w.shape + (self.terms,))
+        A[..., 0] = w
+        np.multiply(d0, w, out=A[..., 1])
+        np.multiply(d1, w, out=A[..., 2])
+        if self.terms > 3:
+            np.multiply(d0 * d0, w, out=A[..., 3])
+            np.multiply(d0 * d1, w, out=A[..., 4])
+            np.multiply(d1 * d1, w, out=A[..., 5])
+        return A
+
+
 class _Factors:
     """:func:`distinct_svd`'s memo of one shape: the factors (U, S, Vt) of
     the distinct matrices factored so far, their words, and their hash codes
@@ -235,13 +260,6 @@ class PatchRecovery:
         scale = np.where(some, length, 1.0)[:, None]
         d0 = (np.take(self._x, located).reshape(weight.shape) - origin[:, :1]) / scale
         d1 = (np.take(self._y, located).reshape(weight.shape) - origin[:, 1:]) / scale
-        A = np.empty((len(targets), longest, 6))
-        A[..., 0] = weight
-        np.multiply(d0, weight, out=A[..., 1])
-        np.multiply(d1, weight, out=A[..., 2])
-        np.multiply(d0 * d0, weight, out=A[..., 3])
-        np.multiply(d0 * d1, weight, out=A[..., 4])
-        np.multiply(d1 * d1, weight, out=A[..., 5])
         Y = np.empty((len(targets), longest, 3))
         for k in range(3):
             np.multiply(np.take(self._sigma0[k], padded).reshape(weight.shape), weight, out=Y[..., k])
@@ -251,9 +269,10 @@ class PatchRecovery:
             if not len(todo):
                 continue
             every = len(todo) == len(targets)  # no copies of the stacks (the same values)
-            # a matrix's columns are products of its weights and offsets: those tell the matrices apart
+            # a matrix's columns are products of its weights and offsets: those tell the matrices apart, and
+            # only the matrices factored are built
             key = [weight, d0, d1] if every else [np.take(v, todo, axis=0) for v in (weight, d0, d1)]
-            U, S, Vt = distinct_svd(A[..., :terms] if every else A[todo, :, :terms], key, self._factors)
+            U, S, Vt = distinct_svd(_Basis(*key, terms), key, self._factors)
             full = np.sum(S > S[:, :1] * max(count.max(), terms) * np.finfo(float).eps, axis=1) == terms
             solved = np.swapaxes(Vt, 1, 2) @ ((np.swapaxes(U, 1, 2) @ (Y if every else Y[todo]))
                                               / np.where(S > 0, S, 1.0)[:, :, None])

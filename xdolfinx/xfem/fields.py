@@ -41,6 +41,8 @@ class XFEMFields:
                 sel = np.flatnonzero(mine & (bodies == body))
                 out[sel] = self._recovered(cells[sel], int(body), points[sel])
             return self.locator.combine(out)
+        if mine.all():  # every point this rank's (serial): no copies
+            return self.locator.combine(self._at(cells, bodies, points, gradient))
         sel = np.flatnonzero(mine)
         out[sel] = self._at(cells[sel], bodies[sel], points[sel], gradient)
         return self.locator.combine(out)
@@ -60,6 +62,8 @@ class XFEMFields:
         curved = basis.curved[cells]
         flat = np.flatnonzero(~curved)
         for sel in np.array_split(flat, -(-len(flat) // _CHUNK)) if len(flat) else ():  # bounded memory
+            if len(flat) == len(cells):  # no curved cell: each chunk a range of the points, read as a view
+                sel = slice(sel[0], sel[-1] + 1)
             out[sel] = self._affine(cells[sel], bodies[sel], points[sel], gradient)
         bent = np.flatnonzero(curved)
         if len(bent):
