@@ -48,8 +48,9 @@ _MIX = np.random.default_rng(20261128).integers(1, 2 ** 63, 4096, dtype=np.uint6
 
 def distinct_svd(A: np.ndarray, key: list | None = None,
                  memo: dict | None = None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """``np.linalg.svd(A, full_matrices=False)`` of a stack ``A`` (B, m, k),
-    each distinct matrix factored once.  A patch's matrix is its samples'
+    """``np.linalg.svd(A, full_matrices=False)`` of a stack ``A`` (B, m, k)
+    (an array, or an object with its ``shape``, ``len`` and rows ``A[rows]``:
+    :class:`_Basis`), each distinct matrix factored once.  A patch's matrix is its samples'
     offsets and weights only, and on a uniform grid most patches repeat
     another's bit for bit (scene C at h = 0.025: 1 300 distinct among the
     Zienkiewicz–Zhu estimate's 9 700, 3 100 among xfem's 9 100); LAPACK
