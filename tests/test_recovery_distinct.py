@@ -122,6 +122,7 @@ def test_a_memo_across_stacks_gives_each_matrix_the_bits_of_its_own_factoring():
     rng = np.random.default_rng(7)
     distinct = rng.normal(size=(9, 20, 6))
     memo, stacks = {}, [distinct[rng.integers(0, 9, n)] for n in (40, 3, 55, 1)]
+    stacks.append(stacks[0][::-1])  # every matrix factored before: nothing new to factor
     for stack in stacks:
         key = [stack[..., 0], stack[..., 1:]]  # the matrix's words in two parts
         U, S, Vt = distinct_svd(stack, key, memo)
