@@ -148,10 +148,13 @@ def volume_rule(scene: Scene, h: float, n: int) -> Rule:
         weights.append(rule.weights)
         bodies.append(rule.bodies)
         keys.append(np.full(len(rule.weights), c * 4))
-    order = np.argsort(np.concatenate(keys), kind="stable")
-    rule = Rule(np.concatenate(points)[order], np.concatenate(weights)[order], np.concatenate(bodies)[order])
+    # the plain cells' points (key −1, the lowest) first as they are, the rest sorted stably by key: the
+    # order of a stable sort of all the keys, without sorting or gathering the plain cells' (most) points
+    order = np.argsort(np.concatenate(keys[1:]), kind="stable") if len(keys) > 1 else np.zeros(0, int)
+    rule = Rule(*(np.concatenate([a[0], np.concatenate(a[1:])[order]]) if len(a) > 1 else a[0]
+                  for a in (points, weights, bodies)))
     keep = rule.weights > 0
-    return Rule(rule.points[keep], rule.weights[keep], rule.bodies[keep])
+    return rule if keep.all() else Rule(rule.points[keep], rule.weights[keep], rule.bodies[keep])
 
 
 def _edge(scene: Scene, name: str):

@@ -114,3 +114,34 @@ def test_the_energy_estimate_s_recovery_on_scene_c_is_the_plain_fits_bits(monkey
     plain = energy.recovered_stress(scene, er, sigma)
     assert not np.array_equal(got, sigma)  # recovered, not σ_h passed through
     assert got.tobytes() == plain.tobytes()
+
+
+def test_a_memo_across_stacks_gives_each_matrix_the_bits_of_its_own_factoring():
+    """distinct_svd's memo: a matrix factored in an earlier stack is taken
+    from it; keyed by other arrays (``key``) than the matrix itself."""
+    rng = np.random.default_rng(7)
+    distinct = rng.normal(size=(9, 20, 6))
+    memo, stacks = {}, [distinct[rng.integers(0, 9, n)] for n in (40, 3, 55, 1)]
+    stacks.append(stacks[0][::-1])  # every matrix factored before: nothing new to factor
+    for stack in stacks:
+        key = [stack[..., 0], stack[..., 1:]]  # the matrix's words in two parts
+        U, S, Vt = distinct_svd(stack, key, memo)
+        U0, S0, Vt0 = np.linalg.svd(stack, full_matrices=False)
+        assert U.tobytes() == U0.tobytes() and S.tobytes() == S0.tobytes() and Vt.tobytes() == Vt0.tobytes()
+    assert sum(f.size for f in memo.values()) <= len(distinct)
+
+
+def test_a_hash_met_again_with_other_words_is_factored_anew(monkeypatch):
+    """Two stacks whose matrices share a hash code (only the first word
+    hashed here) but not their words: the second is factored, not taken
+    from the memo."""
+    mix = np.zeros_like(recovery._MIX)
+    mix[0] = 1
+    monkeypatch.setattr(recovery, "_MIX", mix)
+    a = np.random.default_rng(8).normal(size=(2, 10, 3))
+    a[1, 0, 0] = a[0, 0, 0]  # the same first word, the same code
+    memo = {}
+    for stack in (a[:1], a[1:]):
+        U, S, Vt = distinct_svd(stack, memo=memo)
+        U0, S0, Vt0 = np.linalg.svd(stack, full_matrices=False)
+        assert U.tobytes() == U0.tobytes() and S.tobytes() == S0.tobytes() and Vt.tobytes() == Vt0.tobytes()

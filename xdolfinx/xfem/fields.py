@@ -36,11 +36,13 @@ class XFEMFields:
         cells, mine = self.locator.choose(points, bodies)
         out = np.zeros((len(points), 3 if gradient else 2))
         if gradient and recovered and self.space.degree == 1:
-            for body in np.unique(bodies):
+            for body in np.flatnonzero(np.bincount(bodies)):  # np.unique(bodies), without a sort
                 self._recovery(int(body))  # collective: every rank, whatever points it evaluates
                 sel = np.flatnonzero(mine & (bodies == body))
                 out[sel] = self._recovered(cells[sel], int(body), points[sel])
             return self.locator.combine(out)
+        if mine.all():  # every point this rank's (serial): no copies
+            return self.locator.combine(self._at(cells, bodies, points, gradient))
         sel = np.flatnonzero(mine)
         out[sel] = self._at(cells[sel], bodies[sel], points[sel], gradient)
         return self.locator.combine(out)
@@ -60,6 +62,8 @@ class XFEMFields:
         curved = basis.curved[cells]
         flat = np.flatnonzero(~curved)
         for sel in np.array_split(flat, -(-len(flat) // _CHUNK)) if len(flat) else ():  # bounded memory
+            if len(flat) == len(cells):  # no curved cell: each chunk a range of the points, read as a view
+                sel = slice(sel[0], sel[-1] + 1)
             out[sel] = self._affine(cells[sel], bodies[sel], points[sel], gradient)
         bent = np.flatnonzero(curved)
         if len(bent):
@@ -106,7 +110,7 @@ class XFEMFields:
                     acc = acc + dN[d][j] * vec[k][j]
                 du[:, k, d] = acc
         out = np.zeros((len(points), 3))
-        for body in np.unique(bodies):
+        for body in np.flatnonzero(np.bincount(bodies)):  # np.unique(bodies), without a sort
             sel = bodies == body
             out[sel] = voigt_stress(du[sel], self.D[int(body)])
         return out
