@@ -64,7 +64,7 @@ import numpy as np
 
 from . import tolerances as tol
 from .errors import ContactError, SceneError
-from .registry import declared_dimensions, registered
+from .registry import add, declared_dimensions, registered
 
 
 @dataclass(frozen=True)
@@ -258,12 +258,7 @@ def register(cls, laws: dict | None = None):
     package, as a plugin (or a test) adds it.  Refused like the built-in
     ones: a class that declares too little, a name already registered.
     Returns ``cls`` (usable as a decorator); :func:`unregister` undoes it."""
-    laws = LAWS if laws is None else laws
-    law_contract(cls)
-    if cls.name in laws:
-        raise ContactError(f"the law name '{cls.name}' is registered twice ({laws[cls.name].__qualname__}, "
-                           f"{cls.__qualname__})")
-    laws[cls.name] = cls
+    add("law", law_contract, LAWS if laws is None else laws, cls)
     return cls
 
 

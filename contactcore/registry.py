@@ -8,17 +8,23 @@ from typing import Callable
 from .errors import ContactError
 
 
+def add(kind: str, contract: Callable, registry: dict, cls) -> None:
+    """Put ``cls`` into ``registry`` under its ``name``, held to
+    ``contract`` (which raises a ContactError naming what it lacks); a
+    name already there is a ContactError naming both classes (``kind``,
+    "law" or "load", names them)."""
+    contract(cls)
+    if cls.name in registry:
+        raise ContactError(f"the {kind} name '{cls.name}' is registered twice ({registry[cls.name].__qualname__}, "
+                           f"{cls.__qualname__})")
+    registry[cls.name] = cls
+
+
 def registered(kind: str, contract: Callable, classes) -> dict:
-    """``{name: class}`` of ``classes``, each held to ``contract`` (which
-    raises a ContactError naming what it lacks); ``kind`` ("law", "load")
-    names them in the error of a name given twice."""
+    """``{name: class}`` of ``classes``, each added by :func:`add`."""
     out = {}
     for cls in classes:
-        contract(cls)
-        if cls.name in out:
-            raise ContactError(f"the {kind} name '{cls.name}' is registered twice ({out[cls.name].__qualname__}, "
-                               f"{cls.__qualname__})")
-        out[cls.name] = cls
+        add(kind, contract, out, cls)
     return out
 
 
