@@ -61,6 +61,7 @@ from . import tolerances as tol
 from .errors import DiscretisationError, SceneError, quoted
 from .collective import SERIAL
 from .laws import DIMENSIONLESS, STICK, CoulombLaw, Decision, LawResponse, LinearLaw, UnilateralLaw, _positive, registry
+from .spelling import hint
 
 #: Laws that exist only enforced exactly (no springs).
 BONDED = ("bonded",)
@@ -143,7 +144,7 @@ class _ExactLaw:
         unknown = sorted(set(params) - allowed)
         if unknown:
             raise SceneError(f"{path}.{unknown[0]}", f"unknown parameter of the exact '{cls.name}' law (it takes "
-                             f"{', '.join(cls.parameters)}; {cls.about_springs})")
+                             f"{', '.join(cls.parameters)}; {cls.about_springs}){hint(unknown[0], allowed - {'type'})}")
         given = tuple((k, _positive(params, k, path)) for k in ("kN", "kT") if k in params)
         values = {"stabilisation": _stabilisation(params, path), "given_springs": given}
         if cls.springs is not None:

@@ -65,6 +65,7 @@ import numpy as np
 from . import tolerances as tol
 from .errors import ContactError, SceneError
 from .registry import add, declared_dimensions, registered
+from .spelling import hint
 
 
 @dataclass(frozen=True)
@@ -295,7 +296,7 @@ class _Law:
         unknown = sorted(set(params) - set(cls.parameters) - {"type"})
         if unknown:
             raise SceneError(f"{path}.{unknown[0]}", f"unknown parameter of the '{cls.name}' law "
-                             f"(it takes {', '.join(cls.parameters)})")
+                             f"(it takes {', '.join(cls.parameters)}){hint(unknown[0], cls.parameters)}")
         values = {k: _positive(params, k, path) for k in ("kN", "kT")}
         values.update(cls.extra_parameters(params, path))
         return cls(**values)

@@ -10,13 +10,13 @@ back, so a run's ``scene.toml`` is the scene it solved.
 from __future__ import annotations
 
 import dataclasses
-import difflib
 import json
 import tomllib
 from importlib import resources
 from pathlib import Path
 
 from .errors import SceneError, os_problem
+from .spelling import closest as _closest
 from .geometry import CircleInterface, Disc, Domain, Interface, LevelSetInterface, LineInterface, Rectangle
 from .exact import default_enforcement
 from .enforcement import make_law
@@ -24,29 +24,6 @@ from .laws import InterfaceLaw
 from .scene import (BODIES, BodyForce, InterfaceProfile, LineProfile, Load, Material, Pin, Pressure, Profile, Scene, Support,
                     Torque, Traction, Units, finite)
 
-
-
-#: How alike (difflib's ratio) a key given and a key known must be for a
-#: refusal to ask whether one is a misspelling of the other: 'increment'
-#: and 'increments' score 0.95, 'plsu' and 'plus' 0.75, 'kN' and 'kT' 0.5
-#: (two real keys, never offered for each other).
-SPELLING_LIKENESS = 0.7
-
-
-def _closest(name: str, candidates) -> str | None:
-    """The candidate most like ``name``, if any is as alike as
-    :data:`SPELLING_LIKENESS`, differs from it in case alone ('e' for
-    'E'), or is the only candidate that begins with it or that it begins
-    with ('n' for 'nu': too short for the likeness)."""
-    by_case = sorted(c for c in candidates if c.casefold() == name.casefold())
-    if by_case:
-        return by_case[0]
-    close = difflib.get_close_matches(name, sorted(candidates), n=1, cutoff=SPELLING_LIKENESS)
-    if close:
-        return close[0]
-    folded = name.casefold()
-    prefixed = [c for c in candidates if c.casefold().startswith(folded) or folded.startswith(c.casefold())]
-    return prefixed[0] if len(prefixed) == 1 else None
 
 
 class _Table:

@@ -162,6 +162,11 @@ def test_a_misspelt_key_is_named_with_the_key_it_is_like(scene_dict):
     data["materials"]["minus"]["e"] = data["materials"]["minus"]["E"]  # given twice, in two cases
     with pytest.raises(SceneError, match=r"^materials.minus.e: unknown key \(like 'E', which is given too\)$"):
         scene_from_dict(data)
+    data = scene_dict("C-coulomb")
+    data["interface"]["law"].update(enforcement="exact", stabilization=3.0)  # a law's parameter, US spelling
+    with pytest.raises(SceneError, match=r"^interface.law.stabilization: unknown parameter .*\(did you mean "
+                                         r"'stabilisation'\?\)$"):
+        scene_from_dict(data)
     data = scene_dict("A")
     data["colour"] = "red"
     with pytest.raises(SceneError, match=r"^colour: unknown key$"):
