@@ -124,6 +124,9 @@ class Discretisation:
     needs_mpi: ClassVar[bool] = True
     field_copies: ClassVar[int] = 1
     meshfree: ClassVar[bool] = False
+    #: one line for a report's reader: what the method is, and what its
+    #: stress at degree 1 is (summary.md's legend under its table)
+    about: ClassVar[str] = ""
     #: degree -> the least unknowns of a system whose exact, nonlinear law
     #: takes a coarser solve's first map (:attr:`coarse_map_min_unknowns`)
     coarse_map_from: ClassVar[dict[int, int]] = {1: 10_000, 2: 10_000}

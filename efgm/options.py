@@ -56,6 +56,8 @@ class EFGM(Discretisation):
     # and its error at the scale of its cells includes its quadrature's
     # (contactcore.estimate.orders.polluted)
     meshfree: ClassVar[bool] = True
+    about: ClassVar[str] = ("element-free Galerkin: a moving-least-squares basis of degree 1 or 2 on a node grid, "
+                            "its supports cut by Γ and enriched across it; its stress is the basis's own")
     # where a coarser map pays (contactcore.discretisation.Discretisation.
     # coarse_map_min_unknowns; measured as xdolfinx.options.FE's, P2 3
     # pairs): P1 1.03, 0.90, 0.91 at 2 892, 5 346, 10 036 unknowns; P2

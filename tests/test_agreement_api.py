@@ -130,8 +130,13 @@ def test_run_writes_the_helpers_agreement_figures(tmp_path):
     wedge = Path(__file__).resolve().parent.parent / "examples" / "wedge.toml"
     run(wedge, ["all"], tmp_path / "out", h=COARSE_H, degree=2, draw=False)
     written = (tmp_path / "out" / "summary.md").read_text()
-    from verification.run import UNESTIMATED_AGREEMENT  # not estimated: says whose error a difference is
+    from contactcore import load_scene
+    from verification import methods
+    from verification.run import UNESTIMATED_AGREEMENT, law_line  # not estimated: says whose error a difference is
     assert UNESTIMATED_AGREEMENT in written
+    for name in ("fe", "xfem", "efgm"):  # what each method is, from its options class
+        assert f"- {name}: {methods.discretisation(name).about}" in written
+    assert law_line(load_scene(wedge)) in written and "Γ's law: `coulomb`, enforced by its springs" in written
     helper = compare(wedge, ["xfem:2", "efgm:2"], COARSE_H)
     for a in helper.rows:
         method, degree = a.method.split(" p")

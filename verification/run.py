@@ -99,10 +99,20 @@ def _summary_table(summaries: list[dict]) -> str:
                      f"{sv['residual']:.1e} | {cond} |")
     footnote = [NOT_ESTIMATED] if estimated and any("estimate" not in s for s in summaries) else []
     footnote += _ladder_note(summaries) if estimated else []
+    footnote += _methods_note(summaries)
     footnote += _partial_note(summaries)
     warnings = [f"- {s['method']}: {w}" for s in summaries
                 for w in s["solver"]["warnings"] + s.get("estimate", {}).get("warnings", [])]
     return "\n".join(lines + footnote + ([""] + ["Warnings:"] + warnings if warnings else [])) + "\n"
+
+
+def _methods_note(summaries: list[dict]) -> list[str]:
+    """Under the table: what each method run is (its options class's
+    ``about``), and what the condition column holds."""
+    names = list(dict.fromkeys(s["method"] for s in summaries if s["method"] in methods.METHODS))
+    lines = [f"- {n}: {methods.discretisation(n).about}" for n in names if methods.discretisation(n).about]
+    return ["", "Methods:", *lines, "- condition: MUMPS's estimate of the tangent's condition number, computed only "
+            "where asked (the `sweeps` driver, or `estimate_condition=True` in the Python API; — here)"] if lines else []
 
 
 def _partial_note(summaries: list[dict]) -> list[str]:
@@ -155,6 +165,17 @@ def conventions(units, ranks: int = 1) -> str:
             "its tangent is t = (n_y, −n_x); g_N = [[u]]·n > 0 is an opening, g_T = [[u]]·t the + body's slip "
             "along t; t_N > 0 is tension (the pressure is −t_N) and t_T has the sign of the slip that causes it; "
             f"stresses are tension positive (docs/scenes.md).{parallel}\n\n")
+
+
+def law_line(scene: Scene) -> str:
+    """``summary.md``'s line naming Γ's law, its enforcement and its
+    parameters as the scene gives them (springs in stress/length, β a
+    multiple of the method's γ₀: docs/contact-enforcement.md)."""
+    law = scene.law
+    values = ", ".join(f"{p} = {getattr(law, p):g}" for p in law.parameters
+                       if isinstance(getattr(law, p, None), (int, float)))
+    how = "exactly (Nitsche)" if law.enforcement == "exact" else "by its springs (penalty)"
+    return f"Γ's law: `{law.name}`, enforced {how}" + (f"; {values}" if values else "") + ".\n\n"
 
 
 def agreement_section(scene: Scene, profiles: dict, reference: str | None = None, floors: dict | None = None) -> str:
@@ -567,6 +588,7 @@ def _write_summary(out: Path, scene: Scene, summaries: list[dict], profiles: dic
         plots.plot_profile(out / "plots" / f"{pid}.png", titles[pid], runs, ref, agreement.floors(scene, floors),
                            scene.units)
     text = (f"# Scene {plots.heading(scene.name, scene.title)}\n\n" + conventions(scene.units, files.ranks())
+            + law_line(scene)
             + _summary_table(summaries) + agreement_section(scene, profiles, ref, floors))
     if "## Agreement" in text and not estimated:
         text += UNESTIMATED_AGREEMENT

@@ -51,6 +51,8 @@ class FE(Discretisation):
     distributed: ClassVar[bool] = True
     # one field per body, each over the whole fitted mesh (contactcore.budget)
     field_copies: ClassVar[int] = 2
+    about: ClassVar[str] = ("conforming P1/P2 triangles on a gmsh mesh that follows Γ, one field per body; at P1 "
+                            "its stress is each cell's own constant (the reference is fe at P2)")
     # where a coarser map pays (Discretisation.coarse_map_min_unknowns):
     # exact C-coulomb's solve in one warm process, the map's CPU over the
     # search's from every point sticking (medians of 7 pairs, P2 5;
@@ -98,6 +100,8 @@ class XFEM(Discretisation):
     level_set: ClassVar[bool] = True
     field_output: ClassVar[str] = "mesh"
     distributed: ClassVar[bool] = True
+    about: ClassVar[str] = ("P1/P2 on a grid that ignores Γ, Heaviside-enriched where Γ cuts a cell; at P1 its stress "
+                            "is recovered by patches (a degree higher than the cells' own)")
     # where a coarser map pays (as FE's): P1 1.14, 1.06, 1.04, 0.88, 0.89
     # at 5 274, 6 432, 8 112, 9 968, 14 208 unknowns; P2 1.22, 0.93, 0.94
     # at 5 434, 10 890, 20 418
