@@ -414,6 +414,9 @@ def test_efficiency_without_a_reference_estimates_and_says_so(tmp_path):
         (row,) = list(csv.DictReader(fh))
     low, error, high = (float(row[k]) for k in ("error_low", "error", "error_high"))
     assert 0 < error and high / error == pytest.approx(error / low) == pytest.approx(core_tol.ESTIMATE_TRUST)
+    # at h = 0.2 on A the estimate is not asymptotic: its warnings are counted and listed, as run --estimate gives them
+    assert int(row["warned"]) > 0 and "Warnings of the estimates" in text
+    assert text.count("- efgm p1 h = 0.2: ") == int(row["warned"])
 
 
 def test_an_exact_law_caps_the_orders_on_gamma():

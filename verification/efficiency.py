@@ -217,7 +217,8 @@ def efficiency(scene_name: str, variants, ladders: dict, ref_h: float | None, ex
     measured_by = pool.workers_label(workers)
     out = Path(out)
     columns = COLUMNS + (ESTIMATE_COLUMNS if ref is not None and "estimate" in rows[0] else [])
-    files.write_csv(out / "efficiency.csv", rows, columns + (["error_low", "error_high"] if ref is None else []))
+    files.write_csv(out / "efficiency.csv", rows, columns + (["error_low", "error_high"] if ref is None else [])
+                    + (["warned"] if "warned" in rows[0] else []))
     loglog_by_variant(out / "efficiency.png", rows, "total", "error", "total wall time (s)",
                       "worst profile error (relative RMS)" + (", estimated" if ref is None else ""),
                       f"Scene {scene.name}: error against run time",
@@ -232,11 +233,20 @@ def efficiency(scene_name: str, variants, ladders: dict, ref_h: float | None, ex
             f"{soonest(rows)}\n\nWhich method to pick for a target error (the fastest measured rung that "
             f"reaches it):\n\n{advisor(rows, units=scene.units)}\n![efficiency {scene.name}](efficiency.png)\n\n"
             + files.markdown_table(rows, columns, headers + ["estimate", "estimate worst at", "effectivity at worst at"]
-                                   [:len(columns) - len(COLUMNS)]))
+                                   [:len(columns) - len(COLUMNS)]) + _warnings_section(rows))
     files.write_text(out / "efficiency.md", text)
     files.write_text(out / files.SCENE_FILE, scene_text(scene_name))  # the units of efficiency.csv's columns
     files.write_json(out / "run.json", {**files.provenance(list(argv)), "workers": measured_by})
     return text
+
+
+def _warnings_section(rows: list[dict]) -> str:
+    """Under the table: each rung's estimate warnings (as `run --estimate`
+    gives them; docs/error-estimates.md, "The warnings"), which say where
+    its estimated error is not to be trusted."""
+    lines = [f"- {r['method']} p{r['degree']} h = {r['h']:g}: {w}" for r in rows for w in r.get("estimate_warnings", ())]
+    return ("\n\nWarnings of the estimates (the rung's estimate is not to be trusted as it stands; "
+            "docs/error-estimates.md, \"The warnings\"):\n\n" + "\n".join(lines) + "\n") if lines else ""
 
 
 def _error_sentence(ref_h: float | None, ref_dofs: int | None, exclude: float, length: str = "m",
@@ -272,7 +282,7 @@ def _estimated(scene, solve, res, h: float, degree: int, exclude: float) -> dict
     shares = {f"{pid}:{q}": error / scale for (pid, q), (error, scale) in
               estimated_shares(scene, got, est, exclude).items() if scale > 0}
     return {"estimate": value, "estimate_worst": where, "error_low": value / tol.ESTIMATE_TRUST,
-            "error_high": value * tol.ESTIMATE_TRUST, "estimates": shares}
+            "error_high": value * tol.ESTIMATE_TRUST, "estimates": shares, "estimate_warnings": list(est.warnings)}
 
 
 def _measure(scene_name: str, rung: tuple, ref: dict | None, exclude: float, estimated: bool = True) -> dict:
@@ -293,6 +303,7 @@ def _measure(scene_name: str, rung: tuple, ref: dict | None, exclude: float, est
     if estimated:
         row.update(_estimated(scene, solve, res, h, degree, exclude))
         shares = row.pop("estimates")
+        row["warned"] = len(row["estimate_warnings"])
     if ref is None:
         return {**row, "error": row["estimate"], "worst": row["estimate_worst"]}
     got = {p.id: p for p in sample_profiles(scene, res.fields, res.interface)}
