@@ -101,9 +101,21 @@ def _summary_table(summaries: list[dict]) -> str:
     footnote += _ladder_note(summaries) if estimated else []
     footnote += _methods_note(summaries)
     footnote += _partial_note(summaries)
-    warnings = [f"- {s['method']}: {w}" for s in summaries
-                for w in s["solver"]["warnings"] + s.get("estimate", {}).get("warnings", [])]
+    warnings = _grouped_warnings(summaries)
     return "\n".join(lines + footnote + ([""] + ["Warnings:"] + warnings if warnings else [])) + "\n"
+
+
+def _grouped_warnings(summaries: list[dict]) -> list[str]:
+    """summary.md's warning lines: each text once, after the runs that
+    gave it (``- fe P1, xfem P1: ...``), in the order first given (a scene's own
+    warning, the same for every method, is not repeated per method)."""
+    runs: dict[str, list[str]] = {}
+    for s in summaries:
+        run = f"{s['method']} P{s['degree']}"
+        for w in s["solver"]["warnings"] + s.get("estimate", {}).get("warnings", []):
+            if run not in runs.setdefault(w, []):
+                runs[w].append(run)
+    return [f"- {', '.join(names)}: {w}" for w, names in runs.items()]
 
 
 def _methods_note(summaries: list[dict]) -> list[str]:
