@@ -99,7 +99,8 @@ BAD_INPUTS = [
     ("A", "interface.law.kT", -1e8, "interface.law.kT", "penalty > 0"),
     ("A", "interface.law.kN", float("inf"), "interface.law.kN", "penalty > 0"),
     ("A", "interface.law.type", "glue", "interface.law.type", "unknown interface law"),
-    ("A", "interface.point", [0.0, 2.0], "interface", "misses the domain"),
+    ("A", "interface.point", [0.0, 2.0], "interface", "through (0, 2) with normal (0, 1) misses the domain "
+                                                      "(x from 0 to 1, y from 0 to 1)"),
     ("A", "interface.point", [0.0, 1.0], "interface", "only touches"),
     ("A", "interface.normal", [0.0, 0.0], "interface.normal", "non-zero"),
     ("B", "interface.radius", 1.0, "interface", "not strictly inside"),

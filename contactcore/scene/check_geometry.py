@@ -22,6 +22,18 @@ def check_domain(domain: Domain) -> None:
             raise SceneError("domain.radius", f"must be > 0 (got {domain.radius!r})")
 
 
+def _point(p) -> str:
+    return f"({p[0]:g}, {p[1]:g})"
+
+
+def _extent(domain) -> str:
+    """Where ``domain`` lies, for a refusal: a rectangle's corners, a disc's centre and radius."""
+    if isinstance(domain, Rectangle):
+        return f"x from {domain.corner[0]:g} to {domain.corner[0] + domain.size[0]:g}, " \
+               f"y from {domain.corner[1]:g} to {domain.corner[1] + domain.size[1]:g}"
+    return f"a disc of centre {_point(domain.centre)} and radius {domain.radius:g}"
+
+
 def check_interface(scene: "Scene") -> None:
     """A line that cuts off no less than MIN_BODY_AREA_FRACTION of the
     domain's area on either side, a level set that changes sign in it, or
@@ -29,7 +41,8 @@ def check_interface(scene: "Scene") -> None:
     itf, dom, L = scene.interface, scene.domain, scene.length_scale
     if isinstance(itf, LineInterface):
         if itf.chord(dom) is None:
-            raise SceneError("interface", "the line misses the domain")
+            raise SceneError("interface", f"the line through {_point(itf.point)} with normal {_point(itf.normal)} "
+                                          f"misses the domain ({_extent(dom)})")
         a_minus = itf.minus_area(dom)
         smaller = min(a_minus, dom.area - a_minus) / dom.area
         if smaller <= tol.MIN_BODY_AREA_FRACTION:
