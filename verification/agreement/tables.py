@@ -53,7 +53,7 @@ class AgreementTable:
     def markdown(self) -> str:
         """The table in Markdown, worst sample and RMS in % of the reference's scale."""
         from ..files import column_unit
-        floor = (f" Γ's gaps (an exactly enforced law: zero where Γ is closed and sticking) are measured "
+        floor = (f" Γ's gaps (an exactly enforced law: zero where Γ is closed and sticking, up to Nitsche's residue, which β and h set) are measured "
                  f"against sqrt(g² + ({self.gap_floor:.3g} {self.units.length})²), {EXACT_GAP_FLOOR:g} of the "
                  "displacement scale." if self.gap_floor else "")
         floor += "".join(f" {q}'s floor given ({v:.3g} {column_unit(q, self.units)}) lies below the law's own "
