@@ -51,6 +51,13 @@ from .result import MethodFacts, Result, Timings
 from .scaling import Scales, dimensionless, dimensionless_inputs, softer_stress
 
 
+#: The size rule of a method (or degree) that measured none
+#: (:attr:`Discretisation.coarse_map_min_unknowns`): the middle of the
+#: break-even sizes measured on exact C-coulomb (fe, xfem, efgm: 4 000 to
+#: 18 000 unknowns) and scene A made exact (about 5 000).
+NEW_METHOD_COARSE_MAP_FROM = 10_000
+
+
 @dataclass(frozen=True)
 class Resolution:
     """How fine a method discretises a scene: the cell or node spacing
@@ -129,7 +136,7 @@ class Discretisation:
     about: ClassVar[str] = ""
     #: degree -> the least unknowns of a system whose exact, nonlinear law
     #: takes a coarser solve's first map (:attr:`coarse_map_min_unknowns`)
-    coarse_map_from: ClassVar[dict[int, int]] = {1: 10_000, 2: 10_000}
+    coarse_map_from: ClassVar[dict[int, int]] = {}
     degree: int
 
     @property
@@ -139,11 +146,16 @@ class Discretisation:
         system whose exact, nonlinear law starts its first status search
         from a coarser solve's map (:mod:`contactcore.newton.guess`).
         Below it the coarser build and search cost more than the fine
-        iterations they save; where they break even depends on the
-        method's build and iteration costs, so each method measures its
-        own (:attr:`coarse_map_from`; here 10 000, a new method's until
-        measured; docs/newton.md, "A first map from a coarser solve")."""
-        return self.coarse_map_from[self.degree]
+        iterations they save.  Where they break even depends on the
+        method's build and iteration costs and on the scene (how many
+        iterations the map saves: on scene A made exact at about 5 000
+        unknowns in fe and xfem P1, on exact C-coulomb at 9 000 in xfem
+        and 18 000 in fe P1), so each method gives its own, measured on
+        C-coulomb (:attr:`coarse_map_from`; :data:`NEW_METHOD_COARSE_MAP_FROM`
+        for a degree it does not give; docs/newton.md, "A first map from
+        a coarser solve").  Speed only: either start reaches the same
+        status map, and the answer within Newton's tolerance."""
+        return self.coarse_map_from.get(self.degree, NEW_METHOD_COARSE_MAP_FROM)
 
     @property
     def nodes_per_cell(self) -> int:

@@ -182,3 +182,11 @@ def test_a_given_grid_says_it_takes_no_coarser_map_whatever_its_size(monkeypatch
     monkeypatch.setattr(XFEM, "coarse_map_from", {1: SIZE_FOR_NONE, 2: SIZE_FOR_NONE})
     result = methods.solver("xfem")(_exact(load_scene("C-coulomb")), paper=True, degree=1)
     assert result.solver.first_map == STICKING + discretisation.NO_COARSER_MAP
+
+
+def test_a_degree_without_its_own_size_rule_takes_the_new_methods(monkeypatch):
+    """A method that gives its size rule for degree 1 alone answers degree
+    2 with NEW_METHOD_COARSE_MAP_FROM, not a KeyError (review16 #3)."""
+    monkeypatch.setattr(XFEM, "coarse_map_from", {1: SIZE_RULE})
+    assert XFEM(degree=1).coarse_map_min_unknowns == SIZE_RULE
+    assert XFEM(degree=2).coarse_map_min_unknowns == discretisation.NEW_METHOD_COARSE_MAP_FROM

@@ -148,15 +148,20 @@ def friction_excess_warnings(scene, path, stress_size: float = 0.0, h: float | N
     if not count:
         return blind
     mu = getattr(scene.law, "mu", None)
-    named = f"μ|t_N| = {mu:g}|t_N|" if mu is not None else "the law's slip bound"
+    if mu is not None:  # Coulomb's words
+        named, of, largest_bound, ask, larger = (f"μ|t_N| = {mu:g}|t_N|", "μ|t_N|", "μp", "a shear/normal within that "
+                                                 "band of μ", "a μ that much larger")
+    else:
+        named, of, largest_bound, ask, larger = ("the law's slip bound", "it", "slip bound", "a shear within that band "
+                                                 "of the bound", "a bound that much larger")
     return blind + [
         f"Γ's points stick with |t_T| above {named} at {count} (point, increment) pair(s), by up to "
-        f"{worst:.2g} of {'μ|t_N|' if mu is not None else 'it'} (of its largest along the path where the point's is smaller; increment "
-        f"{where:g}): Newton keeps a point's status within {tol.DECISION_BAND:g} of Γ's largest μp "
+        f"{worst:.2g} of {of} (of its largest along the path where the point's is smaller; increment "
+        f"{where:g}): Newton keeps a point's status within {tol.DECISION_BAND:g} of Γ's largest {largest_bound} "
         "(DECISION_BAND, above the round-off of its margins) and holds a point at rest where Γ is unloaded "
-        "(REST_ROUNDOFF), so the loads there ask a shear/normal within that band of μ or above it, where no "
-        "sticking equilibrium exists, or leave a shear an unloaded Γ does not tell from round-off; a μ that "
-        "much larger sticks (docs/newton.md, \"Decisions that round-off cannot move\")"]
+        f"(REST_ROUNDOFF), so the loads there ask {ask} or above it, where no "
+        "sticking equilibrium exists, or leave a shear an unloaded Γ does not tell from round-off; "
+        f"{larger} sticks (docs/newton.md, \"Decisions that round-off cannot move\")"]
 
 
 def spring_band_warnings(scene, h: float | None) -> list[str]:
