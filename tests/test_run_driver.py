@@ -1,4 +1,5 @@
 """``python -m verification run``: the files, and only what the scene needs."""
+import sys
 import csv
 import json
 
@@ -39,6 +40,7 @@ def test_summary_and_provenance(run_a):
     assert solver["increments"] == 1 and solver["iterations"] == [1] and solver["residual"] < tol.CONVERGED_RUN_RESIDUAL
     run = json.loads((run_a / "run.json").read_text())
     assert run["command"] == "python -m verification run A --method all --h 0.1 --out " + str(run_a)
+    assert run["python"] == sys.executable  # the interpreter the command's "python" was
     assert {"python", "numpy", "dolfinx", "petsc4py", "gmsh"} <= set(run["versions"])
     assert (run_a / "scene.toml").read_text().startswith("# Scene A")
     table = (run_a / "summary.md").read_text()

@@ -328,7 +328,8 @@ def git_commit() -> str | None:
 
 
 def provenance(argv: list[str]) -> dict:
-    """What produced a result folder: the command (under a launcher of K
+    """What produced a result folder: the command (``python`` in it is the
+    interpreter recorded under ``"python"``; under a launcher of K
     ranks, mpirun's or mpiexec's alike, written ``mpirun -n K``, and with
     ``-m mpi4py.futures`` under a pool of them), the code (version and git
     commit), the machine, the MPI ranks each solve spread over
@@ -336,7 +337,7 @@ def provenance(argv: list[str]) -> dict:
     launched = launched_size()
     launcher = ([f"mpirun -n {launched}"] if launched > 1 else []) + ["python"]
     launcher += ["-m mpi4py.futures"] if pool.under_mpi_pool() else []
-    return {"command": " ".join([*launcher, "-m verification", *argv]), "cwd": os.getcwd(),
+    return {"command": " ".join([*launcher, "-m verification", *argv]), "python": sys.executable, "cwd": os.getcwd(),
             "host": platform.node(), "ranks": ranks(), "version": package_version(), "commit": git_commit(),
             "versions": versions()}
 
