@@ -1,7 +1,7 @@
 """``python -m verification run``: the files, and only what the scene needs."""
-import sys
 import csv
 import json
+import sys
 
 import pytest
 
