@@ -432,3 +432,20 @@ def test_the_agreement_messages_give_the_scenes_units(a_in_mpa):
                      worst.describe()), worst.describe()
     with pytest.raises(AssertionError, match=r"at s = \S+ mm \(x = \S+ mm, y = \S+ mm\): \S+ (mm|MPa) against"):
         assert_methods_agree(a_in_mpa, ["xfem"], 0.25, rtol=worst.worst / 2, reference="fe:1")
+
+
+def test_the_difference_panel_shades_what_the_agreement_leaves_out():
+    """The samples left out near singular points (a mask of the
+    reference's) are shaded in the difference panels, each run of them one
+    span reaching half way to its kept neighbours, and the panel says so."""
+    s = np.linspace(0.0, 1.0, 11)
+    runs = {"fe (p2)": _profile("B5", s, tT=1.0 + s), "xfem (p1)": _profile("B5", s, tT=1.1 + s)}
+    left_out = (s < 0.15) | (s > 0.85)  # two samples at each end
+    assert np.allclose(plots._left_out_spans(s, left_out), [(0.0, 0.15), (0.85, 1.0)], rtol=0, atol=tol.COORDINATE_ROUNDOFF)
+    fig = plots.profile_figure("t_T", runs, left_out=left_out)
+    diff = fig.axes[1]
+    assert len(diff.patches) == 2 and "grey: left out" in diff.get_title(loc="right")
+    plots.pyplot().close(fig)
+    fig = plots.profile_figure("t_T", runs)  # nothing left out: no span, no word of it
+    assert not fig.axes[1].patches and "grey" not in fig.axes[1].get_title(loc="right")
+    plots.pyplot().close(fig)

@@ -124,9 +124,9 @@ def legend_outside(ax, **kw) -> None:
 
 
 def plot_profile(path: Path, title: str | tuple[str, ...], runs: dict[str, ProfileData], reference: str | None = None,
-                 floors: dict[str, float] | None = None, units: Units = Units()) -> Path:
+                 floors: dict[str, float] | None = None, units: Units = Units(), left_out=None) -> Path:
     """Write :func:`profile_figure` as a PNG."""
-    return save(profile_figure(title, runs, reference, floors, units), path)
+    return save(profile_figure(title, runs, reference, floors, units, left_out), path)
 
 
 def heading(pid: str, *parts: str) -> str:
@@ -138,14 +138,16 @@ def heading(pid: str, *parts: str) -> str:
 
 
 def profile_figure(title: str | tuple[str, ...], runs: dict[str, ProfileData], reference: str | None = None,
-                   floors: dict[str, float] | None = None, units: Units = Units()):
+                   floors: dict[str, float] | None = None, units: Units = Units(), left_out=None):
     """One figure for a profile, titled :func:`heading` of its id and
     ``title`` (a string, or the parts of one): per quantity, the methods
     overlaid and, under it, each method minus the ``reference`` curve (default
     :func:`reference_label`), relative to the largest |value| of the
     reference (see module doc), floored as ``floors`` say (quantity ->
     floor: an exact law's gaps, :func:`verification.agreement.floors`);
-    the axes labelled in the scene's ``units``."""
+    the axes labelled in the scene's ``units``.  ``left_out`` (a mask of
+    the reference's samples, or None): the samples the agreement table
+    leaves out near singular points, shaded grey in the difference panels."""
     first = next(iter(runs.values()))
     quantities = [n for n in first.names if n not in ("s", "x", "y")]
     ref = reference if reference in runs else reference_label(list(runs))
@@ -165,7 +167,7 @@ def profile_figure(title: str | tuple[str, ...], runs: dict[str, ProfileData], r
         if k == 0:
             legend_outside(ax)
         if rows == 2:
-            _difference_panel(axes[rows * k + 1, 0], q, runs, ref, (floors or {}).get(q, 0.0), units)
+            _difference_panel(axes[rows * k + 1, 0], q, runs, ref, (floors or {}).get(q, 0.0), units, left_out)
     axes[-1, 0].set_xlabel(xlabel(first.parameter, units))
     parts = (title,) if isinstance(title, str) else title
     axes[0, 0].set_title(heading(first.id, *parts), fontsize=10, wrap=True)
@@ -176,9 +178,21 @@ def profile_figure(title: str | tuple[str, ...], runs: dict[str, ProfileData], r
 #: The relative Δ panels are drawn in percent.
 PERCENT = 100.0
 
+#: How dark the spans of samples the agreement leaves out are drawn.
+LEFT_OUT_SHADE = 0.15
+
+
+def _left_out_spans(s: np.ndarray, left_out: np.ndarray) -> list[tuple[float, float]]:
+    """The s-intervals of consecutive left-out samples, each reaching half
+    way to its kept neighbours."""
+    s, out = np.asarray(s, float), np.asarray(left_out, bool)
+    mid = np.concatenate([[s[0]], (s[1:] + s[:-1]) / 2, [s[-1]]])
+    edges = np.flatnonzero(np.diff(np.concatenate([[0], out.astype(int), [0]])))
+    return [(float(mid[a]), float(mid[b])) for a, b in zip(edges[::2], edges[1::2])]
+
 
 def _difference_panel(ax, q: str, runs: dict[str, ProfileData], ref: str, floor: float = 0.0,
-                      units: Units = Units()) -> None:
+                      units: Units = Units(), left_out=None) -> None:
     """Each curve but the reference minus the reference, at its own samples,
     relative to the reference's largest |value| on the profile (a pointwise
     ratio would blow up where the reference crosses zero), or to
@@ -194,8 +208,12 @@ def _difference_panel(ax, q: str, runs: dict[str, ProfileData], ref: str, floor:
     ax.grid(alpha=0.3)
     ax.set_ylabel(f"Δ{SYMBOLS.get(q, q)} / max|ref| (%)")
     keep_span(ax, PERCENT)
+    spans = _left_out_spans(s_ref, left_out) if left_out is not None and np.any(left_out) else []
+    for a, b in spans:
+        ax.axvspan(a, b, color="grey", alpha=LEFT_OUT_SHADE, lw=0)
     floored = f", floored at {floor:.3g} {column_unit(q, units)}" if floor else ""
-    ax.set_title(f"each minus {ref}, relative to its largest |{q}|{floored}", fontsize=8, loc="right")
+    shaded = "; grey: left out of summary.md's table (near singular points)" if spans else ""
+    ax.set_title(f"each minus {ref}, relative to its largest |{q}|{floored}{shaded}", fontsize=8, loc="right")
 
 
 def _no_offsets(fig) -> None:

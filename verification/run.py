@@ -597,8 +597,10 @@ def _write_summary(out: Path, scene: Scene, summaries: list[dict], profiles: dic
     against exact (label -> record), if asked."""
     titles = {p.id: p.title for p in scene.profiles}
     for pid, runs in profiles.items() if draw else ():
+        shown = ref if ref in runs else plots.reference_label(list(runs))
+        left_out = ~agreement.kept_samples(scene, runs[shown], default_exclusion(scene))
         plots.plot_profile(out / "plots" / f"{pid}.png", titles[pid], runs, ref, agreement.floors(scene, floors),
-                           scene.units)
+                           scene.units, left_out)
     text = (f"# Scene {plots.heading(scene.name, scene.title)}\n\n" + conventions(scene.units, files.ranks())
             + law_line(scene)
             + _summary_table(summaries) + agreement_section(scene, profiles, ref, floors))
