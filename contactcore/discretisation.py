@@ -385,14 +385,13 @@ def _coarsens(scene, resolution: Resolution) -> bool:
             and resolution.h is not None and resolution.counts is None)
 
 
-def _coarse_guess(scene, discretisation: Discretisation, resolution: Resolution, ranks: Collective, dofs: int):
+def _coarse_guess(scene, discretisation: Discretisation, resolution: Resolution, ranks: Collective):
     """An exact, nonlinear law's first status map from the same scene and
     method at twice the spacing (:mod:`contactcore.newton.guess`), or None:
     not for a penalty or linear law, a given grid or node set (no ``h`` to
-    coarsen), a system of fewer than the method's
-    :attr:`~Discretisation.coarse_map_min_unknowns` unknowns (``dofs``, the
-    whole system's), or a coarser spacing the method refuses."""
-    if not _coarsens(scene, resolution) or dofs < discretisation.coarse_map_min_unknowns:
+    coarsen), or a coarser spacing the method refuses.  The size rule
+    (:attr:`Discretisation.coarse_map_min_unknowns`) is :func:`solve`'s."""
+    if not _coarsens(scene, resolution):
         return None
     coarse, kept = Resolution(newton_guess.COARSER * resolution.h), []
 
@@ -432,12 +431,12 @@ def solve(scene, discretisation: Discretisation, h: float | None = None, *, pape
              else discretisation.build(scene, resolution, timings))
     try:
         exact.check(scene.law, built.system.interface, discretisation.name)
+        least = discretisation.coarse_map_min_unknowns  # the size rule: a whole system's count, on every rank
+        small = _coarsens(scene, resolution) and built.dofs < least
         with timings.measure("solve"):
-            guess = _coarse_guess(scene, discretisation, resolution, built.system.collective, built.dofs)
+            guess = None if small else _coarse_guess(scene, discretisation, resolution, built.system.collective)
             x, path, report = solve_increments(scene, built.system, progress, guess)
         if guess is None and exact.is_exact(scene.law) and not scene.law.is_linear:
-            least = discretisation.coarse_map_min_unknowns
-            small = _coarsens(scene, resolution) and built.dofs < least
             report.first_map = STICKING + (SMALL_FOR_COARSER_MAP.format(least) if small else NO_COARSER_MAP)
     finally:
         if reuse is None or not reuse.owns(built):

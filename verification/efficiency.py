@@ -282,7 +282,8 @@ def _estimated(scene, solve, res, h: float, degree: int, exclude: float) -> dict
     shares = {f"{pid}:{q}": error / scale for (pid, q), (error, scale) in
               estimated_shares(scene, got, est, exclude).items() if scale > 0}
     return {"estimate": value, "estimate_worst": where, "error_low": value / tol.ESTIMATE_TRUST,
-            "error_high": value * tol.ESTIMATE_TRUST, "estimates": shares, "estimate_warnings": list(est.warnings)}
+            "error_high": value * tol.ESTIMATE_TRUST, "estimates": shares, "estimate_warnings": list(est.warnings),
+            "warned": len(est.warnings)}
 
 
 def _measure(scene_name: str, rung: tuple, ref: dict | None, exclude: float, estimated: bool = True) -> dict:
@@ -303,7 +304,6 @@ def _measure(scene_name: str, rung: tuple, ref: dict | None, exclude: float, est
     if estimated:
         row.update(_estimated(scene, solve, res, h, degree, exclude))
         shares = row.pop("estimates")
-        row["warned"] = len(row["estimate_warnings"])
     if ref is None:
         return {**row, "error": row["estimate"], "worst": row["estimate_worst"]}
     got = {p.id: p for p in sample_profiles(scene, res.fields, res.interface)}

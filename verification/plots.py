@@ -108,6 +108,13 @@ def reference_label(labels: list[str]) -> str:
     return max(fe, key=lambda lab: variant(lab)[1]) if fe else labels[0]
 
 
+def reference_of(runs, reference: str | None = None) -> str:
+    """The label of ``runs`` (labels -> anything) the differences are taken
+    against: ``reference`` where it is one of them, else
+    :func:`reference_label`'s choice."""
+    return reference if reference in runs else reference_label(list(runs))
+
+
 def keep_span(ax, scale: float) -> None:
     """Widen the y range of ``ax`` to at least ``PLOT_MIN_Y_SPAN · scale``
     about its middle (no zoom onto round-off)."""
@@ -150,7 +157,7 @@ def profile_figure(title: str | tuple[str, ...], runs: dict[str, ProfileData], r
     leaves out near singular points, shaded grey in the difference panels."""
     first = next(iter(runs.values()))
     quantities = [n for n in first.names if n not in ("s", "x", "y")]
-    ref = reference if reference in runs else reference_label(list(runs))
+    ref = reference_of(runs, reference)
     rows = 2 if len(runs) > 1 else 1
     fig, axes = pyplot().subplots(rows * len(quantities), 1, figsize=(8.5, (3.0 + 1.6 * (rows - 1)) * len(quantities)),
                              squeeze=False, sharex=True, layout="constrained",

@@ -203,7 +203,7 @@ def agreement_section(scene: Scene, profiles: dict, reference: str | None = None
             runs.setdefault(label, {})[pid] = prof
     if len(runs) < 2:
         return ""
-    reference = reference if reference in runs else plots.reference_label(list(runs))
+    reference = plots.reference_of(runs, reference)
     return "\n## Agreement with the reference\n\n" + agreement.table(scene, runs, reference, floors=floors).markdown()
 
 
@@ -595,16 +595,15 @@ def _write_summary(out: Path, scene: Scene, summaries: list[dict], profiles: dic
     floored as the agreement is: ``floors``) and of the response, and
     ``summary.md``; returns its text.  ``gaps``: each method's penalty
     against exact (label -> record), if asked."""
-    titles = {p.id: p.title for p in scene.profiles}
+    titles, exclude = {p.id: p.title for p in scene.profiles}, default_exclusion(scene)  # the agreement table's
     for pid, runs in profiles.items() if draw else ():
-        shown = ref if ref in runs else plots.reference_label(list(runs))
-        left_out = ~agreement.kept_samples(scene, runs[shown], default_exclusion(scene))
+        left_out = ~agreement.kept_samples(scene, runs[plots.reference_of(runs, ref)], exclude)
         plots.plot_profile(out / "plots" / f"{pid}.png", titles[pid], runs, ref, agreement.floors(scene, floors),
                            scene.units, left_out)
+    compared = agreement_section(scene, profiles, ref, floors)
     text = (f"# Scene {plots.heading(scene.name, scene.title)}\n\n" + conventions(scene.units, files.ranks())
-            + law_line(scene)
-            + _summary_table(summaries) + agreement_section(scene, profiles, ref, floors))
-    if "## Agreement" in text and not estimated:
+            + law_line(scene) + _summary_table(summaries) + compared)
+    if compared and not estimated:
         text += UNESTIMATED_AGREEMENT
     if len(estimated) > 1:
         text += _estimates_section(scene, estimated, floors)
