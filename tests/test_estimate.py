@@ -278,13 +278,16 @@ def test_the_effectivity_table_of_scene_a():
             assert r["warned"] or tol.EFFECTIVITY[0] <= r["effectivity"] <= tol.EFFECTIVITY[1], r
 
 
-def test_run_estimate_writes_the_errors(tmp_path):
+def test_run_estimate_writes_the_errors(tmp_path, caplog):
     """``run --estimate``: every profile CSV has ``q_err`` beside each
     ``q``, summary.json an ``estimate`` per profile and quantity and the
     energy, summary.md the estimated error and the agreement table; the
-    answer is the run at h/2."""
+    answer is the run at h/2; the estimate's warnings are logged as the
+    solver's are (newuser33 #4: none reached the terminal)."""
     out = tmp_path / "run"
-    text = run("A", ["xfem", "efgm"], out, h=0.2, estimate=2, draw=False)
+    with caplog.at_level("WARNING", logger="verification"):
+        text = run("A", ["xfem", "efgm"], out, h=0.2, estimate=2, draw=False)
+    logged = [r.getMessage() for r in caplog.records]
     assert "estimated error" in text and "Agreement within the estimated errors" in text
     assert "The reference is solved at the same h" not in text  # the estimates say whose error it is
     assert "Estimated from runs at h = 0.2, 0.1: every figure here is the run at 0.1." in text
@@ -293,6 +296,7 @@ def test_run_estimate_writes_the_errors(tmp_path):
         assert summary["discretisation"]["h"] == pytest.approx(0.1)
         estimate = summary["estimate"]
         assert estimate["h"] == pytest.approx([0.2, 0.1]) and estimate["energy"]["eta"] > 0
+        assert estimate["warnings"] and all(f"{name}: {w}" in logged for w in estimate["warnings"])
         from contactcore.scene import RESERVED_PROFILE_IDS  # no profile id may take a key beside the profiles
         assert set(estimate) - {p.id for p in load_scene("A").profiles} == set(RESERVED_PROFILE_IDS)
         columns = files.read_profile_csv(out / name / "profiles" / "A1.csv")

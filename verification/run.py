@@ -506,7 +506,7 @@ def _solve(scene: Scene, name: str, h, degree: int, paper: bool, estimate, optio
     solve, on_comm = pool.solver(name) if pool.under_mpi_pool() else (methods.solver(name), {})
     result, est = _solve_estimated(solve, scene, h, estimate, degree=degree, paper=paper,
                                    progress=_progress(shown), **options, **on_comm)
-    for w in result.solver.warnings:
+    for w in list(result.solver.warnings) + (list(est.warnings) if est is not None else []):
         log.warning("%s: %s", shown, w)
     log.info("%s: %d DOFs, total %.2f s, residual %.1e", shown, result.dofs, result.timings.total,
              result.solver.residual)
