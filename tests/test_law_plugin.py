@@ -421,7 +421,7 @@ def test_the_spring_band_line_asks_the_laws_bound():
     scene's stress scale P (a threshold's bound does not scale with p), on
     the inputs alone: a threshold law of τ_c = μP takes Coulomb μ's
     decision on both sides of its edge; one at LAWCAPS_LAYERED_TAU_C (below
-    μP) is warned from α half Coulomb's edge on, where Coulomb is silent.
+    μP) is warned from α below half Coulomb's edge, where Coulomb is silent.
     The old code read ``mu`` and never warned a threshold law."""
     from types import SimpleNamespace
     from contactcore.health.caveats import spring_band_warnings
