@@ -399,3 +399,118 @@ def test_a_point_held_at_stick_beyond_the_bound_is_warned_of():
     said = friction_excess_warnings(scene, path(1 + tol.LAWCAPS_EXCESS_SHARE), 0.0, None)
     assert len(said) == 1 and "above the law's slip bound" in said[0] and "μ" not in said[0], said
     assert not friction_excess_warnings(scene, path(1 - tol.LAWCAPS_EXCESS_SHARE), 0.0, None)
+
+
+# ----- the warnings that ask a frictional law's bound (lawwarn) --------------
+
+def _layered_springs(alpha: float, law: str = "coulomb", tau_c: float = 0.0):
+    """layered-slip with k_T at ``α E₋/H`` (its k_N's α is 1): Coulomb
+    μ = 0.3 as the scene has it, or the threshold law at ``tau_c``."""
+    from verification.sweeps import H
+    base = load_scene("layered-slip")
+    kT = alpha * base.softer_modulus / H
+    if law == "coulomb":
+        return base.with_changes(law=dataclasses.replace(base.law, kT=kT))
+    return base.with_changes(law=ThresholdLaw(base.law.kN, kT, tau_c))
+
+
+def test_the_spring_band_line_asks_the_laws_bound():
+    """contactcore.health.spring_band_warnings compares the springs'
+    round-off (SPRING_TRACTION_ROUNDOFF·α of p) with Newton's stick/slip
+    band, DECISION_BAND of Γ's largest slip bound, asked of the law at the
+    scene's stress scale P (a threshold's bound does not scale with p), on
+    the inputs alone: a threshold law of τ_c = μP takes Coulomb μ's
+    decision on both sides of its edge; one at LAWCAPS_LAYERED_TAU_C (below
+    μP) is warned from α below half Coulomb's edge, where Coulomb is silent.
+    The old code read ``mu`` and never warned a threshold law."""
+    from types import SimpleNamespace
+    from contactcore.health.caveats import spring_band_warnings
+    from contactcore.scaling import softer_stress
+    from verification.sweeps import H
+    P = softer_stress(_layered_springs(1.0), H)
+    mu = load_scene("layered-slip").law.mu
+    for alpha in tol.LAWWARN_SPRING_ALPHAS:
+        coulomb = bool(spring_band_warnings(_layered_springs(alpha), H))
+        assert bool(spring_band_warnings(_layered_springs(alpha, "threshold", mu * P), H)) == coulomb, alpha
+    assert {bool(spring_band_warnings(_layered_springs(a), H)) for a in tol.LAWWARN_SPRING_ALPHAS} == {True, False}
+    between = tol.LAWWARN_BETWEEN_ALPHA
+    assert not spring_band_warnings(_layered_springs(between), H)
+    scene = _layered_springs(between, "threshold", tol.LAWCAPS_LAYERED_TAU_C)
+    said = health.friction_excess_warnings(scene, SimpleNamespace(steps=[]), 0.0, H)  # an empty path: the inputs'
+    assert len(said) == 1 and "cannot be told from round-off" in said[0], said
+    assert "'threshold' law's slip bound" in said[0] and "μ" not in said[0].replace("α", ""), said[0]
+    assert not spring_band_warnings(scene, None)  # no h, no spring scale: nothing to say
+
+
+def test_the_threshold_laws_spring_band_edge_is_decided_alike_in_either_units():
+    """The threshold law's band is τ_c over the scene's stress scale, both
+    made dimensionless by the solve: at springs exactly on its edge the
+    user's and the solve's numbers take the same decision for every h
+    (LIMIT_ROUNDOFF, review6 #6's rule for Coulomb)."""
+    from contactcore.health.caveats import spring_band_warnings
+    from contactcore.scaling import dimensionless_inputs, softer_stress
+    from xdolfinx.options import FE
+    base = load_scene("layered-slip")
+    tau_c = tol.LAWCAPS_LAYERED_TAU_C
+    differ = []
+    for i in range(200):
+        h = 0.01 + 0.19 * i / 199
+        edge = core_tol.DECISION_BAND * tau_c / softer_stress(base, h) / core_tol.SPRING_TRACTION_ROUNDOFF
+        k = edge * base.softer_modulus / h
+        scene = base.with_changes(law=ThresholdLaw(k, k, tau_c))
+        _, scaled, _, scaled_h = dimensionless_inputs(scene, FE(), h)
+        if bool(spring_band_warnings(scene, h)) != bool(spring_band_warnings(scaled, scaled_h)):
+            differ.append(h)
+    assert not differ, differ
+
+
+@dataclass(frozen=True)
+class CohesiveLaw(ThresholdLaw):
+    """Test-only: a bound ``tau_c + slope·p`` (Coulomb with cohesion), whose
+    growth in the pressure has no parameter named ``mu``."""
+
+    slope: float = 0.0
+    name: ClassVar[str] = "cohesive"
+    parameters: ClassVar[tuple[str, ...]] = ("kN", "kT", "tau_c", "slope")
+    dimensions: ClassVar[dict[str, str]] = {"kN": STIFFNESS, "kT": STIFFNESS, "tau_c": STRESS,
+                                            "slope": DIMENSIONLESS}
+
+    def slip_bound(self, tN: np.ndarray) -> np.ndarray:
+        return self.tau_c + self.slope * np.maximum(-np.asarray(tN, dtype=float), 0.0)
+
+
+def test_the_dundurs_warning_asks_how_the_bound_grows_with_the_pressure():
+    """contactcore.health.dundurs_warnings takes the slope of the law's
+    slip bound in the pressure (from slip_bound on the scene's inputs) for
+    Coulomb's μ: the layered cycle (β = 0.499) with a threshold law, whose
+    slip does not depend on the normal traction, is never warned, at any
+    τ_c, penalty or exact; a cohesive law ``τ_c + f p`` takes Coulomb
+    μ = f's decision (warned at f = 10, not at 0.3).  The old code read
+    ``mu`` and warned the cohesive law at no slope."""
+    from contactcore.health import caveats
+    scene = load_scene(pathlib.Path(__file__).parent / "scenes" / "cycle_mu1e-06.toml")
+    beta = health.dundurs_beta(scene)
+    assert abs(beta) * max(tol.LAWWARN_SLOPES) > core_tol.MU_DUNDURS_WARN > abs(beta) * min(tol.LAWWARN_SLOPES)
+    for f in tol.LAWWARN_SLOPES:
+        coulomb = health.dundurs_warnings(scene.with_changes(law=dataclasses.replace(scene.law, mu=f)))
+        said = health.dundurs_warnings(scene.with_changes(law=CohesiveLaw(1e12, 1e12, tol.LAWCAPS_LAYERED_TAU_C, f)))
+        assert bool(said) == bool(coulomb), (f, said, coulomb)
+        if said:
+            assert len(said) == 1 and "'cohesive' law's slip bound" in said[0] and "Dundurs" in said[0], said
+            assert f"slope·|β| = {f * abs(beta):.3g}" in said[0], said[0]
+    for tau_c in (tol.LAWCAPS_LAYERED_TAU_C, tol.LAWCAPS_HUGE_TAU_C):
+        for law in (ThresholdLaw(1e12, 1e12, tau_c), make_law({"type": "threshold", "tau_c": tau_c,
+                                                                "enforcement": "exact"})):
+            assert caveats.bound_slope(scene.with_changes(law=law)) == 0.0
+            assert not health.material_warnings(scene.with_changes(law=law)), (tau_c, law)
+
+
+@pytest.mark.parametrize("method", ["fe", "xfem"])
+def test_a_run_with_stiff_threshold_springs_says_its_band_is_round_off(method):
+    """The layered block with the threshold law at LAWWARN_RUN_ALPHA (k_T):
+    the run's warnings carry the spring-band line in the law's words."""
+    from verification.sweeps import H
+    scene = layered_threshold(False).scene
+    scene = scene.with_changes(law=dataclasses.replace(scene.law, kT=tol.LAWWARN_RUN_ALPHA * scene.softer_modulus / H))
+    said = [w for w in methods.solver(method)(scene, H).solver.warnings if "cannot be told from round-off" in w]
+    assert len(said) == 1 and "'threshold' law's slip bound" in said[0], said

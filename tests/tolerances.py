@@ -1537,3 +1537,27 @@ LAWCAPS_SLIDE_SHARE = 0.99
 #: bound: far beyond the warning's round-off allowance (STICK_ROUNDOFF,
 #: TRACTION_ROUNDOFF of the pressure: 1e-9 and below), so it must (must not) be named.
 LAWCAPS_EXCESS_SHARE = 1e-2
+
+# --- lawwarn (2026-11-29): the spring-band and Dundurs warnings ask the law's slip bound (tests/test_law_plugin.py) ---
+#: The springs' α = k h/E₋ (k_T; k_N's is 1 on layered-slip) at which the
+#: threshold law whose bound equals Coulomb's μP at the scene's stress scale P
+#: must take Coulomb's decision: the two sides of Coulomb μ = 0.3's edge
+#: (DECISION_BAND·μ/SPRING_TRACTION_ROUNDOFF = 3e8), each at least a factor
+#: 3 from it, far beyond the bound's last-bit difference (τ_c = μP rounded).
+LAWWARN_SPRING_ALPHAS = (1e6, 1e8, 1e9, 1e10)
+#: Between the threshold law's edge at LAWCAPS_LAYERED_TAU_C on layered-slip
+#: (τ_c = 2e5 Pa against its stress scale 1.5e6 Pa: 1.3e8) and Coulomb
+#: μ = 0.3's (3e8): a factor 1.5 from each, so warned for the one and not the
+#: other (the old code asked mu and warned neither).
+LAWWARN_BETWEEN_ALPHA = 2e8
+#: A cohesive law's slope in the pressure (τ_c + f p, a test-only law with
+#: no parameter named mu) on the layered cycle (Dundurs' β = 0.499, so
+#: MU_DUNDURS_WARN = 0.75 is met at 1.503): well below and well above that
+#: edge, the two μ test_mu_extremes.py takes for Coulomb.
+LAWWARN_SLOPES = (0.3, 10.0)
+#: Springs of the threshold law on the layered block (LAWCAPS_LAYERED_TAU_C,
+#: pressure 1e6 Pa: its band's edge at α = 2e8) stiff enough for the run to
+#: say its band cannot be told from round-off: 5 times the edge (measured
+#: 2026-11-29, fe and xfem P1 at h = 0.1, the top pushed 3e-6 past τ_c: stuck
+#: up to 5.6e-6 of τ_c above it, 59 or 60 pairs by the BLAS kernel).
+LAWWARN_RUN_ALPHA = 1e9

@@ -5,19 +5,21 @@ off, or one of several.
   every method here (displacement-based) may lock (:func:`_locking_warnings`);
   fe P1's exactly enforced Γ traction from NU_LOCKING_WARN_FE_P1_EXACT on
   (:func:`traction_locking_warnings`).
-- Coulomb friction across two materials: Dundurs' second parameter
+- Friction across two materials: Dundurs' second parameter
   (J. Appl. Mech. 1969)
 
       β = [G₋(κ₊ − 1) − G₊(κ₋ − 1)] / [G₋(κ₊ + 1) + G₊(κ₋ + 1)],
 
   ``G = E / 2(1 + ν)``, ``κ = 3 − 4ν`` (plane strain) or ``(3 − ν)/(1 + ν)``
   (plane stress), couples slip and the normal gap; beyond
-  ``μ|β| > MU_DUNDURS_WARN`` the answer may be one of several
-  (:func:`dundurs_beta`, :func:`dundurs_warnings`).
-- Points a converged path holds at stick with ``|t_T|`` beyond ``μ|t_N|``
-  by more than the traction's round-off (:func:`friction_excess_warnings`),
-  and springs so stiff that this round-off exceeds the stick/slip band's
-  whole excess (:func:`spring_band_warnings`).
+  ``μ|β| > MU_DUNDURS_WARN`` (μ the slope of the law's slip bound in the
+  pressure, :func:`bound_slope`: Coulomb's μ, a threshold's 0) the answer
+  may be one of several (:func:`dundurs_beta`, :func:`dundurs_warnings`).
+- Points a converged path holds at stick with ``|t_T|`` beyond the law's
+  slip bound (Coulomb's ``μ|t_N|``) by more than the traction's round-off
+  (:func:`friction_excess_warnings`), and springs so stiff that this
+  round-off exceeds the stick/slip band's whole excess
+  (:func:`spring_band_warnings`).
 - A frictional hinge: Γ pressed yet closed over a few points that hold by
   friction more shear than the pressure, a body tipped onto a corner of Γ
   (:func:`hinge_warnings`): one answer of several at μ > 1, whatever β.
@@ -37,12 +39,13 @@ import numpy as np
 from .. import tolerances as tol
 from ..geometry import CircleInterface
 from ..laws import OPEN, STICK
+from ..scaling import softer_stress
 
 
 def material_warnings(scene) -> list[str]:
     """Volumetric locking: plane strain with ν at or above NU_LOCKING_WARN, in
-    one warning that names every such body; and Coulomb friction across
-    two materials beyond the uniqueness bound (:func:`dundurs_warnings`)."""
+    one warning that names every such body; and friction across two
+    materials beyond the uniqueness bound (:func:`dundurs_warnings`)."""
     return _locking_warnings(scene) + dundurs_warnings(scene)
 
 
@@ -60,23 +63,70 @@ def dundurs_beta(scene) -> float:
     return (G[0] * (kappa[1] - 1) - G[1] * (kappa[0] - 1)) / (G[0] * (kappa[1] + 1) + G[1] * (kappa[0] + 1))
 
 
+def pressure_scale(scene, h: float | None = None) -> float:
+    """The pressure at which the scene's warnings ask the law's slip bound
+    ``b(p)`` (``slip_bound(−p)``), from the scene's inputs alone (never the
+    answer's, whose round-off would then decide): 1 for a homogeneous law,
+    whose bound is ``b(1)·p`` so that every pressure gives the same
+    ``b(p)/p`` and 1 gives Coulomb's μ to the bit; for another (a
+    threshold, whose bound does not scale with p) the scene's stress scale
+    :func:`contactcore.scaling.softer_stress` (its largest load, or the
+    stress a prescribed displacement causes in the softer body), the
+    pressure its loads put on Γ.  0 where nothing loads the scene."""
+    return 1.0 if scene.law.homogeneous else float(softer_stress(scene, h))
+
+
+def _bound(law, p: float) -> float:
+    """The law's slip bound at the pressure ``p`` (``slip_bound(−p)``)."""
+    return float(np.asarray(law.slip_bound(np.array([-p])), float).reshape(-1)[0])
+
+
+def bound_slope(scene) -> float:
+    """How the law's slip bound grows with the pressure, ``d b/d(−t_N)``,
+    from its ``slip_bound`` on the scene's inputs: its mean slope
+    ``(b(P) − b(0))/P`` over the pressures ``[0, P]``, ``P`` the scene's
+    :func:`pressure_scale` (Coulomb: μ exactly; a threshold: 0; a bound
+    concave in p, as the law contract asks, is steeper below P and flatter
+    above it).  0 for a law that is not frictional or a scene with no load."""
+    if not scene.law.frictional:
+        return 0.0
+    P = pressure_scale(scene)
+    if not P > 0:
+        return 0.0
+    return (_bound(scene.law, P) - _bound(scene.law, 0.0)) / P
+
+
 def dundurs_warnings(scene) -> list[str]:
-    """A Coulomb law whose μ·|β| (:func:`dundurs_beta`) exceeds
-    MU_DUNDURS_WARN: the answer may be one of several, which one the
-    method's (tolerances.py's note)."""
-    mu = getattr(scene.law, "mu", 0.0)
-    if not scene.law.frictional or not mu:
+    """A frictional law whose slip bound's slope in the pressure
+    (:func:`bound_slope`, Coulomb's μ) times Dundurs' |β|
+    (:func:`dundurs_beta`) exceeds MU_DUNDURS_WARN: the answer may be one
+    of several, which one the method's (tolerances.py's note).  A bound
+    that does not grow with the pressure (a threshold) couples no slip to
+    the normal gap: no warning, whatever β.  Decided on the scene's inputs
+    alone."""
+    slope = bound_slope(scene)
+    if not slope:
         return []
     beta = dundurs_beta(scene)
-    if mu * abs(beta) <= tol.MU_DUNDURS_WARN:
+    if slope * abs(beta) <= tol.MU_DUNDURS_WARN:
         return []
-    return [f"mu = {mu:g} across two materials of Dundurs' β = {beta:.3g}: μ|β| = {mu * abs(beta):.3g} is above "
-            f"{tol.MU_DUNDURS_WARN:g}, where slip and the normal gap are coupled strongly enough for Coulomb "
-            "friction to have several answers (a layered block of contrast 1e3 at μ|β| = 1 to 5: fe, xfem and "
-            "efgm held Γ closed or opened up to 20 of 24 points under pressure, tractions up to 164 p apart); "
-            "the answer given is one of them, the method's: compare methods, or lower μ "
-            f"(below {tol.MU_DUNDURS_WARN / abs(beta):.3g} here) or the materials' contrast "
-            "(docs/contact-enforcement.md, \"Known limits\")"]
+    mu = getattr(scene.law, "mu", None)
+    if mu is not None and slope == mu:  # Coulomb's words (its slope is μ to the bit)
+        return [f"mu = {mu:g} across two materials of Dundurs' β = {beta:.3g}: μ|β| = {mu * abs(beta):.3g} is above "
+                f"{tol.MU_DUNDURS_WARN:g}, where slip and the normal gap are coupled strongly enough for Coulomb "
+                "friction to have several answers (a layered block of contrast 1e3 at μ|β| = 1 to 5: fe, xfem and "
+                "efgm held Γ closed or opened up to 20 of 24 points under pressure, tractions up to 164 p apart); "
+                "the answer given is one of them, the method's: compare methods, or lower μ "
+                f"(below {tol.MU_DUNDURS_WARN / abs(beta):.3g} here) or the materials' contrast "
+                "(docs/contact-enforcement.md, \"Known limits\")"]
+    return [f"the '{scene.law.name}' law's slip bound grows with the pressure by {slope:.3g} (its mean slope "
+            f"d(slip bound)/d(−t_N) up to the scene's stress scale) across two materials of Dundurs' β = {beta:.3g}: "
+            f"slope·|β| = {slope * abs(beta):.3g} is above {tol.MU_DUNDURS_WARN:g}, where slip and the normal gap "
+            "are coupled strongly enough for friction to have several answers (as Coulomb's μ|β|: a layered block "
+            "of contrast 1e3 at μ|β| = 1 to 5: fe, xfem and efgm held Γ closed or opened up to 20 of 24 points "
+            "under pressure, tractions up to 164 p apart); the answer given is one of them, the method's: compare "
+            f"methods, or lower the bound's slope (below {tol.MU_DUNDURS_WARN / abs(beta):.3g} here) or the "
+            "materials' contrast (docs/contact-enforcement.md, \"Known limits\")"]
 
 
 def _carried(path) -> float:
@@ -165,32 +215,56 @@ def friction_excess_warnings(scene, path, stress_size: float = 0.0, h: float | N
 
 
 def spring_band_warnings(scene, h: float | None) -> list[str]:
-    """Coulomb springs so stiff that their tractions' round-off
+    """Penalty springs so stiff that their tractions' round-off
     (``SPRING_TRACTION_ROUNDOFF·α`` of Γ's largest pressure p,
-    :func:`spring_alpha`) exceeds Newton's stick/slip band
-    (``DECISION_BAND·μ`` of p): :func:`friction_excess_warnings` then
-    allows more than the band's whole excess, and a point held at stick
-    above μ|t_N| by the band cannot be told from round-off.  One line
-    saying so, decided on the scene's inputs and ``h`` alone (never on
-    the answer's round-off).  Measured (review5's fault 4, layered closed
-    form pushed 3e-6 past its slip limit, fe P1): the band's excess,
-    3.3e-6 of μp, is warned at α = 1e8 and silent at 1e9 and 1e10, where
-    the closed form exactly at the limit sticks up to 3.8e-6 and 5.6e-6 of
-    μp above it from round-off alone.  α within LIMIT_ROUNDOFF of the
-    limit counts as at it (α in the user's units and in the solve's
-    dimensionless ones differ in the last bits: review6 #6, 20 of 200 h
-    warned in one and not the other at α = 3e8 exactly)."""
-    mu = getattr(scene.law, "mu", None)
+    :func:`spring_alpha`) exceeds Newton's stick/slip band: DECISION_BAND
+    of its traction scale, the largest slip bound of a closed point or
+    TRACTION_ROUNDOFF·p if larger (:meth:`contactcore.laws.Decision.reduced`),
+    ``max(b(p), TRACTION_ROUNDOFF·p)`` for a bound ``b`` non-decreasing in
+    p (Coulomb's ``DECISION_BAND·μ`` of p).  :func:`friction_excess_warnings`
+    then allows more than the band's whole excess, and a point held at
+    stick above its slip bound by the band cannot be told from round-off.
+    One line saying so, decided on the scene's inputs and ``h`` alone (never
+    on the answer's round-off): both sides are shares of p, taken at the
+    scene's :func:`pressure_scale` (a homogeneous law's ``b(p)/p`` is the
+    same at every p, Coulomb's μ; a threshold's ``τ_c/P`` at the scene's
+    stress scale P, so its springs are warned of where that load's
+    round-off exceeds ``DECISION_BAND·τ_c``).  None for a zero bound
+    (frictionless: nothing sticks by a band).  Measured (review5's fault
+    4, layered closed form pushed 3e-6 past its slip limit, fe P1): the
+    band's excess, 3.3e-6 of μp, is warned at α = 1e8 and silent at 1e9
+    and 1e10, where the closed form exactly at the limit sticks up to
+    3.8e-6 and 5.6e-6 of μp above it from round-off alone.  α within
+    LIMIT_ROUNDOFF of the limit counts as at it (α in the user's units
+    and in the solve's dimensionless ones differ in the last bits: review6
+    #6, 20 of 200 h warned in one and not the other at α = 3e8 exactly)."""
     alpha = spring_alpha(scene, h)
-    limit = tol.DECISION_BAND * mu / tol.SPRING_TRACTION_ROUNDOFF if mu else 0.0
-    if not scene.law.frictional or not mu or alpha <= limit * (1 + tol.LIMIT_ROUNDOFF):
+    if not scene.law.frictional or not alpha:
         return []
-    return [f"penalty springs at α = k h/E₋ = {alpha:.2g} with μ = {mu:g}: their tractions' round-off "
-            f"(SPRING_TRACTION_ROUNDOFF·α = {tol.SPRING_TRACTION_ROUNDOFF * alpha:.2g} of Γ's largest pressure) "
-            f"exceeds Newton's stick/slip band (DECISION_BAND·μ = {tol.DECISION_BAND * mu:.2g} of it), so a point "
-            "held at stick above μ|t_N| within that band cannot be told from round-off and is not reported; "
-            f"springs with α at most {limit:.2g}, or "
-            "enforcement = \"exact\", tell it apart (docs/newton.md, \"Decisions that round-off cannot move\")"]
+    P = pressure_scale(scene, h)
+    share = _bound(scene.law, P) / P if P > 0 else 0.0  # b(P)/P: Coulomb's μ
+    if not share:  # a zero bound, or no load: no band to tell apart
+        return []
+    share = max(share, tol.TRACTION_ROUNDOFF)  # Newton's traction scale is at least TRACTION_ROUNDOFF·p
+    limit = tol.DECISION_BAND * share / tol.SPRING_TRACTION_ROUNDOFF
+    if alpha <= limit * (1 + tol.LIMIT_ROUNDOFF):
+        return []
+    mu = getattr(scene.law, "mu", None)
+    if mu is not None and share == mu:  # Coulomb's words (its share is μ to the bit)
+        return [f"penalty springs at α = k h/E₋ = {alpha:.2g} with μ = {mu:g}: their tractions' round-off "
+                f"(SPRING_TRACTION_ROUNDOFF·α = {tol.SPRING_TRACTION_ROUNDOFF * alpha:.2g} of Γ's largest pressure) "
+                f"exceeds Newton's stick/slip band (DECISION_BAND·μ = {tol.DECISION_BAND * mu:.2g} of it), so a point "
+                "held at stick above μ|t_N| within that band cannot be told from round-off and is not reported; "
+                f"springs with α at most {limit:.2g}, or "
+                "enforcement = \"exact\", tell it apart (docs/newton.md, \"Decisions that round-off cannot move\")"]
+    return [f"penalty springs at α = k h/E₋ = {alpha:.2g} with the '{scene.law.name}' law's slip bound at "
+            f"{share:.2g} of the pressure (at the scene's stress scale: its largest load or prescribed stress): "
+            f"their tractions' round-off (SPRING_TRACTION_ROUNDOFF·α = {tol.SPRING_TRACTION_ROUNDOFF * alpha:.2g} "
+            "of Γ's largest pressure) exceeds Newton's stick/slip band (DECISION_BAND of Γ's largest slip bound, "
+            f"{tol.DECISION_BAND * share:.2g} of that pressure), so a point held at stick above its slip bound "
+            f"within that band cannot be told from round-off and is not reported; springs with α at most "
+            f"{limit:.2g}, or enforcement = \"exact\", tell it apart (docs/newton.md, \"Decisions that round-off "
+            "cannot move\")"]
 
 
 def closed_tension_warnings(scene, path, stress_size: float = 0.0) -> list[str]:
