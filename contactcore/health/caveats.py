@@ -112,21 +112,19 @@ def dundurs_warnings(scene) -> list[str]:
         return []
     mu = getattr(scene.law, "mu", None)
     if mu is not None and slope == mu:  # Coulomb's words (its slope is μ to the bit)
-        return [f"mu = {mu:g} across two materials of Dundurs' β = {beta:.3g}: μ|β| = {mu * abs(beta):.3g} is above "
-                f"{tol.MU_DUNDURS_WARN:g}, where slip and the normal gap are coupled strongly enough for Coulomb "
-                "friction to have several answers (a layered block of contrast 1e3 at μ|β| = 1 to 5: fe, xfem and "
-                "efgm held Γ closed or opened up to 20 of 24 points under pressure, tractions up to 164 p apart); "
-                "the answer given is one of them, the method's: compare methods, or lower μ "
-                f"(below {tol.MU_DUNDURS_WARN / abs(beta):.3g} here) or the materials' contrast "
-                "(docs/contact-enforcement.md, \"Known limits\")"]
-    return [f"the '{scene.law.name}' law's slip bound grows with the pressure by {slope:.3g} (its mean slope "
-            f"d(slip bound)/d(−t_N) up to the scene's stress scale) across two materials of Dundurs' β = {beta:.3g}: "
-            f"slope·|β| = {slope * abs(beta):.3g} is above {tol.MU_DUNDURS_WARN:g}, where slip and the normal gap "
-            "are coupled strongly enough for friction to have several answers (as Coulomb's μ|β|: a layered block "
-            "of contrast 1e3 at μ|β| = 1 to 5: fe, xfem and efgm held Γ closed or opened up to 20 of 24 points "
-            "under pressure, tractions up to 164 p apart); the answer given is one of them, the method's: compare "
-            f"methods, or lower the bound's slope (below {tol.MU_DUNDURS_WARN / abs(beta):.3g} here) or the "
-            "materials' contrast (docs/contact-enforcement.md, \"Known limits\")"]
+        named, product, friction, seen, lower = f"mu = {mu:g}", "μ|β|", "Coulomb friction", "", "μ"
+    else:
+        named, product, friction, seen, lower = (
+            f"the '{scene.law.name}' law's slip bound grows with the pressure by {slope:.3g} (its mean slope "
+            "d(slip bound)/d(−t_N) up to the scene's stress scale)", "slope·|β|", "friction", "as Coulomb's μ|β|: ",
+            "the bound's slope")
+    return [f"{named} across two materials of Dundurs' β = {beta:.3g}: {product} = {slope * abs(beta):.3g} is above "
+            f"{tol.MU_DUNDURS_WARN:g}, where slip and the normal gap are coupled strongly enough for {friction} "
+            f"to have several answers ({seen}a layered block of contrast 1e3 at μ|β| = 1 to 5: fe, xfem and "
+            "efgm held Γ closed or opened up to 20 of 24 points under pressure, tractions up to 164 p apart); "
+            f"the answer given is one of them, the method's: compare methods, or lower {lower} "
+            f"(below {tol.MU_DUNDURS_WARN / abs(beta):.3g} here) or the materials' contrast "
+            "(docs/contact-enforcement.md, \"Known limits\")"]
 
 
 def _carried(path) -> float:
