@@ -318,8 +318,8 @@ def test_run_estimate_writes_the_errors(tmp_path):
     alone = tmp_path / "reference_alone"
     run("A", ["fe"], alone, h=0.1, degree=2, draw=False)
     dofs = json.loads((alone / "fe" / "summary.json").read_text())["dofs"]
-    assert f"| fe (reference) | 2 | {dofs} |" in text  # the reference is solved at the answer's h/2
-    reference_row = next(line for line in text.splitlines() if line.startswith("| fe (reference) |"))
+    assert f"| reference: fe P2 | 2 | {dofs} |" in text  # the reference is solved at the answer's h/2
+    reference_row = next(line for line in text.splitlines() if line.startswith("| reference: fe P2 |"))
     assert reference_row.count(f"—{NOT_ESTIMATED_MARK}") == 2 and NOT_ESTIMATED in text  # why it has no estimate
 
 
@@ -416,7 +416,7 @@ def test_efficiency_without_a_reference_estimates_and_says_so(tmp_path):
     assert 0 < error and high / error == pytest.approx(error / low) == pytest.approx(core_tol.ESTIMATE_TRUST)
     # at h = 0.2 on A the estimate is not asymptotic: its warnings are counted and listed, as run --estimate gives them
     assert int(row["warned"]) > 0 and "Warnings of the estimates" in text
-    assert text.count("- efgm p1 h = 0.2: ") == int(row["warned"])
+    assert text.count("- efgm P1 h = 0.2: ") == int(row["warned"])
 
 
 def test_an_exact_law_caps_the_orders_on_gamma():

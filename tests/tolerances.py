@@ -1537,3 +1537,13 @@ LAWCAPS_SLIDE_SHARE = 0.99
 #: bound: far beyond the warning's round-off allowance (STICK_ROUNDOFF,
 #: TRACTION_ROUNDOFF of the pressure: 1e-9 and below), so it must (must not) be named.
 LAWCAPS_EXCESS_SHARE = 1e-2
+
+# --- lows (2026-11-29): one scale for the plots and the agreement table, short estimate warnings ---
+#: A Δ panel's largest kept |Δ| (each difference over the table's size, in
+#: percent) against the table's worst sample (the largest |Δ| over the same
+#: size): the same two numbers divided in a different order (Δ / (size/100)
+#: against |Δ| / size · 100), a few ulps apart; a panel on another scale
+#: (newuser32's max |t_T| instead of |t|: 17 % for 0.83 %) is off by the
+#: ratio of the two sizes: max |g| / max |g_N| = 16 on scene A's A5 at
+#: h = 0.2 (fe P2; 2.50e-4 m against 1.52e-5 m).
+PLOT_TABLE_RTOL = 1e-12
