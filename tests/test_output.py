@@ -347,7 +347,9 @@ def test_effectivity_gives_each_estimate_its_quantitys_unit(tmp_path, a_in_mpa):
 
 def test_summary_and_estimate_warnings_give_lengths_in_the_scenes_unit(a_in_mpa):
     """summary.md's exclusion sentence and the estimate's unsettled-run
-    warnings name the scene's length unit (m for an SI scene)."""
+    warnings name the scene's length unit (m for an SI scene), each length
+    followed by its unit (newuser32: "within 6 of a singular point …
+    (lengths in mm)" split a number from its unit)."""
     from contactcore import estimate as est
     from verification.agreement import AgreementTable, default_exclusion
     corners = (("corners", ((0.0, 0.0), (1.0, 0.0))),)
@@ -357,8 +359,9 @@ def test_summary_and_estimate_warnings_give_lengths_in_the_scenes_unit(a_in_mpa)
     scene = load_scene(a_in_mpa)
     runs = [methods.solver("fe")(scene, h) for h in (0.25, 0.125)]  # stencils reaching Γ's ends: unsettled
     warnings = est.estimate_runs(scene, runs, default_exclusion(scene), energy=False).warnings
-    unsettled = [w for w in warnings if "asymptotic range, the estimate is an indication" in w]
-    assert unsettled and all(w.endswith("avoids this; lengths in mm)") for w in unsettled)
+    unsettled = [w for w in warnings if "not asymptotic; start below h = " in w]
+    lengths = [m for w in unsettled for m in re.finditer(r"(?:h = |within |stencils of |feature \(|across Γ \()([-+.\de]+)(?![-+.\de])( mm)?", w)]
+    assert unsettled and lengths and all(m.group(2) for m in lengths), unsettled
 
 
 def test_study_headers_and_difference_floors_name_their_units():

@@ -1547,3 +1547,10 @@ LAWCAPS_EXCESS_SHARE = 1e-2
 #: ratio of the two sizes: max |g| / max |g_N| = 16 on scene A's A5 at
 #: h = 0.2 (fe P2; 2.50e-4 m against 1.52e-5 m).
 PLOT_TABLE_RTOL = 1e-12
+#: The longest an estimate warning may be, in characters (the run's name
+#: summary.md puts before it aside): its quantities, what was found with
+#: each number beside its unit, and the row of docs/error-estimates.md
+#: that explains it.  newuser32's block (tests/scenes/estimate_warnings_block.toml,
+#: every method at h = 1 mm → 0.5 mm) gave ten lines of 246-358 before,
+#: 146-183 since (2026-11-29), six quantities named on the longest.
+ESTIMATE_WARNING_CHARS = 200
