@@ -38,6 +38,7 @@ from typing import Any, Callable, ClassVar
 import numpy as np
 
 from . import exact, health
+from .labels import run_label
 from .collective import Collective
 from . import tolerances as tol
 from .errors import DiscretisationError
@@ -230,7 +231,7 @@ class Discretisation:
     @classmethod
     def label(cls, result: Result) -> str:
         """A short name of the discretisation that gave ``result``, for legends."""
-        return f"{cls.name} P{result.degree} (h = {result.discretisation['h']:.3g})"
+        return f"{run_label(cls.name, result.degree)} (h = {result.discretisation['h']:.3g})"
 
 
 def check_degree(name: str, degree) -> None:

@@ -11,6 +11,7 @@ from typing import ClassVar
 from contactcore import health
 from contactcore import tolerances as tol
 from contactcore.discretisation import Discretisation, Resolution, check_choice, check_degree
+from contactcore.labels import run_label
 
 #: The MLS bases by name (``--basis``) and their degree.
 BASES = {"linear": 1, "quadratic": 2}
@@ -134,4 +135,4 @@ class EFGM(Discretisation):
 
     @classmethod
     def label(cls, result) -> str:
-        return f"efgm ({result.discretisation['nodes']} nodes)"
+        return f"{run_label(cls.name, result.degree)} ({result.discretisation['nodes']} nodes)"

@@ -52,9 +52,9 @@ def test_the_section_lists_every_profile_quantity_and_both_status_splits(coulomb
                                                                          for p in scene.profiles}
     for pid, quantities in record["profiles"].items():
         for q in quantities:
-            assert f"| fe (p1) | {pid} | {q} |" in text
+            assert f"| fe P1 | {pid} | {q} |" in text
     for enforcement in ("penalty", "exact"):
-        assert f"| fe (p1) | {enforcement} |" in text
+        assert f"| fe P1 | {enforcement} |" in text
     assert json.loads((coulomb_run / "run.json").read_text())["against_exact"] is True
     assert (coulomb_run / "fe" / "exact" / "increments.csv").exists()
     assert json.loads((coulomb_run / "fe" / "exact" / "summary.json").read_text())["ranks"] == 1  # as its twin's
@@ -101,7 +101,7 @@ def test_the_share_of_its_own_size_shows_the_penalty_missing_t_t(coulomb_run):
     assert record["worst_own"] >= bound > record["worst"]
     text = (coulomb_run / "summary.md").read_text()
     assert "| of its own size |" in text
-    assert f"| fe (p1) | C4 | tT | {percent(record['worst'])} | {percent(record['worst_own'])} |" in text
+    assert f"| fe P1 | C4 | tT | {percent(record['worst'])} | {percent(record['worst_own'])} |" in text
 
 
 def test_the_exact_answer_is_the_scene_solved_with_its_law_enforced_exactly(coulomb_run):

@@ -52,7 +52,7 @@ def test_the_table_names_what_it_left_out_and_matches_the_drivers_measure():
     assert {(a.profile, a.quantity) for a in result.rows} == {(p.id, q) for p in scene.profiles for q in p.quantities}
     for a in result.rows:
         assert a.rms <= a.worst * np.sqrt(a.kept)  # an RMS never exceeds the worst sample's share
-    assert result.reference == "fe p2"
+    assert result.reference == "fe P2"
 
 
 def test_the_helper_passes_at_the_worst_difference_and_fails_just_below_it():
@@ -63,7 +63,7 @@ def test_the_helper_passes_at_the_worst_difference_and_fails_just_below_it():
     with pytest.raises(AssertionError) as failure:
         assert_methods_agree(scene, ["xfem:1"], COARSE_H, rtol=0.99 * worst.worst)
     first = str(failure.value).splitlines()[0]
-    assert f"xfem p1 against fe p2: {worst.profile} {worst.quantity} at s = {worst.s:.4g}" in first
+    assert f"xfem P1 against fe P2: {worst.profile} {worst.quantity} at s = {worst.s:.4g}" in first
     unit = column_unit(worst.quantity)  # each value with its unit (grader11 #7)
     assert f"{worst.value:.4g} {unit} against {worst.reference:.4g} {unit}" in first
 
@@ -79,7 +79,7 @@ def test_the_helpers_rms_is_the_relative_rms_of_the_drivers():
     got = sampled(scene, methods.solver("efgm")(scene, COARSE_H))
     ref = sampled(scene, methods.solver("fe")(scene, COARSE_H, degree=2))
     exclude = default_exclusion(scene)
-    rows = table(scene, {"efgm p1": got, "fe p2": ref}, "fe p2").rows
+    rows = table(scene, {"efgm P1": got, "fe P2": ref}, "fe P2").rows
     keep = {pid: kept_samples(scene, prof, exclude) for pid, prof in ref.items()}
     assert [a.rms for a in rows] == [relative_rms(scene, got[a.profile], ref[a.profile], a.quantity, exclude,
                                                   scale_of(scene, a.profile, a.quantity, ref)[keep[a.profile]])
@@ -138,9 +138,8 @@ def test_run_writes_the_helpers_agreement_figures(tmp_path):
         assert f"- {name}: {methods.discretisation(name).about}" in written
     assert law_line(load_scene(wedge)) in written and "Γ's law: `coulomb`, enforced by its springs" in written
     helper = compare(wedge, ["xfem:2", "efgm:2"], COARSE_H)
-    for a in helper.rows:
-        method, degree = a.method.split(" p")
-        assert (f"| {method} (p{degree}) | {a.profile} | {a.quantity} | {a.kind} | {percent(a.worst)} | {a.s:.4g} "
+    for a in helper.rows:  # one label in the API and in summary.md: "xfem P2"
+        assert (f"| {a.method} | {a.profile} | {a.quantity} | {a.kind} | {percent(a.worst)} | {a.s:.4g} "
                 f"({a.x:.4g}, {a.y:.4g}) | {percent(a.rms)} |") in written
 
 
@@ -427,9 +426,9 @@ def no_solve(monkeypatch):
 
 
 @pytest.mark.parametrize("methods,message", [
-    ([], r"^methods: none is given: name at least one method to compare with the reference fe p2 "),
-    (["fe:2"], r"^methods: only the reference fe p2 itself is given"),
-    ([("fe", 2), "fe:2"], r"^methods: only the reference fe p2 itself is given"),
+    ([], r"^methods: none is given: name at least one method to compare with the reference fe P2 "),
+    (["fe:2"], r"^methods: only the reference fe P2 itself is given"),
+    ([("fe", 2), "fe:2"], r"^methods: only the reference fe P2 itself is given"),
     ("xfem", r"^methods: a list of methods, not one string \(got 'xfem'; write \['xfem'\]\)$"),
     (3, r"^methods: a list of methods such as")])
 def test_methods_that_compare_nothing_are_refused_before_any_solve(methods, message, no_solve):
@@ -463,11 +462,11 @@ def test_compare_estimates_gives_run_estimates_pair_verdicts(tmp_path):
     from verification.__main__ import main
     from verification.agreement import compare_estimates
     verdicts = compare_estimates("A", ["xfem", "efgm"], COARSE_H)
-    assert {v.methods for v in verdicts} == {("xfem p1", "efgm p1")}
+    assert {v.methods for v in verdicts} == {("xfem P1", "efgm P1")}
     assert all(v.beyond == (v.ratio > 1) for v in verdicts) and any(v.beyond for v in verdicts)
     assert main(["run", "A", "--method", "xfem", "efgm", "--h", str(COARSE_H), "--estimate", "--no-plots", "-q",
                  "--out", str(tmp_path / "r")]) == 0
-    written = re.findall(r"^\| xfem \(p1\) – efgm \(p1\) \| (\w+) \| (\w+) \| ([\d.]+) \| (yes|no) \|$",
+    written = re.findall(r"^\| xfem P1 – efgm P1 \| (\w+) \| (\w+) \| ([\d.]+) \| (yes|no) \|$",
                          (tmp_path / "r" / "summary.md").read_text(), re.M)
     assert written and written == [(v.profile, v.quantity, f"{v.ratio:.2f}", "yes" if v.beyond else "no")
                                    for v in verdicts]

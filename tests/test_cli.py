@@ -231,7 +231,7 @@ def test_a_refusal_before_any_solve_reads_as_the_solves_own(capsys, tmp_path):
     assert main(["run", str(path), "--method", "fe", "xfem", "--reference", "efgm:1", "--paper",
                  "--out", str(tmp_path / "r")]) == 2
     err = capsys.readouterr().err.strip()
-    assert err.startswith(f"error: efgm (the reference, degree 1): {solved.value}; ") and "--reference none" in err
+    assert err.startswith(f"error: reference: efgm P1: {solved.value}; ") and "--reference none" in err
     assert not (tmp_path / "r").exists()
 
 
@@ -259,9 +259,9 @@ def test_run_measures_a_quantity_against_its_floor(tmp_path):
     assert main(["run", "A", "--method", "efgm", "xfem", "--h", "0.2", "--reference", "xfem:1", "--no-plots", "-q",
                  "--floor", "sxy=1e3", "--out", str(out)]) == 0
     scene = load_scene("A")
-    runs = {f"{m} (p1)": {p.id: ProfileData(p.id, "arclength", {k: np.asarray(v) for k, v in files.read_profile_csv(
+    runs = {agreement.label(m, 1): {p.id: ProfileData(p.id, "arclength", {k: np.asarray(v) for k, v in files.read_profile_csv(
         out / m / "profiles" / f"{p.id}.csv").items()}) for p in scene.profiles} for m in ("efgm", "xfem")}
-    floored, bare = (agreement.table(scene, runs, "xfem (p1)", floors=f).rows for f in ({"sxy": 1e3}, None))
+    floored, bare = (agreement.table(scene, runs, agreement.label("xfem", 1), floors=f).rows for f in ({"sxy": 1e3}, None))
     summary = (out / "summary.md").read_text()
     assert "sxy is measured against sqrt(sxy² + (1e+03 Pa)²) (a floor given)" in summary
     for with_floor, without in zip(floored, bare):
@@ -273,7 +273,7 @@ def test_run_measures_a_quantity_against_its_floor(tmp_path):
 
 @pytest.mark.parametrize("argv, failing, named", [
     (["run", "A", "--method", "fe", "xfem", "--h", "0.2"], lambda degree, h: degree == 2,
-     "error: fe (the reference, degree 2): scene A: no answer; the methods asked for solved: compare them "
+     "error: reference: fe P2: scene A: no answer; the methods asked for solved: compare them "
      "without a reference with --reference none, or with another, --reference METHOD:DEGREE"),
     (["run", "A", "--method", "fe", "--h", "0.2", "--estimate"], lambda degree, h: h < 0.2,
      "error: the estimate's run at h = 0.1: scene A: no answer"),

@@ -83,9 +83,9 @@ def _profiles(values):
 def test_tables_reference_is_a_label_among_the_runs():
     scene = load_scene("A")
     ref = _profiles([1.0, 2, 3, 4, 5])
-    runs = {"fe p2": ref, "mine": _profiles([1.0, 2, 3, 4, 6])}
-    assert table(scene, runs, "fe p2").reference == "fe p2"
-    with pytest.raises(ContactError, match=r"^reference: the label of one of runs \('fe p2', 'mine'\), not its "
+    runs = {"fe P2": ref, "mine": _profiles([1.0, 2, 3, 4, 6])}
+    assert table(scene, runs, "fe P2").reference == "fe P2"
+    with pytest.raises(ContactError, match=r"^reference: the label of one of runs \('fe P2', 'mine'\), not its "
                                            r"profiles \(got a dict\)$"):
         table(scene, runs, ref)
     with pytest.raises(ContactError, match=r"^reference: 'fe' is not a label of runs"):

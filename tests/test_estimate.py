@@ -322,8 +322,8 @@ def test_run_estimate_writes_the_errors(tmp_path, caplog):
     alone = tmp_path / "reference_alone"
     run("A", ["fe"], alone, h=0.1, degree=2, draw=False)
     dofs = json.loads((alone / "fe" / "summary.json").read_text())["dofs"]
-    assert f"| fe (reference) | 2 | {dofs} |" in text  # the reference is solved at the answer's h/2
-    reference_row = next(line for line in text.splitlines() if line.startswith("| fe (reference) |"))
+    assert f"| reference: fe P2 | 2 | {dofs} |" in text  # the reference is solved at the answer's h/2
+    reference_row = next(line for line in text.splitlines() if line.startswith("| reference: fe P2 |"))
     assert reference_row.count(f"—{NOT_ESTIMATED_MARK}") == 2 and NOT_ESTIMATED in text  # why it has no estimate
 
 
@@ -420,7 +420,7 @@ def test_efficiency_without_a_reference_estimates_and_says_so(tmp_path):
     assert 0 < error and high / error == pytest.approx(error / low) == pytest.approx(core_tol.ESTIMATE_TRUST)
     # at h = 0.2 on A the estimate is not asymptotic: its warnings are counted and listed, as run --estimate gives them
     assert int(row["warned"]) > 0 and "Warnings of the estimates" in text
-    assert text.count("- efgm p1 h = 0.2: ") == int(row["warned"])
+    assert text.count("- efgm P1 h = 0.2: ") == int(row["warned"])
 
 
 def test_an_exact_law_caps_the_orders_on_gamma():
@@ -532,7 +532,8 @@ def test_a_changed_status_names_the_runs_it_compares():
     change = {"coarse": {"open": 0.5, "stick": 0.5}, "fine": {"open": 0.4, "stick": 0.6}, "differ": 3,
               "samples": 101, "h": [0.05, 0.025]}
     (warning,) = est.status_warning(change)
-    assert warning.startswith("the status along Γ differs between h = 0.05 and 0.025 at 3 of 101 samples")
+    assert warning.startswith("the status along Γ differs from h = 0.05 m to 0.025 m at 3 of 101 samples")
+    assert "(open 50→40%, stick 50→60%)" in warning  # the shares that moved
     assert est.status_warning({**change, "differ": 0}) == []
 
 
@@ -742,12 +743,12 @@ def test_a_coarse_run_whose_stencil_reaches_a_singular_point_or_spans_a_feature_
     assert {cause for cause, names in found.items() if names} == causes
     lines = est.unsettled_warnings(found, h, est.feature_size(scene), thin=est.thinnest_body(scene))
     assert len(lines) == len(causes) and all(line.startswith("L:sxx: ") for line in lines)
-    assert ("the thinner body across Γ is 0.5 thick" in " ".join(lines)) == ("thin" in causes)
+    assert ("over the thinner body across Γ (0.5 m)" in " ".join(lines)) == ("thin" in causes)
     for cause in causes:  # the h from which the cause is gone: just below it, it is
         (_, h_ok), = found[cause].values()
         below = est.unsettled(scene, [_line_along_gamma(0.15)], {**record, "h": h_ok * (1 - tol.ACROSS_A_THRESHOLD)}, _facts(method, 1),
                               exclude=0.1)
-        assert not below[cause] and f"h = {h_ok:.3g} avoids" in " ".join(lines)
+        assert not below[cause] and f"start below h = {h_ok:.3g} m" in " ".join(lines)
 
 
 def _layer(tmp_path, y: float):

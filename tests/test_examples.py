@@ -72,8 +72,8 @@ def test_agreement_test(capsys, monkeypatch):
     module.test_the_three_methods_agree_on_the_wedge()
     table = module.main(h=H)
     printed = capsys.readouterr().out
-    assert "| method | profile | quantity |" in printed and f"worst: {table.worst().method} against fe p2" in printed
-    assert {a.method for a in table.rows} == {"xfem p2", "efgm p2"}
+    assert "| method | profile | quantity |" in printed and f"worst: {table.worst().method} against fe P2" in printed
+    assert {a.method for a in table.rows} == {"xfem P2", "efgm P2"}
     assert table.worst().worst <= module.RTOL
 
 

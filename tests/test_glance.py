@@ -171,8 +171,8 @@ def test_scene_a_stresses_are_drawn_in_kpa():
     scene = load_scene("A")
     result = methods.solver("fe")(scene, 0.2)
     a2 = next(p for p in sample_profiles(scene, result.fields, result.interface) if p.id == "A2")
-    fig = plots.profile_figure("σyy", {"fe (p1)": a2, "fe (p2)": a2})
-    assert [fig.axes[0].get_ylabel(), fig.axes[1].get_ylabel()] == ["σyy (kPa)", "Δσyy / max|ref| (%)"]
+    fig = plots.profile_figure("σyy", {"fe P1": a2, "fe P2": a2})
+    assert [fig.axes[0].get_ylabel(), fig.axes[1].get_ylabel()] == ["σyy (kPa)", "Δσyy (kPa)"]
     plots.pyplot().close(fig)
 
 
@@ -356,15 +356,15 @@ def test_methods_are_compared_with_fe_p2_by_default(tmp_path):
     reference, listed in the summary, its profiles under reference/."""
     out = _run(tmp_path)
     summary = (out / "summary.md").read_text()
-    assert "| fe (reference) | 2 |" in summary and "Against fe (p2);" in summary
-    assert json.loads((out / "run.json").read_text())["reference"] == "fe (p2)"
+    assert "| reference: fe P2 | 2 |" in summary and "Each run against the reference: fe P2;" in summary
+    assert json.loads((out / "run.json").read_text())["reference"] == "fe P2"
     assert (out / "reference" / "profiles" / "A1.csv").exists()
 
 
 def test_the_reference_is_chosen_with_reference(tmp_path):
     """``--reference efgm:1``, one of the runs: nothing more is solved."""
     out = _run(tmp_path, "--reference", "efgm:1")
-    assert "Against efgm (p1);" in (out / "summary.md").read_text()
+    assert "Each run against the reference: efgm P1;" in (out / "summary.md").read_text()
     assert not (out / "reference").exists()
 
 

@@ -9,6 +9,7 @@ import numpy as np
 import pytest
 
 from contactcore import BODIES, ProfileData, evaluate_quantities, load_scene, scene_text
+from contactcore.labels import reference_text, run_label
 from contactcore.scene import Units
 from contactcore.tolerances import PLOT_MIN_Y_SPAN
 from tests.tolerances import FIELD_FILE_RTOL, SAMPLE_ROUNDING_RTOL
@@ -153,40 +154,43 @@ def _inside(inner, outer):
 
 def test_every_method_and_degree_has_its_own_style():
     looks = {(m, d): (st["color"], st["linestyle"], st["marker"])
-             for m in plots.METHOD_STYLE for d in (1, 2) for st in [plots.style(f"{m} (p{d})")]}
+             for m in plots.METHOD_STYLE for d in (1, 2) for st in [plots.style(run_label(m, d))]}
     assert len(set(looks.values())) == len(looks)  # no two curves look alike
     assert len({look[2] for look in looks.values()}) == len(looks)  # not even by marker alone
     for m in plots.METHOD_STYLE:  # a method's two degrees differ by more than their markers
-        assert plots.style(f"{m} (p1)")["lw"] != plots.style(f"{m} (p2)")["lw"]
+        assert plots.style(run_label(m, 1))["lw"] != plots.style(run_label(m, 2))["lw"]
     assert plots.variant("reference: fe P2, h = 0.025 (3000 DOFs)") == ("fe", 2)
-    assert plots.reference_label(["xfem (p2)", "fe (p1)", "fe (p2)", "efgm (p1)"]) == "fe (p2)"
-    assert plots.reference_label(["xfem (p1)", "efgm (p1)"]) == "xfem (p1)"
+    assert plots.reference_label(["xfem P2", "fe P1", "fe P2", "efgm P1"]) == "fe P2"
+    assert plots.reference_label(["xfem P1", "efgm P1"]) == "xfem P1"
 
 
 def test_profile_figure_differences_span_and_layout():
     """A 24 kPa t_T with a ±3 Pa wobble (scene B5 in the issue): no offset
     labels, no zoom onto the wobble, the overlay in kPa, the difference
-    panel method minus reference relative to the reference's largest
-    |t_T|, in percent; legend and title inside the figure and off the axes."""
+    panel method minus reference over the size it is given (the agreement
+    table's: here a |t| of 30 kPa), in percent, the size named in its y
+    label; the reference's curve named as the reference; legend and title
+    inside the figure and off the axes."""
     s = np.linspace(0.0, 1.0, 101)
     ref = -24000.0 + 3.0 * np.sin(20 * s)
-    runs = {"fe (p2)": _profile("B5", s, tT=ref), "xfem (p1)": _profile("B5", s, tT=ref + 1.0 + s),
-            "efgm (p1)": _profile("B5", s, tT=ref - 2.0)}
-    fig = plots.profile_figure("tangential traction on Γ", runs)
+    runs = {"fe P2": _profile("B5", s, tT=ref), "xfem P1": _profile("B5", s, tT=ref + 1.0 + s),
+            "efgm P1": _profile("B5", s, tT=ref - 2.0)}
+    ref_size = 30000.0
+    fig = plots.profile_figure("tangential traction on Γ", runs, sizes={"tT": (ref_size, "|(tN, tT)|")})
     fig.canvas.draw()
     overlay, diff = fig.axes[0], fig.axes[1]
     scale = max(np.abs(p.columns["tT"]).max() for p in runs.values())
     kpa, percent = 1e3, 100.0
-    ref_size = np.abs(ref).max()
-    assert [overlay.get_ylabel(), diff.get_ylabel()] == ["t_T (kPa)", "Δt_T / max|ref| (%)"]
+    assert [overlay.get_ylabel(), diff.get_ylabel()] == ["t_T (kPa)", "Δt_T / max|t| (%)"]
+    assert [line.get_label() for line in overlay.get_lines()] == [reference_text("fe P2"), "xfem P1", "efgm P1"]
     for ax, span in ((overlay, scale / kpa), (diff, percent)):
         assert ax.yaxis.get_major_formatter().get_offset() == ""
         low, high = ax.get_ylim()
         assert high - low >= PLOT_MIN_Y_SPAN * span * (1 - tol.PLOT_SPAN_ROUNDOFF)
     lines = {line.get_label(): line.get_ydata() for line in diff.get_lines() if not line.get_label().startswith("_")}
-    assert set(lines) == {"xfem (p1)", "efgm (p1)"}
-    assert np.allclose(lines["xfem (p1)"], percent * (1.0 + s) / ref_size)
-    assert np.allclose(lines["efgm (p1)"], percent * -2.0 / ref_size)
+    assert set(lines) == {"xfem P1", "efgm P1"}
+    assert np.allclose(lines["xfem P1"], percent * (1.0 + s) / ref_size)
+    assert np.allclose(lines["efgm P1"], percent * -2.0 / ref_size)
     figure_box = fig.bbox
     legend = overlay.get_legend().get_window_extent()
     assert legend.x0 >= overlay.get_window_extent().x1  # outside the axes, to their right
@@ -197,7 +201,7 @@ def test_profile_figure_differences_span_and_layout():
 def test_response_figure_counts_increments(tmp_path, coulomb_toml):
     scene = load_scene(coulomb_toml)
     result = methods.solver("efgm")(scene, H)
-    fig = interface.response_figure(scene, {"efgm (p1)": result.interface})
+    fig = interface.response_figure(scene, {"efgm P1": result.interface})
     fig.canvas.draw()
     by_label = {ax.get_ylabel(): ax for ax in fig.axes}
     assert "mean t_T on Γ (Pa)" not in by_label  # Γ is a circle: its mean t_T is the (zero) net torque
@@ -212,14 +216,14 @@ def test_response_figure_counts_increments(tmp_path, coulomb_toml):
     ("", "gamma"),
     ("  ", "gamma"),
     ("tangential traction on Γ", "gamma: tangential traction on Γ"),
-    (("", "fe (p1), penalty against exact"), "gamma: fe (p1), penalty against exact"),
-    (("traction on Γ", "fe (p1), penalty against exact"), "gamma: traction on Γ; fe (p1), penalty against exact"),
+    (("", "fe P1, penalty against exact"), "gamma: fe P1, penalty against exact"),
+    (("traction on Γ", "fe P1, penalty against exact"), "gamma: traction on Γ; fe P1, penalty against exact"),
 ])
 def test_a_profile_figure_is_titled_by_its_id_without_dangling_separators(title, shown):
     """A profile without a title is titled by its id alone, not "gamma: "
     nor "gamma: ; ..." (run's penalty-against-exact figures add a part)."""
     s = np.linspace(0.0, 1.0, 5)
-    fig = plots.profile_figure(title, {"fe (p1)": _profile("gamma", s, tT=s)})
+    fig = plots.profile_figure(title, {"fe P1": _profile("gamma", s, tT=s)})
     assert fig.axes[0].get_title() == shown
     plots.pyplot().close(fig)
 
@@ -255,11 +259,11 @@ def test_a_scene_not_in_pa_is_drawn_as_given_in_its_units(scale):
     assert plots.axis_unit("gN", scale, MM_MPA) == (1.0, "g_N (mm)")
     assert plots.axis_unit("sxx", 2e6) == (1e6, "σxx (MPa)")  # an SI scene's, as before
     s = np.linspace(0.0, 1.0, 11)
-    fig = plots.profile_figure("t_T", {"fe (p2)": _profile("G", s, tT=scale * (1 + s)),
-                                       "xfem (p1)": _profile("G", s, tT=scale * (1 + s) + 1.0)}, units=MM_MPA)
+    fig = plots.profile_figure("t_T", {"fe P2": _profile("G", s, tT=scale * (1 + s)),
+                                       "xfem P1": _profile("G", s, tT=scale * (1 + s) + 1.0)}, units=MM_MPA)
     overlay, diff = fig.axes[0], fig.axes[1]
     assert [overlay.get_ylabel(), diff.get_ylabel(), diff.get_xlabel()] == [
-        "t_T (MPa)", "Δt_T / max|ref| (%)", "s (mm)"]
+        "t_T (MPa)", "Δt_T (MPa)", "s (mm)"]  # no sizes given: the differences in the quantity's unit
     assert np.array_equal(overlay.get_lines()[0].get_ydata(), scale * (1 + s))
     plots.pyplot().close(fig)
 
@@ -278,7 +282,7 @@ def test_a_run_in_mm_and_mpa_names_its_units_in_every_file(tmp_path, a_in_mpa):
     assert not [(f, c) for f, cols in units.items() for c, u in cols.items() if u in ("m", "Pa", "Pa/m")]
     summary = (out / "summary.md").read_text()
     assert "sxx is measured against sqrt(sxx² + (0.01 MPa)²) (a floor given)" in summary
-    row = agreement.Agreement("xfem p1", "A1", "sxx", "stress", 0.1, 0.2, 0.5, 0.5, 0.5, 1.0, 2.0, 5, 5,
+    row = agreement.Agreement("xfem P1", "A1", "sxx", "stress", 0.1, 0.2, 0.5, 0.5, 0.5, 1.0, 2.0, 5, 5,
                               floor=0.01, units=MM_MPA)
     assert "largest sqrt(sxx² + (0.01 MPa)²) (floored)" in row.describe()
 
@@ -290,14 +294,14 @@ def test_the_interface_and_study_plots_name_the_scenes_units(a_in_mpa):
     from verification import study
     scene = load_scene(a_in_mpa)
     result = methods.solver("fe")(scene, 0.25)
-    fig = interface.response_figure(scene, {"fe (p1)": result.interface})
+    fig = interface.response_figure(scene, {"fe P1": result.interface})
     labels = {ax.get_ylabel(): ax.get_xlabel() for ax in fig.axes}
     assert labels["mean t_T on Γ (MPa)"] == "mean slip g_T on Γ (mm)" and "RMS t_N on Γ (MPa)" in labels
     plots.pyplot().close(fig)
     status = []
     with pytest.MonkeyPatch.context() as patch:
         patch.setattr(interface, "save", lambda fig, out: status.append(fig))
-        interface.plot_status(None, scene, "fe (p1)", result.interface)
+        interface.plot_status(None, scene, "fe P1", result.interface)
     assert status[0].axes[0].get_xlabel() == "position along Γ (mm)"
     plots.pyplot().close("all")
     assert study.described("kN", MM_MPA) == "normal spring k_N (MPa/mm)"
@@ -343,18 +347,21 @@ def test_effectivity_gives_each_estimate_its_quantitys_unit(tmp_path, a_in_mpa):
 
 def test_summary_and_estimate_warnings_give_lengths_in_the_scenes_unit(a_in_mpa):
     """summary.md's exclusion sentence and the estimate's unsettled-run
-    warnings name the scene's length unit (m for an SI scene)."""
+    warnings name the scene's length unit (m for an SI scene), each length
+    followed by its unit (newuser32: "within 6 of a singular point …
+    (lengths in mm)" split a number from its unit)."""
     from contactcore import estimate as est
     from verification.agreement import AgreementTable, default_exclusion
     corners = (("corners", ((0.0, 0.0), (1.0, 0.0))),)
-    assert AgreementTable("A", "fe (p2)", 0.141, corners, (), units=MM_MPA).excluded().startswith(
+    assert AgreementTable("A", "fe P2", 0.141, corners, (), units=MM_MPA).excluded().startswith(
         "samples within 0.141 mm of these singular points were left out: corners (0, 0), (1, 0)")
-    assert "within 0.141 m of these" in AgreementTable("A", "fe (p2)", 0.141, corners, ()).excluded()
+    assert "within 0.141 m of these" in AgreementTable("A", "fe P2", 0.141, corners, ()).excluded()
     scene = load_scene(a_in_mpa)
     runs = [methods.solver("fe")(scene, h) for h in (0.25, 0.125)]  # stencils reaching Γ's ends: unsettled
     warnings = est.estimate_runs(scene, runs, default_exclusion(scene), energy=False).warnings
-    unsettled = [w for w in warnings if "asymptotic range, the estimate is an indication" in w]
-    assert unsettled and all(w.endswith("avoids this; lengths in mm)") for w in unsettled)
+    unsettled = [w for w in warnings if "not asymptotic; start below h = " in w]
+    lengths = [m for w in unsettled for m in re.finditer(r"(?:h = |within |stencils of |feature \(|across Γ \()([-+.\de]+)(?![-+.\de])( mm)?", w)]
+    assert unsettled and lengths and all(m.group(2) for m in lengths), unsettled
 
 
 def test_study_headers_and_difference_floors_name_their_units():
@@ -365,7 +372,7 @@ def test_study_headers_and_difference_floors_name_their_units():
     assert "| mean t_N (MPa) | mean t_T (MPa) | message |" in header
     assert "| mean t_N (Pa) |" in study.markdown("A", ["h"], [])
     s = np.linspace(0.0, 1.0, 11)
-    fig = plots.profile_figure("g", {"fe (p2)": _profile("G", s, gN=s), "xfem (p1)": _profile("G", s, gN=s + 0.01)},
+    fig = plots.profile_figure("g", {"fe P2": _profile("G", s, gN=s), "xfem P1": _profile("G", s, gN=s + 0.01)},
                                floors={"gN": 0.00476}, units=MM_MPA)
     assert fig.axes[1].get_title(loc="right").endswith("floored at 0.00476 mm")
     plots.pyplot().close(fig)
@@ -439,7 +446,7 @@ def test_the_difference_panel_shades_what_the_agreement_leaves_out():
     reference's) are shaded in the difference panels, each run of them one
     span reaching half way to its kept neighbours, and the panel says so."""
     s = np.linspace(0.0, 1.0, 11)
-    runs = {"fe (p2)": _profile("B5", s, tT=1.0 + s), "xfem (p1)": _profile("B5", s, tT=1.1 + s)}
+    runs = {"fe P2": _profile("B5", s, tT=1.0 + s), "xfem P1": _profile("B5", s, tT=1.1 + s)}
     left_out = (s < 0.15) | (s > 0.85)  # two samples at each end
     assert np.allclose(plots._left_out_spans(s, left_out), [(0.0, 0.15), (0.85, 1.0)], rtol=0, atol=tol.COORDINATE_ROUNDOFF)
     fig = plots.profile_figure("t_T", runs, left_out=left_out)
@@ -449,3 +456,35 @@ def test_the_difference_panel_shades_what_the_agreement_leaves_out():
     fig = plots.profile_figure("t_T", runs)  # nothing left out: no span, no word of it
     assert not fig.axes[1].patches and "grey" not in fig.axes[1].get_title(loc="right")
     plots.pyplot().close(fig)
+
+
+def test_the_difference_panel_says_the_agreement_tables_figure():
+    """newuser32: a plot's Δt_T read ~17 % where summary.md's table said
+    0.83 %: the panel divided by the reference's own largest |t_T|, the
+    table by |t|.  Now each panel is over the table's size
+    (:meth:`AgreementTable.sizes`): its largest |Δ| over the samples the
+    table keeps is the table's worst sample, and its y label names the
+    size (|g| for g_N).  On scene A at h = 0.2 some size differs from the
+    quantity's own largest |value| (the old scale would fail here)."""
+    from verification import agreement
+    scene = load_scene("A")
+    ref_label = run_label("fe", 2)
+    runs = {run_label(m, d): agreement.sampled(scene, methods.solver(m)(scene, 0.2, degree=d))
+            for m, d in (("fe", 2), ("xfem", 1))}
+    table = agreement.table(scene, runs, ref_label)
+    differs = []
+    for pid, ref in runs[ref_label].items():
+        keep = agreement.kept_samples(scene, ref, table.exclude)
+        fig = plots.profile_figure(pid, {label: r[pid] for label, r in runs.items()}, ref_label,
+                                   sizes=table.sizes(pid))
+        for k, q in enumerate(ref.names[3:]):
+            row = next(a for a in table.rows if (a.profile, a.quantity) == (pid, q))
+            panel = fig.axes[2 * k + 1]
+            [line] = [line for line in panel.get_lines() if line.get_label() == run_label("xfem", 1)]
+            assert np.max(np.abs(line.get_ydata()[keep])) == pytest.approx(100 * row.worst, rel=tol.PLOT_TABLE_RTOL)
+            assert panel.get_ylabel() == f"Δ{plots.SYMBOLS[q]} / max{plots.size_symbol(q, row.against)} (%)"
+            assert reference_text(ref_label) in panel.get_title(loc="right")
+            if not np.isclose(row.size, np.max(np.abs(ref.columns[q][keep])), rtol=tol.PLOT_TABLE_RTOL):
+                differs.append((pid, q, plots.size_symbol(q, row.against)))
+        plots.pyplot().close(fig)
+    assert ("A5", "gN", "|g|") in differs, differs

@@ -156,7 +156,7 @@ def test_the_status_compared_is_the_one_the_profiles_tractions_follow():
     estimate = estimate_runs(scene, runs, exclude=0.0)
     named = {f"{pid}:{q}" for pid, qs in estimate.profiles.items() for q in qs}
     assert "H:ux" in named and named <= estimate.unsettled
-    assert any("so no estimate of this run is asymptotic" in w for w in estimate.warnings)
+    assert any("no estimate of this run is asymptotic" in w for w in estimate.warnings)
 
 
 def test_a_change_in_the_solves_own_map_is_a_status_change_where_the_profile_shows_none():

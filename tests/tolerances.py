@@ -1561,3 +1561,20 @@ LAWWARN_SLOPES = (0.3, 10.0)
 #: 2026-11-29, fe and xfem P1 at h = 0.1, the top pushed 3e-6 past τ_c: stuck
 #: up to 5.6e-6 of τ_c above it, 59 or 60 pairs by the BLAS kernel).
 LAWWARN_RUN_ALPHA = 1e9
+
+# --- lows (2026-11-29): one scale for the plots and the agreement table, short estimate warnings ---
+#: A Δ panel's largest kept |Δ| (each difference over the table's size, in
+#: percent) against the table's worst sample (the largest |Δ| over the same
+#: size): the same two numbers divided in a different order (Δ / (size/100)
+#: against |Δ| / size · 100), a few ulps apart; a panel on another scale
+#: (newuser32's max |t_T| instead of |t|: 17 % for 0.83 %) is off by the
+#: ratio of the two sizes: max |g| / max |g_N| = 16 on scene A's A5 at
+#: h = 0.2 (fe P2; 2.50e-4 m against 1.52e-5 m).
+PLOT_TABLE_RTOL = 1e-12
+#: The longest an estimate warning may be, in characters (the run's name
+#: summary.md puts before it aside): its quantities, what was found with
+#: each number beside its unit, and the row of docs/error-estimates.md
+#: that explains it.  newuser32's block (tests/scenes/estimate_warnings_block.toml,
+#: every method at h = 1 mm → 0.5 mm) gave ten lines of 246-358 before,
+#: 146-183 since (2026-11-29), six quantities named on the longest.
+ESTIMATE_WARNING_CHARS = 200

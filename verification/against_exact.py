@@ -38,6 +38,8 @@ quadrature weight) each covers.
 """
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 
 from contactcore import ContactError, Scene
@@ -108,16 +110,25 @@ def floor_of(scene: Scene, exact: dict, quantity: str, floors: dict | None = Non
     return max(gap_floors(scene).get(quantity, 0.0), size_floor(quantity, user_floors(floors), exact, scene=scene))
 
 
+def vector_of(prof, q: str) -> tuple[str, ...]:
+    """The components ``q`` of profile ``prof`` is measured against: Γ's
+    vector (:data:`VECTORS`) where the profile holds both its components,
+    else ``q`` alone."""
+    both = VECTORS.get(q, (q,))
+    return both if len(both) > 1 and set(both) <= set(prof.names) else (q,)
+
+
 def scales(scene: Scene, exact: dict, floors: dict | None = None) -> dict:
     """``(profile id, quantity) -> per-sample scale`` of every quantity of
     the exact answer: for each Γ component a profile holds, |g| or |t| (its
-    own |value| where the profile lacks the vector's other component), for
-    any other its own |value|; floored (:func:`floor_of`, module doc)."""
+    own |value| where the profile lacks the vector's other component,
+    :func:`vector_of`), for any other its own |value|; floored
+    (:func:`floor_of`, module doc)."""
     out = {}
     for pid, prof in exact.items():
         for q in prof.names[3:]:
-            a, b = VECTORS.get(q, (q, q))
-            size = (np.hypot(prof.columns[a], prof.columns[b]) if {a, b} <= set(prof.names) and a != b
+            vector = vector_of(prof, q)
+            size = (np.hypot(*(prof.columns[c] for c in vector)) if len(vector) > 1
                     else np.abs(prof.columns[q]))
             out[pid, q] = np.hypot(size, floor_of(scene, exact, q, floors))
     return out
@@ -126,8 +137,13 @@ def scales(scene: Scene, exact: dict, floors: dict | None = None) -> dict:
 def differences(scene: Scene, label: str, penalty: dict, exact: dict, floors: dict | None = None) -> list[Agreement]:
     """Every profile quantity of ``penalty`` against ``exact`` (id ->
     ProfileData), as :class:`~verification.agreement.Agreement` rows of
-    ``label`` (module doc), sizes floored by ``floors`` (:func:`scales`)."""
-    return profile_agreements(scene, label, penalty, exact, default_exclusion(scene), scales(scene, exact, floors))
+    ``label`` (module doc), sizes floored by ``floors`` (:func:`scales`),
+    each row's ``against`` naming its vector (``|(gN, gT)|``; "" the
+    quantity itself)."""
+    rows = profile_agreements(scene, label, penalty, exact, default_exclusion(scene), scales(scene, exact, floors))
+    named = {(pid, q): vector_of(prof, q) for pid, prof in exact.items() for q in prof.names[3:]}
+    return [dataclasses.replace(a, against="|(" + ", ".join(named[a.profile, a.quantity]) + ")|")
+            if len(named[a.profile, a.quantity]) > 1 else a for a in rows]
 
 
 def largest(scene: Scene, exact: dict, row: Agreement, vector_scales: dict, floors: dict | None = None

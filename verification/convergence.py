@@ -25,6 +25,7 @@ from pathlib import Path
 import numpy as np
 
 from contactcore import tolerances as tol
+from contactcore.labels import run_label
 
 from . import files, pool
 from .closed_forms import interface_patch, pressurised_rod, twisted_rod
@@ -73,7 +74,7 @@ def run_case(name: str, variants=VARIANTS) -> list[dict]:
         for h in hs:
             tried = attempt(solve, case.scene, h, degree=degree, estimate_condition=False, **on_comm)
             if tried.refused:
-                log.warning("%s %s p%d h=%g: refused: %s", name, method, degree, h, tried.message)
+                log.warning("%s %s h=%g: refused: %s", name, run_label(method, degree), h, tried.message)
                 mine.append({"case": name, "method": method, "degree": degree, "h": h, "message": tried.message})
                 continue
             err, ref = l2_error(case.scene, tried.result.fields, case, h=h / 2)
@@ -81,7 +82,7 @@ def run_case(name: str, variants=VARIANTS) -> list[dict]:
             mine.append({"case": name, "method": method, "degree": degree, "h": h, "dofs": tried.result.dofs,
                          "total": tried.result.timings.total, "error": err / ref,
                          "message": "; ".join(tried.result.solver.warnings)})
-            log.info("%s %s p%d h=%g: %d DOFs, L2 error %.2e", name, method, degree, h, tried.result.dofs,
+            log.info("%s %s h=%g: %d DOFs, L2 error %.2e", name, run_label(method, degree), h, tried.result.dofs,
                      err / ref)
         rate, last = rate_of(hs, errors), last_rate_of(hs, errors)
         for row in mine:

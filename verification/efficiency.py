@@ -116,9 +116,9 @@ def soonest(rows: list[dict]) -> str:
              for k in keys}
     order = sorted(keys, key=times.get)
     first, *rest = order
-    others = ", ".join(f"{m} p{d} {times[(m, d)]:.2f} s" for m, d in rest)
+    others = ", ".join(f"{label(m, d)} {times[(m, d)]:.2f} s" for m, d in rest)
     return (f"At a worst-profile error of {target:.2e} (the best that every method reaches here), "
-            f"{first[0]} p{first[1]} gets there soonest, in {times[first]:.2f} s"
+            f"{label(*first)} gets there soonest, in {times[first]:.2f} s"
             + (f"; then {others}." if rest else "."))
 
 
@@ -210,8 +210,8 @@ def efficiency(scene_name: str, variants, ladders: dict, ref_h: float | None, ex
         log.info("reference: fe P2 h=%g, %d DOFs, %.1f s", ref_h, ref_dofs, ref_time)
     measure = functools.partial(_measure, scene_name, ref=ref, exclude=exclude, estimated=estimated or ref is None)
     for k, row in enumerate(pool.map_cases(measure, rungs, workers, fresh=fresh), 1):
-        log.info("[%d/%d] %s p%d h=%g: %d DOFs, %.2f s, worst error %.2e (%s)%s", k, len(rungs), row["method"],
-                 row["degree"], row["h"], row["dofs"], row["total"], row["error"], row["worst"],
+        log.info("[%d/%d] %s h=%g: %d DOFs, %.2f s, worst error %.2e (%s)%s", k, len(rungs),
+                 label(row["method"], row["degree"]), row["h"], row["dofs"], row["total"], row["error"], row["worst"],
                  f", estimated {row['estimate']:.2e}" if "estimate" in row and ref is not None else "")
         rows.append(row)
     measured_by = pool.workers_label(workers)
@@ -244,7 +244,7 @@ def _warnings_section(rows: list[dict]) -> str:
     """Under the table: each rung's estimate warnings (as `run --estimate`
     gives them; docs/error-estimates.md, "The warnings"), which say where
     its estimated error is not to be trusted."""
-    lines = [f"- {r['method']} p{r['degree']} h = {r['h']:g}: {w}" for r in rows for w in r.get("estimate_warnings", ())]
+    lines = [f"- {label(r['method'], r['degree'])} h = {r['h']:g}: {w}" for r in rows for w in r.get("estimate_warnings", ())]
     return ("\n\nWarnings of the estimates (the rung's estimate is not to be trusted as it stands; "
             "docs/error-estimates.md, \"The warnings\"):\n\n" + "\n".join(lines) + "\n") if lines else ""
 

@@ -31,9 +31,10 @@ from pathlib import Path
 
 from contactcore import load_scene, sample_profiles, scene_text
 from contactcore.budget import check_budget, check_together
+from contactcore.labels import reference_text, run_label
 
 from . import files, methods, plots, pool
-from .agreement import agreements, default_exclusion
+from .agreement import agreements, default_exclusion, profile_agreements
 
 log = logging.getLogger("verification")
 
@@ -70,7 +71,7 @@ def reproduce_scene(scene_name: str, out: Path, ref_h: float | None = None) -> t
     warnings the solvers gave."""
     scene = load_scene(scene_name)
     ref_h = ref_h or scene.h / REFERENCE_REFINEMENT
-    reference, ref = _solve(scene, "fe", out / scene.name / "reference", "reference (fe P2)", h=ref_h, degree=2,
+    reference, ref = _solve(scene, "fe", out / scene.name / "reference", reference_text(run_label("fe", 2)), h=ref_h, degree=2,
                             estimate_condition=False)
     runs, warnings = {}, []
     for name in methods.METHODS:
@@ -86,10 +87,12 @@ def reproduce_scene(scene_name: str, out: Path, ref_h: float | None = None) -> t
             rows.append({"scene": scene.name, "profile": pid, "quantity": q, "class": kind, "method": label,
                          "all_samples": everywhere[(pid, q)], "away_from_singular_points": value,
                          "exclude": exclude})
+    sizes = profile_agreements(scene, "", next(iter(runs.values()))[1], ref, exclude)  # the reference's alone
     for prof in scene.profiles:
         overlay = {label: got[prof.id] for label, got in runs.values()}
-        overlay[f"reference: fe P2, h = {ref_h:g} ({reference.dofs} DOFs)"] = ref[prof.id]
-        plots.plot_profile(out / "figures" / f"{figure_name(prof)}.png", prof.title, overlay)
+        overlay[f"{run_label('fe', 2)}, h = {ref_h:g} ({reference.dofs} DOFs)"] = ref[prof.id]  # drawn as the reference
+        plots.plot_profile(out / "figures" / f"{figure_name(prof)}.png", prof.title, overlay,
+                           sizes={a.quantity: (a.size, a.against) for a in sizes if a.profile == prof.id})
     return rows, warnings
 
 

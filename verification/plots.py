@@ -1,10 +1,17 @@
 """Plots of profiles, overlaying methods: one PNG per profile.
 
 Every curve of a (method, degree) has its own colour, line style and
-marker, so coincident curves stay distinguishable; under each overlay a
-panel shows each method minus the reference (the run's ``--reference``,
-else fe at its highest degree, or the first curve) relative to the
-reference's largest |value|, in percent; the overlays are in the
+marker, so coincident curves stay distinguishable; the reference's is
+named ``reference: fe P2`` (:func:`contactcore.labels.reference_text`).
+Under each overlay a panel shows each method minus the reference (the
+run's ``--reference``, else fe at its highest degree, or the first curve)
+over the size the agreement table measures it against (the reference's
+largest |t| for t_N and t_T, |σ| for a stress, over the samples the table
+keeps: :meth:`verification.agreement.AgreementTable.sizes`), in percent,
+so that the panel's largest kept |Δ| is the table's worst sample; the
+panel's y label names that size (``Δt_T / max|t| (%)``); without sizes
+(a caller with no table) the panel is in the quantity's unit.  The
+overlays are in the
 quantity's unit in the scene's units (docs/scenes.md, "Units"), stresses
 of an SI scene in kPa, MPa or GPa as fits (:func:`axis_unit`).
 Legends sit outside the axes,
@@ -20,7 +27,9 @@ from pathlib import Path
 import numpy as np
 
 from contactcore import ProfileData
+from contactcore.labels import reference_text, run_label
 from contactcore.scene import Units
+from contactcore.scene import DISPLACEMENT_QUANTITIES, STRESS_QUANTITIES
 from contactcore.tolerances import PLOT_MIN_Y_SPAN
 
 from .files import STRESS_COLUMNS, atomic_path, column_unit, parameter_unit
@@ -39,6 +48,9 @@ def pyplot():
 #: Each quantity's symbol on a plot; its unit is the scene's (:func:`axis_unit`).
 SYMBOLS = {"sxx": "σxx", "syy": "σyy", "sxy": "σxy", "tN": "t_N", "tT": "t_T", "gN": "g_N", "gT": "g_T", "ux": "u_x",
            "uy": "u_y"}
+#: The symbol of a vector's or tensor's size (:data:`verification.agreement.GROUPS`)
+#: when every component of it is measured: ``|t|``, ``|σ|``.
+GROUP_SYMBOLS = {("tN", "tT"): "t", ("gN", "gT"): "g", STRESS_QUANTITIES: "σ", DISPLACEMENT_QUANTITIES: "u"}
 #: The stress units of an SI scene's axis, from the largest: the first whose
 #: factor is at most the largest |value| shown (Pa below 1 kPa).
 STRESS_PREFIXES = ((1e9, "GPa"), (1e6, "MPa"), (1e3, "kPa"), (1.0, "Pa"))
@@ -56,6 +68,18 @@ def axis_unit(q: str, scale: float, units: Units = Units()) -> tuple[float, str]
     if q in STRESS_COLUMNS and units.stress == STRESS_PREFIXES[-1][1]:
         factor, unit = next(((f, u) for f, u in STRESS_PREFIXES if scale >= f), STRESS_PREFIXES[-1])
     return factor, f"{SYMBOLS[q]} ({unit})"
+
+
+def size_symbol(q: str, against: str = "") -> str:
+    """The size a Δ panel of ``q`` is over, in symbols: ``against`` (an
+    :class:`~verification.agreement.Agreement`'s: ``|(tN, tT)|``, or "" for
+    ``q`` itself) as ``|t|`` where it holds a whole group
+    (:data:`GROUP_SYMBOLS`), else its components' symbols (``|σxy|``,
+    ``|(σxx, σxy)|``)."""
+    names = re.findall(r"\w+", against) or [q]
+    whole = next((s for g, s in GROUP_SYMBOLS.items() if set(g) == set(names)), None)
+    shown = [SYMBOLS.get(n, n) for n in names]
+    return f"|{whole}|" if whole else f"|{shown[0]}|" if len(shown) == 1 else f"|({', '.join(shown)})|"
 
 
 def xlabel(parameter: str, units: Units = Units()) -> str:
@@ -131,9 +155,10 @@ def legend_outside(ax, **kw) -> None:
 
 
 def plot_profile(path: Path, title: str | tuple[str, ...], runs: dict[str, ProfileData], reference: str | None = None,
-                 floors: dict[str, float] | None = None, units: Units = Units(), left_out=None) -> Path:
+                 floors: dict[str, float] | None = None, units: Units = Units(), left_out=None,
+                 sizes: dict[str, tuple[float, str]] | None = None) -> Path:
     """Write :func:`profile_figure` as a PNG."""
-    return save(profile_figure(title, runs, reference, floors, units, left_out), path)
+    return save(profile_figure(title, runs, reference, floors, units, left_out, sizes), path)
 
 
 def heading(pid: str, *parts: str) -> str:
@@ -145,16 +170,20 @@ def heading(pid: str, *parts: str) -> str:
 
 
 def profile_figure(title: str | tuple[str, ...], runs: dict[str, ProfileData], reference: str | None = None,
-                   floors: dict[str, float] | None = None, units: Units = Units(), left_out=None):
+                   floors: dict[str, float] | None = None, units: Units = Units(), left_out=None,
+                   sizes: dict[str, tuple[float, str]] | None = None):
     """One figure for a profile, titled :func:`heading` of its id and
     ``title`` (a string, or the parts of one): per quantity, the methods
-    overlaid and, under it, each method minus the ``reference`` curve (default
-    :func:`reference_label`), relative to the largest |value| of the
-    reference (see module doc), floored as ``floors`` say (quantity ->
-    floor: an exact law's gaps, :func:`verification.agreement.floors`);
-    the axes labelled in the scene's ``units``.  ``left_out`` (a mask of
-    the reference's samples, or None): the samples the agreement table
-    leaves out near singular points, shaded grey in the difference panels."""
+    overlaid (the ``reference`` curve, default :func:`reference_label`,
+    named :func:`~contactcore.labels.reference_text`) and, under it, each
+    method minus the reference over ``sizes[q]`` (quantity -> ``(size,
+    against)``, :meth:`verification.agreement.AgreementTable.sizes`: the
+    agreement table's scale; see module doc), which ``floors`` (quantity ->
+    floor: an exact law's gaps, :func:`verification.agreement.floors`)
+    floored and the panel's title says; the axes labelled in the scene's
+    ``units``.  ``left_out`` (a mask of the reference's samples, or None):
+    the samples the agreement table leaves out near singular points,
+    shaded grey in the difference panels."""
     first = next(iter(runs.values()))
     quantities = [n for n in first.names if n not in ("s", "x", "y")]
     ref = reference_of(runs, reference)
@@ -167,14 +196,16 @@ def profile_figure(title: str | tuple[str, ...], runs: dict[str, ProfileData], r
         scale = max(float(np.nanmax(np.abs(p.columns[q]))) for p in runs.values())
         factor, unit = axis_unit(q, scale, units)
         for i, (label, prof) in enumerate(runs.items()):
-            ax.plot(prof.columns["s"], prof.columns[q] / factor, **style(label, i, len(prof.columns["s"])))
+            named = {"label": reference_text(label)} if label == ref and rows == 2 else {}
+            ax.plot(prof.columns["s"], prof.columns[q] / factor, **{**style(label, i, len(prof.columns["s"])), **named})
         ax.set_ylabel(unit)
         ax.grid(alpha=0.3)
         keep_span(ax, scale / factor)
         if k == 0:
             legend_outside(ax)
         if rows == 2:
-            _difference_panel(axes[rows * k + 1, 0], q, runs, ref, (floors or {}).get(q, 0.0), units, left_out)
+            _difference_panel(axes[rows * k + 1, 0], q, runs, ref, (floors or {}).get(q, 0.0), units, left_out,
+                              (sizes or {}).get(q))
     axes[-1, 0].set_xlabel(xlabel(first.parameter, units))
     parts = (title,) if isinstance(title, str) else title
     axes[0, 0].set_title(heading(first.id, *parts), fontsize=10, wrap=True)
@@ -199,28 +230,34 @@ def _left_out_spans(s: np.ndarray, left_out: np.ndarray) -> list[tuple[float, fl
 
 
 def _difference_panel(ax, q: str, runs: dict[str, ProfileData], ref: str, floor: float = 0.0,
-                      units: Units = Units(), left_out=None) -> None:
+                      units: Units = Units(), left_out=None, size: tuple[float, str] | None = None) -> None:
     """Each curve but the reference minus the reference, at its own samples,
-    relative to the reference's largest |value| on the profile (a pointwise
-    ratio would blow up where the reference crosses zero), or to
-    ``sqrt(max|value|² + floor²)``, in percent; the floor named in ``q``'s
-    unit in the scene's ``units``."""
+    over ``size`` (``(value, against)``: the agreement table's largest scale
+    of ``q`` over the samples it keeps, :class:`~verification.agreement.Agreement`'s
+    ``size``, ``floor`` in it; a pointwise ratio would blow up where the
+    reference crosses zero) in percent, the y label naming it
+    (:func:`size_symbol`); without a size, in ``q``'s unit.  The floor is
+    named in ``q``'s unit in the scene's ``units``."""
     s_ref, v_ref = runs[ref].columns["s"], runs[ref].columns[q]
-    size = float(np.hypot(np.nanmax(np.abs(v_ref)), floor)) or 1.0
+    relative = size is not None and np.isfinite(size[0]) and size[0] > 0
+    factor, unit = ((size[0] / PERCENT, f"Δ{SYMBOLS.get(q, q)} / max{size_symbol(q, size[1])} (%)") if relative
+                    else axis_unit(q, float(np.nanmax(np.abs(v_ref))), units))
     for i, (label, prof) in enumerate(runs.items()):
         if label != ref:
             s = prof.columns["s"]
-            ax.plot(s, PERCENT * (prof.columns[q] - np.interp(s, s_ref, v_ref)) / size, **style(label, i, len(s)))
+            ax.plot(s, (prof.columns[q] - np.interp(s, s_ref, v_ref)) / factor, **style(label, i, len(s)))
     ax.axhline(0.0, color="black", lw=0.6)
     ax.grid(alpha=0.3)
-    ax.set_ylabel(f"Δ{SYMBOLS.get(q, q)} / max|ref| (%)")
-    keep_span(ax, PERCENT)
+    ax.set_ylabel(unit if relative else f"Δ{unit}")
+    keep_span(ax, PERCENT if relative else float(np.nanmax(np.abs(v_ref))) / factor)
     spans = _left_out_spans(s_ref, left_out) if left_out is not None and np.any(left_out) else []
     for a, b in spans:
         ax.axvspan(a, b, color="grey", alpha=LEFT_OUT_SHADE, lw=0)
     floored = f", floored at {floor:.3g} {column_unit(q, units)}" if floor else ""
     shaded = "; grey: left out of summary.md's table (near singular points)" if spans else ""
-    ax.set_title(f"each minus {ref}, relative to its largest |{q}|{floored}{shaded}", fontsize=8, loc="right")
+    over = (f", over its largest {size_symbol(q, size[1])} away from singular points" if relative
+            else "")
+    ax.set_title(f"each minus the {reference_text(ref)}{over}{floored}{shaded}", fontsize=8, loc="right")
 
 
 def _no_offsets(fig) -> None:
@@ -252,7 +289,7 @@ def loglog_by_variant(path: Path, rows: list[dict], x: str, y: str, xlabel: str,
     for i, key in enumerate(dict.fromkeys((r["method"], r["degree"]) for r in rows)):
         mine = [r for r in rows if (r["method"], r["degree"]) == key and y in r]
         if mine:
-            ax.loglog([r[x] for r in mine], [r[y] for r in mine], **style(f"{key[0]} p{key[1]}", i))
+            ax.loglog([r[x] for r in mine], [r[y] for r in mine], **style(run_label(*key), i))
         if mine and bars:
             ax.errorbar([r[x] for r in mine], [r[y] for r in mine], fmt="none", capsize=2, alpha=0.6,
                         yerr=[[r[y] - r[bars[0]] for r in mine], [r[bars[1]] - r[y] for r in mine]],

@@ -37,6 +37,7 @@ from contactcore.errors import SolverError, SolverOptionError, os_problem
 from contactcore import estimate as estimates
 from contactcore import tolerances as tol
 from contactcore.budget import check_budget
+from contactcore.labels import reference_text, run_label
 from contactcore.scene import check_resolution, smallest_dimension
 
 from . import against_exact as exact_gap
@@ -94,7 +95,7 @@ def _summary_table(summaries: list[dict]) -> str:
     for s in summaries:
         t, sv = s["timings"], s["solver"]
         cond = "—" if sv["condition"] is None else f"{sv['condition']:.2e}"
-        lines.append(f"| {s['method']} | {s['degree']} | {s['dofs']} | {t['mesh']:.3f} | {t['assembly']:.3f} | "
+        lines.append(f"| {s.get('label', s['method'])} | {s['degree']} | {s['dofs']} | {t['mesh']:.3f} | {t['assembly']:.3f} | "
                      f"{t['solve']:.3f} | {t['total']:.3f} |{_estimate_cells(s) if estimated else ''} "
                      f"{sv['residual']:.1e} | {cond} |")
     footnote = [NOT_ESTIMATED] if estimated and any("estimate" not in s for s in summaries) else []
@@ -107,11 +108,13 @@ def _summary_table(summaries: list[dict]) -> str:
 
 def _grouped_warnings(summaries: list[dict]) -> list[str]:
     """summary.md's warning lines: each text once, after the runs that
-    gave it (``- fe P1, xfem P1: ...``), in the order first given (a scene's own
+    gave it (``- fe P1, xfem P1: ...``, each run's
+    :func:`~contactcore.labels.run_label`, the reference's and an exact
+    twin's their rows' ``label``), in the order first given (a scene's own
     warning, the same for every method, is not repeated per method)."""
     runs: dict[str, list[str]] = {}
     for s in summaries:
-        run = f"{s['method']} P{s['degree']}"
+        run = s.get("label", run_label(s["method"], s["degree"]))
         for w in s["solver"]["warnings"] + s.get("estimate", {}).get("warnings", []):
             if run not in runs.setdefault(w, []):
                 runs[w].append(run)
@@ -120,8 +123,9 @@ def _grouped_warnings(summaries: list[dict]) -> list[str]:
 
 def _methods_note(summaries: list[dict]) -> list[str]:
     """Under the table: what each method run is (its options class's
-    ``about``), and what the condition column holds."""
-    names = list(dict.fromkeys(s["method"] for s in summaries if s["method"] in methods.METHODS))
+    ``about``; not the reference's row, which its ``label`` names), and
+    what the condition column holds."""
+    names = list(dict.fromkeys(s["method"] for s in summaries if s["method"] in methods.METHODS and "label" not in s))
     lines = [f"- {n}: {methods.discretisation(n).about}" for n in names if methods.discretisation(n).about]
     return ["", "Methods:", *lines, "- condition: MUMPS's estimate of the tangent's condition number, computed only "
             "where asked (the `sweeps` driver, or `estimate_condition=True` in the Python API; — here)"] if lines else []
@@ -190,21 +194,26 @@ def law_line(scene: Scene) -> str:
     return f"Γ's law: `{law.name}`, enforced {how}" + (f"; {values}" if values else "") + ".\n\n"
 
 
-def agreement_section(scene: Scene, profiles: dict, reference: str | None = None, floors: dict | None = None) -> str:
-    """``summary.md``'s agreement of every run with the reference of the
-    plots' difference panels (``reference``, else fe at its highest degree,
-    else the first run): :func:`verification.agreement.table` of
-    ``profiles`` (id -> label -> ProfileData) with ``floors`` (quantity ->
-    value in its unit), the figures :func:`~verification.agreement.compare`
-    gives."""
+def agreement_table(scene: Scene, profiles: dict, reference: str | None = None, floors: dict | None = None):
+    """The agreement of every run with the reference of the plots'
+    difference panels (``reference``, else fe at its highest degree, else
+    the first run): :func:`verification.agreement.table` of ``profiles``
+    (id -> label -> ProfileData) with ``floors`` (quantity -> value in its
+    unit), the figures :func:`~verification.agreement.compare` gives; None
+    for one run (nothing compared)."""
     runs = {}
     for pid, by_label in profiles.items():
         for label, prof in by_label.items():
             runs.setdefault(label, {})[pid] = prof
     if len(runs) < 2:
-        return ""
-    reference = plots.reference_of(runs, reference)
-    return "\n## Agreement with the reference\n\n" + agreement.table(scene, runs, reference, floors=floors).markdown()
+        return None
+    return agreement.table(scene, runs, plots.reference_of(runs, reference), floors=floors)
+
+
+def agreement_section(compared) -> str:
+    """``summary.md``'s section of :func:`agreement_table`'s table
+    ``compared`` ("" for None)."""
+    return "" if compared is None else "\n## Agreement with the reference\n\n" + compared.markdown()
 
 
 def _estimate_cells(summary: dict) -> str:
@@ -280,8 +289,9 @@ DEFAULT_REFERENCE = ("fe", 2)
 
 
 def reference_label(reference: tuple[str, int] | None) -> str | None:
-    """The curve label of a ``(method, degree)`` reference."""
-    return None if reference is None else f"{reference[0]} (p{reference[1]})"
+    """The curve label of a ``(method, degree)`` reference
+    (:func:`~contactcore.labels.run_label`: ``fe P2``)."""
+    return None if reference is None else run_label(*reference)
 
 
 def _solve_reference(scene, reference, h, paper, petsc_options, out: Path, profiles: dict, summaries: list) -> None:
@@ -290,11 +300,11 @@ def _solve_reference(scene, reference, h, paper, petsc_options, out: Path, profi
     write its profiles under ``out/reference`` and add them to
     ``profiles`` and its summary to ``summaries``."""
     name, degree = reference
-    log.info("scene %s: solving the reference, %s (degree %d)", scene.name, name, degree)
+    log.info("scene %s: solving the %s", scene.name, reference_text(run_label(name, degree)))
     solve, on_comm = pool.solver(name) if pool.under_mpi_pool() else (methods.solver(name), {})
     result = _as_reference(reference, "the methods asked for solved: compare them", solve, scene, h, degree=degree,
                            paper=paper, **methods.options_for(name, petsc_options=petsc_options), **on_comm)
-    summaries.append({**result.summary(), "method": f"{name} (reference)"})
+    summaries.append({**result.summary(), "label": reference_text(run_label(name, degree))})
     for prof in sample_profiles(scene, result.fields, result.interface):
         files.write_profile_csv(out / "reference" / "profiles" / f"{prof.id}.csv", prof)
         profiles.setdefault(prof.id, {})[reference_label(reference)] = prof
@@ -307,7 +317,7 @@ def _as_reference(reference, what: str, call, *args, **kwargs):
     reference, ``--reference none``, or with another."""
     name, degree = reference
     try:
-        return _prefixed(f"{name} (the reference, degree {degree})", call, *args, **kwargs)
+        return _prefixed(reference_text(run_label(name, degree)), call, *args, **kwargs)
     except SolverOptionError:
         raise
     except SolverError as exc:
@@ -521,7 +531,7 @@ def _write_method(out: Path, scene: Scene, name: str, result, est, fields: bool,
     has it, the response along the path); its profiles, path and
     estimate join ``profiles``, ``paths`` and ``estimated`` under its
     label.  Returns its summary."""
-    label = f"{name} (p{result.degree})"
+    label = run_label(name, result.degree)
     summary, sampled = _written_profiles(out / name, scene, result, est, floors)
     if label in gaps:
         summary["against_exact"] = gaps[label]
@@ -572,7 +582,7 @@ def _against_exact(out: Path, scene: Scene, twin: Scene, name: str, result, h, d
     ``floors``) joins ``gaps`` under the run's label and its summary.json;
     its estimate is floored alike.  Returns the exact run's summary
     (a row of summary.md's table)."""
-    label, shown = f"{name} (p{result.degree})", f"{name} ({exact_gap.EXACT})"
+    label, shown = run_label(name, result.degree), f"{name} ({exact_gap.EXACT})"
     exact, est = _solve(twin, name, h, degree, paper, estimate, options, shown)
     summary, sampled = _written_profiles(out / name / "exact", twin, exact, est, floors)
     penalty, exact_profiles = agreement.sampled(scene, result), {p.id: p for p in sampled}
@@ -585,7 +595,8 @@ def _against_exact(out: Path, scene: Scene, twin: Scene, name: str, result, h, d
     for pid in penalty if draw else ():
         plots.plot_profile(out / "plots" / f"exact_{name}_{pid}.png", (titles[pid], f"{label}, penalty against exact"),
                            {label: penalty[pid], exact_gap.EXACT: exact_profiles[pid]}, exact_gap.EXACT,
-                           agreement.floors(twin), scene.units)
+                           agreement.floors(twin), scene.units,
+                           sizes={a.quantity: (a.size, a.against) for a in rows if a.profile == pid})
     return summary
 
 
@@ -596,11 +607,12 @@ def _write_summary(out: Path, scene: Scene, summaries: list[dict], profiles: dic
     ``summary.md``; returns its text.  ``gaps``: each method's penalty
     against exact (label -> record), if asked."""
     titles, exclude = {p.id: p.title for p in scene.profiles}, default_exclusion(scene)  # the agreement table's
+    table = agreement_table(scene, profiles, ref, floors)
     for pid, runs in profiles.items() if draw else ():
         left_out = ~agreement.kept_samples(scene, runs[plots.reference_of(runs, ref)], exclude)
         plots.plot_profile(out / "plots" / f"{pid}.png", titles[pid], runs, ref, agreement.floors(scene, floors),
-                           scene.units, left_out)
-    compared = agreement_section(scene, profiles, ref, floors)
+                           scene.units, left_out, table.sizes(pid) if table else None)
+    compared = agreement_section(table)
     text = (f"# Scene {plots.heading(scene.name, scene.title)}\n\n" + conventions(scene.units, files.ranks())
             + law_line(scene) + _summary_table(summaries) + compared)
     if compared and not estimated:

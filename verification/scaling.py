@@ -26,6 +26,7 @@ from pathlib import Path
 
 from contactcore import ContactError, load_scene
 from contactcore.budget import check_spread
+from contactcore.labels import run_label
 
 from . import files
 from .timing import COLUMNS as TIMING_COLUMNS
@@ -109,8 +110,9 @@ def scaling(scene: str, method_names, degrees, hs, ranks, out: Path, argv=(), al
         rows += [{"ranks": k, **row} for row in _timing_run(k, scene, method_names, degrees, hs, out / f"ranks_{k}")]
     rows = speedups(rows)
     for r in rows:
-        log.info("%s ranks, %s p%s h=%s: %s DOFs, mesh %.2f s, assembly %.2f s, solve %.2f s, total %.2f s "
-                 "(speed-up: assembly %.2f, solve %.2f, total %.2f)", r["ranks"], r["method"], r["degree"], r["h"],
+        log.info("%s ranks, %s h=%s: %s DOFs, mesh %.2f s, assembly %.2f s, solve %.2f s, total %.2f s "
+                 "(speed-up: assembly %.2f, solve %.2f, total %.2f)", r["ranks"], run_label(r["method"], r["degree"]),
+                 r["h"],
                  r["dofs"], *(r[s] for s in STAGES), r["speedup_assembly"], r["speedup_solve"],
                  r["speedup_total"])
     files.write_csv(out / "scaling.csv", rows, COLUMNS)

@@ -15,6 +15,7 @@ from pathlib import Path
 
 from contactcore import load_scene
 from contactcore.budget import check_budget
+from contactcore.labels import run_label
 
 from . import files, methods, pool
 
@@ -86,8 +87,8 @@ def timing(scene_names: list[str], method_names: list[str], degrees: list[int], 
                                  "mesh": t.mesh, "assembly": t.assembly, "solve": t.solve, "total": t.total,
                                  "solves": res.solver.solves, "factorisations": res.solver.factorisations,
                                  "backward_error": res.solver.backward_error})
-                    log.info("%s (%s), %s p%d h=%g: %d DOFs, mesh %.2f s, assembly %.2f s, solve %.2f s (%d solves, %d "
-                             "factorisations), total %.2f s", scene.name, scene.law.enforcement, name, degree, h, res.dofs, t.mesh,
+                    log.info("%s (%s), %s h=%g: %d DOFs, mesh %.2f s, assembly %.2f s, solve %.2f s (%d solves, %d "
+                             "factorisations), total %.2f s", scene.name, scene.law.enforcement, run_label(name, degree), h, res.dofs, t.mesh,
                              t.assembly, t.solve, res.solver.solves, res.solver.factorisations, t.total)
     out = Path(out)
     files.write_csv(out / "timing.csv", rows, COLUMNS)

@@ -52,7 +52,7 @@ class FE(Discretisation):
     # one field per body, each over the whole fitted mesh (contactcore.budget)
     field_copies: ClassVar[int] = 2
     about: ClassVar[str] = ("conforming P1/P2 triangles on a gmsh mesh that follows Γ, one field per body; at P1 "
-                            "its stress is each cell's own constant (the reference is fe at P2)")
+                            "its stress is each cell's own constant (the reference is fe P2)")
     # where a coarser map pays (Discretisation.coarse_map_min_unknowns):
     # exact C-coulomb's solve in one warm process, the map's CPU over the
     # search's from every point sticking (medians of 7 pairs, P2 5;

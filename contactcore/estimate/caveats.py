@@ -5,7 +5,11 @@ holds once the runs are in the asymptotic range, where the error is
 ``C h^p`` at an order theory allows
 (:func:`~contactcore.estimate.orders.order_range`).  Each function here
 finds quantities whose runs are not, and a ``*_warning(s)`` function
-says so in one line.
+says so in one short line: the quantities, what was found with its
+numbers in their units, and the row of docs/error-estimates.md, "The
+warnings", that explains it (:func:`see`), which holds the measured
+ranges and the reasons the line leaves out (newuser32: twelve lines of
+250-520 characters on one run).
 
 An observed order (three runs) further than
 :data:`~contactcore.tolerances.ORDER_MISMATCH` from the orders theory
@@ -69,6 +73,7 @@ import numpy as np
 
 from .. import tolerances as tol
 from ..geometry import Rectangle
+from ..labels import run_label
 from ..profiles import ProfileData
 from ..scaling import Sizes
 from ..scene import Scene
@@ -81,6 +86,20 @@ from .singular import far_from_singular, singular_points, stress_singular_points
 
 #: Γ's quantities: the gaps and the tractions.
 GAMMA = GAPS + TRACTIONS
+
+#: The page whose table, "The warnings", explains each estimate warning:
+#: a row per warning, its first words the name a line points to (:func:`see`).
+WARNINGS_PAGE = "docs/error-estimates.md"
+
+
+#: What a warning of a two-run estimate advises: a third run observes the order.
+OBSERVE = "try --estimate 3"
+
+
+def see(row: str) -> str:
+    """The end of a warning's line: where its explanation lives, the row
+    of :data:`WARNINGS_PAGE`'s table that begins with ``row``."""
+    return f" ({WARNINGS_PAGE}: {row})"
 
 
 def _orders(theory: tuple[float, float]) -> str:
@@ -95,8 +114,8 @@ def order_warnings(estimates: dict[str, dict[str, QuantityEstimate]]) -> list[st
     allows, or was clipped to an end of
     :data:`~contactcore.tolerances.ORDER_RANGE` (the differences do not
     shrink like a power of h at all)."""
-    return [f"{pid}:{q}: observed order {e.measured:.2f}{_clipped(e.measured)} against {_orders(e.theory)} in "
-            f"theory: the runs are not in the asymptotic range, the estimate is not to be trusted"
+    return [f"{pid}:{q}: observed order {e.measured:.2f}{_clipped(e.measured)}, {_orders(e.theory)} in theory: "
+            f"not asymptotic, not to be trusted{see('order')}"
             for pid, qs in estimates.items() for q, e in qs.items()
             if e.measured is not None and order_mismatch(e)]
 
@@ -138,10 +157,8 @@ def pollution_warning(scene: Scene, profiles: dict[str, dict[str, QuantityEstima
              if not e.observed and e.order >= POLLUTED_ORDER]
     if not names or not len(singular_points(scene)):
         return []
-    return [f"{', '.join(names)}: estimated at order {POLLUTED_ORDER} from two runs, but the domain has singular "
-            f"points (corners, Γ's ends) which, where they slow such quantities to 1.5-2 everywhere, make the "
-            f"estimate 2-7 times too small; where they do not, it may be right (0.73-1.10 on the 12 entries named "
-            f"on A, B, C): --estimate 3 observes the order"]
+    return [f"{', '.join(names)}: estimated at order {POLLUTED_ORDER} from two runs on a domain with singular "
+            f"points: may be 2-7 times too small; {OBSERVE}{see('pollution')}"]
 
 
 def exact_tractions(scene: Scene, profiles: dict[str, dict[str, QuantityEstimate]]) -> list[str]:
@@ -171,10 +188,8 @@ def exact_traction_warning(names: list[str]) -> list[str]:
     estimates to warn of")."""
     if not names:
         return []
-    return [f"{', '.join(names)}: an exact law's traction on Γ is estimated from two runs at order 1, the least "
-            f"theory allows; it often converges faster, and the estimate is then too large (measured up to 13.7 "
-            f"times the error), but not always (0.19 on one of 82 entries measured): an indication only "
-            f"(--estimate 3 observes the order)"]
+    return [f"{', '.join(names)}: an exact law's traction on Γ at order 1 from two runs: often too large (up to "
+            f"13.7 times), not always; {OBSERVE}{see('exact tractions')}"]
 
 
 def fast_gamma(profiles: dict[str, dict[str, QuantityEstimate]], facts: MethodFacts) -> list[str]:
@@ -208,14 +223,10 @@ def fast_gamma_warning(names: list[str], method: str, degree: int, observed: boo
     if not names:
         return []
     if observed:
-        return [f"{', '.join(names)}: {method} P{degree}'s gaps and tractions on Γ: the runs' differences shrink "
-                f"faster than theory allows the error ({degree + 1}, the order taken), and where EFGM's "
-                f"quadrature sets that error they do not see it: the estimate is an indication only, off either "
-                f"way (measured 0.49-1.14 times the error from three runs)"]
-    return [f"{', '.join(names)}: {method} P{degree}'s gaps and tractions on Γ often converge faster than the order "
-            f"the estimate takes from two runs ({degree + 1}), but where EFGM's quadrature sets their error they do "
-            f"not: the estimate is an indication only, off either way (measured 0.55-10.6 times the error, above 2 "
-            f"on 80 of 128 entries, below 1 on 14) (--estimate 3 observes the order)"]
+        return [f"{', '.join(names)}: {run_label(method, degree)}'s gaps and tractions on Γ shrink faster than the "
+                f"order taken ({degree + 1}): off either way (0.49-1.14 times the error){see('fast Γ')}"]
+    return [f"{', '.join(names)}: {run_label(method, degree)}'s gaps and tractions on Γ at order {degree + 1} from "
+            f"two runs: off either way (0.55-10.6 times the error); {OBSERVE}{see('fast Γ')}"]
 
 
 def stencil_radius(record: dict, facts: MethodFacts, quantity: str) -> float:
@@ -342,23 +353,26 @@ def _spread(fine: ProfileData, coarse: ProfileData | None, q: str, within: np.nd
 def unsettled_warnings(found: dict[str, dict[str, tuple[float, float]]], h: float, feature: float,
                        length: str = "m", thin: float = np.inf) -> list[str]:
     """One line per cause of :func:`unsettled` and per stencil, naming the
-    quantities and the coarse h from which the cause is gone; its lengths
-    in the scene's unit named ``length`` (:class:`~contactcore.scene.Units`),
-    the scene's smallest ``feature`` and ``thin``, its thinnest body's thickness."""
-    lines = []
+    quantities and the coarse h from which the cause is gone; each length
+    followed by the scene's unit named ``length``
+    (:class:`~contactcore.scene.Units`): the coarse run's ``h``, the
+    stencil, the scene's smallest ``feature`` and ``thin``, its thinnest
+    body's thickness.  A stencil is a cell, a support or a recovery patch
+    (:func:`stencil_radius`; docs/error-estimates.md, "The warnings")."""
+    lines, u = [], f" {length}"
     for cause, entries in found.items():
         for rho in sorted({v[0] for v in entries.values()}):
             names = [k for k, v in entries.items() if v[0] == rho]
             h_ok = min(entries[k][1] for k in names)
-            stencils = f"the run at h = {h:g} has stencils (cells, supports, recovery patches) of {rho:.3g}"
-            why = {"reach": f"samples kept within {tol.REACH_STENCILS * rho:.3g} of a singular point, the reach of its "
-                            f"own error in the run at h = {h:g} (two stencils of {rho:.3g})",
-                   "coarse": f"{stencils}, more than 1/{tol.FEATURE_STENCILS:g} of the scene's smallest feature "
-                             f"({feature:.3g})",
-                   "thin": f"{stencils}, and the thinner body across Γ is {thin:.3g} thick, less than "
-                           f"{tol.THIN_BODY_STENCILS:g} of them"}[cause]
-            lines.append(f"{', '.join(names)}: {why}: the runs are not in the asymptotic range, the estimate is an "
-                         f"indication only (starting below h = {h_ok:.3g} avoids this; lengths in {length})")
+            stencils = f"stencils of {rho:.3g}{u} at h = {h:g}{u}"
+            why = {"reach": f"within {tol.REACH_STENCILS * rho:.3g}{u} of a singular point "
+                            f"({tol.REACH_STENCILS:g} {stencils})",
+                   "coarse": f"{stencils} over 1/{tol.FEATURE_STENCILS:g} of the smallest feature "
+                             f"({feature:.3g}{u})",
+                   "thin": f"{tol.THIN_BODY_STENCILS:g} {stencils} over the thinner body across Γ "
+                           f"({thin:.3g}{u})"}[cause]
+            lines.append(f"{', '.join(names)}: {why}: not asymptotic; start below h = {h_ok:.3g}{u}"
+                         f"{see('stencil')}")
     return lines
 
 
@@ -409,24 +423,24 @@ def cell_scale_orders(scene: Scene, levels: list[list[ProfileData]],
 
 
 def cell_scale_warnings(found: dict[str, tuple[float, float]], hs: tuple[float, float],
-                        undirected: tuple[str, ...] | list[str] = ()) -> list[str]:
+                        undirected: tuple[str, ...] | list[str] = (), length: str = "m") -> list[str]:
     """One line naming the quantities of :func:`cell_scale_orders`, each
     with the order at which its runs' variation at the cells' scale
-    shrank and the highest order theory allows it.  The line says the
+    shrank and the highest order theory allows it (``hs`` in the scene's
+    unit named ``length``).  The line says the
     estimate is likely too large (measured 0.99-8.05 times the error on
     the 28 entries it named on four sets, 2026-11-28) but for the
     quantities also in ``undirected`` (:func:`fast_gamma`'s, EFGM P1's Γ
     quantities, which it named at 0.55 on the layered slip): those get a
     line of their own without a direction."""
     lines = []
-    for part, direction in (([k for k in found if k not in undirected], " and likely too large"),
+    for part, direction in (([k for k in found if k not in undirected], ", likely too large"),
                             ([k for k in found if k in undirected], "")):
         if not part:
             continue
-        names = ", ".join(f"{k} ({found[k][0]:.2f} against {found[k][1]:.3g})" for k in part)
-        lines.append(f"{names}: the runs' variation from cell to cell shrinks between h = {hs[0]:g} and {hs[1]:g} "
-                     f"faster than theory allows the error (orders in brackets): the coarse run is not in the "
-                     f"asymptotic range, the estimate is an indication only{direction}")
+        names = ", ".join(f"{k} ({found[k][0]:.2f} > {found[k][1]:.3g})" for k in part)
+        lines.append(f"{names}: from h = {hs[0]:g} {length} to {hs[1]:g} {length} the cell-to-cell variation "
+                     f"shrinks at orders above theory's: not asymptotic{direction}{see('cell scale')}")
     return lines
 
 
@@ -488,11 +502,11 @@ def residue_warnings(found: dict[str, tuple[float, str]], observed: bool = False
     runs (three) it does not advise a third."""
     if not found:
         return []
-    names = ", ".join(f"{k} ({share:.2g} of {other}'s)" for k, (share, other) in found.items())
-    return [f"{names}: the runs differ there by less than {tol.RESIDUE_SHARE:g} of the most they differ in a "
-            f"quantity of the same kind (in brackets): the error's leading term nearly cancels there, a smaller "
-            f"term of another order may set its rate, the estimate is an indication only"
-            + ("" if observed else " (--estimate 3 observes the order)")]
+    names = ", ".join(f"{k} ({share:.2g})" for k, (share, _) in found.items())
+    largest = ", ".join(dict.fromkeys(f"{other}'s" for _, other in found.values()))
+    return [f"{names}: runs' difference under {tol.RESIDUE_SHARE:g} of their kind's most ({largest}): leading "
+            f"error term nearly cancels, an indication only"
+            + ("" if observed else f"; {OBSERVE}") + see("residue")]
 
 
 
@@ -569,11 +583,8 @@ def split_cell_share_warning(found: dict[str, float]) -> list[str]:
     if not found:
         return []
     names = ", ".join(f"{k} ({v:.2f})" for k, v in found.items())
-    return [f"{names}: most of the runs' difference (share in brackets) varies at the scale of the coarse run's "
-            f"cells, which the estimate takes at the upper order of a range the singular points widened; two runs "
-            f"cannot check that order, and where that part converges slower the estimate is too small: an "
-            f"indication only, either way (measured 0.485-1.77 times the error; 5 of the 6 entries it named on scenes A, "
-            f"B, C within [0.5, 2]) (--estimate 3 observes the order)"]
+    return [f"{names}: most of the runs' difference (shares) is at the coarse cells' scale, unchecked by two "
+            f"runs: off either way; {OBSERVE}{see('split share')}"]
 
 
 def curved_layer_warning(names: list[str], h: float, length: str = "m") -> list[str]:
@@ -581,10 +592,8 @@ def curved_layer_warning(names: list[str], h: float, length: str = "m") -> list[
     scene's unit named ``length``."""
     if not names:
         return []
-    return [f"{', '.join(names)}: xfem P1's recovered stress converges at order 1 within a cell ({h:g} {length}) "
-            f"of the curved Γ, against 2-3 elsewhere, so the estimate, taken at the order elsewhere, is not to be "
-            f"trusted there, either way (measured 0.18-2.2 times the error): degree 2, or samples farther than a "
-            f"cell from Γ, avoid this"]
+    return [f"{', '.join(names)}: the recovered stress converges at order 1 within a cell ({h:g} {length}) of the "
+            f"curved Γ: off either way; degree 2 avoids it{see('curved layer')}"]
 
 
 #: The key under which :func:`quadrature_energy` or :func:`recovery_floor` marks the energy estimate in
@@ -600,10 +609,8 @@ def recovery_floor(energy: EnergyEstimate | None) -> list[str]:
     of η (:func:`~contactcore.estimate.energy.recovery_moves`)."""
     if energy is None or energy.recovery is None or not energy.recovery > tol.ENERGY_RECOVERY_SHARE * energy.eta:
         return []
-    return [f"energy (ZZ): on this curved Γ the recovery's own error is much of the estimate (recovering σ* again "
-            f"moves it by {energy.recovery / energy.eta:.2g} of η): the estimate is likely too large (measured "
-            f"1.35-4.7 times the true error where this fired on a disc and a rod, degree 2 and EFGM); "
-            f"a finer h brings it down"]
+    return [f"energy (ZZ): on this curved Γ the recovery's own error is much of the estimate (a second recovery "
+            f"moves it by {energy.recovery / energy.eta:.2g} of η): likely too large; refine{see('recovery floor')}"]
 
 
 def quadrature_energy(method: str, degree: int, facts: MethodFacts, energy: EnergyEstimate | None) -> list[str]:
@@ -619,7 +626,6 @@ def quadrature_energy(method: str, degree: int, facts: MethodFacts, energy: Ener
         return []
     if not energy.norm > energy.floor:  # a stress-free run: no error for a quadrature to dominate
         return []
-    return [f"energy (ZZ): {method} P{degree}'s estimate is {energy.relative:.2g} of the run's energy, where its "
-            f"Gauss quadrature's error, which a recovery of the run's stress does not see, may be most of the "
-            f"error: an indication only, too small on both such closed forms measured (0.41 and 0.76 of the true "
-            f"error)"]
+    return [f"energy (ZZ): {run_label(method, degree)}'s estimate is {energy.relative:.2g} of the run's energy, "
+            f"where its quadrature's error, unseen by a recovery, may dominate: likely too small"
+            f"{see('quadrature energy')}"]

@@ -120,11 +120,12 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
                                      thinnest_body(scene))
                 + curved_layer_warning(layer, hs[-2], scene.user.units.length)
                 + split_cell_share_warning(split)
-                + cell_scale_warnings(rough, hs[-2:], fast) + residue_warnings(residue, len(levels) > 2))
+                + cell_scale_warnings(rough, hs[-2:], fast, scene.user.units.length)
+                + residue_warnings(residue, len(levels) > 2))
     status = None
     if scene.law.has_history or not scene.law.is_linear:
         status = status_change(scene, results[-2], results[-1], hs[-2:])
-    split_moved = status_warning(status)
+    split_moved = status_warning(status, scene.user.units.length)
     warnings += split_moved
     moved = {f"{pid}:{q}" for pid, qs in profiles.items() for q in qs} if split_moved else set()
     zz = (energy_estimate(scene, results[-1].fields, hs[-1], exclude,

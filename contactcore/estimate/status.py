@@ -21,6 +21,7 @@ import numpy as np
 from ..laws import PARTIAL, REPORTED_STATUS_NAMES, SLIP
 from ..profiles import interface_status, nearest_status, sample_points
 from ..scene import InterfaceProfile, Scene
+from .caveats import see
 
 
 def switches(paths) -> bool:
@@ -81,21 +82,24 @@ def status_change(scene: Scene, coarse, fine, hs: tuple[float, float] | None = N
             "samples": len(s0), "h": list(hs) if hs else None}
 
 
-def status_warning(change: dict | None) -> list[str]:
+def status_warning(change: dict | None, length: str = "m") -> list[str]:
     """A line when the two compared runs' status differs somewhere along Γ:
     the open/closed (stick/slip) split moved between them, and with it the
     whole answer (the bodies' rigid shift under a tie: unil_partopen's
     bulk u_x read 0.078-0.33 of its error at h = 0.05 -> 0.025, 2026-11-29),
     so the line names no quantity: every estimate of the run is an
     indication only (:class:`~contactcore.estimate.runs.Estimate`'s
-    ``unsettled`` takes them all)."""
+    ``unsettled`` takes them all).  It gives the runs' h (in the scene's
+    unit named ``length``), how many samples differ and the profile's
+    shares of each status that moved; which samples and which of the
+    solve's points differ are summary.json's (``estimate.status``), the
+    explanation docs/error-estimates.md's row "status"."""
     if not change or change["differ"] == 0:
         return []
-    show = lambda s: ", ".join(f"{v:.0%} {k}" for k, v in s.items())  # noqa: E731
-    runs = f"h = {change['h'][0]:g} and {change['h'][1]:g}" if change.get("h") else "the two finest runs"
-    where = (f" (the profile's at {change['differ_profile']}, the solve's nearest points' at "
-             f"{change['differ_points']})" if "differ_points" in change else "")
-    return [f"the status along Γ differs between {runs} at {change['differ']} of {change['samples']} samples{where}; "
-            f"the profile's ({show(change['coarse'])} → {show(change['fine'])}): Γ's split between its statuses moved "
-            "between the runs, "
-            "and with it the whole answer, so no estimate of this run is asymptotic (an indication only)"]
+    runs = (f"from h = {change['h'][0]:g} {length} to {change['h'][1]:g} {length}" if change.get("h")
+            else "between the two finest runs")
+    coarse, fine = change["coarse"], change["fine"]
+    moved = ", ".join(f"{k} {100 * coarse.get(k, 0.0):.0f}→{fine.get(k, 0.0):.0%}"
+                      for k in dict.fromkeys([*coarse, *fine]) if f"{coarse.get(k, 0.0):.0%}" != f"{fine.get(k, 0.0):.0%}")
+    return [f"the status along Γ differs {runs} at {change['differ']} of {change['samples']} samples"
+            + (f" ({moved})" if moved else "") + f": no estimate of this run is asymptotic; refine{see('status')}"]

@@ -22,6 +22,7 @@ import numpy as np
 
 from .. import tolerances as tol
 from ..errors import SolverError
+from ..labels import run_label
 from ..scaling import Scales
 
 
@@ -132,7 +133,7 @@ def stiff_spring_warnings(scene, h: float, limit: float, method: str, degree: in
         return []
     named = " and ".join(f"k_{c} h/E = {a:.2g}" for c, a in stiff)
     return [f"interface springs of {named} (E the softer body's, h = {method}'s spacing) above the {limit:g} "
-            f"{method} P{degree} carries to about 1e-3 of the stress: its tractions on Γ oscillate from point to "
+            f"{run_label(method, degree)} carries to about 1e-3 of the stress: its tractions on Γ oscillate from point to "
             f"point by about α times its jump error (measured on a uniform stress across a straight Γ: 8 % of the "
             f"stress at α = 1e3 for P1, 1.2 % for P2; docs/methods/efgm.md, \"Limits\"); soften the springs, "
             f"refine, enforce the law exactly, or use fe or xfem"]

@@ -12,6 +12,7 @@ import math
 from dataclasses import dataclass
 
 from contactcore import ContactError, Scene, load_scene, sample_profiles
+from contactcore.labels import run_label
 
 from .estimates import within_estimates
 from .samples import check_exclusion, default_exclusion
@@ -35,8 +36,10 @@ def variant(spec) -> tuple[str, int]:
 
 
 def label(name: str, degree: int) -> str:
-    """How a (method, degree) is named in tables and plots: ``xfem p2``."""
-    return f"{name} p{degree}"
+    """How a (method, degree) is named in tables and plots: ``xfem P2``
+    (:func:`contactcore.labels.run_label`, the one spelling of every
+    table, plot and warning)."""
+    return run_label(name, degree)
 
 
 def sampled(scene: Scene, result) -> dict:
@@ -142,7 +145,7 @@ class EstimateVerdict:
     least one estimate is too small there (that difference is not
     resolution)."""
 
-    methods: tuple[str, str]  # their labels, "xfem p1"
+    methods: tuple[str, str]  # their labels, "xfem P1"
     profile: str
     quantity: str
     ratio: float

@@ -22,8 +22,9 @@ from .sizes import measured_floor
 class Agreement:
     """How one method's quantity on one profile differs from the reference's.
 
-    ``rms`` is RMS(got − ref)/RMS(scale) and ``worst`` max|got − ref|/max|scale|
-    over the kept samples, ``scale`` the reference's size of the
+    ``rms`` is RMS(got − ref)/RMS(scale) and ``worst`` max|got − ref|/``size``,
+    ``size`` = max|scale| over the kept samples (in the quantity's unit; the
+    plots' Δ panels are over the same ``size``: :meth:`AgreementTable.sizes`), ``scale`` the reference's size of the
     quantity's group (``against``: ``|(tN, tT)|``, or the quantity alone;
     :func:`scale_of`: an exact law's gaps floored, round-off of the scene's
     scale the least); the worst sample lies at ``s`` (the
@@ -47,6 +48,7 @@ class Agreement:
     units: Units = Units()  # the names of the scene's units, which the floor is in
     against: str = ""  # what the scale is the size of (scale_name: "|(tN, tT)|"); "" the quantity itself
     s_unit: str = ""  # the unit of ``s``: the scene's length unit along a line, rad along a circle's angle
+    size: float = float("nan")  # max |scale| over the kept samples, what ``worst`` is a share of (q's unit)
 
     def describe(self, against: str = "the reference") -> str:
         """One line naming the profile, the quantity, the worst sample and
@@ -80,11 +82,11 @@ def _compared(scene: Scene, label: str, pid: str, q: str, got: ProfileData, ref:
                          s_unit=s_unit)
     i = int(np.argmax(np.abs(diff)))
     where = np.flatnonzero(keep)[i]
-    worst = share(float(abs(diff[i])), float(np.max(np.abs(base))))
+    size = float(np.max(np.abs(base)))
     return Agreement(label, pid, q, "", relative_rms(scene, got, ref, q, exclude, scale=base),
-                     worst, float(ref.columns["s"][where]), float(ref.columns["x"][where]),
+                     share(float(abs(diff[i])), size), float(ref.columns["s"][where]), float(ref.columns["x"][where]),
                      float(ref.columns["y"][where]), float(got.columns[q][where]), float(ref.columns[q][where]),
-                     int(keep.sum()), len(keep), floor, scene.units, against, s_unit)
+                     int(keep.sum()), len(keep), floor, scene.units, against, s_unit, size)
 
 
 def profile_agreements(scene: Scene, label: str, got: dict, ref: dict, exclude: float,

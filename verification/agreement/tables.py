@@ -7,6 +7,7 @@ from dataclasses import dataclass
 
 from contactcore import ContactError, Scene
 from contactcore.estimate.singular import singular_regions
+from contactcore.labels import reference_text
 from contactcore.scene import Units
 from contactcore.tolerances import EXACT_GAP_FLOOR, NEGLIGIBLE_SHARE
 
@@ -35,6 +36,15 @@ class AgreementTable:
         """The row with the largest ``measure`` (``"worst"`` or ``"rms"``;
         the first of those within :data:`WORST_TIE`)."""
         return first_largest(self.rows, key=lambda a: getattr(a, measure))
+
+    def sizes(self, profile: str) -> dict[str, tuple[float, str]]:
+        """Quantity -> ``(size, against)`` of ``profile``: what its worst
+        samples are shares of (:class:`Agreement`'s ``size``, the
+        reference's largest scale over the kept samples, the same for every
+        method) and what that scale is the size of (``against``:
+        ``|(tN, tT)|``; "" the quantity itself).  The plots' Δ panels divide
+        by it, so a plot and this table say one figure."""
+        return {a.quantity: (a.size, a.against) for a in self.rows if a.profile == profile}
 
     def excluded(self) -> str:
         """Which samples were left out, in words."""
@@ -71,7 +81,7 @@ class AgreementTable:
                   "the outer boundary), `interior` (any other); `at s (x, y)` is the worst sample's parameter "
                   f"along its profile, the arc length in {self.units.length} (on a circular Γ the polar angle in "
                   "rad, unless the profile asks for the arc length), and its point.")
-        lines = [f"Against {self.reference}; {self.excluded()}.{floor}", "",
+        lines = [f"Each run against the {reference_text(self.reference)}; {self.excluded()}.{floor}", "",
                  "| method | profile | quantity | class | worst sample | at s (x, y) | RMS |",
                  "|---|---|---|---|---|---|---|"]
         lines += [f"| {a.method} | {a.profile} | {a.quantity} | {a.kind} | {percent(a.worst)} | {a.s:.4g} "
