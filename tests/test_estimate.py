@@ -2,6 +2,7 @@
 per profile quantity and Zienkiewicz–Zhu in energy, their effectivity on
 the closed forms, and ``run --estimate``'s outputs."""
 import json
+import logging
 
 import numpy as np
 import pytest
@@ -285,8 +286,13 @@ def test_run_estimate_writes_the_errors(tmp_path, caplog):
     answer is the run at h/2; the estimate's warnings are logged as the
     solver's are (newuser33 #4: none reached the terminal)."""
     out = tmp_path / "run"
-    with caplog.at_level("WARNING", logger="verification"):
-        text = run("A", ["xfem", "efgm"], out, h=0.2, estimate=2, draw=False)
+    logger = logging.getLogger("verification")  # a CLI test before may have stopped it propagating to caplog's root
+    logger.addHandler(caplog.handler)
+    try:
+        with caplog.at_level("WARNING", logger="verification"):
+            text = run("A", ["xfem", "efgm"], out, h=0.2, estimate=2, draw=False)
+    finally:
+        logger.removeHandler(caplog.handler)
     logged = [r.getMessage() for r in caplog.records]
     assert "estimated error" in text and "Agreement within the estimated errors" in text
     assert "The reference is solved at the same h" not in text  # the estimates say whose error it is
