@@ -327,7 +327,8 @@ def _progress(name: str):
 
 
 def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, paper=False,
-        fields=False, petsc_options=None, dmax=None, nodes_file=None, cell=None, basis=None, allow_large=False,
+        fields=False, petsc_options=None, dmax=None, nodes_file=None, cell=None, basis=None, mesh=None,
+        allow_large=False,
         draw=True, estimate=None, reference=DEFAULT_REFERENCE, against_exact=False, floors=None, argv=()) -> str:
     """Solve ``scene_name`` (a scene, a built-in name or a TOML file),
     sample the scene's profiles, write everything; return the Markdown
@@ -353,7 +354,8 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
     twin = exact_gap.exact_twin(scene) if against_exact else None
     draw = draw and files.writes_here()
     chosen = methods.expand(method_names)
-    given = dict(petsc_options=petsc_options or None, dmax=dmax, cell=cell, basis=basis)
+    given = dict(petsc_options=petsc_options or None, dmax=dmax, cell=cell, basis=basis,
+                 mesh=None if mesh is None else str(mesh))
     compared = reference is not None and len(chosen) > 1  # a reference only where methods are compared
     _check(scene, chosen, h, degree, paper, allow_large, estimate, reference if compared else None,
            nodes=nodes_file, **given)
@@ -384,7 +386,8 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
     files.write_text(out / files.SCENE_FILE, scene_text(scene_name))
     files.write_json(out / "run.json", {**files.provenance(list(argv)),
                                         "scene": scene.name if isinstance(scene_name, Scene) else str(scene_name),
-                                        "methods": chosen, "h": _recorded_h(scene, h, paper), "degree": degree,
+                                        "methods": chosen, "h": _recorded_h(scene, h, paper, summaries),
+                                        "degree": degree, "mesh": _recorded_mesh(summaries),
                                         "paper": paper, "estimate": estimate,
                                         "petsc_options": petsc_options or {}, "dmax": dmax,
                                         "basis": basis, "nodes": str(nodes_file) if nodes_file else None,
@@ -394,12 +397,21 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
     return text
 
 
-def _recorded_h(scene: Scene, h, paper: bool) -> float | None:
+def _recorded_h(scene: Scene, h, paper: bool, summaries: list[dict] = ()) -> float | None:
     """``run.json``'s ``h``: the h that ran (with ``--estimate`` the
     coarsest of its runs), the scene's own where none was given (it
-    recorded null, grader6 #8); None on the paper's grids, whose h is each
-    method's own (its ``summary.json``'s ``discretisation``)."""
-    return None if paper else (scene.h if h is None else h)
+    recorded null, grader6 #8), a mesh file's own (``--mesh``: its largest
+    cell diameter); None on the paper's grids, whose h is each method's
+    own (its ``summary.json``'s ``discretisation``)."""
+    mesh = _recorded_mesh(summaries)
+    return None if paper else mesh["h"] if mesh else (scene.h if h is None else h)
+
+
+def _recorded_mesh(summaries: list[dict]) -> dict | None:
+    """``run.json``'s ``mesh``: the file of ``--mesh`` as fe's summary
+    records it (name, path, sha256 of its content, h and what h measures),
+    or None."""
+    return next((s["discretisation"]["mesh"] for s in summaries if "mesh" in s.get("discretisation", {})), None)
 
 
 def _check(scene: Scene, chosen: list[str], h, degree: int, paper: bool, allow_large: bool, estimate,
