@@ -171,3 +171,15 @@ def test_two_ranks_on_a_user_mesh_give_the_serial_numbers(tmp_path):
     assert files
     for f in files:
         assert _worst(f, tmp_path / "two" / "fe" / "profiles" / f.name) <= tol.PARALLEL_PARITY, f.name
+
+
+def test_a_mesh_too_large_for_the_machine_is_refused_by_its_vertices(tmp_path, capsys, monkeypatch):
+    """The memory budget counts the file's vertices (not the scene's h),
+    and the refusal names the file."""
+    from contactcore import budget
+    msh = scene_a_mesh(tmp_path / "a.msh", 2 * H)
+    monkeypatch.setattr(budget, "machine_memory", lambda: 1.0)  # every solve too large
+    assert _run(tmp_path, "o", "--mesh", msh) == 2
+    line = _one_error_line(capsys)
+    vertices = len(np.unique(read_mesh_file(msh).cells[:, :3]))
+    assert f"--mesh a.msh: {vertices} vertices, as many as h" in line and "--allow-large" in line, line

@@ -435,15 +435,26 @@ def _check(scene: Scene, chosen: list[str], h, degree: int, paper: bool, allow_l
         raise ContactError("--estimate: the nodes of --nodes are fixed, there is no h/2 to solve at (every run would "
                            "be the same, its error estimated as zero); leave out --nodes or --estimate")
     span = smallest_dimension(scene.domain)
-    if (h or scene.h or 0.0) > span / tol.MIN_CELLS_ACROSS and not paper:
+    if (h or scene.h or 0.0) > span / tol.MIN_CELLS_ACROSS and not paper and not given.get("mesh"):
         log.warning("h = %g leaves fewer than %d cells across the domain's smallest dimension (%g): the profiles "
                     "are resolved by a few cells only", h or scene.h, tol.MIN_CELLS_ACROSS, span)
     if not (paper or allow_large):
-        finest, field = _finest_run(h, scene.h or span, estimate)
+        finest, field = _mesh_size(scene, given["mesh"]) if given.get("mesh") else _finest_run(h, scene.h or span,
+                                                                                              estimate)
         for name in chosen:
             check_budget(scene, finest, methods.budgeted(name, degree), field)
         if reference:
             check_budget(scene, finest, methods.budgeted(reference[0], reference[1]), field)
+
+
+def _mesh_size(scene: Scene, mesh) -> tuple[float, str]:
+    """The h at which the memory budget (``A / h²`` vertices a cell's
+    degree², :mod:`contactcore.budget`) counts the vertices of the mesh
+    file ``mesh`` (``--mesh``), and how a refusal names it."""
+    from meshes.read import read_mesh_file
+    given = read_mesh_file(mesh)
+    vertices = len(np.unique(given.cells[:, :3]))
+    return float(np.sqrt(scene.domain.area / vertices)), f"--mesh {given.name}: {vertices} vertices, as many as h"
 
 
 def _finest_run(h: float | None, default: float, estimate: int | None) -> tuple[float, str]:
