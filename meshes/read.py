@@ -354,9 +354,8 @@ def _check_boundary(scene, mesh: MeshFile, where: str, boundary: str, user: str,
         iv = np.column_stack([lo, hi]) * dom.radius
         params, span = np.concatenate([iv, iv + 2 * math.pi * dom.radius]), (0.0, 2 * math.pi * dom.radius)
     else:
-        (x0, y0), (a, b) = dom.corner, dom.size
-        k, lo = (1, y0) if boundary in ("left", "right") else (0, x0)
-        params, span = ends[..., k] - lo, (0.0, float((b, a)[k]))
+        k = 1 if boundary in ("left", "right") else 0  # the coordinate along the edge
+        params, span = ends[..., k] - dom.corner[k], (0.0, float(dom.size[k]))
     if _uncovered(params, *span, near) is not None:
         raise _problem(where, f"{name} does not cover the domain's {boundary} boundary end to end: {user} acts on "
                               "all of it")
