@@ -31,7 +31,7 @@ PEERS = {"getfem": "verification.peer_getfem"}
 
 #: The command-line flag of each option.
 FLAGS = {"petsc_options": "--petsc-option", "cell": "--cell", "dmax": "--dmax", "nodes": "--nodes",
-         "basis": "--basis"}
+         "basis": "--basis", "mesh": "--mesh"}
 
 
 def discretisation(name: str) -> type:

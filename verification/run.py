@@ -337,7 +337,8 @@ def _progress(name: str):
 
 
 def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, paper=False,
-        fields=False, petsc_options=None, dmax=None, nodes_file=None, cell=None, basis=None, allow_large=False,
+        fields=False, petsc_options=None, dmax=None, nodes_file=None, cell=None, basis=None, mesh=None,
+        allow_large=False,
         draw=True, estimate=None, reference=DEFAULT_REFERENCE, against_exact=False, floors=None, argv=()) -> str:
     """Solve ``scene_name`` (a scene, a built-in name or a TOML file),
     sample the scene's profiles, write everything; return the Markdown
@@ -363,7 +364,8 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
     twin = exact_gap.exact_twin(scene) if against_exact else None
     draw = draw and files.writes_here()
     chosen = methods.expand(method_names)
-    given = dict(petsc_options=petsc_options or None, dmax=dmax, cell=cell, basis=basis)
+    given = dict(petsc_options=petsc_options or None, dmax=dmax, cell=cell, basis=basis,
+                 mesh=None if mesh is None else str(mesh))
     compared = reference is not None and len(chosen) > 1  # a reference only where methods are compared
     _check(scene, chosen, h, degree, paper, allow_large, estimate, reference if compared else None,
            nodes=nodes_file, **given)
@@ -394,7 +396,8 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
     files.write_text(out / files.SCENE_FILE, scene_text(scene_name))
     files.write_json(out / "run.json", {**files.provenance(list(argv)),
                                         "scene": scene.name if isinstance(scene_name, Scene) else str(scene_name),
-                                        "methods": chosen, "h": _recorded_h(scene, h, paper), "degree": degree,
+                                        "methods": chosen, "h": _recorded_h(scene, h, paper, summaries),
+                                        "degree": degree, "mesh": _recorded_mesh(summaries),
                                         "paper": paper, "estimate": estimate,
                                         "petsc_options": petsc_options or {}, "dmax": dmax,
                                         "basis": basis, "nodes": str(nodes_file) if nodes_file else None,
@@ -404,12 +407,21 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
     return text
 
 
-def _recorded_h(scene: Scene, h, paper: bool) -> float | None:
+def _recorded_h(scene: Scene, h, paper: bool, summaries: list[dict] = ()) -> float | None:
     """``run.json``'s ``h``: the h that ran (with ``--estimate`` the
     coarsest of its runs), the scene's own where none was given (it
-    recorded null, grader6 #8); None on the paper's grids, whose h is each
-    method's own (its ``summary.json``'s ``discretisation``)."""
-    return None if paper else (scene.h if h is None else h)
+    recorded null, grader6 #8), a mesh file's own (``--mesh``: its largest
+    cell diameter); None on the paper's grids, whose h is each method's
+    own (its ``summary.json``'s ``discretisation``)."""
+    mesh = _recorded_mesh(summaries)
+    return None if paper else mesh["h"] if mesh else (scene.h if h is None else h)
+
+
+def _recorded_mesh(summaries: list[dict]) -> dict | None:
+    """``run.json``'s ``mesh``: the file of ``--mesh`` as fe's summary
+    records it (name, path, sha256 of its content, h and what h measures),
+    or None."""
+    return next((s["discretisation"]["mesh"] for s in summaries if "mesh" in s.get("discretisation", {})), None)
 
 
 def _check(scene: Scene, chosen: list[str], h, degree: int, paper: bool, allow_large: bool, estimate,
@@ -433,15 +445,26 @@ def _check(scene: Scene, chosen: list[str], h, degree: int, paper: bool, allow_l
         raise ContactError("--estimate: the nodes of --nodes are fixed, there is no h/2 to solve at (every run would "
                            "be the same, its error estimated as zero); leave out --nodes or --estimate")
     span = smallest_dimension(scene.domain)
-    if (h or scene.h or 0.0) > span / tol.MIN_CELLS_ACROSS and not paper:
+    if (h or scene.h or 0.0) > span / tol.MIN_CELLS_ACROSS and not paper and not given.get("mesh"):
         log.warning("h = %g leaves fewer than %d cells across the domain's smallest dimension (%g): the profiles "
                     "are resolved by a few cells only", h or scene.h, tol.MIN_CELLS_ACROSS, span)
     if not (paper or allow_large):
-        finest, field = _finest_run(h, scene.h or span, estimate)
+        finest, field = _mesh_size(scene, given["mesh"]) if given.get("mesh") else _finest_run(h, scene.h or span,
+                                                                                              estimate)
         for name in chosen:
             check_budget(scene, finest, methods.budgeted(name, degree), field)
         if reference:
             check_budget(scene, finest, methods.budgeted(reference[0], reference[1]), field)
+
+
+def _mesh_size(scene: Scene, mesh) -> tuple[float, str]:
+    """The h at which the memory budget (``A / h²`` vertices a cell's
+    degree², :mod:`contactcore.budget`) counts the vertices of the mesh
+    file ``mesh`` (``--mesh``), and how a refusal names it."""
+    from meshes.read import read_mesh_file
+    given = read_mesh_file(mesh)
+    vertices = len(np.unique(given.cells[:, :3]))
+    return float(np.sqrt(scene.domain.area / vertices)), f"--mesh {given.name}: {vertices} vertices, as many as h"
 
 
 def _finest_run(h: float | None, default: float, estimate: int | None) -> tuple[float, str]:

@@ -53,12 +53,13 @@ from contactcore.cutcell import gauss01
 from contactcore.exact import is_exact
 from contactcore.geometry import polygon_area, tangent_of
 from contactcore.interface_path import piece_centres
+from contactcore.scaling import Scales
 from contactcore.system import InterfaceOperator
 from contactcore.scene import BODY, EDGE, place_of
 
 from .contact_system import GhostExchange, PETScSystem
 from .evaluation import BodyCellLocator, BodyFields
-from .fitted_mesh import FittedMesh, fitted_mesh
+from .fitted_mesh import FittedMesh, file_mesh, fitted_mesh
 from .options import FE
 from .quiet import quiet_jit
 
@@ -438,8 +439,12 @@ def build(scene: Scene, options: FE, resolution: Resolution, timings: Timings) -
     h, degree = resolution.h, options.degree
     comm = MPI.COMM_WORLD if options.comm is None else options.comm
     jit = options.jit_params or {}
+    given = options.mesh_file()
     with timings.measure("mesh"):
-        fm = fitted_mesh(scene, h, order=options.geometry_order or degree, grading=options.grading, comm=comm)
+        if given is None:
+            fm = fitted_mesh(scene, h, order=options.geometry_order or degree, grading=options.grading, comm=comm)
+        else:
+            fm = file_mesh(given, Scales.of(scene.user).to_dimensionless, comm=comm)
     with timings.measure("assembly"):
         el = ufl.VectorElement("Lagrange", fm.mesh.ufl_cell(), degree)
         V = fem.FunctionSpace(fm.mesh, ufl.MixedElement([el, el]))
@@ -470,11 +475,16 @@ def build(scene: Scene, options: FE, resolution: Resolution, timings: Timings) -
 
     grading = options.grading
     on_gamma = h if grading is None else h * grading.factor  # the cells' size along Γ
-    straight = (options.geometry_order or degree) == 1
-    return Built(system, fields, cons.num_active, h=h, fitted=True,
-                 warnings=meshes.polygon_warnings(scene, on_gamma) if straight else [],
-                 record={"h": h, "degree": degree, "geometry_order": options.geometry_order or degree,
-                         "cells": fm.num_cells, "grading": None if grading is None else vars(grading)})
+    order = options.geometry_order or degree if given is None else given.order
+    if given is None:
+        warnings = meshes.polygon_warnings(scene, on_gamma) if order == 1 else []
+    else:  # the file's, at its own Γ facets (meshes.read.check_mesh, in the user's units)
+        warnings = options.mesh_warnings(scene)
+    record = {"h": h, "degree": degree, "geometry_order": order, "cells": fm.num_cells,
+              "grading": None if grading is None else vars(grading)}
+    if given is not None:
+        record["mesh"] = given.record()
+    return Built(system, fields, cons.num_active, h=h, fitted=True, warnings=warnings, record=record)
 
 
 def solve(scene: Scene, h: float | None = None, *, paper: bool = False, progress=None, reuse=None,

@@ -46,6 +46,22 @@ def fitted_mesh(scene: Scene, h: float, *, order: int = 1, grading: meshes.Gradi
     return FittedMesh(msh, cell_tags, facet_tags)
 
 
+def file_mesh(mesh, to_model, comm=MPI.COMM_WORLD) -> FittedMesh:
+    """A user's mesh file (:class:`meshes.read.MeshFile`, checked by
+    :func:`meshes.read.check_mesh`) loaded as :func:`fitted_mesh` loads
+    fe's own: read into gmsh on rank 0 only, its nodes moved by
+    ``to_model`` (the file's coordinates to the dimensionless scene's)
+    and its groups renumbered to :mod:`meshes.tags` by name
+    (:func:`meshes.read.load_model`), then distributed by dolfinx."""
+    from meshes.read import load_model
+    with meshes.gmsh_session() as model:
+        if comm.rank == 0:
+            load_model(mesh, to_model)
+        msh, cell_tags, facet_tags = gmshio().model_to_mesh(model, comm, 0, gdim=2)
+    msh.topology.create_connectivity(1, 2)
+    return FittedMesh(msh, cell_tags, facet_tags)
+
+
 def gmshio():
     """dolfinx's gmsh I/O, imported with SIGINT's handler left as it was:
     it imports gmsh, whose module sets the handler to the default

@@ -34,11 +34,19 @@ class FE(Discretisation):
     degree (second-order cells on a curved Γ); ``grading`` refines toward
     Γ (:class:`meshes.Grading`); ``petsc_options`` override the MUMPS
     defaults; the condition estimate runs only with ``estimate_condition``;
-    ``comm`` defaults to ``MPI.COMM_WORLD``."""
+    ``comm`` defaults to ``MPI.COMM_WORLD``.
+
+    ``mesh``: a gmsh file of the scene's mesh in the scene's units (a path)
+    with the physical groups of :mod:`meshes.tags` by name, instead of
+    fe's own mesh: it fixes the cells, their geometry order and the
+    run's h (its largest cell diameter, :mod:`meshes.read`), so it takes
+    no ``grading``, ``geometry_order`` or ``h``; it is checked against
+    the scene before anything is built (:func:`meshes.read.check_mesh`)."""
 
     degree: int = 1
     geometry_order: int | None = None
     grading: object = None
+    mesh: object = None
     petsc_options: dict | None = None
     estimate_condition: bool = False
     jit_params: dict | None = None
@@ -63,6 +71,58 @@ class FE(Discretisation):
 
     def __post_init__(self):
         check_degree(self.name, self.degree)
+        if self.mesh is not None:
+            import os
+
+            from contactcore import DiscretisationError
+            if not isinstance(self.mesh, (str, os.PathLike)) or not str(self.mesh).strip():
+                raise DiscretisationError(f"fe: mesh must name a mesh file (got {self.mesh!r})")
+            for option in ("grading", "geometry_order"):
+                if getattr(self, option) is not None:
+                    raise DiscretisationError(f"fe: {option} means nothing with mesh= (the file {self.mesh} fixes "
+                                              "the cells and their geometry order): give one of the two")
+
+    def mesh_file(self):
+        """The file of ``mesh`` read (:func:`meshes.read.read_mesh_file`), or None."""
+        if self.mesh is None:
+            return None
+        from meshes.read import read_mesh_file
+        return read_mesh_file(self.mesh)
+
+    def resolution(self, scene, h, paper):
+        """The one rule's (:func:`contactcore.discretisation.resolution`),
+        or with ``mesh`` the file's own h (its largest cell diameter) in
+        the dimensionless ``scene``'s unit: an ``h`` or the paper's grid
+        beside it is refused by name."""
+        if self.mesh is None:
+            return super().resolution(scene, h, paper)
+        from contactcore import DiscretisationError
+        from contactcore.discretisation import Resolution
+        from contactcore.scaling import Scales, decimal_quotient
+        if paper or h is not None:
+            raise DiscretisationError(f"fe: the mesh {self.mesh} fixes the resolution (h is its largest cell "
+                                      f"diameter): give no {'paper grid' if paper else 'h'} with it")
+        return Resolution(decimal_quotient(self.mesh_file().h, Scales.of(scene.user).length))
+
+    def mesh_warnings(self, scene) -> list[str]:
+        """The checks of ``mesh`` against the dimensionless ``scene``'s
+        user scene (:func:`meshes.read.check_mesh`): a refusal naming the
+        problem, or the warnings of a mesh that solves."""
+        from meshes.read import check_mesh
+        return check_mesh(scene.user, self.mesh_file(), self.degree)
+
+    def check_spacing(self, scene, resolution) -> None:
+        """With ``mesh``: a resolution other than the file's refused (a
+        coarser solve's first map, :mod:`contactcore.newton.guess`, has
+        no coarser mesh of the file: it is not taken), then the file held
+        to the scene before anything is built (:meth:`mesh_warnings`)."""
+        if self.mesh is None:
+            return
+        from contactcore import DiscretisationError
+        own = self.resolution(scene, None, False)
+        if resolution != own:
+            raise DiscretisationError(f"fe: the mesh {self.mesh} has one resolution, h = {own.h:g} (dimensionless)")
+        self.mesh_warnings(scene)
 
     def spacing_warnings(self, scene, h: float) -> list[str]:
         """P1's exactly enforced Γ traction near incompressibility
@@ -77,7 +137,8 @@ class FE(Discretisation):
         gmsh failed on it with a message about a curve, or lost Γ."""
         from contactcore.scene import check_fitted_thickness
         super().check(scene)
-        check_fitted_thickness(scene)
+        if self.mesh is None:  # a given mesh is held to the scene by check_spacing instead
+            check_fitted_thickness(scene)
 
 
 @dataclass(frozen=True)

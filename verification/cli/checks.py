@@ -34,6 +34,7 @@ def check(args, command: str, ranks: str) -> None:
     check_counts(args)
     check_cell(args)
     check_ranks_list(args)
+    check_mesh(args)
 
 
 def check_ranks(command: str, ranks: str) -> None:
@@ -100,3 +101,28 @@ def check_ranks_list(args) -> None:
         raise ContactError(f"--ranks: every rank count must be at least 1 (got {args.ranks})")
     if getattr(args, "ranks", None) and not getattr(args, "allow_large", False):
         check_processes(max(args.ranks), "--ranks", hasattr(args, "allow_large"))
+
+
+def check_mesh(args) -> None:
+    """``run --mesh FILE``: fe's mesh from the user's file, which fixes h
+    (its largest cell diameter).  Refused by name with another method
+    (xfem's and efgm's discretisations are their own: run them without
+    ``--mesh``), with ``--h`` or ``--paper`` (the file fixes the
+    resolution) and with ``--estimate`` (which solves at h/2 and h/4: a
+    finer mesh of the same family the file does not give)."""
+    mesh = getattr(args, "mesh", None)
+    if mesh is None:
+        return
+    chosen = methods.expand(getattr(args, "method", None) or ["fe"])
+    others = [m for m in chosen if m != "fe"]
+    if others:
+        builds = "builds its" if len(others) == 1 else "build their"
+        raise ContactError(f"--mesh: is fe's mesh, and {', '.join(others)} {builds} own discretisation: run "
+                           f"--method fe with --mesh, and {', '.join(others)} in a run of their own")
+    for option, given in (("--h", getattr(args, "h", None) is not None), ("--paper", getattr(args, "paper", False)),
+                          ("--estimate", getattr(args, "estimate", None) is not None)):
+        if given:
+            raise ContactError(f"--mesh: {option} means nothing with a mesh file" + (
+                ", which fixes the resolution (h is its largest cell diameter)" if option != "--estimate" else
+                ": the estimate solves at h/2 (and h/4), finer meshes of the same family, which the file does "
+                "not give; write them with python -m meshes --h and run each"))

@@ -101,6 +101,11 @@ def commands() -> dict[str, Command]:
             arg("--basis", choices=("linear", "quadratic"),
                 help="EFGM's MLS basis (default: linear for --degree 1, quadratic for --degree 2)"),
             arg("--nodes", type=Path, help="EFGM node set: a text file of x y rows (default: a grid)"),
+            arg("--mesh", type=Path, metavar="FILE.msh",
+                help="fe's mesh from a gmsh file in the scene's units, with the physical groups body_minus, "
+                     "body_plus, interface and boundary_NAME of each boundary a support or load acts on, by name "
+                     "(as `python -m meshes` writes them): checked against the scene before solving; h is its "
+                     "largest cell diameter; with --method fe alone, without --h, --paper or --estimate"),
             arg("--no-plots", dest="draw", action="store_false", help="write no figures"),
             allow_large,
             arg("--estimate", type=int, nargs="?", const=2, choices=(2, 3), metavar="{2,3}",
