@@ -155,6 +155,11 @@ class StatusAgreement:
     quantity = "status"
     kind = "status"
 
+    @property
+    def worst(self) -> float:
+        """The row's figure, as a value row's ``worst``: :attr:`share`."""
+        return self.share
+
     def where(self) -> str:
         """The largest stretch beyond the allowance, in words (empty if none)."""
         if not self.share > 0:
