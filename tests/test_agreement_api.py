@@ -485,3 +485,121 @@ def test_compare_estimates_refuses_bad_arguments_before_any_solve(monkeypatch, m
     monkeypatch.setattr(known, "solver", lambda *_: pytest.fail("a solve started"))
     with pytest.raises(ContactError, match=message):
         compare_estimates("A", methods, COARSE_H, **kwargs)
+
+
+#: newuser33's scene (2026-11-29): a bimaterial block pressed and sheared
+#: towards its left roller, Coulomb enforced exactly on Γ at mid-height.
+SHEARED_BLOCK = {
+    "name": "sheared-block", "h": tol.FRICTION_H,
+    "domain": {"type": "rectangle", "size": [2.0, 1.0]},
+    "interface": {"type": "line", "point": [0.0, 0.5], "normal": [0.0, 1.0],
+                  "law": {"type": "coulomb", "enforcement": "exact", "mu": tol.FRICTION_MU}},
+    "materials": {"minus": {"E": 2e11, "nu": 0.1}, "plus": {"E": 7e10, "nu": 0.33}},
+    "supports": [{"boundary": "bottom", "fix": "xy"}, {"boundary": "left", "fix": "x"}],
+    "loads": [{"type": "traction", "boundary": "top", "value": [-1e5, -1e6]}],
+    "profiles": [{"id": "G", "type": "interface", "quantities": ["gN", "gT", "tN", "tT"]}],
+}
+
+
+def _wrong_mu(monkeypatch, method: str, mu: float) -> None:
+    """Solve ``method`` with Γ's μ changed to ``mu`` (the user's mistake:
+    one run with another μ), every other method as asked."""
+    import verification.methods as known
+    solver = known.solver
+
+    def patched(name):
+        solve = solver(name)
+        if name != method:
+            return solve
+        return lambda scene, *args, **kwargs: solve(
+            scene.with_changes(law=make_law({"type": "coulomb", "enforcement": "exact", "mu": mu})), *args, **kwargs)
+    monkeypatch.setattr(known, "solver", patched)
+
+
+def test_a_wrong_mu_fails_the_agreement_on_the_status_map(monkeypatch):
+    """newuser33: xfem with μ = 0.15 (Γ sticks but for 2 points) against
+    fe with μ = 0.1 (22 of 160 slip) passed at rtol 0.05 and 0.02: t_T was
+    measured against |t| (2.0 %), and most of the slip zone lay within the
+    exclusion around Γ's ends.  The status map, compared over all of Γ, now
+    fails it whatever rtol, naming the method, the profile, the share of Γ,
+    its s range and both statuses; t_T, against its slip bound, fails rtol
+    too."""
+    from contactcore import scene_from_dict
+    from verification.agreement import EXCLUDE_FRACTION, STATUS_TOLERATED_SHARE
+    scene = scene_from_dict(SHEARED_BLOCK)
+    _wrong_mu(monkeypatch, "xfem", tol.FRICTION_WRONG_MU)
+    for rtol in (tol.FRICTION_RTOL, tol.FRICTION_LOOSE_RTOL):
+        with pytest.raises(AssertionError) as failure:
+            assert_methods_agree(scene, ["xfem:2"], rtol=rtol)
+        message = str(failure.value)
+        first = message.split(": ", 1)[1].splitlines()[0]
+        assert first.startswith("xfem p2 against fe p2: G status (stick/slip/open, all of Γ compared) differs on ")
+        assert "of Γ's length farther than 0.05 m (1 cell of the coarser run)" in first
+        assert "stick against slip" in first and "the largest stretch at s = " in first
+    result = compare(scene, ["xfem:2"])
+    [row] = result.statuses
+    assert row.share > STATUS_TOLERATED_SHARE and row.status == "stick" and row.reference == "slip"
+    # the stretch lies where the exclusion around Γ's end (x = 2) left the values out
+    assert 2.0 - EXCLUDE_FRACTION * scene.length_scale < row.start < row.end
+    assert f"{row.start:.4g} to {row.end:.4g}" in message
+    tT = next(a for a in result.rows if a.quantity == "tT")
+    assert tT.worst > tol.FRICTION_RTOL and tT.against.startswith("slip bound")
+
+
+def test_the_same_mu_agrees_with_its_status_map():
+    """The same block and μ: xfem P2's map agrees with fe P2's within a
+    cell (its t_T 0.58 % of the slip bound at h = 0.05), and the table
+    says so in summary.md's status row."""
+    from contactcore import scene_from_dict
+    scene = scene_from_dict(SHEARED_BLOCK)
+    result = assert_methods_agree(scene, ["xfem:2"], rtol=tol.FRICTION_RTOL)
+    [row] = result.statuses
+    assert (row.method, row.profile, row.share) == ("xfem p2", "G", 0.0)
+    assert "| xfem p2 | G | status | status | 0 % of Γ | — |" in result.markdown()
+
+
+def test_a_status_boundary_may_move_by_a_cell_not_more():
+    """Hand-made maps along a 1 m Γ (101 samples): the reference slips on
+    s > 0.5; a method whose boundary lies 0.04 m away (within h = 0.045)
+    agrees, one 0.2 m away differs on the 0.1 m beyond a cell of either; a slip
+    zone the reference lacks is caught however far from Γ's ends; on a
+    circle the seam at θ = 0 is no boundary."""
+    from contactcore.laws import SLIP, STICK
+    from verification.agreement import compare_status
+    scene = load_scene("A")
+    s = np.linspace(0.0, 1.0, 101)
+    ref = ProfileData("G", "arclength", {"s": s, "x": s, "y": np.full_like(s, 0.5)})
+    split = lambda at: np.where(s > at, SLIP, STICK)  # noqa: E731
+    h = 0.045  # no sample at a cell's distance from a boundary: no decision at a tie
+    near = compare_status(scene, "m", "G", split(0.545), split(0.505), ref, h)
+    assert near.share == 0.0 and near.differs == pytest.approx(0.04)
+    far = compare_status(scene, "m", "G", split(0.705), split(0.505), ref, h)
+    assert far.share == pytest.approx(0.1) and (far.start, far.end) == pytest.approx((0.56, 0.65))
+    assert (far.status, far.reference) == ("stick", "slip")
+    zone = compare_status(scene, "m", "G", np.where(np.abs(s - 0.2) < 0.051, SLIP, STICK), np.full(101, STICK),
+                          ref, h)
+    assert zone.share == pytest.approx(0.01) and zone.start == zone.end == pytest.approx(0.2)
+    circle = load_scene("C")
+    theta = np.linspace(0.0, 2 * np.pi, 101)[:-1]
+    ring = ProfileData("C4", "angle", {"s": theta, "x": 1 + 0.45 * np.cos(theta), "y": 1.5 + 0.45 * np.sin(theta)})
+    wrapped = np.where(np.abs(np.sin(theta / 2)) < 0.3, SLIP, STICK)   # a zone across θ = 0
+    assert compare_status(circle, "m", "C4", wrapped, wrapped, ring, h).differs == 0.0
+    shifted = np.roll(wrapped, 1)     # one sample round: within a cell, at both ends of the zone
+    assert compare_status(circle, "m", "C4", shifted, wrapped, ring, h).share == 0.0
+
+
+def test_a_failing_agreement_shows_its_message_not_the_helpers_source(tmp_path):
+    """A failing assert_methods_agree printed the library function's whole
+    source in pytest's traceback (newuser33): its frame is hidden."""
+    import os
+    import subprocess
+    import sys
+    root = Path(__file__).resolve().parents[1]
+    test = tmp_path / "test_fails.py"
+    test.write_text("from verification.agreement import assert_methods_agree\n\n"
+                    "def test_fails():\n"
+                    f"    assert_methods_agree('A', ['xfem:1'], h={COARSE_H}, rtol=1e-6, reference='fe:1')\n")
+    run = subprocess.run([sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", str(test)], cwd=tmp_path,
+                         capture_output=True, text=True, env={**os.environ, "PYTHONPATH": str(root)})
+    assert "1 failed" in run.stdout and "profile quantities differ by more than rtol = 1e-06" in run.stdout
+    assert "check_rtol(rtol, measure)" not in run.stdout     # a line of the helper's source

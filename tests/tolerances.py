@@ -1592,3 +1592,21 @@ USER_MESH_ROUND_TRIP = 1e-10
 #: own by at most twice fe's own error (against fe at h/4).  Measured on
 #: scene A at h = 0.1: 0.06 to 0.93 of that error (RMS per quantity).
 USER_MESH_GRADED_WITHIN = 2.0
+
+# --- agreefric (2026-11-29): a wrong μ against the agreement (tests/test_agreement_api.py) ---
+#: newuser33's block (2 x 1 m, bimaterial, pressed and sheared towards its
+#: left roller, exact Coulomb on Γ at mid-height): the μ of the reference
+#: run, and the wrong μ a method was solved with.  fe P2 at h = 0.05: 22 of
+#: 160 points slip at FRICTION_MU, 2 at FRICTION_WRONG_MU.
+FRICTION_MU = 0.1
+FRICTION_WRONG_MU = 0.15
+#: Its spacing and the rtol the agreement is asked for: the helper's
+#: default.  Measured 2026-11-29 (xfem P2 against fe P2, h = 0.05): the same
+#: μ agrees to 0.58 % (t_T against its slip bound; every other quantity
+#: <= 0.02 %) with the status maps alike; the wrong μ differs by 19.8 % of
+#: the slip bound in t_T and on 6 % of Γ's length in status beyond a cell.
+FRICTION_H = 0.05
+FRICTION_RTOL = 0.05
+#: An rtol the wrong μ's values all pass (its worst, t_T, 19.8 %): the
+#: status map alone must fail it.
+FRICTION_LOOSE_RTOL = 0.5

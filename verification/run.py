@@ -194,20 +194,23 @@ def law_line(scene: Scene) -> str:
     return f"Γ's law: `{law.name}`, enforced {how}" + (f"; {values}" if values else "") + ".\n\n"
 
 
-def agreement_table(scene: Scene, profiles: dict, reference: str | None = None, floors: dict | None = None):
+def agreement_table(scene: Scene, profiles: dict, reference: str | None = None, floors: dict | None = None,
+                    statuses: dict | None = None):
     """The agreement of every run with the reference of the plots'
     difference panels (``reference``, else fe at its highest degree, else
     the first run): :func:`verification.agreement.table` of ``profiles``
     (id -> label -> ProfileData) with ``floors`` (quantity -> value in its
-    unit), the figures :func:`~verification.agreement.compare` gives; None
-    for one run (nothing compared)."""
+    unit) and ``statuses`` (label -> Γ's status map,
+    :func:`verification.agreement.status_map`), the figures
+    :func:`~verification.agreement.compare` gives; None for one run
+    (nothing compared)."""
     runs = {}
     for pid, by_label in profiles.items():
         for label, prof in by_label.items():
             runs.setdefault(label, {})[pid] = prof
     if len(runs) < 2:
         return None
-    return agreement.table(scene, runs, plots.reference_of(runs, reference), floors=floors)
+    return agreement.table(scene, runs, plots.reference_of(runs, reference), floors=floors, statuses=statuses)
 
 
 def agreement_section(compared) -> str:
@@ -294,7 +297,8 @@ def reference_label(reference: tuple[str, int] | None) -> str | None:
     return None if reference is None else run_label(*reference)
 
 
-def _solve_reference(scene, reference, h, paper, petsc_options, out: Path, profiles: dict, summaries: list) -> None:
+def _solve_reference(scene, reference, h, paper, petsc_options, out: Path, profiles: dict, summaries: list,
+                     statuses: dict) -> None:
     """Solve the ``reference`` run (method, degree) at ``h`` (the finest
     run's, where an estimate solved several) when it is not one of them,
     write its profiles under ``out/reference`` and add them to
@@ -305,6 +309,7 @@ def _solve_reference(scene, reference, h, paper, petsc_options, out: Path, profi
     result = _as_reference(reference, "the methods asked for solved: compare them", solve, scene, h, degree=degree,
                            paper=paper, **methods.options_for(name, petsc_options=petsc_options), **on_comm)
     summaries.append({**result.summary(), "label": reference_text(run_label(name, degree))})
+    statuses[reference_label(reference)] = agreement.status_map(scene, result)
     for prof in sample_profiles(scene, result.fields, result.interface):
         files.write_profile_csv(out / "reference" / "profiles" / f"{prof.id}.csv", prof)
         profiles.setdefault(prof.id, {})[reference_label(reference)] = prof
@@ -379,7 +384,7 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
         _as_reference(reference, "compare the methods", methods.check_solvable, [reference[0]], scene, finest,
                       reference[1], paper, petsc_options=petsc_options or None)
     out = Path(out)
-    profiles, summaries, paths, estimated, gaps = {}, [], {}, {}, {}
+    profiles, summaries, paths, estimated, gaps, statuses = {}, [], {}, {}, {}, {}
     for name in chosen:
         options = methods.options_for(name, nodes=nodes, **given)
         result, est = _named(chosen, name, _solve, scene, name, h, degree, paper, estimate, options)
@@ -387,12 +392,12 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
                                     floors)
                      if twin is not None else None)
         summaries.append(_write_method(out, scene, name, result, est, fields, draw, profiles, paths, estimated, gaps,
-                                       floors))
+                                       floors, statuses))
         summaries += [exact_row] if exact_row else []
     ref = reference_label(reference)
     if compared and profiles and ref not in {label for by_label in profiles.values() for label in by_label}:
-        _solve_reference(scene, reference, finest, paper, petsc_options or None, out, profiles, summaries)
-    text = _write_summary(out, scene, summaries, profiles, paths, estimated, ref, draw, gaps, floors)
+        _solve_reference(scene, reference, finest, paper, petsc_options or None, out, profiles, summaries, statuses)
+    text = _write_summary(out, scene, summaries, profiles, paths, estimated, ref, draw, gaps, floors, statuses)
     files.write_text(out / files.SCENE_FILE, scene_text(scene_name))
     files.write_json(out / "run.json", {**files.provenance(list(argv)),
                                         "scene": scene.name if isinstance(scene_name, Scene) else str(scene_name),
@@ -547,13 +552,14 @@ def _solve(scene: Scene, name: str, h, degree: int, paper: bool, estimate, optio
 
 
 def _write_method(out: Path, scene: Scene, name: str, result, est, fields: bool, draw: bool, profiles: dict,
-                  paths: dict, estimated: dict, gaps: dict, floors: dict | None = None) -> dict:
+                  paths: dict, estimated: dict, gaps: dict, floors: dict | None = None,
+                  statuses: dict | None = None) -> dict:
     """Method ``name``'s files (profiles with their estimated errors, their
     relative sizes floored by ``floors`` (:func:`estimate_record`),
     fields, summary with its distance from the exact answer if ``gaps``
     has it, the response along the path); its profiles, path and
     estimate join ``profiles``, ``paths`` and ``estimated`` under its
-    label.  Returns its summary."""
+    label, its status map along Γ ``statuses``.  Returns its summary."""
     label = run_label(name, result.degree)
     summary, sampled = _written_profiles(out / name, scene, result, est, floors)
     if label in gaps:
@@ -562,6 +568,8 @@ def _write_method(out: Path, scene: Scene, name: str, result, est, fields: bool,
         estimated[label] = ({p.id: p for p in sampled}, {p.id: est.error_columns(p.id) for p in sampled})
     for prof in sampled:
         profiles.setdefault(prof.id, {})[label] = prof
+    if statuses is not None:
+        statuses[label] = agreement.status_map(scene, result)
     if fields:
         from . import fields_out  # meshio, only for field files
         on_mesh = methods.discretisation(name).field_output == "mesh"
@@ -624,13 +632,14 @@ def _against_exact(out: Path, scene: Scene, twin: Scene, name: str, result, h, d
 
 
 def _write_summary(out: Path, scene: Scene, summaries: list[dict], profiles: dict, paths: dict, estimated: dict,
-                   ref: str | None, draw: bool, gaps: dict, floors: dict | None = None) -> str:
+                   ref: str | None, draw: bool, gaps: dict, floors: dict | None = None,
+                   statuses: dict | None = None) -> str:
     """The plots of every profile (methods overlaid, Δ against ``ref``,
     floored as the agreement is: ``floors``) and of the response, and
     ``summary.md``; returns its text.  ``gaps``: each method's penalty
     against exact (label -> record), if asked."""
     titles, exclude = {p.id: p.title for p in scene.profiles}, default_exclusion(scene)  # the agreement table's
-    table = agreement_table(scene, profiles, ref, floors)
+    table = agreement_table(scene, profiles, ref, floors, statuses)
     for pid, runs in profiles.items() if draw else ():
         left_out = ~agreement.kept_samples(scene, runs[plots.reference_of(runs, ref)], exclude)
         plots.plot_profile(out / "plots" / f"{pid}.png", titles[pid], runs, ref, agreement.floors(scene, floors),

@@ -13,7 +13,8 @@ out: there the stresses have boundary layers or singularities that no
 method resolves at these resolutions, so a pointwise difference there
 measures resolution, not agreement.  A quantity is a component of a vector
 or tensor (:data:`GROUPS`), and is measured against that vector's or
-tensor's size at each sample (:func:`scale_of`): t_N and t_T against |t|,
+tensor's size at each sample (:func:`scale_of`): t_N and t_T against |t|
+(a frictional law's t_T against its slip bound, :func:`slip_bound_size`),
 g_N and g_T against |g| (at a point of Γ, whichever profiles sample them:
 scene B's B6 t_N against B5's t_T), a stress against the size of the
 stresses its profile samples, a displacement against |u|.  So a component
@@ -24,7 +25,10 @@ closed, sticking Γ are zero but for the enforcement's residue, so a gap is
 measured against its size floored by a share of the scene's displacement
 scale (:func:`measured_against`); and every size is floored by round-off of
 the scene's own scale (:func:`roundoff`), so a run whose values are all
-round-off (a Γ pulled open, stress-free) reports no error.
+round-off (a Γ pulled open, stress-free) reports no error.  Under a law
+that opens or slips, each method's status map along Γ is compared with the
+reference's over all of Γ, a boundary's move by a cell allowed
+(:mod:`~verification.agreement.status`).
 
 :func:`compare` solves a scene with several methods and a reference and
 returns the :class:`AgreementTable`; :func:`assert_methods_agree` is the
@@ -49,6 +53,11 @@ One idea a module:
 - :mod:`~verification.agreement.records`: one row, :class:`Agreement`, and
   the rows of a method's profiles (:func:`profile_agreements`,
   :func:`agreements`);
+- :mod:`~verification.agreement.status`: Γ's status map (stick/slip/open)
+  against the reference's, over all of Γ, a cell's move of a boundary
+  allowed (:class:`StatusMap`, :func:`status_map`, :class:`StatusAgreement`,
+  :func:`status_agreements`, :data:`STATUS_ALLOWANCE_CELLS`,
+  :data:`STATUS_TOLERATED_SHARE`);
 - :mod:`~verification.agreement.tables`: :class:`AgreementTable` and
   :func:`table`;
 - :mod:`~verification.agreement.estimates`: runs against their estimated
@@ -59,47 +68,55 @@ One idea a module:
   :func:`label`, :func:`sampled`).
 
 The arrows: ``api`` → ``tables`` → ``records`` → ``classes`` → ``groups``
-→ ``sizes``; ``records`` → ``measures`` → ``samples``; ``estimates`` →
+→ ``sizes``; ``records`` → ``measures`` → ``samples``; ``api``, ``tables`` →
+``status`` → ``measures``; ``tables`` → ``groups``; ``estimates`` →
 ``groups``, ``measures``, ``samples``, ``sizes``.
 
 The package's public names, imported here as ``verification.agreement.NAME``,
 are its modules' public functions, classes and tables, and the
 comparison's tolerances (:data:`EXACT_GAP_FLOOR`, :data:`EXCLUDE_FRACTION`,
-:data:`EXCLUDE_KEEP_SHARE`, :data:`NEGLIGIBLE_SHARE`, :data:`WORST_TIE`:
+:data:`EXCLUDE_KEEP_SHARE`, :data:`NEGLIGIBLE_SHARE`, :data:`STATUS_ALLOWANCE_CELLS`,
+:data:`STATUS_TOLERATED_SHARE`, :data:`WORST_TIE`:
 contactcore.tolerances', with their reasons, still importable from here).
 """
 # The comparison's tolerances, with their reasons, are contactcore.tolerances'
 # and stay importable from here (tests and users import them from this package).
-from contactcore.tolerances import EXACT_GAP_FLOOR, EXCLUDE_FRACTION, EXCLUDE_KEEP_SHARE, NEGLIGIBLE_SHARE, WORST_TIE
+from contactcore.tolerances import (EXACT_GAP_FLOOR, EXCLUDE_FRACTION, EXCLUDE_KEEP_SHARE, NEGLIGIBLE_SHARE,
+                                    STATUS_ALLOWANCE_CELLS, STATUS_TOLERATED_SHARE, WORST_TIE)
 
 from .api import (MEASURES, EstimateVerdict, assert_methods_agree, check_rtol, compare, compare_estimates,
                   compared_variants, label, sampled, variant)
 from .classes import KNOWN_ZEROS, is_zero, quantity_class
 from .estimates import estimated_shares, within_estimates, worst_estimate
-from .groups import GROUPS, ON_GAMMA, components, group_of, group_size, scale_name, scale_of
+from .groups import GROUPS, ON_GAMMA, SLIP_BOUND, components, group_of, group_size, scale_name, scale_of, slip_bound_size
 from .measures import first_largest, percent, relative_rms, share
 from .records import Agreement, agreements, profile_agreements
 from .samples import check_exclusion, default_exclusion, kept_samples
+from .status import StatusAgreement, StatusMap, compare_status, gamma_profiles, status_agreements, status_map
 from .sizes import (KINDS, displacement_scale, floor_problem, floors, gap_floor, gap_floors, measured_against,
                     measured_floor, negligible, roundoff, size_floor, user_floors)
 from .tables import AgreementTable, table
 
 __all__ = [
     # tolerances
-    "EXACT_GAP_FLOOR", "EXCLUDE_FRACTION", "EXCLUDE_KEEP_SHARE", "NEGLIGIBLE_SHARE", "WORST_TIE",
+    "EXACT_GAP_FLOOR", "EXCLUDE_FRACTION", "EXCLUDE_KEEP_SHARE", "NEGLIGIBLE_SHARE", "STATUS_ALLOWANCE_CELLS",
+    "STATUS_TOLERATED_SHARE", "WORST_TIE",
     # sizes
     "KINDS", "displacement_scale", "floor_problem", "floors", "gap_floor", "gap_floors", "measured_against",
     "measured_floor", "negligible", "roundoff", "size_floor", "user_floors",
     # samples
     "check_exclusion", "default_exclusion", "kept_samples",
     # groups
-    "GROUPS", "ON_GAMMA", "components", "group_of", "group_size", "scale_name", "scale_of",
+    "GROUPS", "ON_GAMMA", "SLIP_BOUND", "components", "group_of", "group_size", "scale_name", "scale_of",
+    "slip_bound_size",
     # classes
     "KNOWN_ZEROS", "is_zero", "quantity_class",
     # measures
     "first_largest", "percent", "relative_rms", "share",
     # records
     "Agreement", "agreements", "profile_agreements",
+    # status
+    "StatusAgreement", "StatusMap", "compare_status", "gamma_profiles", "status_agreements", "status_map",
     # tables
     "AgreementTable", "table",
     # estimates

@@ -13,10 +13,12 @@ from dataclasses import dataclass
 
 from contactcore import ContactError, Scene, load_scene, sample_profiles
 from contactcore.labels import run_label
+from contactcore.tolerances import STATUS_TOLERATED_SHARE
 
 from .estimates import within_estimates
 from .samples import check_exclusion, default_exclusion
 from .sizes import user_floors
+from .status import status_map
 from .tables import AgreementTable, table
 
 
@@ -93,7 +95,9 @@ def compare(scene, methods, h: float | None = None, *, reference="fe:2", exclude
     profiles, and return the :class:`AgreementTable` of the methods against
     the reference (``floors``: see :func:`table`).  ``options``
     (``cell="triangle"``, ``dmax=3``, ...) go to the methods that take
-    them; one that none takes is refused."""
+    them; one that none takes is refused.  Under a law that opens or
+    slips, the table's ``statuses`` compare each method's status map
+    along Γ with the reference's (:func:`~verification.agreement.status.status_map`)."""
     from .. import methods as known
     user_floors(floors)  # a bad floor ends here, before any solve
     scene = load_scene(scene)
@@ -103,11 +107,12 @@ def compare(scene, methods, h: float | None = None, *, reference="fe:2", exclude
     variants = compared_variants(methods, ref)
     names = sorted({n for n, _ in [ref, *variants]})
     known.check_options(names, **options)
-    runs = {}
+    runs, maps = {}, {}
     for name, degree in dict.fromkeys([ref, *variants]):
         result = known.solver(name)(scene, h, degree=degree, **known.options_for(name, **options))
         runs[label(name, degree)] = sampled(scene, result)
-    return table(scene, runs, label(*ref), exclude, floors)
+        maps[label(name, degree)] = status_map(scene, result)
+    return table(scene, runs, label(*ref), exclude, floors, maps)
 
 
 def assert_methods_agree(scene, methods, h: float | None = None, rtol: float = 0.05, *, reference="fe:2",
@@ -119,19 +124,31 @@ def assert_methods_agree(scene, methods, h: float | None = None, rtol: float = 0
     reference's scale (see :func:`compare`).  The AssertionError names the
     worst offender first (method, profile, quantity, the sample and both
     values), then the others; the table is returned when all agree.
+    Under a law that opens or slips it also fails, whatever ``rtol``, where
+    a method's status map along Γ (stick/slip/open) differs from the
+    reference's on more than :data:`STATUS_TOLERATED_SHARE` of Γ's length
+    beyond a cell of a status change (all of Γ compared, no exclusion:
+    :mod:`verification.agreement.status`); those lines come first, naming
+    the method, the profile, the share of Γ, its s range and both
+    statuses.
     ``floors`` (quantity -> value in its unit): see :func:`table`.  A
     ``measure`` not in :data:`MEASURES`, an ``rtol`` that is not a finite
     number > 0 and ``methods`` that compare nothing (:func:`compared_variants`)
     are refused with a :class:`ContactError` before any solve."""
+    __tracebackhide__ = True  # pytest: the failure's message, not this function's source
     check_rtol(rtol, measure)
     result = compare(scene, methods, h, reference=reference, exclude=exclude, floors=floors, **options)
     failed = sorted((a for a in result.rows if not getattr(a, measure) <= rtol),
                     key=lambda a: -getattr(a, measure))
-    if failed:
-        lines = [a.describe(result.reference) for a in failed]
-        raise AssertionError(f"{len(failed)} of {len(result.rows)} profile quantities differ by more than "
-                             f"rtol = {rtol:g} ({measure}): " + "\n".join(lines)
-                             + f"\n({result.excluded()})")
+    maps = result.status_failures()
+    if failed or maps:
+        heads = ([f"{len(maps)} of {len(result.statuses)} status maps along Γ differ on more than "
+                  f"{STATUS_TOLERATED_SHARE:g} of Γ beyond a cell of a status change"] if maps else [])
+        heads += ([f"{len(failed)} of {len(result.rows)} profile quantities differ by more than rtol = {rtol:g} "
+                   f"({measure})"] if failed else [])
+        lines = [a.describe(result.reference) for a in [*maps, *failed]]
+        raise AssertionError("; ".join(heads) + ": " + "\n".join(lines) + f"\n({result.excluded()}"
+                             + ("; the status maps compare all of Γ" if result.statuses else "") + ")")
     return result
 
 

@@ -9,19 +9,24 @@ from contactcore import ContactError, Scene
 from contactcore.estimate.singular import singular_regions
 from contactcore.labels import reference_text
 from contactcore.scene import Units
-from contactcore.tolerances import EXACT_GAP_FLOOR, NEGLIGIBLE_SHARE
+from contactcore.tolerances import EXACT_GAP_FLOOR, NEGLIGIBLE_SHARE, STATUS_ALLOWANCE_CELLS, STATUS_TOLERATED_SHARE
 
+from .groups import SLIP_BOUND
 from .measures import first_largest, percent
 from .records import Agreement, profile_agreements
 from .samples import check_exclusion, default_exclusion
 from .sizes import measured_floor, user_floors
+from .status import StatusAgreement, status_agreements
 
 
 @dataclass(frozen=True)
 class AgreementTable:
     """Methods against a reference on one scene: one :class:`Agreement` per
     method, profile and quantity; samples within ``exclude`` of the named
-    singular ``regions`` left out."""
+    singular ``regions`` left out.  ``statuses``: one
+    :class:`~verification.agreement.status.StatusAgreement` per method and Γ
+    profile, Γ's status map against the reference's over all of Γ (none
+    where the law is linear or the runs' maps were not given)."""
 
     scene: str
     reference: str
@@ -31,6 +36,14 @@ class AgreementTable:
     gap_floor: float = 0.0  # an exact law's gaps' floor (measured_against), in length; 0 for a penalty law
     floors: tuple[tuple[str, float], ...] = ()  # the floors given (quantity, value in its unit): table's floors
     units: Units = Units()  # the names of the scene's units, which the floors are in
+    statuses: tuple[StatusAgreement, ...] = ()  # Γ's status maps against the reference's (status.py)
+
+    def status_failures(self, tolerated: float | None = None) -> list[StatusAgreement]:
+        """The :attr:`statuses` whose share of Γ differing beyond the
+        allowance exceeds ``tolerated`` (default :data:`STATUS_TOLERATED_SHARE`),
+        the largest first."""
+        limit = STATUS_TOLERATED_SHARE if tolerated is None else tolerated
+        return sorted((a for a in self.statuses if a.share > limit), key=lambda a: -a.share)
 
     def worst(self, measure: str = "worst") -> Agreement:
         """The row with the largest ``measure`` (``"worst"`` or ``"rms"``;
@@ -70,8 +83,11 @@ class AgreementTable:
                          "and is not used." if self._below_gap_floor(q, v) else
                          f" {q} is measured against sqrt({q}² + ({v:.3g} {column_unit(q, self.units)})²) "
                          "(a floor given)." for q, v in self.floors)
+        friction = next((a.against for a in self.rows if a.against.startswith(SLIP_BOUND)), "")
         floor += (" Each quantity is measured against the size of its vector or tensor in the reference (t_N and "
-                  "t_T against |t|, a stress against the stresses its profile samples), at least "
+                  + ("t_T against |t|" if not friction else
+                     f"t_N against |t|, t_T against the law's {friction}, the friction's own size")
+                  + ", a stress against the stresses its profile samples), at least "
                   f"{NEGLIGIBLE_SHARE:g} of the scene's own scale (round-off): the worst sample is the largest "
                   "|difference| over the largest size on the profile (not over the size at that sample), the RMS "
                   "the RMS difference over the RMS size. A quantity's class names what it is: `zero` (exactly zero in "
@@ -81,16 +97,26 @@ class AgreementTable:
                   "the outer boundary), `interior` (any other); `at s (x, y)` is the worst sample's parameter "
                   f"along its profile, the arc length in {self.units.length} (on a circular Γ the polar angle in "
                   "rad, unless the profile asks for the arc length), and its point.")
+        if self.statuses:
+            floor += (" A `status` row compares Γ's status map (stick/slip/open, at each sample the status its "
+                      "tractions follow) with the reference's over all of Γ, no sample left out (a status has no "
+                      "singularity): its worst is the share of Γ's length whose status differs farther than "
+                      f"{STATUS_ALLOWANCE_CELLS:g} cell (the coarser run's h) from a status change of either run, "
+                      "at the largest such stretch (its s range, its middle point, the method's status against "
+                      "the reference's); its RMS column the share that differs at all.")
         lines = [f"Each run against the {reference_text(self.reference)}; {self.excluded()}.{floor}", "",
                  "| method | profile | quantity | class | worst sample | at s (x, y) | RMS |",
                  "|---|---|---|---|---|---|---|"]
         lines += [f"| {a.method} | {a.profile} | {a.quantity} | {a.kind} | {percent(a.worst)} | {a.s:.4g} "
                   f"({a.x:.4g}, {a.y:.4g}) | {percent(a.rms)} |" for a in self.rows]
+        lines += [f"| {a.method} | {a.profile} | status | status | {percent(a.share)} of Γ | "
+                  + (f"{a.start:.4g} to {a.end:.4g} ({a.x:.4g}, {a.y:.4g}): {a.status} against {a.reference}"
+                     if a.share > 0 else "—") + f" | {percent(a.differs)} differ |" for a in self.statuses]
         return "\n".join(lines) + "\n"
 
 
 def table(scene: Scene, runs: dict[str, dict], reference: str, exclude: float | None = None,
-          floors: dict | None = None) -> AgreementTable:
+          floors: dict | None = None, statuses: dict | None = None) -> AgreementTable:
     """The :class:`AgreementTable` of sampled profiles ``runs`` (label ->
     id -> ProfileData), ``runs[reference]`` the reference.  ``floors``
     (quantity -> value in its unit) measures a quantity against
@@ -98,7 +124,11 @@ def table(scene: Scene, runs: dict[str, dict], reference: str, exclude: float | 
     count, for a quantity that is zero in the reference (a patch test's
     σxy), where its own round-off would be its scale.  ``reference`` is a
     label among ``runs``' keys; anything else is refused with a
-    :class:`ContactError` naming the labels."""
+    :class:`ContactError` naming the labels.  ``statuses`` (label ->
+    :class:`~verification.agreement.status.StatusMap`, or None for a run
+    without one: :func:`~verification.agreement.status.status_map`) adds
+    each method's status map against the reference's (the table's
+    ``statuses``), where both are given."""
     if not isinstance(runs, dict):
         raise ContactError(f"runs: a dict of label -> {{profile id: ProfileData}} (got {type(runs).__name__})")
     labels = ", ".join(map(repr, runs))
@@ -112,6 +142,9 @@ def table(scene: Scene, runs: dict[str, dict], reference: str, exclude: float | 
     ref, given = runs[reference], user_floors(floors)
     rows = [row for label, got in runs.items() if label != reference
             for row in profile_agreements(scene, label, got, ref, exclude, floors=given)]
+    maps = statuses or {}
+    compared = [row for label in runs if label != reference and maps.get(label) and maps.get(reference)
+                for row in status_agreements(scene, label, maps[label], maps[reference], ref)]
     regions = tuple((name, tuple(map(tuple, pts.tolist()))) for name, pts in singular_regions(scene))
     return AgreementTable(scene.name, reference, exclude, regions, tuple(rows), measured_floor(scene, "gN"),
-                          tuple(given.items()), scene.units)
+                          tuple(given.items()), scene.units, tuple(compared))
