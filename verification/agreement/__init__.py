@@ -83,6 +83,7 @@ from .samples import check_exclusion, default_exclusion, kept_samples
 from .sizes import (KINDS, displacement_scale, floor_problem, floors, gap_floor, gap_floors, measured_against,
                     measured_floor, negligible, roundoff, size_floor, user_floors)
 from .tables import AgreementTable, table
+from .outside import BLAME_MULTIPLE, OutsideRow, OutsideTable, Region, compare_outside, judge, outside_profiles, read_outside  # noqa: E501 (helper outside)
 
 __all__ = [
     # tolerances
