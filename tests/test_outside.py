@@ -85,17 +85,18 @@ def test_the_same_through_compare_outside_from_a_csv_in_any_order(cylinder, tmp_
     assert "| G | tN | 3 % at s = " in text and "outside 2.136–4.147 rad (33, " in text
 
 
-def test_a_finer_answer_agrees_everywhere(cylinder):
-    """The project's answer at H/4 (every other sample, 51 of them) as the
-    outside code's: within its estimate everywhere, t_N and g_N."""
+@pytest.mark.parametrize("step", [1, 2])
+def test_a_finer_answer_agrees_everywhere(cylinder, step):
+    """The project's answer at H/4 (all 101 samples, or every other one) as
+    the outside code's: within its estimate everywhere, on Γ and the ray."""
     scene, estimate, project, finer = cylinder
-    g = finer["G"].columns
-    outside = {"G": {"s": g["s"][::2], "tN": g["tN"][::2], "gN": g["gN"][::2]}}
+    outside = {pid: {c: v[::step] for c, v in p.columns.items()} for pid, p in finer.items()}
     table = judge(scene, outside_profiles(scene, outside), project, estimate, "fe p2")
+    assert len(table.rows) == 7
     for row in table.rows:
-        assert set(row.columns["verdict"]) == {"agree"}, row.quantity
+        assert set(row.columns["verdict"]) == {"agree"}, (row.profile, row.quantity)
         assert 0 < row.ratio <= BLAME_MULTIPLE
-        assert len(row.columns["s"]) == 51
+        assert len(row.columns["s"]) == len(range(0, 101, step))
 
 
 def test_a_warned_estimate_gives_no_verdict():
