@@ -40,7 +40,7 @@ from contactcore import ContactError, ProfileData, Scene, SceneError, load_scene
 from contactcore.estimate.runs import ERROR_SUFFIX
 from contactcore.estimate.singular import far_from_singular, singular_regions
 from contactcore.geometry import CircleInterface
-from contactcore.scene import LineProfile, Units
+from contactcore.scene import BODIES, LineProfile, Units
 from contactcore.scene.vocabulary import QUANTITIES
 from contactcore.spelling import hint
 from contactcore.tolerances import ESTIMATE_TRUST
@@ -72,7 +72,9 @@ BLAME_MULTIPLE = 2 * ESTIMATE_TRUST
 #: estimate of an unwarned quantity read 4.39-4.54 with one cell (G's g_T,
 #: t_N, t_T on the cylinder: one sample each blamed wrongly, an exact law's
 #: traction varying at the fine cells' scale), 3.68 with 1.5, 2.52 with two
-#: cells (none blamed), 2.17 with three.
+#: cells (none blamed), 2.17 with three.  Within the same body: a profile
+#: crossing Γ samples two fields, and the runs' error where Γ cuts it
+#: (scene C's C3 σyy) is not the other side's.
 ESTIMATE_WINDOW_CELLS = 2.0
 
 #: A sample given by ``x, y`` lies on the profile when it is within this
@@ -442,12 +444,15 @@ def _interpolated(geo, s_p: np.ndarray, q_p: np.ndarray, s: np.ndarray) -> tuple
     return value, alpha * (1 - alpha) / 2 * np.maximum(d2[j], d2[j + 1])
 
 
-def _envelope(geo, s_p: np.ndarray, err: np.ndarray, window: float) -> np.ndarray:
-    """The largest ``err`` within ``window`` (in ``s``'s unit) of each sample."""
+def _envelope(geo, s_p: np.ndarray, err: np.ndarray, window: float, body: np.ndarray) -> np.ndarray:
+    """The largest ``err`` within ``window`` (in ``s``'s unit) of each
+    sample, in the same ``body`` (a profile crossing Γ samples two fields:
+    the runs' error where Γ cuts it is not the other side's)."""
     d = np.abs(s_p[:, None] - s_p[None, :])
     if geo.periodic:
         d = np.minimum(d, geo.span - d)
-    return np.max(np.where(d <= window, err[None, :], 0.0), axis=1)
+    near = (d <= window) & (body[:, None] == body[None, :])
+    return np.max(np.where(near, err[None, :], 0.0), axis=1)
 
 
 def _regions(s: np.ndarray, verdict: np.ndarray, diff: np.ndarray, budget: np.ndarray) -> tuple[Region, ...]:
@@ -501,7 +506,9 @@ def judge(scene: Scene, outside: dict[str, ProfileData], project: dict[str, Prof
         for q in got.names[3:]:
             value, interpolation = _interpolated(geo, mine.columns["s"], mine.columns[q], s)
             error = est.profiles[pid][q].error
-            envelope = _envelope(geo, mine.columns["s"], error, window_length * geo.per_length)
+            body = scene.body_of(np.column_stack([mine.columns["x"], mine.columns["y"]]),
+                                 known[pid].side if known[pid].side in BODIES else BODIES[1])
+            envelope = _envelope(geo, mine.columns["s"], error, window_length * geo.per_length, body)
             budget = _interpolated(geo, mine.columns["s"], envelope, s)[0] + interpolation
             diff = got.columns[q] - value
             floor = size_floor(q, given, project, scene=scene)
