@@ -13,9 +13,8 @@ import tolerances as tol
 from contactcore import ContactError, SceneError, load_scene
 from contactcore import estimate as est
 from verification import methods as known
-from verification.agreement import (BLAME_MULTIPLE, compare_outside, default_exclusion, judge, outside_profiles,
-                                    sampled)
-from verification.agreement.outside import MIN_SAMPLES, read_outside
+from verification.agreement import compare_outside, default_exclusion, sampled
+from verification.agreement.outside import BLAME_MULTIPLE, MIN_SAMPLES, judge, outside_profiles, read_outside
 
 SCENES = Path(__file__).resolve().parent / "scenes"
 #: A disc pressed uniformly into a softer ring, exact unilateral law (Lamé:

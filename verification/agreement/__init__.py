@@ -78,12 +78,12 @@ from .classes import KNOWN_ZEROS, is_zero, quantity_class
 from .estimates import estimated_shares, within_estimates, worst_estimate
 from .groups import GROUPS, ON_GAMMA, components, group_of, group_size, scale_name, scale_of
 from .measures import first_largest, percent, relative_rms, share
+from .outside import compare_outside  # an outside code's answer against the project's (docs/api.md)
 from .records import Agreement, agreements, profile_agreements
 from .samples import check_exclusion, default_exclusion, kept_samples
 from .sizes import (KINDS, displacement_scale, floor_problem, floors, gap_floor, gap_floors, measured_against,
                     measured_floor, negligible, roundoff, size_floor, user_floors)
 from .tables import AgreementTable, table
-from .outside import BLAME_MULTIPLE, OutsideRow, OutsideTable, Region, compare_outside, judge, outside_profiles, read_outside  # noqa: E501 (helper outside)
 
 __all__ = [
     # tolerances

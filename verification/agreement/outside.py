@@ -185,8 +185,8 @@ class OutsideTable:
                  f"The project's answer: {self.method} at h = {self.hs[-1]:g} {length}, its error estimated from "
                  f"the runs at h = {', '.join(f'{h:g}' for h in self.hs)} {length} (Richardson, "
                  "docs/error-estimates.md), taken at each sample as the largest `q_err` within "
-                 f"{ESTIMATE_WINDOW_CELLS:g} coarse cells either side along the profile, plus the error of interpolating the "
-                 f"project's samples to the outside's; {left}.", "",
+                 f"{ESTIMATE_WINDOW_CELLS:g} coarse cells either side along the profile in the same body, plus the "
+                 f"error of interpolating the project's samples to the outside's; {left}.", "",
                  "Verdicts: " + "; ".join(f"`{k}`: {v}" for k, v in VERDICTS.items()) + ".", "",
                  "| profile | quantity | worst | RMS | project's estimated error (RMS) | difference / estimate "
                  "(RMS) | verdicts along s |", "|---|---|---|---|---|---|---|"]
