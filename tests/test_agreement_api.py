@@ -533,7 +533,7 @@ def test_a_wrong_mu_fails_the_agreement_on_the_status_map(monkeypatch):
             assert_methods_agree(scene, ["xfem:2"], rtol=rtol)
         message = str(failure.value)
         first = message.split(": ", 1)[1].splitlines()[0]
-        assert first.startswith("xfem p2 against fe p2: G status (stick/slip/open, all of Γ compared) differs on ")
+        assert first.startswith("xfem P2 against fe P2: G status (stick/slip/open, all of Γ compared) differs on ")
         assert "of Γ's length farther than 0.05 m (1 cell of the coarser run)" in first
         assert "stick against slip" in first and "the largest stretch at s = " in first
     result = compare(scene, ["xfem:2"])

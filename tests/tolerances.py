@@ -1610,3 +1610,17 @@ FRICTION_RTOL = 0.05
 #: An rtol the wrong μ's values all pass (its worst, t_T, 19.8 %): the
 #: status map alone must fail it.
 FRICTION_LOOSE_RTOL = 0.5
+
+# --- outside (2026-11-29): an outside code's answer against the project's (tests/test_outside.py) ---
+#: The coarser run of the outside tests (fe P2, estimated from H and H/2):
+#: the cylinder's fe P2 estimate carries no warning there, scene C's C4
+#: t_N one (split share), as the tests need.
+OUTSIDE_H = 0.1
+#: newuser33's perturbation of t_N in the middle third of Γ: 3 % of max|t_N|.
+OUTSIDE_PERTURBATION = 0.03
+#: The agreement's worst sample of that perturbation is 3 % of the largest
+#: |t| = |(t_N, t_T)|, t_T zero by symmetry on the cylinder: its residue
+#: moves the share by (t_T/t_N)²/2, far below this (tests/tolerances.py
+#: ZERO_BY_SYMMETRY bounds t_T/|t| by 0.1, which would give 5e-3; fe P2 at
+#: h = 0.05 reads far less).
+OUTSIDE_ZERO_TT = 5e-3

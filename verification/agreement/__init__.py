@@ -90,6 +90,7 @@ from .classes import KNOWN_ZEROS, is_zero, quantity_class
 from .estimates import estimated_shares, within_estimates, worst_estimate
 from .groups import GROUPS, ON_GAMMA, SLIP_BOUND, components, group_of, group_size, scale_name, scale_of, slip_bound_size
 from .measures import first_largest, percent, relative_rms, share
+from .outside import compare_outside  # an outside code's answer against the project's (docs/api.md)
 from .records import Agreement, agreements, profile_agreements
 from .samples import check_exclusion, default_exclusion, kept_samples
 from .status import StatusAgreement, StatusMap, compare_status, gamma_profiles, status_agreements, status_map

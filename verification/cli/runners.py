@@ -42,6 +42,13 @@ def run(args, argv) -> None:
               reference=args.reference, against_exact=args.against_exact, floors=floors(args.floor), argv=argv)
 
 
+def against(args, argv) -> None:
+    """``against``: an outside answer against one method's (:func:`verification.against_outside.against`)."""
+    from ..against_outside import against as judge
+    judge(args.outside, args.scene, args.method, args.degree, args.out, h=args.h, levels=args.levels,
+          exclude=args.exclude, floors=floors(args.floor), argv=argv, cell=args.cell, dmax=args.dmax)
+
+
 def paper(args, argv) -> None:
     """``paper``: the paper's figures (:func:`verification.paper.paper`)."""
     from ..paper import paper as figures

@@ -1,0 +1,213 @@
+"""An outside code's answer against the project's (verification.agreement.compare_outside,
+issue 34): newuser33's case in code (fe P2's own answer perturbed by 3 % of
+max|t_N| in the middle third of Γ is blamed on the outside code there and
+agrees elsewhere; the project's answer at a finer h agrees everywhere), a
+warned estimate gives no verdict, samples near singular points are left
+out, and every bad input is one line naming its problem, before any solve."""
+from pathlib import Path
+
+import numpy as np
+import pytest
+import tolerances as tol
+
+from contactcore import ContactError, SceneError, load_scene
+from contactcore import estimate as est
+from verification import methods as known
+from verification.agreement import compare_outside, default_exclusion, sampled
+from verification.agreement.outside import BLAME_MULTIPLE, MIN_SAMPLES, judge, outside_profiles, read_outside
+
+SCENES = Path(__file__).resolve().parent / "scenes"
+#: A disc pressed uniformly into a softer ring, exact unilateral law (Lamé:
+#: t_N = −13.06 MPa all round Γ): fe P2's estimate there carries no warning.
+CYLINDER = SCENES / "cylinder.toml"
+
+
+def _runs(scene, h, levels=2):
+    return [known.solver("fe")(scene, hk, degree=2) for hk in est.levels_of(h, levels)]
+
+
+@pytest.fixture(scope="module")
+def cylinder():
+    """fe P2 on the cylinder at H, H/2 (estimated) and H/4 (a finer answer)."""
+    scene = load_scene(CYLINDER)
+    coarse, fine, finer = _runs(scene, tol.OUTSIDE_H, 3)
+    estimate = est.estimate_runs(scene, [coarse, fine], default_exclusion(scene))
+    project = {p.id: p for p in estimate.sampled}
+    return scene, estimate, project, sampled(scene, finer)
+
+
+def _middle_third(s, span):
+    return (s >= span / 3) & (s <= 2 * span / 3)
+
+
+def _perturbed(project):
+    """newuser33's outside answer: the project's own t_N on Γ, plus 3 % of
+    max|t_N| in the middle third of Γ (s from 2π/3 to 4π/3)."""
+    g = project["G"].columns
+    tn = g["tN"] + tol.OUTSIDE_PERTURBATION * np.max(np.abs(g["tN"])) * _middle_third(g["s"], 2 * np.pi)
+    return {"G": {"s": g["s"], "tN": tn}}
+
+
+def test_a_perturbed_middle_third_is_the_outside_codes_error(cylinder):
+    scene, estimate, project, _ = cylinder
+    outside = _perturbed(project)
+    table = judge(scene, outside_profiles(scene, outside), project, estimate, "fe p2")
+    [row] = table.rows
+    middle = _middle_third(row.columns["s"], 2 * np.pi)
+    assert middle.sum() == 33 and not row.warnings
+    assert list(row.columns["verdict"][middle]) == ["outside"] * 33
+    assert list(row.columns["verdict"][~middle]) == ["agree"] * 68
+    assert [r.verdict for r in row.regions] == ["agree", "outside", "agree"]
+    assert row.regions[1].s_from == pytest.approx(row.columns["s"][middle][0])
+    assert row.regions[1].s_to == pytest.approx(row.columns["s"][middle][-1])
+    assert row.regions[1].ratio > BLAME_MULTIPLE
+    # the agreement's worst sample: 3 % of the largest |t| (t_T zero by symmetry)
+    assert abs(row.agreement.worst / tol.OUTSIDE_PERTURBATION - 1) <= tol.OUTSIDE_ZERO_TT
+
+
+def test_the_same_through_compare_outside_from_a_csv_in_any_order(cylinder, tmp_path):
+    """The public route (solves H and H/2 itself) from a CSV whose rows run
+    backwards, giving x, y and no s: the same verdicts as above."""
+    scene, estimate, project, _ = cylinder
+    g = project["G"].columns
+    tn = _perturbed(project)["G"]["tN"]
+    path = tmp_path / "G.csv"
+    path.write_text("x,y,tN\n" + "".join(f"{x!r},{y!r},{t!r}\n" for x, y, t in zip(g["x"][::-1], g["y"][::-1],
+                                                                                     tn[::-1])))
+    table = compare_outside(CYLINDER, path, method="fe:2", h=tol.OUTSIDE_H)
+    [row] = table.rows
+    assert table.hs == (tol.OUTSIDE_H, tol.OUTSIDE_H / 2) and table.method == "fe p2"
+    middle = _middle_third(row.columns["s"], 2 * np.pi)
+    assert list(row.columns["verdict"][middle]) == ["outside"] * 33
+    assert list(row.columns["verdict"][~middle]) == ["agree"] * 68
+    text = table.markdown()
+    assert "| G | tN | 3 % at s = " in text and "outside 2.136–4.147 rad (33, " in text
+
+
+@pytest.mark.parametrize("step", [1, 2])
+def test_a_finer_answer_agrees_everywhere(cylinder, step):
+    """The project's answer at H/4 (all 101 samples, or every other one) as
+    the outside code's: within its estimate everywhere, on Γ and the ray."""
+    scene, estimate, project, finer = cylinder
+    outside = {pid: {c: v[::step] for c, v in p.columns.items()} for pid, p in finer.items()}
+    table = judge(scene, outside_profiles(scene, outside), project, estimate, "fe p2")
+    assert len(table.rows) == 7
+    for row in table.rows:
+        assert set(row.columns["verdict"]) == {"agree"}, (row.profile, row.quantity)
+        assert 0 < row.ratio <= BLAME_MULTIPLE
+        assert len(row.columns["s"]) == len(range(0, 101, step))
+
+
+def test_a_warned_estimate_gives_no_verdict():
+    """Scene C at h = 0.1: fe P2's C4 t_N estimate is warned (split share):
+    every sample of C4 reads `warned`, with the warning named."""
+    scene = load_scene("C")
+    runs = _runs(scene, tol.OUTSIDE_H)
+    estimate = est.estimate_runs(scene, runs, default_exclusion(scene))
+    project = {p.id: p for p in estimate.sampled}
+    c4 = project["C4"].columns
+    outside = {"C4": {"s": c4["s"], "tN": c4["tN"] * (1 + tol.OUTSIDE_PERTURBATION)}}
+    [row] = judge(scene, outside_profiles(scene, outside), project, estimate, "fe p2").rows
+    assert "C4:tN" in estimate.unsettled
+    assert set(row.columns["verdict"]) == {"warned"} and [r.verdict for r in row.regions] == ["warned"]
+    assert row.warnings and all("C4:tN" in w for w in row.warnings)
+
+
+def test_samples_near_singular_points_are_left_out():
+    """Scene A's Γ (A5) ends on the domain's sides: samples within the
+    exclusion of its ends are `left out`, the rest judged."""
+    scene = load_scene("A")
+    runs = _runs(scene, tol.OUTSIDE_H)
+    exclude = default_exclusion(scene)
+    estimate = est.estimate_runs(scene, runs, exclude)
+    project = {p.id: p for p in estimate.sampled}
+    a5 = project["A5"].columns
+    [row] = judge(scene, outside_profiles(scene, {"A5": {"s": a5["s"], "gN": a5["gN"]}}), project, estimate,
+                  "fe p2").rows
+    near = (a5["s"] < exclude) | (a5["s"] > 1 - exclude)
+    assert near.any() and not near.all()
+    assert set(row.columns["verdict"][near]) == {"left out"}
+    assert "left out" not in set(row.columns["verdict"][~near])
+    assert row.regions[0].verdict == row.regions[-1].verdict == "left out"
+
+
+# --- bad input: one line naming the problem, before any solve -------------------------------------------------
+
+S = list(np.linspace(0.0, 6.0, 5))
+T = [-13.0] * 5
+
+
+@pytest.mark.parametrize("outside, words", [
+    ({"g": {"s": S, "tN": T}}, ["scene cylinder has no profile 'g'", "did you mean 'G'?", "its profiles: G, R"]),
+    ({"G": {"tN": T}}, ["outside['G']", "no position column", "s", "x and y"]),
+    ({"G": {"x": S, "tN": T}}, ["no position column", "only x given"]),
+    ({"G": {"s": S, "tn": T}}, ["unknown quantity 'tn'", "did you mean 'tN'?"]),
+    ({"G": {"s": S, "sxy": T}}, ["unknown quantity 'sxy'", "profile G samples gN, gT, tN, tT"]),
+    ({"G": {"s": S, "tN": T[:4] + [float("nan")]}}, ["outside['G'].tN", "sample 4 is nan", "not a finite number"]),
+    ({"G": {"s": S[:1], "tN": T[:1]}}, [f"1 sample: give at least {MIN_SAMPLES}", "one sample is a point"]),
+    ({"G": {"s": [], "tN": []}}, [f"0 samples: give at least {MIN_SAMPLES}"]),
+    ({"G": {"s": S, "tN": T[:4]}}, ["columns of different lengths", "s 5", "tN 4"]),
+    ({"G": {"s": S[:4] + [7.0], "tN": T}}, ["sample 4: s = 7 rad lies off profile G", "from 0 to 6.28319 rad",
+                                            "docs/scenes.md"]),
+    ({"G": {"x": [2.53, 1.7], "y": [-0.4, 0.9], "tN": T[:2]}}, ["sample 1 (x = 1.7, y = 0.9 mm) lies",
+                                                                  "mm off profile G"]),
+    ({"G": {"s": [0.0, np.pi / 2], "x": [2.53, 1.7], "y": [-0.4, -1.23], "tN": T[:2]}},
+     ["sample 1: s = 1.5708 rad is the point (1.7, 0.43)", "s's origin or direction differs"]),
+    ({"R": {"s": [0.0, 0.5], "ux": [0.0, 0.1]}}, []),  # a line profile's s in mm: accepted
+    ("not a mapping", ["outside: no *.csv", "neither a CSV file nor a folder"]),
+])
+def test_bad_input_is_one_line_naming_the_problem(outside, words, monkeypatch):
+    monkeypatch.setattr(known, "solver", lambda name: pytest.fail("solved before refusing the input"))
+    if not words:
+        assert list(outside_profiles(load_scene(CYLINDER), outside)) == ["R"]
+        return
+    with pytest.raises(ContactError) as info:
+        compare_outside(CYLINDER, outside, method="fe:2", h=tol.OUTSIDE_H)
+    message = str(info.value)
+    assert "\n" not in message
+    if isinstance(outside, dict):
+        assert isinstance(info.value, SceneError)
+    assert any(w in message for w in words) if outside == "not a mapping" else all(w in message for w in words), \
+        message
+
+
+def test_bad_csvs_name_the_file_line_and_column(tmp_path):
+    (tmp_path / "G.csv").write_text("s,tN\n0.0,-13\n1.0,abc\n")
+    with pytest.raises(ContactError, match=r"G.csv line 3, column tN: 'abc' is not a number"):
+        read_outside(tmp_path / "G.csv")
+    (tmp_path / "G.csv").write_text("s,tN\n")        # newuser33's header-only file: 0 samples, named
+    with pytest.raises(SceneError, match=f"0 samples: give at least {MIN_SAMPLES}"):
+        outside_profiles(load_scene(CYLINDER), tmp_path / "G.csv")
+    (tmp_path / "empty").mkdir()
+    with pytest.raises(ContactError, match="no \\*.csv file in folder"):
+        read_outside(tmp_path / "empty")
+
+
+# --- the command line ------------------------------------------------------------------------------------------
+
+
+def test_the_against_command_writes_the_verdict(cylinder, tmp_path, capsys):
+    """``against FOLDER SCENE``: outside.md and outside.csv in the result
+    folder, the verdict of every sample; a bad file ends in one line,
+    exit status 2, and no folder."""
+    from verification import __main__ as verification_main
+    from verification.against_outside import CSV_COLUMNS
+    _, _, project, _ = cylinder
+    given = tmp_path / "given"
+    given.mkdir()
+    outside = _perturbed(project)["G"]
+    (given / "G.csv").write_text("s,tN\n" + "".join(f"{s!r},{t!r}\n" for s, t in zip(outside["s"], outside["tN"])))
+    out = tmp_path / "out"
+    assert verification_main.main(["against", str(given), str(CYLINDER), "--h", str(tol.OUTSIDE_H),
+                                   "--out", str(out)]) == 0
+    text = (out / "outside.md").read_text()
+    assert "# An outside answer against fe p2 on scene cylinder" in text and "outside 2.136–4.147 rad (33, " in text
+    lines = (out / "outside.csv").read_text().splitlines()
+    assert lines[0] == ",".join(CSV_COLUMNS) and len(lines) == 102
+    assert [line.rsplit(",", 1)[1] for line in lines[1:]].count("outside") == 33
+    (given / "g.csv").write_text("s,tN\n0,1\n1,2\n")
+    capsys.readouterr()
+    assert verification_main.main(["against", str(given), str(CYLINDER), "--out", str(tmp_path / "no")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err == ["error: outside['g']: scene cylinder has no profile 'g' (did you mean 'G'?) (its profiles: G, R)"]
+    assert not (tmp_path / "no").exists()
