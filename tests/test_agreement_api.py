@@ -554,8 +554,8 @@ def test_the_same_mu_agrees_with_its_status_map():
     scene = scene_from_dict(SHEARED_BLOCK)
     result = assert_methods_agree(scene, ["xfem:2"], rtol=tol.FRICTION_RTOL)
     [row] = result.statuses
-    assert (row.method, row.profile, row.share) == ("xfem p2", "G", 0.0)
-    assert "| xfem p2 | G | status | status | 0 % of Γ | — |" in result.markdown()
+    assert (row.method, row.profile, row.share) == ("xfem P2", "G", 0.0)
+    assert "| xfem P2 | G | status | status | 0 % of Γ | — |" in result.markdown()
 
 
 def test_a_status_boundary_may_move_by_a_cell_not_more():

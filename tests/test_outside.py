@@ -51,7 +51,7 @@ def _perturbed(project):
 def test_a_perturbed_middle_third_is_the_outside_codes_error(cylinder):
     scene, estimate, project, _ = cylinder
     outside = _perturbed(project)
-    table = judge(scene, outside_profiles(scene, outside), project, estimate, "fe p2")
+    table = judge(scene, outside_profiles(scene, outside), project, estimate, "fe P2")
     [row] = table.rows
     middle = _middle_third(row.columns["s"], 2 * np.pi)
     assert middle.sum() == 33 and not row.warnings
@@ -76,7 +76,7 @@ def test_the_same_through_compare_outside_from_a_csv_in_any_order(cylinder, tmp_
                                                                                      tn[::-1])))
     table = compare_outside(CYLINDER, path, method="fe:2", h=tol.OUTSIDE_H)
     [row] = table.rows
-    assert table.hs == (tol.OUTSIDE_H, tol.OUTSIDE_H / 2) and table.method == "fe p2"
+    assert table.hs == (tol.OUTSIDE_H, tol.OUTSIDE_H / 2) and table.method == "fe P2"
     middle = _middle_third(row.columns["s"], 2 * np.pi)
     assert list(row.columns["verdict"][middle]) == ["outside"] * 33
     assert list(row.columns["verdict"][~middle]) == ["agree"] * 68
@@ -90,7 +90,7 @@ def test_a_finer_answer_agrees_everywhere(cylinder, step):
     the outside code's: within its estimate everywhere, on Γ and the ray."""
     scene, estimate, project, finer = cylinder
     outside = {pid: {c: v[::step] for c, v in p.columns.items()} for pid, p in finer.items()}
-    table = judge(scene, outside_profiles(scene, outside), project, estimate, "fe p2")
+    table = judge(scene, outside_profiles(scene, outside), project, estimate, "fe P2")
     assert len(table.rows) == 7
     for row in table.rows:
         assert set(row.columns["verdict"]) == {"agree"}, (row.profile, row.quantity)
@@ -107,7 +107,7 @@ def test_a_warned_estimate_gives_no_verdict():
     project = {p.id: p for p in estimate.sampled}
     c4 = project["C4"].columns
     outside = {"C4": {"s": c4["s"], "tN": c4["tN"] * (1 + tol.OUTSIDE_PERTURBATION)}}
-    [row] = judge(scene, outside_profiles(scene, outside), project, estimate, "fe p2").rows
+    [row] = judge(scene, outside_profiles(scene, outside), project, estimate, "fe P2").rows
     assert "C4:tN" in estimate.unsettled
     assert set(row.columns["verdict"]) == {"warned"} and [r.verdict for r in row.regions] == ["warned"]
     assert row.warnings and all("C4:tN" in w for w in row.warnings)
@@ -123,7 +123,7 @@ def test_samples_near_singular_points_are_left_out():
     project = {p.id: p for p in estimate.sampled}
     a5 = project["A5"].columns
     [row] = judge(scene, outside_profiles(scene, {"A5": {"s": a5["s"], "gN": a5["gN"]}}), project, estimate,
-                  "fe p2").rows
+                  "fe P2").rows
     near = (a5["s"] < exclude) | (a5["s"] > 1 - exclude)
     assert near.any() and not near.all()
     assert set(row.columns["verdict"][near]) == {"left out"}
@@ -201,7 +201,7 @@ def test_the_against_command_writes_the_verdict(cylinder, tmp_path, capsys):
     assert verification_main.main(["against", str(given), str(CYLINDER), "--h", str(tol.OUTSIDE_H),
                                    "--out", str(out)]) == 0
     text = (out / "outside.md").read_text()
-    assert "# An outside answer against fe p2 on scene cylinder" in text and "outside 2.136–4.147 rad (33, " in text
+    assert "# An outside answer against fe P2 on scene cylinder" in text and "outside 2.136–4.147 rad (33, " in text
     lines = (out / "outside.csv").read_text().splitlines()
     assert lines[0] == ",".join(CSV_COLUMNS) and len(lines) == 102
     assert [line.rsplit(",", 1)[1] for line in lines[1:]].count("outside") == 33
