@@ -169,6 +169,32 @@ class EstimateVerdict:
     beyond: bool
 
 
+def estimate_arguments(scene: Scene, h: float | None, levels: int, exclude: float | None) -> tuple[float, float]:
+    """``(exclude, h)`` of an estimated comparison: ``levels`` 2 or 3, a
+    given exclusion checked (else the scene's default), ``h`` the scene's
+    where none is given; each bad one a :class:`ContactError` naming it."""
+    if levels not in (2, 3):
+        raise ContactError(f"levels: must be 2 (h, h/2) or 3 (h, h/2, h/4) (got {levels!r})")
+    if exclude is not None:
+        check_exclusion(scene, exclude)
+    h = scene.h if h is None else h
+    if h is None:
+        raise ContactError(f"h: scene {scene.name} gives no h; pass one")
+    return (default_exclusion(scene) if exclude is None else exclude), h
+
+
+def estimated_runs(scene: Scene, name: str, degree: int, h: float, levels: int, exclude: float, options: dict):
+    """Method ``name`` at ``degree`` solved at h, h/2 (, h/4) and the
+    finest run's :class:`~contactcore.estimate.Estimate` (``run
+    --estimate``'s): ``(results, estimate)``."""
+    from contactcore import estimate as est
+    from .. import methods as known
+    solve = known.solver(name)
+    results = [solve(scene, hk, degree=degree, **known.options_for(name, **options))
+               for hk in est.levels_of(h, levels)]
+    return results, est.estimate_runs(scene, results, exclude)
+
+
 def compare_estimates(scene, methods, h: float | None = None, *, levels: int = 2, exclude: float | None = None,
                       floors: dict | None = None, **options) -> list[EstimateVerdict]:
     """Whether each pair of ``methods`` differs by more than the sum of
@@ -187,7 +213,6 @@ def compare_estimates(scene, methods, h: float | None = None, *, levels: int = 2
     than two distinct methods, a method given twice, ``levels`` other
     than 2 or 3, a bad floor, exclusion or option are refused with a
     :class:`ContactError` before any solve."""
-    from contactcore import estimate as est
     from .. import methods as known
     user_floors(floors)
     scene = load_scene(scene)
@@ -198,21 +223,11 @@ def compare_estimates(scene, methods, h: float | None = None, *, levels: int = 2
         raise ContactError(f"methods: each may be given once (got {', '.join(label(*v) for v in variants)})")
     if len(variants) < 2:
         raise ContactError(f"methods: name at least two to compare (got {len(variants)})")
-    if levels not in (2, 3):
-        raise ContactError(f"levels: must be 2 (h, h/2) or 3 (h, h/2, h/4) (got {levels!r})")
-    if exclude is not None:
-        check_exclusion(scene, exclude)
-    exclude = default_exclusion(scene) if exclude is None else exclude
-    h = scene.h if h is None else h
-    if h is None:
-        raise ContactError(f"h: scene {scene.name} gives no h; pass one")
+    exclude, h = estimate_arguments(scene, h, levels, exclude)
     known.check_options(sorted({n for n, _ in variants}), **options)
     runs = {}
     for name, degree in variants:
-        solve = known.solver(name)
-        results = [solve(scene, hk, degree=degree, **known.options_for(name, **options))
-                   for hk in est.levels_of(h, levels)]
-        estimate = est.estimate_runs(scene, results, exclude)
+        results, estimate = estimated_runs(scene, name, degree, h, levels, exclude, options)
         profiles = sampled(scene, results[-1])
         runs[label(name, degree)] = (profiles, {pid: estimate.error_columns(pid) for pid in profiles})
     names, verdicts = list(runs), []

@@ -45,7 +45,7 @@ from contactcore.scene.vocabulary import QUANTITIES
 from contactcore.spelling import hint
 from contactcore.tolerances import ESTIMATE_TRUST
 
-from .api import label, variant
+from .api import estimate_arguments, estimated_runs, label, variant
 from .records import Agreement, profile_agreements
 from .samples import check_exclusion, default_exclusion
 from .sizes import size_floor, user_floors
@@ -544,24 +544,13 @@ def compare_outside(scene, outside, *, method="fe:2", h: float | None = None, le
     refused before any solve (:func:`outside_profiles`; a bad method,
     ``levels``, exclusion, floor or option as :func:`compare_estimates`
     refuses them)."""
-    from contactcore import estimate as est
     from .. import methods as known
     user_floors(floors)
     scene = load_scene(scene)
     name, degree = variant(method)
-    if levels not in (2, 3):
-        raise ContactError(f"levels: must be 2 (h, h/2) or 3 (h, h/2, h/4) (got {levels!r})")
-    if exclude is not None:
-        check_exclusion(scene, exclude)
-    exclude = default_exclusion(scene) if exclude is None else exclude
-    h = scene.h if h is None else h
-    if h is None:
-        raise ContactError(f"h: scene {scene.name} gives no h; pass one")
+    exclude, h = estimate_arguments(scene, h, levels, exclude)
     known.check_options([name], **options)
     given = outside_profiles(scene, outside)
-    solve = known.solver(name)
-    results = [solve(scene, hk, degree=degree, **known.options_for(name, **options))
-               for hk in est.levels_of(h, levels)]
-    estimate = est.estimate_runs(scene, results, exclude)
+    _, estimate = estimated_runs(scene, name, degree, h, levels, exclude, options)
     return judge(scene, given, {p.id: p for p in estimate.sampled}, estimate, label(name, degree), exclude,
                  floors)
