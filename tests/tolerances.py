@@ -1537,3 +1537,16 @@ LAWCAPS_SLIDE_SHARE = 0.99
 #: bound: far beyond the warning's round-off allowance (STICK_ROUNDOFF,
 #: TRACTION_ROUNDOFF of the pressure: 1e-9 and below), so it must (must not) be named.
 LAWCAPS_EXCESS_SHARE = 1e-2
+
+# --- studyest (2026-11-29): study's Γ shares, study --estimate, --param angle (tests/test_study_gamma.py) ---
+#: How far the status shares of Γ may sum from 1: each is one correctly
+#: rounded quotient of correctly rounded sums (InterfacePath.status_shares),
+#: so at most an ulp each and one more for the sum of three or four.
+STUDYEST_SHARE_SUM = 4 * 2.2e-16
+#: study --estimate against run --h 2h --estimate: the same two solves of
+#: the same scene and the same estimate code, in one process; only a
+#: difference of summation order between the calls could separate them.
+STUDYEST_SAME_RUNS = 1e-12
+#: A turned Γ's normal, direction and point against their closed forms:
+#: sin and cos of a degree angle, a few ulps of 1.
+STUDYEST_ANGLE_ROUNDOFF = 1e-12
