@@ -95,6 +95,14 @@ def test_study_estimate_is_runs_estimate_of_the_same_point(tmp_path, method="fe"
     assert all(w in md for w in est["warnings"])
 
 
+def test_study_estimate_refuses_a_coarse_run_larger_than_the_domain_before_any_solve(tmp_path, capsys):
+    """At --h 0.6 the estimate's run at 2h = 1.2 exceeds the 1 m square:
+    refused in one line naming --estimate, nothing written."""
+    assert main(["study", SCENE, "--param", "mu", "--values", "0.3", "--method", "fe", "--h", "0.6", "--estimate",
+                 "-q", "--out", str(tmp_path / "s")]) == 2
+    assert "--estimate" in capsys.readouterr().err and not (tmp_path / "s").exists()
+
+
 @pytest.mark.parametrize("normal", [(0.0, 1.0), (0.0, -1.0), (1.0, 0.0), (-1.0, 0.0), (-0.6, 0.8)])
 @pytest.mark.parametrize("angle", [0.0, 30.0, -65.0, 90.0, 150.0])
 def test_angle_turns_gamma_counter_clockwise_and_keeps_the_scenes_plus_side(normal, angle):

@@ -371,8 +371,9 @@ def solve_case(case: Case) -> dict:
     if case.estimate:
         estimated, warnings, why = estimated_row(solve, scene, h, tried.result, _REUSE, degree=case.degree,
                                                  **options)
-    return {**row, "status": status, "message": "; ".join([*aside, *tried.result.solver.warnings, *[why] * bool(why)]),
-            **_outputs(scene, tried.result), **estimated, **({"est_messages": warnings} if case.estimate else {})}
+    said = [*aside, *tried.result.solver.warnings, *([why] if why else [])]
+    return {**row, "status": status, "message": "; ".join(said), **_outputs(scene, tried.result), **estimated,
+            **({"est_messages": warnings} if case.estimate else {})}
 
 
 def check_given_once(field: str, values, name: str = "") -> None:
@@ -474,7 +475,9 @@ def check_coarse(scenes: list, names: list[str], points: list[tuple], h) -> None
         at = dict(zip(names, point)).get("h", h if h is not None else scene.h)
         if at is None:
             raise SceneError("--estimate", f"scene {scene.name} gives no default h; give --h")
-        check_resolution(scene, 2 * at, f"--estimate: {_where(names, point) or 'h'}: the coarse run at 2h")
+        given = (f"h = {_shown(at)}" if "h" in names else f"--h {_shown(at)}" if h is not None
+                 else f"the scene's h {_shown(at)}")
+        check_resolution(scene, 2 * at, f"--estimate: {given}, the coarse run at 2h")
 
 
 def check_sizes(scenes: list, names: list[str], points: list[tuple], method_names: list[str], degree: int,

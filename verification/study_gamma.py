@@ -27,6 +27,7 @@ from contactcore import estimate as estimates
 from contactcore.estimate import far_from_singular
 
 from .agreement import default_exclusion
+from .run import estimate_record
 
 #: The profile the study samples on every point's Γ, wherever it lies.
 GAMMA = InterfaceProfile("gamma", ("gN", "gT", "tN", "tT"), title="Γ")
@@ -78,8 +79,6 @@ def estimate_columns(scene, coarse, fine) -> tuple[dict, list[str]]:
     the estimate's warnings: :func:`contactcore.estimate.estimate_runs` and
     :func:`verification.run.estimate_record` on :func:`with_gamma`'s scene,
     as ``run --estimate`` makes them."""
-    from .run import estimate_record
-
     gamma = with_gamma(scene)
     est = estimates.estimate_runs(gamma, [coarse, fine], default_exclusion(gamma))
     record = estimate_record(gamma, est, est.sampled)
