@@ -4,6 +4,7 @@ rank's points are gathered, the same whatever mesh numbering or partition
 produced them."""
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field, replace
 
 import numpy as np
@@ -96,6 +97,33 @@ class InterfacePath:
 
     def iterations(self) -> list[int]:
         return [s.iterations for s in self.steps]
+
+    def length(self) -> float:
+        """Γ's length within the domain: the sum of the quadrature weights
+        (:func:`math.fsum`, correctly rounded), in the path's length unit."""
+        return math.fsum(np.asarray(self.weights, float))
+
+    def status_lengths(self, step: Increment | None = None) -> dict[str, float]:
+        """The length of Γ in each reported status at ``step`` (default the
+        last): ``open``, ``stick``, ``slip``, and ``partial`` where the step
+        has partial points (:meth:`Increment.counts`' keys); each the sum of
+        its points' weights (:func:`math.fsum`, correctly rounded)."""
+        step = self.final if step is None else step
+        status, w = step.reported_status(), np.asarray(self.weights, float)
+        return {name: math.fsum(w[status == REPORTED_STATUS_NAMES.index(name)]) for name in step.counts()}
+
+    def status_shares(self, step: Increment | None = None) -> dict[str, float]:
+        """The share of Γ's length in each reported status at ``step``
+        (:meth:`status_lengths`' keys): each status's length over
+        :meth:`length`, both correctly rounded sums of the same weights, so
+        every share lies in [0, 1], a status that covers Γ is exactly 1 and
+        the others exactly 0, and the shares sum to 1 within a rounding
+        each.  The one source of increments.csv's fractions, summary.json's
+        split against the exact law and study.csv's shares (the normalised
+        weights' dot product read 1.0000000000000002 for a Γ all slipping,
+        and 1 − open − slip a stick share of −2e-16: newuser33)."""
+        lengths, total = self.status_lengths(step), self.length()
+        return {name: (value / total if total > 0 else 0.0) for name, value in lengths.items()}
 
     def means(self, step: Increment) -> np.ndarray:
         """``(t_N, t_T, g_N, g_T)`` of ``step`` averaged over Γ, weighted by

@@ -369,7 +369,10 @@ def test_study_headers_and_difference_floors_name_their_units():
     from verification import study
     header = study.markdown("A", ["h"], [], MM_MPA).splitlines()[-2]
     assert "| max \\|g_N\\| (mm) | max \\|g_T\\| (mm) | max \\|t_N\\| (MPa) |" in header
-    assert "| mean t_N (MPa) | mean t_T (MPa) | message |" in header
+    assert "| mean t_N (MPa) | mean t_T (MPa) |" in header and header.endswith("| message |")
+    assert "| stick length (mm) | max \\|t_N\\| away from ends (MPa) |" in header
+    estimated = study.markdown("A", ["h"], [], MM_MPA, estimate=True)
+    assert "| est. error t_N (RMS) (MPa) | est. error t_T (RMS) (MPa) |" in estimated
     assert "| mean t_N (Pa) |" in study.markdown("A", ["h"], [])
     s = np.linspace(0.0, 1.0, 11)
     fig = plots.profile_figure("g", {"fe P2": _profile("G", s, gN=s), "xfem P1": _profile("G", s, gN=s + 0.01)},

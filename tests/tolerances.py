@@ -1624,3 +1624,16 @@ OUTSIDE_PERTURBATION = 0.03
 #: ZERO_BY_SYMMETRY bounds t_T/|t| by 0.1, which would give 5e-3; fe P2 at
 #: h = 0.05 reads far less).
 OUTSIDE_ZERO_TT = 5e-3
+
+# --- studyest (2026-11-29): study's Γ shares, study --estimate, --param angle (tests/test_study_gamma.py) ---
+#: How far the status shares of Γ may sum from 1: each is one correctly
+#: rounded quotient of correctly rounded sums (InterfacePath.status_shares),
+#: so at most an ulp each and one more for the sum of three or four.
+STUDYEST_SHARE_SUM = 4 * 2.2e-16
+#: study --estimate against run --h 2h --estimate: the same two solves of
+#: the same scene and the same estimate code, in one process; only a
+#: difference of summation order between the calls could separate them.
+STUDYEST_SAME_RUNS = 1e-12
+#: A turned Γ's normal, direction and point against their closed forms:
+#: sin and cos of a degree angle, a few ulps of 1.
+STUDYEST_ANGLE_ROUNDOFF = 1e-12

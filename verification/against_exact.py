@@ -91,10 +91,7 @@ def status_split(path: InterfacePath) -> dict:
     """Open, sticking and slipping points of Γ at the last increment (and
     partial ones, where the unilateral law's partial answer has them), and
     the share of Γ's length (quadrature weight) of each."""
-    final, w = path.final, path.weights / path.weights.sum()
-    counts, status = final.counts(), final.reported_status()
-    return {**counts, **{f"{name}_share": float(w @ (status == code))
-                         for code, name in enumerate(REPORTED_STATUS_NAMES) if name in counts}}
+    return {**path.final.counts(), **{f"{name}_share": share for name, share in path.status_shares().items()}}
 
 
 #: Γ's components and the vector each is measured against (module doc).

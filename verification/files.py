@@ -395,9 +395,9 @@ UNITS_FILE = "units.json"
 #: The columns in the scene's stress unit, in its length unit and in
 #: stress per length (a spring's stiffness); docs/scenes.md, "Units".
 STRESS_COLUMNS = ("sxx", "syy", "sxy", "tN", "tT", "mean_tN", "mean_tT", "rms_tN", "rms_tT", "max_tN", "max_tT",
-                  "E_minus", "E_plus")
+                  "E_minus", "E_plus", "max_tN_away", "max_tT_away", "est_tN", "est_tT")
 LENGTH_COLUMNS = ("x", "y", "ux", "uy", "gN", "gT", "mean_gN", "mean_gT", "max_gN", "max_gT", "h", "exclude",
-                  "radius", "offset")
+                  "radius", "offset", "stick_length")
 SPRING_COLUMNS = ("kN", "kT")
 #: The columns whose unit is the same in every scene's.
 FIXED_UNITS = {**dict.fromkeys(("total", "mesh", "assembly", "solve", "median_s"), "s"), "angle": "degree",

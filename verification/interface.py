@@ -26,7 +26,7 @@ from pathlib import Path
 import numpy as np
 
 from contactcore import LineInterface
-from contactcore.laws import REPORTED_STATUS_NAMES, STATUS_NAMES
+from contactcore.laws import REPORTED_STATUS_NAMES
 from contactcore.interface_path import InterfacePath, along_from_entry
 
 from . import files
@@ -54,8 +54,7 @@ def increment_rows(path: InterfacePath) -> list[dict]:
         rows.append({"step": step_value(s.step), "iterations": s.iterations, "residual": s.residuals[-1], **counts,
                      **dict(zip(("mean_tN", "mean_tT", "mean_gN", "mean_gT"), map(float, means))),
                      "rms_tN": float(rms[0]), "rms_tT": float(rms[1]),
-                     **{f"{name}_fraction": float(w @ (s.reported_status() == STATUS_NAMES.index(name)))
-                        for name in ("open", "slip")}})
+                     **{f"{name}_fraction": path.status_shares(s)[name] for name in ("open", "slip")}})
     return rows
 
 

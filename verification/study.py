@@ -9,8 +9,10 @@ Parameters (:data:`PARAMETERS`): the mesh size ``h``; the law's springs
 ``NITSCHE_STABILISATION_RANGE``); ``load``, a factor on every load;
 the number of ``increments``; the materials ``E_minus``, ``nu_minus``, ``E_plus``, ``nu_plus``;
 and the geometry of Γ — ``radius`` of a circular Γ, ``offset`` of a straight
-Γ along its normal, ``angle`` of a straight Γ (degrees from the x axis,
-turned about the middle of its chord).  Several ``--param`` pairs run their
+Γ along its normal, ``angle`` of a straight Γ (degrees a from the x axis,
+counter-clockwise: the scene's Γ turned about the middle of its chord from
+its own angle a₀ in (−90°, 90°], its normal turning with it, so the + body
+stays on the scene's side for |a − a₀| < 90°: :func:`_angle`).  Several ``--param`` pairs run their
 Cartesian product (the last parameter varies fastest), one row per point
 and method.  A geometry change is a new scene,
 so the conforming method meshes it afresh through gmsh (and XFEM with
@@ -54,6 +56,8 @@ from contactcore.scene.loads import scaled_load
 
 from . import files, methods, pool
 from .against_exact import exact_law, penalty_counterpart
+from .study_plots import _failed_label, _mark, _series, _shown, plot as _plot  # noqa: F401 (tests read the three)
+from .study_gamma import COLUMNS as GAMMA_COLUMNS, ESTIMATE_COLUMNS, PARTIAL_SHARE, estimated_row, gamma_columns
 from .outcomes import Incomplete, attempt, health
 
 log = logging.getLogger("verification")
@@ -142,11 +146,28 @@ def _offset(scene, value: float):
     return {"interface": LineInterface(tuple(np.asarray(itf.point) + value * n), tuple(n))}
 
 
+def plus_on_left(normal) -> bool:
+    """Whether a straight Γ of unit ``normal`` has its + body on the left
+    of its direction at its own angle a₀ in (−90°, 90°] from the x axis:
+    where the normal points up (n_y > 0), or along −x on a vertical Γ."""
+    return normal[1] > 0 or (normal[1] == 0 and normal[0] < 0)
+
+
 def _angle(scene, value: float):
-    mid = _line(scene, "angle").chord(scene.domain).mean(axis=0)
+    """Γ at ``value`` = a degrees from the x axis, counter-clockwise
+    positive, through the middle of its chord: the scene's Γ turned by
+    a − a₀ about that point, a₀ its own angle in (−90°, 90°], its normal
+    turning with it.  The normal is (−sin a, cos a) where the scene's +
+    body lies on the left of Γ's direction at a₀ (:func:`plus_on_left`:
+    above a Γ whose normal points up), else (sin a, −cos a): the + body
+    stays on the scene's side for |a − a₀| < 90° (the normal was
+    (−sin a, cos a) whatever the scene's, which swapped the bodies of a
+    scene whose normal pointed down or along +x)."""
+    itf = _line(scene, "angle")
+    mid = itf.chord(scene.domain).mean(axis=0)
     _finite("angle", value)
-    a = np.radians(value)
-    return {"interface": LineInterface(tuple(mid), (-np.sin(a), np.cos(a)))}
+    a, side = np.radians(value), 1.0 if plus_on_left(itf.normal) else -1.0
+    return {"interface": LineInterface(tuple(mid), (-side * np.sin(a), side * np.cos(a)))}
 
 
 def _scaled(load, value: float):
@@ -190,7 +211,8 @@ CHANGES = {
     "nu_plus": ("Poisson's ratio of the + body", lambda s, v: _material(s, "plus", "nu", v)),
     "radius": ("radius of a circular Γ", _radius),
     "offset": ("shift of a straight Γ along its normal, in the scene's length unit", _offset),
-    "angle": ("angle of a straight Γ to the x axis, in degrees, Γ turned about the middle of its chord", _angle),
+    "angle": ("angle of a straight Γ to the x axis, in degrees, counter-clockwise, Γ turned about the middle of its "
+              "chord, its + body on the scene's side", _angle),
 }
 #: Every other parameter a registered law declares (its ``parameters``,
 #: contactcore.laws' contract), so that a new law's is a --param as it is
@@ -256,10 +278,20 @@ def _outputs(scene, result) -> dict:
     (g_n, g_t), (t_n, t_t) = np.max(np.abs(final.jump), axis=0), np.max(np.abs(final.traction), axis=0)
     mean_tN, mean_tT = result.interface.means(final)[:2]
     return {"max_gN": float(g_n), "max_gT": float(g_t), "max_tN": float(t_n), "max_tT": float(t_t),
-            "mean_tN": float(mean_tN), "mean_tT": float(mean_tT)}
+            "mean_tN": float(mean_tN), "mean_tT": float(mean_tT), **gamma_columns(scene, result)}
 
 
-STATS = ["method", "degree", "status", "dofs", "total", "condition", "backward_error", *OUTPUTS, "message"]
+STATS = ["method", "degree", "status", "dofs", "total", "condition", "backward_error", *OUTPUTS, *GAMMA_COLUMNS,
+         "message"]
+
+
+def stats_of(rows: list[dict], estimate: bool = False) -> list[str]:
+    """study.csv's columns after the point's: :data:`STATS`, with
+    ``partial_share`` after the slip share where a row has it, and
+    ``study --estimate``'s columns before the message."""
+    partial = any(PARTIAL_SHARE in r for r in rows)
+    columns = [c for k in STATS for c in ([k, PARTIAL_SHARE] if k == "slip_share" and partial else [k])]
+    return [*columns[:-1], *(ESTIMATE_COLUMNS if estimate else []), columns[-1]]
 
 
 def point_columns(params: list[str]) -> list[str]:
@@ -281,6 +313,7 @@ class Case:
     h: float | None
     cell: str | None
     keep: bool = True  # a later case of the study may reuse its system (:func:`shared`)
+    estimate: bool = False  # also solved at 2h and the run at h estimated (:mod:`verification.study_gamma`)
 
 
 #: This process's systems kept between the cases it solves: a point that
@@ -316,22 +349,31 @@ def shared(cases: list) -> list:
 def solve_case(case: Case) -> dict:
     """The row of one case (its scene valid: :func:`check_points`), solved
     in this process on its own communicator; a refused solve is a row with
-    its message."""
+    its message.  With ``case.estimate`` the point is also solved at 2h
+    and the run at h estimated, in the same task
+    (:func:`verification.study_gamma.estimated_row`); the row's
+    ``est_messages`` are the estimate's warnings (study.md lists them)."""
     point = dict(case.point)
     row = {"method": case.method, "degree": case.degree}
     scene = scene_at(load_scene(case.scene), point)
     solve, comm = pool.solver(case.method)
     options = {**methods.options_for(case.method, cell=case.cell), **comm}
     _REUSE.keep = case.keep
-    tried = attempt(solve, scene, point.get("h", case.h), degree=case.degree, reuse=_REUSE, **options)
+    h = point.get("h", case.h if case.h is not None else scene.h)
+    tried = attempt(solve, scene, h, degree=case.degree, reuse=_REUSE, **options)
     row.update(health(tried))
     if tried.refused:
         return {**row, "status": "failed", "message": tried.message}
     status = "warned" if tried.result.solver.warnings else "ok"
     aside = [f"{p} not applied: it plays no part under enforcement = \"{scene.law.enforcement}\""
              for p in left_aside(point, scene.law)]
-    return {**row, "status": status, "message": "; ".join([*aside, *tried.result.solver.warnings]),
-            **_outputs(scene, tried.result)}
+    estimated, warnings, why = {}, [], ""
+    if case.estimate:
+        estimated, warnings, why = estimated_row(solve, scene, h, tried.result, _REUSE, degree=case.degree,
+                                                 **options)
+    said = [*aside, *tried.result.solver.warnings, *([why] if why else [])]
+    return {**row, "status": status, "message": "; ".join(said), **_outputs(scene, tried.result), **estimated,
+            **({"est_messages": warnings} if case.estimate else {})}
 
 
 def check_given_once(field: str, values, name: str = "") -> None:
@@ -348,7 +390,7 @@ def check_given_once(field: str, values, name: str = "") -> None:
 
 def study(scene_name: str, params: list[tuple[str, list[float]]], method_names: list[str], out: Path, *,
           degree: int = 1, h: float | None = None, cell: str | None = None, workers: int | None = None,
-          allow_large: bool = False, strict: bool = False, argv=()) -> str:
+          allow_large: bool = False, strict: bool = False, estimate: bool = False, argv=()) -> str:
     """Run the study over the Cartesian product of ``params`` ((name, values)
     pairs; the last varies fastest) on :mod:`verification.pool`, and write
     its table and plots; return the Markdown section.  Every point is
@@ -357,7 +399,9 @@ def study(scene_name: str, params: list[tuple[str, list[float]]], method_names: 
     ``workers`` of them at once (:func:`contactcore.budget.check_together`).
     A point that fails is a row with its message and the study goes on;
     with ``strict`` (the CLI), once everything is written, any failed point
-    raises :class:`~verification.outcomes.Incomplete` (exit status 1)."""
+    raises :class:`~verification.outcomes.Incomplete` (exit status 1).
+    With ``estimate`` every point is also solved at 2h, its h the finer
+    (:mod:`verification.study_gamma`), 2h checked against the domain first."""
     names = [p for p, _ in params]
     if len(set(names)) != len(names):
         raise SceneError("--param", f"each parameter may be given once (got {', '.join(names)})")
@@ -369,7 +413,9 @@ def study(scene_name: str, params: list[tuple[str, list[float]]], method_names: 
     labels = point_columns(names)
     points = list(itertools.product(*(values for _, values in params)))
     scenes = check_points(base, names, points)
-    cases = shared([Case(scene_name, tuple(zip(names, pt)), m, degree, h, cell) for pt in points
+    if estimate:
+        check_coarse(scenes, names, points, h)
+    cases = shared([Case(scene_name, tuple(zip(names, pt)), m, degree, h, cell, estimate=estimate) for pt in points
                     for m in methods.expand(method_names)])
     if not allow_large:
         check_memory(cases, check_sizes(scenes, names, points, methods.expand(method_names), degree, h,
@@ -387,16 +433,16 @@ def study(scene_name: str, params: list[tuple[str, list[float]]], method_names: 
     finally:
         _REUSE.close()  # the systems this process kept (a worker's end with it)
     out = Path(out)
-    files.write_csv(out / "study.csv", rows, [*labels, *STATS])
+    files.write_csv(out / "study.csv", rows, [*labels, *stats_of(rows, estimate)])
     for param, label in zip(names, labels):
         _plot(out / _plot_name(names, param), base, param, label, [lb for lb in labels if lb != label], rows)
-    text = markdown(base.name, names, rows, base.units, pool.workers_label(workers))
+    text = markdown(base.name, names, rows, base.units, pool.workers_label(workers), estimate)
     files.write_text(out / "study.md", text)
     files.write_text(out / files.SCENE_FILE, scene_text(scene_name))  # the units of study.csv's columns
     files.write_json(out / "run.json", {**files.provenance(list(argv)), "scene": base.name,
                                         "params": {p: list(v) for p, v in params},
                                         "methods": methods.expand(method_names), "degree": degree, "h": h,
-                                        "workers": pool.workers_label(workers)})
+                                        "estimate": estimate, "workers": pool.workers_label(workers)})
     failed = sum(r["status"] == "failed" for r in rows)
     if strict and failed:
         raise Incomplete(f"study: {failed} of {len(rows)} points failed; the study is written, each failed row "
@@ -419,6 +465,19 @@ def check_points(base, names: list[str], points: list[tuple]) -> list:
                 raise
             raise SceneError(f"--param {_where(names, point)}", str(exc)) from None
     return scenes
+
+
+def check_coarse(scenes: list, names: list[str], points: list[tuple], h) -> None:
+    """``study --estimate``: every point's 2h (its ``h`` parameter, else
+    ``h``, else its scene's) fits the domain
+    (:func:`contactcore.scene.check_resolution`), before any solve."""
+    for scene, point in zip(scenes, points):
+        at = dict(zip(names, point)).get("h", h if h is not None else scene.h)
+        if at is None:
+            raise SceneError("--estimate", f"scene {scene.name} gives no default h; give --h")
+        given = (f"h = {_shown(at)}" if "h" in names else f"--h {_shown(at)}" if h is not None
+                 else f"the scene's h {_shown(at)}")
+        check_resolution(scene, 2 * at, f"--estimate: {given}, the coarse run at 2h")
 
 
 def check_sizes(scenes: list, names: list[str], points: list[tuple], method_names: list[str], degree: int,
@@ -470,108 +529,69 @@ def _where(names: list[str], point: tuple) -> str:
     return ", ".join(f"{p} = {_shown(v)}" for p, v in zip(names, point))
 
 
-def _shown(value) -> str:
-    """A parameter's value as the tables show it (a number, or a word)."""
-    return value if isinstance(value, str) else f"{value:g}"
-
-
 def _plot_name(names: list[str], param: str) -> str:
     return "study.png" if len(names) == 1 else f"study_{param}.png"
 
 
 def markdown(scene_name: str, names: list[str], rows: list[dict], units: Units = Units(),
-             measured_by: str = "1 worker") -> str:
+             measured_by: str = "1 worker", estimate: bool = False) -> str:
     """The study's section: its plots and its table, in the scene's
     ``units``, and how many workers measured its times (``measured_by``,
-    :func:`verification.pool.workers_label`)."""
+    :func:`verification.pool.workers_label`); what the maxima and shares
+    are (:data:`OUTPUTS_NOTE`); with ``estimate``, the estimate's columns
+    and each warning once, after the points that gave it."""
     failed = [r for r in rows if r["status"] == "failed"]
     what = " × ".join(f"{p} ({described(p, units)})" for p in names)
     labels = point_columns(names)
+    shares = [c for c in stats_of(rows) if c.endswith("_share")]
+    extra = [*ESTIMATE_COLUMNS[:-1]] if estimate else []
     return (f"## Study: scene {scene_name}, {what}\n\n"
             + "".join(f"![study {p}]({_plot_name(names, p)})\n" for p in names) + "\n"
-            + f"Times in s, measured by {measured_by} at once (cases beside each other share the cores).\n\n"
-            + files.markdown_table(rows, [*labels, "method", "status", "dofs", "total", *OUTPUTS, "message"],
+            + f"Times in s, measured by {measured_by} at once (cases beside each other share the cores).\n"
+            + OUTPUTS_NOTE + (ESTIMATE_NOTE if estimate else "") + "\n"
+            + files.markdown_table(rows, [*labels, "method", "status", "dofs", "total", *OUTPUTS, *shares,
+                                          "stick_length", "max_tN_away", "max_tT_away", *extra, "message"],
                                    [*(files.labelled(p, p, units) for p in names), "method", "status", "DOFs",
                                     "total (s)",
                                     *(files.labelled(text, q, units) for text, q in zip(OUTPUT_HEADERS, OUTPUTS)),
+                                    *(c.removesuffix("_share") for c in shares),
+                                    *(files.labelled(text, q, units) for text, q in GAMMA_HEADERS),
+                                    *(files.labelled(text, q, units) for text, q in ESTIMATE_HEADERS[:len(extra)]),
                                     "message"])
-            + (f"\n{len(failed)} of {len(rows)} points failed; the study went on.\n" if failed else ""))
+            + (f"\n{len(failed)} of {len(rows)} points failed; the study went on.\n" if failed else "")
+            + (_estimate_warnings(names, rows) if estimate else ""))
 
 
-#: How a study plot marks a point that solved with warnings, and the value at which one failed (a
-#: vertical line across the panel, in the series' colour).
-WARNED_MARK = {"marker": "o", "ms": 11, "mfc": "none", "mec": "tab:red", "linestyle": "none"}
-FAILED_MARK = {"linewidth": 1.2, "alpha": 0.8, "label": "_"}
-#: The dashes of a failed value's line, in points: series k of n draws
-#: dashes of FAILED_DASH offset by k of them, with n − 1 gaps between, so
-#: that two series failing at the same value interleave their colours
-#: instead of the last one hiding the others (grader11's fault 7: fe's lines
-#: lay exactly under xfem's).
-FAILED_DASH = 2.0
+#: study.md's headers of the Γ columns after the shares and of the estimate's.
+GAMMA_HEADERS = [("stick length", "stick_length"), ("max |t_N| away from ends", "max_tN_away"),
+                 ("max |t_T| away from ends", "max_tT_away")]
+ESTIMATE_HEADERS = [("est. error (worst relative RMS)", "est_worst"), ("where", "est_worst_at"),
+                    ("est. error t_N (RMS)", "est_tN"), ("est. error t_T (RMS)", "est_tT"),
+                    ("estimate warnings", "est_warnings"), ("status changed (samples)", "status_changed")]
+#: Under study.md's table: what its maxima and shares are.
+OUTPUTS_NOTE = ("\nmax |g_N| … mean t_T are over Γ's quadrature points at the last increment, Γ's ends included: "
+                "where Γ meets the domain's boundary the tractions of an exact or stiff law are singular, so "
+                "max |t_N| and max |t_T| there follow the mesh more than the method. max |t_N| (|t_T|) away from "
+                "ends leaves out Γ's points within the agreement's default distance of a singular point "
+                "(`verification.agreement.default_exclusion` of the point's scene, the samples `run`'s "
+                "agreement and estimates leave out). open, stick, slip (and partial) are the shares of Γ's length "
+                "in each status at the last increment (increments.csv's `open_fraction`, `slip_fraction`); "
+                "stick length is the sticking share's length.\n")
+#: Under an estimated study's table: how the estimate is made.
+ESTIMATE_NOTE = ("\nEstimated from each point's runs at 2h and h (the row is the run at h), as `run --h 2h --estimate` "
+                 "estimates: the worst relative RMS error of Γ's profile gN, gT, tN, tT away from singular points "
+                 "and which (summary.json's `worst`), the RMS estimated error of t_N and t_T there, the number of "
+                 "the estimate's warnings (listed below), and at how many of Γ's profile samples the status "
+                 "(open, stick, slip) differs between 2h and h: where it does, the split moved between the runs "
+                 "and no estimate of the point is asymptotic, an indication only.\n")
 
 
-def failed_style(slot: int, count: int) -> tuple:
-    """The ``linestyle`` of series ``slot`` of ``count`` (:data:`FAILED_DASH`)."""
-    return (slot * FAILED_DASH, (FAILED_DASH, max(count - 1, 1) * FAILED_DASH))
-
-
-def _series(ax, column: str, q: str, factor: float, rows: list[dict], label: str):
-    """One series' solved points (``max_q`` / ``factor`` against ``column``);
-    its colour (a series may have no solved point)."""
-    pts = [(r[column], r[f"max_{q}"] / factor) for r in rows if r["status"] != "failed"]
-    return ax.plot(*(zip(*pts) if pts else ([], [])), "o-", label=label)[0].get_color()
-
-
-def _mark(ax, column: str, q: str, factor: float, rows: list[dict], colour, slot: int = 0, count: int = 1) -> None:
-    """Ring the warned points (one "warned" entry in the legend per panel);
-    draw a dotted vertical line across the panel at each failed one, in the
-    series' colour: it has no value, so no mark at any height that could be
-    read as one (the series' legend entry names its failed values,
-    :func:`_failed_label`); series ``slot`` of ``count`` dashes it in its
-    own phase (:func:`failed_style`), so coincident lines show each colour."""
-    seen = {h.get_label() for h in ax.get_lines()}
-    warned = [(r[column], r[f"max_{q}"] / factor) for r in rows if r["status"] == "warned"]
-    if warned:
-        ax.plot(*zip(*warned), **WARNED_MARK, label="_" if "warned" in seen else "warned")
-    for x in (r[column] for r in rows if r["status"] == "failed"):
-        ax.axvline(x, color=colour, linestyle=failed_style(slot, count), **FAILED_MARK)
-
-
-def _failed_label(label: str, column: str, rows: list[dict]) -> str:
-    """A series' legend entry: its label, and the values at which it failed."""
-    failed = [_shown(r[column]) for r in rows if r["status"] == "failed"]
-    if not failed:
-        return label
-    if len(failed) == len(rows):
-        return f"{label}: failed at every value (dotted)"
-    return f"{label}: failed at {', '.join(failed)} (dotted)"
-
-
-def _plot(path: Path, scene, param: str, column: str, others: list[str], rows: list[dict]) -> None:
-    """The response on Γ against ``param`` (the table's ``column``); one
-    series per method and values of the ``others`` columns; the axes in
-    the ``scene``'s units."""
-    from .plots import axis_unit, pyplot, save
-
-    fig, axes = pyplot().subplots(2, 2, figsize=(9, 6.5), squeeze=False)
-    values = [r[column] for r in rows]
-    numbers = all(not isinstance(v, str) for v in values)  # words (enforcement) are categories
-    logx = numbers and min(values) > 0 and max(values) / min(values) > 100
-    series = dict.fromkeys((r["method"], *(r[o] for o in others)) for r in rows)
-    for ax, q in zip(axes.ravel(), ("gN", "gT", "tN", "tT")):
-        factor, unit = axis_unit(q, max((abs(r[f"max_{q}"]) for r in rows if r["status"] != "failed"), default=0.0),
-                                 scene.units)
-        for slot, key in enumerate(series):
-            chosen = [r for r in rows if (r["method"], *(r[o] for o in others)) == key]
-            line = _series(ax, column, q, factor, chosen, _failed_label(
-                ", ".join([key[0], *(f"{o} = {_shown(v)}" for o, v in zip(others, key[1:]))]), column, chosen))
-            _mark(ax, column, q, factor, chosen, line, slot, len(series))
-        symbol, _, shown = unit.partition(" ")
-        ax.set_ylabel(f"max |{symbol}| {shown}")
-        ax.set_xlabel(files.labelled(param, param, scene.units))
-        if logx:
-            ax.set_xscale("log")
-        ax.grid(alpha=0.3)
-        ax.legend(fontsize=7)
-    fig.suptitle(f"Scene {scene.name}: interface response against {param}")
-    save(fig, path)
+def _estimate_warnings(names: list[str], rows: list[dict]) -> str:
+    """Each estimate warning once, after the points and methods that gave it."""
+    given: dict[str, list[str]] = {}
+    for r in rows:
+        where = ", ".join([*(f"{p} = {_shown(r[p])}" for p in names), r["method"]])
+        for w in r.get("est_messages", []):
+            given.setdefault(w, []).append(where)
+    return ("\nEstimate warnings:\n\n" + "".join(f"- {'; '.join(at)}: {w}\n" for w, at in given.items())
+            if given else "")

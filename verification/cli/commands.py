@@ -170,8 +170,11 @@ def commands() -> dict[str, Command]:
                 help="repeat --param NAME --values ... for a Cartesian product (each NAME explained below)"),
             arg("--values", nargs="+", type=number_or_word, required=True, action="append",
                 help="the values of the --param just before"),
-            method, degree, arg("--h", type=float, help="resolution (default: the scene's h)"), cell, out,
-            workers, allow_large), runners.study,
+            method, degree, arg("--h", type=float, help="resolution (default: the scene's h)"), cell,
+            arg("--estimate", action="store_true",
+                help="also solve every point at 2h and estimate the run at h: study.csv's est_* columns "
+                     "(Γ's estimated error, the estimate's warnings, whether the status moved between 2h and h)"),
+            out, workers, allow_large), runners.study,
             epilog=explained("--param NAME", {p: what for p, (what, _) in PARAMETERS.items()})),
         "report": Command("every verification, gathered into DIR/report.md", (
             out, arg("--quick", action="store_true", help="short ladders: a smoke test of the whole chain"),

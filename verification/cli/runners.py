@@ -110,7 +110,8 @@ def study(args, argv) -> None:
     """``study``: inputs varied over their product (:func:`verification.study.study`)."""
     from ..study import study as vary
     vary(args.scene, study_params(args), args.method, args.out, degree=args.degree, h=args.h,
-         cell=args.cell, workers=args.workers, allow_large=args.allow_large, strict=True, argv=argv)
+         cell=args.cell, workers=args.workers, allow_large=args.allow_large, strict=True, estimate=args.estimate,
+         argv=argv)
 
 
 def report(args, argv) -> None:
