@@ -46,7 +46,7 @@ from .newton import solve_increments
 from .newton import guess as newton_guess
 from .newton.guess import coarse_guess
 from .newton.iteration import STICKING
-from .system import ContactSystem
+from .system import ContactSystem, check_points_on_gamma
 from .result import MethodFacts, Result, Timings
 from .scaling import Scales, dimensionless, dimensionless_inputs, softer_stress
 
@@ -409,6 +409,14 @@ def _coarse_guess(scene, discretisation: Discretisation, resolution: Resolution,
     return coarse_guess(scene, build, ranks)
 
 
+def _user_length(scene):
+    """(point, length) of the dimensionless ``scene`` -> the user's, for a message."""
+    if scene.source is None:
+        return None
+    scales = Scales.of(scene.user)
+    return lambda point, length: (tuple(scales.to_user(np.asarray([point]))[0]), scales.length * length)
+
+
 @dimensionless
 def solve(scene, discretisation: Discretisation, h: float | None = None, *, paper: bool = False,
           progress=None, reuse: Reuse | None = None) -> Result:
@@ -431,6 +439,8 @@ def solve(scene, discretisation: Discretisation, h: float | None = None, *, pape
              else discretisation.build(scene, resolution, timings))
     try:
         exact.check(scene.law, built.system.interface, discretisation.name)
+        check_points_on_gamma(built.system.interface, scene, discretisation.name, built.system.collective,
+                              _user_length(scene))
         least = discretisation.coarse_map_min_unknowns  # the size rule: a whole system's count, on every rank
         small = _coarsens(scene, resolution) and built.dofs < least
         with timings.measure("solve"):
