@@ -71,16 +71,29 @@ class Resolution:
 
 @dataclass
 class Built:
-    """What a method's ``build`` hands back: the system to solve, the fields
-    of its solution vector, the number of unknowns, a JSON-ready record of
-    the discretisation, and the spacing and fitting that the interface's
+    """What a method's ``build`` hands back (docs/architecture.md, "A new
+    method"): the system to solve (its interface's points on Γ:
+    :func:`contactcore.system.check_points_on_gamma`), the fields of its
+    solution vector, the number of unknowns, a JSON-ready record of the
+    discretisation, and the spacing and fitting that the interface's
     warnings depend on; ``warnings`` the method's own."""
 
     system: ContactSystem
     fields: Callable[[np.ndarray], Any]
+    #: The displacement unknowns of the whole system (over every rank, the
+    #: same on each), the prescribed ones included and multipliers
+    #: (``constraint_rows``) left out: fe's active unknowns, xfem's every
+    #: unknown, efgm's every displacement unknown (``approx.ndofs``).  The Result's DOFs, and
+    #: what :attr:`Discretisation.coarse_map_min_unknowns` is compared with.
     dofs: int
+    #: JSON-ready; holds ``"h"`` (:meth:`Discretisation.label` reads it).
     record: dict
+    #: The spacing built (the interface's warnings read it).
     h: float
+    #: Whether the mesh follows Γ (cells' edges on Γ, each cell in one
+    #: body: fe), not cut by it (xfem, efgm): an unfitted method is warned
+    #: of penalty locking on a curved Γ and of tractions amplified on a
+    #: cut straight Γ (:func:`contactcore.scene.caveats.interface_warnings`).
     fitted: bool = False
     warnings: list[str] = field(default_factory=list)
 
