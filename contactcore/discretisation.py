@@ -47,7 +47,7 @@ from .newton import solve_increments
 from .newton import guess as newton_guess
 from .newton.guess import coarse_guess
 from .newton.iteration import STICKING
-from .system import ContactSystem
+from .system import ContactSystem, check_points_on_gamma
 from .result import MethodFacts, Result, Timings
 from .scaling import Scales, dimensionless, dimensionless_inputs, softer_stress
 
@@ -72,16 +72,29 @@ class Resolution:
 
 @dataclass
 class Built:
-    """What a method's ``build`` hands back: the system to solve, the fields
-    of its solution vector, the number of unknowns, a JSON-ready record of
-    the discretisation, and the spacing and fitting that the interface's
+    """What a method's ``build`` hands back (docs/architecture.md, "A new
+    method"): the system to solve (its interface's points on Γ:
+    :func:`contactcore.system.check_points_on_gamma`), the fields of its
+    solution vector, the number of unknowns, a JSON-ready record of the
+    discretisation, and the spacing and fitting that the interface's
     warnings depend on; ``warnings`` the method's own."""
 
     system: ContactSystem
     fields: Callable[[np.ndarray], Any]
+    #: The displacement unknowns of the whole system (over every rank, the
+    #: same on each), the prescribed ones included and multipliers
+    #: (``constraint_rows``) left out: fe's active unknowns, xfem's every
+    #: unknown, efgm's every displacement unknown (``approx.ndofs``).  The Result's DOFs, and
+    #: what :attr:`Discretisation.coarse_map_min_unknowns` is compared with.
     dofs: int
+    #: JSON-ready; holds ``"h"`` (:meth:`Discretisation.label` reads it).
     record: dict
+    #: The spacing built (the interface's warnings read it).
     h: float
+    #: Whether the mesh follows Γ (cells' edges on Γ, each cell in one
+    #: body: fe), not cut by it (xfem, efgm): an unfitted method is warned
+    #: of penalty locking on a curved Γ and of tractions amplified on a
+    #: cut straight Γ (:func:`contactcore.scene.caveats.interface_warnings`).
     fitted: bool = False
     warnings: list[str] = field(default_factory=list)
 
@@ -410,6 +423,14 @@ def _coarse_guess(scene, discretisation: Discretisation, resolution: Resolution,
     return coarse_guess(scene, build, ranks)
 
 
+def _user_length(scene):
+    """(point, length) of the dimensionless ``scene`` -> the user's, for a message."""
+    if scene.source is None:
+        return None
+    scales = Scales.of(scene.user)
+    return lambda point, length: (tuple(scales.to_user(np.asarray([point]))[0]), scales.length * length)
+
+
 @dimensionless
 def solve(scene, discretisation: Discretisation, h: float | None = None, *, paper: bool = False,
           progress=None, reuse: Reuse | None = None) -> Result:
@@ -432,6 +453,8 @@ def solve(scene, discretisation: Discretisation, h: float | None = None, *, pape
              else discretisation.build(scene, resolution, timings))
     try:
         exact.check(scene.law, built.system.interface, discretisation.name)
+        check_points_on_gamma(built.system.interface, scene, discretisation.name, built.system.collective,
+                              _user_length(scene))
         least = discretisation.coarse_map_min_unknowns  # the size rule: a whole system's count, on every rank
         small = _coarsens(scene, resolution) and built.dofs < least
         with timings.measure("solve"):

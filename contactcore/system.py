@@ -23,6 +23,7 @@ import scipy.sparse as sp
 
 from . import tolerances as tol
 from .collective import SERIAL, Collective
+from .errors import DiscretisationError
 from .exchange import Exchange
 from .laws import Decision
 from .result import SolverReport
@@ -109,6 +110,40 @@ class InterfaceOperator:
         A = abs(self.G) if self.S is None else abs(self.G) + abs(self.S)
         pairs = sp.kron(sp.identity(self.size), np.ones((2, 2)), format="csr")
         return (A.T @ pairs @ A).tocsr()
+
+
+def check_points_on_gamma(interface: InterfaceOperator, scene, method: str, collective: Collective = SERIAL,
+                          to_user=None) -> None:
+    """Refuse a method's Γ points that are not on the scene's Γ: each of
+    ``interface.points`` within :data:`~contactcore.tolerances.GAMMA_POINT_OFFSET`
+    of the domain's length scale of ``scene.interface`` (its own
+    ``signed_distance``), over every rank's points (``collective``), else
+    a :class:`~contactcore.errors.DiscretisationError` naming the
+    ``method``, the worst point and its distance (in the user's length,
+    ``to_user`` the map of a dimensionless point and length: (point,
+    distance) -> (point, distance); None: as given).  A Γ point off Γ
+    solves without complaint (takeover33's sign bug put every point
+    0.17 m off a tilted Γ, and ``gamma_reach`` widened the fields' "on
+    Γ" tolerance to match)."""
+    points = np.asarray(interface.points, dtype=float).reshape(-1, 2)
+    distance = np.abs(np.asarray(scene.interface.signed_distance(points), dtype=float)) if len(points) else np.zeros(0)
+    distance = np.where(np.isnan(distance), np.inf, distance)  # a NaN is no distance: off Γ
+    worst = np.zeros((0, 3))
+    if len(points):
+        k = int(np.argmax(distance))
+        worst = np.array([[distance[k], *points[k]]])
+    worst = collective.gather(worst)
+    if not len(worst):
+        return
+    d, x, y = worst[int(np.argmax(worst[:, 0]))]
+    allowed = tol.GAMMA_POINT_OFFSET * scene.domain.length_scale
+    if d <= allowed:
+        return
+    point, d, allowed = ((x, y), d, allowed) if to_user is None else (*to_user((x, y), d), to_user((x, y), allowed)[1])
+    raise DiscretisationError(
+        f"{method}: a method's Γ points must lie on Γ: its Γ point ({point[0]:.6g}, {point[1]:.6g}) is {d:.3g} "
+        f"from the scene's Γ, beyond {tol.GAMMA_POINT_OFFSET:g} of the domain's size ({allowed:.3g}): "
+        "its interface operator is not on this scene's Γ")
 
 
 class ContactSystem(ABC):

@@ -1636,3 +1636,22 @@ STATUS_ALLOWANCE_CELLS = 1.0
 #: a sample passes (it is a status change itself), so what is left is a
 #: zone one run has and the other has not, or has elsewhere.
 STATUS_TOLERATED_SHARE = 0.0
+
+# --- methodpath (2026-11-29): a method's Γ points lie on the scene's Γ ---
+#: The farthest a method's Γ quadrature point (``InterfaceOperator.points``)
+#: may lie from the scene's Γ (``interface.signed_distance``), a share of the
+#: domain's length scale (its diameter), before a solve refuses it
+#: (:func:`contactcore.system.check_points_on_gamma`).  A correct method
+#: puts them on Γ, or on its polygon: measured 2026-11-29 (build only,
+#: each method's build, max |signed_distance| / L of its points, h = 1
+#: to 0.025, P1 and P2) on A, B, C
+#: and two level sets (C's circle, A's line tilted 0.17 rad): xfem and
+#: efgm ≤ 2e-16 (on the exact Γ), fe P2 (curved facets) ≤ 1.2e-4, fe P1
+#: 8.75e-3 on B's circle and 1.24e-2 on C's (gmsh's 7 segments at h ≥ 0.5;
+#: 4.7e-5 to 1.1e-4 at h = 0.025).  The bound for any fe P1
+#: circle: gmsh draws at least 7 segments, whose sag is R (1 − cos π/7) =
+#: 0.099 R, and R ≤ L/2 (a disc domain; ≤ L/(2√2) in a rectangle), so
+#: ≤ 0.0495 L.  0.06 lies above it; takeover33's sign bug (every point
+#: 0.17 m off a tilted Γ in a 1 m square, 0.12 L) lies twice above.
+#: Not a check of accuracy: a check that the points are Γ's at all.
+GAMMA_POINT_OFFSET = 0.06

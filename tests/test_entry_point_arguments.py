@@ -8,7 +8,9 @@ import pytest
 from contactcore import ContactError, load_scene, sample_profiles
 from verification import methods
 
-METHODS = ("fe", "xfem", "efgm")
+import registered
+
+METHODS = registered.names()  # every registered method (tests/registered.py)
 #: Scene C-coulomb's coarsest useful resolution: a second per method.
 H_COARSE = 0.25
 

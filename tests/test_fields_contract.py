@@ -19,8 +19,10 @@ from contactcore.profiles import sample_points
 from contactcore.result import check_points
 from verification import methods
 
+import registered
+
 SCENES = Path(__file__).resolve().parent / "scenes"
-METHODS = ("fe", "xfem", "efgm")
+METHODS = registered.names()  # every registered method (tests/registered.py)
 #: A coarse resolution of scene A (1 × 1 m): a second per method.
 H_A = 0.25
 

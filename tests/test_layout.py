@@ -226,6 +226,39 @@ def test_every_package_is_in_the_wheel():
     assert found == listed, f"in the tree, not listed: {sorted(found - listed)}; listed, not in the tree: {sorted(listed - found)}"
 
 
+def top_level_packages(root: Path) -> set[str]:
+    """The repository's top-level packages: each folder beside xdolfinx/
+    and efgm/ holding an ``__init__.py``, and each package (its first
+    dotted part) that pyproject.toml's ``[tool.setuptools] packages`` lists."""
+    import tomllib
+    found = {p.parent.name for p in root.glob("*/__init__.py") if not p.parent.name.startswith(".")}
+    pyproject = root / "pyproject.toml"
+    if pyproject.exists():
+        listed = tomllib.loads(pyproject.read_text()).get("tool", {}).get("setuptools", {}).get("packages", [])
+        found |= {name.split(".")[0] for name in listed}
+    return found
+
+
+def test_every_package_has_a_layer():
+    """Every layout check here walks only the packages of ``LAYER``: a
+    package left out of it (takeover33's ``trife``) escaped the import
+    direction, the tolerance and the method-name checks with no warning."""
+    missing = sorted(top_level_packages(ROOT) - set(LAYER))
+    assert missing == [], (f"package(s) {missing} not in tests/test_layout.py's LAYER: give each its layer "
+                           "(0 core, 1 method or meshes, 2 drivers), docs/architecture.md \"A new method\"")
+
+
+def test_the_layer_check_sees_a_package_folder_and_a_listed_one(tmp_path):
+    (tmp_path / "efgm").mkdir()
+    (tmp_path / "efgm" / "__init__.py").write_text("")
+    (tmp_path / "trife").mkdir()
+    (tmp_path / "trife" / "__init__.py").write_text("")
+    (tmp_path / "docs").mkdir()
+    (tmp_path / "pyproject.toml").write_text('[tool.setuptools]\npackages = ["efgm", "quadfe", "quadfe.shape"]\n')
+    assert top_level_packages(tmp_path) == {"efgm", "trife", "quadfe"}
+    assert sorted(top_level_packages(tmp_path) - set(LAYER)) == ["quadfe", "trife"]
+
+
 def test_every_source_file_compiles_without_a_warning():
     """An invalid escape in a docstring is a DeprecationWarning today (shown in
     a user's own pytest run, which does not filter the project's warnings)

@@ -5,10 +5,15 @@
 import no numerics; every fact about a method — its implementing module,
 its field output, whether it spreads over mpirun's ranks, whether it needs
 MPI — is a class attribute there, read through :func:`discretisation`.
-The implementing module has ``METHOD`` and ``solve(scene, h=None, *,
+The implementing module (the class's ``module``) has ``build(scene,
+options, resolution, timings)`` and ``solve(scene, h=None, *,
 paper=False, **options) -> contactcore.Result``, the contract's one solve
-with the method's options.  Lazy import keeps an ``efgm`` run free of
-dolfinx and gmsh.
+with the method's options; a method needs nothing else here.  The
+shipped method modules also define ``METHOD`` (their options' ``name``),
+which no driver reads: a new method needs none (only the GetFEM contact
+peer's ``METHOD`` is used, its name in results; docs/architecture.md,
+"A new method").  Lazy import keeps an ``efgm`` run free of dolfinx and
+gmsh.
 """
 from __future__ import annotations
 
