@@ -12,7 +12,7 @@ from pathlib import Path
 
 from contactcore import ContactError, ProfileData, SceneError, load_scene, make_law
 from contactcore.scaling import Scales
-from verification.agreement import (EXACT_GAP_FLOOR, EXCLUDE_FRACTION, agreements, assert_methods_agree, compare, default_exclusion,
+from verification.agreement import (EXACT_GAP_FLOOR, EXCLUDE_FRACTION, agreements, assert_methods_agree, assert_table_agrees, compare, default_exclusion,
                                     displacement_scale, measured_against, percent, relative_rms, table, variant)
 from xdolfinx.quiet import quiet_compiler
 
@@ -544,6 +544,10 @@ def test_a_wrong_mu_fails_the_agreement_on_the_status_map(monkeypatch):
     assert f"{row.start:.4g} to {row.end:.4g}" in message
     tT = next(a for a in result.rows if a.quantity == "tT")
     assert tT.worst > tol.FRICTION_RTOL and tT.against.startswith("slip bound")
+    # the same check of the table already made (newuser34 #13: runs you have), and the same first line
+    with pytest.raises(AssertionError) as again:
+        assert_table_agrees(result, rtol=tol.FRICTION_LOOSE_RTOL)
+    assert str(again.value).split(": ", 1)[1].splitlines()[0] == first
 
 
 def test_the_same_mu_agrees_with_its_status_map():

@@ -32,7 +32,8 @@ reference's over all of Γ, a boundary's move by a cell allowed
 
 :func:`compare` solves a scene with several methods and a reference and
 returns the :class:`AgreementTable`; :func:`assert_methods_agree` is the
-pytest helper built on it (docs/api.md).
+pytest helper built on it, :func:`assert_table_agrees` its check of a
+table of runs already made (docs/api.md).
 
 One idea a module:
 
@@ -64,7 +65,7 @@ One idea a module:
   errors (:func:`estimated_shares`, :func:`worst_estimate`,
   :func:`within_estimates`);
 - :mod:`~verification.agreement.api`: the public check (:func:`compare`,
-  :func:`assert_methods_agree`, :func:`compare_estimates`, :func:`check_rtol`, :func:`variant`,
+  :func:`assert_methods_agree`, :func:`assert_table_agrees`, :func:`compare_estimates`, :func:`check_rtol`, :func:`variant`,
   :func:`label`, :func:`sampled`).
 
 The arrows: ``api`` → ``tables`` → ``records`` → ``classes`` → ``groups``
@@ -84,7 +85,7 @@ contactcore.tolerances', with their reasons, still importable from here).
 from contactcore.tolerances import (EXACT_GAP_FLOOR, EXCLUDE_FRACTION, EXCLUDE_KEEP_SHARE, NEGLIGIBLE_SHARE,
                                     STATUS_ALLOWANCE_CELLS, STATUS_TOLERATED_SHARE, WORST_TIE)
 
-from .api import (MEASURES, EstimateVerdict, assert_methods_agree, check_rtol, compare, compare_estimates,
+from .api import (MEASURES, EstimateVerdict, assert_methods_agree, assert_table_agrees, check_rtol, compare, compare_estimates,
                   compared_variants, label, sampled, variant)
 from .classes import KNOWN_ZEROS, is_zero, quantity_class
 from .estimates import estimated_shares, within_estimates, worst_estimate
@@ -123,6 +124,6 @@ __all__ = [
     # estimates
     "estimated_shares", "within_estimates", "worst_estimate",
     # api
-    "MEASURES", "EstimateVerdict", "assert_methods_agree", "check_rtol", "compare", "compare_estimates",
+    "MEASURES", "EstimateVerdict", "assert_methods_agree", "assert_table_agrees", "check_rtol", "compare", "compare_estimates",
     "compared_variants", "label", "sampled", "variant",
 ]

@@ -137,19 +137,31 @@ def assert_methods_agree(scene, methods, h: float | None = None, rtol: float = 0
     are refused with a :class:`ContactError` before any solve."""
     __tracebackhide__ = True  # pytest: the failure's message, not this function's source
     check_rtol(rtol, measure)
-    result = compare(scene, methods, h, reference=reference, exclude=exclude, floors=floors, **options)
-    failed = sorted((a for a in result.rows if not getattr(a, measure) <= rtol),
+    return assert_table_agrees(compare(scene, methods, h, reference=reference, exclude=exclude, floors=floors,
+                                       **options), rtol, measure=measure)
+
+
+def assert_table_agrees(table: AgreementTable, rtol: float = 0.05, *, measure: str = "worst") -> AgreementTable:
+    """:func:`assert_methods_agree`'s check of a table already made (by
+    :func:`compare` or :func:`table`, of runs you already have): the status
+    maps first, then every row to ``rtol`` as ``measure``; the table is
+    returned when all agree, else an AssertionError names each offender.
+    A bad ``rtol`` or ``measure`` is refused as :func:`check_rtol` refuses
+    it."""
+    __tracebackhide__ = True
+    check_rtol(rtol, measure)
+    failed = sorted((a for a in table.rows if not getattr(a, measure) <= rtol),
                     key=lambda a: -getattr(a, measure))
-    maps = result.status_failures()
+    maps = table.status_failures()
     if failed or maps:
-        heads = ([f"{len(maps)} of {len(result.statuses)} status maps along Γ differ on more than "
+        heads = ([f"{len(maps)} of {len(table.statuses)} status maps along Γ differ on more than "
                   f"{STATUS_TOLERATED_SHARE:g} of Γ beyond a cell of a status change"] if maps else [])
-        heads += ([f"{len(failed)} of {len(result.rows)} profile quantities differ by more than rtol = {rtol:g} "
+        heads += ([f"{len(failed)} of {len(table.rows)} profile quantities differ by more than rtol = {rtol:g} "
                    f"({measure})"] if failed else [])
-        lines = [a.describe(result.reference) for a in [*maps, *failed]]
-        raise AssertionError("; ".join(heads) + ": " + "\n".join(lines) + f"\n({result.excluded()}"
-                             + ("; the status maps compare all of Γ" if result.statuses else "") + ")")
-    return result
+        lines = [a.describe(table.reference) for a in [*maps, *failed]]
+        raise AssertionError("; ".join(heads) + ": " + "\n".join(lines) + f"\n({table.excluded()}"
+                             + ("; the status maps compare all of Γ" if table.statuses else "") + ")")
+    return table
 
 
 @dataclass(frozen=True)

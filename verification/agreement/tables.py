@@ -84,8 +84,8 @@ class AgreementTable:
                          f" {q} is measured against sqrt({q}² + ({v:.3g} {column_unit(q, self.units)})²) "
                          "(a floor given)." for q, v in self.floors)
         friction = next((a.against for a in self.rows if a.against.startswith(SLIP_BOUND)), "")
-        floor += (" Each quantity is measured against the size of its vector or tensor in the reference (t_N and "
-                  + ("t_T against |t|" if not friction else
+        floor += (" Each quantity is measured against the size of its vector or tensor in the reference ("
+                  + ("t_N and t_T against |t|" if not friction else
                      f"t_N against |t|, t_T against the law's {friction}, the friction's own size")
                   + ", a stress against the stresses its profile samples), at least "
                   f"{NEGLIGIBLE_SHARE:g} of the scene's own scale (round-off): the worst sample is the largest "
