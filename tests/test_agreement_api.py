@@ -522,7 +522,7 @@ def test_a_wrong_mu_fails_the_agreement_on_the_status_map(monkeypatch):
     measured against |t| (2.0 %), and most of the slip zone lay within the
     exclusion around Γ's ends.  The status map, compared over all of Γ, now
     fails it whatever rtol, naming the method, the profile, the share of Γ,
-    its s range and both statuses; t_T, against its slip bound, fails rtol
+    its s range and both statuses; t_T, against |t|, stays within rtol
     too."""
     from contactcore import scene_from_dict
     from verification.agreement import EXCLUDE_FRACTION, STATUS_TOLERATED_SHARE
@@ -543,16 +543,28 @@ def test_a_wrong_mu_fails_the_agreement_on_the_status_map(monkeypatch):
     assert 2.0 - EXCLUDE_FRACTION * scene.length_scale < row.start < row.end
     assert f"{row.start:.4g} to {row.end:.4g}" in message
     tT = next(a for a in result.rows if a.quantity == "tT")
-    assert tT.worst > tol.FRICTION_RTOL and tT.against.startswith("slip bound")
+    assert tT.against == "|(tN, tT)|"  # t_T against |t|: the status map, not its share, catches the wrong μ
     # the same check of the table already made (newuser34 #13: runs you have), and the same first line
     with pytest.raises(AssertionError) as again:
         assert_table_agrees(result, rtol=tol.FRICTION_LOOSE_RTOL)
     assert str(again.value).split(": ", 1)[1].splitlines()[0] == first
 
 
+def test_a_gamma_sampled_by_a_segment_has_its_status_map_compared_too(monkeypatch):
+    """review17 #2: with Γ sampled by a ``type = "line"`` profile (as
+    scene A's A5 is), the wrong μ passed: no status row was made.  Now a
+    segment carrying Γ's quantities is one of Γ's profiles."""
+    from contactcore import scene_from_dict
+    segment = {"id": "G", "type": "line", "start": [0.0, 0.5], "end": [2.0, 0.5], "quantities": ["tN", "tT"]}
+    scene = scene_from_dict({**SHEARED_BLOCK, "profiles": [segment]})
+    _wrong_mu(monkeypatch, "xfem", tol.FRICTION_WRONG_MU)
+    with pytest.raises(AssertionError, match="xfem P2 against fe P2: G status"):
+        assert_methods_agree(scene, ["xfem:2"], rtol=tol.FRICTION_LOOSE_RTOL)
+
+
 def test_the_same_mu_agrees_with_its_status_map():
     """The same block and μ: xfem P2's map agrees with fe P2's within a
-    cell (its t_T 0.58 % of the slip bound at h = 0.05), and the table
+    cell (its t_T 0.058 % of |t| at h = 0.05), and the table
     says so in summary.md's status row."""
     from contactcore import scene_from_dict
     scene = scene_from_dict(SHEARED_BLOCK)

@@ -492,11 +492,3 @@ def test_the_difference_panel_says_the_agreement_tables_figure():
         plots.pyplot().close(fig)
     assert ("A5", "gN", "|g|") in differs, differs
 
-
-def test_a_frictional_t_t_panel_names_its_slip_bound():
-    """A frictional law's t_T is measured against the reference's slip
-    bound (the agreement's ``against``): the panel's label says so in
-    symbols (newuser34 #12 read ``max|(slip, bound, μ, max, t_N, 0)|``)."""
-    from verification import agreement
-    assert plots.size_symbol("tT", agreement.SLIP_BOUND) == "(μ(−t_N)⁺)"
-    assert plots.size_symbol("tT", "|(tN, tT)|") == "|t|"

@@ -1602,13 +1602,14 @@ FRICTION_MU = 0.1
 FRICTION_WRONG_MU = 0.15
 #: Its spacing and the rtol the agreement is asked for: the helper's
 #: default.  Measured 2026-11-29 (xfem P2 against fe P2, h = 0.05): the same
-#: μ agrees to 0.58 % (t_T against its slip bound; every other quantity
-#: <= 0.02 %) with the status maps alike; the wrong μ differs by 19.8 % of
-#: the slip bound in t_T and on 6 % of Γ's length in status beyond a cell.
+#: μ agrees to 0.058 % (t_T against |t|; every other quantity <= 0.02 %)
+#: with the status maps alike; the wrong μ differs by 1.98 % of |t| in t_T
+#: (within this rtol: the values alone cannot tell it) and on 6 % of Γ's
+#: length in status beyond a cell.
 FRICTION_H = 0.05
 FRICTION_RTOL = 0.05
-#: An rtol the wrong μ's values all pass (its worst, t_T, 19.8 %): the
-#: status map alone must fail it.
+#: An rtol the wrong μ's values all pass (its worst, t_T, 1.98 % of |t|):
+#: the status map alone must fail it.
 FRICTION_LOOSE_RTOL = 0.5
 
 # --- outside (2026-11-29): an outside code's answer against the project's (tests/test_outside.py) ---

@@ -32,7 +32,6 @@ from contactcore.scene import Units
 from contactcore.scene import DISPLACEMENT_QUANTITIES, STRESS_QUANTITIES
 from contactcore.tolerances import PLOT_MIN_Y_SPAN
 
-from .agreement.groups import SLIP_BOUND
 from .files import STRESS_COLUMNS, atomic_path, column_unit, parameter_unit
 
 
@@ -76,10 +75,7 @@ def size_symbol(q: str, against: str = "") -> str:
     :class:`~verification.agreement.Agreement`'s: ``|(tN, tT)|``, or "" for
     ``q`` itself) as ``|t|`` where it holds a whole group
     (:data:`GROUP_SYMBOLS`), else its components' symbols (``|σxy|``,
-    ``|(σxx, σxy)|``); a frictional law's t_T's slip bound
-    (:data:`~verification.agreement.SLIP_BOUND`) as ``(μ(−t_N)⁺)``."""
-    if against.startswith(SLIP_BOUND):  # a frictional law's t_T: over the law's slip bound
-        return f"(μ(−{SYMBOLS.get('tN', 'tN')})⁺)"
+    ``|(σxx, σxy)|``)."""
     names = re.findall(r"\w+", against) or [q]
     whole = next((s for g, s in GROUP_SYMBOLS.items() if set(g) == set(names)), None)
     shown = [SYMBOLS.get(n, n) for n in names]

@@ -14,7 +14,7 @@ method resolves at these resolutions, so a pointwise difference there
 measures resolution, not agreement.  A quantity is a component of a vector
 or tensor (:data:`GROUPS`), and is measured against that vector's or
 tensor's size at each sample (:func:`scale_of`): t_N and t_T against |t|
-(a frictional law's t_T against its slip bound, :func:`slip_bound_size`),
+(a wrong friction shows in the status map, not in t_T's share),
 g_N and g_T against |g| (at a point of Γ, whichever profiles sample them:
 scene B's B6 t_N against B5's t_T), a stress against the size of the
 stresses its profile samples, a displacement against |u|.  So a component
@@ -89,7 +89,7 @@ from .api import (MEASURES, EstimateVerdict, assert_methods_agree, assert_table_
                   compared_variants, label, sampled, variant)
 from .classes import KNOWN_ZEROS, is_zero, quantity_class
 from .estimates import estimated_shares, within_estimates, worst_estimate
-from .groups import GROUPS, ON_GAMMA, SLIP_BOUND, components, group_of, group_size, scale_name, scale_of, slip_bound_size
+from .groups import GROUPS, ON_GAMMA, components, group_of, group_size, scale_name, scale_of
 from .measures import first_largest, percent, relative_rms, share
 from .outside import compare_outside  # an outside code's answer against the project's (docs/api.md)
 from .records import Agreement, agreements, profile_agreements
@@ -109,8 +109,7 @@ __all__ = [
     # samples
     "check_exclusion", "default_exclusion", "kept_samples",
     # groups
-    "GROUPS", "ON_GAMMA", "SLIP_BOUND", "components", "group_of", "group_size", "scale_name", "scale_of",
-    "slip_bound_size",
+    "GROUPS", "ON_GAMMA", "components", "group_of", "group_size", "scale_name", "scale_of",
     # classes
     "KNOWN_ZEROS", "is_zero", "quantity_class",
     # measures

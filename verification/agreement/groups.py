@@ -8,7 +8,6 @@ from __future__ import annotations
 import numpy as np
 
 from contactcore import ProfileData, Scene
-from contactcore.laws import frictionless
 from contactcore.scene import DISPLACEMENT_QUANTITIES, STRESS_QUANTITIES
 
 from .sizes import measured_floor, roundoff
@@ -64,46 +63,23 @@ def group_size(pid: str, q: str, profiles: dict) -> np.ndarray:
     return np.sqrt(sum(parts[c] ** 2 for c in group_of(q) if c in parts))
 
 
-#: How :func:`scale_name` names a frictional law's t_T scale (:func:`slip_bound_size`).
-SLIP_BOUND = "slip bound μ max(−tN, 0)"
-
-
-def slip_bound_size(scene: Scene | None, pid: str, q: str, profiles: dict) -> np.ndarray | None:
-    """A frictional law's t_T scale at the samples of ``pid``: the law's
-    slip bound there, ``slip_bound(t_N)`` (Coulomb's ``μ max(−t_N, 0)``,
-    the largest |t_T| a closed point can carry), of ``profiles``' t_N at
-    those points (:func:`components`); None for any other quantity, a law
-    that is not frictional or frictionless (μ = 0: t_T is zero, its
-    residue is measured against |t|), or no t_N sampled there.  Against
-    |t| a friction error read μ times smaller (newuser33, 2026-11-29: a
-    wrong μ, 20 % of the slip bound, read 2.0 % of |t|, within rtol 0.05,
-    where the methods' discretisation errors read 0.06-0.42 % of |t| and
-    0.58-4.1 % of the slip bound; docs/verification.md)."""
-    law = getattr(scene, "law", None)
-    if q != "tT" or not getattr(law, "frictional", False) or frictionless(law):
-        return None
-    parts = components(pid, q, profiles)
-    return np.asarray(law.slip_bound(parts["tN"]), float) if "tN" in parts else None
-
-
-def scale_name(pid: str, q: str, profiles: dict, scene: Scene | None = None) -> str:
+def scale_name(pid: str, q: str, profiles: dict) -> str:
     """What :func:`scale_of` measures ``q`` against, in words: ``tT`` alone,
-    ``|(tN, tT)|`` with its group, :data:`SLIP_BOUND` for a frictional
-    law's t_T on ``scene`` (:func:`slip_bound_size`)."""
-    if slip_bound_size(scene, pid, q, profiles) is not None:
-        return SLIP_BOUND
+    ``|(tN, tT)|`` with its group."""
     names = list(components(pid, q, profiles))
     return q if len(names) == 1 else "|(" + ", ".join(sorted(names, key=group_of(q).index)) + ")|"
 
 
 def scale_of(scene: Scene, pid: str, q: str, profiles: dict, floor: float = 0.0) -> np.ndarray:
     """The per-sample values ``q`` of profile ``pid`` of ``profiles`` is
-    measured against: its group's size (:func:`group_size`), but a
-    frictional law's t_T its slip bound (:func:`slip_bound_size`), floored
-    by an exact law's gap floor (:func:`measured_against`) or ``floor`` (a
+    measured against: its group's size (:func:`group_size`) floored by an
+    exact law's gap floor (:func:`measured_against`) or ``floor`` (a
     user's, in q's unit), the larger, and by round-off of the scene's
-    scale (:func:`roundoff`)."""
-    bound = slip_bound_size(scene, pid, q, profiles)
-    own = group_size(pid, q, profiles) if bound is None else bound
-    size = np.hypot(own, max(measured_floor(scene, q), floor))
+    scale (:func:`roundoff`).  A frictional law's t_T too is measured
+    against |t|, not its slip bound (review17, 2026-11-29: against the
+    bound, a slip reversal that a method spreads over a cell read 23 % on
+    C-coulomb, xfem P2 at h = 0.05, and at μ > 1 a t_T error 10 times
+    smaller than against |t|); a wrong friction shows in the status map
+    (:mod:`~verification.agreement.status`)."""
+    size = np.hypot(group_size(pid, q, profiles), max(measured_floor(scene, q), floor))
     return np.hypot(size, roundoff(scene, q))

@@ -12,7 +12,7 @@ from contactcore.profiles import sample_points
 from contactcore.scene import Units
 
 from .classes import is_zero, quantity_class
-from .groups import SLIP_BOUND, scale_name, scale_of
+from .groups import scale_name, scale_of
 from .measures import percent, relative_rms, share
 from .samples import kept_samples
 from .sizes import measured_floor
@@ -58,7 +58,7 @@ class Agreement:
         unit = column_unit(self.quantity, self.units)
         name = self.against or self.quantity
         scale = (f"sqrt({name}² + ({self.floor:.3g} {unit})²) (floored)" if self.floor
-                 else name if name.startswith(("|", SLIP_BOUND)) else f"|{name}|")
+                 else name if name.startswith("|") else f"|{name}|")
         length, value = f" {self.units.length}", f" {unit}" if unit else ""
         s_unit = f" {self.s_unit}" if self.s_unit else ""
         return (f"{self.method} against {against}: {self.profile} {self.quantity} at s = {self.s:.4g}{s_unit} "
@@ -109,7 +109,7 @@ def profile_agreements(scene: Scene, label: str, got: dict, ref: dict, exclude: 
             else:
                 floor = max(measured_floor(scene, q), given.get(q, 0.0))
                 row = _compared(scene, label, pid, q, prof, ref[pid], exclude,
-                                scale_of(scene, pid, q, ref, given.get(q, 0.0)), floor, scale_name(pid, q, ref, scene),
+                                scale_of(scene, pid, q, ref, given.get(q, 0.0)), floor, scale_name(pid, q, ref),
                                 s_unit)
             rows.append(Agreement(**{**row.__dict__, "kind": kind}))
     return rows

@@ -31,7 +31,8 @@ from contactcore import ProfileData, Scene
 from contactcore.geometry import CircleInterface
 from contactcore.laws import REPORTED_STATUS_NAMES
 from contactcore.profiles import interface_status, sample_points
-from contactcore.scene import InterfaceProfile, Units
+from contactcore.scene import InterfaceProfile, LineProfile, Units
+from contactcore.scene.vocabulary import INTERFACE_QUANTITIES
 from contactcore.tolerances import STATUS_ALLOWANCE_CELLS
 
 from .measures import percent
@@ -47,12 +48,22 @@ class StatusMap:
     profiles: dict = field(default_factory=dict)
 
 
+def on_gamma(profile) -> bool:
+    """Whether ``profile`` samples Γ: an interface profile, or a segment
+    that carries Γ's quantities (a scene's check holds such a segment to
+    Γ: :mod:`contactcore.scene.check_profiles`; scene A's A5 is one)."""
+    return isinstance(profile, InterfaceProfile) or (isinstance(profile, LineProfile)
+                                                      and bool(set(profile.quantities) & set(INTERFACE_QUANTITIES)))
+
+
 def gamma_profiles(scene: Scene) -> list:
-    """The scene's profiles along Γ, one of those that sample the same
-    points (scene B's B5 and B6 sample the same Γ: one map)."""
+    """The scene's profiles along Γ (:func:`on_gamma`), one of those that
+    sample the same points (scene B's B5 and B6 sample the same Γ: one
+    map).  Without one, nothing along Γ is compared (review17: a Γ
+    sampled by a segment once gave no status row)."""
     seen, out = [], []
     for p in scene.profiles:
-        if isinstance(p, InterfaceProfile):
+        if on_gamma(p):
             xy = sample_points(scene, p)[1]
             if not any(len(xy) == len(o) and np.array_equal(xy, o) for o in seen):
                 seen.append(xy)

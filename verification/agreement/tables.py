@@ -11,7 +11,6 @@ from contactcore.labels import reference_text
 from contactcore.scene import Units
 from contactcore.tolerances import EXACT_GAP_FLOOR, NEGLIGIBLE_SHARE, STATUS_ALLOWANCE_CELLS, STATUS_TOLERATED_SHARE
 
-from .groups import SLIP_BOUND
 from .measures import first_largest, percent
 from .records import Agreement, profile_agreements
 from .samples import check_exclusion, default_exclusion
@@ -83,11 +82,8 @@ class AgreementTable:
                          "and is not used." if self._below_gap_floor(q, v) else
                          f" {q} is measured against sqrt({q}² + ({v:.3g} {column_unit(q, self.units)})²) "
                          "(a floor given)." for q, v in self.floors)
-        friction = next((a.against for a in self.rows if a.against.startswith(SLIP_BOUND)), "")
-        floor += (" Each quantity is measured against the size of its vector or tensor in the reference ("
-                  + ("t_N and t_T against |t|" if not friction else
-                     f"t_N against |t|, t_T against the law's {friction}, the friction's own size")
-                  + ", a stress against the stresses its profile samples), at least "
+        floor += (" Each quantity is measured against the size of its vector or tensor in the reference (t_N and "
+                  "t_T against |t|, a stress against the stresses its profile samples), at least "
                   f"{NEGLIGIBLE_SHARE:g} of the scene's own scale (round-off): the worst sample is the largest "
                   "|difference| over the largest size on the profile (not over the size at that sample), the RMS "
                   "the RMS difference over the RMS size. A quantity's class names what it is: `zero` (exactly zero in "
