@@ -535,12 +535,12 @@ def _prefixed(what: str, solve, *args, **kwargs):
 
 def _solve(scene: Scene, name: str, h, degree: int, paper: bool, estimate, options: dict, shown: str | None = None):
     """Method ``name``'s result (the finest, with ``estimate``) and its
-    estimate, logged (as ``shown``, default ``name``): a worker of an
-    mpi4py.futures pool solves on its own communicator; mpirun's ranks
-    share the world."""
-    shown = shown or name
-    log.info("scene %s: solving with %s (%s)", scene.name, shown, f"{options['basis']} basis" if "basis" in options
-             else f"degree {degree}")
+    estimate, logged (as ``shown``, default its label ``xfem P1`` as
+    summary.md names it): a worker of an mpi4py.futures pool solves on its
+    own communicator; mpirun's ranks share the world."""
+    shown = shown or run_label(name, degree)
+    log.info("scene %s: solving with %s%s", scene.name, shown, f" ({options['basis']} basis)" if "basis" in options
+             else "")
     solve, on_comm = pool.solver(name) if pool.under_mpi_pool() else (methods.solver(name), {})
     result, est = _solve_estimated(solve, scene, h, estimate, degree=degree, paper=paper,
                                    progress=_progress(shown), **options, **on_comm)
@@ -614,7 +614,7 @@ def _against_exact(out: Path, scene: Scene, twin: Scene, name: str, result, h, d
     its estimate is floored alike.  Returns the exact run's summary
     (a row of summary.md's table)."""
     label, shown = run_label(name, result.degree), f"{name} ({exact_gap.EXACT})"
-    exact, est = _solve(twin, name, h, degree, paper, estimate, options, shown)
+    exact, est = _solve(twin, name, h, degree, paper, estimate, options, f"{label} ({exact_gap.EXACT})")
     summary, sampled = _written_profiles(out / name / "exact", twin, exact, est, floors)
     penalty, exact_profiles = agreement.sampled(scene, result), {p.id: p for p in sampled}
     interface.write_history(out / name / "exact", twin, exact.interface)
