@@ -53,7 +53,8 @@ def _command(argv=None) -> int:
     parser = argparse.ArgumentParser(prog="python -m meshes", description=__doc__)
     parser.add_argument("scene", help="built-in scene name (A, B, C) or a scene TOML file")
     parser.add_argument("--h", type=float, help="element size (default: the scene's h)")
-    parser.add_argument("--out", required=True, help="the mesh file to write (.msh, or another format gmsh writes)")
+    parser.add_argument("--out", required=True, help="the mesh file to write: .msh for run --mesh / FE(mesh=...) (another format gmsh "
+                        "writes, e.g. .vtk to view it, keeps no physical group names: fe refuses it)")
     parser.add_argument("--order", type=int, default=1, choices=(1, 2), help="geometry order (2: curved)")
     parser.add_argument("--grade", type=float, metavar="FACTOR", help="size on Γ and corners as a fraction of h")
     parser.add_argument("--grade-distance", type=float, help="distance over which the size grows back to h")

@@ -40,6 +40,10 @@ LINES = {1: 1, 8: 2}
 #: What the measure of ``h`` is called in records and messages.
 H_MEASURE = "largest cell diameter (a triangle's longest side)"
 
+#: The extension of gmsh's own format, the one whose physical groups carry
+#: names (VTK, STL, INP... written by gmsh keep none).
+MSH = ".msh"
+
 #: The physical groups every mesh needs (dimension, name).
 REQUIRED = ((2, NAMES[BODY["minus"]]), (2, NAMES[BODY["plus"]]), (1, NAMES[INTERFACE]))
 
@@ -203,11 +207,13 @@ def _uncovered(params: np.ndarray, start: float, end: float, gap: float) -> tupl
 def check_mesh(scene, mesh: MeshFile, degree: int) -> list[str]:
     """Refuse ``mesh`` for the user's ``scene`` (its coordinates the
     scene's) with one line naming the first problem, in this order:
-    physical groups missing by name; cells in no body or in both; Γ's
-    facets not on the scene's Γ (a node farther than ``NODE_MATCH`` of the
+    physical groups missing by name; cells in no body or in both; a mesh
+    that reaches past the domain or short of it (another domain's mesh);
+    Γ's facets not on the scene's Γ (a node farther than ``NODE_MATCH`` of the
     scene's length from it, the mesher's own test of a point on a curve),
     not between a − and a + cell, or not covering Γ end to end (and a −/+
-    side that is no Γ facet); a support's or edge load's boundary group
+    side that is no Γ facet); body cells on Γ's other side (body_minus and
+    body_plus swapped: :func:`_check_bodies`); a support's or edge load's boundary group
     missing, off its boundary or not covering it; a pin that is no mesh
     vertex.  Returns the warnings of a mesh that solves: straight cells on
     a circular Γ (:func:`meshes.build.polygon_warnings`, at the size of
@@ -218,6 +224,10 @@ def check_mesh(scene, mesh: MeshFile, degree: int) -> list[str]:
     where = f"{mesh.path}"
     names = [NAMES[t] for t in BODY.values()] + [NAMES[INTERFACE]]
     missing = [name for dim, name in REQUIRED if mesh.group(name, dim) is None]
+    if missing and not mesh.groups and Path(mesh.path).suffix.lower() != MSH:
+        raise _problem(where, f"has no physical groups: its format ({Path(mesh.path).suffix or 'no extension'}) "
+                              f"carries no physical names, and fe reads {', '.join(names)} and boundary_NAME by "
+                              "name: write the mesh as .msh (python -m meshes SCENE --out FILE.msh)")
     if missing:
         held = sorted({n for _, n in mesh.groups}) or ["none"]
         raise _problem(where, f"no physical group named {', '.join(missing)} (it has {', '.join(held)}); fe needs "
@@ -228,8 +238,10 @@ def check_mesh(scene, mesh: MeshFile, degree: int) -> list[str]:
         what = (f"{none} of its {len(mesh.cells)} cells are in no body group" if none else
                 f"{both} of its {len(mesh.cells)} cells are in both body_minus and body_plus")
         raise _problem(where, f"{what}: every triangle must be in exactly one of body_minus, body_plus")
+    _check_extent(scene, mesh, where, near, unit)
     _check_sides(scene, mesh, where, near, unit)
     _check_interface(scene, mesh, where, near, unit)
+    _check_bodies(scene, mesh, where, near)
     for boundary, user in _names(scene).items():
         _check_boundary(scene, mesh, where, boundary, user, near, unit)
     corners = np.unique(mesh.cells[:, :3])
@@ -240,6 +252,67 @@ def check_mesh(scene, mesh: MeshFile, degree: int) -> list[str]:
                                   f"(the nearest is {d.min():.3g} {unit} away, more than {near:.3g}): fe holds a "
                                   "pin at a vertex; embed the point in gmsh (python -m meshes does)")
     return _order_warnings(scene, mesh, degree)
+
+
+def _span(lo, hi, unit: str) -> str:
+    return f"x {lo[0]:.6g} to {hi[0]:.6g}, y {lo[1]:.6g} to {hi[1]:.6g} {unit}"
+
+
+def _check_extent(scene, mesh: MeshFile, where: str, near: float, unit: str) -> None:
+    """The mesh's nodes against the scene's domain: a node farther than
+    ``near`` outside it, or the nodes' extent short of the domain's by more
+    than ``near`` (a rectangle's bounding box side by side; a disc's
+    largest distance from the centre, its boundary nodes on the circle):
+    the mesh of another domain (newuser34: scene A's 1 × 1 mesh on a 2 × 1
+    scene was called a hole), or cells left out at the boundary."""
+    dom, corners = scene.domain, mesh.nodes[np.unique(mesh.cells[:, :3])]
+    lo, hi = corners.min(axis=0), corners.max(axis=0)
+    if isinstance(dom, Disc):
+        reach = float(np.hypot(*(corners - np.asarray(dom.centre, float)).T).max())
+        theirs, wanted = f"reach {reach:.6g} {unit} from the disc's centre", f"its radius is {dom.radius:g} {unit}"
+        short, past = reach < dom.radius - near, reach > dom.radius + near
+    else:
+        d_lo, d_hi = np.asarray(dom.corner, float), np.add(dom.corner, dom.size)
+        theirs, wanted = f"span {_span(lo, hi, unit)}", f"the domain {_span(d_lo, d_hi, unit)}"
+        short = bool(np.any(lo > d_lo + near) or np.any(hi < d_hi - near))
+        past = bool(np.any(lo < d_lo - near) or np.any(hi > d_hi + near))
+    if past:
+        raise _problem(where, f"it reaches past the scene's domain: its nodes {theirs}, {wanted} (the mesh of "
+                              "another domain, or in another length unit?)")
+    if short:
+        raise _problem(where, f"it does not cover the scene's domain: its nodes {theirs}, {wanted} (the mesh of "
+                              "another domain, or cells left out: gmsh writes only cells in a physical group "
+                              "unless Mesh.SaveAll is 1)")
+
+
+def _check_bodies(scene, mesh: MeshFile, where: str, near: float) -> None:
+    """Each body's cells on its own side of the scene's Γ: the signed
+    distance (φ, positive on the + side, where the normal points:
+    contactcore.geometry) at each cell's centroid (of its corners) at most
+    ``slack`` on the wrong side.  ``slack`` is ``near`` and the farthest a
+    Γ facet's midpoint lies off Γ (a chord's sagitta on a curved Γ, 0 on a
+    line): a + cell on a chord of a circle may reach that far inside it.
+    Every cell of both on the wrong side: the groups are swapped (newuser34:
+    accepted, and fe answered with Γ opened and the materials exchanged)."""
+    itf = scene.interface
+    facets = mesh.group(NAMES[INTERFACE], 1)
+    mid = mesh.nodes[facets[:, :2]].mean(axis=1)
+    slack = near + float(np.abs(itf.signed_distance(mid)).max())
+    wrong = {}
+    for side, sign in (("minus", -1.0), ("plus", 1.0)):
+        cells = mesh.group(NAMES[BODY[side]], 2)
+        phi = itf.signed_distance(mesh.nodes[cells[:, :3]].mean(axis=1))
+        wrong[side] = (int(np.sum(sign * phi < -slack)), len(cells))
+    if all(n == total for n, total in wrong.values()):
+        (m, _), (p, _) = wrong["minus"], wrong["plus"]
+        raise _problem(where, f"all {m} cells of body_minus lie on Γ's + side and all {p} of body_plus on its − "
+                              "side (the scene's normal points from − into +): are body_minus and body_plus swapped?")
+    for side, (n, total) in wrong.items():
+        if n:
+            other = "+" if side == "minus" else "−"
+            raise _problem(where, f"{n} of the {total} cells of {NAMES[BODY[side]]} lie on Γ's {other} side (the "
+                                  "scene's normal points from − into +): each body's cells must lie on its own side "
+                                  "of Γ")
 
 
 def _check_sides(scene, mesh: MeshFile, where: str, near: float, unit: str) -> None:

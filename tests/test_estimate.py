@@ -327,8 +327,9 @@ def test_run_estimate_writes_the_errors(tmp_path, caplog):
     assert units["xfem/profiles/A1.csv"]["sxy_err"] == units["xfem/profiles/A1.csv"]["sxy"] == "Pa"
     alone = tmp_path / "reference_alone"
     run("A", ["fe"], alone, h=0.1, degree=2, draw=False)
-    dofs = json.loads((alone / "fe" / "summary.json").read_text())["dofs"]
-    assert f"| reference: fe P2 | 2 | {dofs} |" in text  # the reference is solved at the answer's h/2
+    ref = json.loads((alone / "fe" / "summary.json").read_text())
+    dofs, h_ref = ref["dofs"], ref["discretisation"]["h"]
+    assert f"| reference: fe P2 | 2 | {h_ref:.6g} | {dofs} |" in text  # the reference is solved at the answer's h/2
     reference_row = next(line for line in text.splitlines() if line.startswith("| reference: fe P2 |"))
     assert reference_row.count(f"—{NOT_ESTIMATED_MARK}") == 2 and NOT_ESTIMATED in text  # why it has no estimate
 

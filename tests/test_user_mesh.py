@@ -6,6 +6,7 @@ that means nothing beside it ends in one ``error:`` line, exit 2, before
 any solve; two ranks give the serial numbers."""
 import csv
 import json
+import re
 from dataclasses import replace
 from pathlib import Path
 
@@ -16,7 +17,7 @@ import meshes.__main__ as meshes_cli
 import tolerances as tol
 from contactcore import ContactError, DiscretisationError, Pin, load_scene, sample_profiles
 from meshes.read import H_MEASURE, check_mesh, read_mesh_file
-from user_meshes import scene_a_mesh
+from user_meshes import scene_a_mesh, swap_bodies
 from verification.__main__ import main
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -75,6 +76,15 @@ def test_the_mesh_of_python_m_meshes_gives_fes_own_answer(tmp_path, scene):
     assert given["discretisation"]["mesh"]["sha256"] == mesh.sha256
     assert given["discretisation"]["h"] == pytest.approx(mesh.h)
     assert mesh.h > own["discretisation"]["h"]  # gmsh's sides reach past its h
+    unit = load_scene(scene).units.length  # summary.md states each run's h and the file (newuser34 #9)
+    for name, summary in (("own", own), ("file", given)):
+        text = (tmp_path / name / "summary.md").read_text()
+        header, _, row = (line for line in text.splitlines() if line.startswith("| ") and "| DOFs |" in line
+                          or line.startswith("| fe |") or line.startswith("|---"))
+        assert header.startswith(f"| method | degree | h ({unit}) | DOFs |"), header
+        assert row.startswith(f"| fe | {summary['degree']} | {summary['discretisation']['h']:.6g} | {summary['dofs']} |")
+        assert (f"on the mesh file a.msh ({mesh.cells.shape[0]} cells; h = {mesh.h:.6g} {unit}, its {H_MEASURE})"
+                in text) == (name == "file")
 
 
 #: A profile's columns that place its samples, not a quantity.
@@ -114,7 +124,9 @@ BAD = {  # name: (the fault, words its line must hold)
     "no body_plus group": (dict(drop=("body_plus",)), "no physical group named body_plus"),
     "Γ moved off by 1e-3": (dict(shift_gamma=1e-3), "off the scene's Γ"),
     "cells in no body": (dict(untag_top=True, save_all=True), "in no body group"),
-    "cells left out": (dict(untag_top=True), "hole inside the domain"),
+    "cells left out at the top": (dict(untag_top=True), "does not cover the scene's domain: its nodes span x 0 to 1, "
+                                  "y 0 to 0.75 m, the domain x 0 to 1, y 0 to 1 m"),
+    "cells left out inside": (dict(untag=(0.6, 0.8)), "hole inside the domain"),
     "support's boundary missing": (dict(drop=("boundary_bottom",)), "supports[0] acts on boundary 'bottom'"),
 }
 
@@ -194,3 +206,88 @@ def test_a_mesh_too_large_for_the_machine_is_refused_by_its_vertices(tmp_path, c
     line = _one_error_line(capsys)
     vertices = len(np.unique(read_mesh_file(msh).cells[:, :3]))
     assert f"--mesh a.msh: {vertices} vertices, as many as h" in line and "--allow-large" in line, line
+
+
+# --- usermesh2 (newuser34 #1, #10, #11): bodies swapped, another domain's mesh, a format without names ---
+
+#: Meshes of ``python -m meshes`` whose bodies are read back swapped: a
+#: straight Γ (A), a circle (B, C), C curved (geometry order 2).
+SWAPPED = {"A": ["--h", "0.2"], "B": ["--h", "0.25"], "C": ["--h", "0.25"], "C order 2": ["--h", "0.25", "--order", "2"]}
+
+
+@pytest.mark.parametrize("case", list(SWAPPED))
+def test_a_mesh_with_its_bodies_swapped_is_refused_and_the_right_one_passes(tmp_path, case):
+    """newuser34 #1: body_minus and body_plus exchanged in the file was
+    solved (A5 g_N open where it is closed); now every cell's centroid is
+    held to its body's side of Γ, and a mesh whose every cell is on the
+    other side is asked whether the two are swapped.  The file as written
+    passes (a straight-celled circle's + cells on Γ's chords reach inside
+    the circle by the chord's sagitta, allowed)."""
+    name = case.split()[0]
+    msh = tmp_path / "m.msh"
+    assert meshes_cli.main([name, *SWAPPED[case], "--out", str(msh)]) == 0
+    scene = load_scene(name)
+    right = read_mesh_file(msh)
+    check_mesh(scene, right, 1)
+    wrong = read_mesh_file(swap_bodies(msh, tmp_path / "swapped.msh"))
+    minus, plus = (len(right.group(g, 2)) for g in ("body_minus", "body_plus"))
+    with pytest.raises(DiscretisationError) as err:
+        check_mesh(scene, wrong, 1)
+    line = str(err.value)
+    assert "\n" not in line and line.endswith("are body_minus and body_plus swapped?"), line
+    assert f"all {plus} cells of body_minus lie on Γ's + side and all {minus} of body_plus on its − side" in line
+
+
+def test_the_swapped_mesh_is_one_line_before_any_solve(tmp_path, capsys, monkeypatch):
+    msh = tmp_path / "a.msh"
+    assert meshes_cli.main(["A", "--h", "0.2", "--out", str(msh)]) == 0
+    swapped = swap_bodies(msh, tmp_path / "swapped.msh")
+    from contactcore import discretisation
+    monkeypatch.setattr(discretisation, "solve_increments", lambda *a, **k: pytest.fail("solved"))
+    assert _run(tmp_path, "o", "--mesh", swapped) == 2
+    line = _one_error_line(capsys)
+    assert line.startswith(f"error: fe: mesh {swapped}: ") and "swapped?" in line, line
+
+
+def test_some_cells_of_a_body_on_the_other_side_are_counted_without_asking_for_a_swap(tmp_path):
+    """A body_plus holding cells below Γ (the interface check catches such
+    a mesh first where the cells touch; the count is the last word): the
+    group, how many of its cells, and no swap question."""
+    from meshes.read import _check_bodies
+    scene = load_scene("A")
+    mesh = read_mesh_file(scene_a_mesh(tmp_path / "a.msh", 2 * H))
+    minus, plus = mesh.group("body_minus", 2), mesh.group("body_plus", 2)
+    moved = replace(mesh, groups={**mesh.groups, (2, "body_plus"): np.concatenate([plus, minus[:3]])})
+    with pytest.raises(DiscretisationError, match=rf"3 of the {len(plus) + 3} cells of body_plus lie on Γ's − side") \
+            as err:
+        _check_bodies(scene, moved, mesh.path, 0.0)
+    assert "swapped" not in str(err.value)
+
+
+@pytest.mark.parametrize("size, words", [
+    ((2.0, 1.0), "does not cover the scene's domain: its nodes span x 0 to 1, y 0 to 1 m, the domain x 0 to 2, "
+                 "y 0 to 1 m (the mesh of another domain"),
+    ((1.0, 0.8), "reaches past the scene's domain: its nodes span x 0 to 1, y 0 to 1 m, the domain x 0 to 1, "
+                 "y 0 to 0.8 m"),
+])
+def test_another_domains_mesh_is_named_so_not_a_hole(tmp_path, size, words):
+    """newuser34 #10: scene A's 1 × 1 mesh on a 2 × 1 scene was "a hole
+    inside the domain"; the extents are compared first, both ways."""
+    from contactcore.geometry import Rectangle
+    scene = load_scene("A")
+    other = replace(scene, domain=Rectangle((0.0, 0.0), size))  # its profiles unchecked: check_mesh reads none
+    mesh = read_mesh_file(scene_a_mesh(tmp_path / "a.msh", 2 * H))
+    with pytest.raises(DiscretisationError, match=re.escape(words)):
+        check_mesh(other, mesh, 1)
+
+
+def test_a_format_without_physical_names_is_named(tmp_path, capsys):
+    """newuser34 #11: ``python -m meshes --out x.vtk`` writes a file gmsh
+    reads back without a physical group; ``--mesh`` says the format keeps
+    no names and to write .msh (it said only "no physical group named
+    body_minus")."""
+    vtk = tmp_path / "x.vtk"
+    assert meshes_cli.main(["A", "--h", "0.2", "--out", str(vtk)]) == 0
+    assert _run(tmp_path, "o", "--mesh", vtk) == 2
+    line = _one_error_line(capsys)
+    assert "its format (.vtk) carries no physical names" in line and "write the mesh as .msh" in line, line

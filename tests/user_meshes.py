@@ -1,6 +1,8 @@
 """Meshes of scene A (the unit square, Γ at y = 0.5) made with gmsh's API
 as a user would: the physical groups named as meshes/tags.py names them,
 numbered otherwise (from 101), and the faults a user's mesh may have."""
+from pathlib import Path
+
 from meshes import keeping_sigint
 
 with keeping_sigint():
@@ -10,12 +12,16 @@ with keeping_sigint():
 SAME_LINE = 1e-9
 
 
-def scene_a_mesh(path, h, factor=1.0, distance=0.2, untag_top=False, drop=(), shift_gamma=0.0, save_all=False):
+def scene_a_mesh(path, h, factor=1.0, distance=0.2, untag_top=False, drop=(), shift_gamma=0.0, save_all=False,
+                 untag=None):
     """Write scene A's mesh to ``path`` with gmsh's API: size ``h``, graded
     to ``h·factor`` on Γ over ``distance`` (factor < 1); faults: the groups
     named in ``drop`` left out, the + body above y = 0.75 in no group
     (``untag_top``; written with ``save_all``, else gmsh leaves its cells
-    out), Γ's nodes moved by ``shift_gamma`` in y."""
+    out), or its band between ``untag`` = (y0, y1) (a hole inside the
+    domain), Γ's nodes moved by ``shift_gamma`` in y."""
+    if untag_top:
+        untag = (0.75, 1.0)
     with keeping_sigint():
         gmsh.initialize(["-noenv"], readConfigFiles=False)
     try:
@@ -24,19 +30,20 @@ def scene_a_mesh(path, h, factor=1.0, distance=0.2, untag_top=False, drop=(), sh
         occ = gmsh.model.occ
         box = occ.addRectangle(0, 0, 0, 1, 1)
         cuts = [(1, occ.addLine(occ.addPoint(0, 0.5, 0), occ.addPoint(1, 0.5, 0)))]
-        if untag_top:
-            cuts.append((1, occ.addLine(occ.addPoint(0, 0.75, 0), occ.addPoint(1, 0.75, 0))))
+        for y in () if untag is None else [y for y in untag if y < 1.0]:
+            cuts.append((1, occ.addLine(occ.addPoint(0, y, 0), occ.addPoint(1, y, 0))))
         occ.fragment([(2, box)], cuts)
         occ.synchronize()
         surfaces = {}
         for _, s in gmsh.model.getEntities(2):
             y = occ.getCenterOfMass(2, s)[1]
-            name = "body_minus" if y < 0.5 else "top" if y > 0.75 and untag_top else "body_plus"
+            name = "body_minus" if y < 0.5 else "top" if untag and untag[0] < y < untag[1] else "body_plus"
             surfaces.setdefault(name, []).append(s)
         curves = {}
         for _, c in gmsh.model.getEntities(1):
             x, y, _ = occ.getCenterOfMass(1, c)
-            name = ("interface" if abs(y - 0.5) < SAME_LINE else "cut" if abs(y - 0.75) < SAME_LINE else
+            cut = untag is not None and min(abs(y - u) for u in untag) < SAME_LINE and SAME_LINE < y < 1 - SAME_LINE
+            name = ("interface" if abs(y - 0.5) < SAME_LINE else "cut" if cut else
                     "boundary_left" if x < SAME_LINE else "boundary_right" if x > 1 - SAME_LINE else
                     "boundary_bottom" if y < SAME_LINE else "boundary_top")
             curves.setdefault(name, []).append(c)
@@ -74,3 +81,14 @@ def scene_a_mesh(path, h, factor=1.0, distance=0.2, untag_top=False, drop=(), sh
         with keeping_sigint():
             gmsh.finalize()
     return path
+
+
+def swap_bodies(src, dst):
+    """Copy the gmsh file ``src`` (ASCII, as ``python -m meshes`` writes it)
+    to ``dst`` with the names body_minus and body_plus exchanged in its
+    $PhysicalNames (newuser34's a_swapped.msh); returns ``dst``."""
+    head, rest = Path(src).read_text().split("$PhysicalNames", 1)
+    names, tail = rest.split("$EndPhysicalNames", 1)
+    names = names.replace('"body_minus"', '"@"').replace('"body_plus"', '"body_minus"').replace('"@"', '"body_plus"')
+    Path(dst).write_text(head + "$PhysicalNames" + names + "$EndPhysicalNames" + tail)
+    return dst

@@ -87,19 +87,26 @@ def read_nodes(path, scene=None) -> np.ndarray:
     return nodes
 
 
-def _summary_table(summaries: list[dict]) -> str:
+def _summary_table(summaries: list[dict], unit: str) -> str:
+    """summary.md's table of the runs: each run's h in the scene's length
+    ``unit`` (the discretisation's record; a ``--mesh`` file's largest cell
+    diameter, the file named under the table: newuser34 #9, the status
+    rows' "1 cell" could not be read in metres)."""
     estimated = any("estimate" in s for s in summaries)
     extra = " estimated error (worst relative RMS, away from singular points) | energy (ZZ, relative) |" if estimated else ""
-    lines = ["| method | degree | DOFs | mesh (s) | assembly (s) | solve (s) | total (s) |" + extra
-             + " residual | condition |", "|---|---|---|---|---|---|---|" + "---|---|" * estimated + "---|---|"]
+    lines = [f"| method | degree | h ({unit}) | DOFs | mesh (s) | assembly (s) | solve (s) | total (s) |" + extra
+             + " residual | condition |", "|---|---|---|---|---|---|---|---|" + "---|---|" * estimated + "---|---|"]
     for s in summaries:
         t, sv = s["timings"], s["solver"]
         cond = "—" if sv["condition"] is None else f"{sv['condition']:.2e}"
-        lines.append(f"| {s.get('label', s['method'])} | {s['degree']} | {s['dofs']} | {t['mesh']:.3f} | {t['assembly']:.3f} | "
+        h = s.get("discretisation", {}).get("h")
+        lines.append(f"| {s.get('label', s['method'])} | {s['degree']} | {'—' if h is None else f'{h:.6g}'} | {s['dofs']} | "
+                     f"{t['mesh']:.3f} | {t['assembly']:.3f} | "
                      f"{t['solve']:.3f} | {t['total']:.3f} |{_estimate_cells(s) if estimated else ''} "
                      f"{sv['residual']:.1e} | {cond} |")
     footnote = [NOT_ESTIMATED] if estimated and any("estimate" not in s for s in summaries) else []
     footnote += _ladder_note(summaries) if estimated else []
+    footnote += _mesh_note(summaries, unit)
     footnote += _methods_note(summaries)
     footnote += _partial_note(summaries)
     warnings = _grouped_warnings(summaries)
@@ -119,6 +126,14 @@ def _grouped_warnings(summaries: list[dict]) -> list[str]:
             if run not in runs.setdefault(w, []):
                 runs[w].append(run)
     return [f"- {', '.join(names)}: {w}" for w, names in runs.items()]
+
+
+def _mesh_note(summaries: list[dict], unit: str) -> list[str]:
+    """Under the table, with ``--mesh``: the file each run solved on, its h
+    and what that h measures (run.json's ``mesh``)."""
+    lines = [f"- {s.get('label', s['method'])}: on the mesh file {m['file']} ({m['cells']} cells; h = {m['h']:.6g} "
+             f"{unit}, its {m['h_measure']})" for s in summaries if (m := s.get("discretisation", {}).get("mesh"))]
+    return ["", "Mesh:", *lines] if lines else []
 
 
 def _methods_note(summaries: list[dict]) -> list[str]:
@@ -646,7 +661,7 @@ def _write_summary(out: Path, scene: Scene, summaries: list[dict], profiles: dic
                            scene.units, left_out, table.sizes(pid) if table else None)
     compared = agreement_section(table)
     text = (f"# Scene {plots.heading(scene.name, scene.title)}\n\n" + conventions(scene.units, files.ranks())
-            + law_line(scene) + _summary_table(summaries) + compared)
+            + law_line(scene) + _summary_table(summaries, scene.units.length) + compared)
     if compared and not estimated:
         text += UNESTIMATED_AGREEMENT
     if len(estimated) > 1:
