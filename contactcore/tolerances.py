@@ -1655,3 +1655,17 @@ STATUS_TOLERATED_SHARE = 0.0
 #: 0.17 m off a tilted Γ in a 1 m square, 0.12 L) lies twice above.
 #: Not a check of accuracy: a check that the points are Γ's at all.
 GAMMA_POINT_OFFSET = 0.06
+
+# --- a user's mesh (meshes/read.py): its Γ nodes on the scene's Γ ---
+#: The farthest a node of a user's mesh's interface group may lie from the
+#: scene's Γ, relative to L.  A profile sample exactly on Γ at such a node
+#: reads the other body when the node is off by more: review17
+#: (2026-11-29, scene A's mesh from ``python -m meshes A --h 0.1``, the Γ
+#: node at (0.5, 0.5) moved in y; A3 σxx at s = 0.5): +7857 Pa unmoved,
+#: the same at ±1e-12 and 1e-11 m, −7834 Pa at 1e-10 m and beyond (L = 1.41
+#: m).  gmsh's own Γ nodes lie within 6e-17 L (B, P1 and P2) and 4.04e-12 L
+#: (C at order 2, every h from 0.2 to 0.0125: its high-order nodes), so
+#: this admits them with a margin of 2.5 and refuses a move that flips.
+#: NODE_MATCH (1e-6 L), the mesher's own test of a point on a curve,
+#: admitted moves of up to 1.4e-6 m there.
+USER_MESH_ON_GAMMA = 1e-11

@@ -344,15 +344,17 @@ def _check_interface(scene, mesh: MeshFile, where: str, near: float, unit: str) 
     facets = mesh.group(NAMES[INTERFACE], 1)
     if not len(facets):
         raise _problem(where, "its interface group holds no facets: Γ must be a curve of the mesh")
+    on_gamma = tol.USER_MESH_ON_GAMMA * scene.length_scale
     dist = np.abs(itf.signed_distance(mesh.nodes[facets.ravel()]))
-    off = np.abs(itf.signed_distance(mesh.nodes[facets].reshape(-1, 2))).reshape(len(facets), -1).max(axis=1) > near
+    off = dist.reshape(len(facets), -1).max(axis=1) > on_gamma
     if off.any():
         k = int(np.argmax(dist))
         x, y = mesh.nodes[facets.ravel()[k]]
         raise _problem(where, f"{int(off.sum())} of Γ's {len(facets)} facets are off the scene's Γ (a node at "
-                              f"({x:.6g}, {y:.6g}) {unit} lies {dist[k]:.3g} {unit} from it, more than {near:.3g}, "
-                              f"{tol.NODE_MATCH:g} of the scene's size): the interface group must lie on the scene's "
-                              "interface")
+                              f"({x:.6g}, {y:.6g}) {unit} lies {dist[k]:.3g} {unit} from it, more than "
+                              f"{on_gamma:.3g}, {tol.USER_MESH_ON_GAMMA:g} of the scene's size): the interface group "
+                              "must lie on the scene's interface to round-off (a node farther off moves a profile "
+                              "sample there to the other body)")
     e_minus = {tuple(e) for e in _edges(mesh.group(NAMES[BODY["minus"]], 2)).tolist()}
     e_plus = {tuple(e) for e in _edges(mesh.group(NAMES[BODY["plus"]], 2)).tolist()}
     shared = e_minus & e_plus

@@ -143,6 +143,19 @@ def test_a_bad_mesh_is_one_line_before_any_solve(tmp_path, capsys, monkeypatch, 
     assert not (tmp_path / "o").exists()
 
 
+def test_gammas_nodes_must_lie_on_gamma_to_round_off(tmp_path):
+    """review17 #6: Γ's nodes moved by 1e-10 m (below the mesher's
+    NODE_MATCH, 1.4e-6 m on A) were accepted, and a profile sample there
+    read the other body (A3 σxx at s = 0.5: −7834 Pa for +7857 Pa).  A move
+    above USER_MESH_ON_GAMMA of L is refused; one within it solves."""
+    from contactcore import tolerances as ctol
+    scene = load_scene("A")
+    beyond, within = (f * ctol.USER_MESH_ON_GAMMA * scene.length_scale for f in tol.USER_MESH_GAMMA_MOVES)
+    check_mesh(scene, read_mesh_file(scene_a_mesh(tmp_path / "in.msh", 2 * H, shift_gamma=within)), 1)
+    with pytest.raises(DiscretisationError, match="off the scene's Γ"):
+        check_mesh(scene, read_mesh_file(scene_a_mesh(tmp_path / "out.msh", 2 * H, shift_gamma=beyond)), 1)
+
+
 def test_a_pin_off_the_meshs_vertices_is_refused(tmp_path):
     scene = load_scene("A")
     mesh = read_mesh_file(scene_a_mesh(tmp_path / "a.msh", 2 * H))

@@ -1638,3 +1638,10 @@ STUDYEST_SAME_RUNS = 1e-12
 #: A turned Γ's normal, direction and point against their closed forms:
 #: sin and cos of a degree angle, a few ulps of 1.
 STUDYEST_ANGLE_ROUNDOFF = 1e-12
+
+# --- review17 #6 (2026-11-29): a user mesh's Γ nodes on Γ to round-off (tests/test_user_mesh.py) ---
+#: Moves of Γ's nodes as multiples of contactcore's USER_MESH_ON_GAMMA·L:
+#: one 10 times beyond it (review17's 1e-10 m flip on A lies 7 times
+#: beyond) must be refused, one a tenth of it (round-off: gmsh's own lie
+#: within 6e-17 L on a line) must solve.
+USER_MESH_GAMMA_MOVES = (10.0, 0.1)
