@@ -10,6 +10,7 @@ import pytest
 import tolerances as tol
 from contactcore import load_scene
 from contactcore import estimate as est
+from contactcore.labels import run_label
 from contactcore import tolerances as core_tol
 from contactcore.scaling import Sizes
 from verification import files, methods
@@ -302,7 +303,7 @@ def test_run_estimate_writes_the_errors(tmp_path, caplog):
         assert summary["discretisation"]["h"] == pytest.approx(0.1)
         estimate = summary["estimate"]
         assert estimate["h"] == pytest.approx([0.2, 0.1]) and estimate["energy"]["eta"] > 0
-        assert estimate["warnings"] and all(f"{name}: {w}" in logged for w in estimate["warnings"])
+        assert estimate["warnings"] and all(f"{run_label(name, 1)}: {w}" in logged for w in estimate["warnings"])
         from contactcore.scene import RESERVED_PROFILE_IDS  # no profile id may take a key beside the profiles
         assert set(estimate) - {p.id for p in load_scene("A").profiles} == set(RESERVED_PROFILE_IDS)
         columns = files.read_profile_csv(out / name / "profiles" / "A1.csv")
