@@ -2,8 +2,11 @@
 issue 34): newuser33's case in code (fe P2's own answer perturbed by 3 % of
 max|t_N| in the middle third of Γ is blamed on the outside code there and
 agrees elsewhere; the project's answer at a finer h agrees everywhere), a
-warned estimate gives no verdict, samples near singular points are left
-out, and every bad input is one line naming its problem, before any solve."""
+warned estimate gives a verdict only beyond WARNED_MULTIPLE, the window
+takes no q_err from samples left out, s given alone is said and a wide
+`outside` hints at the conventions, samples near singular points are left
+out, against's files name every unit, and every bad input is one line
+naming its problem, before any solve."""
 import json
 from pathlib import Path
 

@@ -15,8 +15,12 @@ project's estimated error there, and a verdict per region along ``s``:
   project's estimated error: the difference is at least mostly the
   outside code's error;
 * ``agree``: within it: the two agree within the project's error;
-* ``warned``: the project's estimate of that quantity is warned
-  (:attr:`contactcore.estimate.Estimate.unsettled`): no verdict;
+* ``outside (estimate warned)``: the estimate is warned
+  (:attr:`contactcore.estimate.Estimate.unsettled`) but ``|difference| >``
+  :data:`WARNED_MULTIPLE` times it (the outside code's even if the
+  estimate is as low as the lowest effectivity the docs record);
+* ``warned``: the estimate is warned and the difference within that:
+  no verdict;
 * ``left out``: within ``exclude`` of a singular point, as the agreement
   leaves it out.
 
