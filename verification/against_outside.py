@@ -15,6 +15,7 @@ from pathlib import Path
 
 from . import files
 from .agreement.outside import compare_outside
+from .run import conventions
 
 #: outside.csv's columns, in order.
 CSV_COLUMNS = ["profile", "quantity", "s", "s_unit", "x", "y", "outside", "project", "estimate", "difference",
@@ -44,7 +45,7 @@ def against(outside, scene, method: str, degree: int, out: Path, *, h: float | N
     entry for it and run.json into ``out``; return outside.md's text."""
     table = compare_outside(scene, outside, method=f"{method}:{degree}", h=h, levels=levels, exclude=exclude,
                             floors=floors, **options)
-    text = table.markdown()
+    text = table.markdown(conventions(table.units))
     rows = table.csv_rows()
     files.write_text(Path(out) / "outside.md", text)
     files.write_csv(Path(out) / "outside.csv", rows, CSV_COLUMNS)

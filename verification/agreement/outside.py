@@ -206,19 +206,21 @@ class OutsideTable:
         """The row of ``profile``'s ``quantity``."""
         return next(r for r in self.rows if (r.profile, r.quantity) == (profile, quantity))
 
-    def markdown(self) -> str:
-        """The verdict in Markdown (what ``against`` writes as outside.md)."""
+    def markdown(self, conventions: str = "") -> str:
+        """The verdict in Markdown (what ``against`` writes as outside.md,
+        its ``conventions`` paragraph ``run``'s summary.md's,
+        :func:`verification.run.conventions`, after the title)."""
         from ..files import column_unit
-        from ..run import conventions
         from .measures import percent
         length = self.units.length
         where = ("; ".join(f"{name} " + ", ".join(f"({x:.4g}, {y:.4g})" for x, y in pts) for name, pts in self.regions)
                  if self.regions else "")
         left = (f"samples within {self.exclude:.3g} {length} of these singular points are left out: {where}"
                 if self.regions else "no sample is left out (the scene has no singular point)")
-        lines = [f"# An outside answer against {self.method} on scene {self.scene}", "",
-                 conventions(self.units).rstrip("\n") + " s is a profile's parameter: the arc length from its "
-                 "start, or Γ's polar angle in rad on a circle (docs/scenes.md, \"Profiles and their samples\").", "",
+        opening = ([conventions.rstrip("\n") + " s is a profile's parameter: the arc length from its start, or "
+                    "Γ's polar angle in rad on a circle (docs/scenes.md, \"Profiles and their samples\").", ""]
+                   if conventions else [])
+        lines = [f"# An outside answer against {self.method} on scene {self.scene}", "", *opening,
                  f"The project's answer: {self.method} at h = {self.hs[-1]:g} {length}, its error estimated from "
                  f"the runs at h = {', '.join(f'{h:g}' for h in self.hs)} {length} (Richardson, "
                  "docs/error-estimates.md), taken at each sample as the largest `q_err` within "
