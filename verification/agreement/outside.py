@@ -78,7 +78,11 @@ BLAME_MULTIPLE = 2 * ESTIMATE_TRUST
 #: traction varying at the fine cells' scale), 3.68 with 1.5, 2.52 with two
 #: cells (none blamed), 2.17 with three.  Within the same body: a profile
 #: crossing Γ samples two fields, and the runs' error where Γ cuts it
-#: (scene C's C3 σyy) is not the other side's.
+#: (scene C's C3 σyy) is not the other side's.  Among kept samples only
+#: (:func:`_envelope`; outside2, 2026-11-29): the same figures at h = 0.1;
+#: at h = 0.05 A, B, C blame none (2.50 at most) and the cylinder's Γ 7
+#: single samples (up to 13.5; 3 cells: 2), as before the change
+#: (docs/error-estimates-log.md, "the outside verdict's window").
 ESTIMATE_WINDOW_CELLS = 2.0
 
 #: The lowest effectivity (estimate / true error) docs/error-estimates.md
