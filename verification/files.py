@@ -508,8 +508,10 @@ def write_units(folder: Path) -> Path:
     (:func:`column_unit` in the units of its scene; outside a scene's
     folder, those the nearest ``run.json`` above it records for a table
     over several scenes, :func:`run_units`, else SI's; ``s``'s from
-    :func:`scene_units`)."""
+    :func:`scene_units`); a ``units.json`` the command wrote names columns
+    these rules cannot (``against``'s outside.csv), and its entries win."""
     units, scenes, recorded = {}, scene_units(folder), _recorded_units(folder)
+    given = json.loads((Path(folder) / UNITS_FILE).read_text()) if (Path(folder) / UNITS_FILE).exists() else {}
     for path in sorted(Path(folder).rglob("*.csv")):
         with open(path, newline="") as fh:
             header = next(csv.reader(fh), [])
@@ -517,5 +519,5 @@ def write_units(folder: Path) -> Path:
         table = next((recorded[d] for d in path.parents if d in recorded), Units())
         own, s = scenes.get(name, (table, None))
         found = {c: s if c == "s" else column_unit(c, own) for c in header}
-        units[name] = {c: unit for c, unit in found.items() if unit}
+        units[name] = {**{c: unit for c, unit in found.items() if unit}, **given.get(name, {})}  # the command's own
     return write_json(Path(folder) / UNITS_FILE, units)

@@ -15,8 +15,12 @@ project's estimated error there, and a verdict per region along ``s``:
   project's estimated error: the difference is at least mostly the
   outside code's error;
 * ``agree``: within it: the two agree within the project's error;
-* ``warned``: the project's estimate of that quantity is warned
-  (:attr:`contactcore.estimate.Estimate.unsettled`): no verdict;
+* ``outside (estimate warned)``: the estimate is warned
+  (:attr:`contactcore.estimate.Estimate.unsettled`) but ``|difference| >``
+  :data:`WARNED_MULTIPLE` times it (the outside code's even if the
+  estimate is as low as the lowest effectivity the docs record);
+* ``warned``: the estimate is warned and the difference within that:
+  no verdict;
 * ``left out``: within ``exclude`` of a singular point, as the agreement
   leaves it out.
 
@@ -74,8 +78,33 @@ BLAME_MULTIPLE = 2 * ESTIMATE_TRUST
 #: traction varying at the fine cells' scale), 3.68 with 1.5, 2.52 with two
 #: cells (none blamed), 2.17 with three.  Within the same body: a profile
 #: crossing Γ samples two fields, and the runs' error where Γ cuts it
-#: (scene C's C3 σyy) is not the other side's.
+#: (scene C's C3 σyy) is not the other side's.  Among kept samples only
+#: (:func:`_envelope`; outside2, 2026-11-29): the same figures at h = 0.1;
+#: at h = 0.05 A, B, C blame none (2.50 at most) and the cylinder's Γ 7
+#: single samples (up to 13.5; 3 cells: 2), as before the change
+#: (docs/error-estimates-log.md, "the outside verdict's window").
 ESTIMATE_WINDOW_CELLS = 2.0
+
+#: The lowest effectivity (estimate / true error) docs/error-estimates.md
+#: records of a warned estimate ("Known limits": an exact law's traction on
+#: Γ, 0.19-13.7 over 82 entries, 0.19 a held-out wedge's xfem P2 ``t_T``):
+#: a warned estimate may be this many times too small.
+WARNED_EFFECTIVITY = 0.19
+
+#: Where the project's estimate is warned, a difference beyond this many
+#: times it is still the outside code's: even if the estimate is
+#: :data:`WARNED_EFFECTIVITY` of the true error, the difference exceeds
+#: :data:`BLAME_MULTIPLE` times that true error (newuser34: a wrong μ's
+#: G ``g_T`` at 311×, C4 ``t_N`` of the wrong sign at 7.05e4×, read
+#: ``warned`` before).  Below it a warned quantity reads ``warned``.
+WARNED_MULTIPLE = BLAME_MULTIPLE / WARNED_EFFECTIVITY
+
+#: A profile whose ``outside`` samples span more than this share of its
+#: kept length (in ``s``) gets a hint to check s's unit and direction and
+#: the sign conventions: an error in the outside code is rarely that wide,
+#: a misread input is (newuser34: C4's s as R θ in m, s reversed, a sign
+#: flipped).
+WIDE_OUTSIDE_SHARE = 0.5
 
 #: A sample given by ``x, y`` lies on the profile when it is within this
 #: share of the scene's diameter of it (and a sample given both ``s`` and
@@ -95,7 +124,12 @@ VERDICTS = {
                "mostly the outside code's error",
     "agree": f"|difference| within {BLAME_MULTIPLE:g} × the project's estimated error: the two agree within the "
              "project's error",
-    "warned": "the project's estimate of this quantity is warned (below): no verdict",
+    "outside (estimate warned)": f"the project's estimate is warned but |difference| > {WARNED_MULTIPLE:.3g} × it "
+                                 f"({BLAME_MULTIPLE:g} / {WARNED_EFFECTIVITY:g}, the lowest effectivity "
+                                 "docs/error-estimates.md records): the outside code's error even if the estimate is "
+                                 "that far too small",
+    "warned": f"the project's estimate of this quantity is warned (below) and |difference| is within "
+              f"{WARNED_MULTIPLE:.3g} × it: no verdict",
     "left out": "within the exclusion distance of a singular point, as the agreement table leaves it out",
 }
 
@@ -124,7 +158,10 @@ class OutsideRow:
     ``estimate`` the RMS of the project's estimated error over the kept
     samples, in the quantity's unit, ``ratio`` RMS(difference) / that;
     ``regions`` the verdicts along ``s``; ``warnings`` what makes the
-    project's estimate untrusted (empty: trusted); ``columns`` per outside
+    project's estimate untrusted (empty: trusted); ``hints`` what the
+    verdict adds about the input (what ``s`` was taken as where it was
+    given alone; where ``outside`` spans most of the profile, what to check
+    first); ``columns`` per outside
     sample (in ``s`` order): ``s, x, y, outside, project, estimate,
     difference, verdict``."""
 
@@ -134,6 +171,7 @@ class OutsideRow:
     regions: tuple[Region, ...]
     warnings: tuple[str, ...]
     columns: dict = field(repr=False, compare=False, default_factory=dict)
+    hints: tuple[str, ...] = ()
 
     @property
     def profile(self) -> str:
@@ -172,8 +210,10 @@ class OutsideTable:
         """The row of ``profile``'s ``quantity``."""
         return next(r for r in self.rows if (r.profile, r.quantity) == (profile, quantity))
 
-    def markdown(self) -> str:
-        """The verdict in Markdown (what ``against`` writes as outside.md)."""
+    def markdown(self, conventions: str = "") -> str:
+        """The verdict in Markdown (what ``against`` writes as outside.md,
+        its ``conventions`` paragraph ``run``'s summary.md's,
+        :func:`verification.run.conventions`, after the title)."""
         from ..files import column_unit
         from .measures import percent
         length = self.units.length
@@ -181,11 +221,15 @@ class OutsideTable:
                  if self.regions else "")
         left = (f"samples within {self.exclude:.3g} {length} of these singular points are left out: {where}"
                 if self.regions else "no sample is left out (the scene has no singular point)")
-        lines = [f"# An outside answer against {self.method} on scene {self.scene}", "",
+        opening = ([conventions.rstrip("\n") + " s is a profile's parameter: the arc length from its start, or "
+                    "Γ's polar angle in rad on a circle (docs/scenes.md, \"Profiles and their samples\").", ""]
+                   if conventions else [])
+        lines = [f"# An outside answer against {self.method} on scene {self.scene}", "", *opening,
                  f"The project's answer: {self.method} at h = {self.hs[-1]:g} {length}, its error estimated from "
                  f"the runs at h = {', '.join(f'{h:g}' for h in self.hs)} {length} (Richardson, "
                  "docs/error-estimates.md), taken at each sample as the largest `q_err` within "
-                 f"{ESTIMATE_WINDOW_CELLS:g} coarse cells either side along the profile in the same body, plus the "
+                 f"{ESTIMATE_WINDOW_CELLS:g} coarse cells either side along the profile in the same body among the "
+                 "samples compared (none within the exclusion distance of a singular point), plus the "
                  f"error of interpolating the project's samples to the outside's; {left}.", "",
                  "Verdicts: " + "; ".join(f"`{k}`: {v}" for k, v in VERDICTS.items()) + ".", "",
                  "| profile | quantity | worst | RMS | project's estimated error (RMS) | difference / estimate "
@@ -197,26 +241,44 @@ class OutsideTable:
                                 + ("" if math.isnan(g.ratio) else f", {g.ratio:.3g}×") + ")" for g in r.regions)
             lines.append(f"| {a.profile} | {a.quantity} | {percent(a.worst)} at s = {a.s:.4g}{s_unit} | "
                          f"{percent(a.rms)} | {r.estimate:.3g} {unit} | {r.ratio:.3g} | {regions} |")
+        hints = [f"- {r.profile}:{r.quantity}: {h}" for r in self.rows for h in r.hints]
+        if hints:
+            lines += ["", "About the input:", *hints]
         warned = [f"- {r.profile}:{r.quantity}: {w}" for r in self.rows for w in r.warnings]
         if warned:
-            lines += ["", "The project's estimate is warned (no verdict there):", *warned]
+            lines += ["", f"The project's estimate is warned (a verdict there only beyond {WARNED_MULTIPLE:.3g} × "
+                      "the estimate):", *warned]
         lines += ["", "worst: the largest |difference| over the project's largest scale (the agreement table's, "
                   "docs/api.md); RMS: the RMS difference over the RMS scale; a region's figure: RMS(difference) / "
                   "RMS(the project's estimated error) over its samples."]
         return "\n".join(lines) + "\n"
 
     def csv_rows(self) -> list[dict]:
-        """One dict per outside sample: ``profile, quantity, s, x, y,
-        outside, project, estimate, difference, verdict``."""
+        """One dict per outside sample: ``profile, quantity, s, s_unit, x,
+        y, outside, project, estimate, difference, unit, verdict``
+        (``s_unit``: s's, m or rad by profile; ``unit``: the quantity's, of
+        outside, project, estimate and difference)."""
+        from ..files import column_unit
         names = ("s", "x", "y", "outside", "project", "estimate", "difference", "verdict")
-        return [{"profile": r.profile, "quantity": r.quantity, **{n: r.columns[n][i] for n in names}}
+        return [{"profile": r.profile, "quantity": r.quantity, "s_unit": r.agreement.s_unit or self.units.length,
+                 "unit": column_unit(r.quantity, self.units) or "", **{n: r.columns[n][i] for n in names}}
                 for r in self.rows for i in range(len(r.columns["s"]))]
 
 
 # --- the outside profiles: read and checked -------------------------------------------------------------------
 
 
-def read_outside(path) -> dict[str, dict[str, list]]:
+class OutsideFiles(dict):
+    """Profile id -> columns as :func:`read_outside` read them; ``lines``:
+    id -> (the file, the file line of each sample, counted from 1 with the
+    header line 1), so that an error names the line to open."""
+
+    def __init__(self, columns=(), lines=None):
+        super().__init__(columns)
+        self.lines = dict(lines or {})
+
+
+def read_outside(path) -> OutsideFiles:
     """Profile id -> columns of a CSV file (its id the file's stem, ``C4.csv``
     -> ``C4``: the project's own ``METHOD/profiles/ID.csv``) or of every
     ``*.csv`` in a folder; a header row of column names, then one row a
@@ -231,18 +293,18 @@ def read_outside(path) -> dict[str, dict[str, list]]:
         files = [path]
     else:
         raise ContactError(f"outside: {path} is neither a CSV file nor a folder of them")
-    out = {}
+    out, lines = {}, {}
     for f in files:
         try:
             with open(f, newline="") as fh:
-                rows = [r for r in csv.reader(fh) if any(c.strip() for c in r)]
+                rows = [(i, r) for i, r in enumerate(csv.reader(fh), start=1) if any(c.strip() for c in r)]
         except (OSError, UnicodeDecodeError) as exc:
             raise ContactError(f"outside: cannot read {f}: {exc}") from None
         if not rows:
             raise ContactError(f"outside: {f} is empty (a header row of column names, then one row a sample)")
-        header = [c.strip() for c in rows[0]]
+        header = [c.strip() for c in rows[0][1]]
         columns = {name: [] for name in header}
-        for i, r in enumerate(rows[1:], start=2):
+        for i, r in rows[1:]:
             if len(r) != len(header):
                 raise ContactError(f"outside: {f} line {i}: {len(r)} cells, the header names {len(header)}")
             for name, cell in zip(header, r):
@@ -252,7 +314,40 @@ def read_outside(path) -> dict[str, dict[str, list]]:
                     raise ContactError(f"outside: {f} line {i}, column {name}: {cell.strip()!r} is not a "
                                        "number") from None
         out[f.stem] = columns
-    return out
+        lines[f.stem] = (f, [i for i, _ in rows[1:]])
+    return OutsideFiles(out, lines)
+
+
+class CheckedProfiles(dict):
+    """Profile id -> :class:`~contactcore.ProfileData` as
+    :func:`outside_profiles` checked them; ``s_only``: the ids whose
+    positions were given as ``s`` alone (nothing to check s's unit, origin
+    or direction against: :func:`judge` says what s was taken as)."""
+
+    def __init__(self, profiles=(), s_only=()):
+        super().__init__(profiles)
+        self.s_only = frozenset(s_only)
+
+
+#: What a header naming a unit is told: the columns are bare names.
+BARE_NAMES = ("headers are bare names (s, x, y and the quantities as the project's profile CSVs name them, e.g. "
+              "sxx, tN), without a unit: every value is in the scene's units (docs/api.md, \"An outside code's "
+              "answer\")")
+
+
+def _unit_in(name: str) -> bool:
+    """Whether a column name carries more than a name (a unit in brackets,
+    a space): ``s [m]``, ``sxx (Pa)``."""
+    return any(c in name for c in "[]() ")
+
+
+def _sample(lines, pid: str, i: int) -> str:
+    """Sample ``i`` (in input order) of ``pid``: its file and line where
+    it was read from a file (:class:`OutsideFiles`), else its index."""
+    if pid in lines:
+        f, numbers = lines[pid]
+        return f"sample on line {numbers[i]} of {f}"
+    return f"sample {i}"
 
 
 class _Line:
@@ -308,7 +403,21 @@ def _geometry(scene: Scene, profile):
     return _Line(a, b)
 
 
-def _column(pid: str, name: str, values) -> np.ndarray:
+def _taken_as(scene: Scene, profile) -> str:
+    """What a profile's ``s`` was taken as (unit, origin, direction), for
+    an outside answer that gave ``s`` alone."""
+    length, geo = scene.units.length, _geometry(scene, profile)
+    if isinstance(geo, _Circle):
+        c = ", ".join(f"{v:.4g}" for v in geo.itf.centre)
+        what = "the polar angle in rad" if geo.per_length != 1.0 else f"the arc length R θ in {length}"
+        return (f"s was taken as {what}, from +x anticlockwise about Γ's centre ({c}) {length}, 0 to "
+                f"{geo.span:.4g}")
+    a, b = (", ".join(f"{v:.4g}" for v in end) for end in (geo.a, geo.b))
+    along = "along Γ from Γ's first end" if not isinstance(profile, LineProfile) else "from the profile's start"
+    return f"s was taken as the arc length in {length} {along} ({a}) towards ({b}), 0 to {geo.span:.4g}"
+
+
+def _column(pid: str, name: str, values, lines=None) -> np.ndarray:
     """A column as a 1-D float array, or a SceneError naming it."""
     try:
         arr = np.asarray(values, dtype=float)
@@ -318,7 +427,8 @@ def _column(pid: str, name: str, values) -> np.ndarray:
         raise SceneError(f"outside[{pid!r}].{name}", f"must be one number a sample (got shape {arr.shape})")
     bad = np.flatnonzero(~np.isfinite(arr))
     if len(bad):
-        raise SceneError(f"outside[{pid!r}].{name}", f"sample {bad[0]} is {arr[bad[0]]:g}, not a finite number "
+        raise SceneError(f"outside[{pid!r}].{name}", f"{_sample(lines or {}, pid, int(bad[0]))} is "
+                         f"{arr[bad[0]]:g}, not a finite number "
                          f"({len(bad)} of {len(arr)} samples are not)")
     return arr
 
@@ -335,6 +445,7 @@ def outside_profiles(scene: Scene, outside) -> dict[str, ProfileData]:
     :class:`SceneError` naming the profile and the problem."""
     if isinstance(outside, (str, Path)):
         outside = read_outside(outside)
+    lines = getattr(outside, "lines", {})
     if not hasattr(outside, "items") or isinstance(outside, ProfileData):
         raise ContactError(f"outside: a mapping of profile id -> columns, or a CSV path (got "
                            f"{type(outside).__name__})")
@@ -342,7 +453,7 @@ def outside_profiles(scene: Scene, outside) -> dict[str, ProfileData]:
         raise ContactError("outside: no profile given")
     known = {p.id: p for p in scene.profiles}
     tol = OFF_PROFILE_SHARE * scene.length_scale
-    out = {}
+    out, s_only = {}, []
     for pid, given in outside.items():
         if pid not in known:
             raise SceneError(f"outside[{pid!r}]", f"scene {scene.name} has no profile {pid!r}{hint(str(pid), known)} "
@@ -357,8 +468,9 @@ def outside_profiles(scene: Scene, outside) -> dict[str, ProfileData]:
             if q not in profile.quantities:
                 where = (f"scene {scene.name}'s profile {pid} samples {', '.join(profile.quantities)}"
                          if q in QUANTITIES else f"known quantities: {', '.join(QUANTITIES)}")
+                bare = f"; {BARE_NAMES}" if _unit_in(str(q)) else ""
                 raise SceneError(f"outside[{pid!r}]", f"unknown quantity {q!r}"
-                                 f"{hint(str(q), profile.quantities)} ({where})")
+                                 f"{hint(str(q), profile.quantities)} ({where}; position columns: s, x, y{bare})")
         if not quantities:
             raise SceneError(f"outside[{pid!r}]", f"no quantity given (profile {pid} samples "
                              f"{', '.join(profile.quantities)}; columns given: {', '.join(map(str, names)) or 'none'})")
@@ -367,7 +479,7 @@ def outside_profiles(scene: Scene, outside) -> dict[str, ProfileData]:
             raise SceneError(f"outside[{pid!r}]", "no position column: give s (the profile's parameter, "
                              "docs/scenes.md) or x and y" + (f" (only {'x' if 'x' in names else 'y'} given)"
                                                              if "x" in names or "y" in names else ""))
-        data = {n: _column(pid, n, cols[n]) for n in (["s"] if has_s else []) + (["x", "y"] if has_xy else [])
+        data = {n: _column(pid, n, cols[n], lines) for n in (["s"] if has_s else []) + (["x", "y"] if has_xy else [])
                 + quantities}
         lengths = {n: len(v) for n, v in data.items()}
         if len(set(lengths.values())) > 1:
@@ -384,7 +496,7 @@ def outside_profiles(scene: Scene, outside) -> dict[str, ProfileData]:
             s_xy, off = geo.parameter(xy)
             i = int(np.argmax(off))
             if off[i] > tol:
-                raise SceneError(f"outside[{pid!r}]", f"sample {i} (x = {xy[i, 0]:.6g}, y = {xy[i, 1]:.6g} "
+                raise SceneError(f"outside[{pid!r}]", f"{_sample(lines, pid, i)} (x = {xy[i, 0]:.6g}, y = {xy[i, 1]:.6g} "
                                  f"{scene.units.length}) lies {off[i]:.3g} {scene.units.length} off profile {pid} "
                                  f"(more than {tol:.3g})")
         s = data["s"] if has_s else s_xy
@@ -392,7 +504,7 @@ def outside_profiles(scene: Scene, outside) -> dict[str, ProfileData]:
         off_range = np.flatnonzero((s < -span_tol) | (s > geo.span + span_tol))
         if len(off_range):
             i = off_range[0]
-            raise SceneError(f"outside[{pid!r}]", f"sample {i}: s = {s[i]:.6g} {unit} lies off profile {pid}, "
+            raise SceneError(f"outside[{pid!r}]", f"{_sample(lines, pid, int(i))}: s = {s[i]:.6g} {unit} lies off profile {pid}, "
                              f"whose s runs from 0 to {geo.span:.6g} {unit} ({len(off_range)} of {n} samples off; "
                              "s's origin and direction: docs/scenes.md, \"Profiles and their samples\")")
         s = np.clip(s, 0.0, geo.span)
@@ -401,7 +513,7 @@ def outside_profiles(scene: Scene, outside) -> dict[str, ProfileData]:
             gap = np.hypot(*(points - np.column_stack([data["x"], data["y"]])).T)
             i = int(np.argmax(gap))
             if gap[i] > tol:
-                raise SceneError(f"outside[{pid!r}]", f"sample {i}: s = {s[i]:.6g} {unit} is the point "
+                raise SceneError(f"outside[{pid!r}]", f"{_sample(lines, pid, i)}: s = {s[i]:.6g} {unit} is the point "
                                  f"({points[i, 0]:.6g}, {points[i, 1]:.6g}) of profile {pid}, {gap[i]:.3g} "
                                  f"{scene.units.length} from the x, y given ({data['x'][i]:.6g}, {data['y'][i]:.6g}):"
                                  " s's origin or direction differs from the project's (docs/scenes.md, \"Profiles "
@@ -410,7 +522,9 @@ def outside_profiles(scene: Scene, outside) -> dict[str, ProfileData]:
         columns = {"s": s[order], "x": points[order, 0], "y": points[order, 1],
                    **{q: data[q][order] for q in quantities}}
         out[pid] = ProfileData(pid, "angle" if unit == "rad" else "arclength", columns)
-    return out
+        if has_s and not has_xy:
+            s_only.append(pid)
+    return CheckedProfiles(out, s_only)
 
 
 # --- the project's answer at the outside samples --------------------------------------------------------------
@@ -444,14 +558,18 @@ def _interpolated(geo, s_p: np.ndarray, q_p: np.ndarray, s: np.ndarray) -> tuple
     return value, alpha * (1 - alpha) / 2 * np.maximum(d2[j], d2[j + 1])
 
 
-def _envelope(geo, s_p: np.ndarray, err: np.ndarray, window: float, body: np.ndarray) -> np.ndarray:
+def _envelope(geo, s_p: np.ndarray, err: np.ndarray, window: float, body: np.ndarray,
+              kept: np.ndarray) -> np.ndarray:
     """The largest ``err`` within ``window`` (in ``s``'s unit) of each
-    sample, in the same ``body`` (a profile crossing Γ samples two fields:
-    the runs' error where Γ cuts it is not the other side's)."""
+    sample, among the ``kept`` samples (those the agreement compares: the
+    runs' error near a singular point, left out, would swell the estimate
+    of samples beside it, newuser34's A3 σxx 22× its true error) in the same
+    ``body`` (a profile crossing Γ samples two fields: the runs' error where
+    Γ cuts it is not the other side's)."""
     d = np.abs(s_p[:, None] - s_p[None, :])
     if geo.periodic:
         d = np.minimum(d, geo.span - d)
-    near = (d <= window) & (body[:, None] == body[None, :])
+    near = (d <= window) & (body[:, None] == body[None, :]) & kept[None, :]
     return np.max(np.where(near, err[None, :], 0.0), axis=1)
 
 
@@ -471,6 +589,24 @@ def _regions(s: np.ndarray, verdict: np.ndarray, diff: np.ndarray, budget: np.nd
     return tuple(out)
 
 
+def _hints(scene: Scene, profile, s: np.ndarray, keep: np.ndarray, verdict: np.ndarray, s_only: bool
+           ) -> tuple[str, ...]:
+    """What a row's verdict adds about its input: what ``s`` was taken as
+    where it was given alone (:func:`_taken_as`), and where the ``outside``
+    samples span more than :data:`WIDE_OUTSIDE_SHARE` of the kept samples'
+    s range (in s, the input's own positions), to check s's unit and
+    direction (s alone) and the sign conventions."""
+    out = [_taken_as(scene, profile)] if s_only else []
+    blamed = np.array([str(v).startswith("outside") for v in verdict])
+    span = np.ptp(s[keep]) if keep.sum() > 1 else 0.0
+    if blamed.sum() > 1 and span > 0 and np.ptp(s[blamed]) > WIDE_OUTSIDE_SHARE * span:
+        check = "s's unit, origin and direction, and " if s_only else ""
+        out.append(f"outside over more than {WIDE_OUTSIDE_SHARE:.0%} of the profile: check {check}the sign "
+                   "conventions (g_N > 0 an opening, t_N > 0 tension, g_T and t_T along t = (n_y, −n_x); "
+                   "docs/scenes.md) before blaming the code")
+    return tuple(out)
+
+
 def judge(scene: Scene, outside: dict[str, ProfileData], project: dict[str, ProfileData], est, method: str,
           exclude: float | None = None, floors: dict | None = None) -> OutsideTable:
     """The :class:`OutsideTable` of ``outside`` (id -> ProfileData, checked:
@@ -485,6 +621,7 @@ def judge(scene: Scene, outside: dict[str, ProfileData], project: dict[str, Prof
     given = user_floors(floors)
     known = {p.id: p for p in scene.profiles}
     window_length = ESTIMATE_WINDOW_CELLS * est.hs[-2]
+    s_only = getattr(outside, "s_only", frozenset())
     ref, rows = {}, []
     for pid, got in outside.items():
         geo, mine = _geometry(scene, known[pid]), project[pid]
@@ -506,9 +643,10 @@ def judge(scene: Scene, outside: dict[str, ProfileData], project: dict[str, Prof
         for q in got.names[3:]:
             value, interpolation = _interpolated(geo, mine.columns["s"], mine.columns[q], s)
             error = est.profiles[pid][q].error
-            body = scene.body_of(np.column_stack([mine.columns["x"], mine.columns["y"]]),
-                                 known[pid].side if known[pid].side in BODIES else BODIES[1])
-            envelope = _envelope(geo, mine.columns["s"], error, window_length * geo.per_length, body)
+            points = np.column_stack([mine.columns["x"], mine.columns["y"]])
+            body = scene.body_of(points, known[pid].side if known[pid].side in BODIES else BODIES[1])
+            envelope = _envelope(geo, mine.columns["s"], error, window_length * geo.per_length, body,
+                                 far_from_singular(scene, points, exclude))
             budget = _interpolated(geo, mine.columns["s"], envelope, s)[0] + interpolation
             diff = got.columns[q] - value
             floor = size_floor(q, given, project, scene=scene)
@@ -516,15 +654,17 @@ def judge(scene: Scene, outside: dict[str, ProfileData], project: dict[str, Prof
             warned = key in est.unsettled
             notes = tuple(w for w in est.warnings if key in w) or (
                 tuple(w for w in est.warnings if not w.startswith("energy")) if warned else ())
+            beyond = np.abs(diff) > np.maximum((WARNED_MULTIPLE if warned else BLAME_MULTIPLE) * budget, floor)
             verdict = np.where(~keep, "left out", np.where(
-                warned, "warned", np.where(np.abs(diff) > np.maximum(BLAME_MULTIPLE * budget, floor), "outside",
-                                           "agree"))).astype(object)
+                beyond, "outside (estimate warned)" if warned else "outside",
+                "warned" if warned else "agree")).astype(object)
             d_rms, e_rms = np.sqrt(np.mean(diff[keep] ** 2)), np.sqrt(np.mean(budget[keep] ** 2))
             ratio = float(d_rms / e_rms) if e_rms > 0 else (0.0 if d_rms == 0 else float("inf"))
             columns = {"s": s, "x": got.columns["x"], "y": got.columns["y"], "outside": got.columns[q],
                        "project": value, "estimate": budget, "difference": diff, "verdict": verdict}
             rows.append(OutsideRow(agreements[pid, q], float(e_rms), ratio, _regions(s, verdict, diff, budget),
-                                   notes if warned else (), columns))
+                                   notes if warned else (), columns,
+                                   _hints(scene, known[pid], s, keep, verdict, pid in s_only)))
     regions = tuple((name, tuple(map(tuple, pts.tolist()))) for name, pts in singular_regions(scene))
     return OutsideTable(scene.name, method, tuple(est.hs), float(exclude), BLAME_MULTIPLE, regions, tuple(rows),
                         tuple(est.warnings), scene.units)

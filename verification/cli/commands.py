@@ -125,13 +125,16 @@ def commands() -> dict[str, Command]:
             out), runners.run, "spread"),
         "against": Command("an outside code's profiles judged against one method's answer and its estimated error", (
             arg("outside", type=Path, help="the outside answer: a CSV (named ID.csv for profile ID; columns s, or x "
-                                           "and y, then quantities as the project's profile CSVs) or a folder of them"),
+                                           "and y, then quantities as the project's profile CSVs, bare names) or a folder of "
+                                           "them; values in the scene's units, signs as docs/scenes.md's"),
             arg("scene", help="built-in scene name or a scene TOML file"),
             arg("--method", default="fe", choices=list(methods.METHODS), help="the project's method (default fe)"),
             arg("--degree", type=int, default=2, choices=(1, 2), help="its degree (default 2)"),
             arg("--h", type=float, help="the coarser run's resolution; the answer compared is at h/2 (default: the "
                                         "scene's h)"),
-            arg("--levels", type=int, default=2, choices=(2, 3), help="runs h, h/2 (3: and h/4); default 2"),
+            arg("--estimate", type=int, default=2, choices=(2, 3), metavar="{2,3}",
+                help="the runs the project's error is estimated from: h, h/2 (3: and h/4), as run's --estimate; "
+                     "default 2 (Python: levels=)"),
             arg("--exclude", type=float, help="distance from corners and Γ's ends left out (default 0.1 L)"),
             arg("--floor", type=floor, action="append", default=[], metavar="Q=VALUE",
                 help="a difference in Q below VALUE (in Q's unit) counts as agreement; repeat for several"),

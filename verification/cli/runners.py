@@ -45,7 +45,7 @@ def run(args, argv) -> None:
 def against(args, argv) -> None:
     """``against``: an outside answer against one method's (:func:`verification.against_outside.against`)."""
     from ..against_outside import against as judge
-    judge(args.outside, args.scene, args.method, args.degree, args.out, h=args.h, levels=args.levels,
+    judge(args.outside, args.scene, args.method, args.degree, args.out, h=args.h, levels=args.estimate,
           exclude=args.exclude, floors=floors(args.floor), argv=argv, cell=args.cell, dmax=args.dmax)
 
 
