@@ -265,6 +265,11 @@ def test_bad_csvs_name_the_file_line_and_column(tmp_path):
     with pytest.raises(SceneError, match=r"unknown quantity 's \[rad\]'.*position columns: s, x, y; headers are "
                                          r"bare names"):
         outside_profiles(load_scene(CYLINDER), tmp_path / "G.csv")
+    (tmp_path / "G.csv").write_text("s,tN,tN\n0.0,-13,-13\n")  # review17 #10: a column named twice, named
+    with pytest.raises(ContactError, match=r"G.csv line 1: the header names tN more than once"):
+        read_outside(tmp_path / "G.csv")
+    (tmp_path / "G.csv").write_bytes("s,tN\n0.0,-13\n".encode("utf-8-sig"))  # a spreadsheet's byte-order mark
+    assert list(read_outside(tmp_path / "G.csv")["G"]) == ["s", "tN"]
     (tmp_path / "empty").mkdir()
     with pytest.raises(ContactError, match="no \\*.csv file in folder"):
         read_outside(tmp_path / "empty")

@@ -282,8 +282,10 @@ def read_outside(path) -> OutsideFiles:
     """Profile id -> columns of a CSV file (its id the file's stem, ``C4.csv``
     -> ``C4``: the project's own ``METHOD/profiles/ID.csv``) or of every
     ``*.csv`` in a folder; a header row of column names, then one row a
-    sample.  A file that cannot be read, a folder without CSVs, or a cell
-    that is not a number is refused naming the file, row and column."""
+    sample (a leading UTF-8 byte-order mark, as spreadsheets write, is
+    read past).  A file that cannot be read, a folder without CSVs, a
+    header naming a column twice, or a cell that is not a number is refused
+    naming the file, row and column."""
     path = Path(path)
     if path.is_dir():
         files = sorted(path.glob("*.csv"))
@@ -296,13 +298,16 @@ def read_outside(path) -> OutsideFiles:
     out, lines = {}, {}
     for f in files:
         try:
-            with open(f, newline="") as fh:
+            with open(f, newline="", encoding="utf-8-sig") as fh:  # a spreadsheet's byte-order mark is no name
                 rows = [(i, r) for i, r in enumerate(csv.reader(fh), start=1) if any(c.strip() for c in r)]
         except (OSError, UnicodeDecodeError) as exc:
             raise ContactError(f"outside: cannot read {f}: {exc}") from None
         if not rows:
             raise ContactError(f"outside: {f} is empty (a header row of column names, then one row a sample)")
         header = [c.strip() for c in rows[0][1]]
+        twice = sorted({name for name in header if header.count(name) > 1})
+        if twice:
+            raise ContactError(f"outside: {f} line {rows[0][0]}: the header names {', '.join(twice)} more than once")
         columns = {name: [] for name in header}
         for i, r in rows[1:]:
             if len(r) != len(header):
