@@ -99,6 +99,16 @@ WARNED_EFFECTIVITY = 0.19
 #: ``warned`` before).  Below it a warned quantity reads ``warned``.
 WARNED_MULTIPLE = BLAME_MULTIPLE / WARNED_EFFECTIVITY
 
+#: And, where the estimate is warned, a difference above this share of the
+#: quantity's size (the agreement's, :class:`~verification.agreement.Agreement`'s
+#: ``size``): a warned estimate can be near zero beside a status change,
+#: which no multiple bounds (review18, 2026-11-29: fe P2 at h = 0.0125 judged
+#: against fe P2 at 0.025 on exact C-coulomb, one C4 t_N sample next to
+#: where Γ closes at 22.9 × a 0.0192 Pa estimate, 2e-5 of t_N's size).  50
+#: times that, and 20 times below the smallest outside error the tests and
+#: newuser34 put in (2 % of the size).
+WARNED_MIN_SHARE = 1e-3
+
 #: A profile whose ``outside`` samples span more than this share of its
 #: kept length (in ``s``) gets a hint to check s's unit and direction and
 #: the sign conventions: an error in the outside code is rarely that wide,
@@ -126,8 +136,9 @@ VERDICTS = {
              "project's error",
     "outside (estimate warned)": f"the project's estimate is warned but |difference| > {WARNED_MULTIPLE:.3g} × it "
                                  f"({BLAME_MULTIPLE:g} / {WARNED_EFFECTIVITY:g}, the lowest effectivity "
-                                 "docs/error-estimates.md records): the outside code's error even if the estimate is "
-                                 "that far too small",
+                                 "docs/error-estimates.md records) and > "
+                                 f"{WARNED_MIN_SHARE:g} of the quantity's size: the outside code's error even if the "
+                                 "estimate is that far too small",
     "warned": f"the project's estimate of this quantity is warned (below) and |difference| is within "
               f"{WARNED_MULTIPLE:.3g} × it: no verdict",
     "left out": "within the exclusion distance of a singular point, as the agreement table leaves it out",
@@ -659,7 +670,9 @@ def judge(scene: Scene, outside: dict[str, ProfileData], project: dict[str, Prof
             warned = key in est.unsettled
             notes = tuple(w for w in est.warnings if key in w) or (
                 tuple(w for w in est.warnings if not w.startswith("energy")) if warned else ())
-            beyond = np.abs(diff) > np.maximum((WARNED_MULTIPLE if warned else BLAME_MULTIPLE) * budget, floor)
+            least = WARNED_MIN_SHARE * agreements[pid, q].size if warned else 0.0
+            beyond = np.abs(diff) > np.maximum((WARNED_MULTIPLE if warned else BLAME_MULTIPLE) * budget,
+                                               max(floor, least))
             verdict = np.where(~keep, "left out", np.where(
                 beyond, "outside (estimate warned)" if warned else "outside",
                 "warned" if warned else "agree")).astype(object)
