@@ -18,7 +18,7 @@ from contactcore import ContactError, SceneError, load_scene
 from contactcore import estimate as est
 from verification import methods as known
 from verification.agreement import compare_outside, default_exclusion, sampled
-from verification.agreement.outside import (BLAME_MULTIPLE, MIN_SAMPLES, WARNED_EFFECTIVITY, WARNED_MULTIPLE,
+from verification.agreement.outside import (BLAME_MULTIPLE, MIN_SAMPLES, WARNED_EFFECTIVITY, WARNED_MIN_SHARE, WARNED_MULTIPLE,
                                             judge, outside_profiles, read_outside)
 
 DOCS = Path(__file__).resolve().parent.parent / "docs"
@@ -138,6 +138,27 @@ def test_a_warned_estimate_gives_a_verdict_only_beyond_the_lowest_effectivity(sc
     assert [(r.verdict, r.samples) for r in row.regions] == [("outside (estimate warned)", 101)]
     assert "outside (estimate warned) 0–6.283 rad (101, " in table.markdown()
     assert any("sign conventions" in h for h in row.hints)
+
+
+def test_a_warned_verdict_needs_a_difference_above_a_share_of_the_size(scene_c, monkeypatch):
+    """review18 #1: a correct finer answer was blamed at 22.9 × a warned
+    estimate near zero beside a status change (2e-5 of t_N's size).  With
+    the multiple made negligible, the size's share alone decides: a
+    difference below WARNED_MIN_SHARE of t_N's size reads `warned`, one
+    above it `outside (estimate warned)`."""
+    from verification.agreement import outside as module
+    scene, estimate, project = scene_c
+    c4 = project["C4"].columns
+    monkeypatch.setattr(module, "WARNED_MULTIPLE", tol.OUTSIDE_NEGLIGIBLE_MULTIPLE)
+    [own] = judge(scene, outside_profiles(scene, {"C4": {"s": c4["s"], "tN": c4["tN"]}}), project, estimate,
+                  "fe P2").rows
+    size = own.agreement.size
+    for factor, verdict in ((1 / tol.OUTSIDE_SIZE_FACTOR, "warned"), (tol.OUTSIDE_SIZE_FACTOR,
+                                                                      "outside (estimate warned)")):
+        shifted = c4["tN"] + factor * WARNED_MIN_SHARE * size
+        [row] = judge(scene, outside_profiles(scene, {"C4": {"s": c4["s"], "tN": shifted}}), project, estimate,
+                      "fe P2").rows
+        assert set(row.columns["verdict"]) - {"left out"} == {verdict}, (factor, set(row.columns["verdict"]))
 
 
 def test_the_warned_multiple_is_the_lowest_effectivity_the_docs_record():

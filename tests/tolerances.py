@@ -1655,3 +1655,10 @@ OUTSIDE_WARNED_SHARE = 0.5
 #: near Γ's end exceeds the kept ones' by more than this, so a window
 #: that took it would fail the test (measured: see the test's run).
 OUTSIDE_LEFT_OUT_SWELL = 2.0
+
+# --- review18 #1 (2026-11-29): a warned verdict needs a difference above WARNED_MIN_SHARE of the size ---
+#: WARNED_MULTIPLE made negligible (the estimate then no bound), so the
+#: size's share alone decides the verdict.
+OUTSIDE_NEGLIGIBLE_MULTIPLE = 1e-12
+#: A difference this factor below and above WARNED_MIN_SHARE of t_N's size.
+OUTSIDE_SIZE_FACTOR = 2.0
