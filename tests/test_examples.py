@@ -4,7 +4,6 @@ import importlib.util
 from pathlib import Path
 
 import numpy as np
-import pytest
 
 import tolerances as tol
 from contactcore.tolerances import STICK_ROUNDOFF

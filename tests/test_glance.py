@@ -20,7 +20,7 @@ from contactcore import SceneError, SolverError, health, load_scene, make_law, s
 from contactcore.laws import CoulombLaw
 from verification import __main__ as verification_main
 from verification.cli.parser import build_parser
-from verification import files, methods, plots, study
+from verification import files, methods, plots, study, study_plots
 
 ROOT = Path(__file__).resolve().parents[1]
 #: Long enough to be interrupted mid-solve: several seconds at h = 0.02, degree 2.
@@ -332,8 +332,8 @@ def test_study_plots_mark_failed_and_warned_points():
             for v, st in ((1.0, "ok"), (2.0, "warned"), (3.0, "failed"))]
     fig = plots.pyplot().figure()
     ax = fig.add_subplot()
-    colour = study._series(ax, "value", "tN", 1.0, rows, study._failed_label("fe", "value", rows))
-    study._mark(ax, "value", "tN", 1.0, rows, colour)
+    colour = study_plots._series(ax, "value", "tN", 1.0, rows, study_plots._failed_label("fe", "value", rows))
+    study_plots._mark(ax, "value", "tN", 1.0, rows, colour)
     lines = {line.get_label(): line for line in ax.get_lines()}
     assert list(lines["fe: failed at 3 (dotted)"].get_xdata()) == [1.0, 2.0]
     assert list(lines["warned"].get_xdata()) == [2.0]
@@ -560,7 +560,7 @@ def test_two_series_failing_at_one_value_both_show():
     ax = fig.add_subplot()
     for slot, method in enumerate(("fe", "xfem")):
         rows = [{"value": 1.0, "method": method, "status": "failed", **dict.fromkeys(study.OUTPUTS, 1.0)}]
-        study._mark(ax, "value", "tN", 1.0, rows, f"C{slot}", slot, 2)
+        study_plots._mark(ax, "value", "tN", 1.0, rows, f"C{slot}", slot, 2)
     fe, xfem = ax.get_lines()
     assert list(fe.get_xdata()) == list(xfem.get_xdata())
     (fe_offset, fe_dashes), (xfem_offset, xfem_dashes) = fe._unscaled_dash_pattern, xfem._unscaled_dash_pattern

@@ -24,10 +24,9 @@ import pytest
 import tolerances as tol
 from contactcore import ContactError, SceneError, load_scene, make_law, sample_profiles, scene_from_dict
 from contactcore import health
-from contactcore.errors import SolverError
 from contactcore.exact import EXACT_LAWS, _ExactLaw
 from contactcore.laws import (DIMENSIONLESS, LAWS, OPEN, SLIP, STICK, STIFFNESS, STRESS, Decision, LawResponse, _Law,
-                              _positive, law_contract, register, unregister)
+                              law_contract, register, unregister)
 from contactcore import tolerances as core_tol
 from contactcore.tolerances import STICK_ROUNDOFF
 from verification import methods

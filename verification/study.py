@@ -56,7 +56,7 @@ from contactcore.scene.loads import scaled_load
 
 from . import files, methods, pool
 from .against_exact import exact_law, penalty_counterpart
-from .study_plots import _failed_label, _mark, _series, _shown, plot as _plot  # noqa: F401 (tests read the three)
+from .study_plots import _shown, plot as _plot
 from .study_gamma import COLUMNS as GAMMA_COLUMNS, ESTIMATE_COLUMNS, PARTIAL_SHARE, estimated_row, gamma_columns
 from .outcomes import Incomplete, attempt, health
 
