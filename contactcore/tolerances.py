@@ -309,7 +309,11 @@ EXCLUDE_FRACTION = 0.1
 #: a 3 m bar whose L = 3.04 m) would lose every sample to EXCLUDE_FRACTION·L
 #: (0.304 m from each end); at a half of its 0.25 m it keeps its middle half.
 #: The shipped scenes and examples are not capped (their smallest such
-#: distance is 0.5 m, on A and the README's wedge, against 0.141 m).
+#: distance is 0.5 m, on A and the README's wedge, against 0.141 m).  The
+#: same share caps the estimate's exclusion within the coarse run's reach
+#: (REACH_STENCILS, estimate.beyond_reach): EFGM P2's at h = 0.05 on A
+#: (0.3) keeps the samples 0.25 or more from Γ's ends, and the reach
+#: warning (estimate.unsettled) names the samples still within reach.
 EXCLUDE_KEEP_SHARE = 0.5
 
 #: An exactly enforced law's gap is measured against its own values floored
@@ -1260,6 +1264,19 @@ ORDER_MISMATCH = 1.0
 #: (two supports: 0.2); xfem P1's recovered σyy 30-110 times at 0.14-0.19
 #: and 1.7 at 0.24-0.29 (two patches: 0.3); fe P1's, whose reach (0.1)
 #: the kept samples lie beyond, 1.2-3.6 times near the ends and 2 away.
+#: The estimate's RMS over the kept samples (``kept_rms``) leaves those
+#: samples out too (estimate.beyond_reach): an exclusion of this many
+#: coarse stencils, which scales with the coarse h and the method's
+#: reach, beside the scene's fixed one (verification.agreement.
+#: default_exclusion).  Within it Richardson measures the coarse run's
+#: singular error, not C h^p: measured 2026-11-29 on A at h = 0.05 ->
+#: 0.025 against fe P2 at 0.00625, the kept samples 0.141-0.2 from Γ's
+#: ends held 79-94 % of the estimate's squared sum of xfem P1's A2 σyy,
+#: EFGM P1's A1 σxy, A3 σxx and EFGM P2's A1 σxy, A2 σyy (estimate over
+#: error 3.3-10.9 there), whose effectivities 4.46, 2.55, 5.10, 2.55,
+#: 5.67 come to 0.62, 1.07, 1.83, 1.14, 0.81 beyond reach; B and C's
+#: entries do not move (their exclusion, 0.28 and 0.36, is wider than
+#: every reach at h = 0.05); docs/error-estimates.md, "Scenes A, B, C".
 REACH_STENCILS = 2.0
 
 #: The reach cause of estimate.caveats.unsettled, for a stencil of one

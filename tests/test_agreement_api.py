@@ -233,7 +233,7 @@ def test_round_off_is_within_any_estimate_and_never_the_worst():
     σxy)|); a real σxy difference (1 Pa, estimates 1e-3 Pa) is
     still beyond them, and a user's floor takes the place of round-off's."""
     from contactcore.estimate.runs import ERROR_SUFFIX
-    from verification.agreement import NEGLIGIBLE_SHARE, estimated_shares, within_estimates, worst_estimate
+    from verification.agreement import NEGLIGIBLE_SHARE, estimated_shares, kept_samples, within_estimates, worst_estimate
 
     scene = load_scene("A")
     scene = scene.with_changes(profiles=tuple(p for p in scene.profiles if p.id == "A1"))
@@ -255,12 +255,13 @@ def test_round_off_is_within_any_estimate_and_never_the_worst():
     assert not dict((q, beyond) for _, q, _, beyond in within_estimates(scene, *a, *real, exclude,
                                                                          floors={"sxy": 10.0}))["sxy"]
 
-    class Est:  # the estimate's per-sample errors, as contactcore.estimate.Estimate holds them
+    class Est:  # the estimate's per-sample errors and kept samples, as contactcore.estimate.Estimate holds them
         profiles = {"A1": {q: type("E", (), {"error": a[1]["A1"][f"{q}{ERROR_SUFFIX}"]})() for q in ("sxx", "sxy")}}
+        kept = {"A1": {q: kept_samples(scene, a[0]["A1"], exclude) for q in ("sxx", "sxy")}}
 
-    shares = estimated_shares(scene, a[0], Est, exclude)
+    shares = estimated_shares(scene, a[0], Est)
     assert shares["A1", "sxy"][1] == pytest.approx(1e5)  # the size of the profile's stresses
-    assert worst_estimate(scene, a[0], Est, exclude)[1] == "A1:sxx"
+    assert worst_estimate(scene, a[0], Est)[1] == "A1:sxx"
 
 
 #: A stiff disc (E = 2e11 Pa) bonded in a 100x softer block, under its own
@@ -330,10 +331,10 @@ def test_a_component_zero_by_symmetry_is_measured_against_its_vector():
     from verification.agreement import scale_name
     got, ref = sampled(scene, coarse), sampled(scene, fine)
     estimate = est.estimate_runs(scene, [coarse, fine], exclude, energy=False, coarse=True)
-    shares = estimated_shares(scene, got, estimate, exclude)
+    shares = estimated_shares(scene, got, estimate)
     tN = est.rms(ref["G"].columns["tN"])
     assert shares["G", "tT"][1] >= shares["G", "tN"][1] > tN / 2  # |t|'s size, not t_T's own
-    assert worst_estimate(scene, got, estimate, exclude)[0] <= tol.ZERO_BY_SYMMETRY
+    assert worst_estimate(scene, got, estimate)[0] <= tol.ZERO_BY_SYMMETRY
     rows = {(a.profile, a.quantity): a for a in table(scene, {"h": got, "h/2": ref}, "h/2").rows}
     assert rows["G", "tT"].rms <= tol.ZERO_BY_SYMMETRY and rows["G", "tT"].against == "|(tN, tT)|"
     assert rows["R", "sxx"].against == scale_name("R", "sxx", ref) == "|(sxx, syy)|"
@@ -359,7 +360,7 @@ def test_a_run_that_ends_stress_free_reports_round_off_as_no_error():
     estimates = {m: est.estimate_runs(scene, rs, exclude) for m, rs in runs.items()}
     got = {m: sampled(scene, rs[-1]) for m, rs in runs.items()}
     for m, e in estimates.items():
-        assert worst_estimate(scene, got[m], e, exclude)[0] <= tol.ROUND_OFF_OF_THE_SCENE
+        assert worst_estimate(scene, got[m], e)[0] <= tol.ROUND_OFF_OF_THE_SCENE
         assert e.energy.relative <= tol.ROUND_OFF_OF_THE_SCENE
         stress = Scales.of(scene).stress  # E_stiff ū / L = 200 MPa
         assert np.max(np.abs(got[m]["V"].columns["syy"])) <= NEGLIGIBLE_SHARE * stress  # all round-off

@@ -316,9 +316,11 @@ def test_run_estimate_writes_the_errors(tmp_path, caplog):
                 orders = est.order_range(q, 1, _facts(name, 1), load_scene("A").law, pollution=est.pollution_order(load_scene("A")))
                 assert record["orders"] == pytest.approx(list(orders))
                 assert record["order"] == pytest.approx(est.balanced_order(*orders))
-                # summary.md's figure: over the samples at least 0.1 L from Γ's ends (A1 lies on Γ)
+                # summary.md's figure: over the samples at least 0.1 L from Γ's ends (A1 lies on Γ) and
+                # beyond the coarse run's reach of them (est.beyond_reach): two patches of 0.6 or supports of
+                # 0.4 at h = 0.2, capped at half the farthest sample's 0.5
                 x, err = np.asarray(columns["x"]), np.asarray(columns[f"{q}_err"])
-                keep = np.minimum(x, 1.0 - x) >= 0.1 * np.sqrt(2.0)
+                keep = np.minimum(x, 1.0 - x) >= core_tol.EXCLUDE_KEEP_SHARE * 0.5
                 assert record["kept_rms"] == pytest.approx(np.sqrt(np.mean(err[keep] ** 2)), rel=tol.SAME_SUMS)
         for q, record in estimate["A5"].items():  # Γ's gaps and tractions: the orders the scene allows them
             orders = est.order_range(q, 1, _facts(name, 1), load_scene("A").law, pollution=est.pollution_order(load_scene("A")))
@@ -381,7 +383,7 @@ def test_a_users_profile_named_b6_is_measured_by_kind_not_by_name(tmp_path):
     estimate alike, not against B5's (it has none) or their own values."""
     from contactcore import load_scene, scene_text
     from verification import methods
-    from verification.agreement import agreements, default_exclusion, estimated_shares, kept_samples, measured_against
+    from verification.agreement import agreements, default_exclusion, estimated_shares, measured_against
     from verification.agreement import sampled
     path = tmp_path / "wedge-b6.toml"
     path.write_text(scene_text("examples/wedge.toml").replace('id = "gamma"', 'id = "B6"'))
@@ -390,9 +392,10 @@ def test_a_users_profile_named_b6_is_measured_by_kind_not_by_name(tmp_path):
     runs = [solve(scene, h) for h in (0.2, 0.1)]
     profiles = sampled(scene, runs[-1])
     assert not any(kind == "zero" for *_, kind, _ in agreements(scene, profiles, profiles, exclude))
-    shares = estimated_shares(scene, profiles, est.estimate_runs(scene, runs, exclude), exclude)
-    keep = kept_samples(scene, profiles["B6"], exclude)
+    estimate = est.estimate_runs(scene, runs, exclude)
+    shares = estimated_shares(scene, profiles, estimate)
     for q, other in (("tN", "tT"), ("gN", "gT")):
+        keep = estimate.kept["B6"][q]  # the samples the estimate keeps (est.beyond_reach)
         size = np.hypot(profiles["B6"].columns[q], profiles["B6"].columns[other])
         own = est.rms(measured_against(scene, q, size[keep]))
         assert own > 0 and shares["B6", q][1] == pytest.approx(own, rel=tol.FLOORED_SCALE)
@@ -801,6 +804,45 @@ def test_a_stencil_exactly_at_a_threshold_is_no_cause_whatever_the_round_off():
         record = {"h": 0.05 * nudge, "dmax": 2.5, "support": "circular"}
         found = est.unsettled(scene, [_line_along_gamma(0.25)], record, _facts("efgm", 1), exclude=0.1)
         assert not found["coarse"] and not found["reach"], nudge
+
+
+@pytest.mark.parametrize("method, degree, record, reach", [
+    ("fe", 1, {"h": 0.05}, 0.0),                                          # 2 cells, 0.1: inside the scene's 0.141
+    ("efgm", 1, {"h": 0.05, "dmax": 2.0, "support": "circular"}, 0.2),    # 2 supports of 0.1
+    ("efgm", 2, {"h": 0.05, "dmax": 3.0, "support": "circular"}, 0.25),   # 2 of 0.15, capped at half of 0.5
+    ("xfem", 1, {"h": 0.05}, 0.25),                                       # 2 recovery patches of 0.15, capped
+])
+def test_the_estimate_keeps_no_sample_within_the_coarse_runs_reach_of_a_singular_point(method, degree, record, reach):
+    """est.beyond_reach: along A's Γ, whose ends are singular points, the
+    samples an estimate is summarised over lie at least the scene's
+    exclusion and REACH_STENCILS of the coarse run's stencils from the
+    ends, the latter at most EXCLUDE_KEEP_SHARE of the farthest sample's
+    0.5; an exclusion of 0 keeps every sample."""
+    scene = load_scene("A")
+    x = np.linspace(0.0, 1.0, 101)
+    xy, exclude = np.column_stack([x, np.full_like(x, 0.5)]), 0.1 * np.sqrt(2.0)
+    kept = est.beyond_reach(scene, xy, record, _facts(method, degree), "sxx", exclude)
+    assert np.array_equal(kept, np.minimum(x, 1.0 - x) >= max(exclude, reach) * (1 - core_tol.GEOMETRY))
+    assert est.beyond_reach(scene, xy, record, _facts(method, degree), "sxx", 0.0).all()
+
+
+def test_an_estimates_kept_rms_leaves_out_each_quantitys_reach():
+    """xfem P1 on A at h = 0.1 -> 0.05: the estimate's ``kept_rms`` of a
+    recovered stress along Γ leaves out the samples within 0.25 of Γ's
+    ends (two patches of 0.3, capped), of the gap within 0.2 (two cells):
+    each quantity its own coarse stencil's reach."""
+    scene = load_scene("A")
+    disc = methods.discretisation("xfem")(degree=1)
+    from contactcore.discretisation import solve
+    estimate = est.estimate_runs(scene, [solve(scene, disc, h) for h in (0.1, 0.05)], 0.1 * np.sqrt(2.0),
+                                 energy=False)
+    summary, sampled = estimate.summary(), {p.id: p for p in estimate.sampled}
+    for pid, q, reach in (("A2", "syy", 0.25), ("A5", "gN", 0.2)):
+        x = sampled[pid].columns["x"]
+        keep = np.minimum(x, 1.0 - x) >= reach * (1 - core_tol.GEOMETRY)
+        assert np.array_equal(estimate.kept[pid][q], keep)
+        assert summary[pid][q]["kept_rms"] == pytest.approx(est.rms(estimate.profiles[pid][q].error[keep]),
+                                                            rel=tol.SAME_SUMS)
 
 
 def test_the_cell_scale_part_of_a_difference_is_what_a_local_line_does_not_follow():

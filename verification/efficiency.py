@@ -278,9 +278,9 @@ def _estimated(scene, solve, res, h: float, degree: int, exclude: float) -> dict
     half = solve(scene, h / 2, degree=degree, estimate_condition=False)
     got = {p.id: p for p in sample_profiles(scene, res.fields, res.interface)}
     est = estimates.estimate_runs(scene, [res, half], exclude, energy=False, coarse=True)
-    value, where = worst_estimate(scene, got, est, exclude)
+    value, where = worst_estimate(scene, got, est)
     shares = {f"{pid}:{q}": error / scale for (pid, q), (error, scale) in
-              estimated_shares(scene, got, est, exclude).items() if scale > 0}
+              estimated_shares(scene, got, est).items() if scale > 0}
     return {"estimate": value, "estimate_worst": where, "error_low": value / tol.ESTIMATE_TRUST,
             "error_high": value * tol.ESTIMATE_TRUST, "estimates": shares, "estimate_warnings": list(est.warnings),
             "warned": len(est.warnings)}

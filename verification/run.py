@@ -265,19 +265,19 @@ def estimate_record(scene, est, profiles: list, floors: dict | None = None) -> d
     (:meth:`contactcore.estimate.Estimate.summary`: each quantity's max, RMS,
     kept RMS and order) with ``scale`` (the RMS of the quantity itself, an exact
     law's gaps floored as the agreement floors them), and ``kept_rms``,
-    ``kept_scale`` the same over the samples away from singular points, the
+    ``kept_scale`` the same over the samples the estimate keeps (away from
+    singular points and beyond the coarse run's reach of them), the
     scale the size of the quantity's group (|t| for t_T)
     (:func:`~verification.agreement.estimated_shares`: the kept scale
     floored by ``floors`` and by round-off); ``"worst"``, the
     largest ``kept_rms / kept_scale`` and where
     (:func:`~verification.agreement.worst_estimate`, as ``efficiency``
     takes it): what summary.md shows."""
-    record, exclude = est.summary(), default_exclusion(scene)
-    by_id = {p.id: p for p in profiles}
-    for (pid, q), (kept_rms, kept_scale) in agreement.estimated_shares(scene, by_id, est, exclude, floors).items():
+    record, by_id = est.summary(), {p.id: p for p in profiles}
+    for (pid, q), (kept_rms, kept_scale) in agreement.estimated_shares(scene, by_id, est, floors).items():
         scale = estimates.rms(measured_against(scene, q, by_id[pid].columns[q]))
         record[pid][q].update(scale=scale, kept_rms=kept_rms, kept_scale=kept_scale)
-    relative, where = agreement.worst_estimate(scene, by_id, est, exclude, floors)
+    relative, where = agreement.worst_estimate(scene, by_id, est, floors)
     record["worst"] = {"relative": relative, "at": where}
     return record
 

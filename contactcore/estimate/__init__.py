@@ -33,7 +33,7 @@ in their home.
 
 numpy and scipy only; no method is imported.
 """
-from .caveats import (cell_scale_orders, cell_scale_warnings, curved_layer, curved_layer_warning,
+from .caveats import (beyond_reach, cell_scale_orders, cell_scale_warnings, curved_layer, curved_layer_warning,
                       exact_traction_warning, exact_tractions, fast_gamma, fast_gamma_warning, feature_size, order_mismatch,
                       order_warnings, pollution_warning, quadrature_energy, recovery_floor, residue_warnings, residues,
                       split_cell_share, split_cell_share_warning, stencil_radius, thinnest_body, unsettled,
@@ -56,7 +56,7 @@ __all__ = [
     "QuantityEstimate", "balanced_order", "cell_scale_part", "observed_order", "profile_estimates", "richardson",
     "rms", "roundoff_floor", "sample_groups", "three_run_order",
     # caveats
-    "cell_scale_orders", "cell_scale_warnings", "curved_layer", "curved_layer_warning",
+    "beyond_reach", "cell_scale_orders", "cell_scale_warnings", "curved_layer", "curved_layer_warning",
     "exact_traction_warning", "exact_tractions", "fast_gamma", "fast_gamma_warning", "feature_size", "order_mismatch", "order_warnings",
     "pollution_warning", "quadrature_energy", "recovery_floor", "residue_warnings", "residues", "split_cell_share",
     "split_cell_share_warning", "stencil_radius", "thinnest_body", "unsettled", "unsettled_warnings",

@@ -246,6 +246,44 @@ def stencil_radius(record: dict, facts: MethodFacts, quantity: str) -> float:
     return h
 
 
+def _distances(xy: np.ndarray, points: np.ndarray) -> np.ndarray:
+    """Each sample's (``xy``, (n, 2)) distance from the nearest of
+    ``points`` ((m, 2)); infinite where there are none."""
+    if not len(points):
+        return np.full(len(xy), np.inf)
+    return np.min(np.linalg.norm(xy[:, None] - points[None], axis=-1), axis=1)
+
+
+def beyond_reach(scene: Scene, xy: np.ndarray, record: dict, facts: MethodFacts, quantity: str,
+                 exclude: float) -> np.ndarray:
+    """Mask of a profile's samples (``xy``) over which the estimate of
+    ``quantity`` is summarised (its ``kept_rms``): at least ``exclude`` from
+    every singular point (:func:`~contactcore.estimate.singular.far_from_singular`),
+    and at least ``R = REACH_STENCILS · ρ`` from every point whose stress
+    is singular (:func:`~contactcore.estimate.singular.stress_singular_points`),
+    ``ρ`` the coarse run's :func:`stencil_radius` (``record``, its
+    discretisation): a sample's value combines the unknowns within ``ρ``
+    of it, each set by the equations within ``ρ`` of that unknown, so within
+    ``R`` the coarse run's error is still the singular point's own and
+    shrinks at no power of ``h`` that two runs can see
+    (:data:`~contactcore.tolerances.REACH_STENCILS`).  ``R`` scales with
+    the coarse ``h`` and the method's reach; it is at most
+    :data:`~contactcore.tolerances.EXCLUDE_KEEP_SHARE` of the farthest
+    sample's distance from those points, so that a profile keeps its
+    middle; samples then still within reach are named by the reach cause
+    of :func:`unsettled`.  A sample at ``R`` within
+    :data:`~contactcore.tolerances.GEOMETRY` (relative) is kept, as
+    :func:`unsettled` does not count it within reach.  ``exclude`` 0 keeps
+    every sample: the caller left nothing out."""
+    kept = far_from_singular(scene, xy, exclude)
+    dist = _distances(xy, stress_singular_points(scene))
+    if exclude <= 0 or not len(xy) or not np.any(np.isfinite(dist)):
+        return kept
+    reach = min(tol.REACH_STENCILS * stencil_radius(record, facts, quantity),
+                tol.EXCLUDE_KEEP_SHARE * float(np.max(dist)))
+    return kept & (dist >= reach * (1 - tol.GEOMETRY))
+
+
 def feature_size(scene: Scene) -> float:
     """The scene's smallest feature: the domain's smallest extent (a
     rectangle's shorter side, a disc's diameter), or a circular Γ's
@@ -295,8 +333,7 @@ def unsettled(scene: Scene, levels: list[list[ProfileData]], record: dict, facts
     for prof in levels[-1]:
         xy = np.column_stack([prof.columns["x"], prof.columns["y"]])
         kept = far_from_singular(scene, xy, exclude)
-        dist = (np.min(np.linalg.norm(xy[:, None] - sing[None], axis=-1), axis=1) if len(sing)
-                else np.full(len(xy), np.inf))
+        dist = _distances(xy, sing)
         near = np.min(dist[kept]) if np.any(kept) else np.inf
         for q in prof.names[3:]:
             rho = stencil_radius(record, facts, q)

@@ -21,7 +21,7 @@ import numpy as np
 
 from ..profiles import ProfileData, sample_profiles
 from ..scene import Scene
-from .caveats import (cell_scale_orders, cell_scale_warnings, exact_traction_warning, exact_tractions, fast_gamma,
+from .caveats import (beyond_reach, cell_scale_orders, cell_scale_warnings, exact_traction_warning, exact_tractions, fast_gamma,
                       fast_gamma_warning, feature_size, thinnest_body,
                       order_mismatch, order_warnings,
                       pollution_warning, residue_warnings, residues, unsettled, unsettled_warnings,
@@ -30,7 +30,6 @@ from .caveats import (cell_scale_orders, cell_scale_warnings, exact_traction_war
                       split_cell_share, split_cell_share_warning)
 from .energy import EnergyEstimate, energy_estimate
 from .extrapolation import QuantityEstimate, profile_estimates
-from .singular import far_from_singular
 from .status import status_change, status_warning, switches
 
 
@@ -58,7 +57,11 @@ class Estimate:
     :func:`~contactcore.estimate.caveats.quadrature_energy` or
     :func:`~contactcore.estimate.caveats.recovery_floor` applies, and with three
     runs :func:`~contactcore.estimate.caveats.order_mismatch`) or not to be
-    trusted (:func:`~contactcore.estimate.caveats.residues`)."""
+    trusted (:func:`~contactcore.estimate.caveats.residues`); ``kept``,
+    ``{PROFILE: {QUANTITY: mask}}``, the samples each quantity's estimate
+    is summarised over (``kept_rms``): away from the singular points and
+    beyond the coarse run's reach of them
+    (:func:`~contactcore.estimate.caveats.beyond_reach`)."""
 
     hs: tuple
     profiles: dict[str, dict[str, QuantityEstimate]]
@@ -67,7 +70,7 @@ class Estimate:
     warnings: list[str] = field(default_factory=list)
     sampled: list[ProfileData] = field(default_factory=list)
     unsettled: set[str] = field(default_factory=set)
-    kept: dict[str, np.ndarray] = field(default_factory=dict)
+    kept: dict[str, dict[str, np.ndarray]] = field(default_factory=dict)
 
     def error_columns(self, pid: str) -> dict[str, np.ndarray]:
         """``{q + ERROR_SUFFIX: per-sample error}`` of profile ``pid``."""
@@ -77,12 +80,14 @@ class Estimate:
         """JSON-ready: ``{PROFILE: {QUANTITY: {max, rms, kept_rms, order,
         observed, orders (, cell_scale, observed_order)}}}`` plus ``energy``,
         ``h`` (the runs), ``status`` and ``warnings``; ``kept_rms`` over the
-        samples away from singular points (``kept``).  summary.json's
+        samples away from singular points and beyond the coarse run's reach
+        of them (``kept``).  summary.json's
         ``"estimate"`` is this dict with each quantity's ``scale`` and
         ``kept_scale`` and the ``"worst"`` added
         (:func:`verification.run.estimate_record`: the scales are the
         agreement's, floored as it floors them)."""
-        out = {pid: {q: e.record(self.kept.get(pid)) for q, e in qs.items()} for pid, qs in self.profiles.items()}
+        out = {pid: {q: e.record(self.kept.get(pid, {}).get(q)) for q, e in qs.items()}
+               for pid, qs in self.profiles.items()}
         out.update({"energy": self.energy.record() if self.energy else None, "h": list(self.hs),
                     "status": self.status, "warnings": list(self.warnings)})
         return out
@@ -101,7 +106,9 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     h, h/2 (, h/4), coarse to fine), or with ``coarse`` of the coarser of
     two (its profiles' errors; the energy estimate still the finest run's);
     the energy and an observed order leave out what lies within
-    ``exclude`` of a singular point."""
+    ``exclude`` of a singular point, its ``kept`` samples also what lies
+    within the coarse run's reach of one
+    (:func:`~contactcore.estimate.caveats.beyond_reach`)."""
     hs = tuple(float(r.discretisation["h"]) for r in results)
     levels = [sample_profiles(scene, r.fields, r.interface) for r in results]
     switching = None if scene.law.is_linear else switches([r.interface for r in results])
@@ -131,7 +138,8 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     zz = (energy_estimate(scene, results[-1].fields, hs[-1], exclude,
                           recovered=facts.recovered_stress)
           if energy else None)
-    kept = {p.id: far_from_singular(scene, np.column_stack([p.columns["x"], p.columns["y"]]), exclude)
+    kept = {p.id: {q: beyond_reach(scene, np.column_stack([p.columns["x"], p.columns["y"]]),
+                                   results[-2].discretisation, facts, q, exclude) for q in p.names[3:]}
             for p in levels[-1]}
     caveat = ((quadrature_energy(results[-1].method, results[-1].degree, facts, zz) + recovery_floor(zz)) if energy
               else [])

@@ -16,33 +16,34 @@ from .samples import kept_samples
 from .sizes import size_floor, user_floors
 
 
-def estimated_shares(scene: Scene, profiles: dict, est, exclude: float, floors: dict | None = None
+def estimated_shares(scene: Scene, profiles: dict, est, floors: dict | None = None
                      ) -> dict[tuple[str, str], tuple[float, float]]:
     """``(profile id, quantity) -> (RMS of the estimated error, RMS of its
     scale)`` over the samples of ``profiles`` (id -> ProfileData, the runs
-    ``est`` estimated, a :class:`contactcore.estimate.Estimate`) at least
-    ``exclude`` from the singular points: the scale is its group's size
+    ``est`` estimated, a :class:`contactcore.estimate.Estimate`) that the
+    estimate keeps (``est.kept``: away from the singular points and beyond
+    the coarse run's reach of them,
+    :func:`contactcore.estimate.beyond_reach`): the scale is its group's size
     (:func:`scale_of`: |t| for t_N, t_T), as :func:`profile_agreements`
     measures a true error, floored by ``floors`` (quantity -> value in its
     unit, :func:`user_floors`) and by :func:`negligible` (of the run and of
     the scene's scale)."""
     shares, given = {}, user_floors(floors)
     for pid, qs in est.profiles.items():
-        keep = kept_samples(scene, profiles[pid], exclude)
         for q, e in qs.items():
+            keep = est.kept[pid][q]
             scale = scale_of(scene, pid, q, profiles, size_floor(q, given, profiles, scene=scene))
             shares[pid, q] = rms(e.error[keep]), rms(scale[keep])
     return shares
 
 
-def worst_estimate(scene: Scene, profiles: dict, est, exclude: float, floors: dict | None = None
-                   ) -> tuple[float, str]:
+def worst_estimate(scene: Scene, profiles: dict, est, floors: dict | None = None) -> tuple[float, str]:
     """The largest estimated relative RMS error over every profile and
     quantity of :func:`estimated_shares` (with ``floors``) and where
     (``"B5:tT"``; the first in the scene's order of those within
     :data:`WORST_TIE`); ``(0, "")`` when no quantity has a scale."""
     rows = [(error / scale, f"{pid}:{q}") for (pid, q), (error, scale)
-            in estimated_shares(scene, profiles, est, exclude, floors).items() if scale > 0]
+            in estimated_shares(scene, profiles, est, floors).items() if scale > 0]
     return first_largest(rows, key=lambda row: row[0]) if rows else (0.0, "")
 
 
