@@ -46,7 +46,7 @@ from contactcore.budget import MEMORY_SHARE, check_budget, check_together, estim
 from contactcore.scene import Units, check_resolution
 
 from . import files, methods, pool
-from .agreement import agreements, check_exclusion, estimated_shares, first_largest, label, worst_estimate
+from .agreement import agreements, check_exclusion, first_largest, label, worst_estimate
 from .plots import loglog_by_variant
 from .study import check_given_once
 from .timing import REPEAT_BELOW, REPEATS, fastest
@@ -269,7 +269,8 @@ def _error_sentence(ref_h: float | None, ref_dofs: int | None, exclude: float, l
     return (f"Reference: fe P2, h = {ref_h:g} {length} ({ref_dofs} DOFs). Error: worst relative RMS difference "
             f"over the profiles, {where} Estimate: the same measure of the Richardson estimate (each rung against a run "
             f"at h/2); effectivity at worst at = the estimate of the quantity in \"worst at\" ÷ its true error "
-            f"(the same quantity; the estimate's own worst may be another).")
+            f"(the same quantity; the estimate's own worst may be another), both RMS over the samples its estimate "
+            f"keeps (beyond the coarse run's reach of singular points too).")
 
 
 def _estimated(scene, solve, res, h: float, degree: int, exclude: float) -> dict:
@@ -279,10 +280,10 @@ def _estimated(scene, solve, res, h: float, degree: int, exclude: float) -> dict
     got = {p.id: p for p in sample_profiles(scene, res.fields, res.interface)}
     est = estimates.estimate_runs(scene, [res, half], exclude, energy=False, coarse=True)
     value, where = worst_estimate(scene, got, est)
-    shares = {f"{pid}:{q}": error / scale for (pid, q), (error, scale) in
-              estimated_shares(scene, got, est).items() if scale > 0}
+    kept = {f"{pid}:{q}": (e.error[est.kept[pid][q]], est.kept[pid][q]) for pid, qs in est.profiles.items()
+            for q, e in qs.items()}
     return {"estimate": value, "estimate_worst": where, "error_low": value / tol.ESTIMATE_TRUST,
-            "error_high": value * tol.ESTIMATE_TRUST, "estimates": shares, "estimate_warnings": list(est.warnings),
+            "error_high": value * tol.ESTIMATE_TRUST, "estimates": kept, "estimate_warnings": list(est.warnings),
             "warned": len(est.warnings)}
 
 
@@ -309,17 +310,27 @@ def _measure(scene_name: str, rung: tuple, ref: dict | None, exclude: float, est
     got = {p.id: p for p in sample_profiles(scene, res.fields, res.interface)}
     row["error"], row["worst"] = worst_error(scene, got, ref, exclude)
     if estimated:
-        row["effectivity"] = effectivity_at(shares, row["worst"], row["error"])
+        row["effectivity"] = effectivity_at(shares, row["worst"], got, ref)
     return row
 
 
-def effectivity_at(estimates: dict[str, float], where: str, error: float) -> float:
+def effectivity_at(kept: dict[str, tuple], where: str, got: dict, ref: dict) -> float:
     """The effectivity of the quantity ``where`` (``"PID:Q"``, the worst
-    true error's): its estimated relative RMS error in ``estimates`` over
-    its true one ``error``; NaN where the quantity has no estimate (no
-    scale) or no error.  Never the estimate's worst, which may be another
-    quantity's (grader21: scene A fe P1 at h = 0.05, A4:sxx's estimate
-    0.105 over A1:sxy's error 0.148 printed 0.711 where A1:sxy's own
-    effectivity was 0.555)."""
-    value = estimates.get(where)
-    return value / error if value is not None and error > 0 else float("nan")
+    true error's): ``rms(e_k) / rms(q_k − q_ref,k)`` over the samples ``k``
+    its estimate is summarised over (``kept[where]`` = (``e_k``, the
+    mask): ``Estimate.kept``, away from the singular points and beyond the
+    coarse run's reach of them), the true error ``got`` − ``ref`` on those
+    same samples, as ``verification.effectivity`` measures it (the scale
+    of both cancels); NaN where the quantity has no estimate or no error
+    there.  Never the estimate's worst, which may be another quantity's
+    (grader21: scene A fe P1 at h = 0.05, A4:sxx's estimate 0.105 over
+    A1:sxy's error 0.148 printed 0.711 where A1:sxy's own effectivity was
+    0.555); never the estimate over one set of samples divided by the
+    error over another (the kept samples of 2026-11-29 leave out the
+    coarse run's reach, which the scene's exclusion does not)."""
+    if where not in kept:
+        return float("nan")
+    error, keep = kept[where]
+    pid, q = where.split(":")
+    true = estimates.rms(got[pid].columns[q][keep] - ref[pid].columns[q][keep])
+    return estimates.rms(error) / true if true > 0 else float("nan")
