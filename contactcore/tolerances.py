@@ -900,6 +900,21 @@ LOW_RANK_COLUMNS_MAX = 1024
 #: ones), within the whole budget (half of it: xfem P2 5).
 AHEAD_STEPS = (3.0, 2.0, 1.0)
 AHEAD_SHARE = 1.0
+#: A correction that would solve more than this share of its slot's new
+#: columns at once (contactcore.factorisations.KeptFactorisations._corrected)
+#: first offers the maps ahead: a map that moved that far in one iterate
+#: takes the slot past its budget at the next one, and the columns solved
+#: now go with the slot when it is refilled.  Half: the columns then cost
+#: at least half a factorisation (the budget is what one costs, or less by
+#: memory), more than the factorisation ahead adds over the one the next
+#: iterate would pay anyway.  Exact C-coulomb's first increment at h =
+#: 0.05 (2026-11-29): xfem P1 119 -> 80 columns, fe P1 110 -> 80, the same
+#: 4 factorisations and iterations (0.35 and 0.7 alike; 0.25: xfem 5
+#: factorisations).  Exact C-coulomb and scene A's unilateral law in the
+#: other methods and degrees at h = 0.05, and fe and xfem P1 at 0.025,
+#: write the same files byte for byte (docs/contact-enforcement-log.md,
+#: "The solve alone: where the extra goes").
+AHEAD_FIRST_SHARE = 0.5
 
 #: Built systems a study keeps for reuse (contactcore.discretisation.Reuse):
 #: one per method of a ``--method all`` study, whose cases alternate
