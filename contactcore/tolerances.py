@@ -1044,6 +1044,15 @@ NU_LOCKING_WARN_FE_P1_EXACT = 0.44
 #: 6e-8, 9e-8; steel on aluminium under 100 MPa (grader2's mm wedge, h =
 #: 2.5 mm) 1.2e-3; its aluminium made E = 1e-3 MPa, 8e4.
 SMALL_STRAIN_LIMIT = 1e-2
+#: Above this RMS principal strain in a body the answer is refused, not
+#: warned of: a strain of 1 doubles a fibre's length or closes it to
+#: nothing, which no elastic solid reaches (rubber tears near 5-7, metals
+#: yield near 1e-3), so only a wrong unit or modulus gets there (newuser35,
+#: 2026-11-29: E = 200 meant as GPa with loads in Pa gave 5.7e3 and exit
+#: 0; grader2's E = 1e-3 MPa under 100 MPa, 8e4), and a warning would turn
+#: a wrong answer into a result.  Between SMALL_STRAIN_LIMIT and this the
+#: answer is warned of (the shipped scenes lie at 6e-8 to 1.2e-3).
+SMALL_STRAIN_REFUSE = 1.0
 
 #: Small sliding: every method pairs Γ's two sides where they started
 #: (geometrically linear, as small strain), so a slip s leaves s of a

@@ -12,7 +12,8 @@ from contactcore import load_scene
 from contactcore.geometry import domain_cells
 from contactcore.scene.caveats import _thin_body_samples
 from contactcore.scene_files import scene_from_dict, scene_toml
-from contactcore.tolerances import SMALL_STRAIN_LIMIT, SMALL_STRAIN_REFINEMENTS, SMALL_STRAIN_SAMPLES
+from contactcore import SceneError
+from contactcore.tolerances import SMALL_STRAIN_LIMIT, SMALL_STRAIN_REFINEMENTS, SMALL_STRAIN_REFUSE, SMALL_STRAIN_SAMPLES
 from verification import methods
 from verification.__main__ import main
 
@@ -22,10 +23,15 @@ SOFTENING = 1e-6
 COARSE = 0.25
 
 
-def _soft_a():
+#: A thousand times softer again: ~600, beyond SMALL_STRAIN_REFUSE (E given
+#: in GPa where the loads are in Pa is 1e-9: newuser35's 5.7e3).
+WRONG_UNIT = 1e-9
+
+
+def _soft_a(softening=SOFTENING):
     scene = load_scene("A")
     minus = scene.materials["minus"]
-    return replace(scene, materials={**scene.materials, "minus": replace(minus, E=minus.E * SOFTENING)}).validated()
+    return replace(scene, materials={**scene.materials, "minus": replace(minus, E=minus.E * softening)}).validated()
 
 
 def _strain_warnings(result) -> list[str]:
@@ -37,6 +43,29 @@ def test_every_method_warns_of_strain_beyond_small_strain(method):
     warned = _strain_warnings(methods.solver(method)(_soft_a(), COARSE))
     assert len(warned) == 1 and "body minus" in warned[0] and "body plus" not in warned[0], warned
     assert f"{SMALL_STRAIN_LIMIT:g}" in warned[0]
+
+
+@pytest.mark.parametrize("method", ["fe", "xfem", "efgm"])
+def test_every_method_refuses_a_strain_no_elastic_body_reaches(method):
+    """A strain above SMALL_STRAIN_REFUSE is a wrong unit or modulus: the
+    answer is refused naming the body, its strain and [units], not
+    returned with a warning (newuser35: E in GPa, loads in Pa, exit 0)."""
+    with pytest.raises(SceneError, match="strain far beyond small strain") as refused:
+        methods.solver(method)(_soft_a(WRONG_UNIT), COARSE)
+    text = str(refused.value)
+    assert "in body minus" in text and "body plus" not in text and f"above {SMALL_STRAIN_REFUSE:g}" in text
+    assert "[units]" in text
+
+
+def test_a_wrong_unit_ends_the_run_in_one_line(tmp_path, capsys):
+    scene = tmp_path / "gpa.toml"
+    scene.write_text(scene_toml(_soft_a(WRONG_UNIT)))
+    out = tmp_path / "r"
+    assert main(["run", str(scene), "--method", "fe", "--h", str(COARSE), "--reference", "none", "--no-plots",
+                 "-q", "--out", str(out)]) == 2
+    said = capsys.readouterr().err.strip().splitlines()
+    assert len(said) == 1 and "strain far beyond small strain" in said[0], said
+    assert not out.exists()
 
 
 def test_an_ordinary_scene_is_not_warned_about():
@@ -83,7 +112,7 @@ def test_a_layer_thinner_than_the_sample_grid_is_sampled_inside_itself():
 
 
 def test_a_thin_layer_s_strain_is_the_closed_form_p_over_e():
-    """Uniform σyy = −p in a 1e-3 layer of ν = 0: ε = p/E = 5, named."""
+    """Uniform σyy = −p in a 1e-3 layer of ν = 0: ε = p/E = 0.5, named."""
     scene = load_scene(THIN)
     p, E = 1e6, scene.materials["plus"].E
     warned = scene.small_strain_warnings(_Uniform([0.0, -p, 0.0]), COARSE)
@@ -117,4 +146,4 @@ def test_a_body_too_thin_for_the_finest_samples_is_named_unchecked():
 
 def test_a_thin_layer_run_by_fe_is_warned():
     warned = _strain_warnings(methods.solver("fe")(load_scene(THIN), 0.1))
-    assert len(warned) == 1 and "5 in body plus" in warned[0], warned
+    assert len(warned) == 1 and "0.5 in body plus" in warned[0], warned

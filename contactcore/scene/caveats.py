@@ -14,6 +14,7 @@ from __future__ import annotations
 import numpy as np
 
 from .. import tolerances as tol
+from ..errors import SceneError
 from ..geometry import CircleInterface, Rectangle, domain_cells
 from .vocabulary import BODIES
 
@@ -78,24 +79,22 @@ def _thin_body_samples(scene, body: int, lo, hi) -> np.ndarray:
     return np.empty((0, 2))
 
 
-def small_strain_warnings(scene: "Scene", fields, h: float, strain_unit: float = 1.0) -> list[str]:
-    """The answer's strain too large for the small-strain theory every
-    method solves: the RMS over a body of its largest principal strain,
-    ``ε = strain_unit · D⁻¹σ`` (``strain_unit`` U/L on a dimensionless
-    scene, :mod:`contactcore.scaling`: σ'/E' is ε L/U) from ``fields``
-    (:class:`contactcore.result.Fields`) at
-    the centres of cells of size ``L/SMALL_STRAIN_SAMPLES`` clear of Γ
-    and of the boundary by half a cell's diagonal and by h/2 (inside one
-    body of any method's mesh of spacing ``h``),
-    above :data:`~contactcore.tolerances.SMALL_STRAIN_LIMIT`.  An RMS,
-    not a peak: a corner's stress singularity, integrable, does not
-    trigger it as h falls.  A body no such centre reaches (a layer
-    thinner than a cell or than h) is sampled on finer cells
-    (:func:`_thin_body_samples`), never skipped: one too thin for those
-    is named as not checked."""
+def body_strains(scene: "Scene", fields, h: float, strain_unit: float = 1.0) -> tuple[dict[str, float], list[str]]:
+    """``({body: RMS strain}, [bodies not checked])``: over each body, the
+    RMS of its largest principal strain ``ε = strain_unit · D⁻¹σ``
+    (``strain_unit`` U/L on a dimensionless scene,
+    :mod:`contactcore.scaling`: σ'/E' is ε L/U) from ``fields``
+    (:class:`contactcore.result.Fields`) at the centres of cells of size
+    ``L/SMALL_STRAIN_SAMPLES`` clear of Γ and of the boundary by half a
+    cell's diagonal and by h/2 (inside one body of any method's mesh of
+    spacing ``h``).  An RMS, not a peak: a corner's stress singularity,
+    integrable, does not move it as h falls.  A body no such centre reaches
+    (a layer thinner than a cell or than h) is sampled on finer cells
+    (:func:`_thin_body_samples`), never skipped: one too thin for those is
+    named as not checked."""
     lo, hi = domain_cells(scene.domain, scene.length_scale / tol.SMALL_STRAIN_SAMPLES)
     centre, bodies = _clear_samples(scene, lo, hi, h)
-    found, unchecked = [], []
+    strains, unchecked = {}, []
     for b, D in zip(range(len(BODIES)), scene.voigt_matrices()):
         points = centre[bodies == b] if np.any(bodies == b) else _thin_body_samples(scene, b, lo, hi)
         if not len(points):
@@ -104,17 +103,43 @@ def small_strain_warnings(scene: "Scene", fields, h: float, strain_unit: float =
         stress = np.asarray(fields.stress(points, np.full(len(points), b)), float)
         exx, eyy, gxy = np.linalg.solve(D, stress.T)
         largest = np.abs(exx + eyy) / 2 + np.hypot((exx - eyy) / 2, gxy / 2)
-        rms = strain_unit * float(np.sqrt(np.mean(largest ** 2)))
-        if not rms <= tol.SMALL_STRAIN_LIMIT:
-            found.append(f"{rms:.2g} in body {BODIES[b]} (E = {scene.user.materials[BODIES[b]].E:.3g} "
-                         f"{scene.user.units.stress})")
+        strains[BODIES[b]] = strain_unit * float(np.sqrt(np.mean(largest ** 2)))
+    return strains, unchecked
+
+
+def _strain_text(scene: "Scene", strains: dict[str, float], limit: float) -> str:
+    """The bodies of ``strains`` above ``limit``: their strain and modulus."""
+    return " and ".join(f"{e:.2g} in body {body} (E = {scene.user.materials[body].E:.3g} {scene.user.units.stress})"
+                        for body, e in strains.items() if not e <= limit)
+
+
+def check_small_strain(scene: "Scene", strains: dict[str, float]) -> None:
+    """Refuse an answer whose strain (:func:`body_strains`) exceeds
+    :data:`~contactcore.tolerances.SMALL_STRAIN_REFUSE` in a body: no
+    elastic answer, linear or not, has it; only a wrong unit or modulus
+    gets there (newuser35, 2026-11-29: E in GPa with loads in Pa, 5.7e3,
+    ran to exit 0 with a warning)."""
+    over = {body: e for body, e in strains.items() if not e <= tol.SMALL_STRAIN_REFUSE}
+    if over:
+        body = max(over, key=lambda b: over[b] if np.isfinite(over[b]) else np.inf)
+        raise SceneError(f"materials.{body}.E", f"strain far beyond small strain: the RMS of a body's largest "
+                         f"principal strain is {_strain_text(scene, over, tol.SMALL_STRAIN_REFUSE)}, above "
+                         f"{tol.SMALL_STRAIN_REFUSE:g}, which no elastic body reaches: check the moduli and loads "
+                         f"against [units] (stress in {scene.user.units.stress})")
+
+
+def small_strain_warnings(scene: "Scene", strains: dict[str, float], unchecked: list[str]) -> list[str]:
+    """The answer's strain (:func:`body_strains`) too large for the
+    small-strain theory every method solves: a body's RMS above
+    :data:`~contactcore.tolerances.SMALL_STRAIN_LIMIT`; and the bodies too
+    thin to be checked."""
     warnings = []
-    if found:
+    if any(not e <= tol.SMALL_STRAIN_LIMIT for e in strains.values()):
         warnings.append(f"strains far beyond small strain: the RMS of a body's largest principal strain is "
-                        f"{' and '.join(found)}, above {tol.SMALL_STRAIN_LIMIT:g}: the small-strain (linear) "
-                        "theory every method solves does not hold there (its strain omits Green's ½∇uᵀ∇u, "
-                        "which is ε/2 of it), so its displacements and stresses mean nothing physical; check "
-                        "the moduli and loads (units?)")
+                        f"{_strain_text(scene, strains, tol.SMALL_STRAIN_LIMIT)}, above {tol.SMALL_STRAIN_LIMIT:g}: "
+                        "the small-strain (linear) theory every method solves does not hold there (its strain "
+                        "omits Green's ½∇uᵀ∇u, which is ε/2 of it), so its displacements and stresses mean nothing "
+                        "physical; check the moduli and loads (units?)")
     if unchecked:
         warnings.append(f"body {' and '.join(unchecked)} is thinner than the small-strain check's finest sample "
                         f"cell (L/{tol.SMALL_STRAIN_SAMPLES}/2^{tol.SMALL_STRAIN_REFINEMENTS}): its strain was "
