@@ -144,7 +144,7 @@ class _ExactLaw:
         unknown = sorted(set(params) - allowed)
         if unknown:
             raise SceneError(f"{path}.{unknown[0]}", f"unknown parameter of the exact '{cls.name}' law (it takes "
-                             f"{', '.join(cls.parameters)}; {cls.about_springs}){hint(unknown[0], allowed - {'type'})}")
+                             f"{', '.join(cls.parameters)}; {cls.about_springs}){hint(unknown[0], allowed - {'type'} | {'enforcement'})}")
         given = tuple((k, _positive(params, k, path)) for k in ("kN", "kT") if k in params)
         values = {"stabilisation": _stabilisation(params, path), "given_springs": given}
         if cls.springs is not None:

@@ -296,7 +296,8 @@ class _Law:
         unknown = sorted(set(params) - set(cls.parameters) - {"type"})
         if unknown:
             raise SceneError(f"{path}.{unknown[0]}", f"unknown parameter of the '{cls.name}' law "
-                             f"(it takes {', '.join(cls.parameters)}){hint(unknown[0], cls.parameters)}")
+                             f"(it takes {', '.join(cls.parameters)}, and enforcement = \"penalty\" or \"exact\")"
+                             f"{hint(unknown[0], (*cls.parameters, 'enforcement'))}")
         values = {k: _positive(params, k, path) for k in ("kN", "kT")}
         values.update(cls.extra_parameters(params, path))
         return cls(**values)

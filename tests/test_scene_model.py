@@ -168,6 +168,13 @@ def test_a_misspelt_key_is_named_with_the_key_it_is_like(scene_dict):
     with pytest.raises(SceneError, match=r"^interface.law.stabilization: unknown parameter .*\(did you mean "
                                          r"'stabilisation'\?\)$"):
         scene_from_dict(data)
+    for typo in ("enforcment", "enforce", "Enforcement"):  # newuser35: the law's choice of enforcement
+        for law in ({}, {"enforcement": "exact"}):  # read by the penalty law, then by the exact one
+            data = scene_dict("C-coulomb")
+            data["interface"]["law"].update(law, **{typo: "exact"})
+            with pytest.raises(SceneError, match=rf"^interface.law.{typo}: unknown parameter .*\(did you mean "
+                                                 r"'enforcement'\?\)$"):
+                scene_from_dict(data)
     data = scene_dict("A")
     data["colour"] = "red"
     with pytest.raises(SceneError, match=r"^colour: unknown key$"):
