@@ -178,7 +178,22 @@ def test_a_change_in_the_solves_own_map_is_a_status_change_where_the_profile_sho
     nearest = [nearest_status(scene, points, r.interface) for r in runs]
     assert np.array_equal(profile[0], profile[1])
     moved = int(np.sum(nearest[0] != nearest[1]))
-    assert moved >= 1 and status_change(scene, *runs, (0.05, 0.025))["differ"] == moved
+    change = status_change(scene, *runs, (0.05, 0.025))
+    assert moved >= 1 and change["differ"] == moved
+    s, _, parameter = sample_points(scene, InterfaceProfile("gamma", ("gN",)))
+    at = np.isin(s, [a for stretch in change["at"] for a in stretch])  # each stretch's ends are samples of Γ
+    within = np.any([(s >= a) & (s <= b) for a, b in change["at"]], axis=0)
+    assert change["parameter"] == parameter and np.array_equal(within, nearest[0] != nearest[1]) and at.any()
+
+
+def test_stretches_of_differing_samples_run_from_first_to_last():
+    """newuser35: summary.json's ``estimate.status`` says where Γ's status
+    differs, as runs of consecutive samples."""
+    from contactcore.estimate.status import stretches
+    s = np.linspace(0.0, 1.0, 11)
+    differ = np.array([0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1], bool)
+    assert stretches(s, differ) == [[0.1, 0.2], [0.5, 0.5], [0.9, 1.0]]
+    assert stretches(s, np.zeros(11, bool)) == []
 
 
 def test_a_penalty_coulomb_gamma_that_slips_everywhere_reads_slip_at_every_sample():

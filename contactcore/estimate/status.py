@@ -60,6 +60,15 @@ def _samples(scene: Scene) -> np.ndarray:
     return sample_points(scene, InterfaceProfile("gamma", ("gN",)))[1]
 
 
+def stretches(s: np.ndarray, differ: np.ndarray) -> list[list[float]]:
+    """``[[s_first, s_last], ...]``: each run of consecutive samples (at
+    ``s``) where ``differ`` holds, from its first sample's ``s`` to its
+    last's (one sample: both the same)."""
+    index = np.flatnonzero(differ)
+    runs = np.split(index, np.flatnonzero(np.diff(index) > 1) + 1) if len(index) else []
+    return [[float(s[r[0]]), float(s[r[-1]])] for r in runs]
+
+
 def status_change(scene: Scene, coarse, fine, hs: tuple[float, float] | None = None) -> dict:
     """The final status of two runs' Results (at ``hs``, coarse and fine)
     compared along Γ: the share of Γ in each status per run
@@ -71,15 +80,16 @@ def status_change(scene: Scene, coarse, fine, hs: tuple[float, float] | None = N
     misses some: the profile's status missed unil_partopen's fe and xfem P2
     (2026-11-29, their g_T and t_T estimates 0.30-0.37 of the error), the
     nearest point's its fe and xfem P1 (t_T 5.3-6.2)."""
-    pts = _samples(scene)
+    s, pts, parameter = sample_points(scene, InterfaceProfile("gamma", ("gN",)))  # _samples' and their s
     s0, s1 = (interface_status(scene, r.fields, pts, r.interface) for r in (coarse, fine))  # status_along's
     n0, n1 = (nearest_status(scene, pts, r.interface) for r in (coarse, fine))
     either = np.any(s0 == PARTIAL) or np.any(s1 == PARTIAL)
     names = REPORTED_STATUS_NAMES if either else REPORTED_STATUS_NAMES[:PARTIAL]
     shares = lambda s: {n: float(np.mean(s == i)) for i, n in enumerate(names)}  # noqa: E731
-    return {"coarse": shares(s0), "fine": shares(s1), "differ": int(np.sum((s0 != s1) | (n0 != n1))),
+    differ = (s0 != s1) | (n0 != n1)
+    return {"coarse": shares(s0), "fine": shares(s1), "differ": int(np.sum(differ)),
             "differ_profile": int(np.sum(s0 != s1)), "differ_points": int(np.sum(n0 != n1)),
-            "samples": len(s0), "h": list(hs) if hs else None}
+            "at": stretches(s, differ), "parameter": parameter, "samples": len(s0), "h": list(hs) if hs else None}
 
 
 def status_warning(change: dict | None, length: str = "m") -> list[str]:
