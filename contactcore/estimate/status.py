@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..geometry import CircleInterface
 from ..laws import PARTIAL, REPORTED_STATUS_NAMES, SLIP
 from ..profiles import interface_status, nearest_status, sample_points
 from ..scene import InterfaceProfile, Scene
@@ -55,9 +56,16 @@ def status_along(scene: Scene, result) -> np.ndarray:
     return interface_status(scene, result.fields, _samples(scene), result.interface)
 
 
+def _gamma_profile(scene: Scene) -> InterfaceProfile:
+    """A profile of Γ along Γ's own parameter, as a scene's Γ profiles
+    take it: the angle on a circle, the arclength on a line."""
+    along = "angle" if isinstance(scene.interface, CircleInterface) else "arclength"
+    return InterfaceProfile("gamma", ("gN",), parameter=along)
+
+
 def _samples(scene: Scene) -> np.ndarray:
     """Γ's :data:`~contactcore.tolerances.PROFILE_POINTS` profile samples."""
-    return sample_points(scene, InterfaceProfile("gamma", ("gN",)))[1]
+    return sample_points(scene, _gamma_profile(scene))[1]
 
 
 def stretches(s: np.ndarray, differ: np.ndarray) -> list[list[float]]:
@@ -80,7 +88,7 @@ def status_change(scene: Scene, coarse, fine, hs: tuple[float, float] | None = N
     misses some: the profile's status missed unil_partopen's fe and xfem P2
     (2026-11-29, their g_T and t_T estimates 0.30-0.37 of the error), the
     nearest point's its fe and xfem P1 (t_T 5.3-6.2)."""
-    s, pts, parameter = sample_points(scene, InterfaceProfile("gamma", ("gN",)))  # _samples' and their s
+    s, pts, parameter = sample_points(scene, _gamma_profile(scene))  # _samples' points, s along Γ's parameter
     s0, s1 = (interface_status(scene, r.fields, pts, r.interface) for r in (coarse, fine))  # status_along's
     n0, n1 = (nearest_status(scene, pts, r.interface) for r in (coarse, fine))
     either = np.any(s0 == PARTIAL) or np.any(s1 == PARTIAL)
