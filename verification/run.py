@@ -282,21 +282,37 @@ def estimate_record(scene, est, profiles: list, floors: dict | None = None) -> d
     return record
 
 
-def _estimates_section(scene, runs: dict, floors: dict | None = None) -> str:
+def _estimates_section(scene, runs: dict, floors: dict | None = None, reference: tuple | None = None) -> str:
     """Per pair of methods, the profile quantities on which they differ by
     more than the sum of their estimated errors (samples near singular
     points left out, a difference below ``floors`` or round-off within any
-    estimate: :func:`verification.agreement.within_estimates`)."""
-    names = list(runs)
-    lines = ["| methods | profile | quantity | RMS Δ / RMS (e₁ + e₂) | beyond the estimates |",
-             "|---|---|---|---|---|"]
+    estimate: :func:`verification.agreement.within_estimates`), whether
+    either estimate is warned (``runs``: label -> (profiles, errors,
+    warned ``PID:Q``)), and, given a ``reference`` run ``(label,
+    {id: ProfileData})``, each method's distance from it over its own
+    estimate (:func:`verification.agreement.beyond_own_estimate`): where
+    a pair differs beyond the estimates, a method above 1 there is the
+    likelier one whose estimate is too small."""
+    names, exclude = list(runs), default_exclusion(scene)
+    ref_label, ref = reference if reference else (None, None)
+    own = {n: agreement.beyond_own_estimate(scene, *runs[n][:2], ref, exclude, floors)
+           for n in names if ref is not None and n != ref_label}
+    head = "| methods | profile | quantity | RMS Δ / RMS (e₁ + e₂) | beyond the estimates | estimate warned |"
+    lines = [head + (f" each from {ref_label} ÷ its estimate |" if own else ""),
+             "|---|---|---|---|---|---|" + ("---|" if own else "")]
     for i, a in enumerate(names):
         for b in names[i + 1:]:
-            for pid, q, ratio, beyond in within_estimates(scene, *runs[a], *runs[b], default_exclusion(scene),
-                                                          floors):
-                lines.append(f"| {a} – {b} | {pid} | {q} | {ratio:.2f} | {'yes' if beyond else 'no'} |")
+            for pid, q, ratio, beyond in within_estimates(scene, *runs[a][:2], *runs[b][:2], exclude, floors):
+                warned = ", ".join(n for n in (a, b) if f"{pid}:{q}" in runs[n][2]) or "no"
+                row = f"| {a} – {b} | {pid} | {q} | {ratio:.2f} | {'yes' if beyond else 'no'} | {warned} |"
+                if own:
+                    row += " " + ", ".join(f"{own[n][pid, q]:.2f}" if n in own else "reference" for n in (a, b)) + " |"
+                lines.append(row)
+    said = (f" The last column sets each method's distance from {ref_label} (which has an error of its own) "
+            "against its own estimate: above 1, that method's estimate is the likelier one too small." if own else "")
     return ("\n## Agreement within the estimated errors\n\nWhere two methods differ by more than the sum of "
-            "their estimated errors, at least one estimate is too small: that difference is not resolution.\n\n"
+            "their estimated errors, at least one estimate is too small: that difference is not resolution. "
+            "A warned estimate (summary.json's warnings) is an indication only." + said + "\n\n"
             + "\n".join(lines) + "\n")
 
 
@@ -580,7 +596,8 @@ def _write_method(out: Path, scene: Scene, name: str, result, est, fields: bool,
     if label in gaps:
         summary["against_exact"] = gaps[label]
     if est is not None:
-        estimated[label] = ({p.id: p for p in sampled}, {p.id: est.error_columns(p.id) for p in sampled})
+        estimated[label] = ({p.id: p for p in sampled}, {p.id: est.error_columns(p.id) for p in sampled},
+                            est.unsettled)
     for prof in sampled:
         profiles.setdefault(prof.id, {})[label] = prof
     if statuses is not None:
@@ -665,7 +682,9 @@ def _write_summary(out: Path, scene: Scene, summaries: list[dict], profiles: dic
     if compared and not estimated:
         text += UNESTIMATED_AGREEMENT
     if len(estimated) > 1:
-        text += _estimates_section(scene, estimated, floors)
+        ref_label = plots.reference_of(next(iter(profiles.values())), ref) if profiles else None
+        reference = {pid: runs[ref_label] for pid, runs in profiles.items() if ref_label in runs}
+        text += _estimates_section(scene, estimated, floors, (ref_label, reference) if reference else None)
     if gaps:
         text += exact_gap.section(scene, scene.law.name, gaps)
     if paths:

@@ -63,7 +63,7 @@ One idea a module:
   :func:`table`;
 - :mod:`~verification.agreement.estimates`: runs against their estimated
   errors (:func:`estimated_shares`, :func:`worst_estimate`,
-  :func:`within_estimates`);
+  :func:`within_estimates`, :func:`beyond_own_estimate`);
 - :mod:`~verification.agreement.api`: the public check (:func:`compare`,
   :func:`assert_methods_agree`, :func:`assert_table_agrees`, :func:`compare_estimates`, :func:`check_rtol`, :func:`variant`,
   :func:`label`, :func:`sampled`).
@@ -88,7 +88,7 @@ from contactcore.tolerances import (EXACT_GAP_FLOOR, EXCLUDE_FRACTION, EXCLUDE_K
 from .api import (MEASURES, EstimateVerdict, assert_methods_agree, assert_table_agrees, check_rtol, compare, compare_estimates,
                   compared_variants, label, sampled, variant)
 from .classes import KNOWN_ZEROS, is_zero, quantity_class
-from .estimates import estimated_shares, within_estimates, worst_estimate
+from .estimates import beyond_own_estimate, estimated_shares, within_estimates, worst_estimate
 from .groups import GROUPS, ON_GAMMA, components, group_of, group_size, scale_name, scale_of
 from .measures import first_largest, percent, relative_rms, share
 from .outside import compare_outside  # an outside code's answer against the project's (docs/api.md)
@@ -121,7 +121,7 @@ __all__ = [
     # tables
     "AgreementTable", "table",
     # estimates
-    "estimated_shares", "within_estimates", "worst_estimate",
+    "beyond_own_estimate", "estimated_shares", "within_estimates", "worst_estimate",
     # api
     "MEASURES", "EstimateVerdict", "assert_methods_agree", "assert_table_agrees", "check_rtol", "compare", "compare_estimates",
     "compared_variants", "label", "sampled", "variant",

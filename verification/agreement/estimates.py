@@ -69,3 +69,24 @@ def within_estimates(scene: Scene, a: dict, err_a: dict, b: dict, err_b: dict, e
             ratio = rms(diff) / max(rms(bound), floor)
             rows.append((pid, q, ratio, ratio > 1.0))
     return rows
+
+
+def beyond_own_estimate(scene: Scene, a: dict, err_a: dict, ref: dict, exclude: float,
+                        floors: dict | None = None) -> dict[tuple[str, str], float]:
+    """``(profile id, quantity) -> RMS(q_a − q_ref) / max(RMS(e_a), f)``
+    over the kept samples: one method's distance from a reference run
+    (``ref``, ``{id: ProfileData}``) against its own estimated error
+    (``err_a`` as :func:`within_estimates` takes it), ``f`` its floor.  Where
+    two methods differ beyond their estimates, the one whose figure here
+    exceeds 1 is the likelier one whose estimate is too small; the
+    reference has an error of its own, so a figure near 1 decides nothing
+    (newuser35: this rule named the right method in four of four cases,
+    but only from summary.json's figures)."""
+    out, given = {}, user_floors(floors)
+    for pid, prof in a.items():
+        keep = kept_samples(scene, prof, exclude)
+        for q in prof.names[3:]:
+            diff = (prof.columns[q] - ref[pid].columns[q])[keep]
+            floor = max(size_floor(q, given, a, ref, scene=scene), np.finfo(float).tiny)
+            out[pid, q] = rms(diff) / max(rms(err_a[pid][f"{q}{ERROR_SUFFIX}"][keep]), floor)
+    return out
