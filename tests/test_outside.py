@@ -341,3 +341,16 @@ def test_the_against_command_writes_the_verdict(cylinder, tmp_path, capsys):
     with pytest.raises(SystemExit):
         verification_main.main(["against", str(given), str(CYLINDER), "--levels", "3", "--out", str(tmp_path / "no")])
     assert "unrecognized arguments: --levels" in capsys.readouterr().err
+
+
+def test_each_estimate_warning_is_listed_once_without_repeating_its_keys():
+    """newuser35: outside.md read "G:tT: G:tN, G:tT: an exact law's
+    traction …", once per quantity.  A warning naming its quantities is
+    listed once as written; one that names none (the status) follows the
+    quantities it is given for."""
+    from types import SimpleNamespace
+    from verification.agreement.outside import _warned_lines
+    traction = "G:tN, G:tT: an exact law's traction on Γ at order 1"
+    status = "the status along Γ differs from h = 0.1 m to 0.05 m"
+    rows = [SimpleNamespace(profile="G", quantity=q, warnings=(traction, status)) for q in ("tN", "tT")]
+    assert _warned_lines(rows) == [f"- {traction}", f"- G:tN, G:tT: {status}"]

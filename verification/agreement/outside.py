@@ -200,6 +200,18 @@ class OutsideRow:
         return out
 
 
+def _warned_lines(rows) -> list[str]:
+    """Each estimate warning of ``rows`` once, as a list item: the warning
+    as the estimate wrote it where it names every quantity it is given
+    for, else after those quantities (newuser35: "G:tT: G:tN, G:tT: an
+    exact law's traction …" repeated the key the warning names)."""
+    keys: dict[str, list[str]] = {}
+    for r in rows:
+        for w in r.warnings:
+            keys.setdefault(w, []).append(f"{r.profile}:{r.quantity}")
+    return [f"- {w}" if all(k in w for k in ks) else f"- {', '.join(ks)}: {w}" for w, ks in keys.items()]
+
+
 @dataclass(frozen=True)
 class OutsideTable:
     """The outside answer against ``method``'s finest run (at ``hs[-1]``;
@@ -255,7 +267,7 @@ class OutsideTable:
         hints = [f"- {r.profile}:{r.quantity}: {h}" for r in self.rows for h in r.hints]
         if hints:
             lines += ["", "About the input:", *hints]
-        warned = [f"- {r.profile}:{r.quantity}: {w}" for r in self.rows for w in r.warnings]
+        warned = _warned_lines(self.rows)
         if warned:
             lines += ["", f"The project's estimate is warned (a verdict there only beyond {WARNED_MULTIPLE:.3g} × "
                       "the estimate):", *warned]
