@@ -274,7 +274,7 @@ class PatchRecovery:
             # only the matrices factored are built
             key = [weight, d0, d1] if every else [np.take(v, todo, axis=0) for v in (weight, d0, d1)]
             U, S, Vt = distinct_svd(_Basis(*key, terms), key, self._factors)
-            full = np.sum(S > S[:, :1] * max(count.max(), terms) * np.finfo(float).eps, axis=1) == terms
+            full = np.sum(S >= S[:, :1] * tol.RECOVERY_RANK, axis=1) == terms  # a spread, not round-off
             solved = np.swapaxes(Vt, 1, 2) @ ((np.swapaxes(U, 1, 2) @ (Y if every else Y[todo]))
                                               / np.where(S > 0, S, 1.0)[:, :, None])
             coef[todo[full]] = 0.0

@@ -119,6 +119,23 @@ THINNEST_FITTED_BODY = 2 * NODE_MATCH
 #: The rings are counted through vertices, not along the body: a body
 #: thinner than about four cells may see both of its sides in one patch.
 RECOVERY_RINGS = 2
+#: A recovery patch's samples span a direction (its least-squares basis is
+#: of full rank) where each singular value of the weighted basis matrix is
+#: at least this share of its largest; below, the patch fits the fewer
+#: terms (a line, then the cell's own field).  The offsets are in units of
+#: the patch's size, so this is a geometric spread, not round-off: a strip
+#: of body 0.2 h thick cut by Γ along a row of cells (scene A with Γ at
+#: y = 0.995, xfem P1, h = 0.025) has every sample's centroid on one line
+#: y = 0.9975, whose y-spread of round-off (S_min/S_max ~1e-14, above the
+#: count·ε the rank once took) gave a y-slope of noise and σ up to 1e16 Pa
+#: a few 1e-4 off that line, an RMS strain of 3.2e4 (review of 2026-11-29);
+#: a spread of 1e-8 of the patch is 1e-10 h, where a fitted slope would
+#: amplify the stresses' round-off by 1e8 anyway.  The shipped scenes'
+#: patches lie at 1.46e-2 and above (measured 2026-11-29: xfem P1's
+#: recovered stress on A, B, C and C-coulomb at h = 0.05, 2319 fits, least
+#: 0.0475; the energy estimate's fits of every method and degree on A, B,
+#: C at h = 0.1 -> 0.05, up to 5414 a run, least 0.0146), so none moves.
+RECOVERY_RANK = 1e-8
 
 #: Γ is straight (contactcore.geometry: straight_in) when its unit normals
 #: at the points found along it differ by at most this (in length: the angle

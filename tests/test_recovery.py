@@ -77,3 +77,34 @@ def test_the_patch_is_the_rings_around_a_cell():
     centre = (N // 2) * N + N // 2
     reach = 2 * ctol.RECOVERY_RINGS + 1
     assert recovery.patches(np.array([rows[centre]])).nnz == reach ** 2
+
+
+def test_samples_on_one_line_fit_no_slope_across_it():
+    """A strip of body thinner than its cells (Γ along a row of cells): its
+    parts' centroids lie on one line, up to round-off across it.  That
+    spread is below RECOVERY_RANK of the patch, so no slope is fitted
+    across the line (xfem P1 on scene A with Γ at y = 0.995, h = 0.025,
+    read σ up to 1e16 Pa a few 1e-4 off the line: a slope fitted to
+    round-off, 2026-11-29): each value off the line is NaN (the caller
+    reads the cell's own) or within the samples' own range."""
+    keys, centroids = _grid()
+    mine = centroids[:, 1] == N - 0.5  # the top row of cells
+    rng = np.random.default_rng(2)
+    across = rng.uniform(-1, 1, mine.sum()) * ROUND_OFF_ACROSS
+    line = centroids[mine] + np.column_stack([np.zeros(mine.sum()), across])
+    sigma = np.column_stack([1e5 + 10 * line[:, 0], np.full(mine.sum(), -1e5), np.full(mine.sum(), 2.5e4)])
+    sigma += rng.uniform(-1, 1, sigma.shape) * ROUND_OFF_ACROSS * 1e5
+    sample = np.full(len(keys), -1)
+    sample[mine] = np.arange(mine.sum())
+    recovery, rows = PatchRecovery.gather(SERIAL, keys, sample, line, np.ones(mine.sum()), sigma)
+    cells = np.flatnonzero(mine)
+    got = recovery.at(rows[cells], centroids[cells] + np.array([0.0, 0.4]))  # inside each cell, across the line
+    low, high = sigma.min(axis=0), sigma.max(axis=0)
+    inside = (got >= low - tol.RECOVERY_EXACT * 1e5) & (got <= high + tol.RECOVERY_EXACT * 1e5)
+    assert np.all(np.isnan(got) | inside), got
+
+
+#: The spread across the line of the samples' centroids and of their σ
+#: (relative), as the round-off of a sliver part's centroid and stress
+#: leaves it (the xfem strip: S_min/S_max about 1e-14).
+ROUND_OFF_ACROSS = 1e-12
