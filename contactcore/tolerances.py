@@ -1062,14 +1062,20 @@ NU_LOCKING_WARN_FE_P1_EXACT = 0.44
 #: 2.5 mm) 1.2e-3; its aluminium made E = 1e-3 MPa, 8e4.
 SMALL_STRAIN_LIMIT = 1e-2
 #: Above this RMS principal strain in a body the answer is refused, not
-#: warned of: a strain of 1 doubles a fibre's length or closes it to
-#: nothing, which no elastic solid reaches (rubber tears near 5-7, metals
-#: yield near 1e-3), so only a wrong unit or modulus gets there (newuser35,
-#: 2026-11-29: E = 200 meant as GPa with loads in Pa gave 5.7e3 and exit
-#: 0; grader2's E = 1e-3 MPa under 100 MPa, 8e4), and a warning would turn
-#: a wrong answer into a result.  Between SMALL_STRAIN_LIMIT and this the
-#: answer is warned of (the shipped scenes lie at 6e-8 to 1.2e-3).
-SMALL_STRAIN_REFUSE = 1.0
+#: warned of: a fibre stretched a thousandfold.  No elastic solid reaches
+#: a strain of 1 (rubber tears near 5-7, metals yield near 1e-3), but a
+#: scene in normalised units (E = 1 under a load of 1: strain ~1) and the
+#: closed forms that probe a soft layer (the layered slip with its − layer
+#: 1e8 times softer: 540, tests/test_friction.py) are models a user means,
+#: so the refusal sits above them: only a wrong unit or modulus gets here
+#: (newuser35, 2026-11-29: E = 200 meant as GPa with loads in Pa gave
+#: 5.7e3 and exit 0; grader2's E = 1e-3 MPa under 100 MPa, 8e4; a modulus
+#: in GPa for Pa multiplies a physical strain of 1e-6 to 1e-3 by 1e9),
+#: and a warning would turn a wrong answer into a result.  Between
+#: SMALL_STRAIN_LIMIT and this the answer is warned of (the shipped
+#: scenes lie at 6e-8 to 1.2e-3).  A modulus in MPa for Pa (1e6) may
+#: stay below it: warned, not refused.
+SMALL_STRAIN_REFUSE = 1e3
 
 #: Small sliding: every method pairs Γ's two sides where they started
 #: (geometrically linear, as small strain), so a slip s leaves s of a

@@ -23,9 +23,17 @@ SOFTENING = 1e-6
 COARSE = 0.25
 
 
-#: A thousand times softer again: ~600, beyond SMALL_STRAIN_REFUSE (E given
-#: in GPa where the loads are in Pa is 1e-9: newuser35's 5.7e3).
-WRONG_UNIT = 1e-9
+#: Scene A with every modulus and spring this many times smaller, as if
+#: given in units 1e10 times too large: strain ~6e3 in both bodies, beyond
+#: SMALL_STRAIN_REFUSE (newuser35's E in GPa with loads in Pa: 5.7e3).
+WRONG_UNIT = 1e-10
+
+
+def _wrong_unit():
+    scene = load_scene("A")
+    law = replace(scene.law, kN=scene.law.kN * WRONG_UNIT, kT=scene.law.kT * WRONG_UNIT)
+    materials = {b: replace(m, E=m.E * WRONG_UNIT) for b, m in scene.materials.items()}
+    return replace(scene, law=law, materials=materials).validated()
 
 
 def _soft_a(softening=SOFTENING):
@@ -51,15 +59,15 @@ def test_every_method_refuses_a_strain_no_elastic_body_reaches(method):
     answer is refused naming the body, its strain and [units], not
     returned with a warning (newuser35: E in GPa, loads in Pa, exit 0)."""
     with pytest.raises(SceneError, match="strain far beyond small strain") as refused:
-        methods.solver(method)(_soft_a(WRONG_UNIT), COARSE)
+        methods.solver(method)(_wrong_unit(), COARSE)
     text = str(refused.value)
-    assert "in body minus" in text and "body plus" not in text and f"above {SMALL_STRAIN_REFUSE:g}" in text
+    assert "in body minus" in text and "in body plus" in text and f"above {SMALL_STRAIN_REFUSE:g}" in text
     assert "[units]" in text
 
 
 def test_a_wrong_unit_ends_the_run_in_one_line(tmp_path, capsys):
     scene = tmp_path / "gpa.toml"
-    scene.write_text(scene_toml(_soft_a(WRONG_UNIT)))
+    scene.write_text(scene_toml(_wrong_unit()))
     out = tmp_path / "r"
     assert main(["run", str(scene), "--method", "fe", "--h", str(COARSE), "--reference", "none", "--no-plots",
                  "-q", "--out", str(out)]) == 2
@@ -112,7 +120,7 @@ def test_a_layer_thinner_than_the_sample_grid_is_sampled_inside_itself():
 
 
 def test_a_thin_layer_s_strain_is_the_closed_form_p_over_e():
-    """Uniform σyy = −p in a 1e-3 layer of ν = 0: ε = p/E = 0.5, named."""
+    """Uniform σyy = −p in a 1e-3 layer of ν = 0: ε = p/E = 5, named."""
     scene = load_scene(THIN)
     p, E = 1e6, scene.materials["plus"].E
     warned = scene.small_strain_warnings(_Uniform([0.0, -p, 0.0]), COARSE)
@@ -146,4 +154,4 @@ def test_a_body_too_thin_for_the_finest_samples_is_named_unchecked():
 
 def test_a_thin_layer_run_by_fe_is_warned():
     warned = _strain_warnings(methods.solver("fe")(load_scene(THIN), 0.1))
-    assert len(warned) == 1 and "0.5 in body plus" in warned[0], warned
+    assert len(warned) == 1 and "5 in body plus" in warned[0], warned

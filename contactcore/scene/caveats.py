@@ -115,10 +115,10 @@ def _strain_text(scene: "Scene", strains: dict[str, float], limit: float) -> str
 
 def check_small_strain(scene: "Scene", strains: dict[str, float]) -> None:
     """Refuse an answer whose strain (:func:`body_strains`) exceeds
-    :data:`~contactcore.tolerances.SMALL_STRAIN_REFUSE` in a body: no
-    elastic answer, linear or not, has it; only a wrong unit or modulus
-    gets there (newuser35, 2026-11-29: E in GPa with loads in Pa, 5.7e3,
-    ran to exit 0 with a warning)."""
+    :data:`~contactcore.tolerances.SMALL_STRAIN_REFUSE` in a body: beyond
+    any normalised scene or closed form a user means, only a wrong unit or
+    modulus gets there (newuser35, 2026-11-29: E in GPa with loads in Pa,
+    5.7e3, ran to exit 0 with a warning)."""
     over = {body: e for body, e in strains.items() if not e <= tol.SMALL_STRAIN_REFUSE}
     if over:
         body = max(over, key=lambda b: over[b] if np.isfinite(over[b]) else np.inf)
