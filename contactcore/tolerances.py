@@ -1733,3 +1733,18 @@ GAMMA_POINT_OFFSET = 0.06
 #: NODE_MATCH (1e-6 L), the mesher's own test of a point on a curve,
 #: admitted moves of up to 1.4e-6 m there.
 USER_MESH_ON_GAMMA = 1e-11
+
+# --- trac34 (2026-11-29): an exact law's traction away from Γ's status changes ---
+#: How far, in the coarse run's cells (its h), a profile sample of an exact
+#: law's traction on Γ must lie from every point where Γ's final status
+#: changes between neighbouring samples, in either of two runs, to be
+#: estimated at the bonded law's order (the degree) rather than at 1
+#: (:func:`contactcore.estimate.status.far_from_changes`).  Measured
+#: 2026-11-29 on a 2 x 1 bimaterial block sheared and reversed under exact
+#: Coulomb (fe P2 truth at h = 0.00625; docs/error-estimates.md, "Known
+#: limits"): at h = 0.05 -> 0.025 the degree-2 tractions' true errors
+#: converged at 2.3-2.5 (t_N) and 1.5-1.9 (t_T) beyond two cells of a
+#: change and at 1.5-1.7 (t_N) and 1.2-1.3 (t_T) within them, where the
+#: kink's own error spreads over the cells beside it; beyond two cells the
+#: order-1 estimate read 3.9-5.4 (t_N) and 1.8-3.0 (t_T) times the error.
+STATUS_CHANGE_CELLS = 2.0

@@ -1646,8 +1646,8 @@ USER_MESH_GAMMA_MOVES = (10.0, 0.1)
 
 # --- outside2 (2026-11-29): the outside verdict's window, warned verdicts, s's hints (tests/test_outside.py) ---
 #: A difference of this share of WARNED_MULTIPLE × the estimate reads
-#: `warned` on a warned quantity: beyond BLAME_MULTIPLE (0.5 × 21.05 =
-#: 10.5 > 4), so the test fails if a warned estimate blamed at 4×.
+#: `warned` on a warned quantity: beyond BLAME_MULTIPLE (0.5 × 44.4 =
+#: 22.2 > 4; 0.5 × 21.05 = 10.5 until 2026-11-29), so the test fails if a warned estimate blamed at 4×.
 OUTSIDE_WARNED_SHARE = 0.5
 #: Scene A's A3 σxx at h = 0.1: the largest q_err of the samples left out
 #: near Γ's end exceeds the kept ones' by more than this, so a window
@@ -1660,3 +1660,9 @@ OUTSIDE_LEFT_OUT_SWELL = 2.0
 OUTSIDE_NEGLIGIBLE_MULTIPLE = 1e-12
 #: A difference this factor below and above WARNED_MIN_SHARE of t_N's size.
 OUTSIDE_SIZE_FACTOR = 2.0
+
+# --- trac34 (2026-11-29): an exact law's traction far from Γ's status changes (tests/test_estimate_exact_tractions.py) ---
+#: The runs (coarse, fine) of the layered exact slip whose EFGM P2 tractions
+#: read 2.18 at order 1 and 0.73 at order 2: the effectivity table's rungs
+#: for EFGM P2 (verification.effectivity.VARIANTS).
+LAYERED_EXACT_RUNS = (0.1, 0.05)

@@ -42,12 +42,12 @@ from .energy import (EnergyEstimate, EnergyRule, direct_stress, energy_estimate,
                      recovered_stress, recovery_moves)
 from .extrapolation import (QuantityEstimate, balanced_order, cell_scale_part, observed_order, profile_estimates,
                             richardson, rms, roundoff_floor, sample_groups, three_run_order)
-from .orders import lower_end, order_range, polluted, theoretical_order
+from .orders import lower_end, order_range, polluted, smooth_order, theoretical_order
 from .runs import Estimate, estimate, estimate_runs, levels_of
 from .singular import (clamped_free_exponent, compliance_length, corner_exponents, exact_interface_ends, far_from_singular,
                        interface_end_exponents, kolosov, pollution_order, reflected, singular_points, singular_regions,
                        stiff_spring_ends, stress_singular_points, unknown_ends)
-from .status import status_along, status_change, status_warning, switches
+from .status import change_points, far_from_changes, status_along, status_change, status_warning, switches
 
 __all__ = [
     # runs
@@ -61,12 +61,12 @@ __all__ = [
     "pollution_warning", "quadrature_energy", "recovery_floor", "residue_warnings", "residues", "split_cell_share",
     "split_cell_share_warning", "stencil_radius", "thinnest_body", "unsettled", "unsettled_warnings",
     # status
-    "status_along", "status_change", "status_warning", "switches",
+    "change_points", "far_from_changes", "status_along", "status_change", "status_warning", "switches",
     # energy
     "EnergyEstimate", "EnergyRule", "direct_stress", "energy_estimate", "energy_norm", "energy_rule",
     "recovered_stress", "recovery_moves",
     # orders
-    "lower_end", "order_range", "polluted", "theoretical_order",
+    "lower_end", "order_range", "polluted", "smooth_order", "theoretical_order",
     # singular
     "clamped_free_exponent", "compliance_length", "corner_exponents", "exact_interface_ends", "far_from_singular",
     "interface_end_exponents", "kolosov", "pollution_order", "reflected", "singular_points", "singular_regions",

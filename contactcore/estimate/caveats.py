@@ -54,9 +54,12 @@ quadrature's error may be most of the error, is named too
 (:func:`quadrature_energy`: the layered slip's 0.41).
 
 An exact law's traction on Γ (Nitsche's multiplier) estimated from two
-runs at order 1, the least theory allows it, is most often too large:
-its pieces between status changes converge faster (up to 13.7 times the
-error on grader17's tilted block), but not always (0.19 on a held-out
+runs at order 1, the least theory allows it (at degree 2 only within
+:data:`~contactcore.tolerances.STATUS_CHANGE_CELLS` coarse cells of a
+status change, at 2 beyond:
+:func:`~contactcore.estimate.orders.smooth_order`), is most often too
+large: its pieces converge faster (up to 13.7 times the error on
+grader17's tilted block, xfem P1), but not always (0.19 on a held-out
 wedge; :func:`exact_tractions`).  A warning claims a direction (too
 large, too small) only where every entry it named on the measured sets
 lay that way; otherwise it gives the measured range.
@@ -166,9 +169,15 @@ def exact_tractions(scene: Scene, profiles: dict[str, dict[str, QuantityEstimate
     multiplier, :data:`~contactcore.estimate.orders.TRACTIONS`) estimated
     from two runs at order 1 or less: the degree-1 multiplier, or any
     degree's where Γ's status switches
-    (:func:`~contactcore.estimate.orders.theoretical_order`).  That is the
-    least order theory allows it; its pieces between the status changes
-    converge faster (1.4-3 on the held-out wedges), so the estimate is
+    (:func:`~contactcore.estimate.orders.theoretical_order`), at degree 2
+    only at the samples within
+    :data:`~contactcore.tolerances.STATUS_CHANGE_CELLS` coarse cells of a
+    status change (beyond them its degree:
+    :func:`~contactcore.estimate.orders.smooth_order`).  That is the
+    least order theory allows it; its pieces converge faster (1.4-3 on
+    the held-out wedges; on a sheared and reversed block degree 2's t_N at
+    2.3-2.5 beyond two coarse cells of a status change, 1.5-1.7 within,
+    and xfem and efgm P1's at 2.5-2.6), so the estimate is
     most often too large: up to 13.7 times the error (grader17's tilted block
     under exact Coulomb, xfem P1 t_N at h = 0.05 → 0.025), 2.2-2.9 on the
     Lamé disc under an exact law (docs/error-estimates.md, "Known
@@ -185,11 +194,14 @@ def exact_traction_warning(names: list[str]) -> list[str]:
     sets (2026-11-28), 80 read 1 or more (up to 13.7) but the held-out
     exact Coulomb wedge's xfem P2 ``t_T`` 0.19 and grader17's tilted
     block's xfem P1 ``t_N`` 0.83 (docs/error-estimates.md, "Which
-    estimates to warn of")."""
+    estimates to warn of").  With degree 2 taken at 2 beyond
+    :data:`~contactcore.tolerances.STATUS_CHANGE_CELLS` coarse cells of a
+    status change (2026-11-29), 96 entries on four scenes read 0.09-8.51,
+    2 below 0.5 (docs/error-estimates.md, "Known limits")."""
     if not names:
         return []
-    return [f"{', '.join(names)}: an exact law's traction on Γ at order 1 from two runs: often too large (up to "
-            f"13.7 times), not always; {OBSERVE}{see('exact tractions')}"]
+    return [f"{', '.join(names)}: an exact law's Γ traction at order 1 (degree 2: near status changes) from two "
+            f"runs: often too large (up to 13.7×), not always; {OBSERVE}{see('exact tractions')}"]
 
 
 def fast_gamma(profiles: dict[str, dict[str, QuantityEstimate]], facts: MethodFacts) -> list[str]:

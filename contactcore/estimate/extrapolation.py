@@ -50,7 +50,7 @@ from ..profiles import ProfileData
 from ..scene import Scene
 from ..scaling import Sizes
 from ..result import MethodFacts
-from .orders import STRESSES, TRACTIONS, lower_end, order_range, polluted
+from .orders import STRESSES, TRACTIONS, lower_end, order_range, polluted, smooth_order
 from .singular import far_from_singular, pollution_order, unknown_ends
 
 
@@ -81,13 +81,17 @@ class QuantityEstimate:
     three at round-off); ``observed`` says which.  ``cell_scale``, where the
     difference of the runs was split (:func:`cell_scale_part`): the share
     (RMS) of its part at the scale of the coarse run's cells, estimated at the
-    upper order of ``theory`` (recorded as ``"cell_scale"``)."""
+    upper order of ``theory`` (recorded as ``"cell_scale"``).  ``far_order``,
+    where an exact law's traction was estimated sample by sample: the order
+    taken at its samples far from Γ's status changes, ``order`` at the rest
+    (:func:`richardson`'s ``far``; recorded as ``"far_order"``)."""
 
     error: np.ndarray
     order: float
     theory: tuple[float, float]
     cell_scale: float | None = None
     measured: float | None = None
+    far_order: float | None = None
 
     @property
     def observed(self) -> bool:
@@ -113,6 +117,8 @@ class QuantityEstimate:
             out["cell_scale"] = self.cell_scale
         if self.measured is not None:
             out["observed_order"] = self.measured
+        if self.far_order is not None:
+            out["far_order"] = self.far_order
         return out
 
 
@@ -201,7 +207,7 @@ def three_run_order(measured: float, order: float, theory: tuple[float, float]) 
 
 def richardson(values: list[np.ndarray], theory: tuple[float, float], ratio: float = 2.0, coarse: bool = False,
                kept: np.ndarray | None = None, cells=None, floor: float = 0.0,
-               low: bool = False) -> QuantityEstimate:
+               low: bool = False, far: tuple[np.ndarray, float] | None = None) -> QuantityEstimate:
     """The estimate of one quantity from its samples at h, h/2 (and h/4),
     coarse to fine (module doc): the finest run's error, or with ``coarse``
     the coarsest run's (``(q_{h/2} − q_h) r^p / (r^p − 1)``, two levels only).
@@ -217,7 +223,13 @@ def richardson(values: list[np.ndarray], theory: tuple[float, float], ratio: flo
     ``theory[1]`` and the rest at the balanced one: for a range that pollution
     widened (:func:`profile_estimates`).  With ``low`` a two-run estimate
     takes ``theory[0]``, not the balanced order
-    (:func:`~contactcore.estimate.orders.lower_end`); three runs observe it."""
+    (:func:`~contactcore.estimate.orders.lower_end`); three runs observe it.
+    With ``far``, ``(mask, order)``, a two-run estimate takes that order at
+    the samples of the mask and its own at the rest: an exact law's
+    traction far from Γ's status changes
+    (:func:`~contactcore.estimate.orders.smooth_order`,
+    :func:`~contactcore.estimate.status.far_from_changes`),
+    ``|q_{h/2} − q_h| / (r^{p_i} − 1)`` with ``p_i`` the sample's order."""
     kept = slice(None) if kept is None or not np.any(kept) else kept
     p = observed_order(*(v[kept] for v in values[-3:]), ratio=ratio, floor=floor) if len(values) >= 3 else None
     order = balanced_order(*theory, ratio=ratio)
@@ -227,6 +239,9 @@ def richardson(values: list[np.ndarray], theory: tuple[float, float], ratio: flo
         order = float(theory[0])
     factor = lambda o: ratio ** o / (ratio ** o - 1) if coarse else 1 / (ratio ** o - 1)  # noqa: E731
     signed = values[-1] - values[-2]
+    if p is None and far is not None and np.any(far[0]):
+        return QuantityEstimate(np.abs(signed) * np.where(far[0], factor(far[1]), factor(order)), order, theory,
+                                far_order=float(far[1]))
     if p is not None or cells is None or theory[0] >= theory[1]:
         return QuantityEstimate(np.abs(signed) * factor(order), order, theory, measured=p)
     fine = cells(signed)
@@ -257,7 +272,8 @@ def sample_groups(scene: Scene, xy: np.ndarray, kept: np.ndarray) -> np.ndarray:
 
 def profile_estimates(levels: list[list[ProfileData]], degree: int, facts: MethodFacts = MethodFacts(),
                       coarse: bool = False, scene: Scene | None = None, exclude: float = 0.0,
-                      switching: bool | None = None, h: float | None = None) -> dict[str, dict[str, QuantityEstimate]]:
+                      switching: bool | None = None, h: float | None = None,
+                      smooth: dict[str, np.ndarray] | None = None) -> dict[str, dict[str, QuantityEstimate]]:
     """``{profile id: {quantity: estimate}}`` from the profiles of each run,
     coarse to fine (each a list in the scene's order) of a method of
     ``degree`` and ``facts`` (its options'); an observed order from
@@ -278,7 +294,12 @@ def profile_estimates(levels: list[list[ProfileData]], degree: int, facts: Metho
     under springs stiff at the scale of the coarse run's cells
     (:func:`~contactcore.estimate.singular.stiff_spring_ends`), a bulk
     displacement of such a range takes its lower end from two runs
-    (:func:`~contactcore.estimate.orders.lower_end`)."""
+    (:func:`~contactcore.estimate.orders.lower_end`).  ``smooth``,
+    ``{profile id: mask}``, holds the samples far from Γ's status changes
+    (:func:`~contactcore.estimate.status.far_from_changes`), at which an
+    exact law's traction of degree 2 or more takes its bonded order
+    (:func:`~contactcore.estimate.orders.smooth_order`) from two runs,
+    and 1 at the rest."""
     out, law = {}, scene.law if scene else None
     pollution, sizes = pollution_order(scene), Sizes.of(scene) if scene is not None else None
     ends_unknown = unknown_ends(scene, h)
@@ -294,10 +315,12 @@ def profile_estimates(levels: list[list[ProfileData]], degree: int, facts: Metho
         out[pid] = {}
         for q in profs[-1].names[3:]:
             theory = order_range(q, degree, facts, law, switching, pollution)
+            far_order = smooth_order(q, degree, facts, law, switching)
+            far = (smooth[pid], far_order) if smooth and pid in smooth and far_order is not None else None
             out[pid][q] = richardson([p.columns[q] for p in profs], theory, coarse=coarse, kept=kept,
                                      floor=roundoff_floor(sizes, q),
                                      cells=cells if polluted(q, degree, facts, law, switching, pollution) else None,
-                                     low=lower_end(q, theory, ends_unknown))
+                                     low=lower_end(q, theory, ends_unknown), far=far)
     return out
 
 

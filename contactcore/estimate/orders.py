@@ -8,7 +8,9 @@ law's traction on Γ, which the law computes from the gaps
 (``t = k_N g_N`` …) not from the bulk stress; ``k`` for a stress (the H1
 rate); under an exact law, at most 2 for the gaps and 1 for the traction
 where Γ's status changes along it
-(:func:`~contactcore.estimate.status.switches`).  A degree-1 stress that
+(:func:`~contactcore.estimate.status.switches`), except, for a degree-2
+traction, at the samples far from every point where it switches
+(:func:`smooth_order`).  A degree-1 stress that
 a method recovers (its options' ``recovered_stress``,
 :class:`~contactcore.result.MethodFacts`: xfem P1) converges as the
 displacement.
@@ -145,6 +147,25 @@ def lower_end(quantity: str, theory: tuple[float, float], unknown_ends: bool) ->
     tractions keep the balanced order: on the same runs they were
     overestimated (gaps 0.90-2.91 at the balanced order)."""
     return unknown_ends and quantity in BULK_DISPLACEMENTS and theory[0] < theory[1]
+
+
+def smooth_order(quantity: str, degree: int, facts: MethodFacts = MethodFacts(), law=None,
+                 switching: bool | None = None) -> int | None:
+    """The order an exact law's traction on Γ takes from two runs at a
+    sample far from every point where Γ's status changes
+    (:func:`~contactcore.estimate.status.far_from_changes`): the bonded
+    law's, ``degree`` (:func:`theoretical_order` with ``switching``
+    False), where it exceeds the switching law's 1; None for any other
+    quantity, law or degree (degree 1: the two orders are one).  The
+    solution's H^{5/2-ε} limit is local to the points where the status
+    changes: between them it is as smooth as the data, and the pieces of a
+    degree-2 multiplier converged at 1.5-2.5 beyond two coarse cells of a
+    change (:data:`~contactcore.tolerances.STATUS_CHANGE_CELLS`)."""
+    if quantity not in TRACTIONS or not _exact(law):
+        return None
+    near = theoretical_order(quantity, degree, facts, law, switching)
+    far = theoretical_order(quantity, degree, facts, law, switching=False)
+    return far if far > near else None
 
 
 def _exact(law) -> bool:

@@ -30,7 +30,8 @@ from .caveats import (beyond_reach, cell_scale_orders, cell_scale_warnings, exac
                       split_cell_share, split_cell_share_warning)
 from .energy import EnergyEstimate, energy_estimate
 from .extrapolation import QuantityEstimate, profile_estimates
-from .status import status_change, status_warning, switches
+from .orders import _exact
+from .status import far_from_changes, status_change, status_warning, switches
 
 
 #: The suffix of an estimated error's column beside its quantity
@@ -113,7 +114,9 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     levels = [sample_profiles(scene, r.fields, r.interface) for r in results]
     switching = None if scene.law.is_linear else switches([r.interface for r in results])
     facts = results[-1].facts  # what the method's options declared (contactcore.result.MethodFacts)
-    profiles = profile_estimates(levels, results[-1].degree, facts, coarse, scene, exclude, switching, h=hs[-2])
+    smooth = far_from_changes(scene, results[-2:], levels[-1], hs[-2]) if switching and _exact(scene.law) else None
+    profiles = profile_estimates(levels, results[-1].degree, facts, coarse, scene, exclude, switching, h=hs[-2],
+                                 smooth=smooth)
     found = unsettled(scene, levels, results[-2].discretisation, facts, exclude, profiles)
     layer = curved_layer(scene, levels, facts, hs[-2], exclude)
     rough = cell_scale_orders(scene, levels, profiles, exclude, hs[-2])

@@ -6,6 +6,11 @@ point where the status changes the solution is no smoother than
 H^{5/2-ε} (Moussaoui & Khodja, Comm. PDE 17, 1992; Chouly, Hild & Renard,
 Math. Comp. 84, 2015; :func:`~contactcore.estimate.orders.theoretical_order`).
 
+That limit is local to the points where the status changes: an exact
+law's degree-2 traction takes its bonded order at the samples farther
+than :data:`~contactcore.tolerances.STATUS_CHANGE_CELLS` coarse cells
+from every change of either run's final status (:func:`far_from_changes`).
+
 For a law with history (unilateral, Coulomb) the profiles are the final
 increment's, and the status along Γ of the two runs is compared at
 :data:`~contactcore.tolerances.PROFILE_POINTS` points
@@ -18,11 +23,13 @@ from __future__ import annotations
 
 import numpy as np
 
+from .. import tolerances as tol
 from ..geometry import CircleInterface
 from ..laws import PARTIAL, REPORTED_STATUS_NAMES, SLIP
-from ..profiles import interface_status, nearest_status, sample_points
+from ..profiles import ProfileData, interface_status, nearest_status, sample_points
 from ..scene import InterfaceProfile, Scene
 from .caveats import see
+from .orders import TRACTIONS
 
 
 def switches(paths) -> bool:
@@ -44,6 +51,39 @@ def switches(paths) -> bool:
             backwards = (status == SLIP) & (np.asarray(step.traction)[:, 1] < 0) & (not frictionless)
             seen.update(np.unique(np.where(backwards, -1, status)).tolist())
     return len(seen) > 1
+
+
+def change_points(xy: np.ndarray, statuses: list[np.ndarray]) -> np.ndarray:
+    """The points (k, 2) midway between neighbouring samples ``xy`` of a
+    profile whose status differs in any of ``statuses`` (one array a run,
+    an index a sample): where Γ's status changes along it in some run."""
+    pts = [0.5 * (xy[i] + xy[i + 1]) for s in statuses for i in np.flatnonzero(s[1:] != s[:-1])]
+    return np.array(pts).reshape(-1, 2)
+
+
+def far_from_changes(scene: Scene, results, profiles: list[ProfileData], h: float) -> dict[str, np.ndarray]:
+    """``{profile id: mask}`` for each profile with a traction on Γ
+    (:data:`~contactcore.estimate.orders.TRACTIONS`): its samples farther
+    than :data:`~contactcore.tolerances.STATUS_CHANGE_CELLS` × ``h`` (the
+    coarse run's) from every point where the final status of any of
+    ``results`` changes between neighbouring samples
+    (:func:`change_points`; the status a profile's tractions follow,
+    :func:`contactcore.profiles.interface_status`).  There the solution is
+    as smooth as between Γ's status changes, and an exact law's traction
+    takes its bonded order
+    (:func:`~contactcore.estimate.orders.smooth_order`)."""
+    out = {}
+    for prof in profiles:
+        if not set(TRACTIONS) & set(prof.names[3:]):
+            continue
+        xy = np.column_stack([prof.columns["x"], prof.columns["y"]])
+        points = change_points(xy, [interface_status(scene, r.fields, xy, r.interface) for r in results])
+        if not len(points):
+            out[prof.id] = np.ones(len(xy), bool)
+            continue
+        nearest = np.min(np.linalg.norm(xy[:, None, :] - points[None, :, :], axis=2), axis=1)
+        out[prof.id] = nearest > tol.STATUS_CHANGE_CELLS * h
+    return out
 
 
 def status_along(scene: Scene, result) -> np.ndarray:

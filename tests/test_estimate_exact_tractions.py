@@ -1,0 +1,73 @@
+"""trac34 (2026-11-29): an exact law's traction on Γ estimated sample by
+sample: at the bonded law's order (the degree) far from Γ's status changes,
+at 1 near them (contactcore.estimate.orders.smooth_order,
+contactcore.estimate.status.far_from_changes,
+contactcore.tolerances.STATUS_CHANGE_CELLS; docs/error-estimates.md,
+"Known limits")."""
+import numpy as np
+import pytest
+
+import tolerances as tol
+from contactcore import estimate as est
+from contactcore import make_law, sample_profiles
+from contactcore import tolerances as core_tol
+from contactcore.discretisation import solve
+from contactcore.estimate import runs as runs_module
+from verification import methods
+from verification.closed_forms import layered_slip
+from verification.effectivity import exact_profiles, profile_rows
+
+
+def test_only_a_degree_two_exact_traction_takes_a_faster_order_far_from_status_changes():
+    coulomb = make_law({"type": "coulomb", "mu": 0.3, "enforcement": "exact"})
+    facts = methods.discretisation("fe")(degree=2).facts
+    assert est.smooth_order("tN", 2, facts, coulomb, True) == est.smooth_order("tT", 2, facts, coulomb, True) == 2
+    assert est.smooth_order("tN", 1, facts, coulomb, True) is None  # degree 1: the two orders are one
+    assert est.smooth_order("gN", 2, facts, coulomb, True) is None
+    assert est.smooth_order("tN", 2, facts, coulomb, False) is None  # no switch: already the degree
+    assert est.smooth_order("tN", 2, facts, make_law({"type": "coulomb", "mu": 0.3, "kN": 1e6, "kT": 1e6}),
+                            True) is None
+
+
+def test_samples_within_the_stated_cells_of_a_status_change_keep_order_one():
+    """A change between samples 4 and 5 in one run, between 7 and 8 in the
+    other: the samples within STATUS_CHANGE_CELLS coarse cells of either
+    midpoint take factor 1/(2 - 1), the rest 1/(2^2 - 1)."""
+    x = np.linspace(0.0, 1.0, 21)
+    xy = np.column_stack([x, np.zeros_like(x)])
+    a, b = (x > 0.21).astype(np.int8), (x > 0.36).astype(np.int8)
+    points = est.change_points(xy, [a, b])
+    assert np.allclose(points, [[0.225, 0.0], [0.375, 0.0]])
+    h = 0.05
+    far = np.min(np.abs(x[:, None] - points[None, :, 0]), axis=1) > core_tol.STATUS_CHANGE_CELLS * h
+    values = [np.zeros_like(x), np.ones_like(x)]
+    e = est.richardson(values, (1, 1), far=(far, 2.0))
+    assert e.order == 1 and e.far_order == 2 and e.record()["far_order"] == 2
+    assert np.allclose(e.error, np.where(far, 1 / 3, 1.0)) and 0 < far.sum() < len(x)
+
+
+def _layered_exact_effectivities(key):
+    case = layered_slip(exact=True)
+    disc = methods.discretisation(key[0])(degree=key[1])
+    results = [solve(case.scene, disc, h) for h in tol.LAYERED_EXACT_RUNS]
+    estimate = est.estimate_runs(case.scene, results, energy=False)
+    got = {p.id: p for p in sample_profiles(case.scene, results[-1].fields, results[-1].interface)}
+    rows = profile_rows(estimate, got, exact_profiles(case))
+    return {r["quantity"]: r["effectivity"] for r in rows if r["quantity"] in ("tN", "tT")}, estimate
+
+
+def test_the_layered_exact_slips_tractions_move_into_the_range(monkeypatch):
+    """The layered slip under exact Coulomb (verification.closed_forms.
+    layered_slip(exact=True)): Γ slipped after sticking (the law switched),
+    but its final status is one along Γ, so every sample is far from a
+    change.  EFGM P2's t_N, t_T (fe's and xfem's are at round-off) read
+    2.18 at order 1 and 0.73 at the degree's 2 (h = 0.1 -> 0.05)."""
+    eff, estimate = _layered_exact_effectivities(("efgm", 2))
+    for q in ("tN", "tT"):
+        assert tol.EFFECTIVITY[0] <= eff[q] <= tol.EFFECTIVITY[1], (q, eff[q])
+        assert estimate.profiles["L1"][q].far_order == 2
+    monkeypatch.setattr(runs_module, "far_from_changes", lambda *args: {})
+    before, _ = _layered_exact_effectivities(("efgm", 2))
+    for q in ("tN", "tT"):
+        assert before[q] > tol.EFFECTIVITY[1], (q, before[q])
+        assert before[q] == pytest.approx(3 * eff[q])
