@@ -29,6 +29,33 @@ def _rows(text: str) -> list[list[str]]:
     return [[c.strip() for c in line.strip("|").split("|")] for line in table.splitlines()[2:]]
 
 
+def _written(folder, pids):
+    """A run's profiles as written and their estimated errors (``q_err``)."""
+    written = {pid: _read(folder, pid) for pid in pids}
+    errors = {pid: {q: c for q, c in p.columns.items() if q.endswith("_err")} for pid, p in written.items()}
+    return ({pid: ProfileData(pid, p.parameter, {q: c for q, c in p.columns.items() if not q.endswith("_err")})
+             for pid, p in written.items()}, errors)
+
+
+def test_an_estimated_reference_counts_its_own_error(tmp_path):
+    """grader31: with fe P2 among the runs, its own estimate joins each
+    method's in the last column (its underestimate had flagged xfem P2 and
+    efgm P2, whose estimates held); the reference's own rows read
+    ``reference``."""
+    out = tmp_path / "run"
+    text = run("A", ["fe", "xfem"], out, h=0.2, degree=2, estimate=2, draw=False)
+    assert "| each from fe P2 ÷ its and the reference's estimates |" in text
+    scene = load_scene("A")
+    pids = [p.id for p in scene.profiles]
+    ref, ref_err = _written(out / "fe", pids)
+    got, errors = _written(out / "xfem", pids)
+    own = beyond_own_estimate(scene, got, errors, ref, default_exclusion(scene), err_ref=ref_err)
+    alone = beyond_own_estimate(scene, got, errors, ref, default_exclusion(scene))
+    for pair, pid, q, ratio, _, _, each in _rows(text):
+        assert pair == "fe P2 – xfem P2" and each == f"reference, {own[pid, q]:.2f}" == f"reference, {ratio}"
+    assert all(own[k] < alone[k] for k in own if alone[k] > 0)
+
+
 def test_each_row_says_which_estimate_is_warned_and_how_far_each_method_is_from_the_reference(tmp_path):
     out = tmp_path / "run"
     text = run("A", list(METHODS.values()), out, h=0.2, estimate=2, draw=False)
@@ -38,10 +65,7 @@ def test_each_row_says_which_estimate_is_warned_and_how_far_each_method_is_from_
     ref = {pid: _read(out / "reference", pid) for pid in pids}
     own, warned = {}, {}
     for label, name in METHODS.items():
-        written = {pid: _read(out / name, pid) for pid in pids}  # each q with its q_err beside it
-        errors = {pid: {q: c for q, c in p.columns.items() if q.endswith("_err")} for pid, p in written.items()}
-        got = {pid: ProfileData(pid, p.parameter, {q: c for q, c in p.columns.items() if not q.endswith("_err")})
-               for pid, p in written.items()}
+        got, errors = _written(out / name, pids)  # each q with its q_err beside it
         own[label] = beyond_own_estimate(scene, got, errors, ref, default_exclusion(scene))
         warnings = " ".join(json.loads((out / name / "summary.json").read_text())["estimate"]["warnings"])
         warned[label] = warnings

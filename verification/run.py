@@ -295,10 +295,12 @@ def _estimates_section(scene, runs: dict, floors: dict | None = None, reference:
     likelier one whose estimate is too small."""
     names, exclude = list(runs), default_exclusion(scene)
     ref_label, ref = reference if reference else (None, None)
-    own = {n: agreement.beyond_own_estimate(scene, *runs[n][:2], ref, exclude, floors)
+    err_ref = runs[ref_label][1] if ref_label in runs else None  # an estimated reference's own error counts
+    own = {n: agreement.beyond_own_estimate(scene, *runs[n][:2], ref, exclude, floors, err_ref)
            for n in names if ref is not None and n != ref_label}
     head = "| methods | profile | quantity | RMS Δ / RMS (e₁ + e₂) | beyond the estimates | estimate warned |"
-    lines = [head + (f" each from {ref_label} ÷ its estimate |" if own else ""),
+    against = "its and the reference's estimates" if err_ref is not None else "its estimate"
+    lines = [head + (f" each from {ref_label} ÷ {against} |" if own else ""),
              "|---|---|---|---|---|---|" + ("---|" if own else "")]
     for i, a in enumerate(names):
         for b in names[i + 1:]:
@@ -308,8 +310,11 @@ def _estimates_section(scene, runs: dict, floors: dict | None = None, reference:
                 if own:
                     row += " " + ", ".join(f"{own[n][pid, q]:.2f}" if n in own else "reference" for n in (a, b)) + " |"
                 lines.append(row)
-    said = (f" The last column sets each method's distance from {ref_label} (which has an error of its own) "
-            "against its own estimate: above 1, that method's estimate is the likelier one too small." if own else "")
+    said = ((f" The last column sets each method's distance from {ref_label} against its own estimate and "
+             f"{ref_label}'s: above 1, one of the two is too small; a method above 1 where the other of its pair is "
+             "not is the likelier one." if err_ref is not None else
+             f" The last column sets each method's distance from {ref_label} (which has an error of its own) "
+             "against its own estimate: above 1, that method's estimate is the likelier one too small.") if own else "")
     return ("\n## Agreement within the estimated errors\n\nWhere two methods differ by more than the sum of "
             "their estimated errors, at least one estimate is too small: that difference is not resolution. "
             "A warned estimate (summary.json's warnings) is an indication only." + said + "\n\n"
