@@ -129,8 +129,11 @@ RECOVERY_RINGS = 2
 #: y = 0.9975, whose y-spread of round-off (S_min/S_max ~1e-14, above the
 #: count·ε the rank once took) gave a y-slope of noise and σ up to 1e16 Pa
 #: a few 1e-4 off that line, an RMS strain of 3.2e4 (review of 2026-11-29);
-#: a spread of 1e-8 of the patch is 1e-10 h, where a fitted slope would
-#: amplify the stresses' round-off by 1e8 anyway.  The shipped scenes'
+#: for a line this is a spread of 1e-8 of the patch (1e-10 h), where a
+#: fitted slope would amplify the stresses' round-off by 1e8 anyway; a
+#: quadratic's smallest singular value goes as the spread squared, so it
+#: needs a spread of about 1e-4 of the patch, and falls back to a line
+#: below it (review19b: 5e-8 of the energy estimate on a 1e-5 m layer).  The shipped scenes'
 #: patches lie at 1.46e-2 and above (measured 2026-11-29: xfem P1's
 #: recovered stress on A, B, C and C-coulomb at h = 0.05, 2319 fits, least
 #: 0.0475; the energy estimate's fits of every method and degree on A, B,
@@ -1061,21 +1064,6 @@ NU_LOCKING_WARN_FE_P1_EXACT = 0.44
 #: 6e-8, 9e-8; steel on aluminium under 100 MPa (grader2's mm wedge, h =
 #: 2.5 mm) 1.2e-3; its aluminium made E = 1e-3 MPa, 8e4.
 SMALL_STRAIN_LIMIT = 1e-2
-#: Above this RMS principal strain in a body the answer is refused, not
-#: warned of: a fibre stretched a thousandfold.  No elastic solid reaches
-#: a strain of 1 (rubber tears near 5-7, metals yield near 1e-3), but a
-#: scene in normalised units (E = 1 under a load of 1: strain ~1) and the
-#: closed forms that probe a soft layer (the layered slip with its − layer
-#: 1e8 times softer: 540, tests/test_friction.py) are models a user means,
-#: so the refusal sits above them: only a wrong unit or modulus gets here
-#: (newuser35, 2026-11-29: E = 200 meant as GPa with loads in Pa gave
-#: 5.7e3 and exit 0; grader2's E = 1e-3 MPa under 100 MPa, 8e4; a modulus
-#: in GPa for Pa multiplies a physical strain of 1e-6 to 1e-3 by 1e9),
-#: and a warning would turn a wrong answer into a result.  Between
-#: SMALL_STRAIN_LIMIT and this the answer is warned of (the shipped
-#: scenes lie at 6e-8 to 1.2e-3).  A modulus in MPa for Pa (1e6) may
-#: stay below it: warned, not refused.
-SMALL_STRAIN_REFUSE = 1e3
 
 #: Small sliding: every method pairs Γ's two sides where they started
 #: (geometrically linear, as small strain), so a slip s leaves s of a

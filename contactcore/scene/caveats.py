@@ -14,7 +14,6 @@ from __future__ import annotations
 import numpy as np
 
 from .. import tolerances as tol
-from ..errors import SceneError
 from ..geometry import CircleInterface, Rectangle, domain_cells
 from .vocabulary import BODIES
 
@@ -111,21 +110,6 @@ def _strain_text(scene: "Scene", strains: dict[str, float], limit: float) -> str
     """The bodies of ``strains`` above ``limit``: their strain and modulus."""
     return " and ".join(f"{e:.2g} in body {body} (E = {scene.user.materials[body].E:.3g} {scene.user.units.stress})"
                         for body, e in strains.items() if not e <= limit)
-
-
-def check_small_strain(scene: "Scene", strains: dict[str, float]) -> None:
-    """Refuse an answer whose strain (:func:`body_strains`) exceeds
-    :data:`~contactcore.tolerances.SMALL_STRAIN_REFUSE` in a body: beyond
-    any normalised scene or closed form a user means, only a wrong unit or
-    modulus gets there (newuser35, 2026-11-29: E in GPa with loads in Pa,
-    5.7e3, ran to exit 0 with a warning)."""
-    over = {body: e for body, e in strains.items() if not e <= tol.SMALL_STRAIN_REFUSE}
-    if over:
-        body = max(over, key=lambda b: over[b] if np.isfinite(over[b]) else np.inf)
-        raise SceneError(f"materials.{body}.E", f"strain far beyond small strain: the RMS of a body's largest "
-                         f"principal strain is {_strain_text(scene, over, tol.SMALL_STRAIN_REFUSE)}, above "
-                         f"{tol.SMALL_STRAIN_REFUSE:g}, which no elastic body reaches: check the moduli and loads "
-                         f"against [units] (stress in {scene.user.units.stress})")
 
 
 def small_strain_warnings(scene: "Scene", strains: dict[str, float], unchecked: list[str]) -> list[str]:

@@ -128,12 +128,8 @@ class Scene:
 
     def small_strain_warnings(self, fields, h: float, strain_unit: float = 1.0) -> list[str]:
         """:func:`contactcore.scene.caveats.small_strain_warnings` of this
-        scene's answer ``fields``, after
-        :func:`contactcore.scene.caveats.check_small_strain` refuses a strain
-        no elastic body reaches."""
-        strains, unchecked = caveats.body_strains(self, fields, h, strain_unit)
-        caveats.check_small_strain(self, strains)
-        return caveats.small_strain_warnings(self, strains, unchecked)
+        scene's answer ``fields`` (:func:`contactcore.scene.caveats.body_strains`)."""
+        return caveats.small_strain_warnings(self, *caveats.body_strains(self, fields, h, strain_unit))
 
     def interface_warnings(self, h: float, fitted: bool = False) -> list[str]:
         """:func:`contactcore.scene.caveats.interface_warnings` of this scene."""
