@@ -71,3 +71,33 @@ def test_the_layered_exact_slips_tractions_move_into_the_range(monkeypatch):
     for q in ("tN", "tT"):
         assert before[q] > tol.EFFECTIVITY[1], (q, before[q])
         assert before[q] == pytest.approx(3 * eff[q])
+
+
+def test_a_profile_that_starts_past_a_status_change_still_sees_it():
+    """review19b: far_from_changes looked for status changes only between
+    a profile's own samples, so a traction profile along part of Γ, from
+    x = 0.08 on tests/scenes/tilt_unil_exact.toml (whose Γ opens at
+    x = 0.075 in fe P2), took its first samples, within two coarse cells of
+    that change, as smooth (order 2, the estimate a third).  Γ's changes
+    are now taken along all of Γ too: the same samples as on the whole
+    profile G are near."""
+    from contactcore import LineProfile, load_scene
+    scene = load_scene(TILT)
+    part = LineProfile("Gsub", (PART_START, 0.47), (1.0, 0.47), ("gN", "tN", "tT"))
+    scene = scene.with_changes(profiles=(*scene.profiles, part))
+    h = PART_H
+    results = [solve(scene, methods.discretisation("fe")(degree=2), hk) for hk in (h, h / 2)]
+    profiles = sample_profiles(scene, results[-1].fields, results[-1].interface)
+    far = est.far_from_changes(scene, results, profiles, h)
+    x = {p.id: p.columns["x"] for p in profiles}
+    near_whole = x["G"][~far["G"]]
+    near_part = x["Gsub"][~far["Gsub"]]
+    assert not far["Gsub"][0] and far["Gsub"][-1] and np.all(np.diff(far["Gsub"].astype(int)) >= 0)  # a leading run
+    assert abs(near_part.max() - near_whole.max()) <= np.diff(x["G"]).max()  # as far along Γ as G's, to a sample
+
+
+#: Where the part of Γ the partial profile reads starts: just past Γ's
+#: status change at x = 0.075, at review19b's coarse h.
+TILT = "tests/scenes/tilt_unil_exact.toml"
+PART_START = 0.08
+PART_H = 0.05

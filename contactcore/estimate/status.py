@@ -66,18 +66,23 @@ def far_from_changes(scene: Scene, results, profiles: list[ProfileData], h: floa
     (:data:`~contactcore.estimate.orders.TRACTIONS`): its samples farther
     than :data:`~contactcore.tolerances.STATUS_CHANGE_CELLS` × ``h`` (the
     coarse run's) from every point where the final status of any of
-    ``results`` changes between neighbouring samples
-    (:func:`change_points`; the status a profile's tractions follow,
+    ``results`` changes between neighbouring samples of the profile or of
+    all of Γ (:func:`change_points`; the status a profile's tractions follow,
     :func:`contactcore.profiles.interface_status`).  There the solution is
     as smooth as between Γ's status changes, and an exact law's traction
     takes its bonded order
     (:func:`~contactcore.estimate.orders.smooth_order`)."""
-    out = {}
+    out, gamma = {}, _samples(scene)
+    # Γ's own changes, along all of Γ: a profile that starts past one still lies near it (review19b: a
+    # traction profile from x = 0.08 on tilt_unil_exact, whose status changes at x = 0.075, took 11
+    # samples within two cells of it as smooth)
+    whole = change_points(gamma, [interface_status(scene, r.fields, gamma, r.interface) for r in results])
     for prof in profiles:
         if not set(TRACTIONS) & set(prof.names[3:]):
             continue
         xy = np.column_stack([prof.columns["x"], prof.columns["y"]])
-        points = change_points(xy, [interface_status(scene, r.fields, xy, r.interface) for r in results])
+        own = change_points(xy, [interface_status(scene, r.fields, xy, r.interface) for r in results])
+        points = np.vstack([own.reshape(-1, 2), whole.reshape(-1, 2)])
         if not len(points):
             out[prof.id] = np.ones(len(xy), bool)
             continue
