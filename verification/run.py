@@ -311,10 +311,11 @@ def _estimates_section(scene, runs: dict, floors: dict | None = None, reference:
                     row += " " + ", ".join(f"{own[n][pid, q]:.2f}" if n in own else "reference" for n in (a, b)) + " |"
                 lines.append(row)
     said = ((f" The last column sets each method's distance from {ref_label} against its own estimate and "
-             f"{ref_label}'s: above 1, one of the two is too small; a method above 1 where the other of its pair is "
-             "not is the likelier one." if err_ref is not None else
+             f"{ref_label}'s: where a pair differs beyond its estimates, a method above 1 there, the other not, "
+             "is the likelier one whose estimate is too small (or the reference's)." if err_ref is not None else
              f" The last column sets each method's distance from {ref_label} (which has an error of its own) "
-             "against its own estimate: above 1, that method's estimate is the likelier one too small.") if own else "")
+             "against its own estimate: where a pair differs beyond its estimates, the method above 1 there is the "
+             "likelier one whose estimate is too small.") if own else "")
     return ("\n## Agreement within the estimated errors\n\nWhere two methods differ by more than the sum of "
             "their estimated errors, at least one estimate is too small: that difference is not resolution. "
             "A warned estimate (summary.json's warnings) is an indication only." + said + "\n\n"
