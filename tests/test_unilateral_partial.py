@@ -33,19 +33,27 @@ def _partial_points(report):
     return [tuple(map(float, m)) for m in re.findall(r"\(([-\d.e+]+), ([-\d.e+]+)\) θ = ([-\d.e+]+)", lines[0])]
 
 
-def test_uni_fe_p1_has_one_partial_point_and_the_references_opening(tmp_path):
+@pytest.fixture(scope="module")
+def uni_p1(tmp_path_factory):
+    """`uni` at fe P1, h = 0.05, solved once for the tests that read it
+    (it takes about 9 s): the scene and its result."""
+    from xdolfinx.options import FE
+    path = tmp_path_factory.mktemp("uni") / "uni.toml"
+    path.write_text(UNI)
+    scene = load_scene(path)
+    return scene, discretisation.solve(scene, FE(degree=1), 0.05)
+
+
+def test_uni_fe_p1_has_one_partial_point_and_the_references_opening(tmp_path, uni_p1):
     """fe P1 at h = 0.05, refused before: one partial point, the middle
     Gauss point of [0.3, 0.35], carrying (0, τ) with θ strictly
     inside (0, 1); Γ changes from open to closed once, within UNI_OPENING
     of the reference opening (measured 0.3153 against 0.3156; fe P1 at
     h = 0.025, which Newton solves, 0.325)."""
-    from xdolfinx.options import FE
-    path = tmp_path / "uni.toml"
-    path.write_text(UNI)
-    result = discretisation.solve(load_scene(path), FE(degree=1), 0.05)
+    scene, result = uni_p1
     points = _partial_points(result.solver)
     assert len(points) == 1, result.solver.warnings
-    check_partial_reported(tmp_path, load_scene(path), result)  # reported `partial`, with its θ (test_partial_status)
+    check_partial_reported(tmp_path, scene, result)  # reported `partial`, with its θ (test_partial_status)
     (x, y, theta), = points
     assert x == pytest.approx(0.325) and y == pytest.approx(0.5) and 0.0 < theta < 1.0
     interface = result.interface
@@ -181,18 +189,17 @@ def test_a_consistent_map_the_search_finds_is_handed_to_newton(tmp_path, monkeyp
     assert np.max(np.abs(mine.traction - theirs.traction)) <= tol.SEARCH_AS_NEWTON * scale
 
 
-def test_a_walk_with_more_partial_points_than_the_bound_ends(tmp_path, monkeypatch):
+def test_a_walk_with_more_partial_points_than_the_bound_ends(monkeypatch, uni_p1):
     """review10 #2: PARTIAL_SEARCH_POINTS ends a walk.  `uni` fe P1 at
     h = 0.05 answers with one partial point; with the bound below that
     (0) neither walk may hold it and the refusal stands."""
     from contactcore import tolerances as ctol
     from xdolfinx.options import FE
-    path = tmp_path / "uni.toml"
-    path.write_text(UNI)
-    assert len(_partial_points(discretisation.solve(load_scene(path), FE(degree=1), 0.05).solver)) == 1
+    scene, result = uni_p1
+    assert len(_partial_points(result.solver)) == 1
     monkeypatch.setattr(ctol, "PARTIAL_SEARCH_POINTS", 0)
     with pytest.raises(SolverError, match="Newton found no open/closed map"):
-        discretisation.solve(load_scene(path), FE(degree=1), 0.05)
+        discretisation.solve(scene, FE(degree=1), 0.05)
 
 
 def test_partial_equations_singular_to_working_precision_are_refused_on_every_kernel():

@@ -231,13 +231,11 @@ def tie_cause(scene, k: float, failure: str, from_rest: bool = False) -> str:
     ratios = [f"{shear / press:.3g} on body {name}" for name, shear, press, *_ in _demands(scene, k) if press > 0]
     mu = f"mu a few times the loads' shear/normal ({ratios[0]})" if ratios else "a large mu"
     exact = scene.law.enforcement == "exact"
-    more = ("more increments do not help: from rest a smaller step is the same problem scaled" if from_rest else
-            "more increments help only where a consistent map exists")
+    more = "more increments do not help" if from_rest else "more increments help only where a consistent map exists"
     other = "another stabilisation seldom helps" if exact else "soften k_N, k_T to settle it, with their answer"
-    return (f"Newton found no open/closed map of the {scene.law.name} law consistent at every point, and there may be "
-            "none: where Γ opens under shear a closed point carries the tie's shear on almost no pressure, and "
-            f"opening it opens or closes its neighbours (another h or degree may settle it or not; {more}; {other}); "
-            f"use type = \"coulomb\" with {mu}, which lets the shear vanish with the pressure")
+    return (f"Newton found no open/closed map of the {scene.law.name} law consistent at every point (under shear "
+            f"there may be none; another h or degree may settle it or not; {more}; {other}); "
+            f"use type = \"coulomb\" with {mu}")
 
 
 def _loaded_parts(scene, body: int, factors):
