@@ -1736,3 +1736,25 @@ USER_MESH_ON_GAMMA = 1e-11
 #: kink's own error spreads over the cells beside it; beyond two cells the
 #: order-1 estimate read 3.9-5.4 (t_N) and 1.8-3.0 (t_T) times the error.
 STATUS_CHANGE_CELLS = 2.0
+
+# --- cross36 (2026-11-29): a bulk profile near Γ's status change under an exact law ---
+#: How far, in the coarse run's stencils (estimate.stencil_radius), a bulk
+#: quantity's sample (u, σ: not Γ's gaps and tractions, which take order 1
+#: there, STATUS_CHANGE_CELLS) must lie from every point where Γ's final
+#: status changes under an exact law, in either of the two finest runs
+#: (estimate.status.status_changes), to count in its ``kept_rms``
+#: (estimate.beyond_reach; the warning estimate.near_status_changes).  The
+#: solution there is no smoother than H^{5/2-ε} (Moussaoui and Khodja
+#: 1992): a weak singular point of the stress, whose error reaches two
+#: stencils of the coarse run as a singular point's does (REACH_STENCILS,
+#: the same argument).  Measured 2026-11-29 on an inclined bimaterial
+#: block under exact Coulomb (tests/scenes/stick_slip_crossing.toml: its
+#: vertical line V at x = 0.75 crosses Γ where stick turns to slip; fe P2
+#: truth at h = 0.00625, runs 0.05 -> 0.025): 94-99 % of fe P2's squared σxx, σyy error and 89 % of
+#: xfem P2's σxy lay within one coarse cell of the crossing, the estimate
+#: reading 0.48 (fe P2 σyy) and 0.48 (xfem P2 σxy) of it; beyond two cells
+#: 1.50 and 0.97.  Five more vertical lines crossing Γ away from the change
+#: (x = 0.2-1.2) read 1.09-1.34 (fe P2 σyy) with every sample kept, and the
+#: same block under springs (kN = kT = E/h, its change at x = 0.69) read
+#: 0.85-1.41 on V: a crossing of Γ alone, or a penalty law, is no cause.
+STATUS_CHANGE_STENCILS = 2.0

@@ -86,18 +86,19 @@ def _every_warning() -> list[str]:
             + est.cell_scale_warnings({k: (3.83, 2.21) for k in NAMES}, (0.05, 0.025), length="m")
             + est.residue_warnings({k: (0.00031, "A1:sxy") for k in NAMES})
             + est.status_warning(change, "m")
+            + est.status_change_warnings({k: (0.125, False) for k in NAMES}, "m")
             + est.recovery_floor(EnergyEstimate(1.0, 10.0, 0.1, recovery=0.523))
             + est.quadrature_energy("efgm", 1, methods.discretisation("efgm")(degree=1).facts(),
                                     EnergyEstimate(1.23e-5, 1.0, 0.1)))
 
 
-@pytest.mark.parametrize("k", range(15))
+@pytest.mark.parametrize("k", range(16))
 def test_each_warning_is_short_with_two_quantities_named(k):
-    """Each of the fifteen kinds of line (the three causes of a coarse
+    """Each of the sixteen kinds of line (the three causes of a coarse
     stencil, the two of EFGM P1's Γ), with two quantities named, is at
     most ESTIMATE_WARNING_CHARS and points to its row (each further
     quantity adds its name, 6-8 characters, or 14-24 with its figure)."""
     lines = _every_warning()
-    assert len(lines) == 15
+    assert len(lines) == 16
     _pointed(lines[k])
     assert len(lines[k]) <= tol.ESTIMATE_WARNING_CHARS, (len(lines[k]), lines[k])

@@ -1666,3 +1666,21 @@ OUTSIDE_SIZE_FACTOR = 2.0
 #: read 2.18 at order 1 and 0.73 at order 2: the effectivity table's rungs
 #: for EFGM P2 (verification.effectivity.VARIANTS).
 LAYERED_EXACT_RUNS = (0.1, 0.05)
+
+# --- cross36 (2026-11-29): a bulk line across Γ's status change (tests/test_estimate_status_crossing.py) ---
+#: The runs' coarse h and the truth's h (fe P2) on tests/scenes/stick_slip_crossing.toml:
+#: the pair of the paper scenes' effectivity table (h = 0.05 -> 0.025 against 0.00625),
+#: where fe P2's σyy on V read 0.48 of its error over every sample.
+STATUS_CROSSING_RUNS = (0.05, 0.00625)
+#: The scene's friction coefficient and springs (kN = kT = E_minus/h at
+#: h = 0.05) for the same block under a penalty law.
+STATUS_CROSSING_MU = 0.35
+STATUS_CROSSING_SPRINGS = 1.4e12
+#: The coarse h of that penalty check: the cheapest pair whose coarse cells
+#: (reach 0.2) would hold V's samples if the rule took a penalty law's
+#: changes (x = 0.69 there, 0.06 from V).
+STATUS_CROSSING_SPRINGS_H = 0.1
+#: The share of fe P2's squared σyy error on V that lies among the samples
+#: left out near the crossing: measured 0.99 within one coarse cell
+#: (2026-11-29), so at least nine tenths within two.
+STATUS_CROSSING_ERROR_SHARE = 0.9

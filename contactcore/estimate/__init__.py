@@ -34,10 +34,10 @@ in their home.
 numpy and scipy only; no method is imported.
 """
 from .caveats import (beyond_reach, cell_scale_orders, cell_scale_warnings, curved_layer, curved_layer_warning,
-                      exact_traction_warning, exact_tractions, fast_gamma, fast_gamma_warning, feature_size, order_mismatch,
-                      order_warnings, pollution_warning, quadrature_energy, recovery_floor, residue_warnings, residues,
-                      split_cell_share, split_cell_share_warning, stencil_radius, thinnest_body, unsettled,
-                      unsettled_warnings)
+                      exact_traction_warning, exact_tractions, fast_gamma, fast_gamma_warning, feature_size,
+                      near_status_changes, order_mismatch, order_warnings, pollution_warning, quadrature_energy,
+                      recovery_floor, residue_warnings, residues, split_cell_share, split_cell_share_warning,
+                      status_change_warnings, stencil_radius, thinnest_body, unsettled, unsettled_warnings)
 from .energy import (EnergyEstimate, EnergyRule, direct_stress, energy_estimate, energy_norm, energy_rule,
                      recovered_stress, recovery_moves)
 from .extrapolation import (QuantityEstimate, balanced_order, cell_scale_part, observed_order, profile_estimates,
@@ -47,7 +47,8 @@ from .runs import Estimate, estimate, estimate_runs, levels_of
 from .singular import (clamped_free_exponent, compliance_length, corner_exponents, exact_interface_ends, far_from_singular,
                        interface_end_exponents, kolosov, pollution_order, reflected, singular_points, singular_regions,
                        stiff_spring_ends, stress_singular_points, unknown_ends)
-from .status import change_points, far_from_changes, status_along, status_change, status_warning, switches
+from .status import (change_points, far_from_changes, status_along, status_change, status_changes, status_warning,
+                     switches)
 
 __all__ = [
     # runs
@@ -57,11 +58,13 @@ __all__ = [
     "rms", "roundoff_floor", "sample_groups", "three_run_order",
     # caveats
     "beyond_reach", "cell_scale_orders", "cell_scale_warnings", "curved_layer", "curved_layer_warning",
-    "exact_traction_warning", "exact_tractions", "fast_gamma", "fast_gamma_warning", "feature_size", "order_mismatch", "order_warnings",
-    "pollution_warning", "quadrature_energy", "recovery_floor", "residue_warnings", "residues", "split_cell_share",
-    "split_cell_share_warning", "stencil_radius", "thinnest_body", "unsettled", "unsettled_warnings",
+    "exact_traction_warning", "exact_tractions", "fast_gamma", "fast_gamma_warning", "feature_size",
+    "near_status_changes", "order_mismatch", "order_warnings", "pollution_warning", "quadrature_energy",
+    "recovery_floor", "residue_warnings", "residues", "split_cell_share", "split_cell_share_warning",
+    "status_change_warnings", "stencil_radius", "thinnest_body", "unsettled", "unsettled_warnings",
     # status
-    "change_points", "far_from_changes", "status_along", "status_change", "status_warning", "switches",
+    "change_points", "far_from_changes", "status_along", "status_change", "status_changes", "status_warning",
+    "switches",
     # energy
     "EnergyEstimate", "EnergyRule", "direct_stress", "energy_estimate", "energy_norm", "energy_rule",
     "recovered_stress", "recovery_moves",

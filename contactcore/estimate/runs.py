@@ -25,13 +25,13 @@ from .caveats import (beyond_reach, cell_scale_orders, cell_scale_warnings, exac
                       fast_gamma_warning, feature_size, thinnest_body,
                       order_mismatch, order_warnings,
                       pollution_warning, residue_warnings, residues, unsettled, unsettled_warnings,
-                      curved_layer, curved_layer_warning, ENERGY_KEY,
+                      curved_layer, curved_layer_warning, ENERGY_KEY, near_status_changes, status_change_warnings,
                       quadrature_energy, recovery_floor,
                       split_cell_share, split_cell_share_warning)
 from .energy import EnergyEstimate, energy_estimate
 from .extrapolation import QuantityEstimate, profile_estimates
 from .orders import _exact
-from .status import far_from_changes, status_change, status_warning, switches
+from .status import far_from_changes, status_change, status_changes, status_warning, switches
 
 
 #: The suffix of an estimated error's column beside its quantity
@@ -61,8 +61,10 @@ class Estimate:
     trusted (:func:`~contactcore.estimate.caveats.residues`); ``kept``,
     ``{PROFILE: {QUANTITY: mask}}``, the samples each quantity's estimate
     is summarised over (``kept_rms``): away from the singular points and
-    beyond the coarse run's reach of them
-    (:func:`~contactcore.estimate.caveats.beyond_reach`)."""
+    beyond the coarse run's reach of them, and for a bulk quantity under an
+    exact law beyond its reach of Γ's status changes
+    (:func:`~contactcore.estimate.caveats.beyond_reach`,
+    :func:`~contactcore.estimate.status.status_changes`)."""
 
     hs: tuple
     profiles: dict[str, dict[str, QuantityEstimate]]
@@ -108,13 +110,17 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     two (its profiles' errors; the energy estimate still the finest run's);
     the energy and an observed order leave out what lies within
     ``exclude`` of a singular point, its ``kept`` samples also what lies
-    within the coarse run's reach of one
-    (:func:`~contactcore.estimate.caveats.beyond_reach`)."""
+    within the coarse run's reach of one, or for a bulk quantity under an
+    exact law of a point where Γ's final status changes in the two finest
+    runs (:func:`~contactcore.estimate.caveats.beyond_reach`,
+    :func:`~contactcore.estimate.caveats.near_status_changes`)."""
     hs = tuple(float(r.discretisation["h"]) for r in results)
     levels = [sample_profiles(scene, r.fields, r.interface) for r in results]
     switching = None if scene.law.is_linear else switches([r.interface for r in results])
     facts = results[-1].facts  # what the method's options declared (contactcore.result.MethodFacts)
-    smooth = far_from_changes(scene, results[-2:], levels[-1], hs[-2]) if switching and _exact(scene.law) else None
+    exact_switch = switching and _exact(scene.law)
+    smooth = far_from_changes(scene, results[-2:], levels[-1], hs[-2]) if exact_switch else None
+    changes = status_changes(scene, results[-2:]) if exact_switch else np.zeros((0, 2))
     profiles = profile_estimates(levels, results[-1].degree, facts, coarse, scene, exclude, switching, h=hs[-2],
                                  smooth=smooth)
     found = unsettled(scene, levels, results[-2].discretisation, facts, exclude, profiles)
@@ -142,14 +148,16 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
                           recovered=facts.recovered_stress)
           if energy else None)
     kept = {p.id: {q: beyond_reach(scene, np.column_stack([p.columns["x"], p.columns["y"]]),
-                                   results[-2].discretisation, facts, q, exclude) for q in p.names[3:]}
+                                   results[-2].discretisation, facts, q, exclude, changes) for q in p.names[3:]}
             for p in levels[-1]}
+    near = near_status_changes(levels[-1], changes, results[-2].discretisation, facts, kept) if exclude > 0 else {}
+    warnings += status_change_warnings(near, scene.user.units.length)
     caveat = ((quadrature_energy(results[-1].method, results[-1].degree, facts, zz) + recovery_floor(zz)) if energy
               else [])
     return Estimate(hs, profiles, zz, status, warnings + caveat, levels[-1],
                     {k for v in found.values() for k in v} | set(layer) | set(rough) | set(residue) | set(nitsche)
                     | set(split)
-                    | set(fast) | moved
+                    | set(fast) | moved | {k for k, (_, capped) in near.items() if capped}
                     | ({ENERGY_KEY} if caveat else set())
                     | {f"{pid}:{q}" for pid, qs in profiles.items() for q, e in qs.items() if order_mismatch(e)},
                     kept)

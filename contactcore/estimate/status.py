@@ -9,7 +9,10 @@ Math. Comp. 84, 2015; :func:`~contactcore.estimate.orders.theoretical_order`).
 That limit is local to the points where the status changes: an exact
 law's degree-2 traction takes its bonded order at the samples farther
 than :data:`~contactcore.tolerances.STATUS_CHANGE_CELLS` coarse cells
-from every change of either run's final status (:func:`far_from_changes`).
+from every change of either run's final status (:func:`far_from_changes`);
+a bulk quantity's samples within reach of one are left out of its
+``kept_rms`` (:func:`status_changes`,
+:func:`~contactcore.estimate.caveats.beyond_reach`).
 
 For a law with history (unilateral, Coulomb) the profiles are the final
 increment's, and the status along Γ of the two runs is compared at
@@ -61,6 +64,20 @@ def change_points(xy: np.ndarray, statuses: list[np.ndarray]) -> np.ndarray:
     return np.array(pts).reshape(-1, 2)
 
 
+def status_changes(scene: Scene, results) -> np.ndarray:
+    """The points (k, 2) where the final status of any of ``results``
+    changes between neighbouring samples of Γ's own
+    :data:`~contactcore.tolerances.PROFILE_POINTS` (:func:`change_points`;
+    the status a profile's tractions follow,
+    :func:`contactcore.profiles.interface_status`).  Under an exact law the
+    solution there is no smoother than H^{5/2-ε}: its stress, in the bulk
+    beside the point too, is not ``C h^p`` for a coarse run within reach
+    of it (:func:`far_from_changes` for Γ's tractions,
+    :func:`~contactcore.estimate.caveats.near_status_changes` for the bulk)."""
+    gamma = _samples(scene)
+    return change_points(gamma, [interface_status(scene, r.fields, gamma, r.interface) for r in results])
+
+
 def far_from_changes(scene: Scene, results, profiles: list[ProfileData], h: float) -> dict[str, np.ndarray]:
     """``{profile id: mask}`` for each profile with a traction on Γ
     (:data:`~contactcore.estimate.orders.TRACTIONS`): its samples farther
@@ -72,11 +89,11 @@ def far_from_changes(scene: Scene, results, profiles: list[ProfileData], h: floa
     as smooth as between Γ's status changes, and an exact law's traction
     takes its bonded order
     (:func:`~contactcore.estimate.orders.smooth_order`)."""
-    out, gamma = {}, _samples(scene)
+    out = {}
     # Γ's own changes, along all of Γ: a profile that starts past one still lies near it (review19b: a
     # traction profile from x = 0.08 on tilt_unil_exact, whose status changes at x = 0.075, took 11
     # samples within two cells of it as smooth)
-    whole = change_points(gamma, [interface_status(scene, r.fields, gamma, r.interface) for r in results])
+    whole = status_changes(scene, results)
     for prof in profiles:
         if not set(TRACTIONS) & set(prof.names[3:]):
             continue
