@@ -1726,8 +1726,9 @@ USER_MESH_ON_GAMMA = 1e-11
 #: How far, in the coarse run's cells (its h), a profile sample of an exact
 #: law's traction on Γ must lie from every point where Γ's final status
 #: changes between neighbouring samples, in either of two runs, to be
-#: estimated at the bonded law's order (the degree) rather than at 1
-#: (:func:`contactcore.estimate.status.far_from_changes`).  Measured
+#: estimated at the orders of a law that never switches (degree 2: 2;
+#: degree 1, since deg1_36: 1.45, the balanced order of [1, 2]) rather
+#: than at 1 (:func:`contactcore.estimate.status.far_from_changes`).  Measured
 #: 2026-11-29 on a 2 x 1 bimaterial block sheared and reversed under exact
 #: Coulomb (fe P2 truth at h = 0.00625; docs/error-estimates.md, "Known
 #: limits"): at h = 0.05 -> 0.025 the degree-2 tractions' true errors

@@ -1,6 +1,6 @@
 """trac34 (2026-11-29): an exact law's traction on Γ estimated sample by
 sample: at the bonded law's order (the degree) far from Γ's status changes,
-at 1 near them (contactcore.estimate.orders.smooth_order,
+at 1 near them (contactcore.estimate.orders.smooth_range,
 contactcore.estimate.status.far_from_changes,
 contactcore.tolerances.STATUS_CHANGE_CELLS; docs/error-estimates.md,
 "Known limits")."""
@@ -18,14 +18,18 @@ from verification.closed_forms import layered_slip
 from verification.effectivity import exact_profiles, profile_rows
 
 
-def test_only_a_degree_two_exact_traction_takes_a_faster_order_far_from_status_changes():
+def test_an_exact_traction_takes_a_faster_order_far_from_status_changes():
+    """Degree 2 its degree; degree 1 (deg1_36) the range [1, 2] of a
+    degree-1 stress, whose balanced order is 1.45."""
     coulomb = make_law({"type": "coulomb", "mu": 0.3, "enforcement": "exact"})
     facts = methods.discretisation("fe")(degree=2).facts
-    assert est.smooth_order("tN", 2, facts, coulomb, True) == est.smooth_order("tT", 2, facts, coulomb, True) == 2
-    assert est.smooth_order("tN", 1, facts, coulomb, True) is None  # degree 1: the two orders are one
-    assert est.smooth_order("gN", 2, facts, coulomb, True) is None
-    assert est.smooth_order("tN", 2, facts, coulomb, False) is None  # no switch: already the degree
-    assert est.smooth_order("tN", 2, facts, make_law({"type": "coulomb", "mu": 0.3, "kN": 1e6, "kT": 1e6}),
+    assert est.smooth_range("tN", 2, facts, coulomb, True) == est.smooth_range("tT", 2, facts, coulomb, True) == (2, 2)
+    assert est.smooth_range("tN", 1, facts, coulomb, True) == (1, 2)
+    assert est.smooth_range("gN", 2, facts, coulomb, True) is None
+    assert est.smooth_range("tN", 2, facts, coulomb, False) is None  # no switch: order_range already gives it
+    assert est.order_range("tN", 1, facts, coulomb, False) == (1, 2) and est.order_range("tN", 1, facts, coulomb,
+                                                                                           True) == (1, 1)
+    assert est.smooth_range("tN", 2, facts, make_law({"type": "coulomb", "mu": 0.3, "kN": 1e6, "kT": 1e6}),
                             True) is None
 
 
@@ -101,3 +105,49 @@ def test_a_profile_that_starts_past_a_status_change_still_sees_it():
 TILT = "tests/scenes/tilt_unil_exact.toml"
 PART_START = 0.08
 PART_H = 0.05
+
+
+def test_a_degree_one_exact_traction_whose_status_never_changes_takes_the_balanced_order_of_one_and_two():
+    """deg1_36: tests/scenes/wedge_held.toml under exact Coulomb slips whole
+    (Γ's status never changes), fe P1 at h = 0.1 -> 0.05 against fe P2 at
+    WEDGE_HELD_TRUTH_H.  Its t_N, t_T, Nitsche's multiplier as a mean per
+    piece of Γ, took order 1 and read WEDGE_HELD_P1_AT_ORDER_ONE times their
+    error; at 1.45, the balanced order of [1, 2] (a degree-1 stress's range:
+    contactcore.estimate.orders.order_range), 1/√3 of that, in
+    [0.5, 2].  Still warned (exact tractions)."""
+    from contactcore import load_scene
+    from verification.effectivity import scene_rows, scene_truth
+    scene = load_scene(WEDGE_HELD)
+    rows = scene_rows(scene, ("fe", 1), tol.LAYERED_EXACT_RUNS[0], scene_truth(scene, tol.WEDGE_HELD_TRUTH_H))
+    got = {r["quantity"]: r for r in rows if r["quantity"] in ("tN", "tT")}
+    for q, r in got.items():
+        assert r["order"] == pytest.approx(est.balanced_order(1, 2)) and r["warned"], (q, r)
+        assert tol.EFFECTIVITY[0] <= r["effectivity"] <= tol.EFFECTIVITY[1], (q, r["effectivity"])
+        at_order_one = r["effectivity"] * (2 ** r["order"] - 1)  # the same differences over 2^1 - 1
+        assert at_order_one == pytest.approx(tol.WEDGE_HELD_P1_AT_ORDER_ONE[q], rel=tol.WEDGE_HELD_P1_DRIFT)
+
+
+def test_a_degree_one_exact_traction_takes_order_one_only_near_status_changes():
+    """deg1_36: exact C-coulomb (docs/scenes/C-coulomb-exact.toml; Γ opens
+    and closes, sticks and slips), fe P1 at h = 0.1 -> 0.05: C4's t_N, t_T
+    take 1 within STATUS_CHANGE_CELLS coarse cells of a status change and
+    1.45 (``far_order``) beyond, sample by sample."""
+    from contactcore import load_scene
+    scene = load_scene(C_EXACT)
+    h = tol.LAYERED_EXACT_RUNS[0]
+    results = [solve(scene, methods.discretisation("fe")(degree=1), hk) for hk in (h, h / 2)]
+    estimate = est.estimate_runs(scene, results, energy=False)
+    coarse = {p.id: p for p in sample_profiles(scene, results[0].fields, results[0].interface)}
+    fine = {p.id: p for p in estimate.sampled}
+    far = est.far_from_changes(scene, results, estimate.sampled, h)["C4"]
+    assert 0 < far.sum() < len(far)
+    bal = est.balanced_order(1, 2)
+    for q in ("tN", "tT"):
+        e = estimate.profiles["C4"][q]
+        assert e.order == 1 and e.far_order == pytest.approx(bal)
+        diff = np.abs(fine["C4"].columns[q] - coarse["C4"].columns[q])
+        assert np.allclose(e.error, diff * np.where(far, 1 / (2 ** bal - 1), 1.0))
+
+
+WEDGE_HELD = "tests/scenes/wedge_held.toml"
+C_EXACT = "docs/scenes/C-coulomb-exact.toml"

@@ -1684,3 +1684,15 @@ STATUS_CROSSING_SPRINGS_H = 0.1
 #: left out near the crossing: measured 0.99 within one coarse cell
 #: (2026-11-29), so at least nine tenths within two.
 STATUS_CROSSING_ERROR_SHARE = 0.9
+
+# --- deg1_36 (2026-11-29): a degree-1 exact traction at [1, 2] where Γ's status does not change (tests/test_estimate_exact_tractions.py) ---
+#: The truth's h (fe P2) for tests/scenes/wedge_held.toml's fe P1 at
+#: h = 0.1 -> 0.05: its t_N, t_T effectivities read 1.389, 0.986 against it
+#: and 1.424, 0.987 against h = 0.00625 (2.6 s of CPU against 9.1).
+WEDGE_HELD_TRUTH_H = 0.0125
+#: Their effectivities at order 1, the code before deg1_36 (the estimate
+#: at 1.45 times 2^1.45 - 1 = 1.732): t_N above 2, t_T inside.
+WEDGE_HELD_P1_AT_ORDER_ONE = {"tN": 2.406, "tT": 1.707}
+#: How far (relative) those may drift with the solver's round-off and
+#: small changes of the sampling before the test asks for a new measurement.
+WEDGE_HELD_P1_DRIFT = 0.05

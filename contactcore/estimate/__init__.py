@@ -42,7 +42,7 @@ from .energy import (EnergyEstimate, EnergyRule, direct_stress, energy_estimate,
                      recovered_stress, recovery_moves)
 from .extrapolation import (QuantityEstimate, balanced_order, cell_scale_part, observed_order, profile_estimates,
                             richardson, rms, roundoff_floor, sample_groups, three_run_order)
-from .orders import lower_end, order_range, polluted, smooth_order, theoretical_order
+from .orders import lower_end, order_range, polluted, smooth_range, theoretical_order
 from .runs import Estimate, estimate, estimate_runs, levels_of
 from .singular import (clamped_free_exponent, compliance_length, corner_exponents, exact_interface_ends, far_from_singular,
                        interface_end_exponents, kolosov, pollution_order, reflected, singular_points, singular_regions,
@@ -69,7 +69,7 @@ __all__ = [
     "EnergyEstimate", "EnergyRule", "direct_stress", "energy_estimate", "energy_norm", "energy_rule",
     "recovered_stress", "recovery_moves",
     # orders
-    "lower_end", "order_range", "polluted", "smooth_order", "theoretical_order",
+    "lower_end", "order_range", "polluted", "smooth_range", "theoretical_order",
     # singular
     "clamped_free_exponent", "compliance_length", "corner_exponents", "exact_interface_ends", "far_from_singular",
     "interface_end_exponents", "kolosov", "pollution_order", "reflected", "singular_points", "singular_regions",

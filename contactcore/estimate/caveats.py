@@ -54,10 +54,11 @@ quadrature's error may be most of the error, is named too
 (:func:`quadrature_energy`: the layered slip's 0.41).
 
 An exact law's traction on Γ (Nitsche's multiplier) estimated from two
-runs at order 1, the least theory allows it (at degree 2 only within
+runs where theory allows it order 1 (within
 :data:`~contactcore.tolerances.STATUS_CHANGE_CELLS` coarse cells of a
-status change, at 2 beyond:
-:func:`~contactcore.estimate.orders.smooth_order`), is most often too
+status change, at order 1; beyond, at 2 at degree 2 and at 1.45 of
+``[1, 2]`` at degree 1: :func:`~contactcore.estimate.orders.smooth_range`)
+is most often too
 large: its pieces converge faster (up to 13.7 times the error on
 grader17's tilted block, xfem P1), but not always (0.19 on a held-out
 wedge; :func:`exact_tractions`).  A warning claims a direction (too
@@ -174,14 +175,14 @@ def pollution_warning(scene: Scene, profiles: dict[str, dict[str, QuantityEstima
 def exact_tractions(scene: Scene, profiles: dict[str, dict[str, QuantityEstimate]]) -> list[str]:
     """The ``PID:Q`` of an exact law's tractions on Γ (Nitsche's
     multiplier, :data:`~contactcore.estimate.orders.TRACTIONS`) estimated
-    from two runs at order 1 or less: the degree-1 multiplier, or any
-    degree's where Γ's status switches
-    (:func:`~contactcore.estimate.orders.theoretical_order`), at degree 2
-    only at the samples within
-    :data:`~contactcore.tolerances.STATUS_CHANGE_CELLS` coarse cells of a
-    status change (beyond them its degree:
-    :func:`~contactcore.estimate.orders.smooth_order`).  That is the
-    least order theory allows it; its pieces converge faster (1.4-3 on
+    from two runs whose orders theory allows reach down to 1: the
+    degree-1 multiplier (``[1, 2]`` where Γ's status never changes, 1 where
+    it does), or any degree's where Γ's status switches
+    (:func:`~contactcore.estimate.orders.theoretical_order`), at the
+    samples within :data:`~contactcore.tolerances.STATUS_CHANGE_CELLS`
+    coarse cells of a status change at 1 (beyond them at 2 at degree 2,
+    1.45 at degree 1: :func:`~contactcore.estimate.orders.smooth_range`).
+    Order 1 is the least theory allows it; its pieces converge faster (1.4-3 on
     the held-out wedges; on a sheared and reversed block degree 2's t_N at
     2.3-2.5 beyond two coarse cells of a status change, 1.5-1.7 within,
     and xfem and efgm P1's at 2.5-2.6), so the estimate is
@@ -192,7 +193,7 @@ def exact_tractions(scene: Scene, profiles: dict[str, dict[str, QuantityEstimate
     if not _exact(scene.law):
         return []
     return [f"{pid}:{q}" for pid, qs in profiles.items() for q, e in qs.items()
-            if q in TRACTIONS and not e.observed and e.order <= 1]
+            if q in TRACTIONS and not e.observed and e.theory[0] <= 1]
 
 
 def exact_traction_warning(names: list[str]) -> list[str]:
@@ -204,11 +205,13 @@ def exact_traction_warning(names: list[str]) -> list[str]:
     estimates to warn of").  With degree 2 taken at 2 beyond
     :data:`~contactcore.tolerances.STATUS_CHANGE_CELLS` coarse cells of a
     status change (2026-11-29), 96 entries on four scenes read 0.09-8.51,
-    2 below 0.5 (docs/error-estimates.md, "Known limits")."""
+    2 below 0.5; with degree 1 at 1.45 beyond them and where Γ's status
+    never changes (deg1_36), its 72 entries on six scenes 0.69-6.80, none
+    below 0.5 (docs/error-estimates.md, "Known limits")."""
     if not names:
         return []
-    return [f"{', '.join(names)}: an exact law's Γ traction at order 1 (degree 2: near status changes) from two "
-            f"runs: often too large (up to 13.7×), not always; {OBSERVE}{see('exact tractions')}"]
+    return [f"{', '.join(names)}: an exact Γ traction from two runs at order 1 near status changes (P1: 1.45 "
+            f"beyond): often too large (up to 13.7×), not always; {OBSERVE}{see('exact tractions')}"]
 
 
 def fast_gamma(profiles: dict[str, dict[str, QuantityEstimate]], facts: MethodFacts) -> list[str]:

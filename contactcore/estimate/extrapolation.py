@@ -50,7 +50,7 @@ from ..profiles import ProfileData
 from ..scene import Scene
 from ..scaling import Sizes
 from ..result import MethodFacts
-from .orders import STRESSES, TRACTIONS, lower_end, order_range, polluted, smooth_order
+from .orders import STRESSES, TRACTIONS, lower_end, order_range, polluted, smooth_range
 from .singular import far_from_singular, pollution_order, unknown_ends
 
 
@@ -227,7 +227,7 @@ def richardson(values: list[np.ndarray], theory: tuple[float, float], ratio: flo
     With ``far``, ``(mask, order)``, a two-run estimate takes that order at
     the samples of the mask and its own at the rest: an exact law's
     traction far from Γ's status changes
-    (:func:`~contactcore.estimate.orders.smooth_order`,
+    (:func:`~contactcore.estimate.orders.smooth_range`,
     :func:`~contactcore.estimate.status.far_from_changes`),
     ``|q_{h/2} − q_h| / (r^{p_i} − 1)`` with ``p_i`` the sample's order."""
     kept = slice(None) if kept is None or not np.any(kept) else kept
@@ -297,9 +297,10 @@ def profile_estimates(levels: list[list[ProfileData]], degree: int, facts: Metho
     (:func:`~contactcore.estimate.orders.lower_end`).  ``smooth``,
     ``{profile id: mask}``, holds the samples far from Γ's status changes
     (:func:`~contactcore.estimate.status.far_from_changes`), at which an
-    exact law's traction of degree 2 or more takes its bonded order
-    (:func:`~contactcore.estimate.orders.smooth_order`) from two runs,
-    and 1 at the rest."""
+    exact law's traction takes from two runs the balanced order of the
+    range it has where Γ's status does not change
+    (:func:`~contactcore.estimate.orders.smooth_range`: 2 at degree 2,
+    1.45 of ``[1, 2]`` at degree 1), and 1 at the rest."""
     out, law = {}, scene.law if scene else None
     pollution, sizes = pollution_order(scene), Sizes.of(scene) if scene is not None else None
     ends_unknown = unknown_ends(scene, h)
@@ -315,8 +316,8 @@ def profile_estimates(levels: list[list[ProfileData]], degree: int, facts: Metho
         out[pid] = {}
         for q in profs[-1].names[3:]:
             theory = order_range(q, degree, facts, law, switching, pollution)
-            far_order = smooth_order(q, degree, facts, law, switching)
-            far = (smooth[pid], far_order) if smooth and pid in smooth and far_order is not None else None
+            far_range = smooth_range(q, degree, facts, law, switching)
+            far = (smooth[pid], balanced_order(*far_range)) if smooth and pid in smooth and far_range else None
             out[pid][q] = richardson([p.columns[q] for p in profs], theory, coarse=coarse, kept=kept,
                                      floor=roundoff_floor(sizes, q),
                                      cells=cells if polluted(q, degree, facts, law, switching, pollution) else None,

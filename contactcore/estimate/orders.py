@@ -8,9 +8,8 @@ law's traction on Γ, which the law computes from the gaps
 (``t = k_N g_N`` …) not from the bulk stress; ``k`` for a stress (the H1
 rate); under an exact law, at most 2 for the gaps and 1 for the traction
 where Γ's status changes along it
-(:func:`~contactcore.estimate.status.switches`), except, for a degree-2
-traction, at the samples far from every point where it switches
-(:func:`smooth_order`).  A degree-1 stress that
+(:func:`~contactcore.estimate.status.switches`), except at the samples
+far from every point where it switches (:func:`smooth_range`).  A degree-1 stress that
 a method recovers (its options' ``recovered_stress``,
 :class:`~contactcore.result.MethodFacts`: xfem P1) converges as the
 displacement.
@@ -37,6 +36,21 @@ element methods*, 1995), and which holds at a sample is not known from
 two runs: its orders are ``[p, p + 1]`` (:func:`order_range`), of which
 the estimate takes the balanced one
 (:func:`~contactcore.estimate.extrapolation.balanced_order`).
+
+An exact law's degree-1 traction where Γ's status does not change (no
+switch, or far from every change: :func:`smooth_range`) takes the same
+range ``[1, 2]``.  It is Nitsche's multiplier read as its mean over each
+piece of Γ (:meth:`~contactcore.interface_path.InterfacePath.piece_means`),
+the consistent flux the bulk receives, and a consistent flux's weighted
+means superconverge (Wheeler, SINUM 11, 1974, at the nodes in one
+dimension; Carey, Chow & Seager, CMAME 50, 1985, on a boundary in two;
+Babuška & Miller, IJNME 20, 1984): how much of that a mean over one piece
+keeps, two runs cannot tell.  Measured 2026-11-29 beyond two coarse cells
+of every status change (docs/error-estimates.md, "Known limits"): the
+degree-1 tractions' true errors converged at 0.0-3.2 (fe, xfem and efgm
+P1 on six scenes, 70 entries), half of them at 1.3-2.0; at order 1 their
+estimates read up to 8.5 times the error, and 6 of the 24 entries of the
+two scenes that never switch lay in [0.5, 2], at 1.45 20 (none below 0.5).
 
 numpy only; no method is imported or named: what this module must know
 of one, it reads from the run's :class:`~contactcore.result.MethodFacts`
@@ -74,10 +88,9 @@ def theoretical_order(quantity: str, degree: int, facts: MethodFacts = MethodFac
     (:func:`~contactcore.estimate.status.switches`): no such point, the bonded
     law's rates."""
     if _exact(law):
-        switches = not law.is_linear and switching is not False
         if quantity in TRACTIONS:
-            return 1 if switches else degree
-        if quantity in GAPS and switches:
+            return 1 if _switches(law, switching) else degree
+        if quantity in GAPS and _switches(law, switching):
             return min(degree + 1, 2)
     if quantity in DISPLACEMENT_LIKE or facts.recovered_stress:
         return degree + 1
@@ -97,12 +110,13 @@ def order_range(quantity: str, degree: int, facts: MethodFacts = MethodFacts(), 
                 switching: bool | None = None, pollution: float = np.inf) -> tuple[float, float]:
     """The orders theory allows a profile quantity: ``(p, p)`` with ``p``
     the :func:`theoretical_order`, ``(p, p + 1)`` for a stress of a degree
-    in :data:`SUPERCONVERGENT_DEGREES` (module doc), ``(pollution, p)``
+    in :data:`SUPERCONVERGENT_DEGREES` and for an exact law's traction of
+    such a degree where Γ's status never changes (module doc), ``(pollution, p)``
     for a displacement, a gap or a penalty law's traction whose ``p``
     exceeds the scene's
     :func:`~contactcore.estimate.singular.pollution_order`."""
     p = theoretical_order(quantity, degree, facts, law, switching)
-    if quantity in STRESSES and degree in SUPERCONVERGENT_DEGREES:
+    if degree in SUPERCONVERGENT_DEGREES and (quantity in STRESSES or _smooth_multiplier(quantity, law, switching)):
         return (p, p + 1)
     polluted = quantity in DISPLACEMENT_LIKE and not (quantity in TRACTIONS and _exact(law))
     return (pollution, p) if polluted and pollution < p else (p, p)
@@ -149,23 +163,40 @@ def lower_end(quantity: str, theory: tuple[float, float], unknown_ends: bool) ->
     return unknown_ends and quantity in BULK_DISPLACEMENTS and theory[0] < theory[1]
 
 
-def smooth_order(quantity: str, degree: int, facts: MethodFacts = MethodFacts(), law=None,
-                 switching: bool | None = None) -> int | None:
-    """The order an exact law's traction on Γ takes from two runs at a
+def smooth_range(quantity: str, degree: int, facts: MethodFacts = MethodFacts(), law=None,
+                 switching: bool | None = None) -> tuple[float, float] | None:
+    """The orders an exact law's traction on Γ takes from two runs at a
     sample far from every point where Γ's status changes
-    (:func:`~contactcore.estimate.status.far_from_changes`): the bonded
-    law's, ``degree`` (:func:`theoretical_order` with ``switching``
-    False), where it exceeds the switching law's 1; None for any other
-    quantity, law or degree (degree 1: the two orders are one).  The
-    solution's H^{5/2-ε} limit is local to the points where the status
-    changes: between them it is as smooth as the data, and the pieces of a
-    degree-2 multiplier converged at 1.5-2.5 beyond two coarse cells of a
-    change (:data:`~contactcore.tolerances.STATUS_CHANGE_CELLS`)."""
-    if quantity not in TRACTIONS or not _exact(law):
+    (:func:`~contactcore.estimate.status.far_from_changes`): the
+    :func:`order_range` of a law whose status never changes there,
+    ``(degree, degree)``, or ``(1, 2)`` at degree 1 (module doc), where
+    its upper end exceeds the switching law's 1; None for any other
+    quantity or law, or where the law never switched (every sample is then
+    far, and :func:`order_range` already gives it).  The solution's
+    H^{5/2-ε} limit is local to the points where the status changes:
+    between them it is as smooth as the data, and the pieces of a degree-2
+    multiplier converged at 1.5-2.5 beyond two coarse cells of a change
+    (:data:`~contactcore.tolerances.STATUS_CHANGE_CELLS`), a degree-1
+    multiplier's at 0.0-3.2 (half of them 1.3-2.0)."""
+    if quantity not in TRACTIONS or not _switches(law, switching):
         return None
     near = theoretical_order(quantity, degree, facts, law, switching)
-    far = theoretical_order(quantity, degree, facts, law, switching=False)
-    return far if far > near else None
+    far = order_range(quantity, degree, facts, law, switching=False)
+    return far if far[1] > near else None
+
+
+def _switches(law, switching: bool | None) -> bool:
+    """Whether an exact ``law``'s status may change along Γ: a law that
+    switches (every exact law but ``bonded``) whose runs did not show one
+    status only (``switching`` False: :func:`theoretical_order`)."""
+    return _exact(law) and not law.is_linear and switching is not False
+
+
+def _smooth_multiplier(quantity: str, law, switching: bool | None) -> bool:
+    """Whether ``quantity`` is an exact law's traction on Γ (Nitsche's
+    multiplier) where Γ's status never changes: read as a stress of the
+    degree, with its superconvergence (module doc)."""
+    return quantity in TRACTIONS and _exact(law) and not _switches(law, switching)
 
 
 def _exact(law) -> bool:

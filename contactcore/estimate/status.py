@@ -7,7 +7,8 @@ H^{5/2-ε} (Moussaoui & Khodja, Comm. PDE 17, 1992; Chouly, Hild & Renard,
 Math. Comp. 84, 2015; :func:`~contactcore.estimate.orders.theoretical_order`).
 
 That limit is local to the points where the status changes: an exact
-law's degree-2 traction takes its bonded order at the samples farther
+law's traction takes the orders of a law that never switches (degree 2:
+2; degree 1: 1.45 of ``[1, 2]``) at the samples farther
 than :data:`~contactcore.tolerances.STATUS_CHANGE_CELLS` coarse cells
 from every change of either run's final status (:func:`far_from_changes`);
 a bulk quantity's samples within reach of one are left out of its
@@ -87,8 +88,8 @@ def far_from_changes(scene: Scene, results, profiles: list[ProfileData], h: floa
     all of Γ (:func:`change_points`; the status a profile's tractions follow,
     :func:`contactcore.profiles.interface_status`).  There the solution is
     as smooth as between Γ's status changes, and an exact law's traction
-    takes its bonded order
-    (:func:`~contactcore.estimate.orders.smooth_order`)."""
+    takes the orders of a law that never switches
+    (:func:`~contactcore.estimate.orders.smooth_range`)."""
     out = {}
     # Γ's own changes, along all of Γ: a profile that starts past one still lies near it (review19b: a
     # traction profile from x = 0.08 on tilt_unil_exact, whose status changes at x = 0.075, took 11
