@@ -1,6 +1,6 @@
 """trac34 (2026-11-29): an exact law's traction on Γ estimated sample by
-sample: at the bonded law's order (the degree) far from Γ's status changes,
-at 1 near them (contactcore.estimate.orders.smooth_range,
+sample: far from Γ's status changes at a law's order that never switches
+(degree 2: 2; degree 1: the range [1, 2], deg1_36), at 1 near them (contactcore.estimate.orders.smooth_range,
 contactcore.estimate.status.far_from_changes,
 contactcore.tolerances.STATUS_CHANGE_CELLS; docs/error-estimates.md,
 "Known limits")."""
