@@ -5,7 +5,7 @@ Heaviside jump is linear in each cut cell and cannot vanish at every point
 of a curved Γ, so Nitsche's traction t = τ + γ g carries a residue γ g in
 proportion to β: Γ's t_N zigzags from point to point
 (contactcore.tolerances.XFEM_P1_CURVED_STABILISATION), and xfem P1 warns
-above the default β (docs/warnings.md)."""
+above β = 5 (docs/warnings.md)."""
 import numpy as np
 import pytest
 
@@ -90,7 +90,7 @@ def test_xfem_p1_warns_where_a_large_beta_zigzags_a_curved_gammas_traction(tmp_p
 
 @pytest.mark.parametrize("case", ["degree 2", "default beta", "penalty"])
 def test_the_warning_is_for_xfem_p1_exact_above_the_default_only(tmp_path, case):
-    """Not at degree 2, not at the default β, not for a penalty law."""
+    """Not at degree 2, not at the default β (3, below the threshold), not for a penalty law."""
     scene = _disc(tmp_path, LARGE_BETA)
     assert curved_stabilisation_warnings(scene, 1)
     if case == "degree 2":

@@ -244,7 +244,7 @@ def curved_stabilisation_warnings(scene, degree: int) -> list[str]:
             f"{tol.XFEM_P1_CURVED_STABILISATION:g}: a cut cell's linear jump cannot vanish all along a curve, and γ "
             "times its residue makes Γ's tractions oscillate point to point in proportion to β (a stiff disc in a "
             "ring at β = 30, h = R/10: t_N 31 % off at a point, t_T up to 41 % of |t_N|, 4.9 and 5.1 % at β = 3); "
-            "use the default stabilisation, degree 2 or fe"]
+            f"use a stabilisation of {tol.XFEM_P1_CURVED_STABILISATION:g} or less, degree 2 or fe"]
 
 def with_traction(interface: InterfaceOperator, space) -> InterfaceOperator:
     """``interface`` with ``S`` and ``γ₀`` when the scene's law is enforced
