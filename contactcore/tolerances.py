@@ -803,6 +803,26 @@ NITSCHE_STABILISATION = 3.0
 #: as far (1.2e-7 m against 2.4e-9 m).
 NITSCHE_STABILISATION_RANGE = (NITSCHE_STABILISATION / 10, NITSCHE_STABILISATION * 10)
 
+#: xfem P1 warns when an exact law's Γ is curved and the scene's
+#: ``stabilisation`` β exceeds this:
+#: the P1 Heaviside jump is linear in each cut cell, so it cannot vanish at
+#: every Γ point of the cells along a curve (more jump constraints than
+#: enriched unknowns: Moës, Béchet & Tourbier 2006; Béchet, Moës & Wohlmuth
+#: 2009), and Nitsche's traction t = τ + γ g carries a residue γ g that
+#: grows like β while the consistent flux τ does not move.  Measured
+#: 2026-11-29 on a stiff disc (r = 0.5, E = 2e11) in a ring (E = 7e10,
+#: outer pressure, exact unilateral = bonded, Lamé's t_N): at h = 0.05 the
+#: worst point's t_N is 2.4 / 2.9 / 4.9 / 10.8 / 31.2 % off at β = 0.3 / 1
+#: / 3 / 10 / 30 and τ_N alone 2.5 % at 3 and 2.9 % at 30 (γ g 32 %); β's
+#: move of Γ's t_N, t_T profiles over h → h/2's at β = 3 is 0.22-0.84 for
+#: β = 0.3 and 1, 0.60-0.90 for β = 5 (the largest measured within the
+#: target, so the threshold), 0.90-1.95 for β = 10 and 3.4-6.7 for β = 30
+#: (h = 0.05, 0.025); the stress beside Γ 0.23 → 1.09 % at β = 3 → 30.  fe P1, efgm P1
+#: and xfem P2 at β = 30 stay within 0.3 % on Γ's profile.  The jump read on each
+#: cell's chord, or as its mean over the cell's piece, still left β = 30's
+#: t_T profile 12.9-15 % off (docs/contact-enforcement.md).
+XFEM_P1_CURVED_STABILISATION = 5.0
+
 #: Newton on one load increment has converged when the residual of the free
 #: equations satisfies ||R||_inf <= NEWTON_RTOL * F, F the larger of the
 #: external and internal nodal forces (infinity norms).  A piecewise-linear

@@ -45,7 +45,7 @@ from .kernels import band_kernels, interface_operator, side_strains
 from .space import MIN_CUT_FRACTION, EnrichedFunctionSpace
 from .supports import support_rows
 from ..quiet import quiet_jit
-from .traction import contrast_warnings, with_traction
+from .traction import contrast_warnings, curved_stabilisation_warnings, with_traction
 
 METHOD = XFEM.name
 
@@ -80,7 +80,8 @@ def build(scene: Scene, options: XFEM, resolution: Resolution, timings: Timings)
                              comm=msh.comm, petsc_options=options.petsc_options,
                              estimate_condition=options.estimate_condition, what=f"scene {scene.name} (xfem)")
     return Built(system, lambda x: XFEMFields(space, x), 2 * space.numbering.index_map.size_global, h=h,
-                 warnings=space.cut.thin_body_warnings() + space.cells.snap_warnings() + contrast_warnings(scene, degree), record=_record(space, h, background_cell(scene, options.cell)))
+                 warnings=space.cut.thin_body_warnings() + space.cells.snap_warnings() + contrast_warnings(scene, degree)
+                 + curved_stabilisation_warnings(scene, degree), record=_record(space, h, background_cell(scene, options.cell)))
 
 
 def _record(space: EnrichedFunctionSpace, h: float, cell: str) -> dict:

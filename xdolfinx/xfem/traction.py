@@ -230,6 +230,22 @@ def contrast_warnings(scene, degree: int) -> list[str]:
             "with μ = 0.2 where none should); use degree 2 or fe, or refine h"]
 
 
+def curved_stabilisation_warnings(scene, degree: int) -> list[str]:
+    """A warning where xfem P1 enforces an exact law on a curved Γ with a
+    ``stabilisation`` β above
+    :data:`~contactcore.tolerances.XFEM_P1_CURVED_STABILISATION`: the cells'
+    linear jumps cannot vanish at every point of a curved Γ, and the
+    residue ``g`` times ``γ = β γ₀`` makes Nitsche's traction ``t = τ + γ g``
+    oscillate from point to point, in proportion to β (measured there)."""
+    if degree != 1 or not is_exact(scene.law) or scene.interface.straight_in(scene.domain) \
+            or scene.law.stabilisation <= tol.XFEM_P1_CURVED_STABILISATION:
+        return []
+    return [f"xfem P1 with an exact law on a curved Γ at stabilisation {scene.law.stabilisation:g}, above "
+            f"{tol.XFEM_P1_CURVED_STABILISATION:g}: a cut cell's linear jump cannot vanish all along a curve, and γ "
+            "times its residue makes Γ's tractions oscillate point to point in proportion to β (a stiff disc in a "
+            "ring at β = 30, h = R/10: t_N 31 % off at a point, t_T up to 41 % of |t_N|, 4.9 and 5.1 % at β = 3); "
+            f"use a stabilisation of {tol.XFEM_P1_CURVED_STABILISATION:g} or less, degree 2 or fe"]
+
 def with_traction(interface: InterfaceOperator, space) -> InterfaceOperator:
     """``interface`` with ``S`` and ``γ₀`` when the scene's law is enforced
     exactly, else as it is."""
