@@ -35,6 +35,7 @@ numpy and scipy only; no method is imported.
 """
 from .caveats import (beyond_reach, cell_scale_orders, cell_scale_warnings, curved_layer, curved_layer_warning,
                       exact_traction_warning, exact_tractions, fast_gamma, fast_gamma_warning, feature_size, order_mismatch,
+                      observed_exact_traction_warning, observed_exact_tractions, slow_halving, slow_halving_warning,
                       order_warnings, pollution_warning, quadrature_energy, recovery_floor, residue_warnings, residues,
                       split_cell_share, split_cell_share_warning, stencil_radius, thinnest_body, unsettled,
                       unsettled_warnings)
@@ -60,6 +61,7 @@ __all__ = [
     "exact_traction_warning", "exact_tractions", "fast_gamma", "fast_gamma_warning", "feature_size", "order_mismatch", "order_warnings",
     "pollution_warning", "quadrature_energy", "recovery_floor", "residue_warnings", "residues", "split_cell_share",
     "split_cell_share_warning", "stencil_radius", "thinnest_body", "unsettled", "unsettled_warnings",
+    "observed_exact_traction_warning", "observed_exact_tractions", "slow_halving", "slow_halving_warning",
     # status
     "change_points", "far_from_changes", "status_along", "status_change", "status_warning", "switches",
     # energy
