@@ -1489,7 +1489,7 @@ ENERGY_GAUSS = 2
 ENERGY_RINGS = 1
 
 #: A Zienkiewicz–Zhu estimate on a curved Γ whose recovery, applied again
-#: to its own σ*, moves it by more than this share of η is named likely
+#: to its own σ*, moves it by more than this share of η is named, mostly
 #: too large (contactcore.estimate.caveats.recovery_floor): there the
 #: recovery's own error on the smooth stress (the quadratics of a patch
 #: against a 1/r² field cut by a circle) is much of η.  Measured
@@ -1498,7 +1498,9 @@ ENERGY_RINGS = 1
 #: form): the 10 entries with effectivity above 2 (2.27-4.70) read
 #: 0.60-0.78; the 5 entries in range above it read 0.58-0.76 and lie at
 #: 1.35-1.89; the other 9 (P1, 0.84-1.48; xfem P2, efgm P1 at 1.06, 0.97)
-#: 0.07-0.35.
+#: 0.07-0.35.  One named entry was too small: EFGM P2 on the same disc
+#: with Γ open (h = 0.025, 2026-11-29), 0.52 of η, effectivity 0.67, so
+#: the line claims no direction.
 ENERGY_RECOVERY_SHARE = 0.5
 
 #: Where an estimate is trusted, the true error lies within this factor of
@@ -1779,3 +1781,21 @@ STATUS_CHANGE_CELLS = 2.0
 #: same block under springs (kN = kT = E/h, its change at x = 0.69) read
 #: 0.85-1.41 on V: a crossing of Γ alone, or a penalty law, is no cause.
 STATUS_CHANGE_STENCILS = 2.0
+
+# --- est3_36 (2026-11-29): three runs whose last halving slowed ---
+#: The slowdown ``(d₂/d₁) / 2^{-p}`` (``d₁``, ``d₂`` the first and last
+#: halvings' RMS differences, ``p`` the least order theory allows; an
+#: observed order ``log₂ SLOW_HALVING`` = 0.32 below it) above which a
+#: three-run estimate is named (estimate.slow_halving).  Measured on the
+#: Lamé disc under exact unilateral contact (fe, xfem, efgm P1 and P2,
+#: h = 0.05, 0.025, 0.0125 against the closed form, 2026-11-29): the
+#: entries outside [0.5, 2] that no other line named had slowdowns 1.28
+#: (fe P1 σxx, 2.44), 1.39 and 1.43 (efgm P2 u_x, g_T: 0.47, 0.45, a
+#: floor in its finest run), 1.44 (xfem P2 σyy, 2.05), 1.69 and 1.70
+#: (fe P2 σyy, σxx: 3.40, 2.70); those inside, 0.59-1.95.  1.25 names the
+#: six.  On the closed forms (verification.effectivity's cases and
+#: variants, three runs from each variant's rungs: 99 entries, 30 outside)
+#: it names 15 (0.60-2.43), one outside and unwarned before (the
+#: pressurised rod's fe P1 σyy, 2.43 at 1.33); on A, B, C (three runs from
+#: h = 0.05, 114 entries) 6, all inside [0.5, 2] (0.78-1.36).
+SLOW_HALVING = 1.25

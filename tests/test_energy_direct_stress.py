@@ -107,7 +107,8 @@ def test_a_curved_gammas_recovery_floor_is_named_and_a_straight_one_has_none():
     """contactcore.estimate.caveats.recovery_floor (a held-out review,
     2026-11-29): on the pressurised rod (circular Γ) fe P2 at h = 0.1 reads
     an energy effectivity of 2.28, and recovering its σ* again moves it by
-    0.69 of η: the estimate is named likely too large; fe P1 there (0.92,
+    0.69 of η: the estimate is named (no direction since 2026-11-29: one
+    named entry read 0.67); fe P1 there (0.92,
     0.17 of η) is not; on scene A (a straight Γ) the check is not taken."""
     from contactcore import load_scene
     from contactcore import tolerances as core_tol

@@ -35,8 +35,9 @@ numpy and scipy only; no method is imported.
 """
 from .caveats import (beyond_reach, cell_scale_orders, cell_scale_warnings, curved_layer, curved_layer_warning,
                       exact_traction_warning, exact_tractions, fast_gamma, fast_gamma_warning, feature_size,
-                      near_status_changes, order_mismatch, order_warnings, pollution_warning, quadrature_energy,
-                      recovery_floor, residue_warnings, residues, split_cell_share, split_cell_share_warning,
+                      near_status_changes, observed_exact_traction_warning, observed_exact_tractions, order_mismatch,
+                      order_warnings, pollution_warning, quadrature_energy, recovery_floor, residue_warnings, residues,
+                      slow_halving, slow_halving_warning, split_cell_share, split_cell_share_warning,
                       status_change_warnings, stencil_radius, thinnest_body, unsettled, unsettled_warnings)
 from .energy import (EnergyEstimate, EnergyRule, direct_stress, energy_estimate, energy_norm, energy_rule,
                      recovered_stress, recovery_moves)
@@ -59,8 +60,9 @@ __all__ = [
     # caveats
     "beyond_reach", "cell_scale_orders", "cell_scale_warnings", "curved_layer", "curved_layer_warning",
     "exact_traction_warning", "exact_tractions", "fast_gamma", "fast_gamma_warning", "feature_size",
-    "near_status_changes", "order_mismatch", "order_warnings", "pollution_warning", "quadrature_energy",
-    "recovery_floor", "residue_warnings", "residues", "split_cell_share", "split_cell_share_warning",
+    "near_status_changes", "observed_exact_traction_warning", "observed_exact_tractions", "order_mismatch",
+    "order_warnings", "pollution_warning", "quadrature_energy", "recovery_floor", "residue_warnings", "residues",
+    "slow_halving", "slow_halving_warning", "split_cell_share", "split_cell_share_warning",
     "status_change_warnings", "stencil_radius", "thinnest_body", "unsettled", "unsettled_warnings",
     # status
     "change_points", "far_from_changes", "status_along", "status_change", "status_changes", "status_warning",

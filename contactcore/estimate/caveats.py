@@ -214,6 +214,68 @@ def exact_traction_warning(names: list[str]) -> list[str]:
             f"beyond): often too large (up to 13.7×), not always; {OBSERVE}{see('exact tractions')}"]
 
 
+def observed_exact_tractions(scene: Scene, profiles: dict[str, dict[str, QuantityEstimate]]) -> list[str]:
+    """The ``PID:Q`` of an exact law's tractions on Γ estimated from three
+    runs (an observed order) where theory allows them order 1: the cause
+    of :func:`exact_tractions` does not go with a third run.  Where the
+    multiplier's error varies from sample to sample unlike from run to
+    run, its runs' difference ``q_{h/2} − q_h`` is about ``(1 + 2^{-2p})^½``
+    times the coarser run's error, not ``1 − 2^{-p}`` times it: the RMS
+    ratio of two such differences still shows ``p`` (1.07-1.21 observed
+    against 1), but Richardson at ``p`` = 1 then reads
+    ``(2^{2p} + 1)^½ / (2^p − 1)`` = 2.24 times the error, whatever the
+    number of runs (the Lamé disc under exact unilateral contact,
+    h = 0.05, 0.025, 0.0125: degree 1's t_N, t_T 1.91-2.47 from three runs,
+    2.07-2.53 from two; :func:`observed_exact_traction_warning`)."""
+    if not _exact(scene.law):
+        return []
+    return [f"{pid}:{q}" for pid, qs in profiles.items() for q, e in qs.items()
+            if q in TRACTIONS and e.observed and e.theory[0] <= 1]
+
+
+def observed_exact_traction_warning(names: list[str]) -> list[str]:
+    """One line naming :func:`observed_exact_tractions`' quantities,
+    without a direction: their six entries on the Lamé disc read 1.91-2.47
+    (2026-11-29), one scene only."""
+    if not names:
+        return []
+    return [f"{', '.join(names)}: an exact Γ traction that theory allows order 1, from three runs: its "
+            f"cell-to-cell error differs run to run (1.91-2.47× on a Lamé disc){see('exact tractions')}"]
+
+
+def slow_halving(profiles: dict[str, dict[str, QuantityEstimate]]) -> dict[str, float]:
+    """``{PID:Q: slowdown}`` of the three-run estimates whose last halving's
+    difference fell by much less than the first's: with ``d₁ = ‖q_{h/2} −
+    q_h‖``, ``d₂ = ‖q_{h/4} − q_{h/2}‖`` (RMS, the observed order's) and
+    ``p`` the least order theory allows, the slowdown
+    ``(d₂/d₁) / 2^{-p} = 2^{p − p_obs}`` exceeds
+    :data:`~contactcore.tolerances.SLOW_HALVING`; those
+    :func:`order_mismatch` names already are left to it.  A floor in the
+    finest run's error (EFGM P2's between h = 0.025 and 0.0125 on the
+    Lamé disc: its stresses' errors 0.0029 → 0.0039 % of σ) shows only as
+    a modestly slow last halving (2.49 and 2.52 against 3): the balanced
+    order then reads 0.45-0.47 of the error; a coarse run pre-asymptotic
+    shows the same way and over-estimates (fe P2's σxx, σyy 2.70, 3.40 at
+    1.24 against 2).  An indication, off either way."""
+    out = {}
+    for pid, qs in profiles.items():
+        for q, e in qs.items():
+            if e.observed and not order_mismatch(e) and 2.0 ** (e.theory[0] - e.measured) > tol.SLOW_HALVING:
+                out[f"{pid}:{q}"] = float(2.0 ** (e.theory[0] - e.measured))
+    return out
+
+
+def slow_halving_warning(found: dict[str, float]) -> list[str]:
+    """One line naming :func:`slow_halving`'s quantities, each with its
+    slowdown, without a direction (0.45-3.40 times the error on the Lamé
+    disc's 26 entries it named from h = 0.05, 2026-11-29)."""
+    if not found:
+        return []
+    names = ", ".join(f"{k} ({v:.2f})" for k, v in found.items())
+    return [f"{names}: last halving's difference slowed (× theory's 2^-p): a floor or a pre-asymptotic "
+            f"coarse run, off either way{see('slow halving')}"]
+
+
 def fast_gamma(profiles: dict[str, dict[str, QuantityEstimate]], facts: MethodFacts) -> list[str]:
     """The ``PID:Q`` of the gaps and tractions on Γ (:data:`GAMMA`) of a
     method and degree whose ``facts`` say ``fast_gamma`` (EFGM P1:
@@ -731,11 +793,14 @@ def recovery_floor(energy: EnergyEstimate | None) -> list[str]:
     """One line where the recovery's own error may be much of the
     Zienkiewicz–Zhu estimate: on a curved Γ, a second recovery of σ*
     moves it by more than :data:`~contactcore.tolerances.ENERGY_RECOVERY_SHARE`
-    of η (:func:`~contactcore.estimate.energy.recovery_moves`)."""
+    of η (:func:`~contactcore.estimate.energy.recovery_moves`).  No
+    direction: of the 16 entries it named, 15 read 1.35-4.70 times the
+    error, but EFGM P2's on a disc whose Γ is open 0.67 (2026-11-29)."""
     if energy is None or energy.recovery is None or not energy.recovery > tol.ENERGY_RECOVERY_SHARE * energy.eta:
         return []
     return [f"energy (ZZ): on this curved Γ the recovery's own error is much of the estimate (a second recovery "
-            f"moves it by {energy.recovery / energy.eta:.2g} of η): likely too large; refine{see('recovery floor')}"]
+            f"moves it by {energy.recovery / energy.eta:.2g} of η): off either way; refine"
+            f"{see('recovery floor')}"]
 
 
 def quadrature_energy(method: str, degree: int, facts: MethodFacts, energy: EnergyEstimate | None) -> list[str]:

@@ -28,6 +28,7 @@ from .caveats import (beyond_reach, cell_scale_orders, cell_scale_warnings, exac
                       curved_layer, curved_layer_warning, ENERGY_KEY, near_status_changes, status_change_warnings,
                       quadrature_energy, recovery_floor,
                       split_cell_share, split_cell_share_warning)
+from .caveats import observed_exact_traction_warning, observed_exact_tractions, slow_halving, slow_halving_warning
 from .energy import EnergyEstimate, energy_estimate
 from .extrapolation import QuantityEstimate, profile_estimates
 from .orders import _exact
@@ -57,7 +58,9 @@ class Estimate:
     :data:`~contactcore.estimate.caveats.ENERGY_KEY` where
     :func:`~contactcore.estimate.caveats.quadrature_energy` or
     :func:`~contactcore.estimate.caveats.recovery_floor` applies, and with three
-    runs :func:`~contactcore.estimate.caveats.order_mismatch`) or not to be
+    runs :func:`~contactcore.estimate.caveats.order_mismatch`,
+    :func:`~contactcore.estimate.caveats.observed_exact_tractions` and
+    :func:`~contactcore.estimate.caveats.slow_halving`: :func:`three_run_caveats`) or not to be
     trusted (:func:`~contactcore.estimate.caveats.residues`); ``kept``,
     ``{PROFILE: {QUANTITY: mask}}``, the samples each quantity's estimate
     is summarised over (``kept_rms``): away from the singular points and
@@ -130,6 +133,7 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     split = split_cell_share(scene, levels, profiles, exclude, results[-1].degree)
     nitsche = exact_tractions(scene, profiles)
     fast = fast_gamma(profiles, facts)
+    observed = three_run_caveats(scene, profiles)
     warnings = (order_warnings(profiles) + pollution_warning(scene, profiles) + exact_traction_warning(nitsche)
                 + fast_gamma_warning(fast, results[-1].method, results[-1].degree, len(levels) > 2)
                 + unsettled_warnings(found, hs[-2], feature_size(scene), scene.user.units.length,
@@ -137,7 +141,7 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
                 + curved_layer_warning(layer, hs[-2], scene.user.units.length)
                 + split_cell_share_warning(split)
                 + cell_scale_warnings(rough, hs[-2:], fast, scene.user.units.length)
-                + residue_warnings(residue, len(levels) > 2))
+                + residue_warnings(residue, len(levels) > 2) + observed[0])
     status = None
     if scene.law.has_history or not scene.law.is_linear:
         status = status_change(scene, results[-2], results[-1], hs[-2:])
@@ -157,10 +161,19 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     return Estimate(hs, profiles, zz, status, warnings + caveat, levels[-1],
                     {k for v in found.values() for k in v} | set(layer) | set(rough) | set(residue) | set(nitsche)
                     | set(split)
-                    | set(fast) | moved | {k for k, (_, capped) in near.items() if capped}
+                    | set(fast) | moved | {k for k, (_, capped) in near.items() if capped} | observed[1]
                     | ({ENERGY_KEY} if caveat else set())
                     | {f"{pid}:{q}" for pid, qs in profiles.items() for q, e in qs.items() if order_mismatch(e)},
                     kept)
+
+
+def three_run_caveats(scene: Scene, profiles: dict[str, dict[str, QuantityEstimate]]) -> tuple[list[str], set[str]]:
+    """The warnings of a three-run estimate beyond its order's
+    (:func:`~contactcore.estimate.caveats.observed_exact_tractions`,
+    :func:`~contactcore.estimate.caveats.slow_halving`) and the ``PID:Q``
+    they name; none for two runs."""
+    traction, slow = observed_exact_tractions(scene, profiles), slow_halving(profiles)
+    return (observed_exact_traction_warning(traction) + slow_halving_warning(slow)), set(traction) | set(slow)
 
 
 def estimate(scene: Scene, discretisation, h: float, levels: int = 2, *, exclude: float = 0.0, reuse=None,

@@ -1,0 +1,98 @@
+"""Three runs (``run --estimate 3``) keep the warnings whose cause a third
+run does not remove, and name a last halving that slowed
+(contactcore.estimate.caveats.observed_exact_tractions, slow_halving;
+docs/error-estimates.md, "The warnings")."""
+import numpy as np
+
+from contactcore import load_scene
+from contactcore import estimate as est
+from contactcore import tolerances as core_tol
+from contactcore.discretisation import solve
+from contactcore.estimate.runs import three_run_caveats
+from verification import methods
+from verification.agreement import default_exclusion
+import tolerances as tol
+from contactcore.estimate.energy import EnergyEstimate
+from test_estimate_warning_lines import BLOCK, _pointed
+
+#: The three runs' h of the synthetic quantities below, coarse to fine.
+HS = (0.1, 0.05, 0.025)
+
+
+def _named(warnings: list[str], key: str) -> list[str]:
+    """The lines of ``warnings`` that name ``key`` (``PID:Q``)."""
+    return [line for line in warnings if key in line.split(": ")[0].replace(" (", ", ").split(", ")]
+
+
+def test_three_runs_name_the_exact_tractions_two_runs_name():
+    """newuser32's block (exact Coulomb), fe P1 at h = 1, 0.5, 0.25 mm:
+    the two finest runs' estimate names Γ's t_N and t_T (an exact law's
+    traction at order 1); the three runs' estimate, whose order the third
+    run observes (1.2 against 1) but whose runs' differences still
+    over-state a multiplier's error varying from run to run, names them
+    too (before 2026-11-29 it named them in no line)."""
+    scene = load_scene(BLOCK)
+    results = [solve(scene, methods.discretisation("fe")(degree=1), h) for h in est.levels_of(scene.h, 3)]
+    two, three = (est.estimate_runs(scene, runs, default_exclusion(scene), energy=False)
+                  for runs in (results[1:], results))
+    for key in ("G:tN", "G:tT"):
+        assert _named(two.warnings, key) and not two.profiles["G"][key[2:]].observed
+        assert three.profiles["G"][key[2:]].observed
+        assert _named(three.warnings, key) and key in three.unsettled
+
+
+def _quantity(floor: float, theory: tuple[float, float] = (3.0, 3.0)) -> est.QuantityEstimate:
+    """A three-run estimate of a quantity converging as ``h^3`` whose
+    finest run carries a further error of ``floor`` times its own at
+    alternate samples (a floor of the finest run, as EFGM P2's)."""
+    x = np.linspace(0.0, 1.0, 11)
+    values = [x * h ** 3 for h in HS]
+    values[-1] = values[-1] + floor * HS[-1] ** 3 * (-1.0) ** np.arange(len(x))
+    return est.richardson(values, theory=theory)
+
+
+def test_a_last_halving_that_slowed_is_named_off_either_way():
+    """slow_halving: a floor in the finest run that slows the last
+    halving's difference by more than SLOW_HALVING against theory's 2^-p
+    is named (the old code left such an entry unwarned: the observed order
+    lies within ORDER_MISMATCH of theory's); the same runs without it are
+    not, nor an order far below theory (order_warnings' own); the line
+    claims no direction."""
+    clean, stalled, far = _quantity(0.0), _quantity(4.0), _quantity(16.0)
+    assert 2.0 ** (3.0 - stalled.measured) > core_tol.SLOW_HALVING and not est.order_mismatch(stalled)
+    assert est.order_mismatch(far)
+    found = est.slow_halving({"R": {"ux": stalled, "uy": clean, "sxx": far}})
+    assert list(found) == ["R:ux"] and found["R:ux"] > core_tol.SLOW_HALVING
+    line, = est.slow_halving_warning(found)
+    assert line.startswith("R:ux (") and "either way" in line
+    assert not est.slow_halving_warning({})
+
+
+def test_two_runs_get_no_three_run_caveat():
+    """three_run_caveats: an unobserved (two-run) estimate is named by
+    neither three-run line, whatever its law."""
+    scene = load_scene(BLOCK)
+    two = est.richardson([np.linspace(0.0, 1.0, 5) * (1.0 + h) for h in HS[:2]], theory=(1.0, 1.0))
+    assert three_run_caveats(scene, {"G": {"tN": two, "ux": two}}) == ([], set())
+
+
+def test_the_three_run_lines_are_short_and_point_to_their_rows():
+    """Each three-run line with two quantities named (with their figures)
+    is at most ESTIMATE_WARNING_CHARS and ends with its row of
+    docs/error-estimates.md, "The warnings"."""
+    names = ["G:gN", "G:gT"]
+    lines = (est.observed_exact_traction_warning(names)
+             + est.slow_halving_warning({k: 1.43 for k in names}))
+    assert len(lines) == 2
+    for line in lines:
+        _pointed(line)
+        assert len(line) <= tol.ESTIMATE_WARNING_CHARS, (len(line), line)
+
+
+def test_the_recovery_floor_claims_no_direction():
+    """recovery_floor: EFGM P2 on a disc whose Γ is open (h = 0.025) was
+    named at 0.52 of η with an energy effectivity of 0.67, too small,
+    where the line used to say "likely too large": it now says off either
+    way."""
+    line, = est.recovery_floor(EnergyEstimate(1.77e-2, 96.9, 1e-9, recovery=0.52 * 1.77e-2))
+    assert "either way" in line and "likely too large" not in line
