@@ -1704,3 +1704,12 @@ WEDGE_HELD_P1_DRIFT = 0.05
 #: than this factor, so a fix that makes the zigzag follow β no more than
 #: h does (and the warning moot) fails it and must withdraw the warning.
 XFEM_CURVED_ZIGZAG_GROWTH = 4.0
+
+
+# --- beta36 (2026-11-29): what β moves in efgm P2 (tests/test_beta_independence.py) ---
+#: Scene A exact unilateral at h = BETA_H, efgm P2, A2 (σyy on Γ): half the
+#: change of σyy⁺ − σyy⁻ from β to 10β over the change of the two sides'
+#: mean, largest kept sample: measured 0.19 at h = 0.05 (0.09, 0.06, 0.03
+#: at 0.025, 0.0125, 0.00625); A3's, a move of the jump, 1.74.  Half of
+#: 1.0 (the jump as large as the common move) keeps the two apart.
+EFGM_BETA_JUMP_SHARE = 0.5
