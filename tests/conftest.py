@@ -92,6 +92,28 @@ LONG_FOR_THE_DEFAULT = {
     "tests/test_exact.py::test_a_point_open_by_the_gap_is_open[2]": 1.1,
     "tests/test_factorisations.py::test_only_the_first_increment_factorises[efgm-exact]": 1.1,
     "tests/test_factorisations.py::test_a_factorisation_keeps_the_columns_it_is_worth[efgm-True]": 1.1,
+    # 2026-11-29, fifth list: the default took 125.9 s and 120.7 s wall (235 s CPU) on a quiet machine at
+    # 5bba10a (2252 tests); each keeps a sibling in the default (the cylinder's finer answer, its own
+    # fixture, is solved only here; the whole default suite runs again under a second OpenBLAS kernel in CI)
+    "tests/test_outside.py::test_a_finer_answer_agrees_everywhere[1]": 5.0,
+    "tests/test_outside.py::test_a_finer_answer_agrees_everywhere[2]": 0.1,
+    "tests/test_roundoff.py::test_stiff_cases_decide_alike_under_two_blas_kernels": 2.8,
+    "tests/test_estimate_warnings.py::test_the_layered_slips_efgm_p1_energy_estimate_is_named_where_its_quadrature_may_dominate": 2.7,
+    "tests/test_nitsche_operators.py::test_traction_on_two_ranks_is_the_serial_one[fe-1]": 1.9,
+    "tests/test_heldout_messages.py::test_the_run_names_the_pivot_of_a_pin_held_pull_in_the_scenes_own_coordinates": 1.6,
+    "tests/test_user_mesh.py::test_two_ranks_on_a_user_mesh_give_the_serial_numbers": 1.6,
+    "tests/test_agreement.py::test_agrees_with_the_reference[C-coulomb-xfem-2]": 1.3,
+    "tests/test_nitsche_contrast.py::test_xfem_p1_keeps_a_uniformly_compressed_circle_closed[0.05]": 0.8,
+    "tests/test_exact.py::test_a_proportional_load_gives_one_answer_whatever_its_increments[efgm-P1]": 0.8,
+    "tests/test_mpi_start.py::test_an_mpi_start_that_aborts_leaves_no_folder[fe]": 0.7,
+    "tests/test_glance.py::test_study_varies_the_load": 0.6,
+    "tests/test_study_gamma.py::test_the_studys_shares_are_increments_csvs_and_sum_to_one[30-0.1]": 0.6,
+    "tests/test_output.py::test_a_one_parameter_studys_column_carries_its_unit[angle-values1-degree]": 0.6,
+    "tests/test_output.py::test_a_one_parameter_studys_column_carries_its_unit[E_minus-values2-MPa]": 0.6,
+    "tests/test_factorisations.py::test_a_costly_correction_looks_ahead_first[xfem]": 0.6,
+    "tests/test_exact.py::test_a_disc_held_by_friction_alone_solves_at_every_h[xfem-0.025-3.0]": 0.6,
+    "tests/test_factorisations.py::test_corrections_give_the_factorised_answer[penalty]": 0.6,
+    "tests/test_efgm.py::test_interface_patch_at_the_quadrature_level[-65.0-quadratic]": 0.5,
 }
 
 

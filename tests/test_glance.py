@@ -73,7 +73,8 @@ def test_a_log_read_through_a_closed_pipe_does_not_abort_the_run(tmp_path):
     off under the command line: the run ends normally and writes its
     result, and nothing else is left."""
     proc = subprocess.Popen([sys.executable, "-m", "verification", "run", "A", "--method", "fe", "--h", "0.2",
-                             "--out", str(tmp_path / "out")], cwd=ROOT, stdout=subprocess.DEVNULL,
+                             "--no-plots", "--out", str(tmp_path / "out")], cwd=ROOT,
+                            stdout=subprocess.DEVNULL,
                             stderr=subprocess.PIPE)
     proc.stderr.readline()
     proc.stderr.close()  # the reader has gone

@@ -35,12 +35,19 @@ def _runs(scene, h, levels=2):
 
 @pytest.fixture(scope="module")
 def cylinder():
-    """fe P2 on the cylinder at H, H/2 (estimated) and H/4 (a finer answer)."""
+    """fe P2 on the cylinder at H and H/2, estimated."""
     scene = load_scene(CYLINDER)
-    coarse, fine, finer = _runs(scene, tol.OUTSIDE_H, 3)
-    estimate = est.estimate_runs(scene, [coarse, fine], default_exclusion(scene))
+    estimate = est.estimate_runs(scene, _runs(scene, tol.OUTSIDE_H), default_exclusion(scene))
     project = {p.id: p for p in estimate.sampled}
-    return scene, estimate, project, sampled(scene, finer)
+    return scene, estimate, project
+
+
+@pytest.fixture(scope="module")
+def finer(cylinder):
+    """fe P2 on the cylinder at H/4, a finer answer (about 5 s: its test is
+    in the slow stage, tests/conftest.py)."""
+    scene = cylinder[0]
+    return sampled(scene, known.solver("fe")(scene, tol.OUTSIDE_H / 4, degree=2))
 
 
 def _middle_third(s, span):
@@ -56,7 +63,7 @@ def _perturbed(project):
 
 
 def test_a_perturbed_middle_third_is_the_outside_codes_error(cylinder):
-    scene, estimate, project, _ = cylinder
+    scene, estimate, project = cylinder
     outside = _perturbed(project)
     table = judge(scene, outside_profiles(scene, outside), project, estimate, "fe P2")
     [row] = table.rows
@@ -75,7 +82,7 @@ def test_a_perturbed_middle_third_is_the_outside_codes_error(cylinder):
 def test_the_same_through_compare_outside_from_a_csv_in_any_order(cylinder, tmp_path):
     """The public route (solves H and H/2 itself) from a CSV whose rows run
     backwards, giving x, y and no s: the same verdicts as above."""
-    scene, estimate, project, _ = cylinder
+    scene, estimate, project = cylinder
     g = project["G"].columns
     tn = _perturbed(project)["G"]["tN"]
     path = tmp_path / "G.csv"
@@ -92,10 +99,10 @@ def test_the_same_through_compare_outside_from_a_csv_in_any_order(cylinder, tmp_
 
 
 @pytest.mark.parametrize("step", [1, 2])
-def test_a_finer_answer_agrees_everywhere(cylinder, step):
+def test_a_finer_answer_agrees_everywhere(cylinder, finer, step):
     """The project's answer at H/4 (all 101 samples, or every other one) as
     the outside code's: within its estimate everywhere, on Γ and the ray."""
-    scene, estimate, project, finer = cylinder
+    scene, estimate, project = cylinder
     outside = {pid: {c: v[::step] for c, v in p.columns.items()} for pid, p in finer.items()}
     table = judge(scene, outside_profiles(scene, outside), project, estimate, "fe P2")
     assert len(table.rows) == 7
@@ -212,7 +219,7 @@ def test_s_alone_is_said_and_a_wide_outside_region_hints_at_the_conventions(cyli
     reads `outside` all round Γ, with the hint to check s's unit and
     direction and the sign conventions; the perturbed middle third (a
     third of Γ) gets no such hint."""
-    scene, estimate, project, _ = cylinder
+    scene, estimate, project = cylinder
     g = project["G"].columns
     [row] = judge(scene, outside_profiles(scene, {"G": {"s": g["s"], "tN": -g["tN"]}}), project, estimate,
                   "fe P2").rows
@@ -305,7 +312,7 @@ def test_the_against_command_writes_the_verdict(cylinder, tmp_path, capsys):
     exit status 2, and no folder."""
     from verification import __main__ as verification_main
     from verification.against_outside import CSV_COLUMNS
-    _, _, project, _ = cylinder
+    _, _, project = cylinder
     given = tmp_path / "given"
     given.mkdir()
     outside = _perturbed(project)["G"]
