@@ -93,8 +93,9 @@ LONG_FOR_THE_DEFAULT = {
     "tests/test_factorisations.py::test_only_the_first_increment_factorises[efgm-exact]": 1.1,
     "tests/test_factorisations.py::test_a_factorisation_keeps_the_columns_it_is_worth[efgm-True]": 1.1,
     # 2026-11-29, fifth list: the default took 125.9 s and 120.7 s wall (235 s CPU) on a quiet machine at
-    # 5bba10a (2252 tests); each keeps a sibling in the default (the cylinder's finer answer, its own
-    # fixture, is solved only here; the whole default suite runs again under a second OpenBLAS kernel in CI)
+    # 5bba10a (2252 tests); each keeps a sibling in the default but the cylinder's finer answer (its own
+    # fixture, solved only here: the one check of `against` on an independent finer answer is the slow
+    # stage's); the whole default suite runs again under a second OpenBLAS kernel in CI
     "tests/test_outside.py::test_a_finer_answer_agrees_everywhere[1]": 5.0,
     "tests/test_outside.py::test_a_finer_answer_agrees_everywhere[2]": 0.1,
     "tests/test_roundoff.py::test_stiff_cases_decide_alike_under_two_blas_kernels": 2.8,

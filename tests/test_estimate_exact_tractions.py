@@ -151,3 +151,21 @@ def test_a_degree_one_exact_traction_takes_order_one_only_near_status_changes():
 
 WEDGE_HELD = "tests/scenes/wedge_held.toml"
 C_EXACT = "docs/scenes/C-coulomb-exact.toml"
+
+
+def test_a_third_run_keeps_the_far_order_of_an_exact_traction():
+    """review20 #3: with three runs an exact law's traction on a switching Γ
+    (theory (1, 1)) took order 1 at every sample, the far samples' faster
+    order dropped (fe P2's t_N across a stick/slip change read 2.72 of its
+    error against two runs' 1.70).  Runs whose differences fall at order 2:
+    the far samples take three_run_order(2, 2) = 2, the near ones 1, and
+    the estimate records both."""
+    from contactcore.estimate.extrapolation import richardson
+    n = 6
+    far = np.arange(n) >= n // 2
+    coarse = np.linspace(1.0, 2.0, n)
+    values = [coarse, coarse / 4, coarse / 16]  # differences shrink 4 times a halving: order 2
+    got = richardson(values, (1, 1), far=(far, 2.0))
+    step = np.abs(values[-1] - values[-2])
+    assert got.far_order == 2.0 and got.measured == pytest.approx(2.0)
+    assert np.allclose(got.error[far], step[far] / 3) and np.allclose(got.error[~far], step[~far])

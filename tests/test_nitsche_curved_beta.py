@@ -89,7 +89,7 @@ def test_xfem_p1_warns_where_a_large_beta_zigzags_a_curved_gammas_traction(tmp_p
 
 
 @pytest.mark.parametrize("case", ["degree 2", "default beta", "penalty"])
-def test_the_warning_is_for_xfem_p1_exact_above_the_default_only(tmp_path, case):
+def test_the_warning_is_for_xfem_p1_exact_above_the_threshold_only(tmp_path, case):
     """Not at degree 2, not at the default β (3, below the threshold), not for a penalty law."""
     scene = _disc(tmp_path, LARGE_BETA)
     assert curved_stabilisation_warnings(scene, 1)

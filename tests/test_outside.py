@@ -29,8 +29,8 @@ SCENES = Path(__file__).resolve().parent / "scenes"
 CYLINDER = SCENES / "cylinder.toml"
 
 
-def _runs(scene, h, levels=2):
-    return [known.solver("fe")(scene, hk, degree=2) for hk in est.levels_of(h, levels)]
+def _runs(scene, h):
+    return [known.solver("fe")(scene, hk, degree=2) for hk in est.levels_of(h, 2)]
 
 
 @pytest.fixture(scope="module")

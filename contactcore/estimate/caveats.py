@@ -216,31 +216,35 @@ def exact_traction_warning(names: list[str]) -> list[str]:
 
 def observed_exact_tractions(scene: Scene, profiles: dict[str, dict[str, QuantityEstimate]]) -> list[str]:
     """The ``PID:Q`` of an exact law's tractions on Γ estimated from three
-    runs (an observed order) where theory allows them order 1: the cause
+    runs (an observed order) where theory allows them order 1 alone (a Γ
+    whose status switches: :func:`~contactcore.estimate.orders.order_range`;
+    beyond its changes the far order applies,
+    :func:`~contactcore.estimate.extrapolation.richardson`): the cause
     of :func:`exact_tractions` does not go with a third run.  Where the
     multiplier's error varies from sample to sample unlike from run to
     run, its runs' difference ``q_{h/2} − q_h`` is about ``(1 + 2^{-2p})^½``
     times the coarser run's error, not ``1 − 2^{-p}`` times it: the RMS
-    ratio of two such differences still shows ``p`` (1.07-1.21 observed
-    against 1), but Richardson at ``p`` = 1 then reads
-    ``(2^{2p} + 1)^½ / (2^p − 1)`` = 2.24 times the error, whatever the
-    number of runs (the Lamé disc under exact unilateral contact,
-    h = 0.05, 0.025, 0.0125: degree 1's t_N, t_T 1.91-2.47 from three runs,
-    2.07-2.53 from two; :func:`observed_exact_traction_warning`)."""
+    ratio of two such differences still shows ``p``, but Richardson at
+    ``p`` = 1 then reads ``(2^{2p} + 1)^½ / (2^p − 1)`` = 2.24 times the
+    error, whatever the number of runs (est3_36: 1.91-2.47 from three runs
+    on a Lamé disc at order 1).  A degree-1 traction on a Γ that never
+    switches takes its range [1, 2] (deg1_36) and is not named: there the
+    six degree-1 entries of that disc read 1.38-1.88 from three runs
+    (review20, 2026-11-29)."""
     if not _exact(scene.law):
         return []
     return [f"{pid}:{q}" for pid, qs in profiles.items() for q, e in qs.items()
-            if q in TRACTIONS and e.observed and e.theory[0] <= 1]
+            if q in TRACTIONS and e.observed and e.theory[1] <= 1]
 
 
 def observed_exact_traction_warning(names: list[str]) -> list[str]:
     """One line naming :func:`observed_exact_tractions`' quantities,
-    without a direction: their six entries on the Lamé disc read 1.91-2.47
-    (2026-11-29), one scene only."""
+    without a direction measured beyond one scene (module doc of that
+    function: up to 2.24 times the error in theory)."""
     if not names:
         return []
     return [f"{', '.join(names)}: an exact Γ traction that theory allows order 1, from three runs: its "
-            f"cell-to-cell error differs run to run (1.91-2.47× on a Lamé disc){see('exact tractions')}"]
+            f"cell-to-cell error differs run to run (up to 2.24× in theory){see('exact tractions')}"]
 
 
 def slow_halving(profiles: dict[str, dict[str, QuantityEstimate]]) -> dict[str, float]:

@@ -132,8 +132,9 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     residue = residues(scene, levels, profiles, exclude)
     split = split_cell_share(scene, levels, profiles, exclude, results[-1].degree)
     nitsche = exact_tractions(scene, profiles)
-    fast = fast_gamma(profiles, facts)
     observed = three_run_caveats(scene, profiles)
+    # an exact law's traction has its own line (and order): not fast Γ's "order k + 1" too (review20)
+    fast = [k for k in fast_gamma(profiles, facts) if k not in set(nitsche) | observed[1]]
     warnings = (order_warnings(profiles) + pollution_warning(scene, profiles) + exact_traction_warning(nitsche)
                 + fast_gamma_warning(fast, results[-1].method, results[-1].degree, len(levels) > 2)
                 + unsettled_warnings(found, hs[-2], feature_size(scene), scene.user.units.length,
@@ -172,7 +173,8 @@ def three_run_caveats(scene: Scene, profiles: dict[str, dict[str, QuantityEstima
     (:func:`~contactcore.estimate.caveats.observed_exact_tractions`,
     :func:`~contactcore.estimate.caveats.slow_halving`) and the ``PID:Q``
     they name; none for two runs."""
-    traction, slow = observed_exact_tractions(scene, profiles), slow_halving(profiles)
+    traction = observed_exact_tractions(scene, profiles)
+    slow = {k: v for k, v in slow_halving(profiles).items() if k not in traction}  # one line an entry (review20)
     return (observed_exact_traction_warning(traction) + slow_halving_warning(slow)), set(traction) | set(slow)
 
 
