@@ -210,7 +210,7 @@ def exact_traction_warning(names: list[str]) -> list[str]:
     below 0.5 (docs/error-estimates.md, "Known limits")."""
     if not names:
         return []
-    return [f"{', '.join(names)}: an exact Γ traction from two runs at order 1 near status changes (P1: 1.45 "
+    return [f"{', '.join(names)}: an exact Γ traction from two runs at order 1 near status changes (faster "
             f"beyond): often too large (up to 13.7×), not always; {OBSERVE}{see('exact tractions')}"]
 
 
