@@ -1811,5 +1811,9 @@ SLOW_HALVING = 1.25
 #: fe P2 truth at 0.00625, 2026-11-29) EFGM P1's stresses' shares: A1 σxy
 #: 2.7e-4 (effectivity 0.41), A2 σyy 9.6e-5 (0.42), A3 σxx 1.7e-4 (0.59);
 #: the rest 3.8e-4 (C3 σyy, 1.51) to 1.9e-2 (0.75-1.56).  3e-4 names the
-#: three below 0.6 and none above.
+#: three below 0.6 and none above.  No share separates the two sides
+#: everywhere: on the closed forms (verification.effectivity's cases, EFGM
+#: P1 at its rungs) it names 6 of 8 stresses from two runs (0.55-1.26,
+#: shares 2.7e-5-1.4e-4) and 3 of 8 from three (0.82-1.33): there the
+#: quadrature's floor is smaller than on A, so the line says "possibly".
 QUADRATURE_STRESS_SHARE = 3e-4

@@ -830,8 +830,9 @@ def quadrature_stress(profiles: dict[str, dict[str, QuantityEstimate]], finest: 
     ``finest`` run.  EFGM P1 misses a uniform stress by its Gauss
     quadrature's error (no patch test passes), an error of about the same
     size at every h: the runs' differences cancel it, so an estimate that
-    small is of the floor's size and misses it (scene A, three runs: A1 σxy
-    and A2 σyy 0.41 and 0.42 of the error)."""
+    small is of the floor's size and may miss it (scene A, three runs: A1 σxy
+    and A2 σyy 0.41 and 0.42 of the error), or not (the closed forms' EFGM
+    P1 stresses, named at 0.55-1.33: there the floor is smaller)."""
     if not facts.quadrature_energy:
         return {}
     out = {}
@@ -849,9 +850,10 @@ def quadrature_stress(profiles: dict[str, dict[str, QuantityEstimate]], finest: 
 
 def quadrature_stress_warning(found: dict[str, float], method: str, degree: int) -> list[str]:
     """One line naming :func:`quadrature_stress`'s quantities, each with its
-    estimate's share of the largest stress."""
+    estimate's share of the largest stress; "possibly": named entries read
+    0.41-1.33 (scene A and the closed forms, 2026-11-29)."""
     if not found:
         return []
     names = ", ".join(f"{k} ({v:.1e})" for k, v in found.items())
     return [f"{names}: estimate (× the largest |σ|) as small as {run_label(method, degree)}'s quadrature error, "
-            f"which the runs do not see: likely too small{see('quadrature stress')}"]
+            f"which the runs do not see: possibly too small{see('quadrature stress')}"]
