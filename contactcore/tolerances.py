@@ -1799,3 +1799,21 @@ STATUS_CHANGE_STENCILS = 2.0
 #: pressurised rod's fe P1 σyy, 2.43 at 1.33); on A, B, C (three runs from
 #: h = 0.05, 114 entries) 6, all inside [0.5, 2] (0.78-1.36).
 SLOW_HALVING = 1.25
+
+# --- est3b_36 (2026-11-29): EFGM P1's stress estimates at its quadrature's floor ---
+#: The share of a stress's largest |value| (over the kept samples of the
+#: finest run) below which EFGM P1's estimate of that stress (its RMS)
+#: is named (estimate.quadrature_stress): no patch test passes in EFGM, a
+#: uniform stress is missed by the Gauss quadrature's error, 1.4e-4-1.6e-4
+#: of it on a roller bar at h = 0.1, 0.05, 0.025 and 2.9e-4-5.5e-4 on a
+#: layered block (docs/methods/efgm.md), about the same at every h, and
+#: the runs' differences cancel it.  On A, B, C (three runs from h = 0.05,
+#: fe P2 truth at 0.00625, 2026-11-29) EFGM P1's stresses' shares: A1 σxy
+#: 2.7e-4 (effectivity 0.41), A2 σyy 9.6e-5 (0.42), A3 σxx 1.7e-4 (0.59);
+#: the rest 3.8e-4 (C3 σyy, 1.51) to 1.9e-2 (0.75-1.56).  3e-4 names the
+#: three below 0.6 and none above.  No share separates the two sides
+#: everywhere: on the closed forms (verification.effectivity's cases, EFGM
+#: P1 at its rungs) it names 6 of 8 stresses from two runs (0.55-1.26,
+#: shares 2.7e-5-1.4e-4) and 3 of 8 from three (0.82-1.33): there the
+#: quadrature's floor is smaller than on A, so the line says "possibly".
+QUADRATURE_STRESS_SHARE = 3e-4

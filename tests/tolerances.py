@@ -1713,3 +1713,9 @@ XFEM_CURVED_ZIGZAG_GROWTH = 4.0
 #: at 0.025, 0.0125, 0.00625); A3's, a move of the jump, 1.74.  Half of
 #: 1.0 (the jump as large as the common move) keeps the two apart.
 EFGM_BETA_JUMP_SHARE = 0.5
+
+# --- est3b_36 (2026-11-29) ---
+#: How far below and above QUADRATURE_STRESS_SHARE the synthetic estimates
+#: of tests/test_estimate_quadrature_stress.py lie (a factor): clear of the
+#: threshold either side.
+QUADRATURE_SHARE_MARGIN = 2.0

@@ -823,3 +823,41 @@ def quadrature_energy(method: str, degree: int, facts: MethodFacts, energy: Ener
     return [f"energy (ZZ): {run_label(method, degree)}'s estimate is {energy.relative:.2g} of the run's energy, "
             f"where its quadrature's error, unseen by a recovery, may dominate: likely too small"
             f"{see('quadrature energy')}"]
+
+
+def quadrature_stress(profiles: dict[str, dict[str, QuantityEstimate]], finest: list[ProfileData],
+                      kept: dict[str, dict[str, np.ndarray]], facts: MethodFacts) -> dict[str, float]:
+    """``{PID:Q: share}`` of the stresses of a run whose ``facts`` say
+    ``quadrature_energy`` (EFGM P1) whose estimate is below
+    :data:`~contactcore.tolerances.QUADRATURE_STRESS_SHARE` of the stress:
+    ``share = RMS(ê) / max |σ_h|`` over the ``kept`` samples of the
+    ``finest`` run.  EFGM P1 misses a uniform stress by its Gauss
+    quadrature's error (no patch test passes), an error of about the same
+    size at every h: the runs' differences cancel it, so an estimate that
+    small is of the floor's size and may miss it (scene A, three runs: A1 σxy
+    and A2 σyy 0.41 and 0.42 of the error), or not (the closed forms' EFGM
+    P1 stresses, named at 0.55-1.33: there the floor is smaller)."""
+    if not facts.quadrature_energy:
+        return {}
+    out = {}
+    for p in finest:
+        for q, e in profiles.get(p.id, {}).items():
+            keep = kept[p.id][q]
+            if q not in STRESSES or not np.any(keep):
+                continue
+            top = float(np.max(np.abs(p.columns[q][keep])))
+            share = rms(e.error[keep]) / top if top > 0 else np.inf
+            if share < tol.QUADRATURE_STRESS_SHARE:
+                out[f"{p.id}:{q}"] = float(share)
+    return out
+
+
+def quadrature_stress_warning(found: dict[str, float], method: str, degree: int) -> list[str]:
+    """One line naming :func:`quadrature_stress`'s quantities, each with its
+    estimate's share of the largest stress; "possibly": named entries read
+    0.41-1.33 (scene A and the closed forms, 2026-11-29)."""
+    if not found:
+        return []
+    names = ", ".join(f"{k} ({v:.1e})" for k, v in found.items())
+    return [f"{names}: estimate (× the largest |σ|) as small as {run_label(method, degree)}'s quadrature error, "
+            f"which the runs do not see: possibly too small{see('quadrature stress')}"]

@@ -26,7 +26,7 @@ from .caveats import (beyond_reach, cell_scale_orders, cell_scale_warnings, exac
                       order_mismatch, order_warnings,
                       pollution_warning, residue_warnings, residues, unsettled, unsettled_warnings,
                       curved_layer, curved_layer_warning, ENERGY_KEY, near_status_changes, status_change_warnings,
-                      quadrature_energy, recovery_floor,
+                      quadrature_energy, quadrature_stress, quadrature_stress_warning, recovery_floor,
                       split_cell_share, split_cell_share_warning)
 from .caveats import observed_exact_traction_warning, observed_exact_tractions, slow_halving, slow_halving_warning
 from .energy import EnergyEstimate, energy_estimate
@@ -54,7 +54,8 @@ class Estimate:
     :func:`~contactcore.estimate.caveats.cell_scale_orders`,
     :func:`~contactcore.estimate.caveats.curved_layer`,
     :func:`~contactcore.estimate.caveats.exact_tractions`,
-    :func:`~contactcore.estimate.caveats.split_cell_share`, the energy's
+    :func:`~contactcore.estimate.caveats.split_cell_share`,
+    :func:`~contactcore.estimate.caveats.quadrature_stress`, the energy's
     :data:`~contactcore.estimate.caveats.ENERGY_KEY` where
     :func:`~contactcore.estimate.caveats.quadrature_energy` or
     :func:`~contactcore.estimate.caveats.recovery_floor` applies, and with three
@@ -157,12 +158,14 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
             for p in levels[-1]}
     near = near_status_changes(levels[-1], changes, results[-2].discretisation, facts, kept) if exclude > 0 else {}
     warnings += status_change_warnings(near, scene.user.units.length)
+    floor = quadrature_stress(profiles, levels[-1], kept, facts)
+    warnings += quadrature_stress_warning(floor, results[-1].method, results[-1].degree)
     caveat = ((quadrature_energy(results[-1].method, results[-1].degree, facts, zz) + recovery_floor(zz)) if energy
               else [])
     return Estimate(hs, profiles, zz, status, warnings + caveat, levels[-1],
                     {k for v in found.values() for k in v} | set(layer) | set(rough) | set(residue) | set(nitsche)
                     | set(split)
-                    | set(fast) | moved | {k for k, (_, capped) in near.items() if capped} | observed[1]
+                    | set(fast) | set(floor) | moved | {k for k, (_, capped) in near.items() if capped} | observed[1]
                     | ({ENERGY_KEY} if caveat else set())
                     | {f"{pid}:{q}" for pid, qs in profiles.items() for q, e in qs.items() if order_mismatch(e)},
                     kept)
