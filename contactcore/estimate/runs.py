@@ -27,8 +27,8 @@ from .caveats import (beyond_reach, cell_scale_orders, cell_scale_warnings, exac
                       pollution_warning, residue_warnings, residues, unsettled, unsettled_warnings,
                       curved_layer, curved_layer_warning, ENERGY_KEY, near_status_changes, status_change_warnings,
                       quadrature_energy, quadrature_stress, quadrature_stress_warning, recovery_floor,
-                      split_cell_share, split_cell_share_warning)
-from .caveats import observed_exact_traction_warning, observed_exact_tractions, slow_halving, slow_halving_warning
+                      split_cell_share, split_cell_share_warning, observed_exact_traction_warning,
+                      observed_exact_tractions, slow_halving, slow_halving_warning)
 from .energy import EnergyEstimate, energy_estimate
 from .extrapolation import QuantityEstimate, profile_estimates
 from .orders import _exact
@@ -123,8 +123,8 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     switching = None if scene.law.is_linear else switches([r.interface for r in results])
     facts = results[-1].facts  # what the method's options declared (contactcore.result.MethodFacts)
     exact_switch = switching and _exact(scene.law)
-    smooth = far_from_changes(scene, results[-2:], levels[-1], hs[-2]) if exact_switch else None
     changes = status_changes(scene, results[-2:]) if exact_switch else np.zeros((0, 2))
+    smooth = far_from_changes(scene, results[-2:], levels[-1], hs[-2], changes) if exact_switch else None
     profiles = profile_estimates(levels, results[-1].degree, facts, coarse, scene, exclude, switching, h=hs[-2],
                                  smooth=smooth)
     found = unsettled(scene, levels, results[-2].discretisation, facts, exclude, profiles)

@@ -79,7 +79,8 @@ def status_changes(scene: Scene, results) -> np.ndarray:
     return change_points(gamma, [interface_status(scene, r.fields, gamma, r.interface) for r in results])
 
 
-def far_from_changes(scene: Scene, results, profiles: list[ProfileData], h: float) -> dict[str, np.ndarray]:
+def far_from_changes(scene: Scene, results, profiles: list[ProfileData], h: float,
+                     changes: np.ndarray | None = None) -> dict[str, np.ndarray]:
     """``{profile id: mask}`` for each profile with a traction on Γ
     (:data:`~contactcore.estimate.orders.TRACTIONS`): its samples farther
     than :data:`~contactcore.tolerances.STATUS_CHANGE_CELLS` × ``h`` (the
@@ -89,12 +90,14 @@ def far_from_changes(scene: Scene, results, profiles: list[ProfileData], h: floa
     :func:`contactcore.profiles.interface_status`).  There the solution is
     as smooth as between Γ's status changes, and an exact law's traction
     takes the orders of a law that never switches
-    (:func:`~contactcore.estimate.orders.smooth_range`)."""
+    (:func:`~contactcore.estimate.orders.smooth_range`).  ``changes``,
+    Γ's own (:func:`status_changes` of ``results``), where the caller
+    has them already."""
     out = {}
     # Γ's own changes, along all of Γ: a profile that starts past one still lies near it (review19b: a
     # traction profile from x = 0.08 on tilt_unil_exact, whose status changes at x = 0.075, took 11
     # samples within two cells of it as smooth)
-    whole = status_changes(scene, results)
+    whole = status_changes(scene, results) if changes is None else changes
     for prof in profiles:
         if not set(TRACTIONS) & set(prof.names[3:]):
             continue
