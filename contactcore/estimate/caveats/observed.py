@@ -1,0 +1,79 @@
+"""Warnings of a three-run estimate: an observed order far from theory
+(:func:`order_mismatch`, :func:`order_warnings`) and a last halving much
+slower than the first (:func:`slow_halving`).
+
+An observed order further than :data:`~contactcore.tolerances.ORDER_MISMATCH`
+from the orders theory allows, or clipped to an end of
+:data:`~contactcore.tolerances.ORDER_RANGE`, means the runs are not yet in
+the asymptotic range."""
+from __future__ import annotations
+
+from ... import tolerances as tol
+from ..extrapolation import QuantityEstimate
+from .lines import see
+
+
+def order_warnings(estimates: dict[str, dict[str, QuantityEstimate]]) -> list[str]:
+    """One line per quantity whose observed order is further than
+    :data:`~contactcore.tolerances.ORDER_MISMATCH` from the orders theory
+    allows, or was clipped to an end of
+    :data:`~contactcore.tolerances.ORDER_RANGE` (the differences do not
+    shrink like a power of h at all)."""
+    return [f"{pid}:{q}: observed order {e.measured:.2f}{_clipped(e.measured)}, {_orders(e.theory)} in theory: "
+            f"not asymptotic, not to be trusted{see('order')}"
+            for pid, qs in estimates.items() for q, e in qs.items()
+            if e.measured is not None and order_mismatch(e)]
+
+
+def order_mismatch(e: QuantityEstimate) -> bool:
+    """Whether ``e``'s observed order (three runs) lies further than
+    :data:`~contactcore.tolerances.ORDER_MISMATCH` from the orders theory
+    allows, or was clipped to an end of
+    :data:`~contactcore.tolerances.ORDER_RANGE`."""
+    p = e.measured
+    return p is not None and bool(_clipped(p) or not e.theory[0] - tol.ORDER_MISMATCH <= p
+                                  <= e.theory[1] + tol.ORDER_MISMATCH)
+
+
+def _orders(theory: tuple[float, float]) -> str:
+    """``"2"``, or ``"1-2"`` for a range."""
+    low, high = theory
+    return f"{low:.3g}" if low == high else f"{low:.3g}-{high:.3g}"
+
+
+def _clipped(order: float) -> str:
+    """``" (clipped)"`` where an observed order sits at an end of ORDER_RANGE."""
+    return " (clipped)" if order <= tol.ORDER_RANGE[0] or order >= tol.ORDER_RANGE[1] else ""
+
+
+def slow_halving(profiles: dict[str, dict[str, QuantityEstimate]]) -> dict[str, float]:
+    """``{PID:Q: slowdown}`` of the three-run estimates whose last halving's
+    difference fell by much less than the first's: with ``d₁ = ‖q_{h/2} −
+    q_h‖``, ``d₂ = ‖q_{h/4} − q_{h/2}‖`` (RMS, the observed order's) and
+    ``p`` the least order theory allows, the slowdown
+    ``(d₂/d₁) / 2^{-p} = 2^{p − p_obs}`` exceeds
+    :data:`~contactcore.tolerances.SLOW_HALVING`; those
+    :func:`order_mismatch` names already are left to it.  A floor in the
+    finest run's error (EFGM P2's between h = 0.025 and 0.0125 on the
+    Lamé disc: its stresses' errors 0.0029 → 0.0039 % of σ) shows only as
+    a modestly slow last halving (2.49 and 2.52 against 3): the balanced
+    order then reads 0.45-0.47 of the error; a coarse run pre-asymptotic
+    shows the same way and over-estimates (fe P2's σxx, σyy 2.70, 3.40 at
+    1.24 against 2).  An indication, off either way."""
+    out = {}
+    for pid, qs in profiles.items():
+        for q, e in qs.items():
+            if e.observed and not order_mismatch(e) and 2.0 ** (e.theory[0] - e.measured) > tol.SLOW_HALVING:
+                out[f"{pid}:{q}"] = float(2.0 ** (e.theory[0] - e.measured))
+    return out
+
+
+def slow_halving_warning(found: dict[str, float]) -> list[str]:
+    """One line naming :func:`slow_halving`'s quantities, each with its
+    slowdown, without a direction (0.45-3.40 times the error on the Lamé
+    disc's 26 entries it named from h = 0.05, 2026-11-29)."""
+    if not found:
+        return []
+    names = ", ".join(f"{k} ({v:.2f})" for k, v in found.items())
+    return [f"{names}: last halving's difference slowed (× theory's 2^-p): a floor or a pre-asymptotic "
+            f"coarse run, off either way{see('slow halving')}"]
