@@ -13,7 +13,7 @@ import pytest
 
 from verification.__main__ import main
 from verification.cli.parser import build_parser
-from verification.study import PARAMETERS
+from verification.study_parameters import PARAMETERS
 from verification.sweeps import sweeps
 
 
@@ -133,7 +133,7 @@ def test_a_penalty_point_leaves_the_stabilisation_aside_whatever_comes_first():
     """β beside --param enforcement: a penalty point (first or not) keeps
     its law and leaves β aside, as an exact point does k_N."""
     from contactcore import load_scene
-    from verification.study import left_aside, scene_at
+    from verification.study_parameters import left_aside, scene_at
     base = load_scene("C-coulomb")
     penalty = {"enforcement": "penalty", "stabilisation": 2.0}
     assert scene_at(base, penalty).law == base.law and left_aside(penalty, base.law) == ["stabilisation"]

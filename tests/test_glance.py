@@ -20,7 +20,7 @@ from contactcore import SceneError, SolverError, health, load_scene, make_law, s
 from contactcore.laws import CoulombLaw
 from verification import __main__ as verification_main
 from verification.cli.parser import build_parser
-from verification import files, methods, plots, study, study_plots
+from verification import files, methods, plots, study_parameters, study_plots, study_table
 
 ROOT = Path(__file__).resolve().parents[1]
 #: Long enough to be interrupted mid-solve: several seconds at h = 0.02, degree 2.
@@ -199,7 +199,7 @@ def test_study_varies_mu_and_the_increments(tmp_path):
                   "--values", "2")
     assert [(float(r["mu"]), float(r["increments"])) for r in rows] == [(0.2, 2), (0.5, 2)]
     assert all(r["status"] != "failed" for r in rows)
-    scenes = [study.scene_at(load_scene("C-coulomb"), {"mu": mu, "increments": 2.0}) for mu in (0.2, 0.5)]
+    scenes = [study_parameters.scene_at(load_scene("C-coulomb"), {"mu": mu, "increments": 2.0}) for mu in (0.2, 0.5)]
     assert [(s.law.mu, s.increments) for s in scenes] == [(0.2, 2), (0.5, 2)]
 
 
@@ -270,7 +270,7 @@ def test_an_exact_law_has_no_penalty_to_fall_back_on():
     scene = load_scene("A").with_changes(law=make_law({"type": "bonded"}))
     with pytest.raises(SceneError, match=r'its file gives no kN or kT to enforce it by: add kN and kT to its '
                                          r'\[interface.law\] \(type = "linear", with kN and kT, is its penalty counterpart\)'):
-        study.scene_at(scene, {"enforcement": "penalty"})
+        study_parameters.scene_at(scene, {"enforcement": "penalty"})
 
 
 def test_a_study_enforces_an_exact_law_by_the_springs_its_file_gives():
@@ -280,14 +280,14 @@ def test_a_study_enforces_an_exact_law_by_the_springs_its_file_gives():
     without them it names what is missing."""
     given = {"type": "coulomb", "enforcement": "exact", "mu": 0.3, "kN": 2e9, "kT": 3e8}
     scene = load_scene("A").with_changes(law=make_law(given))
-    law = study.scene_at(scene, {"enforcement": "penalty"}).law
+    law = study_parameters.scene_at(scene, {"enforcement": "penalty"}).law
     assert (law.enforcement, law.name, law.kN, law.kT, law.mu) == ("penalty", "coulomb", 2e9, 3e8, 0.3)
     bare = load_scene("A").with_changes(law=make_law({k: v for k, v in given.items() if k not in ("kN", "kT")}))
     with pytest.raises(SceneError, match=r"its file gives no kN or kT to enforce it by: add kN and kT"):
-        study.scene_at(bare, {"enforcement": "penalty"})
+        study_parameters.scene_at(bare, {"enforcement": "penalty"})
     half = load_scene("A").with_changes(law=make_law({k: v for k, v in given.items() if k != "kN"}))
     with pytest.raises(SceneError, match=r"its file gives no kN to enforce it by: add kN to"):  # grader27 F5
-        study.scene_at(half, {"enforcement": "penalty"})
+        study_parameters.scene_at(half, {"enforcement": "penalty"})
     assert make_law(given) == bare.law  # the springs play no part in the exact law itself
 
 
@@ -306,7 +306,7 @@ def test_study_sets_the_enforcement_before_the_stabilisation(tmp_path):
     penalty = [r for r in rows if r["enforcement"] == "penalty"]
     assert len(penalty) == 2 and all(r["message"].startswith('stabilisation not applied: it plays no part under '
                                                              'enforcement = "penalty"') for r in penalty)
-    assert len({tuple(r[q] for q in study.OUTPUTS) for r in penalty}) == 1
+    assert len({tuple(r[q] for q in study_table.OUTPUTS) for r in penalty}) == 1
 
 
 def test_study_leaves_the_springs_aside_at_its_exact_points(tmp_path):
@@ -321,7 +321,7 @@ def test_study_leaves_the_springs_aside_at_its_exact_points(tmp_path):
         assert all(r["status"] != "failed" for r in rows) and len(exact) == 2
         assert all(r["message"].startswith(f'{spring} not applied: it plays no part under enforcement = "exact"')
                    for r in exact) and not any("not applied" in r["message"] for r in penalty)
-        assert len({tuple(r[q] for q in study.OUTPUTS) for r in exact}) == 1
+        assert len({tuple(r[q] for q in study_table.OUTPUTS) for r in exact}) == 1
         assert penalty[0]["max_tN"] != penalty[1]["max_tN"] or penalty[0]["max_tT"] != penalty[1]["max_tT"]
 
 
@@ -329,7 +329,7 @@ def test_study_plots_mark_failed_and_warned_points():
     """A ring on every warned point; at every failed one a vertical line
     across the panel (no mark at a height, which read as a value at the
     axis's bottom, grader2 item 12), named once in its series' legend entry."""
-    rows = [{"value": v, "method": "fe", "status": st, **dict.fromkeys(study.OUTPUTS, 1.0 + v)}
+    rows = [{"value": v, "method": "fe", "status": st, **dict.fromkeys(study_table.OUTPUTS, 1.0 + v)}
             for v, st in ((1.0, "ok"), (2.0, "warned"), (3.0, "failed"))]
     fig = plots.pyplot().figure()
     ax = fig.add_subplot()
@@ -560,7 +560,7 @@ def test_two_series_failing_at_one_value_both_show():
     fig = plots.pyplot().figure()
     ax = fig.add_subplot()
     for slot, method in enumerate(("fe", "xfem")):
-        rows = [{"value": 1.0, "method": method, "status": "failed", **dict.fromkeys(study.OUTPUTS, 1.0)}]
+        rows = [{"value": 1.0, "method": method, "status": "failed", **dict.fromkeys(study_table.OUTPUTS, 1.0)}]
         study_plots._mark(ax, "value", "tN", 1.0, rows, f"C{slot}", slot, 2)
     fe, xfem = ax.get_lines()
     assert list(fe.get_xdata()) == list(xfem.get_xdata())

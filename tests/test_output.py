@@ -291,7 +291,7 @@ def test_the_interface_and_study_plots_name_the_scenes_units(a_in_mpa):
     """The response figure (a straight Γ: with its loop), the status plot
     and a study's labels in the scene's units; the study's help in any
     scene's words."""
-    from verification import study
+    from verification import study_parameters, study_table
     scene = load_scene(a_in_mpa)
     result = methods.solver("fe")(scene, 0.25)
     fig = interface.response_figure(scene, {"fe P1": result.interface})
@@ -304,10 +304,10 @@ def test_the_interface_and_study_plots_name_the_scenes_units(a_in_mpa):
         interface.plot_status(None, scene, "fe P1", result.interface)
     assert status[0].axes[0].get_xlabel() == "position along Γ (mm)"
     plots.pyplot().close("all")
-    assert study.described("kN", MM_MPA) == "normal spring k_N (MPa/mm)"
-    assert study.described("radius", MM_MPA) == "radius of a circular Γ (mm)"
-    assert study.PARAMETERS["kN"][0] == "normal spring k_N (stress/length)"
-    assert "h (cell size or node spacing (mm))" in study.markdown("A", ["h"], [], MM_MPA)
+    assert study_parameters.described("kN", MM_MPA) == "normal spring k_N (MPa/mm)"
+    assert study_parameters.described("radius", MM_MPA) == "radius of a circular Γ (mm)"
+    assert study_parameters.PARAMETERS["kN"][0] == "normal spring k_N (stress/length)"
+    assert "h (cell size or node spacing (mm))" in study_table.markdown("A", ["h"], [], MM_MPA)
 
 
 def test_efficiency_names_a_mm_scenes_units(tmp_path, a_in_mpa):
@@ -366,14 +366,14 @@ def test_summary_and_estimate_warnings_give_lengths_in_the_scenes_unit(a_in_mpa)
 
 def test_study_headers_and_difference_floors_name_their_units():
     """study.md's outputs and a Δ panel's floor carry the scene's units."""
-    from verification import study
-    header = study.markdown("A", ["h"], [], MM_MPA).splitlines()[-2]
+    from verification import study_table
+    header = study_table.markdown("A", ["h"], [], MM_MPA).splitlines()[-2]
     assert "| max \\|g_N\\| (mm) | max \\|g_T\\| (mm) | max \\|t_N\\| (MPa) |" in header
     assert "| mean t_N (MPa) | mean t_T (MPa) |" in header and header.endswith("| message |")
     assert "| stick length (mm) | max \\|t_N\\| away from ends (MPa) |" in header
-    estimated = study.markdown("A", ["h"], [], MM_MPA, estimate=True)
+    estimated = study_table.markdown("A", ["h"], [], MM_MPA, estimate=True)
     assert "| est. error t_N (RMS) (MPa) | est. error t_T (RMS) (MPa) |" in estimated
-    assert "| mean t_N (Pa) |" in study.markdown("A", ["h"], [])
+    assert "| mean t_N (Pa) |" in study_table.markdown("A", ["h"], [])
     s = np.linspace(0.0, 1.0, 11)
     fig = plots.profile_figure("g", {"fe P2": _profile("G", s, gN=s), "xfem P1": _profile("G", s, gN=s + 0.01)},
                                floors={"gN": 0.00476}, units=MM_MPA)

@@ -18,8 +18,10 @@ from contactcore import ContactError, SceneError, load_scene
 from contactcore import estimate as est
 from verification import methods as known
 from verification.agreement import compare_outside, default_exclusion, sampled
-from verification.agreement.outside import (BLAME_MULTIPLE, MIN_SAMPLES, WARNED_EFFECTIVITY, WARNED_MIN_SHARE, WARNED_MULTIPLE,
-                                            judge, outside_profiles, read_outside)
+from verification.agreement.outside import judge
+from verification.agreement.outside_files import read_outside
+from verification.agreement.outside_input import MIN_SAMPLES, outside_profiles
+from verification.agreement.outside_verdicts import BLAME_MULTIPLE, WARNED_EFFECTIVITY, WARNED_MIN_SHARE, WARNED_MULTIPLE
 
 DOCS = Path(__file__).resolve().parent.parent / "docs"
 
@@ -153,7 +155,7 @@ def test_a_warned_verdict_needs_a_difference_above_a_share_of_the_size(scene_c, 
     the multiple made negligible, the size's share alone decides: a
     difference below WARNED_MIN_SHARE of t_N's size reads `warned`, one
     above it `outside (estimate warned)`."""
-    from verification.agreement import outside as module
+    from verification.agreement import outside_verdicts as module
     scene, estimate, project = scene_c
     c4 = project["C4"].columns
     monkeypatch.setattr(module, "WARNED_MULTIPLE", tol.OUTSIDE_NEGLIGIBLE_MULTIPLE)
@@ -356,7 +358,7 @@ def test_each_estimate_warning_is_listed_once_without_repeating_its_keys():
     listed once as written; one that names none (the status) follows the
     quantities it is given for."""
     from types import SimpleNamespace
-    from verification.agreement.outside import _warned_lines
+    from verification.agreement.outside_table import _warned_lines
     traction = "G:tN, G:tT: an exact law's traction on Γ at order 1"
     status = "the status along Γ differs from h = 0.1 m to 0.05 m"
     rows = [SimpleNamespace(profile="G", quantity=q, warnings=(traction, status)) for q in ("tN", "tT")]

@@ -16,7 +16,7 @@ from contactcore import load_scene
 from contactcore.interface_path import Increment, InterfacePath
 from contactcore.laws import OPEN, SLIP, STICK
 from verification.__main__ import main
-from verification.study import scene_at
+from verification.study_parameters import scene_at
 from verification.study_gamma import ESTIMATE_COLUMNS, GAMMA, with_gamma
 
 SCENE = "tests/scenes/wedge_held.toml"

@@ -156,7 +156,7 @@ def test_a_study_point_is_the_same_whatever_the_order_of_its_parameters(first):
     """A parameter that moves Γ, given before another, gives the same
     point: the partly changed scene is not checked against the scene's own
     profiles, which need not lie on the moved Γ."""
-    from verification.study import scene_at
+    from verification.study_parameters import scene_at
     value = {"angle": 20.0, "offset": 0.1}[first]
     a = scene_at(load_scene("A"), {first: value, "kT": 1e7})
     b = scene_at(load_scene("A"), {"kT": 1e7, first: value})

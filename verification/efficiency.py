@@ -48,7 +48,7 @@ from contactcore.scene import Units, check_resolution
 from . import files, methods, pool
 from .agreement import agreements, check_exclusion, first_largest, label, worst_estimate
 from .plots import loglog_by_variant
-from .study import check_given_once
+from .study_checks import check_given_once
 from .timing import REPEAT_BELOW, REPEATS, fastest
 
 log = logging.getLogger("verification")

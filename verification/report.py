@@ -33,7 +33,8 @@ from .efficiency import check_budgets as efficiency_budgets
 from .paper import SCENES, paper
 from .paper import check_budgets as paper_budgets
 from .run import run
-from .study import check_points, check_sizes, study
+from .study import study
+from .study_checks import check_points, check_sizes
 from .sweeps import memory, run_sweeps, sweeps
 
 log = logging.getLogger("verification")

@@ -67,11 +67,22 @@ One idea a module:
 - :mod:`~verification.agreement.api`: the public check (:func:`compare`,
   :func:`assert_methods_agree`, :func:`assert_table_agrees`, :func:`compare_estimates`, :func:`check_rtol`, :func:`variant`,
   :func:`label`, :func:`sampled`).
+- :mod:`~verification.agreement.outside`: an outside code's answer against
+  one method's and its estimated error (:func:`compare_outside`), in
+  parts: the input read (``outside_files``) and checked against the scene
+  (``outside_input``), a profile's geometry along ``s``
+  (``profile_geometry``), the project's answer and error at the outside
+  samples (``outside_budget``), the verdicts (``outside_verdicts``) and
+  the table (``outside_table``).
 
 The arrows: ``api`` → ``tables`` → ``records`` → ``classes`` → ``groups``
 → ``sizes``; ``records`` → ``measures`` → ``samples``; ``api``, ``tables`` →
 ``status`` → ``measures``; ``tables`` → ``groups``; ``estimates`` →
-``groups``, ``measures``, ``samples``, ``sizes``.
+``groups``, ``measures``, ``samples``, ``sizes``; ``outside`` → ``api``,
+``outside_input``, ``outside_table``, ``outside_budget``, ``outside_verdicts``,
+``profile_geometry``, ``records``, ``samples``, ``sizes``; ``outside_input``
+→ ``outside_files``, ``profile_geometry``; ``outside_table`` →
+``outside_verdicts``, ``outside_budget``, ``records``, ``measures``.
 
 The package's public names, imported here as ``verification.agreement.NAME``,
 are its modules' public functions, classes and tables, and the

@@ -65,7 +65,7 @@ def commands() -> dict[str, Command]:
     (declarative; the choices that need a driver's tables import it here,
     when the parser is built)."""
     from ..convergence import CASES
-    from ..study import PARAMETERS
+    from ..study_parameters import PARAMETERS
     from ..sweeps import sweeps
 
     method = arg("--method", nargs="+", default=["all"], choices=[*methods.METHODS, "all"],

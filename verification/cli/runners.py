@@ -84,7 +84,7 @@ def efficiency(args, argv) -> None:
     """``efficiency``: error against run time (:func:`verification.efficiency.efficiency`)."""
     from ..agreement import default_exclusion
     from ..efficiency import efficiency as measure
-    from ..study import check_given_once
+    from ..study_checks import check_given_once
     check_given_once("--method", args.method)
     check_given_once("--degree", args.degree)
     exclude = args.exclude if args.exclude is not None else default_exclusion(load_scene(args.scene))
