@@ -1797,7 +1797,20 @@ STATUS_CHANGE_STENCILS = 2.0
 #: variants, three runs from each variant's rungs: 99 entries, 30 outside)
 #: it names 15 (0.60-2.43), one outside and unwarned before (the
 #: pressurised rod's fe P1 σyy, 2.43 at 1.33); on A, B, C (three runs from
-#: h = 0.05, 114 entries) 6, all inside [0.5, 2] (0.78-1.36).
+#: h = 0.05, 114 entries) 6, all inside [0.5, 2] (0.78-1.36).  Re-measured
+#: 2026-11-29 (orders37) with every line of that day, on five sets: the
+#: closed forms (99 entries), A, B, C (114), tests/scenes/stick_slip_crossing.toml
+#: (66; three runs from h = 0.05, fe P2 truth at 0.00625),
+#: docs/scenes/C-coulomb-exact.toml and tests/scenes/tilt_unil_exact.toml (42
+#: and 36; from h = 0.1, truth at 0.0125): 1.25 names 36 of 357 (0.57-3.00),
+#: 3 outside [0.5, 2] (the rod's fe P1 σyy 2.43 at 1.33, no other line names
+#: it; the crossing's efgm P2 H σxx 2.84 at 1.54; tilt-unil-exact's xfem P2
+#: H u_x 3.00 at 1.54).  1.2 would add 4 outside (0.31-3.33, each named by
+#: another line) and 7 inside; 1.1 four outside no other line names (2.00-2.36
+#: at 1.12-1.18) and 33 inside; 1.3 would drop 7 inside but lose the disc's
+#: fe P1 σxx (2.44 at 1.28), 1.35 the rod's.  Confirmed: the largest
+#: threshold that keeps every outside entry it names alone
+#: (docs/error-estimates.md, "The warnings", slow halving).
 SLOW_HALVING = 1.25
 
 # --- est3b_36 (2026-11-29): EFGM P1's stress estimates at its quadrature's floor ---

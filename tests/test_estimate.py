@@ -972,6 +972,36 @@ def test_a_smooth_value_round_off_at_the_cells_or_an_observed_order_shows_no_cel
     assert est.cell_scale_orders(scene, rough, three, 0.1, h) == {}
 
 
+@pytest.mark.parametrize("far_rate, near_rate, named_whole, named_split", [
+    (1.0, 3.0, False, True),   # rough only near the changes: the whole profile dilutes it (tilt-unil-exact)
+    (2.4, 1.0, True, False),   # far samples at the far range's order (2), not above it by CELL_SCALE_EXCESS
+    (1.0, 1.0, False, False),
+])
+def test_a_switching_exact_tractions_cells_are_judged_by_the_order_each_sample_takes(far_rate, near_rate,
+                                                                                      named_whole, named_split):
+    """est.cell_scale_orders with ``far`` (an exact traction on a Γ that
+    switches, runs.far_tractions): the part at the cells' scale of the
+    samples far from the status changes is compared with the far range's
+    highest order (2), of the rest with 1, each over its own samples;
+    without ``far`` (the code before), over the whole profile with 1.  A
+    wave of each run's cell shrinking at ``far_rate`` for x ≤ 0.6 and at
+    ``near_rate`` beyond."""
+    scene, h = load_scene("A"), 0.05
+    stress = Sizes.of(scene).stress  # A's load
+    x = np.linspace(0.15, 0.85, 281)
+    far = x <= 0.6
+    wave = lambda s, hk: np.where(s + 0.15 <= 0.6, (hk / h) ** far_rate, (hk / h) ** near_rate)  # noqa: E731
+    levels = _runs_along_gamma(lambda s, hk: stress * (1.0 + s + 0.01 * wave(s, hk)
+                                                       * np.sin(2 * np.pi * s / hk + 0.3)), h, "tN")
+    estimates = {"L": {"tN": est.QuantityEstimate(np.zeros(281), 1.0, (1.0, 1.0), far_order=2.0)}}
+    assert bool(est.cell_scale_orders(scene, levels, estimates, 0.1, h)) == named_whole
+    found = est.cell_scale_orders(scene, levels, estimates, 0.1, h, {"L": {"tN": (far, 2.0)}})
+    assert bool(found) == named_split, found
+    if named_split:
+        order, high = found["L:tN"]
+        assert high == 1.0 and order > high + core_tol.CELL_SCALE_EXCESS
+
+
 def _two_profiles(share, other="sxy", h=0.05):
     """Runs at h and h/2 along A's Γ with profiles ``L`` (σxx, a smooth
     value whose runs differ by A's stress scale times h²) and ``M``

@@ -31,7 +31,7 @@ from .caveats import (beyond_reach, cell_scale_orders, cell_scale_warnings, exac
                       observed_exact_tractions, slow_halving, slow_halving_warning)
 from .energy import EnergyEstimate, energy_estimate
 from .extrapolation import QuantityEstimate, profile_estimates
-from .orders import _exact
+from .orders import _exact, smooth_range, TRACTIONS
 from .status import far_from_changes, status_change, status_changes, status_warning, switches
 
 
@@ -129,7 +129,8 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
                                  smooth=smooth)
     found = unsettled(scene, levels, results[-2].discretisation, facts, exclude, profiles)
     layer = curved_layer(scene, levels, facts, hs[-2], exclude)
-    rough = cell_scale_orders(scene, levels, profiles, exclude, hs[-2])
+    rough = cell_scale_orders(scene, levels, profiles, exclude, hs[-2],
+                              far_tractions(smooth, results[-1].degree, facts, scene.law, switching))
     residue = residues(scene, levels, profiles, exclude)
     split = split_cell_share(scene, levels, profiles, exclude, results[-1].degree)
     nitsche = exact_tractions(scene, profiles)
@@ -169,6 +170,20 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
                     | ({ENERGY_KEY} if caveat else set())
                     | {f"{pid}:{q}" for pid, qs in profiles.items() for q, e in qs.items() if order_mismatch(e)},
                     kept)
+
+
+def far_tractions(smooth: dict[str, np.ndarray] | None, degree: int, facts, law, switching: bool | None
+                  ) -> dict[str, dict[str, tuple[np.ndarray, float]]] | None:
+    """``{PID: {Q: (mask, high)}}``: each exact traction that takes the far
+    order at ``smooth``'s samples (``mask``, far from Γ's status changes),
+    with the highest order theory allows it there
+    (:func:`~contactcore.estimate.orders.smooth_range`), for
+    :func:`~contactcore.estimate.caveats.cell_scale_orders`; None where no
+    sample is far."""
+    if not smooth:
+        return None
+    ranges = {q: smooth_range(q, degree, facts, law, switching) for q in TRACTIONS}
+    return {pid: {q: (mask, r[1]) for q, r in ranges.items() if r is not None} for pid, mask in smooth.items()}
 
 
 def three_run_caveats(scene: Scene, profiles: dict[str, dict[str, QuantityEstimate]]) -> tuple[list[str], set[str]]:
