@@ -1830,3 +1830,17 @@ SLOW_HALVING = 1.25
 #: shares 2.7e-5-1.4e-4) and 3 of 8 from three (0.82-1.33): there the
 #: quadrature's floor is smaller than on A, so the line says "possibly".
 QUADRATURE_STRESS_SHARE = 3e-4
+
+# --- est3_37 (2026-11-29): three runs whose two differences share no pattern ---
+#: The cosine of a three-run estimate's two differences (δ₁ = q_{h/2} −
+#: q_h, δ₂ = q_{h/4} − q_{h/2}, over the samples its order is observed
+#: on) at or below which it is named (estimate.unlike_differences):
+#: Richardson's premise, an error C(x) h^p sample by sample, makes δ₂ the
+#: first scaled down (cosine 1); at 0 or below they share no pattern,
+#: each run's error is its own, and the estimate over-reads it
+#: ((2^{2p} + 1)^½/(2^p − 1) for unrelated patterns).  0 is where the two
+#: stop sharing any part, not a fitted value.  Measured (2026-11-29; A,
+#: B, C three runs from h = 0.05 (A), 0.1 (B, C) against fe P2 at
+#: h/16; the closed forms' three runs; the Lamé disc):
+#: docs/error-estimates.md, "The warnings", "unlike differences".
+UNLIKE_COSINE = 0.0

@@ -3,6 +3,7 @@ run does not remove, and name a last halving that slowed
 (contactcore.estimate.caveats.observed_exact_tractions, slow_halving;
 docs/error-estimates.md, "The warnings")."""
 import numpy as np
+import pytest
 
 from contactcore import load_scene
 from contactcore import estimate as est
@@ -13,6 +14,8 @@ from verification import methods
 from verification.agreement import default_exclusion
 import tolerances as tol
 from contactcore.estimate.energy import EnergyEstimate
+from contactcore.profiles import ProfileData
+from contactcore.result import MethodFacts
 from test_estimate_warning_lines import BLOCK, _pointed
 
 #: The three runs' h of the synthetic quantities below, coarse to fine.
@@ -96,3 +99,38 @@ def test_the_recovery_floor_claims_no_direction():
     way."""
     line, = est.recovery_floor(EnergyEstimate(1.77e-2, 96.9, 1e-9, recovery=0.52 * 1.77e-2))
     assert "either way" in line and "likely too large" not in line
+
+
+def test_an_order_observed_within_a_range_above_its_balanced_order_is_taken():
+    """three_run_order's ``upper`` (est3_37): q_h = q + C h^2.8 with theory's
+    range [1.52, 3] (a polluted degree-2 gap or penalty traction, scene C's
+    C4): the observed order 2.8 lies within the range above its balanced
+    order 2.20, so a mesh method's three-run estimate takes it and recovers
+    the error (the old code kept 2.20: (2^2.8 − 1)/(2^2.20 − 1) = 1.65 times
+    it; C4's degree-2 tractions read 2.21-2.33 so); EFGM's (``upper``
+    False, profile_estimates' ``not facts.meshfree``) keeps the balanced
+    order; an observed order above the range keeps it too."""
+    s = np.linspace(0.0, 1.0, 11)
+    lead, theory = 1.0 + s ** 2, (1.52, 3.0)
+    levels = [np.cos(s) + lead * h ** 2.8 for h in HS]
+    mesh, meshfree = est.richardson(levels, theory, upper=True), est.richardson(levels, theory)
+    assert mesh.order == pytest.approx(2.8) and np.allclose(mesh.error, lead * HS[-1] ** 2.8)
+    assert meshfree.order == pytest.approx(est.balanced_order(*theory))
+    assert meshfree.rms / mesh.rms > tol.UNLIKE_OVER_READ
+    fast = est.richardson([np.cos(s) + lead * h ** 3.5 for h in HS], theory, upper=True)
+    assert fast.order == pytest.approx(est.balanced_order(*theory))
+
+
+def test_profile_estimates_take_the_observed_order_for_mesh_methods_only():
+    """profile_estimates passes ``upper`` for a mesh method and not for a
+    meshfree one (its facts): a degree-1 stress (theory [1, 2], balanced
+    1.45) observed at 1.8 is taken at 1.8 by fe, at 1.45 by EFGM; a
+    displacement observed at 3 against its one order 2 is capped at 2."""
+    s = np.linspace(0.0, 1.0, 11)
+    cols = lambda h: {"s": s, "x": s, "y": 0.0 * s, "ux": np.cos(s) + (1 + s ** 2) * h ** 3}  # noqa: E731
+    levels = [[ProfileData("L", "arclength", cols(h))] for h in HS]
+    assert est.profile_estimates(levels, 1)["L"]["ux"].order == pytest.approx(2.0)
+    ranged = [[ProfileData("L", "arclength", {**cols(h), "sxx": np.cos(s) + (1 + s ** 2) * h ** 1.8})] for h in HS]
+    fe = est.profile_estimates(ranged, 1)["L"]["sxx"]
+    efgm = est.profile_estimates(ranged, 1, MethodFacts(meshfree=True))["L"]["sxx"]
+    assert fe.order == pytest.approx(1.8) and efgm.order == pytest.approx(est.balanced_order(1.0, 2.0))

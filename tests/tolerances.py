@@ -1719,3 +1719,11 @@ EFGM_BETA_JUMP_SHARE = 0.5
 #: of tests/test_estimate_quadrature_stress.py lie (a factor): clear of the
 #: threshold either side.
 QUADRATURE_SHARE_MARGIN = 2.0
+
+# --- est3_37 (2026-11-29): unlike differences (tests/test_estimate_unlike_differences.py) ---
+#: How far below 1 the cosine of two differences of a synthetic error
+#: C(x) h^p (the same pattern at every h) may lie: round-off only.
+UNLIKE_ALIKE_SLACK = 1e-9
+#: The least over-reading of the synthetic unlike differences' estimate
+#: (p = 1: √5 ≈ 2.24 for unrelated patterns): clearly above 1.
+UNLIKE_OVER_READ = 1.5

@@ -18,8 +18,12 @@ clipped to :data:`~contactcore.tolerances.ORDER_RANGE`, and the estimate
 is the finest run's at :func:`three_run_order`: the two-run order below
 where the observed one is at or above it (an observed order above theory
 is the coarse run's error cancelling, not a faster rate: Roache's GCI,
-ASME V&V 20), else the balanced order of the two (below theory the coarse
-run may be pre-asymptotic as well as the rate slower).
+ASME V&V 20), but for fe and xfem the observed one where it lies within
+theory's range above it (the third run shows the range's upper end at
+work), else the balanced order of the two (below theory the coarse
+run may be pre-asymptotic as well as the rate slower).  The cosine of the
+two differences (:func:`differences_cosine`) checks Richardson's premise
+that the last is the first scaled down.
 
 With two runs the order is one that theory allows the quantity
 (:func:`~contactcore.estimate.orders.order_range`).  Where that is a
@@ -84,7 +88,11 @@ class QuantityEstimate:
     upper order of ``theory`` (recorded as ``"cell_scale"``).  ``far_order``,
     where an exact law's traction was estimated sample by sample: the order
     taken at its samples far from Γ's status changes, ``order`` at the rest
-    (:func:`richardson`'s ``far``; recorded as ``"far_order"``)."""
+    (:func:`richardson`'s ``far``; recorded as ``"far_order"``).  ``alike``,
+    where the order was observed: the cosine of the two differences over the
+    samples it was observed on (:func:`differences_cosine`; recorded as
+    ``"alike"``), 1 where the last is the first scaled down, as Richardson's
+    ``C h^p`` makes it."""
 
     error: np.ndarray
     order: float
@@ -92,6 +100,7 @@ class QuantityEstimate:
     cell_scale: float | None = None
     measured: float | None = None
     far_order: float | None = None
+    alike: float | None = None
 
     @property
     def observed(self) -> bool:
@@ -119,6 +128,8 @@ class QuantityEstimate:
             out["observed_order"] = self.measured
         if self.far_order is not None:
             out["far_order"] = self.far_order
+        if self.alike is not None:
+            out["alike"] = self.alike
         return out
 
 
@@ -139,6 +150,21 @@ def observed_order(coarse: np.ndarray, mid: np.ndarray, fine: np.ndarray, ratio:
         return None
     p = np.log(d1 / d2) / np.log(ratio)
     return float(np.clip(p, *tol.ORDER_RANGE))
+
+
+def differences_cosine(coarse: np.ndarray, mid: np.ndarray, fine: np.ndarray) -> float:
+    """``cos ∠(δ₁, δ₂) = δ₁·δ₂ / (‖δ₁‖ ‖δ₂‖)``, ``δ₁ = mid − coarse``,
+    ``δ₂ = fine − mid`` over the samples (0 where either is 0).  Where the
+    error is ``C(x) h^p`` sample by sample (Richardson's premise) ``δ₂ =
+    2^{−p} δ₁`` and the cosine is 1; where each run's error has a pattern of
+    its own (a degree-1 stress, constant per cell, read at points that fall
+    elsewhere in their cells at each h; a term that dies between the runs)
+    the two share none, and ``‖δ₂‖ = (e₁² + e₂²)^½`` at worst, which Richardson
+    reads as ``(2^{2p} + 1)^½ / (2^p − 1)`` times the error (2.24 at p = 1,
+    1.37 at p = 2): the cosine is 0 or below."""
+    d1, d2 = mid - coarse, fine - mid
+    norms = float(np.linalg.norm(d1) * np.linalg.norm(d2))
+    return float(d1 @ d2 / norms) if norms > 0 else 0.0
 
 
 def cell_scale_part(values: np.ndarray, s: np.ndarray, groups: np.ndarray, width: float) -> np.ndarray:
@@ -181,12 +207,19 @@ def roundoff_floor(sizes: Sizes | None, quantity: str) -> float:
     return tol.NEGLIGIBLE_SHARE * (sizes.stress if quantity in STRESSES + TRACTIONS else sizes.displacement)
 
 
-def three_run_order(measured: float, order: float, theory: tuple[float, float]) -> float:
+def three_run_order(measured: float, order: float, theory: tuple[float, float], upper: bool = False) -> float:
     """The order a three-run estimate takes, from the ``measured`` one and
     the two-run ``order`` (:func:`balanced_order` of ``theory``'s range): the
     two-run order where the measured one is at or above it (above theory is
     the coarse run's error cancelling, not a faster rate: Roache's GCI, ASME
-    V&V 20); the measured one where it is clipped or further than
+    V&V 20), but with ``upper`` the measured one where it lies between that
+    order and theory's upper end (since 2026-11-29, est3_37: within a range
+    theory allows, the third run shows the upper end at work, which two runs
+    could only hedge; scene C's degree-2 C4 tractions, observed 2.54-2.93
+    of [1.52, 3] with true rates 3.05-3.13, read 2.21-2.33 at the balanced
+    2.20, 1.27-1.66 at the observed order; not for EFGM, whose differences
+    do not see its quadrature's floor and shrink faster than its error:
+    :func:`profile_estimates`); the measured one where it is clipped or further than
     :data:`~contactcore.tolerances.ORDER_MISMATCH` below theory's range (the
     larger estimate, which a warning calls not to be trusted:
     :func:`~contactcore.estimate.caveats.order_mismatch`); else, unwarned,
@@ -199,7 +232,7 @@ def three_run_order(measured: float, order: float, theory: tuple[float, float]) 
     [0.58, 1.73] for a measured order a whole one below (the most
     :data:`~contactcore.tolerances.ORDER_MISMATCH` leaves unwarned)."""
     if measured >= order:
-        return order
+        return measured if upper and measured <= theory[1] else order
     if measured <= tol.ORDER_RANGE[0] or measured < theory[0] - tol.ORDER_MISMATCH:
         return measured
     return balanced_order(measured, order)
@@ -207,7 +240,8 @@ def three_run_order(measured: float, order: float, theory: tuple[float, float]) 
 
 def richardson(values: list[np.ndarray], theory: tuple[float, float], ratio: float = 2.0, coarse: bool = False,
                kept: np.ndarray | None = None, cells=None, floor: float = 0.0,
-               low: bool = False, far: tuple[np.ndarray, float] | None = None) -> QuantityEstimate:
+               low: bool = False, far: tuple[np.ndarray, float] | None = None,
+               upper: bool = False) -> QuantityEstimate:
     """The estimate of one quantity from its samples at h, h/2 (and h/4),
     coarse to fine (module doc): the finest run's error, or with ``coarse``
     the coarsest run's (``(q_{h/2} − q_h) r^p / (r^p − 1)``, two levels only).
@@ -217,7 +251,8 @@ def richardson(values: list[np.ndarray], theory: tuple[float, float], ratio: flo
     :func:`balanced_order` of the orders ``theory`` allows
     (:func:`~contactcore.estimate.orders.order_range`); with one,
     :func:`three_run_order` of the observed order (``measured``, None where a
-    difference is at most ``floor``: :func:`observed_order`) and that one; with ``cells`` (a function
+    difference is at most ``floor``: :func:`observed_order`) and that one
+    (``upper`` as it takes it); with ``cells`` (a function
     that returns a difference's part at the scale of the coarse run's cells,
     :func:`cell_scale_part`), that part is estimated at the upper order
     ``theory[1]`` and the rest at the balanced one: for a range that pollution
@@ -235,9 +270,10 @@ def richardson(values: list[np.ndarray], theory: tuple[float, float], ratio: flo
     ``|q_{h/2} − q_h| / (r^{p_i} − 1)`` with ``p_i`` the sample's order."""
     kept = slice(None) if kept is None or not np.any(kept) else kept
     p = observed_order(*(v[kept] for v in values[-3:]), ratio=ratio, floor=floor) if len(values) >= 3 else None
+    alike = differences_cosine(*(v[kept] for v in values[-3:])) if p is not None else None
     order = balanced_order(*theory, ratio=ratio)
     if p is not None:
-        order = three_run_order(p, order, theory)
+        order = three_run_order(p, order, theory, upper)
     elif low:
         order = float(theory[0])
     factor = lambda o: ratio ** o / (ratio ** o - 1) if coarse else 1 / (ratio ** o - 1)  # noqa: E731
@@ -245,9 +281,9 @@ def richardson(values: list[np.ndarray], theory: tuple[float, float], ratio: flo
     if far is not None and np.any(far[0]):
         far_order = far[1] if p is None else three_run_order(p, far[1], (theory[0], far[1]))
         return QuantityEstimate(np.abs(signed) * np.where(far[0], factor(far_order), factor(order)), order, theory,
-                                measured=p, far_order=float(far_order))
+                                measured=p, far_order=float(far_order), alike=alike)
     if p is not None or cells is None or theory[0] >= theory[1]:
-        return QuantityEstimate(np.abs(signed) * factor(order), order, theory, measured=p)
+        return QuantityEstimate(np.abs(signed) * factor(order), order, theory, measured=p, alike=alike)
     fine = cells(signed)
     share = rms(fine[kept]) / rms(signed[kept]) if rms(signed[kept]) > 0 else 0.0
     error = np.abs((signed - fine) * factor(order) + fine * factor(theory[1]))
@@ -304,7 +340,10 @@ def profile_estimates(levels: list[list[ProfileData]], degree: int, facts: Metho
     exact law's traction takes from two runs the balanced order of the
     range it has where Γ's status does not change
     (:func:`~contactcore.estimate.orders.smooth_range`: 2 at degree 2,
-    1.45 of ``[1, 2]`` at degree 1), and 1 at the rest."""
+    1.45 of ``[1, 2]`` at degree 1), and 1 at the rest.  A three-run
+    estimate of a mesh method (not ``facts.meshfree``) takes an order observed
+    within theory's range above the balanced one (:func:`three_run_order`'s
+    ``upper``)."""
     out, law = {}, scene.law if scene else None
     pollution, sizes = pollution_order(scene), Sizes.of(scene) if scene is not None else None
     ends_unknown = unknown_ends(scene, h)
@@ -325,7 +364,7 @@ def profile_estimates(levels: list[list[ProfileData]], degree: int, facts: Metho
             out[pid][q] = richardson([p.columns[q] for p in profs], theory, coarse=coarse, kept=kept,
                                      floor=roundoff_floor(sizes, q),
                                      cells=cells if polluted(q, degree, facts, law, switching, pollution) else None,
-                                     low=lower_end(q, theory, ends_unknown), far=far)
+                                     low=lower_end(q, theory, ends_unknown), far=far, upper=not facts.meshfree)
     return out
 
 

@@ -28,7 +28,8 @@ from .caveats import (beyond_reach, cell_scale_orders, cell_scale_warnings, exac
                       curved_layer, curved_layer_warning, ENERGY_KEY, near_status_changes, status_change_warnings,
                       quadrature_energy, quadrature_stress, quadrature_stress_warning, recovery_floor,
                       split_cell_share, split_cell_share_warning, observed_exact_traction_warning,
-                      observed_exact_tractions, slow_halving, slow_halving_warning)
+                      observed_exact_tractions, slow_halving, slow_halving_warning, unlike_differences,
+                      unlike_differences_warning)
 from .energy import EnergyEstimate, energy_estimate
 from .extrapolation import QuantityEstimate, profile_estimates
 from .orders import _exact, smooth_range, TRACTIONS
@@ -61,7 +62,8 @@ class Estimate:
     :func:`~contactcore.estimate.caveats.recovery_floor` applies, and with three
     runs :func:`~contactcore.estimate.caveats.order_mismatch`,
     :func:`~contactcore.estimate.caveats.observed_exact_tractions` and
-    :func:`~contactcore.estimate.caveats.slow_halving`: :func:`three_run_caveats`) or not to be
+    :func:`~contactcore.estimate.caveats.slow_halving`: :func:`three_run_caveats`, and where no
+    other line names it :func:`~contactcore.estimate.caveats.unlike_differences`) or not to be
     trusted (:func:`~contactcore.estimate.caveats.residues`); ``kept``,
     ``{PROFILE: {QUANTITY: mask}}``, the samples each quantity's estimate
     is summarised over (``kept_rms``): away from the singular points and
@@ -163,13 +165,14 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     warnings += quadrature_stress_warning(floor, results[-1].method, results[-1].degree)
     caveat = ((quadrature_energy(results[-1].method, results[-1].degree, facts, zz) + recovery_floor(zz)) if energy
               else [])
-    return Estimate(hs, profiles, zz, status, warnings + caveat, levels[-1],
-                    {k for v in found.values() for k in v} | set(layer) | set(rough) | set(residue) | set(nitsche)
-                    | set(split)
-                    | set(fast) | set(floor) | moved | {k for k, (_, capped) in near.items() if capped} | observed[1]
-                    | ({ENERGY_KEY} if caveat else set())
-                    | {f"{pid}:{q}" for pid, qs in profiles.items() for q, e in qs.items() if order_mismatch(e)},
-                    kept)
+    named = ({k for v in found.values() for k in v} | set(layer) | set(rough) | set(residue) | set(nitsche)
+             | set(split)
+             | set(fast) | set(floor) | moved | {k for k, (_, capped) in near.items() if capped} | observed[1]
+             | ({ENERGY_KEY} if caveat else set())
+             | {f"{pid}:{q}" for pid, qs in profiles.items() for q, e in qs.items() if order_mismatch(e)})
+    unlike = unlike_differences(profiles, named)  # only where no other line names it: it claims a direction
+    return Estimate(hs, profiles, zz, status, warnings + unlike_differences_warning(unlike) + caveat, levels[-1],
+                    named | set(unlike), kept)
 
 
 def far_tractions(smooth: dict[str, np.ndarray] | None, degree: int, facts, law, switching: bool | None

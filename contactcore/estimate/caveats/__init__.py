@@ -87,6 +87,7 @@ One idea per module, each a detector and its ``*_warning(s)`` line:
 - :mod:`~contactcore.estimate.caveats.residues`
 - :mod:`~contactcore.estimate.caveats.recovery`
 - :mod:`~contactcore.estimate.caveats.quadrature`
+- :mod:`~contactcore.estimate.caveats.unlike`
 
 Their public names are imported here, as ``contactcore.estimate.caveats.NAME``.
 
@@ -106,6 +107,7 @@ from .cell_scale import (cell_scale_orders, cell_scale_warnings, SPLIT_CELL_DEGR
 from .residues import KINDS, residue_warnings, residues
 from .recovery import curved_layer, curved_layer_warning, recovery_floor
 from .quadrature import quadrature_energy, quadrature_stress, quadrature_stress_warning
+from .unlike import unlike_differences, unlike_differences_warning
 
 __all__ = [
     "ENERGY_KEY", "GAMMA", "OBSERVE", "see", "WARNINGS_PAGE", "order_mismatch", "order_warnings", "slow_halving",
@@ -114,5 +116,6 @@ __all__ = [
     "distances", "near_status_changes", "status_change_warnings", "stencil_radius", "feature_size", "thinnest_body",
     "unsettled", "unsettled_warnings", "cell_scale_orders", "cell_scale_warnings", "SPLIT_CELL_DEGREE",
     "split_cell_share", "split_cell_share_warning", "KINDS", "residue_warnings", "residues", "curved_layer",
-    "curved_layer_warning", "recovery_floor", "quadrature_energy", "quadrature_stress", "quadrature_stress_warning"
+    "curved_layer_warning", "recovery_floor", "quadrature_energy", "quadrature_stress", "quadrature_stress_warning",
+    "unlike_differences", "unlike_differences_warning"
 ]

@@ -1,0 +1,46 @@
+"""Three runs whose two differences share no pattern (:func:`unlike_differences`).
+
+Richardson's premise is an error ``C(x) h^p`` sample by sample, so that
+the last difference of three runs is the first scaled down, ``δ₂ =
+2^{−p} δ₁``; the observed order checks only their sizes.  Their cosine
+over the samples (:func:`~contactcore.estimate.extrapolation.differences_cosine`,
+``QuantityEstimate.alike``) checks the pattern: 1 where the premise
+holds; at most :data:`~contactcore.tolerances.UNLIKE_COSINE` (0) where
+each run's error has a pattern of its own, which the differences then
+add rather than cancel (``‖δ₂‖`` up to ``(e₁² + e₂²)^½``), so that the
+estimate over-reads the error: ``(2^{2p} + 1)^½ / (2^p − 1)`` times it for
+unrelated patterns (2.24 at p = 1, 1.37 at p = 2).  A degree-1 stress,
+constant per cell, read at points that fall elsewhere in their cells at
+each h (scene B's fe P1 σxy: cosines −0.20, −0.13, read 2.09, 2.19),
+and an error term that dies between the runs (scene A's EFGM P2 σxx on
+A3, whose error falls 15-fold over the last halving: −0.58, 5.01) show
+this way."""
+from __future__ import annotations
+
+from ... import tolerances as tol
+from ..extrapolation import QuantityEstimate
+from .lines import see
+
+
+def unlike_differences(profiles: dict[str, dict[str, QuantityEstimate]],
+                       named: set[str] = frozenset()) -> dict[str, float]:
+    """``{PID:Q: cosine}`` of the three-run estimates whose two differences'
+    cosine (``alike``) is at most :data:`~contactcore.tolerances.UNLIKE_COSINE`,
+    but for those another warning already ``named`` (``PID:Q``): over the
+    entries no other line named it names 0.74-5.01 times the error, none
+    below 0.5 (A, B, C, the closed forms and the Lamé disc from three runs,
+    2026-11-29: docs/error-estimates.md, "The warnings", "unlike
+    differences"), where the entries other lines name hold under-estimates
+    too (EFGM P1's quadrature floor, 0.42)."""
+    return {f"{pid}:{q}": float(e.alike) for pid, qs in profiles.items() for q, e in qs.items()
+            if e.alike is not None and e.alike <= tol.UNLIKE_COSINE and f"{pid}:{q}" not in named}
+
+
+def unlike_differences_warning(found: dict[str, float]) -> list[str]:
+    """One line naming :func:`unlike_differences`' quantities, each with its
+    cosine."""
+    if not found:
+        return []
+    names = ", ".join(f"{k} ({v:.2f})" for k, v in found.items())
+    return [f"{names}: the runs' two differences share no pattern (cosine ≤ 0), each run's error its own: "
+            f"may be too large, not too small{see('unlike differences')}"]
