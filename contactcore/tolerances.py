@@ -1817,3 +1817,14 @@ SLOW_HALVING = 1.25
 #: shares 2.7e-5-1.4e-4) and 3 of 8 from three (0.82-1.33): there the
 #: quadrature's floor is smaller than on A, so the line says "possibly".
 QUADRATURE_STRESS_SHARE = 3e-4
+
+# --- sliver37 (2026-11-29): xfem P1's traction read where Γ crosses a grid line ---
+#: xfem P1 between equal moduli reads each body's stress for Nitsche's
+#: traction from a cell that body fills at least this share of
+#: (xdolfinx.xfem.reading): the cell itself, or where its part of the cell
+#: is smaller, the edge neighbour it fills most.  A P1 part's constant
+#: stress is the exact one near its part's centroid where the part is
+#: large (a block under its weight, h = 0.05: within 0.1 % of |t_N| at
+#: shares 0.6-0.98), but a smaller part's is barely determined (up to 2 %
+#: off at shares 0.02-0.06); half is where each cut cell has one large part.
+XFEM_READ_FILL_SHARE = 0.5
