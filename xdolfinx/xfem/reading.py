@@ -14,8 +14,10 @@ weight, Γ at 10°, h = 0.05: ±1.9 % of |t_N| at Γ's points; 0.2 % elsewhere).
 Here each body k's stress is read from a cell it fills at least
 :data:`~contactcore.tolerances.XFEM_READ_FILL_SHARE` of: the point's cell
 ``e`` itself, or where its part of ``e`` is smaller, the neighbour across
-an edge of ``e`` that it fills most (a sliver's barely determined field
-never reaches the traction).  With ``d_k = |(x_p − x_k)·n|`` the distance
+an edge of ``e`` that it fills most, if it fills at least
+:data:`~contactcore.tolerances.XFEM_READ_LEAST_SHARE` of it (else ``e``
+keeps Annavarapu's read): a sliver's barely determined field never
+reaches the traction.  With ``d_k = |(x_p − x_k)·n|`` the distance
 along the normal from the point ``x_p`` to the centroid ``x_k`` of body
 k's part of its reading cell, the weights
 
@@ -73,7 +75,8 @@ def applies(space) -> bool:
 def readers(space, cell: int) -> tuple[int, int] | None:
     """The cells (−, +) whose fields give each body's stress at cell
     ``cell``'s Γ points (module doc), or None where the cell is not cut
-    into two parts or a body fills no neighbour enough (the cell then
+    into two parts or a body fills no edge neighbour by
+    :data:`~contactcore.tolerances.XFEM_READ_LEAST_SHARE` (the cell then
     keeps Annavarapu's read)."""
     if _share(space, cell, 0) in (0.0, 1.0):
         return None
@@ -84,7 +87,7 @@ def readers(space, cell: int) -> tuple[int, int] | None:
             continue
         shares = {d: _share(space, d, body) for d in _edge_neighbours(space, cell)}
         best = max(shares, key=shares.get, default=None)
-        if best is None or shares[best] < tol.XFEM_READ_FILL_SHARE:
+        if best is None or shares[best] < tol.XFEM_READ_LEAST_SHARE:
             return None
         out.append(best)
     return out[0], out[1]
