@@ -1844,3 +1844,23 @@ QUADRATURE_STRESS_SHARE = 3e-4
 #: h/16; the closed forms' three runs; the Lamé disc):
 #: docs/error-estimates.md, "The warnings", "unlike differences".
 UNLIKE_COSINE = 0.0
+
+# --- sliver37 (2026-11-29): xfem P1's traction read where Γ crosses a grid line ---
+#: xfem P1 between equal moduli reads each body's stress for Nitsche's
+#: traction from a cell that body fills at least this share of
+#: (xdolfinx.xfem.reading): the cell itself, or where its part of the cell
+#: is smaller, the edge neighbour it fills most.  A P1 part's constant
+#: stress is the exact one near its part's centroid where the part is
+#: large (a block under its weight, h = 0.05: within 0.1 % of |t_N| at
+#: shares 0.6-0.98), but a smaller part's is barely determined (up to 2 %
+#: off at shares 0.02-0.06); half is where each cut cell has one large part.
+XFEM_READ_FILL_SHARE = 0.5
+#: Where a body fills less than XFEM_READ_FILL_SHARE of a cut cell, its
+#: stress is read from the edge neighbour it fills most if it fills at
+#: least this share of it (else the cell keeps Annavarapu's read): on
+#: triangles a sliver's body may fill no edge neighbour by half (Γ near a
+#: grid line with the triangles beside it cut too: at best 0.218 and 0.248
+#: on the block of XFEM_READ_FILL_SHARE at h = 0.05), and a part of 0.17
+#: of a quadrilateral there still had its stress near its centroid
+#: (within 0.1 % of |t_N|).
+XFEM_READ_LEAST_SHARE = 0.15

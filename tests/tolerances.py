@@ -1732,3 +1732,17 @@ UNLIKE_ALIKE_SLACK = 1e-9
 #: The least over-reading of the synthetic unlike differences' estimate
 #: (p = 1: √5 ≈ 2.24 for unrelated patterns): clearly above 1.
 UNLIKE_OVER_READ = 1.5
+
+# --- sliver37 (2026-11-29) ---
+#: xfem P1's point-to-point part of t_N (each point's value minus the
+#: linear interpolation of its neighbours along Γ), over the middle 80 %
+#: of a straight Γ at 10° through a block under its own weight (h = 0.05),
+#: in max|t_N|: 3.2e-2 when Annavarapu's cell average read the stress
+#: (spike pairs where Γ crosses a grid line), 4.4e-3 with the read
+#: interpolated to Γ (xdolfinx.xfem.reading), against fe P1's own
+#: facet-by-facet saw-tooth 7.7e-3.  Below fe P1's.
+XFEM_P1_POINT_TO_POINT = 7.7e-3
+#: The same run's largest |t_N − exact| over those points, in max|t_N|:
+#: 1.96e-2 before, 2.8e-3 after (fe P1 about 4e-3 at its points); twice
+#: the measured value.
+XFEM_P1_GRID_CROSSING_ERROR = 6e-3

@@ -27,6 +27,7 @@ from ..contact_system import GhostExchange
 from .cells import CellBasis
 from ..options import refinement
 from .cut import CutIntegration
+from .reading import all_readers
 
 
 @dataclass(frozen=True)
@@ -228,7 +229,9 @@ class EnrichedFunctionSpace:
         """The blocks of each owned whole − cell holding Γ's rule along an
         edge together with the whole + cell across it: the exact laws'
         traction there reads both cells (:meth:`across_edge`), so the
-        matrix couples them."""
+        matrix couples them; and each cut cell's with the cells its
+        traction reads a body's stress from at degree 1
+        (:func:`xdolfinx.xfem.reading.all_readers`)."""
         if not is_exact(self.scene.law):
             return []
         edges, out = self.edge_neighbours(), []
@@ -238,6 +241,9 @@ class EnrichedFunctionSpace:
                 continue
             for d in set(int(d) for d in self.across_edge(c, rule[0], edges) if d >= 0):
                 out.append(np.concatenate([self.cell_blocks(c), self.cell_blocks(d)]))
+        for c, pair in all_readers(self).items():
+            if pair != (c, c):
+                out.append(np.concatenate([self.cell_blocks(d) for d in [c] + sorted(set(pair) - {c})]))
         return out
 
     def create_matrix(self) -> PETSc.Mat:

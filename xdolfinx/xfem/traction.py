@@ -47,6 +47,7 @@ from contactcore.exact import is_exact
 from contactcore.traction import nitsche_weights, traction_maps
 
 from .kernels import heaviside_shift, side_strains, strain_matrix
+from .reading import all_readers, interpolation_weights
 
 
 def cell_parts(space, c: int) -> np.ndarray:
@@ -96,6 +97,9 @@ def cell_traction(space, c: int, D: np.ndarray, moduli: np.ndarray, edges: dict 
     pts, w, normals = space.cut.gamma_rules[c]
     P = len(w)
     parts = cell_parts(space, c)
+    pair = all_readers(space).get(c)
+    if pair is not None:
+        return _read_traction(space, c, D, moduli, pair)
     across = np.full(P, -1) if parts[1] > 0 or edges is None else space.across_edge(c, pts, edges)
     if np.any(across >= 0):
         return _edge_traction(space, c, D, moduli, pts, w, normals, across)
@@ -109,6 +113,28 @@ def cell_traction(space, c: int, D: np.ndarray, moduli: np.ndarray, edges: dict 
         if weights[0, body] > 0:
             rows += maps[body] @ strains[body]
     return blocks, rows, gamma
+
+
+def _read_traction(space, c: int, D: np.ndarray, moduli: np.ndarray, pair: tuple[int, int]):
+    """:func:`cell_traction` where each body's stress is read from the
+    cell ``pair[k]`` it fills and interpolated along n to the point
+    (:mod:`xdolfinx.xfem.reading`); ``γ₀`` is the cell's own, as in
+    :func:`cell_traction`.  The blocks and columns are cell ``c``'s
+    followed by each other reading cell's."""
+    pts, w, normals = space.cut.gamma_rules[c]
+    P = len(w)
+    parts = cell_parts(space, c)
+    _, gamma = nitsche_weights(np.broadcast_to(parts, (P, 2)), moduli, np.full(P, np.sum(w)))
+    gamma = np.maximum(gamma, gamma_floor(parts, moduli, space.cut.cell_size[c]))
+    maps = traction_maps(normals, D, interpolation_weights(space, pts, normals, pair))
+    reading = [c] + sorted(set(d for d in pair if d != c))
+    columns, rows = [], []
+    for d in reading:
+        blocks, strains = side_strains(space, d, pts)
+        columns.append(blocks)
+        rows.append(sum(maps[body] @ strains[body] for body in Body if pair[body] == d)
+                    if d in pair else np.zeros((P, 2, strains[0].shape[-1])))
+    return np.concatenate(columns), np.concatenate(rows, axis=-1), gamma
 
 
 def _edge_traction(space, c: int, D: np.ndarray, moduli: np.ndarray, pts, w, normals, across):
@@ -146,7 +172,8 @@ def traction_operator(space):
     columns, ``γ₀`` (m,) in Pa/m.
 
     The cells read from themselves alone (:func:`cell_traction`'s first
-    case, all but those with Γ along an edge and a whole + cell across it)
+    case, all but those with Γ along an edge and a whole + cell across it,
+    and those :mod:`xdolfinx.xfem.reading` reads)
     are computed together, point by point as :func:`cell_traction` does
     (the same products per point, so the same numbers); the few others
     cell by cell (:func:`_edge_traction`).  Each row's entries reach the
@@ -163,9 +190,14 @@ def traction_operator(space):
     m = int(starts[-1])
     gamma = np.zeros(m)
     plain = []  # (cell, its parts): read from the cell alone
+    read = all_readers(space)
     for i, c in enumerate(cells):
         pts, w, normals = space.cut.gamma_rules[c]
         parts = cell_parts(space, c)
+        if c in read:
+            blocks, rows, gamma[starts[i]:starts[i + 1]] = _read_traction(space, c, D, moduli, read[c])
+            _add_rows(trip, starts[i], blocks, rows)
+            continue
         across = np.full(len(w), -1) if parts[1] > 0 or edges is None else space.across_edge(c, pts, edges)
         if not np.any(across >= 0):
             plain.append((i, parts))
