@@ -36,6 +36,8 @@ numpy and scipy only; no method is imported.
 from .caveats import (beyond_reach, cell_scale_orders, cell_scale_warnings, curved_layer, curved_layer_warning,
                       exact_traction_warning, exact_tractions, fast_gamma, fast_gamma_warning, feature_size,
                       near_status_changes, observed_exact_traction_warning, observed_exact_tractions, order_mismatch,
+                      steady_exact_traction_warning, steady_exact_tractions,
+                      enforced_gaps, enforced_gap_warning,
                       order_warnings, pollution_warning, quadrature_energy, quadrature_stress, quadrature_stress_warning, recovery_floor, residue_warnings, residues,
                       slow_halving, slow_halving_warning, split_cell_share, split_cell_share_warning,
                       status_change_warnings, stencil_radius, thinnest_body, unsettled, unsettled_warnings)
@@ -61,6 +63,7 @@ __all__ = [
     "beyond_reach", "cell_scale_orders", "cell_scale_warnings", "curved_layer", "curved_layer_warning",
     "exact_traction_warning", "exact_tractions", "fast_gamma", "fast_gamma_warning", "feature_size",
     "near_status_changes", "observed_exact_traction_warning", "observed_exact_tractions", "order_mismatch",
+    "steady_exact_traction_warning", "steady_exact_tractions", "enforced_gaps", "enforced_gap_warning",
     "order_warnings", "pollution_warning", "quadrature_energy", "quadrature_stress", "quadrature_stress_warning", "recovery_floor", "residue_warnings", "residues",
     "slow_halving", "slow_halving_warning", "split_cell_share", "split_cell_share_warning",
     "status_change_warnings", "stencil_radius", "thinnest_body", "unsettled", "unsettled_warnings",
