@@ -78,7 +78,9 @@ def _every_warning() -> list[str]:
               "differ": 12, "samples": 101, "h": [0.05, 0.025]}
     return (est.order_warnings({"A1": {"sxy": _quantity(2.0, 0.51)}})
             + est.pollution_warning(load_scene("B"), {"G": {q.split(":")[1]: _quantity(3) for q in NAMES}})
-            + est.exact_traction_warning(NAMES) + est.fast_gamma_warning(NAMES, "efgm", 1)
+            + est.exact_traction_warning(NAMES) + est.exact_traction_warning(NAMES, three=True)
+            + est.steady_exact_traction_warning(NAMES) + est.enforced_gap_warning(NAMES)
+            + est.fast_gamma_warning(NAMES, "efgm", 1)
             + est.fast_gamma_warning(NAMES, "efgm", 1, observed=True)
             + est.unsettled_warnings(unsettled, 0.05, 0.123, "m", 0.0456)
             + est.curved_layer_warning(NAMES, 0.05, "m")
@@ -92,13 +94,13 @@ def _every_warning() -> list[str]:
                                     EnergyEstimate(1.23e-5, 1.0, 0.1)))
 
 
-@pytest.mark.parametrize("k", range(16))
+@pytest.mark.parametrize("k", range(19))
 def test_each_warning_is_short_with_two_quantities_named(k):
-    """Each of the sixteen kinds of line (the three causes of a coarse
+    """Each of the nineteen kinds of line (the three causes of a coarse
     stencil, the two of EFGM P1's Γ), with two quantities named, is at
     most ESTIMATE_WARNING_CHARS and points to its row (each further
     quantity adds its name, 6-8 characters, or 14-24 with its figure)."""
     lines = _every_warning()
-    assert len(lines) == 16
+    assert len(lines) == 19
     _pointed(lines[k])
     assert len(lines[k]) <= tol.ESTIMATE_WARNING_CHARS, (len(lines[k]), lines[k])

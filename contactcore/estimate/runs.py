@@ -19,7 +19,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..profiles import ProfileData, sample_profiles
+from ..profiles import interface_status, ProfileData, sample_profiles
 from ..scene import Scene
 from .caveats import (beyond_reach, cell_scale_orders, cell_scale_warnings, exact_traction_warning, exact_tractions, fast_gamma,
                       fast_gamma_warning, feature_size, thinnest_body,
@@ -28,11 +28,12 @@ from .caveats import (beyond_reach, cell_scale_orders, cell_scale_warnings, exac
                       curved_layer, curved_layer_warning, ENERGY_KEY, near_status_changes, status_change_warnings,
                       quadrature_energy, quadrature_stress, quadrature_stress_warning, recovery_floor,
                       split_cell_share, split_cell_share_warning, observed_exact_traction_warning,
-                      observed_exact_tractions, slow_halving, slow_halving_warning, unlike_differences,
+                      observed_exact_tractions, slow_halving, slow_halving_warning, steady_exact_tractions,
+                      steady_exact_traction_warning, enforced_gaps, enforced_gap_warning, unlike_differences,
                       unlike_differences_warning)
 from .energy import EnergyEstimate, energy_estimate
 from .extrapolation import QuantityEstimate, profile_estimates
-from .orders import _exact, smooth_range, TRACTIONS
+from .orders import _exact, GAPS, smooth_range, TRACTIONS
 from .status import far_from_changes, status_change, status_changes, status_warning, switches
 
 
@@ -55,6 +56,8 @@ class Estimate:
     :func:`~contactcore.estimate.caveats.cell_scale_orders`,
     :func:`~contactcore.estimate.caveats.curved_layer`,
     :func:`~contactcore.estimate.caveats.exact_tractions`,
+    :func:`~contactcore.estimate.caveats.steady_exact_tractions`,
+    :func:`~contactcore.estimate.caveats.enforced_gaps`,
     :func:`~contactcore.estimate.caveats.split_cell_share`,
     :func:`~contactcore.estimate.caveats.quadrature_stress`, the energy's
     :data:`~contactcore.estimate.caveats.ENERGY_KEY` where
@@ -135,11 +138,16 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
                               far_tractions(smooth, results[-1].degree, facts, scene.law, switching))
     residue = residues(scene, levels, profiles, exclude)
     split = split_cell_share(scene, levels, profiles, exclude, results[-1].degree)
-    nitsche = exact_tractions(scene, profiles)
+    nitsche = exact_tractions(scene, profiles, smooth, levels)
+    steady = steady_exact_tractions(scene, profiles, results[-1].degree, smooth, levels)
+    held = enforced_gaps(scene, profiles, gamma_statuses(scene, results[-2:], levels[-1]), levels)
     observed = three_run_caveats(scene, profiles)
     # an exact law's traction has its own line (and order): not fast Γ's "order k + 1" too (review20)
-    fast = [k for k in fast_gamma(profiles, facts) if k not in set(nitsche) | observed[1]]
-    warnings = (order_warnings(profiles) + pollution_warning(scene, profiles) + exact_traction_warning(nitsche)
+    fast = [k for k in fast_gamma(profiles, facts) if k not in set(nitsche) | set(steady) | observed[1]]
+    held = [k for k in held if k not in fast]  # EFGM P1's own measured line first: one line an entry
+    warnings = (order_warnings(profiles) + pollution_warning(scene, profiles)
+                + exact_traction_warning(nitsche, len(levels) > 2) + steady_exact_traction_warning(steady)
+                + enforced_gap_warning(held)
                 + fast_gamma_warning(fast, results[-1].method, results[-1].degree, len(levels) > 2)
                 + unsettled_warnings(found, hs[-2], feature_size(scene), scene.user.units.length,
                                      thinnest_body(scene))
@@ -166,7 +174,7 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     caveat = ((quadrature_energy(results[-1].method, results[-1].degree, facts, zz) + recovery_floor(zz)) if energy
               else [])
     named = ({k for v in found.values() for k in v} | set(layer) | set(rough) | set(residue) | set(nitsche)
-             | set(split)
+             | set(steady) | set(held) | set(split)
              | set(fast) | set(floor) | moved | {k for k, (_, capped) in near.items() if capped} | observed[1]
              | ({ENERGY_KEY} if caveat else set())
              | {f"{pid}:{q}" for pid, qs in profiles.items() for q, e in qs.items() if order_mismatch(e)})
@@ -187,6 +195,22 @@ def far_tractions(smooth: dict[str, np.ndarray] | None, degree: int, facts, law,
         return None
     ranges = {q: smooth_range(q, degree, facts, law, switching) for q in TRACTIONS}
     return {pid: {q: (mask, r[1]) for q, r in ranges.items() if r is not None} for pid, mask in smooth.items()}
+
+
+def gamma_statuses(scene: Scene, results: list, profiles: list[ProfileData]) -> dict[str, list[np.ndarray]]:
+    """``{profile id: [final status per sample, one array a run]}`` of
+    each profile with a gap on Γ (:data:`~contactcore.estimate.orders.GAPS`),
+    in each of ``results`` (:func:`contactcore.profiles.interface_status`),
+    at the samples of ``profiles``; none for a law without exact
+    enforcement (:func:`~contactcore.estimate.caveats.enforced_gaps`)."""
+    if not _exact(scene.law):
+        return {}
+    out = {}
+    for p in profiles:
+        if set(GAPS) & set(p.names[3:]):
+            xy = np.column_stack([p.columns["x"], p.columns["y"]])
+            out[p.id] = [interface_status(scene, r.fields, xy, r.interface) for r in results]
+    return out
 
 
 def three_run_caveats(scene: Scene, profiles: dict[str, dict[str, QuantityEstimate]]) -> tuple[list[str], set[str]]:

@@ -98,10 +98,12 @@ one, it reads from the run's :class:`~contactcore.result.MethodFacts`
 from .lines import ENERGY_KEY, GAMMA, OBSERVE, see, WARNINGS_PAGE
 from .observed import order_mismatch, order_warnings, slow_halving, slow_halving_warning
 from .pollution import POLLUTED_ORDER, pollution_warning
-from .tractions import (exact_traction_warning, exact_tractions, fast_gamma, fast_gamma_warning,
-                        observed_exact_traction_warning, observed_exact_tractions)
+from .tractions import (enforced_gap_warning, enforced_gaps, exact_traction_warning, exact_tractions, fast_gamma,
+                        fast_gamma_warning,
+                        observed_exact_traction_warning, observed_exact_tractions, steady_exact_traction_warning,
+                        steady_exact_tractions)
 from .reach import beyond_reach, distances, near_status_changes, status_change_warnings, stencil_radius
-from .unsettled import feature_size, thinnest_body, unsettled, unsettled_warnings
+from .unsettled import feature_size, roundoff_runs, thinnest_body, unsettled, unsettled_warnings
 from .cell_scale import (cell_scale_orders, cell_scale_warnings, SPLIT_CELL_DEGREE, split_cell_share,
                          split_cell_share_warning)
 from .residues import KINDS, residue_warnings, residues
@@ -112,8 +114,11 @@ from .unlike import unlike_differences, unlike_differences_warning
 __all__ = [
     "ENERGY_KEY", "GAMMA", "OBSERVE", "see", "WARNINGS_PAGE", "order_mismatch", "order_warnings", "slow_halving",
     "slow_halving_warning", "POLLUTED_ORDER", "pollution_warning", "exact_traction_warning", "exact_tractions",
-    "fast_gamma", "fast_gamma_warning", "observed_exact_traction_warning", "observed_exact_tractions", "beyond_reach",
-    "distances", "near_status_changes", "status_change_warnings", "stencil_radius", "feature_size", "thinnest_body",
+    "fast_gamma", "fast_gamma_warning", "observed_exact_traction_warning", "observed_exact_tractions",
+    "steady_exact_traction_warning", "steady_exact_tractions", "enforced_gaps", "enforced_gap_warning",
+    "beyond_reach",
+    "distances", "near_status_changes", "status_change_warnings", "stencil_radius", "feature_size", "roundoff_runs",
+    "thinnest_body",
     "unsettled", "unsettled_warnings", "cell_scale_orders", "cell_scale_warnings", "SPLIT_CELL_DEGREE",
     "split_cell_share", "split_cell_share_warning", "KINDS", "residue_warnings", "residues", "curved_layer",
     "curved_layer_warning", "recovery_floor", "quadrature_energy", "quadrature_stress", "quadrature_stress_warning",

@@ -9,25 +9,36 @@ claims a direction only where every entry it named on the measured sets
 lay that way; otherwise it gives the measured range."""
 from __future__ import annotations
 
+import numpy as np
+
 from ... import tolerances as tol
 from ...labels import run_label
+from ...laws import OPEN, STICK
 from ...result import MethodFacts
 from ...scene import Scene
 from ..extrapolation import QuantityEstimate
-from ..orders import _exact, TRACTIONS
+from ..orders import _exact, SUPERCONVERGENT_DEGREES, TRACTIONS
 from .lines import GAMMA, OBSERVE, see
+from .unsettled import roundoff_runs
 
 
-def exact_tractions(scene: Scene, profiles: dict[str, dict[str, QuantityEstimate]]) -> list[str]:
+def exact_tractions(scene: Scene, profiles: dict[str, dict[str, QuantityEstimate]],
+                    smooth: dict[str, np.ndarray] | None = None, levels: list | None = None) -> list[str]:
     """The ``PID:Q`` of an exact law's tractions on Γ (Nitsche's
-    multiplier, :data:`~contactcore.estimate.orders.TRACTIONS`) estimated
-    from two runs whose orders theory allows reach down to 1: the
-    degree-1 multiplier (``[1, 2]`` where Γ's status never changes, 1 where
-    it does), or any degree's where Γ's status switches
-    (:func:`~contactcore.estimate.orders.theoretical_order`), at the
-    samples within :data:`~contactcore.tolerances.STATUS_CHANGE_CELLS`
-    coarse cells of a status change at 1 (beyond them at 2 at degree 2,
-    1.45 at degree 1: :func:`~contactcore.estimate.orders.smooth_range`).
+    multiplier, :data:`~contactcore.estimate.orders.TRACTIONS`) whose
+    estimate, without an observed order, takes order 1 at some sample:
+    a Γ whose status switches (:func:`~contactcore.estimate.orders.theoretical_order`)
+    with a sample within :data:`~contactcore.tolerances.STATUS_CHANGE_CELLS`
+    coarse cells of a change of its final status (``smooth``, the samples
+    beyond them: :func:`~contactcore.estimate.status.far_from_changes`;
+    None: every sample taken as near), which take 1 (beyond, 2 at degree
+    2, 1.45 at degree 1: :func:`~contactcore.estimate.orders.smooth_range`).
+    Where no sample lies near a change (a slip or a stick that switched
+    only in the history) the estimate takes the far order everywhere:
+    :func:`steady_exact_tractions` at degree 1, none at degree 2 (as on a
+    Γ that never switches; fix37).  A quantity whose runs (``levels``)
+    differ only at round-off is not named
+    (:func:`~contactcore.estimate.caveats.unsettled.roundoff_runs`).
     Order 1 is the least theory allows it; its pieces converge faster (1.4-3 on
     the held-out wedges; on a sheared and reversed block degree 2's t_N at
     2.3-2.5 beyond two coarse cells of a status change, 1.5-1.7 within,
@@ -36,14 +47,65 @@ def exact_tractions(scene: Scene, profiles: dict[str, dict[str, QuantityEstimate
     under exact Coulomb, xfem P1 t_N at h = 0.05 → 0.025), 2.2-2.9 on the
     Lamé disc under an exact law (docs/error-estimates.md, "Known
     limits")."""
+    return [k for k in _unobserved_tractions(scene, profiles, levels)
+            if _near_change(k, _entry(profiles, k), smooth)]
+
+
+def steady_exact_tractions(scene: Scene, profiles: dict[str, dict[str, QuantityEstimate]], degree: int,
+                           smooth: dict[str, np.ndarray] | None = None, levels: list | None = None) -> list[str]:
+    """The ``PID:Q`` of an exact law's degree-1 tractions on Γ (a degree
+    in :data:`~contactcore.estimate.orders.SUPERCONVERGENT_DEGREES`)
+    estimated without an observed order at the balanced 1.45 of ``[1, 2]``
+    at every sample: Γ's final status does not change along it (never
+    switched, or only in the history: ``smooth`` all True), so
+    :func:`exact_tractions`' order 1 applies nowhere (fix37: its line said
+    so on a crack in slip and a block that sticks).  Whether a piece mean
+    superconverges two runs cannot tell (:mod:`~contactcore.estimate.orders`);
+    measured 2026-11-29 (RMS over the kept samples): 0.69-3.86 on the 24
+    entries of two scenes that never switch (deg1_36), 0.68-2.13 on an
+    inclined block that sticks under its weight and 0.65 on an inclined
+    crack in slip (efgm P1; fe's and xfem's at round-off, not named:
+    :func:`~contactcore.estimate.caveats.unsettled.roundoff_runs`)."""
+    if degree not in SUPERCONVERGENT_DEGREES:
+        return []
+    return [k for k in _unobserved_tractions(scene, profiles, levels)
+            if not _near_change(k, _entry(profiles, k), smooth)]
+
+
+def _unobserved_tractions(scene: Scene, profiles: dict[str, dict[str, QuantityEstimate]],
+                          levels: list | None) -> list[str]:
+    """The ``PID:Q`` of an exact law's tractions on Γ whose estimate has
+    no observed order (two runs, or three of which one difference is at
+    round-off) and whose runs do not differ only at round-off."""
     if not _exact(scene.law):
         return []
+    noise = roundoff_runs(scene, levels) if levels else set()
     return [f"{pid}:{q}" for pid, qs in profiles.items() for q, e in qs.items()
-            if q in TRACTIONS and not e.observed and e.theory[0] <= 1]
+            if q in TRACTIONS and not e.observed and e.theory[0] <= 1 and f"{pid}:{q}" not in noise]
 
 
-def exact_traction_warning(names: list[str]) -> list[str]:
-    """One line naming :func:`exact_tractions`' quantities.  It gives the
+def _entry(profiles: dict[str, dict[str, QuantityEstimate]], key: str) -> QuantityEstimate:
+    """The estimate of ``PID:Q``."""
+    pid, q = key.split(":")
+    return profiles[pid][q]
+
+
+def _near_change(key: str, e: QuantityEstimate, smooth: dict[str, np.ndarray] | None) -> bool:
+    """Whether the estimate ``e`` of ``PID:Q`` takes order 1 at some
+    sample: its order is 1 and no far order applies, or one does
+    (``far_order``) but not at every sample (``smooth``, unknown: near)."""
+    if e.order > 1:
+        return False
+    if e.far_order is None or smooth is None:
+        return True
+    return not bool(np.all(smooth.get(key.split(":")[0], np.zeros(1, bool))))
+
+
+def exact_traction_warning(names: list[str], three: bool = False) -> list[str]:
+    """One line naming :func:`exact_tractions`' quantities; with ``three``
+    runs, of which the estimate observed no order (one difference at
+    round-off: :func:`~contactcore.estimate.extrapolation.observed_order`),
+    it says so instead of "from two runs".  It gives the
     measured ratios, not a direction: of the 82 entries it named on four
     sets (2026-11-28), 80 read 1 or more (up to 13.7) but the held-out
     exact Coulomb wedge's xfem P2 ``t_T`` 0.19 and grader17's tilted
@@ -51,13 +113,68 @@ def exact_traction_warning(names: list[str]) -> list[str]:
     estimates to warn of").  With degree 2 taken at 2 beyond
     :data:`~contactcore.tolerances.STATUS_CHANGE_CELLS` coarse cells of a
     status change (2026-11-29), 96 entries on four scenes read 0.09-8.51,
-    2 below 0.5; with degree 1 at 1.45 beyond them and where Γ's status
-    never changes (deg1_36), its 72 entries on six scenes 0.69-6.80, none
-    below 0.5 (docs/error-estimates.md, "Known limits")."""
+    2 below 0.5; degree 1 at 1.45 beyond them (deg1_36), its 48 entries
+    on four scenes 0.76-6.80, none below 0.5 (docs/error-estimates.md,
+    "Known limits")."""
     if not names:
         return []
+    if three:
+        return [f"{', '.join(names)}: an exact Γ traction at order 1 near status changes, three runs showing no "
+                f"order: often too large (up to 13.7×), not always{see('exact tractions')}"]
     return [f"{', '.join(names)}: an exact Γ traction from two runs at order 1 near status changes (faster "
             f"beyond): often too large (up to 13.7×), not always; {OBSERVE}{see('exact tractions')}"]
+
+
+def steady_exact_traction_warning(names: list[str]) -> list[str]:
+    """One line naming :func:`steady_exact_tractions`' quantities, with
+    their measured range (its docstring: 0.65-3.86 times the error on 32
+    entries, none below 0.5), not a direction."""
+    if not names:
+        return []
+    return [f"{', '.join(names)}: a degree-1 exact Γ traction without status changes, at 1.45 of [1, 2]: "
+            f"0.65-3.86× the error; {OBSERVE}{see('steady tractions')}"]
+
+
+def enforced_gaps(scene: Scene, profiles: dict[str, dict[str, QuantityEstimate]],
+                  statuses: dict[str, list[np.ndarray]], levels: list | None = None) -> list[str]:
+    """The ``PID:Q`` of an exact law's gaps on Γ that are its enforcement's
+    own violation, estimated without an observed order: ``g_N`` of a
+    profile closed (stick or slip) at every sample, ``g_T`` of one that
+    sticks at every sample, in the final status of each run
+    (``statuses``, ``{profile id: [status per sample, one array a run]}``:
+    :func:`contactcore.profiles.interface_status`).  There the true value
+    is 0 and the run's is Nitsche's consistent residual, which converges
+    at an order that theory's ``degree + 1`` for a gap does not give (an
+    inclined block that sticks under its weight, fe P1 ``g_T``: 3.2e-8 →
+    1.1e-8 m from h = 0.05 → 0.025, order 1.5 against 2; its two-run
+    estimate 0.39 of the error over the kept samples, fix37, 2026-11-29).
+    A quantity whose runs differ only at round-off is not named
+    (:func:`~contactcore.estimate.caveats.unsettled.roundoff_runs`: fe
+    and xfem's gaps of a crack in slip)."""
+    if not _exact(scene.law):
+        return []
+    noise = roundoff_runs(scene, levels) if levels else set()
+    held = {"gN": lambda s: s != OPEN, "gT": lambda s: s == STICK}
+    return [f"{pid}:{q}" for pid, qs in profiles.items() for q, e in qs.items()
+            if q in held and not e.observed and f"{pid}:{q}" not in noise and statuses.get(pid)
+            and all(np.all(held[q](np.asarray(s))) for s in statuses[pid])]
+
+
+def enforced_gap_warning(names: list[str]) -> list[str]:
+    """One line naming :func:`enforced_gaps`' quantities, with the measured
+    range, not a direction: 0.32-4.52 times the error (RMS over the kept
+    samples) on the 27 entries it named on four scenes at h = 0.1 → 0.05
+    (2026-11-29: a Lamé disc under exact unilateral contact and
+    tests/scenes/wedge_held.toml, against fe P2 at h = 0.0125; the
+    inclined block that sticks and the inclined crack in slip against
+    their closed forms), 3 below 0.5 (fe P1's g_N of the wedge 0.32, of
+    the block g_T 0.38, efgm P2's g_N there 0.39) and 3 above 2 (the
+    wedge's xfem P2 g_T 4.52; docs/error-estimates.md, "The warnings":
+    enforced gaps)."""
+    if not names:
+        return []
+    return [f"{', '.join(names)}: an exact law's gap where Γ is held (closed, stuck): the enforcement's residue, "
+            f"at no order theory gives: 0.32-4.52× the error; {OBSERVE}{see('enforced gaps')}"]
 
 
 def observed_exact_tractions(scene: Scene, profiles: dict[str, dict[str, QuantityEstimate]]) -> list[str]:

@@ -14,8 +14,9 @@ from ...geometry import Rectangle
 from ...profiles import ProfileData
 from ...result import MethodFacts
 from ...scene import Scene
+from ...scaling import Sizes
 from ...scene.resolution import body_thickness
-from ..extrapolation import QuantityEstimate, rms
+from ..extrapolation import QuantityEstimate, rms, roundoff_floor
 from ..orders import lower_end
 from ..singular import far_from_singular, stress_singular_points, unknown_ends
 from .lines import see
@@ -41,6 +42,33 @@ def thinnest_body(scene: Scene) -> float:
     return min(thickness.values()) if thickness else np.inf
 
 
+def roundoff_runs(scene: Scene, levels: list[list[ProfileData]]) -> set[str]:
+    """The ``PID:Q`` whose two finest runs differ only at round-off: at
+    every sample ``|q_{h/2} − q_h| ≤ max(ε s, f)`` with ``s`` the
+    quantity's largest ``|q|`` in either run, ``ε``
+    :data:`~contactcore.tolerances.ESTIMATE_ROUNDOFF`, and ``f``
+    :data:`~contactcore.tolerances.NEGLIGIBLE_SHARE` of the scene's size
+    of its kind (:func:`~contactcore.estimate.extrapolation.roundoff_floor`):
+    the thresholds at which :func:`~contactcore.estimate.caveats.residues`
+    and :func:`~contactcore.estimate.caveats.cell_scale_orders` skip a
+    difference, here at every sample.  The estimate is then round-off too,
+    and so is the error where the method is exact (fe and xfem on an
+    inclined crack in slip: both 1e-14 of scale, fix37); a warning that
+    names such a quantity is noise (:func:`unsettled`,
+    :func:`~contactcore.estimate.caveats.exact_tractions`)."""
+    if len(levels) < 2:
+        return set()
+    sizes, out = Sizes.of(scene), set()
+    for coarse, fine in zip(levels[-2], levels[-1]):
+        for q in fine.names[3:]:
+            a, b = fine.columns[q], coarse.columns[q]
+            scale = max(float(np.max(np.abs(a))), float(np.max(np.abs(b)))) if len(a) else 0.0
+            if float(np.max(np.abs(a - b), initial=0.0)) <= max(tol.ESTIMATE_ROUNDOFF * scale,
+                                                                roundoff_floor(sizes, q)):
+                out.add(f"{fine.id}:{q}")
+    return out
+
+
 def unsettled(scene: Scene, levels: list[list[ProfileData]], record: dict, facts: MethodFacts,
               exclude: float, estimates: dict[str, dict[str, QuantityEstimate]] | None = None
               ) -> dict[str, dict[str, tuple[float, float]]]:
@@ -63,17 +91,19 @@ def unsettled(scene: Scene, levels: list[list[ProfileData]], record: dict, facts
     estimate of ``u_y`` read 0.127 of its error).  A tie within
     :data:`~contactcore.tolerances.GEOMETRY` (relative) is no cause: h =
     0.05 with supports of 2h on a feature of 0.8 sits on the threshold,
-    and round-off must not decide it."""
+    and round-off must not decide it; nor is a quantity whose runs differ
+    only at round-off (:func:`roundoff_runs`)."""
     sing, feature, h = stress_singular_points(scene), feature_size(scene), float(record["h"])
     thin = thinnest_body(scene)
     out = {"reach": {}, "coarse": {}, "thin": {}}
     coarse_run = {p.id: p for p in levels[-2]} if len(levels) > 1 else {}
+    noise = roundoff_runs(scene, levels)
     for prof in levels[-1]:
         xy = np.column_stack([prof.columns["x"], prof.columns["y"]])
         kept = far_from_singular(scene, xy, exclude)
         dist = distances(xy, sing)
         near = np.min(dist[kept]) if np.any(kept) else np.inf
-        for q in prof.names[3:]:
+        for q in (q for q in prof.names[3:] if f"{prof.id}:{q}" not in noise):
             rho = stencil_radius(record, facts, q)
             within = kept & (dist < tol.REACH_STENCILS * rho * (1 - tol.GEOMETRY))
             local = rho <= h * (1 + tol.GEOMETRY) and not _lower_end(scene, estimates, prof.id, q, h)
