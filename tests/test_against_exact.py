@@ -16,6 +16,7 @@ from verification import run as run_driver
 from verification.__main__ import main
 from verification.agreement import default_exclusion, gap_floor, percent
 from verification.closed_forms import layered_slip
+from verification.run_summary import NOT_ESTIMATED_MARK
 
 #: C-coulomb's resolution here: every method's exact solve converges at 0.1
 #: from the committed state (at 0.2, fe P1's first increment needs Newton's
@@ -195,7 +196,7 @@ def test_with_an_estimate_the_exact_run_is_estimated_as_the_penalty_run(tmp_path
         assert np.abs(written[f"{q}_err"] - e.error).max() <= tol.REPEATED_SOLVE * np.abs(written[q]).max()
     worst = summary["estimate"]["worst"]
     row = next(line for line in (out / "summary.md").read_text().splitlines() if line.startswith("| fe (exact) |"))
-    assert f"| {worst['relative']:.2e} ({worst['at']}) |" in row and run_driver.NOT_ESTIMATED_MARK not in row
+    assert f"| {worst['relative']:.2e} ({worst['at']}) |" in row and NOT_ESTIMATED_MARK not in row
 
 
 def test_a_gamma_component_without_its_partner_is_measured_against_its_own_size():

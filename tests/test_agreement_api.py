@@ -132,7 +132,7 @@ def test_run_writes_the_helpers_agreement_figures(tmp_path):
     written = (tmp_path / "out" / "summary.md").read_text()
     from contactcore import load_scene
     from verification import methods
-    from verification.run import UNESTIMATED_AGREEMENT, law_line  # not estimated: says whose error a difference is
+    from verification.run_summary import UNESTIMATED_AGREEMENT, law_line  # not estimated: says whose error a difference is
     assert UNESTIMATED_AGREEMENT in written
     for name in ("fe", "xfem", "efgm"):  # what each method is, from its options class
         assert f"- {name}: {methods.discretisation(name).about}" in written

@@ -14,7 +14,7 @@ import pytest
 
 from contactcore import ContactError, SceneError, load_scene
 from verification import files
-from verification.run import read_nodes
+from verification.run_checks import read_nodes
 
 ROOT = Path(__file__).resolve().parents[1]
 MM_WEDGE = ROOT / "tests" / "scenes" / "mm_wedge.toml"

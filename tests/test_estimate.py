@@ -15,7 +15,8 @@ from contactcore import tolerances as core_tol
 from contactcore.scaling import Sizes
 from verification import files, methods
 from verification.effectivity import CASES, VARIANTS, effectivity
-from verification.run import NOT_ESTIMATED, NOT_ESTIMATED_MARK, run
+from verification.run import run
+from verification.run_summary import NOT_ESTIMATED, NOT_ESTIMATED_MARK
 
 
 def _facts(name: str, degree: int):
@@ -348,7 +349,8 @@ def test_run_and_efficiency_name_the_same_worst_estimate_on_scene_b(tmp_path):
     from verification import methods
     from verification.agreement import default_exclusion, sampled
     from verification.efficiency import _estimated
-    from verification.run import _estimate_cells, estimate_record
+    from verification.run_files import estimate_record
+    from verification.run_summary import _estimate_cells
     scene, h = load_scene("B"), 0.2
     exclude, solve = default_exclusion(scene), methods.solver("fe")
     coarse, fine = (solve(scene, hk, degree=1, estimate_condition=False) for hk in (h, h / 2))

@@ -87,7 +87,7 @@ def test_summary_md_lists_partial_points_only_where_a_run_has_them():
     """summary.md's note under the table: each run with partial points, its
     counts and each point with θ (summary.json's `status` and `partial`);
     nothing for a run without."""
-    from verification.run import _partial_note
+    from verification.run_summary import _partial_note
     plain = {"method": "fe", "status": {"open": 1, "stick": 2, "slip": 0}}
     partial = {"method": "xfem", "status": {"open": 19, "stick": 40, "slip": 0, "partial": 1},
                "partial": [{"x": 0.325, "y": 0.5, "theta": 0.0587}]}

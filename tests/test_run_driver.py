@@ -177,16 +177,16 @@ def test_a_failed_solve_among_several_methods_is_named():
     keeping its details; alone, or a refused option (the input's fault),
     it is raised as it is."""
     from contactcore.errors import SolverError, SolverOptionError
-    from verification.run import _named
+    from verification import run_solve
 
     def fails(exc):
         exc.details = "history"
         raise exc
 
     with pytest.raises(SolverError, match=r"^efgm: scene wedge: increment 1 of 10 failed$") as named:
-        _named(["fe", "xfem", "efgm"], "efgm", fails, SolverError("scene wedge: increment 1 of 10 failed"))
+        run_solve.named(["fe", "xfem", "efgm"], "efgm", fails, SolverError("scene wedge: increment 1 of 10 failed"))
     assert named.value.details == "history"
     with pytest.raises(SolverError, match=r"^scene wedge"):
-        _named(["efgm"], "efgm", fails, SolverError("scene wedge: increment 1 of 10 failed"))
+        run_solve.named(["efgm"], "efgm", fails, SolverError("scene wedge: increment 1 of 10 failed"))
     with pytest.raises(SolverOptionError, match=r"^petsc option"):
-        _named(["fe", "efgm"], "fe", fails, SolverOptionError("petsc option x: unknown"))
+        run_solve.named(["fe", "efgm"], "fe", fails, SolverOptionError("petsc option x: unknown"))

@@ -15,7 +15,7 @@ from pathlib import Path
 
 from . import files
 from .agreement.outside import compare_outside
-from .run import conventions
+from .run_summary import conventions
 
 #: outside.csv's columns, in order.
 CSV_COLUMNS = ["profile", "quantity", "s", "s_unit", "x", "y", "outside", "project", "estimate", "difference",

@@ -14,7 +14,7 @@ Every figure here is one ``run`` reports too, computed by the same code:
   agreement and the estimates leave out;
 - the estimate is :func:`contactcore.estimate.estimate_runs` of the runs at
   2h and h (the study's h the finer, the answer, as ``run --h 2h
-  --estimate`` solves h and h/2) and :func:`verification.run.estimate_record`
+  --estimate`` solves h and h/2) and :func:`verification.run_files.estimate_record`
   of it, on the point's scene with Γ's own profile (:func:`with_gamma`):
   the scene's profiles may not lie on a moved Γ, so the study drops them.
 """
@@ -27,7 +27,7 @@ from contactcore import estimate as estimates
 from contactcore.estimate import far_from_singular
 
 from .agreement import default_exclusion
-from .run import estimate_record
+from .run_files import estimate_record
 
 #: The profile the study samples on every point's Γ, wherever it lies.
 GAMMA = InterfaceProfile("gamma", ("gN", "gT", "tN", "tT"), title="Γ")
@@ -77,7 +77,7 @@ def estimate_columns(scene, coarse, fine) -> tuple[dict, list[str]]:
     """The :data:`ESTIMATE_COLUMNS` of a point's runs at 2h (``coarse``) and
     h (``fine``, the row's answer), Results of ``scene`` (the point's), and
     the estimate's warnings: :func:`contactcore.estimate.estimate_runs` and
-    :func:`verification.run.estimate_record` on :func:`with_gamma`'s scene,
+    :func:`verification.run_files.estimate_record` on :func:`with_gamma`'s scene,
     as ``run --estimate`` makes them."""
     gamma = with_gamma(scene)
     est = estimates.estimate_runs(gamma, [coarse, fine], default_exclusion(gamma))

@@ -96,7 +96,7 @@ class OutsideTable:
     def markdown(self, conventions: str = "") -> str:
         """The verdict in Markdown (what ``against`` writes as outside.md,
         its ``conventions`` paragraph ``run``'s summary.md's,
-        :func:`verification.run.conventions`, after the title)."""
+        :func:`verification.run_summary.conventions`, after the title)."""
         from ..files import column_unit
         from .measures import percent
         length = self.units.length
