@@ -45,7 +45,7 @@ from contactcore.labels import run_label
 from . import against_exact as exact_gap
 from . import agreement, files, interface, methods, plots, pool
 from .run_checks import check, check_floors, estimated_h, read_nodes
-from .run_files import estimate_record, written_profiles, write_method  # noqa: F401  (estimate_record: cited here)
+from .run_files import written_profiles, write_method
 from .run_reference import DEFAULT_REFERENCE, as_reference, reference_label, solve_reference
 from .run_solve import named, progress, solve_estimated
 from .run_summary import write_summary

@@ -96,7 +96,7 @@ class Estimate:
         of them (``kept``).  summary.json's
         ``"estimate"`` is this dict with each quantity's ``scale`` and
         ``kept_scale`` and the ``"worst"`` added
-        (:func:`verification.run.estimate_record`: the scales are the
+        (:func:`verification.run_files.estimate_record`: the scales are the
         agreement's, floored as it floors them)."""
         out = {pid: {q: e.record(self.kept.get(pid, {}).get(q)) for q, e in qs.items()}
                for pid, qs in self.profiles.items()}
