@@ -73,9 +73,10 @@ def _worst(serial: Path, parallel: Path) -> float:
     return worst
 
 
-def _parity(tmp_path, scene, ranks: int, degree: int, h: float, methods=("fe",), timeout: float = 300) -> None:
+def _parity(tmp_path, scene, ranks: int, degree: int, h: float, methods=("fe",), timeout: float = 300,
+            options: tuple = ()) -> None:
     serial, parallel = tmp_path / f"s{degree}", tmp_path / f"p{ranks}_{degree}"
-    args = ["run", scene, "--method", *methods, "--degree", degree, "--h", h, "--no-plots"]
+    args = ["run", scene, "--method", *methods, "--degree", degree, "--h", h, "--no-plots", *options]
     assert main([str(a) for a in args] + ["--out", str(serial), "--quiet"]) == 0
     out = mpirun(ranks, "-m", "verification", *args, "--out", parallel, timeout=timeout)
     assert out.returncode == 0, out.stderr
@@ -131,6 +132,18 @@ def test_exact_contact_on_two_ranks_gives_the_serial_answer(tmp_path):
     path = tmp_path / "C-coulomb-exact.toml"
     path.write_text(scene_toml(scene))
     _parity(tmp_path, path, 2, 1, 0.1, methods=("fe", "xfem", "efgm"))
+
+
+@pytest.mark.slow
+def test_xfem_p1s_traction_read_from_a_ghost_cell_gives_the_serial_answer(tmp_path):
+    """xfem P1 between equal moduli under an exact law reads a sliver's
+    body from the edge neighbour it fills (xdolfinx.xfem.reading): on
+    triangles at h = 0.05 one reading cell a rank is a ghost (7 at 0.025,
+    none on quadrilaterals; review21, 2026-11-29), which the traction
+    operator and the matrix's couplings (``edge_couplings``) must both
+    reach: the serial interface and profile."""
+    _parity(tmp_path, ROOT / "tests" / "scenes" / "self_weight_tilted_crack.toml", 2, 1, 0.05, methods=("xfem",),
+            options=("--cell", "triangle"))
 
 
 @pytest.mark.slow
