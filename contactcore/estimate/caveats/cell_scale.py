@@ -38,7 +38,7 @@ def cell_scale_orders(scene: Scene, levels: list[list[ProfileData]],
     once the runs are asymptotic.  Faster means the coarse run's is not yet
     (the runs of docs/error-estimates.md, "Which estimates to warn of").
     Quantities with an observed order (three runs) are left to
-    :func:`order_warnings`; a part at round-off shows no order: of the
+    :func:`~contactcore.estimate.caveats.observed.order_warnings`; a part at round-off shows no order: of the
     quantity (:data:`~contactcore.tolerances.ESTIMATE_ROUNDOFF` of its largest
     |value|), or of the scene's own size of its kind
     (:data:`~contactcore.tolerances.NEGLIGIBLE_SHARE` of
@@ -109,7 +109,7 @@ def cell_scale_warnings(found: dict[str, tuple[float, float]], hs: tuple[float, 
     unit named ``length``).  The line says the
     estimate is likely too large (measured 0.99-8.05 times the error on
     the 28 entries it named on four sets, 2026-11-28) but for the
-    quantities also in ``undirected`` (:func:`fast_gamma`'s, EFGM P1's Γ
+    quantities also in ``undirected`` (:func:`~contactcore.estimate.caveats.tractions.fast_gamma`'s, EFGM P1's Γ
     quantities, which it named at 0.55 on the layered slip): those get a
     line of their own without a direction."""
     lines = []

@@ -22,7 +22,9 @@ WARNINGS_PAGE = "docs/error-estimates.md"
 OBSERVE = "try --estimate 3"
 
 
-#: The key under which :func:`quadrature_energy` or :func:`recovery_floor` marks the energy estimate in
+#: The key under which
+#: :func:`~contactcore.estimate.caveats.quadrature.quadrature_energy` or
+#: :func:`~contactcore.estimate.caveats.recovery.recovery_floor` marks the energy estimate in
 #: :attr:`~contactcore.estimate.runs.Estimate.unsettled` (a profile id
 #: ``energy``, quantity ``‖σ‖_E``, as the effectivity table names it).
 ENERGY_KEY = "energy:‖σ‖_E"

@@ -64,14 +64,14 @@ def beyond_reach(scene: Scene, xy: np.ndarray, record: dict, facts: MethodFacts,
     :data:`~contactcore.tolerances.EXCLUDE_KEEP_SHARE` of the farthest
     sample's distance from those points, so that a profile keeps its
     middle; samples then still within reach are named by the reach cause
-    of :func:`unsettled`.  A sample at ``R`` within
+    of :func:`~contactcore.estimate.caveats.unsettled.unsettled`.  A sample at ``R`` within
     :data:`~contactcore.tolerances.GEOMETRY` (relative) is kept, as
-    :func:`unsettled` does not count it within reach.  ``exclude`` 0 keeps
+    :func:`~contactcore.estimate.caveats.unsettled.unsettled` does not count it within reach.  ``exclude`` 0 keeps
     every sample: the caller left nothing out.
 
     ``changes``, the points where Γ's final status changes under an exact
     law (:func:`~contactcore.estimate.status.status_changes`), are treated
-    alike for a bulk quantity (not Γ's :data:`GAMMA`, whose tractions take
+    alike for a bulk quantity (not Γ's :data:`~contactcore.estimate.caveats.lines.GAMMA`, whose tractions take
     order 1 near them instead): its samples within
     :data:`~contactcore.tolerances.STATUS_CHANGE_STENCILS` stencils of one
     are left out too, capped on their own (:func:`near_status_changes`)."""
@@ -100,7 +100,7 @@ def _beyond(dist: np.ndarray, reach: float) -> np.ndarray:
 def near_status_changes(profiles: list[ProfileData], changes: np.ndarray, record: dict, facts: MethodFacts,
                         kept: dict[str, dict[str, np.ndarray]]) -> dict[str, tuple[float, bool]]:
     """``{PID:Q: (R, capped)}`` of the bulk quantities (not Γ's
-    :data:`GAMMA`) of ``profiles`` (the finest run's) with a sample within
+    :data:`~contactcore.estimate.caveats.lines.GAMMA`) of ``profiles`` (the finest run's) with a sample within
     ``R`` = :data:`~contactcore.tolerances.STATUS_CHANGE_STENCILS` coarse
     stencils (:func:`stencil_radius` of ``record``, the coarse run) of one
     of ``changes``, the points where Γ's final status changes under an

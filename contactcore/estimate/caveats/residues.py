@@ -39,7 +39,7 @@ def residues(scene: Scene, levels: list[list[ProfileData]],
     0.05, 0.025 and 0.0125, against 2 in theory and 1.98 for σxy in the
     same runs (docs/error-estimates.md, "Which estimates to warn of").
     Quantities with an observed order (three runs) are left to
-    :func:`order_warnings` but count in their kind's largest; a
+    :func:`~contactcore.estimate.caveats.observed.order_warnings` but count in their kind's largest; a
     difference at round-off (of the
     quantity, :data:`~contactcore.tolerances.ESTIMATE_ROUNDOFF`, or of
     the scene's size of its kind, :data:`~contactcore.tolerances.NEGLIGIBLE_SHARE`

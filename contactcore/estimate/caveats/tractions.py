@@ -211,7 +211,7 @@ def observed_exact_traction_warning(names: list[str]) -> list[str]:
 
 
 def fast_gamma(profiles: dict[str, dict[str, QuantityEstimate]], facts: MethodFacts) -> list[str]:
-    """The ``PID:Q`` of the gaps and tractions on Γ (:data:`GAMMA`) of a
+    """The ``PID:Q`` of the gaps and tractions on Γ (:data:`~contactcore.estimate.caveats.lines.GAMMA`) of a
     method and degree whose ``facts`` say ``fast_gamma`` (EFGM P1:
     :attr:`efgm.options.EFGM.fast_gamma`, its measurement) estimated from
     two runs, or from three whose observed order lies above the highest theory allows by more than

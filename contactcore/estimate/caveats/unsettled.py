@@ -76,7 +76,7 @@ def unsettled(scene: Scene, levels: list[list[ProfileData]], record: dict, facts
     from the coarser run (``record``, its discretisation; ``facts``, its
     method's :class:`~contactcore.result.MethodFacts`) of the pair that
     makes it: ``{"reach": {PID:Q: (ρ, h_ok)}, "coarse": {...}, "thin": {...}}``
-    with ``ρ`` the quantity's :func:`stencil_radius` in that run and
+    with ``ρ`` the quantity's :func:`~contactcore.estimate.caveats.reach.stencil_radius` in that run and
     ``h_ok`` the coarse run's h from which the cause is gone (ρ scales
     with h).  ``reach``: a sample kept (at least ``exclude`` from the
     singular points) lies within
@@ -163,7 +163,7 @@ def unsettled_warnings(found: dict[str, dict[str, tuple[float, float]]], h: floa
     (:class:`~contactcore.scene.Units`): the coarse run's ``h``, the
     stencil, the scene's smallest ``feature`` and ``thin``, its thinnest
     body's thickness.  A stencil is a cell, a support or a recovery patch
-    (:func:`stencil_radius`; docs/error-estimates.md, "The warnings")."""
+    (:func:`~contactcore.estimate.caveats.reach.stencil_radius`; docs/error-estimates.md, "The warnings")."""
     lines, u = [], f" {length}"
     for cause, entries in found.items():
         for rho in sorted({v[0] for v in entries.values()}):
