@@ -31,6 +31,19 @@ convex weights keep the method consistent, and skew-symmetric Nitsche
 different moduli the traction keeps Annavarapu's weights (their
 robustness under contrast, Annavarapu et al. 2012), and at degree 2 each
 body's linear stress is read at the point already.
+
+Only on a straight Γ (``scene.interface.straight_in``).  On a curved Γ
+(C-coulomb made exact, xfem P1 against fe P2 at h = 0.0125) the read
+moved C4's t_N by no more than the curved Γ's own point-to-point scatter,
+with either sign, and lost on balance (RMS 1.95 → 2.29 % of max|t_N| on
+triangles at h = 0.05, worst sample 8.6 → 11.4 %): a neighbour's part
+centroid lies up to 0.76 of a cell's diameter along Γ from the cell's
+points there (at most 0.48 on the straight block), which reads
+``∂σ/∂s`` times that offset where t_N falls steeply towards the opening,
+and even the point's own cell, interpolated along n, lost on triangles
+(a stress not linear across Γ within a cell).  A curved Γ keeps
+Annavarapu's read (docs/contact-enforcement.md, "A curved Γ keeps
+Annavarapu's read").
 """
 from __future__ import annotations
 
@@ -67,9 +80,12 @@ def _edge_neighbours(space, cell: int) -> list[int]:
 
 
 def applies(space) -> bool:
-    """Whether the space's traction is read here: degree 1, equal moduli."""
-    moduli = [space.scene.materials[b].E for b in BODIES]
-    return space.degree == 1 and max(moduli) == min(moduli)
+    """Whether the space's traction is read here: degree 1, equal moduli,
+    a straight Γ (module doc: on a curved one the read lost to
+    Annavarapu's)."""
+    scene = space.scene
+    moduli = [scene.materials[b].E for b in BODIES]
+    return space.degree == 1 and max(moduli) == min(moduli) and scene.interface.straight_in(scene.domain)
 
 
 def readers(space, cell: int) -> tuple[int, int] | None:
