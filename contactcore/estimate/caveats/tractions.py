@@ -192,8 +192,10 @@ def observed_exact_tractions(scene: Scene, profiles: dict[str, dict[str, Quantit
     and the line's cause is absent, as for two runs (fix38, 2026-11-29:
     an inclined crack in slip, efgm P1 and P2 ``t_N``, ``t_T`` at an
     observed 0.50, clipped, 3.31 and 3.74 times the error, are named by
-    the order line; every entry this line named on five scenes that
-    switch had samples near a change).  Where the
+    the order line; each of the 48 entries this line named on four scenes
+    that switch had 6-52 of its 101 samples near a change, and stays
+    named: docs/error-estimates.md, "The warnings", exact tractions).
+    Where the
     multiplier's error varies from sample to sample unlike from run to
     run, its runs' difference ``q_{h/2} − q_h`` is about ``(1 + 2^{-2p})^½``
     times the coarser run's error, not ``1 − 2^{-p}`` times it: the RMS
