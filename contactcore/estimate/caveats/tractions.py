@@ -195,9 +195,8 @@ def observed_exact_tractions(scene: Scene, profiles: dict[str, dict[str, Quantit
     the order line; each of the 48 entries this line named on four scenes
     that switch had 6-52 of its 101 samples near a change, and stays
     named: docs/error-estimates.md, "The warnings", exact tractions).
-    Where the
-    multiplier's error varies from sample to sample unlike from run to
-    run, its runs' difference ``q_{h/2} − q_h`` is about ``(1 + 2^{-2p})^½``
+    Where the multiplier's error varies from sample to sample unlike from
+    run to run, its runs' difference ``q_{h/2} − q_h`` is about ``(1 + 2^{-2p})^½``
     times the coarser run's error, not ``1 − 2^{-p}`` times it: the RMS
     ratio of two such differences still shows ``p``, but Richardson at
     ``p`` = 1 then reads ``(2^{2p} + 1)^½ / (2^p − 1)`` = 2.24 times the
