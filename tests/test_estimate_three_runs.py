@@ -79,6 +79,25 @@ def test_two_runs_get_no_three_run_caveat():
     assert three_run_caveats(scene, {"G": {"tN": two, "ux": two}}) == ([], set())
 
 
+def test_three_runs_name_an_exact_traction_only_with_a_sample_near_a_status_change():
+    """fix38: observed_exact_tractions names a three-run traction of a
+    switching Γ (theory (1, 1)) only where a sample lies within
+    STATUS_CHANGE_CELLS of a final status change (``smooth`` False there),
+    as exact_tractions does from two runs; where every sample is beyond
+    them (a Γ that switched only in its history) the far order applies
+    everywhere and the line does not name it.  The old code named both."""
+    scene = load_scene(BLOCK)
+    x = np.linspace(0.0, 1.0, 11)
+    levels = [np.cos(x) + (1.0 + x) * h for h in HS]
+    far, mixed = np.ones(len(x), bool), x > x[2]
+    steady, switching = (est.richardson(levels, theory=(1.0, 1.0), far=(m, est.balanced_order(1.0, 2.0)))
+                         for m in (far, mixed))
+    assert steady.observed and switching.observed
+    assert est.observed_exact_tractions(scene, {"G": {"tN": steady}}, {"G": far}) == []
+    assert est.observed_exact_tractions(scene, {"G": {"tN": switching}}, {"G": mixed}) == ["G:tN"]
+    assert est.observed_exact_tractions(scene, {"G": {"tN": steady}}) == ["G:tN"]
+
+
 def test_the_three_run_lines_are_short_and_point_to_their_rows():
     """Each three-run line with two quantities named (with their figures)
     is at most ESTIMATE_WARNING_CHARS and ends with its row of

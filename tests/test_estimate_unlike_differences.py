@@ -11,7 +11,10 @@ runs' errors rather than cancel them, and the estimate over-reads."""
 import numpy as np
 
 from contactcore import estimate as est
+from contactcore import load_scene
 from contactcore import tolerances as core_tol
+from contactcore.profiles import ProfileData
+from contactcore.scaling import Sizes
 from test_estimate_warning_lines import _pointed
 import tolerances as tol
 
@@ -61,3 +64,39 @@ def test_an_entry_another_line_names_is_left_to_it():
     assert two.alike is None and "alike" not in two.record()
     assert not est.unlike_differences({"B1": {"sxy": three}}, named={"B1:sxy"})
     assert not est.unlike_differences({"B1": {"sxy": two}})
+
+
+def _roundoff_runs(size: float) -> list[list[ProfileData]]:
+    """Three runs of a stress along a line of 41 samples whose first sample
+    is a singular point at :data:`tolerances.UNLIKE_SINGULAR_PEAK` times
+    the scene's ``size`` of stress (the same in every run), the rest of
+    order ``size`` with :func:`_levels`' own-pattern error at
+    :data:`tolerances.UNLIKE_ROUNDOFF_ERROR` times it."""
+    x = np.linspace(0.0, 1.0, 41)
+    runs = []
+    for h in HS:
+        pattern = np.where(np.floor(x / h + 0.3) % 2 == 0, 1.0, -1.0)
+        sxx = size * (np.sin(3 * x) + tol.UNLIKE_ROUNDOFF_ERROR * h * pattern)
+        sxx[0] = size * tol.UNLIKE_SINGULAR_PEAK
+        runs.append([ProfileData("D", "arclength", {"s": x, "x": x, "y": np.zeros_like(x), "sxx": sxx})])
+    return runs
+
+
+def test_runs_that_differ_only_at_round_off_are_not_named():
+    """fix38: a quantity whose two finest runs differ only at round-off at
+    every sample (:func:`contactcore.estimate.caveats.roundoff_runs`, which
+    every other line skips) is not named, though the order and cosine,
+    taken over the kept samples against their own scale, are computed: here
+    the largest value lies at a singular point left out.  The old code
+    named it (its ``unlike_differences`` took no runs)."""
+    scene = load_scene("tests/scenes/tilt_unil_exact.toml")
+    size = Sizes.of(scene).stress
+    levels = _roundoff_runs(size)
+    kept = np.arange(41) > 0
+    e = est.richardson([run[0].columns["sxx"] for run in levels], theory=(1.0, 1.0), kept=kept,
+                       floor=est.roundoff_floor(Sizes.of(scene), "sxx"))
+    assert e.measured is not None and e.alike <= core_tol.UNLIKE_COSINE
+    assert est.caveats.roundoff_runs(scene, levels) == {"D:sxx"}
+    profiles = {"D": {"sxx": e}}
+    assert est.unlike_differences(profiles) == {"D:sxx": e.alike}
+    assert est.unlike_differences(profiles, scene=scene, levels=levels) == {}

@@ -1756,3 +1756,16 @@ HELD_GAMMA_H = 0.1
 #: on the inclined crack in slip differ at 1e-14) are round-off, far below
 #: contactcore.tolerances.ESTIMATE_ROUNDOFF; this share far above it is not.
 HELD_GAMMA_NOISE, HELD_GAMMA_SIGNAL = 1e-14, 1e-4
+
+# --- fix38 (2026-11-29): unlike differences skip round-off runs (tests/test_estimate_unlike_differences.py) ---
+#: A synthetic profile's value at a singular point its estimate leaves out,
+#: in the scene's size of stress (contactcore.scaling.Sizes): large enough
+#: that ESTIMATE_ROUNDOFF of it (1e-7 of the size) lies above the floor
+#: NEGLIGIBLE_SHARE of the size (1e-8), so that differences between the two
+#: thresholds are round-off of the whole profile but not of the kept samples.
+UNLIKE_SINGULAR_PEAK = 1e3
+#: The amplitude of that profile's run-to-run error ``a h^p`` (p = 1, h =
+#: 0.1, 0.05, 0.025), in the size of stress: its two finest runs differ by
+#: at most 0.075 a = 7.5e-8 of the size (round-off of the peak), by 5e-8
+#: RMS over the kept samples (above the floor, so an order is observed).
+UNLIKE_ROUNDOFF_ERROR = 1e-6

@@ -141,7 +141,7 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     nitsche = exact_tractions(scene, profiles, smooth, levels)
     steady = steady_exact_tractions(scene, profiles, results[-1].degree, smooth, levels)
     held = enforced_gaps(scene, profiles, gamma_statuses(scene, results[-2:], levels[-1]), levels)
-    observed = three_run_caveats(scene, profiles)
+    observed = three_run_caveats(scene, profiles, smooth)
     # an exact law's traction has its own line (and order): not fast Γ's "order k + 1" too (review20)
     fast = [k for k in fast_gamma(profiles, facts) if k not in set(nitsche) | set(steady) | observed[1]]
     held = [k for k in held if k not in fast]  # EFGM P1's own measured line first: one line an entry
@@ -178,7 +178,7 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
              | set(fast) | set(floor) | moved | {k for k, (_, capped) in near.items() if capped} | observed[1]
              | ({ENERGY_KEY} if caveat else set())
              | {f"{pid}:{q}" for pid, qs in profiles.items() for q, e in qs.items() if order_mismatch(e)})
-    unlike = unlike_differences(profiles, named)  # only where no other line names it: it claims a direction
+    unlike = unlike_differences(profiles, named, scene, levels)  # only where no other line names it: it claims a direction
     return Estimate(hs, profiles, zz, status, warnings + unlike_differences_warning(unlike) + caveat, levels[-1],
                     named | set(unlike), kept)
 
@@ -213,12 +213,15 @@ def gamma_statuses(scene: Scene, results: list, profiles: list[ProfileData]) -> 
     return out
 
 
-def three_run_caveats(scene: Scene, profiles: dict[str, dict[str, QuantityEstimate]]) -> tuple[list[str], set[str]]:
+def three_run_caveats(scene: Scene, profiles: dict[str, dict[str, QuantityEstimate]],
+                      smooth: dict[str, np.ndarray] | None = None) -> tuple[list[str], set[str]]:
     """The warnings of a three-run estimate beyond its order's
-    (:func:`~contactcore.estimate.caveats.observed_exact_tractions`,
+    (:func:`~contactcore.estimate.caveats.observed_exact_tractions`, of
+    the tractions with a sample near a status change, ``smooth`` the
+    samples beyond: :func:`~contactcore.estimate.status.far_from_changes`;
     :func:`~contactcore.estimate.caveats.slow_halving`) and the ``PID:Q``
     they name; none for two runs."""
-    traction = observed_exact_tractions(scene, profiles)
+    traction = observed_exact_tractions(scene, profiles, smooth)
     slow = {k: v for k, v in slow_halving(profiles).items() if k not in traction}  # one line an entry (review20)
     return (observed_exact_traction_warning(traction) + slow_halving_warning(slow)), set(traction) | set(slow)
 

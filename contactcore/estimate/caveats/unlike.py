@@ -18,22 +18,33 @@ this way."""
 from __future__ import annotations
 
 from ... import tolerances as tol
+from ...scene import Scene
 from ..extrapolation import QuantityEstimate
 from .lines import see
+from .unsettled import roundoff_runs
 
 
-def unlike_differences(profiles: dict[str, dict[str, QuantityEstimate]],
-                       named: set[str] = frozenset()) -> dict[str, float]:
+def unlike_differences(profiles: dict[str, dict[str, QuantityEstimate]], named: set[str] = frozenset(),
+                       scene: Scene | None = None, levels: list | None = None) -> dict[str, float]:
     """``{PID:Q: cosine}`` of the three-run estimates whose two differences'
     cosine (``alike``) is at most :data:`~contactcore.tolerances.UNLIKE_COSINE`,
-    but for those another warning already ``named`` (``PID:Q``): over the
+    but for those another warning already ``named`` (``PID:Q``) and those
+    whose two finest runs (``levels``, of ``scene``) differ only at
+    round-off at every sample
+    (:func:`~contactcore.estimate.caveats.unsettled.roundoff_runs`, as the
+    other lines skip them): the observed order, and with it the cosine,
+    is taken over the kept samples against their own scale, so a quantity
+    whose largest values lie at a singular point left out can still show
+    one there, from differences that are round-off of the whole (fix38).
+    Over the
     entries no other line named it names 0.74-5.01 times the error, none
     below 0.5 (A, B, C, the closed forms and the Lamé disc from three runs,
     2026-11-29: docs/error-estimates.md, "The warnings", "unlike
     differences"), where the entries other lines name hold under-estimates
     too (EFGM P1's quadrature floor, 0.42)."""
+    skip = set(named) | (roundoff_runs(scene, levels) if levels else set())
     return {f"{pid}:{q}": float(e.alike) for pid, qs in profiles.items() for q, e in qs.items()
-            if e.alike is not None and e.alike <= tol.UNLIKE_COSINE and f"{pid}:{q}" not in named}
+            if e.alike is not None and e.alike <= tol.UNLIKE_COSINE and f"{pid}:{q}" not in skip}
 
 
 def unlike_differences_warning(found: dict[str, float]) -> list[str]:
