@@ -1769,3 +1769,10 @@ UNLIKE_SINGULAR_PEAK = 1e3
 #: at most 0.075 a = 7.5e-8 of the size (round-off of the peak), by 5e-8
 #: RMS over the kept samples (above the floor, so an order is observed).
 UNLIKE_ROUNDOFF_ERROR = 1e-6
+
+# --- lead (2026-11-29): effectivity at round-off on a scene (tests/test_effectivity_roundoff.py) ---
+#: The coarse h and the truth's h of the effectivity rows on
+#: tests/scenes/tilted_crack_slip_exact.toml, an affine answer that fe P1
+#: represents exactly (its true errors 1e-14 of scale; the effectivity tool
+#: gave them ratios of round-off over round-off, 48 of 72 "below 0.5").
+ROUNDOFF_SCENE_H, ROUNDOFF_SCENE_TRUTH_H = 0.1, 0.025

@@ -22,7 +22,8 @@ effectivity``) have no closed form: there the truth is fe P2 at a fine
 ``ref_h``, and both RMS are over the samples the estimate keeps
 (``Estimate.kept``): away from singular points
 (:func:`verification.agreement.default_exclusion`) and beyond the
-coarse run's reach of them (:func:`contactcore.estimate.beyond_reach`).
+coarse run's reach of them (:func:`contactcore.estimate.beyond_reach`);
+a true error at round-off there has no effectivity either (``_at_roundoff``).
 """
 from __future__ import annotations
 
@@ -36,7 +37,9 @@ from contactcore import estimate as est
 from contactcore import tolerances as tol
 from contactcore.budget import check_budget
 from contactcore.estimate.caveats import ENERGY_KEY
+from contactcore.estimate.orders import STRESSES, TRACTIONS
 from contactcore.discretisation import solve
+from contactcore.scaling import Sizes
 
 from . import methods
 from . import files
@@ -193,12 +196,14 @@ def scene_rows(scene, key: tuple, h: float, truth: dict[str, ProfileData], level
     :func:`contactcore.estimate.exact_tractions`,
     :func:`contactcore.estimate.fast_gamma`, EFGM P1's Γ quantities, or
     with three levels :func:`contactcore.estimate.order_mismatch`, the
-    observed order: the entries ``Estimate.unsettled`` holds)."""
+    observed order: the entries ``Estimate.unsettled`` holds).  A true
+    error at round-off (:func:`_at_roundoff`) has no effectivity (None), as
+    on the closed forms."""
     disc = methods.discretisation(key[0])(degree=key[1])
     results = [solve(scene, disc, hk) for hk in est.levels_of(h, levels)]
     exclude = default_exclusion(scene)
     estimate = est.estimate_runs(scene, results, exclude, energy=False)
-    got, rows = {p.id: p for p in estimate.sampled}, []
+    got, rows, sizes = {p.id: p for p in estimate.sampled}, [], Sizes.of(scene)
     for pid, qs in estimate.profiles.items():
         for q, e in qs.items():
             keep = estimate.kept[pid][q]
@@ -208,9 +213,24 @@ def scene_rows(scene, key: tuple, h: float, truth: dict[str, ProfileData], level
                          "profile": pid, "quantity": q, "order": e.order, "estimate": est.rms(e.error[keep]),
                          "true": true, "unit": files.column_unit(q, scene.units) or "",
                          "relative": true / np.max(np.abs(want)),
-                         "effectivity": est.rms(e.error[keep]) / true if true > 0 else None,
+                         "effectivity": (None if _at_roundoff(true, want, q, sizes)
+                                         else est.rms(e.error[keep]) / true),
                          "warned": f"{pid}:{q}" in estimate.unsettled})
     return rows
+
+
+def _at_roundoff(true: float, want: np.ndarray, quantity: str, sizes: Sizes) -> bool:
+    """Whether a true RMS error ``true`` is round-off: at most
+    :data:`~contactcore.tolerances.NEGLIGIBLE_SHARE` of the truth's largest
+    |value| ``want`` or, where that is itself near zero (a stuck Γ's slip),
+    of the scene's own size of the quantity's kind
+    (:class:`~contactcore.scaling.Sizes`: its stress for a stress or
+    traction, its displacement otherwise).  A method that represents the
+    answer exactly (an affine field in fe P1) then meets a truth that does
+    too, and their RMS ratio is round-off over round-off: no effectivity."""
+    own = sizes.stress if quantity in STRESSES + TRACTIONS else sizes.displacement
+    scale = max(float(np.max(np.abs(want))) if len(want) else 0.0, own)
+    return true <= tol.NEGLIGIBLE_SHARE * scale
 
 
 def _length(scenes) -> str:
