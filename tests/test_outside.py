@@ -27,7 +27,9 @@ DOCS = Path(__file__).resolve().parent.parent / "docs"
 
 SCENES = Path(__file__).resolve().parent / "scenes"
 #: A disc pressed uniformly into a softer ring, exact unilateral law (Lamé:
-#: t_N = −13.06 MPa all round Γ): fe P2's estimate there carries no warning.
+#: t_N = −13.06 MPa all round Γ): fe P2's estimate there warns only of Γ's
+#: gaps, held closed and stuck all round (since 2026-11-29, "enforced gaps":
+#: contactcore.estimate.caveats.tractions.enforced_gaps).
 CYLINDER = SCENES / "cylinder.toml"
 
 
@@ -103,13 +105,18 @@ def test_the_same_through_compare_outside_from_a_csv_in_any_order(cylinder, tmp_
 @pytest.mark.parametrize("step", [1, 2])
 def test_a_finer_answer_agrees_everywhere(cylinder, finer, step):
     """The project's answer at H/4 (all 101 samples, or every other one) as
-    the outside code's: within its estimate everywhere, on Γ and the ray."""
+    the outside code's: within its estimate everywhere, on Γ and the ray;
+    Γ's held gaps, whose estimate is warned (enforced gaps), read
+    ``warned`` there, the rest ``agree``."""
     scene, estimate, project = cylinder
+    assert estimate.unsettled == {"G:gN", "G:gT"}
+    assert any(line.startswith("G:gN, G:gT: ") and "enforced gaps" in line for line in estimate.warnings)
     outside = {pid: {c: v[::step] for c, v in p.columns.items()} for pid, p in finer.items()}
     table = judge(scene, outside_profiles(scene, outside), project, estimate, "fe P2")
     assert len(table.rows) == 7
     for row in table.rows:
-        assert set(row.columns["verdict"]) == {"agree"}, (row.profile, row.quantity)
+        held = f"{row.profile}:{row.quantity}" in estimate.unsettled
+        assert set(row.columns["verdict"]) == ({"warned"} if held else {"agree"}), (row.profile, row.quantity)
         assert 0 < row.ratio <= BLAME_MULTIPLE
         assert len(row.columns["s"]) == len(range(0, 101, step))
 
