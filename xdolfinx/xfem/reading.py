@@ -71,12 +71,26 @@ def _share(space, cell: int, body: int) -> float:
     return parts[body] / sum(parts)
 
 
+def _node_cells(space) -> tuple[np.ndarray, np.ndarray]:
+    """``(start, cells)``: the local cells holding local corner node ``n``
+    are ``cells[start[n]:start[n + 1]]``, in cell order; made once per
+    space (each cut cell asks for its neighbours)."""
+    kept = getattr(space, "_node_cells", None)
+    if kept is None:
+        nodes = np.asarray(space.cells.corner_nodes)
+        order = np.argsort(nodes.ravel(), kind="stable")
+        start = np.concatenate([[0], np.cumsum(np.bincount(nodes.ravel()))])
+        kept = space._node_cells = (start, order // nodes.shape[1])
+    return kept
+
+
 def _edge_neighbours(space, cell: int) -> list[int]:
-    """The local cells sharing an edge (two corner nodes) with ``cell``."""
-    nodes = np.asarray(space.cells.corner_nodes)
-    mine = set(nodes[cell].tolist())
-    touching = np.flatnonzero(np.isin(nodes, list(mine)).sum(axis=1) >= 2)
-    return [int(d) for d in touching if d != cell]
+    """The local cells sharing an edge (two corner nodes) with ``cell``,
+    in cell order."""
+    start, cells = _node_cells(space)
+    near = np.concatenate([cells[start[n]:start[n + 1]] for n in np.asarray(space.cells.corner_nodes[cell])])
+    found, counts = np.unique(near, return_counts=True)
+    return [int(d) for d in found[counts >= 2] if d != cell]
 
 
 def applies(space) -> bool:
