@@ -37,7 +37,6 @@ from contactcore import estimate as est
 from contactcore import tolerances as tol
 from contactcore.budget import check_budget
 from contactcore.estimate.caveats import ENERGY_KEY
-from contactcore.estimate.orders import STRESSES, TRACTIONS
 from contactcore.discretisation import solve
 from contactcore.scaling import Sizes
 
@@ -224,13 +223,12 @@ def _at_roundoff(true: float, want: np.ndarray, quantity: str, sizes: Sizes) -> 
     :data:`~contactcore.tolerances.NEGLIGIBLE_SHARE` of the truth's largest
     |value| ``want`` or, where that is itself near zero (a stuck Γ's slip),
     of the scene's own size of the quantity's kind
-    (:class:`~contactcore.scaling.Sizes`: its stress for a stress or
-    traction, its displacement otherwise).  A method that represents the
-    answer exactly (an affine field in fe P1) then meets a truth that does
-    too, and their RMS ratio is round-off over round-off: no effectivity."""
-    own = sizes.stress if quantity in STRESSES + TRACTIONS else sizes.displacement
-    scale = max(float(np.max(np.abs(want))) if len(want) else 0.0, own)
-    return true <= tol.NEGLIGIBLE_SHARE * scale
+    (:func:`~contactcore.estimate.roundoff_floor`).  A method that
+    represents the answer exactly (an affine field in fe P1) then meets a
+    truth that does too, and their RMS ratio is round-off over round-off:
+    no effectivity."""
+    largest = float(np.max(np.abs(want))) if len(want) else 0.0
+    return true <= max(tol.NEGLIGIBLE_SHARE * largest, est.roundoff_floor(sizes, quantity))
 
 
 def _length(scenes) -> str:
