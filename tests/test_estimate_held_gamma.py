@@ -76,11 +76,11 @@ def test_round_off_is_told_from_a_difference_by_the_quantitys_scale():
     """roundoff_runs: 1e-14 of scale is round-off, 1e-4 is not; the
     exact tractions line then names only the second."""
     scene = load_scene("tests/scenes/tilt_unil_exact.toml")
-    assert est.caveats.roundoff_runs(scene, _runs(tol.HELD_GAMMA_NOISE)) == {"G:tN"}
-    assert est.caveats.roundoff_runs(scene, _runs(tol.HELD_GAMMA_SIGNAL)) == set()
+    noise, signal = (est.caveats.roundoff_runs(scene, _runs(s)) for s in (tol.HELD_GAMMA_NOISE, tol.HELD_GAMMA_SIGNAL))
+    assert noise == {"G:tN"} and signal == set()
     profiles = {"G": {"tN": est.QuantityEstimate(np.ones(11), 1.0, (1, 1))}}
-    assert est.exact_tractions(scene, profiles, levels=_runs(tol.HELD_GAMMA_NOISE)) == []
-    assert est.exact_tractions(scene, profiles, levels=_runs(tol.HELD_GAMMA_SIGNAL)) == ["G:tN"]
+    assert est.exact_tractions(scene, profiles, roundoff=noise) == []
+    assert est.exact_tractions(scene, profiles, roundoff=signal) == ["G:tN"]
 
 
 def test_three_runs_without_an_observed_order_do_not_say_two():

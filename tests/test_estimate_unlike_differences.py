@@ -99,4 +99,4 @@ def test_runs_that_differ_only_at_round_off_are_not_named():
     assert est.caveats.roundoff_runs(scene, levels) == {"D:sxx"}
     profiles = {"D": {"sxx": e}}
     assert est.unlike_differences(profiles) == {"D:sxx": e.alike}
-    assert est.unlike_differences(profiles, scene=scene, levels=levels) == {}
+    assert est.unlike_differences(profiles, roundoff=est.caveats.roundoff_runs(scene, levels)) == {}

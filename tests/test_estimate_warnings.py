@@ -93,11 +93,13 @@ def test_runs_that_differ_only_at_round_off_name_no_cause():
     a difference at round-off beyond reach only, larger within, still
     leaves fe's reach cause standing."""
     scene = load_scene("A")
-    found = est.unsettled(scene, _runs_along_gamma(0.0, core_tol.ESTIMATE_ROUNDOFF), {"h": 0.1}, _facts("fe", 1),
-                          exclude=0.1)
+    noise = _runs_along_gamma(0.0, core_tol.ESTIMATE_ROUNDOFF)
+    found = est.unsettled(scene, noise, {"h": 0.1}, _facts("fe", 1), exclude=0.1,
+                          roundoff=est.caveats.roundoff_runs(scene, noise))
     assert not any(found.values()), found
-    assert est.unsettled(scene, _runs_along_gamma(tol.REACH_SPREAD, core_tol.ESTIMATE_ROUNDOFF), {"h": 0.1},
-                         _facts("fe", 1), exclude=0.1)["reach"]
+    signal = _runs_along_gamma(tol.REACH_SPREAD, core_tol.ESTIMATE_ROUNDOFF)
+    assert est.unsettled(scene, signal, {"h": 0.1}, _facts("fe", 1), exclude=0.1,
+                         roundoff=est.caveats.roundoff_runs(scene, signal))["reach"]
 
 
 def _estimate(observed: bool) -> est.QuantityEstimate:

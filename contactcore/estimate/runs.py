@@ -22,7 +22,7 @@ import numpy as np
 from ..profiles import interface_status, ProfileData, sample_profiles
 from ..scene import Scene
 from .caveats import (beyond_reach, cell_scale_orders, cell_scale_warnings, exact_traction_warning, exact_tractions, fast_gamma,
-                      fast_gamma_warning, feature_size, thinnest_body,
+                      fast_gamma_warning, feature_size, roundoff_runs, thinnest_body,
                       order_mismatch, order_warnings,
                       pollution_warning, residue_warnings, residues, unsettled, unsettled_warnings,
                       curved_layer, curved_layer_warning, ENERGY_KEY, near_status_changes, status_change_warnings,
@@ -122,7 +122,12 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     within the coarse run's reach of one, or for a bulk quantity under an
     exact law of a point where Γ's final status changes in the two finest
     runs (:func:`~contactcore.estimate.caveats.beyond_reach`,
-    :func:`~contactcore.estimate.caveats.near_status_changes`)."""
+    :func:`~contactcore.estimate.caveats.near_status_changes`).  The
+    ``PID:Q`` whose two finest runs differ only at round-off
+    (:func:`~contactcore.estimate.caveats.roundoff_runs`) are found once
+    here and passed (``roundoff``) to each line that names none of them:
+    :func:`~contactcore.estimate.caveats.unsettled`, the exact tractions,
+    steady tractions and enforced gaps, and the unlike differences."""
     hs = tuple(float(r.discretisation["h"]) for r in results)
     levels = [sample_profiles(scene, r.fields, r.interface) for r in results]
     switching = None if scene.law.is_linear else switches([r.interface for r in results])
@@ -132,15 +137,16 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     smooth = far_from_changes(scene, results[-2:], levels[-1], hs[-2], changes) if exact_switch else None
     profiles = profile_estimates(levels, results[-1].degree, facts, coarse, scene, exclude, switching, h=hs[-2],
                                  smooth=smooth)
-    found = unsettled(scene, levels, results[-2].discretisation, facts, exclude, profiles)
+    roundoff = roundoff_runs(scene, levels)  # once: every line below that skips round-off runs takes it
+    found = unsettled(scene, levels, results[-2].discretisation, facts, exclude, profiles, roundoff=roundoff)
     layer = curved_layer(scene, levels, facts, hs[-2], exclude)
     rough = cell_scale_orders(scene, levels, profiles, exclude, hs[-2],
                               far_tractions(smooth, results[-1].degree, facts, scene.law, switching))
     residue = residues(scene, levels, profiles, exclude)
     split = split_cell_share(scene, levels, profiles, exclude, results[-1].degree)
-    nitsche = exact_tractions(scene, profiles, smooth, levels)
-    steady = steady_exact_tractions(scene, profiles, results[-1].degree, smooth, levels)
-    held = enforced_gaps(scene, profiles, gamma_statuses(scene, results[-2:], levels[-1]), levels)
+    nitsche = exact_tractions(scene, profiles, smooth, roundoff=roundoff)
+    steady = steady_exact_tractions(scene, profiles, results[-1].degree, smooth, roundoff=roundoff)
+    held = enforced_gaps(scene, profiles, gamma_statuses(scene, results[-2:], levels[-1]), roundoff=roundoff)
     observed = three_run_caveats(scene, profiles, smooth)
     # an exact law's traction has its own line (and order): not fast Γ's "order k + 1" too (review20)
     fast = [k for k in fast_gamma(profiles, facts) if k not in set(nitsche) | set(steady) | observed[1]]
@@ -178,7 +184,7 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
              | set(fast) | set(floor) | moved | {k for k, (_, capped) in near.items() if capped} | observed[1]
              | ({ENERGY_KEY} if caveat else set())
              | {f"{pid}:{q}" for pid, qs in profiles.items() for q, e in qs.items() if order_mismatch(e)})
-    unlike = unlike_differences(profiles, named, scene, levels)  # only where no other line names it: it claims a direction
+    unlike = unlike_differences(profiles, named, roundoff=roundoff)  # only where no other line names it: it claims a direction
     return Estimate(hs, profiles, zz, status, warnings + unlike_differences_warning(unlike) + caveat, levels[-1],
                     named | set(unlike), kept)
 

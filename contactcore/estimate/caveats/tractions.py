@@ -9,6 +9,8 @@ claims a direction only where every entry it named on the measured sets
 lay that way; otherwise it gives the measured range."""
 from __future__ import annotations
 
+from collections.abc import Set
+
 import numpy as np
 
 from ... import tolerances as tol
@@ -19,11 +21,10 @@ from ...scene import Scene
 from ..extrapolation import QuantityEstimate
 from ..orders import _exact, SUPERCONVERGENT_DEGREES, TRACTIONS
 from .lines import GAMMA, OBSERVE, see
-from .unsettled import roundoff_runs
 
 
 def exact_tractions(scene: Scene, profiles: dict[str, dict[str, QuantityEstimate]],
-                    smooth: dict[str, np.ndarray] | None = None, levels: list | None = None) -> list[str]:
+                    smooth: dict[str, np.ndarray] | None = None, *, roundoff: Set[str] = frozenset()) -> list[str]:
     """The ``PID:Q`` of an exact law's tractions on Γ (Nitsche's
     multiplier, :data:`~contactcore.estimate.orders.TRACTIONS`) whose
     estimate, without an observed order, takes order 1 at some sample:
@@ -36,9 +37,11 @@ def exact_tractions(scene: Scene, profiles: dict[str, dict[str, QuantityEstimate
     Where no sample lies near a change (a slip or a stick that switched
     only in the history) the estimate takes the far order everywhere:
     :func:`steady_exact_tractions` at degree 1, none at degree 2 (as on a
-    Γ that never switches; fix37).  A quantity whose runs (``levels``)
-    differ only at round-off is not named
-    (:func:`~contactcore.estimate.caveats.unsettled.roundoff_runs`).
+    Γ that never switches; fix37).  A quantity in ``roundoff`` is not
+    named: the ``PID:Q`` whose two finest runs differ only at round-off
+    (:func:`~contactcore.estimate.caveats.unsettled.roundoff_runs` of the
+    estimate's runs, made once per estimate by
+    :func:`~contactcore.estimate.runs.estimate_runs`; none by default).
     Order 1 is the least theory allows it; its pieces converge faster (1.4-3 on
     the held-out wedges; on a sheared and reversed block degree 2's t_N at
     2.3-2.5 beyond two coarse cells of a status change, 1.5-1.7 within,
@@ -47,12 +50,13 @@ def exact_tractions(scene: Scene, profiles: dict[str, dict[str, QuantityEstimate
     under exact Coulomb, xfem P1 t_N at h = 0.05 → 0.025), 2.2-2.9 on the
     Lamé disc under an exact law (docs/error-estimates.md, "Known
     limits")."""
-    return [k for k in _unobserved_tractions(scene, profiles, levels)
+    return [k for k in _unobserved_tractions(scene, profiles, roundoff)
             if _near_change(k, _entry(profiles, k), smooth)]
 
 
 def steady_exact_tractions(scene: Scene, profiles: dict[str, dict[str, QuantityEstimate]], degree: int,
-                           smooth: dict[str, np.ndarray] | None = None, levels: list | None = None) -> list[str]:
+                           smooth: dict[str, np.ndarray] | None = None, *, roundoff: Set[str] = frozenset()
+                           ) -> list[str]:
     """The ``PID:Q`` of an exact law's degree-1 tractions on Γ (a degree
     in :data:`~contactcore.estimate.orders.SUPERCONVERGENT_DEGREES`)
     estimated without an observed order at the balanced 1.45 of ``[1, 2]``
@@ -64,24 +68,24 @@ def steady_exact_tractions(scene: Scene, profiles: dict[str, dict[str, QuantityE
     measured 2026-11-29 (RMS over the kept samples): 0.69-3.86 on the 24
     entries of two scenes that never switch (deg1_36), 0.68-2.13 on an
     inclined block that sticks under its weight and 0.65 on an inclined
-    crack in slip (efgm P1; fe's and xfem's at round-off, not named:
-    :func:`~contactcore.estimate.caveats.unsettled.roundoff_runs`)."""
+    crack in slip (efgm P1; fe's and xfem's at round-off, not named: in
+    ``roundoff``, as for :func:`exact_tractions`)."""
     if degree not in SUPERCONVERGENT_DEGREES:
         return []
-    return [k for k in _unobserved_tractions(scene, profiles, levels)
+    return [k for k in _unobserved_tractions(scene, profiles, roundoff)
             if not _near_change(k, _entry(profiles, k), smooth)]
 
 
 def _unobserved_tractions(scene: Scene, profiles: dict[str, dict[str, QuantityEstimate]],
-                          levels: list | None) -> list[str]:
+                          roundoff: Set[str]) -> list[str]:
     """The ``PID:Q`` of an exact law's tractions on Γ whose estimate has
     no observed order (two runs, or three of which one difference is at
-    round-off) and whose runs do not differ only at round-off."""
+    round-off) and whose runs do not differ only at round-off (not in
+    ``roundoff``)."""
     if not _exact(scene.law):
         return []
-    noise = roundoff_runs(scene, levels) if levels else set()
     return [f"{pid}:{q}" for pid, qs in profiles.items() for q, e in qs.items()
-            if q in TRACTIONS and not e.observed and e.theory[0] <= 1 and f"{pid}:{q}" not in noise]
+            if q in TRACTIONS and not e.observed and e.theory[0] <= 1 and f"{pid}:{q}" not in roundoff]
 
 
 def _entry(profiles: dict[str, dict[str, QuantityEstimate]], key: str) -> QuantityEstimate:
@@ -136,7 +140,7 @@ def steady_exact_traction_warning(names: list[str]) -> list[str]:
 
 
 def enforced_gaps(scene: Scene, profiles: dict[str, dict[str, QuantityEstimate]],
-                  statuses: dict[str, list[np.ndarray]], levels: list | None = None) -> list[str]:
+                  statuses: dict[str, list[np.ndarray]], *, roundoff: Set[str] = frozenset()) -> list[str]:
     """The ``PID:Q`` of an exact law's gaps on Γ that are its enforcement's
     own violation, estimated without an observed order: ``g_N`` of a
     profile closed (stick or slip) at every sample, ``g_T`` of one that
@@ -148,15 +152,17 @@ def enforced_gaps(scene: Scene, profiles: dict[str, dict[str, QuantityEstimate]]
     inclined block that sticks under its weight, fe P1 ``g_T``: 3.2e-8 →
     1.1e-8 m from h = 0.05 → 0.025, order 1.5 against 2; its two-run
     estimate 0.39 of the error over the kept samples, fix37, 2026-11-29).
-    A quantity whose runs differ only at round-off is not named
-    (:func:`~contactcore.estimate.caveats.unsettled.roundoff_runs`: fe
+    A quantity in ``roundoff`` is not named: the ``PID:Q`` whose two
+    finest runs differ only at round-off
+    (:func:`~contactcore.estimate.caveats.unsettled.roundoff_runs` of the
+    estimate's runs, made once per estimate by
+    :func:`~contactcore.estimate.runs.estimate_runs`; none by default: fe
     and xfem's gaps of a crack in slip)."""
     if not _exact(scene.law):
         return []
-    noise = roundoff_runs(scene, levels) if levels else set()
     held = {"gN": lambda s: s != OPEN, "gT": lambda s: s == STICK}
     return [f"{pid}:{q}" for pid, qs in profiles.items() for q, e in qs.items()
-            if q in held and not e.observed and f"{pid}:{q}" not in noise and statuses.get(pid)
+            if q in held and not e.observed and f"{pid}:{q}" not in roundoff and statuses.get(pid)
             and all(np.all(held[q](np.asarray(s))) for s in statuses[pid])]
 
 

@@ -17,22 +17,24 @@ A3, whose error falls 15-fold over the last halving: −0.58, 5.01) show
 this way."""
 from __future__ import annotations
 
+from collections.abc import Set
+
 from ... import tolerances as tol
-from ...scene import Scene
 from ..extrapolation import QuantityEstimate
 from .lines import see
-from .unsettled import roundoff_runs
 
 
-def unlike_differences(profiles: dict[str, dict[str, QuantityEstimate]], named: set[str] = frozenset(),
-                       scene: Scene | None = None, levels: list | None = None) -> dict[str, float]:
+def unlike_differences(profiles: dict[str, dict[str, QuantityEstimate]], named: Set[str] = frozenset(), *,
+                       roundoff: Set[str] = frozenset()) -> dict[str, float]:
     """``{PID:Q: cosine}`` of the three-run estimates whose two differences'
     cosine (``alike``) is at most :data:`~contactcore.tolerances.UNLIKE_COSINE`,
     but for those another warning already ``named`` (``PID:Q``) and those
-    whose two finest runs (``levels``, of ``scene``) differ only at
+    in ``roundoff``, the ``PID:Q`` whose two finest runs differ only at
     round-off at every sample
-    (:func:`~contactcore.estimate.caveats.unsettled.roundoff_runs`, as the
-    other lines skip them): the observed order, and with it the cosine,
+    (:func:`~contactcore.estimate.caveats.unsettled.roundoff_runs` of the
+    estimate's runs, made once per estimate by
+    :func:`~contactcore.estimate.runs.estimate_runs`; none by default), as
+    the other lines skip them: the observed order, and with it the cosine,
     is taken over the kept samples against their own scale, so a quantity
     whose largest values lie at a singular point left out can still show
     one there, from differences that are round-off of the whole (fix38).
@@ -45,7 +47,7 @@ def unlike_differences(profiles: dict[str, dict[str, QuantityEstimate]], named: 
     exact contact (docs/scenes/thin_top_layer_exact.toml, three runs from
     h = 0.1) it named xfem P1's ``t_N`` alone at 0.26 (fix38), so the line
     claims no direction."""
-    skip = set(named) | (roundoff_runs(scene, levels) if levels else set())
+    skip = set(named) | set(roundoff)
     return {f"{pid}:{q}": float(e.alike) for pid, qs in profiles.items() for q, e in qs.items()
             if e.alike is not None and e.alike <= tol.UNLIKE_COSINE and f"{pid}:{q}" not in skip}
 

@@ -7,6 +7,8 @@ scene's smallest feature (:func:`feature_size`), or across a thin body
 (:func:`thinnest_body`).  Richardson cannot see either from two runs."""
 from __future__ import annotations
 
+from collections.abc import Set
+
 import numpy as np
 
 from ... import tolerances as tol
@@ -70,8 +72,8 @@ def roundoff_runs(scene: Scene, levels: list[list[ProfileData]]) -> set[str]:
 
 
 def unsettled(scene: Scene, levels: list[list[ProfileData]], record: dict, facts: MethodFacts,
-              exclude: float, estimates: dict[str, dict[str, QuantityEstimate]] | None = None
-              ) -> dict[str, dict[str, tuple[float, float]]]:
+              exclude: float, estimates: dict[str, dict[str, QuantityEstimate]] | None = None, *,
+              roundoff: Set[str] = frozenset()) -> dict[str, dict[str, tuple[float, float]]]:
     """The quantities whose two-run estimate is not asymptotic, by cause,
     from the coarser run (``record``, its discretisation; ``facts``, its
     method's :class:`~contactcore.result.MethodFacts`) of the pair that
@@ -91,19 +93,20 @@ def unsettled(scene: Scene, levels: list[list[ProfileData]], record: dict, facts
     estimate of ``u_y`` read 0.127 of its error).  A tie within
     :data:`~contactcore.tolerances.GEOMETRY` (relative) is no cause: h =
     0.05 with supports of 2h on a feature of 0.8 sits on the threshold,
-    and round-off must not decide it; nor is a quantity whose runs differ
-    only at round-off (:func:`roundoff_runs`)."""
+    and round-off must not decide it; nor is a quantity in ``roundoff``,
+    the ``PID:Q`` whose two finest runs differ only at round-off
+    (:func:`roundoff_runs` of ``levels``, made once per estimate by
+    :func:`~contactcore.estimate.runs.estimate_runs`; none by default)."""
     sing, feature, h = stress_singular_points(scene), feature_size(scene), float(record["h"])
     thin = thinnest_body(scene)
     out = {"reach": {}, "coarse": {}, "thin": {}}
     coarse_run = {p.id: p for p in levels[-2]} if len(levels) > 1 else {}
-    noise = roundoff_runs(scene, levels)
     for prof in levels[-1]:
         xy = np.column_stack([prof.columns["x"], prof.columns["y"]])
         kept = far_from_singular(scene, xy, exclude)
         dist = distances(xy, sing)
         near = np.min(dist[kept]) if np.any(kept) else np.inf
-        for q in (q for q in prof.names[3:] if f"{prof.id}:{q}" not in noise):
+        for q in (q for q in prof.names[3:] if f"{prof.id}:{q}" not in roundoff):
             rho = stencil_radius(record, facts, q)
             within = kept & (dist < tol.REACH_STENCILS * rho * (1 - tol.GEOMETRY))
             local = rho <= h * (1 + tol.GEOMETRY) and not _lower_end(scene, estimates, prof.id, q, h)
