@@ -487,7 +487,7 @@ TRANSLATION_ROUNDOFF = 1e-12
 #: band of the stick/slip decision (at least TRACTION_ROUNDOFF·p) exceeds a
 #: tenth of μp, and below TRACTION_ROUNDOFF μp itself is below the round-off
 #: of the traction: whether a point slips cannot be decided.  Refused in one
-#: line (contactcore.laws._friction), advising μ = 0 (frictionless) or a
+#: line (contactcore.laws.coulomb._friction), advising μ = 0 (frictionless) or a
 #: larger μ; μ = 1e-7 and 1e-6 are answered (the layered cycle's closed
 #: form, tests/test_mu_extremes.py).
 MU_SMALLEST = 10 * TRACTION_ROUNDOFF
