@@ -722,7 +722,7 @@ PIECE_MERGE_SHARE = 0.35
 
 #: A cut whose chord across a cell is shorter than this share of the cell's
 #: diameter, and which leaves a region thinner than GAMMA_PIECE_MIN of it
-#: beside Γ, is a touch too (contactcore.cutcell._sliver): a circle tangent
+#: beside Γ, is a touch too (contactcore.cutcell.touch._sliver): a circle tangent
 #: to a cell's edge at a corner (radius 0.4 about (1, 1), cells of 0.1)
 #: dips below it by round-off δ and cuts a cap with chord 2√(2Rδ), 1.5e-7
 #: of the cell there, weights 1.5e-9 h at xfem's points; with δ up to
