@@ -60,7 +60,8 @@ import scipy.sparse as sp
 from . import tolerances as tol
 from .errors import DiscretisationError, SceneError, quoted
 from .collective import SERIAL
-from .laws import DIMENSIONLESS, STICK, CoulombLaw, Decision, LawResponse, LinearLaw, UnilateralLaw, _positive, registry
+from .laws import DIMENSIONLESS, STICK, CoulombLaw, Decision, LawResponse, LinearLaw, UnilateralLaw, registry
+from .laws.springs import _positive
 from .spelling import hint
 
 #: Laws that exist only enforced exactly (no springs).

@@ -487,7 +487,7 @@ TRANSLATION_ROUNDOFF = 1e-12
 #: band of the stick/slip decision (at least TRACTION_ROUNDOFF·p) exceeds a
 #: tenth of μp, and below TRACTION_ROUNDOFF μp itself is below the round-off
 #: of the traction: whether a point slips cannot be decided.  Refused in one
-#: line (contactcore.laws._friction), advising μ = 0 (frictionless) or a
+#: line (contactcore.laws.coulomb._friction), advising μ = 0 (frictionless) or a
 #: larger μ; μ = 1e-7 and 1e-6 are answered (the layered cycle's closed
 #: form, tests/test_mu_extremes.py).
 MU_SMALLEST = 10 * TRACTION_ROUNDOFF
@@ -722,7 +722,7 @@ PIECE_MERGE_SHARE = 0.35
 
 #: A cut whose chord across a cell is shorter than this share of the cell's
 #: diameter, and which leaves a region thinner than GAMMA_PIECE_MIN of it
-#: beside Γ, is a touch too (contactcore.cutcell._sliver): a circle tangent
+#: beside Γ, is a touch too (contactcore.cutcell.touch._sliver): a circle tangent
 #: to a cell's edge at a corner (radius 0.4 about (1, 1), cells of 0.1)
 #: dips below it by round-off δ and cuts a cap with chord 2√(2Rδ), 1.5e-7
 #: of the cell there, weights 1.5e-9 h at xfem's points; with δ up to

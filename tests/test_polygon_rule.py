@@ -4,7 +4,8 @@ with a, b ≤ 2n − 1; the fans (2n² points) on any other quadrilateral."""
 import numpy as np
 import pytest
 
-from contactcore.cutcell import _rectangle_test, _split, polygon_rule
+from contactcore.cutcell import polygon_rule
+from contactcore.cutcell.polygons import _rectangle_test, _split
 
 import tolerances as tol
 
@@ -48,7 +49,7 @@ def test_the_tensor_rule_misses_degree_2n(n):
 
 
 def test_split_pieces_are_rectangles():
-    """The four quarters of a cell split about its centre (cutcell._split,
+    """The four quarters of a cell split about its centre (cutcell.polygons._split,
     their vertices starting at each corner in turn, the centre a mean of
     four corners, off the halves by an ulp) each take the tensor rule, and
     their weights sum to the cell's area."""
