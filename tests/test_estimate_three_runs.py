@@ -153,3 +153,40 @@ def test_profile_estimates_take_the_observed_order_for_mesh_methods_only():
     fe = est.profile_estimates(ranged, 1)["L"]["sxx"]
     efgm = est.profile_estimates(ranged, 1, MethodFacts(meshfree=True))["L"]["sxx"]
     assert fe.order == pytest.approx(1.8) and efgm.order == pytest.approx(est.balanced_order(1.0, 2.0))
+
+
+def test_an_order_observed_above_theorys_range_is_named_off_either_way():
+    """above_range (est3_39): q_h = q + C h^p with p above theory's range
+    [2, 3] (ABOVE_RANGE_RATE) is estimated at the range's balanced order,
+    ABOVE_RANGE_OVER_READ times or more the error, and named (the old code
+    left such an entry unwarned: scene A's xfem P1 A1 σxy, 2.52; an exact
+    law's fe P2 g_N on tilt_unil_exact, 3.84); not an order within the
+    range, nor above a single order (its estimate takes that order), nor
+    one further than ORDER_MISMATCH above (the order line's); the line
+    claims no direction and three_run_caveats gives it."""
+    s = np.linspace(0.0, 1.0, 11)
+    lead, theory = 1.0 + s ** 2, (2.0, 3.0)
+    runs = lambda p: [np.cos(s) + lead * h ** p for h in HS]  # noqa: E731
+    above = est.richardson(runs(tol.ABOVE_RANGE_RATE), theory, upper=True)
+    within = est.richardson(runs(2.8), theory, upper=True)
+    single = est.richardson(runs(tol.ABOVE_RANGE_RATE), (3.0, 3.0), upper=True)
+    beyond = est.richardson(runs(theory[1] + core_tol.ORDER_MISMATCH + 0.5), theory, upper=True)
+    assert above.order == pytest.approx(est.balanced_order(*theory))
+    assert above.rms / est.rms(lead * HS[-1] ** tol.ABOVE_RANGE_RATE) > tol.ABOVE_RANGE_OVER_READ
+    assert est.order_mismatch(beyond) and not est.order_mismatch(above)
+    found = est.above_range({"A1": {"sxy": above, "sxx": within, "syy": beyond}, "G": {"gN": single}})
+    assert list(found) == ["A1:sxy"] and found["A1:sxy"] == pytest.approx(tol.ABOVE_RANGE_RATE)
+    line, = est.above_range_warning(found)
+    assert line.startswith("A1:sxy (3.30)") and "either way" in line
+    assert not est.above_range_warning({})
+    lines, named = three_run_caveats(load_scene(BLOCK), {"A1": {"sxy": above}})
+    assert named == {"A1:sxy"} and lines == [line]
+
+
+def test_the_above_range_line_is_short_and_points_to_its_row():
+    """The above-range line with two quantities named is at most
+    ESTIMATE_WARNING_CHARS and ends with its row of
+    docs/error-estimates.md, "The warnings"."""
+    line, = est.above_range_warning({"A1:sxy": 3.03, "G:gN": 2.51})
+    _pointed(line)
+    assert len(line) <= tol.ESTIMATE_WARNING_CHARS, (len(line), line)

@@ -1776,3 +1776,13 @@ UNLIKE_ROUNDOFF_ERROR = 1e-6
 #: represents exactly (its true errors 1e-14 of scale; the effectivity tool
 #: gave them ratios of round-off over round-off, 48 of 72 "below 0.5").
 ROUNDOFF_SCENE_H, ROUNDOFF_SCENE_TRUTH_H = 0.1, 0.025
+
+# --- est3_39 (2026-11-30): an order observed above theory's range (tests/test_estimate_three_runs.py) ---
+#: The rate of a synthetic degree-1 stress's error ``C h^p`` against its
+#: theory's range [2, 3]: above it, within ORDER_MISMATCH (1) of its top,
+#: as scene A's xfem P1 A1 σxy (observed 3.03, true rates 3.10 and 3.63).
+ABOVE_RANGE_RATE = 3.3
+#: The least over-read of such an error at the range's balanced order q
+#: (2.48): ``(2^high − 1)/(2^q − 1)`` = 1.53 at the top itself, 1.93 at
+#: ABOVE_RANGE_RATE; scene A's A1 σxy read 2.52 of its error so.
+ABOVE_RANGE_OVER_READ = 1.5

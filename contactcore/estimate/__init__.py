@@ -33,7 +33,7 @@ in their home.
 
 numpy and scipy only; no method is imported.
 """
-from .caveats import (beyond_reach, cell_scale_orders, cell_scale_warnings, curved_layer, curved_layer_warning,
+from .caveats import (above_range, above_range_warning, beyond_reach, cell_scale_orders, cell_scale_warnings, curved_layer, curved_layer_warning,
                       exact_traction_warning, exact_tractions, fast_gamma, fast_gamma_warning, feature_size,
                       near_status_changes, observed_exact_traction_warning, observed_exact_tractions, order_mismatch,
                       steady_exact_traction_warning, steady_exact_tractions,
@@ -61,7 +61,7 @@ __all__ = [
     "QuantityEstimate", "balanced_order", "cell_scale_part", "differences_cosine", "observed_order", "profile_estimates", "richardson",
     "rms", "roundoff_floor", "sample_groups", "three_run_order",
     # caveats
-    "beyond_reach", "cell_scale_orders", "cell_scale_warnings", "curved_layer", "curved_layer_warning",
+    "above_range", "above_range_warning", "beyond_reach", "cell_scale_orders", "cell_scale_warnings", "curved_layer", "curved_layer_warning",
     "exact_traction_warning", "exact_tractions", "fast_gamma", "fast_gamma_warning", "feature_size",
     "near_status_changes", "observed_exact_traction_warning", "observed_exact_tractions", "order_mismatch",
     "steady_exact_traction_warning", "steady_exact_tractions", "enforced_gaps", "enforced_gap_warning",

@@ -21,7 +21,7 @@ import numpy as np
 
 from ..profiles import interface_status, ProfileData, sample_profiles
 from ..scene import Scene
-from .caveats import (beyond_reach, cell_scale_orders, cell_scale_warnings, exact_traction_warning, exact_tractions, fast_gamma,
+from .caveats import (above_range, above_range_warning, beyond_reach, cell_scale_orders, cell_scale_warnings, exact_traction_warning, exact_tractions, fast_gamma,
                       fast_gamma_warning, feature_size, roundoff_runs, thinnest_body,
                       order_mismatch, order_warnings,
                       pollution_warning, residue_warnings, residues, unsettled, unsettled_warnings,
@@ -225,11 +225,14 @@ def three_run_caveats(scene: Scene, profiles: dict[str, dict[str, QuantityEstima
     (:func:`~contactcore.estimate.caveats.observed_exact_tractions`, of
     the tractions with a sample near a status change, ``smooth`` the
     samples beyond: :func:`~contactcore.estimate.status.far_from_changes`;
-    :func:`~contactcore.estimate.caveats.slow_halving`) and the ``PID:Q``
+    :func:`~contactcore.estimate.caveats.slow_halving`,
+    :func:`~contactcore.estimate.caveats.above_range`) and the ``PID:Q``
     they name; none for two runs."""
     traction = observed_exact_tractions(scene, profiles, smooth)
     slow = {k: v for k, v in slow_halving(profiles).items() if k not in traction}  # one line an entry (review20)
-    return (observed_exact_traction_warning(traction) + slow_halving_warning(slow)), set(traction) | set(slow)
+    above = {k: v for k, v in above_range(profiles).items() if k not in traction}
+    return (observed_exact_traction_warning(traction) + slow_halving_warning(slow) + above_range_warning(above),
+            set(traction) | set(slow) | set(above))
 
 
 def estimate(scene: Scene, discretisation, h: float, levels: int = 2, *, exclude: float = 0.0, reuse=None,

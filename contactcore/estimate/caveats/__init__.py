@@ -96,7 +96,7 @@ one, it reads from the run's :class:`~contactcore.result.MethodFacts`
 (``facts``), as its options declared them.
 """
 from .lines import ENERGY_KEY, GAMMA, OBSERVE, see, WARNINGS_PAGE
-from .observed import order_mismatch, order_warnings, slow_halving, slow_halving_warning
+from .observed import above_range, above_range_warning, order_mismatch, order_warnings, slow_halving, slow_halving_warning
 from .pollution import POLLUTED_ORDER, pollution_warning
 from .tractions import (enforced_gap_warning, enforced_gaps, exact_traction_warning, exact_tractions, fast_gamma,
                         fast_gamma_warning,
@@ -112,7 +112,7 @@ from .quadrature import quadrature_energy, quadrature_stress, quadrature_stress_
 from .unlike import unlike_differences, unlike_differences_warning
 
 __all__ = [
-    "ENERGY_KEY", "GAMMA", "OBSERVE", "see", "WARNINGS_PAGE", "order_mismatch", "order_warnings", "slow_halving",
+    "above_range", "above_range_warning", "ENERGY_KEY", "GAMMA", "OBSERVE", "see", "WARNINGS_PAGE", "order_mismatch", "order_warnings", "slow_halving",
     "slow_halving_warning", "POLLUTED_ORDER", "pollution_warning", "exact_traction_warning", "exact_tractions",
     "fast_gamma", "fast_gamma_warning", "observed_exact_traction_warning", "observed_exact_tractions",
     "steady_exact_traction_warning", "steady_exact_tractions", "enforced_gaps", "enforced_gap_warning",

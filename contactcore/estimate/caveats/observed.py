@@ -1,6 +1,8 @@
 """Warnings of a three-run estimate: an observed order far from theory
-(:func:`order_mismatch`, :func:`order_warnings`) and a last halving much
-slower than the first (:func:`slow_halving`).
+(:func:`order_mismatch`, :func:`order_warnings`), a last halving much
+slower than the first (:func:`slow_halving`) and an order observed above
+the range theory allows, the estimate taken at the range's balanced
+order (:func:`above_range`).
 
 An observed order further than :data:`~contactcore.tolerances.ORDER_MISMATCH`
 from the orders theory allows, or clipped to an end of
@@ -77,3 +79,43 @@ def slow_halving_warning(found: dict[str, float]) -> list[str]:
     names = ", ".join(f"{k} ({v:.2f})" for k, v in found.items())
     return [f"{names}: last halving's difference slowed (× theory's 2^-p): a floor or a pre-asymptotic "
             f"coarse run, off either way{see('slow halving')}"]
+
+
+def above_range(profiles: dict[str, dict[str, QuantityEstimate]]) -> dict[str, float]:
+    """``{PID:Q: observed order}`` of the three-run estimates whose theory
+    allows a range ``[low, high]`` (``low < high``) and whose observed order
+    ``p`` lies above it, ``high < p ≤ high +``
+    :data:`~contactcore.tolerances.ORDER_MISMATCH` (further, the order
+    line names it).  Such an estimate is taken at the range's balanced
+    order ``q`` (:func:`~contactcore.estimate.extrapolation.three_run_order`):
+    ``|q_{h/4} − q_{h/2}| / (2^q − 1)``.  If the error is ``C h^high`` the
+    estimate reads ``(2^high − 1)/(2^q − 1)`` times it (1.53 for ``[2, 3]``,
+    a degree-1 recovered stress; 1.95 for ``[1.52, 3]``; 1.33 for
+    ``[1.42, 2]``), more where the last halving is faster still (scene A's
+    xfem P1 A1 σxy: observed 3.03, true rates 3.10 then 3.63, 2.52; an
+    exact law's fe P2 ``g_N`` on tests/scenes/tilt_unil_exact.toml: 2.51
+    against ``[1.42, 2]``, 3.84).  But an order above theory is as well
+    the coarse run's error cancelling against a second term
+    ``D h^s`` of the other sign (``d₁/d₂ = 2^p`` with ``p`` above either
+    rate), and then the estimate at ``q`` is the right size or too
+    small, and one at ``high`` (Roache's ``min(p, p_formal)``) too small:
+    scene C's xfem P2 C4 ``t_N`` from h = 0.05, observed 3.09 of
+    ``[1.52, 3]``, read 0.72 at ``q``, 0.37 at ``high`` (orders37,
+    2026-11-29).  Three runs cannot tell the two apart, so the order is
+    left and the line names the entry, off either way (0.16-3.84 on the
+    19 entries it named on A, B, C, tilt_unil_exact, thin_top_layer_exact,
+    the closed forms and the Lamé disc from three runs, 6 outside [0.5, 2],
+    2026-11-30: docs/error-estimates.md, "The warnings", "above the
+    range")."""
+    return {f"{pid}:{q}": float(e.measured) for pid, qs in profiles.items() for q, e in qs.items()
+            if e.observed and not order_mismatch(e) and e.theory[0] < e.theory[1] < e.measured}
+
+
+def above_range_warning(found: dict[str, float]) -> list[str]:
+    """One line naming :func:`above_range`'s quantities, each with its
+    observed order."""
+    if not found:
+        return []
+    names = ", ".join(f"{k} ({v:.2f})" for k, v in found.items())
+    return [f"{names}: observed order above theory's range, the estimate at its balanced order: "
+            f"off either way{see('above the range')}"]
