@@ -1776,3 +1776,12 @@ UNLIKE_ROUNDOFF_ERROR = 1e-6
 #: represents exactly (its true errors 1e-14 of scale; the effectivity tool
 #: gave them ratios of round-off over round-off, 48 of 72 "below 0.5").
 ROUNDOFF_SCENE_H, ROUNDOFF_SCENE_TRUTH_H = 0.1, 0.025
+
+# --- est2_39 (2026-11-30): two runs whose values share little pattern (tests/test_estimate_unlike_runs.py) ---
+#: The coarse h of fe P1's two runs on tests/scenes/roller_lift_exact.toml
+#: (grader34's lifted roller block): h = 0.1 → 0.05, as grader34 ran it.
+UNLIKE_RUNS_H = 0.1
+#: The least cosine of the two runs' values of a quantity the runs resolve
+#: (D's u_y, the block's lift, 7e-5 m against an error of 1e-7): its exact
+#: value dominates both runs, so the cosine is 1 to within its error's share.
+UNLIKE_RUNS_RESOLVED = 0.99
