@@ -1845,6 +1845,18 @@ QUADRATURE_STRESS_SHARE = 3e-4
 #: docs/error-estimates.md, "The warnings", "unlike differences".
 UNLIKE_COSINE = 0.0
 
+# --- est2_39 (2026-11-30): two runs whose values share little pattern ---
+#: The largest cosine of two runs' values, ``q_h·q_{h/2}/(‖q_h‖ ‖q_{h/2}‖)``
+#: over the kept samples, at which a two-run estimate is named
+#: (contactcore.estimate.caveats.unlike_runs): the runs then differ by
+#: about as much as their values (‖δ‖ ≥ ‖q‖ (2(1 − c))^½ for runs of equal
+#: size, 1.15 ‖q‖ here), so the quantity is mostly each run's own error.
+#: On grader34's roller blocks (two runs, h = 0.1 → 0.05, 2026-11-30) the
+#: entries at cosine ≤ 0.31 were all outside [0.5, 2] (29: fe P1 u_x, g_T,
+#: whose exact values are 0, and EFGM's), the next in (0.40, 0.43: EFGM P2
+#: σxy; fe P1 g_T 0.51): docs/error-estimates.md, "The warnings", "unlike runs".
+UNLIKE_RUNS_COSINE = 1 / 3
+
 # --- sliver37 (2026-11-29): xfem P1's traction read where Γ crosses a grid line ---
 #: xfem P1 between equal moduli reads each body's stress for Nitsche's
 #: traction from a cell that body fills at least this share of

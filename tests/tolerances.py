@@ -1786,3 +1786,12 @@ ABOVE_RANGE_RATE = 3.3
 #: (2.48): ``(2^high − 1)/(2^q − 1)`` = 1.53 at the top itself, 1.93 at
 #: ABOVE_RANGE_RATE; scene A's A1 σxy read 2.52 of its error so.
 ABOVE_RANGE_OVER_READ = 1.5
+
+# --- est2_39 (2026-11-30): two runs whose values share little pattern (tests/test_estimate_unlike_runs.py) ---
+#: The coarse h of fe P1's two runs on tests/scenes/roller_lift_exact.toml
+#: (grader34's lifted roller block): h = 0.1 → 0.05, as grader34 ran it.
+UNLIKE_RUNS_H = 0.1
+#: The least cosine of the two runs' values of a quantity the runs resolve
+#: (D's u_y, the block's lift, 7e-5 m against an error of 1e-7): its exact
+#: value dominates both runs, so the cosine is 1 to within its error's share.
+UNLIKE_RUNS_RESOLVED = 0.99

@@ -30,7 +30,7 @@ from .caveats import (above_range, above_range_warning, beyond_reach, cell_scale
                       split_cell_share, split_cell_share_warning, observed_exact_traction_warning,
                       observed_exact_tractions, slow_halving, slow_halving_warning, steady_exact_tractions,
                       steady_exact_traction_warning, enforced_gaps, enforced_gap_warning, unlike_differences,
-                      unlike_differences_warning)
+                      unlike_differences_warning, unlike_runs, unlike_runs_warning)
 from .energy import EnergyEstimate, energy_estimate
 from .extrapolation import QuantityEstimate, profile_estimates
 from .orders import _exact, GAPS, smooth_range, TRACTIONS
@@ -127,7 +127,7 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     (:func:`~contactcore.estimate.caveats.roundoff_runs`) are found once
     here and passed (``roundoff``) to each line that names none of them:
     :func:`~contactcore.estimate.caveats.unsettled`, the exact tractions,
-    steady tractions and enforced gaps, and the unlike differences."""
+    steady tractions and enforced gaps, the unlike differences and unlike runs."""
     hs = tuple(float(r.discretisation["h"]) for r in results)
     levels = [sample_profiles(scene, r.fields, r.interface) for r in results]
     switching = None if scene.law.is_linear else switches([r.interface for r in results])
@@ -185,8 +185,10 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
              | ({ENERGY_KEY} if caveat else set())
              | {f"{pid}:{q}" for pid, qs in profiles.items() for q, e in qs.items() if order_mismatch(e)})
     unlike = unlike_differences(profiles, named, roundoff=roundoff)  # only where no other line names it: it claims a direction
-    return Estimate(hs, profiles, zz, status, warnings + unlike_differences_warning(unlike) + caveat, levels[-1],
-                    named | set(unlike), kept)
+    noise = unlike_runs(levels, kept, named | roundoff)  # two runs; one line an entry
+    return Estimate(hs, profiles, zz, status,
+                    warnings + unlike_differences_warning(unlike) + unlike_runs_warning(noise) + caveat, levels[-1],
+                    named | set(unlike) | set(noise), kept)
 
 
 def far_tractions(smooth: dict[str, np.ndarray] | None, degree: int, facts, law, switching: bool | None
