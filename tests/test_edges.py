@@ -11,6 +11,7 @@ from contactcore import load_scene
 from contactcore.budget import TooLargeError, check_budget, estimate
 from xdolfinx.options import FE
 from verification import files
+from verification.files import result_folders
 from verification.__main__ import main
 
 
@@ -94,7 +95,7 @@ def test_an_interrupted_replacement_keeps_the_earlier_run(tmp_path, monkeypatch)
             raise KeyboardInterrupt
         replace(src, dst)
 
-    monkeypatch.setattr(files.os, "replace", interrupted)
+    monkeypatch.setattr(result_folders.os, "replace", interrupted)
     assert main(["run", "A", "--method", "efgm", "--h", "0.2", "--out", str(out)]) == 130
     assert sorted(p.relative_to(out) for p in out.rglob("*")) == before
     assert not [p for p in tmp_path.iterdir() if p.name.startswith(".")]
@@ -124,7 +125,7 @@ def test_a_signal_while_the_earlier_run_is_removed_waits_for_the_removal(tmp_pat
     assert main(["run", "A", "--method", "efgm", "--h", "0.2", "--out", str(out)]) == 143
     assert sorted(p.relative_to(out) for p in out.rglob("*")) == names
     assert not [p.name for p in tmp_path.iterdir() if p.name.startswith(".")]
-    assert files._BUILDING == [] and not janitor.watching()  # the bookkeeping done before the signal acted
+    assert result_folders._BUILDING == [] and not janitor.watching()  # the bookkeeping done before the signal acted
 
 
 #: A user's script that writes a result folder twice with SIGTERM at its
@@ -133,15 +134,16 @@ SWAP_UNDER_SIG_DFL = """
 import os, signal, sys
 from pathlib import Path
 from verification import files
+from verification.files import result_folders
 signal.signal(signal.SIGTERM, signal.SIG_DFL)
 out = Path(sys.argv[1])
 with files.atomic_folder(out) as d:
     (d / "run").write_text("earlier")
-replace = files.os.replace
+replace = result_folders.os.replace
 def signalled(src, dst):
     replace(src, dst)
     os.kill(os.getpid(), signal.SIGTERM)
-files.os.replace = signalled
+result_folders.os.replace = signalled
 with files.atomic_folder(out) as d:
     (d / "run").write_text("new")
 """
@@ -209,9 +211,9 @@ def test_a_signal_as_the_build_folder_is_made_leaves_no_folder(tmp_path, monkeyp
         os.kill(os.getpid(), signal.SIGTERM)
         return folder
 
-    monkeypatch.setattr(files.tempfile, "mkdtemp", signalled)
+    monkeypatch.setattr(result_folders.tempfile, "mkdtemp", signalled)
     assert main(["run", "A", "--method", "efgm", "--h", "0.2", "--no-plots", "--out", str(tmp_path / "out")]) == 143
-    assert list(tmp_path.iterdir()) == [] and files._BUILDING == []
+    assert list(tmp_path.iterdir()) == [] and result_folders._BUILDING == []
 
 
 def test_a_failed_run_leaves_nothing_under_the_final_name(tmp_path, scene_dict, capsys):

@@ -464,6 +464,7 @@ def test_a_janitor_that_cannot_start_leaves_no_build_folder(tmp_path, monkeypatc
     """Rank 0's janitor refused by the system (no process to be had): the
     error goes on, and neither the build folder nor a record of it is left."""
     from verification import files, janitor
+    from verification.files import result_folders
 
     def refused(*args, **kwargs):
         raise BlockingIOError("Resource temporarily unavailable")
@@ -472,7 +473,7 @@ def test_a_janitor_that_cannot_start_leaves_no_build_folder(tmp_path, monkeypatc
     with pytest.raises(BlockingIOError):
         with files.atomic_folder(tmp_path / "out", watched=True):
             pass
-    assert list(tmp_path.iterdir()) == [] and files._BUILDING == [] and not janitor.watching()
+    assert list(tmp_path.iterdir()) == [] and result_folders._BUILDING == [] and not janitor.watching()
 
 
 #: A process that builds a watched result folder with PETSc started (as

@@ -1,10 +1,16 @@
-"""Units and placement: every method solves the scene made dimensionless.
+"""The scales of a scene and the map to its dimensionless form and back.
+
+Contract: :class:`Scales` maps a scene (its points, law, loads, supports,
+profiles) to the dimensionless scene every method solves, and the answer
+(points, profile samples, Γ's history, a discretisation record) back to the
+user's units, by the map below; a value that leaves the floating-point range
+on the way is refused as a SceneError naming its place in the scene.
 
 A scene may be drawn in any units (µm for micro-contact, km for geology)
 and anywhere in the plane.  So that no tolerance of any method (gmsh's, point
 location, cut cells, quadrature) is absolute, the one ``solve`` of every
 method (:mod:`contactcore.discretisation`) is decorated with
-:func:`dimensionless`: it solves the scene mapped by
+:func:`contactcore.scaling.solve.dimensionless`: it solves the scene mapped by
 
     x' = (x − o)/L,   u' = u/U,   E' = E/S,   σ' = σ/(S U/L),
 
@@ -45,25 +51,20 @@ overflow, but an ordinary problem once made dimensionless.
 """
 from __future__ import annotations
 
-import dataclasses
-import decimal
-import functools
 import math
-import numbers
 import sys
 from dataclasses import dataclass, replace
 
 import numpy as np
 
-from . import tolerances as tol
-from .errors import ContactError, DiscretisationError, SceneError, require_finite
-from .geometry import CircleInterface, Disc, LevelSetInterface, LineInterface, Rectangle
-from .interface_path import InterfacePath
-from .laws import DIMENSIONLESS, DISPLACEMENT, LENGTH, STIFFNESS, STRESS, law_contract
-from .profile_data import ProfileData
-from .result import check_points, gamma_reach
-from .scene import DISPLACEMENT_QUANTITIES, STRESS_QUANTITIES, LineProfile, Scene, Support, check_resolution, place_of
-from .scene.loads import FORCE_DENSITY, MAGNITUDES, MOMENT, POINT, STRESS as LOAD_STRESS, load_contract, scaled_load
+from .. import tolerances as tol
+from ..errors import ContactError, SceneError, require_finite
+from ..geometry import CircleInterface, Disc, LevelSetInterface, LineInterface, Rectangle
+from ..interface_path import InterfacePath
+from ..laws import DIMENSIONLESS, DISPLACEMENT, LENGTH, STIFFNESS, STRESS, law_contract
+from ..profile_data import ProfileData
+from ..scene import DISPLACEMENT_QUANTITIES, STRESS_QUANTITIES, LineProfile, Scene, place_of
+from ..scene.loads import FORCE_DENSITY, MAGNITUDES, MOMENT, POINT, STRESS as LOAD_STRESS, load_contract
 
 
 def _scaled(value: float, unit: float, path: str, least: float = 0.0) -> float:
@@ -79,7 +80,7 @@ def _scaled(value: float, unit: float, path: str, least: float = 0.0) -> float:
     return out
 
 
-def _load_stress(scene: Scene) -> float:
+def load_stress(scene: Scene) -> float:
     """``τ``: the largest load as a stress (Pa): of each parameter of a
     magnitude a load declares, its largest component as a stress (|t|, p,
     |b| L or a pressure's |gradient| L, |T|/L²).
@@ -144,7 +145,7 @@ class Scales:
         if not 0.0 < S < math.inf:
             raise SceneError("materials", f"Young's moduli must be finite and > 0 (the largest is {S!r})")
         prescribed = max((abs(v) for s in scene.supports for v in s.value), default=0.0)
-        U = max(L * (_load_stress(scene) / S), prescribed) or L
+        U = max(L * (load_stress(scene) / S), prescribed) or L
         if not 0.0 < U < math.inf or not 0.0 < S * (U / L) < math.inf:
             raise SceneError("loads", f"the displacement the loads cause, about {U:.3g} (L τ/E), is out of "
                              "floating-point range; choose units closer to the problem's scale (docs/scenes.md, 'Units')")
@@ -310,100 +311,6 @@ class Scales:
         return out
 
 
-def _at_peak(item):
-    """A load or support at the largest |factor| of its path (1: no path,
-    the ramp to the full value), its path left out: a support's value, a
-    load's parameters of a magnitude (:func:`contactcore.scene.loads.scaled_load`)."""
-    f = max((abs(v) for _, v in item.path), default=1.0)
-    if isinstance(item, Support):
-        return replace(item, value=tuple(v * f for v in item.value), path=())
-    return replace(scaled_load(item, f), path=())
-
-
-@dataclass(frozen=True)
-class Sizes:
-    """The sizes of a scene's largest state from its data alone (its loads
-    and prescribed displacements at the largest factor of their paths, its
-    moduli and extent): what round-off is relative to when a run's own
-    values are all round-off (a Γ pulled open and stress-free:
-    ``verification.agreement.roundoff``, the ZZ estimate's floor)."""
-
-    displacement: float  # U = max(L τ/E_soft, |ū|): the displacement the loads cause in the softer body
-    stress: float  # Σ = max(τ, E_stiff |ū|/L): the largest load, or the stress a prescribed displacement causes
-    energy: float  # Σ (A/E_soft)^½: the energy norm (J^½ per unit thickness) of Σ over the domain's area A
-
-    @classmethod
-    def of(cls, scene: Scene) -> "Sizes":
-        peak = replace(scene, loads=tuple(map(_at_peak, scene.loads)),
-                       supports=tuple(map(_at_peak, scene.supports)))
-        stress = Scales.of(peak).stress
-        return cls(softer_displacement(peak), stress, stress * math.sqrt(scene.domain.area / scene.softer_modulus))
-
-
-def softer_stress(scene: Scene, h: float | None = None) -> float:
-    """``Σ`` of :class:`Sizes` with every body at the softer body's modulus:
-    the largest load, or the stress a prescribed displacement ū causes in
-    the softer body, ``E_soft |ū|/L``.  A lower bound of the stress a
-    prescribed displacement causes where :class:`Sizes`' ``E_stiff |ū|/L``
-    is an upper one (the layered cycle, ū on a layer 1e3 times softer:
-    5.0 against 5005 MPa, under its 10 MPa pressure): the scale of a
-    traction's round-off on a Γ the loads leave unloaded, which must not
-    hide a real excess (``contactcore.health``'s warnings).
-
-    Given the method's spacing ``h``, a rigid translation c the supports
-    prescribe (:func:`rigid_translation`) strains nothing and counts only
-    with the round-off it leaves in a traction, TRANSLATION_ROUNDOFF of
-    ``E_soft |c|/h`` (as a stress whose TRACTION_ROUNDOFF share is that):
-    counted as ``E_soft |c|/L`` it hid a decision band's real excess
-    (review5's fault 4).  Where nothing but the translation acts (no load,
-    no other prescription) it counts as before: every traction is then
-    round-off of it."""
-    soft = _all_softer(scene)
-    rigid = rigid_translation(scene)
-    if h is None or not any(rigid):
-        return Sizes.of(soft).stress
-    strained = replace(soft, supports=tuple(
-        replace(sup, value=tuple(0.0 if moved else v for v, moved in zip(sup.value, rigid)))
-        for sup in soft.supports))
-    peak = replace(strained, loads=tuple(map(_at_peak, strained.loads)),
-                   supports=tuple(map(_at_peak, strained.supports)))
-    if not (_load_stress(peak) or any(v for sup in peak.supports for v in sup.value)):
-        return Sizes.of(soft).stress
-    size = max(abs(v) * max((abs(f) for _, f in sup.path), default=1.0)
-               for sup in scene.supports for v, moved, axis in zip(sup.value, rigid, "xy")
-               if moved and axis in sup.fix)
-    return max(Sizes.of(strained).stress,
-               tol.TRANSLATION_ROUNDOFF / tol.TRACTION_ROUNDOFF * scene.softer_modulus * size / h)
-
-
-def rigid_translation(scene: Scene) -> tuple[bool, bool]:
-    """For each component (x, y), whether the supports prescribe a rigid
-    translation in it: at least one support fixes it, every support that
-    fixes it prescribes the same displacement at every increment (the
-    same value times the same path factor), not zero, and no pin holds it
-    at zero.  The body then moves by that displacement as a whole in that
-    component and is strained by the rest alone."""
-    increments = sorted({0, scene.increments, *(k for sup in scene.supports for k, _ in sup.path)})
-    moved = []
-    for i, axis in enumerate("xy"):
-        held = [sup for sup in scene.supports if axis in sup.fix]
-        if not held or any(axis in pin.fix for pin in scene.pins):
-            moved.append(False)
-            continue
-        paths = [[sup.value[i] * scene.factor(sup.path, k) for k in increments] for sup in held]
-        moved.append(all(p == paths[0] for p in paths) and any(paths[0]))
-    return tuple(moved)
-
-
-def softer_displacement(scene: Scene) -> float:
-    """``U = max(L τ/E, |ū|)`` of :class:`Scales`, E the softer body's
-    modulus: the displacement the loads cause in the softer body, or the
-    largest prescribed displacement ū if larger (a stiff disc in a 100×
-    softer block moves with the block, 100 times the stiff body's L τ/E,
-    while a prescribed displacement is the same whichever body is softer)."""
-    return Scales.of(_all_softer(scene)).displacement
-
-
 def user_points(scene: Scene, points) -> np.ndarray:
     """``points`` (…, 2) of a dimensionless ``scene`` (one :meth:`Scales.scene`
     made) in its user's coordinates and length unit, as a message names
@@ -413,148 +320,3 @@ def user_points(scene: Scene, points) -> np.ndarray:
     source = getattr(scene, "source", None)
     return np.asarray(points, float) if source is None else Scales.of(source).to_user(points)
 
-
-def _all_softer(scene: Scene) -> Scene:
-    """``scene`` with every body at the softer body's Young's modulus."""
-    soft = scene.softer_modulus
-    return replace(scene, materials={b: replace(m, E=soft) for b, m in scene.materials.items()})
-
-
-class ScaledFields:
-    """A Result's fields: ``inner`` (the method's, over ``scales``'
-    dimensionless scene) read in the user's units: ``u(x) = U u'(x')``,
-    ``σ(x) = Σ σ'(x')``, ``x' = (x − o)/L``.
-
-    With the user's ``scene``, every call holds to the contract of
-    :class:`contactcore.result.Fields` (:func:`~contactcore.result.check_points`,
-    in the user's coordinates and units) before the method sees a point;
-    :attr:`extended` skips the geometric part of it, for a writer that reads
-    a body's polynomial on a cut cell's vertices beyond Γ
-    (:func:`xdolfinx.output.body_mesh`)."""
-
-    def __init__(self, inner, scales: Scales, scene: Scene | None = None, reach: float = 0.0):
-        self.inner, self.scales, self.scene, self.reach = inner, scales, scene, reach
-        # the wrapper protocol of contactcore.result.method_fields
-        self.base, self.origin, self.length_scale = inner, scales.origin, scales.length
-
-    @property
-    def extended(self) -> "ScaledFields":
-        """The same fields without the check of points against the scene's
-        geometry (the arrays are still checked)."""
-        return ScaledFields(self.inner, self.scales)
-
-    def displacement(self, points, bodies) -> np.ndarray:
-        """``u`` (m, 2) of body ``bodies[i]`` (0 = −, 1 = +) at ``points[i]``
-        ((m, 2)), both in the user's coordinates and length unit.  Refused
-        by :func:`~contactcore.result.check_points` with a FieldsError
-        naming the first bad point: outside the domain or the body named,
-        not finite, a body other than 0 or 1, arrays of the wrong shape."""
-        points, bodies = check_points(points, bodies, self.scene, "fields.displacement", self.reach)
-        return self.scales.displacement * self.inner.displacement(self.scales.to_dimensionless(points), bodies)
-
-    def stress(self, points, bodies) -> np.ndarray:
-        """``(σxx, σyy, σxy)`` (m, 3) in the user's stress unit, of body
-        ``bodies[i]`` at ``points[i]``; points refused as for
-        :meth:`displacement`."""
-        points, bodies = check_points(points, bodies, self.scene, "fields.stress", self.reach)
-        return self.scales.stress * self.inner.stress(self.scales.to_dimensionless(points), bodies)
-
-    def direct_stress(self, points, bodies) -> np.ndarray:
-        """The stress of the computed displacement itself, ``σ(u_h)``
-        (:class:`contactcore.result.Fields`' note): the method's own
-        ``direct_stress`` where it has one (xfem), else :meth:`stress`
-        (fe on curved cells: σ(u_h) interpolated per cell); points refused
-        as for :meth:`displacement`."""
-        direct = getattr(self.inner, "direct_stress", None)
-        if direct is None:
-            return self.stress(points, bodies)
-        points, bodies = check_points(points, bodies, self.scene, "fields.direct_stress", self.reach)
-        return self.scales.stress * direct(self.scales.to_dimensionless(points), bodies)
-
-
-def _option_in(name: str, value, scales: Scales):
-    """A method's keyword option made dimensionless: ``nodes`` (points) and a
-    ``grading``'s distance (a length); every other option is a count or a
-    choice."""
-    if value is None:
-        return value
-    if name == "nodes":
-        x = np.asarray(value, float)
-        return scales.to_dimensionless(x) if x.ndim == 2 and x.shape[1] == 2 else value
-    if name == "grading":
-        return replace(value, distance=value.distance / scales.length)
-    return value
-
-
-def dimensionless_inputs(scene: Scene, discretisation, h: float | None):
-    """``(scales, scene, discretisation, h)``: the scales of the user's
-    ``scene`` and the scene, the discretisation's options and ``h`` a solve
-    sees, made dimensionless.  An ``h`` that is not > 0 is passed on
-    unchanged, for the method to refuse in the user's numbers; a
-    ``scene`` that is no Scene, or an ``h`` that is no number, is refused
-    here by name (a ContactError, not the AttributeError it would meet)."""
-    _check_kinds(scene, h)
-    scales = Scales.of(scene)
-    if h is not None and h > 0:  # in the user's numbers, whatever the driver (run checks it too)
-        check_resolution(scene, h, "h")
-    h_in = decimal_quotient(h, scales.length) if h is not None and h > 0 else h
-    given = {f.name: getattr(discretisation, f.name) for f in dataclasses.fields(discretisation)}
-    inner = replace(discretisation, **{k: _option_in(k, v, scales) for k, v in given.items()})
-    return scales, scales.scene(scene), inner, h_in
-
-
-#: Digits of :func:`decimal_quotient`'s exact decimal division, more than
-#: twice a double's 17, so that its one rounding to a double is the only one.
-DECIMAL_DIGITS = 40
-
-
-def decimal_quotient(a: float, b: float) -> float:
-    """``a / b`` as the quotient of the two numbers as written (their
-    shortest decimals), rounded once: the same scene in m and in mm then
-    divides to the same bits (5/200 and 0.005/0.2 are both 0.025, where
-    float division gives 0.024999999999999998 for the second, and fe's
-    mesher, deciding at an exact multiple of h, made 2296 and 2302 cells
-    of one held-out layered block; 2026-11-29).  For the spacings
-    0.4 · 2⁻ᵏ (k = 0..9) and sizes 1, 1.5, 2, 2.5, 3, 4, 5, 6, 10, 20, 100,
-    200, 1000, 0.5, 0.2 and 0.001 it is float division's own quotient, bit
-    for bit (not for a size of 1.2)."""
-    with decimal.localcontext() as ctx:
-        ctx.prec = DECIMAL_DIGITS
-        return float(decimal.Decimal(repr(float(a))) / decimal.Decimal(repr(float(b))))
-
-
-def _check_kinds(scene, h) -> None:
-    """Refuse a ``scene`` that is no :class:`Scene` (a scene's name, a
-    path: :func:`contactcore.load_scene` reads them) and an ``h`` that is
-    no real number (a string, a bool), naming the argument."""
-    if not isinstance(scene, Scene):
-        raise ContactError(f"scene: must be a Scene (contactcore.load_scene(NAME or PATH) reads one), got "
-                           f"{type(scene).__name__} {scene!r}"[:200])
-    if h is not None and (isinstance(h, bool) or not isinstance(h, numbers.Real)):
-        raise DiscretisationError(f"h: must be a number, the cell size or node spacing in the scene's length "
-                                  f"unit, got {type(h).__name__} {h!r}"[:200])
-
-
-def dimensionless(solve):
-    """Decorate the one ``solve(scene, discretisation, h=None, **options)
-    -> Result`` (:mod:`contactcore.discretisation`) so that it solves the
-    dimensionless scene, with the discretisation's options made
-    dimensionless too, and returns the Result (and the steps it reports to
-    a ``progress`` callback) in the user's units:
-    ``scene`` the user's, ``fields`` a :class:`ScaledFields`
-    (``fields.inner`` the method's own, ``fields.scales``), ``interface``
-    and ``discretisation`` mapped back.  An ``h`` that is not > 0 is passed
-    on unchanged, for the method to refuse in the user's numbers.
-    """
-    @functools.wraps(solve)
-    def solve_dimensionless(scene: Scene, discretisation, h: float | None = None, **options):
-        scales, scaled, inner, h_in = dimensionless_inputs(scene, discretisation, h)
-        progress = options.get("progress")
-        if progress is not None:
-            options = {**options, "progress": lambda n, total, st: progress(n, total, scales.step(st))}
-        result = solve(scaled, inner, h_in, **options)
-        path = scales.path(result.interface)
-        return replace(result, scene=scene, fields=ScaledFields(result.fields, scales, scene, gamma_reach(scene, path)),
-                       interface=path,
-                       discretisation=scales.discretisation(result.discretisation))
-    return solve_dimensionless
