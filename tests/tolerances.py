@@ -1802,3 +1802,8 @@ UNLIKE_RUNS_RESOLVED = 0.99
 #: differ at round-off; EFGM P2's do not (0.2 → 0.1 → 0.05: 1.6 s CPU for
 #: the three methods' five estimates).
 LAYERED_EXACT_H = 0.2
+#: Shares of a quantity's values by which a reference differs from a run
+#: in tests/test_efficiency.py's round-off case: 1e-14 is round-off
+#: (below NEGLIGIBLE_SHARE, 1e-8, of the reference's largest value), 1e-4
+#: a true error whose effectivity stands.
+EFFICIENCY_NOISE, EFFICIENCY_SIGNAL = 1e-14, 1e-4
