@@ -1807,3 +1807,7 @@ LAYERED_EXACT_H = 0.2
 #: (below NEGLIGIBLE_SHARE, 1e-8, of the reference's largest value), 1e-4
 #: a true error whose effectivity stands.
 EFFICIENCY_NOISE, EFFICIENCY_SIGNAL = 1e-14, 1e-4
+#: A top traction (Pa, up) on tests/scenes/pulled_off_weight.toml below
+#: the + layer's weight (1e6 N/m³ over 0.6 m²: 6e5 N per m of thickness):
+#: the weight then presses Γ, and the loads have an equilibrium.
+PULLED_OFF_BELOW_WEIGHT = 5e5
