@@ -315,6 +315,27 @@ def test_an_exact_law_that_does_not_settle_is_not_told_to_soften_springs():
     assert "1.00e+00" not in str(error) and history in error.details
 
 
+def test_a_body_pulled_off_against_its_weight_is_told_so():
+    """grader34 F5: the + layer of tests/scenes/pulled_off_weight.toml has
+    no support and its top is pulled up (2e6 N per m) harder than its
+    weight holds it down (6e5 N): no equilibrium.  friction_demand did not
+    judge a body under a body force, so the unilateral tie's words told it
+    to use a Coulomb law with a large mu; it now counts a constant body
+    force (its resultant at the part's centroid) and names the cause.  A
+    pull below the weight leaves an equilibrium: no refusal.  (The run,
+    `run tests/scenes/pulled_off_weight.toml --method fe --degree 1 --h
+    0.1`, ends with these words, exit 2, after Newton's 6 cut-backs: 4 s,
+    left to this refusal's own call.)"""
+    scene = load_scene("tests/scenes/pulled_off_weight.toml")
+    refusal = "body + is held by Γ alone and the loads pull it off Γ"
+    assert health.friction_demand(scene, 1.0).startswith(refusal)
+    light = dataclasses.replace(scene.loads[2], value=(0.0, tol.PULLED_OFF_BELOW_WEIGHT))
+    assert health.friction_demand(scene.with_changes(loads=(*scene.loads[:2], light)), 1.0) == ""
+    from contactcore.newton import _no_equilibrium
+    error = str(_no_equilibrium(scene, 1, 6, ["step 0 → 1: Newton did not converge in 27 iterations"]))
+    assert refusal in error.splitlines()[0] and "coulomb" not in error, error
+
+
 def test_a_unilateral_law_that_does_not_settle_is_pointed_to_coulomb(tmp_path):
     """grader17's shear with the unilateral law (penalty, no normal load),
     fe P1 at h = 0.1: no open/closed map settles, because the law drops a

@@ -23,7 +23,7 @@ effectivity``) have no closed form: there the truth is fe P2 at a fine
 (``Estimate.kept``): away from singular points
 (:func:`verification.agreement.default_exclusion`) and beyond the
 coarse run's reach of them (:func:`contactcore.estimate.beyond_reach`);
-a true error at round-off there has no effectivity either (``_at_roundoff``).
+a true error at round-off there has no effectivity either (``at_roundoff``).
 """
 from __future__ import annotations
 
@@ -196,7 +196,7 @@ def scene_rows(scene, key: tuple, h: float, truth: dict[str, ProfileData], level
     :func:`contactcore.estimate.fast_gamma`, EFGM P1's Γ quantities, or
     with three levels :func:`contactcore.estimate.order_mismatch`, the
     observed order: the entries ``Estimate.unsettled`` holds).  A true
-    error at round-off (:func:`_at_roundoff`) has no effectivity (None), as
+    error at round-off (:func:`at_roundoff`) has no effectivity (None), as
     on the closed forms."""
     disc = methods.discretisation(key[0])(degree=key[1])
     results = [solve(scene, disc, hk) for hk in est.levels_of(h, levels)]
@@ -212,13 +212,13 @@ def scene_rows(scene, key: tuple, h: float, truth: dict[str, ProfileData], level
                          "profile": pid, "quantity": q, "order": e.order, "estimate": est.rms(e.error[keep]),
                          "true": true, "unit": files.column_unit(q, scene.units) or "",
                          "relative": true / np.max(np.abs(want)),
-                         "effectivity": (None if _at_roundoff(true, want, q, sizes)
+                         "effectivity": (None if at_roundoff(true, want, q, sizes)
                                          else est.rms(e.error[keep]) / true),
                          "warned": f"{pid}:{q}" in estimate.unsettled})
     return rows
 
 
-def _at_roundoff(true: float, want: np.ndarray, quantity: str, sizes: Sizes) -> bool:
+def at_roundoff(true: float, want: np.ndarray, quantity: str, sizes: Sizes | None) -> bool:
     """Whether a true RMS error ``true`` is round-off: at most
     :data:`~contactcore.tolerances.NEGLIGIBLE_SHARE` of the truth's largest
     |value| ``want`` or, where that is itself near zero (a stuck Γ's slip),
@@ -226,7 +226,8 @@ def _at_roundoff(true: float, want: np.ndarray, quantity: str, sizes: Sizes) -> 
     (:func:`~contactcore.estimate.roundoff_floor`).  A method that
     represents the answer exactly (an affine field in fe P1) then meets a
     truth that does too, and their RMS ratio is round-off over round-off:
-    no effectivity."""
+    no effectivity (here, and in ``efficiency --ref-h``:
+    :func:`verification.efficiency.effectivity_at`)."""
     largest = float(np.max(np.abs(want))) if len(want) else 0.0
     return true <= max(tol.NEGLIGIBLE_SHARE * largest, est.roundoff_floor(sizes, quantity))
 

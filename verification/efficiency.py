@@ -43,10 +43,12 @@ from contactcore import estimate as estimates
 from contactcore import SceneError, load_scene, sample_profiles, scene_text
 from contactcore import tolerances as tol
 from contactcore.budget import MEMORY_SHARE, check_budget, check_together, estimate, machine_memory
+from contactcore.scaling import Sizes
 from contactcore.scene import Units, check_resolution
 
 from . import files, methods, pool
 from .agreement import agreements, check_exclusion, first_largest, label, worst_estimate
+from .effectivity import at_roundoff
 from .plots import loglog_by_variant
 from .study_checks import check_given_once
 from .timing import REPEAT_BELOW, REPEATS, fastest
@@ -310,19 +312,31 @@ def _measure(scene_name: str, rung: tuple, ref: dict | None, exclude: float, est
     got = {p.id: p for p in sample_profiles(scene, res.fields, res.interface)}
     row["error"], row["worst"] = worst_error(scene, got, ref, exclude)
     if estimated:
-        row["effectivity"] = effectivity_at(shares, row["worst"], got, ref)
+        row["effectivity"] = effectivity_at(shares, row["worst"], got, ref, Sizes.of(scene))
     return row
 
 
-def effectivity_at(kept: dict[str, tuple], where: str, got: dict, ref: dict) -> float:
+#: The effectivity column's entry where the true error is round-off
+#: (:func:`effectivity_at`).
+ROUNDOFF = "round-off"
+
+
+def effectivity_at(kept: dict[str, tuple], where: str, got: dict, ref: dict,
+                   sizes: Sizes | None = None) -> float | str:
     """The effectivity of the quantity ``where`` (``"PID:Q"``, the worst
     true error's): ``rms(e_k) / rms(q_k − q_ref,k)`` over the samples ``k``
     its estimate is summarised over (``kept[where]`` = (``e_k``, the
     mask): ``Estimate.kept``, away from the singular points and beyond the
     coarse run's reach of them), the true error ``got`` − ``ref`` on those
     same samples, as ``verification.effectivity`` measures it (the scale
-    of both cancels); NaN where the quantity has no estimate or no error
-    there.  Never the estimate's worst, which may be another quantity's
+    of both cancels); NaN where the quantity has no estimate there;
+    :data:`ROUNDOFF` where its true error is round-off
+    (:func:`verification.effectivity.at_roundoff`, against ``ref``'s
+    largest value there and the scene's ``sizes``), as the effectivity
+    tool leaves such rows out: a method exact on the scene (fe and xfem P2
+    on a layered block whose answer is piecewise quadratic) meets a
+    reference exact too, and the ratio is round-off over round-off
+    (grader34: 1.0e-5 and 0.44 beside real effectivities).  Never the estimate's worst, which may be another quantity's
     (grader21: scene A fe P1 at h = 0.05, A4:sxx's estimate 0.105 over
     A1:sxy's error 0.148 printed 0.711 where A1:sxy's own effectivity was
     0.555); never the estimate over one set of samples divided by the
@@ -332,5 +346,6 @@ def effectivity_at(kept: dict[str, tuple], where: str, got: dict, ref: dict) -> 
         return float("nan")
     error, keep = kept[where]
     pid, q = where.split(":")
-    true = estimates.rms(got[pid].columns[q][keep] - ref[pid].columns[q][keep])
-    return estimates.rms(error) / true if true > 0 else float("nan")
+    want = ref[pid].columns[q][keep]
+    true = estimates.rms(got[pid].columns[q][keep] - want)
+    return ROUNDOFF if at_roundoff(true, want, q, sizes) else estimates.rms(error) / true

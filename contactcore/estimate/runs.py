@@ -127,7 +127,8 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     (:func:`~contactcore.estimate.caveats.roundoff_runs`) are found once
     here and passed (``roundoff``) to each line that names none of them:
     :func:`~contactcore.estimate.caveats.unsettled`, the exact tractions,
-    steady tractions and enforced gaps, the unlike differences and unlike runs."""
+    steady tractions and enforced gaps, the pollution line, the unlike
+    differences and unlike runs."""
     hs = tuple(float(r.discretisation["h"]) for r in results)
     levels = [sample_profiles(scene, r.fields, r.interface) for r in results]
     switching = None if scene.law.is_linear else switches([r.interface for r in results])
@@ -151,7 +152,7 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     # an exact law's traction has its own line (and order): not fast Γ's "order k + 1" too (review20)
     fast = [k for k in fast_gamma(profiles, facts) if k not in set(nitsche) | set(steady) | observed[1]]
     held = [k for k in held if k not in fast]  # EFGM P1's own measured line first: one line an entry
-    warnings = (order_warnings(profiles) + pollution_warning(scene, profiles)
+    warnings = (order_warnings(profiles) + pollution_warning(scene, profiles, roundoff=roundoff, three=len(levels) > 2)
                 + exact_traction_warning(nitsche, len(levels) > 2) + steady_exact_traction_warning(steady)
                 + enforced_gap_warning(held)
                 + fast_gamma_warning(fast, results[-1].method, results[-1].degree, len(levels) > 2)

@@ -21,7 +21,10 @@ the edge), by their formula (:func:`contactcore.scene.edge_traction`),
 their resultant (:func:`_boundary_resultant`) and their work in the
 body's rigid modes (:func:`_load_work`; a uniform load's work in a linear
 motion is its resultant's at the part's midpoint, a varying one's is
-summed over three Gauss points).
+summed over three Gauss points), with each constant body force
+(``body_force``) on the body's part of the rectangle (:func:`_body_parts`:
+its resultant acts at the part's centroid, exact for its work in a linear
+motion too); a body under any other body load is not judged.
 """
 from __future__ import annotations
 
@@ -30,9 +33,9 @@ import math
 import numpy as np
 
 from .. import tolerances as tol
-from ..geometry import LineInterface, Rectangle, tangent_of
+from ..geometry import clip_halfplane, LineInterface, polygon_area, Rectangle, tangent_of
 from ..scaling import user_points
-from ..scene.loads import BODY, EDGE, edge_traction, place_of
+from ..scene.loads import BODY, BodyForce, EDGE, edge_traction, place_of
 from .residual import NOT_CONVERGED
 from .overturning import eccentricity, overturn_refusal, overturned
 from .restraint import _BODY_NAMES, _free_modes, _mode_matrix, _restraint
@@ -52,7 +55,11 @@ def friction_demand(scene, k: float) -> str:
     (an x-roller leaves a block above a horizontal Γ free in y) is refused
     when the loads do positive work in such a motion (:func:`_pulled_off`):
     Γ's contact pushes only, so it cannot hold them.  Only a rectangle cut
-    by a line with no body force on the body is judged here."""
+    by a line is judged here, its body forces counted where they are
+    constant (:func:`_body_parts`; since 2026-11-30, fix39: a body pulled
+    off Γ against its weight was judged not at all, and told by
+    :func:`tie_cause` to use Coulomb with a large μ), a body under another
+    body load not at all."""
     if not scene.law.unilateral:  # springs that carry tension hold any load
         return ""
     for name, shear, press, held, e in _demands(scene, k):
@@ -133,7 +140,8 @@ def _demands(scene, k: float):
     n = np.asarray(scene.interface.normal, float)
     supports = _restraint(scene, np.zeros((0, 2)), np.zeros(0))[0]
     for b, name in enumerate(_BODY_NAMES):
-        if any(place_of(ld) == BODY and ld.body == ("minus", "plus")[b] for ld in scene.loads):
+        weight = _body_parts(scene, b, scene.factors(k)[0])
+        if weight is None:
             continue
         free = _free_modes(supports[3 * b:3 * b + 3, 3 * b:3 * b + 3])
         if not free.shape[1]:
@@ -143,7 +151,7 @@ def _demands(scene, k: float):
             if how:
                 yield name, 0.0, 0.0, how, 0.0
             continue
-        parts = list(_loaded_parts(scene, b, scene.factors(k)[0]))
+        parts = list(_loaded_parts(scene, b, scene.factors(k)[0])) + weight
         force = _resultant(parts)
         if force.any():
             press = -_dot(force, n) if b == 1 else _dot(force, n)
@@ -275,13 +283,42 @@ _GAUSS3_WEIGHTS = (5.0 / 18.0, 8.0 / 18.0, 5.0 / 18.0)
 
 def _load_work(scene, body: int, centre, L, factors) -> np.ndarray:
     """(3,): the work of the tractions and pressures on ``body``'s part of
-    each loaded edge of the rectangle in its rigid modes (:func:`_modes`,
-    about ``centre``, lengths over ``L``): a uniform load's work in a
-    linear motion is its resultant's at the part's midpoint."""
+    each loaded edge of the rectangle, and of its constant body forces
+    (:func:`_body_parts`), in its rigid modes (:func:`_modes`, about
+    ``centre``, lengths over ``L``): a uniform load's work in a linear
+    motion is its resultant's at the part's midpoint (centroid)."""
     work = np.zeros(3)
-    for t, length, mid in _loaded_parts(scene, body, factors):
+    for t, length, mid in list(_loaded_parts(scene, body, factors)) + (_body_parts(scene, body, factors) or []):
         work += length * (t @ _mode_matrix(mid, centre, L))
     return work
+
+
+def _body_parts(scene, body: int, factors) -> list | None:
+    """``[(b, area, centroid)]``: each constant body force ``b`` (at its
+    factor of ``factors``) on ``body``'s part of the rectangle (0 −, 1 +:
+    the rectangle clipped to that side of Γ's line), whose resultant
+    ``b·area`` acts at the part's centroid, as
+    :func:`_loaded_parts`' ``(t, length, point)``; [] with none; None
+    where another body load acts on it (not judged)."""
+    loads = [(ld, f) for ld, f in zip(scene.loads, factors)
+             if place_of(ld) == BODY and ld.body == ("minus", "plus")[body]]
+    if any(not isinstance(ld, BodyForce) for ld, _ in loads):
+        return None
+    if not loads:
+        return []
+    line = scene.interface if body == 0 else LineInterface(scene.interface.point,
+                                                           tuple(-c for c in scene.interface.normal))
+    part = clip_halfplane(scene.domain.corners, line)  # the side φ <= 0 of ``line``
+    area, centroid = polygon_area(part), _centroid(part)
+    return [(f * np.asarray(ld.value, float), area, centroid) for ld, f in loads]
+
+
+def _centroid(poly: np.ndarray) -> np.ndarray:
+    """The centroid of a polygon (n, 2), its vertices in order:
+    ``Σ (p_i + p_{i+1}) (p_i × p_{i+1}) / (6 A)``, ``A`` its signed area."""
+    p, q = poly, np.roll(poly, -1, axis=0)
+    cross = p[:, 0] * q[:, 1] - q[:, 0] * p[:, 1]
+    return ((p + q) * cross[:, None]).sum(axis=0) / (3.0 * cross.sum())
 
 
 def _part(phi_a: float, phi_b: float, body: int) -> tuple[float, float]:

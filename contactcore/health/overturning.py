@@ -11,7 +11,8 @@ about the midpoint, ``F`` their resultant, ``τ`` Γ's tangent.  Otherwise no
 pressure distribution balances them: the body overturns (no equilibrium),
 whatever μ and the springs.  The loads, the bodies judged and the press
 are :func:`contactcore.health.equilibrium._demands`' (edge tractions and
-pressures by their own formulas; no body force); this module gives the
+pressures by their own formulas, and constant body forces, their
+resultant at the body's part's centroid); this module gives the
 geometry and the words.
 """
 from __future__ import annotations
