@@ -1776,3 +1776,12 @@ UNLIKE_ROUNDOFF_ERROR = 1e-6
 #: represents exactly (its true errors 1e-14 of scale; the effectivity tool
 #: gave them ratios of round-off over round-off, 48 of 72 "below 0.5").
 ROUNDOFF_SCENE_H, ROUNDOFF_SCENE_TRUTH_H = 0.1, 0.025
+
+# --- ends39 (2026-11-30): Γ profiles extrapolated past the end pieces' centres (tests/test_profile_ends.py) ---
+#: Profile G's t_N at its first and last two samples against the closed
+#: form, relative to max|t_N|, on tests/scenes/self_weight_tilted_crack.toml
+#: at h = 0.05, degree 2 (fe, xfem: the bulk is exact, t_N linear along Γ).
+#: Measured 2.6e-14 (fe P2) and 7.5e-14 (xfem P2), the interior samples
+#: 4.3e-14 / 2.4e-13; the end piece's mean held flat gave 3.65e-3 / 3.80e-3
+#: (grader33 F4).  1e-11 is round-off of sums over 25 pieces with room.
+PROFILE_END_ROUNDOFF = 1e-11
