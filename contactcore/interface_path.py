@@ -175,7 +175,19 @@ class InterfacePath:
         ``|t_T| <= μ|t_N|`` hold for the mean where they hold at the points.
         The price is resolution: a kink, or t_T's change of sign between
         two slip directions, is spread over one piece.  Without pieces, the
-        points' own values (:meth:`interpolated`)."""
+        points' own values (:meth:`interpolated`).
+
+        Past the first or last piece's centre of a straight Γ, up to Γ's
+        end and never beyond it, a sample reads the line through the two
+        end pieces' means (:func:`_ends_extrapolated`): holding the end
+        piece's mean flat was off by ``|t'| L/2`` there, O(h) where the
+        traction varies along Γ (grader33 F4: 0.37 % of |t_N| at h = 0.05
+        where the field is exact).  Only where the three end pieces lie
+        wholly in one status (the last step's reported status), never
+        across an opening or a stick/slip change, and their means lie on a
+        line (not at a singular end: :func:`_straight`).  A straight Γ crosses the domain in one chord, so its pieces are
+        one connected piece without kinks; a circle has no ends, and a
+        general level set keeps the nearest centre."""
         if self.pieces is None:
             return self.interpolated(interface, points, values)
         centres, which = np.unique(self.pieces, axis=0, return_inverse=True)
@@ -185,9 +197,83 @@ class InterfacePath:
         total = np.bincount(which, self.weights, len(centres))
         means = np.column_stack([np.bincount(which, self.weights * c, len(centres)) for c in flat.T])
         held = total > 0  # a piece of zero length carries nothing
-        centres, total, means = merged_pieces(interface, centres[held], total[held], means[held] / total[held, None])
-        at_centres = InterfacePath(centres, total)
-        return at_centres.interpolated(interface, points, means.reshape((len(total),) + values.shape[1:]))
+        whole = _whole_status(which, self._status(), len(centres))[held]
+        span = _span(interface, centres[held], total[held])
+        centres, total, pooled = merged_pieces(interface, centres[held], total[held],
+                                               np.column_stack([means[held] / total[held, None], whole]))
+        means, whole = pooled[:, :flat.shape[1]], pooled[:, flat.shape[1]:] == 1.0
+        read = InterfacePath(centres, total).interpolated(interface, points, means)
+        if span is not None:
+            read = _ends_extrapolated(along(interface, points), along(interface, centres), means, whole, span, read)
+        return read.reshape((len(points),) + values.shape[1:])
+
+    def _status(self) -> np.ndarray:
+        """Each point's reported status at the last step
+        (:meth:`Increment.reported_status`); one status for all on a path
+        without steps."""
+        return self.final.reported_status().astype(int) if self.steps else np.zeros(len(self.weights), int)
+
+
+def _whole_status(which: np.ndarray, status: np.ndarray, count: int) -> np.ndarray:
+    """(count, k) float: 1 where all of a piece's points are in reported
+    status k (an index into ``REPORTED_STATUS_NAMES``), else 0.  A mean of
+    these over merged pieces (:func:`merged_pieces`) is exactly 1 where
+    every piece merged is wholly in k: its numerator sums the same terms
+    as its denominator."""
+    mixed = np.zeros((count, len(REPORTED_STATUS_NAMES)), bool)
+    for k in range(len(REPORTED_STATUS_NAMES)):
+        mixed[:, k] = np.bincount(which, status != k, count) > 0
+    return (~mixed).astype(float)
+
+
+def _span(interface, centres: np.ndarray, lengths: np.ndarray) -> tuple[float, float] | None:
+    """Γ's extent ``(lo, hi)`` along a straight Γ (:func:`along`) as its
+    pieces cover it: a straight piece's centre is its midpoint (its points
+    a symmetric rule's), so it spans ``a ± L/2``.  None on a circle or a
+    general level set (no ends to extrapolate to) or with fewer than two
+    pieces."""
+    if not isinstance(interface, LineInterface) or len(lengths) < 2:
+        return None
+    a = along(interface, centres)
+    return float(np.min(a - lengths / 2)), float(np.max(a + lengths / 2))
+
+
+def _ends_extrapolated(b: np.ndarray, a: np.ndarray, means: np.ndarray, whole: np.ndarray, span, read: np.ndarray):
+    """``read`` (n, c) with the samples at ``b`` (along Γ) past the first
+    or last of the piece centres ``a`` read on the line through the two
+    end pieces' means, ``m₀ + (b − a₀) s₀₁``, ``s₀₁ = (m₀ − m₁)/(a₀ − a₁)``,
+    ``b`` held within Γ's ``span``.  Only where the three end pieces lie
+    wholly in one status (``whole`` (p, k) bool), and only where their
+    means lie on a line: ``‖s₀₁ − s₁₂‖ <= END_LINEARITY ‖s₀₁‖`` over the
+    components (:func:`_straight`).  A component whose two means share a sign keeps
+    it (a closed t_N stays <= 0, a slip its direction): the line is not a
+    convex combination of the means."""
+    order = np.argsort(a, kind="stable")
+    a, means, whole = a[order], means[order], whole[order]
+    b, out = np.clip(b, *span), np.array(read, float)
+    if len(a) < 3:
+        return out
+    for ends, beyond in (((0, 1, 2), b < a[0]), ((-1, -2, -3), b > a[-1])):
+        if not (beyond.any() and np.any(whole[ends[0]] & whole[ends[1]] & whole[ends[2]])):
+            continue
+        (a0, a1, a2), (m0, m1, m2) = a[list(ends)], means[list(ends)]
+        slope = (m0 - m1) / (a0 - a1)
+        line = m0 + (b[beyond, None] - a0) * slope
+        sign = np.where(np.sign(m0) == np.sign(m1), np.sign(m0), 0.0)
+        line = np.where(sign != 0, sign * np.maximum(sign * line, 0.0), line)
+        out[beyond] = np.where(_straight(slope, (m1 - m2) / (a1 - a2)), line, out[beyond])
+    return out
+
+
+def _straight(s01: np.ndarray, s12: np.ndarray) -> bool:
+    """The end pieces' means lie on a line: their two slopes (vectors over
+    the components) within END_LINEARITY of the end one, in norm.  A smooth traction's
+    slopes differ by ``h t''``, a fraction O(h t''/t') of the slope; near
+    a singular end ``t ~ r^p`` by a fraction independent of h, 0.35-0.76
+    for p in [−0.3, 0.5] on equal pieces, where the line would carry the
+    singularity's steepness past the end piece (and a profile's mean
+    along Γ would no longer be the force across it)."""
+    return bool(np.linalg.norm(s01 - s12) <= tol.END_LINEARITY * np.linalg.norm(s01))
 
 
 def merged_pieces(interface, centres: np.ndarray, lengths: np.ndarray, means: np.ndarray):

@@ -7,8 +7,10 @@ last moved back by 1e-9 of 2π.  Each point takes the body that contains it
 
 Interface quantities come from the computed jump and the law, never from the
 bulk stress (for a law enforced exactly, :mod:`contactcore.exact`, the
-tractions are those the solve converged to at the quadrature points of Γ,
-interpolated along Γ as the history is): ``[[u]] = u⁺ − u⁻``, ``g_N = [[u]]·n``, ``g_T = [[u]]·t``, and
+tractions are the solve's at the quadrature points of Γ, averaged over each
+piece of Γ and read between the pieces' centres, past a straight Γ's end
+piece's centre on the line through the end pieces' means:
+:meth:`~contactcore.interface_path.InterfacePath.piece_means`): ``[[u]] = u⁺ − u⁻``, ``g_N = [[u]]·n``, ``g_T = [[u]]·t``, and
 ``(t_N, t_T)`` is the law's response to ``(g_N, g_T)`` — and, for a law with
 history (``coulomb``), to the history at the last increment, which the
 caller passes as data: the Result's ``interface`` path

@@ -720,6 +720,24 @@ GAMMA_PIECE_MIN = 1e-10
 #: pieces of a cut away from vertices their own means.
 PIECE_MERGE_SHARE = 0.35
 
+#: A profile of an exact law's traction past the first or last piece
+#: centre of a straight Γ reads the line through the two end pieces' means
+#: (contactcore.interface_path._ends_extrapolated) where their slope and the
+#: next pair's differ by at most this share of the end slope (the traction
+#: vector's norm): a smooth traction's differ by O(h t''/t'), round-off
+#: where t is linear; near a singular end t ~ r^p by 0.35-0.76 of it for p
+#: in [−0.3, 0.5] on equal pieces, whatever h.  Beyond it the end piece's
+#: mean is held, which keeps a profile's mean along Γ the force across it
+#: (tests/test_gamma_degenerate.py, a bimaterial bonded Γ meeting free
+#: edges: xfem P1 quads' trapezoid mean of t_N 0.2 % off with the line, 1e-9
+#: held).  Measured (ends39, 2026-11-30, tests/scenes/self_weight_tilted_
+#: crack.toml, t linear; h = 0.05 and 0.025): fe/xfem P2 0, efgm 0.006-0.049,
+#: xfem P1 0.09-0.20, fe P1 0.24-0.32 (its piece means' saw-tooth); that
+#: bimaterial Γ's singular ends at h = 0.1: xfem P2 0.38-0.74, P1 0.24-1.35.
+#: 0.2 holds every singular end measured and reads degree 2 and efgm on the
+#: line; fe P1 keeps its end pieces' means (no worse than before).
+END_LINEARITY = 0.2
+
 #: A cut whose chord across a cell is shorter than this share of the cell's
 #: diameter, and which leaves a region thinner than GAMMA_PIECE_MIN of it
 #: beside Γ, is a touch too (contactcore.cutcell.touch._sliver): a circle tangent

@@ -1811,3 +1811,12 @@ EFFICIENCY_NOISE, EFFICIENCY_SIGNAL = 1e-14, 1e-4
 #: the + layer's weight (1e6 N/m³ over 0.6 m²: 6e5 N per m of thickness):
 #: the weight then presses Γ, and the loads have an equilibrium.
 PULLED_OFF_BELOW_WEIGHT = 5e5
+
+# --- ends39 (2026-11-30): Γ profiles extrapolated past the end pieces' centres (tests/test_profile_ends.py) ---
+#: Profile G's t_N at its first and last two samples against the closed
+#: form, relative to max|t_N|, on tests/scenes/self_weight_tilted_crack.toml
+#: at h = 0.05, degree 2 (fe, xfem: the bulk is exact, t_N linear along Γ).
+#: Measured 2.6e-14 (fe P2) and 7.5e-14 (xfem P2), the interior samples
+#: 4.3e-14 / 2.4e-13; the end piece's mean held flat gave 3.65e-3 / 3.80e-3
+#: (grader33 F4).  1e-11 is round-off of sums over 25 pieces with room.
+PROFILE_END_ROUNDOFF = 1e-11
