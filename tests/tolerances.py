@@ -1820,3 +1820,13 @@ PULLED_OFF_BELOW_WEIGHT = 5e5
 #: 4.3e-14 / 2.4e-13; the end piece's mean held flat gave 3.65e-3 / 3.80e-3
 #: (grader33 F4).  1e-11 is round-off of sums over 25 pieces with room.
 PROFILE_END_ROUNDOFF = 1e-11
+
+# --- review22 (2026-11-30): above_range skips round-off runs (tests/test_estimate_three_runs.py) ---
+#: The amplitude of a synthetic stress's error ``a h^ABOVE_RANGE_RATE`` (×
+#: 1 + s², h = 0.1, 0.05, 0.025) in the scene's size of stress, beside a
+#: singular sample of UNLIKE_SINGULAR_PEAK times it: its two finest runs
+#: differ by at most 2 a (0.05^3.3 − 0.025^3.3) = 4.6e-8 of the size,
+#: round-off of the peak (ESTIMATE_ROUNDOFF of it, 1e-7), but by 3e-8 RMS
+#: over the kept samples, above the floor NEGLIGIBLE_SHARE (1e-8), so an
+#: order (3.3, above [2, 3]) is observed there.
+ABOVE_RANGE_ROUNDOFF_ERROR = 5e-4

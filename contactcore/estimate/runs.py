@@ -15,6 +15,7 @@ numpy only; no method is imported (:func:`estimate` solves through
 """
 from __future__ import annotations
 
+from collections.abc import Set
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -127,7 +128,8 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     (:func:`~contactcore.estimate.caveats.roundoff_runs`) are found once
     here and passed (``roundoff``) to each line that names none of them:
     :func:`~contactcore.estimate.caveats.unsettled`, the exact tractions,
-    steady tractions and enforced gaps, the pollution line, the unlike
+    steady tractions and enforced gaps, the pollution line, the
+    above-the-range orders (:func:`three_run_caveats`), the unlike
     differences and unlike runs."""
     hs = tuple(float(r.discretisation["h"]) for r in results)
     levels = [sample_profiles(scene, r.fields, r.interface) for r in results]
@@ -148,8 +150,9 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     nitsche = exact_tractions(scene, profiles, smooth, roundoff=roundoff)
     steady = steady_exact_tractions(scene, profiles, results[-1].degree, smooth, roundoff=roundoff)
     held = enforced_gaps(scene, profiles, gamma_statuses(scene, results[-2:], levels[-1]), roundoff=roundoff)
-    observed = three_run_caveats(scene, profiles, smooth)
-    # an exact law's traction has its own line (and order): not fast Γ's "order k + 1" too (review20)
+    observed = three_run_caveats(scene, profiles, smooth, roundoff=roundoff)
+    # an exact law's traction has its own line (and order): not fast Γ's "order k + 1" too (review20); nor an
+    # order above a range (observed[1]), whose estimate takes the range's balanced order, not k + 1 (review22)
     fast = [k for k in fast_gamma(profiles, facts) if k not in set(nitsche) | set(steady) | observed[1]]
     held = [k for k in held if k not in fast]  # EFGM P1's own measured line first: one line an entry
     warnings = (order_warnings(profiles) + pollution_warning(scene, profiles, roundoff=roundoff, three=len(levels) > 2)
@@ -223,17 +226,19 @@ def gamma_statuses(scene: Scene, results: list, profiles: list[ProfileData]) -> 
 
 
 def three_run_caveats(scene: Scene, profiles: dict[str, dict[str, QuantityEstimate]],
-                      smooth: dict[str, np.ndarray] | None = None) -> tuple[list[str], set[str]]:
+                      smooth: dict[str, np.ndarray] | None = None, *,
+                      roundoff: Set[str] = frozenset()) -> tuple[list[str], set[str]]:
     """The warnings of a three-run estimate beyond its order's
     (:func:`~contactcore.estimate.caveats.observed_exact_tractions`, of
     the tractions with a sample near a status change, ``smooth`` the
     samples beyond: :func:`~contactcore.estimate.status.far_from_changes`;
     :func:`~contactcore.estimate.caveats.slow_halving`,
-    :func:`~contactcore.estimate.caveats.above_range`) and the ``PID:Q``
-    they name; none for two runs."""
+    :func:`~contactcore.estimate.caveats.above_range`, which skips the
+    ``PID:Q`` in ``roundoff``) and the ``PID:Q`` they name; none for two
+    runs."""
     traction = observed_exact_tractions(scene, profiles, smooth)
     slow = {k: v for k, v in slow_halving(profiles).items() if k not in traction}  # one line an entry (review20)
-    above = {k: v for k, v in above_range(profiles).items() if k not in traction}
+    above = {k: v for k, v in above_range(profiles, roundoff=roundoff).items() if k not in traction}
     return (observed_exact_traction_warning(traction) + slow_halving_warning(slow) + above_range_warning(above),
             set(traction) | set(slow) | set(above))
 

@@ -10,6 +10,8 @@ from the orders theory allows, or clipped to an end of
 the asymptotic range."""
 from __future__ import annotations
 
+from collections.abc import Set
+
 from ... import tolerances as tol
 from ..extrapolation import QuantityEstimate
 from .lines import see
@@ -81,12 +83,22 @@ def slow_halving_warning(found: dict[str, float]) -> list[str]:
             f"coarse run, off either way{see('slow halving')}"]
 
 
-def above_range(profiles: dict[str, dict[str, QuantityEstimate]]) -> dict[str, float]:
+def above_range(profiles: dict[str, dict[str, QuantityEstimate]], *,
+                roundoff: Set[str] = frozenset()) -> dict[str, float]:
     """``{PID:Q: observed order}`` of the three-run estimates whose theory
     allows a range ``[low, high]`` (``low < high``) and whose observed order
     ``p`` lies above it, ``high < p ≤ high +``
     :data:`~contactcore.tolerances.ORDER_MISMATCH` (further, the order
-    line names it).  Such an estimate is taken at the range's balanced
+    line names it), but for those in ``roundoff``, the ``PID:Q`` whose two
+    finest runs differ only at round-off at every sample
+    (:func:`~contactcore.estimate.caveats.unsettled.roundoff_runs` of the
+    estimate's runs, made once per estimate by
+    :func:`~contactcore.estimate.runs.estimate_runs`; none by default): the
+    order is observed over the kept samples against their own scale, so a
+    quantity whose largest values lie at a singular point left out can
+    show one from round-off of the whole, an order that means nothing
+    (as :func:`~contactcore.estimate.caveats.unlike_differences` skips
+    them, review22).  Such an estimate is taken at the range's balanced
     order ``q`` (:func:`~contactcore.estimate.extrapolation.three_run_order`):
     ``|q_{h/4} − q_{h/2}| / (2^q − 1)``.  If the error is ``C h^high`` the
     estimate reads ``(2^high − 1)/(2^q − 1)`` times it (1.53 for ``[2, 3]``,
@@ -108,7 +120,8 @@ def above_range(profiles: dict[str, dict[str, QuantityEstimate]]) -> dict[str, f
     2026-11-30: docs/error-estimates.md, "The warnings", "above the
     range")."""
     return {f"{pid}:{q}": float(e.measured) for pid, qs in profiles.items() for q, e in qs.items()
-            if e.observed and not order_mismatch(e) and e.theory[0] < e.theory[1] < e.measured}
+            if e.observed and not order_mismatch(e) and e.theory[0] < e.theory[1] < e.measured
+            and f"{pid}:{q}" not in roundoff}
 
 
 def above_range_warning(found: dict[str, float]) -> list[str]:
