@@ -1830,3 +1830,17 @@ PROFILE_END_ROUNDOFF = 1e-11
 #: over the kept samples, above the floor NEGLIGIBLE_SHARE (1e-8), so an
 #: order (3.3, above [2, 3]) is observed there.
 ABOVE_RANGE_ROUNDOFF_ERROR = 5e-4
+
+# --- trans39 (2026-11-30): Γ part open, part closed; stick and slip (tests/test_transition_scenes.py) ---
+#: Where Γ's status changes on docs/scenes/partial_opening_exact.toml (open
+#: to closed) and docs/scenes/stick_slip_exact.toml (slip to stick), as x
+#: along Γ: a held-out exact reference (Q1 node-to-node contact, primal-dual
+#: active set, to h = 0.003125) put them at 0.3150 ± 0.0016 and between
+#: 0.8281 and 0.8313; every project run at h = 0.05–0.0125 brackets them
+#: within a cell (2026-11-30).
+OPEN_CLOSED_AT = 0.315
+SLIP_STICK_AT = 0.83
+#: How far, in cells h, fe P1's last free / first sticking point at h = 0.1
+#: may lie from those positions (measured 0.004 and 0.02 from 0.315, 0.02
+#: and 0.059 from 0.83; fe P1 sits 0.3–0.5 h to the right at every h).
+TRANSITION_CELLS = 1.0
