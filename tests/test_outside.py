@@ -29,7 +29,9 @@ SCENES = Path(__file__).resolve().parent / "scenes"
 #: A disc pressed uniformly into a softer ring, exact unilateral law (Lamé:
 #: t_N = −13.06 MPa all round Γ): fe P2's estimate there warns only of Γ's
 #: gaps, held closed and stuck all round (since 2026-11-29, "enforced gaps":
-#: contactcore.estimate.caveats.tractions.enforced_gaps).
+#: contactcore.estimate.caveats.tractions.enforced_gaps), and of Γ's t_T,
+#: zero by symmetry, whose two runs' values are each its own error (since
+#: 2026-11-30, "unlike runs": contactcore.estimate.caveats.unlike_runs).
 CYLINDER = SCENES / "cylinder.toml"
 
 
@@ -106,11 +108,13 @@ def test_the_same_through_compare_outside_from_a_csv_in_any_order(cylinder, tmp_
 def test_a_finer_answer_agrees_everywhere(cylinder, finer, step):
     """The project's answer at H/4 (all 101 samples, or every other one) as
     the outside code's: within its estimate everywhere, on Γ and the ray;
-    Γ's held gaps, whose estimate is warned (enforced gaps), read
-    ``warned`` there, the rest ``agree``."""
+    Γ's held gaps, whose estimate is warned (enforced gaps), and Γ's t_T,
+    zero by symmetry so each run's value is its own error (unlike runs,
+    since 2026-11-30), read ``warned`` there, the rest ``agree``."""
     scene, estimate, project = cylinder
-    assert estimate.unsettled == {"G:gN", "G:gT"}
+    assert estimate.unsettled == {"G:gN", "G:gT", "G:tT"}
     assert any(line.startswith("G:gN, G:gT: ") and "enforced gaps" in line for line in estimate.warnings)
+    assert any(line.startswith("G:tT ") and "unlike runs" in line for line in estimate.warnings)
     outside = {pid: {c: v[::step] for c, v in p.columns.items()} for pid, p in finer.items()}
     table = judge(scene, outside_profiles(scene, outside), project, estimate, "fe P2")
     assert len(table.rows) == 7
