@@ -120,7 +120,7 @@ def test_efgm_p1s_gaps_and_tractions_are_named_without_a_direction():
     profiles = {"G": {"gN": two, "tT": two, "ux": two}, "H": {"gT": three, "tN": fast}}
     assert _facts("efgm", 1).fast_gamma
     names = est.fast_gamma(profiles, _facts("efgm", 1))
-    assert names == ["G:gN", "G:tT", "H:tN"]
+    assert list(names) == ["G:gN", "G:tT", "H:tN"]
     assert not est.fast_gamma(profiles, _facts("efgm", 2)) and not est.fast_gamma(profiles, _facts("fe", 1))
     for observed in (False, True):
         line, = est.fast_gamma_warning(names, "efgm", 1, observed)
@@ -128,6 +128,29 @@ def test_efgm_p1s_gaps_and_tractions_are_named_without_a_direction():
         assert "too large" not in line and "too small" not in line and "safe side" not in line
     assert not est.fast_gamma_warning([], "efgm", 1)
 
+
+
+def test_efgm_p1s_gamma_line_states_the_order_its_estimate_took():
+    """The fast Γ line gives the order each named estimate recorded, not
+    ``degree + 1``: on a polluted range [1.42, 2] (an exact law's EFGM P1
+    gap, docs/scenes/thin_top_layer_exact.toml from h = 0.1: ``G:gN``
+    observed above 2.1, taken at the balanced 1.698; the line said "order
+    taken (2)" until fix40), from three runs and from two, beside an
+    estimate taken at 2."""
+    polluted = (1.42, 2.0)
+    three = est.richardson([np.linspace(0.0, 1.0, 5) * (1.0 + h ** 3) for h in (0.1, 0.05, 0.025)], theory=polluted)
+    two = est.richardson([np.linspace(0.0, 1.0, 5) * (1.0 + h ** 3) for h in (0.1, 0.05)], theory=polluted)
+    assert three.measured > polluted[1] + core_tol.FAST_GAMMA_EXCESS and three.order < polluted[1]
+    plain = est.richardson([np.linspace(0.0, 1.0, 5) * (1.0 + h ** 3) for h in (0.1, 0.05, 0.025)], theory=(2, 2))
+    for estimate, observed in ((three, True), (two, False)):
+        taken = est.fast_gamma({"G": {"gN": estimate}}, _facts("efgm", 1))
+        assert taken == {"G:gN": estimate.order}
+        line, = est.fast_gamma_warning(taken, "efgm", 1, observed)
+        assert f"order taken ({estimate.order:.3g})" in line if observed else f"at order {estimate.order:.3g} " in line
+        assert "(2)" not in line and "order 2 " not in line, line
+    both = est.fast_gamma({"G": {"gN": three, "tN": plain}}, _facts("efgm", 1))
+    line, = est.fast_gamma_warning(both, "efgm", 1, observed=True)
+    assert f"orders taken ({three.order:.3g}, 2)" in line, line
 
 #: The direction a warning's line may claim, by the words that claim it.
 _DIRECTIONS = {"too large": lambda eff: eff >= 1.0, "too small": lambda eff: eff <= 1.0,

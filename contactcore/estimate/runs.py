@@ -151,9 +151,10 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
     steady = steady_exact_tractions(scene, profiles, results[-1].degree, smooth, roundoff=roundoff)
     held = enforced_gaps(scene, profiles, gamma_statuses(scene, results[-2:], levels[-1]), roundoff=roundoff)
     observed = three_run_caveats(scene, profiles, smooth, roundoff=roundoff)
-    # an exact law's traction has its own line (and order): not fast Γ's "order k + 1" too (review20); nor an
-    # order above a range (observed[1]), whose estimate takes the range's balanced order, not k + 1 (review22)
-    fast = [k for k in fast_gamma(profiles, facts) if k not in set(nitsche) | set(steady) | observed[1]]
+    # an exact law's traction has its own line (and order): not fast Γ's too (review20); nor an order above a
+    # range (observed[1]), whose estimate takes the range's balanced order (review22); each with its order taken
+    own = set(nitsche) | set(steady) | observed[1]
+    fast = {k: order for k, order in fast_gamma(profiles, facts).items() if k not in own}
     held = [k for k in held if k not in fast]  # EFGM P1's own measured line first: one line an entry
     warnings = (order_warnings(profiles) + pollution_warning(scene, profiles, roundoff=roundoff, three=len(levels) > 2)
                 + exact_traction_warning(nitsche, len(levels) > 2) + steady_exact_traction_warning(steady)
@@ -163,7 +164,7 @@ def estimate_runs(scene: Scene, results: list, exclude: float = 0.0, energy: boo
                                      thinnest_body(scene))
                 + curved_layer_warning(layer, hs[-2], scene.user.units.length)
                 + split_cell_share_warning(split)
-                + cell_scale_warnings(rough, hs[-2:], fast, scene.user.units.length)
+                + cell_scale_warnings(rough, hs[-2:], list(fast), scene.user.units.length)
                 + residue_warnings(residue, len(levels) > 2) + observed[0])
     status = None
     if scene.law.has_history or not scene.law.is_linear:

@@ -227,13 +227,15 @@ def observed_exact_traction_warning(names: list[str]) -> list[str]:
             f"cell-to-cell error differs run to run (up to 2.24× in theory){see('exact tractions')}"]
 
 
-def fast_gamma(profiles: dict[str, dict[str, QuantityEstimate]], facts: MethodFacts) -> list[str]:
-    """The ``PID:Q`` of the gaps and tractions on Γ (:data:`~contactcore.estimate.caveats.lines.GAMMA`) of a
+def fast_gamma(profiles: dict[str, dict[str, QuantityEstimate]], facts: MethodFacts) -> dict[str, float]:
+    """``{PID:Q: order}`` (the order its estimate took, its ``order``) of
+    the gaps and tractions on Γ (:data:`~contactcore.estimate.caveats.lines.GAMMA`) of a
     method and degree whose ``facts`` say ``fast_gamma`` (EFGM P1:
     :attr:`efgm.options.EFGM.fast_gamma`, its measurement) estimated from
     two runs, or from three whose observed order lies above the highest theory allows by more than
     :data:`~contactcore.tolerances.FAST_GAMMA_EXCESS` (the estimate then
-    takes that highest, capped).
+    takes the two-run order, theory's alone or a range's balanced one:
+    :func:`~contactcore.estimate.extrapolation.three_run_order`).
     Their runs' differences often shrink faster than the order the
     estimate takes (2.5-2.8 against 2 on the closed forms), and the
     estimate is then too large: above 2 for 80 of the 128 two-run entries
@@ -243,22 +245,36 @@ def fast_gamma(profiles: dict[str, dict[str, QuantityEstimate]], facts: MethodFa
     slip's 0.49 at an observed 2.52 (the tolerance's note).  An
     indication, off either way."""
     if not facts.fast_gamma:
-        return []
-    return [f"{pid}:{q}" for pid, qs in profiles.items() for q, e in qs.items()
-            if q in GAMMA and (not e.observed or e.measured > e.theory[1] + tol.FAST_GAMMA_EXCESS)]
+        return {}
+    return {f"{pid}:{q}": float(e.order) for pid, qs in profiles.items() for q, e in qs.items()
+            if q in GAMMA and (not e.observed or e.measured > e.theory[1] + tol.FAST_GAMMA_EXCESS)}
 
 
-def fast_gamma_warning(names: list[str], method: str, degree: int, observed: bool = False) -> list[str]:
-    """One line naming :func:`fast_gamma`'s quantities, from ``observed``
-    runs (three) or two.  It gives the measured ratios, not a direction:
-    the 128 two-run entries measured read 0.55 to 10.6 times the error,
-    80 above 2 but 14 below 1 (the layered slip's 0.55, the patch's
-    0.68-0.71: the error there is EFGM's quadrature's, which the runs'
-    differences do not see); the three-run ones 0.49-1.14."""
-    if not names:
+def fast_gamma_warning(taken: dict[str, float], method: str, degree: int, observed: bool = False) -> list[str]:
+    """One line naming :func:`fast_gamma`'s quantities (``taken``: each
+    with the order its estimate took), from ``observed`` runs (three) or
+    two, with those orders as the estimate recorded them: ``degree + 1``
+    where theory allows that alone, but the balanced order of a range that
+    pollution widened (:func:`~contactcore.estimate.orders.order_range`:
+    docs/scenes/thin_top_layer_exact.toml from h = 0.1, three runs, ``G:gN``
+    took 1.698 of [1.42, 2], which the line gave as 2 until fix40).  It
+    gives the measured ratios, not a direction: the 128 two-run entries
+    measured read 0.55 to 10.6 times the error, 80 above 2 but 14 below 1
+    (the layered slip's 0.55, the patch's 0.68-0.71: the error there is
+    EFGM's quadrature's, which the runs' differences do not see); the
+    three-run ones 0.49-1.14."""
+    if not taken:
         return []
+    names, (word, orders) = ", ".join(taken), _orders_taken(taken.values())
     if observed:
-        return [f"{', '.join(names)}: {run_label(method, degree)}'s gaps and tractions on Γ shrink faster than the "
-                f"order taken ({degree + 1}): off either way (0.49-1.14 times the error){see('fast Γ')}"]
-    return [f"{', '.join(names)}: {run_label(method, degree)}'s gaps and tractions on Γ at order {degree + 1} from "
+        return [f"{names}: {run_label(method, degree)}'s gaps and tractions on Γ shrink faster than the "
+                f"{word} taken ({orders}): off either way (0.49-1.14 times the error){see('fast Γ')}"]
+    return [f"{names}: {run_label(method, degree)}'s gaps and tractions on Γ at {word} {orders} from "
             f"two runs: off either way (0.55-10.6 times the error); {OBSERVE}{see('fast Γ')}"]
+
+
+def _orders_taken(orders) -> tuple[str, str]:
+    """``("order", "2")``, or ``("orders", "1.7, 2")``: the distinct
+    ``orders`` (three significant figures), least first."""
+    shown = list(dict.fromkeys(f"{o:.3g}" for o in sorted(orders)))
+    return f"order{'s' if len(shown) > 1 else ''}", ", ".join(shown)
