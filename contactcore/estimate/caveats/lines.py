@@ -34,3 +34,10 @@ def see(row: str) -> str:
     """The end of a warning's line: where its explanation lives, the row
     of :data:`WARNINGS_PAGE`'s table that begins with ``row``."""
     return f" ({WARNINGS_PAGE}: {row})"
+
+
+def with_cosines(found: dict[str, float]) -> str:
+    """The quantities ``PID:Q`` of a cosine line (``unlike differences``,
+    ``unlike runs``), each with its cosine to two decimals:
+    ``"G:tT (0.17), D:ux (-0.22)"``."""
+    return ", ".join(f"{k} ({v:.2f})" for k, v in found.items())

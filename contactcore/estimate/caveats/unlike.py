@@ -21,7 +21,7 @@ from collections.abc import Set
 
 from ... import tolerances as tol
 from ..extrapolation import QuantityEstimate
-from .lines import see
+from .lines import see, with_cosines
 
 
 def unlike_differences(profiles: dict[str, dict[str, QuantityEstimate]], named: Set[str] = frozenset(), *,
@@ -57,6 +57,6 @@ def unlike_differences_warning(found: dict[str, float]) -> list[str]:
     cosine."""
     if not found:
         return []
-    names = ", ".join(f"{k} ({v:.2f})" for k, v in found.items())
+    names = with_cosines(found)
     return [f"{names}: the runs' two differences share no pattern (cosine ≤ 0), each run's error its own: "
             f"often too large, not always{see('unlike differences')}"]

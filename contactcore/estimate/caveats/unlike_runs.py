@@ -29,7 +29,7 @@ import numpy as np
 
 from ... import tolerances as tol
 from ...profiles import ProfileData
-from .lines import OBSERVE, see
+from .lines import OBSERVE, see, with_cosines
 
 
 def runs_cosine(coarse: np.ndarray, fine: np.ndarray) -> float | None:
@@ -68,6 +68,6 @@ def unlike_runs_warning(found: dict[str, float]) -> list[str]:
     cosine."""
     if not found:
         return []
-    names = ", ".join(f"{k} ({v:.2f})" for k, v in found.items())
+    names = with_cosines(found)
     return [f"{names}: the two runs' values share little pattern (cosine ≤ {tol.UNLIKE_RUNS_COSINE:.2g}): each is "
             f"mostly its own error; off either way; {OBSERVE}{see('unlike runs')}"]
