@@ -49,7 +49,7 @@ def test_exactly_zero_quantities_whose_runs_are_each_their_own_error_are_named()
     keep = estimate.kept["D"]["ux"]
     ratio = est.rms(estimate.profiles["D"]["ux"].error[keep]) / est.rms(fine["D"].columns["ux"][keep])
     assert not 1 / core_tol.ESTIMATE_TRUST <= ratio <= core_tol.ESTIMATE_TRUST, ratio
-    resolved = est.runs_cosine(*(lv[1].columns["uy"][estimate.kept["D"]["uy"]] for lv in levels))
+    resolved = est.cosine(*(lv[1].columns["uy"][estimate.kept["D"]["uy"]] for lv in levels))
     assert resolved > tol.UNLIKE_RUNS_RESOLVED
 
 
@@ -67,7 +67,7 @@ def test_three_runs_and_skipped_entries_are_left_to_other_lines():
     x = np.linspace(0.0, 1.0, 41)
     a, b = np.sign(np.sin(40 * x)) * 1e-8, np.sign(np.sin(13 * x)) * 1e-8
     kept = {"P": {"ux": np.ones(41, bool)}}
-    assert est.runs_cosine(a, b) <= core_tol.UNLIKE_RUNS_COSINE
+    assert est.cosine(a, b) <= core_tol.UNLIKE_RUNS_COSINE
     assert list(est.unlike_runs(_line([a, b]), kept)) == ["P:ux"]
     assert not est.unlike_runs(_line([a, b]), kept, skip={"P:ux"})
     assert not est.unlike_runs(_line([a, b, a]), kept)

@@ -41,11 +41,11 @@ from .caveats import (above_range, above_range_warning, beyond_reach, cell_scale
                       order_warnings, pollution_warning, quadrature_energy, quadrature_stress, quadrature_stress_warning, recovery_floor, residue_warnings, residues,
                       slow_halving, slow_halving_warning, split_cell_share, split_cell_share_warning,
                       status_change_warnings, stencil_radius, thinnest_body, unlike_differences,
-                      unlike_differences_warning, unlike_runs, unlike_runs_warning, runs_cosine, unsettled,
+                      unlike_differences_warning, unlike_runs, unlike_runs_warning, unsettled,
                       unsettled_warnings)
 from .energy import (EnergyEstimate, EnergyRule, direct_stress, energy_estimate, energy_norm, energy_rule,
                      recovered_stress, recovery_moves)
-from .extrapolation import (QuantityEstimate, balanced_order, cell_scale_part, differences_cosine, observed_order, profile_estimates,
+from .extrapolation import (QuantityEstimate, balanced_order, cell_scale_part, cosine, differences_cosine, observed_order, profile_estimates,
                             richardson, rms, roundoff_floor, sample_groups, three_run_order)
 from .orders import lower_end, order_range, polluted, smooth_range, theoretical_order
 from .runs import Estimate, estimate, estimate_runs, levels_of
@@ -59,7 +59,7 @@ __all__ = [
     # runs
     "Estimate", "estimate", "estimate_runs", "levels_of",
     # extrapolation
-    "QuantityEstimate", "balanced_order", "cell_scale_part", "differences_cosine", "observed_order", "profile_estimates", "richardson",
+    "QuantityEstimate", "balanced_order", "cell_scale_part", "cosine", "differences_cosine", "observed_order", "profile_estimates", "richardson",
     "rms", "roundoff_floor", "sample_groups", "three_run_order",
     # caveats
     "above_range", "above_range_warning", "beyond_reach", "cell_scale_orders", "cell_scale_warnings", "curved_layer", "curved_layer_warning",
@@ -69,7 +69,7 @@ __all__ = [
     "order_warnings", "pollution_warning", "quadrature_energy", "quadrature_stress", "quadrature_stress_warning", "recovery_floor", "residue_warnings", "residues",
     "slow_halving", "slow_halving_warning", "split_cell_share", "split_cell_share_warning",
     "status_change_warnings", "stencil_radius", "thinnest_body", "unlike_differences", "unlike_differences_warning",
-    "unlike_runs", "unlike_runs_warning", "runs_cosine", "unsettled", "unsettled_warnings",
+    "unlike_runs", "unlike_runs_warning", "unsettled", "unsettled_warnings",
     # status
     "change_points", "far_from_changes", "status_along", "status_change", "status_changes", "status_warning",
     "switches",

@@ -152,6 +152,13 @@ def observed_order(coarse: np.ndarray, mid: np.ndarray, fine: np.ndarray, ratio:
     return float(np.clip(p, *tol.ORDER_RANGE))
 
 
+def cosine(u: np.ndarray, v: np.ndarray) -> float | None:
+    """``cos ∠(u, v) = u·v / (‖u‖ ‖v‖)`` over the samples; None where
+    either is 0 there (nothing to compare)."""
+    norms = float(np.linalg.norm(u) * np.linalg.norm(v))
+    return float(u @ v / norms) if norms > 0 else None
+
+
 def differences_cosine(coarse: np.ndarray, mid: np.ndarray, fine: np.ndarray) -> float:
     """``cos ∠(δ₁, δ₂) = δ₁·δ₂ / (‖δ₁‖ ‖δ₂‖)``, ``δ₁ = mid − coarse``,
     ``δ₂ = fine − mid`` over the samples (0 where either is 0).  Where the
@@ -162,9 +169,8 @@ def differences_cosine(coarse: np.ndarray, mid: np.ndarray, fine: np.ndarray) ->
     the two share none, and ``‖δ₂‖ = (e₁² + e₂²)^½`` at worst, which Richardson
     reads as ``(2^{2p} + 1)^½ / (2^p − 1)`` times the error (2.24 at p = 1,
     1.37 at p = 2): the cosine is 0 or below."""
-    d1, d2 = mid - coarse, fine - mid
-    norms = float(np.linalg.norm(d1) * np.linalg.norm(d2))
-    return float(d1 @ d2 / norms) if norms > 0 else 0.0
+    c = cosine(mid - coarse, fine - mid)
+    return 0.0 if c is None else c
 
 
 def cell_scale_part(values: np.ndarray, s: np.ndarray, groups: np.ndarray, width: float) -> np.ndarray:

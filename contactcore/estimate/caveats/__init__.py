@@ -111,7 +111,7 @@ from .residues import KINDS, residue_warnings, residues
 from .recovery import curved_layer, curved_layer_warning, recovery_floor
 from .quadrature import quadrature_energy, quadrature_stress, quadrature_stress_warning
 from .unlike import unlike_differences, unlike_differences_warning
-from .unlike_runs import runs_cosine, unlike_runs, unlike_runs_warning
+from .unlike_runs import unlike_runs, unlike_runs_warning
 
 __all__ = [
     "above_range", "above_range_warning", "ENERGY_KEY", "GAMMA", "OBSERVE", "see", "WARNINGS_PAGE", "order_mismatch", "order_warnings", "slow_halving",
@@ -124,5 +124,5 @@ __all__ = [
     "unsettled", "unsettled_warnings", "cell_scale_orders", "cell_scale_warnings", "SPLIT_CELL_DEGREE",
     "split_cell_share", "split_cell_share_warning", "KINDS", "residue_warnings", "residues", "curved_layer",
     "curved_layer_warning", "recovery_floor", "quadrature_energy", "quadrature_stress", "quadrature_stress_warning",
-    "unlike_differences", "unlike_differences_warning", "runs_cosine", "unlike_runs", "unlike_runs_warning"
+    "unlike_differences", "unlike_differences_warning", "unlike_runs", "unlike_runs_warning"
 ]

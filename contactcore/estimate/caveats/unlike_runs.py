@@ -29,21 +29,15 @@ import numpy as np
 
 from ... import tolerances as tol
 from ...profiles import ProfileData
+from ..extrapolation import cosine
 from .lines import OBSERVE, see, with_cosines
-
-
-def runs_cosine(coarse: np.ndarray, fine: np.ndarray) -> float | None:
-    """``cos ∠(q_h, q_{h/2})`` over the samples; None where either run
-    is zero there (nothing to compare)."""
-    norms = float(np.linalg.norm(coarse) * np.linalg.norm(fine))
-    return float(coarse @ fine / norms) if norms > 0 else None
 
 
 def unlike_runs(levels: list[list[ProfileData]], kept: dict[str, dict[str, np.ndarray]],
                 skip: set[str] = frozenset()) -> dict[str, float]:
     """``{PID:Q: cosine}`` of a two-run estimate's quantities whose two
     runs' values (``levels``, coarse to fine) have cosine
-    (:func:`runs_cosine`) over the fine run's ``kept`` samples at most
+    (:func:`~contactcore.estimate.extrapolation.cosine`) over the fine run's ``kept`` samples at most
     :data:`~contactcore.tolerances.UNLIKE_RUNS_COSINE`, but for those in
     ``skip`` (named by another line, or whose runs differ only at
     round-off: :func:`~contactcore.estimate.caveats.unsettled.roundoff_runs`);
@@ -57,7 +51,7 @@ def unlike_runs(levels: list[list[ProfileData]], kept: dict[str, dict[str, np.nd
             key = f"{fine.id}:{q}"
             if key in skip or mask is None or np.count_nonzero(mask) < 2:
                 continue
-            c = runs_cosine(coarse.columns[q][mask], fine.columns[q][mask])
+            c = cosine(coarse.columns[q][mask], fine.columns[q][mask])
             if c is not None and c <= tol.UNLIKE_RUNS_COSINE:
                 found[key] = c
     return found
