@@ -395,3 +395,11 @@ def polygon_area(poly: np.ndarray):
     x, y = poly[..., 0], poly[..., 1]
     area = 0.5 * np.abs(np.sum(x * np.roll(y, -1, axis=-1) - np.roll(x, -1, axis=-1) * y, axis=-1))
     return float(area) if poly.ndim == 2 else area
+
+
+def polygon_centroid(poly: np.ndarray) -> np.ndarray:
+    """The centroid of a polygon (n, 2), its vertices in order:
+    ``Σ (p_i + p_{i+1}) (p_i × p_{i+1}) / (6 A)``, ``A`` its signed area."""
+    p, q = poly, np.roll(poly, -1, axis=0)
+    cross = p[:, 0] * q[:, 1] - q[:, 0] * p[:, 1]
+    return ((p + q) * cross[:, None]).sum(axis=0) / (3.0 * cross.sum())

@@ -33,7 +33,7 @@ import math
 import numpy as np
 
 from .. import tolerances as tol
-from ..geometry import clip_halfplane, LineInterface, polygon_area, Rectangle, tangent_of
+from ..geometry import clip_halfplane, LineInterface, polygon_area, polygon_centroid, Rectangle, tangent_of
 from ..scaling import user_points
 from ..scene.loads import BODY, BodyForce, EDGE, edge_traction, place_of
 from .residual import NOT_CONVERGED
@@ -309,16 +309,8 @@ def _body_parts(scene, body: int, factors) -> list | None:
     line = scene.interface if body == 0 else LineInterface(scene.interface.point,
                                                            tuple(-c for c in scene.interface.normal))
     part = clip_halfplane(scene.domain.corners, line)  # the side φ <= 0 of ``line``
-    area, centroid = polygon_area(part), _centroid(part)
+    area, centroid = polygon_area(part), polygon_centroid(part)
     return [(f * np.asarray(ld.value, float), area, centroid) for ld, f in loads]
-
-
-def _centroid(poly: np.ndarray) -> np.ndarray:
-    """The centroid of a polygon (n, 2), its vertices in order:
-    ``Σ (p_i + p_{i+1}) (p_i × p_{i+1}) / (6 A)``, ``A`` its signed area."""
-    p, q = poly, np.roll(poly, -1, axis=0)
-    cross = p[:, 0] * q[:, 1] - q[:, 0] * p[:, 1]
-    return ((p + q) * cross[:, None]).sum(axis=0) / (3.0 * cross.sum())
 
 
 def _part(phi_a: float, phi_b: float, body: int) -> tuple[float, float]:
