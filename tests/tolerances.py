@@ -1844,3 +1844,17 @@ SLIP_STICK_AT = 0.83
 #: may lie from those positions (measured 0.004 and 0.02 from 0.315, 0.02
 #: and 0.059 from 0.83; fe P1 sits 0.3–0.5 h to the right at every h).
 TRANSITION_CELLS = 1.0
+
+# --- under40 (2026-11-30): a pre-asymptotic coarse run two runs cannot see (tests/test_estimate_coarse_disc.py) ---
+#: The coarse h of fe P2 on docs/scenes/disc_unilateral_exact.toml whose two
+#: runs (0.1, 0.05) under-read ray R's u_x unnamed: 0.40 of its error over
+#: the kept samples against the Lamé closed form (fe P2 at 0.0125: 0.41).
+#: The true RMS error of R's u_x is 1.58e-8, 4.06e-9, 3.74e-10, 1.98e-11 m
+#: at h = 0.1, 0.05, 0.025, 0.0125 (rates 1.97, 3.44, 4.24 against 3): the
+#: h = 0.1 run is not yet asymptotic (docs/error-estimates.md, "Known
+#: limits", "A coarse run not yet asymptotic, unseen by two runs").
+COARSE_DISC_H = 0.1
+#: The normal stiffness (Pa/m) that stands for a tied Γ in the Lamé closed
+#: form of that disc (k_N → ∞): its jump σ_rr/k_N, about 1e8/1e22 = 1e-14 m,
+#: is far below fe P2's u_x error there (4.06e-9 m RMS at h = 0.05).
+LAME_TIED_KN = 1e22
