@@ -218,3 +218,35 @@ def test_the_librarys_tolerances_live_in_contactcore_tolerances():
             found += [f"{path.relative_to(ROOT)}:{c.lineno}" for c in ast.walk(ast.parse(path.read_text()))
                       if isinstance(c, ast.Constant) and type(c.value) is float and 0 < abs(c.value) < _TOLERANCE_SIZED]
     assert not found, f"move these into contactcore/tolerances.py with their reason: {found}"
+
+
+def _reexports(path: Path) -> tuple[set[str], set[str]] | None:
+    """The public names a package's ``__init__.py`` imports and its
+    ``__all__``, or None where the package is not a list of re-exports (no
+    ``__all__``, or names of its own: functions, classes, a lazy
+    ``__getattr__``)."""
+    tree = ast.parse(path.read_text())
+    if any(isinstance(n, (ast.FunctionDef, ast.ClassDef)) for n in tree.body):
+        return None
+    declared = [n.value for n in tree.body if isinstance(n, ast.Assign)
+                and any(getattr(t, "id", None) == "__all__" for t in n.targets)]
+    if not declared:
+        return None
+    imported = {a.asname or a.name for n in tree.body if isinstance(n, ast.ImportFrom) and n.module != "__future__"
+                for a in n.names if not (a.asname or a.name).startswith("_")}
+    return imported, {name for name in ast.literal_eval(declared[0]) if not name.startswith("_")}
+
+
+def test_every_reexporting_package_declares_what_it_imports():
+    """A package's ``__init__.py`` that only re-exports its modules' names
+    lists each in ``__all__``, so ``from package import *``, a reader and an
+    editor see one list: verification.agreement imported ``compare_outside``
+    (docs/api.md's "An outside code's answer") but left it out (newuser40)."""
+    differ = {}
+    for package in PACKAGES:
+        for path in sorted((ROOT / package).rglob("__init__.py")):
+            names = _reexports(path)
+            if names and names[0] != names[1]:
+                differ[str(path.relative_to(ROOT))] = {"not in __all__": sorted(names[0] - names[1]),
+                                                       "not imported": sorted(names[1] - names[0])}
+    assert not differ, f"__all__ and the imports differ: {differ}"
