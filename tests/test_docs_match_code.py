@@ -180,15 +180,18 @@ def test_every_module_states_its_idea_in_a_docstring():
 
 
 def _shown_pages():
-    return [ROOT / "README.md"] + [p for p in sorted(DOCS.rglob("*.md")) if not p.name.endswith("-log.md")]
+    return ([ROOT / "README.md"] + [p for p in sorted(DOCS.rglob("*.md")) if not p.name.endswith("-log.md")]
+            + sorted((ROOT / "examples").glob("*.md")) + sorted((ROOT / "examples").glob("*.py")))
 
 
 @pytest.mark.parametrize("page", _shown_pages(), ids=lambda p: p.relative_to(ROOT).as_posix())
 def test_every_shown_command_runs_the_projects_python(page):
     """The setup makes .venv and activates nothing, so a bare ``python``
     is another interpreter, without numpy (grader12 #2): every command
-    the README and the reference pages show runs ``.venv/bin/python``.
-    The dated logs (``*-log.md``) keep what was typed."""
+    the README, the reference pages and the examples (read top to bottom:
+    two scripts' docstrings gave ``python -m verification``, newuser40) show
+    runs ``.venv/bin/python``. The dated logs (``*-log.md``) keep what was
+    typed."""
     text = re.sub(r"```python\b", "```", page.read_text())
     bare = [text.count("\n", 0, m.start()) + 1
             for m in re.finditer(r"(?<![\w./-])python3?(?=[ \n])", text)]
