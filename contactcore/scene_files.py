@@ -297,7 +297,8 @@ def scene_toml(scene: Scene) -> str:
 
 
 def builtin_scenes() -> list[str]:
-    """Names of the scenes shipped with the package (the paper's A, B, C)."""
+    """Names of the scenes shipped with the package, sorted: the paper's
+    A, B, C and the variants docs/scenes.md describes (``A-cyclic``, ...)."""
     return sorted(p.name[:-5] for p in resources.files("contactcore.scenes").iterdir() if p.name.endswith(".toml"))
 
 

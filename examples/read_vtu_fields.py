@@ -1,7 +1,7 @@
 """Reading the field files with meshio
 =====================================
 
-``python -m verification run SCENE --fields --out DIR`` writes, per
+``.venv/bin/python -m verification run SCENE --fields --out DIR`` writes, per
 method, each body's mesh with its displacement and stress
 (``DIR/<method>/fields/minus.vtu``, ``plus.vtu``) and the interface's
 state at every increment (``interface_NNNN.vtu``, gathered by

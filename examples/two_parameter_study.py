@@ -9,8 +9,8 @@ coefficient?  Each point of the product is a new scene, made with
 reason, and the study goes on.
 
 The command line does the same, with plots and a CSV:
-``python -m verification study C-coulomb --param radius --values 0.3 0.45
---param kT --values 1e7 1e8 --method xfem --out DIR``.
+``.venv/bin/python -m verification study C-coulomb --param radius --values
+0.3 0.45 --param mu --values 0.1 0.4 --method xfem --out DIR``.
 
 Run it with ``.venv/bin/python examples/two_parameter_study.py``.
 """

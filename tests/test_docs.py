@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).resolve().parent.parent
-USER_DOCS = [ROOT / "README.md", *sorted((ROOT / "docs").rglob("*.md"))]
+USER_DOCS = [ROOT / "README.md", *sorted((ROOT / "docs").rglob("*.md")), ROOT / "examples" / "README.md"]
 
 
 def test_the_api_pages_examples_run():
@@ -117,3 +117,35 @@ def test_the_scenes_page_gives_s_one_meaning():
              + _spans(text, "**layered-slip**", "## Output files"))
     bare = [span for span in spans if re.search(r"(?<![\w'])s(?![\w'])", span)]
     assert "g_Tˢ" in spans and not bare, bare
+
+
+def _written_names(methods: str, profiles: str) -> list[str]:
+    """The names in the first cells of usage.md's "What `run` writes",
+    as regular expressions of a path in the result folder: ``<method>``
+    one of ``methods``, ``<ID>`` one of ``profiles`` (alternatives,
+    ``fe|xfem``), ``*`` any file name; a name without a folder (such as
+    ``interface.pvd``) names a file in any folder, a folder (``exact/``)
+    everything under it."""
+    section = USAGE.read_text().split("## What `run` writes", 1)[1].split("\n## ", 1)[0]
+    cells = re.findall(r"^\| (.*?) \|", section, re.MULTILINE)
+    names = [n for cell in cells for n in re.findall(r"`([^`]+)`", cell)]
+    patterns = []
+    for name in names:
+        pattern = (re.escape(name).replace(re.escape("<method>"), f"({methods})")
+                   .replace(re.escape("<ID>"), f"({profiles})").replace(re.escape("*"), r"[^/]+"))
+        patterns.append(("" if "/" in name else "(.*/)?") + pattern + (".*" if name.endswith("/") else ""))
+    return patterns
+
+
+def test_the_usage_page_names_every_file_run_writes(tmp_path):
+    """Every file ``run`` writes has its row in usage.md's "What `run`
+    writes": a run under a frictional law wrote
+    plots/status_<method>.png, plots/response.png and, with
+    ``--against-exact``, <method>/exact/ and plots/exact_*, which only
+    scenes.md listed (newuser40)."""
+    from verification.run import run
+    run(ROOT / "examples" / "wedge.toml", ["fe", "xfem"], tmp_path / "out", h=0.2, fields=True, against_exact=True)
+    patterns = _written_names("fe|xfem|reference", "gamma")
+    written = [p.relative_to(tmp_path / "out").as_posix() for p in (tmp_path / "out").rglob("*") if p.is_file()]
+    unnamed = [w for w in written if not any(re.fullmatch(p, w) for p in patterns)]
+    assert written and not unnamed, f"add a row to usage.md's \"What `run` writes\" for {unnamed}"

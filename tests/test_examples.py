@@ -1,6 +1,7 @@
 """Every script of examples/ runs, at a coarse h, and prints and returns what
 its text says.  Each is imported from its file, as a reader would run it."""
 import importlib.util
+import re
 from pathlib import Path
 
 import numpy as np
@@ -29,6 +30,13 @@ def test_every_example_is_tested():
     assert {p.stem for p in EXAMPLES.glob("*.py")} == {
         "scene_from_toml", "scene_in_python", "coulomb_wedge", "agreement_test", "read_vtu_fields",
         "two_parameter_study", "exact_contact", "error_estimate"}
+
+
+def test_the_examples_page_lists_every_script():
+    """examples/README.md's table is the examples' index: a row a script,
+    linked by its file name, and no row for a script that is gone."""
+    listed = set(re.findall(r"^\| \[(\w+\.py)\]\(\1\) \|", (EXAMPLES / "README.md").read_text(), re.MULTILINE))
+    assert listed == {p.name for p in EXAMPLES.glob("*.py")}
 
 
 def test_scene_from_toml(capsys):

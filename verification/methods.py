@@ -59,10 +59,12 @@ def budgeted(name: str, degree: int):
 
 
 def solver(name: str):
-    """The ``solve`` function of method (or peer) ``name``:
-    ``solve(scene, h=None, *, degree=1, paper=False, **options)``, ``h`` the
+    """The ``solve`` function of method (or peer) ``name``: a method's is
+    ``solve(scene, h=None, *, paper=False, progress=None, reuse=None,
+    **options)`` (:func:`contactcore.discretisation.solve`'s), ``h`` the
     cell size or node spacing in the scene's length unit (None: the
-    scene's own), the options the method's (:func:`takes`); it refuses
+    scene's own), the options the method's (:func:`takes`; ``degree``, 1
+    or 2, 1 unless given, is one of them); it refuses
     and fails as :func:`contactcore.discretisation.solve` does (a
     :class:`~contactcore.ContactError` naming the problem: a bad scene or
     ``h``, an option the method does not take, a failed solve).  An unknown

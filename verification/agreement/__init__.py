@@ -68,7 +68,9 @@ One idea a module:
   :func:`assert_methods_agree`, :func:`assert_table_agrees`, :func:`compare_estimates`, :func:`check_rtol`, :func:`variant`,
   :func:`label`, :func:`sampled`).
 - :mod:`~verification.agreement.outside`: an outside code's answer against
-  one method's and its estimated error (:func:`compare_outside`), in
+  one method's and its estimated error (:func:`compare_outside`, its
+  :class:`OutsideTable` of :class:`OutsideRow`, each with its
+  :class:`Region`), in
   parts: the input read (``outside_files``) and checked against the scene
   (``outside_input``), a profile's geometry along ``s``
   (``profile_geometry``), the project's answer and error at the outside
@@ -103,6 +105,8 @@ from .estimates import beyond_own_estimate, estimated_shares, within_estimates, 
 from .groups import GROUPS, ON_GAMMA, components, group_of, group_size, scale_name, scale_of
 from .measures import first_largest, percent, relative_rms, share
 from .outside import compare_outside  # an outside code's answer against the project's (docs/api.md)
+from .outside_table import OutsideRow, OutsideTable
+from .outside_verdicts import Region
 from .records import Agreement, agreements, profile_agreements
 from .samples import check_exclusion, default_exclusion, kept_samples
 from .status import StatusAgreement, StatusMap, compare_status, gamma_profiles, status_agreements, status_map
@@ -136,4 +140,6 @@ __all__ = [
     # api
     "MEASURES", "EstimateVerdict", "assert_methods_agree", "assert_table_agrees", "check_rtol", "compare", "compare_estimates",
     "compared_variants", "label", "sampled", "variant",
+    # outside: an outside code's answer, and the types of its verdict
+    "OutsideRow", "OutsideTable", "Region", "compare_outside",
 ]

@@ -45,7 +45,10 @@ def label(name: str, degree: int) -> str:
 
 
 def sampled(scene: Scene, result) -> dict:
-    """A Result's profiles of ``scene``, by id."""
+    """``result``'s profiles of ``scene`` (the scene it solved), by id:
+    :func:`contactcore.sample_profiles` with its interface history, as
+    :func:`table`'s ``runs`` hold them (label -> this); refuses as
+    :func:`contactcore.sample_profiles` does."""
     return {p.id: p for p in sample_profiles(scene, result.fields, result.interface)}
 
 
