@@ -1858,3 +1858,19 @@ COARSE_DISC_H = 0.1
 #: form of that disc (k_N → ∞): its jump σ_rr/k_N, about 1e8/1e22 = 1e-14 m,
 #: is far below fe P2's u_x error there (4.06e-9 m RMS at h = 0.05).
 LAME_TIED_KN = 1e22
+
+# --- eff41 (2026-11-30): xfem P1's recovered stress across a straight Γ (tests/test_estimate_straight_layer.py) ---
+#: The coarse h of xfem P1's three runs (0.05, 0.025, 0.0125) on
+#: docs/scenes/inclined_stick_weight_exact.toml whose V:σyy (a vertical line
+#: at x = 0.3 crossing Γ at y = 0.36) reads 0.39 of its error over the kept
+#: samples against the closed form, unnamed: the true RMS error 204, 70.4,
+#: 33.9 Pa (rates 1.53, 1.05 against theory's [2, 3]); observed order 1.76,
+#: slowdown 2^(2 − 1.76) = 1.18, below SLOW_HALVING (1.25), while V:σxx and
+#: V:σxy (exact 0) are named at 1.39 (docs/error-estimates.md, "Known
+#: limits", "xfem P1's recovered stress across a straight Γ").
+STRAIGHT_LAYER_H = 0.05
+#: The least share of V:σyy's squared error (finest run, every sample kept)
+#: that lies within one cell of the finest run (0.0125) of Γ: measured 0.98
+#: (0.92 and 0.96 at h = 0.05 and 0.025 within their own cell), the
+#: recovery's one-sided patch next to Γ, of order 1, as on a curved Γ.
+STRAIGHT_LAYER_SHARE = 0.9
