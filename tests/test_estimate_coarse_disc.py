@@ -4,11 +4,12 @@ cannot see and three runs name (docs/error-estimates.md, "Known limits",
 
 fe P2 on the Lamé disc under exact unilateral contact
 (docs/scenes/disc_unilateral_exact.toml) from h = 0.1: ray R's u_x error
-falls only 3.9-fold from h = 0.1 to 0.05 (rate 1.97), then at 3.44 and
-4.24, so the two-run estimate at order 3, ``|q_{h/2} − q_h| / 7``, reads
-0.40 of the error against the closed form, and no line of two runs names
-it (the runs' difference at the cells' scale, 0.58 of it, lies among the
-disc's entries in band, 0.50-0.97).  A third run observes the order
+(RMS over the samples farther than 0.05 from Γ) falls only 3.9-fold from
+h = 0.1 to 0.05 (rate 1.95), then at 3.30 and 2.77, so the two-run
+estimate at order 3, ``|q_{h/2} − q_h| / 7``, reads 0.40 of the error
+against the closed form, and no line of two runs names it (the runs'
+difference at the cells' scale, 0.58 of it, lies among the disc's entries
+in band, 0.50-0.97).  A third run observes the order
 (1.63 against 3) and names it.  This pins the documented limit: if a
 two-run rule comes to name it, or the three-run line stops naming it,
 the page must change with the code."""

@@ -1849,10 +1849,12 @@ TRANSITION_CELLS = 1.0
 #: The coarse h of fe P2 on docs/scenes/disc_unilateral_exact.toml whose two
 #: runs (0.1, 0.05) under-read ray R's u_x unnamed: 0.40 of its error over
 #: the kept samples against the Lamé closed form (fe P2 at 0.0125: 0.41).
-#: The true RMS error of R's u_x is 1.58e-8, 4.06e-9, 3.74e-10, 1.98e-11 m
-#: at h = 0.1, 0.05, 0.025, 0.0125 (rates 1.97, 3.44, 4.24 against 3): the
-#: h = 0.1 run is not yet asymptotic (docs/error-estimates.md, "Known
-#: limits", "A coarse run not yet asymptotic, unseen by two runs").
+#: The true RMS error of R's u_x over the kept samples (all 101) is 1.51e-8,
+#: 4.20e-9, 5.01e-10, 7.04e-11 m at h = 0.1, 0.05, 0.025, 0.0125 (rates
+#: 1.85, 3.07, 2.83 against 3; over the samples farther than 0.05 from Γ,
+#: the page's figures, 1.95, 3.30, 2.77): the h = 0.1 run is not yet
+#: asymptotic (docs/error-estimates.md, "Known limits", "A coarse run not
+#: yet asymptotic, unseen by two runs").
 COARSE_DISC_H = 0.1
 #: The normal stiffness (Pa/m) that stands for a tied Γ in the Lamé closed
 #: form of that disc (k_N → ∞): its jump σ_rr/k_N, about 1e8/1e22 = 1e-14 m,
@@ -1871,6 +1873,8 @@ LAME_TIED_KN = 1e22
 STRAIGHT_LAYER_H = 0.05
 #: The least share of V:σyy's squared error (finest run, every sample kept)
 #: that lies within one cell of the finest run (0.0125) of Γ: measured 0.98
-#: (0.92 and 0.96 at h = 0.05 and 0.025 within their own cell), the
-#: recovery's one-sided patch next to Γ, of order 1, as on a curved Γ.
+#: (0.965 and 0.993 at h = 0.05 and 0.025 within their own cell of Γ;
+#: 0.92 and 0.96, the page's figures, within h of Γ along V, |y − 0.36| ≤ h,
+#: which at 0.0125 holds the same three samples), the recovery's one-sided
+#: patch next to Γ, of order 1, as on a curved Γ.
 STRAIGHT_LAYER_SHARE = 0.9
