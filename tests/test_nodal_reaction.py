@@ -107,7 +107,8 @@ def test_p1_reaction_flux_error_is_the_default_flux_error():
 def test_mpirun_is_refused_in_one_line():
     """Under mpirun the reaction is refused before anything is built, in
     one line naming the option and the way out."""
-    from xdolfinx.nodal import PARALLEL_REFUSAL, nodal_operator
+    from xdolfinx.nodal import nodal_operator
+    from xdolfinx.options import PARALLEL_REFUSAL
     parallel = SimpleNamespace(ranks=SimpleNamespace(parallel=True))
     with pytest.raises(DiscretisationError) as err:
         nodal_operator(None, None, None, None, parallel, None, np.zeros(0, int))
@@ -118,3 +119,17 @@ def test_an_unknown_flux_is_refused():
     """``flux`` is one of FE_FLUXES."""
     with pytest.raises(DiscretisationError, match="flux must be one of stress, reaction"):
         FE(flux="nodal")
+
+
+def test_mpirun_is_refused_before_any_mesh():
+    """FE's own check (the one every driver makes before it solves) refuses
+    the reaction flux of an exact law on two processes, in the same line;
+    a penalty law, which reads no flux, is not refused."""
+    from xdolfinx.options import PARALLEL_REFUSAL
+    exact = load_scene(SCENE)
+    two = SimpleNamespace(size=2)
+    with pytest.raises(DiscretisationError) as err:
+        FE(flux="reaction", comm=two).check(exact)
+    assert str(err.value) == PARALLEL_REFUSAL
+    FE(flux="reaction", comm=two).check(exact.with_changes(law=make_law({"type": "coulomb", "mu": 0.5,
+                                                                          "kN": 1e10, "kT": 1e10})))

@@ -25,7 +25,8 @@ support at Γ's end) is dropped from the law: its frame row, which must be
 
 One process only: a node's reaction is its assembled rows of ``A`` and
 ``b``, which under mpirun its partner node's rank need not hold
-(:data:`PARALLEL_REFUSAL`).
+(:data:`~xdolfinx.options.PARALLEL_REFUSAL`, refused by
+:meth:`~xdolfinx.options.FE.check` before any mesh, and here again).
 """
 from __future__ import annotations
 
@@ -40,9 +41,8 @@ from contactcore.geometry import polygon_area, tangent_of
 from contactcore.interface_path import piece_centres
 from contactcore.system import InterfaceOperator
 
-#: Why fe's nodal reaction is refused under mpirun (one line, docs/usage.md).
-PARALLEL_REFUSAL = ('fe: flux = "reaction" runs on one process only (a Γ node\'s reaction reads its assembled rows '
-                    'of both bodies, which one rank need not hold): run it without mpirun, or use flux = "stress"')
+from .options import PARALLEL_REFUSAL
+
 
 
 def nodal_interface(scene, fm, V, reader, exchange, K, fixed: np.ndarray):

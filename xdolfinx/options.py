@@ -23,6 +23,10 @@ XFEM_CELLS = ("quad", "triangle", "gmsh")
 #: answer is the node-to-node multipliers' at every β (serial only).
 FE_FLUXES = ("stress", "reaction")
 
+#: Why fe's nodal reaction is refused under mpirun (one line, docs/usage.md).
+PARALLEL_REFUSAL = ('fe: flux = "reaction" runs on one process only (a Γ node\'s reaction reads its assembled rows '
+                    'of both bodies, which one rank need not hold): run it without mpirun, or use flux = "stress"')
+
 
 def refinement(reach: float) -> str:
     """What to do where a body reaches at most ``reach`` of a cell's
@@ -153,6 +157,18 @@ class FE(Discretisation):
         super().check(scene)
         if self.mesh is None:  # a given mesh is held to the scene by check_spacing instead
             check_fitted_thickness(scene)
+        self._check_flux(scene)
+
+    def _check_flux(self, scene) -> None:
+        """Refuse ``flux="reaction"`` for an exact law on more than one
+        process (:data:`PARALLEL_REFUSAL`), before any mesh is built."""
+        from contactcore.exact import is_exact
+        if self.flux != "reaction" or not is_exact(scene.law):
+            return
+        from mpi4py import MPI
+        if (MPI.COMM_WORLD if self.comm is None else self.comm).size > 1:
+            from contactcore import DiscretisationError
+            raise DiscretisationError(PARALLEL_REFUSAL)
 
 
 @dataclass(frozen=True)
