@@ -297,13 +297,34 @@ class NitscheInterface:
         self._test_transposed = self.test.T
         WS = sp.diags(np.repeat(operator.weights / self.gamma, 2)) @ operator.S if len(self.gamma) else operator.S
         self.correction = (-theta * (operator.S.T @ WS)).tocsr()  # C, local numbering
+        self._weighted = WS  # W Γ⁻¹ S, for an affine flux's constant forces
+        self._load = None  # an affine flux's ``L b`` (2m,) of the step (:meth:`loaded`)
 
     def softened(self, factor: float) -> "NitscheInterface":
-        """The same interface at ``factor`` times its stabilisation β."""
+        """The same interface at ``factor`` times its stabilisation β (told
+        its step's loads afresh, :meth:`loaded`)."""
         return NitscheInterface(self.operator, factor * self.beta)
 
     def __getattr__(self, name):  # points, weights, exchange, size: the method's
         return getattr(self.operator, name)
+
+    def loaded(self, b: np.ndarray) -> None:
+        """Told the step's loads ``b`` (owned values): with an affine flux
+        ``τ = S u − L b`` (:attr:`~contactcore.system.InterfaceOperator.load_flux`),
+        ``s = L b`` is kept for the step: ``y = G̃ u − Γ⁻¹ s`` and the forces
+        gain ``θ Sᵀ W Γ⁻¹ s`` (``R = A u − b + Gᵀ W t + θ Sᵀ W Γ⁻¹ (t − τ)``).
+        Nothing for a flux linear in ``u`` (every other method's)."""
+        if self.operator.load_flux is None:
+            return
+        local = b if self.exchange is None else self.exchange.forward(b)
+        self._load = self.operator.load_flux @ local
+
+    def augmented_jumps(self, u: np.ndarray) -> np.ndarray:
+        """``y = G̃ u`` (m, 2), less ``Γ⁻¹ s`` with an affine flux (:meth:`loaded`)."""
+        y = self._scaled.jumps(u)
+        if self._load is None:
+            return y
+        return y - self._load.reshape(-1, 2) / self.gamma[:, None]
 
     def jumps(self, u: np.ndarray) -> np.ndarray:
         return self.operator.jumps(u)
@@ -312,7 +333,7 @@ class NitscheInterface:
         """The law at the augmented jumps ``G̃ u`` with ``γ``, its switches
         decided, and its state updated, as the penalty law's
         (:class:`~contactcore.laws.Decision`; module doc)."""
-        y = self._scaled.jumps(u)
+        y = self.augmented_jumps(u)
         decision = None
         if previous is not None:
             decision = Decision.reduced(law.at(self.gamma), y, state, previous, ranks)
@@ -331,6 +352,8 @@ class NitscheInterface:
         bulk = self.correction @ local
         bulk = bulk if self.exchange is None else self.exchange.reverse(bulk)
         forces = self._test_transposed @ (self.weights[:, None] * traction).ravel()  # Tᵀ W t
+        if self._load is not None:
+            forces = forces + tol.NITSCHE_THETA * (self._weighted.T @ self._load)  # θ Sᵀ W Γ⁻¹ s
         return (forces if self.exchange is None else self.exchange.reverse(forces)) + bulk
 
     def stiffness(self, tangent: np.ndarray) -> sp.csr_matrix:

@@ -60,10 +60,20 @@ class InterfaceOperator:
     #: exact law's traction is reported as its mean over each piece
     #: (:meth:`~contactcore.interface_path.InterfacePath.piece_means`).
     pieces: np.ndarray | None = None
+    #: For a flux affine in the loads (fe's nodal reaction,
+    #: :mod:`xdolfinx.nodal`), None otherwise: ``L`` (2m × n, ``S``'s shape
+    #: and columns) with ``τ = S u − L b``, ``b`` the step's loads
+    #: (:meth:`ContactSystem.external`); ``S = L A``.
+    load_flux: sp.csr_matrix | None = None
 
     @property
     def size(self) -> int:
         return len(self.weights)
+
+    def loaded(self, b: np.ndarray) -> None:
+        """Told each step's loads ``b`` (owned values) before the step:
+        nothing here (a penalty law's jumps do not read them;
+        :meth:`contactcore.exact.NitscheInterface.loaded`)."""
 
     def respond(self, law, u: np.ndarray, state, previous=None, ranks=SERIAL):
         """The law's response to the jumps of ``u`` (penalty enforcement),

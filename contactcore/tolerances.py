@@ -1894,3 +1894,11 @@ XFEM_READ_FILL_SHARE = 0.5
 #: of a quadrilateral there still had its stress near its centroid
 #: (within 0.1 % of |t_N|).
 XFEM_READ_LEAST_SHARE = 0.15
+
+# --- nodalfe41 (2026-11-30): fe's nodal reaction as Nitsche's flux (xdolfinx.nodal) ---
+#: A global component prescribed on both sides of a Γ node is dropped from
+#: the law by the frame row (n or t) it lies along: within this of 1 in
+#: |cos| (a support's edge meeting Γ at right angles, as every scene's
+#: rollers do, |cos| = 1 to round-off); a component along neither would
+#: carry its support's reaction into both rows, and is refused.
+REACTION_ALIGNMENT = 1e-9

@@ -1878,3 +1878,28 @@ STRAIGHT_LAYER_H = 0.05
 #: which at 0.0125 holds the same three samples), the recovery's one-sided
 #: patch next to Γ, of order 1, as on a curved Γ.
 STRAIGHT_LAYER_SHARE = 0.9
+# --- nodalfe41 (2026-11-30): fe's nodal reaction as Nitsche's flux (tests/test_nodal_reaction.py) ---
+#: How far fe's answer with flux = "reaction" may move between β = 0.3, 3
+#: and 30, as a share of its family's scale (displacements and gaps: the
+#: largest |u| on the profiles; stresses and tractions: the largest |σ|,
+#: |t|): at the node-to-node multipliers' answer the flux is the
+#: multiplier for every γ, so only round-off moves it.  Measured on
+#: docs/scenes/self_weight_beta.toml at h = 0.05: 1.7e-13 (P1) and 2.4e-13
+#: (P2) (2026-11-30).
+NODAL_BETA_ROUNDOFF = 1e-10
+#: The least β move of the default flux (the cells' stress) in fe P1 on the
+#: same block, so that the check above can fail: measured 2.4e-3 (the
+#: weak tie's residue of a P1 stress against a linear σyy).
+NODAL_DEFAULT_BETA_MOVE = 1e-4
+#: The share of each family's largest exact value within which fe P1 with
+#: the reaction flux matches the block's closed form at h = 0.05: measured
+#: 1.52e-2 (σyy on D), the default flux 1.53e-2: P1's constant cell stress
+#: against a linear σyy, the discretisation's error, not the flux's.
+NODAL_P1_CLOSED_ERROR = 3e-2
+#: The reaction flux's P1 error over the default flux's, both at β = 3,
+#: on the same block and measure: measured 0.99 (2026-11-30).
+NODAL_P1_ERROR_RATIO = 1.1
+#: The same for fe P2, which holds the block's quadratic u and linear σ:
+#: round-off (measured 4.0e-14 of the scale with the reaction flux,
+#: 5.0e-14 with the default, 2026-11-30).
+NODAL_P2_CLOSED_ERROR = 1e-10

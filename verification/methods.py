@@ -36,7 +36,7 @@ PEERS = {"getfem": "verification.peer_getfem"}
 
 #: The command-line flag of each option.
 FLAGS = {"petsc_options": "--petsc-option", "cell": "--cell", "dmax": "--dmax", "nodes": "--nodes",
-         "basis": "--basis", "mesh": "--mesh"}
+         "basis": "--basis", "mesh": "--mesh", "flux": "--flux"}
 
 
 def discretisation(name: str) -> type:

@@ -55,7 +55,7 @@ log = logging.getLogger("verification")
 
 def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, paper=False,
         fields=False, petsc_options=None, dmax=None, nodes_file=None, cell=None, basis=None, mesh=None,
-        allow_large=False,
+        flux=None, allow_large=False,
         draw=True, estimate=None, reference=DEFAULT_REFERENCE, against_exact=False, floors=None, argv=()) -> str:
     """Solve ``scene_name`` (a scene, a built-in name or a TOML file),
     sample the scene's profiles, write everything; return the Markdown
@@ -82,7 +82,7 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
     draw = draw and files.writes_here()
     chosen = methods.expand(method_names)
     given = dict(petsc_options=petsc_options or None, dmax=dmax, cell=cell, basis=basis,
-                 mesh=None if mesh is None else str(mesh))
+                 mesh=None if mesh is None else str(mesh), flux=flux)
     compared = reference is not None and len(chosen) > 1  # a reference only where methods are compared
     check(scene, chosen, h, degree, paper, allow_large, estimate, reference if compared else None,
           nodes=nodes_file, **given)
@@ -117,7 +117,8 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
                                         "degree": degree, "mesh": _recorded_mesh(summaries),
                                         "paper": paper, "estimate": estimate,
                                         "petsc_options": petsc_options or {}, "dmax": dmax,
-                                        "basis": basis, "nodes": str(nodes_file) if nodes_file else None,
+                                        "basis": basis, "flux": flux,
+                                        "nodes": str(nodes_file) if nodes_file else None,
                                         "reference": ref, "against_exact": against_exact, "floors": floors or {},
                                         "cell": next((s["discretisation"]["cell"] for s in summaries
                                                       if "cell" in s["discretisation"]), cell)})

@@ -60,6 +60,7 @@ from contactcore.scene import BODY, EDGE, place_of
 from .contact_system import GhostExchange, PETScSystem
 from .evaluation import BodyCellLocator, BodyFields
 from .fitted_mesh import FittedMesh, file_mesh, fitted_mesh
+from .nodal import nodal_interface
 from .options import FE
 from .quiet import quiet_jit
 
@@ -462,9 +463,13 @@ def build(scene: Scene, options: FE, resolution: Resolution, timings: Timings) -
             vec.ghostUpdate(addv=PETSc.InsertMode.ADD, mode=PETSc.ScatterMode.REVERSE)
             loads.append(vec.getArray().copy())
             vec.destroy()
-        system = PETScSystem(K, loads, cons.constraints(), interface_operator(scene, fm, V, degree, exchange, exact),
-                             comm=fm.mesh.comm, petsc_options=options.petsc_options,
-                             estimate_condition=options.estimate_condition, what=f"scene {scene.name} (fe)")
+        reaction = exact and options.flux == "reaction"  # Γ's nodes, the reaction as flux (xdolfinx.nodal)
+        reader = (_Reference(fm, degree), INTERFACE_GAUSS[degree], _facet_sides) if reaction else None
+        interface, work = (nodal_interface(scene, fm, V, reader, exchange, K, cons.constraints().dofs) if reaction
+                           else (interface_operator(scene, fm, V, degree, exchange, exact), None))
+        system = PETScSystem(K, loads, cons.constraints(), interface, comm=fm.mesh.comm, work=work,
+                             petsc_options=options.petsc_options, estimate_condition=options.estimate_condition,
+                             what=f"scene {scene.name} (fe)")
 
     def fields(x):
         uh = fem.Function(V)
@@ -481,7 +486,7 @@ def build(scene: Scene, options: FE, resolution: Resolution, timings: Timings) -
     else:  # the file's, at its own Γ facets (meshes.read.check_mesh, in the user's units)
         warnings = options.mesh_warnings(scene)
     record = {"h": h, "degree": degree, "geometry_order": order, "cells": fm.num_cells,
-              "grading": None if grading is None else vars(grading)}
+              "grading": None if grading is None else vars(grading), "flux": options.flux}
     if given is not None:
         record["mesh"] = given.record()
     return Built(system, fields, cons.num_active, h=h, fitted=True, warnings=warnings, record=record)

@@ -34,11 +34,14 @@ PETSC_PREFIX = "xdolfinx_"
 
 class PETScSystem(ContactSystem):
     """``K`` (PETSc), loads, the prescribed unknowns (``constraints`` on
-    dofs) and Γ (see module doc), distributed over ``comm`` (the mesh's)."""
+    dofs) and Γ (see module doc), distributed over ``comm`` (the mesh's);
+    ``work``, where ``K``'s pattern cannot hold the interface's tangent, a
+    matrix whose pattern holds both (:func:`xdolfinx.nodal.working_pattern`)."""
 
 
     def __init__(self, K, loads: list[np.ndarray], constraints: Constraints, interface: InterfaceOperator, *,
-                 comm=None, petsc_options=None, estimate_condition: bool = False, what: str = "linear system"):
+                 comm=None, petsc_options=None, estimate_condition: bool = False, what: str = "linear system",
+                 work=None):
         self.K, self.loads, self.constraints = K, loads, constraints
         self.collective = Collective(comm)  # the mesh's (mpi4py): it outlives K
         self.size = K.getLocalSize()[0]  # this rank's owned rows (all of them in serial)
@@ -46,7 +49,7 @@ class PETScSystem(ContactSystem):
         self.free = np.setdiff1d(np.arange(self.size), self.fixed)
         self.interface = interface
         # K is symmetric by its weak form: LDLᵀ while the law's tangent is
-        self._tangent = linear_solver.Tangent(K, self.free, symmetric=True, petsc_options=petsc_options,
+        self._tangent = linear_solver.Tangent(K, self.free, work=work, symmetric=True, petsc_options=petsc_options,
                                               estimate_condition=estimate_condition, what=what,
                                               ranks=self.collective, prefix=PETSC_PREFIX)
 

@@ -17,6 +17,16 @@ from contactcore.discretisation import Discretisation, check_choice, check_degre
 #: structured triangles, or gmsh triangles (used for a disc).
 XFEM_CELLS = ("quad", "triangle", "gmsh")
 
+#: fe's flux of an exactly enforced law (Nitsche's consistent traction τ):
+#: ``"stress"`` the cells' weighted-average stress at Γ's Gauss points,
+#: ``"reaction"`` the nodal reaction at Γ's nodes (xdolfinx.nodal), whose
+#: answer is the node-to-node multipliers' at every β (serial only).
+FE_FLUXES = ("stress", "reaction")
+
+#: Why fe's nodal reaction is refused under mpirun (one line, docs/usage.md).
+PARALLEL_REFUSAL = ('fe: flux = "reaction" runs on one process only (a Γ node\'s reaction reads its assembled rows '
+                    'of both bodies, which one rank need not hold): run it without mpirun, or use flux = "stress"')
+
 
 def refinement(reach: float) -> str:
     """What to do where a body reaches at most ``reach`` of a cell's
@@ -41,12 +51,19 @@ class FE(Discretisation):
     fe's own mesh: it fixes the cells, their geometry order and the
     run's h (its largest cell diameter, :mod:`meshes.read`), so it takes
     no ``grading``, ``geometry_order`` or ``h``; it is checked against
-    the scene before anything is built (:func:`meshes.read.check_mesh`)."""
+    the scene before anything is built (:func:`meshes.read.check_mesh`).
+
+    ``flux`` (:data:`FE_FLUXES`): an exactly enforced law's Nitsche flux,
+    ``"stress"`` (default: the cells' stress at Γ's Gauss points) or
+    ``"reaction"`` (Nitsche's points at Γ's nodes and each node's reaction
+    as flux, :mod:`xdolfinx.nodal`: the answer does not move with β; one
+    process only; no part in a penalty law's answer)."""
 
     degree: int = 1
     geometry_order: int | None = None
     grading: object = None
     mesh: object = None
+    flux: str = "stress"
     petsc_options: dict | None = None
     estimate_condition: bool = False
     jit_params: dict | None = None
@@ -71,6 +88,7 @@ class FE(Discretisation):
 
     def __post_init__(self):
         check_degree(self.name, self.degree)
+        check_choice(self.name, "flux", self.flux, FE_FLUXES)
         if self.mesh is not None:
             import os
 
@@ -139,6 +157,18 @@ class FE(Discretisation):
         super().check(scene)
         if self.mesh is None:  # a given mesh is held to the scene by check_spacing instead
             check_fitted_thickness(scene)
+        self._check_flux(scene)
+
+    def _check_flux(self, scene) -> None:
+        """Refuse ``flux="reaction"`` for an exact law on more than one
+        process (:data:`PARALLEL_REFUSAL`), before any mesh is built."""
+        from contactcore.exact import is_exact
+        if self.flux != "reaction" or not is_exact(scene.law):
+            return
+        from mpi4py import MPI
+        if (MPI.COMM_WORLD if self.comm is None else self.comm).size > 1:
+            from contactcore import DiscretisationError
+            raise DiscretisationError(PARALLEL_REFUSAL)
 
 
 @dataclass(frozen=True)

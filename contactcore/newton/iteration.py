@@ -105,6 +105,7 @@ class _Iteration:
         factorisations told a step begins."""
         loads, supports = self.scene.factors(k)
         b = self.system.external(loads, supports)
+        self.itf.loaded(b)  # an affine flux's load part (contactcore.exact.NitscheInterface.loaded)
         u, previous = self._predicted(_flat((loads, supports))) if start is None else (start[0].copy(), start[1])
         u[self.system.fixed] = self.system.fixed_values(supports)
         walk = _Walk(k, (loads, supports), b, u, previous, self._lift(supports))

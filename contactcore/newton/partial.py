@@ -128,9 +128,12 @@ def _law_status(s: np.ndarray) -> np.ndarray:
 
 def applies(scene, system) -> bool:
     """Whether the partial search may run: the ``unilateral`` law (no
-    friction, no history; penalty or exact), on any number of ranks."""
+    friction, no history; penalty or exact), on any number of ranks, with
+    a flux linear in ``u`` (not fe's nodal reaction, whose ``y`` is affine
+    in the loads: its Newton's refusal stands)."""
     law = scene.law
-    return law.unilateral and not law.frictional and not law.has_history and not law.is_linear
+    linear_flux = getattr(getattr(system, "interface", None), "load_flux", None) is None
+    return law.unilateral and not law.frictional and not law.has_history and not law.is_linear and linear_flux
 
 
 def _stiffness(newton) -> np.ndarray:

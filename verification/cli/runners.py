@@ -38,7 +38,7 @@ def run(args, argv) -> None:
     from ..run import run as run_scene
     run_scene(args.scene, args.method, args.out, h=args.h, degree=args.degree, paper=args.paper, fields=args.fields,
               petsc_options=dict(args.petsc_option), dmax=args.dmax, nodes_file=args.nodes, cell=args.cell,
-              basis=args.basis, mesh=args.mesh, allow_large=args.allow_large, draw=args.draw, estimate=args.estimate,
+              basis=args.basis, mesh=args.mesh, flux=args.flux, allow_large=args.allow_large, draw=args.draw, estimate=args.estimate,
               reference=args.reference, against_exact=args.against_exact, floors=floors(args.floor), argv=argv)
 
 

@@ -1,0 +1,135 @@
+"""fe's exact enforcement at Γ's nodes with the nodal reaction as Nitsche's
+flux (``FE(flux="reaction")``, xdolfinx/nodal.py; docs/contact-enforcement.md,
+"A β-free exact enforcement for fe").
+
+On docs/scenes/self_weight_beta.toml (a block under its own weight on a
+stuck exact Coulomb Γ at 10°, closed form σxx = 0, σxy = T,
+σyy = S0 + B(H − y)) the answer does not move with β in P1 or P2, where
+the default flux's P1 answer does; it holds the closed form within fe's
+discretisation error; under mpirun the option is refused in one line."""
+import functools
+from pathlib import Path
+from types import SimpleNamespace
+
+import numpy as np
+import pytest
+
+import tolerances as tol
+from contactcore import DiscretisationError, discretisation, load_scene, make_law
+from contactcore.profiles import sample_profile
+from xdolfinx.options import FE
+
+SCENE = str(Path(__file__).resolve().parent.parent / "docs" / "scenes" / "self_weight_beta.toml")
+BETAS = (0.3, 3.0, 30.0)
+H = 0.05
+#: the block's closed form: E, H, S0 (top pressure), T (shear), B (body force)
+E, HEIGHT, S0, T, B = 1e9, 1.0, -1e6, 4e5, -2e6
+DISPLACEMENTS = ("ux", "uy", "gN", "gT")
+
+
+def _closed(q, x, y):
+    """The block's closed form of quantity ``q`` at (x, y)."""
+    n = np.array([-np.sin(np.radians(10)), np.cos(np.radians(10))])
+    syy = S0 + B * (HEIGHT - y)
+    tx, ty = T * n[1] + 0 * x, T * n[0] + syy * n[1]
+    return {"ux": 2 * T / E * y, "uy": (S0 * y + B * (HEIGHT * y - y * y / 2)) / E, "syy": syy, "sxy": T + 0 * y,
+            "gN": 0 * y, "gT": 0 * y, "tN": n[0] * tx + n[1] * ty, "tT": n[1] * tx - n[0] * ty}[q]
+
+
+@functools.lru_cache(maxsize=None)
+def _profiles(degree: int, flux: str, beta: float, h: float = H) -> dict:
+    """(profile id, quantity) -> (x, y, values) of the block at ``beta``."""
+    base = load_scene(SCENE)
+    scene = base.with_changes(law=make_law({"type": "coulomb", "mu": base.law.mu, "enforcement": "exact",
+                                            "stabilisation": beta}))
+    result = discretisation.solve(scene, FE(degree=degree, flux=flux), h)
+    out = {}
+    for p in scene.profiles:
+        c = sample_profile(scene, result.fields, p, result.interface).columns
+        out.update({(p.id, q): (np.asarray(c["x"]), np.asarray(c["y"]), np.asarray(c[q], float))
+                    for q in p.quantities})
+    return out
+
+
+def _scales(profiles: dict) -> dict:
+    """Each quantity's family scale: the largest |u| for displacements and
+    gaps, the largest |σ|, |t| for stresses and tractions."""
+    largest = {fam: max(np.max(np.abs(v)) for (_, q), (_, _, v) in profiles.items()
+                        if (q in DISPLACEMENTS) == fam) for fam in (True, False)}
+    return {k: largest[k[1] in DISPLACEMENTS] for k in profiles}
+
+
+def _beta_move(degree: int, flux: str) -> float:
+    """The largest move of any profile value, β = 0.3 or 30 against 3, as a
+    share of its family's scale."""
+    ref = _profiles(degree, flux, 3.0)
+    scale = _scales(ref)
+    return max(np.max(np.abs(_profiles(degree, flux, b)[k][2] - ref[k][2])) / scale[k]
+               for b in (0.3, 30.0) for k in ref)
+
+
+@pytest.mark.parametrize("degree", (1, 2))
+def test_the_reaction_flux_does_not_move_with_beta(degree):
+    """Every profile at β = 0.3 and 30 within NODAL_BETA_ROUNDOFF of β = 3's."""
+    assert _beta_move(degree, "reaction") <= tol.NODAL_BETA_ROUNDOFF
+
+
+def test_the_default_flux_moves_with_beta_in_p1():
+    """The check above can fail: the cells' stress flux moves fe P1 by more
+    than NODAL_DEFAULT_BETA_MOVE on the same block (2.4e-3 of the scale)."""
+    assert _beta_move(1, "stress") > tol.NODAL_DEFAULT_BETA_MOVE
+
+
+def _closed_error(degree: int, flux: str) -> float:
+    """The largest error of any profile value against the closed form at
+    β = 3, as a share of its family's largest exact value."""
+    got = _profiles(degree, flux, 3.0)
+    exact = {k: _closed(k[1], x, y) for k, (x, y, _) in got.items()}
+    scale = _scales({k: (None, None, v) for k, v in exact.items()})
+    return max(np.max(np.abs(got[k][2] - exact[k])) / scale[k] for k in got)
+
+
+@pytest.mark.parametrize("degree, bound", ((1, tol.NODAL_P1_CLOSED_ERROR), (2, tol.NODAL_P2_CLOSED_ERROR)))
+def test_the_reaction_flux_holds_the_closed_form(degree, bound):
+    """The block's closed form within fe's own discretisation error: P1's
+    constant stress against a linear σyy (NODAL_P1_CLOSED_ERROR), P2 exact
+    (NODAL_P2_CLOSED_ERROR), at β = 3, every profile."""
+    assert _closed_error(degree, "reaction") <= bound
+
+
+def test_p1_reaction_flux_error_is_the_default_flux_error():
+    """P1's error against the closed form is the discretisation's, not the
+    flux's: the reaction flux's is within NODAL_P1_ERROR_RATIO of the
+    default flux's at β = 3."""
+    assert _closed_error(1, "reaction") <= tol.NODAL_P1_ERROR_RATIO * _closed_error(1, "stress")
+
+
+def test_mpirun_is_refused_in_one_line():
+    """Under mpirun the reaction is refused before anything is built, in
+    one line naming the option and the way out."""
+    from xdolfinx.nodal import nodal_operator
+    from xdolfinx.options import PARALLEL_REFUSAL
+    parallel = SimpleNamespace(ranks=SimpleNamespace(parallel=True))
+    with pytest.raises(DiscretisationError) as err:
+        nodal_operator(None, None, None, None, parallel, None, np.zeros(0, int))
+    assert str(err.value) == PARALLEL_REFUSAL and "\n" not in PARALLEL_REFUSAL and 'flux = "stress"' in PARALLEL_REFUSAL
+
+
+def test_an_unknown_flux_is_refused():
+    """``flux`` is one of FE_FLUXES."""
+    with pytest.raises(DiscretisationError, match="flux must be one of stress, reaction"):
+        FE(flux="nodal")
+
+
+def test_mpirun_is_refused_before_any_mesh():
+    """FE's own check (the one every driver makes before it solves) refuses
+    the reaction flux of an exact law on two processes, in the same line;
+    a penalty law, which reads no flux, is not refused."""
+    from xdolfinx.options import PARALLEL_REFUSAL
+    exact = load_scene(SCENE)
+    two = SimpleNamespace(size=2)
+    with pytest.raises(DiscretisationError) as err:
+        FE(flux="reaction", comm=two).check(exact)
+    assert str(err.value) == PARALLEL_REFUSAL
+    FE(flux="reaction", comm=two).check(exact.with_changes(law=make_law({"type": "coulomb", "mu": 0.5,
+                                                                          "kN": 1e10, "kT": 1e10})))
