@@ -1878,6 +1878,7 @@ STRAIGHT_LAYER_H = 0.05
 #: which at 0.0125 holds the same three samples), the recovery's one-sided
 #: patch next to Γ, of order 1, as on a curved Γ.
 STRAIGHT_LAYER_SHARE = 0.9
+
 # --- nodalfe41 (2026-11-30): fe's nodal reaction as Nitsche's flux (tests/test_nodal_reaction.py) ---
 #: How far fe's answer with flux = "reaction" may move between β = 0.3, 3
 #: and 30, as a share of its family's scale (displacements and gaps: the
