@@ -133,3 +133,24 @@ def test_mpirun_is_refused_before_any_mesh():
     assert str(err.value) == PARALLEL_REFUSAL
     FE(flux="reaction", comm=two).check(exact.with_changes(law=make_law({"type": "coulomb", "mu": 0.5,
                                                                           "kN": 1e10, "kT": 1e10})))
+
+
+def test_the_reference_fe_solves_with_the_runs_flux(monkeypatch, tmp_path):
+    """``run --method fe xfem --flux reaction`` compares the runs with fe P2,
+    solved apart at degree 1: that fe solve takes the runs' flux, as the fe
+    P2 reference of ``--degree 2`` (one of the runs) does, so the reference
+    is the same kind of fe answer at either degree (it took the default
+    flux until 2026-11-30)."""
+    from verification import methods, run
+    asked = []
+    solver = methods.solver
+
+    def recording(name):
+        solve = solver(name)
+        return lambda *a, **kw: asked.append((name, kw.get("degree"), kw.get("flux"))) or solve(*a, **kw)
+
+    monkeypatch.setattr(methods, "solver", recording)
+    scene = str(Path(SCENE).with_name("partial_opening_exact.toml"))
+    run.run(scene, ["fe", "xfem"], tmp_path / "out", h=0.25, flux="reaction", draw=False)
+    assert ("fe", 2, "reaction") in asked and ("fe", 2, None) not in asked
+
