@@ -154,3 +154,14 @@ def test_the_reference_fe_solves_with_the_runs_flux(monkeypatch, tmp_path):
     run.run(scene, ["fe", "xfem"], tmp_path / "out", h=0.25, flux="reaction", draw=False)
     assert ("fe", 2, "reaction") in asked and ("fe", 2, None) not in asked
 
+
+def test_summary_names_fes_flux_of_an_exact_law(tmp_path):
+    """summary.md's law line says fe solved with the reaction flux (its
+    answer then does not move with the β it names); with the default flux,
+    or a penalty law, which reads no flux, it says nothing of a flux."""
+    from verification import run
+    exact = str(Path(SCENE).with_name("partial_opening_exact.toml"))
+    said = {(scene, flux): "flux" in run.run(scene, ["fe"], tmp_path / f"{len(scene)}{flux}", h=0.25, flux=flux,
+                                             draw=False).split("\n\n")[2]
+            for scene, flux in ((exact, "reaction"), (exact, None), ("A", "reaction"))}
+    assert said == {(exact, "reaction"): True, (exact, None): False, ("A", "reaction"): False}
