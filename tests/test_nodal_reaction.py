@@ -165,3 +165,21 @@ def test_summary_names_fes_flux_of_an_exact_law(tmp_path):
                                              draw=False).split("\n\n")[2]
             for scene, flux in ((exact, "reaction"), (exact, None), ("A", "reaction"))}
     assert said == {(exact, "reaction"): True, (exact, None): False, ("A", "reaction"): False}
+
+
+def test_the_ties_refusal_offers_the_default_flux():
+    """Where the unilateral law has no consistent open/closed map with the
+    reaction flux (which has no partial search), the refusal offers the
+    default flux, whose partial search may settle it (scene C made exact
+    unilateral, fe P1, h = 0.05: refused with the reaction, solved with the
+    default flux, 2026-11-30); the default flux's refusal does not."""
+    from contactcore import SolverError
+    from contactcore.newton.refusals import NODAL_TIE_HINT
+    base = load_scene(str(Path(__file__).resolve().parent / "scenes" / "shear_unilateral.toml"))
+    scene = base.with_changes(law=make_law({"type": "unilateral", "enforcement": "exact"}))
+    said = {}
+    for flux in ("reaction", "stress"):
+        with pytest.raises(SolverError) as err:
+            discretisation.solve(scene, FE(flux=flux), 0.1)
+        said[flux] = NODAL_TIE_HINT in str(err.value)
+    assert said == {"reaction": True, "stress": False}
