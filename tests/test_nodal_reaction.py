@@ -133,3 +133,53 @@ def test_mpirun_is_refused_before_any_mesh():
     assert str(err.value) == PARALLEL_REFUSAL
     FE(flux="reaction", comm=two).check(exact.with_changes(law=make_law({"type": "coulomb", "mu": 0.5,
                                                                           "kN": 1e10, "kT": 1e10})))
+
+
+def test_the_reference_fe_solves_with_the_runs_flux(monkeypatch, tmp_path):
+    """``run --method fe xfem --flux reaction`` compares the runs with fe P2,
+    solved apart at degree 1: that fe solve takes the runs' flux, as the fe
+    P2 reference of ``--degree 2`` (one of the runs) does, so the reference
+    is the same kind of fe answer at either degree (it took the default
+    flux until 2026-11-30)."""
+    from verification import methods, run
+    asked = []
+    solver = methods.solver
+
+    def recording(name):
+        solve = solver(name)
+        return lambda *a, **kw: asked.append((name, kw.get("degree"), kw.get("flux"))) or solve(*a, **kw)
+
+    monkeypatch.setattr(methods, "solver", recording)
+    scene = str(Path(SCENE).with_name("partial_opening_exact.toml"))
+    run.run(scene, ["fe", "xfem"], tmp_path / "out", h=0.25, flux="reaction", draw=False)
+    assert ("fe", 2, "reaction") in asked and ("fe", 2, None) not in asked
+
+
+def test_summary_names_fes_flux_of_an_exact_law(tmp_path):
+    """summary.md's law line says fe solved with the reaction flux (its
+    answer then does not move with the β it names); with the default flux,
+    or a penalty law, which reads no flux, it says nothing of a flux."""
+    from verification import run
+    exact = str(Path(SCENE).with_name("partial_opening_exact.toml"))
+    said = {(scene, flux): "flux" in run.run(scene, ["fe"], tmp_path / f"{len(scene)}{flux}", h=0.25, flux=flux,
+                                             draw=False).split("\n\n")[2]
+            for scene, flux in ((exact, "reaction"), (exact, None), ("A", "reaction"))}
+    assert said == {(exact, "reaction"): True, (exact, None): False, ("A", "reaction"): False}
+
+
+def test_the_ties_refusal_offers_the_default_flux():
+    """Where the unilateral law has no consistent open/closed map with the
+    reaction flux (which has no partial search), the refusal offers the
+    default flux, whose partial search may settle it (scene C made exact
+    unilateral, fe P1, h = 0.05: refused with the reaction, solved with the
+    default flux, 2026-11-30); the default flux's refusal does not."""
+    from contactcore import SolverError
+    from contactcore.newton.refusals import NODAL_TIE_HINT
+    base = load_scene(str(Path(__file__).resolve().parent / "scenes" / "shear_unilateral.toml"))
+    scene = base.with_changes(law=make_law({"type": "unilateral", "enforcement": "exact"}))
+    said = {}
+    for flux in ("reaction", "stress"):
+        with pytest.raises(SolverError) as err:
+            discretisation.solve(scene, FE(flux=flux), 0.1)
+        said[flux] = NODAL_TIE_HINT in str(err.value)
+    assert said == {"reaction": True, "stress": False}

@@ -94,7 +94,7 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
         methods.check_solvable(chosen, scene, hk, degree, paper, nodes=nodes, **given)
     if compared:
         as_reference(reference, "compare the methods", methods.check_solvable, [reference[0]], scene, finest,
-                     reference[1], paper, petsc_options=petsc_options or None)
+                     reference[1], paper, petsc_options=petsc_options or None, flux=flux)
     out = Path(out)
     profiles, summaries, paths, estimated, gaps, statuses = {}, [], {}, {}, {}, {}
     for name in chosen:
@@ -108,7 +108,8 @@ def run(scene_name, method_names: list[str], out: Path, *, h=None, degree=1, pap
         summaries += [exact_row] if exact_row else []
     ref = reference_label(reference)
     if compared and profiles and ref not in {label for by_label in profiles.values() for label in by_label}:
-        solve_reference(scene, reference, finest, paper, petsc_options or None, out, profiles, summaries, statuses)
+        solve_reference(scene, reference, finest, paper, petsc_options or None, out, profiles, summaries, statuses,
+                        flux)
     text = write_summary(out, scene, summaries, profiles, paths, estimated, ref, draw, gaps, floors, statuses)
     files.write_text(out / files.SCENE_FILE, scene_text(scene_name))
     files.write_json(out / "run.json", {**files.provenance(list(argv)),

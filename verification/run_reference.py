@@ -38,16 +38,17 @@ def reference_label(reference: tuple[str, int] | None) -> str | None:
 
 
 def solve_reference(scene, reference, h, paper, petsc_options, out: Path, profiles: dict, summaries: list,
-                    statuses: dict) -> None:
+                    statuses: dict, flux: str | None = None) -> None:
     """Solve the ``reference`` run (method, degree) at ``h`` (the finest
     run's, where an estimate solved several) when it is not one of them,
-    write its profiles under ``out/reference`` and add them to
+    with the runs' ``petsc_options`` and fe's ``flux`` (where its method
+    takes them), write its profiles under ``out/reference`` and add them to
     ``profiles`` and its summary to ``summaries``."""
     name, degree = reference
     log.info("scene %s: solving the %s", scene.name, reference_text(run_label(name, degree)))
     solve, on_comm = pool.solver(name) if pool.under_mpi_pool() else (methods.solver(name), {})
     result = as_reference(reference, "the methods asked for solved: compare them", solve, scene, h, degree=degree,
-                          paper=paper, **methods.options_for(name, petsc_options=petsc_options), **on_comm)
+                          paper=paper, **methods.options_for(name, petsc_options=petsc_options, flux=flux), **on_comm)
     summaries.append({**result.summary(), "label": reference_text(run_label(name, degree))})
     statuses[reference_label(reference)] = agreement.status_map(scene, result)
     for prof in sample_profiles(scene, result.fields, result.interface):

@@ -38,7 +38,7 @@ def write_summary(out: Path, scene: Scene, summaries: list[dict], profiles: dict
                            scene.units, left_out, table.sizes(pid) if table else None)
     compared = agreement_section(table)
     text = (f"# Scene {plots.heading(scene.name, scene.title)}\n\n" + conventions(scene.units, files.ranks())
-            + law_line(scene) + _summary_table(summaries, scene.units.length) + compared)
+            + law_line(scene, summaries) + _summary_table(summaries, scene.units.length) + compared)
     if compared and not estimated:
         text += UNESTIMATED_AGREEMENT
     if len(estimated) > 1:
@@ -169,15 +169,21 @@ def conventions(units, ranks: int = 1) -> str:
             f"stresses are tension positive (docs/scenes.md).{parallel}\n\n")
 
 
-def law_line(scene: Scene) -> str:
+def law_line(scene: Scene, summaries: list[dict] = ()) -> str:
     """``summary.md``'s line naming Γ's law, its enforcement and its
     parameters as the scene gives them (springs in stress/length, β a
-    multiple of the method's γ₀: docs/contact-enforcement.md)."""
+    multiple of the method's γ₀: docs/contact-enforcement.md) and, for an
+    exact law that fe solved with ``flux = "reaction"`` (one of the
+    ``summaries``' ``discretisation``), that fe's answer does not move with β."""
     law = scene.law
     values = ", ".join(f"{p} = {getattr(law, p):g}" for p in law.parameters
                        if isinstance(getattr(law, p, None), (int, float)))
     how = "exactly (Nitsche)" if law.enforcement == "exact" else "by its springs (penalty)"
-    return f"Γ's law: `{law.name}`, enforced {how}" + (f"; {values}" if values else "") + ".\n\n"
+    reaction = law.enforcement == "exact" and any(s.get("discretisation", {}).get("flux") == "reaction"
+                                                  for s in summaries)
+    flux = ("; fe's flux: each Γ node's reaction (`--flux reaction`), so fe's answer does not move with β"
+            if reaction else "")
+    return f"Γ's law: `{law.name}`, enforced {how}" + (f"; {values}" if values else "") + flux + ".\n\n"
 
 
 def agreement_table(scene: Scene, profiles: dict, reference: str | None = None, floors: dict | None = None,

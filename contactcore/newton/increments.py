@@ -151,6 +151,7 @@ class _Newton(_Continuation, _Iteration, _Correction, _Statuses, _LineSearch, _C
                 failures.append(f"step {start:g} → {k:g}: {exc}")
                 rest = rest if depth else self._from_rest(start, k)
                 if depth >= tol.MAX_CUTBACKS:
-                    raise _no_equilibrium(self.scene, n, depth, failures, rest) from None
+                    raise _no_equilibrium(self.scene, n, depth, failures, rest,
+                                          self.system.interface.load_flux is not None) from None
                 mid = (start + k) / 2
                 pending[:0] = [(mid, depth + 1), (k, depth + 1)]

@@ -84,7 +84,17 @@ def _material(scene) -> tuple[str, str]:
 _FREE_MAPS = "on maps whose slipping points alone held a body that nothing else holds"
 
 
-def _no_equilibrium(scene, n: int, depth: int, failures: list[str], from_rest: bool = False) -> SolverError:
+#: What the tie's refusal adds where fe's nodal reaction was the flux
+#: (``FE(flux="reaction")``, an interface with a ``load_flux``): that flux
+#: has no partial search (:mod:`contactcore.newton.partial`), the default has
+#: (scene C made exact unilateral, fe P1, h = 0.05: refused with the reaction,
+#: solved with the default flux and one partial point, 2026-11-30).
+NODAL_TIE_HINT = ('; or fe\'s default flux = "stress", whose partial search (docs/contact-enforcement.md, '
+                  '"The unilateral law under shear") flux = "reaction" lacks, may settle it')
+
+
+def _no_equilibrium(scene, n: int, depth: int, failures: list[str], from_rest: bool = False,
+                    nodal: bool = False) -> SolverError:
     """Two lines, the failed check first: the friction cone on Γ if the
     loads leave it (:func:`~contactcore.health.friction_demand`), a nearly
     incompressible material, the unilateral law's tie
@@ -97,6 +107,8 @@ def _no_equilibrium(scene, n: int, depth: int, failures: list[str], from_rest: b
     the cut-backs, which always reach MAX_CUTBACKS, or the remedies.
     More increments are not offered for an increment that starts
     ``from_rest`` (:meth:`~contactcore.newton.increments._Newton._from_rest`).
+    With fe's ``nodal`` reaction as flux the tie's line offers the default
+    flux (:data:`NODAL_TIE_HINT`).
     Every cut-back's full message is kept in the error's ``details``."""
     where = f"scene {scene.name}: increment {n} of {scene.increments}"
     once = scene.increments > 1 and not (scene.law.has_history or scene.law.is_linear or scene.follow_path)
@@ -104,6 +116,7 @@ def _no_equilibrium(scene, n: int, depth: int, failures: list[str], from_rest: b
     cut = f"failed after {depth} cut-backs (step 1/{2 ** depth})"
     demand, (material, remedy) = health.friction_demand(scene, float(n)), _material(scene)
     tie = not (demand or material) and health.tie_cause(scene, float(n), "\n".join(failures), from_rest)
+    tie = tie and tie + (NODAL_TIE_HINT if nodal else "")
     chosen = [f.split(": ", 1)[1] for f in failures if health.options_chose(f)]  # the options chose it
     if demand:
         error = SolverError(f"{where}: {demand}\n  ({cut}, as it must without equilibrium)")
