@@ -33,7 +33,6 @@ The history of a ``coulomb`` law is kept at Γ's Gauss points.
 """
 from __future__ import annotations
 
-import basix
 import numpy as np
 import ufl
 from dolfinx import fem
@@ -61,6 +60,7 @@ from .contact_system import GhostExchange, PETScSystem
 from .evaluation import BodyCellLocator, BodyFields
 from .fitted_mesh import FittedMesh, file_mesh, fitted_mesh
 from .nodal import nodal_interface
+from .reference_cells import ReferenceCells
 from .options import FE
 from .quiet import quiet_jit
 
@@ -135,7 +135,7 @@ def interface_operator(scene: Scene, fm: FittedMesh, V, degree: int, exchange: "
     ``x(X) = Σ ψ_g(X) x_g``, ``dΓ = |∂x/∂ξ| dξ`` on the reference facet, with
     ``INTERFACE_GAUSS[degree]`` Gauss points.
     """
-    ref = _Reference(fm, degree)
+    ref = ReferenceCells(fm, degree)
     xi, w_ref = gauss01(INTERFACE_GAUSS[degree])
     dofs = [[V.sub(b).sub(j).dofmap for j in range(2)] for b in range(2)]
     facets = fm.facets_tagged(meshes.INTERFACE)
@@ -145,12 +145,8 @@ def interface_operator(scene: Scene, fm: FittedMesh, V, degree: int, exchange: "
     points, weights, nitsche = [], [], []
     for i, f in enumerate(facets):
         c = ref.f2c.links(f)[0]
-        X = ref.facet_points(c, f, xi)
-        coords = ref.coords(c)
-        tab = ref.cmap.tabulate(1, X)
+        X, coords, tab, dx_dxi = ref.facet_map(c, f, xi)
         x = tab[0, :, :, 0] @ coords
-        edge = ref.edge(c, f)
-        dx_dxi = (tab[1, :, :, 0] * edge[0] + tab[2, :, :, 0] * edge[1]) @ coords
         N = ref.element.tabulate(0, X)[0, :, :, 0]
         normals = scene.interface.normals(x)
         frame = np.stack([normals, tangent_of(normals)], axis=1)  # rows n, t
@@ -188,57 +184,7 @@ def _mesh_normals(dx_dxi: np.ndarray, normals: np.ndarray) -> np.ndarray:
     return n * np.sign(np.sum(n * normals, axis=1))[:, None]
 
 
-class _Reference:
-    """The mesh's cells as basix sees them: the degree's P element, the
-    geometry map, the reference facets and the connectivity of Γ's facets."""
-
-    def __init__(self, fm: FittedMesh, degree: int):
-        msh = fm.mesh
-        tdim = msh.topology.dim
-        msh.topology.create_connectivity(tdim - 1, tdim)
-        msh.topology.create_connectivity(tdim, tdim - 1)
-        self.f2c, self.c2f = msh.topology.connectivity(tdim - 1, tdim), msh.topology.connectivity(tdim, tdim - 1)
-        cell = basix.CellType.triangle
-        self.element = basix.create_element(basix.ElementFamily.P, cell, degree, basix.LagrangeVariant.gll_warped)
-        gdeg = msh.ufl_domain().ufl_coordinate_element().degree()
-        self.cmap = basix.create_element(basix.ElementFamily.P, cell, gdeg, basix.LagrangeVariant.gll_warped)
-        self.ref, self.edges = basix.geometry(cell), basix.topology(cell)[1]
-        self.geom, self.xg = msh.geometry.dofmap, msh.geometry.x[:, :2]
-        # each cell's body by the mesher's tag (-1: untagged), not by where
-        # its centroid falls: a straight facet cuts inside a circular Γ by
-        # its sagitta, and in a ligament thinner than that the centroid of
-        # a cell outside Γ lies inside it (grader13 #5)
-        cells = msh.topology.index_map(tdim)
-        self.body = np.full(cells.size_local + cells.num_ghosts, -1, dtype=np.int64)
-        for b, name in enumerate(BODIES):
-            self.body[fm.cells_of(name)] = b
-
-    def coords(self, c: int) -> np.ndarray:
-        return self.xg[self.geom.links(c)]
-
-    def _ends(self, c: int, f: int) -> tuple[np.ndarray, np.ndarray]:
-        a, b = self.ref[self.edges[int(np.flatnonzero(self.c2f.links(c) == f)[0])]]
-        return a, b
-
-    def edge(self, c: int, f: int) -> np.ndarray:
-        a, b = self._ends(c, f)
-        return b - a
-
-    def facet_points(self, c: int, f: int, xi: np.ndarray) -> np.ndarray:
-        """Reference points of cell ``c`` at the parameters ``xi`` of facet ``f``."""
-        a, b = self._ends(c, f)
-        return a + xi[:, None] * (b - a)
-
-    def gradients(self, X: np.ndarray, coords: np.ndarray) -> np.ndarray:
-        """``∂N_a/∂x_i`` (cells, points, dofs, 2) of the P element in cells
-        of nodes ``coords`` (cells, nodes, 2) at the reference points ``X``."""
-        geo = self.cmap.tabulate(1, X)[1:, :, :, 0]  # (2, points, nodes): ∂ψ/∂X_k
-        J = np.einsum("kpg,cgi->cpik", geo, coords)  # ∂x_i/∂X_k
-        dN = self.element.tabulate(1, X)[1:, :, :, 0]  # (2, points, dofs)
-        return np.einsum("kpa,cpki->cpai", dN, np.linalg.inv(J))
-
-
-def _nitsche_rows(scene: Scene, ref: _Reference, dofs, xi: np.ndarray, facets: list, S: Triplets) -> np.ndarray:
+def _nitsche_rows(scene: Scene, ref: ReferenceCells, dofs, xi: np.ndarray, facets: list, S: Triplets) -> np.ndarray:
     """The rows of ``S`` of Γ's ``facets``, added to ``S``, and γ₀ at their
     points (parameters ``xi``; :class:`~contactcore.system.InterfaceOperator`);
     ``facets`` lists, in the rows' order, each facet's ``(f, x, frame, n,
@@ -310,7 +256,7 @@ def _nitsche_rows(scene: Scene, ref: _Reference, dofs, xi: np.ndarray, facets: l
     return np.repeat(2.0 * np.array([length for *_, length in facets]) / total, P)
 
 
-def _facet_sides(scene: Scene, ref: _Reference, f: int) -> tuple[np.ndarray, np.ndarray]:
+def _facet_sides(scene: Scene, ref: ReferenceCells, f: int) -> tuple[np.ndarray, np.ndarray]:
     """Facet ``f``'s two cells and the body each lies in (by the mesher's
     tag, else its centroid); DiscretisationError where this rank does not
     hold both or they are not the two bodies."""
@@ -464,7 +410,7 @@ def build(scene: Scene, options: FE, resolution: Resolution, timings: Timings) -
             loads.append(vec.getArray().copy())
             vec.destroy()
         reaction = exact and options.flux == "reaction"  # Γ's nodes, the reaction as flux (xdolfinx.nodal)
-        reader = (_Reference(fm, degree), INTERFACE_GAUSS[degree], _facet_sides) if reaction else None
+        reader = (ReferenceCells(fm, degree), INTERFACE_GAUSS[degree], _facet_sides) if reaction else None
         interface, work = (nodal_interface(scene, fm, V, reader, exchange, K, cons.constraints().dofs) if reaction
                            else (interface_operator(scene, fm, V, degree, exchange, exact), None))
         system = PETScSystem(K, loads, cons.constraints(), interface, comm=fm.mesh.comm, work=work,

@@ -44,20 +44,21 @@ from contactcore.system import InterfaceOperator
 from .options import PARALLEL_REFUSAL
 
 
-
 def nodal_interface(scene, fm, V, reader, exchange, K, fixed: np.ndarray):
     """``(interface, work)``: :func:`nodal_operator` and the matrix whose
     pattern holds its tangent beside ``K``'s (:func:`working_pattern`)."""
-    interface = nodal_operator(scene, fm, V, reader, exchange, K, fixed)
-    return interface, working_pattern(K, interface)
+    indptr, indices, values = K.getValuesCSR()
+    A = sp.csr_matrix((values, indices, indptr), shape=K.getSize())
+    interface = nodal_operator(scene, fm, V, reader, exchange, A, fixed)
+    return interface, working_pattern(A, interface)
 
 
-def nodal_operator(scene, fm, V, reader, exchange, K, fixed: np.ndarray) -> InterfaceOperator:
+def nodal_operator(scene, fm, V, reader, exchange, A: sp.csr_matrix, fixed: np.ndarray) -> InterfaceOperator:
     """Γ's nodes as Nitsche's points with the reaction flux (module doc):
     ``G``, ``w``, the nodes, ``S = L A``, γ₀ (each node's facets' γ₀,
-    weighted by their share of ``w_i``) and ``L``; ``K`` is the bulk's
-    assembled PETSc matrix, ``fixed`` the prescribed unknowns and
-    ``reader`` fe's ``(_Reference, Gauss points a facet, _facet_sides)``
+    weighted by their share of ``w_i``) and ``L``; ``A`` is the bulk's
+    assembled matrix (scipy CSR), ``fixed`` the prescribed unknowns and
+    ``reader`` fe's ``(ReferenceCells, Gauss points a facet, _facet_sides)``
     (:mod:`xdolfinx.conforming`)."""
     if exchange.ranks.parallel:
         raise DiscretisationError(PARALLEL_REFUSAL)
@@ -67,8 +68,6 @@ def nodal_operator(scene, fm, V, reader, exchange, K, fixed: np.ndarray) -> Inte
     normals = scene.interface.normals(x) if len(x) else np.zeros((0, 2))
     frames = np.stack([normals, tangent_of(normals)], axis=1)  # rows n, t, as interface_operator's
     G, L = _rows(scene, plus, minus, x, w, frames, fixed, exchange.local_size)
-    indptr, indices, values = K.getValuesCSR()
-    A = sp.csr_matrix((values, indices, indptr), shape=K.getSize())
     return InterfaceOperator(G, w, x, None, S=(L @ A).tocsr(), stabilisation=gamma0,
                              pieces=piece_centres(x, w, [1] * len(w)), load_flux=L)
 
@@ -83,11 +82,7 @@ def _gamma_nodes(scene, ref, V, facets: np.ndarray, gauss: int, sides):
     for f in facets:
         c = ref.f2c.links(f)[0]
         edge = int(np.flatnonzero(ref.c2f.links(c) == f)[0])
-        X = ref.facet_points(c, f, xi)
-        coords = ref.coords(c)
-        tab = ref.cmap.tabulate(1, X)
-        e = ref.edge(c, f)
-        dx_dxi = (tab[1, :, :, 0] * e[0] + tab[2, :, :, 0] * e[1]) @ coords
+        X, coords, _, dx_dxi = ref.facet_map(c, f, xi)
         d_gamma = w_ref * np.linalg.norm(dx_dxi, axis=1)
         N = ref.element.tabulate(0, X)[0, :, :, 0]
         cells, side = sides(scene, ref, f)
@@ -157,15 +152,14 @@ def _put(sink, row: int, cols, values) -> None:
             sink[2].append(float(v))
 
 
-def working_pattern(K, interface: InterfaceOperator):
-    """A PETSc matrix (one process) with ``K``'s pattern and every entry
+def working_pattern(A: sp.csr_matrix, interface: InterfaceOperator):
+    """A PETSc matrix (one process) with the bulk ``A``'s pattern and every entry
     the interface's tangent can reach (:meth:`~contactcore.system.InterfaceOperator.pattern`),
     values zero: the reaction's ``SᵀWΓ⁻¹S`` couples unknowns two cells
     apart, beyond ``K``'s pattern."""
     from petsc4py import PETSc
-    indptr, indices, values = K.getValuesCSR()
-    A = sp.csr_matrix((np.ones_like(values), indices, indptr), shape=K.getSize())
-    both = (abs(A) + abs(interface.pattern())).tocsr()
+    ones = sp.csr_matrix((np.ones_like(A.data), A.indices, A.indptr), shape=A.shape)
+    both = (ones + abs(interface.pattern())).tocsr()
     both.sort_indices()
     both.data[:] = 0.0
     return PETSc.Mat().createAIJ(both.shape, csr=(both.indptr.astype(PETSc.IntType),
