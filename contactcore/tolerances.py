@@ -1902,3 +1902,13 @@ XFEM_READ_LEAST_SHARE = 0.15
 #: rollers do, |cos| = 1 to round-off); a component along neither would
 #: carry its support's reaction into both rows, and is refused.
 REACTION_ALIGNMENT = 1e-9
+
+# --- nodalmpi42 (2026-11-30): fe's nodal reaction under mpirun (xdolfinx.gamma_partition) ---
+#: How many layers of cells around Γ one rank owns with flux = "reaction"
+#: under mpirun: layer 1 touches a Γ vertex, layer k + 1 shares a vertex
+#: with layer k.  Two is the least that keeps every dof of a layer-1 cell
+#: (the columns of a Γ node's row, and both sides of S's products)
+#: touched by that rank's cells only, so it owns their rows whole; a
+#: ghost cell of another rank shares a facet with one of its own, so it
+#: lies beyond layer 1 and holds no Γ node.
+REACTION_GAMMA_LAYERS = 2

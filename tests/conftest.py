@@ -131,7 +131,7 @@ LONG_FOR_THE_DEFAULT = {
     "tests/test_agreement.py::test_agrees_with_the_reference[C-coulomb-efgm-1]": 1.6,
     # 2026-11-30, seventh list: the default took 117.5 s (CI's fresh clone of 2c9fa78), 124.3 s and 115.6 s
     # wall quiet (223 s CPU, 2315 tests), after the day's new tests; each is a message, docs or example check
-    # with a sibling in the default (the agreement API's status-map failure, the flux's mpirun refusal, the
+    # with a sibling in the default (the agreement API's status-map failure, the unknown flux's refusal, the
     # other examples and the usage page's other tables), or pins a documented limit of the estimate
     "tests/test_nodal_reaction.py::test_the_ties_refusal_offers_the_default_flux": 8.0,
     "tests/test_docs.py::test_the_usage_page_names_every_file_run_writes": 3.1,

@@ -387,11 +387,13 @@ def build(scene: Scene, options: FE, resolution: Resolution, timings: Timings) -
     comm = MPI.COMM_WORLD if options.comm is None else options.comm
     jit = options.jit_params or {}
     given = options.mesh_file()
+    reaction = is_exact(scene.law) and options.flux == "reaction"  # Γ's nodes, the reaction as flux (xdolfinx.nodal)
     with timings.measure("mesh"):
         if given is None:
-            fm = fitted_mesh(scene, h, order=options.geometry_order or degree, grading=options.grading, comm=comm)
+            fm = fitted_mesh(scene, h, order=options.geometry_order or degree, grading=options.grading, comm=comm,
+                             gamma_on_one_rank=reaction)
         else:
-            fm = file_mesh(given, Scales.of(scene.user).to_dimensionless, comm=comm)
+            fm = file_mesh(given, Scales.of(scene.user).to_dimensionless, comm=comm, gamma_on_one_rank=reaction)
     with timings.measure("assembly"):
         el = ufl.VectorElement("Lagrange", fm.mesh.ufl_cell(), degree)
         V = fem.FunctionSpace(fm.mesh, ufl.MixedElement([el, el]))
@@ -409,7 +411,6 @@ def build(scene: Scene, options: FE, resolution: Resolution, timings: Timings) -
             vec.ghostUpdate(addv=PETSc.InsertMode.ADD, mode=PETSc.ScatterMode.REVERSE)
             loads.append(vec.getArray().copy())
             vec.destroy()
-        reaction = exact and options.flux == "reaction"  # Γ's nodes, the reaction as flux (xdolfinx.nodal)
         reader = (ReferenceCells(fm, degree), INTERFACE_GAUSS[degree], _facet_sides) if reaction else None
         interface, work = (nodal_interface(scene, fm, V, reader, exchange, K, cons.constraints().dofs) if reaction
                            else (interface_operator(scene, fm, V, degree, exchange, exact), None))

@@ -23,10 +23,14 @@ answer does not move with β.  A component prescribed on both sides (a
 support at Γ's end) is dropped from the law: its frame row, which must be
 Γ's normal or tangent there, has ``G`` and ``L`` rows of zero.
 
-One process only: a node's reaction is its assembled rows of ``A`` and
-``b``, which under mpirun its partner node's rank need not hold
-(:data:`~xdolfinx.options.PARALLEL_REFUSAL`, refused by
-:meth:`~xdolfinx.options.FE.check` before any mesh, and here again).
+Under mpirun a node's reaction needs its assembled rows of ``A`` and
+``b`` for both bodies, and ``SᵀWΓ⁻¹S`` couples unknowns two cells apart:
+fe's mesh then keeps every cell within two layers of Γ on one rank
+(:mod:`xdolfinx.gamma_partition`), which owns every Γ node's rows and
+each of their columns, so ``S``, ``L`` and the tangent sit in its owned
+rows and columns (local numbering, as the Gauss-point interface's); the
+other ranks hold no Γ node.  A Γ node's row that is not owned whole is
+refused (:data:`NOT_ON_ONE_RANK`).
 """
 from __future__ import annotations
 
@@ -41,35 +45,79 @@ from contactcore.geometry import polygon_area, tangent_of
 from contactcore.interface_path import piece_centres
 from contactcore.system import InterfaceOperator
 
-from .options import PARALLEL_REFUSAL
+#: Why a Γ node's reaction cannot be read on its rank (the partition of
+#: :mod:`xdolfinx.gamma_partition` was not taken: a mesh not made by
+#: :func:`xdolfinx.fitted_mesh.fitted_mesh` or ``file_mesh`` with it).
+NOT_ON_ONE_RANK = ('fe: flux = "reaction": a Γ node\'s assembled row is not held whole by the rank of its node '
+                   '(the mesh must keep the cells within two layers of Γ on one rank)')
 
 
 def nodal_interface(scene, fm, V, reader, exchange, K, fixed: np.ndarray):
     """``(interface, work)``: :func:`nodal_operator` and the matrix whose
-    pattern holds its tangent beside ``K``'s (:func:`working_pattern`)."""
+    pattern holds its tangent beside ``K``'s (:func:`working_pattern`).
+    ``K``'s owned rows are read with their global columns, and the
+    local-to-global map of its local numbering (owned, then ghosts)."""
     indptr, indices, values = K.getValuesCSR()
-    A = sp.csr_matrix((values, indices, indptr), shape=K.getSize())
-    interface = nodal_operator(scene, fm, V, reader, exchange, A, fixed)
-    return interface, working_pattern(A, interface)
+    owned = sp.csr_matrix((values, indices, indptr), shape=(K.getLocalSize()[0], K.getSize()[1]))
+    l2g = _local_to_global(K, exchange.local_size)
+    interface = nodal_operator(scene, fm, V, reader, exchange, owned, l2g, fixed)
+    return interface, working_pattern(K, owned, l2g, interface)
 
 
-def nodal_operator(scene, fm, V, reader, exchange, A: sp.csr_matrix, fixed: np.ndarray) -> InterfaceOperator:
+def nodal_operator(scene, fm, V, reader, exchange, owned: sp.csr_matrix, l2g: np.ndarray,
+                   fixed: np.ndarray) -> InterfaceOperator:
     """Γ's nodes as Nitsche's points with the reaction flux (module doc):
     ``G``, ``w``, the nodes, ``S = L A``, γ₀ (each node's facets' γ₀,
-    weighted by their share of ``w_i``) and ``L``; ``A`` is the bulk's
-    assembled matrix (scipy CSR), ``fixed`` the prescribed unknowns and
-    ``reader`` fe's ``(ReferenceCells, Gauss points a facet, _facet_sides)``
+    weighted by their share of ``w_i``) and ``L``, columns in the local
+    numbering; ``owned`` is the bulk's assembled matrix, this rank's rows
+    with global columns (scipy CSR), ``l2g`` the local numbering's global
+    indices, ``fixed`` the prescribed unknowns and ``reader`` fe's
+    ``(ReferenceCells, Gauss points a facet, _facet_sides)``
     (:mod:`xdolfinx.conforming`)."""
-    if exchange.ranks.parallel:
-        raise DiscretisationError(PARALLEL_REFUSAL)
     ref, gauss, sides = reader
     nodes = _gamma_nodes(scene, ref, V, fm.facets_tagged(meshes.INTERFACE), gauss, sides)
     plus, minus, x, w, gamma0 = nodes
     normals = scene.interface.normals(x) if len(x) else np.zeros((0, 2))
     frames = np.stack([normals, tangent_of(normals)], axis=1)  # rows n, t, as interface_operator's
     G, L = _rows(scene, plus, minus, x, w, frames, fixed, exchange.local_size)
-    return InterfaceOperator(G, w, x, None, S=(L @ A).tocsr(), stabilisation=gamma0,
-                             pieces=piece_centres(x, w, [1] * len(w)), load_flux=L)
+    A = _reaction_rows(owned, l2g, L)
+    return InterfaceOperator(G, w, x, exchange if exchange.ranks.parallel else None, S=(L @ A).tocsr(),
+                             stabilisation=gamma0, pieces=piece_centres(x, w, [1] * len(w)), load_flux=L)
+
+
+def _local_to_global(K, local_size: int) -> np.ndarray:
+    """The global index of each local unknown (owned, then ghosts): ``K``'s
+    row map, which dolfinx sets; the identity where none is set."""
+    maps = K.getLGMap()[0]
+    return maps.getIndices().astype(np.int64) if maps.handle else np.arange(local_size, dtype=np.int64)
+
+
+def _reaction_rows(owned: sp.csr_matrix, l2g: np.ndarray, L: sp.csr_matrix) -> sp.csr_matrix:
+    """``A``'s rows that ``L`` reads (the Γ nodes'), in the local numbering
+    (``L``'s columns; the other rows empty, which ``L A`` never reads):
+    each must be owned and reach local unknowns only, else
+    :data:`NOT_ON_ONE_RANK`."""
+    rows = np.unique(L.indices)
+    if len(rows) and rows[-1] >= owned.shape[0]:
+        raise DiscretisationError(NOT_ON_ONE_RANK)
+    taken = owned[rows]
+    columns = _local_columns(taken.indices, l2g)
+    counts = np.zeros(L.shape[1], np.int64)
+    counts[rows] = np.diff(taken.indptr)
+    indptr = np.concatenate([[0], np.cumsum(counts)])
+    return sp.csr_matrix((taken.data, columns, indptr), shape=(L.shape[1], L.shape[1]))
+
+
+def _local_columns(columns: np.ndarray, l2g: np.ndarray) -> np.ndarray:
+    """The local index of each global ``columns``; :data:`NOT_ON_ONE_RANK`
+    where one is not local."""
+    order = np.argsort(l2g)
+    at = np.searchsorted(l2g, columns, sorter=order)
+    found = at < len(order)
+    found[found] = l2g[order[at[found]]] == columns[found]
+    if not found.all():
+        raise DiscretisationError(NOT_ON_ONE_RANK)
+    return order[at]
 
 
 def _gamma_nodes(scene, ref, V, facets: np.ndarray, gauss: int, sides):
@@ -152,16 +200,21 @@ def _put(sink, row: int, cols, values) -> None:
             sink[2].append(float(v))
 
 
-def working_pattern(A: sp.csr_matrix, interface: InterfaceOperator):
-    """A PETSc matrix (one process) with the bulk ``A``'s pattern and every entry
-    the interface's tangent can reach (:meth:`~contactcore.system.InterfaceOperator.pattern`),
-    values zero: the reaction's ``SᵀWΓ⁻¹S`` couples unknowns two cells
-    apart, beyond ``K``'s pattern."""
+def working_pattern(K, owned: sp.csr_matrix, l2g: np.ndarray, interface: InterfaceOperator):
+    """A PETSc matrix distributed as ``K`` with the bulk's pattern (its
+    ``owned`` rows, global columns) and every entry the interface's
+    tangent can reach (:meth:`~contactcore.system.InterfaceOperator.pattern`,
+    local numbering ``l2g``; owned rows only, module doc), values zero:
+    the reaction's ``SᵀWΓ⁻¹S`` couples unknowns two cells apart, beyond
+    ``K``'s pattern."""
     from petsc4py import PETSc
-    ones = sp.csr_matrix((np.ones_like(A.data), A.indices, A.indptr), shape=A.shape)
-    both = (ones + abs(interface.pattern())).tocsr()
+    ones = sp.csr_matrix((np.ones_like(owned.data), owned.indices, owned.indptr), shape=owned.shape)
+    reach = interface.pattern().tocoo()
+    if np.any(reach.row >= owned.shape[0]):
+        raise DiscretisationError(NOT_ON_ONE_RANK)
+    both = (ones + sp.csr_matrix((np.abs(reach.data), (reach.row, l2g[reach.col])), shape=owned.shape)).tocsr()
     both.sort_indices()
     both.data[:] = 0.0
-    return PETSc.Mat().createAIJ(both.shape, csr=(both.indptr.astype(PETSc.IntType),
-                                                   both.indices.astype(PETSc.IntType), both.data),
-                                 comm=PETSc.COMM_SELF)
+    sizes = (K.getLocalSize()[0], K.getSize()[0]), (K.getLocalSize()[1], K.getSize()[1])
+    return PETSc.Mat().createAIJ(sizes, csr=(both.indptr.astype(PETSc.IntType), both.indices.astype(PETSc.IntType),
+                                             both.data), comm=K.getComm())

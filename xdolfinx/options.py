@@ -20,12 +20,9 @@ XFEM_CELLS = ("quad", "triangle", "gmsh")
 #: fe's flux of an exactly enforced law (Nitsche's consistent traction τ):
 #: ``"stress"`` the cells' weighted-average stress at Γ's Gauss points,
 #: ``"reaction"`` the nodal reaction at Γ's nodes (xdolfinx.nodal), whose
-#: answer is the node-to-node multipliers' at every β (serial only).
+#: answer is the node-to-node multipliers' at every β (under mpirun the
+#: cells within two layers of Γ on one rank, xdolfinx.gamma_partition).
 FE_FLUXES = ("stress", "reaction")
-
-#: Why fe's nodal reaction is refused under mpirun (one line, docs/usage.md).
-PARALLEL_REFUSAL = ('fe: flux = "reaction" runs on one process only (a Γ node\'s reaction reads its assembled rows '
-                    'of both bodies, which one rank need not hold): run it without mpirun, or use flux = "stress"')
 
 
 def refinement(reach: float) -> str:
@@ -56,8 +53,9 @@ class FE(Discretisation):
     ``flux`` (:data:`FE_FLUXES`): an exactly enforced law's Nitsche flux,
     ``"stress"`` (default: the cells' stress at Γ's Gauss points) or
     ``"reaction"`` (Nitsche's points at Γ's nodes and each node's reaction
-    as flux, :mod:`xdolfinx.nodal`: the answer does not move with β; one
-    process only; no part in a penalty law's answer)."""
+    as flux, :mod:`xdolfinx.nodal`: the answer does not move with β; under
+    mpirun the cells within two layers of Γ are kept on one rank,
+    :mod:`xdolfinx.gamma_partition`; no part in a penalty law's answer)."""
 
     degree: int = 1
     geometry_order: int | None = None
@@ -157,18 +155,6 @@ class FE(Discretisation):
         super().check(scene)
         if self.mesh is None:  # a given mesh is held to the scene by check_spacing instead
             check_fitted_thickness(scene)
-        self._check_flux(scene)
-
-    def _check_flux(self, scene) -> None:
-        """Refuse ``flux="reaction"`` for an exact law on more than one
-        process (:data:`PARALLEL_REFUSAL`), before any mesh is built."""
-        from contactcore.exact import is_exact
-        if self.flux != "reaction" or not is_exact(scene.law):
-            return
-        from mpi4py import MPI
-        if (MPI.COMM_WORLD if self.comm is None else self.comm).size > 1:
-            from contactcore import DiscretisationError
-            raise DiscretisationError(PARALLEL_REFUSAL)
 
 
 @dataclass(frozen=True)
