@@ -68,8 +68,9 @@ FLUXES = ("stress", "reaction")
 @dataclass(frozen=True)
 class MultiplierChain:
     """Γ's multiplier nodes: at arclength ``start + k·step`` (``count``
-    nodes; ``period`` Γ's length where it is closed, else None), ``origin``
-    and ``direction`` a straight Γ's, or ``centre`` and ``radius`` a circle's."""
+    nodes; ``period`` Γ's length where it is closed, else None); ``origin``
+    a straight Γ's point (a circle's centre), ``direction`` its tangent
+    (unread on a circle), ``radius`` a circle's (None on a line)."""
 
     start: float
     step: float

@@ -182,7 +182,7 @@ def law_line(scene: Scene, summaries: list[dict] = ()) -> str:
     reaction = list(dict.fromkeys(s["method"] for s in summaries if law.enforcement == "exact"
                                   and s.get("discretisation", {}).get("flux") == "reaction"))
     flux = (f"; {', '.join(reaction)} with the reaction flux (`--flux reaction`: fe's at Γ's nodes, xfem's and "
-            "efgm's at Γ's multiplier nodes), whose answer does not move with β" if reaction else "")
+            "efgm's at Γ's multiplier nodes), whose answers do not move with β" if reaction else "")
     return f"Γ's law: `{law.name}`, enforced {how}" + (f"; {values}" if values else "") + flux + ".\n\n"
 
 
