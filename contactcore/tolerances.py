@@ -1912,3 +1912,34 @@ REACTION_ALIGNMENT = 1e-9
 #: ghost cell of another rank shares a facet with one of its own, so it
 #: lies beyond layer 1 and holds no Γ node.
 REACTION_GAMMA_LAYERS = 2
+
+# --- mortar42 (2026-11-30): xfem's and efgm's multiplier mesh on Γ and the least-squares reaction ---
+#: The spacing of Γ's multiplier nodes (contactcore.reaction_flux) in
+#: cells (xfem) or node spacings (efgm): H = MULTIPLIER_SPACING · h.
+#: Measured 2026-11-30 with xfem P1 and efgm P1 at h = 0.05 and 0.025
+#: (docs/contact-enforcement-log.md, "A multiplier mesh on Γ for xfem and
+#: efgm"): at 1 and 2 every β move is round-off (≤ 1.4e-12), and B_f B_fᵀ
+#: is well conditioned at both (its scaled smallest eigenvalue ≥ 1.3e-3 at
+#: 1); 1 is nearer fe P2's traction where it changes (C-coulomb's t_T
+#: 3.0e-2 of its largest at h = 0.025 against 6.3e-2 at 2; the tilted
+#: press's t_T 9.0e-2 against 1.5e-1) and no dearer (C-coulomb's xfem
+#: solve 3.1 s CPU against 3.9 s).  Below 1, xfem P1's jumps on a Γ along
+#: a node row cannot tell the multipliers apart (0.5 and 0.75 refused on
+#: scene A at h = 0.2).
+MULTIPLIER_SPACING = 1.0
+#: A row of B_f (a node's g_N or g_T read by the free unknowns) whose norm
+#: is below this share of the largest row's is a component held on both
+#: sides of Γ (a support at Γ's end): dropped from the law, its Ĝ and L
+#: rows zero.  Such a row is a structural zero (every column it reads is
+#: prescribed, so B_f holds none of them), so any small share tells it
+#: from a row partly held.
+REACTION_ROW_ZERO = 1e-12
+#: B_f B_fᵀ, scaled by its diagonal, is rank-deficient (multipliers the
+#: jumps cannot tell apart) where an eigenvalue is below this share of its
+#: largest: a deficiency gives round-off (|λ| ≤ 1.5e-13 measured with
+#: multipliers finer than xfem's nodes on Γ), while every solved case's
+#: smallest was ≥ 1.25e-3 (xfem P1, efgm P1 at h = 0.1, 0.05, 0.025 on
+#: C-coulomb, scene A, the tilted press and the self-weight block; ≥ 3.7e-3
+#: over 26 placements of Γ at 10°, 27° and 45° at h = 0.05, 2026-11-30):
+#: five decades from either.
+REACTION_RANK = 1e-8

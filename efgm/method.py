@@ -46,6 +46,7 @@ from contactcore.result import check_points
 from contactcore.scaling import Scales
 
 from contactcore.exact import is_exact
+from contactcore.reaction_flux import check_serial, multiplier_chain, multiplier_operator
 
 from . import distributed, sparse_solver, traction
 from .nodes import NodeSet, node_set, support_radii
@@ -327,6 +328,17 @@ class EFGMSystem(ContactSystem):
         self._tangent = None
 
 
+def reaction_interface(scene: Scene, system: EFGMSystem, h: float) -> InterfaceOperator:
+    """``system``'s interface at Γ's multiplier nodes (spacing
+    :data:`~contactcore.tolerances.MULTIPLIER_SPACING` ``h``) with the
+    least-squares reaction as flux (:mod:`contactcore.reaction_flux`):
+    ``R = A u − b`` of the saddle point, whose displacement rows hold the
+    supports' multipliers' reactions ``s Cᵀ μ`` and on whose multiplier
+    rows ``B`` is zero; every unknown is free."""
+    chain = multiplier_chain(scene.interface, scene.domain, tol.MULTIPLIER_SPACING * h, METHOD)
+    return multiplier_operator(system.interface, system.A, system.fixed, chain, METHOD)
+
+
 def widened(M: sp.csr_matrix | None, size: int) -> sp.csr_matrix | None:
     """``M`` with ``size`` columns (the multipliers' after the unknowns'), its entries shared."""
     return None if M is None else sp.csr_matrix((M.data, M.indices, M.indptr), shape=(M.shape[0], size))
@@ -377,17 +389,21 @@ def build(scene: Scene, options: EFGM, resolution: Resolution, timings: Timings)
         scale, what = max(m.E for m in scene.materials.values()), f"scene {scene.name} (efgm)"
         interface = InterfaceOperator(G.tocsr(), gam_w, gam_pts, S=S, stabilisation=gamma, pieces=pieces)
         if ranks.parallel:
+            check_serial(options.name, options.flux, scene.law, ranks.comm.size)
             system = distributed.DistributedEFGMSystem(K, constraints, loads, interface, scale, ranks,
                                                        options.estimate_condition, what)
         else:
             system = EFGMSystem(K, constraints, loads, interface, scale,
                                 np.vstack([approx.dof_points(), constraints.points]), 2 * mls.reach,
                                 options.estimate_condition, what)
+            if options.flux == "reaction" and is_exact(scene.law):  # Γ's multipliers, the reaction as flux
+                system.interface = reaction_interface(scene, system, ns.h)
     # the fields of the whole solution, on every rank (gathered: output only)
     return Built(system, lambda x: EFGMFields(scene, approx, ranks.gather(x)[:approx.ndofs]), approx.ndofs, h=ns.h,
                  warnings=_dilation_warnings(degree, dmax, options.gauss is None, n) + _cell_warnings(ns, radii, n),
                  record={"h": ns.h, "nodes": len(ns.x), "enriched_nodes": approx.enr.count, "dmax": dmax,
-                         "weight": options.weight, "support": options.support, "gauss": n, "basis_degree": degree})
+                         "weight": options.weight, "support": options.support, "gauss": n, "basis_degree": degree,
+                         "flux": options.flux})
 
 
 def _cell_warnings(ns: NodeSet, radii: np.ndarray, n: int) -> list[str]:

@@ -11,7 +11,9 @@ from typing import ClassVar
 from contactcore import health
 from contactcore import tolerances as tol
 from contactcore.discretisation import Discretisation, Resolution, check_choice, check_degree
+from contactcore.collective import launched_size
 from contactcore.labels import run_label
+from contactcore.reaction_flux import FLUXES, check_serial
 
 #: The MLS bases by name (``--basis``) and their degree.
 BASES = {"linear": 1, "quadratic": 2}
@@ -33,7 +35,12 @@ class EFGM(Discretisation):
     condition estimate only with ``estimate_condition``; ``comm`` the
     mpi4py communicator to spread the work over (default: ``COMM_WORLD``
     when mpirun started several ranks, else one process without MPI;
-    :mod:`efgm.distributed`)."""
+    :mod:`efgm.distributed`); ``flux``
+    (:data:`~contactcore.reaction_flux.FLUXES`) an exactly enforced law's
+    Nitsche flux, ``"stress"`` (default: the MLS stress at Γ's Gauss
+    points) or ``"reaction"`` (a multiplier mesh on Γ and the
+    least-squares reaction, :mod:`contactcore.reaction_flux`: the answer
+    does not move with β; one process only)."""
 
     degree: int = 1
     basis: str | None = None
@@ -44,6 +51,7 @@ class EFGM(Discretisation):
     gauss: int | None = None
     estimate_condition: bool = False
     comm: object = None
+    flux: str = "stress"
 
     name: ClassVar[str] = "efgm"
     module: ClassVar[str] = "efgm.method"
@@ -112,6 +120,16 @@ class EFGM(Discretisation):
         check_degree(self.name, self.degree)
         check_choice(self.name, "weight", self.weight, WEIGHT_NAMES)
         check_choice(self.name, "support", self.support, SUPPORTS)
+        check_choice(self.name, "flux", self.flux, FLUXES)
+
+    def check(self, scene) -> None:
+        """Refuse ``flux="reaction"`` of an exact law on more than one
+        process (:func:`~contactcore.reaction_flux.check_serial`; ``comm``'s
+        ranks, else mpirun's, read without importing MPI), before any node
+        set is built."""
+        super().check(scene)
+        ranks = launched_size() if self.comm is None else self.comm.size
+        check_serial(self.name, self.flux, scene.law, ranks)
 
     def resolution(self, scene, h, paper):
         """Given ``nodes`` fix the spacing themselves; otherwise the one rule."""

@@ -1904,3 +1904,21 @@ NODAL_P1_ERROR_RATIO = 1.1
 #: round-off (measured 4.0e-14 of the scale with the reaction flux,
 #: 5.0e-14 with the default, 2026-11-30).
 NODAL_P2_CLOSED_ERROR = 1e-10
+
+# --- mortar42 (2026-11-30): xfem's and efgm's multiplier mesh and least-squares reaction (tests/test_reaction_flux.py) ---
+#: How far xfem P1's and efgm P1's answers with flux = "reaction" may move
+#: between β = 0.3 and 30, as a share of its family's scale (as
+#: NODAL_BETA_ROUNDOFF): at the multipliers' answer the flux is the
+#: multiplier for every γ, so only round-off moves it.  Measured at h = 0.1
+#: on the block and the stick-slip scene: xfem 1.4e-14 and 4.0e-14, efgm
+#: 2.6e-14 and 1.2e-13 (2026-11-30).
+REACTION_FLUX_BETA_ROUNDOFF = 1e-10
+#: The least β move of the default flux on tests/scenes/stick_slip_crossing.toml
+#: at h = 0.1, so that the check above can fail: measured xfem 6.6e-2,
+#: efgm 6.7e-2 (on the block 5.4e-4 and 6.0e-3).
+REACTION_FLUX_DEFAULT_BETA_MOVE = 1e-3
+#: The reaction flux's error against the block's closed form over the
+#: default flux's, xfem P1 and efgm P1 at h = 0.1 and β = 0.3: measured
+#: 0.986 (xfem: 1.269e-3 against 1.287e-3) and 1.001 (efgm: 1.418e-2
+#: against 1.417e-2, EFGM P1's own error in σyy), 2026-11-30.
+REACTION_FLUX_CLOSED_RATIO = 1.1

@@ -173,16 +173,16 @@ def law_line(scene: Scene, summaries: list[dict] = ()) -> str:
     """``summary.md``'s line naming Γ's law, its enforcement and its
     parameters as the scene gives them (springs in stress/length, β a
     multiple of the method's γ₀: docs/contact-enforcement.md) and, for an
-    exact law that fe solved with ``flux = "reaction"`` (one of the
-    ``summaries``' ``discretisation``), that fe's answer does not move with β."""
+    exact law that a method solved with ``flux = "reaction"`` (the
+    ``summaries``' ``discretisation``), that its answer does not move with β."""
     law = scene.law
     values = ", ".join(f"{p} = {getattr(law, p):g}" for p in law.parameters
                        if isinstance(getattr(law, p, None), (int, float)))
     how = "exactly (Nitsche)" if law.enforcement == "exact" else "by its springs (penalty)"
-    reaction = law.enforcement == "exact" and any(s.get("discretisation", {}).get("flux") == "reaction"
-                                                  for s in summaries)
-    flux = ("; fe's flux: each Γ node's reaction (`--flux reaction`), so fe's answer does not move with β"
-            if reaction else "")
+    reaction = list(dict.fromkeys(s["method"] for s in summaries if law.enforcement == "exact"
+                                  and s.get("discretisation", {}).get("flux") == "reaction"))
+    flux = (f"; {', '.join(reaction)} with the reaction flux (`--flux reaction`: fe's at Γ's nodes, xfem's and "
+            "efgm's at Γ's multiplier nodes), whose answers do not move with β" if reaction else "")
     return f"Γ's law: `{law.name}`, enforced {how}" + (f"; {values}" if values else "") + flux + ".\n\n"
 
 

@@ -12,6 +12,7 @@ from typing import ClassVar
 from contactcore import tolerances as _tol
 from contactcore.bodies import symbol_of
 from contactcore.discretisation import Discretisation, check_choice, check_degree
+from contactcore.reaction_flux import FLUXES, check_serial
 
 #: The background cells of XFEM: structured quadrilaterals (the paper's),
 #: structured triangles, or gmsh triangles (used for a disc).
@@ -161,12 +162,17 @@ class FE(Discretisation):
 class XFEM(Discretisation):
     """Heaviside-enriched P``degree`` (:mod:`xdolfinx.xfem`) on a mesh that
     ignores Γ, of ``cell`` (:data:`XFEM_CELLS`); ``gauss`` points per
-    direction of a cut cell's sub-cells (default by degree); the rest as
-    :class:`FE`."""
+    direction of a cut cell's sub-cells (default by degree); ``flux``
+    (:data:`~contactcore.reaction_flux.FLUXES`) an exactly enforced law's
+    Nitsche flux, ``"stress"`` (default: the cut cells' stress at Γ's
+    Gauss points) or ``"reaction"`` (a multiplier mesh on Γ and the
+    least-squares reaction, :mod:`contactcore.reaction_flux`: the answer
+    does not move with β; one process only); the rest as :class:`FE`."""
 
     degree: int = 1
     cell: str = "quad"
     gauss: int | None = None
+    flux: str = "stress"
     petsc_options: dict | None = None
     estimate_condition: bool = False
     comm: object = None
@@ -187,6 +193,16 @@ class XFEM(Discretisation):
     def __post_init__(self):
         check_degree(self.name, self.degree)
         check_choice(self.name, "cell", self.cell, XFEM_CELLS)
+        check_choice(self.name, "flux", self.flux, FLUXES)
+
+    def check(self, scene) -> None:
+        """Refuse ``flux="reaction"`` of an exact law on more than one
+        process (:func:`~contactcore.reaction_flux.check_serial`), before
+        any mesh is built."""
+        super().check(scene)
+        if self.flux == "reaction":
+            from mpi4py import MPI
+            check_serial(self.name, self.flux, scene.law, (MPI.COMM_WORLD if self.comm is None else self.comm).size)
 
     @property
     def recovered_stress(self) -> bool:

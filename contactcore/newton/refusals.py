@@ -84,12 +84,13 @@ def _material(scene) -> tuple[str, str]:
 _FREE_MAPS = "on maps whose slipping points alone held a body that nothing else holds"
 
 
-#: What the tie's refusal adds where fe's nodal reaction was the flux
-#: (``FE(flux="reaction")``, an interface with a ``load_flux``): that flux
-#: has no partial search (:mod:`contactcore.newton.partial`), the default has
-#: (scene C made exact unilateral, fe P1, h = 0.05: refused with the reaction,
-#: solved with the default flux and one partial point, 2026-11-30).
-NODAL_TIE_HINT = ('; or fe\'s default flux = "stress", whose partial search (docs/contact-enforcement.md, '
+#: What the tie's refusal adds where a reaction was the flux (fe's nodal
+#: reaction or xfem's and efgm's least-squares one, ``flux="reaction"``: an
+#: interface with a ``load_flux``): that flux has no partial search
+#: (:mod:`contactcore.newton.partial`), the default has (scene C made exact
+#: unilateral, fe P1, h = 0.05: refused with the reaction, solved with the
+#: default flux and one partial point, 2026-11-30).
+NODAL_TIE_HINT = ('; or the default flux = "stress", whose partial search (docs/contact-enforcement.md, '
                   '"The unilateral law under shear") flux = "reaction" lacks, may settle it')
 
 
@@ -107,7 +108,7 @@ def _no_equilibrium(scene, n: int, depth: int, failures: list[str], from_rest: b
     the cut-backs, which always reach MAX_CUTBACKS, or the remedies.
     More increments are not offered for an increment that starts
     ``from_rest`` (:meth:`~contactcore.newton.increments._Newton._from_rest`).
-    With fe's ``nodal`` reaction as flux the tie's line offers the default
+    With a reaction as flux (``nodal``) the tie's line offers the default
     flux (:data:`NODAL_TIE_HINT`).
     Every cut-back's full message is kept in the error's ``details``."""
     where = f"scene {scene.name}: increment {n} of {scene.increments}"

@@ -14,7 +14,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable
 
-from xdolfinx.options import FE_FLUXES, XFEM_CELLS
+from contactcore.reaction_flux import FLUXES
+from xdolfinx.options import XFEM_CELLS
 
 from .. import methods
 from ..pool import DEFAULT_WORKERS
@@ -106,10 +107,11 @@ def commands() -> dict[str, Command]:
                      "body_plus, interface and boundary_NAME of each boundary a support or load acts on, by name "
                      "(as `python -m meshes` writes them): checked against the scene before solving; h is its "
                      "largest cell diameter; with --method fe alone, without --h, --paper or --estimate"),
-            arg("--flux", choices=FE_FLUXES,
-                help="fe's Nitsche flux of an exactly enforced law: stress (default, the cells' stress at Γ's Gauss "
-                     "points) or reaction (Γ's nodes, each node's reaction: the answer does not move with β; "
-                     "one process only)"),
+            arg("--flux", choices=FLUXES,
+                help="the Nitsche flux of an exactly enforced law, for fe, xfem and efgm: stress (default, the "
+                     "cells' stress at Γ's Gauss points) or reaction (fe: Γ's nodes, each node's reaction; xfem, "
+                     "efgm: a multiplier mesh on Γ and the least-squares reaction: the answer does not move with "
+                     "β; xfem's and efgm's on one process only)"),
             arg("--no-plots", dest="draw", action="store_false", help="write no figures"),
             allow_large,
             arg("--estimate", type=int, nargs="?", const=2, choices=(2, 3), metavar="{2,3}",

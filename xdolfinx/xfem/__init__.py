@@ -34,6 +34,7 @@ from contactcore import Result, Scene, Timings
 from contactcore import discretisation
 from contactcore.constraints import Constraints
 from contactcore.discretisation import Built, Resolution, make
+from contactcore.exact import is_exact
 
 from ..contact_system import PETScSystem
 from ..options import XFEM
@@ -45,6 +46,7 @@ from .kernels import band_kernels, interface_operator, side_strains
 from .space import MIN_CUT_FRACTION, EnrichedFunctionSpace
 from .supports import support_rows
 from ..quiet import quiet_jit
+from ..reaction import reaction_interface
 from .traction import contrast_warnings, curved_stabilisation_warnings, with_traction
 
 METHOD = XFEM.name
@@ -74,24 +76,27 @@ def build(scene: Scene, options: XFEM, resolution: Resolution, timings: Timings)
     with timings.measure("assembly"):
         bulk, loads = forms(space, *tags(space))
         rows, values, owners = support_rows(space)
-        system = PETScSystem(stiffness_matrix(space, bulk), [load_vector(space, L, load) for L, load in zip(loads, scene.loads)],
-                             Constraints.on_dofs(rows, values, owners, space.cells.ranks),
-                             with_traction(interface_operator(space), space),
-                             comm=msh.comm, petsc_options=options.petsc_options,
+        K, constraints = stiffness_matrix(space, bulk), Constraints.on_dofs(rows, values, owners, space.cells.ranks)
+        interface, work = with_traction(interface_operator(space), space), None
+        if options.flux == "reaction" and is_exact(scene.law):  # Γ's multipliers, the reaction as flux
+            interface, work = reaction_interface(scene, K, constraints.dofs, interface, h, space.cells.ranks.parallel,
+                                                 options.name)
+        system = PETScSystem(K, [load_vector(space, L, load) for L, load in zip(loads, scene.loads)], constraints,
+                             interface, comm=msh.comm, work=work, petsc_options=options.petsc_options,
                              estimate_condition=options.estimate_condition, what=f"scene {scene.name} (xfem)")
     return Built(system, lambda x: XFEMFields(space, x), 2 * space.numbering.index_map.size_global, h=h,
                  warnings=space.cut.thin_body_warnings() + space.cells.snap_warnings() + contrast_warnings(scene, degree)
-                 + curved_stabilisation_warnings(scene, degree), record=_record(space, h, background_cell(scene, options.cell)))
+                 + curved_stabilisation_warnings(scene, degree), record=_record(space, h, background_cell(scene, options.cell), options.flux))
 
 
-def _record(space: EnrichedFunctionSpace, h: float, cell: str) -> dict:
-    """What ran, for the run's summary: the cells, the cut cells and the
-    enriched nodes over every rank."""
+def _record(space: EnrichedFunctionSpace, h: float, cell: str, flux: str) -> dict:
+    """What ran, for the run's summary: the cells, the cut cells, the
+    enriched nodes over every rank and the flux of an exact law."""
     ranks, owned = space.cells.ranks, space.cells.owned_cells
     return {"h": h, "cell": cell, "degree": space.degree,
             "cells": ranks.sum(owned), "cut_cells": ranks.sum(sum(c < owned for c in space.cut.regions)),
             "enriched_nodes": ranks.sum(int(np.count_nonzero(space.enriched[:space.cells.owned_nodes]))),
-            "gauss": space.cut.gauss}
+            "gauss": space.cut.gauss, "flux": flux}
 
 
 def solve(scene: Scene, h: float | None = None, *, paper: bool = False, progress=None, reuse=None,

@@ -1,0 +1,176 @@
+"""xfem's and efgm's β-free exact enforcement: a multiplier mesh on Γ and
+the least-squares reaction as Nitsche's flux (``XFEM(flux="reaction")``,
+``EFGM(flux="reaction")``; contactcore/reaction_flux.py,
+docs/contact-enforcement.md, "A β-free exact enforcement for xfem and efgm").
+
+On docs/scenes/self_weight_beta.toml (a block under its own weight, stuck
+on an exact Coulomb Γ at 10°, closed form σxx = 0, σxy = T,
+σyy = S0 + B(H − y)) and tests/scenes/stick_slip_crossing.toml (exact
+Coulomb, Γ partly sticking, partly slipping) the answer of xfem P1 and
+efgm P1 does not move with β, where the default flux's does; the block's
+closed form holds within the methods' discretisation error; under mpirun
+the option is refused before any mesh, in one line."""
+import functools
+from pathlib import Path
+from types import SimpleNamespace
+
+import numpy as np
+import pytest
+import scipy.sparse as sp
+
+import tolerances as tol
+from contactcore import DiscretisationError, discretisation, load_scene, make_law
+from contactcore.profiles import sample_profile
+from contactcore.reaction_flux import MultiplierChain, multiplier_operator, serial_refusal
+from contactcore.system import InterfaceOperator
+from efgm.options import EFGM
+from xdolfinx.options import XFEM
+
+ROOT = Path(__file__).resolve().parent.parent
+BLOCK = str(ROOT / "docs" / "scenes" / "self_weight_beta.toml")
+STICK_SLIP = str(ROOT / "tests" / "scenes" / "stick_slip_crossing.toml")
+METHODS = {"xfem": XFEM, "efgm": EFGM}
+H = 0.1
+#: the block's closed form: E, H, S0 (top pressure), T (shear), B (body force)
+E, HEIGHT, S0, T, B = 1e9, 1.0, -1e6, 4e5, -2e6
+DISPLACEMENTS = ("ux", "uy", "gN", "gT")
+
+
+def _closed(q, x, y):
+    """The block's closed form of quantity ``q`` at (x, y)."""
+    n = np.array([-np.sin(np.radians(10)), np.cos(np.radians(10))])
+    syy = S0 + B * (HEIGHT - y)
+    tx, ty = T * n[1] + 0 * x, T * n[0] + syy * n[1]
+    return {"ux": 2 * T / E * y, "uy": (S0 * y + B * (HEIGHT * y - y * y / 2)) / E, "syy": syy, "sxy": T + 0 * y,
+            "gN": 0 * y, "gT": 0 * y, "tN": n[0] * tx + n[1] * ty, "tT": n[1] * tx - n[0] * ty}[q]
+
+
+@functools.lru_cache(maxsize=None)
+def _profiles(path: str, method: str, flux: str, beta: float) -> dict:
+    """(profile id, quantity) -> (x, y, values) of the scene at ``path``
+    with its Coulomb law exact at ``beta``, at h = H."""
+    base = load_scene(path)
+    scene = base.with_changes(law=make_law({"type": "coulomb", "mu": base.law.mu, "enforcement": "exact",
+                                            "stabilisation": beta}))
+    result = discretisation.solve(scene, METHODS[method](degree=1, flux=flux), H)
+    out = {}
+    for p in scene.profiles:
+        c = sample_profile(scene, result.fields, p, result.interface).columns
+        out.update({(p.id, q): (np.asarray(c["x"]), np.asarray(c["y"]), np.asarray(c[q], float))
+                    for q in p.quantities})
+    return out
+
+
+def _scales(profiles: dict) -> dict:
+    """Each quantity's family scale: the largest |u| for displacements and
+    gaps, the largest |σ|, |t| for stresses and tractions."""
+    largest = {fam: max(np.max(np.abs(v)) for (_, q), (_, _, v) in profiles.items()
+                        if (q in DISPLACEMENTS) == fam) for fam in (True, False)}
+    return {k: largest[k[1] in DISPLACEMENTS] for k in profiles}
+
+
+def _beta_move(path: str, method: str, flux: str) -> float:
+    """The largest move of any profile value between β = 0.3 and 30, as a
+    share of its family's scale at β = 0.3."""
+    low, high = _profiles(path, method, flux, 0.3), _profiles(path, method, flux, 30.0)
+    scale = _scales(low)
+    return max(np.max(np.abs(high[k][2] - low[k][2])) / scale[k] for k in low)
+
+
+@pytest.mark.parametrize("path", (BLOCK, STICK_SLIP))
+@pytest.mark.parametrize("method", tuple(METHODS))
+def test_the_reaction_flux_does_not_move_with_beta(method, path):
+    """Every profile at β = 0.3 and 30 within REACTION_FLUX_BETA_ROUNDOFF."""
+    assert _beta_move(path, method, "reaction") <= tol.REACTION_FLUX_BETA_ROUNDOFF
+
+
+@pytest.mark.parametrize("method", tuple(METHODS))
+def test_the_default_flux_moves_with_beta(method):
+    """The check above can fail, and the default is the cells' stress as
+    before: it moves by more than REACTION_FLUX_DEFAULT_BETA_MOVE on the
+    stick-slip scene."""
+    assert _beta_move(STICK_SLIP, method, "stress") > tol.REACTION_FLUX_DEFAULT_BETA_MOVE
+
+
+def _closed_error(method: str, flux: str) -> float:
+    """The largest error of any profile value against the block's closed
+    form at β = 0.3, as a share of its family's largest exact value."""
+    got = _profiles(BLOCK, method, flux, 0.3)
+    exact = {k: _closed(k[1], x, y) for k, (x, y, _) in got.items()}
+    scale = _scales({k: (None, None, v) for k, v in exact.items()})
+    return max(np.max(np.abs(got[k][2] - exact[k])) / scale[k] for k in got)
+
+
+@pytest.mark.parametrize("method", tuple(METHODS))
+def test_the_reaction_flux_holds_the_closed_form(method):
+    """The block's closed form within the method's own error: no more than
+    REACTION_FLUX_CLOSED_RATIO times the default flux's, every profile."""
+    assert _closed_error(method, "reaction") <= tol.REACTION_FLUX_CLOSED_RATIO * _closed_error(method, "stress")
+
+
+@pytest.mark.parametrize("method", tuple(METHODS))
+def test_mpirun_is_refused_before_any_mesh(method):
+    """The method's own check (every driver's first) refuses the reaction
+    flux of an exact law on two processes in one line; a penalty law,
+    which reads no flux, and the default flux are not refused."""
+    exact, two = load_scene(BLOCK), SimpleNamespace(size=2)
+    with pytest.raises(DiscretisationError) as err:
+        METHODS[method](flux="reaction", comm=two).check(exact)
+    assert str(err.value) == serial_refusal(method) and "\n" not in str(err.value)
+    METHODS[method](flux="stress", comm=two).check(exact)
+    METHODS[method](flux="reaction", comm=two).check(
+        exact.with_changes(law=make_law({"type": "coulomb", "mu": 0.5, "kN": 1e10, "kT": 1e10})))
+
+
+@pytest.mark.parametrize("method", tuple(METHODS))
+def test_an_unknown_flux_is_refused(method):
+    """``flux`` is one of contactcore.reaction_flux.FLUXES."""
+    with pytest.raises(DiscretisationError, match="flux must be one of stress, reaction"):
+        METHODS[method](flux="nodal")
+
+
+def _two_node_chain(count: int):
+    """A straight Γ from (0, 0) to (1, 0) with ``count`` multiplier nodes,
+    and a Gauss-point operator on it: four points, each jump the linear
+    interpolation of two end pairs of unknowns (0, 1 at x = 0; 2, 3 at
+    x = 1) in (g_N, g_T)."""
+    x = np.array([0.125, 0.375, 0.625, 0.875])
+    G = np.zeros((8, 4))
+    for p, a in enumerate(x):
+        for c in range(2):
+            G[2 * p + c, c], G[2 * p + c, 2 + c] = 1.0 - a, a
+    operator = InterfaceOperator(sp.csr_matrix(G), np.full(4, 0.25), np.column_stack([x, 0 * x]),
+                                 stabilisation=np.ones(4))
+    chain = MultiplierChain(0.0, 1.0 / (count - 1), count, None, np.zeros(2), np.array([1.0, 0.0]))
+    return operator, chain, sp.identity(4, format="csr")
+
+
+def test_a_component_held_on_both_sides_leaves_the_law():
+    """A g_T row whose unknowns are all prescribed is dropped (Ĝ and L rows
+    zero), and on the rows kept L inverts −B_fᵀ: the flux of the
+    multipliers' answer is the multiplier."""
+    operator, chain, A = _two_node_chain(2)
+    held = multiplier_operator(operator, A, np.array([1, 3]), chain, "test")
+    assert np.all(held.G.toarray()[1::2] == 0.0) and np.all(held.load_flux.toarray()[1::2] == 0.0)
+    B = held.weights.repeat(2)[:, None] * held.G.toarray()
+    kept = B[0::2][:, [0, 2]]
+    assert np.allclose(held.load_flux.toarray()[0::2][:, [0, 2]] @ kept.T, -np.eye(2),
+                       atol=tol.REACTION_FLUX_BETA_ROUNDOFF)
+
+
+def test_undetermined_multipliers_are_refused_naming_a_node():
+    """Three multiplier nodes on jumps that hold two values per component
+    leave B_f B_fᵀ rank-deficient: refused, naming a node on Γ."""
+    operator, chain, A = _two_node_chain(3)
+    with pytest.raises(DiscretisationError, match=r'^test: flux = "reaction": the multipliers on Γ are not '
+                                                  r'determined near \((0|0\.5|1), 0\)'):
+        multiplier_operator(operator, A, np.zeros(0, int), chain, "test")
+
+
+def test_run_passes_the_flux_to_every_method():
+    """``run --flux reaction`` reaches xfem and efgm by the one path that
+    reaches fe (:func:`verification.methods.options_for`), and no method
+    refuses it as meaning nothing."""
+    from verification import methods
+    assert all(methods.options_for(m, flux="reaction") == {"flux": "reaction"} for m in methods.METHODS)
+    methods.check_options(list(methods.METHODS), flux="reaction")
