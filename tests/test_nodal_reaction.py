@@ -16,54 +16,24 @@ import pytest
 
 import tolerances as tol
 from contactcore import DiscretisationError, discretisation, load_scene, make_law
-from contactcore.profiles import sample_profile
+from self_weight_block import SCENE, closed_error, exact_profiles, scales
 from xdolfinx.options import FE
 
-SCENE = str(Path(__file__).resolve().parent.parent / "docs" / "scenes" / "self_weight_beta.toml")
 BETAS = (0.3, 3.0, 30.0)
 H = 0.05
-#: the block's closed form: E, H, S0 (top pressure), T (shear), B (body force)
-E, HEIGHT, S0, T, B = 1e9, 1.0, -1e6, 4e5, -2e6
-DISPLACEMENTS = ("ux", "uy", "gN", "gT")
-
-
-def _closed(q, x, y):
-    """The block's closed form of quantity ``q`` at (x, y)."""
-    n = np.array([-np.sin(np.radians(10)), np.cos(np.radians(10))])
-    syy = S0 + B * (HEIGHT - y)
-    tx, ty = T * n[1] + 0 * x, T * n[0] + syy * n[1]
-    return {"ux": 2 * T / E * y, "uy": (S0 * y + B * (HEIGHT * y - y * y / 2)) / E, "syy": syy, "sxy": T + 0 * y,
-            "gN": 0 * y, "gT": 0 * y, "tN": n[0] * tx + n[1] * ty, "tT": n[1] * tx - n[0] * ty}[q]
 
 
 @functools.lru_cache(maxsize=None)
 def _profiles(degree: int, flux: str, beta: float, h: float = H) -> dict:
     """(profile id, quantity) -> (x, y, values) of the block at ``beta``."""
-    base = load_scene(SCENE)
-    scene = base.with_changes(law=make_law({"type": "coulomb", "mu": base.law.mu, "enforcement": "exact",
-                                            "stabilisation": beta}))
-    result = discretisation.solve(scene, FE(degree=degree, flux=flux), h)
-    out = {}
-    for p in scene.profiles:
-        c = sample_profile(scene, result.fields, p, result.interface).columns
-        out.update({(p.id, q): (np.asarray(c["x"]), np.asarray(c["y"]), np.asarray(c[q], float))
-                    for q in p.quantities})
-    return out
-
-
-def _scales(profiles: dict) -> dict:
-    """Each quantity's family scale: the largest |u| for displacements and
-    gaps, the largest |σ|, |t| for stresses and tractions."""
-    largest = {fam: max(np.max(np.abs(v)) for (_, q), (_, _, v) in profiles.items()
-                        if (q in DISPLACEMENTS) == fam) for fam in (True, False)}
-    return {k: largest[k[1] in DISPLACEMENTS] for k in profiles}
+    return exact_profiles(SCENE, FE(degree=degree, flux=flux), beta, h)
 
 
 def _beta_move(degree: int, flux: str) -> float:
     """The largest move of any profile value, β = 0.3 or 30 against 3, as a
     share of its family's scale."""
     ref = _profiles(degree, flux, 3.0)
-    scale = _scales(ref)
+    scale = scales(ref)
     return max(np.max(np.abs(_profiles(degree, flux, b)[k][2] - ref[k][2])) / scale[k]
                for b in (0.3, 30.0) for k in ref)
 
@@ -83,10 +53,7 @@ def test_the_default_flux_moves_with_beta_in_p1():
 def _closed_error(degree: int, flux: str) -> float:
     """The largest error of any profile value against the closed form at
     β = 3, as a share of its family's largest exact value."""
-    got = _profiles(degree, flux, 3.0)
-    exact = {k: _closed(k[1], x, y) for k, (x, y, _) in got.items()}
-    scale = _scales({k: (None, None, v) for k, v in exact.items()})
-    return max(np.max(np.abs(got[k][2] - exact[k])) / scale[k] for k in got)
+    return closed_error(_profiles(degree, flux, 3.0))
 
 
 @pytest.mark.parametrize("degree, bound", ((1, tol.NODAL_P1_CLOSED_ERROR), (2, tol.NODAL_P2_CLOSED_ERROR)))

@@ -19,61 +19,31 @@ import pytest
 import scipy.sparse as sp
 
 import tolerances as tol
-from contactcore import DiscretisationError, discretisation, load_scene, make_law
-from contactcore.profiles import sample_profile
+from contactcore import DiscretisationError, load_scene, make_law
 from contactcore.reaction_flux import MultiplierChain, multiplier_operator, serial_refusal
 from contactcore.system import InterfaceOperator
 from efgm.options import EFGM
+from self_weight_block import SCENE as BLOCK, closed_error, exact_profiles, scales
 from xdolfinx.options import XFEM
 
 ROOT = Path(__file__).resolve().parent.parent
-BLOCK = str(ROOT / "docs" / "scenes" / "self_weight_beta.toml")
 STICK_SLIP = str(ROOT / "tests" / "scenes" / "stick_slip_crossing.toml")
 METHODS = {"xfem": XFEM, "efgm": EFGM}
 H = 0.1
-#: the block's closed form: E, H, S0 (top pressure), T (shear), B (body force)
-E, HEIGHT, S0, T, B = 1e9, 1.0, -1e6, 4e5, -2e6
-DISPLACEMENTS = ("ux", "uy", "gN", "gT")
-
-
-def _closed(q, x, y):
-    """The block's closed form of quantity ``q`` at (x, y)."""
-    n = np.array([-np.sin(np.radians(10)), np.cos(np.radians(10))])
-    syy = S0 + B * (HEIGHT - y)
-    tx, ty = T * n[1] + 0 * x, T * n[0] + syy * n[1]
-    return {"ux": 2 * T / E * y, "uy": (S0 * y + B * (HEIGHT * y - y * y / 2)) / E, "syy": syy, "sxy": T + 0 * y,
-            "gN": 0 * y, "gT": 0 * y, "tN": n[0] * tx + n[1] * ty, "tT": n[1] * tx - n[0] * ty}[q]
 
 
 @functools.lru_cache(maxsize=None)
 def _profiles(path: str, method: str, flux: str, beta: float) -> dict:
     """(profile id, quantity) -> (x, y, values) of the scene at ``path``
     with its Coulomb law exact at ``beta``, at h = H."""
-    base = load_scene(path)
-    scene = base.with_changes(law=make_law({"type": "coulomb", "mu": base.law.mu, "enforcement": "exact",
-                                            "stabilisation": beta}))
-    result = discretisation.solve(scene, METHODS[method](degree=1, flux=flux), H)
-    out = {}
-    for p in scene.profiles:
-        c = sample_profile(scene, result.fields, p, result.interface).columns
-        out.update({(p.id, q): (np.asarray(c["x"]), np.asarray(c["y"]), np.asarray(c[q], float))
-                    for q in p.quantities})
-    return out
-
-
-def _scales(profiles: dict) -> dict:
-    """Each quantity's family scale: the largest |u| for displacements and
-    gaps, the largest |σ|, |t| for stresses and tractions."""
-    largest = {fam: max(np.max(np.abs(v)) for (_, q), (_, _, v) in profiles.items()
-                        if (q in DISPLACEMENTS) == fam) for fam in (True, False)}
-    return {k: largest[k[1] in DISPLACEMENTS] for k in profiles}
+    return exact_profiles(path, METHODS[method](degree=1, flux=flux), beta, H)
 
 
 def _beta_move(path: str, method: str, flux: str) -> float:
     """The largest move of any profile value between β = 0.3 and 30, as a
     share of its family's scale at β = 0.3."""
     low, high = _profiles(path, method, flux, 0.3), _profiles(path, method, flux, 30.0)
-    scale = _scales(low)
+    scale = scales(low)
     return max(np.max(np.abs(high[k][2] - low[k][2])) / scale[k] for k in low)
 
 
@@ -95,10 +65,7 @@ def test_the_default_flux_moves_with_beta(method):
 def _closed_error(method: str, flux: str) -> float:
     """The largest error of any profile value against the block's closed
     form at β = 0.3, as a share of its family's largest exact value."""
-    got = _profiles(BLOCK, method, flux, 0.3)
-    exact = {k: _closed(k[1], x, y) for k, (x, y, _) in got.items()}
-    scale = _scales({k: (None, None, v) for k, v in exact.items()})
-    return max(np.max(np.abs(got[k][2] - exact[k])) / scale[k] for k in got)
+    return closed_error(_profiles(BLOCK, method, flux, 0.3))
 
 
 @pytest.mark.parametrize("method", tuple(METHODS))
