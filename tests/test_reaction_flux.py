@@ -168,3 +168,13 @@ def test_run_passes_the_flux_to_every_method():
     from verification import methods
     assert all(methods.options_for(m, flux="reaction") == {"flux": "reaction"} for m in methods.METHODS)
     methods.check_options(list(methods.METHODS), flux="reaction")
+
+
+def test_quadrilaterals_are_ghosted_across_their_facets():
+    """xfem's quadrilaterals (dolfinx's vertex order (0, 0), (1, 0), (0, 1),
+    (1, 1)) under the near-Γ partition: two sharing the facet (1, 4) are
+    ghosted on each other's rank; two sharing a vertex only are not."""
+    from xdolfinx.gamma_partition import _facet_ghosts
+    owners = np.array([0, 1])
+    assert _facet_ghosts(np.array([[0, 1, 3, 4], [1, 2, 4, 5]]), owners) == [[1], [0]]
+    assert _facet_ghosts(np.array([[0, 1, 3, 4], [4, 5, 7, 8]]), owners) == [[], []]
