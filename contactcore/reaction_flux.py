@@ -43,8 +43,10 @@ rank-deficient (its Jacobi-scaled smallest eigenvalue below
 node is the points' γ₀ averaged with weights ``ψ_k w_p``.
 
 ``(B_f B_fᵀ)⁻¹`` couples every node, so ``L`` and ``S`` are dense over the
-unknowns near Γ (their tangent ``SᵀWΓ⁻¹S`` too): one process only, and
-a cost that grows with Γ's unknowns squared.
+unknowns near Γ (their tangent ``SᵀWΓ⁻¹S`` too), at a cost that grows
+with Γ's unknowns squared.  Under mpirun xfem keeps every cell near Γ on
+one rank, which computes them alone (:mod:`xdolfinx.reaction`); efgm's
+runs on one process only (:func:`check_serial`).
 """
 from __future__ import annotations
 

@@ -65,10 +65,11 @@ def abrupt_axis(lo: float, hi: float, at: float, small: float, big: float) -> np
     return np.concatenate([np.arange(at, lo - small / 2, -small)[:0:-1], at + (hi - at) * np.arange(n + 1) / n])
 
 
-def graded_mesh(scene, h: float, cell: str, counts=None, comm=None, order: int = 1, axis=graded_axis,
-                ratio: float = RATIO):
+def graded_mesh(scene, h: float, cell: str, counts=None, comm=None, order: int = 1, cut_on_one_rank: bool = False,
+                axis=graded_axis, ratio: float = RATIO):
     """xfem's background mesh replaced (the signature of
-    :func:`xdolfinx.xfem.cells.background_mesh`): the (dimensionless) bar's
+    :func:`xdolfinx.xfem.cells.background_mesh`; one process, so
+    ``cut_on_one_rank`` plays no part): the (dimensionless) bar's
     rectangle as a tensor grid, ROWS rows of size s, columns of s at the
     node line LINE of its length growing to ``ratio``·s away from it
     (``axis``); quads, or each split along its diagonal."""

@@ -12,6 +12,11 @@ live in rank 0's owned rows and columns (another rank's ghost cells
 share a facet with its own, hence are beyond layer 1, and hold no
 Γ node).  The other cells keep dolfinx's graph partition.
 
+xfem's reaction flux takes the same partition of its background mesh
+(gmsh's, or dolfinx's rectangle), seeded by its cut cells' corners in
+place of Γ's vertices (:func:`near_cells_partitioner`;
+:mod:`xdolfinx.reaction` says why two layers suffice there too).
+
 Ghosts follow dolfinx's ``shared_facet`` mode (its default, which
 ``gmshio.model_to_mesh`` takes): a cell is also sent to the owner of
 each cell across one of its facets.
@@ -29,6 +34,10 @@ from contactcore.tolerances import REACTION_GAMMA_LAYERS
 #: the rank that owns the cells near Γ
 GAMMA_RANK = 0
 
+#: a cell's facets as pairs of its vertices, by its number of vertices:
+#: a triangle's, and a quadrilateral's in dolfinx's order (0, 1, 3, 2 round it)
+FACETS = {3: [(0, 1), (1, 2), (0, 2)], 4: [(0, 1), (0, 2), (1, 3), (2, 3)]}
+
 
 def gamma_vertices(model, tag: int) -> np.ndarray:
     """The input indices (gmsh's node tag − 1, as dolfinx's ``gmshio``
@@ -44,6 +53,15 @@ def near_gamma_partitioner(gamma: np.ndarray):
     of the vertices ``gamma`` (input indices, given on the rank that holds
     the cells) owned by :data:`GAMMA_RANK`, and each cell ghosted across
     its facets (``shared_facet``, the mode ``gmshio`` asks for; module doc)."""
+    return near_cells_partitioner(lambda vertices: gamma, "fe", "gmsh's")
+
+
+def near_cells_partitioner(seeds, method: str, source: str):
+    """:func:`near_gamma_partitioner` with the seed vertices given by
+    ``seeds(vertices)`` (input indices; ``vertices`` the (cells, corners)
+    input indices of every cell, on the rank that holds them): xfem's are
+    its cut cells' corners (:mod:`xdolfinx.xfem.cells`); ``method`` and
+    the mesh's ``source`` name the refusal's.  Triangles or dolfinx's quadrilaterals."""
     from dolfinx import cpp
     from dolfinx.mesh import GhostMode
     graph = cpp.mesh.create_cell_partitioner()
@@ -52,10 +70,11 @@ def near_gamma_partitioner(gamma: np.ndarray):
         first = graph(comm, nparts, tdim, cells, GhostMode.none)
         owners = first.array[first.offsets[:-1]]  # each cell's one rank
         if comm.allreduce(int(len(owners) > 0)) > 1:
-            raise DiscretisationError("fe: flux = \"reaction\" under mpirun needs the mesh's cells on one rank "
-                                      "before they are distributed (gmsh's, as fe reads them)")
+            raise DiscretisationError(f"{method}: flux = \"reaction\" under mpirun needs the mesh's cells on one "
+                                      f"rank before they are distributed ({source}, as {method} reads them)")
         vertices = cells.array.reshape(len(owners), -1) if len(owners) else np.zeros((0, tdim + 1), np.int64)
-        owners = np.where(_near(vertices, gamma, REACTION_GAMMA_LAYERS), GAMMA_RANK, owners).astype(np.int32)
+        near = _near(vertices, seeds(vertices), REACTION_GAMMA_LAYERS)
+        owners = np.where(near, GAMMA_RANK, owners).astype(np.int32)
         lists = [np.array([o, *g], np.int32) for o, g in zip(owners, _facet_ghosts(vertices, owners))]
         offsets = np.cumsum([0] + [len(v) for v in lists]).astype(np.int32)
         data = np.concatenate(lists) if lists else np.zeros(0, np.int32)
@@ -77,8 +96,8 @@ def _near(cells: np.ndarray, gamma: np.ndarray, layers: int) -> np.ndarray:
 
 def _facet_ghosts(cells: np.ndarray, owners: np.ndarray) -> list:
     """Each cell's ghost ranks: the owners, other than its own, of the
-    cells across its facets (triangles: vertex pairs)."""
-    pairs = [(0, 1), (1, 2), (0, 2)]
+    cells across its facets (vertex pairs: :data:`FACETS` by corners)."""
+    pairs = FACETS[cells.shape[1]]
     edges = np.sort(np.concatenate([cells[:, p] for p in pairs]), axis=1)
     which = np.tile(np.arange(len(cells)), len(pairs))
     order = np.lexsort((edges[:, 1], edges[:, 0]))

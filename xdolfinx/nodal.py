@@ -108,15 +108,15 @@ def _reaction_rows(owned: sp.csr_matrix, l2g: np.ndarray, L: sp.csr_matrix) -> s
     return sp.csr_matrix((taken.data, columns, indptr), shape=(L.shape[1], L.shape[1]))
 
 
-def _local_columns(columns: np.ndarray, l2g: np.ndarray) -> np.ndarray:
-    """The local index of each global ``columns``; :data:`NOT_ON_ONE_RANK`
-    where one is not local."""
+def _local_columns(columns: np.ndarray, l2g: np.ndarray, refusal: str = NOT_ON_ONE_RANK) -> np.ndarray:
+    """The local index of each global ``columns``; ``refusal``
+    (:data:`NOT_ON_ONE_RANK`) where one is not local."""
     order = np.argsort(l2g)
     at = np.searchsorted(l2g, columns, sorter=order)
     found = at < len(order)
     found[found] = l2g[order[at[found]]] == columns[found]
     if not found.all():
-        raise DiscretisationError(NOT_ON_ONE_RANK)
+        raise DiscretisationError(refusal)
     return order[at]
 
 

@@ -12,7 +12,7 @@ from typing import ClassVar
 from contactcore import tolerances as _tol
 from contactcore.bodies import symbol_of
 from contactcore.discretisation import Discretisation, check_choice, check_degree
-from contactcore.reaction_flux import FLUXES, check_serial
+from contactcore.reaction_flux import FLUXES
 
 #: The background cells of XFEM: structured quadrilaterals (the paper's),
 #: structured triangles, or gmsh triangles (used for a disc).
@@ -167,7 +167,8 @@ class XFEM(Discretisation):
     Nitsche flux, ``"stress"`` (default: the cut cells' stress at Γ's
     Gauss points) or ``"reaction"`` (a multiplier mesh on Γ and the
     least-squares reaction, :mod:`contactcore.reaction_flux`: the answer
-    does not move with β; one process only); the rest as :class:`FE`."""
+    does not move with β; under mpirun the cells near Γ on one rank,
+    :mod:`xdolfinx.reaction`); the rest as :class:`FE`."""
 
     degree: int = 1
     cell: str = "quad"
@@ -194,15 +195,6 @@ class XFEM(Discretisation):
         check_degree(self.name, self.degree)
         check_choice(self.name, "cell", self.cell, XFEM_CELLS)
         check_choice(self.name, "flux", self.flux, FLUXES)
-
-    def check(self, scene) -> None:
-        """Refuse ``flux="reaction"`` of an exact law on more than one
-        process (:func:`~contactcore.reaction_flux.check_serial`), before
-        any mesh is built."""
-        super().check(scene)
-        if self.flux == "reaction":
-            from mpi4py import MPI
-            check_serial(self.name, self.flux, scene.law, (MPI.COMM_WORLD if self.comm is None else self.comm).size)
 
     @property
     def recovered_stress(self) -> bool:

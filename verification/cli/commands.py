@@ -111,7 +111,7 @@ def commands() -> dict[str, Command]:
                 help="the Nitsche flux of an exactly enforced law, for fe, xfem and efgm: stress (default, the "
                      "cells' stress at Γ's Gauss points) or reaction (fe: Γ's nodes, each node's reaction; xfem, "
                      "efgm: a multiplier mesh on Γ and the least-squares reaction: the answer does not move with "
-                     "β; xfem's and efgm's on one process only)"),
+                     "β; efgm's on one process only)"),
             arg("--no-plots", dest="draw", action="store_false", help="write no figures"),
             allow_large,
             arg("--estimate", type=int, nargs="?", const=2, choices=(2, 3), metavar="{2,3}",

@@ -71,16 +71,16 @@ def build(scene: Scene, options: XFEM, resolution: Resolution, timings: Timings)
     h, degree = resolution.h, options.degree
     comm = MPI.COMM_WORLD if options.comm is None else options.comm
     with timings.measure("mesh"):
-        msh = background_mesh(scene, h, options.cell, resolution.counts, comm, order=degree)
+        reaction = options.flux == "reaction" and is_exact(scene.law)  # Γ's multipliers, the reaction as flux
+        msh = background_mesh(scene, h, options.cell, resolution.counts, comm, order=degree, cut_on_one_rank=reaction)
         space = enriched_space(msh, degree, scene, GAUSS_POINTS[degree] if options.gauss is None else options.gauss)
     with timings.measure("assembly"):
         bulk, loads = forms(space, *tags(space))
         rows, values, owners = support_rows(space)
         K, constraints = stiffness_matrix(space, bulk), Constraints.on_dofs(rows, values, owners, space.cells.ranks)
         interface, work = with_traction(interface_operator(space), space), None
-        if options.flux == "reaction" and is_exact(scene.law):  # Γ's multipliers, the reaction as flux
-            interface, work = reaction_interface(scene, K, constraints.dofs, interface, h, space.cells.ranks.parallel,
-                                                 options.name)
+        if reaction:
+            interface, work = reaction_interface(scene, K, constraints.dofs, interface, h, space, options.name)
         system = PETScSystem(K, [load_vector(space, L, load) for L, load in zip(loads, scene.loads)], constraints,
                              interface, comm=msh.comm, work=work, petsc_options=options.petsc_options,
                              estimate_condition=options.estimate_condition, what=f"scene {scene.name} (xfem)")

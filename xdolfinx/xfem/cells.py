@@ -25,25 +25,73 @@ def background_cell(scene: Scene, cell: str) -> str:
     return cell if isinstance(scene.domain, Rectangle) else "gmsh"
 
 
-def background_mesh(scene: Scene, h: float, cell: str, counts=None, comm=MPI.COMM_WORLD, order: int = 1):
+def background_mesh(scene: Scene, h: float, cell: str, counts=None, comm=MPI.COMM_WORLD, order: int = 1,
+                    cut_on_one_rank: bool = False):
     """A mesh of the outer domain that ignores Γ, cells of size ≈ h (or
     ``counts`` cells per side): structured quadrilaterals or triangles on a
     rectangle, or ``cell="gmsh"`` triangles of the outer domain (the only
     choice for a disc), pins embedded as nodes, with geometry of ``order``
     1 or 2 (curved cells on a curved outer boundary: a polygonal rim caps
-    degree 2 at an O(h²) error)."""
+    degree 2 at an O(h²) error).  ``cut_on_one_rank``: under mpirun the
+    cells near Γ on one rank (:func:`cut_partitioner`), for the reaction
+    flux (:mod:`xdolfinx.reaction`); dolfinx's partition otherwise."""
+    near = cut_on_one_rank and comm.size > 1
     if background_cell(scene, cell) == "gmsh":
         import meshes
         from xdolfinx.fitted_mesh import gmshio
+        from xdolfinx.gamma_partition import partitioned
 
         with meshes.gmsh_session() as model:
             if comm.rank == 0:
                 meshes.build_model(scene, h, order=order, fitted=False)
-            return gmshio().model_to_mesh(model, comm, 0, gdim=2)[0]
+            io = gmshio()
+            with partitioned(io, cut_partitioner(scene, _gmsh_inputs(model, comm)) if near else None):
+                return io.model_to_mesh(model, comm, 0, gdim=2)[0]
     (x0, y0), (a, b) = scene.domain.corner, scene.domain.size
     n = list(counts) if counts is not None else cell_counts(scene, h)
     kind = mesh.CellType.quadrilateral if cell == "quad" else mesh.CellType.triangle
-    return mesh.create_rectangle(comm, [np.array([x0, y0]), np.array([x0 + a, y0 + b])], n, kind)
+    corners = [np.array([x0, y0]), np.array([x0 + a, y0 + b])]
+    if not near:
+        return mesh.create_rectangle(comm, corners, n, kind)
+    whole = mesh.create_rectangle(MPI.COMM_SELF, corners, n, kind) if comm.rank == 0 else None
+    inputs = np.zeros((0, 2)) if whole is None else _by_input(whole.geometry.input_global_indices,
+                                                               whole.geometry.x[:, :2])
+    return mesh.create_rectangle(comm, corners, n, kind, partitioner=cut_partitioner(scene, inputs))
+
+
+def cut_partitioner(scene: Scene, inputs: np.ndarray):
+    """dolfinx's partitioner with every cell within
+    :data:`~contactcore.tolerances.REACTION_GAMMA_LAYERS` of the cells Γ
+    may cross on one rank (:func:`xdolfinx.gamma_partition.near_cells_partitioner`),
+    ``inputs`` the input nodes' coordinates (on the rank that holds the
+    cells).  A cell Γ meets has every corner within its diameter of Γ
+    (:func:`diameters`, at least the largest distance between corners):
+    those cells, a few more than the cut ones, seed the layers."""
+    from xdolfinx.gamma_partition import near_cells_partitioner
+
+    def seeds(vertices: np.ndarray) -> np.ndarray:
+        corners = inputs[vertices]
+        distance = np.abs(scene.interface.signed_distance(corners.reshape(-1, 2))).reshape(vertices.shape)
+        met = np.all(distance <= diameters(corners)[:, None], axis=1)
+        return np.unique(vertices[met])
+
+    return near_cells_partitioner(seeds, "xfem", "dolfinx's rectangle or gmsh's")
+
+
+def _gmsh_inputs(model, comm) -> np.ndarray:
+    """The coordinates of gmsh's nodes by input index (node tag − 1, as
+    ``gmshio`` numbers them) on the rank that holds the model."""
+    if comm.rank != 0:
+        return np.zeros((0, 2))
+    tags, coords, _ = model.mesh.getNodes()
+    return _by_input(np.asarray(tags, np.int64) - 1, np.asarray(coords).reshape(-1, 3)[:, :2])
+
+
+def _by_input(indices: np.ndarray, coords: np.ndarray) -> np.ndarray:
+    """(inputs, 2): ``coords`` placed at their input ``indices``."""
+    out = np.zeros((int(np.max(indices, initial=-1)) + 1, 2))
+    out[np.asarray(indices, np.int64)] = coords
+    return out
 
 
 def node_sides(scene: Scene, coords: np.ndarray, snap) -> np.ndarray:
