@@ -81,6 +81,17 @@ class Collective:
             first = ContactError(message)
         raise first from error
 
+    def alike(self, make, *args):
+        """``make(*args)``, a :class:`ContactError` it raises on any rank
+        raised on every rank alike (:meth:`raise_any`): for work that one
+        rank alone may refuse (the one holding Γ) before a collective."""
+        try:
+            made, error = make(*args), None
+        except ContactError as exc:
+            made, error = None, exc
+        self.raise_any(error)
+        return made
+
 
 def launched_size() -> int:
     """How many ranks mpirun (or mpiexec) started, 1 without it, read from

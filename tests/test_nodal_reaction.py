@@ -182,3 +182,31 @@ def test_the_ties_refusal_offers_the_default_flux():
             discretisation.solve(scene, FE(flux=flux), 0.1)
         said[flux] = NODAL_TIE_HINT in str(err.value)
     assert said == {"reaction": True, "stress": False}
+
+
+def test_a_refusal_on_the_rank_holding_gamma_ends_every_rank(tmp_path):
+    """A refusal that only the rank holding Γ meets (here a Γ node on
+    the rollers of both sides, x held along neither Γ's normal nor its
+    tangent: docs/scenes/inclined_stick_weight_exact.toml) ends
+    ``mpirun -n 2`` with the serial run's error line and exit status 2;
+    the other rank waited for ever in the next collective call before
+    (2026-11-30: still running after 9 minutes)."""
+    from test_mpi import mpirun
+    scene = Path(SCENE).with_name("inclined_stick_weight_exact.toml")
+    out = mpirun(2, "-m", "verification", "run", scene, "--method", "fe", "--h", 0.1, "--flux", "reaction",
+                 "--reference", "none", "--no-plots", "-q", "--out", tmp_path / "out", timeout=60)
+    assert out.returncode == 2, out.stderr
+    assert "along neither Γ's normal nor its tangent there; use flux = \"stress\"" in out.stderr
+
+
+def test_a_mesh_whose_cells_are_all_near_gamma_is_refused_on_ranks(tmp_path):
+    """At h = 0.5 every cell of the partial opening lies within two layers
+    of Γ, all on rank 0: ``mpirun -n 2`` refuses in one line, exit status
+    2, where rank 1, holding no cell, crashed before (a segmentation fault
+    in dolfinx 0.5.2's ``DofMap.collapse``, exit 139; 2026-11-30)."""
+    from test_mpi import mpirun
+    scene = Path(SCENE).with_name("partial_opening_exact.toml")
+    out = mpirun(2, "-m", "verification", "run", scene, "--method", "fe", "--h", 0.5, "--flux", "reaction",
+                 "--reference", "none", "--no-plots", "-q", "--out", tmp_path / "out", timeout=60)
+    assert out.returncode == 2, out.stderr
+    assert "leaves 1 of the 2 ranks no cell; run on fewer ranks or at a smaller h" in out.stderr

@@ -75,12 +75,30 @@ def near_cells_partitioner(seeds, method: str, source: str):
         vertices = cells.array.reshape(len(owners), -1) if len(owners) else np.zeros((0, tdim + 1), np.int64)
         near = _near(vertices, seeds(vertices), REACTION_GAMMA_LAYERS)
         owners = np.where(near, GAMMA_RANK, owners).astype(np.int32)
+        _check_every_rank_holds_cells(comm, nparts, owners, near, method)
         lists = [np.array([o, *g], np.int32) for o, g in zip(owners, _facet_ghosts(vertices, owners))]
         offsets = np.cumsum([0] + [len(v) for v in lists]).astype(np.int32)
         data = np.concatenate(lists) if lists else np.zeros(0, np.int32)
         return cpp.graph.AdjacencyList_int32(data, offsets)
 
     return partition
+
+
+def _check_every_rank_holds_cells(comm, nparts: int, owners: np.ndarray, near: np.ndarray, method: str) -> None:
+    """Refuse, on every rank alike, a partition that leaves a rank no cell
+    (every cell near Γ, on a coarse mesh or many ranks): dolfinx 0.5.2
+    crashes (a segmentation fault in ``DofMap.collapse``) on a rank
+    without cells.  ``owners`` and ``near`` (each cell's rank, and whether
+    it is near Γ) are given on the one rank holding the cells; ``method``
+    names the run in the message."""
+    counts = comm.allreduce(np.bincount(owners, minlength=nparts))
+    empty = int(np.count_nonzero(counts == 0))
+    if empty:
+        raise DiscretisationError(
+            f'{method}: flux = "reaction" under mpirun: rank {GAMMA_RANK} holds every cell within '
+            f"{REACTION_GAMMA_LAYERS} layers of Γ ({comm.allreduce(int(near.sum()))} of the mesh's "
+            f"{int(counts.sum())} cells), which leaves {empty} of the {nparts} ranks no cell; run on fewer ranks "
+            "or at a smaller h")
 
 
 def _near(cells: np.ndarray, gamma: np.ndarray, layers: int) -> np.ndarray:

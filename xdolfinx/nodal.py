@@ -30,7 +30,9 @@ fe's mesh then keeps every cell within two layers of Γ on one rank
 each of their columns, so ``S``, ``L`` and the tangent sit in its owned
 rows and columns (local numbering, as the Gauss-point interface's); the
 other ranks hold no Γ node.  A Γ node's row that is not owned whole is
-refused (:data:`NOT_ON_ONE_RANK`).
+refused (:data:`NOT_ON_ONE_RANK`).  A refusal met on one rank (a Γ node's:
+only the rank holding Γ meets it) is raised on every rank before the next
+collective call, else the others would wait in it for ever.
 """
 from __future__ import annotations
 
@@ -40,6 +42,7 @@ import scipy.sparse as sp
 import meshes
 from contactcore import BODIES, DiscretisationError
 from contactcore import tolerances as tol
+from contactcore.collective import SERIAL, Collective
 from contactcore.cutcell import gauss01
 from contactcore.geometry import polygon_area, tangent_of
 from contactcore.interface_path import piece_centres
@@ -56,12 +59,14 @@ def nodal_interface(scene, fm, V, reader, exchange, K, fixed: np.ndarray):
     """``(interface, work)``: :func:`nodal_operator` and the matrix whose
     pattern holds its tangent beside ``K``'s (:func:`working_pattern`).
     ``K``'s owned rows are read with their global columns, and the
-    local-to-global map of its local numbering (owned, then ghosts)."""
+    local-to-global map of its local numbering (owned, then ghosts).  A
+    refusal is raised on every rank of the mesh alike (module doc)."""
+    ranks = Collective(fm.mesh.comm)
     indptr, indices, values = K.getValuesCSR()
     owned = sp.csr_matrix((values, indices, indptr), shape=(K.getLocalSize()[0], K.getSize()[1]))
     l2g = _local_to_global(K, exchange.local_size)
-    interface = nodal_operator(scene, fm, V, reader, exchange, owned, l2g, fixed)
-    return interface, working_pattern(K, owned, l2g, interface)
+    interface = ranks.alike(nodal_operator, scene, fm, V, reader, exchange, owned, l2g, fixed)
+    return interface, working_pattern(K, owned, l2g, interface, ranks)
 
 
 def nodal_operator(scene, fm, V, reader, exchange, owned: sp.csr_matrix, l2g: np.ndarray,
@@ -200,18 +205,19 @@ def _put(sink, row: int, cols, values) -> None:
             sink[2].append(float(v))
 
 
-def working_pattern(K, owned: sp.csr_matrix, l2g: np.ndarray, interface: InterfaceOperator):
+def working_pattern(K, owned: sp.csr_matrix, l2g: np.ndarray, interface: InterfaceOperator,
+                    ranks: Collective = SERIAL):
     """A PETSc matrix distributed as ``K`` with the bulk's pattern (its
     ``owned`` rows, global columns) and every entry the interface's
     tangent can reach (:meth:`~contactcore.system.InterfaceOperator.pattern`,
     local numbering ``l2g``; owned rows only, module doc), values zero:
     the reaction's ``SᵀWΓ⁻¹S`` couples unknowns two cells apart, beyond
-    ``K``'s pattern."""
+    ``K``'s pattern.  A collective call over ``ranks`` (the matrix's): a
+    row not owned is refused on every rank alike."""
     from petsc4py import PETSc
     ones = sp.csr_matrix((np.ones_like(owned.data), owned.indices, owned.indptr), shape=owned.shape)
     reach = interface.pattern().tocoo()
-    if np.any(reach.row >= owned.shape[0]):
-        raise DiscretisationError(NOT_ON_ONE_RANK)
+    ranks.raise_any(DiscretisationError(NOT_ON_ONE_RANK) if np.any(reach.row >= owned.shape[0]) else None)
     both = (ones + sp.csr_matrix((np.abs(reach.data), (reach.row, l2g[reach.col])), shape=owned.shape)).tocsr()
     both.sort_indices()
     both.data[:] = 0.0

@@ -26,6 +26,7 @@ import scipy.sparse as sp
 
 from contactcore import DiscretisationError
 from contactcore import tolerances as tol
+from contactcore.collective import SERIAL, Collective
 from contactcore.reaction_flux import multiplier_chain, multiplier_operator
 from contactcore.system import InterfaceOperator
 
@@ -48,17 +49,24 @@ def reaction_interface(scene, K, fixed: np.ndarray, operator: InterfaceOperator,
     l2g = (2 * space.numbering.global_blocks[:, None] + np.arange(2)).ravel()
     start, stop = K.getOwnershipRange()
     rows = np.where((l2g >= start) & (l2g < stop), l2g - start, -1)  # each local unknown's owned row, or −1
-    chain = multiplier_chain(scene.interface, scene.domain, tol.MULTIPLIER_SPACING * h, method)
-    total = space.cells.ranks.sum(operator.size)
+    ranks = space.cells.ranks
+    total = ranks.sum(operator.size)
+    interface = ranks.alike(_interface, scene, operator, owned, l2g, rows, fixed, total, h, method)
+    return interface, working_pattern(K, owned, l2g, rows, interface, ranks)
+
+
+def _interface(scene, operator: InterfaceOperator, owned: sp.csr_matrix, l2g: np.ndarray, rows: np.ndarray,
+               fixed: np.ndarray, total: int, h: float, method: str) -> InterfaceOperator:
+    """This rank's share of :func:`reaction_interface`'s operator: all of
+    Γ's ``total`` points or none of them (else :data:`NOT_ON_ONE_RANK`)."""
     if operator.size not in (0, total):
         raise DiscretisationError(NOT_ON_ONE_RANK)
     if operator.size == 0:
-        interface = _empty(operator, len(l2g))
-    else:
-        local_fixed = np.flatnonzero(np.isin(rows, np.asarray(fixed, np.int64)))
-        interface = replace(multiplier_operator(operator, _reaction_rows(owned, l2g, rows, operator.G), local_fixed,
-                                                chain, method), exchange=operator.exchange)
-    return interface, working_pattern(K, owned, l2g, rows, interface)
+        return _empty(operator, len(l2g))
+    chain = multiplier_chain(scene.interface, scene.domain, tol.MULTIPLIER_SPACING * h, method)
+    local_fixed = np.flatnonzero(np.isin(rows, np.asarray(fixed, np.int64)))
+    return replace(multiplier_operator(operator, _reaction_rows(owned, l2g, rows, operator.G), local_fixed,
+                                       chain, method), exchange=operator.exchange)
 
 
 def _reaction_rows(owned: sp.csr_matrix, l2g: np.ndarray, rows: np.ndarray, G: sp.csr_matrix) -> sp.csr_matrix:
@@ -84,19 +92,20 @@ def _empty(operator: InterfaceOperator, n: int) -> InterfaceOperator:
                              stabilisation=np.zeros(0), pieces=np.zeros((0, 2)), load_flux=none)
 
 
-def working_pattern(K, owned: sp.csr_matrix, l2g: np.ndarray, rows: np.ndarray, interface: InterfaceOperator):
+def working_pattern(K, owned: sp.csr_matrix, l2g: np.ndarray, rows: np.ndarray, interface: InterfaceOperator,
+                    ranks: Collective = SERIAL):
     """A PETSc matrix distributed as ``K`` (its block size) with the
     bulk's pattern (its ``owned`` rows, global columns) and every entry
     the interface's tangent can reach
     (:meth:`~contactcore.system.InterfaceOperator.pattern`, local
     numbering: ``rows`` each one's owned row, ``l2g`` its global index),
     values zero: ``SᵀWΓ⁻¹S`` couples every unknown near Γ, beyond ``K``'s
-    pattern."""
+    pattern.  A collective call over ``ranks`` (the matrix's): a row not
+    owned is refused on every rank alike."""
     from petsc4py import PETSc
     ones = sp.csr_matrix((np.ones_like(owned.data), owned.indices, owned.indptr), shape=owned.shape)
     reach = interface.pattern().tocoo()
-    if np.any(rows[reach.row] < 0):
-        raise DiscretisationError(NOT_ON_ONE_RANK)
+    ranks.raise_any(DiscretisationError(NOT_ON_ONE_RANK) if np.any(rows[reach.row] < 0) else None)
     both = (ones + sp.csr_matrix((np.abs(reach.data), (rows[reach.row], l2g[reach.col])), shape=owned.shape)).tocsr()
     both.sort_indices()
     both.data[:] = 0.0
