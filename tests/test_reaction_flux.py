@@ -178,3 +178,25 @@ def test_quadrilaterals_are_ghosted_across_their_facets():
     owners = np.array([0, 1])
     assert _facet_ghosts(np.array([[0, 1, 3, 4], [1, 2, 4, 5]]), owners) == [[1], [0]]
     assert _facet_ghosts(np.array([[0, 1, 3, 4], [4, 5, 7, 8]]), owners) == [[], []]
+
+
+def test_a_refusal_on_one_rank_is_raised_on_every_rank():
+    """``Collective.alike``, which guards the reaction operators' building
+    (xdolfinx/reaction.py, xdolfinx/nodal.py: only the rank holding Γ can
+    refuse): rank 0's DiscretisationError is raised on rank 1 too, which
+    then does not wait in the next collective call (a barrier here)."""
+    from test_mpi import mpirun
+    code = ("from mpi4py import MPI\n"
+            "from contactcore import DiscretisationError\n"
+            "from contactcore.collective import Collective\n"
+            "def make():\n"
+            "    if MPI.COMM_WORLD.rank == 0:\n"
+            "        raise DiscretisationError('refused on rank 0')\n"
+            "try:\n"
+            "    Collective(MPI.COMM_WORLD).alike(make)\n"
+            "except DiscretisationError as exc:\n"
+            "    print(MPI.COMM_WORLD.rank, exc, flush=True)\n"
+            "MPI.COMM_WORLD.Barrier()\n")
+    out = mpirun(2, "-c", code, timeout=60)
+    assert out.returncode == 0, out.stderr
+    assert sorted(out.stdout.split("\n")[:2]) == ["0 refused on rank 0", "1 refused on rank 0"]
