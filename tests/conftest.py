@@ -139,6 +139,12 @@ LONG_FOR_THE_DEFAULT = {
     "tests/test_agreement_api.py::test_a_failing_agreement_shows_its_message_not_the_helpers_source": 1.7,
     "tests/test_glance.py::test_a_log_read_through_a_closed_pipe_does_not_abort_the_run": 1.6,
     "tests/test_examples.py::test_error_estimate": 1.6,
+    # 2026-11-30, eighth list: the reaction flux under mpirun added four mpirun runs of about 5 s each
+    # (252 s wall under a helper's load, 2334 tests); each keeps a sibling in the default (fe P1's 2-rank
+    # parity, Collective.alike's refusal on every rank), and CI's slow stage runs them
+    "tests/test_nodal_reaction.py::test_a_refusal_on_the_rank_holding_gamma_ends_every_rank": 5.3,
+    "tests/test_nodal_reaction.py::test_a_mesh_whose_cells_are_all_near_gamma_is_refused_on_ranks": 5.2,
+    "tests/test_reaction_flux.py::test_xfem_on_two_ranks_gives_the_serial_profiles": 4.3,
 }
 
 
