@@ -1927,6 +1927,17 @@ REACTION_GAMMA_LAYERS = 2
 #: a node row cannot tell the multipliers apart (0.5 and 0.75 refused on
 #: scene A at h = 0.2).
 MULTIPLIER_SPACING = 1.0
+#: The same for xfem P1 on triangles (cell "triangle" or "gmsh"): at 1 its
+#: multipliers alternate from node to node at 2 of the 24 placements of an
+#: inclined Γ (tests/test_nitsche_cuts.py, h = 0.025: t_N's second
+#: difference 3.4e-1 and 3.6e-1 of max |t_N|, above the 15 % bound, the
+#: default flux's 9.5e-2; a triangle's P1 jump along Γ is too poor to tell
+#: every multiplier of that spacing apart stably, Béchet, Moës & Wohlmuth
+#: 2009); at 2 every placement holds, largest 1.00e-1 at placement 0,
+#: 3.1e-2 at 22 (2026-11-30, reaction_cuts.py of
+#: docs/contact-enforcement-scripts.md).  xfem P2 on triangles keeps 1: at
+#: 2 it fails the 2 % bound at placement 0 (5.45e-2).
+MULTIPLIER_SPACING_TRIANGLES_P1 = 2.0
 #: A row of B_f (a node's g_N or g_T read by the free unknowns) whose norm
 #: is below this share of the largest row's is a component held on both
 #: sides of Γ (a support at Γ's end): dropped from the law, its Ĝ and L

@@ -21,7 +21,7 @@ import pytest
 import scipy.sparse as sp
 
 import tolerances as tol
-from contactcore import DiscretisationError, load_scene, make_law
+from contactcore import DiscretisationError, discretisation, load_scene, make_law
 from contactcore.reaction_flux import MultiplierChain, multiplier_operator, serial_refusal
 from contactcore.system import InterfaceOperator
 from efgm.options import EFGM
@@ -200,3 +200,17 @@ def test_a_refusal_on_one_rank_is_raised_on_every_rank(tmp_path):
     out = mpirun(2, "-c", code, timeout=60)
     assert out.returncode == 0, out.stderr
     assert [(tmp_path / f"{r}.txt").read_text() for r in (0, 1)] == ["refused on rank 0"] * 2
+
+
+@pytest.mark.parametrize("cell, degree, cells", (("quad", 1, 1), ("triangle", 1, 2), ("triangle", 2, 1)))
+def test_xfem_spaces_its_multipliers_by_cell_and_degree(cell, degree, cells):
+    """Γ's multiplier nodes are MULTIPLIER_SPACING_TRIANGLES_P1 (2) cells
+    apart for xfem P1 on triangles (at one cell t_N alternated at 2 of 24
+    inclined placements), one cell apart otherwise: the block's Γ, of
+    chord c, gets round(c / (cells · h)) + 1 nodes at h = 0.1."""
+    scene = load_scene(BLOCK)
+    chord = np.linalg.norm(np.subtract(*scene.interface.chord(scene.domain)))
+    result = discretisation.solve(scene.with_changes(law=make_law({"type": "coulomb", "mu": scene.law.mu,
+                                                                   "enforcement": "exact"})),
+                                  XFEM(degree=degree, cell=cell, flux="reaction"), H)
+    assert len(result.interface.points) == round(chord / (cells * H)) + 1

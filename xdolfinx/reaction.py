@@ -38,9 +38,19 @@ NOT_ON_ONE_RANK = ('xfem: flux = "reaction": Γ\'s points, or a row of an unknow
                    'by one rank (the mesh must keep the cells within two layers of the cut cells on one rank)')
 
 
-def reaction_interface(scene, K, fixed: np.ndarray, operator: InterfaceOperator, h: float, space, method: str):
-    """``(interface, work)``: the multiplier nodes at
-    :data:`~contactcore.tolerances.MULTIPLIER_SPACING` ``h`` with the
+def multiplier_spacing(cell: str, degree: int, h: float) -> float:
+    """Γ's multiplier spacing for xfem P``degree`` on ``cell``:
+    :data:`~contactcore.tolerances.MULTIPLIER_SPACING_TRIANGLES_P1` ``h``
+    for P1 on triangles (``"triangle"``, ``"gmsh"``), else
+    :data:`~contactcore.tolerances.MULTIPLIER_SPACING` ``h``."""
+    triangles_p1 = cell != "quad" and degree == 1
+    return (tol.MULTIPLIER_SPACING_TRIANGLES_P1 if triangles_p1 else tol.MULTIPLIER_SPACING) * h
+
+
+def reaction_interface(scene, K, fixed: np.ndarray, operator: InterfaceOperator, spacing: float, space,
+                       method: str):
+    """``(interface, work)``: the multiplier nodes at ``spacing``
+    (:func:`multiplier_spacing`) with the
     least-squares reaction of the bulk ``K`` (PETSc; ``fixed`` its
     prescribed owned rows) from the method's Gauss-point ``operator`` on
     ``space``'s unknowns, and :func:`working_pattern` (module doc)."""
@@ -51,19 +61,19 @@ def reaction_interface(scene, K, fixed: np.ndarray, operator: InterfaceOperator,
     rows = np.where((l2g >= start) & (l2g < stop), l2g - start, -1)  # each local unknown's owned row, or −1
     ranks = space.cells.ranks
     total = ranks.sum(operator.size)
-    interface = ranks.alike(_interface, scene, operator, owned, l2g, rows, fixed, total, h, method)
+    interface = ranks.alike(_interface, scene, operator, owned, l2g, rows, fixed, total, spacing, method)
     return interface, working_pattern(K, owned, l2g, rows, interface, ranks)
 
 
 def _interface(scene, operator: InterfaceOperator, owned: sp.csr_matrix, l2g: np.ndarray, rows: np.ndarray,
-               fixed: np.ndarray, total: int, h: float, method: str) -> InterfaceOperator:
+               fixed: np.ndarray, total: int, spacing: float, method: str) -> InterfaceOperator:
     """This rank's share of :func:`reaction_interface`'s operator: all of
     Γ's ``total`` points or none of them (else :data:`NOT_ON_ONE_RANK`)."""
     if operator.size not in (0, total):
         raise DiscretisationError(NOT_ON_ONE_RANK)
     if operator.size == 0:
         return _empty(operator, len(l2g))
-    chain = multiplier_chain(scene.interface, scene.domain, tol.MULTIPLIER_SPACING * h, method)
+    chain = multiplier_chain(scene.interface, scene.domain, spacing, method)
     local_fixed = np.flatnonzero(np.isin(rows, np.asarray(fixed, np.int64)))
     return replace(multiplier_operator(operator, _reaction_rows(owned, l2g, rows, operator.G), local_fixed,
                                        chain, method), exchange=operator.exchange)

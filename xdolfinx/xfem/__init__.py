@@ -46,7 +46,7 @@ from .kernels import band_kernels, interface_operator, side_strains
 from .space import MIN_CUT_FRACTION, EnrichedFunctionSpace
 from .supports import support_rows
 from ..quiet import quiet_jit
-from ..reaction import reaction_interface
+from ..reaction import multiplier_spacing, reaction_interface
 from .traction import contrast_warnings, curved_stabilisation_warnings, with_traction
 
 METHOD = XFEM.name
@@ -80,7 +80,8 @@ def build(scene: Scene, options: XFEM, resolution: Resolution, timings: Timings)
         K, constraints = stiffness_matrix(space, bulk), Constraints.on_dofs(rows, values, owners, space.cells.ranks)
         interface, work = with_traction(interface_operator(space), space), None
         if reaction:
-            interface, work = reaction_interface(scene, K, constraints.dofs, interface, h, space, options.name)
+            interface, work = reaction_interface(scene, K, constraints.dofs, interface,
+                                                  multiplier_spacing(options.cell, options.degree, h), space, options.name)
         system = PETScSystem(K, [load_vector(space, L, load) for L, load in zip(loads, scene.loads)], constraints,
                              interface, comm=msh.comm, work=work, petsc_options=options.petsc_options,
                              estimate_condition=options.estimate_condition, what=f"scene {scene.name} (xfem)")
