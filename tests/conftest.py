@@ -145,6 +145,30 @@ LONG_FOR_THE_DEFAULT = {
     "tests/test_nodal_reaction.py::test_a_refusal_on_the_rank_holding_gamma_ends_every_rank": 5.3,
     "tests/test_nodal_reaction.py::test_a_mesh_whose_cells_are_all_near_gamma_is_refused_on_ranks": 5.2,
     "tests/test_reaction_flux.py::test_xfem_on_two_ranks_gives_the_serial_profiles": 4.3,
+    # 2026-11-30, ninth list: the default took 128.8, 126.0 and 120.8 s wall quiet (230 s CPU, 2346 tests)
+    # at dde0d3e, after the day's merges (the reaction flux of xfem and efgm, its mpirun and closed-form
+    # checks); each keeps a sibling in the default (another method, degree, scene or parameter of the
+    # same check; the reaction flux's closed forms at degree 1 in every method)
+    "tests/test_estimate_pollution.py::test_the_tilted_blocks_bulk_displacements_are_not_underestimated": 2.1,
+    "tests/test_estimate_exact_tractions.py::test_the_layered_exact_slips_tractions_move_into_the_range": 2.0,
+    "tests/test_estimate.py::test_the_estimates_are_within_a_factor_two_of_the_true_error[layered_slip-('efgm', 1)]": 1.1,
+    "tests/test_factorisations.py::test_a_map_left_behind_is_refilled_not_analysed_again[efgm-1]": 1.1,
+    "tests/test_estimate_warnings.py::test_no_warning_points_the_wrong_way_on_the_layered_slip_efgm_p1[2]": 1.1,
+    "tests/test_nitsche_operators.py::test_traction_patch_test[efgm-P2-circle]": 1.0,
+    "tests/test_exact.py::test_layered_closed_form_with_exact_stick[efgm-P2-reaction]": 0.8,
+    "tests/test_exact.py::test_an_exact_law_ignores_the_springs[C-coulomb-law1-efgm-P1]": 0.8,
+    "tests/test_beta_independence.py::test_beta_ten_times_either_way_moves_each_stress_less_than_halving_h[efgm-P1-plus]": 0.7,
+    "tests/test_efgm.py::test_every_dilation_answers_or_explains[4.0-rectangular]": 0.7,
+    "tests/test_efgm.py::test_interface_patch_at_the_quadrature_level[30.0-quadratic]": 0.6,
+    "tests/test_status_search.py::test_a_coarser_map_shortens_the_search_and_keeps_the_answer[xfem-1]": 0.6,
+    "tests/test_efgm_supports.py::test_the_supported_edges_error_is_the_quadratures[2]": 0.6,
+    "tests/test_agreement.py::test_agrees_with_the_reference[C-fe-1]": 0.5,
+    "tests/test_agreement.py::test_agrees_with_the_reference[B-efgm-1]": 0.5,
+    "tests/test_efgm_assembly.py::test_cell_stiffness_is_the_per_point_one[C-0.25-2-False-0.0]": 0.5,
+    "tests/test_exact.py::test_unilateral_pulled_apart_then_pressed[efgm-P2-reaction]": 0.3,
+    "tests/test_exact.py::test_layered_closed_form_with_exact_stick[xfem-P2-reaction]": 0.2,
+    "tests/test_exact.py::test_layered_closed_form_with_exact_stick[fe-P2-reaction]": 0.1,
+    "tests/test_exact.py::test_unilateral_pulled_apart_then_pressed[fe-P2-reaction]": 0.1,
 }
 
 

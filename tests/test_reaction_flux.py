@@ -49,7 +49,7 @@ def _beta_move(path: str, method: str, flux: str) -> float:
     return max(np.max(np.abs(high[k][2] - low[k][2])) / scale[k] for k in low)
 
 
-@pytest.mark.parametrize("path", (BLOCK, STICK_SLIP))
+@pytest.mark.parametrize("path", (BLOCK, STICK_SLIP), ids=("block", "stick_slip"))
 @pytest.mark.parametrize("method", tuple(METHODS))
 def test_the_reaction_flux_does_not_move_with_beta(method, path):
     """Every profile at β = 0.3 and 30 within REACTION_FLUX_BETA_ROUNDOFF."""
