@@ -118,13 +118,13 @@ def test_a_gamma_row_not_held_whole_is_refused():
     partition that did not keep Γ's two layers on one rank) is refused
     with NOT_ON_ONE_RANK, not read short."""
     import scipy.sparse as sp
-    from xdolfinx.nodal import NOT_ON_ONE_RANK, _reaction_rows
+    from xdolfinx.nodal import NOT_ON_ONE_RANK, reaction_rows
     owned = sp.csr_matrix(np.array([[2.0, -1.0, 0.0, -1.0], [-1.0, 2.0, -1.0, 0.0]]))  # 2 owned rows, 4 global columns
     L = sp.csr_matrix(np.array([[1.0, 0.0, 0.0]]))  # reads row 0; the local unknowns are global 0, 1, 2
     with pytest.raises(DiscretisationError) as err:
-        _reaction_rows(owned, np.array([0, 1, 2]), L)
+        reaction_rows(owned, np.array([0, 1, 2]), np.array([0, 1, -1]), L.indices)
     assert str(err.value) == NOT_ON_ONE_RANK
-    held = _reaction_rows(owned, np.array([0, 1, 3]), L).toarray()
+    held = reaction_rows(owned, np.array([0, 1, 3]), np.array([0, 1, -1]), L.indices).toarray()
     assert held.tolist() == [[2.0, -1.0, -1.0], [0.0, 0.0, 0.0], [0.0, 0.0, 0.0]]
 
 

@@ -65,18 +65,20 @@ def nodal_interface(scene, fm, V, reader, exchange, K, fixed: np.ndarray):
     indptr, indices, values = K.getValuesCSR()
     owned = sp.csr_matrix((values, indices, indptr), shape=(K.getLocalSize()[0], K.getSize()[1]))
     l2g = _local_to_global(K, exchange.local_size)
-    interface = ranks.alike(nodal_operator, scene, fm, V, reader, exchange, owned, l2g, fixed)
-    return interface, working_pattern(K, owned, l2g, interface, ranks)
+    rows = owned_rows(K, l2g)
+    interface = ranks.alike(nodal_operator, scene, fm, V, reader, exchange, owned, l2g, rows, fixed)
+    return interface, working_pattern(K, owned, l2g, rows, interface, ranks)
 
 
-def nodal_operator(scene, fm, V, reader, exchange, owned: sp.csr_matrix, l2g: np.ndarray,
+def nodal_operator(scene, fm, V, reader, exchange, owned: sp.csr_matrix, l2g: np.ndarray, rows: np.ndarray,
                    fixed: np.ndarray) -> InterfaceOperator:
     """Γ's nodes as Nitsche's points with the reaction flux (module doc):
     ``G``, ``w``, the nodes, ``S = L A``, γ₀ (each node's facets' γ₀,
     weighted by their share of ``w_i``) and ``L``, columns in the local
     numbering; ``owned`` is the bulk's assembled matrix, this rank's rows
     with global columns (scipy CSR), ``l2g`` the local numbering's global
-    indices, ``fixed`` the prescribed unknowns and ``reader`` fe's
+    indices, ``rows`` their owned rows (:func:`owned_rows`), ``fixed`` the
+    prescribed unknowns and ``reader`` fe's
     ``(ReferenceCells, Gauss points a facet, _facet_sides)``
     (:mod:`xdolfinx.conforming`)."""
     ref, gauss, sides = reader
@@ -85,7 +87,7 @@ def nodal_operator(scene, fm, V, reader, exchange, owned: sp.csr_matrix, l2g: np
     normals = scene.interface.normals(x) if len(x) else np.zeros((0, 2))
     frames = np.stack([normals, tangent_of(normals)], axis=1)  # rows n, t, as interface_operator's
     G, L = _rows(scene, plus, minus, x, w, frames, fixed, exchange.local_size)
-    A = _reaction_rows(owned, l2g, L)
+    A = reaction_rows(owned, l2g, rows, L.indices)
     return InterfaceOperator(G, w, x, exchange if exchange.ranks.parallel else None, S=(L @ A).tocsr(),
                              stabilisation=gamma0, pieces=piece_centres(x, w, [1] * len(w)), load_flux=L)
 
@@ -97,20 +99,28 @@ def _local_to_global(K, local_size: int) -> np.ndarray:
     return maps.getIndices().astype(np.int64) if maps.handle else np.arange(local_size, dtype=np.int64)
 
 
-def _reaction_rows(owned: sp.csr_matrix, l2g: np.ndarray, L: sp.csr_matrix) -> sp.csr_matrix:
-    """``A``'s rows that ``L`` reads (the Γ nodes'), in the local numbering
-    (``L``'s columns; the other rows empty, which ``L A`` never reads):
-    each must be owned and reach local unknowns only, else
-    :data:`NOT_ON_ONE_RANK`."""
-    rows = np.unique(L.indices)
-    if len(rows) and rows[-1] >= owned.shape[0]:
-        raise DiscretisationError(NOT_ON_ONE_RANK)
-    taken = owned[rows]
-    columns = _local_columns(taken.indices, l2g)
-    counts = np.zeros(L.shape[1], np.int64)
-    counts[rows] = np.diff(taken.indptr)
+def owned_rows(K, l2g: np.ndarray) -> np.ndarray:
+    """Each local unknown's row among ``K``'s owned rows, or −1 where
+    another rank owns it (``l2g`` the local numbering's global indices)."""
+    start, stop = K.getOwnershipRange()
+    return np.where((l2g >= start) & (l2g < stop), l2g - start, -1)
+
+
+def reaction_rows(owned: sp.csr_matrix, l2g: np.ndarray, rows: np.ndarray, reads: np.ndarray,
+                  refusal: str = NOT_ON_ONE_RANK) -> sp.csr_matrix:
+    """``A``'s rows of the local unknowns ``reads`` (the only ones ``L A``
+    reads), in the local numbering (the other rows empty): each owned
+    whole (``rows``, :func:`owned_rows`) and reaching local unknowns only,
+    else ``refusal`` (fe's :data:`NOT_ON_ONE_RANK`, or xfem's)."""
+    reads = np.unique(reads)
+    if np.any(rows[reads] < 0):
+        raise DiscretisationError(refusal)
+    taken = owned[rows[reads]]
+    columns = _local_columns(taken.indices, l2g, refusal)
+    counts = np.zeros(len(l2g), np.int64)
+    counts[reads] = np.diff(taken.indptr)
     indptr = np.concatenate([[0], np.cumsum(counts)])
-    return sp.csr_matrix((taken.data, columns, indptr), shape=(L.shape[1], L.shape[1]))
+    return sp.csr_matrix((taken.data, columns, indptr), shape=(len(l2g), len(l2g)))
 
 
 def _local_columns(columns: np.ndarray, l2g: np.ndarray, refusal: str = NOT_ON_ONE_RANK) -> np.ndarray:
@@ -205,22 +215,25 @@ def _put(sink, row: int, cols, values) -> None:
             sink[2].append(float(v))
 
 
-def working_pattern(K, owned: sp.csr_matrix, l2g: np.ndarray, interface: InterfaceOperator,
-                    ranks: Collective = SERIAL):
-    """A PETSc matrix distributed as ``K`` with the bulk's pattern (its
-    ``owned`` rows, global columns) and every entry the interface's
-    tangent can reach (:meth:`~contactcore.system.InterfaceOperator.pattern`,
-    local numbering ``l2g``; owned rows only, module doc), values zero:
-    the reaction's ``SᵀWΓ⁻¹S`` couples unknowns two cells apart, beyond
-    ``K``'s pattern.  A collective call over ``ranks`` (the matrix's): a
-    row not owned is refused on every rank alike."""
+def working_pattern(K, owned: sp.csr_matrix, l2g: np.ndarray, rows: np.ndarray, interface: InterfaceOperator,
+                    ranks: Collective = SERIAL, refusal: str = NOT_ON_ONE_RANK):
+    """A PETSc matrix distributed as ``K`` (its block size) with the
+    bulk's pattern (its ``owned`` rows, global columns) and every entry
+    the interface's tangent can reach
+    (:meth:`~contactcore.system.InterfaceOperator.pattern`, local
+    numbering: ``rows`` each one's owned row, ``l2g`` its global index),
+    values zero: the reaction's ``SᵀWΓ⁻¹S`` couples unknowns beyond ``K``'s
+    pattern (two cells apart in fe, every unknown near Γ in xfem).  A
+    collective call over ``ranks`` (the matrix's): a row not owned is
+    refused (``refusal``) on every rank alike."""
     from petsc4py import PETSc
     ones = sp.csr_matrix((np.ones_like(owned.data), owned.indices, owned.indptr), shape=owned.shape)
     reach = interface.pattern().tocoo()
-    ranks.raise_any(DiscretisationError(NOT_ON_ONE_RANK) if np.any(reach.row >= owned.shape[0]) else None)
-    both = (ones + sp.csr_matrix((np.abs(reach.data), (reach.row, l2g[reach.col])), shape=owned.shape)).tocsr()
+    ranks.raise_any(DiscretisationError(refusal) if np.any(rows[reach.row] < 0) else None)
+    both = (ones + sp.csr_matrix((np.abs(reach.data), (rows[reach.row], l2g[reach.col])), shape=owned.shape)).tocsr()
     both.sort_indices()
     both.data[:] = 0.0
     sizes = (K.getLocalSize()[0], K.getSize()[0]), (K.getLocalSize()[1], K.getSize()[1])
-    return PETSc.Mat().createAIJ(sizes, csr=(both.indptr.astype(PETSc.IntType), both.indices.astype(PETSc.IntType),
-                                             both.data), comm=K.getComm())
+    return PETSc.Mat().createAIJ(sizes, bsize=K.getBlockSize(), csr=(both.indptr.astype(PETSc.IntType),
+                                                                     both.indices.astype(PETSc.IntType), both.data),
+                                 comm=K.getComm())

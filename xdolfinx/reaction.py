@@ -26,11 +26,10 @@ import scipy.sparse as sp
 
 from contactcore import DiscretisationError
 from contactcore import tolerances as tol
-from contactcore.collective import SERIAL, Collective
 from contactcore.reaction_flux import multiplier_chain, multiplier_operator
 from contactcore.system import InterfaceOperator
 
-from .nodal import _local_columns
+from .nodal import owned_rows, reaction_rows, working_pattern
 
 #: Why the reaction cannot be read on one rank (the partition of
 #: :func:`xdolfinx.xfem.cells.cut_partitioner` was not taken).
@@ -57,12 +56,11 @@ def reaction_interface(scene, K, fixed: np.ndarray, operator: InterfaceOperator,
     indptr, indices, values = K.getValuesCSR()
     owned = sp.csr_matrix((values, indices, indptr), shape=(K.getLocalSize()[0], K.getSize()[1]))
     l2g = (2 * space.numbering.global_blocks[:, None] + np.arange(2)).ravel()
-    start, stop = K.getOwnershipRange()
-    rows = np.where((l2g >= start) & (l2g < stop), l2g - start, -1)  # each local unknown's owned row, or −1
+    rows = owned_rows(K, l2g)
     ranks = space.cells.ranks
     total = ranks.sum(operator.size)
     interface = ranks.alike(_interface, scene, operator, owned, l2g, rows, fixed, total, spacing, method)
-    return interface, working_pattern(K, owned, l2g, rows, interface, ranks)
+    return interface, working_pattern(K, owned, l2g, rows, interface, ranks, NOT_ON_ONE_RANK)
 
 
 def _interface(scene, operator: InterfaceOperator, owned: sp.csr_matrix, l2g: np.ndarray, rows: np.ndarray,
@@ -75,24 +73,8 @@ def _interface(scene, operator: InterfaceOperator, owned: sp.csr_matrix, l2g: np
         return _empty(operator, len(l2g))
     chain = multiplier_chain(scene.interface, scene.domain, spacing, method)
     local_fixed = np.flatnonzero(np.isin(rows, np.asarray(fixed, np.int64)))
-    return replace(multiplier_operator(operator, _reaction_rows(owned, l2g, rows, operator.G), local_fixed,
-                                       chain, method), exchange=operator.exchange)
-
-
-def _reaction_rows(owned: sp.csr_matrix, l2g: np.ndarray, rows: np.ndarray, G: sp.csr_matrix) -> sp.csr_matrix:
-    """``A``'s rows of the unknowns ``G`` reads (the only ones ``L A``
-    reads), local numbering (the other rows empty): each owned whole
-    (``rows``, its owned row) and reaching local unknowns only, else
-    :data:`NOT_ON_ONE_RANK`."""
-    reads = np.unique(G.indices)
-    if np.any(rows[reads] < 0):
-        raise DiscretisationError(NOT_ON_ONE_RANK)
-    taken = owned[rows[reads]]
-    columns = _local_columns(taken.indices, l2g, NOT_ON_ONE_RANK)
-    counts = np.zeros(len(l2g), np.int64)
-    counts[reads] = np.diff(taken.indptr)
-    indptr = np.concatenate([[0], np.cumsum(counts)])
-    return sp.csr_matrix((taken.data, columns, indptr), shape=(len(l2g), len(l2g)))
+    A = reaction_rows(owned, l2g, rows, operator.G.indices, NOT_ON_ONE_RANK)
+    return replace(multiplier_operator(operator, A, local_fixed, chain, method), exchange=operator.exchange)
 
 
 def _empty(operator: InterfaceOperator, n: int) -> InterfaceOperator:
@@ -100,26 +82,3 @@ def _empty(operator: InterfaceOperator, n: int) -> InterfaceOperator:
     none = sp.csr_matrix((0, n))
     return InterfaceOperator(none, np.zeros(0), np.zeros((0, 2)), operator.exchange, S=none,
                              stabilisation=np.zeros(0), pieces=np.zeros((0, 2)), load_flux=none)
-
-
-def working_pattern(K, owned: sp.csr_matrix, l2g: np.ndarray, rows: np.ndarray, interface: InterfaceOperator,
-                    ranks: Collective = SERIAL):
-    """A PETSc matrix distributed as ``K`` (its block size) with the
-    bulk's pattern (its ``owned`` rows, global columns) and every entry
-    the interface's tangent can reach
-    (:meth:`~contactcore.system.InterfaceOperator.pattern`, local
-    numbering: ``rows`` each one's owned row, ``l2g`` its global index),
-    values zero: ``SᵀWΓ⁻¹S`` couples every unknown near Γ, beyond ``K``'s
-    pattern.  A collective call over ``ranks`` (the matrix's): a row not
-    owned is refused on every rank alike."""
-    from petsc4py import PETSc
-    ones = sp.csr_matrix((np.ones_like(owned.data), owned.indices, owned.indptr), shape=owned.shape)
-    reach = interface.pattern().tocoo()
-    ranks.raise_any(DiscretisationError(NOT_ON_ONE_RANK) if np.any(rows[reach.row] < 0) else None)
-    both = (ones + sp.csr_matrix((np.abs(reach.data), (rows[reach.row], l2g[reach.col])), shape=owned.shape)).tocsr()
-    both.sort_indices()
-    both.data[:] = 0.0
-    sizes = (K.getLocalSize()[0], K.getSize()[0]), (K.getLocalSize()[1], K.getSize()[1])
-    return PETSc.Mat().createAIJ(sizes, bsize=K.getBlockSize(), csr=(both.indptr.astype(PETSc.IntType),
-                                                                     both.indices.astype(PETSc.IntType), both.data),
-                                 comm=K.getComm())
